@@ -1,0 +1,40 @@
+// railmodal — the two kinds of failure a caller must tell apart.
+//
+//   try {
+//     auto v = railmodal::load_vehicle("wagon.toml");
+//   } catch (const railmodal::InputError& e) {
+//     std::cerr << e.what() << "\n";   // wagon.toml:12:9: error: key 'body.mass': ...
+//   }
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace railmodal {
+
+/// Bad input: names the file, line, column and key. what() is
+/// "file:line:col: error: message" (line and column omitted when unknown).
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string file, int line, int column, std::string message);
+  const std::string& file() const { return file_; }
+  int line() const { return line_; }
+  int column() const { return column_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string file_;
+  int line_;
+  int column_;
+  std::string message_;
+};
+
+/// A numerical failure: a mass matrix that is not positive definite after condensation,
+/// a massless degree of freedom that nothing restrains, a static equilibrium that does not
+/// exist. The message names the degree of freedom.
+class NumericalError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace railmodal

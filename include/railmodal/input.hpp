@@ -1,0 +1,22 @@
+// railmodal — reading vehicle files (TOML with units).
+//
+//   #include <railmodal/railmodal.hpp>
+//   railmodal::Vehicle v = railmodal::load_vehicle("data/vehicles/two_axle_freight_wagon.toml");
+//
+// A file is either a template ("two-axle", "bogie") whose few keys generate the bodies and
+// elements, or the general form with [[body]] and [[element]] tables. docs/input.md
+// describes every key; the files under data/vehicles/ are commented examples.
+#pragma once
+
+#include <string>
+
+#include "railmodal/vehicle.hpp"
+
+namespace railmodal {
+
+/// Reads a vehicle file. Throws InputError ("file:line:col: error: key 'x': ...") for a
+/// syntax error, a missing, unknown or mistyped key, a quantity of the wrong dimension or a
+/// non-physical value (negative or zero mass, negative stiffness, NaN).
+Vehicle load_vehicle(const std::string& path);
+
+}  // namespace railmodal

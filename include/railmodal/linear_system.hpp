@@ -1,0 +1,60 @@
+// railmodal — the assembled linear system M q̈ + C q̇ + K q = f.
+//
+//   #include <railmodal/railmodal.hpp>
+//   railmodal::Vehicle v = railmodal::load_vehicle("data/vehicles/resort_car.toml");
+//   railmodal::LinearSystem s = railmodal::assemble(v, railmodal::DofSet::vertical);
+//   for (const auto& dof : s.dofs) std::cout << dof.label << "\n";   // body.bounce, ...
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "railmodal/vehicle.hpp"
+
+namespace railmodal {
+
+/// Which motions to keep: vertical = bounce and pitch; lateral = lateral, roll and yaw.
+enum class DofSet { vertical, lateral, all };
+const char* to_string(DofSet set);
+std::optional<DofSet> dof_set_from_string(const std::string& word);
+
+/// One degree of freedom: a motion of a body's reference point.
+struct Dof {
+  std::string label;  ///< "<body>.<motion>", e.g. "body.bounce", "bogie1.pitch"
+  int body = 0;       ///< index into the vehicle's bodies
+  Motion motion = Motion::bounce;
+};
+
+/// M, C, K in SI over `dofs`. K = elastic stiffness + gravity (preload) stiffness; the
+/// gravity part is kept separately so reports can show what the preload takes away.
+struct LinearSystem {
+  std::vector<Dof> dofs;
+  Eigen::MatrixXd mass;
+  Eigen::MatrixXd damping;
+  Eigen::MatrixXd stiffness;          ///< elastic + gravity
+  Eigen::MatrixXd gravity_stiffness;  ///< part of `stiffness` due to gravity and preloads
+  Vehicle vehicle;                    ///< what was assembled (bodies give names and geometry)
+  std::vector<double> element_loads;  ///< static vertical load of each element, N (+ = compression)
+
+  int size() const { return static_cast<int>(dofs.size()); }
+  /// Index of the DOF with this label, or -1.
+  int index_of(const std::string& label) const;
+};
+
+/// Assemble M, C and K of a vehicle for the chosen motions.
+///
+/// Elements add stiffness at their points through rigid-body kinematics, so geometry alone
+/// creates coupling: unequal springs or an off-centre CG couple bounce and pitch (two-axle
+/// digest eq. (153)), a CG above the reference point couples lateral and roll through M.
+/// Gravity stiffness treats every static force as a dead load: the weight at each CG and
+/// each element's static load at its point. For a body pivoting about a point l below its CG
+/// on springs loaded at that point's height, this is the −W·l of eqs. (156a) and (160b).
+///
+/// Throws std::invalid_argument for an inconsistent vehicle (unknown body in an element,
+/// duplicate names, non-positive mass) and railmodal::NumericalError when the static
+/// equilibrium under gravity has no solution (a body that nothing holds up).
+LinearSystem assemble(const Vehicle& vehicle, DofSet set);
+
+}  // namespace railmodal

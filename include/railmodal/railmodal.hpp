@@ -1,0 +1,21 @@
+// railmodal — modal analysis of railway wagons. Include this one header.
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Vehicle vehicle = railmodal::load_vehicle("resort_car.toml");
+//     railmodal::LinearSystem system = railmodal::assemble(vehicle, railmodal::DofSet::all);
+//     railmodal::ModalResult result = railmodal::solve_modes(system);
+//     for (const railmodal::Mode& mode : result.modes)
+//       std::cout << mode.name << ": " << mode.frequency_hz << " Hz, " << mode.period_s << " s\n";
+//   }
+#pragma once
+
+#include "railmodal/errors.hpp"
+#include "railmodal/input.hpp"
+#include "railmodal/linear_system.hpp"
+#include "railmodal/modal.hpp"
+#include "railmodal/report.hpp"
+#include "railmodal/stability.hpp"
+#include "railmodal/vehicle.hpp"

@@ -1,0 +1,29 @@
+// railmodal — writing modal results for people (table) and programs (CSV, JSON).
+//
+//   auto system = railmodal::assemble(vehicle, railmodal::DofSet::all);
+//   auto result = railmodal::solve_modes(system);
+//   railmodal::write_modes(std::cout, system, result, railmodal::OutputFormat::table);
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "railmodal/linear_system.hpp"
+#include "railmodal/modal.hpp"
+
+namespace railmodal {
+
+enum class OutputFormat { table, csv, json };
+const char* to_string(OutputFormat format);
+std::optional<OutputFormat> output_format_from_string(const std::string& word);
+
+/// table: one row per mode (index, name, Hz, s, rad/s, centre of oscillation) and the mode
+/// shapes below; csv: one row per mode with one column per DOF; json:
+/// {"vehicle", "dofs", "modes": [{"index", "kind", "frequency_hz", "period_s", "omega_rad_s",
+/// "divergence_rate_per_s", "name", "stable", "centre_of_oscillation", "residual",
+/// "shape": {label: value}}], "condensed", "max_residual", "orthonormality_error"}.
+void write_modes(std::ostream& out, const LinearSystem& system, const ModalResult& result,
+                 OutputFormat format);
+
+}  // namespace railmodal

@@ -1,0 +1,114 @@
+// railmodal — vehicle description: rigid bodies joined by suspension elements.
+//
+// Everything here is SI (kg, m, s, N, rad); units are converted when a file is read.
+// Vehicle frame: x forward, y to the left, z up, origin on the track centre line in the
+// plane of the wheelset axles.
+//
+// Example (a single body on four springs, the book's two-axle wagon reduced to essentials):
+//
+//   #include <railmodal/railmodal.hpp>
+//   railmodal::Vehicle v;
+//   railmodal::Body body;
+//   body.name = "body";
+//   body.mass = 20000.0;
+//   body.inertia = {3.0e4, 1.2e5, 1.2e5};
+//   body.centre_of_gravity = {0.0, 0.0, 1.0};
+//   body.reference_point = {0.0, 0.0, 0.0};     // pitch and roll about the axle plane
+//   body.held = {railmodal::Motion::lateral, railmodal::Motion::yaw};
+//   v.bodies.push_back(body);
+//   for (double x : {-1.9, 1.9})
+//     for (double y : {-0.8, 0.8}) {
+//       railmodal::Element e;
+//       e.name = "spring";
+//       e.upper = "body";                          // lower = "" : the track / wheelsets
+//       e.point = {x, y, 0.0};
+//       e.vertical_stages = {{"leaf", 9.0e5, 1}};
+//       v.elements.push_back(e);
+//     }
+//   auto system = railmodal::assemble(v, railmodal::DofSet::all);
+//   auto modes = railmodal::solve_modes(system);
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace railmodal {
+
+/// The five motions of a body that railmodal models. Longitudinal motion is not a degree of
+/// freedom: the book's wagons are held longitudinally by the axlebox guides and draw gear.
+enum class Motion { lateral, bounce, roll, pitch, yaw };
+
+/// "lateral", "bounce", "roll", "pitch", "yaw".
+const char* to_string(Motion motion);
+/// Inverse of to_string; returns std::nullopt for an unknown word.
+std::optional<Motion> motion_from_string(const std::string& word);
+
+/// A rigid body: car body, bogie frame, bolster, locomotive frame, ...
+struct Body {
+  std::string name;
+  double mass = 0.0;                     ///< kg, > 0
+  Eigen::Vector3d inertia{0.0, 0.0, 0.0};  ///< roll, pitch, yaw moments of inertia about the
+                                           ///< centre of gravity, kg·m² (0 allowed: that
+                                           ///< rotation is massless and condensed statically)
+  Eigen::Vector3d centre_of_gravity{0.0, 0.0, 0.0};  ///< m, vehicle frame
+  /// Point whose translation and rotation are the body's degrees of freedom: the book's
+  /// centre of oscillation (two-axle wagon: axle plane below the CG; bogie wagon body: the
+  /// plane of the bolster spring clamps). It does not change the physics, only the
+  /// coordinates in which mode shapes are reported and which motions "held" restrains.
+  Eigen::Vector3d reference_point{0.0, 0.0, 0.0};
+  /// Motions of the reference point held rigidly against the track (axlebox guides,
+  /// side bearers): those degrees of freedom are removed.
+  std::vector<Motion> held;
+};
+
+/// One stage of springs in parallel: `count` identical springs of `stiffness` each.
+struct SpringStage {
+  std::string kind;        ///< "leaf", "coil", "elliptic", "direct", ... (for reports)
+  double stiffness = 0.0;  ///< N/m, of one spring
+  int count = 1;           ///< identical springs side by side in this stage
+};
+
+/// Cradle swing hangers carrying the element's vertical load: a pendulum whose lateral
+/// restoring stiffness is load / (length · cos inclination) (bogie-wagons-natural digest
+/// §2.8, N = P3/(λ cos α); two-axle digest (189) for small x).
+struct SwingHanger {
+  double length = 0.0;       ///< λ, m
+  double inclination = 0.0;  ///< α, rad, to the vertical in the mid position
+};
+
+/// A suspension element acting at one point between two bodies, or between a body and the
+/// track (lower = ""). Stages act in series (leaf spring in series with coil springs is the
+/// book's "double suspension"). The element's static vertical load follows from the static
+/// equilibrium of the assembled vehicle under gravity.
+struct Element {
+  std::string name;
+  std::string lower;  ///< body name, or "" for the track / wheelsets (rigid ground)
+  std::string upper;  ///< body name
+  Eigen::Vector3d point{0.0, 0.0, 0.0};  ///< m, vehicle frame
+  std::vector<SpringStage> vertical_stages;  ///< in series; empty: no vertical stiffness
+  std::vector<SpringStage> lateral_stages;   ///< in series; empty: no lateral stiffness
+  /// In series; resists the longitudinal motion that yaw and pitch give the point (the
+  /// reference points themselves are held longitudinally).
+  std::vector<SpringStage> longitudinal_stages;
+  std::optional<SwingHanger> hanger;  ///< lateral pendulum stiffness, in series with the
+                                      ///< lateral stages when both are given
+  double vertical_damping = 0.0;  ///< N·s/m (viscous; carried in C)
+  double lateral_damping = 0.0;   ///< N·s/m
+};
+
+/// A vehicle: bodies, elements and the gravity they stand in.
+struct Vehicle {
+  std::string name;
+  std::string source;  ///< file it was read from, or "" when built in code
+  double gravity = 9.81;  ///< m/s²; the book uses g = 981 cm/s²
+  std::vector<Body> bodies;
+  std::vector<Element> elements;
+};
+
+/// Combined stiffness of stages in series (each stage = count springs in parallel), N/m.
+/// Returns 0 for no stages.
+double series_stiffness(const std::vector<SpringStage>& stages);
+
+}  // namespace railmodal

@@ -1,0 +1,33 @@
+#include "input/body_reader.hpp"
+
+namespace railmodal::input {
+
+double read_mass(TableReader& t, double gravity) {
+  if (t.has("mass") == t.has("weight"))
+    t.fail("mass", t.has("mass") ? "give mass or weight, not both" : "missing: give mass (\"34 t\") or weight (\"34000 kgf\")");
+  if (t.has("mass")) return t.positive("mass", Quantity::mass);
+  return t.positive("weight", Quantity::force) / gravity;  // the book's m = P/g
+}
+
+Eigen::Vector3d read_inertia(TableReader& t, double mass) {
+  if (t.has("inertia") && t.has("radius_of_gyration"))
+    t.fail("inertia", "give inertia or radius_of_gyration, not both");
+  Eigen::Vector3d inertia = Eigen::Vector3d::Zero();
+  const bool radii = t.has("radius_of_gyration");
+  if (!radii && !t.has("inertia"))
+    t.fail("radius_of_gyration", "missing: give radius_of_gyration = {roll, pitch, yaw} or inertia = {roll, pitch, yaw}");
+  TableReader sub = t.table(radii ? "radius_of_gyration" : "inertia");
+  const char* names[] = {"roll", "pitch", "yaw"};
+  for (int k = 0; k < 3; ++k) {
+    if (radii) {
+      const auto r = sub.optional_positive(names[k], Quantity::length, true);
+      inertia(k) = r ? mass * *r * *r : 0.0;
+    } else {
+      inertia(k) = sub.optional_positive(names[k], Quantity::inertia, true).value_or(0.0);
+    }
+  }
+  sub.finish();
+  return inertia;
+}
+
+}  // namespace railmodal::input

@@ -1,0 +1,113 @@
+#include "input/spring_reader.hpp"
+
+#include <string>
+
+#include "model/spring_formulas.hpp"
+
+namespace railmodal::input {
+namespace {
+
+const std::vector<std::string> kCoilGeometry = {"wire_diameter", "active_coils", "shear_modulus"};
+const std::vector<std::string> kLeafGeometry = {"length", "leaf_width", "leaf_thickness", "leaves",
+                                                "full_length_leaves", "modulus"};
+const std::vector<std::string> kEllipticGeometry = {"length", "leaf_width", "leaf_thickness",
+                                                    "leaves", "rows", "modulus"};
+
+bool any_of(const TableReader& t, const std::vector<std::string>& keys) {
+  for (const auto& k : keys)
+    if (t.has(k)) return true;
+  return false;
+}
+
+double load_per_spring(TableReader& t, std::optional<double> element_load, int count,
+                       const std::string& why) {
+  if (t.has("load")) return t.positive("load", Quantity::force);
+  if (element_load && *element_load > 0.0) return *element_load / count;
+  t.fail(why, "needs the static load one spring carries: add load = \"5660 kgf\" to the "
+              "stage or to its element");
+}
+
+}  // namespace
+
+SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load) {
+  SpringStage stage;
+  stage.kind = t.optional_string("kind").value_or("spring");
+  stage.count = t.optional_count("count", 1).value_or(1);
+
+  // Exactly one way of giving the stiffness.
+  std::vector<std::string> given;
+  for (const char* k : {"stiffness", "flexibility", "static_deflection"})
+    if (t.has(k)) given.push_back(k);
+  const bool coil = stage.kind == "coil" && any_of(t, kCoilGeometry);
+  const bool leaf = stage.kind == "leaf" && any_of(t, kLeafGeometry);
+  const bool elliptic = stage.kind == "elliptic" && any_of(t, kEllipticGeometry);
+  if (coil || leaf || elliptic) given.push_back(stage.kind + " geometry");
+  if (given.size() != 1) {
+    const std::string choices =
+        "give exactly one of stiffness, flexibility, static_deflection" +
+        std::string(stage.kind == "coil"       ? " or the coil geometry (wire_diameter, mean_radius, active_coils, shear_modulus)"
+                    : stage.kind == "leaf"     ? " or the leaf geometry (length, leaf_width, leaf_thickness, leaves, full_length_leaves, modulus)"
+                    : stage.kind == "elliptic" ? " or the elliptic geometry (length, leaf_width, leaf_thickness, leaves, rows, modulus)"
+                                               : "");
+    t.fail(given.empty() ? "stiffness" : given[1], given.empty() ? "missing: " + choices
+                                                                 : "conflicts with " + given[0] + ": " + choices);
+  }
+
+  const std::string& way = given[0];
+  if (way == "stiffness") {
+    stage.stiffness = t.positive("stiffness", Quantity::stiffness);
+  } else if (way == "flexibility") {
+    stage.stiffness = 1.0 / t.positive("flexibility", Quantity::flexibility);
+  } else if (way == "static_deflection") {
+    const double f = t.positive("static_deflection", Quantity::length);
+    stage.stiffness = load_per_spring(t, element_load, stage.count, "static_deflection") / f;
+  } else if (coil) {
+    const double d = t.positive("wire_diameter", Quantity::length);
+    double r = 0.0;
+    if (t.has("mean_radius") == t.has("mean_diameter"))
+      t.fail("mean_radius", "give exactly one of mean_radius and mean_diameter");
+    r = t.has("mean_radius") ? t.positive("mean_radius", Quantity::length)
+                             : t.positive("mean_diameter", Quantity::length) / 2.0;
+    const double n = t.positive("active_coils", Quantity::dimensionless);
+    const double G = t.positive("shear_modulus", Quantity::modulus);
+    stage.stiffness = model::coil_spring_stiffness(d, r, n, G);  // eq. (4)
+  } else if (leaf) {
+    model::LeafSpringGeometry g;
+    g.length = t.positive("length", Quantity::length);
+    g.leaf_width = t.positive("leaf_width", Quantity::length);
+    g.leaf_thickness = t.positive("leaf_thickness", Quantity::length);
+    g.leaves = t.count("leaves", 1);
+    g.full_length_leaves = t.count("full_length_leaves", 1);
+    if (g.full_length_leaves > g.leaves) t.fail("full_length_leaves", "cannot exceed leaves");
+    g.modulus = t.positive("modulus", Quantity::modulus);
+    g.shackle_inclination = t.optional_positive("shackle_inclination", Quantity::angle, true).value_or(0.0);
+    if (g.shackle_inclination >= 1.5707963267948966)
+      t.fail("shackle_inclination", "must be below 90 degrees (write \"33.4 deg\")");
+    g.free_camber = t.optional_positive("free_camber", Quantity::length, true).value_or(0.0);
+    if (g.shackle_inclination > 0.0 && !t.has("free_camber"))
+      t.fail("free_camber", "missing: inclined shackles need the free (factory) camber, eq. (92a)");
+    const double load = g.shackle_inclination > 0.0
+                            ? load_per_spring(t, element_load, stage.count, "shackle_inclination")
+                            : 1.0;  // linear: any load gives the same stiffness
+    stage.stiffness = model::leaf_spring_stiffness(g, load);  // eqs. (26), (92a), (93)
+  } else {
+    stage.stiffness = model::elliptic_spring_stiffness(
+        t.positive("length", Quantity::length), t.positive("leaf_width", Quantity::length),
+        t.positive("leaf_thickness", Quantity::length), t.count("leaves", 1), t.count("rows", 1),
+        t.positive("modulus", Quantity::modulus));
+  }
+  if (t.has("load") && way != "static_deflection" && !(leaf && t.has("shackle_inclination")))
+    t.positive("load", Quantity::force);  // documented carried load; accepted, not needed
+  t.finish();
+  return stage;
+}
+
+std::vector<SpringStage> read_spring_stages(TableReader& parent, const std::string& key,
+                                            std::optional<double> element_load) {
+  std::vector<SpringStage> stages;
+  if (!parent.has(key)) return stages;
+  for (auto& t : parent.tables(key)) stages.push_back(read_spring_stage(t, element_load));
+  return stages;
+}
+
+}  // namespace railmodal::input

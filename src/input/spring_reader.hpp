@@ -1,0 +1,22 @@
+// Reading spring stages: stiffness given directly, as flexibility, as static deflection
+// under the carried load, or from coil, leaf or elliptic spring geometry.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "input/table_reader.hpp"
+#include "railmodal/vehicle.hpp"
+
+namespace railmodal::input {
+
+/// One stage. `element_load` is the static load through the whole element (N), used when
+/// the stage is given by static deflection or as a leaf spring on inclined shackles and has
+/// no `load` of its own; each of the stage's `count` springs carries element_load / count.
+SpringStage read_spring_stage(TableReader& table, std::optional<double> element_load);
+
+/// The stages of `key` (a table or an array of tables, in series); empty when absent.
+std::vector<SpringStage> read_spring_stages(TableReader& parent, const std::string& key,
+                                            std::optional<double> element_load);
+
+}  // namespace railmodal::input

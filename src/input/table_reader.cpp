@@ -1,0 +1,239 @@
+#include "input/table_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "railmodal/errors.hpp"
+
+namespace railmodal::input {
+namespace {
+
+const char* type_name(const toml::value& v) {
+  switch (v.type()) {
+    case toml::value_t::boolean: return "a boolean";
+    case toml::value_t::integer: return "an integer";
+    case toml::value_t::floating: return "a number";
+    case toml::value_t::string: return "a string";
+    case toml::value_t::array: return "an array";
+    case toml::value_t::table: return "a table";
+    default: return "a date or time";
+  }
+}
+
+}  // namespace
+
+TableReader::TableReader(const toml::value& table, std::string file, std::string path)
+    : table_(table), file_(std::move(file)), path_(std::move(path)) {}
+
+std::string TableReader::key_path(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+void TableReader::fail(const std::string& key, const std::string& message) const {
+  const toml::value* where = &table_;
+  if (table_.is_table() && table_.as_table().count(key)) where = &table_.as_table().at(key);
+  const auto loc = where->location();
+  const int line = static_cast<int>(loc.line());
+  const int column = static_cast<int>(loc.column());
+  const bool known = loc.file_name() != "unknown file";
+  throw InputError(file_, known ? line : 0, known ? column : 0,
+                   "key '" + key_path(key) + "': " + message);
+}
+
+bool TableReader::has(const std::string& key) const {
+  return table_.is_table() && table_.as_table().count(key) > 0;
+}
+
+namespace {
+
+// Levenshtein distance, to recognise a misspelt key.
+size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+const toml::value& TableReader::at(const std::string& key) {
+  if (!has(key)) {
+    // Point at a present key that looks like a misspelling of the missing one.
+    if (table_.is_table())
+      for (const auto& [present, value] : table_.as_table())
+        if (!read_.count(present) && edit_distance(present, key) <= 2) {
+          const auto loc = value.location();
+          throw InputError(file_, static_cast<int>(loc.line()), static_cast<int>(loc.column()),
+                           "key '" + key_path(key) + "': missing; is '" + present + "' a misspelling of it?");
+        }
+    fail(key, "missing (required)");
+  }
+  read_.insert(key);
+  return table_.as_table().at(key);
+}
+
+double TableReader::to_quantity(const toml::value& v, const std::string& key, Quantity kind) const {
+  double value = 0.0;
+  if (v.is_integer()) {
+    value = static_cast<double>(v.as_integer());
+  } else if (v.is_floating()) {
+    value = v.as_floating();
+  } else if (v.is_string()) {
+    try {
+      value = parse_quantity(v.as_string().str, kind);
+    } catch (const std::invalid_argument& e) {
+      fail(key, e.what());
+    }
+  } else {
+    fail(key, std::string("expected ") + name_of(kind) + " such as " + example_of(kind) +
+                  ", got " + type_name(v));
+  }
+  if (!std::isfinite(value)) fail(key, "the value is not a finite number");
+  return value;
+}
+
+double TableReader::quantity(const std::string& key, Quantity kind) {
+  return to_quantity(at(key), key, kind);
+}
+
+std::optional<double> TableReader::optional_quantity(const std::string& key, Quantity kind) {
+  if (!has(key)) return std::nullopt;
+  return quantity(key, kind);
+}
+
+double TableReader::positive(const std::string& key, Quantity kind, bool allow_zero) {
+  const double value = quantity(key, kind);
+  if (allow_zero ? value < 0.0 : !(value > 0.0))
+    fail(key, std::string("must be ") + (allow_zero ? "zero or positive" : "positive") + ", got " +
+                  std::to_string(value) + " (SI)");
+  return value;
+}
+
+std::optional<double> TableReader::optional_positive(const std::string& key, Quantity kind, bool allow_zero) {
+  if (!has(key)) return std::nullopt;
+  return positive(key, kind, allow_zero);
+}
+
+std::string TableReader::string(const std::string& key) {
+  const toml::value& v = at(key);
+  if (!v.is_string()) fail(key, std::string("expected a string, got ") + type_name(v));
+  return v.as_string().str;
+}
+
+std::optional<std::string> TableReader::optional_string(const std::string& key) {
+  if (!has(key)) return std::nullopt;
+  return string(key);
+}
+
+int TableReader::count(const std::string& key, int minimum) {
+  const toml::value& v = at(key);
+  if (!v.is_integer()) fail(key, std::string("expected an integer, got ") + type_name(v));
+  const auto value = v.as_integer();
+  if (value < minimum || value > 1000000)
+    fail(key, "must be an integer from " + std::to_string(minimum) + " to 1000000, got " +
+                  std::to_string(value));
+  return static_cast<int>(value);
+}
+
+std::optional<int> TableReader::optional_count(const std::string& key, int minimum) {
+  if (!has(key)) return std::nullopt;
+  return count(key, minimum);
+}
+
+std::array<double, 3> TableReader::point(const std::string& key) {
+  const toml::value& v = at(key);
+  if (!v.is_array() || v.as_array().size() != 3)
+    fail(key, "expected a point [x, y, z] of three lengths, such as [\"0 m\", \"0.8 m\", \"1.2 m\"]");
+  std::array<double, 3> p{};
+  for (int i = 0; i < 3; ++i) p[i] = to_quantity(v.as_array()[i], key, Quantity::length);
+  return p;
+}
+
+std::vector<std::string> TableReader::strings(const std::string& key) {
+  const toml::value& v = at(key);
+  if (!v.is_array()) fail(key, std::string("expected an array of strings, got ") + type_name(v));
+  std::vector<std::string> out;
+  for (const auto& item : v.as_array()) {
+    if (!item.is_string()) fail(key, "expected an array of strings");
+    out.push_back(item.as_string().str);
+  }
+  return out;
+}
+
+TableReader TableReader::table(const std::string& key) {
+  const toml::value& v = at(key);
+  if (!v.is_table()) fail(key, std::string("expected a table, got ") + type_name(v));
+  return TableReader(v, file_, key_path(key));
+}
+
+std::vector<TableReader> TableReader::tables(const std::string& key) {
+  const toml::value& v = at(key);
+  std::vector<TableReader> out;
+  if (v.is_table()) {
+    out.emplace_back(v, file_, key_path(key));
+    return out;
+  }
+  if (!v.is_array()) fail(key, std::string("expected a table or an array of tables, got ") + type_name(v));
+  const auto& array = v.as_array();
+  for (size_t i = 0; i < array.size(); ++i) {
+    if (!array[i].is_table()) fail(key, "expected an array of tables");
+    out.emplace_back(array[i], file_, key_path(key) + "[" + std::to_string(i) + "]");
+  }
+  return out;
+}
+
+void TableReader::finish() const {
+  if (!table_.is_table()) return;
+  for (const auto& [key, value] : table_.as_table())
+    if (!read_.count(key)) fail(key, "unknown key (misspelt, or not used here)");
+}
+
+toml::value parse_toml_file(const std::string& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file, 0, 0, "cannot open the file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string content = text.str();
+  try {
+    std::istringstream stream(content);
+    return toml::parse(stream, file);
+  } catch (const toml::exception& e) {
+    // toml11 prints "[error] what\n --> file\n  12 | text\n     |    ^-- detail"; keep the
+    // first line as the message and take line and column from the location.
+    std::string message = e.what();
+    const auto newline = message.find('\n');
+    std::string head = message.substr(0, newline);
+    const std::string prefix = "[error] ";
+    if (head.rfind(prefix, 0) == 0) head = head.substr(prefix.size());
+    int line = static_cast<int>(e.location().line());
+    int column = static_cast<int>(e.location().column());
+    if (e.location().file_name() == "unknown file") {
+      // Fall back on the " 12 | " marker of the formatted message.
+      std::smatch m;
+      static const std::regex marker(R"(\n\s*(\d+) \|)");
+      if (std::regex_search(message, m, marker)) line = std::stoi(m[1]);
+      column = 0;
+    }
+    // The detail under the caret says what was expected.
+    std::smatch detail;
+    static const std::regex caret(R"(\^+-*\s*(.*))");
+    if (std::regex_search(message, detail, caret) && !detail[1].str().empty())
+      head += ": " + detail[1].str();
+    throw InputError(file, line, column, "TOML syntax: " + head);
+  } catch (const std::exception& e) {
+    throw InputError(file, 0, 0, std::string("cannot read the file: ") + e.what());
+  }
+}
+
+}  // namespace railmodal::input

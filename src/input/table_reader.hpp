@@ -1,0 +1,59 @@
+// Checked access to one TOML table: every error names file, line, column and the dotted
+// key; keys nobody asked for are reported as unknown when the table is finished.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <set>
+#include <string>
+#include <toml.hpp>
+#include <vector>
+
+#include "input/units.hpp"
+
+namespace railmodal::input {
+
+class TableReader {
+ public:
+  TableReader(const toml::value& table, std::string file, std::string path);
+
+  bool has(const std::string& key) const;
+  /// A quantity in SI; a bare number is SI, a string carries units.
+  double quantity(const std::string& key, Quantity kind);
+  std::optional<double> optional_quantity(const std::string& key, Quantity kind);
+  /// Like quantity(), with a check that the value is > 0 (or ≥ 0 when allow_zero).
+  double positive(const std::string& key, Quantity kind, bool allow_zero = false);
+  std::optional<double> optional_positive(const std::string& key, Quantity kind, bool allow_zero = false);
+  std::string string(const std::string& key);
+  std::optional<std::string> optional_string(const std::string& key);
+  int count(const std::string& key, int minimum);
+  std::optional<int> optional_count(const std::string& key, int minimum);
+  /// A point [x, y, z], each a length.
+  std::array<double, 3> point(const std::string& key);
+  std::vector<std::string> strings(const std::string& key);
+  TableReader table(const std::string& key);
+  /// An array of tables ([[key]] or key = [{...}, ...]); a single table counts as one.
+  std::vector<TableReader> tables(const std::string& key);
+
+  /// Throws for the first key that was never read.
+  void finish() const;
+
+  /// An InputError at this key's value (or at the table when the key is absent).
+  [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  std::string key_path(const std::string& key) const;
+  const std::string& file() const { return file_; }
+
+ private:
+  const toml::value& at(const std::string& key);
+  double to_quantity(const toml::value& v, const std::string& key, Quantity kind) const;
+
+  const toml::value& table_;
+  std::string file_;
+  std::string path_;
+  std::set<std::string> read_;
+};
+
+/// Parses a TOML file; a syntax error becomes an InputError with its line and column.
+toml::value parse_toml_file(const std::string& file);
+
+}  // namespace railmodal::input

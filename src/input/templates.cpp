@@ -1,0 +1,166 @@
+#include "input/templates.hpp"
+
+#include <cmath>
+#include <optional>
+
+#include "input/body_reader.hpp"
+#include "input/spring_reader.hpp"
+
+namespace railmodal::input {
+namespace {
+
+// Damping of an element from optional keys of a template table.
+void read_damping(TableReader& t, Element* e) {
+  e->vertical_damping = t.optional_positive("vertical_damping", Quantity::damping, true).value_or(0.0);
+  e->lateral_damping = t.optional_positive("lateral_damping", Quantity::damping, true).value_or(0.0);
+}
+
+}  // namespace
+
+void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
+  head.finish();
+  TableReader b = root.table("body");
+  Body body;
+  body.name = "body";
+  body.mass = read_mass(b, v->gravity);
+  body.inertia = read_inertia(b, body.mass);
+  const double l = b.quantity("cg_height", Quantity::length);  // CG above the axle plane
+  const double offset = b.optional_quantity("cg_offset", Quantity::length).value_or(0.0);
+  b.finish();
+  body.centre_of_gravity = {offset, 0.0, l};
+  body.reference_point = {offset, 0.0, 0.0};  // O: in the axle plane below the CG (§2.2)
+  body.held = {Motion::lateral, Motion::yaw};  // axlebox guides
+  v->bodies.push_back(body);
+
+  TableReader s = root.table("suspension");
+  const double a1 = s.positive("wheelbase", Quantity::length) / 2.0;
+  const double b1 = s.positive("spring_spacing", Quantity::length) / 2.0;
+  if (std::abs(offset) >= a1) root.fail("body", "cg_offset puts the CG outside the wheelbase");
+  const double weight = body.mass * v->gravity;
+  for (int axle : {+1, -1}) {
+    // Lever rule: each spring of an axle carries half that axle's share of the weight.
+    const double load = weight * (a1 + axle * offset) / (2.0 * a1) / 2.0;
+    const std::string own = axle > 0 ? "front_spring" : "rear_spring";
+    const std::string key = s.has(own) ? own : "spring";
+    for (int side : {+1, -1}) {
+      Element e;
+      e.name = std::string(axle > 0 ? "front" : "rear") + (side > 0 ? " left" : " right") + " spring";
+      e.upper = "body";
+      e.point = {axle * a1, side * b1, 0.0};
+      // Re-read for each spring: the stage tables are shared, their loads are not.
+      e.vertical_stages = read_spring_stages(s, key, load);
+      if (e.vertical_stages.empty()) s.fail(key, "missing: the springs' stages, e.g. spring = [{ kind = \"leaf\", stiffness = \"910 kgf/cm\" }]");
+      read_damping(s, &e);
+      v->elements.push_back(e);
+    }
+  }
+  if (s.has("spring") && s.has("front_spring") && s.has("rear_spring"))
+    s.fail("spring", "unused: front_spring and rear_spring are both given");
+  s.finish();
+}
+
+void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
+  const std::string suspension = head.string("suspension");
+  if (suspension != "single" && suspension != "double" && suspension != "triple")
+    head.fail("suspension", "must be \"single\", \"double\" or \"triple\"");
+  head.finish();
+
+  TableReader bt = root.table("body");
+  Body body;
+  body.name = "body";
+  body.mass = read_mass(bt, v->gravity);
+  body.inertia = read_inertia(bt, body.mass);
+  const double d0 = bt.quantity("cg_height", Quantity::length);  // above the bolster plane
+  const double l3 = bt.positive("bogie_spacing", Quantity::length) / 2.0;
+  bt.finish();
+
+  // Bogies: sprung parts of the bogie (frame, bolster, cradle), one per end.
+  double bogie_mass = 0.0, h1 = 0.0, l2 = 0.0, bolster = 0.0;
+  Eigen::Vector3d bogie_inertia = Eigen::Vector3d::Zero();
+  const bool sprung_bogies = suspension != "single";
+  if (sprung_bogies) {
+    TableReader g = root.table("bogie");
+    bogie_mass = read_mass(g, v->gravity);
+    bogie_inertia = read_inertia(g, bogie_mass);
+    h1 = g.quantity("cg_height", Quantity::length);  // above the axle plane
+    l2 = g.positive("wheelbase", Quantity::length) / 2.0;
+    bolster = g.optional_quantity("bolster_height", Quantity::length).value_or(0.0);
+    g.finish();
+  } else if (root.has("bogie")) {  // unsprung bogie frames: only the bolster height matters
+    TableReader g = root.table("bogie");
+    bolster = g.optional_quantity("bolster_height", Quantity::length).value_or(0.0);
+    g.finish();
+  }
+  body.reference_point = {0.0, 0.0, bolster};
+  body.centre_of_gravity = {0.0, 0.0, bolster + d0};
+  v->bodies.push_back(body);
+
+  TableReader sec = root.table("secondary");
+  const double b3 = sec.positive("spacing", Quantity::length) / 2.0;
+  std::optional<SwingHanger> hanger;
+  if (sec.has("hanger")) hanger = read_hanger(sec);
+  std::optional<TableReader> pri;
+  double b2 = 0.0;
+  if (sprung_bogies) {
+    pri.emplace(root.table("primary"));
+    b2 = pri->positive("spacing", Quantity::length) / 2.0;
+  } else if (root.has("primary")) {
+    root.fail("primary", "a single-suspension wagon has no primary springs (its bogie frames are unsprung)");
+  }
+
+  const double g = v->gravity;
+  const char* bogie_names[] = {"bogie1", "bogie2"};
+  for (int k = 0; k < 2; ++k) {
+    const double xc = k == 0 ? l3 : -l3;
+    std::string lower;  // the track for single suspension
+    if (sprung_bogies) {
+      Body bogie;
+      bogie.name = bogie_names[k];
+      bogie.mass = bogie_mass;
+      bogie.inertia = bogie_inertia;
+      bogie.reference_point = {xc, 0.0, 0.0};  // pitch about the axle plane, §2.5
+      bogie.centre_of_gravity = {xc, 0.0, h1};
+      const bool lateral = pri->has("lateral"), longitudinal = pri->has("longitudinal");
+      if (!lateral) bogie.held.push_back(Motion::lateral);  // wheelsets guide the frame
+      if (!lateral && !longitudinal) bogie.held.push_back(Motion::yaw);
+      v->bodies.push_back(bogie);
+      lower = bogie.name;
+      // Primary springs: four axlebox locations; each carries a quarter of the bogie's share.
+      const double load = (body.mass / 2.0 + bogie_mass) * g / 4.0;
+      for (int axle : {+1, -1})
+        for (int side : {+1, -1}) {
+          Element e;
+          e.name = bogie.name + (axle > 0 ? " leading" : " trailing") + (side > 0 ? " left" : " right") + " axlebox";
+          e.upper = bogie.name;
+          e.point = {xc + axle * l2, side * b2, 0.0};
+          e.vertical_stages = read_spring_stages(*pri, "spring", load);
+          if (e.vertical_stages.empty()) pri->fail("spring", "missing: the axlebox spring stages");
+          if (suspension == "triple" && e.vertical_stages.size() < 2)
+            pri->fail("spring", "triple suspension needs two primary stages in series (leaf, then coil)");
+          e.lateral_stages = read_spring_stages(*pri, "lateral", load);
+          e.longitudinal_stages = read_spring_stages(*pri, "longitudinal", load);
+          read_damping(*pri, &e);
+          v->elements.push_back(e);
+        }
+    }
+    // Secondary (cradle) springs: one set each side, in the bolster plane.
+    const double load = body.mass * g / 4.0;
+    for (int side : {+1, -1}) {
+      Element e;
+      e.name = std::string(bogie_names[k]) + (side > 0 ? " left" : " right") + " cradle";
+      e.lower = lower;
+      e.upper = "body";
+      e.point = {xc, side * b3, bolster};
+      e.vertical_stages = read_spring_stages(sec, "spring", load);
+      if (e.vertical_stages.empty()) sec.fail("spring", "missing: the cradle spring stages");
+      e.lateral_stages = read_spring_stages(sec, "lateral", load);
+      e.hanger = hanger;
+      read_damping(sec, &e);
+      v->elements.push_back(e);
+    }
+  }
+  sec.finish();
+  if (pri) pri->finish();
+}
+
+}  // namespace railmodal::input

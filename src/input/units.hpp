@@ -1,0 +1,34 @@
+// Quantities with units, as written in vehicle files: "910 kgf/cm", "57.2 mm", "34 t".
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace railmodal::input {
+
+/// Exponents of mass, length, time and plane angle.
+struct Dimension {
+  std::array<int, 4> exponent{0, 0, 0, 0};
+  bool operator==(const Dimension& other) const { return exponent == other.exponent; }
+  bool operator!=(const Dimension& other) const { return !(*this == other); }
+};
+
+/// The physical quantities vehicle files contain, each with its SI dimension and a name
+/// and example used in error messages.
+enum class Quantity {
+  length, mass, force, stiffness, flexibility, inertia, angle, acceleration,
+  damping, modulus, speed, dimensionless
+};
+Dimension dimension_of(Quantity quantity);
+const char* name_of(Quantity quantity);     ///< "stiffness (force/length)"
+const char* example_of(Quantity quantity);  ///< "\"910 kgf/cm\" or 8.9e5 (N/m)"
+std::string describe(const Dimension& dimension);  ///< "force/length"
+
+/// Parses "value unit" and converts to SI for the expected quantity. A bare number is SI.
+/// The book writes kg and t for kilogram-force and tonne-force ("910 kg/cm", "10.5 mm/t"):
+/// when the units read as mass do not give the expected dimension but read as force do,
+/// the force reading is taken. Throws std::invalid_argument with a message saying what was
+/// expected and what was found.
+double parse_quantity(const std::string& text, Quantity expected);
+
+}  // namespace railmodal::input

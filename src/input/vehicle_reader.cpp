@@ -1,0 +1,100 @@
+// load_vehicle: the [vehicle] table, then a template or the general bodies-and-elements form.
+#include <cmath>
+#include <set>
+
+#include "input/body_reader.hpp"
+#include "input/spring_reader.hpp"
+#include "input/table_reader.hpp"
+#include "input/templates.hpp"
+#include "railmodal/errors.hpp"
+#include "railmodal/input.hpp"
+
+namespace railmodal {
+
+namespace input {
+namespace {
+
+Eigen::Vector3d to_vector(const std::array<double, 3>& p) { return {p[0], p[1], p[2]}; }
+
+void read_general(TableReader& root, Vehicle* v) {
+  std::set<std::string> names;
+  for (auto& t : root.tables("body")) {
+    Body b;
+    b.name = t.string("name");
+    if (b.name.empty() || b.name == "track") t.fail("name", "must be a non-empty name other than 'track'");
+    if (!names.insert(b.name).second) t.fail("name", "a body named '" + b.name + "' already exists");
+    b.mass = read_mass(t, v->gravity);
+    b.inertia = read_inertia(t, b.mass);
+    b.centre_of_gravity = to_vector(t.point("centre_of_gravity"));
+    b.reference_point = t.has("reference_point") ? to_vector(t.point("reference_point")) : b.centre_of_gravity;
+    if (t.has("held"))
+      for (const auto& word : t.strings("held")) {
+        const auto m = motion_from_string(word);
+        if (!m) t.fail("held", "unknown motion '" + word + "' (lateral, bounce, roll, pitch, yaw)");
+        b.held.push_back(*m);
+      }
+    t.finish();
+    v->bodies.push_back(b);
+  }
+  if (!root.has("element")) return;
+  for (auto& t : root.tables("element")) {
+    Element e;
+    e.name = t.optional_string("name").value_or("element");
+    e.upper = t.string("upper");
+    if (!names.count(e.upper)) t.fail("upper", "no body is named '" + e.upper + "'");
+    e.lower = t.optional_string("lower").value_or("track");
+    if (e.lower == "track") e.lower.clear();
+    if (!e.lower.empty() && !names.count(e.lower)) t.fail("lower", "no body is named '" + e.lower + "' (or write \"track\")");
+    if (e.lower == e.upper) t.fail("lower", "an element cannot connect a body to itself");
+    e.point = to_vector(t.point("point"));
+    const auto load = t.optional_positive("load", Quantity::force);
+    e.vertical_stages = read_spring_stages(t, "vertical", load);
+    e.lateral_stages = read_spring_stages(t, "lateral", load);
+    e.longitudinal_stages = read_spring_stages(t, "longitudinal", load);
+    if (t.has("hanger")) e.hanger = read_hanger(t);
+    e.vertical_damping = t.optional_positive("vertical_damping", Quantity::damping, true).value_or(0.0);
+    e.lateral_damping = t.optional_positive("lateral_damping", Quantity::damping, true).value_or(0.0);
+    t.finish();
+    v->elements.push_back(e);
+  }
+}
+
+}  // namespace
+
+SwingHanger read_hanger(TableReader& parent) {
+  TableReader t = parent.table("hanger");
+  SwingHanger h;
+  h.length = t.positive("length", Quantity::length);
+  h.inclination = t.optional_quantity("inclination", Quantity::angle).value_or(0.0);
+  if (!(std::abs(h.inclination) < 1.3962634015954636))  // 80°: beyond, cos α ≈ 0
+    t.fail("inclination", "must be within ±80 degrees; write units, e.g. \"14 deg\"");
+  t.finish();
+  return h;
+}
+
+}  // namespace input
+
+Vehicle load_vehicle(const std::string& path) {
+  const toml::value document = input::parse_toml_file(path);
+  input::TableReader root(document, path, "");
+  Vehicle v;
+  v.source = path;
+  input::TableReader head = root.table("vehicle");
+  v.name = head.string("name");
+  v.gravity = head.optional_positive("gravity", input::Quantity::acceleration).value_or(9.81);
+  const std::string form = head.optional_string("template").value_or("general");
+  if (form == "two-axle") {
+    input::read_two_axle(head, root, &v);
+  } else if (form == "bogie") {
+    input::read_bogie(head, root, &v);
+  } else if (form == "general") {
+    head.finish();
+    input::read_general(root, &v);
+  } else {
+    head.fail("template", "unknown template '" + form + "' (two-axle, bogie, general)");
+  }
+  root.finish();
+  return v;
+}
+
+}  // namespace railmodal

@@ -1,0 +1,307 @@
+// Assembly of M, C and K from bodies and elements (see linear_system.hpp for the model).
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "model/rigid_body.hpp"
+#include "railmodal/errors.hpp"
+#include "railmodal/linear_system.hpp"
+
+namespace railmodal {
+
+const char* to_string(Motion motion) {
+  switch (motion) {
+    case Motion::lateral: return "lateral";
+    case Motion::bounce: return "bounce";
+    case Motion::roll: return "roll";
+    case Motion::pitch: return "pitch";
+    case Motion::yaw: return "yaw";
+  }
+  return "?";
+}
+
+std::optional<Motion> motion_from_string(const std::string& word) {
+  for (Motion m : {Motion::lateral, Motion::bounce, Motion::roll, Motion::pitch, Motion::yaw})
+    if (word == to_string(m)) return m;
+  return std::nullopt;
+}
+
+const char* to_string(DofSet set) {
+  switch (set) {
+    case DofSet::vertical: return "vertical";
+    case DofSet::lateral: return "lateral";
+    case DofSet::all: return "all";
+  }
+  return "?";
+}
+
+std::optional<DofSet> dof_set_from_string(const std::string& word) {
+  for (DofSet s : {DofSet::vertical, DofSet::lateral, DofSet::all})
+    if (word == to_string(s)) return s;
+  return std::nullopt;
+}
+
+double series_stiffness(const std::vector<SpringStage>& stages) {
+  if (stages.empty()) return 0.0;
+  double flexibility = 0.0;
+  for (const auto& stage : stages) flexibility += 1.0 / (stage.stiffness * stage.count);
+  return 1.0 / flexibility;
+}
+
+int LinearSystem::index_of(const std::string& label) const {
+  for (size_t i = 0; i < dofs.size(); ++i)
+    if (dofs[i].label == label) return static_cast<int>(i);
+  return -1;
+}
+
+namespace {
+
+using model::kMotionsPerBody;
+constexpr double kHalfPi = 1.57079632679489661923;
+
+bool in_set(Motion motion, DofSet set) {
+  const bool vertical = motion == Motion::bounce || motion == Motion::pitch;
+  switch (set) {
+    case DofSet::vertical: return vertical;
+    case DofSet::lateral: return !vertical;
+    case DofSet::all: return true;
+  }
+  return true;
+}
+
+void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
+  if (vehicle.bodies.empty()) throw std::invalid_argument("the vehicle has no bodies");
+  if (!(vehicle.gravity > 0.0) || !std::isfinite(vehicle.gravity))
+    throw std::invalid_argument("gravity must be positive and finite");
+  for (size_t b = 0; b < vehicle.bodies.size(); ++b) {
+    const Body& body = vehicle.bodies[b];
+    if (body.name.empty()) throw std::invalid_argument("a body has no name");
+    if (!index->emplace(body.name, static_cast<int>(b)).second)
+      throw std::invalid_argument("two bodies are named '" + body.name + "'");
+    if (!(body.mass > 0.0) || !std::isfinite(body.mass))
+      throw std::invalid_argument("body '" + body.name + "': mass must be positive and finite");
+    if (!(body.inertia.array() >= 0.0).all() || !body.inertia.allFinite())
+      throw std::invalid_argument("body '" + body.name +
+                                  "': moments of inertia must be non-negative and finite");
+  }
+  for (const Element& e : vehicle.elements) {
+    for (const std::string* end : {&e.lower, &e.upper}) {
+      if (!end->empty() && !index->count(*end))
+        throw std::invalid_argument("element '" + e.name + "' names unknown body '" + *end + "'");
+    }
+    if (e.upper.empty()) throw std::invalid_argument("element '" + e.name + "' has no upper body");
+    if (e.upper == e.lower)
+      throw std::invalid_argument("element '" + e.name + "' connects '" + e.upper + "' to itself");
+    for (const auto* stages : {&e.vertical_stages, &e.lateral_stages, &e.longitudinal_stages})
+      for (const auto& s : *stages)
+        if (!(s.stiffness > 0.0) || !std::isfinite(s.stiffness) || s.count < 1)
+          throw std::invalid_argument("element '" + e.name +
+                                      "': spring stiffness must be positive and finite");
+    if (e.hanger && (!(e.hanger->length > 0.0) || std::abs(e.hanger->inclination) >= kHalfPi))
+      throw std::invalid_argument("element '" + e.name +
+                                  "': hanger length must be positive, inclination below 90°");
+  }
+}
+
+// Full coordinates: five motions per body, body-major.
+struct Layout {
+  int bodies;
+  int size() const { return bodies * kMotionsPerBody; }
+  static int index(int body, Motion m) { return body * kMotionsPerBody + static_cast<int>(m); }
+};
+
+// How an element's point moves with the two bodies it joins: relative displacement
+// upper − lower = up · q_upper − low · q_lower (lower = −1: the track).
+struct ElementMap {
+  int upper = 0, lower = -1;
+  model::PointMap up, low;
+};
+
+ElementMap element_map(const Vehicle& v, const std::map<std::string, int>& index, const Element& e) {
+  ElementMap m;
+  m.upper = index.at(e.upper);
+  m.up = model::point_map(v.bodies[m.upper], e.point);
+  if (!e.lower.empty()) {
+    m.lower = index.at(e.lower);
+    m.low = model::point_map(v.bodies[m.lower], e.point);
+  }
+  return m;
+}
+
+// k = diag(longitudinal, lateral, vertical) at the point: K += Bᵀ k B, scattered into the
+// blocks of the two bodies only (a dense Bᵀ k B would cost O(n²) per element).
+void add_element(const ElementMap& m, const Eigen::Vector3d& k, Eigen::MatrixXd* K) {
+  struct Side { int body; const model::PointMap* map; double sign; };
+  const Side sides[2] = {{m.upper, &m.up, 1.0}, {m.lower, &m.low, -1.0}};
+  const Eigen::Matrix3d kd = k.asDiagonal();
+  for (const Side& a : sides)
+    for (const Side& b : sides) {
+      if (a.body < 0 || b.body < 0) continue;
+      K->block<kMotionsPerBody, kMotionsPerBody>(a.body * kMotionsPerBody, b.body * kMotionsPerBody) +=
+          a.sign * b.sign * a.map->transpose() * kd * *b.map;
+    }
+}
+
+// Vertical relative displacement of the element's point for full coordinates q.
+double vertical_stretch(const ElementMap& m, const Eigen::VectorXd& q) {
+  double dz = m.up.row(2).dot(q.segment<kMotionsPerBody>(m.upper * kMotionsPerBody));
+  if (m.lower >= 0) dz -= m.low.row(2).dot(q.segment<kMotionsPerBody>(m.lower * kMotionsPerBody));
+  return dz;
+}
+
+// Keep the motions that are not held.
+std::vector<int> free_coordinates(const Vehicle& v, const Layout& layout) {
+  std::vector<int> free;
+  for (int b = 0; b < layout.bodies; ++b)
+    for (int m = 0; m < kMotionsPerBody; ++m) {
+      const auto& held = v.bodies[b].held;
+      if (std::find(held.begin(), held.end(), static_cast<Motion>(m)) == held.end())
+        free.push_back(Layout::index(b, static_cast<Motion>(m)));
+    }
+  return free;
+}
+
+// Static vertical load of each element (compression positive) under gravity, from the
+// springs alone: K q = Q on the free coordinates, minimum-norm where K is singular.
+std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const std::vector<ElementMap>& maps,
+                                 const Eigen::MatrixXd& K_springs) {
+  Eigen::VectorXd Q = Eigen::VectorXd::Zero(layout.size());
+  for (int b = 0; b < layout.bodies; ++b) {
+    const Body& body = v.bodies[b];
+    const Eigen::Vector3d weight(0.0, 0.0, -body.mass * v.gravity);
+    Q.segment(b * kMotionsPerBody, kMotionsPerBody) =
+        model::point_map(body, body.centre_of_gravity).transpose() * weight;
+  }
+  const std::vector<int> free = free_coordinates(v, layout);
+  const int n = static_cast<int>(free.size());
+  Eigen::MatrixXd Kf(n, n);
+  Eigen::VectorXd Qf(n);
+  for (int i = 0; i < n; ++i) {
+    Qf(i) = Q(free[i]);
+    for (int j = 0; j < n; ++j) Kf(i, j) = K_springs(free[i], free[j]);
+  }
+  // Usually K is positive definite on the free coordinates (LDLᵀ); where a direction has no
+  // stiffness (a rigid-body mode gravity does not excite) the minimum-norm solution.
+  Eigen::VectorXd qf = Kf.ldlt().solve(Qf);
+  if (!((Kf * qf - Qf).norm() <= 1e-10 * Qf.norm()) || !qf.allFinite())
+    qf = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(Kf).solve(Qf);
+  const double mismatch = (Kf * qf - Qf).norm();
+  if (!(mismatch <= 1e-8 * Qf.norm())) {
+    // Name the first body whose weight the springs cannot carry.
+    for (int i = 0; i < n; ++i) {
+      const Eigen::VectorXd r = Kf * qf - Qf;
+      if (std::abs(r(i)) > 1e-8 * Qf.norm()) {
+        const int b = free[i] / kMotionsPerBody;
+        throw NumericalError("no static equilibrium under gravity: nothing holds up body '" +
+                             v.bodies[b].name + "' in " +
+                             to_string(static_cast<Motion>(free[i] % kMotionsPerBody)));
+      }
+    }
+  }
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(layout.size());
+  for (int i = 0; i < n; ++i) q(free[i]) = qf(i);
+  std::vector<double> loads;
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const double kz = series_stiffness(v.elements[k].vertical_stages);
+    loads.push_back(-kz * vertical_stretch(maps[k], q));  // upper sinks: compression
+  }
+  return loads;
+}
+
+double hanger_stiffness(const SwingHanger& hanger, double load) {
+  // Pendulum: N = load / (λ cos α), bogie-wagons-natural digest §2.8.
+  return load / (hanger.length * std::cos(hanger.inclination));
+}
+
+}  // namespace
+
+LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
+  std::map<std::string, int> index;
+  check_vehicle(vehicle, &index);
+  const Layout layout{static_cast<int>(vehicle.bodies.size())};
+  const int N = layout.size();
+
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(N, N);
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(N, N);
+  Eigen::MatrixXd K_springs = Eigen::MatrixXd::Zero(N, N);
+  Eigen::MatrixXd K_gravity = Eigen::MatrixXd::Zero(N, N);
+
+  for (int b = 0; b < layout.bodies; ++b)
+    M.block(b * kMotionsPerBody, b * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) =
+        model::body_mass(vehicle.bodies[b]);
+
+  std::vector<ElementMap> maps;
+  for (const Element& e : vehicle.elements) {
+    maps.push_back(element_map(vehicle, index, e));
+    // A hanger's lateral stiffness needs the static load: it is added below.
+    const double lateral = e.hanger ? 0.0 : series_stiffness(e.lateral_stages);
+    add_element(maps.back(),
+                {series_stiffness(e.longitudinal_stages), lateral, series_stiffness(e.vertical_stages)},
+                &K_springs);
+    add_element(maps.back(), {0.0, e.lateral_damping, e.vertical_damping}, &C);
+  }
+
+  const std::vector<double> loads = static_loads(vehicle, layout, maps, K_springs);
+
+  Eigen::MatrixXd K = K_springs;
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Element& e = vehicle.elements[k];
+    if (!e.hanger) continue;
+    // The pendulum in series with any lateral spring stiffness of the same element.
+    const double pendulum = hanger_stiffness(*e.hanger, loads[k]);
+    const double spring = series_stiffness(e.lateral_stages);
+    const double lateral = spring > 0.0 ? 1.0 / (1.0 / pendulum + 1.0 / spring) : pendulum;
+    add_element(maps[k], {0.0, lateral, 0.0}, &K);
+  }
+
+  // Dead loads: each weight at its CG, each element's static load at its point.
+  for (int b = 0; b < layout.bodies; ++b) {
+    const Body& body = vehicle.bodies[b];
+    K_gravity.block(b * kMotionsPerBody, b * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) +=
+        model::dead_load_stiffness(body, body.centre_of_gravity,
+                                   Eigen::Vector3d(0.0, 0.0, -body.mass * vehicle.gravity));
+  }
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Element& e = vehicle.elements[k];
+    const Eigen::Vector3d on_upper(0.0, 0.0, loads[k]);
+    const int up = index.at(e.upper);
+    K_gravity.block(up * kMotionsPerBody, up * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) +=
+        model::dead_load_stiffness(vehicle.bodies[up], e.point, on_upper);
+    if (!e.lower.empty()) {
+      const int low = index.at(e.lower);
+      K_gravity.block(low * kMotionsPerBody, low * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) +=
+          model::dead_load_stiffness(vehicle.bodies[low], e.point, -on_upper);
+    }
+  }
+  K += K_gravity;
+
+  // Keep the motions of the requested set that are not held.
+  LinearSystem system;
+  std::vector<int> keep;
+  for (int c : free_coordinates(vehicle, layout)) {
+    const auto motion = static_cast<Motion>(c % kMotionsPerBody);
+    if (!in_set(motion, set)) continue;
+    const int b = c / kMotionsPerBody;
+    keep.push_back(c);
+    system.dofs.push_back({vehicle.bodies[b].name + "." + to_string(motion), b, motion});
+  }
+  const int n = static_cast<int>(keep.size());
+  auto pick = [&](const Eigen::MatrixXd& A) {
+    Eigen::MatrixXd out(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) out(i, j) = A(keep[i], keep[j]);
+    return out;
+  };
+  system.mass = pick(M);
+  system.damping = pick(C);
+  system.stiffness = pick(K);
+  system.gravity_stiffness = pick(K_gravity);
+  system.vehicle = vehicle;
+  system.element_loads = loads;
+  return system;
+}
+
+}  // namespace railmodal

@@ -1,0 +1,165 @@
+#include <cmath>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "railmodal/report.hpp"
+
+namespace railmodal {
+
+const char* to_string(OutputFormat format) {
+  switch (format) {
+    case OutputFormat::table: return "table";
+    case OutputFormat::csv: return "csv";
+    case OutputFormat::json: return "json";
+  }
+  return "?";
+}
+
+std::optional<OutputFormat> output_format_from_string(const std::string& word) {
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::csv, OutputFormat::json})
+    if (word == to_string(f)) return f;
+  return std::nullopt;
+}
+
+namespace {
+
+std::string centre_text(const Mode& mode) {
+  if (!mode.centre) return "";
+  const auto& c = *mode.centre;
+  if (c.at_infinity) return c.about + ": none (translation)";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(3) << (c.about == "roll" ? "roll, z = " : "pitch, x = ")
+    << c.position << " m";
+  return s.str();
+}
+
+// Quantities that do not exist for a mode are written as blanks (CSV, table) or null
+// (JSON), never as inf or NaN.
+std::string number(double value, int precision, bool present) {
+  if (!present) return "";
+  std::ostringstream s;
+  s << std::setprecision(precision) << value;
+  return s.str();
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+void write_table(std::ostream& out, const LinearSystem& system, const ModalResult& r) {
+  out << "railmodal modes: " << system.vehicle.name << "\n";
+  out << "degrees of freedom: " << r.dofs.size();
+  if (!r.condensed.empty()) {
+    out << " (massless, condensed statically:";
+    for (const auto& c : r.condensed) out << " " << c;
+    out << ")";
+  }
+  out << "\n\n";
+  out << std::left << std::setw(4) << "#" << std::setw(34) << "mode" << std::right << std::setw(11)
+      << "f [Hz]" << std::setw(11) << "T [s]" << std::setw(12) << "ω [rad/s]" << "  "
+      << "centre of oscillation\n";
+  for (const auto& m : r.modes) {
+    out << std::left << std::setw(4) << m.index << std::setw(34) << m.name << std::right;
+    if (m.kind == ModeKind::oscillatory) {
+      out << std::fixed << std::setprecision(4) << std::setw(11) << m.frequency_hz << std::setw(11)
+          << m.period_s << std::setw(12) << std::setprecision(3) << m.omega_rad_s;
+    } else if (m.kind == ModeKind::unstable) {
+      out << std::setw(34) << ("diverges, σ = " + number(m.divergence_rate, 4, true) + " 1/s");
+    } else {
+      out << std::setw(34) << "rigid-body (λ = 0)";
+    }
+    out << "  " << centre_text(m) << "\n";
+  }
+  out << "\nmode shapes (mass-normalised; m and rad per √kg)\n";
+  out << std::left << std::setw(18) << "dof" << std::right;
+  for (const auto& m : r.modes) out << std::setw(11) << m.index;
+  out << "\n";
+  for (size_t i = 0; i < r.dofs.size(); ++i) {
+    out << std::left << std::setw(18) << r.dofs[i].label << std::right;
+    for (const auto& m : r.modes) {
+      // Entries at round-off level of the mode's largest read as exact zeros (JSON and CSV
+      // keep the raw values).
+      const double v = m.shape(static_cast<int>(i));
+      if (std::abs(v) <= 1e-12 * m.shape.cwiseAbs().maxCoeff())
+        out << std::setw(11) << "0";
+      else
+        out << std::setw(11) << std::scientific << std::setprecision(2) << v;
+    }
+    out << "\n";
+  }
+  out << std::defaultfloat << "\nchecks: max relative residual " << std::setprecision(2) << r.max_residual
+      << ", max |ΦᵀMΦ − I| " << r.orthonormality_error << "\n";
+}
+
+void write_csv(std::ostream& out, const ModalResult& r) {
+  out << "index,name,kind,frequency_hz,period_s,omega_rad_s,divergence_rate_per_s,centre_of_oscillation";
+  for (const auto& d : r.dofs) out << "," << csv_field(d.label);
+  out << "\n";
+  for (const auto& m : r.modes) {
+    const bool osc = m.kind == ModeKind::oscillatory;
+    out << m.index << "," << csv_field(m.name) << "," << to_string(m.kind) << ","
+        << number(m.frequency_hz, 10, osc) << "," << number(m.period_s, 10, osc) << ","
+        << number(m.omega_rad_s, 10, osc) << ","
+        << number(m.divergence_rate, 10, m.kind == ModeKind::unstable) << ","
+        << csv_field(centre_text(m));
+    for (int i = 0; i < m.shape.size(); ++i) out << "," << number(m.shape(i), 10, true);
+    out << "\n";
+  }
+}
+
+void write_json(std::ostream& out, const LinearSystem& system, const ModalResult& r) {
+  using nlohmann::json;
+  json doc;
+  doc["vehicle"] = system.vehicle.name;
+  doc["dofs"] = json::array();
+  for (const auto& d : r.dofs) doc["dofs"].push_back(d.label);
+  doc["modes"] = json::array();
+  for (const auto& m : r.modes) {
+    const bool osc = m.kind == ModeKind::oscillatory;
+    json j;
+    j["index"] = m.index;
+    j["name"] = m.name;
+    j["kind"] = to_string(m.kind);
+    j["stable"] = m.kind != ModeKind::unstable;
+    j["eigenvalue"] = m.eigenvalue;
+    j["frequency_hz"] = osc ? json(m.frequency_hz) : json(nullptr);
+    j["period_s"] = osc ? json(m.period_s) : json(nullptr);
+    j["omega_rad_s"] = osc ? json(m.omega_rad_s) : json(nullptr);
+    j["divergence_rate_per_s"] = m.kind == ModeKind::unstable ? json(m.divergence_rate) : json(nullptr);
+    if (m.centre) {
+      json c;
+      c["body"] = m.centre->body;
+      c["about"] = m.centre->about;
+      c[m.centre->about == "roll" ? "z_m" : "x_m"] = m.centre->at_infinity ? json(nullptr) : json(m.centre->position);
+      j["centre_of_oscillation"] = c;
+    } else {
+      j["centre_of_oscillation"] = nullptr;
+    }
+    j["residual"] = m.residual;
+    json shape = json::object();
+    for (size_t i = 0; i < r.dofs.size(); ++i) shape[r.dofs[i].label] = m.shape(static_cast<int>(i));
+    j["shape"] = shape;
+    doc["modes"].push_back(j);
+  }
+  doc["condensed"] = r.condensed;
+  doc["max_residual"] = r.max_residual;
+  doc["orthonormality_error"] = r.orthonormality_error;
+  out << doc.dump(2) << "\n";
+}
+
+}  // namespace
+
+void write_modes(std::ostream& out, const LinearSystem& system, const ModalResult& result,
+                 OutputFormat format) {
+  switch (format) {
+    case OutputFormat::table: write_table(out, system, result); break;
+    case OutputFormat::csv: write_csv(out, result); break;
+    case OutputFormat::json: write_json(out, system, result); break;
+  }
+}
+
+}  // namespace railmodal

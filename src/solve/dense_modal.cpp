@@ -1,0 +1,176 @@
+// Dense generalised symmetric eigen-analysis K φ = λ M φ with static condensation of
+// massless degrees of freedom and a checked Cholesky factorisation of M.
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "railmodal/errors.hpp"
+#include "railmodal/modal.hpp"
+#include "solve/mode_naming.hpp"
+
+namespace railmodal {
+
+const char* to_string(ModeKind kind) {
+  switch (kind) {
+    case ModeKind::oscillatory: return "oscillatory";
+    case ModeKind::rigid_body: return "rigid-body";
+    case ModeKind::unstable: return "unstable";
+  }
+  return "?";
+}
+
+bool ModalOptions::is_valid(std::string* why) const {
+  if (!(zero_tolerance > 0.0 && zero_tolerance < 1e-2)) {
+    if (why) *why = "zero_tolerance must satisfy 0 < zero_tolerance < 1e-2";
+    return false;
+  }
+  if (!(max_residual > 0.0)) {
+    if (why) *why = "max_residual must be positive";
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925;
+
+Eigen::MatrixXd take(const Eigen::MatrixXd& A, const std::vector<int>& rows, const std::vector<int>& cols) {
+  Eigen::MatrixXd out(rows.size(), cols.size());
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t j = 0; j < cols.size(); ++j) out(i, j) = A(rows[i], cols[j]);
+  return out;
+}
+
+// Cholesky M = L Lᵀ that names the degree of freedom where it breaks down, so that a
+// mass matrix that is not positive definite is a clear error and never garbage. Eigen's LLT
+// does the work; when it reports a failure, or a pivot is at round-off level, the
+// factorisation is repeated column by column to find the degree of freedom.
+Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<std::string>& labels) {
+  const double tiny = 64.0 * std::numeric_limits<double>::epsilon() * M.diagonal().cwiseAbs().maxCoeff();
+  Eigen::LLT<Eigen::MatrixXd> llt(M);
+  if (llt.info() == Eigen::Success) {
+    Eigen::MatrixXd L = llt.matrixL();
+    if ((L.diagonal().array().square() > tiny).all()) return L;
+  }
+  const int n = static_cast<int>(M.rows());
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n, n);
+  for (int j = 0; j < n; ++j) {
+    double pivot = M(j, j) - L.row(j).head(j).squaredNorm();
+    // Round-off in a positive definite matrix leaves pivots of order ε·scale at worst.
+    if (!(pivot > tiny))
+      throw NumericalError("the mass matrix is not positive definite at degree of freedom '" +
+                           labels[j] + "' (pivot " + std::to_string(pivot) +
+                           "): its inertia is zero or depends on the others");
+    L(j, j) = std::sqrt(pivot);
+    for (int i = j + 1; i < n; ++i)
+      L(i, j) = (M(i, j) - L.row(i).head(j).dot(L.row(j).head(j))) / L(j, j);
+  }
+  return L;  // every pivot passed after all (LLT was at the round-off edge)
+}
+
+}  // namespace
+
+ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument("ModalOptions: " + why);
+  const int n = system.size();
+  if (n == 0) throw std::invalid_argument("the system has no degrees of freedom");
+  const Eigen::MatrixXd& M = system.mass;
+  const Eigen::MatrixXd& K = system.stiffness;
+  if (!M.allFinite() || !K.allFinite())
+    throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
+
+  ModalResult result;
+  result.dofs = system.dofs;
+
+  // Massless DOFs: an exactly zero row of M. They are condensed statically, as the book
+  // eliminates the massless leaf-spring end (eq. 192e) and the bogie roll (eq. 252c).
+  std::vector<int> kept, massless;
+  for (int i = 0; i < n; ++i) (M.row(i).cwiseAbs().maxCoeff() == 0.0 ? massless : kept).push_back(i);
+  if (kept.empty()) throw NumericalError("every degree of freedom is massless");
+  Eigen::MatrixXd Kr = take(K, kept, kept);
+  Eigen::MatrixXd recover;  // φ_massless = recover · φ_kept
+  if (!massless.empty()) {
+    const Eigen::MatrixXd Kss = take(K, massless, massless);
+    const Eigen::MatrixXd Ksm = take(K, massless, kept);
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(Kss);
+    lu.setThreshold(1e-12);
+    if (!lu.isInvertible()) {
+      // Name a massless DOF with no stiffness of its own.
+      std::string name = system.dofs[massless[0]].label;
+      for (int s : massless)
+        if (K.row(s).cwiseAbs().maxCoeff() == 0.0) { name = system.dofs[s].label; break; }
+      throw NumericalError("degree of freedom '" + name +
+                           "' has neither mass nor a restraint; give it inertia or hold it");
+    }
+    recover = -lu.solve(Ksm);
+    Kr += take(K, kept, massless) * recover;
+    for (int s : massless) result.condensed.push_back(system.dofs[s].label);
+  }
+  const Eigen::MatrixXd Mr = take(M, kept, kept);
+  std::vector<std::string> kept_labels;
+  for (int i : kept) kept_labels.push_back(system.dofs[i].label);
+
+  // K φ = λ M φ  →  (L⁻¹ K L⁻ᵀ) y = λ y,  φ = L⁻ᵀ y: φ is M-normalised when y is unit.
+  const Eigen::MatrixXd L = checked_cholesky(Mr, kept_labels);
+  const auto lower = L.triangularView<Eigen::Lower>();
+  Eigen::MatrixXd A = lower.solve(Kr);
+  A = lower.solve(A.transpose()).transpose();
+  A = 0.5 * (A + A.transpose());
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
+  if (eig.info() != Eigen::Success) throw NumericalError("the symmetric eigensolver did not converge");
+  const Eigen::VectorXd lambda = eig.eigenvalues();  // ascending
+  const Eigen::MatrixXd phi_kept = L.transpose().triangularView<Eigen::Upper>().solve(eig.eigenvectors());
+
+  const int m = static_cast<int>(kept.size());
+  Eigen::MatrixXd phi = Eigen::MatrixXd::Zero(n, m);
+  for (int i = 0; i < m; ++i) phi.row(kept[i]) = phi_kept.row(i);
+  if (!massless.empty()) {
+    const Eigen::MatrixXd rec = recover * phi_kept;
+    for (size_t s = 0; s < massless.size(); ++s) phi.row(massless[s]) = rec.row(static_cast<int>(s));
+  }
+
+  const double scale = lambda.cwiseAbs().maxCoeff();
+  const double zero = options.zero_tolerance * scale;
+  const double norm_K = K.norm(), norm_M = M.norm();
+  const Eigen::MatrixXd K_phi = K * phi, M_phi = M * phi;
+  for (int k = 0; k < m; ++k) {
+    Mode mode;
+    mode.index = k + 1;
+    mode.eigenvalue = lambda(k);
+    mode.shape = phi.col(k);
+    if (std::abs(lambda(k)) <= zero) {
+      mode.kind = ModeKind::rigid_body;
+      mode.eigenvalue = lambda(k);
+    } else if (lambda(k) < 0.0) {
+      mode.kind = ModeKind::unstable;
+      mode.divergence_rate = std::sqrt(-lambda(k));
+    } else {
+      mode.kind = ModeKind::oscillatory;
+      mode.omega_rad_s = std::sqrt(lambda(k));
+      mode.frequency_hz = mode.omega_rad_s / kTwoPi;
+      mode.period_s = kTwoPi / mode.omega_rad_s;
+    }
+    mode.kinetic_energy_share = mode.shape.cwiseProduct(M_phi.col(k));
+    const double denom = (norm_K + std::abs(lambda(k)) * norm_M) * mode.shape.norm();
+    mode.residual = denom > 0.0 ? (K_phi.col(k) - lambda(k) * M_phi.col(k)).norm() / denom : 0.0;
+    result.max_residual = std::max(result.max_residual, mode.residual);
+    auto description = solve::describe_mode(system, mode.shape);
+    mode.name = description.name;
+    mode.centre = description.centre;
+    if (mode.kind == ModeKind::unstable) mode.name += " (unstable)";
+    if (mode.kind == ModeKind::rigid_body) mode.name += " (rigid-body)";
+    result.modes.push_back(std::move(mode));
+  }
+  // Orthonormality over the kept coordinates (the condensed ones carry no mass).
+  const Eigen::MatrixXd G = phi.transpose() * M_phi;
+  result.orthonormality_error = (G - Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff();
+  if (!(result.max_residual <= options.max_residual))
+    throw NumericalError("eigen-solution residual " + std::to_string(result.max_residual) +
+                         " exceeds the limit " + std::to_string(options.max_residual));
+  return result;
+}
+
+}  // namespace railmodal

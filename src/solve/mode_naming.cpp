@@ -1,0 +1,130 @@
+#include "solve/mode_naming.hpp"
+
+#include <Eigen/Dense>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <map>
+
+#include "model/rigid_body.hpp"
+
+namespace railmodal::solve {
+namespace {
+
+using model::BodyVector;
+using model::kMotionsPerBody;
+
+// Word for each energy term at the CG; longitudinal CG motion belongs to pitch.
+enum Term { kLateral, kVertical, kLongitudinal, kRoll, kPitch, kYaw, kTerms };
+
+struct BodyEnergy {
+  double total = 0.0;
+  std::array<double, kTerms> term{};
+  BodyVector motion = BodyVector::Zero();  // the body's five motions in this mode
+};
+
+BodyEnergy energy_of(const Body& body, const BodyVector& q) {
+  BodyEnergy e;
+  e.motion = q;
+  const Eigen::Vector3d cg = model::point_map(body, body.centre_of_gravity) * q;
+  const Eigen::Vector3d rotation(q(2), q(3), q(4));
+  e.term[kLongitudinal] = 0.5 * body.mass * cg.x() * cg.x();
+  e.term[kLateral] = 0.5 * body.mass * cg.y() * cg.y();
+  e.term[kVertical] = 0.5 * body.mass * cg.z() * cg.z();
+  e.term[kRoll] = 0.5 * body.inertia.x() * rotation.x() * rotation.x();
+  e.term[kPitch] = 0.5 * body.inertia.y() * rotation.y() * rotation.y();
+  e.term[kYaw] = 0.5 * body.inertia.z() * rotation.z() * rotation.z();
+  for (double t : e.term) e.total += t;
+  return e;
+}
+
+std::string family_of(const std::string& name) {
+  size_t end = name.size();
+  while (end > 0 && (std::isdigit(static_cast<unsigned char>(name[end - 1])) || name[end - 1] == '_'))
+    --end;
+  return name.substr(0, end);
+}
+
+// Height of the line with no lateral motion (roll) or x of the point with no vertical
+// motion (pitch), from the motions of the reference point.
+std::optional<CentreOfOscillation> centre_of(const Body& body, const BodyVector& q, bool roll) {
+  CentreOfOscillation c;
+  c.body = body.name;
+  c.about = roll ? "roll" : "pitch";
+  const double rotation = roll ? q(2) : q(3);
+  const double translation = roll ? q(0) : q(1);
+  // y(z) = y_ref − θx (z − z_ref); z(x) = z_ref − θy (x − x_ref)
+  if (std::abs(rotation) * 1e6 <= std::abs(translation) || rotation == 0.0) {
+    c.at_infinity = true;
+    return c;
+  }
+  c.position = (roll ? body.reference_point.z() : body.reference_point.x()) + translation / rotation;
+  return c;
+}
+
+}  // namespace
+
+ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape) {
+  const auto& bodies = system.vehicle.bodies;
+  std::vector<BodyVector> motion(bodies.size(), BodyVector::Zero());
+  for (size_t i = 0; i < system.dofs.size(); ++i)
+    motion[system.dofs[i].body](static_cast<int>(system.dofs[i].motion)) = shape(static_cast<int>(i));
+
+  std::vector<BodyEnergy> energy;
+  int lead = 0;
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    energy.push_back(energy_of(bodies[b], motion[b]));
+    if (energy[b].total > energy[lead].total) lead = static_cast<int>(b);
+  }
+  const BodyEnergy& e = energy[lead];
+  const Body& body = bodies[lead];
+
+  // Leading motion of the leading body.
+  std::array<double, kTerms> t = e.term;
+  t[kPitch] += t[kLongitudinal];
+  t[kLongitudinal] = 0.0;
+  int word = 0;
+  for (int k = 1; k < kTerms; ++k)
+    if (t[k] > t[word]) word = k;
+
+  ModeDescription d;
+  std::string motion_word;
+  Motion key_motion = Motion::bounce;
+  const double share_lateral = e.total > 0 ? t[kLateral] / e.total : 0.0;
+  const double share_roll = e.total > 0 ? t[kRoll] / e.total : 0.0;
+  // Sway needs a free lateral motion; a body held laterally (two-axle wagon, bogie frame)
+  // simply rolls about its fixed axis, the book's "side rocking".
+  const bool lateral_free = system.index_of(body.name + ".lateral") >= 0;
+  if (lateral_free && (word == kLateral || word == kRoll) && share_lateral >= 0.1 && share_roll >= 0.1) {
+    d.centre = centre_of(body, e.motion, true);
+    const bool lower = !d.centre->at_infinity && d.centre->position < body.centre_of_gravity.z();
+    motion_word = lower ? "lower sway" : "upper sway";
+    key_motion = Motion::roll;
+  } else {
+    switch (word) {
+      case kLateral: motion_word = "lateral"; key_motion = Motion::lateral; break;
+      case kVertical: motion_word = "bounce"; key_motion = Motion::bounce; break;
+      case kRoll: motion_word = "roll"; key_motion = Motion::roll; break;
+      case kPitch: motion_word = "pitch"; key_motion = Motion::pitch; break;
+      default: motion_word = "yaw"; key_motion = Motion::yaw; break;
+    }
+    if (word == kRoll) d.centre = centre_of(body, e.motion, true);
+    if (word == kPitch) d.centre = centre_of(body, e.motion, false);
+  }
+
+  // A twin body (bogie1/bogie2) sharing the energy: name the pair and their phase.
+  const std::string family = family_of(body.name);
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    if (static_cast<int>(b) == lead || family.empty() || family == body.name) continue;
+    if (family_of(bodies[b].name) != family || energy[b].total < 0.5 * e.total) continue;
+    const int m = static_cast<int>(key_motion);
+    const double a = e.motion(m), other = energy[b].motion(m);
+    const std::string phase = a * other >= 0.0 ? "in phase" : "antiphase";
+    d.name = family + "s " + motion_word + ", " + phase;
+    return d;
+  }
+  d.name = body.name + " " + motion_word;
+  return d;
+}
+
+}  // namespace railmodal::solve

@@ -1,0 +1,23 @@
+# Runs the railmodal program and checks its exit code, what it prints, and that a failed
+# run leaves no output file behind.
+#   -DEXE=... -DARGS="a|b|c" -DCODE=3 [-DSTDERR=regex] [-DSTDOUT=regex] [-DNO_FILE=path]
+string(REPLACE "|" ";" ARGS "${ARGS}")
+execute_process(COMMAND ${EXE} ${ARGS} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL CODE)
+  message(FATAL_ERROR "exit code ${code}, expected ${CODE}\nstdout: ${out}\nstderr: ${err}")
+endif()
+if(DEFINED STDERR AND NOT err MATCHES "${STDERR}")
+  message(FATAL_ERROR "stderr does not match '${STDERR}':\n${err}")
+endif()
+if(DEFINED STDOUT AND NOT out MATCHES "${STDOUT}")
+  message(FATAL_ERROR "stdout does not match '${STDOUT}':\n${out}")
+endif()
+if(DEFINED NO_FILE AND EXISTS "${NO_FILE}")
+  message(FATAL_ERROR "a failed run left ${NO_FILE} behind")
+endif()
+if(DEFINED FILE_MATCHES)
+  file(READ "${OUT_FILE}" content)
+  if(NOT content MATCHES "${FILE_MATCHES}")
+    message(FATAL_ERROR "${OUT_FILE} does not match '${FILE_MATCHES}'")
+  endif()
+endif()

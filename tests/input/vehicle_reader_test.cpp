@@ -1,0 +1,128 @@
+// Bad vehicle files: every error names file, line, column and key.
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+const std::string kGood = R"([vehicle]
+name = "test wagon"
+template = "two-axle"
+[body]
+weight = "20000 kgf"
+cg_height = "100 cm"
+radius_of_gyration = { roll = "110 cm", pitch = "260 cm" }
+[suspension]
+wheelbase = "400 cm"
+spring_spacing = "200 cm"
+spring = { kind = "coil", stiffness = "1000 kgf/cm" }
+)";
+
+// Replaces the first occurrence of `from` in the good file and expects an InputError whose
+// text contains each of `parts` (e.g. "bad.toml:5:10", "key 'body.weight'").
+void expect_error(const std::string& from, const std::string& to, std::vector<std::string> parts) {
+  std::string text = kGood;
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from;
+  text.replace(at, from.size(), to);
+  const std::string path = write_temp("bad.toml", text);
+  try {
+    load_vehicle(path);
+    FAIL() << "no error for " << to;
+  } catch (const InputError& e) {
+    for (const auto& part : parts) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    EXPECT_EQ(e.file(), path);
+  }
+}
+
+TEST(VehicleReader, GoodFileLoads) {
+  const Vehicle v = load_vehicle(write_temp("good.toml", kGood));
+  EXPECT_EQ(v.name, "test wagon");
+  EXPECT_EQ(v.bodies.size(), 1u);
+  EXPECT_EQ(v.elements.size(), 4u);
+}
+
+TEST(VehicleReader, WrongDimensionNamesLineColumnAndKey) {
+  expect_error("weight = \"20000 kgf\"", "weight = \"20000 kgf/cm\"",
+               {"bad.toml:5:10: error: key 'body.weight'", "expected a force", "force/length"});
+}
+
+TEST(VehicleReader, MissingKey) {
+  expect_error("cg_height = \"100 cm\"\n", "", {"key 'body.cg_height': missing"});
+}
+
+// A misspelt required key is reported where the misspelling is, with the right spelling.
+TEST(VehicleReader, MisspeltKey) {
+  expect_error("cg_height", "cg_hieght", {"bad.toml:6:", "key 'body.cg_height': missing", "'cg_hieght'"});
+}
+
+TEST(VehicleReader, UnknownKey) {
+  expect_error("cg_height = \"100 cm\"", "cg_height = \"100 cm\"\ncolour = \"red\"",
+               {"bad.toml:7:", "key 'body.colour': unknown key"});
+}
+
+TEST(VehicleReader, WrongType) {
+  expect_error("\"400 cm\"", "true", {"bad.toml:9:", "key 'suspension.wheelbase'", "got a boolean"});
+}
+
+TEST(VehicleReader, NonPhysicalValues) {
+  expect_error("\"20000 kgf\"", "\"-20000 kgf\"", {"key 'body.weight': must be positive"});
+  expect_error("\"20000 kgf\"", "0", {"key 'body.weight': must be positive"});
+  expect_error("\"20000 kgf\"", "nan", {"key 'body.weight': the value is not a finite number"});
+  expect_error("\"20000 kgf\"", "inf", {"key 'body.weight'"});
+  expect_error("\"1000 kgf/cm\"", "\"-1000 kgf/cm\"", {"key 'suspension.spring.stiffness': must be positive"});
+}
+
+TEST(VehicleReader, BrokenTomlNamesLine) {
+  expect_error("wheelbase = \"400 cm\"", "wheelbase = \"400 cm", {"bad.toml:9", "TOML syntax"});
+}
+
+TEST(VehicleReader, UnknownTemplate) {
+  expect_error("\"two-axle\"", "\"three-axle\"", {"key 'vehicle.template': unknown template"});
+}
+
+TEST(VehicleReader, StaticDeflectionNeedsALoadInTheGeneralForm) {
+  const std::string text = R"([vehicle]
+name = "x"
+[[body]]
+name = "b"
+mass = 1000
+radius_of_gyration = { roll = 1 }
+centre_of_gravity = [0, 0, 0]
+[[element]]
+upper = "b"
+point = [0, 0, 0]
+vertical = { static_deflection = "50 mm" }
+)";
+  try {
+    load_vehicle(write_temp("noload.toml", text));
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("noload.toml:11:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("needs the static load"), std::string::npos) << e.what();
+  }
+}
+
+TEST(VehicleReader, ElementNamesUnknownBody) {
+  const std::string text = R"([vehicle]
+name = "x"
+[[body]]
+name = "b"
+mass = 1000
+radius_of_gyration = { roll = 1 }
+centre_of_gravity = [0, 0, 0]
+[[element]]
+upper = "c"
+point = [0, 0, 0]
+vertical = { stiffness = 1e5 }
+)";
+  EXPECT_THROW(load_vehicle(write_temp("unknown_body.toml", text)), InputError);
+}
+
+TEST(VehicleReader, MissingFile) {
+  EXPECT_THROW(load_vehicle("/nonexistent/wagon.toml"), InputError);
+}
+
+}  // namespace
+}  // namespace railmodal::test

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Installs the built railmodal into a scratch prefix, then configures, builds and runs an
+# out-of-tree consumer that finds it with find_package(railmodal).
+set -euo pipefail
+build_dir=$1 consumer_dir=$2 data_dir=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build_dir" --prefix "$work/prefix" > "$work/install.log"
+cmake -S "$consumer_dir/consumer" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log"
+cmake --build "$work/build" > "$work/build.log"
+"$work/build/consumer" "$data_dir/vehicles/fette_car.toml" | tee "$work/run.log"
+grep -q "body bounce" "$work/run.log"

@@ -1,0 +1,129 @@
+// Modal solve: invariants on every bundled vehicle, classification, checked mass matrix,
+// static condensation of massless degrees of freedom.
+#include <filesystem>
+
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+class BundledVehicle : public ::testing::TestWithParam<std::string> {};
+
+// Invariants, not magic numbers: relative residual ‖Kφ − λMφ‖ and M-orthonormality at
+// round-off level (1e-12 leaves two orders of headroom for n ≤ 15), modes ascending.
+TEST_P(BundledVehicle, ResidualOrthonormalityAndOrder) {
+  for (DofSet set : {DofSet::vertical, DofSet::lateral, DofSet::all}) {
+    const auto system = assemble(load_vehicle(data_file(GetParam())), set);
+    const auto r = solve_modes(system);
+    EXPECT_LT(r.max_residual, 1e-12) << to_string(set);
+    EXPECT_LT(r.orthonormality_error, 1e-12) << to_string(set);
+    for (size_t i = 1; i < r.modes.size(); ++i) EXPECT_LE(r.modes[i - 1].eigenvalue, r.modes[i].eigenvalue);
+    for (const auto& m : r.modes) {
+      EXPECT_NEAR(m.kinetic_energy_share.sum(), 1.0, 1e-12);
+      EXPECT_FALSE(m.name.empty());
+      EXPECT_TRUE(std::isfinite(m.frequency_hz) && std::isfinite(m.period_s));
+    }
+  }
+}
+
+std::vector<std::string> bundled_files() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(RAILMODAL_DATA_DIR) + "/vehicles"))
+    if (entry.path().extension() == ".toml") names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Data, BundledVehicle, ::testing::ValuesIn(bundled_files()),
+                         [](const auto& info) {
+                           std::string n = info.param.substr(0, info.param.size() - 5);
+                           for (char& c : n)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return n;
+                         });
+
+LinearSystem two_dof(const Eigen::Matrix2d& M, const Eigen::Matrix2d& K) {
+  LinearSystem s;
+  s.dofs = {{"a.bounce", 0, Motion::bounce}, {"a.pitch", 0, Motion::pitch}};
+  Body b;
+  b.name = "a";
+  b.mass = 1.0;
+  s.vehicle.bodies = {b};
+  s.mass = M;
+  s.stiffness = K;
+  s.gravity_stiffness = Eigen::Matrix2d::Zero();
+  s.damping = Eigen::Matrix2d::Zero();
+  return s;
+}
+
+TEST(ModalSolve, MassMatrixThatIsNotPositiveDefiniteNamesTheDof) {
+  Eigen::Matrix2d M;
+  M << 1.0, 1.0, 1.0, 1.0;  // singular, no zero row: not condensable
+  try {
+    solve_modes(two_dof(M, Eigen::Matrix2d::Identity()));
+    FAIL();
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("'a.pitch'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ModalSolve, MasslessDofIsCondensedStatically) {
+  Eigen::Matrix2d M, K;
+  M << 2.0, 0.0, 0.0, 0.0;
+  K << 3.0, -1.0, -1.0, 1.0;  // series springs: 1/(1/2 + 1/1)... condensed k = 3 − 1 = 2
+  const auto r = solve_modes(two_dof(M, K));
+  ASSERT_EQ(r.modes.size(), 1u);
+  EXPECT_NEAR(r.modes[0].eigenvalue, 1.0, 1e-15);  // k/m = 2/2
+  EXPECT_EQ(r.condensed, std::vector<std::string>{"a.pitch"});
+  EXPECT_NEAR(r.modes[0].shape(1) / r.modes[0].shape(0), 1.0, 1e-15);  // φ_s = −K_ss⁻¹K_sm φ
+}
+
+TEST(ModalSolve, MasslessUnrestrainedDofIsAnErrorNamingIt) {
+  Eigen::Matrix2d M, K;
+  M << 2.0, 0.0, 0.0, 0.0;
+  K << 3.0, 0.0, 0.0, 0.0;
+  try {
+    solve_modes(two_dof(M, K));
+    FAIL();
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("'a.pitch' has neither mass nor a restraint"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ModalSolve, NegativeZeroAndPositiveEigenvaluesAreClassified) {
+  Eigen::Matrix2d M = Eigen::Matrix2d::Identity(), K;
+  K << -4.0, 0.0, 0.0, 9.0;
+  auto r = solve_modes(two_dof(M, K));
+  EXPECT_EQ(r.modes[0].kind, ModeKind::unstable);
+  EXPECT_DOUBLE_EQ(r.modes[0].divergence_rate, 2.0);
+  EXPECT_EQ(r.modes[1].kind, ModeKind::oscillatory);
+  EXPECT_DOUBLE_EQ(r.modes[1].omega_rad_s, 3.0);
+  K << 0.0, 0.0, 0.0, 9.0;
+  r = solve_modes(two_dof(M, K));
+  EXPECT_EQ(r.modes[0].kind, ModeKind::rigid_body);
+  EXPECT_EQ(r.modes[0].period_s, 0.0);
+}
+
+// A mass ratio of 1e-12 is not singular: it solves, with residual and orthonormality intact.
+TEST(ModalSolve, NearlySingularMassSolves) {
+  Eigen::Matrix2d M, K;
+  M << 1.0, 0.0, 0.0, 1e-12;
+  K << 2.0, -1.0, -1.0, 1.0;
+  const auto r = solve_modes(two_dof(M, K));
+  EXPECT_LT(r.max_residual, 1e-12);
+  EXPECT_LT(r.orthonormality_error, 1e-9);
+  EXPECT_NEAR(r.modes[0].eigenvalue, 1.0, 1e-9);  // the stiff mode of the tiny mass aside
+}
+
+TEST(ModalSolve, InvalidOptionsAreRejected) {
+  ModalOptions o;
+  o.zero_tolerance = -1.0;
+  std::string why;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("zero_tolerance"), std::string::npos);
+  EXPECT_THROW(solve_modes(two_dof(Eigen::Matrix2d::Identity(), Eigen::Matrix2d::Identity()), o),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace railmodal::test

@@ -1,0 +1,19 @@
+// Subcommands of the railmodal program, one file each.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace railmodal::cli {
+
+/// Exit codes (docs/product: 0 success, 2 usage, 3 input, 4 numerical, 5 output, 1 internal).
+enum ExitCode { kSuccess = 0, kInternal = 1, kUsage = 2, kInput = 3, kNumerical = 4, kOutput = 5 };
+
+/// Registers `modes` on the app; the returned function runs it after parsing.
+std::function<int()> add_modes_command(CLI::App& app);
+
+/// Writes `text` to `path` whole or not at all (temporary file, then rename); "-" or ""
+/// is standard output. Returns kOutput with a message on stderr when it cannot.
+int write_output(const std::string& path, const std::string& text);
+
+}  // namespace railmodal::cli

@@ -1,0 +1,66 @@
+// railmodal: modal analysis of railway wagons from the command line.
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "commands.hpp"
+
+namespace railmodal::cli {
+
+int write_output(const std::string& path, const std::string& text) {
+  if (path.empty() || path == "-") {
+    std::cout << text << std::flush;
+    return std::cout ? kSuccess : kOutput;
+  }
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp");
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      std::cerr << path << ": error: cannot write the output file\n";
+      return kOutput;
+    }
+  }
+  std::error_code error;
+  fs::rename(temporary, target, error);
+  if (error) {
+    fs::remove(temporary, error);
+    std::cerr << path << ": error: cannot write the output file\n";
+    return kOutput;
+  }
+  return kSuccess;
+}
+
+}  // namespace railmodal::cli
+
+int main(int argc, char** argv) {
+  using namespace railmodal::cli;
+  CLI::App app{"railmodal: natural modes of railway wagons (bounce, pitch, roll, sway, yaw)"};
+  app.require_subcommand(1);
+  auto run_modes = add_modes_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return kSuccess;
+  } catch (const CLI::CallForAllHelp&) {
+    std::cout << app.help("", CLI::AppFormatMode::All);
+    return kSuccess;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "railmodal: error: " << e.what() << "\nRun 'railmodal --help' for usage.\n";
+    return kUsage;
+  }
+  try {
+    if (app.got_subcommand("modes")) return run_modes();
+  } catch (const std::exception& e) {
+    std::cerr << "railmodal: internal error: " << e.what() << "\n";
+    return kInternal;
+  }
+  return kUsage;
+}
