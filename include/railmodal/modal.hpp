@@ -56,6 +56,9 @@ struct Mode {
   Eigen::VectorXd shape;       ///< mass-normalised: φᵀMφ = 1, over LinearSystem::dofs
   Eigen::VectorXd kinetic_energy_share;  ///< per DOF, sums to 1 (φᵢ (Mφ)ᵢ)
   std::optional<CentreOfOscillation> centre;  ///< for pitch and roll modes
+  /// Another mode has the same eigenvalue (relative gap below 1e-8): only the subspace the
+  /// two span is determined, not this shape on its own (symmetric bogies, for instance).
+  bool repeated = false;
   double residual = 0.0;  ///< ‖Kφ − λMφ‖ / (‖K‖‖φ‖ + |λ|‖M‖‖φ‖)
 };
 

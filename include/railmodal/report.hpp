@@ -21,7 +21,7 @@ std::optional<OutputFormat> output_format_from_string(const std::string& word);
 /// table: one row per mode (index, name, Hz, s, rad/s, centre of oscillation) and the mode
 /// shapes below; csv: one row per mode with one column per DOF; json:
 /// {"vehicle", "dofs", "modes": [{"index", "kind", "frequency_hz", "period_s", "omega_rad_s",
-/// "divergence_rate_per_s", "name", "stable", "centre_of_oscillation", "residual",
+/// "divergence_rate_per_s", "name", "stable", "repeated", "centre_of_oscillation", "residual",
 /// "shape": {label: value}}], "condensed", "max_residual", "orthonormality_error"}.
 void write_modes(std::ostream& out, const LinearSystem& system, const ModalResult& result,
                  OutputFormat format);

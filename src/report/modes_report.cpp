@@ -63,7 +63,8 @@ void write_table(std::ostream& out, const LinearSystem& system, const ModalResul
       << "f [Hz]" << std::setw(11) << "T [s]" << std::setw(12) << "ω [rad/s]" << "  "
       << "centre of oscillation\n";
   for (const auto& m : r.modes) {
-    out << std::left << std::setw(4) << m.index << std::setw(34) << m.name << std::right;
+    out << std::left << std::setw(4) << m.index << std::setw(34) << (m.repeated ? m.name + " *" : m.name)
+        << std::right;
     if (m.kind == ModeKind::oscillatory) {
       out << std::fixed << std::setprecision(4) << std::setw(11) << m.frequency_hz << std::setw(11)
           << m.period_s << std::setw(12) << std::setprecision(3) << m.omega_rad_s;
@@ -74,6 +75,12 @@ void write_table(std::ostream& out, const LinearSystem& system, const ModalResul
     }
     out << "  " << centre_text(m) << "\n";
   }
+  for (const auto& m : r.modes)
+    if (m.repeated) {
+      out << "\n* repeated frequency: the modes marked span a shared subspace; any combination of\n"
+             "  their shapes is an equally valid mode shape.\n";
+      break;
+    }
   out << "\nmode shapes (mass-normalised; m and rad per √kg)\n";
   out << std::left << std::setw(18) << "dof" << std::right;
   for (const auto& m : r.modes) out << std::setw(11) << m.index;
@@ -124,6 +131,7 @@ void write_json(std::ostream& out, const LinearSystem& system, const ModalResult
     j["index"] = m.index;
     j["name"] = m.name;
     j["kind"] = to_string(m.kind);
+    j["repeated"] = m.repeated;
     j["stable"] = m.kind != ModeKind::unstable;
     j["eigenvalue"] = m.eigenvalue;
     j["frequency_hz"] = osc ? json(m.frequency_hz) : json(nullptr);

@@ -164,6 +164,9 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
     if (mode.kind == ModeKind::rigid_body) mode.name += " (rigid-body)";
     result.modes.push_back(std::move(mode));
   }
+  for (int k = 0; k + 1 < m; ++k)
+    if (std::abs(lambda(k + 1) - lambda(k)) <= 1e-8 * std::max(std::abs(lambda(k + 1)), zero))
+      result.modes[k].repeated = result.modes[k + 1].repeated = true;
   // Orthonormality over the kept coordinates (the condensed ones carry no mass).
   const Eigen::MatrixXd G = phi.transpose() * M_phi;
   result.orthonormality_error = (G - Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff();

@@ -115,6 +115,28 @@ TEST(ModalSolve, NearlySingularMassSolves) {
   EXPECT_NEAR(r.modes[0].eigenvalue, 1.0, 1e-9);  // the stiff mode of the tiny mass aside
 }
 
+// Exactly repeated frequencies (the two bogies of a symmetric wagon pitch at one frequency):
+// both modes are flagged, and what is checked is the invariant subspace they span, not
+// single vectors: K Φ = M Φ Λ on the pair, and the pair is M-orthonormal.
+TEST(ModalSolve, RepeatedFrequenciesAreFlaggedAndSpanTheSubspace) {
+  const auto system = assemble(load_vehicle(data_file("fette_car.toml")), DofSet::vertical);
+  const auto r = solve_modes(system);
+  std::vector<const Mode*> pair;
+  for (const auto& m : r.modes)
+    if (m.repeated) pair.push_back(&m);
+  ASSERT_EQ(pair.size(), 2u);
+  Eigen::MatrixXd Phi(system.size(), 2);
+  Phi << pair[0]->shape, pair[1]->shape;
+  const double lambda = pair[0]->eigenvalue;
+  EXPECT_LT((system.stiffness * Phi - lambda * system.mass * Phi).norm(),
+            1e-12 * system.stiffness.norm() * Phi.norm());
+  EXPECT_LT((Phi.transpose() * system.mass * Phi - Eigen::Matrix2d::Identity()).norm(), 1e-12);
+  for (const auto& m : r.modes)
+    if (&m != pair[0] && &m != pair[1]) {
+      EXPECT_FALSE(m.repeated) << m.name;
+    }
+}
+
 TEST(ModalSolve, InvalidOptionsAreRejected) {
   ModalOptions o;
   o.zero_tolerance = -1.0;

@@ -90,6 +90,29 @@ TEST(BogieWagonBounce, KhaninCarBothStrokesV5) {  // book prints 6219 / 119 and 
   EXPECT_NEAR(half_sum, 0.2868 + 0.3184, 2e-4);
 }
 
+// Single suspension (unsprung bogie frames, Diamond type): the body bounces on the cradle
+// springs alone, T = 2π√(f/g) with f the static deflection, eq. (16).
+TEST(BogieWagonBounce, SingleSuspensionBouncesOnItsCradleSprings) {
+  const std::string file = write_temp("single.toml", R"toml(
+[vehicle]
+name = "single suspension"
+template = "bogie"
+suspension = "single"
+gravity = "981 cm/s^2"
+[body]
+weight = "40 tf"
+cg_height = "150 cm"
+bogie_spacing = "14 m"
+radius_of_gyration = { roll = "1.1 m", pitch = "5.6 m", yaw = "5.6 m" }
+[secondary]
+spacing = "1640 mm"
+spring = { kind = "coil", static_deflection = "95 mm" }
+)toml");
+  const auto r = solve_modes(assemble(load_vehicle(file), DofSet::vertical));
+  ASSERT_EQ(r.dofs.size(), 2u);  // no bogie bodies
+  EXPECT_NEAR(mode_named(r, "body bounce").period_s / (2 * kPi * std::sqrt(0.095 / 9.81)), 1.0, 1e-12);
+}
+
 // Mode shapes z2/z3 (197a): V2 −9.09 / 0.410, V3 −42.4 / 0.146 (consistent; 3 figures).
 TEST(BogieWagonBounce, ModeShapeRatios197a) {
   auto ratio = [](const ModalResult& r, const std::string& name) {
