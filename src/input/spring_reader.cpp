@@ -1,5 +1,6 @@
 #include "input/spring_reader.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "model/spring_formulas.hpp"
@@ -108,6 +109,17 @@ std::vector<SpringStage> read_spring_stages(TableReader& parent, const std::stri
   if (!parent.has(key)) return stages;
   for (auto& t : parent.tables(key)) stages.push_back(read_spring_stage(t, element_load));
   return stages;
+}
+
+SwingHanger read_hanger(TableReader& parent) {
+  TableReader t = parent.table("hanger");
+  SwingHanger h;
+  h.length = t.positive("length", Quantity::length);
+  h.inclination = t.optional_quantity("inclination", Quantity::angle).value_or(0.0);
+  if (!(std::abs(h.inclination) < 1.3962634015954636))  // 80°: beyond, cos α ≈ 0
+    t.fail("inclination", "must be within ±80 degrees; write units, e.g. \"14 deg\"");
+  t.finish();
+  return h;
 }
 
 }  // namespace railmodal::input

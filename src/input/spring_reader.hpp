@@ -1,5 +1,6 @@
-// Reading spring stages: stiffness given directly, as flexibility, as static deflection
-// under the carried load, or from coil, leaf or elliptic spring geometry.
+// Reading the parts of a suspension element: spring stages (stiffness given directly, as
+// flexibility, as static deflection under the carried load, or from coil, leaf or elliptic
+// spring geometry) and swing hangers.
 #pragma once
 
 #include <optional>
@@ -18,5 +19,8 @@ SpringStage read_spring_stage(TableReader& table, std::optional<double> element_
 /// The stages of `key` (a table or an array of tables, in series); empty when absent.
 std::vector<SpringStage> read_spring_stages(TableReader& parent, const std::string& key,
                                             std::optional<double> element_load);
+
+/// The `hanger = {length, inclination}` table of an element or a cradle.
+SwingHanger read_hanger(TableReader& parent);
 
 }  // namespace railmodal::input

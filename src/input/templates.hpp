@@ -15,7 +15,4 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v);
 /// (bogie-wagons-natural digest §2.1–2.10).
 void read_bogie(TableReader& head, TableReader& root, Vehicle* v);
 
-/// The `hanger = {length, inclination}` table of an element or a cradle.
-SwingHanger read_hanger(TableReader& parent);
-
 }  // namespace railmodal::input

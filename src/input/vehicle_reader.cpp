@@ -61,17 +61,6 @@ void read_general(TableReader& root, Vehicle* v) {
 
 }  // namespace
 
-SwingHanger read_hanger(TableReader& parent) {
-  TableReader t = parent.table("hanger");
-  SwingHanger h;
-  h.length = t.positive("length", Quantity::length);
-  h.inclination = t.optional_quantity("inclination", Quantity::angle).value_or(0.0);
-  if (!(std::abs(h.inclination) < 1.3962634015954636))  // 80°: beyond, cos α ≈ 0
-    t.fail("inclination", "must be within ±80 degrees; write units, e.g. \"14 deg\"");
-  t.finish();
-  return h;
-}
-
 }  // namespace input
 
 Vehicle load_vehicle(const std::string& path) {
