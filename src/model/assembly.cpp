@@ -183,10 +183,13 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
     Qf(i) = Q(free[i]);
     for (int j = 0; j < n; ++j) Kf(i, j) = K_springs(free[i], free[j]);
   }
-  // Usually K is positive definite on the free coordinates (LDLᵀ); where a direction has no
-  // stiffness (a rigid-body mode gravity does not excite) the minimum-norm solution.
-  Eigen::VectorXd qf = Kf.ldlt().solve(Qf);
-  if (!((Kf * qf - Qf).norm() <= 1e-10 * Qf.norm()) || !qf.allFinite())
+  // Usually K is positive definite on the free coordinates (blocked Cholesky, the cheap
+  // path); where a direction has no stiffness (a rigid-body mode gravity does not excite)
+  // the minimum-norm solution.
+  Eigen::LLT<Eigen::MatrixXd> llt(Kf);
+  Eigen::VectorXd qf;
+  if (llt.info() == Eigen::Success) qf = llt.solve(Qf);
+  if (llt.info() != Eigen::Success || !qf.allFinite() || !((Kf * qf - Qf).norm() <= 1e-10 * Qf.norm()))
     qf = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(Kf).solve(Qf);
   const double mismatch = (Kf * qf - Qf).norm();
   if (!(mismatch <= 1e-8 * Qf.norm())) {
