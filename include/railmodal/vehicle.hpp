@@ -94,6 +94,9 @@ struct Element {
   std::vector<SpringStage> longitudinal_stages;
   std::optional<SwingHanger> hanger;  ///< lateral pendulum stiffness, in series with the
                                       ///< lateral stages when both are given
+  /// Roll, pitch and yaw stiffness against the relative rotation of the two bodies, N·m/rad
+  /// (an anti-roll bar is a roll stiffness between body and bogie).
+  Eigen::Vector3d rotational_stiffness{0.0, 0.0, 0.0};
   double vertical_damping = 0.0;  ///< N·s/m (viscous; carried in C)
   double lateral_damping = 0.0;   ///< N·s/m
 };

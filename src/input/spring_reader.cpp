@@ -111,6 +111,17 @@ std::vector<SpringStage> read_spring_stages(TableReader& parent, const std::stri
   return stages;
 }
 
+Eigen::Vector3d read_rotational_stiffness(TableReader& parent) {
+  Eigen::Vector3d k = Eigen::Vector3d::Zero();
+  if (!parent.has("rotational")) return k;
+  TableReader t = parent.table("rotational");
+  const char* names[] = {"roll", "pitch", "yaw"};
+  for (int r = 0; r < 3; ++r)
+    k(r) = t.optional_positive(names[r], Quantity::rotational_stiffness, true).value_or(0.0);
+  t.finish();
+  return k;
+}
+
 SwingHanger read_hanger(TableReader& parent) {
   TableReader t = parent.table("hanger");
   SwingHanger h;

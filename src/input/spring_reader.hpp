@@ -3,6 +3,7 @@
 // spring geometry) and swing hangers.
 #pragma once
 
+#include <Eigen/Core>
 #include <optional>
 #include <vector>
 
@@ -19,6 +20,9 @@ SpringStage read_spring_stage(TableReader& table, std::optional<double> element_
 /// The stages of `key` (a table or an array of tables, in series); empty when absent.
 std::vector<SpringStage> read_spring_stages(TableReader& parent, const std::string& key,
                                             std::optional<double> element_load);
+
+/// `rotational = { roll, pitch, yaw }` of an element (N·m/rad), zero when absent.
+Eigen::Vector3d read_rotational_stiffness(TableReader& parent);
 
 /// The `hanger = {length, inclination}` table of an element or a cradle.
 SwingHanger read_hanger(TableReader& parent);

@@ -99,6 +99,9 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   const double b3 = sec.positive("spacing", Quantity::length) / 2.0;
   std::optional<SwingHanger> hanger;
   if (sec.has("hanger")) hanger = read_hanger(sec);
+  // Roll stiffness between body and each bogie (torsion bar), N·m/rad.
+  const double anti_roll_bar =
+      sec.optional_positive("anti_roll_bar", Quantity::rotational_stiffness, true).value_or(0.0);
   std::optional<TableReader> pri;
   double b2 = 0.0;
   if (sprung_bogies) {
@@ -154,9 +157,19 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
       e.vertical_stages = read_spring_stages(sec, "spring", load);
       if (e.vertical_stages.empty()) sec.fail("spring", "missing: the cradle spring stages");
       e.lateral_stages = read_spring_stages(sec, "lateral", load);
+      e.longitudinal_stages = read_spring_stages(sec, "longitudinal", load);
       e.hanger = hanger;
       read_damping(sec, &e);
       v->elements.push_back(e);
+    }
+    if (anti_roll_bar > 0.0) {
+      Element bar;
+      bar.name = std::string(bogie_names[k]) + " anti-roll bar";
+      bar.lower = lower;
+      bar.upper = "body";
+      bar.point = {xc, 0.0, bolster};
+      bar.rotational_stiffness = {anti_roll_bar, 0.0, 0.0};
+      v->elements.push_back(bar);
     }
   }
   sec.finish();

@@ -139,6 +139,7 @@ Dimension dimension_of(Quantity q) {
     case Quantity::damping: return dim(1, 0, -1);
     case Quantity::modulus: return dim(1, -1, -2);
     case Quantity::speed: return dim(0, 1, -1);
+    case Quantity::rotational_stiffness: return dim(1, 2, -2, -1);
     case Quantity::dimensionless: return dim(0, 0, 0);
   }
   return dim(0, 0, 0);
@@ -157,6 +158,7 @@ const char* name_of(Quantity q) {
     case Quantity::damping: return "a damping coefficient (force·time/length)";
     case Quantity::modulus: return "a modulus (force/area)";
     case Quantity::speed: return "a speed";
+    case Quantity::rotational_stiffness: return "a rotational stiffness (moment/angle)";
     case Quantity::dimensionless: return "a plain number";
   }
   return "a quantity";
@@ -175,6 +177,7 @@ const char* example_of(Quantity q) {
     case Quantity::damping: return "\"20 kN*s/m\" or 2.0e4 (N·s/m)";
     case Quantity::modulus: return "\"2.2e6 kgf/cm^2\" or 2.16e11 (Pa)";
     case Quantity::speed: return "\"75 km/h\" or 20.8 (m/s)";
+    case Quantity::rotational_stiffness: return "\"940 kN*m/rad\" or 9.4e5 (N·m/rad)";
     case Quantity::dimensionless: return "a number";
   }
   return "";
@@ -192,6 +195,7 @@ std::string describe(const Dimension& d) {
       {dim(0, 0, 0), "a plain number"},  {dim(1, -1, 0), "mass/length"},
       {dim(0, 1, 0, 0), "length"},       {dim(-1, 1, 0), "length/mass"},
       {dim(1, 1, 0), "mass·length"},     {dim(1, 2, -2), "force·length (moment)"},
+      {dim(1, 2, -2, -1), "moment/angle"},
   };
   for (const auto& [dimension, name] : names)
     if (dimension == d) return name;

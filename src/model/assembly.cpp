@@ -100,6 +100,8 @@ void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
         if (!(s.stiffness > 0.0) || !std::isfinite(s.stiffness) || s.count < 1)
           throw std::invalid_argument("element '" + e.name +
                                       "': spring stiffness must be positive and finite");
+    if (!(e.rotational_stiffness.array() >= 0.0).all() || !e.rotational_stiffness.allFinite())
+      throw std::invalid_argument("element '" + e.name + "': rotational stiffness must be non-negative and finite");
     if (e.hanger && (!(e.hanger->length > 0.0) || std::abs(e.hanger->inclination) >= kHalfPi))
       throw std::invalid_argument("element '" + e.name +
                                   "': hanger length must be positive, inclination below 90°");
@@ -142,6 +144,17 @@ void add_element(const ElementMap& m, const Eigen::Vector3d& k, Eigen::MatrixXd*
       if (a.body < 0 || b.body < 0) continue;
       K->block<kMotionsPerBody, kMotionsPerBody>(a.body * kMotionsPerBody, b.body * kMotionsPerBody) +=
           a.sign * b.sign * a.map->transpose() * kd * *b.map;
+    }
+}
+
+// Stiffness against the relative rotation (roll, pitch, yaw) of the two bodies.
+void add_rotational(const ElementMap& m, const Eigen::Vector3d& k, Eigen::MatrixXd* K) {
+  for (int a : {m.upper, m.lower})
+    for (int b : {m.upper, m.lower}) {
+      if (a < 0 || b < 0) continue;
+      const double sign = (a == m.upper) == (b == m.upper) ? 1.0 : -1.0;
+      for (int r = 0; r < 3; ++r)  // roll, pitch, yaw are motions 2, 3, 4
+        (*K)(a * kMotionsPerBody + 2 + r, b * kMotionsPerBody + 2 + r) += sign * k(r);
     }
 }
 
@@ -244,6 +257,7 @@ LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
     add_element(maps.back(),
                 {series_stiffness(e.longitudinal_stages), lateral, series_stiffness(e.vertical_stages)},
                 &K_springs);
+    add_rotational(maps.back(), e.rotational_stiffness, &K_springs);
     add_element(maps.back(), {0.0, e.lateral_damping, e.vertical_damping}, &C);
   }
 

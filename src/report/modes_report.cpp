@@ -29,8 +29,10 @@ std::string centre_text(const Mode& mode) {
   const auto& c = *mode.centre;
   if (c.at_infinity) return c.about + ": none (translation)";
   std::ostringstream s;
+  // Round-off must not print as "-0.000".
+  const double position = std::abs(c.position) < 5e-4 ? 0.0 : c.position;
   s << std::fixed << std::setprecision(3) << (c.about == "roll" ? "roll, z = " : "pitch, x = ")
-    << c.position << " m";
+    << position << " m";
   return s.str();
 }
 

@@ -29,6 +29,7 @@ TEST(Units, SiAndTechnicalUnits) {
   expect_si("14°", Quantity::angle, 14 * 3.14159265358979323846 / 180);
   expect_si("981 cm/s^2", Quantity::acceleration, 9.81);
   expect_si("20 kN*s/m", Quantity::damping, 2.0e4);
+  expect_si("940 kN*m/rad", Quantity::rotational_stiffness, 9.4e5);
   expect_si("8.9e5", Quantity::stiffness, 8.9e5);  // a bare number is SI
 }
 

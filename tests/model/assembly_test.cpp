@@ -1,5 +1,6 @@
 // Assembly: mass and stiffness matrices from bodies and elements.
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 #include "test_support.hpp"
@@ -78,6 +79,25 @@ TEST(Assembly, SwingHangerStiffnessFromItsLoad) {
   const auto s = assemble(v, DofSet::lateral);
   const int lat = s.index_of("body.lateral");
   EXPECT_NEAR(s.stiffness(lat, lat), 1000.0 * 9.81 / (0.5 * std::cos(0.2)), 1e-9);
+}
+
+// An anti-roll bar is a roll stiffness on the relative rotation of body and bogie: +k on
+// both diagonals, −k between them (Manchester coach, 940 kN·m/rad per bogie).
+TEST(Assembly, AntiRollBarActsOnRelativeRoll) {
+  Vehicle with_bar = load_vehicle(data_file("manchester_benchmark_coach.toml"));
+  Vehicle without = with_bar;
+  without.elements.erase(std::remove_if(without.elements.begin(), without.elements.end(),
+                                        [](const Element& e) { return e.rotational_stiffness.norm() > 0.0; }),
+                         without.elements.end());
+  ASSERT_EQ(with_bar.elements.size(), without.elements.size() + 2);
+  const auto a = assemble(with_bar, DofSet::lateral), b = assemble(without, DofSet::lateral);
+  const Eigen::MatrixXd d = (a.stiffness - a.gravity_stiffness) - (b.stiffness - b.gravity_stiffness);
+  const int body = a.index_of("body.roll"), bogie = a.index_of("bogie1.roll");
+  EXPECT_NEAR(d(body, body), 2 * 940e3, 1e-6);
+  EXPECT_NEAR(d(bogie, bogie), 940e3, 1e-6);
+  EXPECT_NEAR(d(body, bogie), -940e3, 1e-6);
+  // Nothing else changes: (2k)² + 2k² on the diagonals, 4k² off them.
+  EXPECT_NEAR(d.norm(), std::sqrt(10.0) * 940e3, 1e-3);
 }
 
 TEST(Assembly, HeldMotionsAreNotDegreesOfFreedom) {
