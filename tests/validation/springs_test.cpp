@@ -7,8 +7,8 @@
 namespace railmodal::test {
 namespace {
 
-// Stiffness of the single stage of a one-element general-form vehicle, N/m.
-double stage_stiffness(const std::string& stage, const std::string& load = "") {
+// A 1000 kg load that can only bounce, on one element described by `element_keys`.
+Vehicle load_on_one_element(const std::string& element_keys) {
   const std::string text = R"(
 [vehicle]
 name = "one spring"
@@ -22,9 +22,14 @@ held = ["lateral", "roll", "pitch", "yaw"]
 [[element]]
 upper = "load"
 point = [0, 0, 0]
-)" + (load.empty() ? "" : "load = \"" + load + "\"\n") +
-                           "vertical = " + stage + "\n";
-  const Vehicle v = load_vehicle(write_temp("spring.toml", text));
+)" + element_keys;
+  return load_vehicle(write_temp("spring.toml", text));
+}
+
+// Stiffness of the single stage of `stage`, N/m.
+double stage_stiffness(const std::string& stage, const std::string& load = "") {
+  const Vehicle v = load_on_one_element((load.empty() ? "" : "load = \"" + load + "\"\n") +
+                                        "vertical = " + stage + "\n");
   return series_stiffness(v.elements.at(0).vertical_stages);
 }
 
@@ -71,23 +76,10 @@ TEST(SpringGeometry, EllipticSpringGalakhov) {
 // with T = 2π√((f1 + f2)/g): the series flexibilities add. Leaf f1 = 8 cm, coil f2 = 4 cm
 // (the digest's §2.5 simulation case) under the 1000 kg load.
 TEST(DoubleSuspension, SeriesPeriodEq86) {
-  const std::string text = R"(
-[vehicle]
-name = "double suspension"
-gravity = "981 cm/s^2"
-[[body]]
-name = "load"
-weight = "1000 kgf"
-radius_of_gyration = { roll = "10 cm" }
-centre_of_gravity = [0, 0, 0]
-held = ["lateral", "roll", "pitch", "yaw"]
-[[element]]
-upper = "load"
-point = [0, 0, 0]
-load = "1000 kgf"
+  const Vehicle v = load_on_one_element(R"(load = "1000 kgf"
 vertical = [{ kind = "leaf", static_deflection = "8 cm" }, { kind = "coil", static_deflection = "4 cm" }]
-)";
-  const auto r = solve_modes(assemble(load_vehicle(write_temp("double.toml", text)), DofSet::vertical));
+)");
+  const auto r = solve_modes(assemble(v, DofSet::vertical));
   ASSERT_EQ(r.modes.size(), 1u);
   EXPECT_NEAR(r.modes[0].period_s / (2 * kPi * std::sqrt(0.12 / kG)), 1.0, 1e-12);
 }
