@@ -29,6 +29,17 @@ struct Dof {
 
 /// M, C, K in SI over `dofs`. K = elastic stiffness + gravity (preload) stiffness; the
 /// gravity part is kept separately so reports can show what the preload takes away.
+/// An element whose lower end rides on the track (a wheel, through its axlebox springs):
+/// where a displacement of the track enters. A track displacement u (longitudinal, lateral,
+/// vertical, m) at `point` loads the degrees of freedom with
+/// Q = load_per_displacement · u + load_per_velocity · u̇.
+struct TrackInput {
+  int element = 0;        ///< index into vehicle.elements
+  Eigen::Vector3d point;  ///< m, vehicle frame (x: along the track, forward)
+  Eigen::MatrixXd load_per_displacement;  ///< n × 3, N/m and N·m/m
+  Eigen::MatrixXd load_per_velocity;      ///< n × 3, N·s/m and N·m·s/m
+};
+
 struct LinearSystem {
   std::vector<Dof> dofs;
   Eigen::MatrixXd mass;
@@ -37,6 +48,7 @@ struct LinearSystem {
   Eigen::MatrixXd gravity_stiffness;  ///< part of `stiffness` due to gravity and preloads
   Vehicle vehicle;                    ///< what was assembled (bodies give names and geometry)
   std::vector<double> element_loads;  ///< static vertical load of each element, N (+ = compression)
+  std::vector<TrackInput> track_inputs;  ///< the elements standing on the track, in element order
 
   int size() const { return static_cast<int>(dofs.size()); }
   /// Index of the DOF with this label, or -1.

@@ -12,10 +12,14 @@
 //   }
 #pragma once
 
+#include "railmodal/critical_speed_report.hpp"
 #include "railmodal/errors.hpp"
+#include "railmodal/excitation.hpp"
 #include "railmodal/input.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"
 #include "railmodal/report.hpp"
+#include "railmodal/response.hpp"
+#include "railmodal/scene.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/vehicle.hpp"

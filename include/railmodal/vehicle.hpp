@@ -68,6 +68,10 @@ struct SpringStage {
   std::string kind;        ///< "leaf", "coil", "elliptic", "direct", ... (for reports)
   double stiffness = 0.0;  ///< N/m, of one spring
   int count = 1;           ///< identical springs side by side in this stage
+  /// Relative friction coefficient φ of a leaf spring (Marié): the friction force as a
+  /// fraction of the load the spring carries, R = c(1 ± φ)(f ± z) (springs digest §2.3).
+  /// Not in the linear matrices; it decides whether friction stops a resonance.
+  double relative_friction = 0.0;
 };
 
 /// Cradle swing hangers carrying the element's vertical load: a pendulum whose lateral

@@ -55,6 +55,7 @@ SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load
   }
 
   const std::string& way = given[0];
+  std::optional<model::LeafSpringGeometry> leaf_geometry;
   if (way == "stiffness") {
     stage.stiffness = t.positive("stiffness", Quantity::stiffness);
   } else if (way == "flexibility") {
@@ -73,7 +74,7 @@ SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load
     const double G = t.positive("shear_modulus", Quantity::modulus);
     stage.stiffness = model::coil_spring_stiffness(d, r, n, G);  // eq. (4)
   } else if (leaf) {
-    model::LeafSpringGeometry g;
+    model::LeafSpringGeometry& g = leaf_geometry.emplace();
     g.length = t.positive("length", Quantity::length);
     g.leaf_width = t.positive("leaf_width", Quantity::length);
     g.leaf_thickness = t.positive("leaf_thickness", Quantity::length);
@@ -96,6 +97,22 @@ SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load
         t.positive("length", Quantity::length), t.positive("leaf_width", Quantity::length),
         t.positive("leaf_thickness", Quantity::length), t.count("leaves", 1), t.count("rows", 1),
         t.positive("modulus", Quantity::modulus));
+  }
+  // Leaf friction: φ directly, or Marié's eq. (34) from the leaf-on-leaf coefficient ψ.
+  if (t.has("relative_friction") && t.has("leaf_friction"))
+    t.fail("leaf_friction", "conflicts with relative_friction: give one of them");
+  if (t.has("relative_friction")) {
+    stage.relative_friction = t.positive("relative_friction", Quantity::dimensionless, true);
+    if (!(stage.relative_friction < 1.0))
+      t.fail("relative_friction", "must be below 1 (the book's φ is 0.02 … 0.15)");
+  } else if (t.has("leaf_friction")) {
+    if (!leaf_geometry)
+      t.fail("leaf_friction", "needs the leaf geometry (Marié's eq. (34)); or give relative_friction");
+    const double psi = t.positive("leaf_friction", Quantity::dimensionless, true);
+    stage.relative_friction = model::leaf_spring_relative_friction(*leaf_geometry, psi);
+    if (!(stage.relative_friction < 1.0))
+      t.fail("leaf_friction", "gives a relative friction φ of " + std::to_string(stage.relative_friction) +
+                                  ", not below 1");
   }
   if (t.has("load") && way != "static_deflection" && !(leaf && t.has("shackle_inclination")))
     t.positive("load", Quantity::force);  // documented carried load; accepted, not needed

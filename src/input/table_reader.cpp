@@ -160,6 +160,14 @@ std::array<double, 3> TableReader::point(const std::string& key) {
   return p;
 }
 
+std::vector<double> TableReader::quantities(const std::string& key, Quantity kind) {
+  const toml::value& v = at(key);
+  if (!v.is_array()) fail(key, std::string("expected an array of quantities, got ") + type_name(v));
+  std::vector<double> out;
+  for (const auto& item : v.as_array()) out.push_back(to_quantity(item, key, kind));
+  return out;
+}
+
 std::vector<std::string> TableReader::strings(const std::string& key) {
   const toml::value& v = at(key);
   if (!v.is_array()) fail(key, std::string("expected an array of strings, got ") + type_name(v));

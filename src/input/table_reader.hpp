@@ -31,6 +31,8 @@ class TableReader {
   /// A point [x, y, z], each a length.
   std::array<double, 3> point(const std::string& key);
   std::vector<std::string> strings(const std::string& key);
+  /// An array of quantities of one kind, e.g. ["0 deg", "90 deg"].
+  std::vector<double> quantities(const std::string& key, Quantity kind);
   TableReader table(const std::string& key);
   /// An array of tables ([[key]] or key = [{...}, ...]); a single table counts as one.
   std::vector<TableReader> tables(const std::string& key);

@@ -232,6 +232,15 @@ double hanger_stiffness(const SwingHanger& hanger, double load) {
   return load / (hanger.length * std::cos(hanger.inclination));
 }
 
+// Lateral stiffness of an element carrying `load`: the hanger pendulum in series with any
+// lateral spring stages of the same element.
+double lateral_stiffness(const Element& e, double load) {
+  const double spring = series_stiffness(e.lateral_stages);
+  if (!e.hanger) return spring;
+  const double pendulum = hanger_stiffness(*e.hanger, load);
+  return spring > 0.0 ? 1.0 / (1.0 / pendulum + 1.0 / spring) : pendulum;
+}
+
 }  // namespace
 
 LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
@@ -266,12 +275,7 @@ LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
   Eigen::MatrixXd K = K_springs;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
-    if (!e.hanger) continue;
-    // The pendulum in series with any lateral spring stiffness of the same element.
-    const double pendulum = hanger_stiffness(*e.hanger, loads[k]);
-    const double spring = series_stiffness(e.lateral_stages);
-    const double lateral = spring > 0.0 ? 1.0 / (1.0 / pendulum + 1.0 / spring) : pendulum;
-    add_element(maps[k], {0.0, lateral, 0.0}, &K);
+    if (e.hanger) add_element(maps[k], {0.0, lateral_stiffness(e, loads[k]), 0.0}, &K);
   }
 
   // Dead loads: each weight at its CG, each element's static load at its point.
@@ -318,6 +322,30 @@ LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
   system.gravity_stiffness = pick(K_gravity);
   system.vehicle = vehicle;
   system.element_loads = loads;
+
+  // Where the track's displacement enters: the final stiffness of each track element
+  // (hangers included) and its damping, seen from the kept coordinates of its upper body.
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Element& e = vehicle.elements[k];
+    if (!e.lower.empty()) continue;
+    const Eigen::Vector3d stiffness(series_stiffness(e.longitudinal_stages), lateral_stiffness(e, loads[k]),
+                                    series_stiffness(e.vertical_stages));
+    const Eigen::Vector3d damping(0.0, e.lateral_damping, e.vertical_damping);
+    TrackInput input;
+    input.element = static_cast<int>(k);
+    input.point = e.point;
+    input.load_per_displacement = Eigen::MatrixXd::Zero(n, 3);
+    input.load_per_velocity = Eigen::MatrixXd::Zero(n, 3);
+    for (int i = 0; i < n; ++i) {
+      if (keep[i] / kMotionsPerBody != maps[k].upper) continue;
+      const int motion = keep[i] % kMotionsPerBody;
+      for (int d = 0; d < 3; ++d) {
+        input.load_per_displacement(i, d) = maps[k].up(d, motion) * stiffness(d);
+        input.load_per_velocity(i, d) = maps[k].up(d, motion) * damping(d);
+      }
+    }
+    system.track_inputs.push_back(std::move(input));
+  }
   return system;
 }
 

@@ -29,6 +29,12 @@ double leaf_spring_stiffness(const LeafSpringGeometry& leaf, double load) {
   return at / leaf_spring_deflection(leaf, at);
 }
 
+double leaf_spring_relative_friction(const LeafSpringGeometry& leaf, double leaf_on_leaf_friction) {
+  const double n = leaf.leaves;
+  return leaf_on_leaf_friction * (n - 1.0) * (n + 0.5 * leaf.full_length_leaves) * leaf.leaf_thickness /
+         (n * leaf.length / 2.0);
+}
+
 double elliptic_spring_stiffness(double length, double leaf_width, double leaf_thickness,
                                  int leaves, int rows, double modulus) {
   const double l = length / 2.0;

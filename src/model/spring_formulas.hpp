@@ -29,6 +29,11 @@ double leaf_spring_deflection(const LeafSpringGeometry& leaf, double load);
 /// vertical shackles the spring is linear and the load cancels.
 double leaf_spring_stiffness(const LeafSpringGeometry& leaf, double load);
 
+/// Marié's relative friction coefficient of a leaf spring, eq. (34):
+/// φ = ψ (n − 1)(n + 0.5 n₁) h / (n l), ψ the leaf-on-leaf friction coefficient, l half the
+/// spring length (springs digest §2.3).
+double leaf_spring_relative_friction(const LeafSpringGeometry& leaf, double leaf_on_leaf_friction);
+
 /// Galakhov elliptic spring set, bogie-wagons-natural digest §4 Ex. 2: f = 12 P l³/(A n b h³ E)
 /// with P half the set load, so c = A n b h³ E / (6 l³); l is half the spring length.
 double elliptic_spring_stiffness(double length, double leaf_width, double leaf_thickness,

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "railmodal/report.hpp"
+#include "report/text_format.hpp"
 
 namespace railmodal {
 
@@ -45,12 +46,7 @@ std::string number(double value, int precision, bool present) {
   return s.str();
 }
 
-std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
+using report::csv_field;
 
 void write_table(std::ostream& out, const LinearSystem& system, const ModalResult& r) {
   out << "railmodal modes: " << system.vehicle.name << "\n";

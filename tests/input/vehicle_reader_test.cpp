@@ -120,6 +120,31 @@ vertical = { stiffness = 1e5 }
   EXPECT_THROW(load_vehicle(write_temp("unknown_body.toml", text)), InputError);
 }
 
+// Leaf friction: φ directly, or Marié's eq. (34) from ψ and the leaf geometry. Two-axle
+// digest Example 3: ψ = 0.3, 11 leaves of 13 mm, 2 full-length, 2l = 1040 mm → φ = 0.0818
+// (the book prints 0.075); the digest's 3 figures.
+TEST(VehicleReader, LeafFrictionDirectOrByMarie) {
+  const Vehicle direct = load_vehicle(write_temp("phi.toml", std::string(kGood).replace(
+      kGood.find("spring = { kind = \"coil\", stiffness = \"1000 kgf/cm\" }"), 54,
+      "spring = { kind = \"leaf\", stiffness = \"1000 kgf/cm\", relative_friction = 0.075 }")));
+  EXPECT_EQ(direct.elements[0].vertical_stages[0].relative_friction, 0.075);
+  const Vehicle marie = load_vehicle(write_temp("psi.toml", std::string(kGood).replace(
+      kGood.find("spring = { kind = \"coil\", stiffness = \"1000 kgf/cm\" }"), 54,
+      "spring = { kind = \"leaf\", length = \"1040 mm\", leaf_width = \"76 mm\", leaf_thickness = \"13 mm\", "
+      "leaves = 11, full_length_leaves = 2, modulus = \"2.2e6 kgf/cm^2\", leaf_friction = 0.3 }")));
+  EXPECT_NEAR(marie.elements[0].vertical_stages[0].relative_friction, 0.0818, 5e-5);
+}
+
+TEST(VehicleReader, LeafFrictionErrors) {
+  expect_error("stiffness = \"1000 kgf/cm\" }", "stiffness = \"1000 kgf/cm\", relative_friction = 1.5 }",
+               {"key 'suspension.spring.relative_friction'", "below 1"});
+  expect_error("stiffness = \"1000 kgf/cm\" }", "stiffness = \"1000 kgf/cm\", leaf_friction = 0.3 }",
+               {"key 'suspension.spring.leaf_friction'", "leaf geometry"});
+  expect_error("stiffness = \"1000 kgf/cm\" }",
+               "stiffness = \"1000 kgf/cm\", relative_friction = 0.1, leaf_friction = 0.3 }",
+               {"leaf_friction", "conflicts with relative_friction"});
+}
+
 TEST(VehicleReader, MissingFile) {
   EXPECT_THROW(load_vehicle("/nonexistent/wagon.toml"), InputError);
 }

@@ -14,6 +14,7 @@ class BundledVehicle : public ::testing::TestWithParam<std::string> {};
 TEST_P(BundledVehicle, ResidualOrthonormalityAndOrder) {
   for (DofSet set : {DofSet::vertical, DofSet::lateral, DofSet::all}) {
     const auto system = assemble(load_vehicle(data_file(GetParam())), set);
+    if (system.size() == 0) continue;  // e.g. a load that only bounces has no lateral set
     const auto r = solve_modes(system);
     EXPECT_LT(r.max_residual, 1e-12) << to_string(set);
     EXPECT_LT(r.orthonormality_error, 1e-12) << to_string(set);

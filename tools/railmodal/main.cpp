@@ -41,9 +41,10 @@ int write_output(const std::string& path, const std::string& text) {
 
 int main(int argc, char** argv) {
   using namespace railmodal::cli;
-  CLI::App app{"railmodal: natural modes of railway wagons (bounce, pitch, roll, sway, yaw)"};
+  CLI::App app{"railmodal: natural modes and critical speeds of railway wagons"};
   app.require_subcommand(1);
   auto run_modes = add_modes_command(app);
+  auto run_critical_speed = add_critical_speed_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (app.got_subcommand("modes")) return run_modes();
+    if (app.got_subcommand("critical-speed")) return run_critical_speed();
   } catch (const std::exception& e) {
     std::cerr << "railmodal: internal error: " << e.what() << "\n";
     return kInternal;

@@ -1,0 +1,36 @@
+// A critical-speed study of one vehicle in one scene, and its report: Markdown, a
+// self-contained HTML page with inline SVG plots, CSV and JSON.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "railmodal/modal.hpp"
+#include "railmodal/response.hpp"
+#include "railmodal/scene.hpp"
+
+namespace railmodal {
+
+struct CriticalSpeedStudy {
+  Scene scene;
+  LinearSystem system;
+  ModalResult modes;
+  std::vector<CriticalSpeed> critical_speeds;  ///< sorted by speed
+  std::vector<AmplitudeCurve> curves;          ///< per source and output, on the scene's grid
+};
+
+/// Assembles the vehicle in the scene's DOF set, solves its modes, finds the critical speeds
+/// of the scene's sources in its speed range and the amplitude curves of its outputs (or, if
+/// it names none, of the most energetic DOF of each excited mode). The speed grid holds the
+/// scene's step and every critical speed.
+CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle);
+
+enum class ReportFormat { markdown, html, csv, json };
+const char* to_string(ReportFormat format);
+std::optional<ReportFormat> report_format_from_string(const std::string& word);
+
+void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, ReportFormat format);
+
+}  // namespace railmodal

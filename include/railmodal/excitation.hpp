@@ -1,0 +1,175 @@
+// Excitation sources: what the track and the running gear feed into a wagon at a speed.
+//
+// Every source here is periodic along the track with a fundamental wavelength Λ (the rail
+// length for joints, the wheel circumference πD for wheel defects and unbalance, the hunting
+// wavelength for conicity), so harmonic k of a source runs at f = k·V/Λ and a mode of
+// frequency f is excited at the critical speed V = Λ·f/k (V = L·f/k for joints, V = πD·f/k
+// for wheel sources, V = λ·f for hunting). A source gives, for a speed and a harmonic, the
+// input at every wheel with its time delay (displacement sources) or the forces on a body
+// (unbalance), as complex amplitudes: a real signal is Re(A·e^{iωt}).
+#pragma once
+
+#include <Eigen/Core>
+#include <complex>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "railmodal/linear_system.hpp"
+
+namespace railmodal {
+
+/// Harmonic track displacement under one wheel: u(t) = Re(amplitude · e^{iω(t − delay_s)}).
+struct WheelInput {
+  int track_input = 0;  ///< index into LinearSystem::track_inputs
+  /// (longitudinal, lateral, vertical) displacement, m; vertical positive up.
+  Eigen::Vector3cd amplitude = Eigen::Vector3cd::Zero();
+  /// Time after the leading wheel that this wheel meets the same point of the track, s.
+  double delay_s = 0.0;
+};
+
+/// Harmonic force on a body at a point: F(t) = Re(amplitude · e^{iωt}), N.
+struct PointForce {
+  int body = 0;  ///< index into Vehicle::bodies
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();       ///< m, vehicle frame
+  Eigen::Vector3cd amplitude = Eigen::Vector3cd::Zero();  ///< (longitudinal, lateral, vertical), N
+};
+
+/// One harmonic of one source at one speed.
+struct HarmonicLoad {
+  double frequency_hz = 0.0;
+  std::vector<WheelInput> wheels;
+  std::vector<PointForce> forces;
+};
+
+/// Complex generalised load Q over the system's degrees of freedom:
+/// Q = Σ_wheels (K_u + iω C_u) u e^{−iωτ} + Σ_forces Gᵀ F.
+Eigen::VectorXcd generalized_load(const LinearSystem& system, const HarmonicLoad& load);
+
+/// One excitation source (rail joints, wheel defects, hunting, unbalance).
+class ExcitationSource {
+ public:
+  virtual ~ExcitationSource() = default;
+  virtual std::string kind() const = 0;         ///< "rail_joints", "wheel_eccentricity", ...
+  virtual std::string description() const = 0;  ///< one line with the parameters, for reports
+  /// Fundamental wavelength along the track, m.
+  virtual double wavelength() const = 0;
+  /// Harmonics evaluated: 1 … harmonic_count().
+  virtual int harmonic_count() const = 0;
+  /// The input at `speed` (m/s, > 0) for `harmonic` (1-based).
+  virtual HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const = 0;
+
+  double frequency_hz(double speed, int harmonic) const { return harmonic * speed / wavelength(); }
+  /// The speed at which `harmonic` runs at `frequency_hz`: V = Λ·f/k.
+  double speed_for(double frequency_hz, int harmonic) const {
+    return frequency_hz * wavelength() / harmonic;
+  }
+};
+
+/// Shape of a local dip (rail joint, wheel flat) of depth h and length l, centred on its
+/// deepest point: cosine η = (h/2)(1 + cos 2πs/l) (the book's joint, eq. (163), when l is the
+/// rail length; the sinusoidal flat, eq. (280)); triangular η = h(1 − 2|s|/l); parabolic
+/// η = h(1 − 4s²/l²) (the parabolic flat, §2.10).
+enum class DipShape { cosine, triangular, parabolic };
+const char* to_string(DipShape shape);
+
+/// Complex amplitude of harmonic k (≥ 1) of a train of dips −η repeating every `period`,
+/// the dip centred at s = 0: the profile is Σ_k Re(A_k e^{i2πks/period}). A_k is real.
+double dip_harmonic(DipShape shape, double depth, double length, double period, int k);
+
+/// Rail joints: a dip of depth 2a (the loaded dip at the joint relative to mid-rail, two-axle
+/// digest §2.5) at every joint, on both rails; joints opposite (square) or staggered by half a
+/// rail. Excites through the vertical stiffness of every track element.
+struct RailJoints {
+  double rail_length = 0.0;  ///< L, m
+  bool staggered = false;
+  double dip_depth = 0.0;    ///< 2a, m
+  DipShape shape = DipShape::cosine;
+  double dip_length = 0.0;   ///< m; 0: the whole rail (the book's cosine, eq. (163))
+  int harmonics = 1;
+  /// Optional track data: K (N/m, load per unit settlement under a wheel) and the mass of
+  /// half a wheelset, m; with both, the static rail deflection μg/K and the wheelset-on-track
+  /// frequency ρ = √(K/m) whose neglect (n² ≪ ρ²) the report checks.
+  double track_stiffness = 0.0;
+  double half_wheelset_mass = 0.0;
+};
+
+/// Wheelset eccentricity e: each wheelset's axle rises and falls e·sin(2πs/πD + ψᵢ)
+/// (bogie-wagons-forced digest §2.9; the book's worst case has all ψᵢ = 0).
+struct WheelEccentricity {
+  double wheel_diameter = 0.0;  ///< D, m
+  double eccentricity = 0.0;    ///< e, m
+  std::vector<double> phases;   ///< ψᵢ per wheelset from the front, rad (empty: all 0)
+};
+
+/// Wheel flats (or out-of-round) of depth a₁ and length l on every wheel, in phase, repeating
+/// every revolution πD (bogie-wagons-forced digest §2.10, eqs. (280)–(283)).
+struct WheelFlat {
+  double wheel_diameter = 0.0;  ///< D, m
+  double depth = 0.0;           ///< a₁, m
+  double length = 0.0;          ///< l, m (≤ πD; πD is the book's whole-revolution case)
+  DipShape shape = DipShape::cosine;
+  int harmonics = 1;
+};
+
+/// Kinematic hunting of conical treads: each wheelset moves laterally y₀ sin(2πs/λ), with
+/// λ from Klingel's free wheelset, eq. (264b), λ = 2π√(s r/(2n)), or a rigid bogie of
+/// wheelbase a, λ·√(1 + (a/s)²) (Rocard), or given (bogie-wagons-forced digest §2.1).
+struct Hunting {
+  enum class Model { free_wheelset, rigid_bogie, given } model = Model::free_wheelset;
+  double conicity = 0.0;                ///< n, tread taper (1/20 = 0.05)
+  double rolling_circle_spacing = 0.0;  ///< s, m
+  double rolling_radius = 0.0;          ///< r, m
+  double bogie_wheelbase = 0.0;         ///< a, m (rigid bogie)
+  double given_wavelength = 0.0;        ///< m (given)
+  double amplitude = 0.0;               ///< y₀, m
+};
+
+/// Klingel's wavelength of a free wheelset, eq. (264b): λ = 2π√(s r / (2n)).
+double klingel_wavelength(double conicity, double rolling_circle_spacing, double rolling_radius);
+/// Rocard's wavelength of a rigid bogie of wheelbase a: λ_Klingel · √(1 + (a/s)²).
+double rigid_bogie_wavelength(double conicity, double rolling_circle_spacing, double rolling_radius,
+                              double wheelbase);
+/// Meineke's hunting-limit speed, eq. (267), km/h: (1.33 a/d + 0.67)·a·k / (2σ √i) with the
+/// wheelbase a and diagonal d (m), clearance 2σ (m), i wheels and k the empirical constant
+/// (0.5 wagons, 0.63 locomotives, 1.0 bogies).
+double meineke_hunting_speed_kmh(double wheelbase, double diagonal, double clearance, int wheels,
+                                 double k);
+
+/// Unbalanced running gear: rotating unbalances m·ρ on wheels and, for a locomotive, the
+/// reciprocating masses of its cranks (unbalance-excitation digest §2.2, §3). Forces act on
+/// the named body at the wheel positions and grow with ω² = (2V/D)².
+struct Unbalance {
+  struct Rotating {
+    double x = 0.0, y = 0.0, z = 0.0;  ///< where the force acts, m (vehicle frame)
+    double mass_radius = 0.0;          ///< m·ρ, kg·m
+    double phase = 0.0;                ///< rad; the force is vertical m ρ ω² sin(ωt + φ),
+                                       ///< longitudinal m ρ ω² cos(ωt + φ)
+  };
+  struct Reciprocating {
+    double x = 0.0, y = 0.0, z = 0.0;  ///< crosshead guide, m
+    double mass = 0.0;                 ///< reciprocating mass, kg
+    double crank_radius = 0.0;         ///< r, m
+    double rod_ratio = 0.0;            ///< λ = r/L
+    double phase = 0.0;                ///< crank angle at t = 0, rad (90° between sides)
+  };
+  std::string body;
+  double wheel_diameter = 0.0;  ///< D, m
+  std::vector<Rotating> rotating;
+  std::vector<Reciprocating> reciprocating;
+  int harmonics = 2;
+};
+
+/// Coefficient Aₙ of the reciprocating inertia force X = m r ω² Σ Aₙ cos nθ of a crank of
+/// rod ratio λ = r/L, from the exact crank–rod kinematics (unbalance digest §2.2): A₁ = 1,
+/// A₂ ≈ λ + λ³/4 + 15λ⁵/128 (Kvasnikov's series), A₄ ≈ −(λ³/4 + 3λ⁵/16), odd n > 1 zero.
+double reciprocating_coefficient(double rod_ratio, int order);
+
+std::unique_ptr<ExcitationSource> make_source(const RailJoints& joints);
+std::unique_ptr<ExcitationSource> make_source(const WheelEccentricity& eccentricity);
+std::unique_ptr<ExcitationSource> make_source(const WheelFlat& flat);
+std::unique_ptr<ExcitationSource> make_source(const Hunting& hunting);
+/// The body is looked up by name when loads are made (std::invalid_argument if absent).
+std::unique_ptr<ExcitationSource> make_source(const Unbalance& unbalance);
+
+}  // namespace railmodal

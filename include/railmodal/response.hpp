@@ -1,0 +1,115 @@
+// Steady harmonic response and critical speeds.
+//
+// The steady state of M ẍ + C ẋ + K x = Re(Q e^{iωt}) is x = Re(X e^{iωt}) with
+// (K − ω²M + iωC) X = Q. Displacement input at the wheels makes X/u a displacement
+// transmissibility; a force input makes X/F a receptance (iωX/F mobility, −ω²X/F
+// accelerance). Without damping, a loaded mode at ω has no steady state: the amplitude
+// grows linearly in time (the book's secular forms (168d), (274)), and that is reported as
+// unbounded with its growth per half period, never as inf or NaN.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "railmodal/excitation.hpp"
+#include "railmodal/modal.hpp"
+
+namespace railmodal {
+
+struct HarmonicResponse {
+  double frequency_hz = 0.0;
+  Eigen::VectorXcd displacement;  ///< complex amplitude per DOF (m, rad); zero when unbounded
+  bool unbounded = false;         ///< an undamped, loaded mode sits at this frequency
+  int resonant_mode = 0;          ///< its 1-based index when unbounded
+};
+
+/// Direct solve of (K − ω²M + iωC) X = Q (dense LU). `modes` (of the same system) is used
+/// only to recognise an undamped resonance.
+HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult& modes,
+                                   const Eigen::VectorXcd& load, double frequency_hz);
+
+/// Modal superposition over the lowest `mode_count` modes (all if ≤ 0) with modal damping
+/// taken from the diagonal of ΦᵀCΦ (exact when C = 0 or C is proportional), plus the static
+/// response of massless (condensed) DOFs to their own loads. Compared with the direct solve
+/// in tests and docs/accuracy.md.
+HarmonicResponse modal_harmonic_response(const LinearSystem& system, const ModalResult& modes,
+                                         const Eigen::VectorXcd& load, double frequency_hz,
+                                         int mode_count = 0);
+
+enum class ResponseQuantity { displacement, velocity, acceleration };
+const char* to_string(ResponseQuantity quantity);
+
+/// |X|, |iωX| or |ω²X| of one DOF.
+double response_amplitude(const HarmonicResponse& response, int dof, ResponseQuantity quantity);
+
+/// Friction of leaf springs against one mode (springs digest §2.3; two-axle digest (169a)):
+/// Σ R·|δ| over the friction stages for a unit modal amplitude, with R = φ × the load the
+/// stage carries and δ the stage's share of its element's stretch. Over a cycle of amplitude
+/// q friction dissipates 4·q·(this); a harmonic modal force F₀ puts in π·F₀·q at resonance.
+double modal_friction_work(const LinearSystem& system, const Eigen::VectorXd& shape);
+
+/// One resonance of one source harmonic with one mode, inside the speed range.
+struct CriticalSpeed {
+  double speed = 0.0;           ///< m/s
+  int source = 0;               ///< index into the sources given
+  std::string source_kind;      ///< ExcitationSource::kind()
+  int harmonic = 1;
+  int mode = 0;                 ///< 1-based mode index
+  std::string mode_name;
+  double frequency_hz = 0.0;    ///< natural frequency of the mode = excitation frequency
+  std::string output;           ///< DOF label reported: the mode's most energetic DOF
+  bool unbounded = false;       ///< undamped: the amplitude grows without limit
+  double amplitude = 0.0;       ///< steady amplitude of `output` (m or rad) when bounded
+  /// Growth of `output` per half period at resonance without friction or damping
+  /// (π F₀/(2λ) in the modal coordinate).
+  double growth_per_half_period = 0.0;
+  /// Decrease per half period that leaf-spring friction imposes (2 Σ R|δ| / λ); 0 without friction.
+  double friction_decrement_per_half_period = 0.0;
+  /// Friction stops the resonance: the growth per half period does not exceed the decrement
+  /// (Den Hartog's criterion, the book's (169a) without its static term).
+  bool friction_stops = false;
+  /// Factor on the source amplitude (dip depth, eccentricity, …) at which friction would no
+  /// longer stop the resonance; 0 without friction (any amplitude grows).
+  double friction_threshold_scale = 0.0;
+};
+
+struct CriticalSpeedOptions {
+  double min_speed = 0.0;  ///< m/s, > 0
+  double max_speed = 0.0;  ///< m/s
+  /// A mode counts as excited by a source harmonic when its modal force is above this
+  /// fraction of the largest modal force of that harmonic (symmetry zeros fall below it).
+  double participation_floor = 1e-9;
+};
+
+/// Every resonance V = Λ·f/k in the range, for every source, harmonic and oscillatory mode
+/// that the source loads, sorted by speed.
+std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,
+                                                const std::vector<const ExcitationSource*>& sources,
+                                                const CriticalSpeedOptions& options);
+
+/// Amplitude of one output against speed for one source: at each speed the sum over the
+/// source's harmonics of the harmonic amplitudes (the bound of the peak of their sum; exact
+/// for a one-harmonic source). Speeds where the response is unbounded are flagged.
+struct AmplitudeCurve {
+  int source = 0;
+  std::string output;
+  ResponseQuantity quantity = ResponseQuantity::displacement;
+  std::vector<double> speeds;      ///< m/s
+  std::vector<double> amplitudes;  ///< m, m/s or m/s² (rad for rotations); 0 where unbounded
+  std::vector<bool> unbounded;
+};
+
+struct OutputRequest {
+  int dof = 0;  ///< index into LinearSystem::dofs
+  ResponseQuantity quantity = ResponseQuantity::displacement;
+};
+
+/// One curve per output, from one direct solve per speed and harmonic.
+std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
+                                             const ExcitationSource& source, int source_index,
+                                             const std::vector<OutputRequest>& outputs,
+                                             const std::vector<double>& speeds);
+
+}  // namespace railmodal

@@ -1,0 +1,35 @@
+// A scene: a vehicle on a track at a range of speeds, with the excitation sources it names
+// and the outputs it wants. Only the named sources are built and evaluated.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "railmodal/excitation.hpp"
+#include "railmodal/linear_system.hpp"
+#include "railmodal/response.hpp"
+
+namespace railmodal {
+
+struct SceneOutput {
+  std::string dof;  ///< DOF label, e.g. "body.bounce"
+  ResponseQuantity quantity = ResponseQuantity::displacement;
+};
+
+struct Scene {
+  std::string name;
+  std::string source;        ///< the scene file
+  std::string vehicle_file;  ///< resolved against the scene file's folder; "" if not named
+  DofSet dofs = DofSet::all;
+  double min_speed = 0.0;    ///< m/s
+  double max_speed = 0.0;    ///< m/s
+  double speed_step = 0.0;   ///< m/s, grid of the amplitude curves
+  std::vector<std::shared_ptr<const ExcitationSource>> sources;
+  std::vector<SceneOutput> outputs;  ///< empty: the most energetic DOF of each excited mode
+};
+
+/// Reads a scene file; errors are InputError with file, line, column and key.
+Scene load_scene(const std::string& path);
+
+}  // namespace railmodal

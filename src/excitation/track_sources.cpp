@@ -1,0 +1,243 @@
+// Displacement sources: rail joints, wheel eccentricity and flats, kinematic hunting.
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "excitation/wheelsets.hpp"
+#include "railmodal/excitation.hpp"
+
+namespace railmodal {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const std::complex<double> kI(0.0, 1.0);
+
+std::string mm(double metres) {
+  std::ostringstream out;
+  out << metres * 1e3 << " mm";
+  return out.str();
+}
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument(what);
+}
+
+// Delay of a wheelset behind the leading one at speed V.
+double delay(const std::vector<excitation::Wheelset>& sets, double x, double speed) {
+  return (sets.front().x - x) / speed;
+}
+
+class RailJointSource final : public ExcitationSource {
+ public:
+  explicit RailJointSource(const RailJoints& p) : p_(p) {
+    require(p.rail_length > 0.0, "rail joints: rail_length must be positive");
+    require(p.dip_depth >= 0.0, "rail joints: dip_depth must not be negative");
+    require(p.dip_length >= 0.0 && p.dip_length <= p.rail_length,
+            "rail joints: dip_length must lie between 0 and the rail length");
+    require(p.harmonics >= 1, "rail joints: at least one harmonic");
+  }
+  std::string kind() const override { return "rail_joints"; }
+  std::string description() const override {
+    std::ostringstream out;
+    out << "rail joints, L = " << p_.rail_length << " m, " << (p_.staggered ? "staggered" : "opposite")
+        << ", dip 2a = " << mm(p_.dip_depth) << " (" << to_string(p_.shape) << " over "
+        << dip_length() << " m)";
+    return out.str();
+  }
+  double wavelength() const override { return p_.rail_length; }
+  int harmonic_count() const override { return p_.harmonics; }
+
+  HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const override {
+    require(speed > 0.0, "rail joints: speed must be positive");
+    HarmonicLoad out;
+    out.frequency_hz = frequency_hz(speed, harmonic);
+    const double A = dip_harmonic(p_.shape, p_.dip_depth, dip_length(), p_.rail_length, harmonic);
+    // Staggered: the right rail's joints lie half a rail on, a factor e^{−iπk} = (−1)^k.
+    const double right = p_.staggered && harmonic % 2 == 1 ? -1.0 : 1.0;
+    const auto sets = excitation::wheelsets(system);
+    for (const auto& set : sets)
+      for (int index : set.inputs) {
+        const int side = excitation::rail_side(system.track_inputs[index]);
+        const double factor = side > 0 ? 1.0 : side < 0 ? right : 0.5 * (1.0 + right);
+        WheelInput w;
+        w.track_input = index;
+        w.amplitude(2) = A * factor;
+        w.delay_s = delay(sets, set.x, speed);
+        out.wheels.push_back(w);
+      }
+    return out;
+  }
+
+ private:
+  double dip_length() const { return p_.dip_length > 0.0 ? p_.dip_length : p_.rail_length; }
+  RailJoints p_;
+};
+
+class EccentricitySource final : public ExcitationSource {
+ public:
+  explicit EccentricitySource(const WheelEccentricity& p) : p_(p) {
+    require(p.wheel_diameter > 0.0, "wheel eccentricity: wheel_diameter must be positive");
+    require(p.eccentricity >= 0.0, "wheel eccentricity: eccentricity must not be negative");
+  }
+  std::string kind() const override { return "wheel_eccentricity"; }
+  std::string description() const override {
+    std::ostringstream out;
+    out << "wheel eccentricity e = " << mm(p_.eccentricity) << ", D = " << p_.wheel_diameter << " m"
+        << (p_.phases.empty() ? ", all wheelsets in phase" : ", wheelset phases given");
+    return out.str();
+  }
+  double wavelength() const override { return kPi * p_.wheel_diameter; }
+  int harmonic_count() const override { return 1; }
+
+  HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const override {
+    HarmonicLoad out;
+    out.frequency_hz = frequency_hz(speed, harmonic);
+    if (harmonic != 1) return out;  // a pure sinusoid of the wheel's turn
+    const auto sets = excitation::wheelsets(system);
+    if (!p_.phases.empty() && p_.phases.size() != sets.size())
+      throw std::invalid_argument("wheel eccentricity: " + std::to_string(p_.phases.size()) +
+                                  " phases given for " + std::to_string(sets.size()) + " wheelsets");
+    for (size_t j = 0; j < sets.size(); ++j)
+      for (int index : sets[j].inputs) {
+        // The wheels turn together: no delay; e sin(ωt + ψ) = Re(−i e e^{iψ} e^{iωt}).
+        WheelInput w;
+        w.track_input = index;
+        w.amplitude(2) = -kI * p_.eccentricity * std::exp(kI * (p_.phases.empty() ? 0.0 : p_.phases[j]));
+        out.wheels.push_back(w);
+      }
+    return out;
+  }
+
+ private:
+  WheelEccentricity p_;
+};
+
+class FlatSource final : public ExcitationSource {
+ public:
+  explicit FlatSource(const WheelFlat& p) : p_(p) {
+    require(p.wheel_diameter > 0.0, "wheel flat: wheel_diameter must be positive");
+    require(p.depth >= 0.0, "wheel flat: depth must not be negative");
+    require(p.length > 0.0 && p.length <= kPi * p.wheel_diameter * (1.0 + 1e-9),
+            "wheel flat: length must be positive and at most the circumference πD");
+    require(p.harmonics >= 1, "wheel flat: at least one harmonic");
+  }
+  std::string kind() const override { return "wheel_flat"; }
+  std::string description() const override {
+    std::ostringstream out;
+    out << "wheel flats a1 = " << mm(p_.depth) << " over " << p_.length << " m (" << to_string(p_.shape)
+        << "), D = " << p_.wheel_diameter << " m, every wheel in phase";
+    return out.str();
+  }
+  double wavelength() const override { return kPi * p_.wheel_diameter; }
+  int harmonic_count() const override { return p_.harmonics; }
+
+  HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const override {
+    HarmonicLoad out;
+    out.frequency_hz = frequency_hz(speed, harmonic);
+    // The flat is on the wheel: every wheel meets its own flat at the same moment (the book's
+    // worst case, all in phase), no delay between axles.
+    const double A = dip_harmonic(p_.shape, p_.depth, std::min(p_.length, wavelength()), wavelength(), harmonic);
+    for (int index = 0; index < static_cast<int>(system.track_inputs.size()); ++index) {
+      WheelInput w;
+      w.track_input = index;
+      w.amplitude(2) = A;
+      out.wheels.push_back(w);
+    }
+    return out;
+  }
+
+ private:
+  WheelFlat p_;
+};
+
+class HuntingSource final : public ExcitationSource {
+ public:
+  explicit HuntingSource(const Hunting& p) : p_(p) {
+    require(p.amplitude >= 0.0, "hunting: amplitude must not be negative");
+    require(wavelength() > 0.0 && std::isfinite(wavelength()), "hunting: the wavelength must be positive");
+  }
+  std::string kind() const override { return "hunting"; }
+  std::string description() const override {
+    std::ostringstream out;
+    out << "kinematic hunting, ";
+    switch (p_.model) {
+      case Hunting::Model::free_wheelset: out << "free wheelset (Klingel), conicity " << p_.conicity; break;
+      case Hunting::Model::rigid_bogie:
+        out << "rigid bogie a = " << p_.bogie_wheelbase << " m (Rocard), conicity " << p_.conicity;
+        break;
+      case Hunting::Model::given: out << "given wavelength"; break;
+    }
+    out << ", λ = " << wavelength() << " m, y0 = " << mm(p_.amplitude);
+    return out.str();
+  }
+  double wavelength() const override {
+    switch (p_.model) {
+      case Hunting::Model::free_wheelset:
+        return klingel_wavelength(p_.conicity, p_.rolling_circle_spacing, p_.rolling_radius);
+      case Hunting::Model::rigid_bogie:
+        return rigid_bogie_wavelength(p_.conicity, p_.rolling_circle_spacing, p_.rolling_radius,
+                                      p_.bogie_wheelbase);
+      case Hunting::Model::given: return p_.given_wavelength;
+    }
+    return 0.0;
+  }
+  int harmonic_count() const override { return 1; }
+
+  HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const override {
+    HarmonicLoad out;
+    out.frequency_hz = frequency_hz(speed, harmonic);
+    if (harmonic != 1) return out;
+    const auto sets = excitation::wheelsets(system);
+    for (const auto& set : sets)
+      for (int index : set.inputs) {
+        // Each wheelset follows the same sinuous path, y0 sin(2πs/λ), reached later by the
+        // wheelsets behind.
+        WheelInput w;
+        w.track_input = index;
+        w.amplitude(1) = -kI * p_.amplitude;
+        w.delay_s = delay(sets, set.x, speed);
+        out.wheels.push_back(w);
+      }
+    return out;
+  }
+
+ private:
+  Hunting p_;
+};
+
+}  // namespace
+
+double klingel_wavelength(double conicity, double rolling_circle_spacing, double rolling_radius) {
+  require(conicity > 0.0 && rolling_circle_spacing > 0.0 && rolling_radius > 0.0,
+          "hunting: conicity, rolling-circle spacing and rolling radius must be positive");
+  return 2.0 * kPi * std::sqrt(rolling_circle_spacing * rolling_radius / (2.0 * conicity));  // (264b)
+}
+
+double rigid_bogie_wavelength(double conicity, double rolling_circle_spacing, double rolling_radius,
+                              double wheelbase) {
+  require(wheelbase > 0.0, "hunting: the bogie wheelbase must be positive");
+  const double ratio = wheelbase / rolling_circle_spacing;
+  return klingel_wavelength(conicity, rolling_circle_spacing, rolling_radius) * std::sqrt(1.0 + ratio * ratio);
+}
+
+double meineke_hunting_speed_kmh(double wheelbase, double diagonal, double clearance, int wheels, double k) {
+  require(wheelbase > 0.0 && diagonal > 0.0 && clearance > 0.0 && wheels > 0 && k > 0.0,
+          "Meineke: all inputs must be positive");
+  return (1.33 * wheelbase / diagonal + 0.67) * wheelbase * k / (clearance * std::sqrt(wheels));  // (267)
+}
+
+std::unique_ptr<ExcitationSource> make_source(const RailJoints& joints) {
+  return std::make_unique<RailJointSource>(joints);
+}
+std::unique_ptr<ExcitationSource> make_source(const WheelEccentricity& eccentricity) {
+  return std::make_unique<EccentricitySource>(eccentricity);
+}
+std::unique_ptr<ExcitationSource> make_source(const WheelFlat& flat) {
+  return std::make_unique<FlatSource>(flat);
+}
+std::unique_ptr<ExcitationSource> make_source(const Hunting& hunting) {
+  return std::make_unique<HuntingSource>(hunting);
+}
+
+}  // namespace railmodal

@@ -1,0 +1,176 @@
+// load_scene: [scene], [speed], [[source]] and [[output]] tables.
+#include <cmath>
+#include <filesystem>
+
+#include "input/table_reader.hpp"
+#include "railmodal/scene.hpp"
+
+namespace railmodal {
+
+namespace input {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+DipShape read_shape(TableReader& t, const std::string& key) {
+  const std::string word = t.optional_string(key).value_or("cosine");
+  for (DipShape s : {DipShape::cosine, DipShape::triangular, DipShape::parabolic})
+    if (word == to_string(s)) return s;
+  t.fail(key, "unknown shape '" + word + "' (cosine, triangular, parabolic)");
+}
+
+std::shared_ptr<const ExcitationSource> rail_joints(TableReader& t) {
+  RailJoints p;
+  p.rail_length = t.positive("rail_length", Quantity::length);
+  const std::string joints = t.optional_string("joints").value_or("opposite");
+  if (joints != "opposite" && joints != "staggered")
+    t.fail("joints", "must be \"opposite\" or \"staggered\", not '" + joints + "'");
+  p.staggered = joints == "staggered";
+  p.dip_depth = t.positive("dip_depth", Quantity::length);
+  p.shape = read_shape(t, "dip_shape");
+  p.dip_length = t.optional_positive("dip_length", Quantity::length).value_or(0.0);
+  if (p.dip_length > p.rail_length) t.fail("dip_length", "cannot exceed the rail length");
+  p.harmonics = t.optional_count("harmonics", 1).value_or(1);
+  return make_source(p);
+}
+
+std::shared_ptr<const ExcitationSource> eccentricity(TableReader& t) {
+  WheelEccentricity p;
+  p.wheel_diameter = t.positive("wheel_diameter", Quantity::length);
+  p.eccentricity = t.positive("eccentricity", Quantity::length);
+  if (t.has("phases")) p.phases = t.quantities("phases", Quantity::angle);
+  return make_source(p);
+}
+
+std::shared_ptr<const ExcitationSource> flat(TableReader& t) {
+  WheelFlat p;
+  p.wheel_diameter = t.positive("wheel_diameter", Quantity::length);
+  p.depth = t.positive("depth", Quantity::length);
+  p.length = t.optional_positive("length", Quantity::length).value_or(kPi * p.wheel_diameter);
+  if (p.length > kPi * p.wheel_diameter * (1.0 + 1e-9))
+    t.fail("length", "cannot exceed the wheel circumference πD");
+  p.shape = read_shape(t, "shape");
+  p.harmonics = t.optional_count("harmonics", 1).value_or(1);
+  return make_source(p);
+}
+
+std::shared_ptr<const ExcitationSource> hunting(TableReader& t) {
+  Hunting p;
+  const std::string model = t.optional_string("model").value_or("free_wheelset");
+  if (model == "free_wheelset") p.model = Hunting::Model::free_wheelset;
+  else if (model == "rigid_bogie") p.model = Hunting::Model::rigid_bogie;
+  else if (model == "given") p.model = Hunting::Model::given;
+  else t.fail("model", "unknown hunting model '" + model + "' (free_wheelset, rigid_bogie, given)");
+  if (p.model == Hunting::Model::given) {
+    p.given_wavelength = t.positive("wavelength", Quantity::length);
+  } else {
+    p.conicity = t.positive("conicity", Quantity::dimensionless);
+    if (!(p.conicity < 1.0)) t.fail("conicity", "is a tread taper such as 0.05 (1:20); must be below 1");
+    p.rolling_circle_spacing = t.positive("rolling_circle_spacing", Quantity::length);
+    p.rolling_radius = t.positive("rolling_radius", Quantity::length);
+    if (p.model == Hunting::Model::rigid_bogie) p.bogie_wheelbase = t.positive("bogie_wheelbase", Quantity::length);
+  }
+  p.amplitude = t.positive("amplitude", Quantity::length);
+  return make_source(p);
+}
+
+std::shared_ptr<const ExcitationSource> unbalance(TableReader& t) {
+  Unbalance p;
+  p.body = t.optional_string("body").value_or("body");
+  p.wheel_diameter = t.positive("wheel_diameter", Quantity::length);
+  p.harmonics = t.optional_count("harmonics", 1).value_or(2);
+  if (t.has("rotating"))
+    for (auto& m : t.tables("rotating")) {
+      Unbalance::Rotating r;
+      const auto at = m.point("point");
+      r.x = at[0], r.y = at[1], r.z = at[2];
+      r.mass_radius = m.positive("mass", Quantity::mass) * m.positive("radius", Quantity::length);
+      r.phase = m.optional_quantity("phase", Quantity::angle).value_or(0.0);
+      m.finish();
+      p.rotating.push_back(r);
+    }
+  if (t.has("reciprocating"))
+    for (auto& m : t.tables("reciprocating")) {
+      Unbalance::Reciprocating r;
+      const auto at = m.point("point");
+      r.x = at[0], r.y = at[1], r.z = at[2];
+      r.mass = m.positive("mass", Quantity::mass);
+      r.crank_radius = m.positive("crank_radius", Quantity::length);
+      const double rod = m.positive("rod_length", Quantity::length);
+      if (!(rod > r.crank_radius)) m.fail("rod_length", "must be longer than the crank radius");
+      r.rod_ratio = r.crank_radius / rod;
+      r.phase = m.optional_quantity("phase", Quantity::angle).value_or(0.0);
+      m.finish();
+      p.reciprocating.push_back(r);
+    }
+  if (p.rotating.empty() && p.reciprocating.empty())
+    t.fail("rotating", "missing: give [[source.rotating]] or [[source.reciprocating]] masses");
+  return make_source(p);
+}
+
+}  // namespace
+}  // namespace input
+
+Scene load_scene(const std::string& path) {
+  using namespace input;
+  const toml::value root_value = parse_toml_file(path);
+  TableReader root(root_value, path, "");
+  Scene scene;
+  scene.source = path;
+  {
+    TableReader t = root.table("scene");
+    scene.name = t.optional_string("name").value_or(std::filesystem::path(path).stem().string());
+    if (t.has("vehicle")) {
+      const std::string vehicle = t.string("vehicle");
+      const std::filesystem::path base = std::filesystem::path(path).parent_path();
+      scene.vehicle_file = (std::filesystem::path(vehicle).is_absolute() ? std::filesystem::path(vehicle)
+                                                                          : base / vehicle).lexically_normal().string();
+      if (!std::filesystem::exists(scene.vehicle_file)) t.fail("vehicle", "no such file: " + scene.vehicle_file);
+    }
+    const std::string dofs = t.optional_string("dofs").value_or("all");
+    const auto set = dof_set_from_string(dofs);
+    if (!set) t.fail("dofs", "must be vertical, lateral or all, not '" + dofs + "'");
+    scene.dofs = *set;
+    t.finish();
+  }
+  {
+    TableReader t = root.table("speed");
+    scene.min_speed = t.positive("min", Quantity::speed);
+    scene.max_speed = t.positive("max", Quantity::speed);
+    if (!(scene.max_speed > scene.min_speed)) t.fail("max", "must be above min");
+    scene.speed_step = t.optional_positive("step", Quantity::speed).value_or((scene.max_speed - scene.min_speed) / 400.0);
+    if ((scene.max_speed - scene.min_speed) / scene.speed_step > 1e6)
+      t.fail("step", "gives more than a million speeds; take a coarser step");
+    t.finish();
+  }
+  for (auto& t : root.tables("source")) {
+    const std::string kind = t.string("kind");
+    try {
+      if (kind == "rail_joints") scene.sources.push_back(rail_joints(t));
+      else if (kind == "wheel_eccentricity") scene.sources.push_back(eccentricity(t));
+      else if (kind == "wheel_flat") scene.sources.push_back(flat(t));
+      else if (kind == "hunting") scene.sources.push_back(hunting(t));
+      else if (kind == "unbalance") scene.sources.push_back(unbalance(t));
+      else t.fail("kind", "unknown source '" + kind + "' (rail_joints, wheel_eccentricity, wheel_flat, hunting, unbalance)");
+    } catch (const std::invalid_argument& e) {
+      t.fail("kind", e.what());
+    }
+    t.finish();
+  }
+  if (root.has("output"))
+    for (auto& t : root.tables("output")) {
+      SceneOutput out;
+      out.dof = t.string("dof");
+      const std::string quantity = t.optional_string("quantity").value_or("displacement");
+      if (quantity == "displacement") out.quantity = ResponseQuantity::displacement;
+      else if (quantity == "velocity") out.quantity = ResponseQuantity::velocity;
+      else if (quantity == "acceleration") out.quantity = ResponseQuantity::acceleration;
+      else t.fail("quantity", "must be displacement, velocity or acceleration, not '" + quantity + "'");
+      t.finish();
+      scene.outputs.push_back(out);
+    }
+  root.finish();
+  return scene;
+}
+
+}  // namespace railmodal

@@ -1,0 +1,426 @@
+// The critical-speed report: Markdown, self-contained HTML with inline SVG, CSV, JSON.
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "railmodal/critical_speed_report.hpp"
+#include "report/svg_chart.hpp"
+#include "report/text_format.hpp"
+
+namespace railmodal {
+
+const char* to_string(ReportFormat format) {
+  switch (format) {
+    case ReportFormat::markdown: return "markdown";
+    case ReportFormat::html: return "html";
+    case ReportFormat::csv: return "csv";
+    case ReportFormat::json: return "json";
+  }
+  return "?";
+}
+
+std::optional<ReportFormat> report_format_from_string(const std::string& word) {
+  for (ReportFormat f : {ReportFormat::markdown, ReportFormat::html, ReportFormat::csv, ReportFormat::json})
+    if (word == to_string(f)) return f;
+  return std::nullopt;
+}
+
+namespace {
+
+using report::fixed;
+using report::html_escape;
+using report::significant;
+
+constexpr double kKmh = 3.6;  // m/s → km/h
+
+// Engineering units for one output: mm and mrad for displacements, m/s² for accelerations.
+struct Unit {
+  double scale;
+  std::string name;
+};
+
+bool is_rotation(const LinearSystem& system, const std::string& label) {
+  const int d = system.index_of(label);
+  if (d < 0) return false;
+  const Motion m = system.dofs[d].motion;
+  return m == Motion::roll || m == Motion::pitch || m == Motion::yaw;
+}
+
+Unit unit_of(const LinearSystem& system, const std::string& label, ResponseQuantity q) {
+  const bool rotation = is_rotation(system, label);
+  switch (q) {
+    case ResponseQuantity::displacement: return rotation ? Unit{1e3, "mrad"} : Unit{1e3, "mm"};
+    case ResponseQuantity::velocity: return rotation ? Unit{1e3, "mrad/s"} : Unit{1e3, "mm/s"};
+    case ResponseQuantity::acceleration: return rotation ? Unit{1.0, "rad/s²"} : Unit{1.0, "m/s²"};
+  }
+  return {1.0, ""};
+}
+
+std::string source_label(const CriticalSpeedStudy& study, int s) {
+  return "[" + std::to_string(s + 1) + "] " + study.scene.sources[s]->kind();
+}
+
+std::string amplitude_text(const CriticalSpeedStudy& study, const CriticalSpeed& r) {
+  if (r.unbounded) return "unbounded";
+  const Unit u = unit_of(study.system, r.output, ResponseQuantity::displacement);
+  return significant(r.amplitude * u.scale, 4) + " " + u.name;
+}
+
+std::string growth_text(const CriticalSpeedStudy& study, const CriticalSpeed& r) {
+  const Unit u = unit_of(study.system, r.output, ResponseQuantity::displacement);
+  return significant(r.growth_per_half_period * u.scale, 3) + " " + u.name;
+}
+
+std::string friction_text(const CriticalSpeedStudy& study, const CriticalSpeed& r) {
+  if (!(r.friction_decrement_per_half_period > 0.0)) return "no friction";
+  const Unit u = unit_of(study.system, r.output, ResponseQuantity::displacement);
+  const std::string decrement = significant(r.friction_decrement_per_half_period * u.scale, 3) + " " + u.name;
+  if (r.friction_stops)
+    return "stops it (2φf = " + decrement + "; needs " + significant(r.friction_threshold_scale, 3) + "× the input)";
+  return "does not stop it (2φf = " + decrement + ")";
+}
+
+bool any_force_source(const CriticalSpeedStudy& study) {
+  return std::any_of(study.scene.sources.begin(), study.scene.sources.end(),
+                     [](const auto& s) { return s->kind() == "unbalance"; });
+}
+
+
+// A table built once and written as Markdown or HTML.
+struct Table {
+  std::vector<std::string> headers;
+  std::vector<bool> numeric;  ///< right-aligned columns
+  std::vector<std::vector<std::string>> rows;
+};
+
+void write_markdown_table(std::ostream& out, const Table& t) {
+  out << "|";
+  for (const auto& h : t.headers) out << " " << h << " |";
+  out << "\n|";
+  for (size_t c = 0; c < t.headers.size(); ++c) out << (t.numeric[c] ? "---:|" : "---|");
+  out << "\n";
+  for (const auto& row : t.rows) {
+    out << "|";
+    for (const auto& cell : row) out << " " << cell << " |";
+    out << "\n";
+  }
+  out << "\n";
+}
+
+void write_html_table(std::ostream& out, const Table& t) {
+  out << "<table><tr>";
+  for (const auto& h : t.headers) out << "<th>" << html_escape(h) << "</th>";
+  out << "</tr>\n";
+  for (const auto& row : t.rows) {
+    out << "<tr>";
+    for (size_t c = 0; c < row.size(); ++c) out << (t.numeric[c] ? "<td class=n>" : "<td>") << html_escape(row[c]) << "</td>";
+    out << "</tr>\n";
+  }
+  out << "</table>\n";
+}
+
+Table sources_table(const CriticalSpeedStudy& st) {
+  Table t{{"#", "source", "fundamental wavelength Λ", "harmonics"}, {true, false, true, true}, {}};
+  for (size_t s = 0; s < st.scene.sources.size(); ++s) {
+    const auto& src = *st.scene.sources[s];
+    t.rows.push_back({std::to_string(s + 1), src.description(), significant(src.wavelength(), 5) + " m",
+                      src.harmonic_count() == 1 ? "1" : "1–" + std::to_string(src.harmonic_count())});
+  }
+  return t;
+}
+
+Table critical_speed_table(const CriticalSpeedStudy& st) {
+  Table t{{"speed (km/h)", "source", "k", "mode", "f (Hz)", "output", "amplitude", "undamped growth per half period", "leaf friction"},
+          {true, false, true, false, true, false, true, true, false},
+          {}};
+  for (const auto& r : st.critical_speeds)
+    t.rows.push_back({fixed(r.speed * kKmh, 1), source_label(st, r.source), std::to_string(r.harmonic),
+                      std::to_string(r.mode) + " " + r.mode_name, fixed(r.frequency_hz, 3), r.output,
+                      amplitude_text(st, r), growth_text(st, r), friction_text(st, r)});
+  return t;
+}
+
+Table curve_peak_table(const CriticalSpeedStudy& st) {
+  Table t{{"source", "output", "peak", "at (km/h)", "unbounded at (km/h)"}, {false, false, true, true, false}, {}};
+  for (const auto& c : st.curves) {
+    const Unit u = unit_of(st.system, c.output, c.quantity);
+    size_t peak = 0;
+    std::string unbounded;
+    for (size_t i = 0; i < c.speeds.size(); ++i) {
+      if (c.amplitudes[i] > c.amplitudes[peak]) peak = i;
+      if (c.unbounded[i]) unbounded += (unbounded.empty() ? "" : ", ") + fixed(c.speeds[i] * kKmh, 1);
+    }
+    // Beside an undamped resonance the largest grid value only measures how close the grid came.
+    const bool finite_peak = unbounded.empty() && !c.speeds.empty();
+    t.rows.push_back({source_label(st, c.source), c.output + " " + to_string(c.quantity),
+                      finite_peak ? significant(c.amplitudes[peak] * u.scale, 4) + " " + u.name : "unbounded",
+                      finite_peak ? fixed(c.speeds[peak] * kKmh, 1) : "—", unbounded.empty() ? "—" : unbounded});
+  }
+  return t;
+}
+
+Table bodies_table(const CriticalSpeedStudy& st) {
+  Table t{{"body", "mass (kg)", "I roll (kg·m²)", "I pitch (kg·m²)", "I yaw (kg·m²)"}, {false, true, true, true, true}, {}};
+  for (const Body& b : st.system.vehicle.bodies)
+    t.rows.push_back({b.name, significant(b.mass, 5), significant(b.inertia.x(), 4), significant(b.inertia.y(), 4),
+                      significant(b.inertia.z(), 4)});
+  return t;
+}
+
+Table elements_table(const CriticalSpeedStudy& st) {
+  Table t{{"element", "between", "vertical stiffness (kN/m)", "static load (kN)", "static deflection (mm)", "leaf friction φ"},
+          {false, false, true, true, true, true},
+          {}};
+  const Vehicle& v = st.system.vehicle;
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const Element& e = v.elements[k];
+    const double kz = series_stiffness(e.vertical_stages);
+    double phi = 0.0;
+    for (const auto& s : e.vertical_stages) phi = std::max(phi, s.relative_friction);
+    t.rows.push_back({e.name, (e.lower.empty() ? "track" : e.lower) + " – " + e.upper,
+                      kz > 0.0 ? significant(kz / 1e3, 5) : "—", significant(st.system.element_loads[k] / 1e3, 5),
+                      kz > 0.0 ? fixed(st.system.element_loads[k] / kz * 1e3, 2) : "—",
+                      phi > 0.0 ? significant(phi, 3) : "—"});
+  }
+  return t;
+}
+
+Table modes_table(const CriticalSpeedStudy& st) {
+  Table t{{"#", "mode", "kind", "f (Hz)", "T (s)"}, {true, false, false, true, true}, {}};
+  for (const Mode& m : st.modes.modes) {
+    const bool osc = m.kind == ModeKind::oscillatory;
+    t.rows.push_back({std::to_string(m.index), m.name, to_string(m.kind), osc ? fixed(m.frequency_hz, 4) : "—",
+                      osc ? fixed(m.period_s, 4) : "—"});
+  }
+  return t;
+}
+
+const char* const kCriticalSpeedNote =
+    "Amplitude: steady amplitude of the output at the critical speed; unbounded where nothing damps the mode "
+    "(no viscous damping): the amplitude then grows by the growth per half period (the book's secular solutions "
+    "(168d), (274)). Leaf friction: Den Hartog's criterion — friction stops the resonance when the growth per half "
+    "period does not exceed the friction decrement 2φf (two-axle digest (169a) without its static term); the "
+    "factor is how much larger the source amplitude would have to be for the resonance to grow.";
+
+// ---- Markdown -------------------------------------------------------------------------------
+
+void write_markdown(std::ostream& out, const CriticalSpeedStudy& st) {
+  out << "# Critical speeds: " << st.system.vehicle.name << "\n\n";
+  out << "Scene **" << st.scene.name << "** (`" << st.scene.source << "`), vehicle `" << st.scene.vehicle_file
+      << "`, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "
+      << fixed(st.scene.min_speed * kKmh, 1) << "–" << fixed(st.scene.max_speed * kKmh, 1) << " km/h.\n\n";
+  out << "## Sources\n\n";
+  write_markdown_table(out, sources_table(st));
+  out << "A harmonic k of a source runs at f = k·V/Λ; a mode of frequency f resonates at V = Λ·f/k.\n\n";
+  out << "## Critical speeds\n\n";
+  if (st.critical_speeds.empty()) {
+    out << "No source harmonic meets a natural frequency in the speed range.\n\n";
+  } else {
+    write_markdown_table(out, critical_speed_table(st));
+    out << kCriticalSpeedNote << "\n\n";
+  }
+  out << "## Amplitude against speed\n\n"
+      << (any_force_source(st) ? "Force sources: receptance times the source's force (∝ V²). " : "")
+      << "Displacement sources: the source amplitude times the displacement transmissibility; the sum over the "
+         "source's harmonics. The curves are in the HTML (`--format html`) and JSON reports.\n\n";
+  write_markdown_table(out, curve_peak_table(st));
+  out << "## Model summary\n\n### Bodies\n\n";
+  write_markdown_table(out, bodies_table(st));
+  out << "### Elements\n\n";
+  write_markdown_table(out, elements_table(st));
+  out << "### Modes\n\n";
+  write_markdown_table(out, modes_table(st));
+}
+
+// ---- HTML -----------------------------------------------------------------------------------
+
+void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
+  const Vehicle& v = st.system.vehicle;
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Critical speeds: "
+      << html_escape(v.name) << "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:24px auto;"
+         "color:#222;line-height:1.4}table{border-collapse:collapse;margin:8px 0 16px}td,th{border:1px solid #ccc;"
+         "padding:3px 8px;font-size:13px}th{background:#f2f2f2}td.n{text-align:right}h2{border-bottom:1px solid #ddd;"
+         "margin-top:28px}.note{color:#555;font-size:13px}.bad{color:#b00}.ok{color:#070}</style></head><body>\n";
+  out << "<h1>Critical speeds: " << html_escape(v.name) << "</h1>\n<p>Scene <b>" << html_escape(st.scene.name)
+      << "</b> (<code>" << html_escape(st.scene.source) << "</code>), vehicle <code>" << html_escape(st.scene.vehicle_file)
+      << "</code>, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "
+      << fixed(st.scene.min_speed * kKmh, 1) << "–" << fixed(st.scene.max_speed * kKmh, 1) << " km/h.</p>\n";
+
+  out << "<h2>Sources</h2>\n";
+  write_html_table(out, sources_table(st));
+  out << "<h2>Critical speeds</h2>\n";
+  if (st.critical_speeds.empty()) {
+    out << "<p>No source harmonic meets a natural frequency in the speed range.</p>\n";
+  } else {
+    write_html_table(out, critical_speed_table(st));
+    out << "<p class=note>" << html_escape(kCriticalSpeedNote) << "</p>\n";
+  }
+
+  // Campbell diagram: excitation lines f = kV/Λ against the natural frequencies.
+  {
+    report::Chart c;
+    c.title = "Campbell diagram: excitation frequencies against speed";
+    c.x_label = "speed (km/h)";
+    c.y_label = "frequency (Hz)";
+    c.x_min = st.scene.min_speed * kKmh;
+    c.x_max = st.scene.max_speed * kKmh;
+    // Up to the highest excitation frequency in the range (or the lowest mode, if higher):
+    // natural frequencies no source reaches would squash the ones that matter.
+    double f_top = 0.0, f_lowest = INFINITY;
+    for (const auto& src : st.scene.sources)
+      f_top = std::max(f_top, src->frequency_hz(st.scene.max_speed, src->harmonic_count()));
+    for (const Mode& m : st.modes.modes)
+      if (m.kind == ModeKind::oscillatory) f_lowest = std::min(f_lowest, m.frequency_hz);
+    if (std::isfinite(f_lowest)) f_top = std::max(f_top, f_lowest);
+    c.y_min = 0.0;
+    c.y_max = 1.1 * std::max(f_top, 1e-3);
+    for (const Mode& m : st.modes.modes)
+      if (m.kind == ModeKind::oscillatory && m.frequency_hz <= c.y_max)
+        c.lines.push_back({std::to_string(m.index) + " " + m.name + " " + fixed(m.frequency_hz, 2) + " Hz", m.frequency_hz, false});
+    for (size_t s = 0; s < st.scene.sources.size(); ++s) {
+      const auto& src = *st.scene.sources[s];
+      for (int k = 1; k <= src.harmonic_count(); ++k) {
+        report::ChartSeries line;
+        line.label = k > 1 ? "" : source_label(st, static_cast<int>(s)) + (src.harmonic_count() == 1 ? "" : " (k = 1…" + std::to_string(src.harmonic_count()) + ")");
+        line.dashed = k > 1;
+        for (double V : {st.scene.min_speed, st.scene.max_speed}) {
+          line.x.push_back(V * kKmh);
+          line.y.push_back(src.frequency_hz(V, k));
+        }
+        c.series.push_back(line);
+      }
+    }
+    report::ChartSeries hits;
+    hits.label = "critical speeds";
+    hits.markers_only = true;
+    for (const auto& r : st.critical_speeds) {
+      hits.x.push_back(r.speed * kKmh);
+      hits.y.push_back(r.frequency_hz);
+    }
+    c.series.push_back(hits);
+    c.width = 900;
+    c.height = 420;
+    out << "<h2>Campbell diagram</h2>\n" << report::svg_chart(c)
+        << "<p class=note>Solid: the fundamental of each source; dashed: its higher harmonics. Dotted horizontal "
+           "lines: natural frequencies. Circles: the critical speeds of the table.</p>\n";
+  }
+
+  out << "<h2>Amplitude against speed</h2>\n<p class=note>"
+      << (any_force_source(st) ? "Force sources: receptance times the source's force (∝ V²). " : "")
+      << "Displacement sources: the source amplitude times the displacement transmissibility. Sum over the "
+         "source's harmonics (the bound of the peak of their sum). Logarithmic scale; dotted vertical lines "
+         "mark unbounded (undamped) resonances.</p>\n";
+  // One chart per output and quantity, all sources on it.
+  std::vector<std::pair<std::string, ResponseQuantity>> outputs;
+  for (const auto& c : st.curves)
+    if (std::find(outputs.begin(), outputs.end(), std::make_pair(c.output, c.quantity)) == outputs.end())
+      outputs.push_back({c.output, c.quantity});
+  for (const auto& [label, quantity] : outputs) {
+    const Unit u = unit_of(st.system, label, quantity);
+    report::Chart c;
+    c.title = label + " " + to_string(quantity);
+    c.x_label = "speed (km/h)";
+    c.y_label = std::string(to_string(quantity)) + " amplitude (" + u.name + ")";
+    c.log_y = true;
+    c.x_min = st.scene.min_speed * kKmh;
+    c.x_max = st.scene.max_speed * kKmh;
+    for (const auto& curve : st.curves) {
+      if (curve.output != label || curve.quantity != quantity) continue;
+      report::ChartSeries s;
+      s.label = source_label(st, curve.source);
+      for (size_t i = 0; i < curve.speeds.size(); ++i) {
+        s.x.push_back(curve.speeds[i] * kKmh);
+        s.y.push_back(curve.unbounded[i] ? NAN : curve.amplitudes[i] * u.scale);
+        if (curve.unbounded[i]) c.lines.push_back({"", curve.speeds[i] * kKmh, true});
+      }
+      c.series.push_back(s);
+    }
+    out << report::svg_chart(c);
+  }
+
+  out << "<h2>Peaks</h2>\n";
+  write_html_table(out, curve_peak_table(st));
+  out << "<h2>Model summary</h2>\n";
+  write_html_table(out, bodies_table(st));
+  write_html_table(out, elements_table(st));
+  write_html_table(out, modes_table(st));
+  out << "<p class=note>Written by railmodal critical-speed.</p>\n</body></html>\n";
+}
+
+// ---- CSV and JSON ---------------------------------------------------------------------------
+
+void write_csv(std::ostream& out, const CriticalSpeedStudy& st) {
+  out << "speed_kmh,source,source_index,harmonic,mode,mode_name,frequency_hz,output,amplitude,unbounded,"
+         "growth_per_half_period,friction_decrement_per_half_period,friction_stops,friction_threshold_scale\n";
+  out << std::setprecision(10);
+  for (const auto& r : st.critical_speeds)
+    out << r.speed * kKmh << "," << r.source_kind << "," << r.source + 1 << "," << r.harmonic << "," << r.mode << ","
+        << report::csv_field(r.mode_name) << "," << r.frequency_hz << "," << r.output << ","
+        << (r.unbounded ? "" : significant(r.amplitude, 10)) << "," << (r.unbounded ? "true" : "false") << ","
+        << r.growth_per_half_period << "," << r.friction_decrement_per_half_period << ","
+        << (r.friction_stops ? "true" : "false") << "," << r.friction_threshold_scale << "\n";
+}
+
+void write_json(std::ostream& out, const CriticalSpeedStudy& st) {
+  using nlohmann::json;
+  json j;
+  j["vehicle"] = st.system.vehicle.name;
+  j["scene"] = st.scene.name;
+  j["dofs"] = json::array();
+  for (const auto& d : st.system.dofs) j["dofs"].push_back(d.label);
+  j["sources"] = json::array();
+  for (size_t s = 0; s < st.scene.sources.size(); ++s) {
+    const auto& src = *st.scene.sources[s];
+    j["sources"].push_back({{"index", s + 1}, {"kind", src.kind()}, {"description", src.description()},
+                            {"wavelength_m", src.wavelength()}, {"harmonics", src.harmonic_count()}});
+  }
+  j["modes"] = json::array();
+  for (const Mode& m : st.modes.modes)
+    j["modes"].push_back({{"index", m.index}, {"name", m.name}, {"kind", to_string(m.kind)},
+                          {"frequency_hz", m.kind == ModeKind::oscillatory ? json(m.frequency_hz) : json(nullptr)}});
+  j["critical_speeds"] = json::array();
+  for (const auto& r : st.critical_speeds) {
+    json row = {{"speed_kmh", r.speed * kKmh},
+                {"source", r.source_kind},
+                {"source_index", r.source + 1},
+                {"harmonic", r.harmonic},
+                {"mode", r.mode},
+                {"mode_name", r.mode_name},
+                {"frequency_hz", r.frequency_hz},
+                {"output", r.output},
+                {"amplitude", r.unbounded ? json(nullptr) : json(r.amplitude)},
+                {"unbounded", r.unbounded},
+                {"growth_per_half_period", r.growth_per_half_period},
+                {"friction_decrement_per_half_period", r.friction_decrement_per_half_period},
+                {"friction_stops", r.friction_stops}};
+    row["friction_threshold_scale"] =
+        std::isfinite(r.friction_threshold_scale) ? json(r.friction_threshold_scale) : json(nullptr);
+    j["critical_speeds"].push_back(row);
+  }
+  j["curves"] = json::array();
+  for (const auto& c : st.curves) {
+    json amplitudes = json::array(), speeds = json::array();
+    for (size_t i = 0; i < c.speeds.size(); ++i) {
+      speeds.push_back(c.speeds[i] * kKmh);
+      amplitudes.push_back(c.unbounded[i] ? json(nullptr) : json(c.amplitudes[i]));
+    }
+    j["curves"].push_back({{"source_index", c.source + 1}, {"output", c.output}, {"quantity", to_string(c.quantity)},
+                           {"unit", is_rotation(st.system, c.output) ? "rad-based SI" : "SI (m, m/s, m/s²)"},
+                           {"speeds_kmh", speeds}, {"amplitudes", amplitudes}});
+  }
+  out << j.dump(2) << "\n";
+}
+
+}  // namespace
+
+void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, ReportFormat format) {
+  switch (format) {
+    case ReportFormat::markdown: write_markdown(out, study); break;
+    case ReportFormat::html: write_html(out, study); break;
+    case ReportFormat::csv: write_csv(out, study); break;
+    case ReportFormat::json: write_json(out, study); break;
+  }
+}
+
+}  // namespace railmodal

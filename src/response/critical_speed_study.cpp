@@ -1,0 +1,65 @@
+// The whole critical-speed study of a scene: modes, resonances, amplitude curves.
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+#include "railmodal/critical_speed_report.hpp"
+#include "railmodal/errors.hpp"
+
+namespace railmodal {
+
+namespace {
+
+std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpeed>& rows) {
+  std::vector<double> speeds;
+  const int steps = static_cast<int>(std::ceil((scene.max_speed - scene.min_speed) / scene.speed_step - 1e-9));
+  for (int i = 0; i <= steps; ++i) speeds.push_back(std::min(scene.min_speed + i * scene.speed_step, scene.max_speed));
+  for (const auto& r : rows) speeds.push_back(r.speed);
+  std::sort(speeds.begin(), speeds.end());
+  speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
+  return speeds;
+}
+
+}  // namespace
+
+CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle) {
+  CriticalSpeedStudy study;
+  study.scene = scene;
+  study.system = assemble(vehicle, scene.dofs);
+  if (study.system.size() == 0) throw std::invalid_argument("no free degrees of freedom in the chosen set");
+  study.modes = solve_modes(study.system);
+
+  std::vector<const ExcitationSource*> sources;
+  for (const auto& s : scene.sources) sources.push_back(s.get());
+  CriticalSpeedOptions options;
+  options.min_speed = scene.min_speed;
+  options.max_speed = scene.max_speed;
+  study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
+
+  std::vector<OutputRequest> outputs;
+  for (const auto& o : scene.outputs) {
+    const int dof = study.system.index_of(o.dof);
+    if (dof < 0) {
+      std::string known;
+      for (const auto& d : study.system.dofs) known += (known.empty() ? "" : ", ") + d.label;
+      throw InputError(scene.source, 0, 0, "output '" + o.dof + "' is not a degree of freedom of this vehicle in the '" +
+                                              to_string(scene.dofs) + "' set (" + known + ")");
+    }
+    outputs.push_back({dof, o.quantity});
+  }
+  if (outputs.empty()) {
+    std::set<std::string> seen;
+    for (const auto& r : study.critical_speeds)
+      if (seen.insert(r.output).second) outputs.push_back({study.system.index_of(r.output), ResponseQuantity::displacement});
+    if (outputs.empty()) outputs.push_back({0, ResponseQuantity::displacement});
+  }
+  const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
+  for (size_t s = 0; s < sources.size(); ++s) {
+    auto curves = amplitude_curves(study.system, study.modes, *sources[s], static_cast<int>(s), outputs, speeds);
+    study.curves.insert(study.curves.end(), curves.begin(), curves.end());
+  }
+  return study;
+}
+
+}  // namespace railmodal

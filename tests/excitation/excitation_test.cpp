@@ -1,0 +1,142 @@
+// Excitation sources: dip harmonics, wheelbase filtering, staggered joints, unbalance.
+#include <cmath>
+
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+// Simpson's rule on the dip itself: the reference for the closed forms of dip_harmonic.
+double numerical_harmonic(DipShape shape, double h, double l, double period, int k) {
+  const int n = 20000;  // even; the integrand is smooth on the dip, error ~ (l/n)⁴
+  auto eta = [&](double s) {
+    switch (shape) {
+      case DipShape::cosine: return 0.5 * h * (1.0 + std::cos(2 * kPi * s / l));
+      case DipShape::triangular: return h * (1.0 - 2.0 * std::abs(s) / l);
+      case DipShape::parabolic: return h * (1.0 - 4.0 * s * s / (l * l));
+    }
+    return 0.0;
+  };
+  double sum = 0.0;
+  for (int i = 0; i <= n; ++i) {
+    const double s = -l / 2 + l * i / n;
+    const double w = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    sum += w * -eta(s) * std::cos(2 * kPi * k * s / period);
+  }
+  return 2.0 / period * sum * (l / n) / 3.0;
+}
+
+// The triangular dip has a kink at its centre where Simpson loses order: 1e-8 of the depth
+// covers it; the smooth shapes agree to 1e-10.
+TEST(DipHarmonic, ClosedFormsMatchQuadrature) {
+  for (DipShape shape : {DipShape::cosine, DipShape::triangular, DipShape::parabolic})
+    for (double l : {0.3, 1.5, 10.0})
+      for (int k = 1; k <= 8; ++k) {
+        const double closed = dip_harmonic(shape, 0.004, l, 10.0, k);
+        EXPECT_NEAR(closed, numerical_harmonic(shape, 0.004, l, 10.0, k), 0.004 * 1e-8)
+            << to_string(shape) << " l = " << l << " k = " << k;
+      }
+}
+
+// The book's joint: a cosine over the whole rail, y = −y0 + a cos nt (163), has only the
+// fundamental, of amplitude a = half the dip.
+TEST(DipHarmonic, WholeRailCosineIsTheBooksPath) {
+  EXPECT_NEAR(dip_harmonic(DipShape::cosine, 0.005, 10.0, 10.0, 1), -0.0025, 1e-15);
+  for (int k = 2; k <= 5; ++k) EXPECT_NEAR(dip_harmonic(DipShape::cosine, 0.005, 10.0, 10.0, k), 0.0, 1e-18);
+}
+
+// Two-axle digest, Example 3 table: the wheelbase filters the joint input, bounce ∝
+// |cos(π·2a1/L)| = 0.365 / 0.576 / 0.698 for L = 10 / 12.5 / 15 m, pitch ∝ |sin(π·2a1/L)| =
+// 0.931 / 0.818 / 0.716. Checked on the generalised load of the assembled wagon against the
+// load of all four springs moved together (4c·a) and tilted together (4c·a·a1); ±0.0005.
+TEST(RailJoints, WheelbaseFiltersBounceAndPitch) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("two_axle_freight_wagon.toml")), DofSet::vertical);
+  const double c = series_stiffness(sys.vehicle.elements[0].vertical_stages);
+  const double a1 = std::abs(sys.vehicle.elements[0].point.x());
+  const int bounce = sys.index_of("body.bounce"), pitch = sys.index_of("body.pitch");
+  const double expected_bounce[] = {0.365, 0.576, 0.698}, expected_pitch[] = {0.931, 0.818, 0.716};
+  const double lengths[] = {10.0, 12.5, 15.0};
+  for (int i = 0; i < 3; ++i) {
+    RailJoints j;
+    j.rail_length = lengths[i];
+    j.dip_depth = 0.005;
+    const auto source = make_source(j);
+    const double a = 0.0025;
+    const Eigen::VectorXcd Q = generalized_load(sys, source->load(sys, 20.0, 1));
+    EXPECT_NEAR(std::abs(Q(bounce)) / (4 * c * a), expected_bounce[i], 5e-4) << "L = " << lengths[i];
+    EXPECT_NEAR(std::abs(Q(pitch)) / (4 * c * a * a1), expected_pitch[i], 5e-4) << "L = " << lengths[i];
+  }
+}
+
+// Two-axle digest §2.8: staggered joints excite roll too; opposite joints do not.
+TEST(RailJoints, StaggeredJointsExciteRoll) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("two_axle_freight_wagon.toml")), DofSet::all);
+  const int roll = sys.index_of("body.roll");
+  ASSERT_GE(roll, 0);
+  RailJoints j;
+  j.rail_length = 10.0;
+  j.dip_depth = 0.005;
+  const Eigen::VectorXcd square = generalized_load(sys, make_source(j)->load(sys, 20.0, 1));
+  j.staggered = true;
+  const Eigen::VectorXcd staggered = generalized_load(sys, make_source(j)->load(sys, 20.0, 1));
+  EXPECT_LT(std::abs(square(roll)), 1e-9 * square.norm());
+  EXPECT_GT(std::abs(staggered(roll)), 0.1 * staggered.norm());
+}
+
+// The second wheelset meets the profile 2a1/V later.
+TEST(RailJoints, WheelDelaysFollowTheWheelbase) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("two_axle_freight_wagon.toml")), DofSet::vertical);
+  RailJoints j;
+  j.rail_length = 10.0;
+  j.dip_depth = 0.005;
+  const HarmonicLoad load = make_source(j)->load(sys, 20.0, 1);
+  ASSERT_EQ(load.wheels.size(), 4u);
+  double longest = 0.0;
+  for (const auto& w : load.wheels) longest = std::max(longest, w.delay_s);
+  EXPECT_NEAR(longest, 3.81 / 20.0, 1e-12);
+}
+
+// Unbalance digest §3: two cranks at 90° (left lags right) give a vertical force on the axle
+// of √2·m ρ ω², ω = 2V/D.
+TEST(Unbalance, QuadratureCranksSumToRootTwo) {
+  const std::string file = write_temp("unbalance.toml", R"toml(
+[vehicle]
+name = "unbalanced wheelset on a frame"
+[[body]]
+name = "frame"
+mass = "10 t"
+inertia = { roll = "1e4 kg*m^2", pitch = "1e4 kg*m^2", yaw = "1e4 kg*m^2" }
+centre_of_gravity = ["0 m", "0 m", "0 m"]
+[[element]]
+upper = "frame"
+point = ["0 m", "0 m", "0 m"]
+vertical = { stiffness = "1 MN/m" }
+lateral = { stiffness = "1 MN/m" }
+rotational = { roll = "1 MN*m/rad", pitch = "1 MN*m/rad", yaw = "1 MN*m/rad" }
+)toml");
+  const LinearSystem sys = assemble(load_vehicle(file), DofSet::vertical);
+  Unbalance u;
+  u.body = "frame";
+  u.wheel_diameter = 1.85;
+  u.rotating.push_back({0.0, 0.795, 0.0, 2.0, 0.0});
+  u.rotating.push_back({0.0, -0.795, 0.0, 2.0, -kPi / 2});
+  const double V = 100.0 / 3.6, omega = 2 * V / 1.85;
+  const Eigen::VectorXcd Q = generalized_load(sys, make_source(u)->load(sys, V, 1));
+  EXPECT_NEAR(std::abs(Q(sys.index_of("frame.bounce"))), std::sqrt(2.0) * 2.0 * omega * omega, 1e-9 * omega * omega);
+}
+
+TEST(Sources, RejectNonPhysicalParameters) {
+  RailJoints j;
+  EXPECT_THROW(make_source(j), std::invalid_argument);  // no rail length
+  WheelFlat f;
+  f.wheel_diameter = 1.0;
+  f.depth = 0.001;
+  f.length = 4.0;  // longer than the circumference
+  EXPECT_THROW(make_source(f), std::invalid_argument);
+  Hunting h;
+  h.amplitude = 0.01;
+  EXPECT_THROW(make_source(h), std::invalid_argument);  // no conicity
+}
+
+}  // namespace
+}  // namespace railmodal::test

@@ -1,0 +1,67 @@
+// railmodal critical-speed [WAGON] --scene SCENE [--format markdown|html|csv|json] [-o OUT]
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "commands.hpp"
+#include "railmodal/critical_speed_report.hpp"
+#include "railmodal/railmodal.hpp"
+
+namespace railmodal::cli {
+namespace {
+
+struct CriticalSpeedOptions {
+  std::string vehicle;
+  std::string scene;
+  std::string format = "markdown";
+  std::string output = "-";
+};
+
+int run(const CriticalSpeedOptions& o) {
+  const ReportFormat format = *report_format_from_string(o.format);  // CLI11 checked the word
+  std::string current = o.scene;  // the file an error without a location belongs to
+  try {
+    Scene scene = load_scene(o.scene);
+    if (!o.vehicle.empty()) scene.vehicle_file = o.vehicle;  // the command line wins over the scene
+    if (scene.vehicle_file.empty()) {
+      std::cerr << "railmodal: error: no vehicle: give WAGON.toml or a 'vehicle' key in " << o.scene << "\n";
+      return kUsage;
+    }
+    current = scene.vehicle_file;
+    const Vehicle vehicle = load_vehicle(scene.vehicle_file);
+    CriticalSpeedStudy study;
+    try {
+      study = study_critical_speeds(scene, vehicle);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(current, 0, 0, e.what());
+    }
+    std::ostringstream text;
+    write_critical_speed_report(text, study, format);
+    return write_output(o.output, text.str());
+  } catch (const InputError& e) {
+    std::cerr << e.what() << "\n";
+    return kInput;
+  } catch (const NumericalError& e) {
+    std::cerr << current << ": error: numerical failure: " << e.what() << "\n";
+    return kNumerical;
+  }
+}
+
+}  // namespace
+
+std::function<int()> add_critical_speed_command(CLI::App& app) {
+  auto options = std::make_shared<CriticalSpeedOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "critical-speed", "Resonance speeds of a vehicle for the excitation sources of a scene, with a report");
+  cmd->add_option("vehicle", options->vehicle, "Vehicle file (TOML); default: the scene's 'vehicle'");
+  cmd->add_option("--scene", options->scene, "Scene file (TOML), e.g. data/scenes/resort_car_10m_rails.toml")
+      ->required();
+  cmd->add_option("--format", options->format, "Report format")
+      ->check(CLI::IsMember({"markdown", "html", "csv", "json"}))
+      ->capture_default_str();
+  cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
+      ->capture_default_str();
+  return [options] { return run(*options); };
+}
+
+}  // namespace railmodal::cli
