@@ -19,6 +19,13 @@ struct CriticalSpeedStudy {
   ModalResult modes;
   std::vector<CriticalSpeed> critical_speeds;  ///< sorted by speed
   std::vector<AmplitudeCurve> curves;          ///< per source and output, on the scene's grid
+  /// Damped resonance peaks of the curves: every local maximum of the grid above 1 % of the
+  /// curve's largest value, refined by golden-section search to 1e-6 of its speed.
+  struct CurvePeak {
+    int curve = 0;  ///< index into curves
+    Peak peak;
+  };
+  std::vector<CurvePeak> peaks;
 };
 
 /// Assembles the vehicle in the scene's DOF set, solves its modes, finds the critical speeds

@@ -112,4 +112,17 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
                                              const std::vector<OutputRequest>& outputs,
                                              const std::vector<double>& speeds);
 
+/// The largest amplitude of one output between `low` and `high` (a bracket holding one
+/// damped resonance peak), by golden-section search until the bracket is narrower than
+/// `relative_tolerance` × speed. Each evaluation is one direct solve per source harmonic.
+struct Peak {
+  double speed = 0.0;      ///< m/s
+  double amplitude = 0.0;  ///< as in AmplitudeCurve
+  int evaluations = 0;
+  bool unbounded = false;  ///< an undamped resonance: no finite peak
+};
+
+Peak refine_peak(const LinearSystem& system, const ModalResult& modes, const ExcitationSource& source,
+                 const OutputRequest& output, double low, double high, double relative_tolerance);
+
 }  // namespace railmodal

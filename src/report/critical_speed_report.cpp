@@ -142,20 +142,33 @@ Table critical_speed_table(const CriticalSpeedStudy& st) {
 }
 
 Table curve_peak_table(const CriticalSpeedStudy& st) {
-  Table t{{"source", "output", "peak", "at (km/h)", "unbounded at (km/h)"}, {false, false, true, true, false}, {}};
-  for (const auto& c : st.curves) {
+  Table t{{"source", "output", "peak", "at (km/h)", "solves to refine"}, {false, false, true, true, true}, {}};
+  for (size_t k = 0; k < st.curves.size(); ++k) {
+    const auto& c = st.curves[k];
     const Unit u = unit_of(st.system, c.output, c.quantity);
-    size_t peak = 0;
     std::string unbounded;
-    for (size_t i = 0; i < c.speeds.size(); ++i) {
-      if (c.amplitudes[i] > c.amplitudes[peak]) peak = i;
+    for (size_t i = 0; i < c.speeds.size(); ++i)
       if (c.unbounded[i]) unbounded += (unbounded.empty() ? "" : ", ") + fixed(c.speeds[i] * kKmh, 1);
+    const std::string label = c.output + " " + to_string(c.quantity);
+    if (!unbounded.empty()) {
+      // Beside an undamped resonance the grid's largest value only measures how close it came.
+      t.rows.push_back({source_label(st, c.source), label, "unbounded", unbounded, "—"});
+      continue;
     }
-    // Beside an undamped resonance the largest grid value only measures how close the grid came.
-    const bool finite_peak = unbounded.empty() && !c.speeds.empty();
-    t.rows.push_back({source_label(st, c.source), c.output + " " + to_string(c.quantity),
-                      finite_peak ? significant(c.amplitudes[peak] * u.scale, 4) + " " + u.name : "unbounded",
-                      finite_peak ? fixed(c.speeds[peak] * kKmh, 1) : "—", unbounded.empty() ? "—" : unbounded});
+    bool any = false;
+    for (const auto& p : st.peaks)
+      if (p.curve == static_cast<int>(k)) {
+        any = true;
+        t.rows.push_back({source_label(st, c.source), label, significant(p.peak.amplitude * u.scale, 5) + " " + u.name,
+                          fixed(p.peak.speed * kKmh, 2), std::to_string(p.peak.evaluations)});
+      }
+    // The largest value may sit at an end of the range rather than at a peak.
+    if (c.amplitudes.empty()) continue;
+    const size_t i = std::max_element(c.amplitudes.begin(), c.amplitudes.end()) - c.amplitudes.begin();
+    if (!any || i == 0 || i + 1 == c.amplitudes.size())
+      t.rows.push_back({source_label(st, c.source), label, significant(c.amplitudes[i] * u.scale, 5) + " " + u.name,
+                        fixed(c.speeds[i] * kKmh, 2) + (i == 0 || i + 1 == c.amplitudes.size() ? " (range end)" : ""),
+                        "—"});
   }
   return t;
 }
@@ -223,7 +236,8 @@ void write_markdown(std::ostream& out, const CriticalSpeedStudy& st) {
   out << "## Amplitude against speed\n\n"
       << (any_force_source(st) ? "Force sources: receptance times the source's force (∝ V²). " : "")
       << "Displacement sources: the source amplitude times the displacement transmissibility; the sum over the "
-         "source's harmonics. The curves are in the HTML (`--format html`) and JSON reports.\n\n";
+         "source's harmonics. Damped peaks are refined by golden-section search to 1e-6 of their speed; "
+         "the curves themselves are in the HTML (`--format html`) and JSON reports.\n\n";
   write_markdown_table(out, curve_peak_table(st));
   out << "## Model summary\n\n### Bodies\n\n";
   write_markdown_table(out, bodies_table(st));

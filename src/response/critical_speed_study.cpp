@@ -21,6 +21,24 @@ std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpe
   return speeds;
 }
 
+constexpr double kPeakTolerance = 1e-6;  // relative, in speed: far below any grid a user would plot
+
+// Local maxima of a damped curve, refined between their grid neighbours.
+std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const ExcitationSource& source,
+                               const OutputRequest& output, const AmplitudeCurve& curve) {
+  std::vector<Peak> peaks;
+  const auto& a = curve.amplitudes;
+  if (a.size() < 3) return peaks;
+  for (bool u : curve.unbounded)
+    if (u) return peaks;  // undamped: no finite peak to refine
+  const double largest = *std::max_element(a.begin(), a.end());
+  for (size_t i = 1; i + 1 < a.size(); ++i)
+    if (a[i] >= a[i - 1] && a[i] > a[i + 1] && a[i] >= 0.01 * largest)
+      peaks.push_back(refine_peak(study.system, study.modes, source, output, curve.speeds[i - 1], curve.speeds[i + 1],
+                                  kPeakTolerance));
+  return peaks;
+}
+
 }  // namespace
 
 CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle) {
@@ -57,7 +75,11 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
   const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
   for (size_t s = 0; s < sources.size(); ++s) {
     auto curves = amplitude_curves(study.system, study.modes, *sources[s], static_cast<int>(s), outputs, speeds);
-    study.curves.insert(study.curves.end(), curves.begin(), curves.end());
+    for (size_t o = 0; o < curves.size(); ++o) {
+      study.curves.push_back(curves[o]);
+      for (const Peak& p : refine_peaks(study, *sources[s], outputs[o], curves[o]))
+        study.peaks.push_back({static_cast<int>(study.curves.size()) - 1, p});
+    }
   }
   return study;
 }

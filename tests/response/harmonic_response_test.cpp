@@ -36,6 +36,44 @@ vertical_damping = "2 kN*s/m"
   }
 }
 
+// Base excitation of a damped SDOF through spring and damper: |X/U| = |k + icω|/|k − mω² + icω|
+// peaks at r² = (√(1 + 8ζ²) − 1)/(4ζ²), r = ω/ωn. Under whole-rail joint dips (one harmonic,
+// f = V/L) the peak speed is V = r·ωn·L/2π. Golden section to 1e-10 puts it within 1e-8.
+TEST(PeakSearch, DampedBaseExcitationPeak) {
+  const std::string file = write_temp("sdof_base.toml", R"toml(
+[vehicle]
+name = "sdof on the track"
+[[body]]
+name = "m"
+mass = "1000 kg"
+inertia = { roll = "0 kg*m^2", pitch = "0 kg*m^2", yaw = "0 kg*m^2" }
+centre_of_gravity = ["0 m", "0 m", "0 m"]
+held = ["lateral", "roll", "pitch", "yaw"]
+[[element]]
+upper = "m"
+point = ["0 m", "0 m", "0 m"]
+vertical = { stiffness = "1 MN/m" }
+vertical_damping = "12 kN*s/m"
+)toml");
+  const LinearSystem sys = assemble(load_vehicle(file), DofSet::vertical);
+  const ModalResult modes = solve_modes(sys);
+  RailJoints j;
+  j.rail_length = 10.0;
+  j.dip_depth = 0.01;
+  const auto source = make_source(j);
+  const double wn = std::sqrt(1e6 / 1000.0), zeta = 12e3 / (2 * std::sqrt(1e6 * 1000.0));
+  const double r = std::sqrt((std::sqrt(1 + 8 * zeta * zeta) - 1) / (4 * zeta * zeta));
+  const double expected = r * wn * 10.0 / (2 * kPi);
+  const Peak p = refine_peak(sys, modes, *source, {0, ResponseQuantity::displacement}, 0.5 * expected,
+                             1.5 * expected, 1e-10);
+  EXPECT_FALSE(p.unbounded);
+  EXPECT_NEAR(p.speed / expected, 1.0, 1e-8);
+  const double w = r * wn;
+  const double transmissibility = std::abs(std::complex<double>(1e6, 12e3 * w) / std::complex<double>(1e6 - 1000 * w * w, 12e3 * w));
+  EXPECT_NEAR(p.amplitude / (0.005 * transmissibility), 1.0, 1e-12);
+  EXPECT_LT(p.evaluations, 60);
+}
+
 // With C = 0 or proportional damping the modes decouple exactly: superposition over all modes
 // equals the direct solve to round-off (1e-10 relative covers the conditioning of K − ω²M near
 // the frequencies used). Every bundled wagon, all DOFs, joint input at three speeds.
