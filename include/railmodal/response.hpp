@@ -50,6 +50,16 @@ double response_amplitude(const HarmonicResponse& response, int dof, ResponseQua
 /// q friction dissipates 4·q·(this); a harmonic modal force F₀ puts in π·F₀·q at resonance.
 double modal_friction_work(const LinearSystem& system, const Eigen::VectorXd& shape);
 
+/// Whether any spring stage of the vehicle has leaf friction (relative_friction > 0).
+bool has_leaf_friction(const LinearSystem& system);
+
+/// The system with each leaf-friction stage replaced, at circular frequency ω, by the viscous
+/// damper across its element that dissipates as much per cycle when the element stretches by
+/// `stretch_amplitude`: c = 4R·s/(πωX), R = φ × load, s the stage's share of the stretch.
+/// Only when a user asks for it: Coulomb friction is not viscous, and the answer depends on
+/// the amplitude chosen.
+LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega, double stretch_amplitude);
+
 /// One resonance of one source harmonic with one mode, inside the speed range.
 struct CriticalSpeed {
   double speed = 0.0;           ///< m/s
@@ -81,6 +91,9 @@ struct CriticalSpeedOptions {
   /// A mode counts as excited by a source harmonic when its modal force is above this
   /// fraction of the largest modal force of that harmonic (symmetry zeros fall below it).
   double participation_floor = 1e-9;
+  /// > 0: leaf friction also acts as equivalent viscous damping for this element stretch
+  /// amplitude (m), so resonances get finite amplitudes; 0: friction only in the criterion.
+  double friction_reference_amplitude = 0.0;
 };
 
 /// Every resonance V = Λ·f/k in the range, for every source, harmonic and oscillatory mode
@@ -107,10 +120,12 @@ struct OutputRequest {
 };
 
 /// One curve per output, from one direct solve per speed and harmonic.
+/// `friction_reference_amplitude` as in CriticalSpeedOptions.
 std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
                                              const ExcitationSource& source, int source_index,
                                              const std::vector<OutputRequest>& outputs,
-                                             const std::vector<double>& speeds);
+                                             const std::vector<double>& speeds,
+                                             double friction_reference_amplitude = 0.0);
 
 /// The largest amplitude of one output between `low` and `high` (a bracket holding one
 /// damped resonance peak), by golden-section search until the bracket is narrower than
@@ -123,6 +138,7 @@ struct Peak {
 };
 
 Peak refine_peak(const LinearSystem& system, const ModalResult& modes, const ExcitationSource& source,
-                 const OutputRequest& output, double low, double high, double relative_tolerance);
+                 const OutputRequest& output, double low, double high, double relative_tolerance,
+                 double friction_reference_amplitude = 0.0);
 
 }  // namespace railmodal

@@ -27,6 +27,10 @@ struct Scene {
   double speed_step = 0.0;   ///< m/s, grid of the amplitude curves
   std::vector<std::shared_ptr<const ExcitationSource>> sources;
   std::vector<SceneOutput> outputs;  ///< empty: the most energetic DOF of each excited mode
+  /// [friction] model = "equivalent_viscous": leaf friction also acts as the viscous damping
+  /// that dissipates as much at this element stretch amplitude (m); 0 (model = "criterion",
+  /// the default): friction only decides whether a resonance can grow.
+  double friction_reference_amplitude = 0.0;
 };
 
 /// Reads a scene file; errors are InputError with file, line, column and key.

@@ -169,6 +169,18 @@ Scene load_scene(const std::string& path) {
       t.finish();
       scene.outputs.push_back(out);
     }
+  if (root.has("friction")) {
+    TableReader t = root.table("friction");
+    const std::string model = t.optional_string("model").value_or("criterion");
+    if (model == "equivalent_viscous") {
+      scene.friction_reference_amplitude = t.positive("reference_amplitude", Quantity::length);
+    } else if (model != "criterion") {
+      t.fail("model", "must be \"criterion\" or \"equivalent_viscous\", not '" + model + "'");
+    } else if (t.has("reference_amplitude")) {
+      t.fail("reference_amplitude", "applies only to model = \"equivalent_viscous\"");
+    }
+    t.finish();
+  }
   root.finish();
   return scene;
 }

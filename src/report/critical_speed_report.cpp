@@ -209,6 +209,16 @@ Table modes_table(const CriticalSpeedStudy& st) {
   return t;
 }
 
+std::string friction_model_note(const CriticalSpeedStudy& st) {
+  if (!has_leaf_friction(st.system)) return "No leaf-spring friction in this vehicle.";
+  if (st.scene.friction_reference_amplitude > 0.0)
+    return "Leaf friction: as the scene asks, also an EQUIVALENT VISCOUS damping c = 4R·s/(πωX) for a spring "
+           "stretch amplitude X = " + significant(st.scene.friction_reference_amplitude * 1e3, 4) +
+           " mm — an approximation of Coulomb friction whose amplitudes depend on that choice.";
+  return "Leaf friction: Coulomb, in the resonance criterion only (the amplitudes are those of the frictionless "
+         "linear model).";
+}
+
 const char* const kCriticalSpeedNote =
     "Amplitude: steady amplitude of the output at the critical speed; unbounded where nothing damps the mode "
     "(no viscous damping): the amplitude then grows by the growth per half period (the book's secular solutions "
@@ -223,7 +233,7 @@ void write_markdown(std::ostream& out, const CriticalSpeedStudy& st) {
   out << "Scene **" << st.scene.name << "** (`" << st.scene.source << "`), vehicle `" << st.scene.vehicle_file
       << "`, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "
       << fixed(st.scene.min_speed * kKmh, 1) << "–" << fixed(st.scene.max_speed * kKmh, 1) << " km/h.\n\n";
-  out << "## Sources\n\n";
+  out << friction_model_note(st) << "\n\n## Sources\n\n";
   write_markdown_table(out, sources_table(st));
   out << "A harmonic k of a source runs at f = k·V/Λ; a mode of frequency f resonates at V = Λ·f/k.\n\n";
   out << "## Critical speeds\n\n";
@@ -261,7 +271,7 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
       << "</code>, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "
       << fixed(st.scene.min_speed * kKmh, 1) << "–" << fixed(st.scene.max_speed * kKmh, 1) << " km/h.</p>\n";
 
-  out << "<h2>Sources</h2>\n";
+  out << "<p>" << html_escape(friction_model_note(st)) << "</p>\n<h2>Sources</h2>\n";
   write_html_table(out, sources_table(st));
   out << "<h2>Critical speeds</h2>\n";
   if (st.critical_speeds.empty()) {

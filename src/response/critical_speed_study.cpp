@@ -35,7 +35,7 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
   for (size_t i = 1; i + 1 < a.size(); ++i)
     if (a[i] >= a[i - 1] && a[i] > a[i + 1] && a[i] >= 0.01 * largest)
       peaks.push_back(refine_peak(study.system, study.modes, source, output, curve.speeds[i - 1], curve.speeds[i + 1],
-                                  kPeakTolerance));
+                                  kPeakTolerance, study.scene.friction_reference_amplitude));
   return peaks;
 }
 
@@ -53,6 +53,7 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
   CriticalSpeedOptions options;
   options.min_speed = scene.min_speed;
   options.max_speed = scene.max_speed;
+  options.friction_reference_amplitude = scene.friction_reference_amplitude;
   study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
 
   std::vector<OutputRequest> outputs;
@@ -74,7 +75,8 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
   }
   const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
   for (size_t s = 0; s < sources.size(); ++s) {
-    auto curves = amplitude_curves(study.system, study.modes, *sources[s], static_cast<int>(s), outputs, speeds);
+    auto curves = amplitude_curves(study.system, study.modes, *sources[s], static_cast<int>(s), outputs, speeds,
+                                   scene.friction_reference_amplitude);
     for (size_t o = 0; o < curves.size(); ++o) {
       study.curves.push_back(curves[o]);
       for (const Peak& p : refine_peaks(study, *sources[s], outputs[o], curves[o]))

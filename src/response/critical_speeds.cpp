@@ -32,6 +32,26 @@ HarmonicResponse response_without_mode(const LinearSystem& system, const ModalRe
   return modal_harmonic_response(system, rest, load, frequency_hz);
 }
 
+// The response to one harmonic load; with a friction reference amplitude, leaf friction acts
+// as its equivalent viscous damping at this frequency (which also changes the input's
+// velocity term, so the load is built on the damped system).
+struct Evaluation {
+  std::optional<LinearSystem> damped;  ///< the system with equivalent friction damping, if used
+  Eigen::VectorXcd load;
+  HarmonicResponse response;
+  const LinearSystem& system(const LinearSystem& base) const { return damped ? *damped : base; }
+};
+
+Evaluation respond(const LinearSystem& system, const ModalResult& modes, const HarmonicLoad& load,
+                   double friction_reference_amplitude) {
+  Evaluation e;
+  if (friction_reference_amplitude > 0.0 && load.frequency_hz > 0.0 && has_leaf_friction(system))
+    e.damped = with_equivalent_friction_damping(system, 2.0 * kPi * load.frequency_hz, friction_reference_amplitude);
+  e.load = generalized_load(e.system(system), load);
+  e.response = harmonic_response(e.system(system), modes, e.load, load.frequency_hz);
+  return e;
+}
+
 }  // namespace
 
 std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,
@@ -72,7 +92,7 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
           row.friction_stops = kPi * F0 <= 4.0 * friction;
           row.friction_threshold_scale = F0 > 0.0 ? 4.0 * friction / (kPi * F0) : INFINITY;
         }
-        const HarmonicResponse response = harmonic_response(system, modes, Q, load.frequency_hz);
+        const HarmonicResponse response = respond(system, modes, load, options.friction_reference_amplitude).response;
         row.unbounded = response.unbounded;
         row.amplitude = response.unbounded ? 0.0 : std::abs(response.displacement(out));
         rows.push_back(row);
@@ -91,7 +111,8 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
 std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
                                              const ExcitationSource& source, int source_index,
                                              const std::vector<OutputRequest>& outputs,
-                                             const std::vector<double>& speeds) {
+                                             const std::vector<double>& speeds,
+                                             double friction_reference_amplitude) {
   std::vector<AmplitudeCurve> curves;
   for (const OutputRequest& o : outputs) {
     if (o.dof < 0 || o.dof >= system.size()) throw std::invalid_argument("amplitude curve: no such output DOF");
@@ -106,18 +127,19 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     std::vector<bool> unbounded(outputs.size(), false);
     for (int k = 1; k <= source.harmonic_count(); ++k) {
       const HarmonicLoad load = source.load(system, speed, k);
-      const Eigen::VectorXcd Q = generalized_load(system, load);
-      const HarmonicResponse r = harmonic_response(system, modes, Q, load.frequency_hz);
+      const Evaluation e = respond(system, modes, load, friction_reference_amplitude);
+      const HarmonicResponse& r = e.response;
+      const LinearSystem& used = e.system(system);
       std::optional<HarmonicResponse> without;  // the response less the resonant mode
       for (size_t o = 0; o < outputs.size(); ++o) {
         if (!r.unbounded) {
           sum[o] += response_amplitude(r, outputs[o].dof, outputs[o].quantity);
-        } else if (moves(modes.modes[r.resonant_mode - 1], outputs[o].dof) || system.damping.any()) {
+        } else if (moves(modes.modes[r.resonant_mode - 1], outputs[o].dof) || used.damping.any()) {
           unbounded[o] = true;
         } else {
           // Undamped, and the resonant mode does not move this output: its contribution is
           // zero at every frequency, so the other modes give the exact response here.
-          if (!without) without = response_without_mode(system, modes, Q, load.frequency_hz, r.resonant_mode);
+          if (!without) without = response_without_mode(used, modes, e.load, load.frequency_hz, r.resonant_mode);
           sum[o] += response_amplitude(*without, outputs[o].dof, outputs[o].quantity);
         }
       }

@@ -7,13 +7,14 @@
 namespace railmodal {
 
 Peak refine_peak(const LinearSystem& system, const ModalResult& modes, const ExcitationSource& source,
-                 const OutputRequest& output, double low, double high, double relative_tolerance) {
+                 const OutputRequest& output, double low, double high, double relative_tolerance,
+                 double friction_reference_amplitude) {
   if (!(low > 0.0) || !(high > low) || !(relative_tolerance > 0.0))
     throw std::invalid_argument("refine_peak: need 0 < low < high and a positive tolerance");
   Peak peak;
   auto amplitude = [&](double speed) {
     ++peak.evaluations;
-    const auto curves = amplitude_curves(system, modes, source, 0, {output}, {speed});
+    const auto curves = amplitude_curves(system, modes, source, 0, {output}, {speed}, friction_reference_amplitude);
     if (curves[0].unbounded[0]) peak.unbounded = true;
     return curves[0].amplitudes[0];
   };

@@ -83,6 +83,16 @@ TEST(SceneReader, Errors) {
   expect_error("quantity = \"acceleration\"", "quantity = \"jerk\"", {"output[0].quantity"});
 }
 
+TEST(SceneReader, FrictionModel) {
+  const Scene s = load_scene(write_scene(kScene + "[friction]\nmodel = \"equivalent_viscous\"\nreference_amplitude = \"5 mm\"\n"));
+  EXPECT_NEAR(s.friction_reference_amplitude, 0.005, 1e-15);
+  EXPECT_EQ(load_scene(write_scene(kScene)).friction_reference_amplitude, 0.0);
+  expect_error("quantity = \"acceleration\"", "quantity = \"acceleration\"\n[friction]\nmodel = \"viscous\"",
+               {"key 'friction.model'"});
+  expect_error("quantity = \"acceleration\"", "quantity = \"acceleration\"\n[friction]\nmodel = \"equivalent_viscous\"",
+               {"key 'friction.reference_amplitude'", "missing"});
+}
+
 // An output the vehicle does not have is an input error naming the scene.
 TEST(SceneReader, UnknownOutputDofIsReported) {
   std::string text = kScene;

@@ -129,5 +129,20 @@ TEST(FrictionCriterion, FourEqualSpringsInBounce) {
   EXPECT_NEAR(modal_friction_work(sys, bounce.shape), 4 * 0.075 * P * phi_z, 1e-12 * P * phi_z);
 }
 
+// Equivalent viscous damping of leaf friction: a damper that dissipates per cycle what
+// friction does, πcωX² = 4RX, c = 4R/(πωX) per spring (single-stage springs: s = 1).
+// Four springs act in bounce; the track input gets the same damper's velocity term.
+TEST(FrictionCriterion, EquivalentViscousDampingDissipatesLikeFriction) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("two_axle_freight_wagon.toml")), DofSet::vertical);
+  const double omega = 13.09, X = 0.005;
+  const double R = 0.075 * sys.element_loads[0];
+  const LinearSystem damped = with_equivalent_friction_damping(sys, omega, X);
+  const int b = sys.index_of("body.bounce");
+  EXPECT_NEAR(damped.damping(b, b), 4 * 4 * R / (kPi * omega * X), 1e-9 * damped.damping(b, b));
+  EXPECT_NEAR(damped.track_inputs[0].load_per_velocity(b, 2), 4 * R / (kPi * omega * X), 1e-6);
+  EXPECT_TRUE(has_leaf_friction(sys));
+  EXPECT_EQ(sys.damping.norm(), 0.0);  // the original is untouched
+}
+
 }  // namespace
 }  // namespace railmodal::test

@@ -1,0 +1,75 @@
+// Leaf-spring friction in the frequency domain: the work it does against a mode (for the
+// resonance criterion) and, when a user asks for it, an equivalent viscous damper.
+#include <cmath>
+#include <stdexcept>
+
+#include "model/rigid_body.hpp"
+#include "railmodal/response.hpp"
+
+namespace railmodal {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Vertical stretch (upper relative to lower) of an element per unit of each DOF.
+Eigen::RowVectorXd vertical_stretch_row(const LinearSystem& system, const Element& e) {
+  const Vehicle& v = system.vehicle;
+  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(system.size());
+  for (int d = 0; d < system.size(); ++d) {
+    const Body& body = v.bodies[system.dofs[d].body];
+    const int motion = static_cast<int>(system.dofs[d].motion);
+    if (body.name == e.upper) row(d) += model::point_map(body, e.point)(2, motion);
+    if (body.name == e.lower) row(d) -= model::point_map(body, e.point)(2, motion);
+  }
+  return row;
+}
+
+// Friction force R = φ × load of each stage, and the stage's share k_element/k_stage of the
+// element's stretch (in series every stage carries the element's force).
+template <typename Visit>
+void for_each_friction_stage(const LinearSystem& system, Visit visit) {
+  const Vehicle& v = system.vehicle;
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const Element& e = v.elements[k];
+    const double k_element = series_stiffness(e.vertical_stages);
+    if (!(k_element > 0.0)) continue;
+    for (const SpringStage& s : e.vertical_stages)
+      if (s.relative_friction > 0.0)
+        visit(k, e, s.relative_friction * std::abs(system.element_loads[k]), k_element / (s.stiffness * s.count));
+  }
+}
+
+}  // namespace
+
+double modal_friction_work(const LinearSystem& system, const Eigen::VectorXd& shape) {
+  double work = 0.0;
+  for_each_friction_stage(system, [&](size_t, const Element& e, double friction, double share) {
+    work += friction * std::abs(share * vertical_stretch_row(system, e).dot(shape));
+  });
+  return work;
+}
+
+bool has_leaf_friction(const LinearSystem& system) {
+  bool any = false;
+  for_each_friction_stage(system, [&](size_t, const Element&, double, double) { any = true; });
+  return any;
+}
+
+LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega, double stretch_amplitude) {
+  if (!(omega > 0.0) || !(stretch_amplitude > 0.0))
+    throw std::invalid_argument("equivalent friction damping needs a positive frequency and amplitude");
+  LinearSystem out = system;
+  for_each_friction_stage(system, [&](size_t k, const Element& e, double friction, double share) {
+    // With the element stretching X the stage stretches share·X and friction dissipates
+    // 4R·share·X per cycle; a damper across the element dissipates πcωX²: c = 4R·share/(πωX).
+    const double c = 4.0 * friction * share / (kPi * omega * stretch_amplitude);
+    const Eigen::RowVectorXd row = vertical_stretch_row(system, e);
+    out.damping += c * row.transpose() * row;
+    for (auto& input : out.track_inputs)
+      if (input.element == static_cast<int>(k)) input.load_per_velocity.col(2) += c * row.transpose();
+  });
+  return out;
+}
+
+}  // namespace railmodal
