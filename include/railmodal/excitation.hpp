@@ -87,9 +87,10 @@ struct RailJoints {
   DipShape shape = DipShape::cosine;
   double dip_length = 0.0;   ///< m; 0: the whole rail (the book's cosine, eq. (163))
   int harmonics = 1;
-  /// Optional track data: K (N/m, load per unit settlement under a wheel) and the mass of
-  /// half a wheelset, m; with both, the static rail deflection μg/K and the wheelset-on-track
-  /// frequency ρ = √(K/m) whose neglect (n² ≪ ρ²) the report checks.
+  /// Optional track data (two-axle digest §2.5): K, the load per unit settlement under a
+  /// wheel (N/m; the book's 22 000–57 000 kgf/cm), and m, the mass of half a wheelset (kg).
+  /// With both the wheel follows the dip amplified by ρ²/(ρ² − n²), ρ = √(K/m), n = 2πkV/L
+  /// (eq. (162) without its free term); without them, by 1 (the book's n² ≪ ρ², eq. (163)).
   double track_stiffness = 0.0;
   double half_wheelset_mass = 0.0;
 };

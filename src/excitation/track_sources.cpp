@@ -36,6 +36,8 @@ class RailJointSource final : public ExcitationSource {
     require(p.dip_length >= 0.0 && p.dip_length <= p.rail_length,
             "rail joints: dip_length must lie between 0 and the rail length");
     require(p.harmonics >= 1, "rail joints: at least one harmonic");
+    require((p.track_stiffness > 0.0) == (p.half_wheelset_mass > 0.0),
+            "rail joints: give both track_stiffness and half_wheelset_mass, or neither");
   }
   std::string kind() const override { return "rail_joints"; }
   std::string description() const override {
@@ -43,6 +45,9 @@ class RailJointSource final : public ExcitationSource {
     out << "rail joints, L = " << p_.rail_length << " m, " << (p_.staggered ? "staggered" : "opposite")
         << ", dip 2a = " << mm(p_.dip_depth) << " (" << to_string(p_.shape) << " over "
         << dip_length() << " m)";
+    if (p_.track_stiffness > 0.0)
+      out << ", on track of K = " << p_.track_stiffness / 1e6 << " MN/m (wheelset on track ρ = "
+          << std::sqrt(p_.track_stiffness / p_.half_wheelset_mass) << " 1/s)";
     return out.str();
   }
   double wavelength() const override { return p_.rail_length; }
@@ -52,7 +57,8 @@ class RailJointSource final : public ExcitationSource {
     require(speed > 0.0, "rail joints: speed must be positive");
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
-    const double A = dip_harmonic(p_.shape, p_.dip_depth, dip_length(), p_.rail_length, harmonic);
+    const double A = dip_harmonic(p_.shape, p_.dip_depth, dip_length(), p_.rail_length, harmonic) *
+                     track_factor(2.0 * kPi * out.frequency_hz);
     // Staggered: the right rail's joints lie half a rail on, a factor e^{−iπk} = (−1)^k.
     const double right = p_.staggered && harmonic % 2 == 1 ? -1.0 : 1.0;
     const auto sets = excitation::wheelsets(system);
@@ -71,6 +77,16 @@ class RailJointSource final : public ExcitationSource {
 
  private:
   double dip_length() const { return p_.dip_length > 0.0 ? p_.dip_length : p_.rail_length; }
+  // The wheel on the elastic rail follows the dip amplified by ρ²/(ρ² − n²), Filonenko-
+  // Borodich's path (162) without its free term; the book drops it as n² ≪ ρ² (≈ 1 %).
+  double track_factor(double n) const {
+    if (!(p_.track_stiffness > 0.0)) return 1.0;
+    const double rho2 = p_.track_stiffness / p_.half_wheelset_mass;
+    if (std::abs(rho2 - n * n) <= 1e-12 * rho2)
+      throw std::invalid_argument("rail joints: this speed meets the wheelset-on-track resonance ρ = " +
+                                  std::to_string(std::sqrt(rho2)) + " 1/s");
+    return rho2 / (rho2 - n * n);
+  }
   RailJoints p_;
 };
 

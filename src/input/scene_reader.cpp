@@ -31,6 +31,11 @@ std::shared_ptr<const ExcitationSource> rail_joints(TableReader& t) {
   p.dip_length = t.optional_positive("dip_length", Quantity::length).value_or(0.0);
   if (p.dip_length > p.rail_length) t.fail("dip_length", "cannot exceed the rail length");
   p.harmonics = t.optional_count("harmonics", 1).value_or(1);
+  if (t.has("track_stiffness") != t.has("half_wheelset_mass"))
+    t.fail(t.has("track_stiffness") ? "half_wheelset_mass" : "track_stiffness",
+           "missing: the track's dynamics need both track_stiffness and half_wheelset_mass");
+  p.track_stiffness = t.optional_positive("track_stiffness", Quantity::stiffness).value_or(0.0);
+  p.half_wheelset_mass = t.optional_positive("half_wheelset_mass", Quantity::mass).value_or(0.0);
   return make_source(p);
 }
 

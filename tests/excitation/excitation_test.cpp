@@ -125,6 +125,25 @@ rotational = { roll = "1 MN*m/rad", pitch = "1 MN*m/rad", yaw = "1 MN*m/rad" }
   EXPECT_NEAR(std::abs(Q(sys.index_of("frame.bounce"))), std::sqrt(2.0) * 2.0 * omega * omega, 1e-9 * omega * omega);
 }
 
+// Two-axle digest, Example 1: K = 22 000 kgf/cm, half wheelset 733 kgf (m = 733/g), 10 m rails
+// at 100 km/h: ρ² = 29 443 s⁻² (book 29 300), n² = 304.6 s⁻², n²/ρ² = 1.03 %, so the wheel
+// follows the dip 1/(1 − 0.0103) = 1.0105 times over. ±1e-4 (the digest's 3 figures).
+TEST(RailJoints, TrackStiffnessExample1) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("two_axle_freight_wagon.toml")), DofSet::vertical);
+  RailJoints j;
+  j.rail_length = 10.0;
+  j.dip_depth = 0.005;
+  const double V = 100 / 3.6;
+  const double rigid = std::abs(make_source(j)->load(sys, V, 1).wheels[0].amplitude(2));
+  j.track_stiffness = 22000 * kKgfPerCm;
+  j.half_wheelset_mass = 733 * kKgf / 9.81;
+  const double elastic = std::abs(make_source(j)->load(sys, V, 1).wheels[0].amplitude(2));
+  const double rho2 = j.track_stiffness / j.half_wheelset_mass, n = 2 * kPi * V / 10.0;
+  EXPECT_NEAR(rho2, 29443, 1.0);
+  EXPECT_NEAR(n * n / rho2, 0.0103, 1e-4);
+  EXPECT_NEAR(elastic / rigid, 1.0105, 1e-4);
+}
+
 TEST(Sources, RejectNonPhysicalParameters) {
   RailJoints j;
   EXPECT_THROW(make_source(j), std::invalid_argument);  // no rail length
