@@ -141,8 +141,21 @@ Table critical_speed_table(const CriticalSpeedStudy& st) {
   return t;
 }
 
+// What the curve is: the source's input times which transfer function.
+std::string transfer_function(const CriticalSpeedStudy& st, const AmplitudeCurve& c) {
+  const bool force = st.scene.sources[c.source]->kind() == "unbalance";
+  switch (c.quantity) {
+    case ResponseQuantity::displacement: return force ? "receptance × force" : "displacement transmissibility × input";
+    case ResponseQuantity::velocity: return force ? "mobility × force" : "iω × transmissibility × input";
+    case ResponseQuantity::acceleration: return force ? "accelerance × force" : "−ω² × transmissibility × input";
+  }
+  return "";
+}
+
 Table curve_peak_table(const CriticalSpeedStudy& st) {
-  Table t{{"source", "output", "peak", "at (km/h)", "solves to refine"}, {false, false, true, true, true}, {}};
+  Table t{{"source", "output", "transfer function", "peak", "at (km/h)", "solves to refine"},
+          {false, false, false, true, true, true},
+          {}};
   for (size_t k = 0; k < st.curves.size(); ++k) {
     const auto& c = st.curves[k];
     const Unit u = unit_of(st.system, c.output, c.quantity);
@@ -152,21 +165,23 @@ Table curve_peak_table(const CriticalSpeedStudy& st) {
     const std::string label = c.output + " " + to_string(c.quantity);
     if (!unbounded.empty()) {
       // Beside an undamped resonance the grid's largest value only measures how close it came.
-      t.rows.push_back({source_label(st, c.source), label, "unbounded", unbounded, "—"});
+      t.rows.push_back({source_label(st, c.source), label, transfer_function(st, c), "unbounded", unbounded, "—"});
       continue;
     }
     bool any = false;
     for (const auto& p : st.peaks)
       if (p.curve == static_cast<int>(k)) {
         any = true;
-        t.rows.push_back({source_label(st, c.source), label, significant(p.peak.amplitude * u.scale, 5) + " " + u.name,
+        t.rows.push_back({source_label(st, c.source), label, transfer_function(st, c),
+                          significant(p.peak.amplitude * u.scale, 5) + " " + u.name,
                           fixed(p.peak.speed * kKmh, 2), std::to_string(p.peak.evaluations)});
       }
     // The largest value may sit at an end of the range rather than at a peak.
     if (c.amplitudes.empty()) continue;
     const size_t i = std::max_element(c.amplitudes.begin(), c.amplitudes.end()) - c.amplitudes.begin();
     if (!any || i == 0 || i + 1 == c.amplitudes.size())
-      t.rows.push_back({source_label(st, c.source), label, significant(c.amplitudes[i] * u.scale, 5) + " " + u.name,
+      t.rows.push_back({source_label(st, c.source), label, transfer_function(st, c),
+                        significant(c.amplitudes[i] * u.scale, 5) + " " + u.name,
                         fixed(c.speeds[i] * kKmh, 2) + (i == 0 || i + 1 == c.amplitudes.size() ? " (range end)" : ""),
                         "—"});
   }

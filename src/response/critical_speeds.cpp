@@ -1,5 +1,6 @@
 // Critical speeds: where a harmonic of a source meets a natural frequency, and how much
 // the resonance is worth there.
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -25,11 +26,39 @@ bool moves(const Mode& mode, int dof) {
   return std::abs(mode.shape(dof)) > 1e-9 * mode.shape.cwiseAbs().maxCoeff();
 }
 
-HarmonicResponse response_without_mode(const LinearSystem& system, const ModalResult& modes,
-                                       const Eigen::VectorXcd& load, double frequency_hz, int mode_index) {
-  ModalResult rest = modes;
-  rest.modes.erase(rest.modes.begin() + (mode_index - 1));
-  return modal_harmonic_response(system, rest, load, frequency_hz);
+// Undamped modes at this frequency: φᵀCφ = 0 with C positive semi-definite means Cφ = 0,
+// so each is an exact null vector of the dynamic stiffness D = K − ω²M + iωC.
+std::vector<const Mode*> undamped_modes_at(const LinearSystem& system, const ModalResult& modes, double omega) {
+  std::vector<const Mode*> at;
+  for (const Mode& m : modes.modes)
+    if (m.kind == ModeKind::oscillatory && std::abs(m.eigenvalue - omega * omega) <= 1e-9 * m.eigenvalue &&
+        m.shape.dot(system.damping * m.shape) == 0.0)
+      at.push_back(&m);
+  return at;
+}
+
+// The response less its resonant part: those modes decouple exactly, so the rest solves
+// D x = Q − Σ Mφ(φᵀQ) with x M-orthogonal to them (a bordered system, exact with damping).
+HarmonicResponse response_without_resonant_modes(const LinearSystem& system, const std::vector<const Mode*>& resonant,
+                                                 const Eigen::VectorXcd& load, double frequency_hz) {
+  const int n = system.size(), r = static_cast<int>(resonant.size());
+  const double omega = 2.0 * kPi * frequency_hz;
+  const std::complex<double> i(0.0, 1.0);
+  Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(n + r, n + r);
+  A.topLeftCorner(n, n) = (system.stiffness - omega * omega * system.mass).cast<std::complex<double>>() +
+                          i * omega * system.damping.cast<std::complex<double>>();
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(n + r);
+  rhs.head(n) = load;
+  for (int k = 0; k < r; ++k) {
+    const Eigen::VectorXd b = system.mass * resonant[k]->shape;
+    A.block(0, n + k, n, 1) = b.cast<std::complex<double>>();
+    A.block(n + k, 0, 1, n) = b.transpose().cast<std::complex<double>>();
+    rhs.head(n) -= b.cast<std::complex<double>>() * resonant[k]->shape.cast<std::complex<double>>().dot(load);
+  }
+  HarmonicResponse out;
+  out.frequency_hz = frequency_hz;
+  out.displacement = A.partialPivLu().solve(rhs).head(n);
+  return out;
 }
 
 // The response to one harmonic load; with a friction reference amplitude, leaf friction acts
@@ -130,18 +159,25 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
       const Evaluation e = respond(system, modes, load, friction_reference_amplitude);
       const HarmonicResponse& r = e.response;
       const LinearSystem& used = e.system(system);
-      std::optional<HarmonicResponse> without;  // the response less the resonant mode
-      for (size_t o = 0; o < outputs.size(); ++o) {
-        if (!r.unbounded) {
+      if (!r.unbounded) {
+        for (size_t o = 0; o < outputs.size(); ++o)
           sum[o] += response_amplitude(r, outputs[o].dof, outputs[o].quantity);
-        } else if (moves(modes.modes[r.resonant_mode - 1], outputs[o].dof) || used.damping.any()) {
+        continue;
+      }
+      // An output that no driven resonant mode moves keeps a finite amplitude: the rest.
+      const auto resonant = undamped_modes_at(used, modes, 2.0 * kPi * load.frequency_hz);
+      std::optional<HarmonicResponse> rest;
+      for (size_t o = 0; o < outputs.size(); ++o) {
+        bool moved = false;
+        for (const Mode* m : resonant)
+          moved = moved || (moves(*m, outputs[o].dof) &&
+                            std::abs(m->shape.cast<std::complex<double>>().dot(e.load)) > 1e-12 * e.load.norm() * m->shape.norm());
+        if (moved) {
           unbounded[o] = true;
-        } else {
-          // Undamped, and the resonant mode does not move this output: its contribution is
-          // zero at every frequency, so the other modes give the exact response here.
-          if (!without) without = response_without_mode(used, modes, e.load, load.frequency_hz, r.resonant_mode);
-          sum[o] += response_amplitude(*without, outputs[o].dof, outputs[o].quantity);
+          continue;
         }
+        if (!rest) rest = response_without_resonant_modes(used, resonant, e.load, load.frequency_hz);
+        sum[o] += response_amplitude(*rest, outputs[o].dof, outputs[o].quantity);
       }
     }
     for (size_t o = 0; o < outputs.size(); ++o) {

@@ -118,6 +118,29 @@ TEST(HarmonicResponse, UndampedResonanceIsUnboundedNotNaN) {
   EXPECT_TRUE(p.displacement.allFinite());
 }
 
+// At an undamped resonance an output the resonant mode does not move keeps its finite
+// amplitude, even when other modes are damped: the symmetric two-axle wagon with a damper on
+// pitch alone, driven by joints at its bounce frequency. The pitch amplitude there equals the
+// limit of the direct solve from either side (1e-7 away in speed; agreement to 1e-6).
+TEST(AmplitudeCurves, OutputsTheResonantModeDoesNotMoveStayFinite) {
+  LinearSystem sys = assemble(load_vehicle(data_file("two_axle_freight_wagon.toml")), DofSet::vertical);
+  const int pitch = sys.index_of("body.pitch"), bounce = sys.index_of("body.bounce");
+  sys.damping(pitch, pitch) = 2e4;  // a pitch damper: bounce stays undamped
+  const ModalResult modes = solve_modes(sys);
+  RailJoints j;
+  j.rail_length = 12.5;
+  j.dip_depth = 0.005;
+  const auto source = make_source(j);
+  const double V = source->speed_for(mode_named(modes, "body bounce").frequency_hz, 1);
+  const auto curves = amplitude_curves(sys, modes, *source, 0,
+                                       {{bounce, ResponseQuantity::displacement}, {pitch, ResponseQuantity::displacement}},
+                                       {V * (1 - 1e-7), V, V * (1 + 1e-7)});
+  EXPECT_TRUE(curves[0].unbounded[1]);
+  ASSERT_FALSE(curves[1].unbounded[1]);
+  const double limit = 0.5 * (curves[1].amplitudes[0] + curves[1].amplitudes[2]);
+  EXPECT_NEAR(curves[1].amplitudes[1] / limit, 1.0, 1e-6);
+}
+
 // Leaf friction against the bounce of the symmetric two-axle wagon: four springs, each with
 // R = φ·load, stretched by the mode's bounce entry: Σ R|δ| = 4 φ P |φ_z|.
 TEST(FrictionCriterion, FourEqualSpringsInBounce) {
