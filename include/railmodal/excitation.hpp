@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <complex>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -124,6 +125,12 @@ struct Hunting {
   double bogie_wheelbase = 0.0;         ///< a, m (rigid bogie)
   double given_wavelength = 0.0;        ///< m (given)
   double amplitude = 0.0;               ///< y₀, m
+  /// Optional data for Meineke's hunting-limit speed (267), reported beside the source.
+  struct Meineke {
+    double wheelbase = 0.0, diagonal = 0.0, clearance = 0.0, k = 0.0;  ///< a, d, 2σ (m); k
+    int wheels = 0;                                                    ///< i
+  };
+  std::optional<Meineke> meineke;
 };
 
 /// Klingel's wavelength of a free wheelset, eq. (264b): λ = 2π√(s r / (2n)).

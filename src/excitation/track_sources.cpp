@@ -1,5 +1,6 @@
 // Displacement sources: rail joints, wheel eccentricity and flats, kinematic hunting.
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
@@ -185,6 +186,11 @@ class HuntingSource final : public ExcitationSource {
       case Hunting::Model::given: out << "given wavelength"; break;
     }
     out << ", λ = " << wavelength() << " m, y0 = " << mm(p_.amplitude);
+    if (p_.meineke) {
+      const auto& m = *p_.meineke;
+      out << "; Meineke's hunting-limit speed (267): " << std::setprecision(4)
+          << meineke_hunting_speed_kmh(m.wheelbase, m.diagonal, m.clearance, m.wheels, m.k) << " km/h";
+    }
     return out.str();
   }
   double wavelength() const override {

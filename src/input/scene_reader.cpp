@@ -76,6 +76,17 @@ std::shared_ptr<const ExcitationSource> hunting(TableReader& t) {
     if (p.model == Hunting::Model::rigid_bogie) p.bogie_wheelbase = t.positive("bogie_wheelbase", Quantity::length);
   }
   p.amplitude = t.positive("amplitude", Quantity::length);
+  if (t.has("meineke")) {
+    TableReader m = t.table("meineke");
+    Hunting::Meineke data;
+    data.wheelbase = m.positive("wheelbase", Quantity::length);
+    data.diagonal = m.positive("diagonal", Quantity::length);
+    data.clearance = m.positive("clearance", Quantity::length);
+    data.wheels = m.count("wheels", 1);
+    data.k = m.positive("k", Quantity::dimensionless);
+    m.finish();
+    p.meineke = data;
+  }
   return make_source(p);
 }
 
