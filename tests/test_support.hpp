@@ -15,9 +15,16 @@ inline std::string data_file(const std::string& name) {
   return std::string(RAILMODAL_DATA_DIR) + "/vehicles/" + name;
 }
 
-/// Writes `text` to a fresh file in the test temporary directory and returns its path.
+/// Writes `text` to a fresh file in a temporary directory of the running test (ctest runs
+/// tests in parallel processes: a shared directory would let them overwrite each other's
+/// files) and returns its path. Files of one test share the directory, so they can name
+/// each other by relative paths.
 inline std::string write_temp(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "railmodal_tests";
+  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string folder = test ? std::string(test->test_suite_name()) + "." + test->name() : "no_test";
+  for (char& c : folder)
+    if (c == '/') c = '_';  // parameterised names hold '/'
+  const auto dir = std::filesystem::temp_directory_path() / "railmodal_tests" / folder;
   std::filesystem::create_directories(dir);
   const auto path = dir / name;
   std::ofstream(path) << text;
