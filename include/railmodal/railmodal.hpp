@@ -21,5 +21,6 @@
 #include "railmodal/report.hpp"
 #include "railmodal/response.hpp"
 #include "railmodal/scene.hpp"
+#include "railmodal/simulation.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/vehicle.hpp"
