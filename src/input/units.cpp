@@ -30,6 +30,7 @@ const std::map<std::string, UnitDefinition>& unit_table() {
       {"mm", {0.001, dim(0, 1, 0)}},
       {"km", {1000.0, dim(0, 1, 0)}},
       {"s", {1.0, dim(0, 0, 1)}},
+      {"ms", {1.0e-3, dim(0, 0, 1)}},
       {"min", {60.0, dim(0, 0, 1)}},
       {"h", {3600.0, dim(0, 0, 1)}},
       {"kg", {1.0, dim(1, 0, 0)}},
@@ -141,6 +142,7 @@ Dimension dimension_of(Quantity q) {
     case Quantity::speed: return dim(0, 1, -1);
     case Quantity::rotational_stiffness: return dim(1, 2, -2, -1);
     case Quantity::dimensionless: return dim(0, 0, 0);
+    case Quantity::time: return dim(0, 0, 1);
   }
   return dim(0, 0, 0);
 }
@@ -160,6 +162,7 @@ const char* name_of(Quantity q) {
     case Quantity::speed: return "a speed";
     case Quantity::rotational_stiffness: return "a rotational stiffness (moment/angle)";
     case Quantity::dimensionless: return "a plain number";
+    case Quantity::time: return "a time";
   }
   return "a quantity";
 }
@@ -179,6 +182,7 @@ const char* example_of(Quantity q) {
     case Quantity::speed: return "\"75 km/h\" or 20.8 (m/s)";
     case Quantity::rotational_stiffness: return "\"940 kN*m/rad\" or 9.4e5 (N·m/rad)";
     case Quantity::dimensionless: return "a number";
+    case Quantity::time: return "\"2 ms\" or 0.002 (s)";
   }
   return "";
 }
