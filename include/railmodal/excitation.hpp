@@ -57,14 +57,19 @@ class ExcitationSource {
   virtual double wavelength() const = 0;
   /// Harmonics evaluated: 1 … harmonic_count().
   virtual int harmonic_count() const = 0;
-  /// The input at `speed` (m/s, > 0) for `harmonic` (1-based).
-  virtual HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const = 0;
+  /// The input at `speed` (m/s, > 0 and finite) for `harmonic` (1-based); throws
+  /// std::invalid_argument otherwise.
+  HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const;
 
   double frequency_hz(double speed, int harmonic) const { return harmonic * speed / wavelength(); }
   /// The speed at which `harmonic` runs at `frequency_hz`: V = Λ·f/k.
   double speed_for(double frequency_hz, int harmonic) const {
     return frequency_hz * wavelength() / harmonic;
   }
+
+ protected:
+  /// load() after its checks.
+  virtual HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const = 0;
 };
 
 /// Shape of a local dip (rail joint, wheel flat) of depth h and length l, centred on its

@@ -27,8 +27,6 @@ struct Dof {
   Motion motion = Motion::bounce;
 };
 
-/// M, C, K in SI over `dofs`. K = elastic stiffness + gravity (preload) stiffness; the
-/// gravity part is kept separately so reports can show what the preload takes away.
 /// An element whose lower end rides on the track (a wheel, through its axlebox springs):
 /// where a displacement of the track enters. A track displacement u (longitudinal, lateral,
 /// vertical, m) at `point` loads the degrees of freedom with
@@ -40,6 +38,8 @@ struct TrackInput {
   Eigen::MatrixXd load_per_velocity;      ///< n × 3, N·s/m and N·m·s/m
 };
 
+/// M, C, K in SI over `dofs`. K = elastic stiffness + gravity (preload) stiffness; the
+/// gravity part is kept separately so reports can show what the preload takes away.
 struct LinearSystem {
   std::vector<Dof> dofs;
   Eigen::MatrixXd mass;

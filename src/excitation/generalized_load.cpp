@@ -1,10 +1,18 @@
 // From wheel inputs and point forces to the generalised load on the degrees of freedom.
+#include <cmath>
 #include <stdexcept>
 
 #include "model/rigid_body.hpp"
 #include "railmodal/excitation.hpp"
 
 namespace railmodal {
+
+HarmonicLoad ExcitationSource::load(const LinearSystem& system, double speed, int harmonic) const {
+  if (!(speed > 0.0) || !std::isfinite(speed))
+    throw std::invalid_argument(kind() + ": the speed must be positive and finite");
+  if (harmonic < 1) throw std::invalid_argument(kind() + ": harmonics count from 1");
+  return load_at(system, speed, harmonic);
+}
 
 Eigen::VectorXcd generalized_load(const LinearSystem& system, const HarmonicLoad& load) {
   constexpr double kTwoPi = 6.28318530717958647692;

@@ -54,8 +54,7 @@ class RailJointSource final : public ExcitationSource {
   double wavelength() const override { return p_.rail_length; }
   int harmonic_count() const override { return p_.harmonics; }
 
-  HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const override {
-    require(speed > 0.0, "rail joints: speed must be positive");
+  HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const override {
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
     const double A = dip_harmonic(p_.shape, p_.dip_depth, dip_length(), p_.rail_length, harmonic) *
@@ -107,7 +106,7 @@ class EccentricitySource final : public ExcitationSource {
   double wavelength() const override { return kPi * p_.wheel_diameter; }
   int harmonic_count() const override { return 1; }
 
-  HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const override {
+  HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const override {
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
     if (harmonic != 1) return out;  // a pure sinusoid of the wheel's turn
@@ -149,7 +148,7 @@ class FlatSource final : public ExcitationSource {
   double wavelength() const override { return kPi * p_.wheel_diameter; }
   int harmonic_count() const override { return p_.harmonics; }
 
-  HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const override {
+  HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const override {
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
     // The flat is on the wheel: every wheel meets its own flat at the same moment (the book's
@@ -206,7 +205,7 @@ class HuntingSource final : public ExcitationSource {
   }
   int harmonic_count() const override { return 1; }
 
-  HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const override {
+  HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const override {
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
     if (harmonic != 1) return out;

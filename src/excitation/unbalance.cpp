@@ -34,7 +34,7 @@ class UnbalanceSource final : public ExcitationSource {
   double wavelength() const override { return kPi * p_.wheel_diameter; }
   int harmonic_count() const override { return p_.harmonics; }
 
-  HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const override {
+  HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const override {
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
     const auto& bodies = system.vehicle.bodies;

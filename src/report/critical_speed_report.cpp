@@ -299,6 +299,7 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
   // Campbell diagram: excitation lines f = kV/Λ against the natural frequencies.
   {
     report::Chart c;
+    c.id = "campbell";
     c.title = "Campbell diagram: excitation frequencies against speed";
     c.x_label = "speed (km/h)";
     c.y_label = "frequency (Hz)";
@@ -355,9 +356,11 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
   for (const auto& c : st.curves)
     if (std::find(outputs.begin(), outputs.end(), std::make_pair(c.output, c.quantity)) == outputs.end())
       outputs.push_back({c.output, c.quantity});
-  for (const auto& [label, quantity] : outputs) {
+  for (size_t k = 0; k < outputs.size(); ++k) {
+    const auto& [label, quantity] = outputs[k];
     const Unit u = unit_of(st.system, label, quantity);
     report::Chart c;
+    c.id = "curve-" + std::to_string(k + 1);
     c.title = label + " " + to_string(quantity);
     c.x_label = "speed (km/h)";
     c.y_label = std::string(to_string(quantity)) + " amplitude (" + u.name + ")";

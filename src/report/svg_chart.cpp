@@ -117,8 +117,8 @@ std::string svg_chart(const Chart& chart) {
     << "</text>\n";
   s << "<text transform=\"translate(16," << top + ph / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
     << html_escape(chart.y_label) << "</text>\n";
-  s << "<clipPath id=\"plot" << &chart << "\"><rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw
-    << "\" height=\"" << ph << "\"/></clipPath>\n<g clip-path=\"url(#plot" << &chart << ")\">\n";
+  s << "<clipPath id=\"plot-" << chart.id << "\"><rect x=\"" << left << "\" y=\"" << top << "\" width=\"" << pw
+    << "\" height=\"" << ph << "\"/></clipPath>\n<g clip-path=\"url(#plot-" << chart.id << ")\">\n";
   for (const auto& l : chart.lines) {
     if (l.vertical)
       s << "<line x1=\"" << X(l.value) << "\" y1=\"" << top << "\" x2=\"" << X(l.value) << "\" y2=\"" << top + ph;

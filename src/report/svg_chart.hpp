@@ -21,6 +21,7 @@ struct ReferenceLine {
 };
 
 struct Chart {
+  std::string id;  ///< unique within the page (names the plot's clip path); letters, digits, '-'
   std::string title, x_label, y_label;
   std::vector<ChartSeries> series;
   std::vector<ReferenceLine> lines;

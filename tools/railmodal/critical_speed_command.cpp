@@ -10,14 +10,14 @@
 namespace railmodal::cli {
 namespace {
 
-struct CriticalSpeedOptions {
+struct CriticalSpeedCommandOptions {
   std::string vehicle;
   std::string scene;
   std::string format = "markdown";
   std::string output = "-";
 };
 
-int run(const CriticalSpeedOptions& o) {
+int run(const CriticalSpeedCommandOptions& o) {
   const ReportFormat format = *report_format_from_string(o.format);  // CLI11 checked the word
   std::string current = o.scene;  // the file an error without a location belongs to
   try {
@@ -50,7 +50,7 @@ int run(const CriticalSpeedOptions& o) {
 }  // namespace
 
 std::function<int()> add_critical_speed_command(CLI::App& app) {
-  auto options = std::make_shared<CriticalSpeedOptions>();
+  auto options = std::make_shared<CriticalSpeedCommandOptions>();
   CLI::App* cmd = app.add_subcommand(
       "critical-speed", "Resonance speeds of a vehicle for the excitation sources of a scene, with a report");
   cmd->add_option("vehicle", options->vehicle, "Vehicle file (TOML); default: the scene's 'vehicle'");
