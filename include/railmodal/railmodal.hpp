@@ -17,5 +17,6 @@
 #include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"
 #include "railmodal/report.hpp"
+#include "railmodal/spectrum.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/vehicle.hpp"
