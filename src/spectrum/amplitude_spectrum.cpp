@@ -102,7 +102,9 @@ void SpectrumAnalyzer::compute(const Eigen::Ref<const Eigen::VectorXd>& signal, 
   impl_->fft.execute();
 
   // One-sided peak amplitude: 2|X[k]|/Σw, except the unpaired bins 0 and M/2 (see Spectrum).
-  out->amplitude = impl_->fft.output().cwiseAbs() * (2.0 / impl_->weight);
+  // √(re² + im²) rather than std::abs, whose hypot cost nearly as much as the transform
+  // (2^20 samples: 17 → 10 ms CPU); |X|² overflows only for samples beyond ~1e150.
+  out->amplitude = impl_->fft.output().cwiseAbs2().cwiseSqrt() * (2.0 / impl_->weight);
   out->amplitude(0) *= 0.5;
   if (m % 2 == 0) out->amplitude(m / 2) *= 0.5;
   out->sampling_rate = sampling_rate;
