@@ -85,16 +85,17 @@ struct SpectrumOptions {
 
 /// A one-sided amplitude spectrum.
 ///
-/// Scaling: with x[n] the N samples (mean removed if asked), w[n] the window and
-/// X[k] = Σ_{n<N} w[n] x[n] e^{−2πikn/M} the DFT of the record zero-padded to M samples,
+/// Scaling: with x[n] the N samples (less their weighted mean if remove_mean), w[n] the
+/// window and X[k] = Σ_{n<N} w[n] x[n] e^{−2πik n/M} the DFT of the record zero-padded to M,
 ///
 ///   amplitude[0] = |X[0]| / Σw,   amplitude[k] = 2|X[k]| / Σw  (0 < k < M/2),
 ///   amplitude[M/2] = |X[M/2]| / Σw  (M even),
 ///
-/// Σw = N × coherent gain. So a tone A·sin(2πft + φ) whose frequency f is a bin frequency
-/// k·fs/M shows amplitude A at bin k under every window, padded or not (padding adds zeros,
-/// not weight), and a constant c shows c at bin 0. Between bins a tone shows less (scalloping,
-/// see WindowProperties); find_peaks corrects for it.
+/// Σw = N × coherent gain. So a tone A·sin(2πft + φ) with f = j·fs/N, farther from 0 Hz and
+/// from Nyquist than the window's main lobe, shows exactly A at its bin (j·M/N) under every
+/// window, padded or not: padding adds zeros, not weight. A constant c kept in (remove_mean
+/// false) shows c at bin 0. Between bins a tone shows less (scalloping, see
+/// WindowProperties); find_peaks corrects for it.
 struct Spectrum {
   Eigen::VectorXd amplitude;  ///< bins k = 0 … M/2, in the signal's unit (peak, not RMS)
   double sampling_rate = 0.0;         ///< fs, Hz
