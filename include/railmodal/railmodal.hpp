@@ -22,5 +22,6 @@
 #include "railmodal/response.hpp"
 #include "railmodal/scene.hpp"
 #include "railmodal/simulation.hpp"
+#include "railmodal/spectrum.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/vehicle.hpp"

@@ -10,3 +10,5 @@ cmake -S "$consumer_dir/consumer" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/pr
 cmake --build "$work/build" > "$work/build.log"
 "$work/build/consumer" "$data_dir/vehicles/fette_car.toml" | tee "$work/run.log"
 grep -q "body bounce" "$work/run.log"
+"$work/build/spectrum_consumer" | tee "$work/spectrum.log"
+grep -q "spectral peak 1.058" "$work/spectrum.log"

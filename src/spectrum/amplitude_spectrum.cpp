@@ -1,0 +1,124 @@
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "railmodal/spectrum.hpp"
+#include "spectrum/real_fft.hpp"
+
+namespace railmodal {
+namespace {
+
+Eigen::Index next_power_of_two(Eigen::Index n) {
+  Eigen::Index m = 1;
+  while (m < n) m *= 2;
+  return m;
+}
+
+Eigen::Index transform_length_for(Eigen::Index signal_length, const SpectrumOptions& options) {
+  switch (options.padding) {
+    case Padding::none: return signal_length;
+    case Padding::to_length:
+      if (options.padded_length < signal_length)
+        throw std::invalid_argument("padded_length must be at least the signal length " +
+                                    std::to_string(signal_length) + ", got " + std::to_string(options.padded_length));
+      return options.padded_length;
+    case Padding::next_power_of_two: return next_power_of_two(signal_length);
+  }
+  throw std::invalid_argument("unknown padding");
+}
+
+void check_signal(const Eigen::Ref<const Eigen::VectorXd>& signal, Eigen::Index expected, double sampling_rate) {
+  if (!(sampling_rate > 0.0) || !std::isfinite(sampling_rate))
+    throw std::invalid_argument("sampling_rate must be positive and finite, got " + std::to_string(sampling_rate));
+  if (signal.size() != expected)
+    throw std::invalid_argument("signal must have the analyzer's " + std::to_string(expected) + " samples, got " +
+                                std::to_string(signal.size()));
+  for (Eigen::Index n = 0; n < signal.size(); ++n)
+    if (!std::isfinite(signal(n)))
+      throw std::invalid_argument("signal[" + std::to_string(n) + "] is " + std::to_string(signal(n)) +
+                                  ": samples must be finite");
+}
+
+}  // namespace
+
+bool SpectrumOptions::is_valid(std::string* why) const {
+  if (padding == Padding::to_length && padded_length < 2) {
+    if (why) *why = "padded_length must be at least 2 (and the signal length) with Padding::to_length";
+    return false;
+  }
+  return true;
+}
+
+Eigen::VectorXd Spectrum::frequencies() const {
+  return Eigen::VectorXd::LinSpaced(amplitude.size(), 0.0, frequency(amplitude.size() - 1));
+}
+
+struct SpectrumAnalyzer::Impl {
+  Impl(Eigen::Index signal_length, const SpectrumOptions& options)
+      : options(options),
+        window(window_coefficients(options.window, signal_length)),
+        weight(window.sum()),
+        fft(transform_length_for(signal_length, options)) {}
+
+  SpectrumOptions options;
+  Eigen::VectorXd window;
+  double weight;  // Σw = N × coherent gain
+  spectrum::RealFft fft;
+};
+
+SpectrumAnalyzer::SpectrumAnalyzer(Eigen::Index signal_length, const SpectrumOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  if (signal_length < 2)
+    throw std::invalid_argument("a spectrum needs a signal of at least 2 samples, got " + std::to_string(signal_length));
+  impl_ = std::make_unique<Impl>(signal_length, options);
+}
+
+SpectrumAnalyzer::~SpectrumAnalyzer() = default;
+SpectrumAnalyzer::SpectrumAnalyzer(SpectrumAnalyzer&&) noexcept = default;
+SpectrumAnalyzer& SpectrumAnalyzer::operator=(SpectrumAnalyzer&&) noexcept = default;
+
+Eigen::Index SpectrumAnalyzer::signal_length() const { return impl_->window.size(); }
+Eigen::Index SpectrumAnalyzer::transform_length() const { return impl_->fft.length(); }
+const SpectrumOptions& SpectrumAnalyzer::options() const { return impl_->options; }
+
+Spectrum SpectrumAnalyzer::compute(const Eigen::Ref<const Eigen::VectorXd>& signal, double sampling_rate) {
+  Spectrum s;
+  compute(signal, sampling_rate, &s);
+  return s;
+}
+
+void SpectrumAnalyzer::compute(const Eigen::Ref<const Eigen::VectorXd>& signal, double sampling_rate,
+                               Spectrum* out) {
+  const Eigen::Index n = signal_length(), m = transform_length();
+  check_signal(signal, n, sampling_rate);
+  const Eigen::VectorXd& w = impl_->window;
+  // The window-weighted mean: subtracting it zeroes bin 0 exactly. The plain mean would add
+  // a line of its own (−mean·w) when the record holds a non-integer number of cycles.
+  const double mean = impl_->options.remove_mean ? w.dot(signal) / impl_->weight : 0.0;
+  auto input = impl_->fft.input();
+  input.head(n) = (signal.array() - mean) * w.array();
+  input.tail(m - n).setZero();
+  impl_->fft.execute();
+
+  // One-sided peak amplitude: 2|X[k]|/Σw, except the unpaired bins 0 and M/2 (see Spectrum).
+  // √(re² + im²) rather than std::abs, whose hypot cost nearly as much as the transform
+  // (2^20 samples: 17 → 10 ms CPU); |X|² overflows only for samples beyond ~1e150.
+  out->amplitude = impl_->fft.output().cwiseAbs2().cwiseSqrt() * (2.0 / impl_->weight);
+  out->amplitude(0) *= 0.5;
+  if (m % 2 == 0) out->amplitude(m / 2) *= 0.5;
+  out->sampling_rate = sampling_rate;
+  out->signal_length = n;
+  out->transform_length = m;
+  out->resolution = sampling_rate / static_cast<double>(n);
+  out->bin_spacing = sampling_rate / static_cast<double>(m);
+  out->window = impl_->options.window;
+  out->coherent_gain = impl_->weight / static_cast<double>(n);
+}
+
+Spectrum amplitude_spectrum(const Eigen::Ref<const Eigen::VectorXd>& signal, double sampling_rate,
+                            const SpectrumOptions& options) {
+  return SpectrumAnalyzer(signal.size(), options).compute(signal, sampling_rate);
+}
+
+}  // namespace railmodal

@@ -1,0 +1,93 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "railmodal/spectrum.hpp"
+#include "spectrum/windows.hpp"
+
+namespace railmodal {
+namespace {
+
+// Does the amplitude fall to `level` on the side of bin k given by `step` before it rises
+// above a[k]? Reaching the end of the spectrum counts as falling.
+bool falls_to(const Eigen::VectorXd& a, Eigen::Index k, Eigen::Index step, double level) {
+  for (Eigen::Index j = k + step; j >= 0 && j < a.size(); j += step) {
+    if (a(j) > a(k)) return false;
+    if (a(j) <= level) return true;
+  }
+  return true;
+}
+
+// Where, in bins, the amplitude crosses `level` on the side of bin k given by `step`
+// (linear between bins), or the end of the spectrum if it never does.
+double crossing(const Eigen::VectorXd& a, Eigen::Index k, Eigen::Index step, double level) {
+  Eigen::Index j = k;
+  while (j + step >= 0 && j + step < a.size() && a(j + step) > level) j += step;
+  if (j + step < 0 || j + step >= a.size()) return static_cast<double>(j);
+  const double fraction = (a(j) - level) / (a(j) - a(j + step));
+  return static_cast<double>(j) + static_cast<double>(step) * fraction;
+}
+
+SpectralPeak interpolate(const Spectrum& s, Eigen::Index k, double window_half_width) {
+  const Eigen::VectorXd& a = s.amplitude;
+  // Parabola through the log-amplitudes at k−1, k, k+1; a neighbour below the round-off of
+  // the peak (a bin-centred tone under the rectangular window) counts as round-off.
+  const double floor = a(k) * std::numeric_limits<double>::epsilon();
+  const double left = std::log(std::max(a(k - 1), floor)), centre = std::log(a(k)),
+               right = std::log(std::max(a(k + 1), floor));
+  const double delta = 0.5 * (left - right) / (left - 2.0 * centre + right);  // in [−½, ½] bin
+
+  SpectralPeak p;
+  p.bin = k;
+  p.frequency = (static_cast<double>(k) + delta) * s.bin_spacing;
+  // The line's offset from bin k in bins of fs/N (padding makes bins finer than that).
+  p.amplitude = a(k) / spectrum::window_response(s.window, delta * s.bin_spacing / s.resolution);
+  const double half = 0.5 * p.amplitude;
+  const double width = (crossing(a, k, 1, half) - crossing(a, k, -1, half)) * s.bin_spacing;
+  p.resolution = std::max(0.5 * width, window_half_width * s.resolution);
+  return p;
+}
+
+}  // namespace
+
+bool PeakOptions::is_valid(std::string* why) const {
+  if (!(threshold > 0.0 && threshold <= 1.0)) {
+    if (why) *why = "threshold must be in (0, 1], got " + std::to_string(threshold);
+    return false;
+  }
+  if (!(min_dip >= 0.0 && min_dip < 1.0)) {
+    if (why) *why = "min_dip must be in [0, 1), got " + std::to_string(min_dip);
+    return false;
+  }
+  return true;
+}
+
+std::vector<SpectralPeak> find_peaks(const Spectrum& spectrum, const PeakOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  const Eigen::VectorXd& a = spectrum.amplitude;
+  if (a.size() < 3)
+    throw std::invalid_argument("peaks need a spectrum of at least 3 bins, got " + std::to_string(a.size()));
+  if (!(spectrum.bin_spacing > 0.0) || !(spectrum.resolution > 0.0))
+    throw std::invalid_argument("the spectrum's bin_spacing and resolution must be positive");
+
+  std::vector<Eigen::Index> maxima;
+  double largest = 0.0;
+  for (Eigen::Index k = 1; k + 1 < a.size(); ++k) {
+    // The left end of a plateau counts once.
+    if (!(a(k) > a(k - 1) && a(k) >= a(k + 1))) continue;
+    const double level = a(k) * (1.0 - options.min_dip);
+    if (!falls_to(a, k, -1, level) || !falls_to(a, k, 1, level)) continue;
+    maxima.push_back(k);
+    largest = std::max(largest, a(k));
+  }
+  const double window_half_width = 0.5 * window_properties(spectrum.window).half_amplitude_bandwidth;
+  std::vector<SpectralPeak> peaks;
+  for (Eigen::Index k : maxima)
+    if (a(k) >= options.threshold * largest) peaks.push_back(interpolate(spectrum, k, window_half_width));
+  return peaks;
+}
+
+}  // namespace railmodal
