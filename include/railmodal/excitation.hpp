@@ -47,6 +47,16 @@ struct HarmonicLoad {
 /// Q = Σ_wheels (K_u + iω C_u) u e^{−iωτ} + Σ_forces Gᵀ F.
 Eigen::VectorXcd generalized_load(const LinearSystem& system, const HarmonicLoad& load);
 
+/// A source harmonic's generalised load at any circular frequency ω of that harmonic:
+/// Q(ω) = s(ω)·(stiffness_part + iω·damping_part), s = ExcitationSource::load_scale. Exact
+/// for every source here: the phase between wheels, ω·τ = 2πk·(distance)/Λ, does not depend
+/// on the speed, and the input amplitude depends on it only through s.
+struct SeparableLoad {
+  Eigen::VectorXcd stiffness_part;  ///< through the track elements' springs, plus point forces
+  Eigen::VectorXcd damping_part;    ///< through the track elements' dampers
+  double reference_omega = 0.0;     ///< ω at which the parts were taken
+};
+
 /// One excitation source (rail joints, wheel defects, hunting, unbalance).
 class ExcitationSource {
  public:
@@ -60,6 +70,15 @@ class ExcitationSource {
   /// The input at `speed` (m/s, > 0 and finite) for `harmonic` (1-based); throws
   /// std::invalid_argument otherwise.
   HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const;
+
+  /// The load's split for fast sweeps over speed (see SeparableLoad).
+  SeparableLoad separable_load(const LinearSystem& system, int harmonic) const;
+  /// s(ω)/s(ω_ref): how the input amplitude scales with frequency (1 for a fixed profile,
+  /// (ω/ω_ref)² for an unbalance, the track's ρ²/(ρ² − ω²) ratio for joints on elastic track).
+  virtual double load_scale(double omega, double reference_omega) const {
+    (void)omega, (void)reference_omega;
+    return 1.0;
+  }
 
   double frequency_hz(double speed, int harmonic) const { return harmonic * speed / wavelength(); }
   /// The speed at which `harmonic` runs at `frequency_hz`: V = Λ·f/k.

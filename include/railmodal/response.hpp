@@ -20,19 +20,29 @@ namespace railmodal {
 
 struct HarmonicResponse {
   double frequency_hz = 0.0;
-  Eigen::VectorXcd displacement;  ///< complex amplitude per DOF (m, rad); zero when unbounded
-  bool unbounded = false;         ///< an undamped, loaded mode sits at this frequency
-  int resonant_mode = 0;          ///< its 1-based index when unbounded
+  /// Complex amplitude per DOF (m, rad). When unbounded: the finite rest of the response,
+  /// without the resonant modes (exact where they do not move a DOF).
+  Eigen::VectorXcd displacement;
+  bool unbounded = false;            ///< an undamped mode the load drives sits at this frequency
+  int resonant_mode = 0;             ///< the first such mode (1-based) when unbounded
+  std::vector<int> resonant_modes;   ///< all of them (repeated frequencies give several)
 };
 
+/// Whether the response at this DOF is unbounded: a resonant mode of `response` moves it
+/// (an entry above 1e-9 of the mode's largest).
+bool unbounded_at(const HarmonicResponse& response, const ModalResult& modes, int dof);
+
 /// Direct solve of (K − ω²M + iωC) X = Q (dense LU). `modes` (of the same system) is used
-/// only to recognise an undamped resonance.
+/// to recognise undamped modes at ω: they are exact null vectors of the dynamic stiffness,
+/// so the rest of the response is solved with them bordered out, and the response is
+/// unbounded where a driven one moves a DOF.
 HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult& modes,
                                    const Eigen::VectorXcd& load, double frequency_hz);
 
 /// Modal superposition over the lowest `mode_count` modes (all if ≤ 0) with modal damping
-/// taken from the diagonal of ΦᵀCΦ (exact when C = 0 or C is proportional), plus the static
-/// response of massless (condensed) DOFs to their own loads. Compared with the direct solve
+/// taken from the diagonal of ΦᵀCΦ (exact when C = 0 or C is proportional and no damper
+/// acts on a massless DOF), plus the response of massless (condensed) DOFs
+/// to their own loads through (K_mm + iωC_mm)⁻¹. Compared with the direct solve
 /// in tests and docs/accuracy.md.
 HarmonicResponse modal_harmonic_response(const LinearSystem& system, const ModalResult& modes,
                                          const Eigen::VectorXcd& load, double frequency_hz,

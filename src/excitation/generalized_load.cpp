@@ -14,19 +14,27 @@ HarmonicLoad ExcitationSource::load(const LinearSystem& system, double speed, in
   return load_at(system, speed, harmonic);
 }
 
-Eigen::VectorXcd generalized_load(const LinearSystem& system, const HarmonicLoad& load) {
+namespace {
+
+// Q = Q_K + iω Q_C: the wheel inputs through the track elements' stiffness (and the point
+// forces) in Q_K, through their dampers in Q_C.
+void load_parts(const LinearSystem& system, const HarmonicLoad& load, Eigen::VectorXcd* QK, Eigen::VectorXcd* QC) {
   constexpr double kTwoPi = 6.28318530717958647692;
   const int n = system.size();
   const double omega = kTwoPi * load.frequency_hz;
   const std::complex<double> i(0.0, 1.0);
-  Eigen::VectorXcd Q = Eigen::VectorXcd::Zero(n);
+  QK->setZero(n);
+  QC->setZero(n);
   for (const WheelInput& w : load.wheels) {
     if (w.track_input < 0 || w.track_input >= static_cast<int>(system.track_inputs.size()))
       throw std::invalid_argument("generalized_load: no such track input");
     const TrackInput& t = system.track_inputs[w.track_input];
     const Eigen::Vector3cd u = w.amplitude * std::exp(-i * omega * w.delay_s);
-    Q += t.load_per_displacement.cast<std::complex<double>>() * u +
-         i * omega * (t.load_per_velocity.cast<std::complex<double>>() * u);
+    for (int d = 0; d < 3; ++d) {
+      if (u(d) == 0.0) continue;
+      *QK += t.load_per_displacement.col(d) * u(d);
+      *QC += t.load_per_velocity.col(d) * u(d);
+    }
   }
   for (const PointForce& f : load.forces) {
     if (f.body < 0 || f.body >= static_cast<int>(system.vehicle.bodies.size()))
@@ -34,9 +42,29 @@ Eigen::VectorXcd generalized_load(const LinearSystem& system, const HarmonicLoad
     const model::PointMap G = model::point_map(system.vehicle.bodies[f.body], f.point);
     for (int d = 0; d < n; ++d)
       if (system.dofs[d].body == f.body)
-        Q(d) += G.col(static_cast<int>(system.dofs[d].motion)).cast<std::complex<double>>().dot(f.amplitude);
+        (*QK)(d) += G.col(static_cast<int>(system.dofs[d].motion)).cast<std::complex<double>>().dot(f.amplitude);
   }
-  return Q;
+}
+
+}  // namespace
+
+Eigen::VectorXcd generalized_load(const LinearSystem& system, const HarmonicLoad& load) {
+  constexpr double kTwoPi = 6.28318530717958647692;
+  Eigen::VectorXcd QK, QC;
+  load_parts(system, load, &QK, &QC);
+  return QK + std::complex<double>(0.0, kTwoPi * load.frequency_hz) * QC;
+}
+
+SeparableLoad ExcitationSource::separable_load(const LinearSystem& system, int harmonic) const {
+  constexpr double kTwoPi = 6.28318530717958647692;
+  // A slow reference speed: far below any track resonance, so the source's speed law is
+  // regular there.
+  const double reference_speed = 1e-3 * wavelength();
+  const HarmonicLoad load = this->load(system, reference_speed, harmonic);
+  SeparableLoad out;
+  out.reference_omega = kTwoPi * load.frequency_hz;
+  load_parts(system, load, &out.stiffness_part, &out.damping_part);
+  return out;
 }
 
 }  // namespace railmodal

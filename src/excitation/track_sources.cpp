@@ -52,6 +52,9 @@ class RailJointSource final : public ExcitationSource {
     return out.str();
   }
   double wavelength() const override { return p_.rail_length; }
+  double load_scale(double omega, double reference_omega) const override {
+    return track_factor(omega) / track_factor(reference_omega);
+  }
   int harmonic_count() const override { return p_.harmonics; }
 
   HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const override {

@@ -32,6 +32,9 @@ class UnbalanceSource final : public ExcitationSource {
     return out.str();
   }
   double wavelength() const override { return kPi * p_.wheel_diameter; }
+  double load_scale(double omega, double reference_omega) const override {
+    return (omega / reference_omega) * (omega / reference_omega);  // m ρ ω²
+  }
   int harmonic_count() const override { return p_.harmonics; }
 
   HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const override {

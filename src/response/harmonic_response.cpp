@@ -19,20 +19,20 @@ double modal_damping(const LinearSystem& system, const Mode& mode) {
   return mode.shape.dot(system.damping * mode.shape);
 }
 
-// The first undamped mode at ω that the load drives, or 0.
-int undamped_resonance(const LinearSystem& system, const ModalResult& modes, const Eigen::VectorXcd& load,
-                       double omega) {
-  const double scale = load.norm();
-  if (!(scale > 0.0)) return 0;
-  const double w2 = omega * omega;
-  for (const Mode& mode : modes.modes) {
-    if (mode.kind != ModeKind::oscillatory) continue;
-    if (std::abs(mode.eigenvalue - w2) > kAtResonance * mode.eigenvalue) continue;
-    if (std::abs(modal_damping(system, mode)) > 0.0) continue;
-    const double driven = std::abs(mode.shape.cast<std::complex<double>>().dot(load));
-    if (driven > 1e-12 * scale * mode.shape.norm()) return mode.index;
-  }
-  return 0;
+// Undamped modes at ω. With C positive semi-definite, φᵀCφ = 0 means Cφ = 0, so each is an
+// exact null vector of the dynamic stiffness D = K − ω²M + iωC.
+std::vector<const Mode*> undamped_modes_at(const LinearSystem& system, const ModalResult& modes, double omega) {
+  std::vector<const Mode*> at;
+  for (const Mode& m : modes.modes)
+    if (m.kind == ModeKind::oscillatory && std::abs(m.eigenvalue - omega * omega) <= kAtResonance * m.eigenvalue &&
+        modal_damping(system, m) == 0.0)
+      at.push_back(&m);
+  return at;
+}
+
+// A load drives a mode unless its modal force is round-off of ‖φ‖‖Q‖ (a symmetry zero).
+bool drives(const Mode& mode, const Eigen::VectorXcd& load) {
+  return std::abs(mode.shape.cast<std::complex<double>>().dot(load)) > 1e-12 * mode.shape.norm() * load.norm();
 }
 
 void check_sizes(const LinearSystem& system, const ModalResult& modes, const Eigen::VectorXcd& load,
@@ -65,29 +65,47 @@ double response_amplitude(const HarmonicResponse& response, int dof, ResponseQua
   return x;
 }
 
+bool unbounded_at(const HarmonicResponse& response, const ModalResult& modes, int dof) {
+  for (int index : response.resonant_modes) {
+    const Eigen::VectorXd& shape = modes.modes[index - 1].shape;
+    if (std::abs(shape(dof)) > 1e-9 * shape.cwiseAbs().maxCoeff()) return true;
+  }
+  return false;
+}
+
 HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult& modes,
                                    const Eigen::VectorXcd& load, double frequency_hz) {
   check_sizes(system, modes, load, frequency_hz);
   HarmonicResponse out;
   out.frequency_hz = frequency_hz;
+  const int n = system.size();
   const double omega = kTwoPi * frequency_hz;
-  out.resonant_mode = undamped_resonance(system, modes, load, omega);
-  out.displacement = Eigen::VectorXcd::Zero(system.size());
-  if (out.resonant_mode > 0) {
-    out.unbounded = true;
-    return out;
-  }
-  using Matrix = Eigen::MatrixXcd;
   const std::complex<double> i(0.0, 1.0);
-  const Matrix D = (system.stiffness - omega * omega * system.mass).cast<std::complex<double>>() +
-                   i * omega * system.damping.cast<std::complex<double>>();
-  Eigen::PartialPivLU<Matrix> lu(D);
-  out.displacement = lu.solve(load);
+  const std::vector<const Mode*> at = undamped_modes_at(system, modes, omega);
+  const int r = static_cast<int>(at.size());
+  // D bordered by Mφ of the undamped modes at ω: the rest x ⟂_M φ solves
+  // D x = Q − Σ Mφ (φᵀQ); without such modes it is plain D x = Q.
+  Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(n + r, n + r);
+  A.topLeftCorner(n, n) = (system.stiffness - omega * omega * system.mass).cast<std::complex<double>>() +
+                          i * omega * system.damping.cast<std::complex<double>>();
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(n + r);
+  rhs.head(n) = load;
+  for (int k = 0; k < r; ++k) {
+    const Eigen::VectorXcd b = (system.mass * at[k]->shape).cast<std::complex<double>>();
+    A.block(0, n + k, n, 1) = b;
+    A.block(n + k, 0, 1, n) = b.transpose();
+    rhs.head(n) -= b * at[k]->shape.cast<std::complex<double>>().dot(load);
+    if (drives(*at[k], load)) out.resonant_modes.push_back(at[k]->index);
+  }
+  const Eigen::VectorXcd x = A.partialPivLu().solve(rhs);
+  const double residual = (A * x - rhs).norm();
   // A load on a direction nothing restrains (a rigid-body mode at ω = 0) has no steady state.
-  const double residual = (D * out.displacement - load).norm();
-  if (!out.displacement.allFinite() || !(residual <= 1e-8 * (load.norm() + D.norm() * out.displacement.norm())))
+  if (!x.allFinite() || !(residual <= 1e-8 * (rhs.norm() + A.norm() * x.norm())))
     throw NumericalError("harmonic response at " + std::to_string(frequency_hz) +
                          " Hz: the dynamic stiffness is singular for this load (an unrestrained direction?)");
+  out.displacement = x.head(n);
+  out.unbounded = !out.resonant_modes.empty();
+  out.resonant_mode = out.unbounded ? out.resonant_modes.front() : 0;
   return out;
 }
 
@@ -97,36 +115,40 @@ HarmonicResponse modal_harmonic_response(const LinearSystem& system, const Modal
   HarmonicResponse out;
   out.frequency_hz = frequency_hz;
   const double omega = kTwoPi * frequency_hz;
-  out.resonant_mode = undamped_resonance(system, modes, load, omega);
   out.displacement = Eigen::VectorXcd::Zero(system.size());
-  if (out.resonant_mode > 0) {
-    out.unbounded = true;
-    return out;
-  }
   const int count = mode_count > 0 ? std::min<int>(mode_count, static_cast<int>(modes.modes.size()))
                                    : static_cast<int>(modes.modes.size());
   const std::complex<double> i(0.0, 1.0);
   for (int j = 0; j < count; ++j) {
     const Mode& mode = modes.modes[j];
     const Eigen::VectorXcd phi = mode.shape.cast<std::complex<double>>();
-    const std::complex<double> denominator =
-        mode.eigenvalue - omega * omega + i * omega * modal_damping(system, mode);
+    const double c = modal_damping(system, mode);
+    if (mode.kind == ModeKind::oscillatory && c == 0.0 &&
+        std::abs(mode.eigenvalue - omega * omega) <= kAtResonance * mode.eigenvalue) {
+      // At its own frequency an undamped mode adds nothing finite: unbounded if driven.
+      if (drives(mode, load)) out.resonant_modes.push_back(mode.index);
+      continue;
+    }
+    const std::complex<double> denominator = mode.eigenvalue - omega * omega + i * omega * c;
     if (std::abs(denominator) == 0.0)
       throw NumericalError("modal response: mode " + std::to_string(mode.index) +
                            " has no stiffness at this frequency (rigid-body mode at 0 Hz)");
     out.displacement += phi * (phi.dot(load) / denominator);
   }
-  // Massless DOFs follow their own loads statically: x_m += K_mm⁻¹ Q_m.
+  out.unbounded = !out.resonant_modes.empty();
+  out.resonant_mode = out.unbounded ? out.resonant_modes.front() : 0;
+  // Massless DOFs follow their own loads: x_m += (K_mm + iωC_mm)⁻¹ Q_m.
   if (!modes.condensed.empty()) {
     std::vector<int> m;
     for (const auto& label : modes.condensed) m.push_back(system.index_of(label));
-    Eigen::MatrixXd Kmm(m.size(), m.size());
+    Eigen::MatrixXcd Dmm(m.size(), m.size());
     Eigen::VectorXcd Qm(m.size());
     for (size_t a = 0; a < m.size(); ++a) {
       Qm(a) = load(m[a]);
-      for (size_t b = 0; b < m.size(); ++b) Kmm(a, b) = system.stiffness(m[a], m[b]);
+      for (size_t b = 0; b < m.size(); ++b)
+        Dmm(a, b) = std::complex<double>(system.stiffness(m[a], m[b]), omega * system.damping(m[a], m[b]));
     }
-    const Eigen::VectorXcd xm = Kmm.cast<std::complex<double>>().partialPivLu().solve(Qm);
+    const Eigen::VectorXcd xm = Dmm.partialPivLu().solve(Qm);
     for (size_t a = 0; a < m.size(); ++a) out.displacement(m[a]) += xm(a);
   }
   return out;
