@@ -2,6 +2,7 @@
 // self-contained HTML page with inline SVG plots, CSV and JSON.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -32,7 +33,11 @@ struct CriticalSpeedStudy {
 /// of the scene's sources in its speed range and the amplitude curves of its outputs (or, if
 /// it names none, of the most energetic DOF of each excited mode). The speed grid holds the
 /// scene's step and every critical speed.
-CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle);
+/// `progress`, if given, is called with the fraction done (0…1) as the sweep advances (the
+/// command line shows it on a terminal when a study takes over a second). Throws
+/// NumericalError for a vehicle with an unstable mode: it has no steady response.
+CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle,
+                                         const std::function<void(double)>& progress = {});
 
 enum class ReportFormat { markdown, html, csv, json };
 const char* to_string(ReportFormat format);

@@ -41,12 +41,18 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
 
 }  // namespace
 
-CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle) {
+CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle,
+                                         const std::function<void(double)>& progress) {
   CriticalSpeedStudy study;
   study.scene = scene;
   study.system = assemble(vehicle, scene.dofs);
   if (study.system.size() == 0) throw std::invalid_argument("no free degrees of freedom in the chosen set");
   study.modes = solve_modes(study.system);
+  for (const Mode& m : study.modes.modes)
+    if (m.kind == ModeKind::unstable)
+      throw NumericalError("mode " + std::to_string(m.index) + " (" + m.name + ") is unstable (divergence rate " +
+                           std::to_string(m.divergence_rate) +
+                           " 1/s): the vehicle has no steady response to harmonic input; see railmodal modes");
 
   std::vector<const ExcitationSource*> sources;
   for (const auto& s : scene.sources) sources.push_back(s.get());
@@ -74,9 +80,26 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
     if (outputs.empty()) outputs.push_back({0, ResponseQuantity::displacement});
   }
   const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
+  // The grid in chunks, so that a long sweep reports its progress.
+  constexpr size_t kChunk = 4096;
+  const double total = static_cast<double>(sources.size() * speeds.size());
   for (size_t s = 0; s < sources.size(); ++s) {
-    auto curves = amplitude_curves(study.system, study.modes, *sources[s], static_cast<int>(s), outputs, speeds,
+    std::vector<AmplitudeCurve> curves;
+    for (size_t first = 0; first < speeds.size(); first += kChunk) {
+      const std::vector<double> chunk(speeds.begin() + first, speeds.begin() + std::min(speeds.size(), first + kChunk));
+      auto part = amplitude_curves(study.system, study.modes, *sources[s], static_cast<int>(s), outputs, chunk,
                                    scene.friction_reference_amplitude);
+      if (curves.empty()) {
+        curves = std::move(part);
+      } else {
+        for (size_t o = 0; o < curves.size(); ++o) {
+          curves[o].speeds.insert(curves[o].speeds.end(), part[o].speeds.begin(), part[o].speeds.end());
+          curves[o].amplitudes.insert(curves[o].amplitudes.end(), part[o].amplitudes.begin(), part[o].amplitudes.end());
+          curves[o].unbounded.insert(curves[o].unbounded.end(), part[o].unbounded.begin(), part[o].unbounded.end());
+        }
+      }
+      if (progress) progress((s * speeds.size() + first + chunk.size()) / total);
+    }
     for (size_t o = 0; o < curves.size(); ++o) {
       study.curves.push_back(curves[o]);
       for (const Peak& p : refine_peaks(study, *sources[s], outputs[o], curves[o]))

@@ -111,6 +111,16 @@ TEST(CriticalSpeeds, ResortAndFetteCarsOn10mRails) {
   EXPECT_NEAR(kmh(row(fette, 0, 1, "bogies bounce, in phase")), 306.0, 0.1);
 }
 
+// Progress of a study: non-decreasing, ending at exactly 1.
+TEST(CriticalSpeeds, StudyReportsProgress) {
+  const Scene scene = load_scene(scene_file("resort_car_wheel_defects.toml"));
+  std::vector<double> seen;
+  study_critical_speeds(scene, load_vehicle(scene.vehicle_file), [&](double f) { seen.push_back(f); });
+  ASSERT_FALSE(seen.empty());
+  for (size_t i = 1; i < seen.size(); ++i) EXPECT_GE(seen[i], seen[i - 1]);
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);
+}
+
 // Square joints excite bounce and pitch only; the lateral modes of a full model get no row.
 TEST(CriticalSpeeds, SquareJointsDoNotExciteLateralModes) {
   Scene scene = load_scene(scene_file("resort_car_10m_rails.toml"));

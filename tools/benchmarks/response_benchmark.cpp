@@ -54,6 +54,26 @@ void BM_CriticalSpeedStudy(benchmark::State& state) {
 }
 BENCHMARK(BM_CriticalSpeedStudy)->Unit(benchmark::kMillisecond);
 
+// 10 000 speeds of rail joints (6 harmonics) on the resort car, all DOFs: the fast modal
+// sweep (tools/benchmarks/compare_sweep.py runs all sources against numpy/scipy).
+void BM_SpeedSweep10k(benchmark::State& state) {
+  const LinearSystem sys =
+      assemble(load_vehicle(std::string(RAILMODAL_DATA_DIR) + "/vehicles/resort_car.toml"), DofSet::all);
+  const ModalResult modes = solve_modes(sys);
+  RailJoints j;
+  j.rail_length = 12.5;
+  j.dip_depth = 0.005;
+  j.dip_length = 1.0;
+  j.staggered = true;
+  j.harmonics = 6;
+  const auto source = make_source(j);
+  std::vector<double> speeds(10000);
+  for (size_t i = 0; i < speeds.size(); ++i) speeds[i] = 1.0 + 59.0 * i / (speeds.size() - 1);
+  const std::vector<OutputRequest> outputs = {{sys.index_of("body.bounce"), ResponseQuantity::acceleration}};
+  for (auto _ : state) benchmark::DoNotOptimize(amplitude_curves(sys, modes, *source, 0, outputs, speeds));
+}
+BENCHMARK(BM_SpeedSweep10k)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -18,4 +18,8 @@ std::function<int()> add_critical_speed_command(CLI::App& app);
 /// is standard output. Returns kOutput with a message on stderr when it cannot.
 int write_output(const std::string& path, const std::string& text);
 
+/// A progress reporter for long runs: shows "name: 42 %" on stderr, only when stderr is a
+/// terminal and only once the run has taken a second; clears the line at 100 %.
+std::function<void(double)> terminal_progress(const std::string& name);
+
 }  // namespace railmodal::cli

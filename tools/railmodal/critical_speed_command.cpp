@@ -31,7 +31,7 @@ int run(const CriticalSpeedCommandOptions& o) {
     const Vehicle vehicle = load_vehicle(scene.vehicle_file);
     CriticalSpeedStudy study;
     try {
-      study = study_critical_speeds(scene, vehicle);
+      study = study_critical_speeds(scene, vehicle, terminal_progress("critical-speed"));
     } catch (const std::invalid_argument& e) {
       throw InputError(current, 0, 0, e.what());
     }

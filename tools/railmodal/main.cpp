@@ -1,4 +1,7 @@
 // railmodal: modal analysis of railway wagons from the command line.
+#include <unistd.h>
+
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -35,6 +38,20 @@ int write_output(const std::string& path, const std::string& text) {
     return kOutput;
   }
   return kSuccess;
+}
+
+std::function<void(double)> terminal_progress(const std::string& name) {
+  if (!isatty(STDERR_FILENO)) return {};
+  const auto start = std::chrono::steady_clock::now();
+  return [name, start](double fraction) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (elapsed < 1.0) return;
+    if (fraction >= 1.0) {
+      std::cerr << "\r" << std::string(name.size() + 8, ' ') << "\r" << std::flush;
+      return;
+    }
+    std::cerr << "\r" << name << ": " << static_cast<int>(100.0 * fraction) << " %" << std::flush;
+  };
 }
 
 }  // namespace railmodal::cli

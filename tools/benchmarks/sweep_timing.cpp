@@ -1,0 +1,113 @@
+// The C++ side of compare_sweep.py: a sweep of 10 000 speeds over all sources for the resort
+// car (all DOFs), timed in the same run as numpy/scipy. Writes the model and the sources'
+// separable loads to JSON for the script to redo the same computation, and its amplitudes
+// for the script to compare.
+//
+//   sweep_timing DATA_DIR OUT.json REPEATS    prints "sweep_s T" (median of REPEATS runs)
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iterator>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "railmodal/railmodal.hpp"
+
+using namespace railmodal;
+
+namespace {
+
+nlohmann::json matrix(const Eigen::MatrixXd& A) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (int i = 0; i < A.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (int j = 0; j < A.cols(); ++j) row.push_back(A(i, j));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+nlohmann::json complex_vector(const Eigen::VectorXcd& v) {
+  nlohmann::json re = nlohmann::json::array(), im = nlohmann::json::array();
+  for (int i = 0; i < v.size(); ++i) re.push_back(v(i).real()), im.push_back(v(i).imag());
+  return {{"re", re}, {"im", im}};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 4) {
+    std::cerr << "usage: sweep_timing DATA_DIR OUT.json REPEATS\n";
+    return 2;
+  }
+  const std::string data = argv[1];
+  const int repeats = std::max(1, std::atoi(argv[3]));
+  const LinearSystem sys = assemble(load_vehicle(data + "/vehicles/resort_car.toml"), DofSet::all);
+  const ModalResult modes = solve_modes(sys);
+
+  // All the sources a bogie wagon meets: joints (short dips, staggered, 6 harmonics),
+  // eccentricity, flats (6 harmonics), hunting (none of it reaches this car: its bogies are
+  // held laterally, so its load is zero — still evaluated).
+  RailJoints joints;
+  joints.rail_length = 12.5;
+  joints.staggered = true;
+  joints.dip_depth = 0.005;
+  joints.dip_length = 1.0;
+  joints.harmonics = 6;
+  WheelEccentricity eccentricity;
+  eccentricity.wheel_diameter = 1.05;
+  eccentricity.eccentricity = 0.0015;
+  WheelFlat flat;
+  flat.wheel_diameter = 1.05;
+  flat.depth = 0.001;
+  flat.length = 0.1;
+  flat.harmonics = 6;
+  Hunting hunting;
+  hunting.conicity = 0.05;
+  hunting.rolling_circle_spacing = 1.58;
+  hunting.rolling_radius = 0.525;
+  hunting.amplitude = 0.005;
+  const std::vector<std::shared_ptr<ExcitationSource>> sources = {make_source(joints), make_source(eccentricity),
+                                                                  make_source(flat), make_source(hunting)};
+  // The report's outputs: body bounce displacement and acceleration.
+  const int bounce = sys.index_of("body.bounce");
+  const std::vector<OutputRequest> outputs = {{bounce, ResponseQuantity::displacement},
+                                              {bounce, ResponseQuantity::acceleration}};
+  std::vector<double> speeds(10000);
+  for (size_t i = 0; i < speeds.size(); ++i) speeds[i] = 1.0 + 59.0 * i / (speeds.size() - 1);  // 3.6–216 km/h
+
+  std::vector<AmplitudeCurve> curves;
+  std::vector<double> times;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    curves.clear();
+    for (size_t s = 0; s < sources.size(); ++s) {
+      auto c = amplitude_curves(sys, modes, *sources[s], static_cast<int>(s), outputs, speeds);
+      curves.insert(curves.end(), std::make_move_iterator(c.begin()), std::make_move_iterator(c.end()));
+    }
+    times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(times.begin(), times.end());
+  std::cout << "sweep_s " << times[times.size() / 2] << "\n";
+
+  nlohmann::json j;
+  j["mass"] = matrix(sys.mass);
+  j["stiffness"] = matrix(sys.stiffness);
+  j["damping"] = matrix(sys.damping);
+  j["speeds"] = speeds;
+  j["output_dof"] = bounce;
+  j["sources"] = nlohmann::json::array();
+  for (const auto& source : sources) {
+    nlohmann::json h = nlohmann::json::array();
+    for (int k = 1; k <= source->harmonic_count(); ++k) {
+      const SeparableLoad p = source->separable_load(sys, k);
+      h.push_back({{"harmonic", k}, {"stiffness_part", complex_vector(p.stiffness_part)},
+                   {"damping_part", complex_vector(p.damping_part)}});
+    }
+    j["sources"].push_back({{"kind", source->kind()}, {"wavelength", source->wavelength()}, {"harmonics", h}});
+  }
+  j["amplitudes"] = nlohmann::json::array();
+  for (const auto& c : curves) j["amplitudes"].push_back({{"quantity", to_string(c.quantity)}, {"values", c.amplitudes}});
+  std::ofstream(argv[2]) << j.dump();
+  return 0;
+}
