@@ -122,6 +122,11 @@ struct AmplitudeCurve {
   std::vector<double> speeds;      ///< m/s
   std::vector<double> amplitudes;  ///< m, m/s or m/s² (rad for rotations); 0 where unbounded
   std::vector<bool> unbounded;
+  /// Phase of the output's first harmonic against the source's input at its leading wheel
+  /// (its first force for an unbalance), degrees in (−180, 180]; 0 where unbounded or where
+  /// the source has no input. With the amplitude of harmonic 1 this is the FRF (displacement
+  /// transmissibility or receptance, ×iω for velocity, ×−ω² for acceleration).
+  std::vector<double> phases_deg;
 };
 
 struct OutputRequest {

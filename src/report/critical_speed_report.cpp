@@ -163,12 +163,9 @@ Table curve_peak_table(const CriticalSpeedStudy& st) {
     for (size_t i = 0; i < c.speeds.size(); ++i)
       if (c.unbounded[i]) unbounded += (unbounded.empty() ? "" : ", ") + fixed(c.speeds[i] * kKmh, 1);
     const std::string label = c.output + " " + to_string(c.quantity);
-    if (!unbounded.empty()) {
-      // Beside an undamped resonance the grid's largest value only measures how close it came.
+    if (!unbounded.empty())
       t.rows.push_back({source_label(st, c.source), label, transfer_function(st, c), "unbounded", unbounded, "—"});
-      continue;
-    }
-    bool any = false;
+    bool any = !unbounded.empty();
     for (const auto& p : st.peaks)
       if (p.curve == static_cast<int>(k)) {
         any = true;
@@ -176,8 +173,9 @@ Table curve_peak_table(const CriticalSpeedStudy& st) {
                           significant(p.peak.amplitude * u.scale, 5) + " " + u.name,
                           fixed(p.peak.speed * kKmh, 2), std::to_string(p.peak.evaluations)});
       }
-    // The largest value may sit at an end of the range rather than at a peak.
-    if (c.amplitudes.empty()) continue;
+    // The largest value may sit at an end of the range rather than at a peak (beside an
+    // undamped resonance the grid's largest value only measures how close it came).
+    if (c.amplitudes.empty() || !unbounded.empty()) continue;
     const size_t i = std::max_element(c.amplitudes.begin(), c.amplitudes.end()) - c.amplitudes.begin();
     if (!any || i == 0 || i + 1 == c.amplitudes.size())
       t.rows.push_back({source_label(st, c.source), label, transfer_function(st, c),
@@ -442,14 +440,16 @@ void write_json(std::ostream& out, const CriticalSpeedStudy& st) {
   }
   j["curves"] = json::array();
   for (const auto& c : st.curves) {
-    json amplitudes = json::array(), speeds = json::array();
+    json amplitudes = json::array(), speeds = json::array(), phases = json::array();
     for (size_t i = 0; i < c.speeds.size(); ++i) {
       speeds.push_back(c.speeds[i] * kKmh);
       amplitudes.push_back(c.unbounded[i] ? json(nullptr) : json(c.amplitudes[i]));
+      phases.push_back(c.unbounded[i] ? json(nullptr) : json(c.phases_deg[i]));
     }
     j["curves"].push_back({{"source_index", c.source + 1}, {"output", c.output}, {"quantity", to_string(c.quantity)},
                            {"unit", is_rotation(st.system, c.output) ? "rad-based SI" : "SI (m, m/s, m/s²)"},
-                           {"speeds_kmh", speeds}, {"amplitudes", amplitudes}});
+                           {"transfer_function", transfer_function(st, c)}, {"speeds_kmh", speeds},
+                           {"amplitudes", amplitudes}, {"phases_deg", phases}});
   }
   out << j.dump(2) << "\n";
 }

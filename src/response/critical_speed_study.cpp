@@ -23,19 +23,25 @@ std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpe
 
 constexpr double kPeakTolerance = 1e-6;  // relative, in speed: far below any grid a user would plot
 
-// Local maxima of a damped curve, refined between their grid neighbours.
+// Local maxima of a curve, refined between their grid neighbours; a maximum beside an
+// unbounded (undamped) point has no finite peak to refine and is left out, but the other
+// peaks of the same curve are not.
 std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const ExcitationSource& source,
                                const OutputRequest& output, const AmplitudeCurve& curve) {
   std::vector<Peak> peaks;
   const auto& a = curve.amplitudes;
   if (a.size() < 3) return peaks;
-  for (bool u : curve.unbounded)
-    if (u) return peaks;  // undamped: no finite peak to refine
-  const double largest = *std::max_element(a.begin(), a.end());
-  for (size_t i = 1; i + 1 < a.size(); ++i)
-    if (a[i] >= a[i - 1] && a[i] > a[i + 1] && a[i] >= 0.01 * largest)
-      peaks.push_back(refine_peak(study.system, study.modes, source, output, curve.speeds[i - 1], curve.speeds[i + 1],
-                                  kPeakTolerance, study.scene.friction_reference_amplitude));
+  double largest = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (!curve.unbounded[i]) largest = std::max(largest, a[i]);
+  for (size_t i = 1; i + 1 < a.size(); ++i) {
+    if (curve.unbounded[i - 1] || curve.unbounded[i] || curve.unbounded[i + 1]) continue;
+    if (a[i] >= a[i - 1] && a[i] > a[i + 1] && a[i] >= 0.01 * largest) {
+      const Peak p = refine_peak(study.system, study.modes, source, output, curve.speeds[i - 1], curve.speeds[i + 1],
+                                 kPeakTolerance, study.scene.friction_reference_amplitude);
+      if (!p.unbounded) peaks.push_back(p);
+    }
+  }
   return peaks;
 }
 
@@ -96,6 +102,7 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
           curves[o].speeds.insert(curves[o].speeds.end(), part[o].speeds.begin(), part[o].speeds.end());
           curves[o].amplitudes.insert(curves[o].amplitudes.end(), part[o].amplitudes.begin(), part[o].amplitudes.end());
           curves[o].unbounded.insert(curves[o].unbounded.end(), part[o].unbounded.begin(), part[o].unbounded.end());
+          curves[o].phases_deg.insert(curves[o].phases_deg.end(), part[o].phases_deg.begin(), part[o].phases_deg.end());
         }
       }
       if (progress) progress((s * speeds.size() + first + chunk.size()) / total);

@@ -55,6 +55,35 @@ ModalBasis modal_basis(const LinearSystem& system, const ModalResult& modes) {
   return b;
 }
 
+// The source's input of harmonic 1 at its leading wheel (smallest delay), or its first force,
+// at the reference frequency of its separable load: the phase reference of the curves.
+std::complex<double> reference_input(const LinearSystem& system, const ExcitationSource& source) {
+  const HarmonicLoad load = source.load(system, 1e-3 * source.wavelength(), 1);
+  const WheelInput* lead = nullptr;
+  for (const WheelInput& w : load.wheels)
+    if (w.amplitude.cwiseAbs().maxCoeff() > 0.0 && (!lead || w.delay_s < lead->delay_s)) lead = &w;
+  const Eigen::Vector3cd* u = lead ? &lead->amplitude : nullptr;
+  for (const PointForce& f : load.forces)
+    if (!u && f.amplitude.cwiseAbs().maxCoeff() > 0.0) u = &f.amplitude;
+  if (!u) return 0.0;
+  int largest = 0;
+  for (int d = 1; d < 3; ++d)
+    if (std::abs((*u)(d)) > std::abs((*u)(largest))) largest = d;
+  return (*u)(largest);
+}
+
+constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+
+// Phase of the FRF in degrees: x against the input, +90° per time derivative.
+double phase_deg(std::complex<double> x, std::complex<double> input, ResponseQuantity q) {
+  if (x == 0.0 || input == 0.0) return 0.0;
+  double phase = std::arg(x / input) * kDegrees +
+                 (q == ResponseQuantity::velocity ? 90.0 : q == ResponseQuantity::acceleration ? 180.0 : 0.0);
+  while (phase > 180.0) phase -= 360.0;
+  while (phase <= -180.0) phase += 360.0;
+  return phase;
+}
+
 }  // namespace
 
 std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
@@ -75,6 +104,7 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     curves.push_back(c);
   }
   const bool equivalent_friction = friction_reference_amplitude > 0.0 && has_leaf_friction(system);
+  const std::complex<double> input = reference_input(system, source);
   const ModalBasis basis = modal_basis(system, modes);
   std::vector<SeparableLoad> parts;
   for (int k = 1; k <= source.harmonic_count(); ++k) parts.push_back(source.separable_load(system, k));
@@ -82,11 +112,13 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
   auto power = [](ResponseQuantity q, double omega) {
     return q == ResponseQuantity::displacement ? 1.0 : q == ResponseQuantity::velocity ? omega : omega * omega;
   };
-  auto finish = [&](double speed, const std::vector<double>& sum, const std::vector<bool>& unbounded) {
+  auto finish = [&](double speed, const std::vector<double>& sum, const std::vector<bool>& unbounded,
+                    const std::vector<double>& phase) {
     for (size_t o = 0; o < outputs.size(); ++o) {
       curves[o].speeds.push_back(speed);
       curves[o].amplitudes.push_back(unbounded[o] ? 0.0 : sum[o]);
       curves[o].unbounded.push_back(unbounded[o]);
+      curves[o].phases_deg.push_back(unbounded[o] ? 0.0 : phase[o]);
     }
   };
 
@@ -102,6 +134,9 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     for (const OutputRequest& o : outputs)
       if (std::find(dofs.begin(), dofs.end(), o.dof) == dofs.end()) dofs.push_back(o.dof);
     std::vector<Eigen::ArrayXd> sum(outputs.size(), Eigen::ArrayXd::Zero(count));
+    std::vector<Eigen::ArrayXd> first_re(outputs.size(), Eigen::ArrayXd::Zero(count));
+    std::vector<Eigen::ArrayXd> first_im = first_re;
+    Eigen::ArrayXd first_scale = Eigen::ArrayXd::Ones(count);
     std::vector<Eigen::Array<bool, Eigen::Dynamic, 1>> unbounded(
         outputs.size(), Eigen::Array<bool, Eigen::Dynamic, 1>::Constant(count, false));
     // Work arrays, allocated once: fresh 80 kB arrays per mode cost more in page faults
@@ -166,6 +201,11 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
             case ResponseQuantity::acceleration: sum[o] += magnitude * w2; break;
           }
           unbounded[o] = unbounded[o] || resonant;
+          if (k == 1) {
+            first_re[o] = re;
+            first_im[o] = im;
+            first_scale = scale;
+          }
         }
       }
     }
@@ -173,19 +213,24 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
       curves[o].speeds = speeds;
       curves[o].amplitudes.resize(count);
       curves[o].unbounded.resize(count);
+      curves[o].phases_deg.resize(count);
       for (int v = 0; v < count; ++v) {
         curves[o].unbounded[v] = unbounded[o](v);
         curves[o].amplitudes[v] = unbounded[o](v) ? 0.0 : sum[o](v);
+        curves[o].phases_deg[v] =
+            unbounded[o](v) ? 0.0
+                            : phase_deg({first_re[o](v), first_im[o](v)}, first_scale(v) * input, outputs[o].quantity);
       }
     }
     return curves;
   }
 
   // The direct path: non-proportional damping, or friction as equivalent viscous damping.
-  std::vector<double> sum(outputs.size());
+  std::vector<double> sum(outputs.size()), phase(outputs.size());
   std::vector<bool> unbounded(outputs.size());
   for (double speed : speeds) {
     std::fill(sum.begin(), sum.end(), 0.0);
+    std::fill(phase.begin(), phase.end(), 0.0);
     std::fill(unbounded.begin(), unbounded.end(), false);
     for (int k = 1; k <= source.harmonic_count(); ++k) {
       const SeparableLoad& p = parts[k - 1];
@@ -202,11 +247,15 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
         r = harmonic_response(system, modes, scale * (p.stiffness_part + iw * p.damping_part), omega / kTwoPi);
       }
       for (size_t o = 0; o < outputs.size(); ++o) {
-        if (unbounded_at(r, modes, outputs[o].dof)) unbounded[o] = true;
-        else sum[o] += std::abs(r.displacement(outputs[o].dof)) * power(outputs[o].quantity, omega);
+        if (unbounded_at(r, modes, outputs[o].dof)) {
+          unbounded[o] = true;
+          continue;
+        }
+        sum[o] += std::abs(r.displacement(outputs[o].dof)) * power(outputs[o].quantity, omega);
+        if (k == 1) phase[o] = phase_deg(r.displacement(outputs[o].dof), scale * input, outputs[o].quantity);
       }
     }
-    finish(speed, sum, unbounded);
+    finish(speed, sum, unbounded, phase);
   }
   return curves;
 }

@@ -1,5 +1,7 @@
-// Critical speeds from the digests, each through the general path: bundled scene file →
-// vehicle file → assembly → modes → excitation source → critical-speed finder.
+// Critical speeds from the digests. The vehicle cases run the general path (bundled scene →
+// vehicle file → assembly → modes → excitation source → critical-speed finder); the digests'
+// formula-level examples (hunting wavelengths, Meineke, E5 and E7 given as k ranges, VB-1,
+// VB-3) go through the source types that the general path uses.
 #include <cmath>
 
 #include "railmodal/critical_speed_report.hpp"
@@ -212,6 +214,26 @@ TEST(CriticalSpeeds, ResortCarEccentricityRowsFollowTheWheelTurn) {
     EXPECT_NEAR(r.speed, 2 * kPi * r.frequency_hz * 0.525, 1e-12 * r.speed);
   }
   EXPECT_EQ(eccentricity_rows, 2);  // body bounce and bogie bounce in phase (all wheelsets alike)
+  // E5: double and triple suspension put the bogie resonance at 51.4–56.7 km/h (book 51.5–57.5).
+  const CriticalSpeed& bogie = row(s, 0, 1, "bogies bounce, in phase");
+  EXPECT_GE(kmh(bogie), 51.4);
+  EXPECT_LE(kmh(bogie), 56.7);
+}
+
+// A lateral mode alone in the speed range gets no row from square joints: the participation
+// test is scale-free, not relative to the other modes in range.
+TEST(CriticalSpeeds, ParticipationTestIsScaleFree) {
+  Scene scene = load_scene(scene_file("resort_car_10m_rails.toml"));
+  scene.dofs = DofSet::all;
+  scene.outputs.clear();
+  const Vehicle vehicle = load_vehicle(scene.vehicle_file);
+  const ModalResult modes = solve_modes(assemble(vehicle, DofSet::all));
+  const Mode& sway = mode_named(modes, "body lower sway");
+  const double V = scene.sources[0]->speed_for(sway.frequency_hz, 1);
+  scene.min_speed = 0.999 * V;
+  scene.max_speed = 1.001 * V;
+  const auto s = study_critical_speeds(scene, vehicle);
+  EXPECT_TRUE(s.critical_speeds.empty());
 }
 
 // Unbalance digest VB-1: at 100 km/h a 1.85 m wheel turns at ω = 30.030 1/s, f₁ = 4.7794 Hz.

@@ -15,6 +15,7 @@ struct CriticalSpeedCommandOptions {
   std::string scene;
   std::string format = "markdown";
   std::string output = "-";
+  bool quiet = false;
 };
 
 int run(const CriticalSpeedCommandOptions& o) {
@@ -29,11 +30,16 @@ int run(const CriticalSpeedCommandOptions& o) {
     }
     current = scene.vehicle_file;
     const Vehicle vehicle = load_vehicle(scene.vehicle_file);
-    CriticalSpeedStudy study;
     try {
-      study = study_critical_speeds(scene, vehicle, terminal_progress("critical-speed"));
+      assemble(vehicle, scene.dofs);  // a vehicle that cannot be assembled is the vehicle file's fault
     } catch (const std::invalid_argument& e) {
       throw InputError(current, 0, 0, e.what());
+    }
+    CriticalSpeedStudy study;
+    try {
+      study = study_critical_speeds(scene, vehicle, o.quiet ? std::function<void(double)>() : terminal_progress("critical-speed"));
+    } catch (const std::invalid_argument& e) {
+      throw InputError(o.scene, 0, 0, e.what());  // the scene's sources do not fit this vehicle
     }
     std::ostringstream text;
     write_critical_speed_report(text, study, format);
@@ -61,6 +67,7 @@ std::function<int()> add_critical_speed_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  cmd->add_flag("-q,--quiet", options->quiet, "No progress on stderr (shown on a terminal for runs over a second)");
   return [options] { return run(*options); };
 }
 
