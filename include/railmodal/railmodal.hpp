@@ -21,6 +21,7 @@
 #include "railmodal/report.hpp"
 #include "railmodal/response.hpp"
 #include "railmodal/scene.hpp"
+#include "railmodal/scene_simulation.hpp"
 #include "railmodal/simulation.hpp"
 #include "railmodal/spectrum.hpp"
 #include "railmodal/stability.hpp"

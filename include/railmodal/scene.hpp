@@ -3,18 +3,31 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "railmodal/excitation.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/response.hpp"
+#include "railmodal/simulation.hpp"
 
 namespace railmodal {
 
 struct SceneOutput {
   std::string dof;  ///< DOF label, e.g. "body.bounce"
   ResponseQuantity quantity = ResponseQuantity::displacement;
+};
+
+/// The [simulation] table: one run at one speed.
+struct SimulationSpec {
+  double speed = 0.0;      ///< m/s
+  double duration = 0.0;   ///< s
+  double time_step = 0.0;  ///< s
+  /// Vehicle effects the scene names ("viscous_dampers"); sources come from [[source]].
+  std::vector<std::string> effects;
+  std::vector<InitialCondition> initial;
+  std::vector<std::string> outputs;  ///< DOF labels to write; empty: all
 };
 
 struct Scene {
@@ -31,6 +44,7 @@ struct Scene {
   /// that dissipates as much at this element stretch amplitude (m); 0 (model = "criterion",
   /// the default): friction only decides whether a resonance can grow.
   double friction_reference_amplitude = 0.0;
+  std::optional<SimulationSpec> simulation;  ///< present when the scene simulates
 };
 
 /// Reads a scene file; errors are InputError with file, line, column and key.

@@ -149,7 +149,41 @@ Scene load_scene(const std::string& path) {
     scene.dofs = *set;
     t.finish();
   }
-  {
+  if (root.has("simulation")) {
+    TableReader t = root.table("simulation");
+    SimulationSpec sim;
+    sim.speed = t.positive("speed", Quantity::speed);
+    sim.duration = t.positive("duration", Quantity::time);
+    sim.time_step = t.positive("time_step", Quantity::time);
+    if (sim.duration / sim.time_step > 1e8) t.fail("time_step", "gives more than 1e8 steps; take a longer step");
+    if (sim.time_step > sim.duration) t.fail("time_step", "is longer than the duration");
+    if (t.has("effects"))
+      for (const auto& effect : t.strings("effects")) {
+        if (effect == "viscous_dampers") {
+          sim.effects.push_back(effect);
+        } else if (effect == "leaf_friction" || effect == "progressive_springs") {
+          t.fail("effects", "'" + effect + "' needs the nonlinear integrator, which railmodal does not have yet; "
+                            "this version simulates linear scenes (viscous_dampers and the [[source]] inputs)");
+        } else {
+          t.fail("effects", "unknown effect '" + effect + "' (viscous_dampers; sources go in [[source]] tables)");
+        }
+      }
+    if (t.has("initial"))
+      for (auto& i : t.tables("initial")) {
+        InitialCondition ic;
+        ic.dof = i.string("dof");
+        const bool rotation = ic.dof.find(".roll") != std::string::npos || ic.dof.find(".pitch") != std::string::npos ||
+                              ic.dof.find(".yaw") != std::string::npos;
+        ic.displacement = i.optional_quantity("displacement", rotation ? Quantity::angle : Quantity::length).value_or(0.0);
+        ic.velocity = i.optional_quantity("velocity", rotation ? Quantity::angular_speed : Quantity::speed).value_or(0.0);
+        i.finish();
+        sim.initial.push_back(ic);
+      }
+    if (t.has("outputs")) sim.outputs = t.strings("outputs");
+    t.finish();
+    scene.simulation = sim;
+  }
+  if (root.has("speed") || !scene.simulation) {
     TableReader t = root.table("speed");
     scene.min_speed = t.positive("min", Quantity::speed);
     scene.max_speed = t.positive("max", Quantity::speed);
@@ -159,6 +193,7 @@ Scene load_scene(const std::string& path) {
       t.fail("step", "gives more than a million speeds; take a coarser step");
     t.finish();
   }
+  if (root.has("source") || !scene.simulation)
   for (auto& t : root.tables("source")) {
     const std::string kind = t.string("kind");
     try {

@@ -45,6 +45,7 @@ const std::map<std::string, UnitDefinition>& unit_table() {
       {"MPa", {1.0e6, dim(1, -1, -2)}},
       {"GPa", {1.0e9, dim(1, -1, -2)}},
       {"rad", {1.0, dim(0, 0, 0, 1)}},
+      {"mrad", {1.0e-3, dim(0, 0, 0, 1)}},
       {"deg", {kPi / 180.0, dim(0, 0, 0, 1)}},
       {"°", {kPi / 180.0, dim(0, 0, 0, 1)}},
   };
@@ -143,6 +144,7 @@ Dimension dimension_of(Quantity q) {
     case Quantity::rotational_stiffness: return dim(1, 2, -2, -1);
     case Quantity::dimensionless: return dim(0, 0, 0);
     case Quantity::time: return dim(0, 0, 1);
+    case Quantity::angular_speed: return dim(0, 0, -1, 1);
   }
   return dim(0, 0, 0);
 }
@@ -163,6 +165,7 @@ const char* name_of(Quantity q) {
     case Quantity::rotational_stiffness: return "a rotational stiffness (moment/angle)";
     case Quantity::dimensionless: return "a plain number";
     case Quantity::time: return "a time";
+    case Quantity::angular_speed: return "an angular speed";
   }
   return "a quantity";
 }
@@ -183,6 +186,7 @@ const char* example_of(Quantity q) {
     case Quantity::rotational_stiffness: return "\"940 kN*m/rad\" or 9.4e5 (N·m/rad)";
     case Quantity::dimensionless: return "a number";
     case Quantity::time: return "\"2 ms\" or 0.002 (s)";
+    case Quantity::angular_speed: return "\"0.1 rad/s\" or 0.1 (rad/s)";
   }
   return "";
 }

@@ -17,7 +17,7 @@ struct Dimension {
 /// and example used in error messages.
 enum class Quantity {
   length, mass, force, stiffness, flexibility, inertia, angle, acceleration,
-  damping, modulus, speed, rotational_stiffness, dimensionless, time
+  damping, modulus, speed, rotational_stiffness, dimensionless, time, angular_speed
 };
 Dimension dimension_of(Quantity quantity);
 const char* name_of(Quantity quantity);     ///< "stiffness (force/length)"

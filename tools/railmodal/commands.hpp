@@ -13,6 +13,9 @@ enum ExitCode { kSuccess = 0, kInternal = 1, kUsage = 2, kInput = 3, kNumerical 
 std::function<int()> add_modes_command(CLI::App& app);
 /// Registers `critical-speed`.
 std::function<int()> add_critical_speed_command(CLI::App& app);
+/// Register `simulate` and `fft-check`.
+std::function<int()> add_simulate_command(CLI::App& app);
+std::function<int()> add_fft_check_command(CLI::App& app);
 
 /// Writes `text` to `path` whole or not at all (temporary file, then rename); "-" or ""
 /// is standard output. Returns kOutput with a message on stderr when it cannot.

@@ -23,6 +23,12 @@ int run(const CriticalSpeedCommandOptions& o) {
   std::string current = o.scene;  // the file an error without a location belongs to
   try {
     Scene scene = load_scene(o.scene);
+    if (scene.sources.empty() || scene.max_speed <= 0.0) {
+      std::cerr << o.scene << ": error: the scene has no [speed] range and [[source]]: nothing to sweep"
+                << (scene.simulation ? " (it is a simulation scene: use 'railmodal simulate' or 'railmodal fft-check')" : "")
+                << "\n";
+      return kInput;
+    }
     if (!o.vehicle.empty()) scene.vehicle_file = o.vehicle;  // the command line wins over the scene
     if (scene.vehicle_file.empty()) {
       std::cerr << "railmodal: error: no vehicle: give WAGON.toml or a 'vehicle' key in " << o.scene << "\n";

@@ -62,6 +62,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   auto run_modes = add_modes_command(app);
   auto run_critical_speed = add_critical_speed_command(app);
+  auto run_simulate = add_simulate_command(app);
+  auto run_fft_check = add_fft_check_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -77,6 +79,8 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("modes")) return run_modes();
     if (app.got_subcommand("critical-speed")) return run_critical_speed();
+    if (app.got_subcommand("simulate")) return run_simulate();
+    if (app.got_subcommand("fft-check")) return run_fft_check();
   } catch (const std::exception& e) {
     std::cerr << "railmodal: internal error: " << e.what() << "\n";
     return kInternal;

@@ -1,0 +1,49 @@
+// Running a scene in the time domain, and checking the spectrum of what it did against the
+// modes.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "railmodal/modal.hpp"
+#include "railmodal/scene.hpp"
+#include "railmodal/simulation.hpp"
+#include "railmodal/spectrum.hpp"
+
+namespace railmodal {
+
+/// The system a scene simulates: the vehicle assembled in the scene's DOF set with only the
+/// effects it names — without "viscous_dampers" the dampers are not built (C = 0 and no
+/// velocity input at the wheels).
+LinearSystem scene_system(const Scene& scene, const Vehicle& vehicle);
+
+/// Runs the scene's [simulation] (std::invalid_argument if it has none).
+TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle);
+
+/// One mode against the spectrum of its most energetic DOF.
+struct FftCheck {
+  int mode = 0;
+  std::string mode_name;
+  std::string dof;
+  double modal_hz = 0.0;              ///< undamped natural frequency
+  std::optional<double> peak_hz;      ///< the spectral peak nearest to it, if one is within 3 resolutions
+  double rel_error = 0.0;             ///< (peak − modal)/modal
+  double resolution_hz = 0.0;         ///< the peak's half-width at half amplitude (≥ the window's)
+  bool within_resolution = false;     ///< |peak − modal| ≤ resolution
+};
+
+struct FftCheckResult {
+  TimeHistory history;
+  ModalResult modes;
+  std::vector<FftCheck> checks;
+  std::vector<std::string> spectrum_dofs;  ///< the DOFs whose spectra were taken
+  std::vector<Spectrum> spectra;           ///< of their displacements, Hann window, zero-padded ×4
+};
+
+/// Simulates the scene and compares the spectral peaks of each oscillatory mode's most
+/// energetic DOF with the modal frequencies (modes above half the Nyquist frequency are left
+/// out: the step cannot resolve them).
+FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle);
+
+}  // namespace railmodal
