@@ -49,6 +49,10 @@ struct LinearSystem {
   Vehicle vehicle;                    ///< what was assembled (bodies give names and geometry)
   std::vector<double> element_loads;  ///< static vertical load of each element, N (+ = compression)
   std::vector<TrackInput> track_inputs;  ///< the elements standing on the track, in element order
+  /// Row k: the vertical displacement of element k's upper end relative to its lower end (up
+  /// positive, m) per unit of each degree of freedom; for a track element the track's own
+  /// displacement is to be subtracted. The compression of the element is minus this stretch.
+  Eigen::MatrixXd element_vertical_map;
 
   int size() const { return static_cast<int>(dofs.size()); }
   /// Index of the DOF with this label, or -1.

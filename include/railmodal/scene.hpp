@@ -21,11 +21,14 @@ struct SceneOutput {
 
 /// The [simulation] table: one run at one speed.
 struct SimulationSpec {
-  double speed = 0.0;      ///< m/s
+  double speed = 0.0;      ///< m/s (0 without sources: a released wagon standing still)
   double duration = 0.0;   ///< s
-  double time_step = 0.0;  ///< s
-  /// Vehicle effects the scene names ("viscous_dampers"); sources come from [[source]].
+  double time_step = 0.0;  ///< s, output step (and the linear path's integration step)
+  /// Vehicle effects the scene names: "viscous_dampers", "leaf_friction",
+  /// "progressive_springs"; sources come from [[source]]. Nothing else is built.
   std::vector<std::string> effects;
+  double tolerance = 1e-10;        ///< nonlinear path: integrator tolerance
+  double event_tolerance = 1e-12;  ///< nonlinear path: event location, s
   std::vector<InitialCondition> initial;
   std::vector<std::string> outputs;  ///< DOF labels to write; empty: all
 };

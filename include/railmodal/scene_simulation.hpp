@@ -18,7 +18,11 @@ namespace railmodal {
 /// velocity input at the wheels).
 LinearSystem scene_system(const Scene& scene, const Vehicle& vehicle);
 
-/// Runs the scene's [simulation] (std::invalid_argument if it has none).
+/// The nonlinearities the scene names (leaf_friction, progressive_springs).
+NonlinearEffects scene_effects(const Scene& scene);
+
+/// Runs the scene's [simulation] on the linear path, or on the nonlinear one when it names a
+/// nonlinearity (std::invalid_argument if it has none).
 TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle);
 
 /// One mode against the spectrum of its most energetic DOF.
@@ -33,12 +37,32 @@ struct FftCheck {
   bool within_resolution = false;     ///< |peak − modal| ≤ resolution
 };
 
+/// Where one degree of freedom turns and where it passes its static position, read from a
+/// sampled history by cubic Hermite interpolation of displacement and velocity (error O(Δt⁴)).
+/// Friction decay is a chain of cosine arcs about shifted centres, so its half periods show
+/// between turning points (π/k₁, π/k₂: springs digest (51), (63)); a spring with a kink at the
+/// static position shows its two half periods between crossings (Example 10).
+struct Swings {
+  std::string dof;
+  std::vector<double> turning_times;     ///< s
+  std::vector<double> turning_values;    ///< displacement there (m or rad)
+  std::vector<double> crossing_times;    ///< s, passes through 0
+  bool comes_to_rest = false;            ///< the last samples do not move (a stuck spring)
+  std::vector<double> half_periods_between_turns() const;
+  std::vector<double> half_periods_between_crossings() const;
+};
+Swings swings(const TimeHistory& history, int dof);
+
 struct FftCheckResult {
   TimeHistory history;
   ModalResult modes;
   std::vector<FftCheck> checks;
   std::vector<std::string> spectrum_dofs;  ///< the DOFs whose spectra were taken
   std::vector<Spectrum> spectra;           ///< of their displacements, Hann window, zero-padded ×4
+  /// Nonlinear scenes: the swings of the most energetic DOF of the lowest mode, whose
+  /// half periods check what broad spectral lines cannot.
+  std::optional<Swings> swings;
+  double linear_half_period_s = 0.0;  ///< π/ω of that mode, for comparison
 };
 
 /// Simulates the scene and compares the spectral peaks of each oscillatory mode's most

@@ -26,9 +26,36 @@ struct InitialCondition {
 struct SimulationOptions {
   double speed = 0.0;      ///< m/s, constant (> 0 when there are sources)
   double duration = 0.0;   ///< s
-  double time_step = 0.0;  ///< s, integration and output step
+  double time_step = 0.0;  ///< s, integration step of the linear path; output step of both
   std::vector<InitialCondition> initial;
+  /// Nonlinear path only: local error tolerance of the adaptive Runge–Kutta (Dormand–Prince
+  /// 5(4)) integrator, relative to the state's scale (plus the same absolute floor in m).
+  double tolerance = 1e-10;
+  /// Nonlinear path only: events (stick, slip, reversal, a kink of a progressive spring) are
+  /// located to within this time, s.
+  double event_tolerance = 1e-12;
 };
+
+/// The suspension nonlinearities a simulation follows; an effect left out is not built (the
+/// element keeps its linear stiffness and the linear path runs when nothing is named).
+struct NonlinearEffects {
+  /// Leaf-spring friction R = c(1 ± φ)(f ± z) (springs digest §2.3): a friction force of φ
+  /// times the spring's current elastic reaction against the sliding, and sticking (a dead
+  /// zone) when the other forces stay within that band.
+  bool leaf_friction = false;
+  /// Progressive springs follow their load–deflection curve (SpringStage::curve).
+  bool progressive_springs = false;
+  bool any() const { return leaf_friction || progressive_springs; }
+};
+
+/// A regime change of the nonlinear path.
+struct SimulationEvent {
+  enum class Kind { stick, slip, reversal, kink };
+  double time = 0.0;  ///< s
+  int element = 0;    ///< index into Vehicle::elements
+  Kind kind = Kind::stick;
+};
+const char* to_string(SimulationEvent::Kind kind);
 
 /// Sampled response: one row per time, one column per DOF.
 struct TimeHistory {
@@ -36,6 +63,8 @@ struct TimeHistory {
   Eigen::VectorXd time;             ///< s
   Eigen::MatrixXd displacement;     ///< m or rad
   Eigen::MatrixXd velocity;         ///< m/s or rad/s
+  std::vector<SimulationEvent> events;  ///< nonlinear path: every regime change, in time order
+  int steps_taken = 0;                  ///< integrator steps (nonlinear path), for cost reports
 };
 
 /// Linear scene: the sources enter through their harmonic loads Σ_k Re(Q_k e^{iω_k t}) (as in
@@ -43,5 +72,17 @@ struct TimeHistory {
 /// for bad options or initial conditions on unknown or massless DOFs.
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                             const SimulationOptions& options);
+
+
+/// Nonlinear scene: the linear model plus the named suspension nonlinearities of its vertical
+/// elements, integrated by an adaptive Dormand–Prince 5(4) method whose steps end on the output
+/// times and on located events, so that between events the motion is smooth and the Coulomb
+/// decay of a leaf spring comes out to the tolerance (2φf/(1 ± φ) per half period, then rest in
+/// the dead band). Stuck springs are constraints (their relative velocity is zero; the friction
+/// force is what holds them, checked against φ times the elastic reaction).
+/// Throws std::invalid_argument for what it cannot model: a friction or progressive stage in
+/// series with other stages (a massless spring end), or massless degrees of freedom.
+TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
+                               const SimulationOptions& options, const NonlinearEffects& effects);
 
 }  // namespace railmodal

@@ -63,6 +63,19 @@ struct Body {
   std::vector<Motion> held;
 };
 
+/// Load–deflection curve of one progressive spring (the Khanin conical spring, springs digest
+/// Example 10): piecewise linear through the points, deflection from the unloaded spring.
+struct LoadDeflectionCurve {
+  std::vector<double> deflection;  ///< m, increasing from 0
+  std::vector<double> load;        ///< N, increasing from 0
+  /// Load at deflection d; beyond the last point the last segment continues.
+  double load_at(double d) const;
+  /// Deflection under load p (the inverse).
+  double deflection_at(double p) const;
+  /// Slope of the segment that carries load p (at a kink: the stiffer segment above it).
+  double stiffness_at(double p) const;
+};
+
 /// One stage of springs in parallel: `count` identical springs of `stiffness` each.
 struct SpringStage {
   std::string kind;        ///< "leaf", "coil", "elliptic", "direct", ... (for reports)
@@ -72,6 +85,10 @@ struct SpringStage {
   /// fraction of the load the spring carries, R = c(1 ± φ)(f ± z) (springs digest §2.3).
   /// Not in the linear matrices; it decides whether friction stops a resonance.
   double relative_friction = 0.0;
+  /// A progressive spring's curve (empty: linear). `stiffness` is then its tangent at the
+  /// carried load, used by every linear analysis; the scene effect "progressive_springs" makes
+  /// the simulation follow the whole curve.
+  std::optional<LoadDeflectionCurve> curve = std::nullopt;
 };
 
 /// Cradle swing hangers carrying the element's vertical load: a pendulum whose lateral

@@ -1,3 +1,4 @@
+#include <algorithm>
 // load_scene: [scene], [speed], [[source]] and [[output]] tables.
 #include <cmath>
 #include <filesystem>
@@ -152,22 +153,26 @@ Scene load_scene(const std::string& path) {
   if (root.has("simulation")) {
     TableReader t = root.table("simulation");
     SimulationSpec sim;
-    sim.speed = t.positive("speed", Quantity::speed);
+    // A released wagon standing still needs no speed; sources do.
+    if (root.has("source") || t.has("speed")) sim.speed = t.positive("speed", Quantity::speed);
     sim.duration = t.positive("duration", Quantity::time);
     sim.time_step = t.positive("time_step", Quantity::time);
     if (sim.duration / sim.time_step > 1e8) t.fail("time_step", "gives more than 1e8 steps; take a longer step");
     if (sim.time_step > sim.duration) t.fail("time_step", "is longer than the duration");
     if (t.has("effects"))
       for (const auto& effect : t.strings("effects")) {
-        if (effect == "viscous_dampers") {
-          sim.effects.push_back(effect);
-        } else if (effect == "leaf_friction" || effect == "progressive_springs") {
-          t.fail("effects", "'" + effect + "' needs the nonlinear integrator, which railmodal does not have yet; "
-                            "this version simulates linear scenes (viscous_dampers and the [[source]] inputs)");
-        } else {
-          t.fail("effects", "unknown effect '" + effect + "' (viscous_dampers; sources go in [[source]] tables)");
-        }
+        if (effect != "viscous_dampers" && effect != "leaf_friction" && effect != "progressive_springs")
+          t.fail("effects", "unknown effect '" + effect +
+                                "' (viscous_dampers, leaf_friction, progressive_springs; sources go in [[source]] tables)");
+        if (std::find(sim.effects.begin(), sim.effects.end(), effect) != sim.effects.end())
+          t.fail("effects", "names '" + effect + "' twice");
+        sim.effects.push_back(effect);
       }
+    if (t.has("tolerance")) {
+      sim.tolerance = t.positive("tolerance", Quantity::dimensionless);
+      if (!(sim.tolerance < 1e-2)) t.fail("tolerance", "must be below 1e-2 (default 1e-10)");
+    }
+    if (t.has("event_tolerance")) sim.event_tolerance = t.positive("event_tolerance", Quantity::time);
     if (t.has("initial"))
       for (auto& i : t.tables("initial")) {
         InitialCondition ic;

@@ -28,6 +28,27 @@ double load_per_spring(TableReader& t, std::optional<double> element_load, int c
               "stage or to its element");
 }
 
+// load_deflection = { deflection = ["0 mm", "70 mm", ...], load = ["0 kgf", "1820 kgf", ...] }:
+// points of one spring from the unloaded state, both increasing.
+LoadDeflectionCurve read_curve(TableReader& stage) {
+  TableReader t = stage.table("load_deflection");
+  LoadDeflectionCurve c;
+  c.deflection = t.quantities("deflection", Quantity::length);
+  c.load = t.quantities("load", Quantity::force);
+  if (c.deflection.size() != c.load.size())
+    t.fail("load", "has " + std::to_string(c.load.size()) + " points, deflection has " +
+                       std::to_string(c.deflection.size()));
+  if (c.deflection.size() < 2) t.fail("deflection", "needs at least two points");
+  if (c.deflection[0] != 0.0 || c.load[0] != 0.0)
+    t.fail("deflection", "the curve starts at the unloaded spring: first point 0 and 0");
+  for (size_t i = 1; i < c.deflection.size(); ++i) {
+    if (!(c.deflection[i] > c.deflection[i - 1])) t.fail("deflection", "must increase from point to point");
+    if (!(c.load[i] > c.load[i - 1])) t.fail("load", "must increase from point to point (a spring that stiffens or softens, never gives way)");
+  }
+  t.finish();
+  return c;
+}
+
 }  // namespace
 
 SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load) {
@@ -37,7 +58,7 @@ SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load
 
   // Exactly one way of giving the stiffness.
   std::vector<std::string> given;
-  for (const char* k : {"stiffness", "flexibility", "static_deflection"})
+  for (const char* k : {"stiffness", "flexibility", "static_deflection", "load_deflection"})
     if (t.has(k)) given.push_back(k);
   const bool coil = stage.kind == "coil" && any_of(t, kCoilGeometry);
   const bool leaf = stage.kind == "leaf" && any_of(t, kLeafGeometry);
@@ -45,7 +66,7 @@ SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load
   if (coil || leaf || elliptic) given.push_back(stage.kind + " geometry");
   if (given.size() != 1) {
     const std::string choices =
-        "give exactly one of stiffness, flexibility, static_deflection" +
+        "give exactly one of stiffness, flexibility, static_deflection, load_deflection" +
         std::string(stage.kind == "coil"       ? " or the coil geometry (wire_diameter, mean_radius, active_coils, shear_modulus)"
                     : stage.kind == "leaf"     ? " or the leaf geometry (length, leaf_width, leaf_thickness, leaves, full_length_leaves, modulus)"
                     : stage.kind == "elliptic" ? " or the elliptic geometry (length, leaf_width, leaf_thickness, leaves, rows, modulus)"
@@ -63,6 +84,12 @@ SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load
   } else if (way == "static_deflection") {
     const double f = t.positive("static_deflection", Quantity::length);
     stage.stiffness = load_per_spring(t, element_load, stage.count, "static_deflection") / f;
+  } else if (way == "load_deflection") {
+    LoadDeflectionCurve& curve = stage.curve.emplace(read_curve(t));
+    const double load = load_per_spring(t, element_load, stage.count, "load_deflection");
+    if (load > curve.load.back())
+      t.fail("load", "is beyond the last point of load_deflection; extend the curve");
+    stage.stiffness = curve.stiffness_at(load);  // the tangent at the carried load
   } else if (coil) {
     const double d = t.positive("wire_diameter", Quantity::length);
     double r = 0.0;
@@ -114,7 +141,7 @@ SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load
       t.fail("leaf_friction", "gives a relative friction φ of " + std::to_string(stage.relative_friction) +
                                   ", not below 1");
   }
-  if (t.has("load") && way != "static_deflection" && !(leaf && t.has("shackle_inclination")))
+  if (t.has("load") && way != "static_deflection" && way != "load_deflection" && !(leaf && t.has("shackle_inclination")))
     t.positive("load", Quantity::force);  // documented carried load; accepted, not needed
   t.finish();
   return stage;

@@ -322,6 +322,13 @@ LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
   system.gravity_stiffness = pick(K_gravity);
   system.vehicle = vehicle;
   system.element_loads = loads;
+  system.element_vertical_map = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(vehicle.elements.size()), n);
+  for (size_t k = 0; k < vehicle.elements.size(); ++k)
+    for (int i = 0; i < n; ++i) {
+      const int body = keep[i] / kMotionsPerBody, motion = keep[i] % kMotionsPerBody;
+      if (body == maps[k].upper) system.element_vertical_map(k, i) += maps[k].up(2, motion);
+      if (body == maps[k].lower) system.element_vertical_map(k, i) -= maps[k].low(2, motion);
+    }
 
   // Where the track's displacement enters: the final stiffness of each track element
   // (hangers included) and its damping, seen from the kept coordinates of its upper body.

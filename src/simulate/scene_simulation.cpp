@@ -7,11 +7,25 @@
 
 namespace railmodal {
 
+namespace {
+
+bool names(const Scene& scene, const char* effect) {
+  return scene.simulation &&
+         std::find(scene.simulation->effects.begin(), scene.simulation->effects.end(), effect) != scene.simulation->effects.end();
+}
+
+}  // namespace
+
+NonlinearEffects scene_effects(const Scene& scene) {
+  NonlinearEffects effects;
+  effects.leaf_friction = names(scene, "leaf_friction");
+  effects.progressive_springs = names(scene, "progressive_springs");
+  return effects;
+}
+
 LinearSystem scene_system(const Scene& scene, const Vehicle& vehicle) {
   Vehicle v = vehicle;
-  const bool dampers = scene.simulation && std::find(scene.simulation->effects.begin(), scene.simulation->effects.end(),
-                                                     "viscous_dampers") != scene.simulation->effects.end();
-  if (!dampers)
+  if (!names(scene, "viscous_dampers"))
     for (Element& e : v.elements) e.vertical_damping = e.lateral_damping = 0.0;  // not named: not built
   return assemble(v, scene.dofs);
 }
@@ -27,7 +41,10 @@ TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle) {
   options.duration = spec.duration;
   options.time_step = spec.time_step;
   options.initial = spec.initial;
-  return simulate_linear(system, sources, options);
+  options.tolerance = spec.tolerance;
+  options.event_tolerance = spec.event_tolerance;
+  const NonlinearEffects effects = scene_effects(scene);
+  return effects.any() ? simulate_nonlinear(system, sources, options, effects) : simulate_linear(system, sources, options);
 }
 
 FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle) {
@@ -74,6 +91,17 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle) {
       check.within_resolution = std::abs(nearest->frequency - mode.frequency_hz) <= check.resolution_hz;
     }
     out.checks.push_back(check);
+  }
+  if (scene_effects(scene).any()) {
+    for (const Mode& mode : out.modes.modes) {
+      if (mode.kind != ModeKind::oscillatory) continue;
+      int dof = 0;
+      for (int d = 1; d < mode.kinetic_energy_share.size(); ++d)
+        if (mode.kinetic_energy_share(d) > mode.kinetic_energy_share(dof)) dof = d;
+      out.swings = swings(out.history, dof);
+      out.linear_half_period_s = 0.5 / mode.frequency_hz;
+      break;
+    }
   }
   return out;
 }

@@ -35,7 +35,7 @@ int load(const SimulateOptions& o, Scene* scene, Vehicle* vehicle) {
   return kSuccess;
 }
 
-std::string history_text(const TimeHistory& h, const Scene& scene, const std::string& format) {
+std::string history_text(const TimeHistory& h, const Scene& scene, const Vehicle& vehicle, const std::string& format) {
   std::vector<int> columns;
   for (int c = 0; c < static_cast<int>(h.labels.size()); ++c)
     if (scene.simulation->outputs.empty() ||
@@ -52,6 +52,12 @@ std::string history_text(const TimeHistory& h, const Scene& scene, const std::st
     for (int c : columns) {
       const Eigen::VectorXd col = h.displacement.col(c);
       j["displacement"][h.labels[c]] = std::vector<double>(col.data(), col.data() + col.size());
+    }
+    if (scene_effects(scene).any()) {  // the nonlinear path: its stick/slip/kink events
+      j["events"] = nlohmann::json::array();
+      for (const SimulationEvent& e : h.events)
+        j["events"].push_back({{"time_s", e.time}, {"element", vehicle.elements.at(e.element).name}, {"kind", to_string(e.kind)}});
+      j["integration_steps"] = h.steps_taken;
     }
     out << j.dump() << "\n";
     return out.str();
@@ -82,6 +88,18 @@ std::string checks_text(const FftCheckResult& r, const Scene& scene, const std::
                              {"rel_error", c.peak_hz ? nlohmann::json(c.rel_error) : nlohmann::json(nullptr)},
                              {"resolution_hz", c.resolution_hz},
                              {"within_resolution", c.within_resolution}});
+    if (r.swings) {
+      const Swings& w = *r.swings;
+      nlohmann::json turns = nlohmann::json::array();
+      for (size_t i = 0; i < w.turning_times.size(); ++i)
+        turns.push_back({{"time_s", w.turning_times[i]}, {"displacement", w.turning_values[i]}});
+      j["half_periods"] = {{"dof", w.dof},
+                           {"linear_half_period_s", r.linear_half_period_s},
+                           {"between_turning_points_s", w.half_periods_between_turns()},
+                           {"between_crossings_s", w.half_periods_between_crossings()},
+                           {"turning_points", turns},
+                           {"comes_to_rest", w.comes_to_rest}};
+    }
     out << j.dump(2) << "\n";
     return out.str();
   }
@@ -110,6 +128,28 @@ std::string checks_text(const FftCheckResult& r, const Scene& scene, const std::
       out << std::setw(11) << "—" << std::setw(12) << "" << std::setw(13) << "" << "  not excited (no peak near it)";
     out << "\n";
   }
+  if (r.swings) {
+    const Swings& w = *r.swings;
+    out << "\nnonlinear scene: spectral lines are broadened; the half periods of " << w.dof
+        << " (linear: " << std::fixed << std::setprecision(4) << r.linear_half_period_s << " s)\n"
+        << std::setw(5) << "#" << std::setw(14) << "turn at [s]" << std::setw(16) << "displacement" << std::setw(18)
+        << "half period [s]" << "\n";
+    const auto halves = w.half_periods_between_turns();
+    for (size_t i = 0; i < w.turning_times.size(); ++i) {
+      out << std::setw(5) << i + 1 << std::setw(14) << std::setprecision(4) << w.turning_times[i] << std::setw(16)
+          << std::setprecision(6) << w.turning_values[i];
+      if (i > 0) out << std::setw(18) << std::setprecision(4) << halves[i - 1];
+      out << "\n";
+    }
+    if (w.comes_to_rest) out << "      then at rest (a stuck spring)\n";
+    const auto crossings = w.half_periods_between_crossings();
+    if (!crossings.empty()) {
+      out << "half periods between passes through the static position [s]:";
+      for (size_t i = 0; i < crossings.size() && i < 8; ++i) out << " " << std::setprecision(4) << crossings[i];
+      if (crossings.size() > 8) out << " … (" << crossings.size() << " in all)";
+      out << "\n";
+    }
+  }
   return out.str();
 }
 
@@ -121,7 +161,7 @@ int run(const SimulateOptions& o, bool check) {
     std::string text;
     try {
       text = check ? checks_text(fft_check(scene, vehicle), scene, o.format)
-                   : history_text(simulate_scene(scene, vehicle), scene, o.format);
+                   : history_text(simulate_scene(scene, vehicle), scene, vehicle, o.format);
     } catch (const std::invalid_argument& e) {
       throw InputError(o.scene, 0, 0, e.what());
     }

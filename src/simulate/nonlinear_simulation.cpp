@@ -1,0 +1,429 @@
+// The nonlinear path: leaf-spring friction with sticking, and progressive springs, on top of
+// the linear model, integrated between located events by Dormand–Prince 5(4).
+//
+// Between events every element keeps its regime (sliding down, sliding up, stuck; the segment
+// of a progressive curve), so the equations of motion are smooth and the adaptive Runge–Kutta
+// error control holds; at an event the step is cut exactly there (to event_tolerance) and the
+// regime changes. Friction follows the book's law R = c(1 ± φ)(f ± z) (springs digest §2.3,
+// eqs. (40)–(59)): a force φ·R_el against the sliding, R_el the element's current elastic
+// reaction; a stuck element is a constraint whose holding force must stay within ±φ·R_el, so
+// a free decay stops in the dead band −φf/(1 + φ) ≤ z ≤ φf/(1 − φ).
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "railmodal/errors.hpp"
+#include "railmodal/simulation.hpp"
+#include "simulate/dormand_prince.hpp"
+#include "simulate/nonlinear_elements.hpp"
+
+namespace railmodal {
+
+const char* to_string(SimulationEvent::Kind kind) {
+  switch (kind) {
+    case SimulationEvent::Kind::stick: return "stick";
+    case SimulationEvent::Kind::slip: return "slip";
+    case SimulationEvent::Kind::reversal: return "reversal";
+    case SimulationEvent::Kind::kink: return "kink";
+  }
+  return "?";
+}
+
+namespace {
+
+using simulate::NonlinearElement;
+constexpr double kTwoPi = 6.28318530717958647692;
+
+struct Harmonic {
+  Eigen::VectorXcd load;
+  double omega = 0.0;
+};
+
+// What an event function watches.
+struct Slot {
+  enum class Kind { sliding, stuck, kink } kind;
+  int element;      // index into the model's elements
+  double kink = 0;  // deflection of the kink (kink slots)
+};
+
+class Model {
+ public:
+  Model(const LinearSystem& s, std::vector<Harmonic> harmonics, std::vector<NonlinearElement> elements)
+      : n_(s.size()), M_(s.mass), C_(s.damping), K_(s.stiffness), harmonics_(std::move(harmonics)),
+        elements_(std::move(elements)), state_(elements_.size(), 0) {
+    const Eigen::LLT<Eigen::MatrixXd> llt(M_);
+    if (llt.info() != Eigen::Success) throw NumericalError("the mass matrix is not positive definite");
+    Minv_ = llt.solve(Eigen::MatrixXd::Identity(n_, n_));
+    for (size_t i = 0; i < elements_.size(); ++i)
+      if (elements_[i].friction > 0.0) state_[i] = 1;  // sliding until the first resolve says otherwise
+    set_stuck();
+  }
+
+  int size() const { return n_; }
+  const std::vector<NonlinearElement>& elements() const { return elements_; }
+  int state(int i) const { return state_[i]; }
+
+  double compression(int i, double t, const Eigen::VectorXd& x) const {
+    double u, du, ddu;
+    elements_[i].track_motion(t, &u, &du, &ddu);
+    return -(elements_[i].stretch.dot(x) - u);
+  }
+  double compression_rate(int i, double t, const Eigen::VectorXd& v) const {
+    double u, du, ddu;
+    elements_[i].track_motion(t, &u, &du, &ddu);
+    return -(elements_[i].stretch.dot(v) - du);
+  }
+  // φ·R_el, the friction force a sliding element feels and a stuck one can hold.
+  double friction_limit(int i, double t, const Eigen::VectorXd& x) const {
+    return elements_[i].friction * std::max(elements_[i].reaction(compression(i, t, x)), 0.0);
+  }
+
+  // Every generalised force but the holding forces of stuck elements.
+  void force(double t, const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd* f) const {
+    f->noalias() = -K_ * x - C_ * v;
+    for (const Harmonic& h : harmonics_)
+      *f += (h.load * std::exp(std::complex<double>(0.0, h.omega * t))).real();
+    for (size_t i = 0; i < elements_.size(); ++i) {
+      const NonlinearElement& e = elements_[i];
+      const double delta = compression(static_cast<int>(i), t, x);
+      const double reaction = e.reaction(delta);
+      double up = 0.0;  // force on the upper end, up positive, beyond the linear model
+      if (e.curve) up += reaction - e.static_load - e.tangent * delta;
+      if (e.friction > 0.0 && state_[i] != 0) up += e.friction * std::max(reaction, 0.0) * state_[i];
+      if (up != 0.0) f->noalias() += e.stretch.transpose() * up;
+    }
+  }
+
+  // Holding forces of the elements in `set` (up positive on the upper end) that keep their
+  // relative acceleration equal to the track's; minimum norm when constraints repeat (left and
+  // right springs of a wagon seen in bounce and pitch only).
+  Eigen::VectorXd holding(const std::vector<int>& set, double t, const Eigen::VectorXd& f) const {
+    if (set.empty()) return {};
+    const Eigen::Index k = static_cast<Eigen::Index>(set.size());
+    Eigen::MatrixXd G(k, n_);
+    Eigen::VectorXd target(k);
+    for (Eigen::Index r = 0; r < k; ++r) {
+      G.row(r) = elements_[set[r]].stretch;
+      double u, du, ddu;
+      elements_[set[r]].track_motion(t, &u, &du, &ddu);
+      target(r) = ddu;
+    }
+    const Eigen::MatrixXd MinvGt = Minv_ * G.transpose();
+    const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> W(G * MinvGt);
+    return W.solve(target - G * (Minv_ * f));
+  }
+
+  void rhs(double t, const Eigen::VectorXd& y, Eigen::VectorXd* dy) const {
+    const auto x = y.head(n_), v = y.tail(n_);
+    Eigen::VectorXd f(n_);
+    force(t, x, v, &f);
+    dy->head(n_) = v;
+    if (stuck_.empty()) {
+      dy->tail(n_).noalias() = Minv_ * f;
+      return;
+    }
+    Eigen::VectorXd target(stuck_.size());
+    for (size_t r = 0; r < stuck_.size(); ++r) {
+      double u, du, ddu;
+      elements_[stuck_[r]].track_motion(t, &u, &du, &ddu);
+      target(r) = ddu;
+    }
+    const Eigen::VectorXd lambda = W_.solve(target - G_ * (Minv_ * f));
+    dy->tail(n_).noalias() = Minv_ * (f + G_.transpose() * lambda);
+  }
+
+  // The event functions of the current regime, in a fixed order for a regime.
+  std::vector<Slot> slots() const {
+    std::vector<Slot> out;
+    for (size_t i = 0; i < elements_.size(); ++i) {
+      const int e = static_cast<int>(i);
+      if (elements_[i].friction > 0.0) out.push_back({state_[i] == 0 ? Slot::Kind::stuck : Slot::Kind::sliding, e, 0.0});
+      if (elements_[i].curve)
+        for (size_t p = 1; p + 1 < elements_[i].curve->deflection.size(); ++p)
+          out.push_back({Slot::Kind::kink, e, elements_[i].curve->deflection[p]});
+    }
+    return out;
+  }
+
+  std::vector<double> slot_values(const std::vector<Slot>& slots, double t, const Eigen::VectorXd& y) const {
+    const auto x = y.head(n_), v = y.tail(n_);
+    std::vector<double> out(slots.size());
+    Eigen::VectorXd lambda;
+    bool have_lambda = false;
+    for (size_t s = 0; s < slots.size(); ++s) {
+      const int i = slots[s].element;
+      switch (slots[s].kind) {
+        case Slot::Kind::sliding: out[s] = state_[i] * compression_rate(i, t, v); break;
+        case Slot::Kind::kink: out[s] = elements_[i].static_deflection + compression(i, t, x) - slots[s].kink; break;
+        case Slot::Kind::stuck: {
+          if (!have_lambda) {
+            Eigen::VectorXd f(n_);
+            force(t, x, v, &f);
+            lambda = holding(stuck_, t, f);
+            have_lambda = true;
+          }
+          const auto at = std::find(stuck_.begin(), stuck_.end(), i) - stuck_.begin();
+          out[s] = friction_limit(i, t, x) - std::abs(lambda(at));
+          break;
+        }
+      }
+    }
+    return out;
+  }
+
+  // Decides which friction elements stick at time t: `candidates` (the stuck ones and those
+  // whose sliding just stopped) stay stuck unless their holding force leaves ±φR_el; the worst
+  // offender slides first, in the direction of its holding force, and the rest are re-checked.
+  // `releasing` are stuck elements whose holding force has just reached ±φR_el: at the located
+  // zero the ratio is 1 to rounding, so they are told to slide rather than tested (testing
+  // would keep them stuck and the same zero would fire again forever).
+  // Stuck elements get exactly zero relative velocity. Returns the events.
+  std::vector<SimulationEvent> resolve(double t, Eigen::VectorXd* y, std::vector<int> candidates,
+                                       const std::vector<int>& releasing = {}) {
+    for (size_t i = 0; i < elements_.size(); ++i)
+      if (state_[i] == 0 && std::find(candidates.begin(), candidates.end(), static_cast<int>(i)) == candidates.end())
+        candidates.push_back(static_cast<int>(i));
+    std::sort(candidates.begin(), candidates.end());
+    const auto x = y->head(n_), v = y->tail(n_);
+    const std::vector<int> before = state_;
+    std::vector<int> set = candidates;
+    // The forces with the candidates' own friction taken out (they are held, not sliding).
+    for (int i : set) state_[i] = 0;
+    bool first_pass = true;
+    while (!set.empty()) {
+      Eigen::VectorXd f(n_);
+      force(t, x, v, &f);
+      const Eigen::VectorXd lambda = holding(set, t, f);
+      if (first_pass && !releasing.empty()) {
+        first_pass = false;
+        std::vector<int> kept;
+        for (size_t r = 0; r < set.size(); ++r) {
+          if (std::find(releasing.begin(), releasing.end(), set[r]) == releasing.end()) kept.push_back(set[r]);
+          else state_[set[r]] = lambda(static_cast<Eigen::Index>(r)) > 0.0 ? 1 : -1;
+        }
+        set = kept;
+        continue;
+      }
+      int worst = -1;
+      double worst_ratio = 1.0 + 1e-9;
+      for (size_t r = 0; r < set.size(); ++r) {
+        const double limit = friction_limit(set[r], t, x);
+        const double ratio = limit > 0.0 ? std::abs(lambda(r)) / limit : (lambda(r) != 0.0 ? INFINITY : 0.0);
+        if (ratio > worst_ratio) worst_ratio = ratio, worst = static_cast<int>(r);
+      }
+      if (worst < 0) break;
+      state_[set[worst]] = lambda(worst) > 0.0 ? 1 : -1;  // slides the way its holding force pushed
+      set.erase(set.begin() + worst);
+    }
+    set_stuck();
+    if (!stuck_.empty()) {  // exactly zero relative velocity for the stuck ones
+      Eigen::VectorXd mismatch(stuck_.size());
+      for (size_t r = 0; r < stuck_.size(); ++r) {
+        double u, du, ddu;
+        elements_[stuck_[r]].track_motion(t, &u, &du, &ddu);
+        mismatch(r) = G_.row(r).dot(v) - du;
+      }
+      y->tail(n_) -= Minv_ * G_.transpose() * W_.solve(mismatch);
+    }
+    std::vector<SimulationEvent> events;
+    for (int i : candidates) {
+      const int element = elements_[i].element;
+      if (state_[i] == 0 && before[i] != 0) events.push_back({t, element, SimulationEvent::Kind::stick});
+      else if (state_[i] != 0 && before[i] == 0) events.push_back({t, element, SimulationEvent::Kind::slip});
+      else if (state_[i] != 0 && before[i] != 0) events.push_back({t, element, SimulationEvent::Kind::reversal});
+    }
+    return events;
+  }
+
+ private:
+  void set_stuck() {
+    stuck_.clear();
+    for (size_t i = 0; i < elements_.size(); ++i)
+      if (elements_[i].friction > 0.0 && state_[i] == 0) stuck_.push_back(static_cast<int>(i));
+    G_.resize(static_cast<Eigen::Index>(stuck_.size()), n_);
+    for (size_t r = 0; r < stuck_.size(); ++r) G_.row(r) = elements_[stuck_[r]].stretch;
+    if (!stuck_.empty()) W_.compute(G_ * Minv_ * G_.transpose());
+  }
+
+  int n_;
+  Eigen::MatrixXd M_, C_, K_, Minv_;
+  std::vector<Harmonic> harmonics_;
+  std::vector<NonlinearElement> elements_;
+  std::vector<int> state_;  // friction elements: +1 sliding into compression, −1 out of it, 0 stuck
+  std::vector<int> stuck_;
+  Eigen::MatrixXd G_;
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> W_;
+};
+
+double error_norm(const Eigen::VectorXd& error, const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, double tol) {
+  double worst = 0.0;
+  for (Eigen::Index i = 0; i < error.size(); ++i)
+    worst = std::max(worst, std::abs(error(i)) / (tol + tol * std::max(std::abs(y0(i)), std::abs(y1(i)))));
+  return worst;
+}
+
+}  // namespace
+
+TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
+                               const SimulationOptions& options, const NonlinearEffects& effects) {
+  const int n = system.size();
+  if (n == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
+  if (!(options.duration > 0.0) || !(options.time_step > 0.0) || !std::isfinite(options.duration))
+    throw std::invalid_argument("simulation: duration and time step must be positive");
+  if (options.duration / options.time_step > 1e8)
+    throw std::invalid_argument("simulation: more than 1e8 output steps; take a longer time step");
+  if (!(options.tolerance > 0.0) || !(options.event_tolerance > 0.0))
+    throw std::invalid_argument("simulation: tolerance and event tolerance must be positive");
+  if (!sources.empty() && !(options.speed > 0.0)) throw std::invalid_argument("simulation: the speed must be positive");
+  for (int i = 0; i < n; ++i)
+    if (system.mass.row(i).cwiseAbs().maxCoeff() == 0.0)
+      throw std::invalid_argument("simulation: '" + system.dofs[i].label +
+                                  "' is massless; the nonlinear path needs inertia at every degree of freedom");
+
+  std::vector<HarmonicLoad> loads;
+  std::vector<Harmonic> harmonics;
+  for (const ExcitationSource* source : sources)
+    for (int k = 1; k <= source->harmonic_count(); ++k) {
+      loads.push_back(source->load(system, options.speed, k));
+      const Eigen::VectorXcd Q = generalized_load(system, loads.back());
+      if (Q.norm() > 0.0) harmonics.push_back({Q, kTwoPi * loads.back().frequency_hz});
+    }
+  Model model(system, harmonics, simulate::nonlinear_elements(system, loads, effects));
+
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * n);
+  for (const auto& ic : options.initial) {
+    const int d = system.index_of(ic.dof);
+    if (d < 0) throw std::invalid_argument("simulation: initial condition on unknown DOF '" + ic.dof + "'");
+    y(d) = ic.displacement;
+    y(n + d) = ic.velocity;
+  }
+
+  const int outputs = static_cast<int>(std::llround(options.duration / options.time_step));
+  TimeHistory out;
+  for (const auto& d : system.dofs) out.labels.push_back(d.label);
+  out.time.resize(outputs + 1);
+  out.displacement.resize(outputs + 1, n);
+  out.velocity.resize(outputs + 1, n);
+  auto record = [&](int i, double t) {
+    out.time(i) = t;
+    out.displacement.row(i) = y.head(n).transpose();
+    out.velocity.row(i) = y.tail(n).transpose();
+  };
+
+  // At rest at t = 0 every friction element is a candidate for sticking.
+  const auto rhs = [&model](double t, const Eigen::VectorXd& state, Eigen::VectorXd* dy) { model.rhs(t, state, dy); };
+  {
+    std::vector<int> resting;
+    for (size_t i = 0; i < model.elements().size(); ++i)
+      if (model.elements()[i].friction > 0.0 &&
+          std::abs(model.compression_rate(static_cast<int>(i), 0.0, y.tail(n))) <= options.tolerance)
+        resting.push_back(static_cast<int>(i));
+    for (const auto& e : model.resolve(0.0, &y, resting))
+      if (e.kind != SimulationEvent::Kind::reversal) out.events.push_back(e);
+  }
+  record(0, 0.0);
+
+  double t = 0.0;
+  double h = options.time_step;
+  std::vector<bool> just_fired;  // slots that fired at the start of this step: their zero is behind us
+  int events_here = 0;           // events in a row without time moving on
+  for (int i = 1; i <= outputs; ++i) {
+    const double target = i * options.time_step;
+    while (t < target) {
+      const double hh = std::min(h, target - t);
+      if (hh < 1e-15 * std::max(1.0, target)) {
+        t = target;
+        break;
+      }
+      const auto step = simulate::dormand_prince_step(rhs, t, y, hh);
+      const double err = error_norm(step.error, y, step.y, options.tolerance);
+      if (!step.y.allFinite()) throw NumericalError("simulation diverged at t = " + std::to_string(t) + " s");
+      ++out.steps_taken;
+      if (err > 1.0) {
+        h = hh * std::max(0.2, 0.9 * std::pow(err, -0.2));
+        if (h < 1e-14 * std::max(1.0, t)) throw NumericalError("simulation: step size underflow at t = " + std::to_string(t) + " s");
+        continue;
+      }
+      // Events: an event function that changes sign over the step (sliding: the compression
+      // rate against the sliding direction reaches zero; stuck: the holding force reaches
+      // ±φR_el; kink: the deflection crosses a corner of the curve).
+      const std::vector<Slot> slots = model.slots();
+      const std::vector<double> h0 = model.slot_values(slots, t, y), h1 = model.slot_values(slots, t + hh, step.y);
+      if (just_fired.size() != slots.size()) just_fired.assign(slots.size(), false);
+      double first = INFINITY;
+      std::vector<int> fired;
+      for (size_t s = 0; s < slots.size(); ++s) {
+        const bool crossed = slots[s].kind == Slot::Kind::kink ? (h0[s] > 0.0) != (h1[s] > 0.0) && !just_fired[s]
+                                                                : h1[s] < 0.0 && (h0[s] >= 0.0 || !just_fired[s]);
+        if (!crossed) continue;
+        // Illinois false position on the step length; the root is bracketed by (lo, hi].
+        double lo = 0.0, hi = hh, glo = h0[s], ghi = h1[s];
+        if (slots[s].kind != Slot::Kind::kink && glo < 0.0) glo = 0.0;  // already past: fire at once
+        int side = 0;
+        while (hi - lo > options.event_tolerance && glo != 0.0) {
+          double mid = (lo * ghi - hi * glo) / (ghi - glo);
+          if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+          const auto trial = simulate::dormand_prince_step(rhs, t, y, mid);
+          const double g = model.slot_values(slots, t + mid, trial.y)[s];
+          if ((g > 0.0) == (glo > 0.0)) {
+            lo = mid, glo = g;
+            if (side == -1) ghi *= 0.5;
+            side = -1;
+          } else {
+            hi = mid, ghi = g;
+            if (side == 1) glo *= 0.5;
+            side = 1;
+          }
+        }
+        if (glo == 0.0) hi = lo;
+        if (hi < first - options.event_tolerance) {
+          first = hi;
+          fired.assign(1, static_cast<int>(s));
+        } else if (std::abs(hi - first) <= options.event_tolerance) {
+          fired.push_back(static_cast<int>(s));
+        }
+      }
+      if (fired.empty()) {
+        y = step.y;
+        t = (hh == target - t) ? target : t + hh;
+        h = hh * std::min(5.0, 0.9 * std::pow(std::max(err, 1e-10), -0.2));
+        just_fired.assign(slots.size(), false);
+        continue;
+      }
+      if (first > 0.0) y = simulate::dormand_prince_step(rhs, t, y, first).y;
+      t += first;
+      // A regime that cannot last a step (a zero that fires again at once) would stall time;
+      // say so instead of spinning.
+      events_here = first > 0.0 ? 0 : events_here + 1;
+      if (events_here > 64)
+        throw NumericalError("simulation: friction events chatter at t = " + std::to_string(t) +
+                             " s (no consistent stick/slip state); try a larger event_tolerance");
+      std::vector<int> candidates, releasing;
+      for (int s : fired) {
+        if (slots[s].kind == Slot::Kind::kink) {
+          out.events.push_back({t, model.elements()[slots[s].element].element, SimulationEvent::Kind::kink});
+          continue;
+        }
+        candidates.push_back(slots[s].element);
+        if (slots[s].kind == Slot::Kind::stuck) releasing.push_back(slots[s].element);
+      }
+      for (const auto& e : model.resolve(t, &y, candidates, releasing)) out.events.push_back(e);
+      const std::vector<Slot> next = model.slots();
+      just_fired.assign(next.size(), false);
+      for (int s : fired)
+        for (size_t q = 0; q < next.size(); ++q)
+          if (next[q].element == slots[s].element && next[q].kind == Slot::Kind::kink && slots[s].kind == Slot::Kind::kink &&
+              next[q].kink == slots[s].kink)
+            just_fired[q] = true;
+      for (size_t q = 0; q < next.size(); ++q)  // a friction element's regime starts at its zero
+        if (next[q].kind != Slot::Kind::kink &&
+            std::find(candidates.begin(), candidates.end(), next[q].element) != candidates.end())
+          just_fired[q] = true;
+    }
+    record(i, target);
+  }
+  return out;
+}
+
+}  // namespace railmodal
