@@ -54,6 +54,9 @@ struct SimulationEvent {
   double time = 0.0;  ///< s
   int element = 0;    ///< index into Vehicle::elements
   Kind kind = Kind::stick;
+  /// The state just after the event (m or rad, m/s or rad/s, per DOF): the motion is smooth
+  /// between events, so these points and the regular samples interpolate it piece by piece.
+  Eigen::VectorXd displacement, velocity;
 };
 const char* to_string(SimulationEvent::Kind kind);
 

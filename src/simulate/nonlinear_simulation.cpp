@@ -35,6 +35,14 @@ namespace {
 using simulate::NonlinearElement;
 constexpr double kTwoPi = 6.28318530717958647692;
 
+SimulationEvent event(double t, int element, SimulationEvent::Kind kind) {
+  SimulationEvent e;
+  e.time = t;
+  e.element = element;
+  e.kind = kind;
+  return e;
+}
+
 struct Harmonic {
   Eigen::VectorXcd load;
   double omega = 0.0;
@@ -182,7 +190,8 @@ class Model {
   std::vector<SimulationEvent> resolve(double t, Eigen::VectorXd* y, std::vector<int> candidates,
                                        const std::vector<int>& releasing = {}) {
     for (size_t i = 0; i < elements_.size(); ++i)
-      if (state_[i] == 0 && std::find(candidates.begin(), candidates.end(), static_cast<int>(i)) == candidates.end())
+      if (elements_[i].friction > 0.0 && state_[i] == 0 &&
+          std::find(candidates.begin(), candidates.end(), static_cast<int>(i)) == candidates.end())
         candidates.push_back(static_cast<int>(i));
     std::sort(candidates.begin(), candidates.end());
     const auto x = y->head(n_), v = y->tail(n_);
@@ -229,9 +238,9 @@ class Model {
     std::vector<SimulationEvent> events;
     for (int i : candidates) {
       const int element = elements_[i].element;
-      if (state_[i] == 0 && before[i] != 0) events.push_back({t, element, SimulationEvent::Kind::stick});
-      else if (state_[i] != 0 && before[i] == 0) events.push_back({t, element, SimulationEvent::Kind::slip});
-      else if (state_[i] != 0 && before[i] != 0) events.push_back({t, element, SimulationEvent::Kind::reversal});
+      if (state_[i] == 0 && before[i] != 0) events.push_back(event(t, element, SimulationEvent::Kind::stick));
+      else if (state_[i] != 0 && before[i] == 0) events.push_back(event(t, element, SimulationEvent::Kind::slip));
+      else if (state_[i] != 0 && before[i] != 0) events.push_back(event(t, element, SimulationEvent::Kind::reversal));
     }
     return events;
   }
@@ -311,6 +320,14 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
     out.velocity.row(i) = y.tail(n).transpose();
   };
 
+  // Events carry the state they leave behind.
+  const auto stamp = [&](size_t from) {
+    for (size_t e = from; e < out.events.size(); ++e) {
+      out.events[e].displacement = y.head(n);
+      out.events[e].velocity = y.tail(n);
+    }
+  };
+
   // At rest at t = 0 every friction element is a candidate for sticking.
   const auto rhs = [&model](double t, const Eigen::VectorXd& state, Eigen::VectorXd* dy) { model.rhs(t, state, dy); };
   {
@@ -321,6 +338,7 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
         resting.push_back(static_cast<int>(i));
     for (const auto& e : model.resolve(0.0, &y, resting))
       if (e.kind != SimulationEvent::Kind::reversal) out.events.push_back(e);
+    stamp(0);
   }
   record(0, 0.0);
 
@@ -399,16 +417,18 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
       if (events_here > 64)
         throw NumericalError("simulation: friction events chatter at t = " + std::to_string(t) +
                              " s (no consistent stick/slip state); try a larger event_tolerance");
+      const size_t first_event = out.events.size();
       std::vector<int> candidates, releasing;
       for (int s : fired) {
         if (slots[s].kind == Slot::Kind::kink) {
-          out.events.push_back({t, model.elements()[slots[s].element].element, SimulationEvent::Kind::kink});
+          out.events.push_back(event(t, model.elements()[slots[s].element].element, SimulationEvent::Kind::kink));
           continue;
         }
         candidates.push_back(slots[s].element);
         if (slots[s].kind == Slot::Kind::stuck) releasing.push_back(slots[s].element);
       }
       for (const auto& e : model.resolve(t, &y, candidates, releasing)) out.events.push_back(e);
+      stamp(first_event);
       const std::vector<Slot> next = model.slots();
       just_fired.assign(next.size(), false);
       for (int s : fired)

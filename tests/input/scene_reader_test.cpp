@@ -93,6 +93,53 @@ TEST(SceneReader, FrictionModel) {
                {"key 'friction.reference_amplitude'", "missing"});
 }
 
+// The [simulation] table: effects, tolerances and initial conditions; bad ones named.
+const std::string kSimulation = R"(
+[simulation]
+speed = "75 km/h"
+duration = "2 s"
+time_step = "1 ms"
+effects = ["leaf_friction", "viscous_dampers"]
+tolerance = 1e-9
+event_tolerance = "1e-10 s"
+[[simulation.initial]]
+dof = "body.bounce"
+displacement = "-25 mm"
+)";
+
+TEST(SceneReader, Simulation) {
+  const Scene s = load_scene(write_scene(kScene + kSimulation));
+  ASSERT_TRUE(s.simulation);
+  EXPECT_NEAR(s.simulation->speed, 75 / 3.6, 1e-12);
+  EXPECT_EQ(s.simulation->effects, (std::vector<std::string>{"leaf_friction", "viscous_dampers"}));
+  EXPECT_TRUE(scene_effects(s).leaf_friction);
+  EXPECT_FALSE(scene_effects(s).progressive_springs);
+  EXPECT_EQ(s.simulation->tolerance, 1e-9);
+  EXPECT_EQ(s.simulation->event_tolerance, 1e-10);
+  ASSERT_EQ(s.simulation->initial.size(), 1u);
+  EXPECT_NEAR(s.simulation->initial[0].displacement, -0.025, 1e-15);
+}
+
+TEST(SceneReader, SimulationErrors) {
+  auto expect_simulation_error = [](const std::string& from, const std::string& to, const std::vector<std::string>& parts) {
+    std::string text = kSimulation;
+    text.replace(text.find(from), from.size(), to);
+    try {
+      load_scene(write_scene(kScene + text));
+      FAIL() << "no error for " << to;
+    } catch (const InputError& e) {
+      for (const auto& part : parts) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+  };
+  expect_simulation_error("\"viscous_dampers\"", "\"coulomb_friction\"", {"key 'simulation.effects'", "unknown effect 'coulomb_friction'"});
+  expect_simulation_error("\"viscous_dampers\"", "\"leaf_friction\"", {"key 'simulation.effects'", "twice"});
+  expect_simulation_error("tolerance = 1e-9", "tolerance = 0.5", {"key 'simulation.tolerance'", "below 1e-2"});
+  expect_simulation_error("tolerance = 1e-9", "tolerance = -1e-9", {"key 'simulation.tolerance'"});
+  expect_simulation_error("\"1e-10 s\"", "\"1e-10 mm\"", {"key 'simulation.event_tolerance'", "expected a time"});
+  expect_simulation_error("speed = \"75 km/h\"\n", "", {"key 'simulation.speed'", "missing"});
+  expect_simulation_error("time_step = \"1 ms\"", "time_step = \"3 s\"", {"key 'simulation.time_step'", "longer than the duration"});
+}
+
 // An output the vehicle does not have is an input error naming the scene.
 TEST(SceneReader, UnknownOutputDofIsReported) {
   std::string text = kScene;

@@ -151,3 +151,57 @@ TEST(VehicleReader, MissingFile) {
 
 }  // namespace
 }  // namespace railmodal::test
+
+namespace railmodal::test {
+namespace {
+
+// A progressive spring given by its load–deflection curve (Khanin, springs Example 10): the
+// linear models take the tangent at the carried load; bad curves are named.
+const std::string kCurve = R"([vehicle]
+name = "curve"
+[[body]]
+name = "load"
+weight = "1850 kgf"
+inertia = { roll = "0 kg*m^2", pitch = "0 kg*m^2", yaw = "0 kg*m^2" }
+centre_of_gravity = ["0 m", "0 m", "0 m"]
+held = ["lateral", "roll", "pitch", "yaw"]
+[[element]]
+name = "conical spring"
+upper = "load"
+point = ["0 m", "0 m", "0 m"]
+load = "1000 kgf"
+vertical = [{ kind = "coil", load_deflection = { deflection = ["0 mm", "70 mm", "170 mm"], load = ["0 kgf", "1820 kgf", "5380 kgf"] } }]
+)";
+
+void expect_curve_error(const std::string& from, const std::string& to, const std::vector<std::string>& parts) {
+  std::string text = kCurve;
+  text.replace(text.find(from), from.size(), to);
+  try {
+    load_vehicle(write_temp("curve.toml", text));
+    FAIL() << "no error for " << to;
+  } catch (const InputError& e) {
+    for (const auto& part : parts) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
+TEST(VehicleReader, LoadDeflectionCurve) {
+  const Vehicle v = load_vehicle(write_temp("curve.toml", kCurve));
+  const SpringStage& stage = v.elements.at(0).vertical_stages.at(0);
+  ASSERT_TRUE(stage.curve);
+  EXPECT_EQ(stage.curve->deflection.size(), 3u);
+  // 1000 kgf sits on the first line: 1820 kgf / 7 cm = 260 kg/cm.
+  EXPECT_NEAR(stage.stiffness, 260 * kKgfPerCm, 1e-6);
+}
+
+TEST(VehicleReader, LoadDeflectionCurveErrors) {
+  expect_curve_error("\"0 mm\", \"70 mm\"", "\"5 mm\", \"70 mm\"", {"load_deflection", "first point 0 and 0"});
+  expect_curve_error("\"70 mm\", \"170 mm\"", "\"70 mm\", \"60 mm\"", {"load_deflection", "must increase"});
+  expect_curve_error("\"1820 kgf\", \"5380 kgf\"", "\"1820 kgf\", \"1000 kgf\"", {"load", "never gives way"});
+  expect_curve_error("\"1820 kgf\", \"5380 kgf\"", "\"1820 kgf\"", {"load", "has 2 points, deflection has 3"});
+  expect_curve_error("\"170 mm\"]", "\"170 kgf\"]", {"deflection", "expected a length"});
+  expect_curve_error("load = \"1000 kgf\"", "load = \"6000 kgf\"", {"beyond the last point"});
+  expect_curve_error("load = \"1000 kgf\"\n", "", {"needs the static load"});
+}
+
+}  // namespace
+}  // namespace railmodal::test
