@@ -15,6 +15,7 @@
 #include "railmodal/critical_speed_report.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/excitation.hpp"
+#include "railmodal/fft_check_report.hpp"
 #include "railmodal/input.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"

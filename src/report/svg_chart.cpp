@@ -165,6 +165,16 @@ std::string svg_chart(const Chart& chart) {
   for (const auto& [y, text] : labels)
     s << "<text x=\"" << left + pw + 6 << "\" y=\"" << y << "\" fill=\"#555\" font-size=\"11\">" << html_escape(text)
       << "</text>\n";
+  // Labels of vertical lines above the plot, pushed apart where lines lie closer than a label.
+  std::vector<std::pair<double, std::string>> tops;
+  for (const auto& l : chart.lines)
+    if (l.vertical && !l.label.empty() && l.value >= x0 && l.value <= x1) tops.push_back({X(l.value), l.label});
+  std::sort(tops.begin(), tops.end());
+  for (size_t k = 1; k < tops.size(); ++k)
+    tops[k].first = std::max(tops[k].first, tops[k - 1].first + 3 + 6.2 * static_cast<double>(tops[k - 1].second.size()));
+  for (const auto& [x, text] : tops)
+    s << "<text x=\"" << x << "\" y=\"" << top - 4 << "\" fill=\"#555\" font-size=\"10\">" << html_escape(text)
+      << "</text>\n";
   // Legend in the plot's top-left corner, on a white card.
   std::vector<size_t> named;
   for (size_t k = 0; k < chart.series.size(); ++k)

@@ -1,5 +1,5 @@
 // railmodal simulate SCENE [--vehicle WAGON] [--format csv|json] [-o OUT]
-// railmodal fft-check SCENE [--vehicle WAGON] [--format table|csv|json] [-o OUT]
+// railmodal fft-check SCENE [--vehicle WAGON] [--format table|csv|json|html] [-o OUT]
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -73,8 +73,12 @@ std::string history_text(const TimeHistory& h, const Scene& scene, const Vehicle
   return out.str();
 }
 
-std::string checks_text(const FftCheckResult& r, const Scene& scene, const std::string& format) {
+std::string checks_text(const FftCheckResult& r, const Scene& scene, const Vehicle& vehicle, const std::string& format) {
   std::ostringstream out;
+  if (format == "html") {
+    write_fft_check_html(out, r, scene, vehicle);
+    return out.str();
+  }
   if (format == "json") {
     nlohmann::json j;
     j["scene"] = scene.name;
@@ -160,7 +164,7 @@ int run(const SimulateOptions& o, bool check) {
     if (const int code = load(o, &scene, &vehicle); code != kSuccess) return code;
     std::string text;
     try {
-      text = check ? checks_text(fft_check(scene, vehicle), scene, o.format)
+      text = check ? checks_text(fft_check(scene, vehicle), scene, vehicle, o.format)
                    : history_text(simulate_scene(scene, vehicle), scene, vehicle, o.format);
     } catch (const std::invalid_argument& e) {
       throw InputError(o.scene, 0, 0, e.what());
@@ -191,12 +195,13 @@ std::function<int()> add(CLI::App& app, const std::string& name, const std::stri
 }  // namespace
 
 std::function<int()> add_simulate_command(CLI::App& app) {
-  return add(app, "simulate", "Time histories of a scene's linear simulation (CSV or JSON)", false, {"csv", "json"});
+  return add(app, "simulate", "Time histories of a scene's simulation (CSV or JSON; JSON adds the nonlinear events)", false,
+             {"csv", "json"});
 }
 
 std::function<int()> add_fft_check_command(CLI::App& app) {
   return add(app, "fft-check", "Spectral peaks of a scene's simulated response against the modal frequencies", true,
-             {"table", "csv", "json"});
+             {"table", "csv", "json", "html"});
 }
 
 }  // namespace railmodal::cli

@@ -1,0 +1,178 @@
+#include "railmodal/fft_check_report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "report/svg_chart.hpp"
+
+namespace railmodal {
+
+using report::html_escape;
+
+namespace {
+
+// Histories are drawn from at most this many points per line: a 20 s record at 1 ms is
+// 20 001 samples, more than a 500 px plot can show, and the page stays small.
+constexpr Eigen::Index kMaxPlotPoints = 4000;
+// Event lines stop being readable beyond this many.
+constexpr size_t kMaxEventLines = 24;
+
+bool is_rotation(const std::string& dof) {
+  return dof.find(".pitch") != std::string::npos || dof.find(".roll") != std::string::npos ||
+         dof.find(".yaw") != std::string::npos;
+}
+
+std::string fixed(double v, int digits) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << v;
+  return out.str();
+}
+
+// The first ten periods of the lowest checked mode (all of a shorter record): long records of
+// several DOFs are a solid band at page width; the spectra cover the whole record.
+double shown_duration(const FftCheckResult& r) {
+  const double end = r.history.time(r.history.time.size() - 1);
+  double lowest = 0.0;
+  for (const auto& c : r.checks)
+    if (c.modal_hz > 0.0 && (lowest == 0.0 || c.modal_hz < lowest)) lowest = c.modal_hz;
+  return lowest > 0.0 ? std::min(end, 10.0 / lowest) : end;
+}
+
+report::Chart history_chart(const FftCheckResult& r) {
+  report::Chart c;
+  c.id = "history";
+  c.width = 960;
+  c.title = "Time histories";
+  c.x_label = "time [s]";
+  c.y_label = "displacement [mm, mrad]";
+  const auto& h = r.history;
+  const double until = shown_duration(r);
+  Eigen::Index samples = 0;
+  while (samples < h.time.size() && h.time(samples) <= until) ++samples;
+  const Eigen::Index stride = std::max<Eigen::Index>(1, samples / kMaxPlotPoints);
+  for (const auto& label : r.spectrum_dofs) {
+    const auto at = std::find(h.labels.begin(), h.labels.end(), label);
+    if (at == h.labels.end()) continue;
+    const Eigen::Index col = at - h.labels.begin();
+    report::ChartSeries s;
+    s.label = label + (is_rotation(label) ? " [mrad]" : " [mm]");
+    for (Eigen::Index i = 0; i < samples; i += stride) {
+      s.x.push_back(h.time(i));
+      s.y.push_back(1e3 * h.displacement(i, col));
+    }
+    c.series.push_back(std::move(s));
+  }
+  c.x_min = 0.0;
+  c.x_max = until;
+  if (!h.events.empty() && h.events.size() <= kMaxEventLines)
+    for (const auto& e : h.events) c.lines.push_back({"", e.time, true});
+  return c;
+}
+
+report::Chart spectrum_chart(const FftCheckResult& r, size_t k) {
+  const Spectrum& s = r.spectra[k];
+  report::Chart c;
+  c.id = "spectrum-" + std::to_string(k);
+  c.width = 960;
+  c.title = "Amplitude spectrum of " + r.spectrum_dofs[k] + " (" + to_string(s.window) + " window)";
+  c.x_label = "frequency [Hz]";
+  c.y_label = is_rotation(r.spectrum_dofs[k]) ? "amplitude [mrad]" : "amplitude [mm]";
+  double top = 0.0;
+  for (const auto& check : r.checks) top = std::max(top, check.modal_hz);
+  top = top > 0.0 ? 1.5 * top : s.sampling_rate / 2;
+  report::ChartSeries line;
+  line.label = r.spectrum_dofs[k];
+  for (Eigen::Index b = 0; b < s.amplitude.size() && s.frequency(b) <= top; ++b) {
+    line.x.push_back(s.frequency(b));
+    line.y.push_back(1e3 * s.amplitude(b));
+  }
+  c.series.push_back(std::move(line));
+  c.x_min = 0.0;
+  c.x_max = top;
+  for (const auto& check : r.checks)
+    c.lines.push_back({std::to_string(check.mode), check.modal_hz, true});
+  return c;
+}
+
+void checks_table(std::ostream& out, const FftCheckResult& r) {
+  out << "<table><tr><th>#</th><th>mode</th><th>dof</th><th>modal [Hz]</th><th>peak [Hz]</th><th>rel. error</th>"
+         "<th>resolution [Hz]</th><th>check</th></tr>\n";
+  for (const auto& c : r.checks) {
+    out << "<tr><td class=n>" << c.mode << "</td><td>" << html_escape(c.mode_name) << "</td><td>" << html_escape(c.dof)
+        << "</td><td class=n>" << fixed(c.modal_hz, 4) << "</td>";
+    if (c.peak_hz) {
+      std::ostringstream rel;
+      rel << std::scientific << std::setprecision(2) << c.rel_error;
+      out << "<td class=n>" << fixed(*c.peak_hz, 4) << "</td><td class=n>" << rel.str() << "</td><td class=n>"
+          << fixed(c.resolution_hz, 4) << "</td><td>" << (c.within_resolution ? "ok" : "<b>outside the resolution</b>")
+          << "</td>";
+    } else {
+      out << "<td class=n>—</td><td></td><td></td><td>not excited (no peak near it)</td>";
+    }
+    out << "</tr>\n";
+  }
+  out << "</table>\n";
+}
+
+void swings_table(std::ostream& out, const FftCheckResult& r) {
+  const Swings& w = *r.swings;
+  out << "<h2>Half periods (nonlinear scene)</h2>\n<p>Friction and kinks broaden the spectral lines; the half periods of <code>"
+      << html_escape(w.dof) << "</code> are read between its turning points instead (linear: " << fixed(r.linear_half_period_s, 4)
+      << " s).</p>\n<table><tr><th>#</th><th>turn at [s]</th><th>displacement</th><th>half period [s]</th></tr>\n";
+  const auto halves = w.half_periods_between_turns();
+  for (size_t i = 0; i < w.turning_times.size(); ++i) {
+    out << "<tr><td class=n>" << i + 1 << "</td><td class=n>" << fixed(w.turning_times[i], 4) << "</td><td class=n>"
+        << fixed(w.turning_values[i], 6) << "</td><td class=n>" << (i > 0 ? fixed(halves[i - 1], 4) : "") << "</td></tr>\n";
+  }
+  out << "</table>\n";
+  if (w.comes_to_rest) out << "<p>Then at rest: a spring has stuck in its dead band.</p>\n";
+  const auto crossings = w.half_periods_between_crossings();
+  if (!crossings.empty()) {
+    out << "<p>Half periods between passes through the static position [s]:";
+    for (size_t i = 0; i < crossings.size() && i < 12; ++i) out << " " << fixed(crossings[i], 4);
+    if (crossings.size() > 12) out << " … (" << crossings.size() << " in all)";
+    out << "</p>\n";
+  }
+}
+
+}  // namespace
+
+void write_fft_check_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, const Vehicle& vehicle) {
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>FFT check: " << html_escape(scene.name)
+      << "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:24px auto;color:#222}"
+         "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:3px 8px}"
+         "td.n{text-align:right;font-variant-numeric:tabular-nums}th{background:#eee}</style></head><body>\n";
+  out << "<h1>FFT check: " << html_escape(scene.name) << "</h1>\n<p>Vehicle <b>" << html_escape(vehicle.name)
+      << "</b> (<code>" << html_escape(scene.vehicle_file) << "</code>). ";
+  const auto& sim = *scene.simulation;
+  out << fixed(sim.duration, 3) << " s at a step of " << fixed(1e3 * sim.time_step, 3) << " ms";
+  if (sim.speed > 0.0) out << ", " << fixed(sim.speed * 3.6, 2) << " km/h";
+  out << "; effects: ";
+  if (sim.effects.empty()) out << "none (the linear, undamped model)";
+  for (size_t i = 0; i < sim.effects.size(); ++i) out << (i ? ", " : "") << html_escape(sim.effects[i]);
+  out << ".</p>\n";
+  if (!r.spectra.empty()) {
+    const Spectrum& s = r.spectra.front();
+    out << "<p>Spectra: " << to_string(s.window) << " window, " << s.signal_length << " samples zero-padded to "
+        << s.transform_length << " (bin spacing " << fixed(s.bin_spacing, 4) << " Hz, resolution fs/N = "
+        << fixed(s.resolution, 4) << " Hz); peak amplitudes of the displacement less its mean.</p>\n";
+  }
+  out << "<h2>Checks</h2>\n";
+  checks_table(out, r);
+  if (r.swings) swings_table(out, r);
+  out << "<h2>Time histories</h2>\n" << report::svg_chart(history_chart(r)) << "\n<p>";
+  if (shown_duration(r) < r.history.time(r.history.time.size() - 1))
+    out << "The first " << fixed(shown_duration(r), 2) << " s (ten periods of the lowest mode) of the record. ";
+  if (!r.history.events.empty() && r.history.events.size() <= kMaxEventLines)
+    out << "Dotted lines: the " << r.history.events.size() << " stick/slip/kink events. ";
+  else if (!r.history.events.empty())
+    out << r.history.events.size() << " stick/slip/kink events, too many to mark (<code>railmodal simulate --format json</code> "
+        << "lists them). ";
+  out << "</p>\n<h2>Spectra</h2>\n<p>Dotted lines: the modal frequencies, numbered as in the checks.</p>\n";
+  for (size_t k = 0; k < r.spectra.size(); ++k) out << report::svg_chart(spectrum_chart(r, k)) << "\n";
+  out << "</body></html>\n";
+}
+
+}  // namespace railmodal
