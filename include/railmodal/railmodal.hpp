@@ -17,6 +17,7 @@
 #include "railmodal/excitation.hpp"
 #include "railmodal/input.hpp"
 #include "railmodal/linear_system.hpp"
+#include "railmodal/matrix_market.hpp"
 #include "railmodal/modal.hpp"
 #include "railmodal/report.hpp"
 #include "railmodal/response.hpp"
