@@ -5,6 +5,7 @@
 
 #include <Eigen/SparseCore>
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
