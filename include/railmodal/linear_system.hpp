@@ -23,7 +23,7 @@ std::optional<DofSet> dof_set_from_string(const std::string& word);
 /// One degree of freedom: a motion of a body's reference point.
 struct Dof {
   std::string label;  ///< "<body>.<motion>", e.g. "body.bounce", "bogie1.pitch"
-  int body = 0;       ///< index into the vehicle's bodies
+  int body = 0;       ///< index into the vehicle's bodies; -1 for matrices read from files
   Motion motion = Motion::bounce;
 };
 

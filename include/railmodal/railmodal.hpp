@@ -18,6 +18,7 @@
 #include "railmodal/fft_check_report.hpp"
 #include "railmodal/input.hpp"
 #include "railmodal/linear_system.hpp"
+#include "railmodal/matrix_market.hpp"
 #include "railmodal/modal.hpp"
 #include "railmodal/report.hpp"
 #include "railmodal/response.hpp"

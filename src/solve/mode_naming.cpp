@@ -62,10 +62,22 @@ std::optional<CentreOfOscillation> centre_of(const Body& body, const BodyVector&
   return c;
 }
 
+// Matrices read from files have no bodies: the DOF with the most kinetic energy,
+// φᵢ (Mφ)ᵢ, names the mode.
+ModeDescription describe_by_dof(const LinearSystem& system, const Eigen::VectorXd& shape) {
+  const Eigen::VectorXd energy = shape.cwiseProduct(system.mass * shape);
+  Eigen::Index lead = 0;
+  energy.maxCoeff(&lead);
+  ModeDescription d;
+  d.name = system.dofs[lead].label;
+  return d;
+}
+
 }  // namespace
 
 ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape) {
   const auto& bodies = system.vehicle.bodies;
+  if (bodies.empty()) return describe_by_dof(system, shape);
   std::vector<BodyVector> motion(bodies.size(), BodyVector::Zero());
   for (size_t i = 0; i < system.dofs.size(); ++i)
     motion[system.dofs[i].body](static_cast<int>(system.dofs[i].motion)) = shape(static_cast<int>(i));

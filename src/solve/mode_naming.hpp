@@ -26,6 +26,8 @@ struct ModeDescription {
 /// oscillation lies below / above the CG.
 /// Bodies named alike but for a trailing number (bogie1, bogie2) that share the energy
 /// (the second at least half the first) are named together: "bogies bounce, antiphase".
+/// A system without bodies (matrices read from files) is named after the DOF with the most
+/// kinetic energy φᵢ (Mφ)ᵢ, e.g. "dof3" or "body.bounce", with no centre of oscillation.
 ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape);
 
 }  // namespace railmodal::solve

@@ -1,4 +1,5 @@
 // railmodal modes FILE [--dofs vertical|lateral|all] [--format table|csv|json] [-o OUT]
+// railmodal modes --mass M.mtx --stiffness K.mtx [--damping C.mtx] [--format ...] [-o OUT]
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -9,25 +10,60 @@
 namespace railmodal::cli {
 namespace {
 
+// The dense solver holds M, K and a few n × n work matrices: 10 000 DOFs is ~4 GB.
+constexpr long long kMaxDenseDofs = 10000;
+
 struct ModesOptions {
   std::string file;
+  std::string mass, stiffness, damping;
   std::string dofs = "all";
+  bool dofs_given = false;
   std::string format = "table";
   std::string output = "-";
 };
 
+int usage_error(const std::string& message) {
+  std::cerr << "railmodal: error: " << message << "\nRun 'railmodal modes --help' for usage.\n";
+  return kUsage;
+}
+
+// What the command was given is either a vehicle or matrices; "" if that is fine.
+std::string input_problem(const ModesOptions& o) {
+  const bool matrices = !o.mass.empty() || !o.stiffness.empty() || !o.damping.empty();
+  if (!o.file.empty() && matrices)
+    return "give either a vehicle file or --mass and --stiffness matrices, not both";
+  if (o.file.empty() && !matrices) return "give a vehicle file (TOML) or --mass M.mtx --stiffness K.mtx";
+  if (matrices && o.mass.empty()) return "--stiffness and --damping need --mass";
+  if (matrices && o.stiffness.empty()) return "--mass needs --stiffness";
+  if (matrices && o.dofs_given)
+    return "--dofs selects motions of a vehicle's bodies; it does not apply to --mass/--stiffness matrices";
+  return "";
+}
+
+LinearSystem vehicle_system(const ModesOptions& o) {
+  const Vehicle vehicle = load_vehicle(o.file);
+  try {
+    return assemble(vehicle, *dof_set_from_string(o.dofs));  // CLI11 checked the word
+  } catch (const std::invalid_argument& e) {
+    throw InputError(o.file, 0, 0, e.what());
+  }
+}
+
+LinearSystem matrix_system(const ModesOptions& o) {
+  const MatrixModel model = load_matrix_model(o.mass, o.stiffness, o.damping);
+  if (static_cast<long long>(model.labels.size()) > kMaxDenseDofs)
+    throw InputError(o.mass, 0, 0, std::to_string(model.labels.size()) + " degrees of freedom: more than the " +
+                                       std::to_string(kMaxDenseDofs) + " the dense modal solver takes");
+  return to_linear_system(model);
+}
+
 int run(const ModesOptions& o) {
-  // CLI11 has checked the words against the lists below.
-  const DofSet set = *dof_set_from_string(o.dofs);
+  if (const std::string problem = input_problem(o); !problem.empty()) return usage_error(problem);
+  const bool matrices = o.file.empty();
+  const std::string source = matrices ? o.mass + ", " + o.stiffness : o.file;  // for numerical errors
   const OutputFormat format = *output_format_from_string(o.format);
   try {
-    const Vehicle vehicle = load_vehicle(o.file);
-    LinearSystem system;
-    try {
-      system = assemble(vehicle, set);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(o.file, 0, 0, e.what());
-    }
+    const LinearSystem system = matrices ? matrix_system(o) : vehicle_system(o);
     if (system.size() == 0) {
       std::cerr << o.file << ": error: no free degrees of freedom in the " << o.dofs << " set\n";
       return kInput;
@@ -40,7 +76,7 @@ int run(const ModesOptions& o) {
     std::cerr << e.what() << "\n";
     return kInput;
   } catch (const NumericalError& e) {
-    std::cerr << o.file << ": error: numerical failure: " << e.what() << "\n";
+    std::cerr << source << ": error: numerical failure: " << e.what() << "\n";
     return kNumerical;
   }
 }
@@ -49,18 +85,25 @@ int run(const ModesOptions& o) {
 
 std::function<int()> add_modes_command(CLI::App& app) {
   auto options = std::make_shared<ModesOptions>();
-  CLI::App* cmd = app.add_subcommand("modes", "Natural frequencies, periods and mode shapes of a vehicle");
-  cmd->add_option("file", options->file, "Vehicle file (TOML), e.g. data/vehicles/resort_car.toml")
-      ->required();
-  cmd->add_option("--dofs", options->dofs, "Motions: vertical (bounce, pitch), lateral (lateral, roll, yaw) or all")
-      ->check(CLI::IsMember({"vertical", "lateral", "all"}))
-      ->capture_default_str();
+  CLI::App* cmd = app.add_subcommand(
+      "modes", "Natural frequencies, periods and mode shapes of a vehicle, or of M and K matrices (Matrix Market)");
+  cmd->add_option("file", options->file, "Vehicle file (TOML), e.g. data/vehicles/resort_car.toml");
+  cmd->add_option("--mass", options->mass, "Mass matrix M (Matrix Market .mtx), instead of a vehicle file");
+  cmd->add_option("--stiffness", options->stiffness, "Stiffness matrix K (Matrix Market), with --mass");
+  cmd->add_option("--damping", options->damping, "Damping matrix C (Matrix Market), optional with --mass");
+  CLI::Option* dofs =
+      cmd->add_option("--dofs", options->dofs, "Motions: vertical (bounce, pitch), lateral (lateral, roll, yaw) or all")
+          ->check(CLI::IsMember({"vertical", "lateral", "all"}))
+          ->capture_default_str();
   cmd->add_option("--format", options->format, "Output format")
       ->check(CLI::IsMember({"table", "csv", "json"}))
       ->capture_default_str();
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
-  return [options] { return run(*options); };
+  return [options, dofs] {
+    options->dofs_given = dofs->count() > 0;
+    return run(*options);
+  };
 }
 
 }  // namespace railmodal::cli

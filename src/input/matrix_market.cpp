@@ -1,0 +1,415 @@
+// Matrix Market reader: the subset finite-element tools export for M, C and K (square,
+// real or integer, coordinate or array, general or symmetric), with every error located at
+// its file, line and column. Format: https://math.nist.gov/MatrixMarket/formats.html.
+#include "railmodal/matrix_market.hpp"
+
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string_view>
+
+#include "railmodal/errors.hpp"
+
+namespace railmodal {
+namespace {
+
+constexpr const char* kBanner = "%%MatrixMarket matrix coordinate real general";
+// A bigger size line is a corrupt file, not a model: the sparse matrix alone would need
+// 4 bytes per row before a single entry is read.
+constexpr long long kMaxRows = 10'000'000;
+
+struct Token {
+  std::string_view text;
+  int column = 0;  // 1-based
+};
+
+std::vector<Token> split(std::string_view line) {
+  std::vector<Token> tokens;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    const size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+    if (i > start) tokens.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
+  }
+  return tokens;
+}
+
+std::string lower(std::string_view word) {
+  std::string out(word);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string quoted(std::string_view text) {
+  // A corrupt token could be long: quote the start of it only.
+  constexpr size_t kShown = 40;
+  return "'" + std::string(text.substr(0, kShown)) + (text.size() > kShown ? "...'" : "'");
+}
+
+// 0 if `line` is UTF-8 text without control characters (tab allowed), else the 1-based
+// column of the first offending byte and a description in *what.
+int text_problem(std::string_view line, std::string* what) {
+  const auto byte = [](unsigned char b) {
+    static const char* hex = "0123456789abcdef";
+    return std::string("0x") + hex[b >> 4] + hex[b & 15];
+  };
+  for (size_t i = 0; i < line.size();) {
+    const auto b = static_cast<unsigned char>(line[i]);
+    if (b < 0x80) {
+      if ((b < 0x20 && b != '\t') || b == 0x7f) {
+        *what = "control character " + byte(b) + ": this is not a text file";
+        return static_cast<int>(i) + 1;
+      }
+      ++i;
+      continue;
+    }
+    // Lead byte: length and the smallest code point it may encode (no overlong forms).
+    int length = 0;
+    uint32_t code = 0, least = 0;
+    if ((b & 0xe0) == 0xc0) length = 2, code = b & 0x1f, least = 0x80;
+    else if ((b & 0xf0) == 0xe0) length = 3, code = b & 0x0f, least = 0x800;
+    else if ((b & 0xf8) == 0xf0) length = 4, code = b & 0x07, least = 0x10000;
+    bool ok = length > 0 && i + length <= line.size();
+    for (int k = 1; ok && k < length; ++k) {
+      const auto c = static_cast<unsigned char>(line[i + k]);
+      ok = (c & 0xc0) == 0x80;
+      code = (code << 6) | (c & 0x3f);
+    }
+    if (!ok || code < least || code > 0x10ffff || (code >= 0xd800 && code <= 0xdfff)) {
+      *what = "byte " + byte(b) + " is not UTF-8 text";
+      return static_cast<int>(i) + 1;
+    }
+    i += length;
+  }
+  return 0;
+}
+
+// Reads lines, counting them, dropping a CR before the LF, and rejecting what is not text.
+class Lines {
+ public:
+  Lines(std::istream& in, const std::string& file) : in_(in), file_(file) {}
+
+  bool next(std::string* line) {
+    if (!std::getline(in_, *line)) return false;
+    ++number_;
+    if (!line->empty() && line->back() == '\r') line->pop_back();
+    std::string what;
+    if (const int column = text_problem(*line, &what)) fail(column, what);
+    return true;
+  }
+  int number() const { return number_; }
+  [[noreturn]] void fail(int column, const std::string& message) const { fail_at(number_, column, message); }
+  [[noreturn]] void fail_at(int line, int column, const std::string& message) const {
+    throw InputError(file_, line, column, message);
+  }
+
+ private:
+  std::istream& in_;
+  const std::string& file_;
+  int number_ = 0;
+};
+
+bool is_blank(std::string_view line) { return line.find_first_not_of(" \t") == std::string_view::npos; }
+bool is_comment(std::string_view line) {
+  const size_t first = line.find_first_not_of(" \t");
+  return first != std::string_view::npos && line[first] == '%';
+}
+
+// A non-negative integer written in decimal digits only.
+std::optional<long long> count_of(std::string_view text) {
+  long long value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < 0 || text[0] == '-') return std::nullopt;
+  return value;
+}
+
+struct Header {
+  bool coordinate = true;
+  bool integer = false;
+  bool symmetric = false;
+};
+
+Header parse_banner(const std::string& line, const Lines& lines) {
+  const std::string how = std::string("; the first line must be the banner '") + kBanner + "'";
+  const auto words = split(line);
+  if (words.empty() || words[0].column != 1 || lower(words[0].text) != "%%matrixmarket")
+    lines.fail(1, "not a Matrix Market file" + how);
+  if (words.size() != 5)
+    lines.fail(1, "the banner needs four words after %%MatrixMarket (matrix, coordinate or array, "
+                  "real or integer, general or symmetric), found " + std::to_string(words.size() - 1));
+  Header h;
+  const std::string object = lower(words[1].text), format = lower(words[2].text);
+  const std::string field = lower(words[3].text), symmetry = lower(words[4].text);
+  if (object != "matrix")
+    lines.fail(words[1].column, "object " + quoted(words[1].text) + " is not supported: only 'matrix'");
+  if (format == "array") h.coordinate = false;
+  else if (format != "coordinate")
+    lines.fail(words[2].column, "unknown format " + quoted(words[2].text) + ": expected coordinate or array");
+  if (field == "integer") h.integer = true;
+  else if (field == "pattern" || field == "complex")
+    lines.fail(words[3].column, "field '" + field + "' is not supported: mass, damping and stiffness "
+                                "matrices need real values (real or integer)");
+  else if (field != "real")
+    lines.fail(words[3].column, "unknown field " + quoted(words[3].text) + ": expected real or integer");
+  if (symmetry == "symmetric") h.symmetric = true;
+  else if (symmetry == "hermitian" || symmetry == "skew-symmetric")
+    lines.fail(words[4].column, "symmetry '" + symmetry + "' is not supported: expected general or symmetric");
+  else if (symmetry != "general")
+    lines.fail(words[4].column, "unknown symmetry " + quoted(words[4].text) + ": expected general or symmetric");
+  return h;
+}
+
+double parse_value(const Token& t, bool integer, const Lines& lines) {
+  std::string_view text = t.text;
+  if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
+  if (integer) {
+    long long value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc() || end != text.data() + text.size())
+      lines.fail(t.column, quoted(t.text) + " is not an integer (the banner declares integer values)");
+    return static_cast<double>(value);
+  }
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error == std::errc::result_out_of_range)
+    lines.fail(t.column, "value " + quoted(t.text) + " is outside the range of a double");
+  if (error != std::errc() || end != text.data() + text.size())
+    lines.fail(t.column, quoted(t.text) + " is not a number");
+  if (!std::isfinite(value)) lines.fail(t.column, "value " + quoted(t.text) + " is not a finite number");
+  return value;
+}
+
+// `% railmodal ...` comments naming degrees of freedom (docs/input.md).
+struct DofNames {
+  struct Name {
+    std::string label;
+    int line = 0, column = 0;
+  };
+  std::map<long long, Name> by_index;  // 1-based
+  long long listed = 0;                // DOFs named by `dofs:` lists so far
+  int list_line = 0, indexed_line = 0;
+
+  void read(std::string_view comment, const Lines& lines) {
+    const auto words = split(comment);
+    // words[0] is "%" or "%railmodal"-like; accept "% railmodal" and "%railmodal".
+    size_t k = 0;
+    if (words.empty()) return;
+    const size_t after = words[0].text.find_first_not_of('%');
+    const std::string_view first = after == std::string_view::npos ? std::string_view() : words[0].text.substr(after);
+    if (first.empty()) {
+      if (words.size() < 2 || words[1].text != "railmodal") return;
+      k = 2;
+    } else {
+      if (first != "railmodal") return;
+      k = 1;
+    }
+    const int line = lines.number();
+    const std::string forms = "expected '% railmodal dofs: LABEL ...' or '% railmodal dof INDEX LABEL'";
+    if (k >= words.size()) lines.fail(words[k - 1].column, "empty railmodal comment: " + forms);
+    const Token& keyword = words[k];
+    if (keyword.text == "dofs:") {
+      if (indexed_line) lines.fail(keyword.column, "a file names its DOFs either with 'railmodal dofs:' lists or "
+                                                   "with 'railmodal dof INDEX LABEL' lines, not both");
+      if (!list_line) list_line = line;
+      for (size_t w = k + 1; w < words.size(); ++w) add(++listed, words[w], line, lines);
+    } else if (keyword.text == "dof") {
+      if (list_line) lines.fail(keyword.column, "a file names its DOFs either with 'railmodal dofs:' lists or "
+                                                "with 'railmodal dof INDEX LABEL' lines, not both");
+      if (words.size() != k + 3) lines.fail(keyword.column, "expected '% railmodal dof INDEX LABEL'");
+      const auto index = count_of(words[k + 1].text);
+      if (!index || *index == 0)
+        lines.fail(words[k + 1].column, "DOF index " + quoted(words[k + 1].text) + " is not a positive integer");
+      if (!indexed_line) indexed_line = line;
+      add(*index, words[k + 2], line, lines);
+    } else {
+      lines.fail(keyword.column, "unknown railmodal comment " + quoted(keyword.text) + ": " + forms);
+    }
+  }
+
+  void add(long long index, const Token& label, int line, const Lines& lines) {
+    for (const auto& [i, name] : by_index)
+      if (name.label == label.text)
+        lines.fail(label.column, "DOF label " + quoted(label.text) + " is given twice (also DOF " +
+                                     std::to_string(i) + ", line " + std::to_string(name.line) + ")");
+    auto [it, inserted] = by_index.emplace(index, Name{std::string(label.text), line, label.column});
+    if (!inserted)
+      lines.fail(label.column, "DOF " + std::to_string(index) + " is already named '" + it->second.label +
+                                   "' (line " + std::to_string(it->second.line) + ")");
+  }
+
+  // Once the size is known: every index in range, a list complete.
+  std::vector<std::string> labels(long long n, const Lines& lines) const {
+    if (by_index.empty()) return {};
+    for (const auto& [i, name] : by_index)
+      if (i > n)
+        lines.fail_at(name.line, name.column, (list_line ? "the 'railmodal dofs:' comments name more DOFs than the "
+                                                         : "DOF index " + std::to_string(i) + " exceeds the ") +
+                                                  std::to_string(n) + " rows of the matrix");
+    if (list_line && listed < n)
+      lines.fail_at(list_line, 1, "the 'railmodal dofs:' comments name " + std::to_string(listed) +
+                                      " DOFs but the matrix has " + std::to_string(n) + " rows");
+    std::vector<std::string> out(static_cast<size_t>(n));
+    for (const auto& [i, name] : by_index) out[static_cast<size_t>(i - 1)] = name.label;
+    return out;
+  }
+};
+
+struct Entry {
+  int row = 0, col = 0;  // 0-based
+  double value = 0.0;
+  int line = 0, column = 0;
+};
+
+std::string number_text(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// The first entry in file order whose mirror differs beyond round-off (see the header).
+void check_symmetric(const Eigen::SparseMatrix<double>& A, const std::vector<Entry>& entries, const Lines& lines) {
+  double largest = 0.0;
+  for (int k = 0; k < A.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it) largest = std::max(largest, std::abs(it.value()));
+  for (const Entry& e : entries) {
+    if (e.row == e.col) continue;
+    const double a = A.coeff(e.row, e.col), b = A.coeff(e.col, e.row);
+    if (std::abs(a - b) <= 1e-10 * std::max(std::abs(a), std::abs(b)) + 1e-14 * largest) continue;
+    const auto at = [](int i, int j) { return "(" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + ")"; };
+    lines.fail_at(e.line, e.column,
+                  "the matrix is not symmetric: entry " + at(e.row, e.col) + " is " + number_text(a) + " but " +
+                      at(e.col, e.row) + " is " + number_text(b) +
+                      "; mass and stiffness matrices must be symmetric (a 'general' file holds both "
+                      "triangles; a file holding only the lower one must say 'symmetric')");
+  }
+}
+
+}  // namespace
+
+MatrixMarketMatrix read_matrix_market(const std::string& path, bool require_symmetric) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, 0, "cannot open the file");
+  Lines lines(in, path);
+  std::string line;
+  if (!lines.next(&line)) lines.fail(0, std::string("the file is empty; it must start with the banner '") + kBanner + "'");
+  const Header header = parse_banner(line, lines);
+
+  DofNames names;
+  // Size line: the first line that is neither a comment nor blank.
+  std::vector<Token> size;
+  while (lines.next(&line)) {
+    if (is_comment(line)) {
+      names.read(line, lines);
+      continue;
+    }
+    if (is_blank(line)) continue;
+    size = split(line);
+    break;
+  }
+  const std::string size_form = header.coordinate ? "ROWS COLUMNS ENTRIES" : "ROWS COLUMNS";
+  if (size.empty()) lines.fail(0, "the file ends before the size line (" + size_form + ")");
+  const int size_line = lines.number();
+  if (size.size() != (header.coordinate ? 3u : 2u))
+    lines.fail(size[0].column, "the size line of a " + std::string(header.coordinate ? "coordinate" : "array") +
+                                   " file is '" + size_form + "', found " + std::to_string(size.size()) + " words");
+  std::vector<long long> numbers;
+  for (const Token& t : size) {
+    const auto value = count_of(t.text);
+    if (!value) lines.fail(t.column, "size " + quoted(t.text) + " is not a non-negative integer");
+    numbers.push_back(*value);
+  }
+  const long long n = numbers[0];
+  if (numbers[0] != numbers[1])
+    lines.fail(size[0].column, "the matrix is " + std::to_string(numbers[0]) + " × " + std::to_string(numbers[1]) +
+                                   ": mass, damping and stiffness matrices are square");
+  if (n == 0) lines.fail(size[0].column, "the matrix is empty (0 × 0)");
+  if (n > kMaxRows)
+    lines.fail(size[0].column, "the matrix has " + std::to_string(n) + " rows, more than the " +
+                                   std::to_string(kMaxRows) + " railmodal reads");
+  // Array: column by column, the lower triangle only when symmetric.
+  const long long expected = header.coordinate ? numbers[2] : header.symmetric ? n * (n + 1) / 2 : n * n;
+  const std::string expected_text =
+      header.coordinate ? std::to_string(expected) + " entries"
+                        : std::to_string(expected) + " values (a " + (header.symmetric ? "symmetric " : "general ") +
+                              std::to_string(n) + " × " + std::to_string(n) + " array)";
+
+  std::vector<Entry> entries;
+  entries.reserve(static_cast<size_t>(std::min<long long>(expected, 1 << 20)));
+  long long array_row = 0, array_col = 0;
+  while (lines.next(&line)) {
+    if (is_comment(line)) {
+      names.read(line, lines);
+      continue;
+    }
+    if (is_blank(line)) continue;
+    const auto tokens = split(line);
+    if (static_cast<long long>(entries.size()) == expected)
+      lines.fail(tokens[0].column, "more entries than the " + expected_text + " the size line (line " +
+                                       std::to_string(size_line) + ") declares");
+    Entry e;
+    e.line = lines.number();
+    e.column = tokens[0].column;
+    if (header.coordinate) {
+      if (tokens.size() != 3)
+        lines.fail(tokens[0].column, "an entry is 'ROW COLUMN VALUE', found " + std::to_string(tokens.size()) + " words");
+      long long index[2];
+      for (int k = 0; k < 2; ++k) {
+        const auto v = count_of(tokens[k].text);
+        if (!v) lines.fail(tokens[k].column, std::string(k == 0 ? "row" : "column") + " index " +
+                                                 quoted(tokens[k].text) + " is not a positive integer");
+        if (*v < 1 || *v > n)
+          lines.fail(tokens[k].column, std::string(k == 0 ? "row" : "column") + " index " + std::to_string(*v) +
+                                           " is out of range 1.." + std::to_string(n));
+        index[k] = *v - 1;
+      }
+      if (header.symmetric && index[0] < index[1])
+        lines.fail(tokens[0].column, "entry (" + std::to_string(index[0] + 1) + ", " + std::to_string(index[1] + 1) +
+                                         ") lies above the diagonal: a symmetric file stores the lower triangle "
+                                         "(row ≥ column)");
+      e.row = static_cast<int>(index[0]);
+      e.col = static_cast<int>(index[1]);
+      e.value = parse_value(tokens[2], header.integer, lines);
+    } else {
+      if (tokens.size() != 1)
+        lines.fail(tokens[1].column, "an array file holds one value per line, found " + std::to_string(tokens.size()));
+      e.row = static_cast<int>(array_row);
+      e.col = static_cast<int>(array_col);
+      e.value = parse_value(tokens[0], header.integer, lines);
+      if (++array_row == n) {
+        ++array_col;
+        array_row = header.symmetric ? array_col : 0;
+      }
+    }
+    entries.push_back(e);
+  }
+  if (static_cast<long long>(entries.size()) < expected)
+    lines.fail_at(size_line, size.back().column,
+                  "the size line declares " + expected_text + " but the file ends after " + std::to_string(entries.size()));
+
+  MatrixMarketMatrix out;
+  out.symmetric_storage = header.symmetric;
+  out.size_line = size_line;
+  out.dof_labels = names.labels(n, lines);
+  out.labels_line = names.list_line ? names.list_line : names.indexed_line;
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(entries.size() * (header.symmetric ? 2 : 1));
+  for (const Entry& e : entries) {
+    triplets.emplace_back(e.row, e.col, e.value);
+    if (header.symmetric && e.row != e.col) triplets.emplace_back(e.col, e.row, e.value);
+  }
+  out.matrix.resize(static_cast<int>(n), static_cast<int>(n));
+  out.matrix.setFromTriplets(triplets.begin(), triplets.end());  // sums duplicates
+  if (require_symmetric && !header.symmetric) check_symmetric(out.matrix, entries, lines);
+  return out;
+}
+
+}  // namespace railmodal
