@@ -30,7 +30,8 @@ enum class DampedModeKind {
   overdamped,   ///< two real eigenvalues of one sign, λ₁λ₂ = ω², |ζ| > 1: no oscillation
   divergent,    ///< two real eigenvalues of opposite signs: an undamped unstable mode (λ = ω² < 0),
                 ///< which damping slows but cannot stop
-  first_order,  ///< one real eigenvalue of a massless degree of freedom held by a damper
+  first_order,  ///< one real eigenvalue on its own: a massless degree of freedom held by a
+                ///< damper (or, under heavy mixing, a root left over by the matching)
   rigid_body    ///< λ = 0 (a direction nothing restrains), with the rate at which its velocity
                 ///< decays as the second eigenvalue
 };

@@ -30,7 +30,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+#include <limits>
 
 #include "railmodal/damped_modal.hpp"
 #include "railmodal/errors.hpp"
@@ -295,14 +295,17 @@ DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedMod
     for (int k = 0; k < n_slots; ++k) shares.push_back({total > 0.0 ? e(k) / total : 0.0, i, k});
   }
   std::stable_sort(shares.begin(), shares.end(), [](const Share& a, const Share& b) { return a.value > b.value; });
-  for (const Share& s : shares) {
-    Root& r = roots[s.root];
-    const int weight = r.pair ? 2 : 1;
-    if (r.slot < 0 && room[s.slot] >= weight) {
-      r.slot = s.slot;
-      room[s.slot] -= weight;
+  // Pairs first: they need a whole mode, and real roots placed first could leave room only in
+  // halves. The real roots then fill exactly the room left, one each.
+  for (bool pairs : {true, false})
+    for (const Share& s : shares) {
+      Root& r = roots[s.root];
+      const int weight = r.pair ? 2 : 1;
+      if (r.pair == pairs && r.slot < 0 && room[s.slot] >= weight) {
+        r.slot = s.slot;
+        room[s.slot] -= weight;
+      }
     }
-  }
   for (const Share& s : shares)  // no slot with room left (only under heavy mixing): the best one
     if (roots[s.root].slot < 0) roots[s.root].slot = s.slot;
 
