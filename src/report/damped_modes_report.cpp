@@ -68,8 +68,12 @@ void write_table(std::ostream& out, const LinearSystem& system, const DampedModa
     out << std::left << std::setw(4) << m.index << std::setw(34) << m.name << std::right << std::setw(10)
         << fixed_or_blank(m.damped_frequency_hz, 4) << std::setw(9) << fixed_or_blank(m.damping_ratio, 4)
         << std::setw(10) << fixed_or_blank(m.natural_frequency_hz, 4) << std::setw(10)
-        << fixed_or_blank(undamped_frequency(r, m), 4) << "  " << std::left << std::setw(10)
-        << (m.stable ? "stable" : "UNSTABLE") << remark(m) << "\n";
+        << fixed_or_blank(undamped_frequency(r, m), 4) << "  ";
+    const std::string note = remark(m);
+    if (note.empty())
+      out << (m.stable ? "stable" : "UNSTABLE") << "\n";
+    else
+      out << std::left << std::setw(10) << (m.stable ? "stable" : "UNSTABLE") << note << "\n";
   }
   out << "\nf_d = |Im λ|/2π, ζ = −Re λ/|λ|, f_n = |λ|/2π (√(λ₁λ₂)/2π for a real pair), f_0: the undamped\n"
          "mode it comes from (C ignored). Complex mode shapes: --format json.\n";
