@@ -13,6 +13,7 @@
 #pragma once
 
 #include "railmodal/critical_speed_report.hpp"
+#include "railmodal/damped_modal.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/excitation.hpp"
 #include "railmodal/fft_check_report.hpp"

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <string>
 
+#include "railmodal/damped_modal.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"
 
@@ -25,5 +26,15 @@ std::optional<OutputFormat> output_format_from_string(const std::string& word);
 /// "shape": {label: value}}], "condensed", "max_residual", "orthonormality_error"}.
 void write_modes(std::ostream& out, const LinearSystem& system, const ModalResult& result,
                  OutputFormat format);
+
+/// Damped modes. table: one row per mode (index, name, f_d, ζ, f_n, the undamped f_0,
+/// stability, a remark for overdamped, critical, divergent, first-order and rigid-body
+/// modes); csv: the same with the eigenvalues; json: {"vehicle", "dofs", "modes": [{"index",
+/// "name", "kind", "stable", "eigenvalues": [[re, im]], "damped_frequency_hz",
+/// "damping_ratio", "natural_frequency_hz", "undamped_mode", "undamped_frequency_hz",
+/// "decay_rate_per_s", "residual", "shape": {label: [re, im]}}], "condensed", "first_order",
+/// "stable", "max_residual"}; absent quantities are null.
+void write_damped_modes(std::ostream& out, const LinearSystem& system, const DampedModalResult& result,
+                        OutputFormat format);
 
 }  // namespace railmodal

@@ -1,5 +1,5 @@
-// railmodal modes FILE [--dofs vertical|lateral|all] [--format table|csv|json] [-o OUT]
-// railmodal modes --mass M.mtx --stiffness K.mtx [--damping C.mtx] [--format ...] [-o OUT]
+// railmodal modes FILE [--dofs vertical|lateral|all] [--format table|csv|json] [--damped] [-o OUT]
+// railmodal modes --mass M.mtx --stiffness K.mtx [--damping C.mtx] [--format ...] [--damped] [-o OUT]
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -20,6 +20,7 @@ struct ModesOptions {
   bool dofs_given = false;
   std::string format = "table";
   std::string output = "-";
+  bool damped = false;  // complex modes of M q̈ + C q̇ + K q = 0 instead of K φ = λ M φ
 };
 
 int usage_error(const std::string& message) {
@@ -68,9 +69,11 @@ int run(const ModesOptions& o) {
       std::cerr << o.file << ": error: no free degrees of freedom in the " << o.dofs << " set\n";
       return kInput;
     }
-    const ModalResult result = solve_modes(system);
     std::ostringstream text;
-    write_modes(text, system, result, format);
+    if (o.damped)
+      write_damped_modes(text, system, solve_damped_modes(system), format);
+    else
+      write_modes(text, system, solve_modes(system), format);
     return write_output(o.output, text.str());
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
@@ -98,6 +101,9 @@ std::function<int()> add_modes_command(CLI::App& app) {
   cmd->add_option("--format", options->format, "Output format")
       ->check(CLI::IsMember({"table", "csv", "json"}))
       ->capture_default_str();
+  cmd->add_flag("--damped", options->damped,
+                 "Damped modes (viscous dampers in C): damped frequency, damping ratio, stability, "
+                 "and the undamped frequency beside them");
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   return [options, dofs] {

@@ -1,0 +1,435 @@
+// Damped (complex) modes: the state-space eigenproblem of M q̈ + C q̇ + K q = 0 written in
+// the undamped modal coordinates, each eigenvalue matched to the undamped mode it comes from.
+//
+// Coordinates. q = Φ η + G w: Φ holds the mass-normalised undamped modes (massless DOFs
+// recovered statically, as solve_modes() gives them), w the deviation of each massless
+// *damped* DOF from that static follower, G its influence (1 on the DOF itself, the static
+// response −K_uu⁻¹K_ud of the massless undamped DOFs u, 0 on the DOFs with mass). In these
+// coordinates the pencil is exact and small:
+//   λ² diag(I, 0) + λ Ĉ + diag(Λ, K_w),   Ĉ = [Φ G]ᵀ C [Φ G],  K_w = Gᵀ K G,
+// because Φ is M-orthonormal and K-orthogonal and the static recovery makes ΦᵀKG = 0. The
+// massless undamped DOFs carry no equation of their own any more (their rows are satisfied
+// by construction), so no infinite eigenvalues appear; a massless damped DOF gives
+// ẇ = −C_ww⁻¹(C_wη η̇ + K_w w), a first-order state.
+//
+// State. x = (ω₁η₁, η̇₁, ω₂η₂, η̇₂, …, w) with ω_i = √|λ_i|: each undamped mode is the 2×2
+// block [[0, ω],[∓ω, 0]] plus damping terms. This is the energy norm (|ωη|² + |η̇|² is twice
+// the mode's energy), so the state matrix is balanced by construction, and with C = 0 it is
+// block diagonal: the real Schur form needs no rotation and the eigenvalues come out as
+// exactly ±iω_i, ζ = 0. A rigid-body mode's position never enters the equations (Λ_r = 0),
+// so it is left out of the state and reported with the exact eigenvalue 0: keeping it would
+// make a defective double zero that round-off splits by √ε.
+//
+// Solver. Eigen::EigenSolver on the real state matrix (Hessenberg reduction and real Schur
+// form, Golub & Van Loan §7.5): complex eigenvalues come in exact conjugate pairs from its
+// 2×2 blocks, which makes pairing certain; a complex solver would not keep them conjugate, and
+// a generalised (QZ) solver on the 2n pencil would bring back the infinite eigenvalues of the
+// massless DOFs that the coordinates above remove exactly. The w states have other units,
+// so the matrix is balanced by powers of two (Parlett–Reinsch, as LAPACK's dgebal) before the
+// solve: exact in floating point, a no-op on the already balanced mode blocks.
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "railmodal/damped_modal.hpp"
+#include "railmodal/errors.hpp"
+
+namespace railmodal {
+
+const char* to_string(DampedModeKind kind) {
+  switch (kind) {
+    case DampedModeKind::underdamped: return "underdamped";
+    case DampedModeKind::critical: return "critical";
+    case DampedModeKind::overdamped: return "overdamped";
+    case DampedModeKind::divergent: return "divergent";
+    case DampedModeKind::first_order: return "first-order";
+    case DampedModeKind::rigid_body: return "rigid-body";
+  }
+  return "?";
+}
+
+bool DampedModalOptions::is_valid(std::string* why) const {
+  if (!undamped.is_valid(why)) return false;
+  if (!(critical_gap > 0.0 && critical_gap < 1e-2)) {
+    if (why) *why = "critical_gap must satisfy 0 < critical_gap < 1e-2";
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+using cd = std::complex<double>;
+constexpr double kTwoPi = 6.283185307179586476925;
+// Re λ above this fraction of the largest |λ| is growth, not round-off. The state matrix is
+// balanced, so its eigenvalues carry absolute errors of order ε·max|λ| ≈ 2e-16·max|λ| times
+// a modest condition number; 1e-11 leaves that five orders of headroom yet still sees a
+// negative damping ratio of 1e-11·f_max/f on any mode.
+constexpr double kGrowthTolerance = 1e-11;
+
+Eigen::MatrixXd take(const Eigen::MatrixXd& A, const std::vector<int>& rows, const std::vector<int>& cols) {
+  Eigen::MatrixXd out(rows.size(), cols.size());
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t j = 0; j < cols.size(); ++j) out(i, j) = A(rows[i], cols[j]);
+  return out;
+}
+
+// Diagonal similarity D⁻¹AD by powers of two that makes each row and column of the
+// off-diagonal part of similar norm (Parlett & Reinsch 1969; LAPACK dgebal without the
+// permutation). Returns D; A is overwritten with D⁻¹AD.
+Eigen::VectorXd balance(Eigen::MatrixXd& A) {
+  const int n = static_cast<int>(A.rows());
+  Eigen::VectorXd d = Eigen::VectorXd::Ones(n);
+  for (bool done = false; !done;) {
+    done = true;
+    for (int i = 0; i < n; ++i) {
+      const double c = A.col(i).cwiseAbs().sum() - std::abs(A(i, i));
+      const double r = A.row(i).cwiseAbs().sum() - std::abs(A(i, i));
+      if (c == 0.0 || r == 0.0) continue;
+      double f = 1.0, cs = c;
+      while (cs < r / 2.0) { f *= 2.0; cs *= 4.0; }
+      while (cs > r * 2.0) { f /= 2.0; cs /= 4.0; }
+      if ((cs + r) / f < 0.95 * (c + r)) {
+        done = false;
+        d(i) *= f;
+        A.row(i) /= f;
+        A.col(i) *= f;
+      }
+    }
+  }
+  return d;
+}
+
+// Where each undamped mode's coordinates sit in the state vector.
+struct StateLayout {
+  std::vector<int> position;  // -1 for a rigid-body mode (left out)
+  std::vector<int> velocity;
+  int first_w = 0;
+  int size = 0;
+};
+
+// One eigenvalue of the state matrix (or the exact 0 of a rigid-body position), with its
+// state vector and the share of energy each slot carries in it.
+struct Root {
+  cd lambda;
+  Eigen::VectorXcd state;  // empty for the exact zero of a rigid-body position
+  bool pair = false;       // stands for itself and its conjugate
+  int slot = -1;
+};
+
+double relative_residual(const LinearSystem& s, const Eigen::MatrixXd& C, cd lambda, const Eigen::VectorXcd& phi,
+                         double norm_M, double norm_C, double norm_K) {
+  const Eigen::VectorXcd r = (lambda * lambda) * (s.mass.cast<cd>() * phi) + lambda * (C.cast<cd>() * phi) +
+                             s.stiffness.cast<cd>() * phi;
+  const double a = std::abs(lambda);
+  const double denom = (a * a * norm_M + a * norm_C + norm_K) * phi.norm();
+  return denom > 0.0 ? r.norm() / denom : 0.0;
+}
+
+}  // namespace
+
+DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedModalOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument("DampedModalOptions: " + why);
+  const int n = system.size();
+  Eigen::MatrixXd C = system.damping;
+  if (C.size() == 0) C = Eigen::MatrixXd::Zero(n, n);
+  if (C.rows() != n || C.cols() != n)
+    throw std::invalid_argument("the damping matrix is " + std::to_string(C.rows()) + " x " +
+                                std::to_string(C.cols()) + ", the system has " + std::to_string(n) +
+                                " degrees of freedom");
+  if (!C.allFinite()) throw NumericalError("the damping matrix contains NaN or infinity");
+
+  DampedModalResult result;
+  result.undamped = solve_modes(system, options.undamped);  // checks M and K, condenses, names
+  result.dofs = system.dofs;
+  const ModalResult& und = result.undamped;
+  const Eigen::MatrixXd& M = system.mass;
+  const Eigen::MatrixXd& K = system.stiffness;
+
+  // Massless DOFs: with damping (row or column of C) they become first-order states w, without
+  // they stay condensed statically.
+  std::vector<int> damped, undamped_massless;
+  for (int i = 0; i < n; ++i) {
+    if (M.row(i).cwiseAbs().maxCoeff() != 0.0) continue;
+    const bool has_damper = C.row(i).cwiseAbs().maxCoeff() > 0.0 || C.col(i).cwiseAbs().maxCoeff() > 0.0;
+    (has_damper ? damped : undamped_massless).push_back(i);
+    (has_damper ? result.first_order : result.condensed).push_back(system.dofs[i].label);
+  }
+  const int nm = static_cast<int>(und.modes.size());
+  const int nw = static_cast<int>(damped.size());
+
+  Eigen::MatrixXd Phi(n, nm);
+  for (int k = 0; k < nm; ++k) Phi.col(k) = und.modes[k].shape;
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(n, nw);
+  for (int k = 0; k < nw; ++k) G(damped[k], k) = 1.0;
+  if (nw > 0 && !undamped_massless.empty()) {
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(take(K, undamped_massless, undamped_massless));
+    lu.setThreshold(1e-12);
+    if (!lu.isInvertible())
+      throw NumericalError("the massless degrees of freedom without damping have no restraint of their own once '" +
+                           system.dofs[damped[0]].label + "' (massless, damped) is free to move");
+    const Eigen::MatrixXd follow = -lu.solve(take(K, undamped_massless, damped));
+    for (size_t a = 0; a < undamped_massless.size(); ++a) G.row(undamped_massless[a]) = follow.row(static_cast<int>(a));
+  }
+
+  // The pencil in (η, w): Ĉ = BᵀCB with B = [Φ G]; Λ exact (0 for rigid-body modes, which
+  // solve_modes() found below its zero tolerance); K_w = GᵀKG.
+  Eigen::MatrixXd B(n, nm + nw);
+  B << Phi, G;
+  const Eigen::MatrixXd Chat = B.transpose() * C * B;
+  Eigen::VectorXd lambda_u(nm);
+  for (int k = 0; k < nm; ++k) lambda_u(k) = und.modes[k].kind == ModeKind::rigid_body ? 0.0 : und.modes[k].eigenvalue;
+  Eigen::MatrixXd D = Chat.topLeftCorner(nm, nm);  // velocity coupling of the modes
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(nm, nw), F = Eigen::MatrixXd::Zero(nw, nm), Gw = Eigen::MatrixXd::Zero(nw, nw);
+  Eigen::MatrixXd Kw;
+  if (nw > 0) {
+    Kw = G.transpose() * K * G;
+    const Eigen::MatrixXd Cww = Chat.bottomRightCorner(nw, nw);
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(Cww);
+    lu.setThreshold(1e-12);
+    if (!lu.isInvertible()) {
+      // Name the DOFs that move in a direction no damper resists.
+      const Eigen::VectorXd v = lu.kernel().col(0);
+      std::string names;
+      for (int k = 0; k < nw; ++k)
+        if (std::abs(v(k)) > 1e-6 * v.cwiseAbs().maxCoeff())
+          names += (names.empty() ? "'" : ", '") + system.dofs[damped[k]].label + "'";
+      throw NumericalError("the massless degrees of freedom " + names +
+                           " have dampers but some combination of them moves without damping; give them "
+                           "inertia, a damper of their own, or remove the damper");
+    }
+    const Eigen::MatrixXd Cwe = Chat.bottomLeftCorner(nw, nm), Cew = Chat.topRightCorner(nm, nw);
+    F = lu.solve(Cwe);  // ẇ = −F η̇ − Gw w
+    Gw = lu.solve(Kw);
+    D -= Cew * F;       // η̈ = −Λη − D η̇ + E w
+    E = Cew * Gw;
+  }
+
+  StateLayout layout;
+  layout.position.assign(nm, -1);
+  layout.velocity.assign(nm, -1);
+  std::vector<double> omega(nm, 0.0);
+  for (int k = 0; k < nm; ++k) {
+    if (und.modes[k].kind != ModeKind::rigid_body) {
+      layout.position[k] = layout.size++;
+      omega[k] = std::sqrt(std::abs(lambda_u(k)));
+    }
+    layout.velocity[k] = layout.size++;
+  }
+  layout.first_w = layout.size;
+  layout.size += nw;
+
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(layout.size, layout.size);
+  for (int k = 0; k < nm; ++k) {
+    const int v = layout.velocity[k], p = layout.position[k];
+    if (p >= 0) {
+      A(p, v) = omega[k];
+      A(v, p) = -lambda_u(k) / omega[k];
+    }
+    for (int j = 0; j < nm; ++j) A(v, layout.velocity[j]) = -D(k, j);
+    for (int j = 0; j < nw; ++j) A(v, layout.first_w + j) = E(k, j);
+  }
+  for (int k = 0; k < nw; ++k) {
+    for (int j = 0; j < nm; ++j) A(layout.first_w + k, layout.velocity[j]) = -F(k, j);
+    for (int j = 0; j < nw; ++j) A(layout.first_w + k, layout.first_w + j) = -Gw(k, j);
+  }
+  if (!A.allFinite()) throw NumericalError("the state matrix of the damped system is not finite");
+
+  const Eigen::VectorXd scaling = balance(A);
+  Eigen::EigenSolver<Eigen::MatrixXd> eig(A, true);
+  if (eig.info() != Eigen::Success) throw NumericalError("the state-space eigensolver did not converge");
+  const Eigen::VectorXcd values = eig.eigenvalues();
+  const Eigen::MatrixXcd vectors = scaling.cast<cd>().asDiagonal() * eig.eigenvectors();
+
+  double scale = 0.0;
+  for (int i = 0; i < values.size(); ++i) scale = std::max(scale, std::abs(values(i)));
+  const double zero = std::sqrt(options.undamped.zero_tolerance) * scale;
+  const double growth = kGrowthTolerance * scale;
+
+  // Roots: conjugate pairs once (Eigen stores them adjacent, +Im first), real roots singly,
+  // and the exact zero of each rigid-body position, which belongs to its mode from the start.
+  std::vector<Root> roots;
+  for (int i = 0; i < values.size(); ++i) {
+    Root r;
+    r.lambda = values(i);
+    r.state = vectors.col(i);
+    if (values(i).imag() != 0.0) {
+      r.pair = true;
+      if (values(i).imag() < 0.0) r.lambda = std::conj(r.lambda), r.state = r.state.conjugate();
+      ++i;  // skip the conjugate
+    }
+    roots.push_back(std::move(r));
+  }
+  const int n_solved = static_cast<int>(roots.size());
+
+  // Slots: each undamped mode takes two eigenvalues (a rigid-body mode one more beside its
+  // exact zero), each first-order DOF one. Roots go to the slot with the largest share of
+  // their energy, largest shares first, while it has room: a label, as mode shapes under
+  // non-proportional damping mix the undamped ones.
+  const int n_slots = nm + nw;
+  std::vector<int> room(n_slots, 2);
+  for (int k = 0; k < nm; ++k)
+    if (und.modes[k].kind == ModeKind::rigid_body) {
+      Root r;
+      r.lambda = 0.0;
+      r.slot = k;
+      roots.push_back(r);
+      room[k] = 1;
+    }
+  for (int k = 0; k < nw; ++k) room[nm + k] = 1;
+  struct Share {
+    double value;
+    int root, slot;
+  };
+  std::vector<Share> shares;
+  for (int i = 0; i < n_solved; ++i) {
+    const Eigen::VectorXcd& x = roots[i].state;
+    Eigen::VectorXd e(n_slots);
+    for (int k = 0; k < nm; ++k)
+      e(k) = std::norm(x(layout.velocity[k])) + (layout.position[k] >= 0 ? std::norm(x(layout.position[k])) : 0.0);
+    // w's potential energy, ½wᵀK_w w per DOF, against the modes' ½(|ωη|² + |η̇|²) (twice each).
+    for (int k = 0; k < nw; ++k) e(nm + k) = std::norm(x(layout.first_w + k)) * std::abs(Kw(k, k));
+    const double total = e.sum();
+    for (int k = 0; k < n_slots; ++k) shares.push_back({total > 0.0 ? e(k) / total : 0.0, i, k});
+  }
+  std::stable_sort(shares.begin(), shares.end(), [](const Share& a, const Share& b) { return a.value > b.value; });
+  // Pairs first: they need a whole mode, and real roots placed first could leave room only in
+  // halves. The real roots then fill exactly the room left, one each.
+  for (bool pairs : {true, false})
+    for (const Share& s : shares) {
+      Root& r = roots[s.root];
+      const int weight = r.pair ? 2 : 1;
+      if (r.pair == pairs && r.slot < 0 && room[s.slot] >= weight) {
+        r.slot = s.slot;
+        room[s.slot] -= weight;
+      }
+    }
+  for (const Share& s : shares)  // no slot with room left (only under heavy mixing): the best one
+    if (roots[s.root].slot < 0) roots[s.root].slot = s.slot;
+
+  // Shapes: η_k = x_p/ω_k (x_v/λ for a rigid-body mode), q = Φη + Gw.
+  auto shape_of = [&](const Root& r) -> Eigen::VectorXcd {
+    if (r.state.size() == 0) return Phi.col(r.slot).cast<cd>();
+    Eigen::VectorXcd eta(nm), w(nw);
+    for (int k = 0; k < nm; ++k) {
+      if (layout.position[k] >= 0)
+        eta(k) = r.state(layout.position[k]) / omega[k];
+      else
+        eta(k) = std::abs(r.lambda) > zero ? r.state(layout.velocity[k]) / r.lambda : r.state(layout.velocity[k]);
+    }
+    for (int k = 0; k < nw; ++k) w(k) = r.state(layout.first_w + k);
+    return Phi.cast<cd>() * eta + G.cast<cd>() * w;
+  };
+  const double norm_M = M.norm(), norm_C = C.norm(), norm_K = K.norm();
+
+  // Modes: per slot, each complex pair, then the real roots two by two.
+  for (int slot = 0; slot < n_slots; ++slot) {
+    std::vector<const Root*> pairs, reals;
+    for (const Root& r : roots)
+      if (r.slot == slot) (r.pair ? pairs : reals).push_back(&r);
+    // Rigid-body zero first, then larger real part first.
+    std::stable_sort(reals.begin(), reals.end(), [](const Root* a, const Root* b) {
+      if ((a->state.size() == 0) != (b->state.size() == 0)) return a->state.size() == 0;
+      return a->lambda.real() > b->lambda.real();
+    });
+    std::vector<std::vector<const Root*>> groups;
+    for (const Root* p : pairs) groups.push_back({p});
+    for (size_t i = 0; i < reals.size(); i += 2) {
+      if (i + 1 < reals.size()) groups.push_back({reals[i], reals[i + 1]});
+      else groups.push_back({reals[i]});
+    }
+    for (const auto& group : groups) {
+      DampedMode mode;
+      mode.undamped_mode = slot < nm ? slot + 1 : 0;
+      mode.name = slot < nm ? und.modes[slot].name : system.dofs[damped[slot - nm]].label + " first-order";
+      for (const Root* r : group) {
+        mode.eigenvalues.push_back(r->lambda);
+        if (r->pair) mode.eigenvalues.push_back(std::conj(r->lambda));
+      }
+      double max_re = -std::numeric_limits<double>::infinity();
+      for (const cd& l : mode.eigenvalues) max_re = std::max(max_re, l.real());
+      mode.decay_rate = -max_re;
+      mode.stable = max_re <= growth;
+
+      const bool rigid = slot < nm && und.modes[slot].kind == ModeKind::rigid_body &&
+                         std::any_of(group.begin(), group.end(), [](const Root* r) { return r->state.size() == 0; });
+      if (rigid || (group.size() == 1 && !group[0]->pair && std::abs(group[0]->lambda) <= zero)) {
+        mode.kind = DampedModeKind::rigid_body;
+        if (mode.eigenvalues.size() == 1) mode.decay_rate = 0.0;
+        else mode.decay_rate = -mode.eigenvalues[1].real();
+        if (std::abs(mode.decay_rate) <= zero) mode.decay_rate = 0.0;
+        mode.stable = mode.decay_rate >= -growth;
+      } else if (group[0]->pair) {
+        const cd l = group[0]->lambda;
+        const double w = std::abs(l);
+        if (2.0 * l.imag() <= options.critical_gap * w) {
+          // A split double root: its mean (the real part) is accurate to ε, its split only to √ε.
+          mode.kind = DampedModeKind::critical;
+          mode.eigenvalues = {cd(l.real(), 0.0), cd(l.real(), 0.0)};
+          mode.damping_ratio = l.real() <= 0.0 ? 1.0 : -1.0;
+          mode.natural_frequency_hz = std::abs(l.real()) / kTwoPi;
+          mode.decay_rate = -l.real();
+        } else {
+          mode.kind = DampedModeKind::underdamped;
+          mode.damped_frequency_hz = l.imag() / kTwoPi;
+          mode.damping_ratio = -l.real() / w;
+          mode.natural_frequency_hz = w / kTwoPi;
+        }
+      } else if (group.size() == 1) {
+        mode.kind = DampedModeKind::first_order;
+      } else {
+        const double a = group[0]->lambda.real(), b = group[1]->lambda.real();
+        if (a - b <= options.critical_gap * std::max(std::abs(a), std::abs(b)) && a * b > 0.0) {
+          const double mean = 0.5 * (a + b);
+          mode.kind = DampedModeKind::critical;
+          mode.eigenvalues = {cd(mean, 0.0), cd(mean, 0.0)};
+          mode.damping_ratio = mean <= 0.0 ? 1.0 : -1.0;
+          mode.natural_frequency_hz = std::abs(mean) / kTwoPi;
+          mode.decay_rate = -mean;
+        } else if (a * b > 0.0) {
+          mode.kind = DampedModeKind::overdamped;
+          const double w = std::sqrt(a * b);
+          mode.damping_ratio = -(a + b) / (2.0 * w);
+          mode.natural_frequency_hz = w / kTwoPi;
+        } else {
+          mode.kind = DampedModeKind::divergent;  // a·b ≤ 0: a saddle, or a zero root
+        }
+      }
+
+      // Residual of each root with its own computed eigenvalue (a backward error: the mean
+      // of a split critical pair is more accurate but its eigenvectors are not).
+      for (const Root* r : group)
+        mode.residual = std::max(mode.residual, relative_residual(system, C, r->lambda, shape_of(*r), norm_M, norm_C, norm_K));
+      Eigen::VectorXcd phi = shape_of(*group[0]);
+      const double mass = phi.dot(M.cast<cd>() * phi).real();
+      if (mass > 0.0 && slot < nm) {
+        phi /= std::sqrt(mass);
+        const cd p = Phi.col(slot).cast<cd>().dot(M.cast<cd>() * phi);  // φ_uᵀMφ
+        if (std::abs(p) > 0.0) phi *= std::conj(p) / std::abs(p);
+      } else {
+        Eigen::Index at = 0;
+        phi.cwiseAbs().maxCoeff(&at);
+        if (std::abs(phi(at)) > 0.0) phi /= phi(at);
+      }
+      mode.shape = phi;
+      result.max_residual = std::max(result.max_residual, mode.residual);
+      result.stable = result.stable && mode.stable;
+      result.modes.push_back(std::move(mode));
+    }
+  }
+  // Ordered as the undamped modes (slot order already), first-order modes by decay rate.
+  std::stable_sort(result.modes.begin(), result.modes.end(), [](const DampedMode& a, const DampedMode& b) {
+    if ((a.undamped_mode == 0) != (b.undamped_mode == 0)) return b.undamped_mode == 0;
+    if (a.undamped_mode == 0) return a.decay_rate < b.decay_rate;
+    return a.undamped_mode < b.undamped_mode;
+  });
+  for (size_t i = 0; i < result.modes.size(); ++i) result.modes[i].index = static_cast<int>(i) + 1;
+  if (!(result.max_residual <= options.undamped.max_residual))
+    throw NumericalError("damped eigen-solution residual " + std::to_string(result.max_residual) +
+                         " exceeds the limit " + std::to_string(options.undamped.max_residual));
+  return result;
+}
+
+}  // namespace railmodal
