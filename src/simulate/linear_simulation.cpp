@@ -92,7 +92,7 @@ Transition transition(const Partition& p, double h) {
 // of 4 MB or more: a million steps of 15 DOFs is 240 MB of output, whose first touch with
 // 4 kB pages is 60 000 page faults; with huge pages it is 120. Under a hypervisor that
 // shadows guest page tables a fault costs ~17 µs, so this took a million-step run from 1.4 s
-// to 0.3 s; on bare metal it saves less. Only advice: it changes no result, and does nothing
+// to 0.5 s (before the product below); on bare metal it saves less. Only advice: it changes no result, and does nothing
 // where unsupported.
 void advise_huge_pages(Eigen::MatrixXd* array) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
@@ -110,7 +110,7 @@ void advise_huge_pages(Eigen::MatrixXd* array) {
 // their sums held in registers (fixed-size Eigen vectors, so SIMD packets) over all the
 // columns. Each y(i) adds its terms in column order whatever K and the packet width, so every
 // build gives the same bits. Blocks of 16 rows keep enough independent sums in flight to hide
-// the latency of the additions; about 1.3× faster than Eigen's general matrix-vector product
+// the latency of the additions; about 1.25× faster than Eigen's general matrix-vector product
 // at these sizes (32 × 44 for a 15-DOF vehicle), which loads and stores y for every column.
 constexpr int kRows = 8;
 template <int K>
