@@ -22,6 +22,7 @@ struct SceneOutput {
 /// The [simulation] table: one run at one speed.
 struct SimulationSpec {
   double speed = 0.0;      ///< m/s (0 without sources: a released wagon standing still)
+  double final_speed = 0.0;  ///< m/s; > 0: the speed ramps linearly from `speed` to it
   double duration = 0.0;   ///< s
   double time_step = 0.0;  ///< s, output step (and the linear path's integration step)
   /// Vehicle effects the scene names: "viscous_dampers", "leaf_friction",

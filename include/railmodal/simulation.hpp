@@ -24,7 +24,10 @@ struct InitialCondition {
 };
 
 struct SimulationOptions {
-  double speed = 0.0;      ///< m/s, constant (> 0 when there are sources)
+  double speed = 0.0;      ///< m/s, constant (> 0 when there are sources); the initial speed of a ramp
+  /// m/s; > 0: the speed ramps linearly from `speed` to this over the duration (the adaptive
+  /// path only: simulate_nonlinear, with or without nonlinear effects).
+  double final_speed = 0.0;
   double duration = 0.0;   ///< s
   double time_step = 0.0;  ///< s, integration step of the linear path; output step of both
   std::vector<InitialCondition> initial;

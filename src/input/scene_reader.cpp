@@ -155,6 +155,10 @@ Scene load_scene(const std::string& path) {
     SimulationSpec sim;
     // A released wagon standing still needs no speed; sources do.
     if (root.has("source") || t.has("speed")) sim.speed = t.positive("speed", Quantity::speed);
+    if (t.has("final_speed")) {
+      sim.final_speed = t.positive("final_speed", Quantity::speed);
+      if (!root.has("source")) t.fail("final_speed", "a speed ramp needs [[source]] tables to run over");
+    }
     sim.duration = t.positive("duration", Quantity::time);
     sim.time_step = t.positive("time_step", Quantity::time);
     if (sim.duration / sim.time_step > 1e8) t.fail("time_step", "gives more than 1e8 steps; take a longer step");

@@ -138,6 +138,9 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
   if (options.duration / options.time_step > 1e8)
     throw std::invalid_argument("simulation: more than 1e8 steps; take a longer time step");
   if (!sources.empty() && !(options.speed > 0.0)) throw std::invalid_argument("simulation: the speed must be positive");
+  if (options.final_speed > 0.0)
+    throw std::invalid_argument("simulation: a speed ramp changes the load's frequency; the state transition holds it "
+                                "fixed (simulate_nonlinear takes ramps, with or without nonlinear effects)");
   const int steps = static_cast<int>(std::llround(options.duration / options.time_step));
   const double h = options.time_step;
 

@@ -12,12 +12,24 @@
 
 namespace railmodal::simulate {
 
+/// The run's speed: constant, or ramping linearly (V = V₀ + a·t, x = V₀t + a·t²/2).
+struct SpeedProfile {
+  double initial = 0.0;       ///< V₀, m/s
+  double acceleration = 0.0;  ///< a, m/s²
+  double speed(double t) const { return initial + acceleration * t; }
+  double distance(double t) const { return (initial + 0.5 * acceleration * t) * t; }
+};
+
 /// One harmonic of the track's vertical displacement under an element (up positive):
-/// u(t) = Re(amplitude · e^{iω(t − delay)}).
+/// u(t) = Re(amplitude · r · e^{i(κx(t) − lag)}), κ = ω/V the harmonic's wavenumber along the
+/// track, lag = κ × the wheel's distance behind the reference (ω·delay at any speed), and
+/// r = s(ω(t))/s(ω₀) how the source's amplitude follows the speed (1 at constant speed).
 struct TrackHarmonic {
-  std::complex<double> amplitude;
-  double omega = 0.0;
-  double delay = 0.0;
+  std::complex<double> amplitude;  ///< at the initial speed
+  double omega = 0.0;              ///< ω₀ at the initial speed, rad/s
+  double lag = 0.0;                ///< rad
+  double wavenumber = 0.0;         ///< κ, rad/m
+  const ExcitationSource* source = nullptr;  ///< for s(ω); none: r = 1
 };
 
 struct NonlinearElement {
@@ -30,6 +42,7 @@ struct NonlinearElement {
   int springs = 1;                           ///< springs in parallel on the curve
   double static_deflection = 0.0;            ///< on the curve under P0
   std::vector<TrackHarmonic> track;          ///< empty for an element between two bodies
+  SpeedProfile profile;                      ///< of the run, for the track under a ramp
 
   /// Elastic reaction (N, compression positive) at the dynamic compression δ from equilibrium.
   double reaction(double delta) const {
@@ -40,9 +53,12 @@ struct NonlinearElement {
 };
 
 /// The elements of `system` that carry an effect named in `effects`, with the track harmonics
-/// of `loads` under them. Throws std::invalid_argument for a nonlinear stage in series with
-/// other stages.
+/// of `loads` (taken at the profile's initial speed; `load_sources[i]` made `loads[i]`, for
+/// the amplitude's speed law under a ramp) under them. Throws std::invalid_argument for a
+/// nonlinear stage in series with other stages.
 std::vector<NonlinearElement> nonlinear_elements(const LinearSystem& system, const std::vector<HarmonicLoad>& loads,
-                                                 const NonlinearEffects& effects);
+                                                 const NonlinearEffects& effects,
+                                                 const std::vector<const ExcitationSource*>& load_sources = {},
+                                                 const SpeedProfile& profile = {});
 
 }  // namespace railmodal::simulate

@@ -43,9 +43,14 @@ SimulationEvent event(double t, int element, SimulationEvent::Kind kind) {
   return e;
 }
 
+// One harmonic of one source: Q(t) = Re(Q(ω(t))·e^{iκx(t)}), ω = κV(t) (at constant speed
+// κx = ωt and Q is fixed). Under a ramp Q(ω) = s(ω)(Q_K + iωQ_C): exact for every source (the
+// phases between wheels do not depend on the speed; excitation.hpp, SeparableLoad).
 struct Harmonic {
-  Eigen::VectorXcd load;
-  double omega = 0.0;
+  Eigen::VectorXcd load;       ///< Q at the initial speed
+  double wavenumber = 0.0;     ///< κ, rad/m
+  SeparableLoad parts;         ///< for a ramp
+  const ExcitationSource* source = nullptr;
 };
 
 // What an event function watches.
@@ -57,8 +62,9 @@ struct Slot {
 
 class Model {
  public:
-  Model(const LinearSystem& s, std::vector<Harmonic> harmonics, std::vector<NonlinearElement> elements)
-      : n_(s.size()), M_(s.mass), C_(s.damping), K_(s.stiffness), harmonics_(std::move(harmonics)),
+  Model(const LinearSystem& s, std::vector<Harmonic> harmonics, std::vector<NonlinearElement> elements,
+        const simulate::SpeedProfile& profile)
+      : n_(s.size()), M_(s.mass), C_(s.damping), K_(s.stiffness), profile_(profile), harmonics_(std::move(harmonics)),
         elements_(std::move(elements)), state_(elements_.size(), 0) {
     const Eigen::LLT<Eigen::MatrixXd> llt(M_);
     if (llt.info() != Eigen::Success) throw NumericalError("the mass matrix is not positive definite");
@@ -90,8 +96,17 @@ class Model {
   // Every generalised force but the holding forces of stuck elements.
   void force(double t, const Eigen::VectorXd& x, const Eigen::VectorXd& v, Eigen::VectorXd* f) const {
     f->noalias() = -K_ * x - C_ * v;
-    for (const Harmonic& h : harmonics_)
-      *f += (h.load * std::exp(std::complex<double>(0.0, h.omega * t))).real();
+    const double x_track = profile_.distance(t), speed = profile_.speed(t);
+    for (const Harmonic& h : harmonics_) {
+      const std::complex<double> phase = std::exp(std::complex<double>(0.0, h.wavenumber * x_track));
+      if (profile_.acceleration == 0.0) {
+        *f += (h.load * phase).real();
+      } else {
+        const double w = h.wavenumber * speed;
+        const double scale = h.source->load_scale(w, h.parts.reference_omega);
+        *f += (scale * (h.parts.stiffness_part + std::complex<double>(0.0, w) * h.parts.damping_part) * phase).real();
+      }
+    }
     for (size_t i = 0; i < elements_.size(); ++i) {
       const NonlinearElement& e = elements_[i];
       const double delta = compression(static_cast<int>(i), t, x);
@@ -257,6 +272,7 @@ class Model {
 
   int n_;
   Eigen::MatrixXd M_, C_, K_, Minv_;
+  simulate::SpeedProfile profile_;
   std::vector<Harmonic> harmonics_;
   std::vector<NonlinearElement> elements_;
   std::vector<int> state_;  // friction elements: +1 sliding into compression, −1 out of it, 0 stuck
@@ -285,20 +301,33 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
   if (!(options.tolerance > 0.0) || !(options.event_tolerance > 0.0))
     throw std::invalid_argument("simulation: tolerance and event tolerance must be positive");
   if (!sources.empty() && !(options.speed > 0.0)) throw std::invalid_argument("simulation: the speed must be positive");
+  if (options.final_speed < 0.0 || !std::isfinite(options.final_speed) || (options.final_speed > 0.0 && sources.empty()))
+    throw std::invalid_argument("simulation: a final speed must be positive, and needs sources to run over");
   for (int i = 0; i < n; ++i)
     if (system.mass.row(i).cwiseAbs().maxCoeff() == 0.0)
       throw std::invalid_argument("simulation: '" + system.dofs[i].label +
                                   "' is massless; the nonlinear path needs inertia at every degree of freedom");
 
+  simulate::SpeedProfile profile;
+  profile.initial = options.speed;
+  if (options.final_speed > 0.0) profile.acceleration = (options.final_speed - options.speed) / options.duration;
   std::vector<HarmonicLoad> loads;
+  std::vector<const ExcitationSource*> load_sources;
   std::vector<Harmonic> harmonics;
   for (const ExcitationSource* source : sources)
     for (int k = 1; k <= source->harmonic_count(); ++k) {
       loads.push_back(source->load(system, options.speed, k));
+      load_sources.push_back(source);
       const Eigen::VectorXcd Q = generalized_load(system, loads.back());
-      if (Q.norm() > 0.0) harmonics.push_back({Q, kTwoPi * loads.back().frequency_hz});
+      if (Q.norm() == 0.0) continue;
+      Harmonic h;
+      h.load = Q;
+      h.wavenumber = kTwoPi * loads.back().frequency_hz / options.speed;
+      h.source = source;
+      if (profile.acceleration != 0.0) h.parts = source->separable_load(system, k);
+      harmonics.push_back(std::move(h));
     }
-  Model model(system, harmonics, simulate::nonlinear_elements(system, loads, effects));
+  Model model(system, harmonics, simulate::nonlinear_elements(system, loads, effects, load_sources, profile), profile);
 
   Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * n);
   for (const auto& ic : options.initial) {

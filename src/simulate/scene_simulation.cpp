@@ -38,13 +38,16 @@ TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle) {
   for (const auto& s : scene.sources) sources.push_back(s.get());
   SimulationOptions options;
   options.speed = spec.speed;
+  options.final_speed = spec.final_speed;
   options.duration = spec.duration;
   options.time_step = spec.time_step;
   options.initial = spec.initial;
   options.tolerance = spec.tolerance;
   options.event_tolerance = spec.event_tolerance;
   const NonlinearEffects effects = scene_effects(scene);
-  return effects.any() ? simulate_nonlinear(system, sources, options, effects) : simulate_linear(system, sources, options);
+  // A ramp changes the load's frequency as it goes: the adaptive path, which takes any forcing.
+  return effects.any() || spec.final_speed > 0.0 ? simulate_nonlinear(system, sources, options, effects)
+                                                 : simulate_linear(system, sources, options);
 }
 
 FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle) {

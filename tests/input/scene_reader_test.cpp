@@ -138,6 +138,13 @@ TEST(SceneReader, SimulationErrors) {
   expect_simulation_error("\"1e-10 s\"", "\"1e-10 mm\"", {"key 'simulation.event_tolerance'", "expected a time"});
   expect_simulation_error("speed = \"75 km/h\"\n", "", {"key 'simulation.speed'", "missing"});
   expect_simulation_error("time_step = \"1 ms\"", "time_step = \"3 s\"", {"key 'simulation.time_step'", "longer than the duration"});
+  expect_simulation_error("speed = \"75 km/h\"", "speed = \"75 km/h\"\nfinal_speed = \"100 kgf\"",
+                          {"key 'simulation.final_speed'", "expected a speed"});
+  std::string ramp_text = kSimulation;
+  const std::string speed_line = "speed = \"75 km/h\"";
+  ramp_text.replace(ramp_text.find(speed_line), speed_line.size(), speed_line + "\nfinal_speed = \"100 km/h\"");
+  const Scene ramp = load_scene(write_scene(kScene + ramp_text));
+  EXPECT_NEAR(ramp.simulation->final_speed, 100 / 3.6, 1e-12);
 }
 
 // An output the vehicle does not have is an input error naming the scene.
