@@ -23,6 +23,9 @@ struct SceneOutput {
 struct SimulationSpec {
   double speed = 0.0;      ///< m/s (0 without sources: a released wagon standing still)
   double final_speed = 0.0;  ///< m/s; > 0: the speed ramps linearly from `speed` to it
+  /// Leaf friction law: "proportional" (default, the book's R = c(1 ± φ)(f ± z)) or
+  /// "constant" (a Coulomb force φ·P₀, the simplification 1 ± φ ≈ 1 of Example 3).
+  std::string friction_law = "proportional";
   double duration = 0.0;   ///< s
   double time_step = 0.0;  ///< s, output step (and the linear path's integration step)
   /// Vehicle effects the scene names: "viscous_dampers", "leaf_friction",

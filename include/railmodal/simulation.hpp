@@ -48,6 +48,9 @@ struct NonlinearEffects {
   bool leaf_friction = false;
   /// Progressive springs follow their load–deflection curve (SpringStage::curve).
   bool progressive_springs = false;
+  /// Leaf friction as a constant Coulomb force φ·P₀ (P₀ the static load) instead of φ·R: the
+  /// book's simplification 1 ± φ ≈ 1 of Example 3 (two-axle digest), for comparison with it.
+  bool constant_friction = false;
   bool any() const { return leaf_friction || progressive_springs; }
 };
 

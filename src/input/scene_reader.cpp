@@ -177,6 +177,12 @@ Scene load_scene(const std::string& path) {
       if (!(sim.tolerance < 1e-2)) t.fail("tolerance", "must be below 1e-2 (default 1e-10)");
     }
     if (t.has("event_tolerance")) sim.event_tolerance = t.positive("event_tolerance", Quantity::time);
+    if (t.has("friction_law")) {
+      sim.friction_law = t.string("friction_law");
+      if (sim.friction_law != "proportional" && sim.friction_law != "constant")
+        t.fail("friction_law", "is \"proportional\" (φ times the spring's reaction, the book's law) or \"constant\" "
+                               "(φ times the static load)");
+    }
     if (t.has("initial"))
       for (auto& i : t.tables("initial")) {
         InitialCondition ic;

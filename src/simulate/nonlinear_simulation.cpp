@@ -63,8 +63,9 @@ struct Slot {
 class Model {
  public:
   Model(const LinearSystem& s, std::vector<Harmonic> harmonics, std::vector<NonlinearElement> elements,
-        const simulate::SpeedProfile& profile)
-      : n_(s.size()), M_(s.mass), C_(s.damping), K_(s.stiffness), profile_(profile), harmonics_(std::move(harmonics)),
+        const simulate::SpeedProfile& profile, bool constant_friction)
+      : n_(s.size()), M_(s.mass), C_(s.damping), K_(s.stiffness), constant_friction_(constant_friction), profile_(profile),
+        harmonics_(std::move(harmonics)),
         elements_(std::move(elements)), state_(elements_.size(), 0) {
     const Eigen::LLT<Eigen::MatrixXd> llt(M_);
     if (llt.info() != Eigen::Success) throw NumericalError("the mass matrix is not positive definite");
@@ -90,7 +91,11 @@ class Model {
   }
   // φ·R_el, the friction force a sliding element feels and a stuck one can hold.
   double friction_limit(int i, double t, const Eigen::VectorXd& x) const {
-    return elements_[i].friction * std::max(elements_[i].reaction(compression(i, t, x)), 0.0);
+    return friction_force(elements_[i], elements_[i].reaction(compression(i, t, x)));
+  }
+  // φ·R_el (the book's law), or φ·P₀ under the constant (Coulomb) law.
+  double friction_force(const NonlinearElement& e, double reaction) const {
+    return e.friction * (constant_friction_ ? e.static_load : std::max(reaction, 0.0));
   }
 
   // Every generalised force but the holding forces of stuck elements.
@@ -113,7 +118,7 @@ class Model {
       const double reaction = e.reaction(delta);
       double up = 0.0;  // force on the upper end, up positive, beyond the linear model
       if (e.curve) up += reaction - e.static_load - e.tangent * delta;
-      if (e.friction > 0.0 && state_[i] != 0) up += e.friction * std::max(reaction, 0.0) * state_[i];
+      if (e.friction > 0.0 && state_[i] != 0) up += friction_force(e, reaction) * state_[i];
       if (up != 0.0) f->noalias() += e.stretch.transpose() * up;
     }
   }
@@ -272,6 +277,7 @@ class Model {
 
   int n_;
   Eigen::MatrixXd M_, C_, K_, Minv_;
+  bool constant_friction_;
   simulate::SpeedProfile profile_;
   std::vector<Harmonic> harmonics_;
   std::vector<NonlinearElement> elements_;
@@ -327,7 +333,8 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
       if (profile.acceleration != 0.0) h.parts = source->separable_load(system, k);
       harmonics.push_back(std::move(h));
     }
-  Model model(system, harmonics, simulate::nonlinear_elements(system, loads, effects, load_sources, profile), profile);
+  Model model(system, harmonics, simulate::nonlinear_elements(system, loads, effects, load_sources, profile), profile,
+              effects.constant_friction);
 
   Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * n);
   for (const auto& ic : options.initial) {

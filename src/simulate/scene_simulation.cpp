@@ -20,6 +20,7 @@ NonlinearEffects scene_effects(const Scene& scene) {
   NonlinearEffects effects;
   effects.leaf_friction = names(scene, "leaf_friction");
   effects.progressive_springs = names(scene, "progressive_springs");
+  effects.constant_friction = scene.simulation && scene.simulation->friction_law == "constant";
   return effects;
 }
 
