@@ -1,4 +1,4 @@
-// railmodal simulate SCENE [--vehicle WAGON] [--format csv|json] [-o OUT]
+// railmodal simulate SCENE [--vehicle WAGON] [--format csv|json] [-o OUT] [--spectra SPECTRA.csv]
 // railmodal fft-check SCENE [--vehicle WAGON] [--format table|csv|json|html] [-o OUT]
 #include <iomanip>
 #include <iostream>
@@ -17,6 +17,7 @@ struct SimulateOptions {
   std::string vehicle;
   std::string format;
   std::string output = "-";
+  std::string spectra;  // simulate: also the amplitude spectra, to this file
 };
 
 // Loads the scene and its vehicle; the command line's vehicle wins over the scene's.
@@ -157,18 +158,54 @@ std::string checks_text(const FftCheckResult& r, const Scene& scene, const Vehic
   return out.str();
 }
 
+// The amplitude spectra of the written DOFs: Hann, zero-padded ×4 (as fft-check takes them),
+// one column per DOF, peak amplitudes in m or rad, up to the Nyquist frequency.
+std::string spectra_text(const TimeHistory& h, const Scene& scene) {
+  const double fs = 1.0 / scene.simulation->time_step;
+  SpectrumOptions options;
+  options.window = Window::hann;
+  options.padding = Padding::to_length;
+  options.padded_length = 4 * h.time.size();
+  SpectrumAnalyzer analyzer(h.time.size(), options);
+  std::vector<int> columns;
+  for (int c = 0; c < static_cast<int>(h.labels.size()); ++c)
+    if (scene.simulation->outputs.empty() ||
+        std::find(scene.simulation->outputs.begin(), scene.simulation->outputs.end(), h.labels[c]) !=
+            scene.simulation->outputs.end())
+      columns.push_back(c);
+  std::vector<Spectrum> spectra;
+  for (int c : columns) spectra.push_back(analyzer.compute(h.displacement.col(c), fs));
+  std::ostringstream out;
+  out << std::setprecision(10) << "frequency_hz";
+  for (int c : columns) out << "," << h.labels[c];
+  out << "\n";
+  for (Eigen::Index b = 0; !spectra.empty() && b < spectra.front().amplitude.size(); ++b) {
+    out << spectra.front().frequency(b);
+    for (const Spectrum& s : spectra) out << "," << s.amplitude(b);
+    out << "\n";
+  }
+  return out.str();
+}
+
 int run(const SimulateOptions& o, bool check) {
   try {
     Scene scene;
     Vehicle vehicle;
     if (const int code = load(o, &scene, &vehicle); code != kSuccess) return code;
-    std::string text;
+    std::string text, spectra;
     try {
-      text = check ? checks_text(fft_check(scene, vehicle), scene, vehicle, o.format)
-                   : history_text(simulate_scene(scene, vehicle), scene, vehicle, o.format);
+      if (check) {
+        text = checks_text(fft_check(scene, vehicle), scene, vehicle, o.format);
+      } else {
+        const TimeHistory h = simulate_scene(scene, vehicle);
+        text = history_text(h, scene, vehicle, o.format);
+        if (!o.spectra.empty()) spectra = spectra_text(h, scene);
+      }
     } catch (const std::invalid_argument& e) {
       throw InputError(o.scene, 0, 0, e.what());
     }
+    if (!o.spectra.empty())
+      if (const int code = write_output(o.spectra, spectra); code != kSuccess) return code;
     return write_output(o.output, text);
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
@@ -189,6 +226,9 @@ std::function<int()> add(CLI::App& app, const std::string& name, const std::stri
   cmd->add_option("--format", options->format, "Output format")->check(CLI::IsMember(formats))->capture_default_str();
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  if (!check)
+    cmd->add_option("--spectra", options->spectra,
+                    "Also write the amplitude spectra of the written DOFs (CSV: Hann, zero-padded x4, peak amplitudes)");
   return [options, check] { return run(*options, check); };
 }
 
