@@ -26,8 +26,11 @@ enum class ModeKind {
 const char* to_string(ModeKind kind);
 
 struct ModalOptions {
-  /// |λ| below this fraction of the largest |λ| counts as zero (rigid-body mode).
-  double zero_tolerance = 1e-10;
+  /// |λ| below this fraction of the largest |λ| counts as zero (rigid-body mode). The dense
+  /// solver's eigenvalues carry an absolute error of order n·ε·|λ|max (ε = 2.2e-16), so a true
+  /// zero lands far below 1e-13·|λ|max, while a soft spring beside a link 1e12 times stiffer
+  /// (|λ| ≈ 1e-12·|λ|max) is still told from zero: a looser default would call it rigid.
+  double zero_tolerance = 1e-13;
   /// Reject if the relative residual of any mode exceeds this (a solver failure).
   double max_residual = 1e-8;
   /// Returns false and explains in *why when an option is out of range.

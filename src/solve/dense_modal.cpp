@@ -72,6 +72,40 @@ Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<std
 
 }  // namespace
 
+namespace {
+
+// The direct solve gives every λ to an absolute n·ε·λmax, which leaves the low modes of a
+// system with a huge stiffness contrast (a soft spring beside a nearly rigid link: λmax/λ ≈
+// 1e12) with only a few correct digits. When K is positive definite the reciprocal problem
+// M φ = μ K φ (μ = 1/λ) gives them to n·ε·λ/λmin instead: its answers replace the direct
+// ones below the geometric mean of the spectrum, where they are the more accurate. Spectra
+// narrower than 1e8 (every wagon) are left as they are.
+void refine_low_modes(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, Eigen::VectorXd* lambda, Eigen::MatrixXd* phi) {
+  const Eigen::Index m = lambda->size();
+  if (m < 2 || !((*lambda)(0) > 0.0) || (*lambda)(m - 1) / (*lambda)(0) < 1e8) return;
+  const Eigen::LLT<Eigen::MatrixXd> llt(K);
+  if (llt.info() != Eigen::Success) return;
+  const Eigen::MatrixXd Lk = llt.matrixL();
+  const auto lower = Lk.triangularView<Eigen::Lower>();
+  Eigen::MatrixXd B = lower.solve(M);
+  B = lower.solve(B.transpose()).transpose();
+  B = 0.5 * (B + B.transpose());
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(B);
+  if (eig.info() != Eigen::Success) return;
+  const double crossover = std::sqrt((*lambda)(0) * (*lambda)(m - 1));
+  for (Eigen::Index k = 0; k < m; ++k) {
+    const double mu = eig.eigenvalues()(m - 1 - k);  // largest μ: lowest λ
+    if (!(mu > 0.0) || 1.0 / mu >= crossover) break;
+    Eigen::VectorXd v = Lk.transpose().triangularView<Eigen::Upper>().solve(eig.eigenvectors().col(m - 1 - k));
+    v /= std::sqrt(v.dot(M * v));
+    if (v.dot(phi->col(k)) < 0.0) v = -v;  // keep the direct solve's sign
+    (*lambda)(k) = 1.0 / mu;
+    phi->col(k) = v;
+  }
+}
+
+}  // namespace
+
 ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument("ModalOptions: " + why);
@@ -121,8 +155,9 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
   A = 0.5 * (A + A.transpose());
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
   if (eig.info() != Eigen::Success) throw NumericalError("the symmetric eigensolver did not converge");
-  const Eigen::VectorXd lambda = eig.eigenvalues();  // ascending
-  const Eigen::MatrixXd phi_kept = L.transpose().triangularView<Eigen::Upper>().solve(eig.eigenvectors());
+  Eigen::VectorXd lambda = eig.eigenvalues();  // ascending
+  Eigen::MatrixXd phi_kept = L.transpose().triangularView<Eigen::Upper>().solve(eig.eigenvectors());
+  refine_low_modes(Kr, Mr, &lambda, &phi_kept);
 
   const int m = static_cast<int>(kept.size());
   Eigen::MatrixXd phi = Eigen::MatrixXd::Zero(n, m);
