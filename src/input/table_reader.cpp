@@ -100,6 +100,9 @@ double TableReader::to_quantity(const toml::value& v, const std::string& key, Qu
                   ", got " + type_name(v));
   }
   if (!std::isfinite(value)) fail(key, "the value is not a finite number");
+  // TOML parsers clamp an overflowing literal (1e400) to the largest double; nothing physical in
+  // a vehicle or scene comes near 1e30 in SI, and such a value would overflow the assembly.
+  if (std::abs(value) > 1e30) fail(key, "the value is beyond any physical quantity (more than 1e30 in SI units)");
   return value;
 }
 

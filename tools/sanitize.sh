@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The test suite under AddressSanitizer and UndefinedBehaviorSanitizer (g++), then the
+# input-parser fuzzer (clang, libFuzzer) for a short run over the bundled and malformed
+# inputs. Both are part of CI (.ci/run); FUZZ_SECONDS sets the fuzzing time (default 60).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/install_dependencies.sh
+# The fuzzer needs clang and its runtime (libFuzzer).
+for p in clang libclang-rt-14-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" ||
+    { export DEBIAN_FRONTEND=noninteractive; apt-get update -qq; apt-get install -y -qq --no-install-recommends clang libclang-rt-14-dev >/dev/null; break; }
+done
+jobs="$(nproc)"
+
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAILMODAL_SANITIZE=ON -DRAILMODAL_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build build-asan -j"$jobs"
+ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --test-dir build-asan --output-on-failure -j"$jobs" -E package_consumer
+
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRAILMODAL_BUILD_FUZZERS=ON \
+  -DRAILMODAL_BUILD_TESTS=OFF -DRAILMODAL_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build build-fuzz -j"$jobs" --target fuzz_inputs
+# Seed corpus: every bundled and malformed input, each under the parser its extension names.
+corpus=build-fuzz/corpus
+rm -rf "$corpus" && mkdir -p "$corpus"
+i=0
+for f in data/vehicles/*.toml tests/cli/bad/*.toml tests/corpus/bad_inputs/*.toml; do
+  [ -e "$f" ] || continue
+  if grep -q '^\[scene\]' "$f"; then p='\x01'; else p='\x00'; fi
+  { printf "$p"; cat "$f"; } > "$corpus/seed$((i++))"
+done
+for f in data/scenes/*.toml; do { printf '\x01'; cat "$f"; } > "$corpus/seed$((i++))"; done
+for f in data/matrices/*.mtx tests/cli/bad/*.mtx tests/corpus/bad_inputs/*.mtx; do
+  [ -e "$f" ] || continue
+  { printf '\x02'; cat "$f"; } > "$corpus/seed$((i++))"
+done
+build-fuzz/tools/fuzz/fuzz_inputs -max_total_time="${FUZZ_SECONDS:-60}" -rss_limit_mb=4096 -print_final_stats=1 \
+  "$corpus" 2>&1 | tail -15
