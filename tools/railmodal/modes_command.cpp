@@ -93,7 +93,8 @@ std::function<int()> add_modes_command(CLI::App& app) {
   cmd->add_option("file", options->file, "Vehicle file (TOML), e.g. data/vehicles/resort_car.toml");
   cmd->add_option("--mass", options->mass, "Mass matrix M (Matrix Market .mtx), instead of a vehicle file");
   cmd->add_option("--stiffness", options->stiffness, "Stiffness matrix K (Matrix Market), with --mass");
-  cmd->add_option("--damping", options->damping, "Damping matrix C (Matrix Market), optional with --mass");
+  cmd->add_option("--damping", options->damping,
+                  "Damping matrix C (Matrix Market), optional with --mass; used by --damped");
   CLI::Option* dofs =
       cmd->add_option("--dofs", options->dofs, "Motions: vertical (bounce, pitch), lateral (lateral, roll, yaw) or all")
           ->check(CLI::IsMember({"vertical", "lateral", "all"}))
