@@ -64,6 +64,7 @@ int main(int argc, char** argv) {
   auto run_critical_speed = add_critical_speed_command(app);
   auto run_simulate = add_simulate_command(app);
   auto run_fft_check = add_fft_check_command(app);
+  auto run_compare = add_compare_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -81,6 +82,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("critical-speed")) return run_critical_speed();
     if (app.got_subcommand("simulate")) return run_simulate();
     if (app.got_subcommand("fft-check")) return run_fft_check();
+    if (app.got_subcommand("compare")) return run_compare();
   } catch (const std::exception& e) {
     std::cerr << "railmodal: internal error: " << e.what() << "\n";
     return kInternal;
