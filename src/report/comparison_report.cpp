@@ -162,7 +162,11 @@ std::vector<std::vector<std::string>> table_rows(const Comparison& c, bool for_c
     for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
       const auto& x = v.criteria.size() > k ? v.criteria[k] : std::nullopt;
       const double scale = study::display_unit(c.ranking.objective[k].metric).per_si;
-      row.push_back(!x ? (for_csv ? "" : "-") : for_csv ? exact(*x * scale) : number(*x * scale, "%.4g"));
+      const bool peak = c.ranking.objective[k].metric.rfind("peak:", 0) == 0;
+      if (!x) row.push_back(for_csv ? "" : "-");
+      else if (for_csv) row.push_back(exact(*x * scale));
+      else if (std::isinf(*x) && *x > 0) row.push_back(peak ? "unbounded" : "none");  // no critical speed in range
+      else row.push_back(number(*x * scale, "%.4g"));
     }
     const auto lowest = r.ok() ? metric_value(r, "lowest_critical_speed") : std::nullopt;
     row.push_back(!lowest ? (for_csv ? "" : "-") : for_csv ? exact(*lowest * kKmh) : number(*lowest * kKmh, "%.1f"));

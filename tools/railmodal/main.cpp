@@ -18,6 +18,17 @@ int write_output(const std::string& path, const std::string& text) {
   }
   namespace fs = std::filesystem;
   const fs::path target(path);
+  std::error_code status_error;
+  const fs::file_status status = fs::status(target, status_error);
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    // A device or pipe (/dev/null, a FIFO): write into it; renaming over it would replace it.
+    std::ofstream out(target, std::ios::binary);
+    out << text;
+    out.close();
+    if (out) return kSuccess;
+    std::cerr << path << ": error: cannot write the output file\n";
+    return kOutput;
+  }
   const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp");
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
