@@ -66,6 +66,24 @@ void summarise_response(const CriticalSpeedStudy& study, VariantResult* r) {
   }
 }
 
+// The failure of a vehicle with no steady response: its modes (when they can be computed), and
+// the unstable one named.
+void describe_failure(const StudyVariant& variant, const std::string& why, VariantResult* r) {
+  r->failure = "numerical failure: " + why;
+  const LinearSystem system = assemble(variant.vehicle, variant.scene.dofs);
+  const ModalResult modes = solve_modes(system);
+  summarise_modes(modes, r);
+  static_deflections(variant.vehicle, system, r);
+  metacentric_height(variant.vehicle, r);
+  for (const Mode& m : modes.modes)
+    if (m.kind == ModeKind::unstable) {
+      char rate[32];
+      std::snprintf(rate, sizeof rate, "%.4g", m.divergence_rate);
+      r->failure = "unstable: mode " + std::to_string(m.index) + ", " + m.name + ", diverges at " + rate + " 1/s";
+      return;
+    }
+}
+
 }  // namespace
 
 VariantResult evaluate_variant(const StudyVariant& variant, int index) {
@@ -74,22 +92,20 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index) {
   r.name = variant.name;
   r.parameters = variant.parameters;
   try {
-    const LinearSystem system = assemble(variant.vehicle, variant.scene.dofs);
-    if (system.size() == 0) throw std::invalid_argument("no free degrees of freedom in the scene's set");
-    const ModalResult modes = solve_modes(system);
-    summarise_modes(modes, &r);
-    static_deflections(variant.vehicle, system, &r);
+    // One assembly and one modal solve serve everything: the study's own.
+    CriticalSpeedStudy study;
+    try {
+      study = study_critical_speeds(variant.scene, variant.vehicle);
+    } catch (const NumericalError& e) {
+      describe_failure(variant, e.what(), &r);
+      return r;
+    }
+    summarise_modes(study.modes, &r);
+    static_deflections(variant.vehicle, study.system, &r);
     metacentric_height(variant.vehicle, &r);
-    for (const Mode& m : modes.modes)
-      if (m.kind == ModeKind::unstable) {
-        char rate[32];
-        std::snprintf(rate, sizeof rate, "%.4g", m.divergence_rate);
-        r.failure = "unstable: mode " + std::to_string(m.index) + ", " + m.name + ", diverges at " + rate + " 1/s";
-        return r;
-      }
-    summarise_response(study_critical_speeds(variant.scene, variant.vehicle), &r);
+    summarise_response(study, &r);
   } catch (const NumericalError& e) {
-    r.failure = std::string("numerical failure: ") + e.what();
+    if (r.failure.empty()) r.failure = std::string("numerical failure: ") + e.what();
   } catch (const InputError& e) {
     r.failure = e.message();  // the scene's outputs do not fit this vehicle
   } catch (const std::invalid_argument& e) {
