@@ -45,14 +45,25 @@ std::string shortest(double x) {
   return std::string(buffer, result.ptr);
 }
 
-std::string value_text(const toml::value& v) {
-  if (v.is_string()) return v.as_string().str;
+// A value on one line, as a study would write it; table keys sorted (the TOML library keeps
+// no order), strings unquoted at the top level only.
+std::string value_text(const toml::value& v, bool top = true) {
+  if (v.is_string()) return top ? v.as_string().str : "\"" + v.as_string().str + "\"";
   if (v.is_integer()) return std::to_string(v.as_integer());
   if (v.is_floating()) return shortest(v.as_floating());
   if (v.is_boolean()) return v.as_boolean() ? "true" : "false";
-  std::ostringstream out;
-  out << toml::format(v, 0);  // tables and arrays, on one line
-  return out.str();
+  std::string out;
+  if (v.is_array()) {
+    for (const auto& item : v.as_array()) out += (out.empty() ? "" : ", ") + value_text(item, false);
+    return "[" + out + "]";
+  }
+  if (v.is_table()) {
+    std::map<std::string, const toml::value*> sorted;
+    for (const auto& [key, item] : v.as_table()) sorted[key] = &item;
+    for (const auto& [key, item] : sorted) out += (out.empty() ? "" : ", ") + key + " = " + value_text(*item, false);
+    return "{ " + out + " }";
+  }
+  return "(date or time)";
 }
 
 int line_of(const toml::value& v) { return static_cast<int>(v.location().line()); }

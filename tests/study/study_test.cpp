@@ -76,6 +76,18 @@ overrides = { "suspension.spring[0].static_deflection" = "80 mm" }
   EXPECT_EQ(s.variants[1].parameters[0].second, "80 mm");
 }
 
+TEST(StudyReader, OverrideMayReplaceAWholeTable) {
+  const Study s = load_study(study_file(R"(
+[[variant]]
+name = "coil"
+overrides = { "suspension.spring" = [{ stiffness = "900 kgf/cm", kind = "coil" }] }
+)"));
+  EXPECT_DOUBLE_EQ(vertical_stiffness(s.variants[1].vehicle), 900 * kKgfPerCm);
+  EXPECT_EQ(s.variants[1].vehicle.elements.front().vertical_stages.front().kind, "coil");
+  // Shown on one line with sorted keys, whatever order the TOML library keeps.
+  EXPECT_EQ(s.variants[1].parameters[0].second, "[{ kind = \"coil\", stiffness = \"900 kgf/cm\" }]");
+}
+
 TEST(StudyReader, ElementOfTheGeneralFormIsPickedByName) {
   write_temp("general.toml", R"(
 [vehicle]
