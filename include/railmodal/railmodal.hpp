@@ -28,4 +28,5 @@
 #include "railmodal/simulation.hpp"
 #include "railmodal/spectrum.hpp"
 #include "railmodal/stability.hpp"
+#include "railmodal/study.hpp"
 #include "railmodal/vehicle.hpp"

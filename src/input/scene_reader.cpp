@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "input/document_readers.hpp"
 #include "input/table_reader.hpp"
 #include "railmodal/scene.hpp"
 
@@ -126,12 +127,9 @@ std::shared_ptr<const ExcitationSource> unbalance(TableReader& t) {
 }
 
 }  // namespace
-}  // namespace input
 
-Scene load_scene(const std::string& path) {
-  using namespace input;
-  const toml::value root_value = parse_toml_file(path);
-  TableReader root(root_value, path, "");
+Scene read_scene(const toml::value& document, const std::string& path) {
+  TableReader root(document, path, "");
   Scene scene;
   scene.source = path;
   {
@@ -250,5 +248,9 @@ Scene load_scene(const std::string& path) {
   root.finish();
   return scene;
 }
+
+}  // namespace input
+
+Scene load_scene(const std::string& path) { return input::read_scene(input::parse_toml_file(path), path); }
 
 }  // namespace railmodal

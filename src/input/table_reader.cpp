@@ -182,6 +182,23 @@ std::vector<std::string> TableReader::strings(const std::string& key) {
   return out;
 }
 
+std::optional<bool> TableReader::optional_boolean(const std::string& key) {
+  if (!has(key)) return std::nullopt;
+  const toml::value& v = at(key);
+  if (!v.is_boolean()) fail(key, std::string("expected true or false, got ") + type_name(v));
+  return v.as_boolean();
+}
+
+const toml::value& TableReader::raw(const std::string& key) { return at(key); }
+
+std::vector<std::string> TableReader::keys() const {
+  std::vector<std::string> out;
+  if (table_.is_table())
+    for (const auto& entry : table_.as_table()) out.push_back(entry.first);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 TableReader TableReader::table(const std::string& key) {
   const toml::value& v = at(key);
   if (!v.is_table()) fail(key, std::string("expected a table, got ") + type_name(v));

@@ -33,6 +33,11 @@ class TableReader {
   std::vector<std::string> strings(const std::string& key);
   /// An array of quantities of one kind, e.g. ["0 deg", "90 deg"].
   std::vector<double> quantities(const std::string& key, Quantity kind);
+  std::optional<bool> optional_boolean(const std::string& key);
+  /// The value itself, for callers that keep it as written (a study's override values).
+  const toml::value& raw(const std::string& key);
+  /// The keys present, sorted (so that callers visit them in a fixed order).
+  std::vector<std::string> keys() const;
   TableReader table(const std::string& key);
   /// An array of tables ([[key]] or key = [{...}, ...]); a single table counts as one.
   std::vector<TableReader> tables(const std::string& key);

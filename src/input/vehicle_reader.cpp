@@ -3,6 +3,7 @@
 #include <set>
 
 #include "input/body_reader.hpp"
+#include "input/document_readers.hpp"
 #include "input/spring_reader.hpp"
 #include "input/table_reader.hpp"
 #include "input/templates.hpp"
@@ -62,29 +63,30 @@ void read_general(TableReader& root, Vehicle* v) {
 
 }  // namespace
 
-}  // namespace input
-
-Vehicle load_vehicle(const std::string& path) {
-  const toml::value document = input::parse_toml_file(path);
-  input::TableReader root(document, path, "");
+Vehicle read_vehicle(const toml::value& document, const std::string& path) {
+  TableReader root(document, path, "");
   Vehicle v;
   v.source = path;
-  input::TableReader head = root.table("vehicle");
+  TableReader head = root.table("vehicle");
   v.name = head.string("name");
-  v.gravity = head.optional_positive("gravity", input::Quantity::acceleration).value_or(9.81);
+  v.gravity = head.optional_positive("gravity", Quantity::acceleration).value_or(9.81);
   const std::string form = head.optional_string("template").value_or("general");
   if (form == "two-axle") {
-    input::read_two_axle(head, root, &v);
+    read_two_axle(head, root, &v);
   } else if (form == "bogie") {
-    input::read_bogie(head, root, &v);
+    read_bogie(head, root, &v);
   } else if (form == "general") {
     head.finish();
-    input::read_general(root, &v);
+    read_general(root, &v);
   } else {
     head.fail("template", "unknown template '" + form + "' (two-axle, bogie, general)");
   }
   root.finish();
   return v;
 }
+
+}  // namespace input
+
+Vehicle load_vehicle(const std::string& path) { return input::read_vehicle(input::parse_toml_file(path), path); }
 
 }  // namespace railmodal

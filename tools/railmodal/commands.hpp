@@ -16,6 +16,8 @@ std::function<int()> add_critical_speed_command(CLI::App& app);
 /// Register `simulate` and `fft-check`.
 std::function<int()> add_simulate_command(CLI::App& app);
 std::function<int()> add_fft_check_command(CLI::App& app);
+/// Registers `compare`.
+std::function<int()> add_compare_command(CLI::App& app);
 
 /// Writes `text` to `path` whole or not at all (temporary file, then rename); "-" or ""
 /// is standard output. Returns kOutput with a message on stderr when it cannot.

@@ -18,6 +18,17 @@ int write_output(const std::string& path, const std::string& text) {
   }
   namespace fs = std::filesystem;
   const fs::path target(path);
+  std::error_code status_error;
+  const fs::file_status status = fs::status(target, status_error);
+  if (fs::exists(status) && !fs::is_regular_file(status)) {
+    // A device or pipe (/dev/null, a FIFO): write into it; renaming over it would replace it.
+    std::ofstream out(target, std::ios::binary);
+    out << text;
+    out.close();
+    if (out) return kSuccess;
+    std::cerr << path << ": error: cannot write the output file\n";
+    return kOutput;
+  }
   const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp");
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
@@ -64,6 +75,7 @@ int main(int argc, char** argv) {
   auto run_critical_speed = add_critical_speed_command(app);
   auto run_simulate = add_simulate_command(app);
   auto run_fft_check = add_fft_check_command(app);
+  auto run_compare = add_compare_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -81,6 +93,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("critical-speed")) return run_critical_speed();
     if (app.got_subcommand("simulate")) return run_simulate();
     if (app.got_subcommand("fft-check")) return run_fft_check();
+    if (app.got_subcommand("compare")) return run_compare();
   } catch (const std::exception& e) {
     std::cerr << "railmodal: internal error: " << e.what() << "\n";
     return kInternal;

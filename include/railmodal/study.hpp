@@ -1,0 +1,165 @@
+// railmodal — design studies: variants of a base vehicle in a scene, evaluated, compared and
+// ranked (docs/studies.md describes the study file).
+//
+//   #include <railmodal/study.hpp>
+//   railmodal::Study study = railmodal::load_study("data/studies/resort_against_fette.toml");
+//   std::vector<railmodal::VariantResult> results = railmodal::evaluate_study(study, {});
+//   railmodal::Comparison comparison = railmodal::rank_variants(study, results);
+//   railmodal::write_comparison(std::cout, comparison, railmodal::ComparisonFormat::table);
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "railmodal/scene.hpp"
+#include "railmodal/vehicle.hpp"
+
+namespace railmodal {
+
+/// What sets a variant apart from the study's base: "key = value" as written in the study
+/// (scene keys carry the prefix "scene:"; another vehicle file is "vehicle = path").
+using StudyParameter = std::pair<std::string, std::string>;
+
+/// One design to evaluate: a vehicle and a scene, both checked like files of their own.
+struct StudyVariant {
+  std::string name;
+  std::vector<StudyParameter> parameters;
+  Vehicle vehicle;
+  Scene scene;
+};
+
+/// A bound on a metric (docs/studies.md lists the metrics), SI.
+struct RankingConstraint {
+  std::string metric;
+  std::optional<double> min;
+  std::optional<double> max;
+};
+
+struct RankingCriterion {
+  std::string metric;
+  bool maximise = false;
+  double weight = 1.0;  ///< weighted objective only; SI values times weights are summed
+};
+
+struct Ranking {
+  std::vector<RankingConstraint> constraints;
+  /// Lexicographic: the first criterion decides, the next breaks its ties, and so on.
+  /// Weighted: the sum of weight × value (negated for maximised criteria) is minimised.
+  std::vector<RankingCriterion> objective;
+  bool weighted = false;
+};
+
+struct Study {
+  std::string name;
+  std::string source;  ///< the study file
+  std::vector<StudyVariant> variants;  ///< base (unless base = false), variants, sweep points
+  Ranking ranking;
+};
+
+/// Reads a study file and every variant it defines: overrides are applied to the vehicle's
+/// (or scene's) TOML before the usual readers check it. Throws InputError naming the study
+/// file, line, variant and key for a bad override, and the vehicle or scene file for their
+/// own errors.
+Study load_study(const std::string& path);
+
+/// What the evaluation found for one variant (SI inside).
+struct VariantResult {
+  struct ModeSummary {
+    std::string name;
+    std::string kind;  ///< "oscillatory", "rigid-body" or "unstable"
+    double frequency_hz = 0.0;
+    double period_s = 0.0;
+    double divergence_rate = 0.0;  ///< 1/s, unstable modes
+  };
+  struct CriticalSpeedSummary {
+    double speed = 0.0;  ///< m/s
+    int source = 0;
+    std::string source_kind;
+    int harmonic = 1;
+    std::string mode_name;
+    bool friction_stops = false;
+  };
+  /// The largest response of one output over the scene's speed range, for one source.
+  struct PeakSummary {
+    int source = 0;
+    std::string output;    ///< DOF label
+    std::string quantity;  ///< displacement, velocity, acceleration
+    double amplitude = 0.0;  ///< largest finite value on the grid and refined peaks
+    double speed = 0.0;      ///< m/s where it is
+    bool unbounded = false;  ///< an undamped resonance in the range: no finite peak
+  };
+  int index = 0;  ///< position in Study::variants
+  std::string name;
+  std::vector<StudyParameter> parameters;
+  std::string failure;  ///< why the variant could not be evaluated; "" when it was
+  std::vector<ModeSummary> modes;  ///< in the scene's DOF set, ascending
+  /// Static deflection of each body's reference point under its own and carried weight
+  /// (the sum of the spring deflections between it and the track), m.
+  std::vector<std::pair<std::string, double>> static_deflections;
+  std::optional<double> metacentric_height;  ///< of the body named "body", m (eq. (235b))
+  std::vector<CriticalSpeedSummary> critical_speeds;  ///< ascending speed
+  std::vector<PeakSummary> peaks;
+
+  bool ok() const { return failure.empty(); }
+};
+
+/// Evaluates one variant: modes, static deflections, metacentric height, critical speeds
+/// and peak responses in its scene. Never throws for a bad design: an unstable or singular
+/// vehicle is a result with its `failure`.
+VariantResult evaluate_variant(const StudyVariant& variant, int index);
+
+struct EvaluationOptions {
+  int threads = 0;      ///< 0: std::thread::hardware_concurrency()
+  int shard = 1;        ///< this process evaluates the variants with index % shards == shard − 1
+  int shards = 1;
+  std::function<void(double)> progress;  ///< fraction done, called from one thread at a time
+};
+
+/// The variants of this shard, in index order; the same whatever the thread count.
+std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options);
+
+/// The value of a metric for a result, SI, or nothing when the result has no such value
+/// (no mode of that name). "lowest_critical_speed" and "critical_speed:<mode>" are +∞ without
+/// a critical speed in range.
+std::optional<double> metric_value(const VariantResult& result, const std::string& metric);
+/// Whether `metric` names a metric (after aliases: "critical_speed" is
+/// "lowest_critical_speed", "bounce_period" is "period:body bounce", "bounce_critical_speed"
+/// is "critical_speed:body bounce").
+bool is_metric(const std::string& metric);
+std::string canonical_metric(const std::string& metric);
+
+struct RankedVariant {
+  VariantResult result;
+  int rank = 0;            ///< 1 = best; feasible first, then infeasible, then failed
+  bool feasible = false;   ///< evaluated and within every constraint
+  std::vector<std::string> violations;
+  std::vector<std::optional<double>> criteria;  ///< per objective criterion, SI
+  std::optional<double> objective;  ///< weighted sum, or the first criterion's value
+};
+
+struct Comparison {
+  std::string study;
+  std::string source;
+  Ranking ranking;
+  std::vector<RankedVariant> variants;  ///< in rank order
+};
+
+/// Ranks every variant of the study; `results` must hold each index once (from one run or
+/// merged shards). Ties keep study order.
+Comparison rank_variants(const Study& study, std::vector<VariantResult> results);
+
+enum class ComparisonFormat { table, csv, json };
+std::optional<ComparisonFormat> comparison_format_from_string(const std::string& word);
+void write_comparison(std::ostream& out, const Comparison& comparison, ComparisonFormat format);
+
+/// The results of one shard as JSON, and back (checked against the study: same name, same
+/// number of variants, each name at its index). read_shard throws InputError naming `file`.
+void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
+                 const std::vector<VariantResult>& results);
+std::vector<VariantResult> read_shard(const std::string& file, const Study& study);
+
+}  // namespace railmodal

@@ -1,0 +1,17 @@
+// Vehicle and scene readers over an already parsed TOML document, so that a study can change
+// keys of the document (its overrides) before the usual checks run. `file` names the file
+// in messages; a scene's relative `vehicle` path is resolved against its folder.
+#pragma once
+
+#include <string>
+#include <toml.hpp>
+
+#include "railmodal/scene.hpp"
+#include "railmodal/vehicle.hpp"
+
+namespace railmodal::input {
+
+Vehicle read_vehicle(const toml::value& document, const std::string& file);
+Scene read_scene(const toml::value& document, const std::string& file);
+
+}  // namespace railmodal::input

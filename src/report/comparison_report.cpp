@@ -1,0 +1,316 @@
+// The ranked comparison as a table, CSV or JSON, and the JSON of one shard's results.
+// A shard's JSON holds every field of its results with doubles written to round trip, so a
+// merge ranks exactly the numbers a single run would have ranked.
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "railmodal/errors.hpp"
+#include "railmodal/study.hpp"
+#include "study/metrics.hpp"
+
+namespace railmodal {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kKmh = 3.6;  // km/h per m/s
+
+json optional_number(const std::optional<double>& x) {
+  return x && std::isfinite(*x) ? json(*x) : json(nullptr);
+}
+
+std::vector<double> periods(const VariantResult& r) {
+  std::vector<double> out;
+  for (const auto& m : r.modes)
+    if (m.kind == "oscillatory") out.push_back(m.period_s);
+  return out;
+}
+
+std::vector<double> critical_speeds_kmh(const VariantResult& r) {
+  std::vector<double> out;
+  for (const auto& c : r.critical_speeds) out.push_back(c.speed * kKmh);
+  return out;
+}
+
+json result_json(const VariantResult& r) {
+  json j;
+  j["index"] = r.index;
+  j["name"] = r.name;
+  j["parameters"] = json::array();
+  for (const auto& [key, value] : r.parameters) j["parameters"].push_back({{"key", key}, {"value", value}});
+  j["failure"] = r.ok() ? json(nullptr) : json(r.failure);
+  j["modes"] = json::array();
+  for (const auto& m : r.modes)
+    j["modes"].push_back({{"name", m.name}, {"kind", m.kind}, {"frequency_hz", m.frequency_hz}, {"period_s", m.period_s},
+                          {"divergence_rate_per_s", m.divergence_rate}});
+  j["static_deflections"] = json::array();
+  for (const auto& [body, deflection] : r.static_deflections)
+    j["static_deflections"].push_back({{"body", body}, {"deflection_m", deflection}});
+  j["metacentric_height_m"] = optional_number(r.metacentric_height);
+  j["critical_speeds"] = json::array();
+  for (const auto& c : r.critical_speeds)
+    j["critical_speeds"].push_back({{"speed_m_s", c.speed}, {"speed_kmh", c.speed * kKmh}, {"source", c.source},
+                                    {"source_kind", c.source_kind}, {"harmonic", c.harmonic}, {"mode_name", c.mode_name},
+                                    {"friction_stops", c.friction_stops}});
+  j["peaks"] = json::array();
+  for (const auto& p : r.peaks)
+    j["peaks"].push_back({{"source", p.source}, {"output", p.output}, {"quantity", p.quantity}, {"amplitude", p.amplitude},
+                          {"speed_m_s", p.speed}, {"unbounded", p.unbounded}});
+  return j;
+}
+
+VariantResult result_from_json(const json& j) {
+  VariantResult r;
+  r.index = j.at("index").get<int>();
+  r.name = j.at("name").get<std::string>();
+  for (const auto& p : j.at("parameters")) r.parameters.push_back({p.at("key").get<std::string>(), p.at("value").get<std::string>()});
+  if (!j.at("failure").is_null()) r.failure = j.at("failure").get<std::string>();
+  for (const auto& m : j.at("modes"))
+    r.modes.push_back({m.at("name").get<std::string>(), m.at("kind").get<std::string>(), m.at("frequency_hz").get<double>(),
+                       m.at("period_s").get<double>(), m.at("divergence_rate_per_s").get<double>()});
+  for (const auto& s : j.at("static_deflections"))
+    r.static_deflections.push_back({s.at("body").get<std::string>(), s.at("deflection_m").get<double>()});
+  if (!j.at("metacentric_height_m").is_null()) r.metacentric_height = j.at("metacentric_height_m").get<double>();
+  for (const auto& c : j.at("critical_speeds"))
+    r.critical_speeds.push_back({c.at("speed_m_s").get<double>(), c.at("source").get<int>(),
+                                 c.at("source_kind").get<std::string>(), c.at("harmonic").get<int>(),
+                                 c.at("mode_name").get<std::string>(), c.at("friction_stops").get<bool>()});
+  for (const auto& p : j.at("peaks"))
+    r.peaks.push_back({p.at("source").get<int>(), p.at("output").get<std::string>(), p.at("quantity").get<std::string>(),
+                       p.at("amplitude").get<double>(), p.at("speed_m_s").get<double>(), p.at("unbounded").get<bool>()});
+  return r;
+}
+
+json ranking_json(const Ranking& ranking) {
+  json j;
+  j["method"] = ranking.weighted ? "weighted" : "lexicographic";
+  j["constraints"] = json::array();
+  for (const auto& c : ranking.constraints)
+    j["constraints"].push_back({{"metric", c.metric}, {"min", optional_number(c.min)}, {"max", optional_number(c.max)}});
+  j["objective"] = json::array();
+  for (const auto& c : ranking.objective)
+    j["objective"].push_back({{"metric", c.metric}, {"goal", c.maximise ? "max" : "min"}, {"weight", c.weight}});
+  return j;
+}
+
+void write_json(std::ostream& out, const Comparison& c) {
+  json j;
+  j["study"] = c.study;
+  j["ranking"] = ranking_json(c.ranking);
+  j["variants"] = json::array();
+  for (const RankedVariant& v : c.variants) {
+    json row = result_json(v.result);
+    row["rank"] = v.rank;
+    row["feasible"] = v.feasible;
+    row["violations"] = v.violations;
+    row["objective"] = optional_number(v.objective);
+    row["criteria"] = json::array();
+    for (const auto& x : v.criteria) row["criteria"].push_back(optional_number(x));
+    row["periods_s"] = periods(v.result);
+    row["critical_speeds_kmh"] = critical_speeds_kmh(v.result);
+    j["variants"].push_back(row);
+  }
+  out << j.dump(2) << "\n";
+}
+
+std::string number(double x, const char* format = "%.4f") {
+  if (!std::isfinite(x)) return x > 0 ? "none" : "-inf";
+  char text[64];
+  std::snprintf(text, sizeof text, format, x);
+  return text;
+}
+
+// Shortest text that reads back as the same double (CSV is for programs).
+std::string exact(double x) {
+  if (!std::isfinite(x)) return "";
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, result.ptr);
+}
+
+std::string status(const RankedVariant& v) { return !v.result.ok() ? "failed" : v.feasible ? "yes" : "no"; }
+
+std::string criterion_heading(const RankingCriterion& c) {
+  return std::string(c.maximise ? "max " : "min ") + c.metric + " [" + study::display_unit(c.metric).unit + "]";
+}
+
+std::optional<double> body_deflection(const VariantResult& r) { return metric_value(r, "static_deflection"); }
+
+// Columns: rank, variant, feasible, each criterion, lowest critical speed, static deflection,
+// periods of the oscillatory modes.
+std::vector<std::vector<std::string>> table_rows(const Comparison& c, bool for_csv) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> head{"rank", "variant", "feasible"};
+  if (for_csv) head.push_back("objective");
+  for (const auto& k : c.ranking.objective) head.push_back(criterion_heading(k));
+  for (const char* h : {"lowest critical speed [km/h]", "static deflection [mm]", "periods [s]"}) head.push_back(h);
+  if (for_csv) {
+    head.back() = "periods_s";
+    head[head.size() - 3] = "lowest_critical_speed_kmh";
+    head[head.size() - 2] = "static_deflection_mm";
+    for (const char* h : {"critical_speeds_kmh", "failure", "violations"}) head.push_back(h);
+  }
+  rows.push_back(head);
+  for (const RankedVariant& v : c.variants) {
+    const VariantResult& r = v.result;
+    std::vector<std::string> row{std::to_string(v.rank), r.name, status(v)};
+    if (for_csv) row.push_back(v.objective ? exact(*v.objective) : "");
+    for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
+      const auto& x = v.criteria.size() > k ? v.criteria[k] : std::nullopt;
+      const double scale = study::display_unit(c.ranking.objective[k].metric).per_si;
+      const bool peak = c.ranking.objective[k].metric.rfind("peak:", 0) == 0;
+      if (!x) row.push_back(for_csv ? "" : "-");
+      else if (for_csv) row.push_back(exact(*x * scale));
+      else if (std::isinf(*x) && *x > 0) row.push_back(peak ? "unbounded" : "none");  // no critical speed in range
+      else row.push_back(number(*x * scale, "%.4g"));
+    }
+    const auto lowest = r.ok() ? metric_value(r, "lowest_critical_speed") : std::nullopt;
+    row.push_back(!lowest ? (for_csv ? "" : "-") : for_csv ? exact(*lowest * kKmh) : number(*lowest * kKmh, "%.1f"));
+    const auto deflection = body_deflection(r);
+    row.push_back(!deflection ? (for_csv ? "" : "-") : for_csv ? exact(*deflection * 1000.0) : number(*deflection * 1000.0, "%.1f"));
+    std::string list;
+    for (double p : periods(r)) list += (list.empty() ? "" : " ") + (for_csv ? exact(p) : number(p, "%.3f"));
+    row.push_back(list);
+    if (for_csv) {
+      std::string speeds, violations;
+      for (double s : critical_speeds_kmh(r)) speeds += (speeds.empty() ? "" : " ") + exact(s);
+      for (const auto& w : v.violations) violations += (violations.empty() ? "" : "; ") + w;
+      row.push_back(speeds);
+      row.push_back(r.failure);
+      row.push_back(violations);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string quoted = "\"";
+  for (char ch : s) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return quoted + "\"";
+}
+
+// Display width: UTF-8 continuation bytes take no column.
+size_t width(const std::string& s) {
+  return static_cast<size_t>(std::count_if(s.begin(), s.end(), [](char ch) { return (static_cast<unsigned char>(ch) & 0xC0) != 0x80; }));
+}
+
+void write_table(std::ostream& out, const Comparison& c) {
+  size_t feasible = 0;
+  for (const auto& v : c.variants) feasible += v.feasible;
+  out << "railmodal compare: " << c.study << "\n" << c.variants.size() << " variants, " << feasible << " feasible";
+  if (!c.ranking.objective.empty()) {
+    out << "; objective: ";
+    for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
+      const auto& crit = c.ranking.objective[k];
+      out << (k ? (c.ranking.weighted ? " + " : ", then ") : "") << (crit.maximise ? "max " : "min ") << crit.metric;
+      if (c.ranking.weighted) out << " (weight " << crit.weight << ")";
+    }
+  }
+  out << "\n";
+  for (const auto& k : c.ranking.constraints) {
+    const study::DisplayUnit u = study::display_unit(k.metric);
+    out << "constraint: " << k.metric;
+    if (k.min) out << " >= " << number(*k.min * u.per_si, "%.6g") << " " << u.unit;
+    if (k.max) out << (k.min ? " and" : "") << " <= " << number(*k.max * u.per_si, "%.6g") << " " << u.unit;
+    out << "\n";
+  }
+  out << "\n";
+  const auto rows = table_rows(c, false);
+  std::vector<size_t> widths(rows.front().size(), 0);
+  for (const auto& row : rows)
+    for (size_t i = 0; i < row.size(); ++i) widths[i] = std::max(widths[i], width(row[i]));
+  for (const auto& row : rows) {
+    std::string line;
+    for (size_t i = 0; i < row.size(); ++i) {
+      const bool last = i + 1 == row.size();
+      const bool right = i >= 3 && !last;  // numbers right-aligned
+      const std::string pad(widths[i] - width(row[i]), ' ');
+      line += right ? pad + row[i] : row[i] + (last ? "" : pad);
+      if (!last) line += "  ";
+    }
+    out << line << "\n";
+  }
+  bool notes = false;
+  for (const auto& v : c.variants) {
+    if (v.result.ok() && v.violations.empty()) continue;
+    if (!notes) out << "\n";
+    notes = true;
+    out << v.result.name << ": ";
+    if (!v.result.ok()) {
+      out << "failed: " << v.result.failure << "\n";
+    } else {
+      for (size_t k = 0; k < v.violations.size(); ++k) out << (k ? "; " : "") << v.violations[k];
+      out << "\n";
+    }
+  }
+}
+
+}  // namespace
+
+std::optional<ComparisonFormat> comparison_format_from_string(const std::string& word) {
+  if (word == "table") return ComparisonFormat::table;
+  if (word == "csv") return ComparisonFormat::csv;
+  if (word == "json") return ComparisonFormat::json;
+  return std::nullopt;
+}
+
+void write_comparison(std::ostream& out, const Comparison& comparison, ComparisonFormat format) {
+  switch (format) {
+    case ComparisonFormat::table: write_table(out, comparison); break;
+    case ComparisonFormat::csv:
+      for (const auto& row : table_rows(comparison, true)) {
+        for (size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << csv_field(row[i]);
+        out << "\n";
+      }
+      break;
+    case ComparisonFormat::json: write_json(out, comparison); break;
+  }
+}
+
+void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
+                 const std::vector<VariantResult>& results) {
+  json j;
+  j["format"] = "railmodal-compare-shard";
+  j["study"] = study.name;
+  j["variant_count"] = study.variants.size();
+  j["shard"] = options.shard;
+  j["shards"] = options.shards;
+  j["results"] = json::array();
+  for (const auto& r : results) j["results"].push_back(result_json(r));
+  out << j.dump(1) << "\n";
+}
+
+std::vector<VariantResult> read_shard(const std::string& file, const Study& study) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(file, 0, 0, "cannot open the file");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(file, 0, 0, std::string("not a shard of railmodal compare (JSON: ") + e.what() + ")");
+  }
+  std::vector<VariantResult> results;
+  try {
+    if (j.value("format", "") != "railmodal-compare-shard")
+      throw InputError(file, 0, 0, "not a shard written by railmodal compare --shard");
+    if (j.at("study").get<std::string>() != study.name || j.at("variant_count").get<size_t>() != study.variants.size())
+      throw InputError(file, 0, 0, "a shard of another study ('" + j.at("study").get<std::string>() + "', " +
+                                       std::to_string(j.at("variant_count").get<size_t>()) + " variants), not of '" +
+                                       study.name + "' (" + std::to_string(study.variants.size()) + " variants)");
+    for (const auto& r : j.at("results")) results.push_back(result_from_json(r));
+  } catch (const json::exception& e) {
+    throw InputError(file, 0, 0, std::string("a shard with missing or mistyped fields: ") + e.what());
+  }
+  for (const auto& r : results)
+    if (r.index < 0 || r.index >= static_cast<int>(study.variants.size()) || study.variants[r.index].name != r.name)
+      throw InputError(file, 0, 0, "variant '" + r.name + "' is not at index " + std::to_string(r.index) + " of the study");
+  return results;
+}
+
+}  // namespace railmodal

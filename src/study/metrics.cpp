@@ -1,0 +1,115 @@
+// Metrics of a variant result, by name (docs/studies.md, "Ranking").
+#include "study/metrics.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "railmodal/study.hpp"
+
+namespace railmodal {
+namespace {
+
+bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+
+// "peak:<dof>:<quantity>" → dof and quantity; false when it is not of that form.
+bool split_peak(const std::string& metric, std::string* dof, std::string* quantity) {
+  if (!starts_with(metric, "peak:")) return false;
+  const size_t colon = metric.rfind(':');
+  if (colon <= 5) return false;
+  *dof = metric.substr(5, colon - 5);
+  *quantity = metric.substr(colon + 1);
+  return !dof->empty() && (*quantity == "displacement" || *quantity == "velocity" || *quantity == "acceleration");
+}
+
+bool is_rotation(const std::string& dof) {
+  for (const char* m : {".roll", ".pitch", ".yaw"})
+    if (dof.size() > std::string(m).size() && dof.compare(dof.size() - std::string(m).size(), std::string::npos, m) == 0)
+      return true;
+  return false;
+}
+
+}  // namespace
+
+std::string canonical_metric(const std::string& metric) {
+  if (metric == "critical_speed") return "lowest_critical_speed";
+  if (metric == "bounce_period") return "period:body bounce";
+  if (metric == "pitch_period") return "period:body pitch";
+  if (metric == "bounce_critical_speed") return "critical_speed:body bounce";
+  return metric;
+}
+
+bool is_metric(const std::string& name) {
+  const std::string metric = canonical_metric(name);
+  std::string dof, quantity;
+  return metric == "lowest_critical_speed" || metric == "static_deflection" || metric == "metacentric_height" ||
+         (starts_with(metric, "period:") && metric.size() > 7) ||
+         (starts_with(metric, "critical_speed:") && metric.size() > 15) ||
+         (starts_with(metric, "static_deflection:") && metric.size() > 18) || split_peak(metric, &dof, &quantity);
+}
+
+std::optional<double> metric_value(const VariantResult& r, const std::string& name) {
+  const std::string metric = canonical_metric(name);
+  if (!r.ok()) return std::nullopt;
+  if (metric == "lowest_critical_speed")
+    return r.critical_speeds.empty() ? std::numeric_limits<double>::infinity() : r.critical_speeds.front().speed;
+  if (starts_with(metric, "critical_speed:")) {
+    for (const auto& c : r.critical_speeds)  // ascending
+      if (c.mode_name == metric.substr(15)) return c.speed;
+    return std::numeric_limits<double>::infinity();
+  }
+  if (starts_with(metric, "period:")) {
+    const std::string mode = metric.substr(7);
+    for (const auto& m : r.modes)
+      if (m.name == mode && m.kind == "oscillatory") return m.period_s;
+    return std::nullopt;
+  }
+  if (metric == "static_deflection" || starts_with(metric, "static_deflection:")) {
+    const std::string body = metric == "static_deflection" ? "body" : metric.substr(18);
+    for (const auto& [name_of_body, deflection] : r.static_deflections)
+      if (name_of_body == body) return deflection;
+    return std::nullopt;
+  }
+  if (metric == "metacentric_height") return r.metacentric_height;
+  std::string dof, quantity;
+  if (split_peak(metric, &dof, &quantity)) {
+    std::optional<double> largest;
+    for (const auto& p : r.peaks)
+      if (p.output == dof && p.quantity == quantity) {
+        const double a = p.unbounded ? std::numeric_limits<double>::infinity() : p.amplitude;
+        largest = std::max(largest.value_or(a), a);
+      }
+    return largest;
+  }
+  return std::nullopt;
+}
+
+namespace study {
+
+input::Quantity metric_quantity(const std::string& name) {
+  const std::string metric = canonical_metric(name);
+  if (metric == "lowest_critical_speed" || starts_with(metric, "critical_speed:")) return input::Quantity::speed;
+  if (starts_with(metric, "period:")) return input::Quantity::time;
+  std::string dof, quantity;
+  if (split_peak(metric, &dof, &quantity)) {
+    const bool rotation = is_rotation(dof);
+    if (quantity == "displacement") return rotation ? input::Quantity::angle : input::Quantity::length;
+    if (quantity == "velocity") return rotation ? input::Quantity::angular_speed : input::Quantity::speed;
+    return rotation ? input::Quantity::dimensionless : input::Quantity::acceleration;  // rad/s²: no units to write
+  }
+  return input::Quantity::length;  // static deflections, metacentric height
+}
+
+DisplayUnit display_unit(const std::string& metric) {
+  switch (metric_quantity(metric)) {
+    case input::Quantity::speed: return starts_with(canonical_metric(metric), "peak:") ? DisplayUnit{"m/s", 1.0} : DisplayUnit{"km/h", 3.6};
+    case input::Quantity::length: return {"mm", 1000.0};
+    case input::Quantity::time: return {"s", 1.0};
+    case input::Quantity::acceleration: return {"m/s^2", 1.0};
+    case input::Quantity::angle: return {"rad", 1.0};
+    case input::Quantity::angular_speed: return {"rad/s", 1.0};
+    default: return {"rad/s^2", 1.0};
+  }
+}
+
+}  // namespace study
+}  // namespace railmodal

@@ -1,0 +1,90 @@
+// Ranking of a study's variants: constraints first, then the objective, then study order.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <stdexcept>
+
+#include "railmodal/study.hpp"
+#include "study/metrics.hpp"
+
+namespace railmodal {
+namespace {
+
+std::string shown(const std::string& metric, double si) {
+  const study::DisplayUnit u = study::display_unit(metric);
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6g %s", si * u.per_si, u.unit);
+  return text;
+}
+
+constexpr double kWorst = std::numeric_limits<double>::infinity();
+
+// The value a criterion sorts by: smaller is better; a missing value is the worst.
+double sort_value(const std::optional<double>& value, bool maximise) {
+  if (!value || std::isnan(*value)) return kWorst;
+  return maximise ? -*value : *value;
+}
+
+}  // namespace
+
+Comparison rank_variants(const Study& study, std::vector<VariantResult> results) {
+  if (results.size() != study.variants.size())
+    throw std::invalid_argument("results for " + std::to_string(results.size()) + " variants, the study has " +
+                                std::to_string(study.variants.size()));
+  std::sort(results.begin(), results.end(), [](const VariantResult& a, const VariantResult& b) { return a.index < b.index; });
+  for (size_t i = 0; i < results.size(); ++i)
+    if (results[i].index != static_cast<int>(i) || results[i].name != study.variants[i].name)
+      throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
+                                  "') is missing or appears twice");
+  const Ranking& ranking = study.ranking;
+  Comparison out;
+  out.study = study.name;
+  out.source = study.source;
+  out.ranking = ranking;
+  std::vector<std::vector<double>> keys;  // group, criteria (or weighted sum), index
+  for (VariantResult& r : results) {
+    RankedVariant v;
+    if (r.ok()) {
+      for (const RankingConstraint& c : ranking.constraints) {
+        const std::optional<double> value = metric_value(r, c.metric);
+        if (!value) v.violations.push_back("no " + c.metric);
+        else if (c.min && *value < *c.min) v.violations.push_back(c.metric + " " + shown(c.metric, *value) + " < " + shown(c.metric, *c.min));
+        else if (c.max && *value > *c.max) v.violations.push_back(c.metric + " " + shown(c.metric, *value) + " > " + shown(c.metric, *c.max));
+      }
+      v.feasible = v.violations.empty();
+      for (const RankingCriterion& c : ranking.objective) v.criteria.push_back(metric_value(r, c.metric));
+    }
+    std::vector<double> key{r.ok() ? (v.feasible ? 0.0 : 1.0) : 2.0};
+    if (r.ok() && !ranking.objective.empty()) {
+      if (ranking.weighted) {
+        double sum = 0.0;
+        for (size_t k = 0; k < ranking.objective.size(); ++k)
+          sum += ranking.objective[k].weight * sort_value(v.criteria[k], ranking.objective[k].maximise);
+        // The sum is minimised; reported with the sign it has (maximised criteria negative).
+        if (std::isfinite(sum)) v.objective = sum;
+        key.push_back(std::isnan(sum) ? kWorst : sum);
+      } else {
+        v.objective = v.criteria.front();
+        for (size_t k = 0; k < ranking.objective.size(); ++k)
+          key.push_back(sort_value(v.criteria[k], ranking.objective[k].maximise));
+      }
+    }
+    key.push_back(r.index);
+    keys.push_back(key);
+    v.result = std::move(r);
+    out.variants.push_back(std::move(v));
+  }
+  std::vector<size_t> order(out.variants.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return keys[a] < keys[b]; });
+  std::vector<RankedVariant> ranked;
+  for (size_t position = 0; position < order.size(); ++position) {
+    ranked.push_back(std::move(out.variants[order[position]]));
+    ranked.back().rank = static_cast<int>(position) + 1;
+  }
+  out.variants = std::move(ranked);
+  return out;
+}
+
+}  // namespace railmodal

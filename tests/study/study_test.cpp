@@ -1,0 +1,323 @@
+// Study files: overrides, sweeps, samples, errors; ranking; parallel evaluation.
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+
+#include "railmodal/railmodal.hpp"
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+// A two-axle wagon (the book's Example 3 reduced) and a one-source scene beside each study.
+const char* kWagon = R"(
+[vehicle]
+name = "wagon"
+template = "two-axle"
+gravity = "981 cm/s^2"
+[body]
+weight = "22626 kgf"
+cg_height = "100 cm"
+radius_of_gyration = { roll = "110 cm", pitch = "260 cm", yaw = "260 cm" }
+[suspension]
+wheelbase = "3810 mm"
+spring_spacing = "211.4 cm"
+spring = [{ kind = "leaf", static_deflection = "57.2 mm" }]
+)";
+
+const char* kScene = R"(
+[scene]
+name = "joints"
+dofs = "vertical"
+[speed]
+min = "20 km/h"
+max = "150 km/h"
+step = "1 km/h"
+[[source]]
+kind = "rail_joints"
+rail_length = "10 m"
+dip_depth = "5 mm"
+)";
+
+std::string study_file(const std::string& body, const std::string& head = "") {
+  write_temp("wagon.toml", kWagon);
+  write_temp("scene.toml", kScene);
+  return write_temp("study.toml",
+                    "[study]\nname = \"s\"\nvehicle = \"wagon.toml\"\nscene = \"scene.toml\"\n" + head + body);
+}
+
+double vertical_stiffness(const Vehicle& v) { return series_stiffness(v.elements.front().vertical_stages); }
+
+// The error a study gives, with its location.
+InputError study_error(const std::string& body) {
+  const std::string path = study_file(body);
+  try {
+    load_study(path);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << body;
+  return InputError("", 0, 0, "");
+}
+
+TEST(StudyReader, OverrideWithUnitsChangesTheSpringBeforeTheReaderChecksIt) {
+  const Study s = load_study(study_file(R"(
+[[variant]]
+name = "soft"
+overrides = { "suspension.spring[0].static_deflection" = "80 mm" }
+)"));
+  ASSERT_EQ(s.variants.size(), 2u);
+  EXPECT_EQ(s.variants[0].name, "base");
+  EXPECT_EQ(s.variants[1].name, "soft");
+  // Same load per spring, so the stiffness scales as 1/f: exact up to rounding of one division.
+  EXPECT_NEAR(vertical_stiffness(s.variants[1].vehicle) / vertical_stiffness(s.variants[0].vehicle), 57.2 / 80.0, 1e-14);
+  ASSERT_EQ(s.variants[1].parameters.size(), 1u);
+  EXPECT_EQ(s.variants[1].parameters[0].first, "suspension.spring[0].static_deflection");
+  EXPECT_EQ(s.variants[1].parameters[0].second, "80 mm");
+}
+
+TEST(StudyReader, OverrideMayReplaceAWholeTable) {
+  const Study s = load_study(study_file(R"(
+[[variant]]
+name = "coil"
+overrides = { "suspension.spring" = [{ stiffness = "900 kgf/cm", kind = "coil" }] }
+)"));
+  EXPECT_DOUBLE_EQ(vertical_stiffness(s.variants[1].vehicle), 900 * kKgfPerCm);
+  EXPECT_EQ(s.variants[1].vehicle.elements.front().vertical_stages.front().kind, "coil");
+  // Shown on one line with sorted keys, whatever order the TOML library keeps.
+  EXPECT_EQ(s.variants[1].parameters[0].second, "[{ kind = \"coil\", stiffness = \"900 kgf/cm\" }]");
+}
+
+TEST(StudyReader, ElementOfTheGeneralFormIsPickedByName) {
+  write_temp("general.toml", R"(
+[vehicle]
+name = "two springs"
+[[body]]
+name = "body"
+mass = "10 t"
+radius_of_gyration = { roll = "1 m", pitch = "2 m", yaw = "2 m" }
+centre_of_gravity = ["0 m", "0 m", "0 m"]
+held = ["lateral", "roll", "yaw"]
+[[element]]
+name = "front spring"
+upper = "body"
+point = ["2 m", "0 m", "0 m"]
+vertical = { stiffness = "1000 kgf/cm" }
+[[element]]
+name = "rear spring"
+upper = "body"
+point = ["-2 m", "0 m", "0 m"]
+vertical = { stiffness = "1000 kgf/cm" }
+)");
+  const Study s = load_study(study_file(R"(
+[[variant]]
+name = "stiff rear"
+vehicle = "general.toml"
+overrides = { 'element."rear spring".vertical.stiffness' = "2000 kgf/cm" }
+)"));
+  const Vehicle& v = s.variants[1].vehicle;
+  EXPECT_DOUBLE_EQ(series_stiffness(v.elements[0].vertical_stages), 1000 * kKgfPerCm);
+  EXPECT_DOUBLE_EQ(series_stiffness(v.elements[1].vertical_stages), 2000 * kKgfPerCm);
+}
+
+TEST(StudyReader, BadOverridesNameTheStudyLineVariantAndKey) {
+  // Unknown key: the vehicle reader's complaint, sent back to the study's line.
+  InputError e = study_error("\n[[variant]]\nname = \"typo\"\noverrides = { \"suspension.spring[0].static_deflecton\" = \"80 mm\" }\n");
+  EXPECT_NE(e.file().find("study.toml"), std::string::npos);
+  EXPECT_EQ(e.line(), 8);
+  EXPECT_NE(e.message().find("variant 'typo': key 'suspension.spring[0].static_deflecton': unknown key"), std::string::npos)
+      << e.what();
+  // Wrong unit.
+  e = study_error("\n[[variant]]\nname = \"unit\"\noverrides = { \"body.cg_height\" = \"100 kgf\" }\n");
+  EXPECT_EQ(e.line(), 8);
+  EXPECT_NE(e.message().find("variant 'unit': key 'body.cg_height': expected a length"), std::string::npos) << e.what();
+  // A value the reader rejects.
+  e = study_error("\n[[variant]]\nname = \"negative\"\noverrides = { \"suspension.wheelbase\" = \"-1 m\" }\n");
+  EXPECT_NE(e.message().find("variant 'negative': key 'suspension.wheelbase': must be positive"), std::string::npos) << e.what();
+  // A path that does not exist in the file.
+  e = study_error("\n[[variant]]\nname = \"nowhere\"\noverrides = { \"secondary.spring.stiffness\" = \"1 kgf/cm\" }\n");
+  EXPECT_EQ(e.line(), 8);
+  EXPECT_NE(e.message().find("no key 'secondary' in the file"), std::string::npos) << e.what();
+  // An index beyond the array.
+  e = study_error("\n[[variant]]\nname = \"beyond\"\noverrides = { \"suspension.spring[3].stiffness\" = \"1 kgf/cm\" }\n");
+  EXPECT_NE(e.message().find("has 1 entries: [3] is beyond them"), std::string::npos) << e.what();
+  // A sweep value that the scene rejects names the sweep's line and the generated variant.
+  e = study_error("\n[[sweep]]\nname = \"L\"\nparameters = [{ scene_key = \"source[0].rail_length\", values = [\"10 m\", \"-1 m\"] }]\n");
+  EXPECT_EQ(e.line(), 8);
+  EXPECT_NE(e.message().find("variant 'L: rail_length = -1 m': key 'source[0].rail_length': must be positive"),
+            std::string::npos)
+      << e.what();
+}
+
+TEST(StudyReader, GridIsTheProductWithTheFirstParameterSlowest) {
+  const Study s = load_study(study_file(R"(
+[[sweep]]
+name = "g"
+parameters = [
+  { key = "suspension.spring[0].static_deflection", from = "40 mm", to = "80 mm", step = "20 mm", label = "f" },
+  { scene_key = "source[0].rail_length", values = ["10 m", "15 m"], label = "L" },
+]
+)",
+                                        "base = false\n"));
+  ASSERT_EQ(s.variants.size(), 6u);  // 3 deflections × 2 rail lengths
+  const char* names[] = {"g: f = 40 mm, L = 10 m", "g: f = 40 mm, L = 15 m", "g: f = 60 mm, L = 10 m",
+                         "g: f = 60 mm, L = 15 m", "g: f = 80 mm, L = 10 m", "g: f = 80 mm, L = 15 m"};
+  for (size_t i = 0; i < 6; ++i) EXPECT_EQ(s.variants[i].name, names[i]);
+  EXPECT_EQ(s.variants[5].parameters[1].first, "scene:source[0].rail_length");
+  EXPECT_DOUBLE_EQ(s.variants[5].scene.sources[0]->wavelength(), 15.0);  // rail joints repeat every rail
+  // Stiffness ∝ 1/f under the same load.
+  EXPECT_NEAR(vertical_stiffness(s.variants[0].vehicle) / vertical_stiffness(s.variants[4].vehicle), 2.0, 1e-14);
+}
+
+TEST(StudyReader, SampleIsSeededAndPortable) {
+  const std::string body = R"(
+[[sweep]]
+name = "box"
+parameters = [{ key = "suspension.spring[0].static_deflection", from = "40.0 mm", to = "80.0 mm" }]
+sample = { count = 3, seed = 42 }
+)";
+  const Study s = load_study(study_file(body, "base = false\n"));
+  ASSERT_EQ(s.variants.size(), 3u);
+  EXPECT_EQ(s.variants[0].name, "box #1");
+  // The first uniforms of xoshiro256** seeded by splitmix64(42), computed independently
+  // (Python integers): the same on every platform, so compared exactly.
+  const double u[] = {0.08386297105988216, 0.3789802506626686, 0.6800434110281394};
+  for (int i = 0; i < 3; ++i) {
+    const std::string& text = s.variants[i].parameters[0].second;
+    EXPECT_EQ(std::strtod(text.c_str(), nullptr), 40.0 + u[i] * (80.0 - 40.0)) << text;
+    EXPECT_EQ(text.substr(text.size() - 3), " mm");
+  }
+  // A second reading gives the same points.
+  const Study again = load_study(study_file(body, "base = false\n"));
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(again.variants[i].parameters, s.variants[i].parameters);
+}
+
+TEST(StudyReader, RankingKeysAreChecked) {
+  InputError e = study_error("\n[ranking]\nmin_critical_speed = \"90 mm\"\n");
+  EXPECT_NE(e.message().find("key 'ranking.min_critical_speed': expected a speed"), std::string::npos) << e.what();
+  e = study_error("\n[ranking]\nobjective = [{ metric = \"comfort\", goal = \"max\" }]\n");
+  EXPECT_NE(e.message().find("unknown metric 'comfort'"), std::string::npos) << e.what();
+  e = study_error("\n[[variant]]\nname = \"base\"\n");
+  EXPECT_NE(e.message().find("variant 'base': another variant has this name"), std::string::npos) << e.what();
+}
+
+// Results made by hand, to test the ranking alone.
+VariantResult result(int index, const std::string& name, double bounce_period, double critical_speed) {
+  VariantResult r;
+  r.index = index;
+  r.name = name;
+  r.modes.push_back({"body bounce", "oscillatory", 1.0 / bounce_period, bounce_period, 0.0});
+  r.critical_speeds.push_back({critical_speed, 0, "rail_joints", 1, "body bounce", false});
+  return r;
+}
+
+Study named(const std::vector<std::string>& names) {
+  Study s;
+  s.name = "hand";
+  for (const auto& n : names) s.variants.push_back({n, {}, {}, {}});
+  return s;
+}
+
+TEST(Ranking, ConstraintsThenLexicographicCriteriaThenStudyOrder) {
+  Study s = named({"a", "b", "c", "d", "e"});
+  s.ranking.constraints.push_back({"lowest_critical_speed", 20.0, std::nullopt});
+  s.ranking.objective.push_back({"period:body bounce", true, 1.0});
+  s.ranking.objective.push_back({"lowest_critical_speed", true, 1.0});
+  std::vector<VariantResult> results{result(0, "a", 0.8, 25.0), result(1, "b", 0.9, 15.0), result(2, "c", 0.8, 30.0),
+                                     result(3, "d", 0.8, 30.0), result(4, "e", 1.0, 30.0)};
+  results[4].failure = "unstable";
+  const Comparison c = rank_variants(s, results);
+  std::vector<std::string> order;
+  for (const auto& v : c.variants) order.push_back(v.result.name);
+  // c and d tie on both criteria: study order; b is infeasible; e failed.
+  EXPECT_EQ(order, (std::vector<std::string>{"c", "d", "a", "b", "e"}));
+  EXPECT_EQ(c.variants[0].rank, 1);
+  EXPECT_TRUE(c.variants[2].feasible);
+  EXPECT_FALSE(c.variants[3].feasible);
+  ASSERT_EQ(c.variants[3].violations.size(), 1u);
+  EXPECT_NE(c.variants[3].violations[0].find("54 km/h < 72 km/h"), std::string::npos) << c.variants[3].violations[0];
+  EXPECT_FALSE(c.variants[4].feasible);
+  EXPECT_DOUBLE_EQ(*c.variants[0].objective, 0.8);
+}
+
+TEST(Ranking, WeightedSumIsMinimised) {
+  Study s = named({"a", "b"});
+  s.ranking.weighted = true;
+  s.ranking.objective.push_back({"period:body bounce", true, 100.0});  // 1 s of period is worth 100 m/s
+  s.ranking.objective.push_back({"lowest_critical_speed", true, 1.0});
+  const Comparison c = rank_variants(s, {result(0, "a", 1.0, 20.0), result(1, "b", 0.8, 45.0)});
+  // a: −(100·1.0 + 20) = −120; b: −(80 + 45) = −125: b wins.
+  EXPECT_EQ(c.variants[0].result.name, "b");
+  EXPECT_DOUBLE_EQ(*c.variants[0].objective, -125.0);
+  EXPECT_DOUBLE_EQ(*c.variants[1].objective, -120.0);
+}
+
+TEST(Ranking, MissingOrDuplicateResultsAreRefused) {
+  const Study s = named({"a", "b"});
+  EXPECT_THROW(rank_variants(s, {result(0, "a", 1.0, 20.0)}), std::invalid_argument);
+  EXPECT_THROW(rank_variants(s, {result(0, "a", 1.0, 20.0), result(0, "a", 1.0, 20.0)}), std::invalid_argument);
+}
+
+TEST(Evaluation, ResultsDoNotDependOnThreadsOrShards) {
+  const Study s = load_study(study_file(R"(
+[[sweep]]
+parameters = [{ key = "suspension.spring[0].static_deflection", from = "40 mm", to = "80 mm", step = "10 mm" }]
+)"));
+  EvaluationOptions one;
+  one.threads = 1;
+  EvaluationOptions two;
+  two.threads = 2;
+  const auto serial = evaluate_study(s, one);
+  const auto parallel = evaluate_study(s, two);
+  std::ostringstream a, b;
+  write_comparison(a, rank_variants(s, serial), ComparisonFormat::json);
+  write_comparison(b, rank_variants(s, parallel), ComparisonFormat::json);
+  EXPECT_EQ(a.str(), b.str());
+  // Shard 2/3 holds indices 1 and 4.
+  EvaluationOptions shard = one;
+  shard.shard = 2;
+  shard.shards = 3;
+  const auto part = evaluate_study(s, shard);
+  ASSERT_EQ(part.size(), 2u);
+  EXPECT_EQ(part[0].index, 1);
+  EXPECT_EQ(part[1].index, 4);
+  // The shard's JSON reads back into the same results.
+  std::ostringstream text;
+  write_shard(text, s, shard, part);
+  const std::string file = write_temp("shard.json", text.str());
+  const auto back = read_shard(file, s);
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[1].modes[1].period_s, part[1].modes[1].period_s);
+  EXPECT_EQ(back[1].critical_speeds.front().speed, part[1].critical_speeds.front().speed);
+  EXPECT_EQ(back[1].static_deflections, part[1].static_deflections);
+}
+
+TEST(Evaluation, UnstableVariantIsReportedAndDoesNotStopTheStudy) {
+  // Pitch stiffness 4a1²c − W·l (eq. (156a)) with 4c = W/f: negative for l > a1²/f = 63 m.
+  const Study s = load_study(study_file(R"(
+[[variant]]
+name = "tall"
+overrides = { "body.cg_height" = "100 m" }
+)"));
+  EvaluationOptions options;
+  options.threads = 2;
+  const auto results = evaluate_study(s, options);
+  ASSERT_EQ(results.size(), 2u);
+  EXPECT_TRUE(results[0].ok());
+  EXPECT_FALSE(results[1].ok());
+  EXPECT_NE(results[1].failure.find("unstable: mode 1, body pitch"), std::string::npos) << results[1].failure;
+  const Comparison c = rank_variants(s, results);
+  EXPECT_EQ(c.variants[1].result.name, "tall");
+}
+
+TEST(Evaluation, StaticDeflectionOfTheTwoAxleWagonIsItsSpringDeflection) {
+  const Study s = load_study(study_file(""));
+  const VariantResult r = evaluate_variant(s.variants[0], 0);
+  ASSERT_TRUE(r.ok()) << r.failure;
+  // Four equal springs, each given by its deflection under its share of the weight: the
+  // body settles by exactly that (up to rounding of the linear solve).
+  EXPECT_NEAR(*metric_value(r, "static_deflection"), 0.0572, 1e-15);
+}
+
+}  // namespace
+}  // namespace railmodal::test

@@ -1,0 +1,99 @@
+// railmodal compare STUDY [--format table|csv|json] [-o OUT] [--threads N] [--shard K/N]
+//                         [--merge SHARD.json ...]
+#include <iostream>
+#include <memory>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "commands.hpp"
+#include "railmodal/errors.hpp"
+#include "railmodal/study.hpp"
+
+namespace railmodal::cli {
+namespace {
+
+struct CompareOptions {
+  std::string study;
+  std::string format = "table";
+  std::string output = "-";
+  int threads = 0;
+  std::string shard;
+  std::vector<std::string> merge;
+  bool quiet = false;
+};
+
+int run(const CompareOptions& o) {
+  const ComparisonFormat format = *comparison_format_from_string(o.format);  // CLI11 checked the word
+  EvaluationOptions evaluation;
+  evaluation.threads = o.threads;
+  if (!o.shard.empty()) {
+    std::smatch m;
+    static const std::regex pattern(R"((\d{1,6})/(\d{1,6}))");
+    if (!std::regex_match(o.shard, m, pattern) || std::stoi(m[1]) < 1 || std::stoi(m[1]) > std::stoi(m[2])) {
+      std::cerr << "railmodal: error: --shard expects K/N with 1 <= K <= N, such as 2/4, not '" << o.shard << "'\n";
+      return kUsage;
+    }
+    if (!o.merge.empty()) {
+      std::cerr << "railmodal: error: --shard and --merge exclude each other\n";
+      return kUsage;
+    }
+    evaluation.shard = std::stoi(m[1]);
+    evaluation.shards = std::stoi(m[2]);
+  }
+  try {
+    const Study study = load_study(o.study);
+    std::ostringstream text;
+    if (!o.shard.empty()) {
+      if (!o.quiet) evaluation.progress = terminal_progress("compare");
+      write_shard(text, study, evaluation, evaluate_study(study, evaluation));
+      return write_output(o.output, text.str());
+    }
+    std::vector<VariantResult> results;
+    if (o.merge.empty()) {
+      if (!o.quiet) evaluation.progress = terminal_progress("compare");
+      results = evaluate_study(study, evaluation);
+    } else {
+      std::set<int> seen;
+      for (const std::string& file : o.merge)
+        for (VariantResult& r : read_shard(file, study)) {
+          if (!seen.insert(r.index).second)
+            throw InputError(file, 0, 0, "variant '" + r.name + "' is also in an earlier shard");
+          results.push_back(std::move(r));
+        }
+      for (size_t i = 0; i < study.variants.size(); ++i)
+        if (!seen.count(static_cast<int>(i)))
+          throw InputError(o.merge.front(), 0, 0, "no shard holds variant " + std::to_string(i + 1) + " ('" +
+                                                      study.variants[i].name + "'): give every shard of the study");
+    }
+    write_comparison(text, rank_variants(study, std::move(results)), format);
+    return write_output(o.output, text.str());
+  } catch (const InputError& e) {
+    std::cerr << e.what() << "\n";
+    return kInput;
+  }
+}
+
+}  // namespace
+
+std::function<int()> add_compare_command(CLI::App& app) {
+  auto options = std::make_shared<CompareOptions>();
+  CLI::App* cmd = app.add_subcommand("compare", "Evaluate and rank the variants of a design study (docs/studies.md)");
+  cmd->add_option("study", options->study, "Study file (TOML), e.g. data/studies/resort_against_fette.toml")->required();
+  cmd->add_option("--format", options->format, "Output format (a shard is always JSON)")
+      ->check(CLI::IsMember({"table", "csv", "json"}))
+      ->capture_default_str();
+  cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
+      ->capture_default_str();
+  cmd->add_option("--threads", options->threads, "Threads evaluating variants; 0: all cores")
+      ->check(CLI::Range(0, 4096))
+      ->capture_default_str();
+  cmd->add_option("--shard", options->shard,
+                  "Evaluate only share K of N (variants whose index mod N is K-1) and write its results as JSON");
+  cmd->add_option("--merge", options->merge, "Rank the results of these shard files instead of evaluating")
+      ->expected(1, -1);
+  cmd->add_flag("-q,--quiet", options->quiet, "No progress on stderr (shown on a terminal for runs over a second)");
+  return [options] { return run(*options); };
+}
+
+}  // namespace railmodal::cli
