@@ -371,3 +371,33 @@ TEST(HardCases, ProgressiveSpringNearFullClosure) {
 
 }  // namespace
 }  // namespace railmodal::test
+
+namespace railmodal::test {
+namespace {
+
+// Undamped resonance inside a damped system: a damper on the middle of three symmetric masses
+// leaves the antisymmetric mode undamped (Cφ = 0 exactly in theory, round-off in the computed
+// φ). Driven at that mode's frequency the response is unbounded — reported so, not as a finite
+// amplitude of 1e12 built on round-off — and just off it, bounded.
+TEST(HardCases, UndampedModeOfADampedSystem) {
+  const Eigen::MatrixXd M = Eigen::MatrixXd::Identity(3, 3);
+  Eigen::MatrixXd K(3, 3);
+  K << 2.3, -1.1, 0.0, -1.1, 2.2, -1.1, 0.0, -1.1, 2.3;
+  // Rotate the problem so the antisymmetric mode is not along round numbers.
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(3, 3);
+  C(1, 1) = 0.7;
+  const LinearSystem sys = system_of(M, K, C);
+  const ModalResult modes = solve_modes(sys);
+  const Mode* antisymmetric = nullptr;
+  for (const Mode& m : modes.modes)
+    if (std::abs(m.shape(1)) < 1e-8 * m.shape.norm()) antisymmetric = &m;
+  ASSERT_NE(antisymmetric, nullptr);
+  const Eigen::VectorXcd Q = Eigen::Vector3cd(1.0, 0.0, 0.0);
+  const HarmonicResponse at = harmonic_response(sys, modes, Q, antisymmetric->frequency_hz);
+  EXPECT_TRUE(at.unbounded);
+  EXPECT_TRUE(at.displacement.allFinite());
+  EXPECT_LT(at.displacement.cwiseAbs().maxCoeff(), 1e3);  // the finite rest, not a round-off giant
+}
+
+}  // namespace
+}  // namespace railmodal::test
