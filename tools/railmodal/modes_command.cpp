@@ -1,5 +1,6 @@
 // railmodal modes FILE [--dofs vertical|lateral|all] [--format table|csv|json] [-o OUT]
 // railmodal modes --mass M.mtx --stiffness K.mtx [--damping C.mtx] [--format ...] [-o OUT]
+//   both with [--solver dense|arpack|auto] [--modes N]
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -20,6 +21,8 @@ struct ModesOptions {
   bool dofs_given = false;
   std::string format = "table";
   std::string output = "-";
+  std::string solver = "auto";
+  int modes = 0;  // 0: all (dense), kArpackDefaultModes (ARPACK)
 };
 
 int usage_error(const std::string& message) {
@@ -49,12 +52,23 @@ LinearSystem vehicle_system(const ModesOptions& o) {
   }
 }
 
-LinearSystem matrix_system(const ModesOptions& o) {
-  const MatrixModel model = load_matrix_model(o.mass, o.stiffness, o.damping);
-  if (static_cast<long long>(model.labels.size()) > kMaxDenseDofs)
-    throw InputError(o.mass, 0, 0, std::to_string(model.labels.size()) + " degrees of freedom: more than the " +
-                                       std::to_string(kMaxDenseDofs) + " the dense modal solver takes");
-  return to_linear_system(model);
+ModalOptions modal_options(const ModesOptions& o) {
+  ModalOptions options;
+  options.solver = *modal_solver_from_string(o.solver);  // CLI11 checked the word
+  options.mode_count = o.modes;
+  return options;
+}
+
+// Matrices stay sparse unless the dense solver takes them (ARPACK never sees a dense copy).
+std::string solve_matrices(const ModesOptions& o, const ModalOptions& options, ModalResult* result) {
+  const SparseSystem system = to_sparse_system(load_matrix_model(o.mass, o.stiffness, o.damping));
+  if (choose_solver(options.solver, system.size(), options.mode_count) == ModalSolver::dense &&
+      system.size() > kMaxDenseDofs)
+    throw InputError(o.mass, 0, 0, std::to_string(system.size()) + " degrees of freedom: more than the " +
+                                       std::to_string(kMaxDenseDofs) +
+                                       " the dense modal solver takes; use --solver arpack --modes N");
+  *result = solve_modes(system, options);
+  return system.name;
 }
 
 int run(const ModesOptions& o) {
@@ -62,15 +76,23 @@ int run(const ModesOptions& o) {
   const bool matrices = o.file.empty();
   const std::string source = matrices ? o.mass + ", " + o.stiffness : o.file;  // for numerical errors
   const OutputFormat format = *output_format_from_string(o.format);
+  const ModalOptions options = modal_options(o);
   try {
-    const LinearSystem system = matrices ? matrix_system(o) : vehicle_system(o);
-    if (system.size() == 0) {
-      std::cerr << o.file << ": error: no free degrees of freedom in the " << o.dofs << " set\n";
-      return kInput;
+    ModalResult result;
+    std::string title;
+    if (matrices) {
+      title = solve_matrices(o, options, &result);
+    } else {
+      const LinearSystem system = vehicle_system(o);
+      if (system.size() == 0) {
+        std::cerr << o.file << ": error: no free degrees of freedom in the " << o.dofs << " set\n";
+        return kInput;
+      }
+      title = system.vehicle.name;
+      result = solve_modes(system, options);
     }
-    const ModalResult result = solve_modes(system);
     std::ostringstream text;
-    write_modes(text, system, result, format);
+    write_modes(text, title, result, format);
     return write_output(o.output, text.str());
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
@@ -78,6 +100,8 @@ int run(const ModesOptions& o) {
   } catch (const NumericalError& e) {
     std::cerr << source << ": error: numerical failure: " << e.what() << "\n";
     return kNumerical;
+  } catch (const std::invalid_argument& e) {  // --modes beyond what ARPACK can give
+    return usage_error(e.what());
   }
 }
 
@@ -98,6 +122,15 @@ std::function<int()> add_modes_command(CLI::App& app) {
   cmd->add_option("--format", options->format, "Output format")
       ->check(CLI::IsMember({"table", "csv", "json"}))
       ->capture_default_str();
+  cmd->add_option("--solver", options->solver,
+                  "Eigensolver: dense (every mode), arpack (the lowest modes of a large sparse model, shift-invert "
+                  "Lanczos) or auto (ARPACK above " + std::to_string(kArpackAboveDofs) + " DOFs)")
+      ->check(CLI::IsMember({"dense", "arpack", "auto"}))
+      ->capture_default_str();
+  cmd->add_option("--modes", options->modes,
+                  "The N lowest modes (and the rest of a repeated frequency's cluster); default all (dense), " +
+                      std::to_string(kArpackDefaultModes) + " (ARPACK)")
+      ->check(CLI::Range(1, 1 << 30));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   return [options, dofs] {
