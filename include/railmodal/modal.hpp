@@ -55,7 +55,7 @@ struct ArpackOptions {
   /// σ, 1/s². NaN (default): automatic, σ = −1e-6 · max(Kᵢᵢ/Mᵢᵢ), just below zero so that
   /// K − σM is positive definite with rigid-body modes and a singular K, and lowered further
   /// while the inertia of K − σM shows unstable modes (λ < σ) that were not found. A given σ
-  /// returns the modes nearest σ, in ascending order.
+  /// returns the lowest modes above σ (λ ≥ σ).
   double shift = std::numeric_limits<double>::quiet_NaN();
   /// ARPACK's relative accuracy of the Ritz values; 0 means machine precision.
   double tolerance = 0.0;
@@ -98,6 +98,9 @@ struct SolverSummary {
   int restarts = 0;            ///< ARPACK's implicit restarts (iparam(3))
   int operator_applications = 0;  ///< solves with K − σM (iparam(9))
   int runs = 0;                ///< ARPACK runs (more than 1 when a cluster or σ needed another)
+  /// The inertia of K − μM (μ just above the last mode) confirmed that no eigenvalue below
+  /// it was missed; false when K − σM needed LU (no inertia) or every mode was asked for.
+  bool count_checked = false;
 };
 
 /// The centre of oscillation of a rotation mode: the line of the body that does not move.

@@ -24,7 +24,7 @@ std::optional<OutputFormat> output_format_from_string(const std::string& word);
 /// "divergence_rate_per_s", "name", "stable", "repeated", "centre_of_oscillation", "residual",
 /// "shape": {label: value}}], "condensed", "max_residual", "orthonormality_error"}.
 /// JSON also holds "solver": {"name", and for ARPACK "shift", "factorisation", "requested",
-/// "subspace_size", "restarts", "operator_applications", "runs"}.
+/// "subspace_size", "restarts", "operator_applications", "runs", "count_checked"}.
 void write_modes(std::ostream& out, const LinearSystem& system, const ModalResult& result,
                  OutputFormat format);
 

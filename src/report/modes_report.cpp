@@ -55,7 +55,7 @@ std::string solver_line(const ModalResult& r) {
   std::ostringstream line;
   line << "solver: ARPACK shift-invert, σ = " << std::setprecision(3) << s.shift << " 1/s² (" << s.factorisation
        << " of K − σM), " << r.modes.size() << " lowest modes, ncv " << s.subspace_size << ", "
-       << s.operator_applications << " solves\n";
+       << s.operator_applications << " solves" << (s.count_checked ? ", count checked by inertia" : "") << "\n";
   return line.str();
 }
 
@@ -175,6 +175,7 @@ void write_json(std::ostream& out, const std::string& title, const ModalResult& 
     solver["restarts"] = r.solver.restarts;
     solver["operator_applications"] = r.solver.operator_applications;
     solver["runs"] = r.solver.runs;
+    solver["count_checked"] = r.solver.count_checked;
   }
   doc["solver"] = solver;
   out << doc.dump(2) << "\n";

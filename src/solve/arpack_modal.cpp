@@ -231,6 +231,7 @@ Eigenpairs arpack_eigenpairs(const SparseMatrix& M, const SparseMatrix& K, const
   double sigma = automatic_shift ? -kShiftFraction * scale : o.shift;
   // A few more than asked, so that a cluster cut at N shows where it ends.
   int extra = std::max(3, wanted / 4);
+  int missed_runs = 0;
   Eigenpairs result;
   result.massless = massless;
   ShiftedInverse op;
@@ -269,11 +270,58 @@ Eigenpairs arpack_eigenpairs(const SparseMatrix& M, const SparseMatrix& K, const
       factored = false;
       continue;
     }
-    result.scale = std::max(scale, run.values.cwiseAbs().maxCoeff());
-    const int end = cluster_end(run.values, wanted, options.zero_tolerance * result.scale);
-    if (end < nev || nev == most) {
-      result.values = run.values.head(end);
-      result.vectors = run.vectors.leftCols(end);
+    // The modes to answer from: every one found for an automatic σ (the loop above put σ
+    // below all that were missed), those above a given σ.
+    Eigen::VectorXd values = run.values;
+    Eigen::MatrixXd vectors = run.vectors;
+    if (!automatic_shift) {
+      const int below_sigma = static_cast<int>((values.array() < sigma).count());  // ascending: the first ones
+      values = Eigen::VectorXd(values.tail(values.size() - below_sigma));
+      vectors = Eigen::MatrixXd(vectors.rightCols(vectors.cols() - below_sigma));
+    }
+    const int available = static_cast<int>(values.size());
+    if (available <= wanted && nev < most) {  // one more than N shows whether a cluster goes on
+      extra *= 2;
+      continue;
+    }
+    if (available < wanted)
+      throw NumericalError("ARPACK: only " + std::to_string(available) + " modes lie above the shift σ = " +
+                           shift_text(sigma) + " 1/s², not " + std::to_string(wanted));
+    result.scale = std::max(scale, values.cwiseAbs().maxCoeff());
+    const int end = cluster_end(values, wanted, options.zero_tolerance * result.scale);
+    // The count check: by Sylvester's law, K − μM with μ between the last mode kept and the
+    // next one found has as many negative pivots as there are eigenvalues below μ. More than
+    // were found means Lanczos skipped one (a copy of a repeated frequency, say): look again
+    // with a larger subspace, and fail rather than answer with a part of a cluster.
+    result.summary.count_checked = false;
+    if (end < available && op.negative_pivots() >= 0) {
+      const double mu = 0.5 * (values(end - 1) + values(end));
+      const int skipped = automatic_shift ? 0 : op.negative_pivots();  // below a given σ
+      ShiftedInverse check;
+      if (check.factor(K - mu * M) && check.negative_pivots() >= 0) {
+        const int exist = check.negative_pivots() - skipped;
+        if (exist > end) {
+          if (++missed_runs == 3)
+            throw NumericalError("ARPACK found " + std::to_string(end) + " eigenvalues below " + shift_text(mu) +
+                                 " 1/s² but the inertia of K − μM counts " + std::to_string(exist));
+          extra = std::max(2 * extra, exist - wanted + 3);
+          continue;
+        }
+        result.summary.count_checked = true;
+      }
+    }
+    if (end == available && nev == most && op.negative_pivots() >= 0) {
+      // The cluster reaches the last mode ARPACK can give: does it go on past it?
+      const double top = values(end - 1);
+      const double mu = top + 0.5e-8 * std::max(std::abs(top), options.zero_tolerance * result.scale);
+      ShiftedInverse check;
+      if (check.factor(K - mu * M) && check.negative_pivots() - (automatic_shift ? 0 : op.negative_pivots()) > end)
+        throw NumericalError("the repeated eigenvalue " + shift_text(top) + " 1/s² has more copies than the " +
+                             std::to_string(most) + " modes ARPACK can compute here; use the dense solver");
+    }
+    if (end < available || nev == most) {
+      result.values = values.head(end);
+      result.vectors = vectors.leftCols(end);
       return result;
     }
     extra *= 2;  // the cluster reaches the last Ritz value found: look further

@@ -30,8 +30,8 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
 Eigenpairs arpack_eigenpairs(const Eigen::SparseMatrix<double>& M, const Eigen::SparseMatrix<double>& K,
                              const std::vector<std::string>& labels, int count, const ModalOptions& options);
 
-/// Eigenvalues k and k+1 belong to one cluster (a repeated frequency): relative gap at most
-/// 1e-8, where |λ| below `zero` (rigid-body modes) counts as `zero`.
+/// Eigenvalues a ≤ b belong to one cluster (a repeated frequency): relative gap at most 1e-8,
+/// or both rigid-body (|λ| ≤ zero, where their differences are round-off).
 bool same_eigenvalue(double a, double b, double zero);
 
 /// One past the last index of the cluster that holds values(count − 1) (values ascending).

@@ -75,6 +75,7 @@ ModalSolver choose_solver(ModalSolver requested, int dofs, int mode_count) {
 namespace solve {
 
 bool same_eigenvalue(double a, double b, double zero) {
+  if (std::abs(a) <= zero && std::abs(b) <= zero) return true;  // both rigid-body: λ = 0 twice
   return std::abs(b - a) <= 1e-8 * std::max({std::abs(a), std::abs(b), zero});
 }
 
