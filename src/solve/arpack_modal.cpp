@@ -230,7 +230,7 @@ Eigenpairs arpack_eigenpairs(const SparseMatrix& M, const SparseMatrix& K, const
   const double scale = spectrum_scale(M, K);
   double sigma = automatic_shift ? -kShiftFraction * scale : o.shift;
   // A few more than asked, so that a cluster cut at N shows where it ends.
-  int extra = std::max(3, wanted / 4);
+  int extra = std::max(2, wanted / 10);
   int missed_runs = 0;
   Eigenpairs result;
   result.massless = massless;
