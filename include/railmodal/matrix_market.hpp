@@ -7,6 +7,7 @@
 //                                    "data/matrices/resort_car_vertical_K.mtx");
 //   railmodal::LinearSystem system = railmodal::to_linear_system(model);  // dense
 //   railmodal::ModalResult result = railmodal::solve_modes(system);
+//   // or, for a large model, sparse end to end: solve_modes(to_sparse_system(model), options)
 //   for (const auto& mode : result.modes) std::cout << mode.name << "  " << mode.frequency_hz << "\n";
 //
 // Accepted: `%%MatrixMarket matrix coordinate|array real|integer general|symmetric`,
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "railmodal/linear_system.hpp"
+#include "railmodal/sparse_system.hpp"
 
 namespace railmodal {
 
@@ -75,6 +77,9 @@ struct MatrixModel {
 /// (mass, stiffness, damping); a DOF no file names is "dof<i>" (1-based).
 MatrixModel load_matrix_model(const std::string& mass_path, const std::string& stiffness_path,
                               const std::string& damping_path = "");
+
+/// The model kept sparse, for ARPACK (DOF labels from the files, Dof::body -1).
+SparseSystem to_sparse_system(const MatrixModel& model);
 
 /// The dense LinearSystem of a MatrixModel: no vehicle bodies (Dof::body is -1), no
 /// gravity stiffness, no track inputs. Modes are named after the DOF holding the most

@@ -26,6 +26,7 @@
 #include "railmodal/scene.hpp"
 #include "railmodal/scene_simulation.hpp"
 #include "railmodal/simulation.hpp"
+#include "railmodal/sparse_system.hpp"
 #include "railmodal/spectrum.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/study.hpp"

@@ -24,6 +24,8 @@ std::optional<OutputFormat> output_format_from_string(const std::string& word);
 /// {"vehicle", "dofs", "modes": [{"index", "kind", "frequency_hz", "period_s", "omega_rad_s",
 /// "divergence_rate_per_s", "name", "stable", "repeated", "centre_of_oscillation", "residual",
 /// "shape": {label: value}}], "condensed", "max_residual", "orthonormality_error"}.
+/// JSON also holds "solver": {"name", and for ARPACK "shift", "factorisation", "requested",
+/// "subspace_size", "restarts", "operator_applications", "runs", "count_checked"}.
 void write_modes(std::ostream& out, const LinearSystem& system, const ModalResult& result,
                  OutputFormat format);
 
@@ -36,5 +38,7 @@ void write_modes(std::ostream& out, const LinearSystem& system, const ModalResul
 /// "stable", "max_residual"}; absent quantities are null.
 void write_damped_modes(std::ostream& out, const LinearSystem& system, const DampedModalResult& result,
                         OutputFormat format);
+/// The same for a model without a LinearSystem (a SparseSystem): `title` names it.
+void write_modes(std::ostream& out, const std::string& title, const ModalResult& result, OutputFormat format);
 
 }  // namespace railmodal

@@ -1,5 +1,5 @@
-// M, C and K from Matrix Market files: one model with agreeing sizes and DOF labels, and
-// its dense LinearSystem for the dense modal solver.
+// M, C and K from Matrix Market files: one model with agreeing sizes and DOF labels, kept
+// sparse for ARPACK or made dense for the dense modal solver.
 #include <filesystem>
 #include <map>
 
@@ -85,20 +85,21 @@ MatrixModel load_matrix_model(const std::string& mass_path, const std::string& s
   return model;
 }
 
-LinearSystem to_linear_system(const MatrixModel& model) {
-  LinearSystem system;
+SparseSystem to_sparse_system(const MatrixModel& model) {
+  SparseSystem system;
+  system.name = model.name;
   for (const auto& label : model.labels) {
     Dof dof;
     dof.label = label;
     dof.body = -1;  // no bodies: modes are named after DOFs (solve/mode_naming.cpp)
     system.dofs.push_back(dof);
   }
-  system.mass = to_dense(model.mass);
-  system.damping = to_dense(model.damping);
-  system.stiffness = to_dense(model.stiffness);
-  system.gravity_stiffness = Eigen::MatrixXd::Zero(system.mass.rows(), system.mass.cols());
-  system.vehicle.name = model.name;
+  system.mass = model.mass;
+  system.damping = model.damping;
+  system.stiffness = model.stiffness;
   return system;
 }
+
+LinearSystem to_linear_system(const MatrixModel& model) { return to_linear_system(to_sparse_system(model)); }
 
 }  // namespace railmodal

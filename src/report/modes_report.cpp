@@ -48,15 +48,26 @@ std::string number(double value, int precision, bool present) {
 
 using report::csv_field;
 
-void write_table(std::ostream& out, const LinearSystem& system, const ModalResult& r) {
-  out << "railmodal modes: " << system.vehicle.name << "\n";
+// One line on how ARPACK found the modes (nothing for the dense solver, which finds all).
+std::string solver_line(const ModalResult& r) {
+  const SolverSummary& s = r.solver;
+  if (s.solver != ModalSolver::arpack) return "";
+  std::ostringstream line;
+  line << "solver: ARPACK shift-invert, σ = " << std::setprecision(3) << s.shift << " 1/s² (" << s.factorisation
+       << " of K − σM), " << r.modes.size() << " lowest modes, ncv " << s.subspace_size << ", "
+       << s.operator_applications << " solves" << (s.count_checked ? ", count checked by inertia" : "") << "\n";
+  return line.str();
+}
+
+void write_table(std::ostream& out, const std::string& title, const ModalResult& r) {
+  out << "railmodal modes: " << title << "\n";
   out << "degrees of freedom: " << r.dofs.size();
   if (!r.condensed.empty()) {
     out << " (massless, condensed statically:";
     for (const auto& c : r.condensed) out << " " << c;
     out << ")";
   }
-  out << "\n\n";
+  out << "\n" << solver_line(r) << "\n";
   out << std::left << std::setw(4) << "#" << std::setw(34) << "mode" << std::right << std::setw(11)
       << "f [Hz]" << std::setw(11) << "T [s]" << std::setw(12) << "ω [rad/s]" << "  "
       << "centre of oscillation\n";
@@ -116,10 +127,10 @@ void write_csv(std::ostream& out, const ModalResult& r) {
   }
 }
 
-void write_json(std::ostream& out, const LinearSystem& system, const ModalResult& r) {
+void write_json(std::ostream& out, const std::string& title, const ModalResult& r) {
   using nlohmann::json;
   json doc;
-  doc["vehicle"] = system.vehicle.name;
+  doc["vehicle"] = title;
   doc["dofs"] = json::array();
   for (const auto& d : r.dofs) doc["dofs"].push_back(d.label);
   doc["modes"] = json::array();
@@ -154,6 +165,19 @@ void write_json(std::ostream& out, const LinearSystem& system, const ModalResult
   doc["condensed"] = r.condensed;
   doc["max_residual"] = r.max_residual;
   doc["orthonormality_error"] = r.orthonormality_error;
+  json solver;
+  solver["name"] = to_string(r.solver.solver);
+  if (r.solver.solver == ModalSolver::arpack) {
+    solver["shift"] = r.solver.shift;
+    solver["factorisation"] = r.solver.factorisation;
+    solver["requested"] = r.solver.requested;
+    solver["subspace_size"] = r.solver.subspace_size;
+    solver["restarts"] = r.solver.restarts;
+    solver["operator_applications"] = r.solver.operator_applications;
+    solver["runs"] = r.solver.runs;
+    solver["count_checked"] = r.solver.count_checked;
+  }
+  doc["solver"] = solver;
   out << doc.dump(2) << "\n";
 }
 
@@ -161,10 +185,14 @@ void write_json(std::ostream& out, const LinearSystem& system, const ModalResult
 
 void write_modes(std::ostream& out, const LinearSystem& system, const ModalResult& result,
                  OutputFormat format) {
+  write_modes(out, system.vehicle.name, result, format);
+}
+
+void write_modes(std::ostream& out, const std::string& title, const ModalResult& result, OutputFormat format) {
   switch (format) {
-    case OutputFormat::table: write_table(out, system, result); break;
+    case OutputFormat::table: write_table(out, title, result); break;
     case OutputFormat::csv: write_csv(out, result); break;
-    case OutputFormat::json: write_json(out, system, result); break;
+    case OutputFormat::json: write_json(out, title, result); break;
   }
 }
 

@@ -1,5 +1,5 @@
 // Dense generalised symmetric eigen-analysis K φ = λ M φ with static condensation of
-// massless degrees of freedom and a checked Cholesky factorisation of M.
+// massless degrees of freedom and a checked Cholesky factorisation of M: every eigenpair.
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -7,34 +7,11 @@
 
 #include "railmodal/errors.hpp"
 #include "railmodal/modal.hpp"
-#include "solve/mode_naming.hpp"
+#include "solve/eigenpairs.hpp"
 
-namespace railmodal {
-
-const char* to_string(ModeKind kind) {
-  switch (kind) {
-    case ModeKind::oscillatory: return "oscillatory";
-    case ModeKind::rigid_body: return "rigid-body";
-    case ModeKind::unstable: return "unstable";
-  }
-  return "?";
-}
-
-bool ModalOptions::is_valid(std::string* why) const {
-  if (!(zero_tolerance > 0.0 && zero_tolerance < 1e-2)) {
-    if (why) *why = "zero_tolerance must satisfy 0 < zero_tolerance < 1e-2";
-    return false;
-  }
-  if (!(max_residual > 0.0)) {
-    if (why) *why = "max_residual must be positive";
-    return false;
-  }
-  return true;
-}
+namespace railmodal::solve {
 
 namespace {
-
-constexpr double kTwoPi = 6.283185307179586476925;
 
 Eigen::MatrixXd take(const Eigen::MatrixXd& A, const std::vector<int>& rows, const std::vector<int>& cols) {
   Eigen::MatrixXd out(rows.size(), cols.size());
@@ -106,18 +83,11 @@ void refine_low_modes(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, Eigen:
 
 }  // namespace
 
-ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument("ModalOptions: " + why);
-  const int n = system.size();
-  if (n == 0) throw std::invalid_argument("the system has no degrees of freedom");
-  const Eigen::MatrixXd& M = system.mass;
-  const Eigen::MatrixXd& K = system.stiffness;
-  if (!M.allFinite() || !K.allFinite())
-    throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
-
-  ModalResult result;
-  result.dofs = system.dofs;
+Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
+                            const std::vector<std::string>& labels) {
+  const int n = static_cast<int>(M.rows());
+  Eigenpairs result;
+  result.summary.solver = ModalSolver::dense;
 
   // Massless DOFs: an exactly zero row of M. They are condensed statically, as the book
   // eliminates the massless leaf-spring end (eq. 192e) and the bogie roll (eq. 252c).
@@ -133,19 +103,19 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
     lu.setThreshold(1e-12);
     if (!lu.isInvertible()) {
       // Name a massless DOF with no stiffness of its own.
-      std::string name = system.dofs[massless[0]].label;
+      std::string name = labels[massless[0]];
       for (int s : massless)
-        if (K.row(s).cwiseAbs().maxCoeff() == 0.0) { name = system.dofs[s].label; break; }
+        if (K.row(s).cwiseAbs().maxCoeff() == 0.0) { name = labels[s]; break; }
       throw NumericalError("degree of freedom '" + name +
                            "' has neither mass nor a restraint; give it inertia or hold it");
     }
     recover = -lu.solve(Ksm);
     Kr += take(K, kept, massless) * recover;
-    for (int s : massless) result.condensed.push_back(system.dofs[s].label);
   }
+  result.massless = massless;
   const Eigen::MatrixXd Mr = take(M, kept, kept);
   std::vector<std::string> kept_labels;
-  for (int i : kept) kept_labels.push_back(system.dofs[i].label);
+  for (int i : kept) kept_labels.push_back(labels[i]);
 
   // K φ = λ M φ  →  (L⁻¹ K L⁻ᵀ) y = λ y,  φ = L⁻ᵀ y: φ is M-normalised when y is unit.
   const Eigen::MatrixXd L = checked_cholesky(Mr, kept_labels);
@@ -155,60 +125,19 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
   A = 0.5 * (A + A.transpose());
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
   if (eig.info() != Eigen::Success) throw NumericalError("the symmetric eigensolver did not converge");
-  Eigen::VectorXd lambda = eig.eigenvalues();  // ascending
+  result.values = eig.eigenvalues();  // ascending
   Eigen::MatrixXd phi_kept = L.transpose().triangularView<Eigen::Upper>().solve(eig.eigenvectors());
-  refine_low_modes(Kr, Mr, &lambda, &phi_kept);
+  refine_low_modes(Kr, Mr, &result.values, &phi_kept);
 
   const int m = static_cast<int>(kept.size());
-  Eigen::MatrixXd phi = Eigen::MatrixXd::Zero(n, m);
-  for (int i = 0; i < m; ++i) phi.row(kept[i]) = phi_kept.row(i);
+  result.vectors = Eigen::MatrixXd::Zero(n, m);
+  for (int i = 0; i < m; ++i) result.vectors.row(kept[i]) = phi_kept.row(i);
   if (!massless.empty()) {
     const Eigen::MatrixXd rec = recover * phi_kept;
-    for (size_t s = 0; s < massless.size(); ++s) phi.row(massless[s]) = rec.row(static_cast<int>(s));
+    for (size_t s = 0; s < massless.size(); ++s) result.vectors.row(massless[s]) = rec.row(static_cast<int>(s));
   }
-
-  const double scale = lambda.cwiseAbs().maxCoeff();
-  const double zero = options.zero_tolerance * scale;
-  const double norm_K = K.norm(), norm_M = M.norm();
-  const Eigen::MatrixXd K_phi = K * phi, M_phi = M * phi;
-  for (int k = 0; k < m; ++k) {
-    Mode mode;
-    mode.index = k + 1;
-    mode.eigenvalue = lambda(k);
-    mode.shape = phi.col(k);
-    if (std::abs(lambda(k)) <= zero) {
-      mode.kind = ModeKind::rigid_body;
-      mode.eigenvalue = lambda(k);
-    } else if (lambda(k) < 0.0) {
-      mode.kind = ModeKind::unstable;
-      mode.divergence_rate = std::sqrt(-lambda(k));
-    } else {
-      mode.kind = ModeKind::oscillatory;
-      mode.omega_rad_s = std::sqrt(lambda(k));
-      mode.frequency_hz = mode.omega_rad_s / kTwoPi;
-      mode.period_s = kTwoPi / mode.omega_rad_s;
-    }
-    mode.kinetic_energy_share = mode.shape.cwiseProduct(M_phi.col(k));
-    const double denom = (norm_K + std::abs(lambda(k)) * norm_M) * mode.shape.norm();
-    mode.residual = denom > 0.0 ? (K_phi.col(k) - lambda(k) * M_phi.col(k)).norm() / denom : 0.0;
-    result.max_residual = std::max(result.max_residual, mode.residual);
-    auto description = solve::describe_mode(system, mode.shape);
-    mode.name = description.name;
-    mode.centre = description.centre;
-    if (mode.kind == ModeKind::unstable) mode.name += " (unstable)";
-    if (mode.kind == ModeKind::rigid_body) mode.name += " (rigid-body)";
-    result.modes.push_back(std::move(mode));
-  }
-  for (int k = 0; k + 1 < m; ++k)
-    if (std::abs(lambda(k + 1) - lambda(k)) <= 1e-8 * std::max(std::abs(lambda(k + 1)), zero))
-      result.modes[k].repeated = result.modes[k + 1].repeated = true;
-  // Orthonormality over the kept coordinates (the condensed ones carry no mass).
-  const Eigen::MatrixXd G = phi.transpose() * M_phi;
-  result.orthonormality_error = (G - Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff();
-  if (!(result.max_residual <= options.max_residual))
-    throw NumericalError("eigen-solution residual " + std::to_string(result.max_residual) +
-                         " exceeds the limit " + std::to_string(options.max_residual));
+  result.scale = result.values.cwiseAbs().maxCoeff();
   return result;
 }
 
-}  // namespace railmodal
+}  // namespace railmodal::solve

@@ -1,5 +1,6 @@
 // railmodal modes FILE [--dofs vertical|lateral|all] [--format table|csv|json] [--damped] [-o OUT]
 // railmodal modes --mass M.mtx --stiffness K.mtx [--damping C.mtx] [--format ...] [--damped] [-o OUT]
+//   both with [--solver dense|arpack|auto] [--modes N] (undamped modes)
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -21,6 +22,8 @@ struct ModesOptions {
   std::string format = "table";
   std::string output = "-";
   bool damped = false;  // complex modes of M q̈ + C q̇ + K q = 0 instead of K φ = λ M φ
+  std::string solver = "auto";
+  int modes = 0;  // 0: all (dense), kArpackDefaultModes (ARPACK)
 };
 
 int usage_error(const std::string& message) {
@@ -50,30 +53,71 @@ LinearSystem vehicle_system(const ModesOptions& o) {
   }
 }
 
-LinearSystem matrix_system(const ModesOptions& o) {
-  const MatrixModel model = load_matrix_model(o.mass, o.stiffness, o.damping);
-  if (static_cast<long long>(model.labels.size()) > kMaxDenseDofs)
-    throw InputError(o.mass, 0, 0, std::to_string(model.labels.size()) + " degrees of freedom: more than the " +
-                                       std::to_string(kMaxDenseDofs) + " the dense modal solver takes");
-  return to_linear_system(model);
+ModalOptions modal_options(const ModesOptions& o) {
+  ModalOptions options;
+  options.solver = *modal_solver_from_string(o.solver);  // CLI11 checked the word
+  options.mode_count = o.modes;
+  return options;
 }
 
-int run(const ModesOptions& o) {
-  if (const std::string problem = input_problem(o); !problem.empty()) return usage_error(problem);
-  const bool matrices = o.file.empty();
-  const std::string source = matrices ? o.mass + ", " + o.stiffness : o.file;  // for numerical errors
-  const OutputFormat format = *output_format_from_string(o.format);
-  try {
-    const LinearSystem system = matrices ? matrix_system(o) : vehicle_system(o);
+// Matrices stay sparse unless the dense solver takes them (ARPACK never sees a dense copy).
+std::string solve_matrices(const ModesOptions& o, const ModalOptions& options, ModalResult* result) {
+  const SparseSystem system = to_sparse_system(load_matrix_model(o.mass, o.stiffness, o.damping));
+  if (choose_solver(options.solver, system.size(), options.mode_count) == ModalSolver::dense &&
+      system.size() > kMaxDenseDofs)
+    throw InputError(o.mass, 0, 0, std::to_string(system.size()) + " degrees of freedom: more than the " +
+                                       std::to_string(kMaxDenseDofs) +
+                                       " the dense modal solver takes; use --solver arpack --modes N");
+  *result = solve_modes(system, options);
+  return system.name;
+}
+
+// Damped modes: the state-space problem of every mode, dense (vehicle or matrices).
+int run_damped(const ModesOptions& o, bool matrices, OutputFormat format) {
+  LinearSystem system;
+  if (matrices) {
+    const MatrixModel model = load_matrix_model(o.mass, o.stiffness, o.damping);
+    if (static_cast<long long>(model.labels.size()) > kMaxDenseDofs)
+      throw InputError(o.mass, 0, 0, std::to_string(model.labels.size()) + " degrees of freedom: more than the " +
+                                         std::to_string(kMaxDenseDofs) + " the dense damped-mode solver takes");
+    system = to_linear_system(model);
+  } else {
+    system = vehicle_system(o);
     if (system.size() == 0) {
       std::cerr << o.file << ": error: no free degrees of freedom in the " << o.dofs << " set\n";
       return kInput;
     }
+  }
+  std::ostringstream text;
+  write_damped_modes(text, system, solve_damped_modes(system), format);
+  return write_output(o.output, text.str());
+}
+
+int run(const ModesOptions& o) {
+  if (const std::string problem = input_problem(o); !problem.empty()) return usage_error(problem);
+  if (o.damped && (o.solver == "arpack" || o.modes > 0))
+    return usage_error("--damped solves every mode densely; --solver arpack and --modes apply to undamped modes");
+  const bool matrices = o.file.empty();
+  const std::string source = matrices ? o.mass + ", " + o.stiffness : o.file;  // for numerical errors
+  const OutputFormat format = *output_format_from_string(o.format);
+  const ModalOptions options = modal_options(o);
+  try {
+    if (o.damped) return run_damped(o, matrices, format);
+    ModalResult result;
+    std::string title;
+    if (matrices) {
+      title = solve_matrices(o, options, &result);
+    } else {
+      const LinearSystem system = vehicle_system(o);
+      if (system.size() == 0) {
+        std::cerr << o.file << ": error: no free degrees of freedom in the " << o.dofs << " set\n";
+        return kInput;
+      }
+      title = system.vehicle.name;
+      result = solve_modes(system, options);
+    }
     std::ostringstream text;
-    if (o.damped)
-      write_damped_modes(text, system, solve_damped_modes(system), format);
-    else
-      write_modes(text, system, solve_modes(system), format);
+    write_modes(text, title, result, format);
     return write_output(o.output, text.str());
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
@@ -81,6 +125,8 @@ int run(const ModesOptions& o) {
   } catch (const NumericalError& e) {
     std::cerr << source << ": error: numerical failure: " << e.what() << "\n";
     return kNumerical;
+  } catch (const std::invalid_argument& e) {  // --modes beyond what ARPACK can give
+    return usage_error(e.what());
   }
 }
 
@@ -105,6 +151,15 @@ std::function<int()> add_modes_command(CLI::App& app) {
   cmd->add_flag("--damped", options->damped,
                  "Damped modes (viscous dampers in C): damped frequency, damping ratio, stability, "
                  "and the undamped frequency beside them");
+  cmd->add_option("--solver", options->solver,
+                  "Eigensolver: dense (every mode), arpack (the lowest modes of a large sparse model, shift-invert "
+                  "Lanczos) or auto (ARPACK above " + std::to_string(kArpackAboveDofs) + " DOFs)")
+      ->check(CLI::IsMember({"dense", "arpack", "auto"}))
+      ->capture_default_str();
+  cmd->add_option("--modes", options->modes,
+                  "The N lowest modes (and the rest of a repeated frequency's cluster); default all (dense), " +
+                      std::to_string(kArpackDefaultModes) + " (ARPACK)")
+      ->check(CLI::Range(1, 1 << 30));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   return [options, dofs] {

@@ -1,0 +1,331 @@
+// ARPACK (arpack-ng) back-end: the lowest eigenpairs of K φ = λ M φ for sparse M and K by
+// shift-invert Lanczos (dsaupd mode 3) with a sparse LDLᵀ (or LU) factorisation of K − σM.
+//
+// Shift-invert turns the lowest λ, which plain Lanczos finds last, into the largest
+// ν = 1/(λ − σ) of OP = (K − σM)⁻¹M (ARPACK users' guide, sec. 3.2.3), found first.
+#include <arpackdef.h>
+
+#include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+
+#include "railmodal/errors.hpp"
+#include "solve/eigenpairs.hpp"
+
+extern "C" {
+// arpack-ng's ISO C binding. arpack.h declares these beside complex variants whose C99
+// _Complex types are not C++, so the two this file calls are declared here.
+void dsaupd_c(a_int* ido, char const* bmat, a_int n, char const* which, a_int nev, double tol, double* resid,
+              a_int ncv, double* v, a_int ldv, a_int* iparam, a_int* ipntr, double* workd, double* workl,
+              a_int lworkl, a_int* info);
+void dseupd_c(a_int rvec, char const* howmny, a_int const* select, double* d, double* z, a_int ldz, double sigma,
+              char const* bmat, a_int n, char const* which, a_int nev, double tol, double* resid, a_int ncv,
+              double* v, a_int ldv, a_int* iparam, a_int* ipntr, double* workd, double* workl, a_int lworkl,
+              a_int* info);
+}
+
+namespace railmodal::solve {
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+// ARPACK keeps its state in Fortran SAVE variables: one run at a time per process.
+std::mutex arpack_mutex;
+
+// The automatic shift σ = −kShiftFraction · max(Kᵢᵢ/Mᵢᵢ). Every Rayleigh quotient Kᵢᵢ/Mᵢᵢ
+// lies in the spectrum, so this is a small fraction of its top: far enough below zero that
+// K − σM is positive definite, with pivots well above round-off, when K is singular
+// (rigid-body modes), close enough that the lowest modes stay well separated in ν.
+constexpr double kShiftFraction = 1e-6;
+// A pivot of K − σM this small against its diagonal entry means σ is (nearly) an eigenvalue.
+constexpr double kSingularPivot = 1e-12;
+
+// (K − σM)⁻¹ by sparse LDLᵀ (Eigen's SimplicialLDLT, AMD ordering), which also gives the
+// inertia: by Sylvester's law the number of negative pivots is the number of eigenvalues
+// below σ (M positive definite). LDLᵀ does not pivot, so a zero pivot of an indefinite
+// matrix falls back to sparse LU (no inertia then).
+class ShiftedInverse {
+ public:
+  /// False when K − σM is singular to working precision.
+  bool factor(const SparseMatrix& A) {
+    use_lu_ = false;
+    ldlt_.compute(A);
+    if (ldlt_.info() == Eigen::Success) {
+      const Eigen::VectorXd diagonal = ldlt_.permutationP() * Eigen::VectorXd(A.diagonal());
+      const Eigen::VectorXd& D = ldlt_.vectorD();
+      negative_pivots_ = 0;
+      for (int i = 0; i < D.size(); ++i) {
+        if (!std::isfinite(D(i)) || std::abs(D(i)) <= kSingularPivot * std::abs(diagonal(i))) return false;
+        if (D(i) < 0.0) ++negative_pivots_;
+      }
+      return true;
+    }
+    use_lu_ = true;
+    negative_pivots_ = -1;
+    lu_.analyzePattern(A);
+    lu_.factorize(A);
+    return lu_.info() == Eigen::Success;
+  }
+  void solve(const double* x, double* y) const {
+    const Eigen::Index n = use_lu_ ? lu_.rows() : ldlt_.rows();
+    Eigen::Map<const Eigen::VectorXd> in(x, n);
+    Eigen::Map<Eigen::VectorXd> out(y, n);
+    if (use_lu_) out = lu_.solve(in);
+    else out = ldlt_.solve(in);
+  }
+  /// Eigenvalues below σ, or -1 when unknown (LU).
+  int negative_pivots() const { return negative_pivots_; }
+  const char* name() const { return use_lu_ ? "LU" : "LDLT"; }
+
+ private:
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt_;
+  Eigen::SparseLU<SparseMatrix> lu_;
+  bool use_lu_ = false;
+  int negative_pivots_ = -1;
+};
+
+struct Run {
+  Eigen::VectorXd values;   // ascending
+  Eigen::MatrixXd vectors;  // n × nev, M-orthonormal
+  int ncv = 0, restarts = 0, operations = 0;
+};
+
+std::string dsaupd_failure(a_int info, a_int converged, int nev, int ncv, const ArpackOptions& o) {
+  std::ostringstream s;
+  switch (info) {
+    case 1:
+      s << "ARPACK did not converge: " << converged << " of " << nev << " Ritz values converged in "
+        << o.max_iterations << " restarts (raise the restart limit or the subspace size, ncv = " << ncv << ")";
+      break;
+    case 3:
+      s << "ARPACK could not apply shifts in a restart: the subspace (ncv = " << ncv << ") is too small for "
+        << nev << " modes";
+      break;
+    case -8: s << "ARPACK: the LAPACK tridiagonal eigensolver failed"; break;
+    case -9999: s << "ARPACK could not build a Lanczos factorisation (size " << converged << ")"; break;
+    default: s << "ARPACK dsaupd failed with info = " << info; break;
+  }
+  return s.str();
+}
+
+// One ARPACK run for the nev eigenvalues nearest σ, then a Rayleigh–Ritz step in the
+// subspace they span: λ from the projected K and M, not from σ + 1/ν, whose error grows as
+// the largest ν (a rigid-body mode near σ) dwarfs the others.
+Run run_arpack(const SparseMatrix& M, const SparseMatrix& K, const ShiftedInverse& op, double sigma, int nev,
+               const ArpackOptions& o) {
+  const a_int n = static_cast<a_int>(M.rows());
+  a_int ncv = o.subspace_size > 0 ? o.subspace_size : std::max(2 * nev + 1, 20);
+  ncv = std::clamp<a_int>(ncv, nev + 1, n);
+  const a_int lworkl = ncv * (ncv + 8);
+  // A fixed pseudo-random start: the same answer on every run.
+  Eigen::VectorXd resid(n);
+  std::mt19937 random(20240601);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (a_int i = 0; i < n; ++i) resid(i) = uniform(random);
+  Eigen::VectorXd V(static_cast<Eigen::Index>(n) * ncv), workd(3 * static_cast<Eigen::Index>(n)), workl(lworkl);
+  Eigen::VectorXd Mx(n);
+  a_int iparam[11] = {}, ipntr[11] = {};
+  iparam[0] = 1;                // exact shifts
+  iparam[2] = o.max_iterations;  // restarts allowed
+  iparam[6] = 3;                // mode 3: shift-invert, B = M
+  a_int ido = 0, info = 1;      // info = 1: resid holds the start vector
+
+  std::lock_guard<std::mutex> lock(arpack_mutex);
+  for (;;) {
+    dsaupd_c(&ido, "G", n, "LM", nev, o.tolerance, resid.data(), ncv, V.data(), n, iparam, ipntr, workd.data(),
+             workl.data(), lworkl, &info);
+    double* x = workd.data() + ipntr[0] - 1;
+    double* y = workd.data() + ipntr[1] - 1;
+    if (ido == -1) {  // y = (K − σM)⁻¹ M x
+      Mx = M * Eigen::Map<const Eigen::VectorXd>(x, n);
+      op.solve(Mx.data(), y);
+    } else if (ido == 1) {  // M x is already at ipntr(3)
+      op.solve(workd.data() + ipntr[2] - 1, y);
+    } else if (ido == 2) {  // y = M x
+      Eigen::Map<Eigen::VectorXd>(y, n) = M * Eigen::Map<const Eigen::VectorXd>(x, n);
+    } else {
+      break;
+    }
+  }
+  if (info < 0 && info != -8 && info != -9999)
+    throw std::logic_error("ARPACK dsaupd rejected its arguments: info = " + std::to_string(info));
+  // Never a partial answer: fewer converged Ritz values than asked is a failure.
+  if (info != 0 || iparam[4] < nev) throw NumericalError(dsaupd_failure(info == 0 ? 1 : info, iparam[4], nev, ncv, o));
+
+  std::vector<a_int> select(ncv);
+  Eigen::VectorXd d(nev);
+  Eigen::MatrixXd Z(n, nev);
+  a_int info_eupd = 0;
+  dseupd_c(1, "A", select.data(), d.data(), Z.data(), n, sigma, "G", n, "LM", nev, o.tolerance, resid.data(), ncv,
+           V.data(), n, iparam, ipntr, workd.data(), workl.data(), lworkl, &info_eupd);
+  if (info_eupd != 0) throw NumericalError("ARPACK dseupd failed with info = " + std::to_string(info_eupd));
+
+  // Rayleigh–Ritz: (ZᵀKZ) y = λ (ZᵀMZ) y; φ = Z y is M-orthonormal.
+  const Eigen::MatrixXd KZ = K * Z, MZ = M * Z;
+  Eigen::MatrixXd A = Z.transpose() * KZ, B = Z.transpose() * MZ;
+  A = 0.5 * (A + A.transpose()).eval();
+  B = 0.5 * (B + B.transpose()).eval();
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> rr(A, B);
+  if (rr.info() != Eigen::Success)
+    throw NumericalError("the Ritz vectors ARPACK returned are not independent in the mass metric");
+  Run run;
+  run.values = rr.eigenvalues();
+  run.vectors = Z * rr.eigenvectors();
+  run.ncv = ncv;
+  run.restarts = iparam[2];
+  run.operations = iparam[8];
+  return run;
+}
+
+double spectrum_scale(const SparseMatrix& M, const SparseMatrix& K) {
+  const Eigen::VectorXd m = M.diagonal(), k = K.diagonal();
+  double scale = 0.0;
+  for (int i = 0; i < m.size(); ++i)
+    if (m(i) > 0.0) scale = std::max(scale, std::abs(k(i)) / m(i));
+  return scale > 0.0 ? scale : 1.0;  // K = 0: every mode is rigid; any negative σ will do
+}
+
+std::string shift_text(double sigma) {
+  std::ostringstream s;
+  s << sigma;
+  return s.str();
+}
+
+}  // namespace
+
+Eigenpairs arpack_eigenpairs(const SparseMatrix& M, const SparseMatrix& K, const std::vector<std::string>& labels,
+                             int count, const ModalOptions& options) {
+  const int n = static_cast<int>(M.rows());
+  const std::vector<int> massless = massless_dofs(M);
+  // A massless DOF needs a restraint: its row of K − σM is then its row of K.
+  if (!massless.empty()) {
+    std::vector<bool> stiff(n, false);
+    for (int j = 0; j < K.outerSize(); ++j)
+      for (SparseMatrix::InnerIterator it(K, j); it; ++it)
+        if (it.value() != 0.0) stiff[it.row()] = true;
+    for (int s : massless)
+      if (!stiff[s])
+        throw NumericalError("degree of freedom '" + labels[s] +
+                             "' has neither mass nor a restraint; give it inertia or hold it");
+  }
+  // Shift-invert sees only the eigenvalues of the DOFs with mass (the massless ones have
+  // infinite λ, ν = 0), and ARPACK finds at most n − 1 of n.
+  const int most = n - static_cast<int>(massless.size()) - 1;
+  if (most < 1) throw std::invalid_argument("ARPACK needs at least two degrees of freedom with mass");
+  if (count > most)
+    throw std::invalid_argument("ARPACK computes at most " + std::to_string(most) + " modes of this model (" +
+                                std::to_string(n) + " DOFs" +
+                                (massless.empty() ? std::string() : ", " + std::to_string(massless.size()) + " massless") +
+                                "), not " + std::to_string(count) + "; the dense solver gives them all");
+  const int wanted = count > 0 ? count : std::min(kArpackDefaultModes, most);
+
+  const ArpackOptions& o = options.arpack;
+  const bool automatic_shift = std::isnan(o.shift);
+  const double scale = spectrum_scale(M, K);
+  double sigma = automatic_shift ? -kShiftFraction * scale : o.shift;
+  // A few more than asked, so that a cluster cut at N shows where it ends.
+  int extra = std::max(2, wanted / 10);
+  int missed_runs = 0;
+  Eigenpairs result;
+  result.massless = massless;
+  ShiftedInverse op;
+  bool factored = false;
+  for (int attempt = 0;; ++attempt) {
+    if (!factored) {
+      // σ an eigenvalue to working precision: an automatic σ moves, a given one is an error.
+      for (int move = 0; !op.factor(K - sigma * M); ++move) {
+        if (!automatic_shift || move == 8)
+          throw NumericalError("K − σM is singular at σ = " + shift_text(sigma) +
+                               " 1/s² (σ is an eigenvalue); choose another shift");
+        sigma *= 1.7;
+      }
+      factored = true;
+    }
+    const int nev = std::min(wanted + extra, most);
+    Run run = run_arpack(M, K, op, sigma, nev, o);
+    result.summary.runs += 1;
+    result.summary.solver = ModalSolver::arpack;
+    result.summary.shift = sigma;
+    result.summary.factorisation = op.name();
+    result.summary.requested = nev;
+    result.summary.subspace_size = run.ncv;
+    result.summary.restarts = run.restarts;
+    result.summary.operator_applications += run.operations;
+
+    // Unstable modes below σ that were missed (the inertia counts more eigenvalues below σ
+    // than were found): an automatic σ moves below them. The nev found are the nearest σ,
+    // within r of it, so the missed ones lie below σ − r.
+    const int below = op.negative_pivots();
+    const int found_below = static_cast<int>((run.values.array() < sigma).count());
+    if (automatic_shift && below > found_below) {
+      if (attempt >= 12) throw NumericalError("ARPACK: could not place the shift below the unstable modes");
+      const double r = (run.values.array() - sigma).abs().maxCoeff();
+      sigma = std::min(10.0 * sigma, sigma - 2.0 * r);
+      factored = false;
+      continue;
+    }
+    // The modes to answer from: every one found for an automatic σ (the loop above put σ
+    // below all that were missed), those above a given σ.
+    Eigen::VectorXd values = run.values;
+    Eigen::MatrixXd vectors = run.vectors;
+    if (!automatic_shift) {
+      const int below_sigma = static_cast<int>((values.array() < sigma).count());  // ascending: the first ones
+      values = Eigen::VectorXd(values.tail(values.size() - below_sigma));
+      vectors = Eigen::MatrixXd(vectors.rightCols(vectors.cols() - below_sigma));
+    }
+    const int available = static_cast<int>(values.size());
+    if (available <= wanted && nev < most) {  // one more than N shows whether a cluster goes on
+      extra *= 2;
+      continue;
+    }
+    if (available < wanted)
+      throw NumericalError("ARPACK: only " + std::to_string(available) + " modes lie above the shift σ = " +
+                           shift_text(sigma) + " 1/s², not " + std::to_string(wanted));
+    result.scale = std::max(scale, values.cwiseAbs().maxCoeff());
+    const int end = cluster_end(values, wanted, options.zero_tolerance * result.scale);
+    // The count check: by Sylvester's law, K − μM with μ between the last mode kept and the
+    // next one found has as many negative pivots as there are eigenvalues below μ. More than
+    // were found means Lanczos skipped one (a copy of a repeated frequency, say): look again
+    // with a larger subspace, and fail rather than answer with a part of a cluster.
+    result.summary.count_checked = false;
+    if (end < available && op.negative_pivots() >= 0) {
+      const double mu = 0.5 * (values(end - 1) + values(end));
+      const int skipped = automatic_shift ? 0 : op.negative_pivots();  // below a given σ
+      ShiftedInverse check;
+      if (check.factor(K - mu * M) && check.negative_pivots() >= 0) {
+        const int exist = check.negative_pivots() - skipped;
+        if (exist > end) {
+          if (++missed_runs == 3)
+            throw NumericalError("ARPACK found " + std::to_string(end) + " eigenvalues below " + shift_text(mu) +
+                                 " 1/s² but the inertia of K − μM counts " + std::to_string(exist));
+          extra = std::max(2 * extra, exist - wanted + 3);
+          continue;
+        }
+        result.summary.count_checked = true;
+      }
+    }
+    if (end == available && nev == most && op.negative_pivots() >= 0) {
+      // The cluster reaches the last mode ARPACK can give: does it go on past it?
+      const double top = values(end - 1);
+      const double mu = top + 0.5e-8 * std::max(std::abs(top), options.zero_tolerance * result.scale);
+      ShiftedInverse check;
+      if (check.factor(K - mu * M) && check.negative_pivots() - (automatic_shift ? 0 : op.negative_pivots()) > end)
+        throw NumericalError("the repeated eigenvalue " + shift_text(top) + " 1/s² has more copies than the " +
+                             std::to_string(most) + " modes ARPACK can compute here; use the dense solver");
+    }
+    if (end < available || nev == most) {
+      result.values = values.head(end);
+      result.vectors = vectors.leftCols(end);
+      return result;
+    }
+    extra *= 2;  // the cluster reaches the last Ritz value found: look further
+  }
+}
+
+}  // namespace railmodal::solve

@@ -1,0 +1,230 @@
+// solve_modes: picks a back-end (dense or ARPACK), then classifies, names and checks the
+// eigenpairs it returns the same way for both.
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+#include "railmodal/errors.hpp"
+#include "railmodal/modal.hpp"
+#include "solve/eigenpairs.hpp"
+#include "solve/mode_naming.hpp"
+
+namespace railmodal {
+
+const char* to_string(ModeKind kind) {
+  switch (kind) {
+    case ModeKind::oscillatory: return "oscillatory";
+    case ModeKind::rigid_body: return "rigid-body";
+    case ModeKind::unstable: return "unstable";
+  }
+  return "?";
+}
+
+const char* to_string(ModalSolver solver) {
+  switch (solver) {
+    case ModalSolver::dense: return "dense";
+    case ModalSolver::arpack: return "arpack";
+    case ModalSolver::automatic: return "auto";
+  }
+  return "?";
+}
+
+std::optional<ModalSolver> modal_solver_from_string(const std::string& word) {
+  for (ModalSolver s : {ModalSolver::dense, ModalSolver::arpack, ModalSolver::automatic})
+    if (word == to_string(s)) return s;
+  return std::nullopt;
+}
+
+bool ArpackOptions::is_valid(std::string* why) const {
+  const auto fail = [why](const char* text) {
+    if (why) *why = text;
+    return false;
+  };
+  if (!std::isnan(shift) && !std::isfinite(shift)) return fail("arpack.shift must be finite (or NaN for automatic)");
+  if (!(tolerance >= 0.0 && tolerance < 1.0)) return fail("arpack.tolerance must satisfy 0 <= tolerance < 1");
+  if (subspace_size < 0) return fail("arpack.subspace_size must be 0 (automatic) or positive");
+  if (max_iterations < 1) return fail("arpack.max_iterations must be at least 1");
+  return true;
+}
+
+bool ModalOptions::is_valid(std::string* why) const {
+  if (!(zero_tolerance > 0.0 && zero_tolerance < 1e-2)) {
+    if (why) *why = "zero_tolerance must satisfy 0 < zero_tolerance < 1e-2";
+    return false;
+  }
+  if (!(max_residual > 0.0)) {
+    if (why) *why = "max_residual must be positive";
+    return false;
+  }
+  if (mode_count < 0) {
+    if (why) *why = "mode_count must be 0 (all, or ARPACK's default) or positive";
+    return false;
+  }
+  return arpack.is_valid(why);
+}
+
+ModalSolver choose_solver(ModalSolver requested, int dofs, int mode_count) {
+  if (requested != ModalSolver::automatic) return requested;
+  // ARPACK finds a small part of a large spectrum; half of it or more is the dense solver's job.
+  const int wanted = mode_count > 0 ? mode_count : kArpackDefaultModes;
+  return dofs > kArpackAboveDofs && 2 * wanted < dofs ? ModalSolver::arpack : ModalSolver::dense;
+}
+
+namespace solve {
+
+bool same_eigenvalue(double a, double b, double zero) {
+  if (std::abs(a) <= zero && std::abs(b) <= zero) return true;  // both rigid-body: λ = 0 twice
+  return std::abs(b - a) <= 1e-8 * std::max({std::abs(a), std::abs(b), zero});
+}
+
+int cluster_end(const Eigen::VectorXd& values, int count, double zero) {
+  int end = count;
+  while (end < values.size() && same_eigenvalue(values(end - 1), values(end), zero)) ++end;
+  return end;
+}
+
+std::vector<int> massless_dofs(const Eigen::SparseMatrix<double>& M) {
+  std::vector<bool> has_mass(M.rows(), false);
+  for (int j = 0; j < M.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(M, j); it; ++it)
+      if (it.value() != 0.0) has_mass[it.row()] = true;
+  std::vector<int> out;
+  for (int i = 0; i < M.rows(); ++i)
+    if (!has_mass[i]) out.push_back(i);
+  return out;
+}
+
+}  // namespace solve
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925;
+
+using Describe = std::function<solve::ModeDescription(const Eigen::VectorXd&)>;
+
+void check_options(const ModalOptions& options) {
+  std::string why;
+  if (!options.is_valid(&why)) throw std::invalid_argument("ModalOptions: " + why);
+}
+
+// Classifies, names and checks the first `keep` eigenpairs. Matrix: dense or sparse.
+template <class Matrix>
+ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Matrix& K, const solve::Eigenpairs& pairs,
+                        int keep, const ModalOptions& options, const Describe& describe) {
+  ModalResult result;
+  result.dofs = dofs;
+  result.solver = pairs.summary;
+  for (int s : pairs.massless) result.condensed.push_back(dofs[s].label);
+  const Eigen::VectorXd lambda = pairs.values.head(keep);
+  const Eigen::MatrixXd phi = pairs.vectors.leftCols(keep);
+  const double zero = options.zero_tolerance * pairs.scale;
+  const double norm_K = K.norm(), norm_M = M.norm();
+  const Eigen::MatrixXd K_phi = K * phi, M_phi = M * phi;
+  for (int k = 0; k < keep; ++k) {
+    Mode mode;
+    mode.index = k + 1;
+    mode.eigenvalue = lambda(k);
+    mode.shape = phi.col(k);
+    if (std::abs(lambda(k)) <= zero) {
+      mode.kind = ModeKind::rigid_body;
+    } else if (lambda(k) < 0.0) {
+      mode.kind = ModeKind::unstable;
+      mode.divergence_rate = std::sqrt(-lambda(k));
+    } else {
+      mode.kind = ModeKind::oscillatory;
+      mode.omega_rad_s = std::sqrt(lambda(k));
+      mode.frequency_hz = mode.omega_rad_s / kTwoPi;
+      mode.period_s = kTwoPi / mode.omega_rad_s;
+    }
+    mode.kinetic_energy_share = mode.shape.cwiseProduct(M_phi.col(k));
+    const double denom = (norm_K + std::abs(lambda(k)) * norm_M) * mode.shape.norm();
+    mode.residual = denom > 0.0 ? (K_phi.col(k) - lambda(k) * M_phi.col(k)).norm() / denom : 0.0;
+    result.max_residual = std::max(result.max_residual, mode.residual);
+    auto description = describe(mode.shape);
+    mode.name = description.name;
+    mode.centre = description.centre;
+    if (mode.kind == ModeKind::unstable) mode.name += " (unstable)";
+    if (mode.kind == ModeKind::rigid_body) mode.name += " (rigid-body)";
+    result.modes.push_back(std::move(mode));
+  }
+  for (int k = 0; k + 1 < keep; ++k)
+    if (solve::same_eigenvalue(lambda(k), lambda(k + 1), zero))
+      result.modes[k].repeated = result.modes[k + 1].repeated = true;
+  // Orthonormality over the kept coordinates (the condensed ones carry no mass).
+  const Eigen::MatrixXd G = phi.transpose() * M_phi;
+  result.orthonormality_error = (G - Eigen::MatrixXd::Identity(keep, keep)).cwiseAbs().maxCoeff();
+  if (!(result.max_residual <= options.max_residual))
+    throw NumericalError("eigen-solution residual " + std::to_string(result.max_residual) +
+                         " exceeds the limit " + std::to_string(options.max_residual));
+  return result;
+}
+
+std::vector<std::string> labels_of(const std::vector<Dof>& dofs) {
+  std::vector<std::string> labels;
+  for (const auto& d : dofs) labels.push_back(d.label);
+  return labels;
+}
+
+// How many of the dense solver's eigenpairs to keep: all, or N and the rest of its cluster.
+int dense_keep(const solve::Eigenpairs& pairs, const ModalOptions& options) {
+  const int m = static_cast<int>(pairs.values.size());
+  if (options.mode_count == 0 || options.mode_count >= m) return m;
+  return solve::cluster_end(pairs.values, options.mode_count, options.zero_tolerance * pairs.scale);
+}
+
+bool all_finite(const Eigen::SparseMatrix<double>& A) {
+  for (int j = 0; j < A.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      if (!std::isfinite(it.value())) return false;
+  return true;
+}
+
+}  // namespace
+
+ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options) {
+  check_options(options);
+  const int n = system.size();
+  if (n == 0) throw std::invalid_argument("the system has no degrees of freedom");
+  const Eigen::MatrixXd& M = system.mass;
+  const Eigen::MatrixXd& K = system.stiffness;
+  if (!M.allFinite() || !K.allFinite())
+    throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
+  const Describe describe = [&system](const Eigen::VectorXd& shape) { return solve::describe_mode(system, shape); };
+  const auto labels = labels_of(system.dofs);
+  if (choose_solver(options.solver, n, options.mode_count) == ModalSolver::dense) {
+    const solve::Eigenpairs pairs = solve::dense_eigenpairs(M, K, labels);
+    return make_result(system.dofs, M, K, pairs, dense_keep(pairs, options), options, describe);
+  }
+  const Eigen::SparseMatrix<double> Ms = M.sparseView(), Ks = K.sparseView();
+  const solve::Eigenpairs pairs = solve::arpack_eigenpairs(Ms, Ks, labels, options.mode_count, options);
+  return make_result(system.dofs, Ms, Ks, pairs, static_cast<int>(pairs.values.size()), options, describe);
+}
+
+ModalResult solve_modes(const SparseSystem& system, const ModalOptions& options) {
+  check_options(options);
+  const int n = system.size();
+  if (n == 0) throw std::invalid_argument("the system has no degrees of freedom");
+  if (system.mass.rows() != n || system.stiffness.rows() != n || system.mass.cols() != n || system.stiffness.cols() != n)
+    throw std::invalid_argument("SparseSystem: mass and stiffness must be n × n for n DOFs");
+  if (choose_solver(options.solver, n, options.mode_count) == ModalSolver::dense) {
+    ModalOptions dense = options;
+    dense.solver = ModalSolver::dense;
+    return solve_modes(to_linear_system(system), dense);
+  }
+  if (!all_finite(system.mass) || !all_finite(system.stiffness))
+    throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
+  // Without bodies a mode is named after the DOF with the most kinetic energy φᵢ (Mφ)ᵢ.
+  const Describe describe = [&system](const Eigen::VectorXd& shape) {
+    Eigen::Index lead = 0;
+    shape.cwiseProduct(system.mass * shape).maxCoeff(&lead);
+    return solve::ModeDescription{system.dofs[lead].label, std::nullopt};
+  };
+  const solve::Eigenpairs pairs =
+      solve::arpack_eigenpairs(system.mass, system.stiffness, labels_of(system.dofs), options.mode_count, options);
+  return make_result(system.dofs, system.mass, system.stiffness, pairs, static_cast<int>(pairs.values.size()),
+                     options, describe);
+}
+
+}  // namespace railmodal
