@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <istream>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -152,14 +153,29 @@ struct Comparison {
 /// merged shards). Ties keep study order.
 Comparison rank_variants(const Study& study, std::vector<VariantResult> results);
 
-enum class ComparisonFormat { table, csv, json };
+enum class ComparisonFormat { table, csv, json, markdown, html };
 std::optional<ComparisonFormat> comparison_format_from_string(const std::string& word);
+/// table, csv or json: from the ranked results alone. markdown and html need the study
+/// (write_comparison_report); here they throw std::invalid_argument.
 void write_comparison(std::ostream& out, const Comparison& comparison, ComparisonFormat format);
+
+/// The report of a study in any format; markdown and html are documents to hand in: why the
+/// winner wins (its criteria against the base and the runner-up, what the others violate),
+/// the ranked table (first kReportRows variants), each swept parameter against the periods
+/// and the objective, and the amplitude-against-speed curves of the best kReportBest
+/// feasible variants over the base's (recomputed from `study`: a critical-speed study each).
+/// HTML is one self-contained page with inline SVG plots.
+inline constexpr int kReportRows = 40;
+inline constexpr int kReportBest = 3;
+void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
+                             ComparisonFormat format);
 
 /// The results of one shard as JSON, and back (checked against the study: same name, same
 /// number of variants, each name at its index). read_shard throws InputError naming `file`.
 void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
                  const std::vector<VariantResult>& results);
 std::vector<VariantResult> read_shard(const std::string& file, const Study& study);
+/// The same from a stream (a shard received over MPI, say); messages name `origin`.
+std::vector<VariantResult> read_shard(std::istream& in, const std::string& origin, const Study& study);
 
 }  // namespace railmodal

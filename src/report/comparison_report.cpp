@@ -7,9 +7,11 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
+#include "report/comparison_rows.hpp"
 #include "study/metrics.hpp"
 
 namespace railmodal {
@@ -140,9 +142,9 @@ std::string criterion_heading(const RankingCriterion& c) {
 
 std::optional<double> body_deflection(const VariantResult& r) { return metric_value(r, "static_deflection"); }
 
-// Columns: rank, variant, feasible, each criterion, lowest critical speed, static deflection,
-// periods of the oscillatory modes.
-std::vector<std::vector<std::string>> table_rows(const Comparison& c, bool for_csv) {
+}  // namespace
+
+std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& c, bool for_csv) {
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> head{"rank", "variant", "feasible"};
   if (for_csv) head.push_back("objective");
@@ -188,6 +190,8 @@ std::vector<std::vector<std::string>> table_rows(const Comparison& c, bool for_c
   return rows;
 }
 
+namespace {
+
 std::string csv_field(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string quoted = "\"";
@@ -221,7 +225,7 @@ void write_table(std::ostream& out, const Comparison& c) {
     out << "\n";
   }
   out << "\n";
-  const auto rows = table_rows(c, false);
+  const auto rows = report::comparison_rows(c, false);
   std::vector<size_t> widths(rows.front().size(), 0);
   for (const auto& row : rows)
     for (size_t i = 0; i < row.size(); ++i) widths[i] = std::max(widths[i], width(row[i]));
@@ -257,6 +261,8 @@ std::optional<ComparisonFormat> comparison_format_from_string(const std::string&
   if (word == "table") return ComparisonFormat::table;
   if (word == "csv") return ComparisonFormat::csv;
   if (word == "json") return ComparisonFormat::json;
+  if (word == "markdown") return ComparisonFormat::markdown;
+  if (word == "html") return ComparisonFormat::html;
   return std::nullopt;
 }
 
@@ -264,12 +270,15 @@ void write_comparison(std::ostream& out, const Comparison& comparison, Compariso
   switch (format) {
     case ComparisonFormat::table: write_table(out, comparison); break;
     case ComparisonFormat::csv:
-      for (const auto& row : table_rows(comparison, true)) {
+      for (const auto& row : report::comparison_rows(comparison, true)) {
         for (size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << csv_field(row[i]);
         out << "\n";
       }
       break;
     case ComparisonFormat::json: write_json(out, comparison); break;
+    case ComparisonFormat::markdown:
+    case ComparisonFormat::html:
+      throw std::invalid_argument("write_comparison: the markdown and html reports need the study (write_comparison_report)");
   }
 }
 
@@ -289,6 +298,10 @@ void write_shard(std::ostream& out, const Study& study, const EvaluationOptions&
 std::vector<VariantResult> read_shard(const std::string& file, const Study& study) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file, 0, 0, "cannot open the file");
+  return read_shard(in, file, study);
+}
+
+std::vector<VariantResult> read_shard(std::istream& in, const std::string& file, const Study& study) {
   json j;
   try {
     j = json::parse(in);

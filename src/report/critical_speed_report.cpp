@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "railmodal/critical_speed_report.hpp"
+#include "report/document_table.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
 
@@ -31,31 +32,14 @@ namespace {
 using report::fixed;
 using report::html_escape;
 using report::significant;
+using report::Table;
+using report::is_rotation;
+using report::Unit;
+using report::unit_of;
+using report::write_html_table;
+using report::write_markdown_table;
 
 constexpr double kKmh = 3.6;  // m/s → km/h
-
-// Engineering units for one output: mm and mrad for displacements, m/s² for accelerations.
-struct Unit {
-  double scale;
-  std::string name;
-};
-
-bool is_rotation(const LinearSystem& system, const std::string& label) {
-  const int d = system.index_of(label);
-  if (d < 0) return false;
-  const Motion m = system.dofs[d].motion;
-  return m == Motion::roll || m == Motion::pitch || m == Motion::yaw;
-}
-
-Unit unit_of(const LinearSystem& system, const std::string& label, ResponseQuantity q) {
-  const bool rotation = is_rotation(system, label);
-  switch (q) {
-    case ResponseQuantity::displacement: return rotation ? Unit{1e3, "mrad"} : Unit{1e3, "mm"};
-    case ResponseQuantity::velocity: return rotation ? Unit{1e3, "mrad/s"} : Unit{1e3, "mm/s"};
-    case ResponseQuantity::acceleration: return rotation ? Unit{1.0, "rad/s²"} : Unit{1.0, "m/s²"};
-  }
-  return {1.0, ""};
-}
 
 std::string source_label(const CriticalSpeedStudy& study, int s) {
   return "[" + std::to_string(s + 1) + "] " + study.scene.sources[s]->kind();
@@ -86,39 +70,6 @@ bool any_force_source(const CriticalSpeedStudy& study) {
                      [](const auto& s) { return s->kind() == "unbalance"; });
 }
 
-
-// A table built once and written as Markdown or HTML.
-struct Table {
-  std::vector<std::string> headers;
-  std::vector<bool> numeric;  ///< right-aligned columns
-  std::vector<std::vector<std::string>> rows;
-};
-
-void write_markdown_table(std::ostream& out, const Table& t) {
-  out << "|";
-  for (const auto& h : t.headers) out << " " << h << " |";
-  out << "\n|";
-  for (size_t c = 0; c < t.headers.size(); ++c) out << (t.numeric[c] ? "---:|" : "---|");
-  out << "\n";
-  for (const auto& row : t.rows) {
-    out << "|";
-    for (const auto& cell : row) out << " " << cell << " |";
-    out << "\n";
-  }
-  out << "\n";
-}
-
-void write_html_table(std::ostream& out, const Table& t) {
-  out << "<table><tr>";
-  for (const auto& h : t.headers) out << "<th>" << html_escape(h) << "</th>";
-  out << "</tr>\n";
-  for (const auto& row : t.rows) {
-    out << "<tr>";
-    for (size_t c = 0; c < row.size(); ++c) out << (t.numeric[c] ? "<td class=n>" : "<td>") << html_escape(row[c]) << "</td>";
-    out << "</tr>\n";
-  }
-  out << "</table>\n";
-}
 
 Table sources_table(const CriticalSpeedStudy& st) {
   Table t{{"#", "source", "fundamental wavelength Λ", "harmonics"}, {true, false, true, true}, {}};
@@ -274,11 +225,7 @@ void write_markdown(std::ostream& out, const CriticalSpeedStudy& st) {
 
 void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
   const Vehicle& v = st.system.vehicle;
-  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>Critical speeds: "
-      << html_escape(v.name) << "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:24px auto;"
-         "color:#222;line-height:1.4}table{border-collapse:collapse;margin:8px 0 16px}td,th{border:1px solid #ccc;"
-         "padding:3px 8px;font-size:13px}th{background:#f2f2f2}td.n{text-align:right}h2{border-bottom:1px solid #ddd;"
-         "margin-top:28px}.note{color:#555;font-size:13px}.bad{color:#b00}.ok{color:#070}</style></head><body>\n";
+  report::write_html_head(out, "Critical speeds: " + v.name);
   out << "<h1>Critical speeds: " << html_escape(v.name) << "</h1>\n<p>Scene <b>" << html_escape(st.scene.name)
       << "</b> (<code>" << html_escape(st.scene.source) << "</code>), vehicle <code>" << html_escape(st.scene.vehicle_file)
       << "</code>, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "

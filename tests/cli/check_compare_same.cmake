@@ -1,5 +1,5 @@
 # railmodal compare gives byte-identical JSON on 1 and 2 threads, and when the study is split
-# into shards that are merged (in any order).
+# into shards that are merged (in any order); the same for the table and the HTML report.
 #   -DEXE=... -DSTUDY=... -DOUT=directory
 set(json ${OUT}/compare_same)
 file(MAKE_DIRECTORY ${json})
@@ -26,3 +26,8 @@ same(${json}/one_thread.json ${json}/merged.json)
 run(--threads 1 -o ${json}/single.txt)
 run(--merge ${json}/shard1.json ${json}/shard2.json ${json}/shard3.json -o ${json}/merged.txt)
 same(${json}/single.txt ${json}/merged.txt)
+# The HTML report recomputes the best variants' curves from the study: merged shards give the
+# same page as a single run.
+run(--threads 2 --format html -o ${json}/single.html)
+run(--merge ${json}/shard2.json ${json}/shard3.json ${json}/shard1.json --format html -o ${json}/merged.html)
+same(${json}/single.html ${json}/merged.html)

@@ -1,4 +1,4 @@
-// railmodal compare STUDY [--format table|csv|json] [-o OUT] [--threads N] [--shard K/N]
+// railmodal compare STUDY [--format table|csv|json|markdown|html] [-o OUT] [--threads N] [--shard K/N]
 //                         [--merge SHARD.json ...]
 #include <iostream>
 #include <memory>
@@ -66,7 +66,7 @@ int run(const CompareOptions& o) {
           throw InputError(o.merge.front(), 0, 0, "no shard holds variant " + std::to_string(i + 1) + " ('" +
                                                       study.variants[i].name + "'): give every shard of the study");
     }
-    write_comparison(text, rank_variants(study, std::move(results)), format);
+    write_comparison_report(text, study, rank_variants(study, std::move(results)), format);
     return write_output(o.output, text.str());
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
@@ -80,8 +80,9 @@ std::function<int()> add_compare_command(CLI::App& app) {
   auto options = std::make_shared<CompareOptions>();
   CLI::App* cmd = app.add_subcommand("compare", "Evaluate and rank the variants of a design study (docs/studies.md)");
   cmd->add_option("study", options->study, "Study file (TOML), e.g. data/studies/resort_against_fette.toml")->required();
-  cmd->add_option("--format", options->format, "Output format (a shard is always JSON)")
-      ->check(CLI::IsMember({"table", "csv", "json"}))
+  cmd->add_option("--format", options->format,
+                  "Output format: the ranked table (table, csv, json) or the report (markdown, html); a shard is always JSON")
+      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}))
       ->capture_default_str();
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();

@@ -1,0 +1,567 @@
+// The design comparison as a document to hand in (docs/studies.md, "Reports"): Markdown, or one
+// self-contained HTML page with inline SVG. It argues as the book does when it sets the Pullman,
+// Fette and Egorov bogies side by side: why the winner wins, the ranked table, how each swept
+// parameter moves the periods and the objective, and the response curves of the best designs
+// against the base.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+#include "railmodal/critical_speed_report.hpp"
+#include "railmodal/errors.hpp"
+#include "railmodal/study.hpp"
+#include "report/comparison_rows.hpp"
+#include "report/document_table.hpp"
+#include "report/svg_chart.hpp"
+#include "report/text_format.hpp"
+#include "study/metrics.hpp"
+
+namespace railmodal {
+namespace {
+
+using report::fixed;
+using report::html_escape;
+using report::significant;
+using report::Table;
+
+constexpr double kKmh = 3.6;        // km/h per m/s
+constexpr size_t kChartPoints = 2000;  // points per sweep chart: larger studies are thinned
+constexpr size_t kModeSeries = 6;   // periods plotted per sweep chart: the lowest modes
+constexpr size_t kCurveCharts = 8;  // amplitude charts at most
+
+// Text that is Markdown or HTML: names in bold, everything else escaped for HTML.
+struct Writer {
+  bool html;
+  std::string text(const std::string& s) const { return html ? html_escape(s) : s; }
+  std::string bold(const std::string& s) const { return html ? "<b>" + html_escape(s) + "</b>" : "**" + s + "**"; }
+};
+
+std::string metric_text(const std::string& metric, const std::optional<double>& x) {
+  if (!x) return "–";
+  if (std::isinf(*x)) return *x > 0 ? (metric.rfind("peak:", 0) == 0 ? "unbounded" : "none in range") : "−∞";
+  const study::DisplayUnit u = study::display_unit(metric);
+  const std::string unit = u.unit;
+  return significant(*x * u.per_si, 4) + (unit.empty() ? "" : " " + unit);
+}
+
+std::string goal(const RankingCriterion& c) { return std::string(c.maximise ? "max " : "min ") + c.metric; }
+
+bool is_base(const VariantResult& r) { return r.index == 0 && r.name == "base" && r.parameters.empty(); }
+
+const RankedVariant* find_base(const Comparison& c) {
+  for (const RankedVariant& v : c.variants)
+    if (is_base(v.result)) return &v;
+  return nullptr;
+}
+
+// The best few: feasible variants in rank order other than the base (any evaluated ones when
+// none is feasible).
+std::vector<const RankedVariant*> best_variants(const Comparison& c) {
+  std::vector<const RankedVariant*> best;
+  for (bool need_feasible : {true, false}) {
+    for (const RankedVariant& v : c.variants)
+      if (best.size() < static_cast<size_t>(kReportBest) && v.result.ok() && !is_base(v.result) &&
+          (v.feasible || !need_feasible) && std::find(best.begin(), best.end(), &v) == best.end())
+        best.push_back(&v);
+    if (!best.empty()) break;
+  }
+  return best;
+}
+
+// ---- why the winner wins ------------------------------------------------------------------
+
+std::vector<std::string> verdict(const Comparison& c, const Writer& w) {
+  std::vector<std::string> out;
+  size_t feasible = 0, failed = 0;
+  for (const RankedVariant& v : c.variants) feasible += v.feasible, failed += !v.result.ok();
+  const RankedVariant* base = find_base(c);
+  const auto& objective = c.ranking.objective;
+
+  if (feasible == 0) {
+    out.push_back(w.text("No variant meets every constraint: the table ranks them all as infeasible."));
+  } else {
+    const RankedVariant& winner = c.variants.front();
+    std::string s = w.bold(winner.result.name) + w.text(" ranks first of " + std::to_string(c.variants.size()) +
+                                                      " variants (" + std::to_string(feasible) + " feasible).");
+    const RankedVariant* runner = c.variants.size() > 1 && c.variants[1].feasible ? &c.variants[1] : nullptr;
+    if (runner && !objective.empty()) {
+      if (c.ranking.weighted) {
+        s += w.text(" Its weighted objective is " + significant(winner.objective.value_or(NAN), 6) + " against " +
+                    significant(runner->objective.value_or(NAN), 6) + " for the runner-up ") +
+             w.bold(runner->result.name) + w.text(".");
+      } else {
+        size_t k = 0;
+        while (k < objective.size() && k < winner.criteria.size() && k < runner->criteria.size() &&
+               winner.criteria[k] == runner->criteria[k])
+          ++k;
+        if (k < objective.size() && k < winner.criteria.size() && k < runner->criteria.size()) {
+          s += w.text(" It is ahead of the runner-up ") + w.bold(runner->result.name) +
+               w.text(" on " + goal(objective[k]) + ": " + metric_text(objective[k].metric, winner.criteria[k]) +
+                      " against " + metric_text(objective[k].metric, runner->criteria[k]) +
+                      (k > 0 ? " (the criteria before it tie)." : "."));
+        } else {
+          s += w.text(" It ties with the runner-up ") + w.bold(runner->result.name) +
+               w.text(" on every criterion and comes first in study order.");
+        }
+      }
+    }
+    out.push_back(s);
+    if (base && &winner == base) {
+      out.push_back(w.text("The base design is best: no variant improves on it within the constraints."));
+    } else if (base && !objective.empty()) {
+      std::string b = w.text("Against the base:");
+      for (size_t k = 0; k < objective.size(); ++k) {
+        const auto& mine = k < winner.criteria.size() ? winner.criteria[k] : std::nullopt;
+        const auto& theirs = k < base->criteria.size() ? base->criteria[k] : std::nullopt;
+        b += w.text(std::string(k ? ";" : "") + " " + objective[k].metric + " " + metric_text(objective[k].metric, mine) +
+                    " (base " + metric_text(objective[k].metric, theirs) + ")");
+      }
+      b += w.text(".");
+      if (!base->result.ok()) b += w.text(" The base itself failed: " + base->result.failure + ".");
+      else if (!base->feasible && !base->violations.empty()) b += w.text(" The base violates " + base->violations.front() + ".");
+      out.push_back(b);
+    }
+  }
+  for (const RankingConstraint& k : c.ranking.constraints) {
+    size_t violating = 0;
+    for (const RankedVariant& v : c.variants) {
+      if (!v.result.ok()) continue;
+      const auto x = metric_value(v.result, k.metric);
+      violating += !x || (k.min && *x < *k.min) || (k.max && *x > *k.max);
+    }
+    std::string bound;
+    if (k.min) bound += " ≥ " + metric_text(k.metric, *k.min);
+    if (k.max) bound += std::string(k.min ? " and" : "") + " ≤ " + metric_text(k.metric, *k.max);
+    out.push_back(w.text("Constraint " + k.metric + bound + ": " + std::to_string(violating) + " of " +
+                         std::to_string(c.variants.size() - failed) + " evaluated variants violate it."));
+  }
+  if (failed > 0) {
+    for (const RankedVariant& v : c.variants)
+      if (!v.result.ok()) {
+        out.push_back(w.text(std::to_string(failed) + " variant" + (failed > 1 ? "s" : "") +
+                             " could not be evaluated (first: ") +
+                      w.bold(v.result.name) + w.text(", " + v.result.failure + ")."));
+        break;
+      }
+  }
+  return out;
+}
+
+// ---- the ranked table -----------------------------------------------------------------------
+
+Table ranked_table(const Comparison& c) {
+  const auto rows = report::comparison_rows(c, false);
+  Table t;
+  t.headers = rows.front();
+  for (size_t i = 0; i < t.headers.size(); ++i) t.numeric.push_back(i >= 3 && i + 1 < t.headers.size());
+  for (size_t r = 1; r < rows.size() && r <= static_cast<size_t>(kReportRows); ++r) t.rows.push_back(rows[r]);
+  return t;
+}
+
+std::string table_note(const Comparison& c) {
+  if (c.variants.size() <= static_cast<size_t>(kReportRows)) return "";
+  return "The first " + std::to_string(kReportRows) + " of " + std::to_string(c.variants.size()) +
+         " variants; every variant is in --format csv and json.";
+}
+
+// ---- swept parameters -------------------------------------------------------------------------
+
+// A parameter value as a number and its unit as written ("40 mm" → 40, "mm"); nothing for a
+// table, an array or a file name.
+std::optional<std::pair<double, std::string>> numeric(const std::string& text) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  const double x = std::strtod(begin, &end);
+  if (end == begin || !std::isfinite(x)) return std::nullopt;
+  std::string unit(end);
+  unit.erase(0, unit.find_first_not_of(' '));
+  unit.erase(unit.find_last_not_of(' ') + 1);
+  if (unit.find_first_of("[{\"=,") != std::string::npos) return std::nullopt;
+  return std::make_pair(x, unit);
+}
+
+struct SweptParameter {
+  std::string key, unit;
+  std::vector<std::pair<const RankedVariant*, double>> points;  ///< in study order
+};
+
+// Keys that take at least two numeric values in one unit across the evaluated variants.
+std::vector<SweptParameter> swept_parameters(const Comparison& c) {
+  std::vector<const RankedVariant*> in_order;
+  for (const RankedVariant& v : c.variants) in_order.push_back(&v);
+  std::sort(in_order.begin(), in_order.end(), [](auto* a, auto* b) { return a->result.index < b->result.index; });
+  std::vector<SweptParameter> out;
+  std::map<std::string, size_t> position;
+  std::set<std::string> mixed;  // keys with other units or non-numeric values
+  for (const RankedVariant* v : in_order) {
+    if (!v->result.ok()) continue;
+    for (const auto& [key, text] : v->result.parameters) {
+      const auto value = numeric(text);
+      if (!position.count(key)) position[key] = out.size(), out.push_back({key, value ? value->second : "", {}});
+      SweptParameter& p = out[position[key]];
+      if (!value || value->second != p.unit) mixed.insert(key);
+      else p.points.push_back({v, value->first});
+    }
+  }
+  std::vector<SweptParameter> swept;
+  for (SweptParameter& p : out) {
+    std::set<double> distinct;
+    for (const auto& pt : p.points) distinct.insert(pt.second);
+    if (!mixed.count(p.key) && distinct.size() >= 2) swept.push_back(std::move(p));
+  }
+  return swept;
+}
+
+std::string axis_label(const SweptParameter& p) { return p.key + (p.unit.empty() ? "" : " (" + p.unit + ")"); }
+
+// The mode names whose periods are plotted: the lowest oscillatory modes of the reference.
+std::vector<std::string> period_modes(const VariantResult& reference) {
+  std::vector<std::string> names;
+  for (const auto& m : reference.modes)
+    if (m.kind == "oscillatory" && names.size() < kModeSeries &&
+        std::find(names.begin(), names.end(), m.name) == names.end())
+      names.push_back(m.name);
+  return names;
+}
+
+std::optional<double> period_of(const VariantResult& r, const std::string& mode) {
+  for (const auto& m : r.modes)
+    if (m.name == mode && m.kind == "oscillatory") return m.period_s;
+  return std::nullopt;
+}
+
+// The value each variant is ranked by first: the weighted sum or the first criterion (SI).
+std::optional<double> ranked_value(const RankedVariant& v, const Ranking& ranking) {
+  if (ranking.weighted) return v.objective;
+  return v.criteria.empty() ? std::nullopt : v.criteria.front();
+}
+
+std::string ranked_label(const Ranking& ranking) {
+  if (ranking.objective.empty()) return "";
+  if (ranking.weighted) return "weighted objective";
+  const study::DisplayUnit u = study::display_unit(ranking.objective.front().metric);
+  return goal(ranking.objective.front()) + (std::string(u.unit).empty() ? "" : " (" + std::string(u.unit) + ")");
+}
+
+double ranked_scale(const Ranking& ranking) {
+  return ranking.weighted || ranking.objective.empty() ? 1.0 : study::display_unit(ranking.objective.front().metric).per_si;
+}
+
+void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vector<SweptParameter>& swept,
+                        const VariantResult& reference) {
+  const std::vector<std::string> modes = period_modes(reference);
+  for (size_t k = 0; k < swept.size(); ++k) {
+    const SweptParameter& p = swept[k];
+    const size_t stride = (p.points.size() + kChartPoints - 1) / kChartPoints;
+    report::Chart periods;
+    periods.id = "sweep-periods-" + std::to_string(k + 1);
+    periods.title = "Periods against " + p.key;
+    periods.x_label = axis_label(p);
+    periods.y_label = "period (s)";
+    for (const std::string& mode : modes) {
+      report::ChartSeries s;
+      s.label = mode;
+      s.markers_only = true;
+      for (size_t i = 0; i < p.points.size(); i += stride)
+        if (const auto T = period_of(p.points[i].first->result, mode)) s.x.push_back(p.points[i].second), s.y.push_back(*T);
+      if (!s.x.empty()) periods.series.push_back(s);
+    }
+    out << "<h3>" << html_escape(p.key) << "</h3>\n" << report::svg_chart(periods);
+    if (!c.ranking.objective.empty()) {
+      report::Chart objective;
+      objective.id = "sweep-objective-" + std::to_string(k + 1);
+      objective.title = "Objective against " + p.key;
+      objective.x_label = axis_label(p);
+      objective.y_label = ranked_label(c.ranking);
+      report::ChartSeries feasible{"feasible", {}, {}, false, true}, infeasible{"infeasible", {}, {}, false, true};
+      for (size_t i = 0; i < p.points.size(); i += stride) {
+        const auto y = ranked_value(*p.points[i].first, c.ranking);
+        if (!y || !std::isfinite(*y)) continue;
+        report::ChartSeries& s = p.points[i].first->feasible ? feasible : infeasible;
+        s.x.push_back(p.points[i].second);
+        s.y.push_back(*y * ranked_scale(c.ranking));
+      }
+      for (const auto* s : {&feasible, &infeasible})
+        if (!s->x.empty()) objective.series.push_back(*s);
+      if (!objective.series.empty()) out << report::svg_chart(objective);
+    }
+    if (stride > 1)
+      out << "<p class=note>Every " << stride << "th of " << p.points.size() << " variants is plotted.</p>\n";
+  }
+}
+
+// Markdown cannot draw: the same as a table over the parameter's values (each value, or ten
+// equal bins when a sample spreads them out).
+Table sweep_table(const Comparison& c, const SweptParameter& p, const VariantResult& reference) {
+  std::vector<std::string> modes = period_modes(reference);
+  if (modes.size() > 3) modes.resize(3);
+  std::set<double> distinct;
+  for (const auto& pt : p.points) distinct.insert(pt.second);
+  const bool binned = distinct.size() > 12;
+  const double lo = *distinct.begin(), hi = *distinct.rbegin();
+  const int bins = binned ? 10 : static_cast<int>(distinct.size());
+  const std::vector<double> values(distinct.begin(), distinct.end());
+  auto bin_of = [&](double x) {
+    if (!binned) return static_cast<int>(std::lower_bound(values.begin(), values.end(), x) - values.begin());
+    return std::min(bins - 1, static_cast<int>((x - lo) / (hi - lo) * bins));
+  };
+  struct Range {
+    double min = INFINITY, max = -INFINITY;
+    void add(double x) { min = std::min(min, x), max = std::max(max, x); }
+    std::string text(int digits) const {
+      if (!(min <= max)) return "–";
+      return min == max ? significant(min, digits) : significant(min, digits) + "–" + significant(max, digits);
+    }
+  };
+  struct Row {
+    int variants = 0, feasible = 0;
+    Range objective;
+    std::vector<Range> periods;
+  };
+  std::vector<Row> rows(bins, Row{0, 0, {}, std::vector<Range>(modes.size())});
+  for (const auto& [v, x] : p.points) {
+    Row& row = rows[bin_of(x)];
+    ++row.variants;
+    row.feasible += v->feasible;
+    if (const auto y = ranked_value(*v, c.ranking); y && std::isfinite(*y)) row.objective.add(*y * ranked_scale(c.ranking));
+    for (size_t m = 0; m < modes.size(); ++m)
+      if (const auto T = period_of(v->result, modes[m])) row.periods[m].add(*T);
+  }
+  Table t;
+  t.headers = {axis_label(p), "variants", "feasible"};
+  if (!c.ranking.objective.empty()) t.headers.push_back(ranked_label(c.ranking));
+  for (const auto& m : modes) t.headers.push_back("T " + m + " (s)");
+  t.numeric.assign(t.headers.size(), true);
+  for (int b = 0; b < bins; ++b) {
+    if (rows[b].variants == 0) continue;
+    const std::string value = binned ? significant(lo + (hi - lo) * b / bins, 4) + "–" + significant(lo + (hi - lo) * (b + 1) / bins, 4)
+                                     : significant(values[b], 6);
+    std::vector<std::string> cells{value, std::to_string(rows[b].variants), std::to_string(rows[b].feasible)};
+    if (!c.ranking.objective.empty()) cells.push_back(rows[b].objective.text(4));
+    for (const Range& r : rows[b].periods) cells.push_back(r.text(4));
+    t.rows.push_back(cells);
+  }
+  return t;
+}
+
+// ---- response curves of the best designs ------------------------------------------------------
+
+struct CurveSet {
+  std::string label;  ///< "base", "1. softer springs"
+  bool base = false;
+  CriticalSpeedStudy study;
+};
+
+std::vector<CurveSet> curve_sets(const Study& study, const Comparison& c, std::vector<std::string>* notes) {
+  std::vector<std::pair<const RankedVariant*, bool>> wanted;
+  if (const RankedVariant* base = find_base(c); base && base->result.ok()) wanted.push_back({base, true});
+  for (const RankedVariant* v : best_variants(c)) wanted.push_back({v, false});
+  std::vector<CurveSet> sets;
+  for (const auto& [v, base] : wanted) {
+    const StudyVariant& variant = study.variants.at(v->result.index);
+    CurveSet s;
+    s.label = base ? "base" : std::to_string(v->rank) + ". " + v->result.name;
+    s.base = base;
+    try {
+      s.study = study_critical_speeds(variant.scene, variant.vehicle);
+      sets.push_back(std::move(s));
+    } catch (const std::exception& e) {  // NumericalError, InputError: say so, draw the rest
+      notes->push_back("No curves for " + v->result.name + ": " + e.what());
+    }
+  }
+  return sets;
+}
+
+struct CurveKey {
+  int source;
+  std::string output;
+  ResponseQuantity quantity;
+  bool operator==(const CurveKey& o) const { return source == o.source && output == o.output && quantity == o.quantity; }
+};
+
+const AmplitudeCurve* find_curve(const CriticalSpeedStudy& st, const CurveKey& key, int* index) {
+  for (size_t i = 0; i < st.curves.size(); ++i)
+    if (CurveKey{st.curves[i].source, st.curves[i].output, st.curves[i].quantity} == key) {
+      *index = static_cast<int>(i);
+      return &st.curves[i];
+    }
+  return nullptr;
+}
+
+std::vector<CurveKey> curve_keys(const std::vector<CurveSet>& sets) {
+  std::vector<CurveKey> keys;
+  if (sets.empty()) return keys;
+  for (const AmplitudeCurve& curve : sets.front().study.curves)
+    if (keys.size() < kCurveCharts) keys.push_back({curve.source, curve.output, curve.quantity});
+  return keys;
+}
+
+std::string curve_title(const CriticalSpeedStudy& st, const CurveKey& key) {
+  return "[" + std::to_string(key.source + 1) + "] " + st.scene.sources.at(key.source)->kind() + ": " + key.output + " " +
+         to_string(key.quantity);
+}
+
+// The largest response on the grid and at the refined peaks; unbounded when the grid met an
+// undamped resonance.
+std::string peak_text(const CriticalSpeedStudy& st, const CurveKey& key) {
+  int index = 0;
+  const AmplitudeCurve* curve = find_curve(st, key, &index);
+  if (!curve) return "–";
+  double amplitude = 0.0, speed = 0.0;
+  bool unbounded = false;
+  for (size_t i = 0; i < curve->speeds.size(); ++i) {
+    if (curve->unbounded[i]) unbounded = true;
+    else if (curve->amplitudes[i] > amplitude) amplitude = curve->amplitudes[i], speed = curve->speeds[i];
+  }
+  for (const auto& p : st.peaks)
+    if (p.curve == index && p.peak.amplitude > amplitude) amplitude = p.peak.amplitude, speed = p.peak.speed;
+  if (unbounded) return "unbounded";
+  const report::Unit u = report::unit_of(st.system, key.output, key.quantity);
+  return significant(amplitude * u.scale, 4) + " " + u.name + " at " + fixed(speed * kKmh, 1) + " km/h";
+}
+
+Table peak_table(const std::vector<CurveSet>& sets, const std::vector<CurveKey>& keys) {
+  Table t;
+  t.headers = {"variant"};
+  for (const CurveKey& k : keys) t.headers.push_back(curve_title(sets.front().study, k) + ": peak");
+  t.numeric.assign(t.headers.size(), true);
+  t.numeric.front() = false;
+  for (const CurveSet& s : sets) {
+    std::vector<std::string> row{s.label};
+    for (const CurveKey& k : keys) row.push_back(peak_text(s.study, k));
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+void write_curve_charts(std::ostream& out, const std::vector<CurveSet>& sets, const std::vector<CurveKey>& keys) {
+  for (size_t k = 0; k < keys.size(); ++k) {
+    const CriticalSpeedStudy& first = sets.front().study;
+    const report::Unit u = report::unit_of(first.system, keys[k].output, keys[k].quantity);
+    report::Chart chart;
+    chart.id = "curves-" + std::to_string(k + 1);
+    chart.title = curve_title(first, keys[k]);
+    chart.x_label = "speed (km/h)";
+    chart.y_label = std::string(to_string(keys[k].quantity)) + " amplitude (" + u.name + ")";
+    chart.log_y = true;
+    chart.x_min = INFINITY;
+    chart.x_max = -INFINITY;
+    for (const CurveSet& s : sets) {
+      int index = 0;
+      const AmplitudeCurve* curve = find_curve(s.study, keys[k], &index);
+      if (!curve) continue;
+      report::ChartSeries series;
+      series.label = s.label;
+      series.dashed = s.base;
+      for (size_t i = 0; i < curve->speeds.size(); ++i) {
+        series.x.push_back(curve->speeds[i] * kKmh);
+        series.y.push_back(curve->unbounded[i] ? NAN : curve->amplitudes[i] * u.scale);
+      }
+      chart.x_min = std::min(chart.x_min, s.study.scene.min_speed * kKmh);
+      chart.x_max = std::max(chart.x_max, s.study.scene.max_speed * kKmh);
+      chart.series.push_back(series);
+    }
+    out << report::svg_chart(chart);
+  }
+}
+
+// ---- the documents ------------------------------------------------------------------------------
+
+std::string ranking_text(const Comparison& c) {
+  if (c.ranking.objective.empty()) return "No objective: the variants keep study order, feasible first.";
+  std::string s = c.ranking.weighted ? "Weighted objective: minimise " : "Lexicographic objective: ";
+  for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
+    const RankingCriterion& crit = c.ranking.objective[k];
+    if (c.ranking.weighted)
+      s += std::string(k ? " + " : "") + significant(crit.weight, 6) + " × " + (crit.maximise ? "(−" : "") + crit.metric +
+           (crit.maximise ? ")" : "");
+    else
+      s += std::string(k ? ", then " : "") + goal(crit);
+  }
+  return s + ".";
+}
+
+const VariantResult* reference_result(const Comparison& c) {
+  if (const RankedVariant* base = find_base(c); base && base->result.ok()) return &base->result;
+  for (const RankedVariant& v : c.variants)
+    if (v.result.ok()) return &v.result;
+  return nullptr;
+}
+
+void write_markdown(std::ostream& out, const Study& study, const Comparison& c) {
+  const Writer w{false};
+  out << "# Design comparison: " << c.study << "\n\nStudy `" << study.source << "`, " << c.variants.size()
+      << " variants. " << ranking_text(c) << "\n\n## Why the winner wins\n\n";
+  for (const std::string& s : verdict(c, w)) out << "- " << s << "\n";
+  out << "\n## Ranked variants\n\n";
+  report::write_markdown_table(out, ranked_table(c));
+  if (const std::string note = table_note(c); !note.empty()) out << note << "\n\n";
+  const std::vector<SweptParameter> swept = swept_parameters(c);
+  const VariantResult* reference = reference_result(c);
+  if (!swept.empty() && reference) {
+    out << "## Swept parameters\n\nRanges over the variants at each value: the periods of the lowest modes and "
+           "the value ranked first. The plots are in the HTML report (`--format html`).\n\n";
+    for (const SweptParameter& p : swept) {
+      out << "### " << p.key << "\n\n";
+      report::write_markdown_table(out, sweep_table(c, p, *reference));
+    }
+  }
+  std::vector<std::string> notes;
+  const std::vector<CurveSet> sets = curve_sets(study, c, &notes);
+  if (!sets.empty()) {
+    out << "## Peak responses of the best variants\n\nThe largest amplitude of each output over the speed range, "
+           "for the base and the best " << kReportBest << " variants; the curves are in the HTML report.\n\n";
+    report::write_markdown_table(out, peak_table(sets, curve_keys(sets)));
+  }
+  for (const std::string& n : notes) out << n << "\n\n";
+}
+
+void write_html(std::ostream& out, const Study& study, const Comparison& c) {
+  const Writer w{true};
+  report::write_html_head(out, "Design comparison: " + c.study);
+  out << "<h1>Design comparison: " << html_escape(c.study) << "</h1>\n<p>Study <code>" << html_escape(study.source)
+      << "</code>, " << c.variants.size() << " variants. " << html_escape(ranking_text(c)) << "</p>\n";
+  out << "<h2>Why the winner wins</h2>\n<ul>\n";
+  for (const std::string& s : verdict(c, w)) out << "<li>" << s << "</li>\n";
+  out << "</ul>\n<h2>Ranked variants</h2>\n";
+  report::write_html_table(out, ranked_table(c));
+  if (const std::string note = table_note(c); !note.empty()) out << "<p class=note>" << html_escape(note) << "</p>\n";
+  const std::vector<SweptParameter> swept = swept_parameters(c);
+  const VariantResult* reference = reference_result(c);
+  if (!swept.empty() && reference) {
+    out << "<h2>Swept parameters</h2>\n<p class=note>Each evaluated variant is a point: the periods of the "
+           "lowest modes and the value ranked first against each parameter the study varies (points at one value "
+           "differ in the other parameters).</p>\n";
+    write_sweep_charts(out, c, swept, *reference);
+  }
+  std::vector<std::string> notes;
+  const std::vector<CurveSet> sets = curve_sets(study, c, &notes);
+  if (!sets.empty()) {
+    const std::vector<CurveKey> keys = curve_keys(sets);
+    out << "<h2>Amplitude against speed: the best variants over the base</h2>\n<p class=note>The base dashed; the "
+           "best "
+        << kReportBest
+        << " variants by rank. Each curve sums its source's harmonics; logarithmic scale; gaps are undamped "
+           "resonances (unbounded).</p>\n";
+    write_curve_charts(out, sets, keys);
+    report::write_html_table(out, peak_table(sets, keys));
+  }
+  for (const std::string& n : notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
+  out << "<p class=note>Written by railmodal compare.</p>\n</body></html>\n";
+}
+
+}  // namespace
+
+void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
+                             ComparisonFormat format) {
+  switch (format) {
+    case ComparisonFormat::markdown: write_markdown(out, study, comparison); break;
+    case ComparisonFormat::html: write_html(out, study, comparison); break;
+    default: write_comparison(out, comparison, format); break;
+  }
+}
+
+}  // namespace railmodal

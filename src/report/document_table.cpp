@@ -1,0 +1,59 @@
+// Tables, units and page style shared by the report writers.
+#include "report/document_table.hpp"
+
+#include "report/svg_chart.hpp"
+
+namespace railmodal::report {
+
+void write_markdown_table(std::ostream& out, const Table& t) {
+  out << "|";
+  for (const auto& h : t.headers) out << " " << h << " |";
+  out << "\n|";
+  for (size_t c = 0; c < t.headers.size(); ++c) out << (t.numeric[c] ? "---:|" : "---|");
+  out << "\n";
+  for (const auto& row : t.rows) {
+    out << "|";
+    for (const auto& cell : row) out << " " << cell << " |";
+    out << "\n";
+  }
+  out << "\n";
+}
+
+void write_html_table(std::ostream& out, const Table& t) {
+  out << "<table><tr>";
+  for (const auto& h : t.headers) out << "<th>" << html_escape(h) << "</th>";
+  out << "</tr>\n";
+  for (const auto& row : t.rows) {
+    out << "<tr>";
+    for (size_t c = 0; c < row.size(); ++c) out << (t.numeric[c] ? "<td class=n>" : "<td>") << html_escape(row[c]) << "</td>";
+    out << "</tr>\n";
+  }
+  out << "</table>\n";
+}
+
+bool is_rotation(const LinearSystem& system, const std::string& label) {
+  const int d = system.index_of(label);
+  if (d < 0) return false;
+  const Motion m = system.dofs[d].motion;
+  return m == Motion::roll || m == Motion::pitch || m == Motion::yaw;
+}
+
+Unit unit_of(const LinearSystem& system, const std::string& label, ResponseQuantity q) {
+  const bool rotation = is_rotation(system, label);
+  switch (q) {
+    case ResponseQuantity::displacement: return rotation ? Unit{1e3, "mrad"} : Unit{1e3, "mm"};
+    case ResponseQuantity::velocity: return rotation ? Unit{1e3, "mrad/s"} : Unit{1e3, "mm/s"};
+    case ResponseQuantity::acceleration: return rotation ? Unit{1.0, "rad/s²"} : Unit{1.0, "m/s²"};
+  }
+  return {1.0, ""};
+}
+
+void write_html_head(std::ostream& out, const std::string& title) {
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escape(title)
+      << "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:24px auto;"
+         "color:#222;line-height:1.4}table{border-collapse:collapse;margin:8px 0 16px}td,th{border:1px solid #ccc;"
+         "padding:3px 8px;font-size:13px}th{background:#f2f2f2}td.n{text-align:right}h2{border-bottom:1px solid #ddd;"
+         "margin-top:28px}.note{color:#555;font-size:13px}.bad{color:#b00}.ok{color:#070}</style></head><body>\n";
+}
+
+}  // namespace railmodal::report

@@ -1,0 +1,190 @@
+// The design-comparison report (Markdown and HTML): what it claims about the winner follows
+// from the ranking, the sweep tables and plots hold every evaluated variant, the curves are
+// those of the base and the best variants, and the page needs nothing outside itself.
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <sstream>
+
+#include "railmodal/railmodal.hpp"
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+// The bundled two-axle study: base + 5 spring deflections × 3 rail lengths, the softest ride
+// whose bounce resonance stays at or above 90 km/h.
+struct TwoAxleStudy {
+  Study study = load_study(std::string(RAILMODAL_DATA_DIR) + "/studies/two_axle_rail_length_and_springs.toml");
+  Comparison comparison = rank_variants(study, evaluate_study(study, {}));
+
+  std::string report(ComparisonFormat format) const {
+    std::ostringstream out;
+    write_comparison_report(out, study, comparison, format);
+    return out.str();
+  }
+};
+
+const TwoAxleStudy& two_axle() {
+  static const TwoAxleStudy s;
+  return s;
+}
+
+size_t count(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
+// The lines of the Markdown table that follows `heading`.
+std::vector<std::string> table_after(const std::string& markdown, const std::string& heading) {
+  std::istringstream in(markdown.substr(markdown.find(heading)));
+  std::vector<std::string> rows;
+  std::string line;
+  bool started = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("|", 0) == 0) started = true, rows.push_back(line);
+    else if (started) break;
+  }
+  return rows;
+}
+
+std::vector<std::string> cells(const std::string& row) {
+  std::vector<std::string> out;
+  std::stringstream s(row.substr(1));
+  std::string cell;
+  while (std::getline(s, cell, '|')) {
+    cell.erase(0, cell.find_first_not_of(' '));
+    cell.erase(cell.find_last_not_of(' ') + 1);
+    out.push_back(cell);
+  }
+  return out;
+}
+
+TEST(ComparisonReport, VerdictNamesTheWinnerAndTheRunnerUpFromTheRanking) {
+  const TwoAxleStudy& s = two_axle();
+  ASSERT_GE(s.comparison.variants.size(), 3u);
+  const RankedVariant& winner = s.comparison.variants[0];
+  const RankedVariant& runner = s.comparison.variants[1];
+  ASSERT_TRUE(winner.feasible && runner.feasible);
+  const std::string md = s.report(ComparisonFormat::markdown);
+  EXPECT_NE(md.find("**" + winner.result.name + "** ranks first of 16 variants"), std::string::npos) << md;
+  EXPECT_NE(md.find("ahead of the runner-up **" + runner.result.name + "**"), std::string::npos) << md;
+  // The softest springs win: a longer period is what the objective asks for first, and the
+  // winner's bounce period beats the runner-up's (the report says on which criterion).
+  ASSERT_TRUE(winner.criteria[0] && runner.criteria[0]);
+  EXPECT_GT(*winner.criteria[0], *runner.criteria[0]);
+  const std::string first = s.comparison.ranking.objective.front().metric;  // canonical: "period:body bounce"
+  EXPECT_NE(md.find("on max " + first + ": "), std::string::npos) << md;
+  EXPECT_NE(md.find("Against the base: " + first + " "), std::string::npos) << md;
+}
+
+TEST(ComparisonReport, ConstraintSentenceCountsTheInfeasibleVariants) {
+  const TwoAxleStudy& s = two_axle();
+  size_t infeasible = 0;
+  for (const RankedVariant& v : s.comparison.variants) infeasible += v.result.ok() && !v.feasible;
+  ASSERT_GT(infeasible, 0u);  // soft springs on short rails resonate below 90 km/h
+  const std::string md = s.report(ComparisonFormat::markdown);
+  EXPECT_NE(md.find(": " + std::to_string(infeasible) + " of 16 evaluated variants violate it."), std::string::npos) << md;
+}
+
+TEST(ComparisonReport, RankedTableHoldsEveryVariantInRankOrder) {
+  const TwoAxleStudy& s = two_axle();
+  const auto rows = table_after(s.report(ComparisonFormat::markdown), "## Ranked variants");
+  ASSERT_EQ(rows.size(), 2 + s.comparison.variants.size());  // header, rule, variants
+  for (size_t i = 0; i < s.comparison.variants.size(); ++i) {
+    const auto c = cells(rows[2 + i]);
+    EXPECT_EQ(c.at(0), std::to_string(s.comparison.variants[i].rank));
+    EXPECT_EQ(c.at(1), s.comparison.variants[i].result.name);
+  }
+}
+
+// The spring deflection sets the bounce period, the rail length does not (T = 2π√(f/g), two-
+// axle digest): each deflection's row holds one period, shared by its three rail lengths, and
+// each rail length's row spans all five.
+TEST(ComparisonReport, SweepTablesGroupTheVariantsByEachParameterValue) {
+  const TwoAxleStudy& s = two_axle();
+  const std::string md = s.report(ComparisonFormat::markdown);
+  const auto springs = table_after(md, "### suspension.spring[0].static_deflection");
+  ASSERT_EQ(springs.size(), 2u + 5u) << md;
+  const auto head = cells(springs[0]);
+  const size_t bounce = std::find(head.begin(), head.end(), "T body bounce (s)") - head.begin();
+  ASSERT_LT(bounce, head.size()) << springs[0];
+  for (size_t r = 2; r < springs.size(); ++r) {
+    const auto c = cells(springs[r]);
+    EXPECT_EQ(c.at(1), "3") << springs[r];                                // three rail lengths each
+    EXPECT_EQ(c.at(bounce).find("–"), std::string::npos) << springs[r];  // one period, not a range
+    const double f = std::stod(c.at(0)) * 1e-3;
+    EXPECT_NEAR(std::stod(c.at(bounce)), 2 * M_PI * std::sqrt(f / 9.81), 2e-3 * 2 * M_PI * std::sqrt(f / 9.81))
+        << "4 significant digits; g = 981 cm/s², the leaf spring's own deflection: " << springs[r];
+  }
+  const auto rails = table_after(md, "### scene:source[0].rail_length");
+  ASSERT_EQ(rails.size(), 2u + 3u) << md;
+  for (size_t r = 2; r < rails.size(); ++r) {
+    EXPECT_EQ(cells(rails[r]).at(1), "5") << rails[r];
+    EXPECT_NE(cells(rails[r]).at(bounce).find("–"), std::string::npos) << rails[r];
+  }
+}
+
+TEST(ComparisonReport, PeakTableHasTheBaseAndTheBestFeasibleVariants) {
+  const TwoAxleStudy& s = two_axle();
+  const auto rows = table_after(s.report(ComparisonFormat::markdown), "## Peak responses");
+  ASSERT_EQ(rows.size(), 2u + 1u + static_cast<size_t>(kReportBest));
+  EXPECT_EQ(cells(rows[2]).at(0), "base");
+  int shown = 0;
+  for (const RankedVariant& v : s.comparison.variants) {
+    if (!v.feasible || shown == kReportBest) continue;
+    EXPECT_EQ(cells(rows[3 + shown]).at(0), std::to_string(v.rank) + ". " + v.result.name);
+    ++shown;
+  }
+}
+
+TEST(ComparisonReport, HtmlIsOnePageWithItsPlotsInline) {
+  const TwoAxleStudy& s = two_axle();
+  const std::string html = s.report(ComparisonFormat::html);
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_NE(html.find("</body></html>"), std::string::npos);
+  for (const char* outside : {"<script", "src=", "href=", "<link", "@import"})
+    EXPECT_EQ(html.find(outside), std::string::npos) << outside;
+  // Two swept parameters, each against the periods and the objective; then one chart per
+  // curve of the scene (its rail joints on the body's bounce and pitch).
+  EXPECT_EQ(count(html, "clipPath id=\"plot-sweep-periods-"), 2u);
+  EXPECT_EQ(count(html, "clipPath id=\"plot-sweep-objective-"), 2u);
+  const size_t curves = count(html, "clipPath id=\"plot-curves-");
+  EXPECT_GE(curves, 1u);
+  EXPECT_EQ(count(html, "<svg"), 4u + curves);
+  // Each curve chart has the base (dashed) and the best variants in its legend.
+  EXPECT_EQ(count(html, ">base</text>"), curves);
+  for (int k = 0; k < kReportBest; ++k) {
+    const RankedVariant& v = s.comparison.variants[k];
+    ASSERT_TRUE(v.feasible);
+    EXPECT_EQ(count(html, ">" + std::to_string(v.rank) + ". " + v.result.name + "</text>"), curves) << v.result.name;
+  }
+  EXPECT_EQ(count(html, "<li>"), 1u + 1u + 1u);  // winner, against the base, the one constraint
+}
+
+TEST(ComparisonReport, NoFeasibleVariantIsSaidPlainly) {
+  TwoAxleStudy s;
+  s.study.ranking.constraints = {{"bounce_period", 10.0, std::nullopt}};  // 10 s: no wagon
+  s.comparison = rank_variants(s.study, evaluate_study(s.study, {}));
+  const std::string md = s.report(ComparisonFormat::markdown);
+  EXPECT_NE(md.find("No variant meets every constraint"), std::string::npos) << md;
+  EXPECT_NE(md.find(": 16 of 16 evaluated variants violate it."), std::string::npos) << md;
+  // Nothing is feasible: the curves are those of the best-ranked evaluated variants.
+  EXPECT_EQ(table_after(md, "## Peak responses").size(), 2u + 1u + static_cast<size_t>(kReportBest));
+}
+
+TEST(ComparisonReport, TheRankedFormatsDoNotNeedTheStudyButTheReportsDo) {
+  const TwoAxleStudy& s = two_axle();
+  std::ostringstream table, via_report;
+  write_comparison(table, s.comparison, ComparisonFormat::table);
+  write_comparison_report(via_report, s.study, s.comparison, ComparisonFormat::table);
+  EXPECT_EQ(table.str(), via_report.str());
+  std::ostringstream out;
+  EXPECT_THROW(write_comparison(out, s.comparison, ComparisonFormat::html), std::invalid_argument);
+  EXPECT_EQ(comparison_format_from_string("markdown"), ComparisonFormat::markdown);
+  EXPECT_EQ(comparison_format_from_string("html"), ComparisonFormat::html);
+}
+
+}  // namespace
+}  // namespace railmodal::test
