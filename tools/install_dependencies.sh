@@ -3,7 +3,7 @@
 # already there: apt is only consulted for what is missing.
 set -euo pipefail
 packages=(cmake g++ make pkg-config libeigen3-dev libtoml11-dev nlohmann-json3-dev libcli11-dev
-          libfftw3-dev libarpack2-dev libgtest-dev libbenchmark-dev)
+          libfftw3-dev libarpack2-dev libgtest-dev libbenchmark-dev libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

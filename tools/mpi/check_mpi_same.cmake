@@ -1,0 +1,16 @@
+# railmodal-mpi on two ranks writes the same bytes as railmodal compare in one process.
+#   -DMPIEXEC=mpiexec -DNP_FLAG=-n -DMPI_EXE=railmodal-mpi -DEXE=railmodal -DSTUDY=... -DFORMAT=json -DOUT=prefix
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL 0)
+    list(JOIN ARGN " " command)
+    message(FATAL_ERROR "${command}: exit code ${code}\n${out}\n${err}")
+  endif()
+endfunction()
+file(REMOVE ${OUT}.mpi ${OUT}.single)
+run(${MPIEXEC} --allow-run-as-root --oversubscribe ${NP_FLAG} 2 ${MPI_EXE} compare ${STUDY} --format ${FORMAT} -o ${OUT}.mpi)
+run(${EXE} compare ${STUDY} --format ${FORMAT} -o ${OUT}.single)
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}.mpi ${OUT}.single RESULT_VARIABLE differ)
+if(differ)
+  message(FATAL_ERROR "${OUT}.mpi (2 ranks) and ${OUT}.single (one process) differ")
+endif()
