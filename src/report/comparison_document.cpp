@@ -250,6 +250,22 @@ double ranked_scale(const Ranking& ranking) {
   return ranking.weighted || ranking.objective.empty() ? 1.0 : study::display_unit(ranking.objective.front().metric).per_si;
 }
 
+// Room for the points: 5 % beyond the extreme values, so none sits on the frame, and above
+// the highest as much as the legend (drawn at the top) needs, a tenth of the range a line.
+void frame_points(report::Chart* chart) {
+  double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
+  for (const auto& s : chart->series)
+    for (size_t i = 0; i < s.x.size(); ++i)
+      x_lo = std::min(x_lo, s.x[i]), x_hi = std::max(x_hi, s.x[i]), y_lo = std::min(y_lo, s.y[i]), y_hi = std::max(y_hi, s.y[i]);
+  if (!(x_lo < x_hi) || !(y_lo <= y_hi)) return;  // no points, or one value: the chart's own range
+  chart->x_min = x_lo - 0.05 * (x_hi - x_lo);
+  chart->x_max = x_hi + 0.05 * (x_hi - x_lo);
+  chart->y_min = y_lo >= 0.0 ? 0.0 : y_lo - 0.05 * (y_hi - y_lo);
+  const double legend = 0.15 + 0.1 * static_cast<double>(chart->series.size());
+  chart->y_max = y_hi + legend / (1.0 - legend) * (y_hi - chart->y_min);
+  if (!(chart->y_min < chart->y_max)) chart->y_min = chart->y_max = 0.0;  // all zero: automatic
+}
+
 void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vector<SweptParameter>& swept,
                         const VariantResult& reference) {
   const std::vector<std::string> modes = period_modes(reference);
@@ -269,6 +285,7 @@ void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vecto
         if (const auto T = period_of(p.points[i].first->result, mode)) s.x.push_back(p.points[i].second), s.y.push_back(*T);
       if (!s.x.empty()) periods.series.push_back(s);
     }
+    frame_points(&periods);
     out << "<h3>" << html_escape(p.key) << "</h3>\n" << report::svg_chart(periods);
     if (!c.ranking.objective.empty()) {
       report::Chart objective;
@@ -286,6 +303,7 @@ void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vecto
       }
       for (const auto* s : {&feasible, &infeasible})
         if (!s->x.empty()) objective.series.push_back(*s);
+      frame_points(&objective);
       if (!objective.series.empty()) out << report::svg_chart(objective);
     }
     if (stride > 1)
