@@ -16,8 +16,6 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <climits>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <set>
@@ -26,12 +24,18 @@
 #include <thread>
 #include <vector>
 
+#include "commands.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 
 namespace {
 
-enum ExitCode { kSuccess = 0, kInternal = 1, kUsage = 2, kInput = 3, kOutput = 5 };
+using railmodal::cli::kInput;
+using railmodal::cli::kInternal;
+using railmodal::cli::kOutput;
+using railmodal::cli::kSuccess;
+using railmodal::cli::kUsage;
+using railmodal::cli::write_output;
 
 struct Options {
   std::string study;
@@ -56,38 +60,6 @@ int default_threads() {
   if (sched_getaffinity(0, sizeof set, &set) == 0) allowed = std::max(1, CPU_COUNT(&set));
 #endif
   return std::max(1, std::min(allowed, cores / std::max(1, ranks_on_node)));
-}
-
-/// Writes `text` to `path` whole or not at all (a temporary file beside it, then a rename),
-/// as railmodal does; "-" is standard output.
-int write_output(const std::string& path, const std::string& text) {
-  if (path.empty() || path == "-") {
-    std::cout << text << std::flush;
-    return std::cout ? kSuccess : kOutput;
-  }
-  namespace fs = std::filesystem;
-  const fs::path target(path);
-  std::error_code error;
-  const fs::file_status status = fs::status(target, error);
-  if (fs::exists(status) && !fs::is_regular_file(status)) {
-    // A device or pipe (/dev/null, a FIFO): write into it; renaming over it would replace it.
-    std::ofstream out(target, std::ios::binary);
-    out << text;
-    out.close();
-    if (out) return kSuccess;
-  } else {
-    const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp");
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (out) {
-      fs::rename(temporary, target, error);
-      if (!error) return kSuccess;
-    }
-    fs::remove(temporary, error);
-  }
-  std::cerr << path << ": error: cannot write the output file\n";
-  return kOutput;
 }
 
 /// This rank's shard as JSON (write_shard), or a failure: its exit code and message.
