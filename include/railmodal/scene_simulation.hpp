@@ -35,6 +35,14 @@ struct FftCheck {
   double rel_error = 0.0;             ///< (peak − modal)/modal
   double resolution_hz = 0.0;         ///< the peak's half-width at half amplitude (≥ the window's)
   bool within_resolution = false;     ///< |peak − modal| ≤ resolution
+  /// How much the record holds of this mode: the largest |φᵀMx| over the record (the modal
+  /// coordinate, one scale for every mode) over that of the most excited mode.
+  double modal_amplitude_ratio = 0.0;
+  /// Below kExcitedRatio the mode's "peak" would be round-off (a symmetric release leaves
+  /// antisymmetric modes at 1e-13 of the rest): no peak is sought and the mode is reported
+  /// as not excited.
+  bool excited = false;
+  static constexpr double kExcitedRatio = 1e-6;
 };
 
 /// Where one degree of freedom turns and where it passes its static position, read from a
@@ -59,15 +67,20 @@ struct FftCheckResult {
   std::vector<FftCheck> checks;
   std::vector<std::string> spectrum_dofs;  ///< the DOFs whose spectra were taken
   std::vector<Spectrum> spectra;           ///< of their displacements, Hann window, zero-padded ×4
-  /// Nonlinear scenes: the swings of the most energetic DOF of the lowest mode, whose
+  /// Nonlinear scenes: the swings of the most energetic DOF of the most excited mode, whose
   /// half periods check what broad spectral lines cannot.
   std::optional<Swings> swings;
   double linear_half_period_s = 0.0;  ///< π/ω of that mode, for comparison
 };
 
-/// Simulates the scene and compares the spectral peaks of each oscillatory mode's most
-/// energetic DOF with the modal frequencies (modes above half the Nyquist frequency are left
-/// out: the step cannot resolve them).
+/// Simulates the scene and compares the spectral peaks of each excited oscillatory mode's
+/// most energetic DOF with the modal frequencies (modes above half the Nyquist frequency are
+/// left out: the step cannot resolve them).
 FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle);
+
+/// What a check without a peak means, for the reports: "not excited (modal amplitude 2.1e-13
+/// of the largest)", or, for an excited mode, that no line lies within 3 resolutions (in a
+/// nonlinear scene, where friction and kinks move the lines, pointing to the half periods).
+std::string missing_peak_remark(const FftCheck& check, bool nonlinear);
 
 }  // namespace railmodal

@@ -109,7 +109,8 @@ void checks_table(std::ostream& out, const FftCheckResult& r) {
           << fixed(c.resolution_hz, 4) << "</td><td>" << (c.within_resolution ? "ok" : "<b>outside the resolution</b>")
           << "</td>";
     } else {
-      out << "<td class=n>—</td><td></td><td></td><td>not excited (no peak near it)</td>";
+      out << "<td class=n>—</td><td></td><td></td><td>" << html_escape(missing_peak_remark(c, r.swings.has_value()))
+          << "</td>";
     }
     out << "</tr>\n";
   }

@@ -1,6 +1,7 @@
 // A scene's simulation with only its named effects, and the FFT check of its result.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "railmodal/scene_simulation.hpp"
@@ -12,6 +13,19 @@ namespace {
 bool names(const Scene& scene, const char* effect) {
   return scene.simulation &&
          std::find(scene.simulation->effects.begin(), scene.simulation->effects.end(), effect) != scene.simulation->effects.end();
+}
+
+// The DOF on which a mode shows in the response: the largest product of the mode's kinetic
+// energy share and the DOF's own motion. Usually the mode's most energetic DOF; not when
+// repeated modes cancel there (two bogies pitching alike: a basis of the pair may put
+// "antiphase" mostly on the bogie that the release leaves at rest, whose record is round-off).
+int showing_dof(const Mode& mode, const Eigen::VectorXd& dof_energy) {
+  int best = 0, most_energetic = 0;
+  for (int d = 1; d < mode.kinetic_energy_share.size(); ++d) {
+    if (mode.kinetic_energy_share(d) * dof_energy(d) > mode.kinetic_energy_share(best) * dof_energy(best)) best = d;
+    if (mode.kinetic_energy_share(d) > mode.kinetic_energy_share(most_energetic)) most_energetic = d;
+  }
+  return mode.kinetic_energy_share(best) * dof_energy(best) > 0.0 ? best : most_energetic;
 }
 
 }  // namespace
@@ -64,11 +78,25 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle) {
   const Eigen::Index n = out.history.time.size();
   options.padded_length = 4 * n;
   SpectrumAnalyzer analyzer(n, options);
-  for (const Mode& mode : out.modes.modes) {
+  // Modal coordinates η = ΦᵀM x over the record: mass-normalised, so one scale for every mode
+  // whatever its DOFs' units; a mode far below the most excited one holds only round-off.
+  Eigen::VectorXd dof_energy(system.size());  // M_dd max|x_d|²: comparable across m and rad
+  for (int d = 0; d < system.size(); ++d)
+    dof_energy(d) = system.mass(d, d) * out.history.displacement.col(d).cwiseAbs2().maxCoeff();
+  std::vector<double> modal_amplitude(out.modes.modes.size(), 0.0);
+  double most_excited = 0.0;
+  int most_excited_mode = -1;
+  for (size_t r = 0; r < out.modes.modes.size(); ++r) {
+    const Mode& mode = out.modes.modes[r];
+    if (mode.kind != ModeKind::oscillatory) continue;
+    const Eigen::VectorXd Mphi = system.mass * mode.shape;
+    modal_amplitude[r] = (out.history.displacement * Mphi).cwiseAbs().maxCoeff();
+    if (modal_amplitude[r] > most_excited) most_excited = modal_amplitude[r], most_excited_mode = static_cast<int>(r);
+  }
+  for (size_t r = 0; r < out.modes.modes.size(); ++r) {
+    const Mode& mode = out.modes.modes[r];
     if (mode.kind != ModeKind::oscillatory || mode.frequency_hz > fs / 4.0) continue;
-    int dof = 0;
-    for (int d = 1; d < mode.kinetic_energy_share.size(); ++d)
-      if (mode.kinetic_energy_share(d) > mode.kinetic_energy_share(dof)) dof = d;
+    const int dof = showing_dof(mode, dof_energy);
     const std::string label = system.dofs[dof].label;
     auto at = std::find(out.spectrum_dofs.begin(), out.spectrum_dofs.end(), label);
     if (at == out.spectrum_dofs.end()) {
@@ -83,6 +111,12 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle) {
     check.dof = label;
     check.modal_hz = mode.frequency_hz;
     check.resolution_hz = spectrum.resolution;
+    check.modal_amplitude_ratio = most_excited > 0.0 ? modal_amplitude[r] / most_excited : 0.0;
+    check.excited = check.modal_amplitude_ratio >= FftCheck::kExcitedRatio;
+    if (!check.excited) {
+      out.checks.push_back(check);
+      continue;
+    }
     const SpectralPeak* nearest = nullptr;
     const auto peaks = find_peaks(spectrum);
     for (const auto& p : peaks)
@@ -96,18 +130,24 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle) {
     }
     out.checks.push_back(check);
   }
-  if (scene_effects(scene).any()) {
-    for (const Mode& mode : out.modes.modes) {
-      if (mode.kind != ModeKind::oscillatory) continue;
-      int dof = 0;
-      for (int d = 1; d < mode.kinetic_energy_share.size(); ++d)
-        if (mode.kinetic_energy_share(d) > mode.kinetic_energy_share(dof)) dof = d;
-      out.swings = swings(out.history, dof);
-      out.linear_half_period_s = 0.5 / mode.frequency_hz;
-      break;
-    }
+  // Friction and kinks broaden the lines: the half periods of the most excited mode's DOF
+  // are the check (the lowest mode may barely move: the two-axle wagon's pitch over joints).
+  if (scene_effects(scene).any() && most_excited_mode >= 0) {
+    const Mode& mode = out.modes.modes[most_excited_mode];
+    out.swings = swings(out.history, showing_dof(mode, dof_energy));
+    out.linear_half_period_s = 0.5 / mode.frequency_hz;
   }
   return out;
+}
+
+std::string missing_peak_remark(const FftCheck& check, bool nonlinear) {
+  if (!check.excited) {
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.1e", check.modal_amplitude_ratio);
+    return std::string("not excited (modal amplitude ") + ratio + " of the largest)";
+  }
+  return nonlinear ? "no line within 3 resolutions (nonlinear: see the half periods)"
+                   : "no line within 3 resolutions";
 }
 
 }  // namespace railmodal

@@ -20,6 +20,14 @@ struct SimulateOptions {
   std::string spectra;  // simulate: also the amplitude spectra, to this file
 };
 
+// Ten significant digits, as every number of the CSV (std::to_string keeps six decimals: a
+// relative error of 2e-6 would read -0.000002).
+std::string precise(double x) {
+  std::ostringstream s;
+  s << std::setprecision(10) << x;
+  return s.str();
+}
+
 // Loads the scene and its vehicle; the command line's vehicle wins over the scene's.
 int load(const SimulateOptions& o, Scene* scene, Vehicle* vehicle) {
   *scene = load_scene(o.scene);
@@ -92,7 +100,9 @@ std::string checks_text(const FftCheckResult& r, const Scene& scene, const Vehic
                              {"peak_hz", c.peak_hz ? nlohmann::json(*c.peak_hz) : nlohmann::json(nullptr)},
                              {"rel_error", c.peak_hz ? nlohmann::json(c.rel_error) : nlohmann::json(nullptr)},
                              {"resolution_hz", c.resolution_hz},
-                             {"within_resolution", c.within_resolution}});
+                             {"within_resolution", c.within_resolution},
+                             {"excited", c.excited},
+                             {"modal_amplitude_ratio", c.modal_amplitude_ratio}});
     if (r.swings) {
       const Swings& w = *r.swings;
       nlohmann::json turns = nlohmann::json::array();
@@ -109,11 +119,13 @@ std::string checks_text(const FftCheckResult& r, const Scene& scene, const Vehic
     return out.str();
   }
   if (format == "csv") {
-    out << "mode,mode_name,dof,modal_hz,peak_hz,rel_error,resolution_hz,within_resolution\n" << std::setprecision(10);
+    out << "mode,mode_name,dof,modal_hz,peak_hz,rel_error,resolution_hz,within_resolution,excited,modal_amplitude_ratio\n"
+        << std::setprecision(10);
     for (const auto& c : r.checks)
       out << c.mode << ",\"" << c.mode_name << "\"," << c.dof << "," << c.modal_hz << ","
-          << (c.peak_hz ? std::to_string(*c.peak_hz) : "") << "," << (c.peak_hz ? std::to_string(c.rel_error) : "") << ","
-          << c.resolution_hz << "," << (c.within_resolution ? "true" : "false") << "\n";
+          << (c.peak_hz ? precise(*c.peak_hz) : "") << "," << (c.peak_hz ? precise(c.rel_error) : "") << ","
+          << c.resolution_hz << "," << (c.within_resolution ? "true" : "false") << "," << (c.excited ? "true" : "false")
+          << "," << c.modal_amplitude_ratio << "\n";
     return out.str();
   }
   out << "railmodal fft-check: " << scene.name << "\n"
@@ -130,7 +142,8 @@ std::string checks_text(const FftCheckResult& r, const Scene& scene, const Vehic
           << std::fixed << std::setprecision(4) << std::setw(13) << c.resolution_hz << "  "
           << (c.within_resolution ? "ok" : "OUTSIDE the resolution");
     else
-      out << std::setw(11) << "—" << std::setw(12) << "" << std::setw(13) << "" << "  not excited (no peak near it)";
+      out << std::setw(11) << "—" << std::setw(12) << "" << std::setw(13) << "" << "  "
+          << missing_peak_remark(c, r.swings.has_value());
     out << "\n";
   }
   if (r.swings) {
