@@ -251,13 +251,15 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
     c.x_min = st.scene.min_speed * kKmh;
     c.x_max = st.scene.max_speed * kKmh;
     // Up to the highest excitation frequency in the range (or the lowest mode, if higher):
-    // natural frequencies no source reaches would squash the ones that matter.
-    double f_top = 0.0, f_lowest = INFINITY;
+    // natural frequencies no source reaches would squash the ones that matter. But no higher
+    // than 1.3 times the highest natural frequency: a flat's sixth harmonic at 160 km/h reaches
+    // 89 Hz and would press every mode and crossing of a 1–5 Hz wagon onto the axis.
+    double f_top = 0.0, f_lowest = INFINITY, f_highest = 0.0;
     for (const auto& src : st.scene.sources)
       f_top = std::max(f_top, src->frequency_hz(st.scene.max_speed, src->harmonic_count()));
     for (const Mode& m : st.modes.modes)
-      if (m.kind == ModeKind::oscillatory) f_lowest = std::min(f_lowest, m.frequency_hz);
-    if (std::isfinite(f_lowest)) f_top = std::max(f_top, f_lowest);
+      if (m.kind == ModeKind::oscillatory) f_lowest = std::min(f_lowest, m.frequency_hz), f_highest = std::max(f_highest, m.frequency_hz);
+    if (std::isfinite(f_lowest)) f_top = std::min(std::max(f_top, f_lowest), 1.3 * f_highest);
     c.y_min = 0.0;
     c.y_max = 1.1 * std::max(f_top, 1e-3);
     for (const Mode& m : st.modes.modes)
@@ -269,6 +271,7 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
         report::ChartSeries line;
         line.label = k > 1 ? "" : source_label(st, static_cast<int>(s)) + (src.harmonic_count() == 1 ? "" : " (k = 1…" + std::to_string(src.harmonic_count()) + ")");
         line.dashed = k > 1;
+        line.colour = static_cast<int>(s);  // every harmonic in its source's colour, as the legend shows
         for (double V : {st.scene.min_speed, st.scene.max_speed}) {
           line.x.push_back(V * kKmh);
           line.y.push_back(src.frequency_hz(V, k));
@@ -279,6 +282,7 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
     report::ChartSeries hits;
     hits.label = "critical speeds";
     hits.markers_only = true;
+    hits.colour = static_cast<int>(st.scene.sources.size());  // a colour no source line has
     for (const auto& r : st.critical_speeds) {
       hits.x.push_back(r.speed * kKmh);
       hits.y.push_back(r.frequency_hz);

@@ -12,6 +12,12 @@ namespace {
 
 const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2"};
 
+const char* colour_of(const Chart& chart, size_t k) {
+  constexpr size_t n = sizeof(kColours) / sizeof(kColours[0]);
+  const int chosen = chart.series[k].colour;
+  return kColours[(chosen >= 0 ? static_cast<size_t>(chosen) : k) % n];
+}
+
 std::string number(double v) {
   std::ostringstream out;
   out << std::setprecision(4) << v;
@@ -128,7 +134,7 @@ std::string svg_chart(const Chart& chart) {
   }
   for (size_t k = 0; k < chart.series.size(); ++k) {
     const auto& series = chart.series[k];
-    const char* colour = kColours[k % (sizeof(kColours) / sizeof(kColours[0]))];
+    const char* colour = colour_of(chart, k);
     if (series.markers_only) {
       for (size_t i = 0; i < series.x.size(); ++i)
         if (std::isfinite(series.y[i]))
@@ -186,7 +192,7 @@ std::string svg_chart(const Chart& chart) {
       << 16 * named.size() + 8 << "\" fill=\"#fff\" fill-opacity=\"0.9\" stroke=\"#ccc\"/>\n";
     double ly = top + 20;
     for (size_t k : named) {
-      const char* colour = kColours[k % (sizeof(kColours) / sizeof(kColours[0]))];
+      const char* colour = colour_of(chart, k);
       if (chart.series[k].markers_only)
         s << "<circle cx=\"" << left + 24 << "\" cy=\"" << ly << "\" r=\"4\" fill=\"none\" stroke=\"" << colour
           << "\" stroke-width=\"2\"/>";

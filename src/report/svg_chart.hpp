@@ -12,6 +12,7 @@ struct ChartSeries {
   std::vector<double> x, y;  ///< NaN in y breaks the line
   bool dashed = false;
   bool markers_only = false;  ///< draw circles at the points instead of a line
+  int colour = -1;  ///< index into the palette; −1: the series' own position (a source's harmonics share one)
 };
 
 struct ReferenceLine {
