@@ -41,6 +41,21 @@ TEST(NonlinearElements, OnlyTheNamedEffectsAreBuilt) {
   EXPECT_TRUE(simulate::nonlinear_elements(sys, loads, NonlinearEffects{}).empty());
 }
 
+// Dampers are built only when the scene names "viscous_dampers": the Manchester coach's
+// (primary and secondary, vertical and lateral) give C ≠ 0 with the name and exactly C = 0
+// without it, while M and K stay bit for bit the same.
+TEST(NonlinearElements, DampersOnlyWhenNamed) {
+  const Vehicle v = load_vehicle(std::string(RAILMODAL_DATA_DIR) + "/vehicles/manchester_benchmark_coach.toml");
+  const std::string head = "[scene]\nname = \"coach\"\ndofs = \"all\"\n[simulation]\nduration = \"1 s\"\ntime_step = \"1 ms\"\n";
+  const Scene without = load_scene(write_temp("coach_plain.toml", head + "effects = []\n"));
+  const Scene with = load_scene(write_temp("coach_damped.toml", head + "effects = [\"viscous_dampers\"]\n"));
+  const LinearSystem plain = scene_system(without, v), damped = scene_system(with, v);
+  EXPECT_EQ(plain.damping.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT(damped.damping.cwiseAbs().maxCoeff(), 1e3);  // N·s/m: the coach's dampers are kN·s/m
+  EXPECT_EQ(plain.mass, damped.mass);
+  EXPECT_EQ(plain.stiffness, damped.stiffness);
+}
+
 // The Khanin spring's curve is followed only under "progressive_springs"; its friction-free
 // coil builds no friction even when "leaf_friction" is named.
 TEST(NonlinearElements, CurvesOnlyUnderProgressiveSprings) {
