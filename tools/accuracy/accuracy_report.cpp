@@ -386,7 +386,9 @@ int main(int argc, char** argv) {
                "all modes when damping is proportional; with discrete dampers (the Manchester coach) the "
                "neglected off-diagonal modal damping sets an error floor that more modes do not remove: its "
                "dampers give modal damping ratios up to 0.5 and off-diagonal terms a quarter of the diagonal, "
-               "so only the direct solve is right there. The critical-speed report uses the direct solve.\n\n";
+               "so only the direct solve is right there. The critical-speed report uses all modes where that is exact (C = 0 "
+               "or proportional damping, no damper on a massless DOF: the projected loads, src/response/speed_sweep.cpp) "
+               "and the direct solve otherwise.\n\n";
   {
     LinearSystem sys = assemble(load_vehicle(data + "/vehicles/resort_car.toml"), DofSet::all);
     sys.damping = 0.002 * sys.stiffness + 0.1 * sys.mass;  // Rayleigh damping: modes stay uncoupled
