@@ -241,51 +241,10 @@ namespace {
 // the leading wheel is, and a bounce-only model sees the wheelbase only through the phase ψ mod
 // 2π, so the axles are put L − 2a₁ = 6.19 m apart: the rear input lags by 2π·0.619 ≡ leads by ψ.
 TEST(FrictionDecay, TwoAxleExample3ConstantCoulombCheck) {
-  write_temp("example3_bounce.toml", R"([vehicle]
-name = "Example 3, bounce only"
-gravity = "981 cm/s^2"
-[[body]]
-name = "body"
-weight = "22626 kgf"
-inertia = { roll = "0 kg*m^2", pitch = "0 kg*m^2", yaw = "0 kg*m^2" }
-centre_of_gravity = ["0 m", "0 m", "0 m"]
-held = ["lateral", "roll", "pitch", "yaw"]
-[[element]]
-name = "leading axle springs"
-upper = "body"
-point = ["3.095 m", "0 m", "0 m"]
-load = "11313 kgf"
-vertical = [{ kind = "leaf", static_deflection = "57.2 mm", relative_friction = 0.075174825174825 }]
-[[element]]
-name = "trailing axle springs"
-upper = "body"
-point = ["-3.095 m", "0 m", "0 m"]
-load = "11313 kgf"
-vertical = [{ kind = "leaf", static_deflection = "57.2 mm", relative_friction = 0.075174825174825 }]
-)");
-  const double k1 = std::sqrt(981.0 / 5.72);
-  std::ostringstream scene;
-  scene << std::setprecision(17) << R"([scene]
-name = "Example 3, constant Coulomb check"
-vehicle = "example3_bounce.toml"
-dofs = "vertical"
-[simulation]
-speed = ")" << k1 * 10.0 / (2 * kPi) << R"( m/s"
-duration = "1.5 s"
-time_step = "1 ms"
-effects = ["leaf_friction"]
-friction_law = "constant"
-[[simulation.initial]]
-dof = "body.bounce"
-displacement = "-25 mm"
-[[source]]
-kind = "rail_joints"
-rail_length = "10 m"
-joints = "opposite"
-dip_depth = "5 mm"
-dip_shape = "cosine"
-)";
-  const Scene s = load_scene(write_temp("example3_scene.toml", scene.str()));
+  // The bundled scene (data/scenes/two_axle_example3_constant_friction.toml) and its vehicle:
+  // speed L·k₁/2π written to 16 digits, k₁ = √(981/5.72) 1/s.
+  const Scene s = load_scene(scenes_dir() + "two_axle_example3_constant_friction.toml");
+  ASSERT_NEAR(s.simulation->speed, std::sqrt(981.0 / 5.72) * 10.0 / (2 * kPi), 1e-12);
   const TimeHistory h = simulate_scene(s, load_vehicle(s.vehicle_file));
   const Swings sw = swings(h, 0);
   ASSERT_GE(sw.turning_values.size(), 4u);
