@@ -16,23 +16,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "model_json.hpp"
 #include "railmodal/railmodal.hpp"
 
 using namespace railmodal;
 
-namespace {
-
-nlohmann::json matrix(const Eigen::MatrixXd& A) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (int i = 0; i < A.rows(); ++i) {
-    nlohmann::json row = nlohmann::json::array();
-    for (int j = 0; j < A.cols(); ++j) row.push_back(A(i, j));
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-}  // namespace
+using benchmarks::matrix;
 
 int main(int argc, char** argv) {
   if (argc != 5 && argc != 6) {

@@ -11,29 +11,13 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "model_json.hpp"
 #include "railmodal/railmodal.hpp"
 
 using namespace railmodal;
 
-namespace {
-
-nlohmann::json matrix(const Eigen::MatrixXd& A) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (int i = 0; i < A.rows(); ++i) {
-    nlohmann::json row = nlohmann::json::array();
-    for (int j = 0; j < A.cols(); ++j) row.push_back(A(i, j));
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-nlohmann::json complex_vector(const Eigen::VectorXcd& v) {
-  nlohmann::json re = nlohmann::json::array(), im = nlohmann::json::array();
-  for (int i = 0; i < v.size(); ++i) re.push_back(v(i).real()), im.push_back(v(i).imag());
-  return {{"re", re}, {"im", im}};
-}
-
-}  // namespace
+using benchmarks::matrix;
+using benchmarks::complex_vector;
 
 int main(int argc, char** argv) {
   if (argc != 4) {
