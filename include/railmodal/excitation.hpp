@@ -121,11 +121,14 @@ struct RailJoints {
 };
 
 /// Wheelset eccentricity e: each wheelset's axle rises and falls e·sin(2πs/πD + ψᵢ)
-/// (bogie-wagons-forced digest §2.9; the book's worst case has all ψᵢ = 0).
+/// (bogie-wagons-forced digest §2.9; the book's worst case has all ψᵢ = 0). An out-of-round
+/// (polygonal) wheel with n lobes, radius R + e·sin(nθ + ψᵢ), is the same sinusoid at the
+/// wavelength πD/n: n times the frequency of the wheel's turn.
 struct WheelEccentricity {
   double wheel_diameter = 0.0;  ///< D, m
   double eccentricity = 0.0;    ///< e, m
   std::vector<double> phases;   ///< ψᵢ per wheelset from the front, rad (empty: all 0)
+  int lobes = 1;                ///< n: 1 an eccentric wheel, 2 an oval, 3 a triangular one, …
 };
 
 /// Wheel flats (or out-of-round) of depth a₁ and length l on every wheel, in phase, repeating

@@ -98,15 +98,17 @@ class EccentricitySource final : public ExcitationSource {
   explicit EccentricitySource(const WheelEccentricity& p) : p_(p) {
     require(p.wheel_diameter > 0.0, "wheel eccentricity: wheel_diameter must be positive");
     require(p.eccentricity >= 0.0, "wheel eccentricity: eccentricity must not be negative");
+    require(p.lobes >= 1, "wheel eccentricity: lobes must be at least 1");
   }
   std::string kind() const override { return "wheel_eccentricity"; }
   std::string description() const override {
     std::ostringstream out;
-    out << "wheel eccentricity e = " << mm(p_.eccentricity) << ", D = " << p_.wheel_diameter << " m"
+    out << (p_.lobes == 1 ? "wheel eccentricity e = " : "out-of-round wheels, " + std::to_string(p_.lobes) + " lobes of e = ")
+        << mm(p_.eccentricity) << ", D = " << p_.wheel_diameter << " m"
         << (p_.phases.empty() ? ", all wheelsets in phase" : ", wheelset phases given");
     return out.str();
   }
-  double wavelength() const override { return kPi * p_.wheel_diameter; }
+  double wavelength() const override { return kPi * p_.wheel_diameter / p_.lobes; }
   int harmonic_count() const override { return 1; }
 
   HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const override {

@@ -46,6 +46,7 @@ std::shared_ptr<const ExcitationSource> eccentricity(TableReader& t) {
   p.wheel_diameter = t.positive("wheel_diameter", Quantity::length);
   p.eccentricity = t.positive("eccentricity", Quantity::length);
   if (t.has("phases")) p.phases = t.quantities("phases", Quantity::angle);
+  p.lobes = t.optional_count("lobes", 1).value_or(1);
   return make_source(p);
 }
 

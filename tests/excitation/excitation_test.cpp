@@ -177,6 +177,46 @@ rotational = { roll = "5 MN*m/rad", pitch = "5 MN*m/rad", yaw = "5 MN*m/rad" }
   EXPECT_NEAR(std::abs(Q2(yaw)), 2.0 * b * m * r * w * w * reciprocating_coefficient(lambda, 2), 1e-9 * std::abs(Q2(yaw)));
 }
 
+// An out-of-round wheel with n lobes is the eccentric wheel's sinusoid at the wavelength πD/n
+// (bogie-wagons-forced digest §2.9): at speed V it loads the wagon exactly as an eccentric wheel
+// at n·V (same frequency, same amplitude, no delay between wheels that turn together), and its
+// critical speeds fall to V = πD·f/n.
+TEST(WheelEccentricity, LobesDivideTheWavelength) {
+  const Vehicle car = load_vehicle(data_file("resort_car.toml"));
+  const LinearSystem sys = assemble(car, DofSet::vertical);
+  const ModalResult modes = solve_modes(sys);
+  WheelEccentricity round;
+  round.wheel_diameter = 1.05;
+  round.eccentricity = 0.0015;
+  WheelEccentricity triangular = round;
+  triangular.lobes = 3;
+  const auto e1 = make_source(round), e3 = make_source(triangular);
+  EXPECT_DOUBLE_EQ(e3->wavelength(), kPi * 1.05 / 3);
+  EXPECT_NE(e3->description().find("3 lobes"), std::string::npos) << e3->description();
+  const HarmonicLoad slow = e3->load(sys, 10.0, 1), fast = e1->load(sys, 30.0, 1);
+  EXPECT_NEAR(slow.frequency_hz, fast.frequency_hz, 1e-12 * fast.frequency_hz);
+  const Eigen::VectorXcd q3 = generalized_load(sys, slow), q1 = generalized_load(sys, fast);
+  EXPECT_LE((q3 - q1).norm(), 1e-12 * q1.norm());
+  CriticalSpeedOptions range;
+  range.min_speed = 1.0;
+  range.max_speed = 80.0;
+  const auto c1 = find_critical_speeds(sys, modes, {e1.get()}, range);
+  const auto c3 = find_critical_speeds(sys, modes, {e3.get()}, range);
+  ASSERT_FALSE(c3.empty());
+  for (const CriticalSpeed& c : c3) {
+    EXPECT_NEAR(c.speed, kPi * 1.05 * c.frequency_hz / 3, 1e-9 * c.speed) << c.mode_name;
+    // Each is the eccentric wheel's critical speed of the same mode divided by 3, where that
+    // one is in range.
+    for (const CriticalSpeed& d : c1) {
+      if (d.mode == c.mode) {
+        EXPECT_NEAR(c.speed, d.speed / 3, 1e-9 * c.speed) << c.mode_name;
+      }
+    }
+  }
+  triangular.lobes = 0;
+  EXPECT_THROW(make_source(triangular), std::invalid_argument);
+}
+
 TEST(Sources, RejectNonPhysicalParameters) {
   RailJoints j;
   EXPECT_THROW(make_source(j), std::invalid_argument);  // no rail length
