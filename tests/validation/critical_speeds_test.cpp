@@ -57,34 +57,7 @@ TEST(CriticalSpeeds, TwoAxleWagonFrictionStopsTheResonanceExample3) {
 // the rail length (|cos| = 1), resonance needs 2a > 8φf/π = 2.546·φf; for φf = 5 mm that is
 // 12.7 mm (the book's 15 mm carries a static term that does not belong in the criterion).
 TEST(CriticalSpeeds, ResonanceThresholdExample2) {
-  const std::string vehicle = write_temp("example2.toml", R"toml(
-[vehicle]
-name = "two-axle wagon, wheelbase = rail length"
-template = "two-axle"
-gravity = "981 cm/s^2"
-[body]
-weight = "22626 kgf"
-cg_height = "100 cm"
-radius_of_gyration = { roll = "110 cm", pitch = "260 cm", yaw = "260 cm" }
-[suspension]
-wheelbase = "10 m"
-spring_spacing = "211.4 cm"
-spring = [{ kind = "leaf", static_deflection = "50 mm", relative_friction = 0.1 }]
-)toml");
-  const std::string scene = write_temp("example2_scene.toml", R"toml(
-[scene]
-vehicle = "example2.toml"
-dofs = "vertical"
-[speed]
-min = "10 km/h"
-max = "200 km/h"
-[[source]]
-kind = "rail_joints"
-rail_length = "10 m"
-dip_depth = "5 mm"
-)toml");
-  (void)vehicle;
-  const auto s = study_critical_speeds(load_scene(scene), load_vehicle(load_scene(scene).vehicle_file));
+  const auto s = study("two_axle_example2_threshold.toml");  // and data/vehicles/two_axle_wagon_example2.toml
   const CriticalSpeed& r = row(s, 0, 1, "body bounce");
   // φf = 0.1 · 50 mm = 5 mm. Threshold 2a = 5 mm × scale; 8·5/π = 12.732 mm.
   EXPECT_NEAR(r.friction_threshold_scale * 5.0, 8.0 * 5.0 / kPi, 1e-9 * 12.7);
@@ -140,18 +113,20 @@ TEST(CriticalSpeeds, SquareJointsDoNotExciteLateralModes) {
 // (1:40) for s = 1.58 m, r = 0.525 m; a rigid bogie of base 2.5 m, 33.87 m (book 33.3).
 // Through the hunting source; tolerance 0.5 % of the digest's 4 figures → ±0.01 m.
 TEST(CriticalSpeeds, HuntingWavelengthsH1H2) {
-  Hunting h;
-  h.rolling_circle_spacing = 1.58;
-  h.rolling_radius = 0.525;
-  h.amplitude = 0.005;
-  h.conicity = 1.0 / 20.0;
-  EXPECT_NEAR(make_source(h)->wavelength(), 18.10, 0.01);
-  h.conicity = 1.0 / 40.0;
-  EXPECT_NEAR(make_source(h)->wavelength(), 25.59, 0.01);
-  h.conicity = 1.0 / 20.0;
-  h.model = Hunting::Model::rigid_bogie;
-  h.bogie_wheelbase = 2.5;
-  EXPECT_NEAR(make_source(h)->wavelength(), 33.87, 0.01);
+  const auto s = study("hunting_wavelengths.toml");
+  ASSERT_EQ(s.scene.sources.size(), 3u);
+  EXPECT_NEAR(s.scene.sources[0]->wavelength(), 18.10, 0.01);
+  EXPECT_NEAR(s.scene.sources[1]->wavelength(), 25.59, 0.01);
+  EXPECT_NEAR(s.scene.sources[2]->wavelength(), 33.87, 0.01);
+  // Meineke's speed (267) for Table 18's first row, given with the first source (H3: 71.8 km/h).
+  const std::string text = s.scene.sources[0]->description();
+  const size_t at = text.find("(267): ");
+  ASSERT_NE(at, std::string::npos) << text;
+  EXPECT_NEAR(std::stod(text.substr(at + 7)), 71.8, 0.05) << text;  // the digest's 3 figures
+  // Every critical speed is its source's wavelength times the mode's frequency (k = 1).
+  ASSERT_FALSE(s.critical_speeds.empty());
+  for (const auto& r : s.critical_speeds)
+    EXPECT_NEAR(r.speed, s.scene.sources[r.source]->wavelength() * r.frequency_hz, 1e-12 * r.speed);
 }
 
 // Hunting critical speed is V = λ·f for every lateral mode the hunting wave loads.
