@@ -3,15 +3,19 @@
 // Every source's load is Q(ω) = s(ω)(Q_K + iωQ_C) with speed-independent parts (see
 // SeparableLoad). Where modal superposition is exact — C = 0 or proportional, and no damper
 // on a massless DOF — the parts are projected on the modes once, and each speed costs a few
-// complex operations per mode and output. Otherwise each speed is one direct solve, still
+// complex operations per mode and output. With discrete dampers (non-proportional C) the
+// complex modes of the first-order form do the same, where they are well conditioned and agree
+// with the direct solve at sample speeds. Otherwise each speed is one direct solve, still
 // without rebuilding the load.
 #include <Eigen/Dense>
 #include <cmath>
 #include <algorithm>
 #include <complex>
+#include <functional>
 #include <stdexcept>
 
 #include "railmodal/response.hpp"
+#include "response/state_space_modes.hpp"
 
 namespace railmodal {
 
@@ -84,6 +88,32 @@ double phase_deg(std::complex<double> x, std::complex<double> input, ResponseQua
   return phase;
 }
 
+// Whether an expansion of the response (`at_speed(k, dof, ω, s)`) matches the direct solve at
+// nine speeds spread over the sweep, every harmonic and output: to 1e-8 of the response's
+// largest entry. The expansion is exact in exact arithmetic; its round-off grows with the
+// conditioning of the eigenvectors, and this is where a bad case shows before it is used.
+template <typename AtSpeed>
+bool agrees_with_direct(const LinearSystem& system, const ModalResult& modes, const ExcitationSource& source,
+                        const std::vector<SeparableLoad>& parts, const std::vector<OutputRequest>& outputs,
+                        const std::vector<double>& speeds, const AtSpeed& at_speed) {
+  if (speeds.empty()) return true;
+  for (int sample = 0; sample <= 8; ++sample) {
+    const double speed = speeds[(speeds.size() - 1) * sample / 8];
+    for (int k = 1; k <= source.harmonic_count(); ++k) {
+      const SeparableLoad& p = parts[k - 1];
+      const double omega = kTwoPi * source.frequency_hz(speed, k);
+      const double scale = source.load_scale(omega, p.reference_omega);
+      const HarmonicResponse direct = harmonic_response(
+          system, modes, scale * (p.stiffness_part + std::complex<double>(0.0, omega) * p.damping_part), omega / kTwoPi);
+      if (direct.unbounded) return false;
+      const double size = direct.displacement.cwiseAbs().maxCoeff();
+      for (const OutputRequest& o : outputs)
+        if (!(std::abs(at_speed(k, o.dof, omega, scale) - direct.displacement(o.dof)) <= 1e-8 * size)) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
@@ -122,13 +152,16 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     }
   };
 
-  if (basis.exact && !equivalent_friction) {
-    // Speeds as arrays (vectorised by Eigen), one pass per harmonic, output DOF and mode:
-    // x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/(λ_j − ω² + iωc_j) + s(ω)·static_o(ω).
+  // Speeds as arrays (vectorised by Eigen), one pass per harmonic and output DOF: `respond`
+  // adds the complex response of one DOF to a harmonic's load at every speed (re, im) and
+  // flags the speeds where it is unbounded; the sums over harmonics and the phases are common.
+  using Flags = Eigen::Array<bool, Eigen::Dynamic, 1>;
+  using Respond = std::function<void(int k, int dof, const Eigen::ArrayXd& w, const Eigen::ArrayXd& w2,
+                                     const Eigen::ArrayXd& scale, Eigen::ArrayXd& re, Eigen::ArrayXd& im, Flags& resonant)>;
+  auto vectorised = [&](const Respond& respond) {
     const int count = static_cast<int>(speeds.size());
     const Eigen::ArrayXd V = Eigen::Map<const Eigen::ArrayXd>(speeds.data(), count);
     if (!(V > 0.0).all() || !V.isFinite().all()) throw std::invalid_argument("amplitude curve: speeds must be positive");
-    const int m = static_cast<int>(basis.modes.size());
     // Each output DOF once (displacement and acceleration of one DOF share the response).
     std::vector<int> dofs;
     for (const OutputRequest& o : outputs)
@@ -137,61 +170,21 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     std::vector<Eigen::ArrayXd> first_re(outputs.size(), Eigen::ArrayXd::Zero(count));
     std::vector<Eigen::ArrayXd> first_im = first_re;
     Eigen::ArrayXd first_scale = Eigen::ArrayXd::Ones(count);
-    std::vector<Eigen::Array<bool, Eigen::Dynamic, 1>> unbounded(
-        outputs.size(), Eigen::Array<bool, Eigen::Dynamic, 1>::Constant(count, false));
+    std::vector<Flags> unbounded(outputs.size(), Flags::Constant(count, false));
     // Work arrays, allocated once: fresh 80 kB arrays per mode cost more in page faults
     // than the arithmetic.
     Eigen::ArrayXd w(count), w2(count), scale(count), re(count), im(count), magnitude(count);
-    Eigen::Array<bool, Eigen::Dynamic, 1> resonant(count);
+    Flags resonant(count);
     for (int k = 1; k <= source.harmonic_count(); ++k) {
       const SeparableLoad& p = parts[k - 1];
       w = V * (kTwoPi * k / source.wavelength());
       w2 = w.square();
       for (int v = 0; v < count; ++v) scale(v) = source.load_scale(w(v), p.reference_omega);
-      const double q_norm_k = p.stiffness_part.norm(), q_norm_c = p.damping_part.norm();
       for (int dof : dofs) {
         re.setZero();
         im.setZero();
         resonant.setConstant(false);
-        for (int j = 0; j < m; ++j) {
-          const Mode& mode = *basis.modes[j];
-          const double at = mode.shape(dof);
-          if (at == 0.0) continue;
-          const std::complex<double> a = mode.shape.cast<std::complex<double>>().dot(p.stiffness_part) * at;
-          const std::complex<double> b = mode.shape.cast<std::complex<double>>().dot(p.damping_part) * at;
-          const double c = basis.damping[j], lambda = mode.eigenvalue;
-          const bool moves = std::abs(at) > 1e-9 * mode.shape.cwiseAbs().maxCoeff();
-          const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
-          const double tolerance = undamped ? kAtResonance * lambda : -1.0;
-          const double drive_floor = 1e-12 * std::abs(at) * mode.shape.norm();
-          // One tight loop per mode: the compiler keeps it in registers.
-          for (int v = 0; v < count; ++v) {
-            const double gap = lambda - w2(v);
-            if (std::abs(gap) <= tolerance) {
-              // An undamped mode at its own frequency adds nothing finite: unbounded where
-              // it moves this DOF and the load drives it (as the direct solve decides).
-              if (moves && std::abs(a + std::complex<double>(0.0, w(v)) * b) > drive_floor * (q_norm_k + w(v) * q_norm_c))
-                resonant(v) = true;
-              continue;
-            }
-            const double nr = a.real() - w(v) * b.imag(), ni = a.imag() + w(v) * b.real();
-            const double di = w(v) * c;
-            const double f = scale(v) / (gap * gap + di * di);
-            re(v) += (nr * gap + ni * di) * f;
-            im(v) += (ni * gap - nr * di) * f;
-          }
-        }
-        // Massless DOFs also follow their own loads: K_mm⁻¹ Q_m(ω).
-        for (size_t i = 0; i < basis.massless.size(); ++i) {
-          if (basis.massless[i] != dof) continue;
-          std::complex<double> sk = 0.0, sc = 0.0;
-          for (size_t c = 0; c < basis.massless.size(); ++c) {
-            sk += basis.massless_flexibility(i, c) * p.stiffness_part(basis.massless[c]);
-            sc += basis.massless_flexibility(i, c) * p.damping_part(basis.massless[c]);
-          }
-          re += scale * (sk.real() - w * sc.imag());
-          im += scale * (sk.imag() + w * sc.real());
-        }
+        respond(k, dof, w, w2, scale, re, im, resonant);
         magnitude = (re.square() + im.square()).sqrt();
         for (size_t o = 0; o < outputs.size(); ++o) {
           if (outputs[o].dof != dof) continue;
@@ -223,6 +216,95 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
       }
     }
     return curves;
+  };
+
+  if (basis.exact && !equivalent_friction) {
+    // x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/(λ_j − ω² + iωc_j) + s(ω)·static_o(ω).
+    const int m = static_cast<int>(basis.modes.size());
+    return vectorised([&](int k, int dof, const Eigen::ArrayXd& w, const Eigen::ArrayXd& w2, const Eigen::ArrayXd& scale,
+                          Eigen::ArrayXd& re, Eigen::ArrayXd& im, Flags& resonant) {
+      const SeparableLoad& p = parts[k - 1];
+      const int count = static_cast<int>(w.size());
+      const double q_norm_k = p.stiffness_part.norm(), q_norm_c = p.damping_part.norm();
+      for (int j = 0; j < m; ++j) {
+        const Mode& mode = *basis.modes[j];
+        const double at = mode.shape(dof);
+        if (at == 0.0) continue;
+        const std::complex<double> a = mode.shape.cast<std::complex<double>>().dot(p.stiffness_part) * at;
+        const std::complex<double> b = mode.shape.cast<std::complex<double>>().dot(p.damping_part) * at;
+        const double c = basis.damping[j], lambda = mode.eigenvalue;
+        const bool moves = std::abs(at) > 1e-9 * mode.shape.cwiseAbs().maxCoeff();
+        const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
+        const double tolerance = undamped ? kAtResonance * lambda : -1.0;
+        const double drive_floor = 1e-12 * std::abs(at) * mode.shape.norm();
+        // One tight loop per mode: the compiler keeps it in registers.
+        for (int v = 0; v < count; ++v) {
+          const double gap = lambda - w2(v);
+          if (std::abs(gap) <= tolerance) {
+            // An undamped mode at its own frequency adds nothing finite: unbounded where
+            // it moves this DOF and the load drives it (as the direct solve decides).
+            if (moves && std::abs(a + std::complex<double>(0.0, w(v)) * b) > drive_floor * (q_norm_k + w(v) * q_norm_c))
+              resonant(v) = true;
+            continue;
+          }
+          const double nr = a.real() - w(v) * b.imag(), ni = a.imag() + w(v) * b.real();
+          const double di = w(v) * c;
+          const double f = scale(v) / (gap * gap + di * di);
+          re(v) += (nr * gap + ni * di) * f;
+          im(v) += (ni * gap - nr * di) * f;
+        }
+      }
+      // Massless DOFs also follow their own loads: K_mm⁻¹ Q_m(ω).
+      for (size_t i = 0; i < basis.massless.size(); ++i) {
+        if (basis.massless[i] != dof) continue;
+        std::complex<double> sk = 0.0, sc = 0.0;
+        for (size_t c = 0; c < basis.massless.size(); ++c) {
+          sk += basis.massless_flexibility(i, c) * p.stiffness_part(basis.massless[c]);
+          sc += basis.massless_flexibility(i, c) * p.damping_part(basis.massless[c]);
+        }
+        re += scale * (sk.real() - w * sc.imag());
+        im += scale * (sk.imag() + w * sc.real());
+      }
+    });
+  }
+
+  // Discrete dampers (damping not proportional): the complex modes of the first-order form,
+  // where they are trustworthy and agree with the direct solve at sample speeds; otherwise
+  // (and for friction as equivalent viscous damping) one direct solve per speed below.
+  if (!equivalent_friction) {
+    if (const auto complex_modes = response::state_space_modes(system)) {
+      const response::StateSpaceModes& cm = *complex_modes;
+      std::vector<Eigen::VectorXcd> on_roots_k, on_roots_c;  // participations of Q_K and Q_C per harmonic
+      for (const SeparableLoad& p : parts) {
+        on_roots_k.push_back(cm.projection * p.stiffness_part);
+        on_roots_c.push_back(cm.projection * p.damping_part);
+      }
+      auto at_speed = [&](int k, int dof, double omega, double scale) {
+        std::complex<double> x = 0.0;
+        const std::complex<double> iw(0.0, omega);
+        for (Eigen::Index r = 0; r < cm.roots.size(); ++r)
+          x += cm.shapes(dof, r) * (on_roots_k[k - 1](r) + iw * on_roots_c[k - 1](r)) / (iw - cm.roots(r));
+        return scale * x;
+      };
+      if (agrees_with_direct(system, modes, source, parts, outputs, speeds, at_speed))
+        return vectorised([&](int k, int dof, const Eigen::ArrayXd& w, const Eigen::ArrayXd&, const Eigen::ArrayXd& scale,
+                              Eigen::ArrayXd& re, Eigen::ArrayXd& im, Flags&) {
+          const int count = static_cast<int>(w.size());
+          for (Eigen::Index r = 0; r < cm.roots.size(); ++r) {
+            const std::complex<double> a = cm.shapes(dof, r) * on_roots_k[k - 1](r);
+            const std::complex<double> b = cm.shapes(dof, r) * on_roots_c[k - 1](r);
+            const double dr = -cm.roots(r).real(), lambda_im = cm.roots(r).imag();
+            for (int v = 0; v < count; ++v) {
+              // (a + iωb)/(iω − λ_r): every root strictly damped, so dr > 0 and no division by 0.
+              const double nr = a.real() - w(v) * b.imag(), ni = a.imag() + w(v) * b.real();
+              const double di = w(v) - lambda_im;
+              const double f = scale(v) / (dr * dr + di * di);
+              re(v) += (nr * dr + ni * di) * f;
+              im(v) += (ni * dr - nr * di) * f;
+            }
+          }
+        });
+    }
   }
 
   // The direct path: non-proportional damping, or friction as equivalent viscous damping.

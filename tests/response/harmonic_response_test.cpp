@@ -1,6 +1,8 @@
 // Harmonic response: closed forms, direct against modal superposition, undamped resonance.
 #include <cmath>
 
+#include "railmodal/matrix_market.hpp"
+#include "response/state_space_modes.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
@@ -238,6 +240,71 @@ TEST(AmplitudeCurves, FastSweepEqualsDirectSolves) {
         EXPECT_NEAR(curves[d].amplitudes[v], direct[d], 1e-10 * scale) << source->kind() << " " << sys.dofs[d].label;
     }
   }
+}
+
+// Discrete dampers (non-proportional C): the sweep takes the complex modes of the first-order
+// form. The Manchester coach (15 DOFs, dampers everywhere), all DOFs as outputs, against a
+// direct solve at every speed and harmonic: 1e-10 of the largest, as the proportional path.
+// A DOF that a source does not move stays exactly 0 (the lateral hunting wave on the bounce:
+// the direct solve's structural zero, not the eigenvectors' round-off).
+TEST(AmplitudeCurves, DiscreteDampersSweepEqualsDirectSolves) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("manchester_benchmark_coach.toml")), DofSet::all);
+  const ModalResult modes = solve_modes(sys);
+  ASSERT_TRUE(response::state_space_modes(sys));  // the path under test is taken
+  RailJoints j;
+  j.rail_length = 12.5;
+  j.dip_depth = 0.005;
+  j.staggered = true;
+  j.dip_length = 1.0;
+  j.harmonics = 4;
+  Hunting h;
+  h.conicity = 0.05;
+  h.rolling_circle_spacing = 1.5;
+  h.rolling_radius = 0.46;
+  h.amplitude = 0.005;
+  std::vector<OutputRequest> outputs;
+  for (int d = 0; d < sys.size(); ++d) outputs.push_back({d, ResponseQuantity::displacement});
+  std::vector<double> speeds;
+  for (double v = 2.0; v <= 60.0; v += 0.7) speeds.push_back(v);
+  for (const auto& source : {make_source(j), make_source(h)}) {
+    const auto curves = amplitude_curves(sys, modes, *source, 0, outputs, speeds);
+    for (size_t v = 0; v < speeds.size(); ++v) {
+      std::vector<double> direct(sys.size(), 0.0);
+      for (int k = 1; k <= source->harmonic_count(); ++k) {
+        const HarmonicLoad load = source->load(sys, speeds[v], k);
+        const auto r = harmonic_response(sys, modes, generalized_load(sys, load), load.frequency_hz);
+        for (int d = 0; d < sys.size(); ++d) direct[d] += response_amplitude(r, d, ResponseQuantity::displacement);
+      }
+      const double scale = *std::max_element(direct.begin(), direct.end());
+      for (int d = 0; d < sys.size(); ++d) {
+        EXPECT_FALSE(curves[d].unbounded[v]);
+        if (direct[d] == 0.0) {
+          EXPECT_EQ(curves[d].amplitudes[v], 0.0) << source->kind() << " " << sys.dofs[d].label;
+        } else {
+          EXPECT_NEAR(curves[d].amplitudes[v], direct[d], 1e-10 * scale) << source->kind() << " " << sys.dofs[d].label;
+        }
+      }
+    }
+  }
+}
+
+// The complex modes are refused where they cannot be trusted, and the sweep then solves each
+// speed directly: an undamped mode (its resonance is unbounded), critical damping (a defective
+// double root: no basis of eigenvectors), a massless DOF (no M⁻¹).
+TEST(AmplitudeCurves, ComplexModesRefusedWhereUntrustworthy) {
+  auto one_dof = [](double m, double k, double c) {
+    MatrixModel model;
+    model.labels = {"x"};
+    model.mass = Eigen::MatrixXd::Constant(1, 1, m).sparseView();
+    model.stiffness = Eigen::MatrixXd::Constant(1, 1, k).sparseView();
+    model.damping = Eigen::MatrixXd::Constant(1, 1, c).sparseView();
+    return to_linear_system(model);
+  };
+  EXPECT_TRUE(response::state_space_modes(one_dof(1.0, 1.0, 0.2)));     // ζ = 0.1
+  EXPECT_FALSE(response::state_space_modes(one_dof(1.0, 1.0, 0.0)));    // undamped
+  EXPECT_FALSE(response::state_space_modes(one_dof(1.0, 1.0, 2.0)));    // ζ = 1: defective
+  EXPECT_FALSE(response::state_space_modes(one_dof(0.0, 1.0, 1.0)));    // massless
+  EXPECT_FALSE(response::state_space_modes(one_dof(1.0, 0.0, 1.0)));    // rigid body: λ = 0
 }
 
 // Exactly at an undamped natural frequency the response is reported unbounded, never inf/NaN.
