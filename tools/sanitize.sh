@@ -34,5 +34,16 @@ for f in data/matrices/*.mtx tests/cli/bad/*.mtx tests/corpus/bad_inputs/*.mtx; 
   [ -e "$f" ] || continue
   { printf '\x02'; cat "$f"; } > "$corpus/seed$((i++))"
 done
+# The fuzzer writes each input to /dev/shm/railmodal_fuzz_<pid>/ (fuzz_inputs.cpp): remove those
+# directories whose process has ended (this run's, and any an interrupted run left), on any exit.
+# Crash, leak and timeout reproducers go to build-fuzz/, not the working directory.
+clean_fuzz_scratch() {
+  local d
+  for d in /dev/shm/railmodal_fuzz_*; do
+    [ -d "$d" ] || continue
+    kill -0 "${d##*_}" 2>/dev/null || rm -rf "$d" 2>/dev/null || true
+  done
+}
+trap clean_fuzz_scratch EXIT
 build-fuzz/tools/fuzz/fuzz_inputs -max_total_time="${FUZZ_SECONDS:-60}" -rss_limit_mb=4096 -print_final_stats=1 \
-  "$corpus" 2>&1 | tail -15
+  -artifact_prefix=build-fuzz/ "$corpus" 2>&1 | tail -15
