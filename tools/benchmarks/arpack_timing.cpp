@@ -1,6 +1,7 @@
 // The C++ half of compare_arpack.py: reads M and K (Matrix Market), times
 // railmodal::solve_modes with ARPACK for the N lowest modes, prints JSON
-// {"dofs", "read_s", "solve_s", "shift", "frequencies_hz", "max_residual"} to stdout.
+// {"dofs", "read_s", "solve_s", "shift", "operator_applications", "max_residual",
+// "eigenvalues"} to stdout.
 // Options: --tolerance T --ncv K (ARPACK's tol and subspace size), --shift S.
 #include <chrono>
 #include <iostream>
