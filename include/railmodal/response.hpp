@@ -69,6 +69,10 @@ bool has_leaf_friction(const LinearSystem& system);
 /// Only when a user asks for it: Coulomb friction is not viscous, and the answer depends on
 /// the amplitude chosen.
 LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega, double stretch_amplitude);
+/// The same with a stretch amplitude per element (m, indexed like vehicle.elements); an
+/// element with 0 (or beyond the vector) keeps its friction out of the linear model.
+LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega,
+                                              const std::vector<double>& stretch_per_element);
 
 /// One resonance of one source harmonic with one mode, inside the speed range.
 struct CriticalSpeed {
@@ -142,6 +146,27 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
                                              const std::vector<double>& speeds,
                                              double friction_reference_amplitude = 0.0);
 
+/// Dynamic deflection of one suspension element against speed for one source: the amplitude
+/// of its vertical stretch, upper end relative to lower end (relative to the track under it
+/// for a track element), summed over the source's harmonics as in AmplitudeCurve. This is
+/// the deflection the book limits (springs digest §5); a stage in series takes the share
+/// k_element/k_stage of it.
+struct DeflectionCurve {
+  int source = 0;
+  int element = 0;                 ///< index into vehicle.elements
+  std::vector<double> speeds;      ///< m/s
+  std::vector<double> amplitudes;  ///< m; 0 where unbounded
+  std::vector<bool> unbounded;     ///< an undamped resonance that stretches the element
+};
+/// One curve per element, from one direct solve per speed and harmonic. Leaf friction of
+/// element k acts as the equivalent viscous damper for a stretch amplitude of
+/// `friction_reference_stretch[k]` (m; see with_equivalent_friction_damping); 0, or no entry,
+/// leaves that element's friction out of the linear model.
+std::vector<DeflectionCurve> element_deflection_curves(const LinearSystem& system, const ModalResult& modes,
+                                                       const ExcitationSource& source, int source_index,
+                                                       const std::vector<int>& elements,
+                                                       const std::vector<double>& speeds,
+                                                       const std::vector<double>& friction_reference_stretch = {});
 /// The largest amplitude of one output between `low` and `high` (a bracket holding one
 /// damped resonance peak), by golden-section search until the bracket is narrower than
 /// `relative_tolerance` × speed. Each evaluation is one direct solve per source harmonic.

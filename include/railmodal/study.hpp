@@ -54,11 +54,35 @@ struct Ranking {
   bool weighted = false;
 };
 
+/// Which book's permissible dynamic deflections a study checks (springs digest §5). The
+/// limit applies to the largest dynamic deflection over the scene's sources and speeds.
+///   Korotkevich: axle-box springs (elements standing on the track) 40 mm in passenger cars
+///   and 25 mm in bogie-less freight cars; elliptic springs of passenger cars 30 mm.
+///   Lehner: elliptic springs 0.2 f_st, coil springs 30 mm, freight leaf springs 0.4 f_st
+///   (f_st the stage's static deflection).
+/// A stage in series takes its share k_element/k_stage of the element's deflection. An
+/// undamped resonance that leaf friction does not stop exceeds every limit it stretches;
+/// otherwise leaf friction is linearised at the limit itself (docs/studies.md, "Permissible
+/// dynamic deflections"): for one mode, as in the book's (169a), that is exactly whether the
+/// friction-limited amplitude stays within the limit.
+struct DeflectionRule {
+  enum class Book { none, korotkevich, lehner };
+  enum class Service { passenger, freight };
+  Book book = Book::none;
+  Service service = Service::passenger;
+  /// By element name: a limit on the element's whole deflection, m, in place of the book's.
+  std::vector<std::pair<std::string, double>> element_limits;
+  bool active() const { return book != Book::none || !element_limits.empty(); }
+};
+const char* to_string(DeflectionRule::Book book);
+const char* to_string(DeflectionRule::Service service);
+
 struct Study {
   std::string name;
   std::string source;  ///< the study file
   std::vector<StudyVariant> variants;  ///< base (unless base = false), variants, sweep points
   Ranking ranking;
+  DeflectionRule deflection_rule;  ///< [permissible_dynamic_deflection]; none: not checked
 };
 
 /// Reads a study file and every variant it defines: overrides are applied to the vehicle's
@@ -93,6 +117,18 @@ struct VariantResult {
     double speed = 0.0;      ///< m/s where it is
     bool unbounded = false;  ///< an undamped resonance in the range: no finite peak
   };
+  /// One permissible-deflection check: an element, or one stage of it, against its limit.
+  struct DeflectionCheck {
+    std::string element;
+    std::string stage;          ///< spring kind of the stage checked; "" for the whole element
+    std::string basis;          ///< where the limit comes from ("Lehner: coil springs 30 mm")
+    double permissible = 0.0;   ///< m
+    double deflection = 0.0;    ///< m, the largest over sources and speeds (0 when unbounded)
+    double speed = 0.0;         ///< m/s where it is
+    int source = 0;
+    bool unbounded = false;     ///< an undamped resonance stretches it without limit
+    bool kept() const { return !unbounded && deflection <= permissible; }
+  };
   int index = 0;  ///< position in Study::variants
   std::string name;
   std::vector<StudyParameter> parameters;
@@ -104,14 +140,17 @@ struct VariantResult {
   std::optional<double> metacentric_height;  ///< of the body named "body", m (eq. (235b))
   std::vector<CriticalSpeedSummary> critical_speeds;  ///< ascending speed
   std::vector<PeakSummary> peaks;
+  bool deflections_checked = false;  ///< the study names a deflection rule
+  std::vector<DeflectionCheck> deflections;  ///< every element or stage the rule limits
 
   bool ok() const { return failure.empty(); }
 };
 
-/// Evaluates one variant: modes, static deflections, metacentric height, critical speeds
-/// and peak responses in its scene. Never throws for a bad design: an unstable or singular
-/// vehicle is a result with its `failure`.
-VariantResult evaluate_variant(const StudyVariant& variant, int index);
+/// Evaluates one variant: modes, static deflections, metacentric height, critical speeds,
+/// peak responses in its scene and, when `rule` is active, the permissible dynamic
+/// deflections. Never throws for a bad design: an unstable or singular vehicle is a result
+/// with its `failure`.
+VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule = {});
 
 struct EvaluationOptions {
   int threads = 0;      ///< 0: std::thread::hardware_concurrency()
@@ -127,6 +166,9 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
 /// (no mode of that name). "lowest_critical_speed" and "critical_speed:<mode>" are +∞ without
 /// a critical speed in range.
 std::optional<double> metric_value(const VariantResult& result, const std::string& metric);
+/// "dynamic_deflection_ratio" is the largest dynamic deflection over its permissible value
+/// (≤ 1: the design keeps the book's limits; +∞ for an unbounded resonance) and
+/// "dynamic_deflection:<element>" that element's largest deflection, m.
 /// Whether `metric` names a metric (after aliases: "critical_speed" is
 /// "lowest_critical_speed", "bounce_period" is "period:body bounce", "bounce_critical_speed"
 /// is "critical_speed:body bounce").
@@ -146,6 +188,7 @@ struct Comparison {
   std::string study;
   std::string source;
   Ranking ranking;
+  DeflectionRule deflection_rule;  ///< the study's; active: results hold deflection checks
   std::vector<RankedVariant> variants;  ///< in rank order
 };
 

@@ -231,15 +231,43 @@ std::vector<Override> read_overrides(TableReader& t, const std::string& key, boo
   return out;
 }
 
-void read_ranking(TableReader& t, Ranking* ranking) {
+// [permissible_dynamic_deflection]: the book whose limits apply, the service, and limits of
+// named elements.
+DeflectionRule read_deflection_rule(TableReader& t, int* elements_line, int* elements_column) {
+  DeflectionRule rule;
+  if (const auto book = t.optional_string("rule")) {
+    if (*book == "korotkevich") rule.book = DeflectionRule::Book::korotkevich;
+    else if (*book == "lehner") rule.book = DeflectionRule::Book::lehner;
+    else t.fail("rule", "must be \"korotkevich\" or \"lehner\" (springs digest §5)");
+  }
+  if (const auto service = t.optional_string("service")) {
+    if (*service == "passenger") rule.service = DeflectionRule::Service::passenger;
+    else if (*service == "freight") rule.service = DeflectionRule::Service::freight;
+    else t.fail("service", "must be \"passenger\" or \"freight\"");
+  }
+  if (t.has("elements")) {
+    TableReader e = t.table("elements");
+    for (const std::string& name : e.keys()) rule.element_limits.push_back({name, e.positive(name, Quantity::length)});
+    *elements_line = line_of(t.raw("elements")), *elements_column = column_of(t.raw("elements"));
+    e.finish();
+  }
+  if (!rule.active()) t.fail("rule", "name a rule (\"korotkevich\" or \"lehner\") or give element limits");
+  t.finish();
+  return rule;
+}
+
+void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
   const std::string method = t.optional_string("method").value_or("lexicographic");
   if (method != "lexicographic" && method != "weighted") t.fail("method", "must be \"lexicographic\" or \"weighted\"");
   ranking->weighted = method == "weighted";
-  auto check_metric = [](TableReader& r, const std::string& key, const std::string& metric) {
+  auto check_metric = [deflections_checked](TableReader& r, const std::string& key, const std::string& metric) {
     if (!is_metric(metric))
       r.fail(key, "unknown metric '" + metric +
                       "' (lowest_critical_speed, critical_speed:<mode name>, bounce_critical_speed, period:<mode name>, bounce_period, static_deflection[:<body>], "
-                      "metacentric_height, peak:<dof>:<displacement|velocity|acceleration>)");
+                      "metacentric_height, peak:<dof>:<displacement|velocity|acceleration>, dynamic_deflection_ratio, "
+                      "dynamic_deflection:<element>)");
+    if (!deflections_checked && canonical_metric(metric).rfind("dynamic_deflection", 0) == 0)
+      r.fail(key, "metric '" + metric + "' needs a [permissible_dynamic_deflection] table naming the rule");
   };
   // Shorthand constraints: min_<metric> = limit, max_<metric> = limit.
   for (const std::string& key : t.keys()) {
@@ -352,9 +380,14 @@ Study load_study(const std::string& path) {
     int number = 0;
     for (auto& t : root.tables("sweep")) read_sweep(t, ++number, &specs, vehicle_file);
   }
+  int elements_line = 0, elements_column = 0;
+  if (root.has("permissible_dynamic_deflection")) {
+    TableReader t = root.table("permissible_dynamic_deflection");
+    study.deflection_rule = read_deflection_rule(t, &elements_line, &elements_column);
+  }
   if (root.has("ranking")) {
     TableReader t = root.table("ranking");
-    read_ranking(t, &study.ranking);
+    read_ranking(t, &study.ranking, study.deflection_rule.active());
   }
   root.finish();
   if (specs.empty()) throw InputError(path, 0, 0, "no variants: base = false and no [[variant]] or [[sweep]]");
@@ -385,6 +418,14 @@ Study load_study(const std::string& path) {
     }
     variant.scene = on_scene.empty() ? base_scene
                                      : read_with_overrides<Scene>(scene_document, scene_file, on_scene, spec, path, read_scene);
+    for (const auto& [element, limit] : study.deflection_rule.element_limits) {
+      bool found = false;
+      for (const Element& e : variant.vehicle.elements) found = found || (e.name == element && !e.vertical_stages.empty());
+      if (!found)
+        throw InputError(path, elements_line, elements_column,
+                         "key 'permissible_dynamic_deflection.elements': variant '" + spec.name + "': no element '" +
+                             element + "' with vertical springs in vehicle '" + variant.vehicle.name + "'");
+    }
     study.variants.push_back(std::move(variant));
   }
   return study;

@@ -41,7 +41,7 @@ struct Writer {
 
 std::string metric_text(const std::string& metric, const std::optional<double>& x) {
   if (!x) return "–";
-  if (std::isinf(*x)) return *x > 0 ? (metric.rfind("peak:", 0) == 0 ? "unbounded" : "none in range") : "−∞";
+  if (std::isinf(*x)) return *x > 0 ? (study::infinite_is_unbounded(metric) ? "unbounded" : "none in range") : "−∞";
   const study::DisplayUnit u = study::display_unit(metric);
   const std::string unit = u.unit;
   return significant(*x * u.per_si, 4) + (unit.empty() ? "" : " " + unit);
@@ -137,6 +137,26 @@ std::vector<std::string> verdict(const Comparison& c, const Writer& w) {
     if (k.max) bound += std::string(k.min ? " and" : "") + " ≤ " + metric_text(k.metric, *k.max);
     out.push_back(w.text("Constraint " + k.metric + bound + ": " + std::to_string(violating) + " of " +
                          std::to_string(c.variants.size() - failed) + " evaluated variants violate it."));
+  }
+  if (c.deflection_rule.active() && feasible > 0 && c.variants.front().result.ok()) {
+    // Whether the winner keeps the book's permissible dynamic deflections, and how closely.
+    const VariantResult& r = c.variants.front().result;
+    const VariantResult::DeflectionCheck* worst = nullptr;
+    for (const auto& d : r.deflections)
+      if (!worst || d.unbounded > worst->unbounded ||
+          (d.unbounded == worst->unbounded && d.deflection / d.permissible > worst->deflection / worst->permissible))
+        worst = &d;
+    if (!worst)
+      out.push_back(w.text("No spring of the winner falls under the permissible-deflection rule."));
+    else if (worst->unbounded)
+      out.push_back(w.text("The winner exceeds the permissible dynamic deflection: a resonance that friction does not "
+                           "stop stretches " + worst->element + " without limit at " +
+                           fixed(worst->speed * kKmh, 1) + " km/h."));
+    else
+      out.push_back(w.text(std::string(worst->kept() ? "The winner keeps" : "The winner exceeds") +
+                           " the permissible dynamic deflections: at worst " + fixed(worst->deflection * 1000.0, 1) +
+                           " mm of " + fixed(worst->permissible * 1000.0, 1) + " mm (" + worst->element + ", " +
+                           worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h."));
   }
   if (failed > 0) {
     for (const RankedVariant& v : c.variants)
@@ -486,6 +506,57 @@ void write_curve_charts(std::ostream& out, const std::vector<CurveSet>& sets, co
   }
 }
 
+// ---- permissible dynamic deflections ------------------------------------------------------------
+
+std::string rule_text(const DeflectionRule& rule) {
+  std::string s;
+  if (rule.book == DeflectionRule::Book::korotkevich)
+    s = std::string("Korotkevich's limits for ") + to_string(rule.service) + " cars (springs digest §5)";
+  else if (rule.book == DeflectionRule::Book::lehner)
+    s = std::string("Lehner's limits for ") + to_string(rule.service) + " cars (springs digest §5)";
+  if (!rule.element_limits.empty()) s += std::string(s.empty() ? "L" : ", with l") + "imits the study sets on named elements";
+  return s + ". Each check is the largest dynamic deflection over every source and speed of the scene. A "
+             "resonance that leaf friction does not stop is unbounded; otherwise friction is linearised at the "
+             "limit itself (docs/studies.md, \"Permissible dynamic deflections\").";
+}
+
+// The checks of the base and the best variants: one row per limit (basis), for the element
+// that comes closest to it (or exceeds it most), with how many elements share that limit.
+Table deflection_table(const Comparison& c) {
+  Table t;
+  t.headers = {"variant", "limit", "permissible", "worst element", "largest dynamic deflection", "at", "kept"};
+  t.numeric = {false, false, true, false, true, true, false};
+  std::vector<const RankedVariant*> shown;
+  if (const RankedVariant* base = find_base(c)) shown.push_back(base);
+  for (const RankedVariant* v : best_variants(c)) shown.push_back(v);
+  auto ratio = [](const VariantResult::DeflectionCheck& d) { return d.unbounded ? INFINITY : d.deflection / d.permissible; };
+  for (const RankedVariant* v : shown) {
+    const VariantResult& r = v->result;
+    if (!r.ok()) continue;
+    if (r.deflections.empty()) t.rows.push_back({r.name, "no spring the rule limits", "–", "–", "–", "–", "–"});
+    std::vector<std::string> bases;
+    for (const auto& d : r.deflections)
+      if (std::find(bases.begin(), bases.end(), d.basis) == bases.end()) bases.push_back(d.basis);
+    for (const std::string& basis : bases) {
+      const VariantResult::DeflectionCheck* worst = nullptr;
+      int count = 0;
+      for (const auto& d : r.deflections)
+        if (d.basis == basis) {
+          ++count;
+          if (!worst || ratio(d) > ratio(*worst)) worst = &d;
+        }
+      const std::string stage = worst->stage.empty() ? "" : " (" + worst->stage + " stage)";
+      t.rows.push_back({r.name, basis, fixed(worst->permissible * 1000.0, 1) + " mm",
+                        worst->element + stage + (count > 1 ? ", worst of " + std::to_string(count) : ""),
+                        worst->unbounded ? "unbounded: a resonance friction does not stop"
+                                         : fixed(worst->deflection * 1000.0, 2) + " mm",
+                        fixed(worst->speed * kKmh, 1) + " km/h, source " + std::to_string(worst->source + 1),
+                        worst->kept() ? "yes" : "no"});
+    }
+  }
+  return t;
+}
+
 // ---- the documents ------------------------------------------------------------------------------
 
 std::string ranking_text(const Comparison& c) {
@@ -534,6 +605,10 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c) 
            "for the base and the best " << kReportBest << " variants; the curves are in the HTML report.\n\n";
     report::write_markdown_table(out, peak_table(sets, curve_keys(sets)));
   }
+  if (c.deflection_rule.active()) {
+    out << "## Permissible dynamic deflections\n\n" << rule_text(c.deflection_rule) << "\n\n";
+    report::write_markdown_table(out, deflection_table(c));
+  }
   for (const std::string& n : notes) out << n << "\n\n";
 }
 
@@ -566,6 +641,11 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c) {
            "resonances (unbounded).</p>\n";
     write_curve_charts(out, sets, keys);
     report::write_html_table(out, peak_table(sets, keys));
+  }
+  if (c.deflection_rule.active()) {
+    out << "<h2>Permissible dynamic deflections</h2>\n<p class=note>" << html_escape(rule_text(c.deflection_rule))
+        << "</p>\n";
+    report::write_html_table(out, deflection_table(c));
   }
   for (const std::string& n : notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
   out << "<p class=note>Written by railmodal compare.</p>\n</body></html>\n";

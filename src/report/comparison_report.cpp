@@ -62,6 +62,14 @@ json result_json(const VariantResult& r) {
   for (const auto& p : r.peaks)
     j["peaks"].push_back({{"source", p.source}, {"output", p.output}, {"quantity", p.quantity}, {"amplitude", p.amplitude},
                           {"speed_m_s", p.speed}, {"unbounded", p.unbounded}});
+  if (r.deflections_checked) {
+    j["dynamic_deflections"] = json::array();
+    for (const auto& c : r.deflections)
+      j["dynamic_deflections"].push_back({{"element", c.element}, {"stage", c.stage}, {"basis", c.basis},
+                                          {"permissible_m", c.permissible}, {"deflection_m", c.deflection},
+                                          {"speed_m_s", c.speed}, {"source", c.source}, {"unbounded", c.unbounded},
+                                          {"kept", c.kept()}});
+  }
   return j;
 }
 
@@ -84,6 +92,21 @@ VariantResult result_from_json(const json& j) {
   for (const auto& p : j.at("peaks"))
     r.peaks.push_back({p.at("source").get<int>(), p.at("output").get<std::string>(), p.at("quantity").get<std::string>(),
                        p.at("amplitude").get<double>(), p.at("speed_m_s").get<double>(), p.at("unbounded").get<bool>()});
+  if (j.contains("dynamic_deflections")) {
+    r.deflections_checked = true;
+    for (const auto& c : j.at("dynamic_deflections")) {
+      VariantResult::DeflectionCheck d;
+      d.element = c.at("element").get<std::string>();
+      d.stage = c.at("stage").get<std::string>();
+      d.basis = c.at("basis").get<std::string>();
+      d.permissible = c.at("permissible_m").get<double>();
+      d.deflection = c.at("deflection_m").get<double>();
+      d.speed = c.at("speed_m_s").get<double>();
+      d.source = c.at("source").get<int>();
+      d.unbounded = c.at("unbounded").get<bool>();
+      r.deflections.push_back(d);
+    }
+  }
   return r;
 }
 
@@ -103,6 +126,9 @@ void write_json(std::ostream& out, const Comparison& c) {
   json j;
   j["study"] = c.study;
   j["ranking"] = ranking_json(c.ranking);
+  if (c.deflection_rule.active())
+    j["permissible_dynamic_deflection"] = {{"rule", to_string(c.deflection_rule.book)},
+                                           {"service", to_string(c.deflection_rule.service)}};
   j["variants"] = json::array();
   for (const RankedVariant& v : c.variants) {
     json row = result_json(v.result);
@@ -114,6 +140,11 @@ void write_json(std::ostream& out, const Comparison& c) {
     for (const auto& x : v.criteria) row["criteria"].push_back(optional_number(x));
     row["periods_s"] = periods(v.result);
     row["critical_speeds_kmh"] = critical_speeds_kmh(v.result);
+    if (v.result.deflections_checked) {
+      const auto ratio = metric_value(v.result, "dynamic_deflection_ratio");
+      row["dynamic_deflection_ratio"] = ratio && std::isinf(*ratio) ? json("unbounded") : optional_number(ratio);
+      row["keeps_permissible_deflections"] = ratio ? json(*ratio <= 1.0) : json(nullptr);
+    }
     j["variants"].push_back(row);
   }
   out << j.dump(2) << "\n";
@@ -137,7 +168,8 @@ std::string exact(double x) {
 std::string status(const RankedVariant& v) { return !v.result.ok() ? "failed" : v.feasible ? "yes" : "no"; }
 
 std::string criterion_heading(const RankingCriterion& c) {
-  return std::string(c.maximise ? "max " : "min ") + c.metric + " [" + study::display_unit(c.metric).unit + "]";
+  const std::string unit = study::display_unit(c.metric).unit;
+  return std::string(c.maximise ? "max " : "min ") + c.metric + (unit.empty() ? "" : " [" + unit + "]");
 }
 
 std::optional<double> body_deflection(const VariantResult& r) { return metric_value(r, "static_deflection"); }
@@ -149,11 +181,14 @@ std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& 
   std::vector<std::string> head{"rank", "variant", "feasible"};
   if (for_csv) head.push_back("objective");
   for (const auto& k : c.ranking.objective) head.push_back(criterion_heading(k));
-  for (const char* h : {"lowest critical speed [km/h]", "static deflection [mm]", "periods [s]"}) head.push_back(h);
+  const bool deflections = c.deflection_rule.active();
+  for (const char* h : {"lowest critical speed [km/h]", "static deflection [mm]"}) head.push_back(h);
+  if (deflections) head.push_back(for_csv ? "dynamic_deflection_ratio" : "dyn. deflection / permissible");
+  head.push_back("periods [s]");
   if (for_csv) {
     head.back() = "periods_s";
-    head[head.size() - 3] = "lowest_critical_speed_kmh";
-    head[head.size() - 2] = "static_deflection_mm";
+    head[2 + (for_csv ? 1 : 0) + c.ranking.objective.size() + 1] = "lowest_critical_speed_kmh";
+    head[2 + (for_csv ? 1 : 0) + c.ranking.objective.size() + 2] = "static_deflection_mm";
     for (const char* h : {"critical_speeds_kmh", "failure", "violations"}) head.push_back(h);
   }
   rows.push_back(head);
@@ -164,7 +199,7 @@ std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& 
     for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
       const auto& x = v.criteria.size() > k ? v.criteria[k] : std::nullopt;
       const double scale = study::display_unit(c.ranking.objective[k].metric).per_si;
-      const bool peak = c.ranking.objective[k].metric.rfind("peak:", 0) == 0;
+      const bool peak = study::infinite_is_unbounded(c.ranking.objective[k].metric);
       if (!x) row.push_back(for_csv ? "" : "-");
       else if (for_csv) row.push_back(exact(*x * scale));
       else if (std::isinf(*x) && *x > 0) row.push_back(peak ? "unbounded" : "none");  // no critical speed in range
@@ -174,6 +209,12 @@ std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& 
     row.push_back(!lowest ? (for_csv ? "" : "-") : for_csv ? exact(*lowest * kKmh) : number(*lowest * kKmh, "%.1f"));
     const auto deflection = body_deflection(r);
     row.push_back(!deflection ? (for_csv ? "" : "-") : for_csv ? exact(*deflection * 1000.0) : number(*deflection * 1000.0, "%.1f"));
+    if (deflections) {
+      const auto ratio = r.ok() ? metric_value(r, "dynamic_deflection_ratio") : std::nullopt;
+      if (!ratio) row.push_back(for_csv ? "" : "-");
+      else if (std::isinf(*ratio)) row.push_back("unbounded");
+      else row.push_back(for_csv ? exact(*ratio) : number(*ratio, "%.3g") + (*ratio <= 1.0 ? " kept" : " exceeded"));
+    }
     std::string list;
     for (double p : periods(r)) list += (list.empty() ? "" : " ") + (for_csv ? exact(p) : number(p, "%.3f"));
     row.push_back(list);
@@ -218,10 +259,9 @@ void write_table(std::ostream& out, const Comparison& c) {
   }
   out << "\n";
   for (const auto& k : c.ranking.constraints) {
-    const study::DisplayUnit u = study::display_unit(k.metric);
     out << "constraint: " << k.metric;
-    if (k.min) out << " >= " << number(*k.min * u.per_si, "%.6g") << " " << u.unit;
-    if (k.max) out << (k.min ? " and" : "") << " <= " << number(*k.max * u.per_si, "%.6g") << " " << u.unit;
+    if (k.min) out << " >= " << study::shown(k.metric, *k.min);
+    if (k.max) out << (k.min ? " and" : "") << " <= " << study::shown(k.metric, *k.max);
     out << "\n";
   }
   out << "\n";

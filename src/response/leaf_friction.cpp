@@ -59,11 +59,20 @@ bool has_leaf_friction(const LinearSystem& system) {
 LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega, double stretch_amplitude) {
   if (!(omega > 0.0) || !(stretch_amplitude > 0.0))
     throw std::invalid_argument("equivalent friction damping needs a positive frequency and amplitude");
+  return with_equivalent_friction_damping(system, omega,
+                                          std::vector<double>(system.vehicle.elements.size(), stretch_amplitude));
+}
+
+LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega,
+                                              const std::vector<double>& stretch_per_element) {
+  if (!(omega > 0.0)) throw std::invalid_argument("equivalent friction damping needs a positive frequency");
   LinearSystem out = system;
   for_each_friction_stage(system, [&](size_t k, const Element& e, double friction, double share) {
+    const double stretch = k < stretch_per_element.size() ? stretch_per_element[k] : 0.0;
+    if (!(stretch > 0.0)) return;
     // With the element stretching X the stage stretches share·X and friction dissipates
     // 4R·share·X per cycle; a damper across the element dissipates πcωX²: c = 4R·share/(πωX).
-    const double c = 4.0 * friction * share / (kPi * omega * stretch_amplitude);
+    const double c = 4.0 * friction * share / (kPi * omega * stretch);
     const Eigen::RowVectorXd row = vertical_stretch_row(system, e);
     out.damping += c * row.transpose() * row;
     for (auto& input : out.track_inputs)

@@ -7,6 +7,7 @@
 #include "railmodal/errors.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/study.hpp"
+#include "study/permissible_deflection.hpp"
 
 namespace railmodal {
 namespace {
@@ -66,6 +67,79 @@ void summarise_response(const CriticalSpeedStudy& study, VariantResult* r) {
   }
 }
 
+// The largest dynamic deflection of every element or stage the rule limits, over every source
+// and the study's speed grid (which holds every critical speed), by the rule of
+// docs/studies.md, "Permissible dynamic deflections":
+//  1. an undamped resonance in range that leaf friction does not stop (the criterion of the
+//     critical speeds, the book's (169a) as Den Hartog's) grows without limit: every element
+//     its mode stretches is unbounded;
+//  2. otherwise leaf friction is linearised at the element stretch where the element reaches
+//     its (first) limit, X_lim, and the response there is compared with the limit. For one
+//     mode driven through its own coordinate the response A(X) of friction linearised at X
+//     has A(X)/X falling in X, so A(X_lim) ≤ X_lim exactly when the friction-limited
+//     amplitude X* ≤ X_lim, and the value reported lies between X* and X_lim. That holds as
+//     the book's (169a) holds, with the track's own motion under the spring left out; with
+//     it the stretch at resonance is |X_lim/s ± |u_r − u_f|/2| (tests/response/
+//     element_deflection_test.cpp), which the check takes as it comes.
+// Friction of an element without a limit is linearised at the scene's [friction] amplitude,
+// if any, else left out (less damping: the safe side).
+void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& study, VariantResult* r) {
+  r->deflections_checked = true;
+  const LinearSystem& system = study.system;
+  const std::vector<study::PermissibleDeflection> limits = study::permissible_deflections(rule, system);
+  if (limits.empty()) return;
+  std::vector<int> elements;
+  std::vector<double> reference(system.vehicle.elements.size(), study.scene.friction_reference_amplitude);
+  std::vector<bool> limited(reference.size(), false);
+  for (const auto& l : limits) {
+    if (std::find(elements.begin(), elements.end(), l.element) == elements.end()) elements.push_back(l.element);
+    const double stretch = l.permissible / l.share;
+    reference[l.element] = limited[l.element] ? std::min(reference[l.element], stretch) : stretch;
+    limited[l.element] = true;
+  }
+  for (const auto& l : limits) {
+    VariantResult::DeflectionCheck c;
+    const Element& e = system.vehicle.elements[l.element];
+    c.element = e.name;
+    c.stage = l.stage < 0 ? "" : e.vertical_stages[l.stage].kind;
+    c.basis = l.basis;
+    c.permissible = l.permissible;
+    r->deflections.push_back(c);
+  }
+  // Rule 1: resonances friction does not stop.
+  for (const CriticalSpeed& cs : study.critical_speeds) {
+    if (!cs.unbounded || cs.friction_stops) continue;
+    const Eigen::VectorXd& shape = study.modes.modes[cs.mode - 1].shape;
+    for (size_t i = 0; i < limits.size(); ++i) {
+      const Eigen::RowVectorXd row = system.element_vertical_map.row(limits[i].element);
+      VariantResult::DeflectionCheck& c = r->deflections[i];
+      if (!c.unbounded && std::abs(row.dot(shape)) > 1e-9 * shape.cwiseAbs().maxCoeff() * row.cwiseAbs().sum())
+        c.unbounded = true, c.speed = cs.speed, c.source = cs.source;
+    }
+  }
+  const std::vector<double> speeds = study.curves.empty() ? std::vector<double>{} : study.curves.front().speeds;
+  for (size_t s = 0; s < study.scene.sources.size() && !speeds.empty(); ++s) {
+    const std::vector<DeflectionCurve> curves = element_deflection_curves(
+        system, study.modes, *study.scene.sources[s], static_cast<int>(s), elements, speeds, reference);
+    for (size_t i = 0; i < limits.size(); ++i) {
+      const auto& l = limits[i];
+      VariantResult::DeflectionCheck& c = r->deflections[i];
+      const DeflectionCurve& curve = *std::find_if(curves.begin(), curves.end(),
+                                                   [&](const DeflectionCurve& d) { return d.element == l.element; });
+      for (size_t v = 0; v < speeds.size(); ++v) {
+        if (curve.unbounded[v]) {
+          if (!c.unbounded) c.speed = speeds[v], c.source = static_cast<int>(s);
+          c.unbounded = true;
+        } else if (!c.unbounded && l.share * curve.amplitudes[v] > c.deflection) {
+          c.deflection = l.share * curve.amplitudes[v], c.speed = speeds[v], c.source = static_cast<int>(s);
+        }
+      }
+    }
+  }
+  for (auto& c : r->deflections)
+    if (c.unbounded) c.deflection = 0.0;
+}
+
 // The failure of a vehicle with no steady response: its modes (when they can be computed), and
 // the unstable one named.
 void describe_failure(const StudyVariant& variant, const std::string& why, VariantResult* r) {
@@ -86,7 +160,7 @@ void describe_failure(const StudyVariant& variant, const std::string& why, Varia
 
 }  // namespace
 
-VariantResult evaluate_variant(const StudyVariant& variant, int index) {
+VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule) {
   VariantResult r;
   r.index = index;
   r.name = variant.name;
@@ -104,6 +178,7 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index) {
     static_deflections(variant.vehicle, study.system, &r);
     metacentric_height(variant.vehicle, &r);
     summarise_response(study, &r);
+    if (rule.active()) check_deflections(rule, study, &r);
   } catch (const NumericalError& e) {
     if (r.failure.empty()) r.failure = std::string("numerical failure: ") + e.what();
   } catch (const InputError& e) {

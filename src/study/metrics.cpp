@@ -2,6 +2,8 @@
 #include "study/metrics.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "railmodal/study.hpp"
@@ -42,6 +44,7 @@ bool is_metric(const std::string& name) {
   const std::string metric = canonical_metric(name);
   std::string dof, quantity;
   return metric == "lowest_critical_speed" || metric == "static_deflection" || metric == "metacentric_height" ||
+         metric == "dynamic_deflection_ratio" || (starts_with(metric, "dynamic_deflection:") && metric.size() > 19) ||
          (starts_with(metric, "period:") && metric.size() > 7) ||
          (starts_with(metric, "critical_speed:") && metric.size() > 15) ||
          (starts_with(metric, "static_deflection:") && metric.size() > 18) || split_peak(metric, &dof, &quantity);
@@ -70,6 +73,24 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
     return std::nullopt;
   }
   if (metric == "metacentric_height") return r.metacentric_height;
+  if (metric == "dynamic_deflection_ratio") {
+    // The worst check; +∞ for an unbounded resonance. No value when nothing was checked.
+    std::optional<double> worst;
+    for (const auto& c : r.deflections) {
+      const double ratio = c.unbounded ? std::numeric_limits<double>::infinity() : c.deflection / c.permissible;
+      worst = std::max(worst.value_or(ratio), ratio);
+    }
+    return worst;
+  }
+  if (starts_with(metric, "dynamic_deflection:")) {
+    std::optional<double> largest;
+    for (const auto& c : r.deflections)
+      if (c.element == metric.substr(19)) {
+        const double d = c.unbounded ? std::numeric_limits<double>::infinity() : c.deflection;
+        largest = std::max(largest.value_or(d), d);
+      }
+    return largest;
+  }
   std::string dof, quantity;
   if (split_peak(metric, &dof, &quantity)) {
     std::optional<double> largest;
@@ -89,6 +110,7 @@ input::Quantity metric_quantity(const std::string& name) {
   const std::string metric = canonical_metric(name);
   if (metric == "lowest_critical_speed" || starts_with(metric, "critical_speed:")) return input::Quantity::speed;
   if (starts_with(metric, "period:")) return input::Quantity::time;
+  if (metric == "dynamic_deflection_ratio") return input::Quantity::dimensionless;
   std::string dof, quantity;
   if (split_peak(metric, &dof, &quantity)) {
     const bool rotation = is_rotation(dof);
@@ -107,8 +129,24 @@ DisplayUnit display_unit(const std::string& metric) {
     case input::Quantity::acceleration: return {"m/s^2", 1.0};
     case input::Quantity::angle: return {"rad", 1.0};
     case input::Quantity::angular_speed: return {"rad/s", 1.0};
+    case input::Quantity::dimensionless:
+      if (canonical_metric(metric) == "dynamic_deflection_ratio") return {"", 1.0};
+      return {"rad/s^2", 1.0};
     default: return {"rad/s^2", 1.0};
   }
+}
+
+bool infinite_is_unbounded(const std::string& metric) {
+  const std::string m = canonical_metric(metric);
+  return starts_with(m, "peak:") || starts_with(m, "dynamic_deflection");
+}
+
+std::string shown(const std::string& metric, double si) {
+  if (std::isinf(si) && si > 0) return infinite_is_unbounded(metric) ? "unbounded" : "none";
+  const DisplayUnit u = display_unit(metric);
+  char text[64];
+  std::snprintf(text, sizeof text, "%.6g", si * u.per_si);
+  return std::string(text) + (*u.unit ? std::string(" ") + u.unit : std::string());
 }
 
 }  // namespace study

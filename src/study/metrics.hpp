@@ -18,4 +18,11 @@ struct DisplayUnit {
 };
 DisplayUnit display_unit(const std::string& metric);
 
+/// Whether +∞ of this metric is an unbounded response (peaks, dynamic deflections) rather
+/// than "none in range" (critical speeds).
+bool infinite_is_unbounded(const std::string& metric);
+
+/// A value with its display unit, "80 mm", "0.47", or "unbounded" / "none" for +∞.
+std::string shown(const std::string& metric, double si);
+
 }  // namespace railmodal::study

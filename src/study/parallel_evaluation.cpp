@@ -25,7 +25,7 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
   auto work = [&] {
     for (size_t k = next++; k < indices.size(); k = next++) {
       try {
-        results[k] = evaluate_variant(study.variants[indices[k]], indices[k]);
+        results[k] = evaluate_variant(study.variants[indices[k]], indices[k], study.deflection_rule);
       } catch (const std::exception& e) {  // evaluate_variant keeps design failures; this is a bug
         results[k].index = indices[k];
         results[k].name = study.variants[indices[k]].name;

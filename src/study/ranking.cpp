@@ -11,12 +11,7 @@
 namespace railmodal {
 namespace {
 
-std::string shown(const std::string& metric, double si) {
-  const study::DisplayUnit u = study::display_unit(metric);
-  char text[64];
-  std::snprintf(text, sizeof text, "%.6g %s", si * u.per_si, u.unit);
-  return text;
-}
+using study::shown;
 
 constexpr double kWorst = std::numeric_limits<double>::infinity();
 
@@ -42,6 +37,7 @@ Comparison rank_variants(const Study& study, std::vector<VariantResult> results)
   out.study = study.name;
   out.source = study.source;
   out.ranking = ranking;
+  out.deflection_rule = study.deflection_rule;
   std::vector<std::vector<double>> keys;  // group, criteria (or weighted sum), index
   for (VariantResult& r : results) {
     RankedVariant v;

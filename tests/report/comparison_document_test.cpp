@@ -160,7 +160,12 @@ TEST(ComparisonReport, HtmlIsOnePageWithItsPlotsInline) {
     ASSERT_TRUE(v.feasible);
     EXPECT_EQ(count(html, ">" + std::to_string(v.rank) + ". " + v.result.name + "</text>"), curves) << v.result.name;
   }
-  EXPECT_EQ(count(html, "<li>"), 1u + 1u + 1u);  // winner, against the base, the one constraint
+  // Winner, against the base, the one constraint, the winner's permissible deflections.
+  EXPECT_EQ(count(html, "<li>"), 1u + 1u + 1u + 1u);
+  EXPECT_NE(html.find("<li>The winner keeps the permissible dynamic deflections"), std::string::npos);
+  // The deflection table: the base and the best variants, one row each for the leaf springs' limit.
+  EXPECT_NE(html.find("<h2>Permissible dynamic deflections</h2>"), std::string::npos);
+  EXPECT_EQ(count(html, "worst of 4"), 1u + static_cast<size_t>(kReportBest));
 }
 
 TEST(ComparisonReport, NoFeasibleVariantIsSaidPlainly) {

@@ -133,5 +133,46 @@ TEST(Studies, TwoAxleBounceFollowsTheBookWithRailLengthAndDeflection) {
             kmh(named_result(results, "grid: f = 40 mm, L = 10 m"), "body bounce"));
 }
 
+// Example 3's wagon as the joints wear (data/studies/two_axle_joint_dip_deflection.toml):
+// Lehner's 0.4 f_st for freight leaf springs is 22.88 mm (f = 57.2 mm, springs digest §5).
+// Friction φf = 0.075 × 57.2 = 4.29 mm stops a mode's resonance while 2a < 8φf/(π|c|), c the
+// wheelbase filter, |cos(π·2a1/L)| for bounce and |sin(π·2a1/L)| for pitch (two-axle digest,
+// Example 2's consistent criterion; "resonance would need 2a > ≈ 30 mm" for bounce). The
+// check follows: kept below both thresholds, unbounded past the pitch one (11.7 mm).
+TEST(Studies, TwoAxleJointWearKeepsThePermissibleDeflectionUntilFrictionNoLongerStopsResonance) {
+  const Study s = load_study(studies("two_axle_joint_dip_deflection.toml"));
+  ASSERT_EQ(s.deflection_rule.book, DeflectionRule::Book::lehner);
+  const auto results = evaluate(s);
+  const double phi_f = 0.075 * 0.0572, filter = kPi * 3.81 / 10.0;
+  const double bounce_threshold = 8.0 * phi_f / (kPi * std::abs(std::cos(filter)));
+  const double pitch_threshold = 8.0 * phi_f / (kPi * std::abs(std::sin(filter)));
+  EXPECT_NEAR(bounce_threshold, 0.0299, 5e-5);  // the digest's ≈ 30 mm
+  for (const VariantResult& r : results) {
+    ASSERT_TRUE(r.ok()) << r.name;
+    const double dip = r.parameters.empty() ? 0.005 : std::atof(r.parameters.front().second.c_str()) / 1000.0;
+    ASSERT_EQ(r.deflections.size(), 4u);
+    for (const auto& d : r.deflections) EXPECT_NEAR(d.permissible, 0.4 * 0.0572, 1e-12);
+    for (const auto& c : r.critical_speeds) {
+      const double threshold = c.mode_name == "body bounce" ? bounce_threshold : pitch_threshold;
+      // Only dips at least 0.2 % from a threshold are compared (30 mm is 0.3 % above bounce's).
+      if (std::abs(dip - threshold) > 2e-3 * threshold) {
+        EXPECT_EQ(c.friction_stops, dip < threshold) << r.name << ", " << c.mode_name;
+      }
+    }
+    const bool stopped = dip < pitch_threshold;
+    for (const auto& d : r.deflections) EXPECT_EQ(d.unbounded, !stopped) << r.name;
+    const double ratio = *metric_value(r, "dynamic_deflection_ratio");
+    if (stopped) {
+      EXPECT_LT(ratio, 1.0) << r.name;
+    } else {
+      EXPECT_TRUE(std::isinf(ratio)) << r.name;
+    }
+  }
+  // Below the thresholds the friction dampers are fixed by the limit, so the model is linear
+  // in the dip: twice the dip, twice the deflection (to rounding).
+  EXPECT_NEAR(*metric_value(named_result(results, "worn joints: 2a = 10 mm"), "dynamic_deflection_ratio"),
+              2.0 * *metric_value(named_result(results, "base"), "dynamic_deflection_ratio"), 1e-12);
+}
+
 }  // namespace
 }  // namespace railmodal::test

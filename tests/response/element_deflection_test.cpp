@@ -1,0 +1,113 @@
+// Dynamic deflection of suspension elements (element_deflection_curves): the stretch a spring
+// sees, body motion at its point minus the track under it, and leaf friction linearised at
+// a chosen stretch (docs/studies.md, "Permissible dynamic deflections").
+#include <cmath>
+#include <complex>
+
+#include "railmodal/railmodal.hpp"
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+std::unique_ptr<ExcitationSource> joints(double dip_depth) {
+  RailJoints j;
+  j.rail_length = 10.0;
+  j.dip_depth = dip_depth;
+  return make_source(j);
+}
+
+struct BounceOnly {
+  LinearSystem system;
+  ModalResult modes;
+  BounceOnly() {
+    // Example 3's wagon reduced to its bounce (two-axle digest §2.6): one DOF on two leaf springs.
+    system = assemble(load_vehicle(data_file("two_axle_example3_bounce_only.toml")), DofSet::vertical);
+    modes = solve_modes(system);
+  }
+};
+
+// Below resonance and without damping the body follows x = Σ kᵢuᵢ/(Σ kᵢ − mω²) (the book's
+// off-resonance form (172)), and the leading spring stretches x − u_leading: written out
+// here from the wheel inputs the source gives, against the general path. Both are a handful
+// of floating-point operations on the same inputs: 1e-12.
+TEST(ElementDeflection, OneDofWagonStretchIsBodyMinusTrack) {
+  const BounceOnly w;
+  const auto source = joints(0.005);
+  ASSERT_EQ(w.system.size(), 1);
+  for (double speed : {8.0, 12.0, 30.0}) {
+    const HarmonicLoad load = source->load(w.system, speed, 1);
+    const double omega = 2.0 * kPi * load.frequency_hz;
+    std::complex<double> u[2] = {0.0, 0.0}, force = 0.0;
+    double k_sum = 0.0;
+    for (int e = 0; e < 2; ++e) {
+      const double k = series_stiffness(w.system.vehicle.elements[e].vertical_stages);
+      k_sum += k;
+      for (const WheelInput& in : load.wheels)
+        if (w.system.track_inputs[in.track_input].element == e)
+          u[e] += in.amplitude(2) * std::exp(std::complex<double>(0.0, -omega * in.delay_s));
+      force += k * u[e];
+    }
+    const std::complex<double> x = force / (k_sum - omega * omega * w.system.mass(0, 0));
+    const auto curves = element_deflection_curves(w.system, w.modes, *source, 0, {0, 1}, {speed});
+    ASSERT_EQ(curves.size(), 2u);
+    for (int e = 0; e < 2; ++e) {
+      EXPECT_FALSE(curves[e].unbounded[0]);
+      EXPECT_NEAR(curves[e].amplitudes[0], std::abs(x - u[e]), 1e-12 * std::abs(x - u[e])) << speed << " " << e;
+    }
+  }
+}
+
+TEST(ElementDeflection, UndampedResonanceIsUnboundedNotInfinite) {
+  const BounceOnly w;
+  const auto source = joints(0.005);
+  CriticalSpeedOptions options;
+  options.min_speed = 5.0;
+  options.max_speed = 60.0;
+  const auto critical = find_critical_speeds(w.system, w.modes, {source.get()}, options);
+  ASSERT_FALSE(critical.empty());
+  // Friction left out (no reference stretch): the bounce resonance has no steady state.
+  const auto curves = element_deflection_curves(w.system, w.modes, *source, 0, {0}, {critical.front().speed});
+  EXPECT_TRUE(curves[0].unbounded[0]);
+  EXPECT_EQ(curves[0].amplitudes[0], 0.0);
+}
+
+// Friction linearised at the stretch X, at the bounce resonance (ω² = K/m) of the one-DOF
+// wagon: with c = 4R/(πωX) across each of the two springs, (iω·2c)x = Σ(k + iωc)uᵢ, so the
+// leading spring stretches y = x − u_f = Σkuᵢ/(2iωc) + (u_r − u_f)/2. With u_r = u_f e^{−iψ}
+// both terms have the phase −i e^{−iψ/2}, so |y| = |X/s ± |u_r − u_f|/2|, where
+// s = 4W/(πF₀) is the friction threshold scale of the critical-speed criterion (W = 2R,
+// F₀ = |Σkuᵢ|): the linearised response and the book's (169a) criterion are one energy
+// balance, apart from the track's own motion under the spring. A handful of operations on
+// the same inputs: 1e-9.
+TEST(ElementDeflection, FrictionLinearisedAtXIsTheResonanceCriterionPlusTheTrackMotion) {
+  const BounceOnly w;
+  for (double dip : {0.005, 0.020, 0.040}) {
+    const auto source = joints(dip);
+    CriticalSpeedOptions options;
+    options.min_speed = 5.0;
+    options.max_speed = 60.0;
+    const auto critical = find_critical_speeds(w.system, w.modes, {source.get()}, options);
+    ASSERT_FALSE(critical.empty());
+    const CriticalSpeed& c = critical.front();
+    ASSERT_GT(c.friction_threshold_scale, 0.0);
+    const HarmonicLoad load = source->load(w.system, c.speed, 1);
+    const double omega = 2.0 * kPi * load.frequency_hz;
+    std::complex<double> u[2] = {0.0, 0.0};
+    for (const WheelInput& in : load.wheels)
+      u[w.system.track_inputs[in.track_input].element] +=
+          in.amplitude(2) * std::exp(std::complex<double>(0.0, -omega * in.delay_s));
+    const double half_difference = std::abs(u[1] - u[0]) / 2.0;
+    for (double x : {0.010, 0.030}) {
+      const auto curve = element_deflection_curves(w.system, w.modes, *source, 0, {0}, {c.speed}, {x, x});
+      const double a = curve[0].amplitudes[0];
+      const double body = x / c.friction_threshold_scale;
+      EXPECT_NEAR(std::min(std::abs(a - std::abs(body - half_difference)), std::abs(a - (body + half_difference))), 0.0,
+                  1e-9 * a)
+          << "dip " << dip << ", X " << x;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace railmodal::test

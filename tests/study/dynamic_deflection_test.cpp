@@ -1,0 +1,246 @@
+// The book's permissible dynamic deflections in a study (springs digest §5): which springs each
+// rule limits, the [permissible_dynamic_deflection] table, the check of each variant, and its
+// place in the ranking and the outputs.
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "railmodal/railmodal.hpp"
+#include "study/permissible_deflection.hpp"
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+// The loaded two-axle freight wagon of Example 3 with its leaf-spring friction φ = 0.075.
+const char* kWagon = R"(
+[vehicle]
+name = "wagon"
+template = "two-axle"
+gravity = "981 cm/s^2"
+[body]
+weight = "22626 kgf"
+cg_height = "100 cm"
+radius_of_gyration = { roll = "110 cm", pitch = "260 cm", yaw = "260 cm" }
+[suspension]
+wheelbase = "3810 mm"
+spring_spacing = "211.4 cm"
+spring = [{ kind = "leaf", static_deflection = "57.2 mm", relative_friction = 0.075 }]
+)";
+
+const char* kScene = R"(
+[scene]
+name = "joints"
+dofs = "vertical"
+[speed]
+min = "20 km/h"
+max = "150 km/h"
+step = "1 km/h"
+[[source]]
+kind = "rail_joints"
+rail_length = "10 m"
+dip_depth = "5 mm"
+)";
+
+std::string study_file(const std::string& body) {
+  write_temp("wagon.toml", kWagon);
+  write_temp("scene.toml", kScene);
+  return write_temp("study.toml", "[study]\nname = \"s\"\nvehicle = \"wagon.toml\"\nscene = \"scene.toml\"\n" + body);
+}
+
+InputError study_error(const std::string& body) {
+  try {
+    load_study(study_file(body));
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no error for:\n" << body;
+  return InputError("", 0, 0, "");
+}
+
+// A bogie car in two stages: a bogie on coil axle-box springs, the body on the bogie through a
+// bolster of an elliptic spring in series with coils (the book's double suspension).
+const char* kBogieCar = R"(
+[vehicle]
+name = "car"
+[[body]]
+name = "bogie"
+mass = "2000 kg"
+inertia = { roll = "0 kg*m^2", pitch = "0 kg*m^2", yaw = "0 kg*m^2" }
+centre_of_gravity = ["0 m", "0 m", "0 m"]
+held = ["lateral", "roll", "pitch", "yaw"]
+[[body]]
+name = "body"
+mass = "10000 kg"
+inertia = { roll = "0 kg*m^2", pitch = "0 kg*m^2", yaw = "0 kg*m^2" }
+centre_of_gravity = ["0 m", "0 m", "0 m"]
+held = ["lateral", "roll", "pitch", "yaw"]
+[[element]]
+name = "axlebox"
+upper = "bogie"
+point = ["0 m", "0 m", "0 m"]
+vertical = [{ kind = "coil", stiffness = "2 MN/m" }]
+[[element]]
+name = "bolster"
+lower = "bogie"
+upper = "body"
+point = ["0 m", "0 m", "0 m"]
+vertical = [{ kind = "elliptic", stiffness = "1 MN/m" }, { kind = "coil", stiffness = "1.5 MN/m", count = 2 }]
+)";
+
+std::vector<study::PermissibleDeflection> limits_of(DeflectionRule::Book book, DeflectionRule::Service service,
+                                                    LinearSystem* system) {
+  *system = assemble(load_vehicle(write_temp("car.toml", kBogieCar)), DofSet::vertical);
+  DeflectionRule rule;
+  rule.book = book;
+  rule.service = service;
+  return study::permissible_deflections(rule, *system);
+}
+
+// The limits of springs digest §5 by element and stage. Shares: in series every stage carries
+// the element's force, so a stage deflects k_element/k_stage of the element's stretch; here
+// k_element = 1/(1/1 + 1/3) = 0.75 MN/m, so the elliptic stage takes 0.75 and the coils 0.25.
+// f_st of the elliptic stage: the body's weight 10 t × 9.81 over 1 MN/m = 98.1 mm.
+TEST(PermissibleDeflection, LimitsFollowTheBookByElementAndStage) {
+  LinearSystem s;
+  auto l = limits_of(DeflectionRule::Book::lehner, DeflectionRule::Service::passenger, &s);
+  ASSERT_EQ(l.size(), 3u);
+  EXPECT_EQ(l[0].element, 0);  // axle-box coil: 30 mm
+  EXPECT_EQ(l[0].stage, 0);
+  EXPECT_EQ(l[0].permissible, 0.030);
+  EXPECT_EQ(l[0].share, 1.0);
+  EXPECT_EQ(l[1].element, 1);  // elliptic: 0.2 f_st
+  EXPECT_EQ(l[1].stage, 0);
+  EXPECT_NEAR(l[1].permissible, 0.2 * 10000.0 * 9.81 / 1.0e6, 1e-12);
+  EXPECT_NEAR(l[1].share, 0.75, 1e-12);
+  EXPECT_NE(l[1].basis.find("0.2 f_st = 0.2 × 98.1 mm"), std::string::npos) << l[1].basis;
+  EXPECT_EQ(l[2].stage, 1);  // bolster coils: 30 mm on their quarter
+  EXPECT_NEAR(l[2].share, 0.25, 1e-12);
+
+  l = limits_of(DeflectionRule::Book::korotkevich, DeflectionRule::Service::passenger, &s);
+  ASSERT_EQ(l.size(), 2u);
+  EXPECT_EQ(l[0].stage, -1);  // the axle-box springs as a whole
+  EXPECT_EQ(l[0].permissible, 0.040);
+  EXPECT_EQ(l[1].stage, 0);  // the elliptic spring
+  EXPECT_EQ(l[1].permissible, 0.030);
+
+  l = limits_of(DeflectionRule::Book::korotkevich, DeflectionRule::Service::freight, &s);
+  ASSERT_EQ(l.size(), 1u);
+  EXPECT_EQ(l[0].permissible, 0.025);
+  EXPECT_NE(l[0].basis.find("bogie-less freight cars 25 mm"), std::string::npos);
+}
+
+TEST(PermissibleDeflection, FreightLeafSpringsAreLimitedOnlyForFreightCars) {
+  const LinearSystem s = assemble(load_vehicle(write_temp("wagon.toml", kWagon)), DofSet::vertical);
+  DeflectionRule rule;
+  rule.book = DeflectionRule::Book::lehner;
+  EXPECT_TRUE(study::permissible_deflections(rule, s).empty());  // Lehner gives no passenger leaf limit
+  rule.service = DeflectionRule::Service::freight;
+  const auto l = study::permissible_deflections(rule, s);
+  ASSERT_EQ(l.size(), 4u);
+  for (const auto& x : l) EXPECT_NEAR(x.permissible, 0.4 * 0.0572, 1e-12);  // 0.4 f_st
+  rule.element_limits = {{"front left spring", 0.010}};
+  const auto overridden = study::permissible_deflections(rule, s);
+  ASSERT_EQ(overridden.size(), 4u);
+  EXPECT_EQ(overridden[0].permissible, 0.010);
+  EXPECT_EQ(overridden[0].basis, "study: 10 mm");
+  rule.element_limits = {{"no such spring", 0.010}};
+  EXPECT_THROW(study::permissible_deflections(rule, s), std::invalid_argument);
+}
+
+TEST(PermissibleDeflection, StudyTableIsChecked) {
+  InputError e = study_error("[permissible_dynamic_deflection]\nrule = \"popov\"\n");
+  EXPECT_NE(e.message().find("key 'permissible_dynamic_deflection.rule': must be \"korotkevich\" or \"lehner\""),
+            std::string::npos)
+      << e.what();
+  e = study_error("[permissible_dynamic_deflection]\nrule = \"lehner\"\nservice = \"mail\"\n");
+  EXPECT_NE(e.message().find("must be \"passenger\" or \"freight\""), std::string::npos) << e.what();
+  e = study_error("[permissible_dynamic_deflection]\nservice = \"freight\"\n");
+  EXPECT_NE(e.message().find("name a rule"), std::string::npos) << e.what();
+  e = study_error("[ranking]\nmax_dynamic_deflection_ratio = 1\n");
+  EXPECT_NE(e.message().find("needs a [permissible_dynamic_deflection] table"), std::string::npos) << e.what();
+  e = study_error("[permissible_dynamic_deflection]\nelements = { \"bolster\" = \"30 mm\" }\n");
+  EXPECT_EQ(e.line(), 6) << e.what();
+  EXPECT_NE(e.message().find("variant 'base': no element 'bolster' with vertical springs"), std::string::npos) << e.what();
+}
+
+// Example 3's wagon on 10 m rails (two-axle digest): friction φf = 4.3 mm stops the
+// resonances of a 5 mm joint dip; at 40 mm it no longer stops the bounce resonance (the
+// threshold of (169a) is 2a ≈ 13 mm), which then grows without limit.
+TEST(PermissibleDeflection, ResonanceFrictionDoesNotStopExceedsTheLimit) {
+  const Study s = load_study(study_file(R"(
+[[variant]]
+name = "deep joints"
+scene_overrides = { "source[0].dip_depth" = "40 mm" }
+[permissible_dynamic_deflection]
+rule = "lehner"
+service = "freight"
+[ranking]
+max_dynamic_deflection_ratio = 1
+)"));
+  const auto results = evaluate_study(s, {});
+  ASSERT_EQ(results.size(), 2u);
+  ASSERT_TRUE(results[0].ok() && results[1].ok());
+  const VariantResult& base = results[0];
+  ASSERT_TRUE(base.deflections_checked);
+  ASSERT_EQ(base.deflections.size(), 4u);
+  for (const auto& d : base.deflections) {
+    EXPECT_TRUE(d.kept()) << d.element;
+    EXPECT_GT(d.deflection, 0.0);
+    EXPECT_NEAR(d.permissible, 0.4 * 0.0572, 1e-12);
+  }
+  const double ratio = *metric_value(base, "dynamic_deflection_ratio");
+  EXPECT_GT(ratio, 0.0);
+  EXPECT_LT(ratio, 1.0);
+  // The ratio is the worst check's deflection over its limit, and the element metric its deflection.
+  EXPECT_DOUBLE_EQ(*metric_value(base, "dynamic_deflection:front left spring"), base.deflections[0].deflection);
+
+  const VariantResult& deep = results[1];
+  bool bounce_not_stopped = false;
+  for (const auto& c : deep.critical_speeds) bounce_not_stopped |= c.mode_name == "body bounce" && !c.friction_stops;
+  ASSERT_TRUE(bounce_not_stopped);
+  for (const auto& d : deep.deflections) {
+    EXPECT_TRUE(d.unbounded) << d.element;
+    EXPECT_FALSE(d.kept());
+  }
+  EXPECT_EQ(*metric_value(deep, "dynamic_deflection_ratio"), std::numeric_limits<double>::infinity());
+
+  const Comparison c = rank_variants(s, results);
+  EXPECT_EQ(c.variants[0].result.name, "base");
+  EXPECT_TRUE(c.variants[0].feasible);
+  ASSERT_EQ(c.variants[1].violations.size(), 1u);
+  EXPECT_NE(c.variants[1].violations[0].find("dynamic_deflection_ratio unbounded > 1"), std::string::npos) << c.variants[1].violations[0];
+  std::ostringstream table, json;
+  write_comparison(table, c, ComparisonFormat::table);
+  EXPECT_NE(table.str().find("dyn. deflection / permissible"), std::string::npos);
+  EXPECT_NE(table.str().find("unbounded"), std::string::npos);
+  write_comparison(json, c, ComparisonFormat::json);
+  EXPECT_NE(json.str().find("\"keeps_permissible_deflections\": false"), std::string::npos);
+  EXPECT_NE(json.str().find("\"rule\": \"lehner\""), std::string::npos);
+
+  // A shard's JSON carries the checks and reads back into the same results.
+  std::ostringstream shard;
+  write_shard(shard, s, {}, results);
+  const auto back = read_shard(write_temp("shard.json", shard.str()), s);
+  ASSERT_EQ(back.size(), 2u);
+  ASSERT_TRUE(back[0].deflections_checked);
+  ASSERT_EQ(back[0].deflections.size(), 4u);
+  EXPECT_EQ(back[0].deflections[1].deflection, base.deflections[1].deflection);
+  EXPECT_EQ(back[0].deflections[1].basis, base.deflections[1].basis);
+  EXPECT_EQ(back[1].deflections[0].unbounded, true);
+}
+
+TEST(PermissibleDeflection, NotCheckedUnlessTheStudyNamesARule) {
+  const Study s = load_study(study_file(""));
+  const auto results = evaluate_study(s, {});
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_FALSE(results[0].deflections_checked);
+  EXPECT_TRUE(results[0].deflections.empty());
+  EXPECT_FALSE(metric_value(results[0], "dynamic_deflection_ratio").has_value());
+  std::ostringstream table;
+  write_comparison(table, rank_variants(s, results), ComparisonFormat::table);
+  EXPECT_EQ(table.str().find("deflection / permissible"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace railmodal::test
