@@ -265,7 +265,7 @@ void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
       r.fail(key, "unknown metric '" + metric +
                       "' (lowest_critical_speed, critical_speed:<mode name>, bounce_critical_speed, period:<mode name>, bounce_period, static_deflection[:<body>], "
                       "metacentric_height, peak:<dof>:<displacement|velocity|acceleration>, dynamic_deflection_ratio, "
-                      "dynamic_deflection:<element>)");
+                      "dynamic_deflection_ratio:<element>)");
     if (!deflections_checked && canonical_metric(metric).rfind("dynamic_deflection", 0) == 0)
       r.fail(key, "metric '" + metric + "' needs a [permissible_dynamic_deflection] table naming the rule");
   };
@@ -380,8 +380,10 @@ Study load_study(const std::string& path) {
     int number = 0;
     for (auto& t : root.tables("sweep")) read_sweep(t, ++number, &specs, vehicle_file);
   }
-  int elements_line = 0, elements_column = 0;
+  int elements_line = 0, elements_column = 0, rule_line = 0, rule_column = 0;
   if (root.has("permissible_dynamic_deflection")) {
+    rule_line = line_of(root.raw("permissible_dynamic_deflection"));
+    rule_column = column_of(root.raw("permissible_dynamic_deflection"));
     TableReader t = root.table("permissible_dynamic_deflection");
     study.deflection_rule = read_deflection_rule(t, &elements_line, &elements_column);
   }
@@ -418,6 +420,10 @@ Study load_study(const std::string& path) {
     }
     variant.scene = on_scene.empty() ? base_scene
                                      : read_with_overrides<Scene>(scene_document, scene_file, on_scene, spec, path, read_scene);
+    if (study.deflection_rule.active() && variant.scene.dofs == DofSet::lateral)
+      throw InputError(path, rule_line, rule_column,
+                       "key 'permissible_dynamic_deflection': variant '" + spec.name + "': the scene's dofs = \"lateral\" "
+                       "has no bounce or pitch, so no vertical spring deflection to check (use \"vertical\" or \"all\")");
     for (const auto& [element, limit] : study.deflection_rule.element_limits) {
       bool found = false;
       for (const Element& e : variant.vehicle.elements) found = found || (e.name == element && !e.vertical_stages.empty());

@@ -174,6 +174,15 @@ std::string criterion_heading(const RankingCriterion& c) {
 
 std::optional<double> body_deflection(const VariantResult& r) { return metric_value(r, "static_deflection"); }
 
+// The deflection rule in one line, to tell shards of different rules apart: "none", or
+// "lehner freight" followed by the element limits (m, exact).
+std::string rule_text(const DeflectionRule& rule) {
+  if (!rule.active()) return "none";
+  std::string s = std::string(to_string(rule.book)) + " " + to_string(rule.service);
+  for (const auto& [name, limit] : rule.element_limits) s += "; " + name + " = " + exact(limit) + " m";
+  return s;
+}
+
 }  // namespace
 
 std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& c, bool for_csv) {
@@ -330,6 +339,7 @@ void write_shard(std::ostream& out, const Study& study, const EvaluationOptions&
   j["variant_count"] = study.variants.size();
   j["shard"] = options.shard;
   j["shards"] = options.shards;
+  j["permissible_dynamic_deflection"] = rule_text(study.deflection_rule);
   j["results"] = json::array();
   for (const auto& r : results) j["results"].push_back(result_json(r));
   out << j.dump(1) << "\n";
@@ -356,6 +366,12 @@ std::vector<VariantResult> read_shard(std::istream& in, const std::string& file,
       throw InputError(file, 0, 0, "a shard of another study ('" + j.at("study").get<std::string>() + "', " +
                                        std::to_string(j.at("variant_count").get<size_t>()) + " variants), not of '" +
                                        study.name + "' (" + std::to_string(study.variants.size()) + " variants)");
+    // A shard evaluated under another deflection rule would merge into a ranking it was not
+    // checked for.
+    const std::string rule = j.value("permissible_dynamic_deflection", "none");
+    if (rule != rule_text(study.deflection_rule))
+      throw InputError(file, 0, 0, "a shard checked for permissible dynamic deflections by '" + rule +
+                                       "', the study asks for '" + rule_text(study.deflection_rule) + "'");
     for (const auto& r : j.at("results")) results.push_back(result_from_json(r));
   } catch (const json::exception& e) {
     throw InputError(file, 0, 0, std::string("a shard with missing or mistyped fields: ") + e.what());

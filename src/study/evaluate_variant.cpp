@@ -67,36 +67,91 @@ void summarise_response(const CriticalSpeedStudy& study, VariantResult* r) {
   }
 }
 
+// Whether the oscillatory modes of a critical speed's eigenspace have no viscous damping in the
+// vehicle itself (φᵀCφ round-off of ‖C‖‖φ‖², as the harmonic response decides).
+bool undamped_group(const LinearSystem& system, const ModalResult& modes, const CriticalSpeed& cs) {
+  const double lambda = modes.modes[cs.mode - 1].eigenvalue;
+  for (const Mode& m : modes.modes)
+    if (m.kind == ModeKind::oscillatory && std::abs(m.eigenvalue - lambda) <= 1e-8 * lambda &&
+        std::abs(m.shape.dot(system.damping * m.shape)) > 1e-12 * system.damping.norm() * m.shape.squaredNorm())
+      return false;
+  return true;
+}
+
+// Whether any mode of that eigenspace stretches the element of map row `row`.
+bool group_stretches(const ModalResult& modes, const CriticalSpeed& cs, const Eigen::RowVectorXd& row) {
+  const double lambda = modes.modes[cs.mode - 1].eigenvalue;
+  for (const Mode& m : modes.modes)
+    if (m.kind == ModeKind::oscillatory && std::abs(m.eigenvalue - lambda) <= 1e-8 * lambda &&
+        std::abs(row.dot(m.shape)) > 1e-9 * m.shape.cwiseAbs().maxCoeff() * row.cwiseAbs().sum())
+      return true;
+  return false;
+}
+
+// The largest deflection of one element for one source near grid point v (a local maximum):
+// golden-section search between its neighbours, to 1e-6 of the speed, as the damped peaks of
+// the amplitude curves are refined. Returns (speed, deflection); the grid point when the
+// bracket holds an unbounded speed.
+std::pair<double, double> refine_deflection(const CriticalSpeedStudy& study, const ExcitationSource& source, int s,
+                                            int element, const std::vector<double>& reference,
+                                            const DeflectionCurve& curve, size_t v) {
+  std::pair<double, double> best{curve.speeds[v], curve.amplitudes[v]};
+  if (v == 0 || v + 1 >= curve.speeds.size() || curve.unbounded[v - 1] || curve.unbounded[v + 1]) return best;
+  auto at = [&](double speed) {
+    const DeflectionCurve c =
+        element_deflection_curves(study.system, study.modes, source, s, {element}, {speed}, reference).front();
+    return c.unbounded[0] ? -1.0 : c.amplitudes[0];
+  };
+  constexpr double kGolden = 0.61803398874989484820;
+  double low = curve.speeds[v - 1], high = curve.speeds[v + 1];
+  double x1 = high - kGolden * (high - low), x2 = low + kGolden * (high - low);
+  double f1 = at(x1), f2 = at(x2);
+  while (high - low > 1e-6 * best.first) {
+    if (f1 < 0.0 || f2 < 0.0) return best;  // an undamped speed inside: keep the grid's value
+    if (f1 >= f2) {
+      high = x2, x2 = x1, f2 = f1;
+      x1 = high - kGolden * (high - low), f1 = at(x1);
+    } else {
+      low = x1, x1 = x2, f1 = f2;
+      x2 = low + kGolden * (high - low), f2 = at(x2);
+    }
+  }
+  for (const auto& [x, f] : {std::pair{x1, f1}, std::pair{x2, f2}})
+    if (f > best.second) best = {x, f};
+  return best;
+}
+
 // The largest dynamic deflection of every element or stage the rule limits, over every source
-// and the study's speed grid (which holds every critical speed), by the rule of
-// docs/studies.md, "Permissible dynamic deflections":
-//  1. an undamped resonance in range that leaf friction does not stop (the criterion of the
-//     critical speeds, the book's (169a) as Den Hartog's) grows without limit: every element
-//     its mode stretches is unbounded;
-//  2. otherwise leaf friction is linearised at the element stretch where the element reaches
-//     its (first) limit, X_lim, and the response there is compared with the limit. For one
-//     mode driven through its own coordinate the response A(X) of friction linearised at X
-//     has A(X)/X falling in X, so A(X_lim) ≤ X_lim exactly when the friction-limited
-//     amplitude X* ≤ X_lim, and the value reported lies between X* and X_lim. That holds as
-//     the book's (169a) holds, with the track's own motion under the spring left out; with
-//     it the stretch at resonance is |X_lim/s ± |u_r − u_f|/2| (tests/response/
-//     element_deflection_test.cpp), which the check takes as it comes.
-// Friction of an element without a limit is linearised at the scene's [friction] amplitude,
-// if any, else left out (less damping: the safe side).
+// and the scene's speeds, by the rule of docs/studies.md, "Permissible dynamic deflections":
+//  1. an undamped resonance in range (no viscous damping in the vehicle's modes) that leaf
+//     friction does not stop (the critical speeds' criterion, the book's (169a) read as Den
+//     Hartog's) grows without limit: every element its modes stretch is unbounded;
+//  2. otherwise leaf friction is linearised at the element stretch X_lim where the element
+//     reaches its first limit, and the response is compared with the limit. For one mode
+//     driven through its own coordinate, with friction linearised at X the response A(X) has
+//     A(X)/X non-increasing in X, so A(X_lim) ≤ X_lim exactly when the harmonic-balance
+//     amplitude X* ≤ X_lim. With the track's own motion under the spring (every axle-box
+//     spring) the stretch at resonance is |X_lim/s ± |u_r − u_f|/2| (tests/response/
+//     element_deflection_test.cpp): a linearised check, not an exact one. The figure reported
+//     is A(X_lim): it decides the verdict, it is not the amplitude the spring reaches.
+// Friction of an element without a limit is linearised at the largest X_lim of the limited
+// elements (the least damping any limited element assumes); the vehicle's dampers act as
+// they are. Grid maxima are refined by golden-section search.
 void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& study, VariantResult* r) {
   r->deflections_checked = true;
   const LinearSystem& system = study.system;
   const std::vector<study::PermissibleDeflection> limits = study::permissible_deflections(rule, system);
   if (limits.empty()) return;
   std::vector<int> elements;
-  std::vector<double> reference(system.vehicle.elements.size(), study.scene.friction_reference_amplitude);
-  std::vector<bool> limited(reference.size(), false);
+  std::vector<double> reference(system.vehicle.elements.size(), 0.0);
   for (const auto& l : limits) {
     if (std::find(elements.begin(), elements.end(), l.element) == elements.end()) elements.push_back(l.element);
     const double stretch = l.permissible / l.share;
-    reference[l.element] = limited[l.element] ? std::min(reference[l.element], stretch) : stretch;
-    limited[l.element] = true;
+    reference[l.element] = reference[l.element] > 0.0 ? std::min(reference[l.element], stretch) : stretch;
   }
+  const double largest = *std::max_element(reference.begin(), reference.end());
+  for (size_t k = 0; k < reference.size(); ++k)
+    if (std::find(elements.begin(), elements.end(), static_cast<int>(k)) == elements.end()) reference[k] = largest;
   for (const auto& l : limits) {
     VariantResult::DeflectionCheck c;
     const Element& e = system.vehicle.elements[l.element];
@@ -106,33 +161,41 @@ void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& stu
     c.permissible = l.permissible;
     r->deflections.push_back(c);
   }
-  // Rule 1: resonances friction does not stop.
+  // Rule 1: resonances that nothing damps and friction does not stop.
   for (const CriticalSpeed& cs : study.critical_speeds) {
-    if (!cs.unbounded || cs.friction_stops) continue;
-    const Eigen::VectorXd& shape = study.modes.modes[cs.mode - 1].shape;
+    if (cs.friction_stops || !undamped_group(system, study.modes, cs)) continue;
     for (size_t i = 0; i < limits.size(); ++i) {
-      const Eigen::RowVectorXd row = system.element_vertical_map.row(limits[i].element);
       VariantResult::DeflectionCheck& c = r->deflections[i];
-      if (!c.unbounded && std::abs(row.dot(shape)) > 1e-9 * shape.cwiseAbs().maxCoeff() * row.cwiseAbs().sum())
+      if (!c.unbounded && group_stretches(study.modes, cs, system.element_vertical_map.row(limits[i].element)))
         c.unbounded = true, c.speed = cs.speed, c.source = cs.source;
     }
   }
+  // Rule 2: the largest finite deflection of each element per source, refined, then by stage.
   const std::vector<double> speeds = study.curves.empty() ? std::vector<double>{} : study.curves.front().speeds;
   for (size_t s = 0; s < study.scene.sources.size() && !speeds.empty(); ++s) {
-    const std::vector<DeflectionCurve> curves = element_deflection_curves(
-        system, study.modes, *study.scene.sources[s], static_cast<int>(s), elements, speeds, reference);
-    for (size_t i = 0; i < limits.size(); ++i) {
-      const auto& l = limits[i];
-      VariantResult::DeflectionCheck& c = r->deflections[i];
-      const DeflectionCurve& curve = *std::find_if(curves.begin(), curves.end(),
-                                                   [&](const DeflectionCurve& d) { return d.element == l.element; });
+    const ExcitationSource& source = *study.scene.sources[s];
+    const std::vector<DeflectionCurve> curves =
+        element_deflection_curves(system, study.modes, source, static_cast<int>(s), elements, speeds, reference);
+    for (const DeflectionCurve& curve : curves) {
+      size_t peak = speeds.size();
+      bool unbounded = false;
       for (size_t v = 0; v < speeds.size(); ++v) {
-        if (curve.unbounded[v]) {
-          if (!c.unbounded) c.speed = speeds[v], c.source = static_cast<int>(s);
-          c.unbounded = true;
-        } else if (!c.unbounded && l.share * curve.amplitudes[v] > c.deflection) {
-          c.deflection = l.share * curve.amplitudes[v], c.speed = speeds[v], c.source = static_cast<int>(s);
+        if (curve.unbounded[v] && !unbounded) {
+          unbounded = true;
+          for (size_t i = 0; i < limits.size(); ++i)
+            if (limits[i].element == curve.element && !r->deflections[i].unbounded)
+              r->deflections[i].unbounded = true, r->deflections[i].speed = speeds[v],
+              r->deflections[i].source = static_cast<int>(s);
         }
+        if (!curve.unbounded[v] && (peak == speeds.size() || curve.amplitudes[v] > curve.amplitudes[peak])) peak = v;
+      }
+      if (unbounded || peak == speeds.size()) continue;
+      const auto [speed, amplitude] =
+          refine_deflection(study, source, static_cast<int>(s), curve.element, reference, curve, peak);
+      for (size_t i = 0; i < limits.size(); ++i) {
+        VariantResult::DeflectionCheck& c = r->deflections[i];
+        if (limits[i].element == curve.element && !c.unbounded && limits[i].share * amplitude > c.deflection)
+          c.deflection = limits[i].share * amplitude, c.speed = speed, c.source = static_cast<int>(s);
       }
     }
   }
@@ -186,6 +249,7 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
   } catch (const std::invalid_argument& e) {
     r.failure = e.what();
   }
+  if (!r.ok()) r.deflections.clear();  // a check cut short is no verdict
   return r;
 }
 

@@ -44,7 +44,7 @@ bool is_metric(const std::string& name) {
   const std::string metric = canonical_metric(name);
   std::string dof, quantity;
   return metric == "lowest_critical_speed" || metric == "static_deflection" || metric == "metacentric_height" ||
-         metric == "dynamic_deflection_ratio" || (starts_with(metric, "dynamic_deflection:") && metric.size() > 19) ||
+         metric == "dynamic_deflection_ratio" || (starts_with(metric, "dynamic_deflection_ratio:") && metric.size() > 25) ||
          (starts_with(metric, "period:") && metric.size() > 7) ||
          (starts_with(metric, "critical_speed:") && metric.size() > 15) ||
          (starts_with(metric, "static_deflection:") && metric.size() > 18) || split_peak(metric, &dof, &quantity);
@@ -73,23 +73,17 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
     return std::nullopt;
   }
   if (metric == "metacentric_height") return r.metacentric_height;
-  if (metric == "dynamic_deflection_ratio") {
-    // The worst check; +∞ for an unbounded resonance. No value when nothing was checked.
+  if (metric == "dynamic_deflection_ratio" || starts_with(metric, "dynamic_deflection_ratio:")) {
+    // The worst check (of the named element); +∞ for an unbounded resonance. No value when
+    // nothing was checked.
+    const std::string element = metric.size() > 25 ? metric.substr(25) : "";
     std::optional<double> worst;
     for (const auto& c : r.deflections) {
+      if (!element.empty() && c.element != element) continue;
       const double ratio = c.unbounded ? std::numeric_limits<double>::infinity() : c.deflection / c.permissible;
-      worst = std::max(worst.value_or(ratio), ratio);
+      if (!std::isnan(ratio)) worst = std::max(worst.value_or(ratio), ratio);
     }
     return worst;
-  }
-  if (starts_with(metric, "dynamic_deflection:")) {
-    std::optional<double> largest;
-    for (const auto& c : r.deflections)
-      if (c.element == metric.substr(19)) {
-        const double d = c.unbounded ? std::numeric_limits<double>::infinity() : c.deflection;
-        largest = std::max(largest.value_or(d), d);
-      }
-    return largest;
   }
   std::string dof, quantity;
   if (split_peak(metric, &dof, &quantity)) {
@@ -110,7 +104,7 @@ input::Quantity metric_quantity(const std::string& name) {
   const std::string metric = canonical_metric(name);
   if (metric == "lowest_critical_speed" || starts_with(metric, "critical_speed:")) return input::Quantity::speed;
   if (starts_with(metric, "period:")) return input::Quantity::time;
-  if (metric == "dynamic_deflection_ratio") return input::Quantity::dimensionless;
+  if (starts_with(metric, "dynamic_deflection_ratio")) return input::Quantity::dimensionless;
   std::string dof, quantity;
   if (split_peak(metric, &dof, &quantity)) {
     const bool rotation = is_rotation(dof);
@@ -130,7 +124,7 @@ DisplayUnit display_unit(const std::string& metric) {
     case input::Quantity::angle: return {"rad", 1.0};
     case input::Quantity::angular_speed: return {"rad/s", 1.0};
     case input::Quantity::dimensionless:
-      if (canonical_metric(metric) == "dynamic_deflection_ratio") return {"", 1.0};
+      if (starts_with(canonical_metric(metric), "dynamic_deflection_ratio")) return {"", 1.0};
       return {"rad/s^2", 1.0};
     default: return {"rad/s^2", 1.0};
   }

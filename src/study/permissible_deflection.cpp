@@ -2,6 +2,7 @@
 // stages each rule limits, and by how much.
 #include "study/permissible_deflection.hpp"
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -38,6 +39,24 @@ double static_deflection(const SpringStage& stage, double element_load) {
   return per_spring / stage.stiffness;
 }
 
+// The book names springs by kind; vehicle files may write "Coil" or "ELLIPTIC".
+std::string lower_case(std::string word) {
+  for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return word;
+}
+
+// The share of the element's stretch that one stage takes. In series every stage carries the
+// same force, so a stage deflects k_element/k_stage of it, while its leaves slide. A stage in
+// series with a leaf-friction stage takes the whole stretch while the leaves stick: the bound
+// is what is checked (1).
+double stage_share(const Element& e, size_t stage, double k_element) {
+  bool friction_elsewhere = false;
+  for (size_t s = 0; s < e.vertical_stages.size(); ++s)
+    friction_elsewhere = friction_elsewhere || (s != stage && e.vertical_stages[s].relative_friction > 0.0);
+  if (friction_elsewhere) return 1.0;
+  return k_element / (e.vertical_stages[stage].stiffness * e.vertical_stages[stage].count);
+}
+
 }  // namespace
 
 std::vector<PermissibleDeflection> permissible_deflections(const DeflectionRule& rule, const LinearSystem& system) {
@@ -54,7 +73,14 @@ std::vector<PermissibleDeflection> permissible_deflections(const DeflectionRule&
     }
   }
   const bool passenger = rule.service == DeflectionRule::Service::passenger;
+  // Korotkevich's axle-box limits are for cars without bogies: every spring stands on the track.
+  bool bogieless = true;
+  for (const Element& e : v.elements) bogieless = bogieless && e.lower.empty();
   std::vector<PermissibleDeflection> out;
+  // A limit of 0 (a stage with no static load, so 0.2 f_st = 0) checks nothing meaningful.
+  auto add = [&](const PermissibleDeflection& limit) {
+    if (limit.permissible > 0.0) out.push_back(limit);
+  };
   for (size_t k = 0; k < v.elements.size(); ++k) {
     const Element& e = v.elements[k];
     const double k_element = series_stiffness(e.vertical_stages);
@@ -63,39 +89,36 @@ std::vector<PermissibleDeflection> permissible_deflections(const DeflectionRule&
     bool overridden = false;
     for (const auto& [name, limit] : rule.element_limits)
       if (name == e.name) {
-        out.push_back({element, -1, limit, 1.0, "study: " + millimetres(limit)});
+        add({element, -1, limit, 1.0, "study: " + millimetres(limit)});
         overridden = true;
       }
     if (overridden) continue;
-    const bool on_track = e.lower.empty();
-    if (rule.book == DeflectionRule::Book::korotkevich) {
-      // Korotkevich (1935), p. 97: the axle-box springs as a whole, elliptic springs by stage.
-      if (on_track)
-        out.push_back({element, -1, passenger ? 0.040 : 0.025, 1.0,
-                       passenger ? "Korotkevich: axle-box springs of passenger cars 40 mm"
-                                 : "Korotkevich: axle-box springs of bogie-less freight cars 25 mm"});
-      for (size_t s = 0; s < e.vertical_stages.size(); ++s)
-        if (passenger && e.vertical_stages[s].kind == "elliptic")
-          out.push_back({element, static_cast<int>(s), 0.030,
-                         k_element / (e.vertical_stages[s].stiffness * e.vertical_stages[s].count),
-                         "Korotkevich: elliptic springs of passenger cars 30 mm"});
-    } else if (rule.book == DeflectionRule::Book::lehner) {
-      // Lehner, pp. 150–153: by spring kind; leaf springs only for freight cars.
-      for (size_t s = 0; s < e.vertical_stages.size(); ++s) {
-        const SpringStage& stage = e.vertical_stages[s];
-        const double share = k_element / (stage.stiffness * stage.count);
+    for (size_t s = 0; s < e.vertical_stages.size(); ++s) {
+      const SpringStage& stage = e.vertical_stages[s];
+      const std::string kind = lower_case(stage.kind);
+      const double share = stage_share(e, s, k_element);
+      const int index = static_cast<int>(s);
+      if (rule.book == DeflectionRule::Book::korotkevich) {
+        // Korotkevich (1935), p. 97: elliptic springs of passenger cars.
+        if (passenger && kind == "elliptic")
+          add({element, index, 0.030, share, "Korotkevich: elliptic springs of passenger cars 30 mm"});
+      } else if (rule.book == DeflectionRule::Book::lehner) {
+        // Lehner, pp. 150–153: by spring kind; leaf springs only for freight cars.
         const double f_st = static_deflection(stage, system.element_loads[k]);
-        if (stage.kind == "coil") {
-          out.push_back({element, static_cast<int>(s), 0.030, share, "Lehner: coil springs 30 mm"});
-        } else if (stage.kind == "elliptic") {
-          out.push_back({element, static_cast<int>(s), 0.2 * f_st, share,
-                         "Lehner: elliptic springs 0.2 f_st = 0.2 × " + millimetres(f_st)});
-        } else if (stage.kind == "leaf" && !passenger) {
-          out.push_back({element, static_cast<int>(s), 0.4 * f_st, share,
-                         "Lehner: freight leaf springs 0.4 f_st = 0.4 × " + millimetres(f_st)});
-        }
+        if (kind == "coil")
+          add({element, index, 0.030, share, "Lehner: coil springs 30 mm"});
+        else if (kind == "elliptic")
+          add({element, index, 0.2 * f_st, share, "Lehner: elliptic springs 0.2 f_st = 0.2 × " + millimetres(f_st)});
+        else if (kind == "leaf" && !passenger)
+          add({element, index, 0.4 * f_st, share, "Lehner: freight leaf springs 0.4 f_st = 0.4 × " + millimetres(f_st)});
       }
     }
+    // Korotkevich: the axle-box springs as a whole, of 2- and 3-axle passenger cars and of
+    // bogie-less freight cars.
+    if (rule.book == DeflectionRule::Book::korotkevich && bogieless && e.lower.empty())
+      add({element, -1, passenger ? 0.040 : 0.025, 1.0,
+           passenger ? "Korotkevich: axle-box springs of 2- and 3-axle passenger cars 40 mm"
+                     : "Korotkevich: axle-box springs of bogie-less freight cars 25 mm"});
   }
   return out;
 }

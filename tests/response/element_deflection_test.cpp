@@ -74,12 +74,14 @@ TEST(ElementDeflection, UndampedResonanceIsUnboundedNotInfinite) {
 
 // Friction linearised at the stretch X, at the bounce resonance (ω² = K/m) of the one-DOF
 // wagon: with c = 4R/(πωX) across each of the two springs, (iω·2c)x = Σ(k + iωc)uᵢ, so the
-// leading spring stretches y = x − u_f = Σkuᵢ/(2iωc) + (u_r − u_f)/2. With u_r = u_f e^{−iψ}
-// both terms have the phase −i e^{−iψ/2}, so |y| = |X/s ± |u_r − u_f|/2|, where
-// s = 4W/(πF₀) is the friction threshold scale of the critical-speed criterion (W = 2R,
-// F₀ = |Σkuᵢ|): the linearised response and the book's (169a) criterion are one energy
-// balance, apart from the track's own motion under the spring. A handful of operations on
-// the same inputs: 1e-9.
+// leading spring stretches y_f = x − u_f = Σkuᵢ/(2iωc) + (u_r − u_f)/2. With u_r = u_f e^{−iψ}
+// (equal dips, the trailing wheel later by ψ): Σuᵢ = 2u_f cos(ψ/2) e^{−iψ/2} and
+// u_r − u_f = −2i u_f sin(ψ/2) e^{−iψ/2}, so y_f = −i u_f e^{−iψ/2}[k cos(ψ/2)/(ωc) + sin(ψ/2)].
+// With s = 4W/(πF₀) the friction threshold scale of the critical-speed criterion (W = 2R,
+// F₀ = 2k|u_f||cos(ψ/2)|), k|u_f||cos(ψ/2)|/(ωc) = X/s, hence
+//   |y_f| = |X/s + σd|,  |y_r| = |X/s − σd|,  d = |u_r − u_f|/2,  σ = sign(sin ψ):
+// the linearised response and the book's (169a) criterion are one energy balance, apart from
+// the track's own motion under the springs. A handful of operations on the same inputs: 1e-9.
 TEST(ElementDeflection, FrictionLinearisedAtXIsTheResonanceCriterionPlusTheTrackMotion) {
   const BounceOnly w;
   for (double dip : {0.005, 0.020, 0.040}) {
@@ -97,14 +99,16 @@ TEST(ElementDeflection, FrictionLinearisedAtXIsTheResonanceCriterionPlusTheTrack
     for (const WheelInput& in : load.wheels)
       u[w.system.track_inputs[in.track_input].element] +=
           in.amplitude(2) * std::exp(std::complex<double>(0.0, -omega * in.delay_s));
-    const double half_difference = std::abs(u[1] - u[0]) / 2.0;
+    ASSERT_NEAR(std::abs(u[0]), std::abs(u[1]), 1e-15 * std::abs(u[0]));  // equal dips
+    const double d = std::abs(u[1] - u[0]) / 2.0;
+    const double sigma = std::sin(std::arg(u[0] / u[1])) >= 0.0 ? 1.0 : -1.0;
     for (double x : {0.010, 0.030}) {
-      const auto curve = element_deflection_curves(w.system, w.modes, *source, 0, {0}, {c.speed}, {x, x});
-      const double a = curve[0].amplitudes[0];
+      const auto curves = element_deflection_curves(w.system, w.modes, *source, 0, {0, 1}, {c.speed}, {x, x});
       const double body = x / c.friction_threshold_scale;
-      EXPECT_NEAR(std::min(std::abs(a - std::abs(body - half_difference)), std::abs(a - (body + half_difference))), 0.0,
-                  1e-9 * a)
-          << "dip " << dip << ", X " << x;
+      EXPECT_NEAR(curves[0].amplitudes[0], std::abs(body + sigma * d), 1e-9 * curves[0].amplitudes[0])
+          << "leading spring, dip " << dip << ", X " << x;
+      EXPECT_NEAR(curves[1].amplitudes[0], std::abs(body - sigma * d), 1e-9 * curves[1].amplitudes[0])
+          << "trailing spring, dip " << dip << ", X " << x;
     }
   }
 }

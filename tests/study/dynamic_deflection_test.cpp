@@ -117,17 +117,51 @@ TEST(PermissibleDeflection, LimitsFollowTheBookByElementAndStage) {
   EXPECT_EQ(l[2].stage, 1);  // bolster coils: 30 mm on their quarter
   EXPECT_NEAR(l[2].share, 0.25, 1e-12);
 
+  // Korotkevich's axle-box figures are for cars without bogies: on the bogie car only the
+  // elliptic spring of a passenger car is limited.
   l = limits_of(DeflectionRule::Book::korotkevich, DeflectionRule::Service::passenger, &s);
-  ASSERT_EQ(l.size(), 2u);
-  EXPECT_EQ(l[0].stage, -1);  // the axle-box springs as a whole
-  EXPECT_EQ(l[0].permissible, 0.040);
-  EXPECT_EQ(l[1].stage, 0);  // the elliptic spring
-  EXPECT_EQ(l[1].permissible, 0.030);
-
-  l = limits_of(DeflectionRule::Book::korotkevich, DeflectionRule::Service::freight, &s);
   ASSERT_EQ(l.size(), 1u);
-  EXPECT_EQ(l[0].permissible, 0.025);
+  EXPECT_EQ(l[0].element, 1);
+  EXPECT_EQ(l[0].stage, 0);
+  EXPECT_EQ(l[0].permissible, 0.030);
+  EXPECT_TRUE(limits_of(DeflectionRule::Book::korotkevich, DeflectionRule::Service::freight, &s).empty());
+
+  // The two-axle wagon has no bogies: its four axle-box springs as a whole.
+  const LinearSystem wagon = assemble(load_vehicle(write_temp("wagon.toml", kWagon)), DofSet::vertical);
+  DeflectionRule rule;
+  rule.book = DeflectionRule::Book::korotkevich;
+  for (auto [service, limit] : {std::pair{DeflectionRule::Service::passenger, 0.040},
+                                std::pair{DeflectionRule::Service::freight, 0.025}}) {
+    rule.service = service;
+    l = study::permissible_deflections(rule, wagon);
+    ASSERT_EQ(l.size(), 4u);
+    for (const auto& x : l) {
+      EXPECT_EQ(x.stage, -1);
+      EXPECT_EQ(x.permissible, limit);
+    }
+  }
   EXPECT_NE(l[0].basis.find("bogie-less freight cars 25 mm"), std::string::npos);
+}
+
+// A coil in series with a leaf spring takes the whole stretch while the leaves stick, so its
+// check takes share 1, the bound; the leaf stage itself keeps its share k_element/k_leaf.
+// And a stage with no static load (0.2 f_st = 0) is not checked rather than checked against 0.
+TEST(PermissibleDeflection, SeriesFrictionAndZeroLoad) {
+  std::string car = kBogieCar;
+  const std::string bolster = R"(vertical = [{ kind = "elliptic", stiffness = "1 MN/m" }, { kind = "coil", stiffness = "1.5 MN/m", count = 2 }])";
+  car.replace(car.find(bolster), bolster.size(),
+              R"(vertical = [{ kind = "Elliptic", stiffness = "1 MN/m", relative_friction = 0.1 }, { kind = "coil", stiffness = "1.5 MN/m", count = 2 }])");
+  LinearSystem s = assemble(load_vehicle(write_temp("car.toml", car)), DofSet::vertical);
+  DeflectionRule rule;
+  rule.book = DeflectionRule::Book::lehner;
+  auto l = study::permissible_deflections(rule, s);
+  ASSERT_EQ(l.size(), 3u);
+  EXPECT_NEAR(l[1].share, 0.75, 1e-12);  // "Elliptic": kinds are matched whatever their case
+  EXPECT_EQ(l[2].share, 1.0);
+  s.element_loads[1] = 0.0;
+  l = study::permissible_deflections(rule, s);
+  ASSERT_EQ(l.size(), 2u);  // the elliptic stage's 0.2 f_st is 0: left out
+  EXPECT_EQ(l[1].stage, 1);
 }
 
 TEST(PermissibleDeflection, FreightLeafSpringsAreLimitedOnlyForFreightCars) {
@@ -162,11 +196,18 @@ TEST(PermissibleDeflection, StudyTableIsChecked) {
   e = study_error("[permissible_dynamic_deflection]\nelements = { \"bolster\" = \"30 mm\" }\n");
   EXPECT_EQ(e.line(), 6) << e.what();
   EXPECT_NE(e.message().find("variant 'base': no element 'bolster' with vertical springs"), std::string::npos) << e.what();
+  // A lateral scene moves no spring vertically: refused, not checked as "kept".
+  e = study_error("[permissible_dynamic_deflection]\nrule = \"lehner\"\n[[variant]]\nname = \"sway\"\n"
+                  "scene_overrides = { \"scene.dofs\" = \"lateral\" }\n");
+  EXPECT_EQ(e.line(), 5) << e.what();
+  EXPECT_NE(e.message().find("variant 'sway': the scene's dofs = \"lateral\" has no bounce or pitch"), std::string::npos)
+      << e.what();
 }
 
 // Example 3's wagon on 10 m rails (two-axle digest): friction φf = 4.3 mm stops the
-// resonances of a 5 mm joint dip; at 40 mm it no longer stops the bounce resonance (the
-// threshold of (169a) is 2a ≈ 13 mm), which then grows without limit.
+// resonances of a 5 mm joint dip; at 40 mm it stops neither the pitch resonance (threshold
+// 2a = 8φf/(π|sin(π·2a1/L)|) = 11.7 mm) nor the bounce one (29.9 mm), which then grow without
+// limit.
 TEST(PermissibleDeflection, ResonanceFrictionDoesNotStopExceedsTheLimit) {
   const Study s = load_study(study_file(R"(
 [[variant]]
@@ -192,8 +233,9 @@ max_dynamic_deflection_ratio = 1
   const double ratio = *metric_value(base, "dynamic_deflection_ratio");
   EXPECT_GT(ratio, 0.0);
   EXPECT_LT(ratio, 1.0);
-  // The ratio is the worst check's deflection over its limit, and the element metric its deflection.
-  EXPECT_DOUBLE_EQ(*metric_value(base, "dynamic_deflection:front left spring"), base.deflections[0].deflection);
+  // The ratio is the worst check's deflection over its limit; per element, that element's.
+  EXPECT_DOUBLE_EQ(*metric_value(base, "dynamic_deflection_ratio:front left spring"),
+                   base.deflections[0].deflection / base.deflections[0].permissible);
 
   const VariantResult& deep = results[1];
   bool bounce_not_stopped = false;
@@ -228,6 +270,62 @@ max_dynamic_deflection_ratio = 1
   EXPECT_EQ(back[0].deflections[1].deflection, base.deflections[1].deflection);
   EXPECT_EQ(back[0].deflections[1].basis, base.deflections[1].basis);
   EXPECT_EQ(back[1].deflections[0].unbounded, true);
+}
+
+// Springs the rule does not limit keep their friction: a limit of the study's own on one spring
+// equal to Lehner's 0.4 f_st gives that spring exactly the deflection Lehner's check of all four
+// gives it (the other three are linearised at the same stretch), not an undamped resonance.
+TEST(PermissibleDeflection, UnlimitedSpringsKeepTheirFriction) {
+  const Study lehner = load_study(study_file("[permissible_dynamic_deflection]\nrule = \"lehner\"\nservice = \"freight\"\n"));
+  const Study own = load_study(study_file("[permissible_dynamic_deflection]\nelements = { \"front left spring\" = \"22.88 mm\" }\n"));
+  const VariantResult a = evaluate_variant(lehner.variants[0], 0, lehner.deflection_rule);
+  const VariantResult b = evaluate_variant(own.variants[0], 0, own.deflection_rule);
+  ASSERT_TRUE(a.ok() && b.ok());
+  ASSERT_EQ(b.deflections.size(), 1u);
+  EXPECT_FALSE(b.deflections[0].unbounded);
+  // 0.4 × 57.2 mm and 22.88 mm differ in the last bits only: so do the dampers and deflections.
+  EXPECT_NEAR(b.deflections[0].deflection, a.deflections[0].deflection, 1e-12 * a.deflections[0].deflection);
+  EXPECT_LT(*metric_value(b, "dynamic_deflection_ratio"), 1.0);
+}
+
+// The scene's own friction model (equivalent viscous at 5 mm) gives finite curves, but a
+// resonance that friction does not stop still exceeds every limit: rule 1 looks at the
+// friction criterion and the vehicle's own damping, not at the scene's linearisation.
+TEST(PermissibleDeflection, SceneFrictionAmplitudeDoesNotHideAGrowingResonance) {
+  const Study s = load_study(study_file(R"(
+[[variant]]
+name = "deep joints"
+scene_overrides = { "source[0].dip_depth" = "40 mm" }
+[permissible_dynamic_deflection]
+rule = "lehner"
+service = "freight"
+)"));
+  Study with_friction = s;
+  for (auto& v : with_friction.variants) v.scene.friction_reference_amplitude = 0.005;
+  const VariantResult deep = evaluate_variant(with_friction.variants[1], 1, s.deflection_rule);
+  ASSERT_TRUE(deep.ok()) << deep.failure;
+  for (const auto& d : deep.deflections) EXPECT_TRUE(d.unbounded) << d.element;
+  const VariantResult base = evaluate_variant(with_friction.variants[0], 0, s.deflection_rule);
+  for (const auto& d : base.deflections) EXPECT_TRUE(d.kept()) << d.element;
+}
+
+// Shards carry the rule they were checked by; a merge under another rule is refused.
+TEST(PermissibleDeflection, ShardOfAnotherRuleIsRefused) {
+  const Study checked = load_study(study_file("[permissible_dynamic_deflection]\nrule = \"lehner\"\nservice = \"freight\"\n"));
+  const auto results = evaluate_study(checked, {});
+  std::ostringstream shard;
+  write_shard(shard, checked, {}, results);
+  const std::string file = write_temp("shard.json", shard.str());
+  EXPECT_EQ(read_shard(file, checked).size(), 1u);
+  const Study unchecked = load_study(study_file(""));
+  try {
+    read_shard(file, unchecked);
+    ADD_FAILURE() << "a shard of another rule was merged";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.message().find("checked for permissible dynamic deflections by 'lehner freight', the study asks for 'none'"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(PermissibleDeflection, NotCheckedUnlessTheStudyNamesARule) {
