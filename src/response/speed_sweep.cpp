@@ -10,8 +10,10 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <algorithm>
+#include <array>
 #include <complex>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 
 #include "railmodal/response.hpp"
@@ -23,6 +25,8 @@ namespace {
 
 constexpr double kTwoPi = 6.28318530717958647692;
 constexpr double kAtResonance = 1e-9;  // as in the direct solve: ω² within 1e-9 of λ
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct ModalBasis {
   bool exact = false;
@@ -76,16 +80,30 @@ std::complex<double> reference_input(const LinearSystem& system, const Excitatio
   return (*u)(largest);
 }
 
-constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegrees = 180.0 / kPi;
 
-// Phase of the FRF in degrees: x against the input, +90° per time derivative.
-double phase_deg(std::complex<double> x, std::complex<double> input, ResponseQuantity q) {
-  if (x == 0.0 || input == 0.0) return 0.0;
-  double phase = std::arg(x / input) * kDegrees +
+// Phase of the FRF in degrees from arg x − arg input (rad), +90° per time derivative, in
+// (−180, 180].
+double wrapped_phase_deg(double difference, ResponseQuantity q) {
+  double phase = difference * kDegrees +
                  (q == ResponseQuantity::velocity ? 90.0 : q == ResponseQuantity::acceleration ? 180.0 : 0.0);
   while (phase > 180.0) phase -= 360.0;
   while (phase <= -180.0) phase += 360.0;
   return phase;
+}
+
+// Phase of the FRF in degrees: x against an input of argument `input_arg` (rad). arg x − arg
+// input rather than arg(x/input): one atan2 per speed, no complex division.
+double phase_deg(std::complex<double> x, double input_arg, ResponseQuantity q) {
+  if (x == 0.0) return 0.0;
+  return wrapped_phase_deg(std::arg(x) - input_arg, q);
+}
+
+// The same against the input `scale`·`input` (scale real: its sign turns the input by π).
+double phase_deg(std::complex<double> x, double scale, std::complex<double> input, ResponseQuantity q) {
+  if (input == 0.0 || scale == 0.0) return 0.0;
+  return phase_deg(x, std::arg(input) + (scale < 0.0 ? kPi : 0.0), q);
 }
 
 // Whether an expansion of the response (`at_speed(k, dof, ω, s)`) matches the direct solve at
@@ -158,19 +176,28 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
   using Flags = Eigen::Array<bool, Eigen::Dynamic, 1>;
   using Respond = std::function<void(int k, int dof, const Eigen::ArrayXd& w, const Eigen::ArrayXd& w2,
                                      const Eigen::ArrayXd& scale, Eigen::ArrayXd& re, Eigen::ArrayXd& im, Flags& resonant)>;
+  bool ascending = false;  // the speeds in increasing order (set by `vectorised`)
   auto vectorised = [&](const Respond& respond) {
     const int count = static_cast<int>(speeds.size());
     const Eigen::ArrayXd V = Eigen::Map<const Eigen::ArrayXd>(speeds.data(), count);
+    ascending = std::is_sorted(speeds.begin(), speeds.end());
     if (!(V > 0.0).all() || !V.isFinite().all()) throw std::invalid_argument("amplitude curve: speeds must be positive");
-    // Each output DOF once (displacement and acceleration of one DOF share the response).
+    // Each output DOF once: displacement, velocity and acceleration of one DOF share its
+    // response, its unbounded speeds and its phase (one atan2 per speed and DOF).
     std::vector<int> dofs;
     for (const OutputRequest& o : outputs)
       if (std::find(dofs.begin(), dofs.end(), o.dof) == dofs.end()) dofs.push_back(o.dof);
-    std::vector<Eigen::ArrayXd> sum(outputs.size(), Eigen::ArrayXd::Zero(count));
-    std::vector<Eigen::ArrayXd> first_re(outputs.size(), Eigen::ArrayXd::Zero(count));
-    std::vector<Eigen::ArrayXd> first_im = first_re;
-    Eigen::ArrayXd first_scale = Eigen::ArrayXd::Ones(count);
-    std::vector<Flags> unbounded(outputs.size(), Flags::Constant(count, false));
+    auto slot = [&](int dof) { return static_cast<size_t>(std::find(dofs.begin(), dofs.end(), dof) - dofs.begin()); };
+    bool wants[3] = {false, false, false};
+    for (const OutputRequest& o : outputs) wants[static_cast<int>(o.quantity)] = true;
+    // Σ_k |x_k|·ω_k^p for p = 0, 1, 2 (displacement, velocity, acceleration), per DOF.
+    std::vector<std::array<Eigen::ArrayXd, 3>> sum(dofs.size());
+    for (auto& per_dof : sum)
+      for (int q = 0; q < 3; ++q)
+        if (wants[q]) per_dof[q] = Eigen::ArrayXd::Zero(count);
+    std::vector<Eigen::ArrayXd> first_arg(dofs.size(), Eigen::ArrayXd::Zero(count));  // arg x of harmonic 1, rad
+    std::vector<Flags> unbounded(dofs.size(), Flags::Constant(count, false));
+    Eigen::ArrayXd input_arg = Eigen::ArrayXd::Zero(count);  // arg of s(ω)·input, rad; NaN: no input
     // Work arrays, allocated once: fresh 80 kB arrays per mode cost more in page faults
     // than the arithmetic.
     Eigen::ArrayXd w(count), w2(count), scale(count), re(count), im(count), magnitude(count);
@@ -180,39 +207,36 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
       w = V * (kTwoPi * k / source.wavelength());
       w2 = w.square();
       for (int v = 0; v < count; ++v) scale(v) = source.load_scale(w(v), p.reference_omega);
-      for (int dof : dofs) {
+      if (k == 1) {
+        const double arg = input == 0.0 ? kNaN : std::arg(input);
+        for (int v = 0; v < count; ++v) input_arg(v) = scale(v) == 0.0 ? kNaN : arg + (scale(v) < 0.0 ? kPi : 0.0);
+      }
+      for (size_t d = 0; d < dofs.size(); ++d) {
         re.setZero();
         im.setZero();
         resonant.setConstant(false);
-        respond(k, dof, w, w2, scale, re, im, resonant);
+        respond(k, dofs[d], w, w2, scale, re, im, resonant);
         magnitude = (re.square() + im.square()).sqrt();
-        for (size_t o = 0; o < outputs.size(); ++o) {
-          if (outputs[o].dof != dof) continue;
-          switch (outputs[o].quantity) {
-            case ResponseQuantity::displacement: sum[o] += magnitude; break;
-            case ResponseQuantity::velocity: sum[o] += magnitude * w; break;
-            case ResponseQuantity::acceleration: sum[o] += magnitude * w2; break;
-          }
-          unbounded[o] = unbounded[o] || resonant;
-          if (k == 1) {
-            first_re[o] = re;
-            first_im[o] = im;
-            first_scale = scale;
-          }
-        }
+        if (wants[0]) sum[d][0] += magnitude;
+        if (wants[1]) sum[d][1] += magnitude * w;
+        if (wants[2]) sum[d][2] += magnitude * w2;
+        unbounded[d] = unbounded[d] || resonant;
+        if (k == 1)
+          for (int v = 0; v < count; ++v) first_arg[d](v) = re(v) == 0.0 && im(v) == 0.0 ? kNaN : std::atan2(im(v), re(v));
       }
     }
     for (size_t o = 0; o < outputs.size(); ++o) {
+      const size_t d = slot(outputs[o].dof);
+      const int q = static_cast<int>(outputs[o].quantity);
       curves[o].speeds = speeds;
       curves[o].amplitudes.resize(count);
       curves[o].unbounded.resize(count);
       curves[o].phases_deg.resize(count);
       for (int v = 0; v < count; ++v) {
-        curves[o].unbounded[v] = unbounded[o](v);
-        curves[o].amplitudes[v] = unbounded[o](v) ? 0.0 : sum[o](v);
-        curves[o].phases_deg[v] =
-            unbounded[o](v) ? 0.0
-                            : phase_deg({first_re[o](v), first_im[o](v)}, first_scale(v) * input, outputs[o].quantity);
+        curves[o].unbounded[v] = unbounded[d](v);
+        curves[o].amplitudes[v] = unbounded[d](v) ? 0.0 : sum[d][q](v);
+        const double arg = first_arg[d](v) - input_arg(v);
+        curves[o].phases_deg[v] = unbounded[d](v) || std::isnan(arg) ? 0.0 : wrapped_phase_deg(arg, outputs[o].quantity);
       }
     }
     return curves;
@@ -232,26 +256,47 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
         if (at == 0.0) continue;
         const std::complex<double> a = mode.shape.cast<std::complex<double>>().dot(p.stiffness_part) * at;
         const std::complex<double> b = mode.shape.cast<std::complex<double>>().dot(p.damping_part) * at;
+        if (a == 0.0 && b == 0.0) continue;  // the load does not reach this mode at all
         const double c = basis.damping[j], lambda = mode.eigenvalue;
         const bool moves = std::abs(at) > 1e-9 * mode.shape.cwiseAbs().maxCoeff();
         const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
         const double tolerance = undamped ? kAtResonance * lambda : -1.0;
         const double drive_floor = 1e-12 * std::abs(at) * mode.shape.norm();
-        // One tight loop per mode: the compiler keeps it in registers.
-        for (int v = 0; v < count; ++v) {
-          const double gap = lambda - w2(v);
-          if (std::abs(gap) <= tolerance) {
-            // An undamped mode at its own frequency adds nothing finite: unbounded where
-            // it moves this DOF and the load drives it (as the direct solve decides).
-            if (moves && std::abs(a + std::complex<double>(0.0, w(v)) * b) > drive_floor * (q_norm_k + w(v) * q_norm_c))
-              resonant(v) = true;
-            continue;
+        // One branch-free loop per mode, so that the compiler vectorises it. An undamped mode at
+        // its own frequency adds nothing finite: the gap there becomes ∞ and the term exactly 0
+        // (a select, where a branch or a masked division would stop the vectorising); those
+        // speeds are flagged below.
+        const double* wv = w.data();
+        const double* w2v = w2.data();
+        const double* sv = scale.data();
+        double* rv = re.data();
+        double* iv = im.data();
+        const double ar = a.real(), ai = a.imag(), br = b.real(), bi = b.imag();
+        if (undamped) {
+          for (int v = 0; v < count; ++v) {
+            const double gap = lambda - w2v[v];
+            const double f = sv[v] / (std::abs(gap) <= tolerance ? kInfinity : gap);
+            rv[v] += (ar - wv[v] * bi) * f;
+            iv[v] += (ai + wv[v] * br) * f;
           }
-          const double nr = a.real() - w(v) * b.imag(), ni = a.imag() + w(v) * b.real();
-          const double di = w(v) * c;
-          const double f = scale(v) / (gap * gap + di * di);
-          re(v) += (nr * gap + ni * di) * f;
-          im(v) += (ni * gap - nr * di) * f;
+        } else {
+          for (int v = 0; v < count; ++v) {
+            const double gap = lambda - w2v[v], di = wv[v] * c;
+            const double nr = ar - wv[v] * bi, ni = ai + wv[v] * br;
+            const double f = sv[v] / (gap * gap + di * di);
+            rv[v] += (nr * gap + ni * di) * f;
+            iv[v] += (ni * gap - nr * di) * f;
+          }
+        }
+        // Unbounded where the undamped mode sits at ω, moves this DOF and the load drives it (as
+        // the direct solve decides). ω² rises with the speed, so on a sorted grid those speeds
+        // are one run found by bisection.
+        if (undamped && moves) {
+          const int first = ascending ? static_cast<int>(std::lower_bound(w2v, w2v + count, lambda - tolerance) - w2v) : 0;
+          for (int v = first; v < count && (!ascending || w2v[v] <= lambda + tolerance); ++v)
+            if (std::abs(lambda - w2v[v]) <= tolerance &&
+                std::abs(a + std::complex<double>(0.0, wv[v]) * b) > drive_floor * (q_norm_k + wv[v] * q_norm_c))
+              resonant(v) = true;
         }
       }
       // Massless DOFs also follow their own loads: K_mm⁻¹ Q_m(ω).
@@ -334,7 +379,7 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
           continue;
         }
         sum[o] += std::abs(r.displacement(outputs[o].dof)) * power(outputs[o].quantity, omega);
-        if (k == 1) phase[o] = phase_deg(r.displacement(outputs[o].dof), scale * input, outputs[o].quantity);
+        if (k == 1) phase[o] = phase_deg(r.displacement(outputs[o].dof), scale, input, outputs[o].quantity);
       }
     }
     finish(speed, sum, unbounded, phase);
