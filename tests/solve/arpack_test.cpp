@@ -41,13 +41,27 @@ double subspace_gap(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Ma
   return std::sqrt(std::max(0.0, (outside.transpose() * (M * outside)).diagonal().maxCoeff()));
 }
 
+// Modes i − 1 and i of `r` belong to one cluster: flagged repeated, both rigid-body, or
+// oscillatory within 1e-6 in frequency. Within such a near-cluster the eigenvectors are
+// determined only as a subspace (the Manchester coach has two modes 1.4e-8 apart, not flagged
+// repeated: their individual vectors differ between solvers by ~1e-15/1.4e-8).
+bool same_cluster(const ModalResult& r, int i) {
+  const Mode& p = r.modes[i - 1];
+  const Mode& q = r.modes[i];
+  if (p.kind != q.kind) return false;
+  if (p.kind == ModeKind::rigid_body || (p.repeated && q.repeated)) return true;
+  return p.kind == ModeKind::oscillatory && q.frequency_hz - p.frequency_hz <= 1e-6 * q.frequency_hz;
+}
+
 // ARPACK's first N modes against the dense solver's: kinds, frequencies (or divergence
-// rates) to `tolerance` relative, and the subspace of every cluster of equal eigenvalues.
+// rates) to `tolerance` relative, and the subspace of every cluster of equal or nearly equal
+// eigenvalues.
 template <class Matrix>
 void expect_agree(const ModalResult& a, const ModalResult& d, int count, const Matrix& M, double tolerance,
                   const std::string& what) {
   ASSERT_GE(a.modes.size(), static_cast<size_t>(count)) << what;
   ASSERT_GE(d.modes.size(), a.modes.size()) << what;
+  const int n = static_cast<int>(a.modes.size());
   for (int k = 0; k < count; ++k) {
     const Mode& x = a.modes[k];
     const Mode& y = d.modes[k];
@@ -59,20 +73,22 @@ void expect_agree(const ModalResult& a, const ModalResult& d, int count, const M
       EXPECT_NEAR(x.divergence_rate, y.divergence_rate, tolerance * y.divergence_rate) << what << " mode " << k + 1;
     }
     EXPECT_EQ(x.repeated, y.repeated) << what << " mode " << k + 1;
-    if (!y.repeated && y.kind != ModeKind::rigid_body) {
+    // Names come from the shapes: only a mode alone in its cluster has a shape of its own.
+    const bool alone = (k == 0 || !same_cluster(d, k)) && (k + 1 >= static_cast<int>(d.modes.size()) || !same_cluster(d, k + 1));
+    if (alone && y.kind != ModeKind::rigid_body) {
       EXPECT_EQ(x.name, y.name) << what << " mode " << k + 1;
     }
   }
-  // Clusters: runs of repeated modes (or of rigid-body modes) compared as subspaces.
-  const int n = static_cast<int>(a.modes.size());
+  // Clusters (of the dense reference) compared as subspaces.
   for (int first = 0; first < n;) {
     int last = first + 1;
-    while (last < n && ((a.modes[last].repeated && a.modes[last - 1].repeated &&
-                         a.modes[last].kind == a.modes[last - 1].kind) ||
-                        (a.modes[last].kind == ModeKind::rigid_body && a.modes[first].kind == ModeKind::rigid_body)))
-      ++last;
-    // Eigenvector error ≈ residual / relative gap to the next cluster: ~1e-15 / 1e-3 here;
-    // 1e-7 leaves room for the dense solver's own error on the lowest modes.
+    while (last < n && same_cluster(d, last)) ++last;
+    // A cluster that runs on past the modes ARPACK was asked for is cut: its part is not a
+    // subspace of its own (the frequencies above still agree).
+    if (last == n && n < static_cast<int>(d.modes.size()) && same_cluster(d, n)) break;
+    // Eigenvector error ≈ residual / relative gap to the next cluster: ≥ 1e-6 by construction
+    // (~1e-3 for most), so ≤ 1e-9; 1e-7 leaves room for the dense solver's own error on the
+    // lowest modes.
     EXPECT_LT(subspace_gap(shapes(a, first, last), shapes(d, first, last), M), 1e-7)
         << what << " modes " << first + 1 << "–" << last;
     first = last;
