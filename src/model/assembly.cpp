@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "model/element_stiffness.hpp"
 #include "model/rigid_body.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/linear_system.hpp"
@@ -227,20 +228,6 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
   return loads;
 }
 
-double hanger_stiffness(const SwingHanger& hanger, double load) {
-  // Pendulum: N = load / (λ cos α), bogie-wagons-natural digest §2.8.
-  return load / (hanger.length * std::cos(hanger.inclination));
-}
-
-// Lateral stiffness of an element carrying `load`: the hanger pendulum in series with any
-// lateral spring stages of the same element.
-double lateral_stiffness(const Element& e, double load) {
-  const double spring = series_stiffness(e.lateral_stages);
-  if (!e.hanger) return spring;
-  const double pendulum = hanger_stiffness(*e.hanger, load);
-  return spring > 0.0 ? 1.0 / (1.0 / pendulum + 1.0 / spring) : pendulum;
-}
-
 }  // namespace
 
 LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
@@ -275,7 +262,7 @@ LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
   Eigen::MatrixXd K = K_springs;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
-    if (e.hanger) add_element(maps[k], {0.0, lateral_stiffness(e, loads[k]), 0.0}, &K);
+    if (e.hanger) add_element(maps[k], {0.0, model::lateral_stiffness(e, loads[k]), 0.0}, &K);
   }
 
   // Dead loads: each weight at its CG, each element's static load at its point.
@@ -335,7 +322,7 @@ LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
     if (!e.lower.empty()) continue;
-    const Eigen::Vector3d stiffness(series_stiffness(e.longitudinal_stages), lateral_stiffness(e, loads[k]),
+    const Eigen::Vector3d stiffness(series_stiffness(e.longitudinal_stages), model::lateral_stiffness(e, loads[k]),
                                     series_stiffness(e.vertical_stages));
     const Eigen::Vector3d damping(0.0, e.lateral_damping, e.vertical_damping);
     TrackInput input;

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "model/element_stiffness.hpp"
 #include "railmodal/critical_speed_report.hpp"
 #include "report/document_table.hpp"
 #include "report/svg_chart.hpp"
@@ -145,20 +146,45 @@ Table bodies_table(const CriticalSpeedStudy& st) {
   return t;
 }
 
+// Every element with what the scene's motions feel of it: vertical (with its static load and
+// deflection, and leaf friction), and, where the vehicle has any, lateral stiffness (swing
+// hangers at their static load included), roll/pitch/yaw stiffness and viscous dampers.
 Table elements_table(const CriticalSpeedStudy& st) {
+  const Vehicle& v = st.system.vehicle;
+  const std::vector<double>& loads = st.system.element_loads;
+  bool lateral = false, rotational = false, dampers = false;
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const Element& e = v.elements[k];
+    lateral = lateral || model::lateral_stiffness(e, loads[k]) > 0.0;
+    rotational = rotational || e.rotational_stiffness.cwiseAbs().maxCoeff() > 0.0;
+    dampers = dampers || e.vertical_damping > 0.0 || e.lateral_damping > 0.0;
+  }
   Table t{{"element", "between", "vertical stiffness (kN/m)", "static load (kN)", "static deflection (mm)", "leaf friction φ"},
           {false, false, true, true, true, true},
           {}};
-  const Vehicle& v = st.system.vehicle;
+  if (lateral) t.headers.push_back("lateral stiffness (kN/m)"), t.numeric.push_back(true);
+  if (rotational) t.headers.push_back("roll / pitch / yaw stiffness (kN·m/rad)"), t.numeric.push_back(true);
+  if (dampers) t.headers.push_back("dampers vertical / lateral (kN·s/m)"), t.numeric.push_back(true);
+  auto value = [](double x, int digits) { return x > 0.0 ? significant(x / 1e3, digits) : std::string("—"); };
   for (size_t k = 0; k < v.elements.size(); ++k) {
     const Element& e = v.elements[k];
     const double kz = series_stiffness(e.vertical_stages);
     double phi = 0.0;
     for (const auto& s : e.vertical_stages) phi = std::max(phi, s.relative_friction);
-    t.rows.push_back({e.name, (e.lower.empty() ? "track" : e.lower) + " – " + e.upper,
-                      kz > 0.0 ? significant(kz / 1e3, 5) : "—", significant(st.system.element_loads[k] / 1e3, 5),
-                      kz > 0.0 ? fixed(st.system.element_loads[k] / kz * 1e3, 2) : "—",
-                      phi > 0.0 ? significant(phi, 3) : "—"});
+    std::vector<std::string> row{e.name, (e.lower.empty() ? "track" : e.lower) + " – " + e.upper, value(kz, 5),
+                                 significant(loads[k] / 1e3, 5), kz > 0.0 ? fixed(loads[k] / kz * 1e3, 2) : "—",
+                                 phi > 0.0 ? significant(phi, 3) : "—"};
+    if (lateral) row.push_back(value(model::lateral_stiffness(e, loads[k]), 5));
+    if (rotational)
+      row.push_back(e.rotational_stiffness.cwiseAbs().maxCoeff() > 0.0
+                        ? value(e.rotational_stiffness.x(), 4) + " / " + value(e.rotational_stiffness.y(), 4) + " / " +
+                              value(e.rotational_stiffness.z(), 4)
+                        : "—");
+    if (dampers)
+      row.push_back(e.vertical_damping > 0.0 || e.lateral_damping > 0.0
+                        ? value(e.vertical_damping, 4) + " / " + value(e.lateral_damping, 4)
+                        : "—");
+    t.rows.push_back(row);
   }
   return t;
 }
