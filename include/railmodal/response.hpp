@@ -156,6 +156,11 @@ struct DeflectionCurve {
   int element = 0;                 ///< index into vehicle.elements
   std::vector<double> speeds;      ///< m/s
   std::vector<double> amplitudes;  ///< m; 0 where unbounded
+  /// N: the force through the element's spring stages, Σ_k |(k_e + iω c_k) y_k| with k_e
+  /// their series stiffness and c_k the linearised leaf friction, which acts inside a stage
+  /// and so passes through the others (a coil in series with a leaf spring deflects by this
+  /// over its own stiffness); 0 where unbounded
+  std::vector<double> spring_forces;
   std::vector<bool> unbounded;     ///< an undamped resonance that stretches the element
 };
 /// One curve per element, from one direct solve per speed and harmonic. Leaf friction of

@@ -168,7 +168,7 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
 std::optional<double> metric_value(const VariantResult& result, const std::string& metric);
 /// "dynamic_deflection_ratio" is the largest dynamic deflection over its permissible value
 /// (≤ 1: the design keeps the book's limits; +∞ for an unbounded resonance) and
-/// "dynamic_deflection:<element>" that element's largest deflection, m.
+/// "dynamic_deflection_ratio:<element>" the same for one element.
 /// Whether `metric` names a metric (after aliases: "critical_speed" is
 /// "lowest_critical_speed", "bounce_period" is "period:body bounce", "bounce_critical_speed"
 /// is "critical_speed:body bounce").

@@ -154,9 +154,9 @@ std::vector<std::string> verdict(const Comparison& c, const Writer& w) {
                            fixed(worst->speed * kKmh, 1) + " km/h."));
     else
       out.push_back(w.text(std::string(worst->kept() ? "The winner keeps" : "The winner exceeds") +
-                           " the permissible dynamic deflections: at worst " + fixed(worst->deflection * 1000.0, 1) +
-                           " mm of " + fixed(worst->permissible * 1000.0, 1) + " mm (" + worst->element + ", " +
-                           worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h."));
+                           " the permissible dynamic deflections: at worst " +
+                           significant(worst->deflection / worst->permissible, 3) + " of the limit (" + worst->element +
+                           ", " + worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h."));
   }
   if (failed > 0) {
     for (const RankedVariant& v : c.variants)
@@ -515,16 +515,17 @@ std::string rule_text(const DeflectionRule& rule) {
   else if (rule.book == DeflectionRule::Book::lehner)
     s = std::string("Lehner's limits for ") + to_string(rule.service) + " cars (springs digest §5)";
   if (!rule.element_limits.empty()) s += std::string(s.empty() ? "L" : ", with l") + "imits the study sets on named elements";
-  return s + ". Each check is the largest dynamic deflection over every source and speed of the scene. A "
-             "resonance that leaf friction does not stop is unbounded; otherwise friction is linearised at the "
-             "limit itself (docs/studies.md, \"Permissible dynamic deflections\").";
+  return s + ". Each check is the largest dynamic deflection over every source and speed of the scene against "
+             "its limit. A resonance that leaf friction does not stop is unbounded; otherwise friction is "
+             "linearised at the limit itself, so the ratio decides, and with friction the deflection behind it is "
+             "not the amplitude the spring reaches (docs/studies.md, \"Permissible dynamic deflections\").";
 }
 
 // The checks of the base and the best variants: one row per limit (basis), for the element
 // that comes closest to it (or exceeds it most), with how many elements share that limit.
 Table deflection_table(const Comparison& c) {
   Table t;
-  t.headers = {"variant", "limit", "permissible", "worst element", "largest dynamic deflection", "at", "kept"};
+  t.headers = {"variant", "limit", "permissible", "worst element", "deflection / permissible", "at", "kept"};
   t.numeric = {false, false, true, false, true, true, false};
   std::vector<const RankedVariant*> shown;
   if (const RankedVariant* base = find_base(c)) shown.push_back(base);
@@ -549,7 +550,7 @@ Table deflection_table(const Comparison& c) {
       t.rows.push_back({r.name, basis, fixed(worst->permissible * 1000.0, 1) + " mm",
                         worst->element + stage + (count > 1 ? ", worst of " + std::to_string(count) : ""),
                         worst->unbounded ? "unbounded: a resonance friction does not stop"
-                                         : fixed(worst->deflection * 1000.0, 2) + " mm",
+                                         : significant(worst->deflection / worst->permissible, 3),
                         fixed(worst->speed * kKmh, 1) + " km/h, source " + std::to_string(worst->source + 1),
                         worst->kept() ? "yes" : "no"});
     }

@@ -368,6 +368,11 @@ std::vector<VariantResult> read_shard(std::istream& in, const std::string& file,
                                        study.name + "' (" + std::to_string(study.variants.size()) + " variants)");
     // A shard evaluated under another deflection rule would merge into a ranking it was not
     // checked for.
+    if (!j.contains("permissible_dynamic_deflection"))
+      for (const auto& r : j.at("results"))
+        if (r.contains("dynamic_deflections"))
+          throw InputError(file, 0, 0, "a shard from an older railmodal that does not record its deflection rule: "
+                                       "evaluate it again");
     const std::string rule = j.value("permissible_dynamic_deflection", "none");
     if (rule != rule_text(study.deflection_rule))
       throw InputError(file, 0, 0, "a shard checked for permissible dynamic deflections by '" + rule +

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "railmodal/response.hpp"
+#include "response/friction_damping.hpp"
 
 namespace railmodal {
 
@@ -54,6 +55,7 @@ std::vector<DeflectionCurve> element_deflection_curves(const LinearSystem& syste
     c.element = e;
     c.speeds = speeds;
     c.amplitudes.assign(speeds.size(), 0.0);
+    c.spring_forces.assign(speeds.size(), 0.0);
     c.unbounded.assign(speeds.size(), false);
     curves.push_back(c);
   }
@@ -79,11 +81,19 @@ std::vector<DeflectionCurve> element_deflection_curves(const LinearSystem& syste
         if (r.unbounded && stretched_by_resonance(r, modes, row)) {
           c.unbounded[v] = true;
           c.amplitudes[v] = 0.0;
+          c.spring_forces[v] = 0.0;
           continue;
         }
         const std::complex<double> stretch =
             (row.cast<std::complex<double>>() * r.displacement).value() - track_under(system, load, c.element);
         c.amplitudes[v] += std::abs(stretch);
+        const double friction = friction_linearised && static_cast<size_t>(c.element) < friction_reference_stretch.size()
+                                    ? response::equivalent_friction_damping(system, c.element, omega,
+                                                                            friction_reference_stretch[c.element])
+                                    : 0.0;
+        c.spring_forces[v] +=
+            std::abs(std::complex<double>(series_stiffness(system.vehicle.elements[c.element].vertical_stages), omega * friction) *
+                     stretch);
       }
     }
   }

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "model/rigid_body.hpp"
+#include "response/friction_damping.hpp"
 #include "railmodal/response.hpp"
 
 namespace railmodal {
@@ -63,21 +64,31 @@ LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double
                                           std::vector<double>(system.vehicle.elements.size(), stretch_amplitude));
 }
 
+double response::equivalent_friction_damping(const LinearSystem& system, std::size_t element, double omega,
+                                             double stretch) {
+  if (!(omega > 0.0) || !(stretch > 0.0)) return 0.0;
+  double c = 0.0;
+  for_each_friction_stage(system, [&](size_t k, const Element&, double friction, double share) {
+    // With the element stretching X the stage stretches share·X and friction dissipates
+    // 4R·share·X per cycle; a damper across the element dissipates πcωX²: c = 4R·share/(πωX).
+    if (k == element) c += 4.0 * friction * share / (kPi * omega * stretch);
+  });
+  return c;
+}
+
 LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega,
                                               const std::vector<double>& stretch_per_element) {
   if (!(omega > 0.0)) throw std::invalid_argument("equivalent friction damping needs a positive frequency");
   LinearSystem out = system;
-  for_each_friction_stage(system, [&](size_t k, const Element& e, double friction, double share) {
-    const double stretch = k < stretch_per_element.size() ? stretch_per_element[k] : 0.0;
-    if (!(stretch > 0.0)) return;
-    // With the element stretching X the stage stretches share·X and friction dissipates
-    // 4R·share·X per cycle; a damper across the element dissipates πcωX²: c = 4R·share/(πωX).
-    const double c = 4.0 * friction * share / (kPi * omega * stretch);
-    const Eigen::RowVectorXd row = vertical_stretch_row(system, e);
+  const Vehicle& v = system.vehicle;
+  for (size_t k = 0; k < v.elements.size() && k < stretch_per_element.size(); ++k) {
+    const double c = response::equivalent_friction_damping(system, k, omega, stretch_per_element[k]);
+    if (c == 0.0) continue;
+    const Eigen::RowVectorXd row = vertical_stretch_row(system, v.elements[k]);
     out.damping += c * row.transpose() * row;
     for (auto& input : out.track_inputs)
       if (input.element == static_cast<int>(k)) input.load_per_velocity.col(2) += c * row.transpose();
-  });
+  }
   return out;
 }
 

@@ -88,37 +88,32 @@ bool group_stretches(const ModalResult& modes, const CriticalSpeed& cs, const Ei
   return false;
 }
 
-// The largest deflection of one element for one source near grid point v (a local maximum):
-// golden-section search between its neighbours, to 1e-6 of the speed, as the damped peaks of
-// the amplitude curves are refined. Returns (speed, deflection); the grid point when the
-// bracket holds an unbounded speed.
-std::pair<double, double> refine_deflection(const CriticalSpeedStudy& study, const ExcitationSource& source, int s,
-                                            int element, const std::vector<double>& reference,
-                                            const DeflectionCurve& curve, size_t v) {
-  std::pair<double, double> best{curve.speeds[v], curve.amplitudes[v]};
-  if (v == 0 || v + 1 >= curve.speeds.size() || curve.unbounded[v - 1] || curve.unbounded[v + 1]) return best;
+// The response of one element for one source at the largest point near grid point v (a local
+// maximum of its stretch): golden-section search between the neighbours, to 1e-6 of the
+// speed, as the damped peaks of the amplitude curves are refined. Returns the curve at that
+// one speed (unbounded if the search met an undamped speed).
+DeflectionCurve refine_deflection(const CriticalSpeedStudy& study, const ExcitationSource& source, int s, int element,
+                                  const std::vector<double>& reference, const DeflectionCurve& curve, size_t v) {
   auto at = [&](double speed) {
-    const DeflectionCurve c =
-        element_deflection_curves(study.system, study.modes, source, s, {element}, {speed}, reference).front();
-    return c.unbounded[0] ? -1.0 : c.amplitudes[0];
+    return element_deflection_curves(study.system, study.modes, source, s, {element}, {speed}, reference).front();
   };
+  auto value = [](const DeflectionCurve& c) { return c.unbounded[0] ? -1.0 : c.amplitudes[0]; };
   constexpr double kGolden = 0.61803398874989484820;
   double low = curve.speeds[v - 1], high = curve.speeds[v + 1];
   double x1 = high - kGolden * (high - low), x2 = low + kGolden * (high - low);
-  double f1 = at(x1), f2 = at(x2);
-  while (high - low > 1e-6 * best.first) {
-    if (f1 < 0.0 || f2 < 0.0) return best;  // an undamped speed inside: keep the grid's value
-    if (f1 >= f2) {
-      high = x2, x2 = x1, f2 = f1;
-      x1 = high - kGolden * (high - low), f1 = at(x1);
+  DeflectionCurve c1 = at(x1), c2 = at(x2);
+  while (high - low > 1e-6 * curve.speeds[v] && value(c1) >= 0.0 && value(c2) >= 0.0) {
+    if (value(c1) >= value(c2)) {
+      high = x2, x2 = x1, c2 = c1;
+      x1 = high - kGolden * (high - low), c1 = at(x1);
     } else {
-      low = x1, x1 = x2, f1 = f2;
-      x2 = low + kGolden * (high - low), f2 = at(x2);
+      low = x1, x1 = x2, c1 = c2;
+      x2 = low + kGolden * (high - low), c2 = at(x2);
     }
   }
-  for (const auto& [x, f] : {std::pair{x1, f1}, std::pair{x2, f2}})
-    if (f > best.second) best = {x, f};
-  return best;
+  if (value(c1) < 0.0) return c1;
+  if (value(c2) < 0.0) return c2;
+  return value(c1) >= value(c2) ? c1 : c2;
 }
 
 // The largest dynamic deflection of every element or stage the rule limits, over every source
@@ -133,12 +128,17 @@ std::pair<double, double> refine_deflection(const CriticalSpeedStudy& study, con
 //     amplitude X* ≤ X_lim. With the track's own motion under the spring (every axle-box
 //     spring) the stretch at resonance is |X_lim/s ± |u_r − u_f|/2| (tests/response/
 //     element_deflection_test.cpp): a linearised check, not an exact one. The figure reported
-//     is A(X_lim): it decides the verdict, it is not the amplitude the spring reaches.
+//     is A(X_lim): it decides the verdict, it is not the amplitude the spring reaches. Every
+//     check of an element is evaluated at the element's first limit; a stage in series with
+//     leaf friction deflects by the springs' force (friction included) over its stiffness.
 // Friction of an element without a limit is linearised at the largest X_lim of the limited
-// elements (the least damping any limited element assumes); the vehicle's dampers act as
-// they are. Grid maxima are refined by golden-section search.
+// elements (the least damping any limited element assumes; too much for such a spring if it
+// moves more than that); the vehicle's dampers act as they are. Grid maxima are refined by
+// golden-section search.
 void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& study, VariantResult* r) {
   r->deflections_checked = true;
+  if (study.scene.dofs == DofSet::lateral)  // load_study refuses this; a direct call fails the variant
+    throw std::invalid_argument("permissible dynamic deflections need the vertical motions: the scene's dofs are lateral");
   const LinearSystem& system = study.system;
   const std::vector<study::PermissibleDeflection> limits = study::permissible_deflections(rule, system);
   if (limits.empty()) return;
@@ -170,32 +170,41 @@ void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& stu
         c.unbounded = true, c.speed = cs.speed, c.source = cs.source;
     }
   }
-  // Rule 2: the largest finite deflection of each element per source, refined, then by stage.
+  // Rule 2: the largest finite deflection of each check per source: on the grid and at every
+  // local maximum of the element's stretch above 1 % of its largest, refined.
   const std::vector<double> speeds = study.curves.empty() ? std::vector<double>{} : study.curves.front().speeds;
   for (size_t s = 0; s < study.scene.sources.size() && !speeds.empty(); ++s) {
     const ExcitationSource& source = *study.scene.sources[s];
     const std::vector<DeflectionCurve> curves =
         element_deflection_curves(system, study.modes, source, static_cast<int>(s), elements, speeds, reference);
     for (const DeflectionCurve& curve : curves) {
-      size_t peak = speeds.size();
-      bool unbounded = false;
-      for (size_t v = 0; v < speeds.size(); ++v) {
-        if (curve.unbounded[v] && !unbounded) {
-          unbounded = true;
-          for (size_t i = 0; i < limits.size(); ++i)
-            if (limits[i].element == curve.element && !r->deflections[i].unbounded)
-              r->deflections[i].unbounded = true, r->deflections[i].speed = speeds[v],
-              r->deflections[i].source = static_cast<int>(s);
+      // Every check of this element sees the curve at these speeds (one each, or the refined one).
+      auto take = [&](const DeflectionCurve& at, size_t v, double speed) {
+        for (size_t i = 0; i < limits.size(); ++i) {
+          const auto& l = limits[i];
+          VariantResult::DeflectionCheck& c = r->deflections[i];
+          if (l.element != curve.element || c.unbounded) continue;
+          if (at.unbounded[v]) {
+            c.unbounded = true, c.speed = speed, c.source = static_cast<int>(s);
+            continue;
+          }
+          const double d = l.force_stiffness > 0.0 ? at.spring_forces[v] / l.force_stiffness : l.share * at.amplitudes[v];
+          if (d > c.deflection) c.deflection = d, c.speed = speed, c.source = static_cast<int>(s);
         }
-        if (!curve.unbounded[v] && (peak == speeds.size() || curve.amplitudes[v] > curve.amplitudes[peak])) peak = v;
+      };
+      double largest = 0.0;
+      for (size_t v = 0; v < speeds.size(); ++v) {
+        take(curve, v, speeds[v]);
+        if (!curve.unbounded[v]) largest = std::max(largest, curve.amplitudes[v]);
       }
-      if (unbounded || peak == speeds.size()) continue;
-      const auto [speed, amplitude] =
-          refine_deflection(study, source, static_cast<int>(s), curve.element, reference, curve, peak);
-      for (size_t i = 0; i < limits.size(); ++i) {
-        VariantResult::DeflectionCheck& c = r->deflections[i];
-        if (limits[i].element == curve.element && !c.unbounded && limits[i].share * amplitude > c.deflection)
-          c.deflection = limits[i].share * amplitude, c.speed = speed, c.source = static_cast<int>(s);
+      for (size_t v = 1; v + 1 < speeds.size(); ++v) {
+        const bool peak = !curve.unbounded[v - 1] && !curve.unbounded[v] && !curve.unbounded[v + 1] &&
+                          curve.amplitudes[v] >= curve.amplitudes[v - 1] && curve.amplitudes[v] > curve.amplitudes[v + 1] &&
+                          curve.amplitudes[v] >= 0.01 * largest;
+        if (!peak) continue;
+        const DeflectionCurve refined =
+            refine_deflection(study, source, static_cast<int>(s), curve.element, reference, curve, v);
+        take(refined, 0, refined.speeds[0]);
       }
     }
   }

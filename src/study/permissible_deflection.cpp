@@ -45,16 +45,13 @@ std::string lower_case(std::string word) {
   return word;
 }
 
-// The share of the element's stretch that one stage takes. In series every stage carries the
-// same force, so a stage deflects k_element/k_stage of it, while its leaves slide. A stage in
-// series with a leaf-friction stage takes the whole stretch while the leaves stick: the bound
-// is what is checked (1).
-double stage_share(const Element& e, size_t stage, double k_element) {
-  bool friction_elsewhere = false;
+// Whether another stage of the element has leaf friction: friction acts inside that stage, so
+// its force passes through this one, which then deflects by the force over its own stiffness
+// (its share of the stretch would leave the friction force out).
+bool friction_elsewhere(const Element& e, size_t stage) {
   for (size_t s = 0; s < e.vertical_stages.size(); ++s)
-    friction_elsewhere = friction_elsewhere || (s != stage && e.vertical_stages[s].relative_friction > 0.0);
-  if (friction_elsewhere) return 1.0;
-  return k_element / (e.vertical_stages[stage].stiffness * e.vertical_stages[stage].count);
+    if (s != stage && e.vertical_stages[s].relative_friction > 0.0) return true;
+  return false;
 }
 
 }  // namespace
@@ -75,7 +72,7 @@ std::vector<PermissibleDeflection> permissible_deflections(const DeflectionRule&
   const bool passenger = rule.service == DeflectionRule::Service::passenger;
   // Korotkevich's axle-box limits are for cars without bogies: every spring stands on the track.
   bool bogieless = true;
-  for (const Element& e : v.elements) bogieless = bogieless && e.lower.empty();
+  for (const Element& e : v.elements) bogieless = bogieless && (e.lower.empty() || e.vertical_stages.empty());
   std::vector<PermissibleDeflection> out;
   // A limit of 0 (a stage with no static load, so 0.2 f_st = 0) checks nothing meaningful.
   auto add = [&](const PermissibleDeflection& limit) {
@@ -96,21 +93,26 @@ std::vector<PermissibleDeflection> permissible_deflections(const DeflectionRule&
     for (size_t s = 0; s < e.vertical_stages.size(); ++s) {
       const SpringStage& stage = e.vertical_stages[s];
       const std::string kind = lower_case(stage.kind);
-      const double share = stage_share(e, s, k_element);
+      // In series every stage carries the element's force: a stage deflects k_element/k_stage
+      // of the element's stretch.
+      const double share = k_element / (stage.stiffness * stage.count);
+      const double by_force = friction_elsewhere(e, s) ? stage.stiffness * stage.count : 0.0;
       const int index = static_cast<int>(s);
       if (rule.book == DeflectionRule::Book::korotkevich) {
         // Korotkevich (1935), p. 97: elliptic springs of passenger cars.
         if (passenger && kind == "elliptic")
-          add({element, index, 0.030, share, "Korotkevich: elliptic springs of passenger cars 30 mm"});
+          add({element, index, 0.030, share, "Korotkevich: elliptic springs of passenger cars 30 mm", by_force});
       } else if (rule.book == DeflectionRule::Book::lehner) {
         // Lehner, pp. 150–153: by spring kind; leaf springs only for freight cars.
         const double f_st = static_deflection(stage, system.element_loads[k]);
         if (kind == "coil")
-          add({element, index, 0.030, share, "Lehner: coil springs 30 mm"});
+          add({element, index, 0.030, share, "Lehner: coil springs 30 mm", by_force});
         else if (kind == "elliptic")
-          add({element, index, 0.2 * f_st, share, "Lehner: elliptic springs 0.2 f_st = 0.2 × " + millimetres(f_st)});
+          add({element, index, 0.2 * f_st, share, "Lehner: elliptic springs 0.2 f_st = 0.2 × " + millimetres(f_st),
+               by_force});
         else if (kind == "leaf" && !passenger)
-          add({element, index, 0.4 * f_st, share, "Lehner: freight leaf springs 0.4 f_st = 0.4 × " + millimetres(f_st)});
+          add({element, index, 0.4 * f_st, share, "Lehner: freight leaf springs 0.4 f_st = 0.4 × " + millimetres(f_st),
+               by_force});
       }
     }
     // Korotkevich: the axle-box springs as a whole, of 2- and 3-axle passenger cars and of

@@ -16,6 +16,9 @@ struct PermissibleDeflection {
   double permissible = 0.0;  ///< m, on the stage's (or element's) own deflection
   double share = 1.0;       ///< the stage's deflection per unit of element stretch
   std::string basis;        ///< "Lehner: coil springs 30 mm", "Korotkevich: …", "study: …"
+  /// > 0 (N/m): a stage in series with a leaf-friction stage, which deflects by the force
+  /// through the springs (friction included) over this stiffness rather than by its share.
+  double force_stiffness = 0.0;
 };
 
 /// Every limit of `rule` on the vehicle of `system` (its element loads give each stage's

@@ -44,7 +44,9 @@ Comparison rank_variants(const Study& study, std::vector<VariantResult> results)
     if (r.ok()) {
       for (const RankingConstraint& c : ranking.constraints) {
         const std::optional<double> value = metric_value(r, c.metric);
-        if (!value) v.violations.push_back("no " + c.metric);
+        if (!value && r.deflections_checked && c.metric.rfind("dynamic_deflection_ratio", 0) == 0)
+          v.violations.push_back("no " + c.metric + ": no spring of this variant falls under the deflection rule");
+        else if (!value) v.violations.push_back("no " + c.metric);
         else if (c.min && *value < *c.min) v.violations.push_back(c.metric + " " + shown(c.metric, *value) + " < " + shown(c.metric, *c.min));
         else if (c.max && *value > *c.max) v.violations.push_back(c.metric + " " + shown(c.metric, *value) + " > " + shown(c.metric, *c.max));
       }

@@ -58,6 +58,25 @@ TEST(ElementDeflection, OneDofWagonStretchIsBodyMinusTrack) {
   }
 }
 
+// The force through the springs: |(k + iωc)·y| with c = 4R/(πωX) the linearised friction of
+// the one leaf stage (share 1), R = φ·P (springs digest §2.3): written out from the element's
+// data. Off resonance, where both are plain products: 1e-12.
+TEST(ElementDeflection, SpringForceCarriesTheLinearisedFriction) {
+  const BounceOnly w;
+  const auto source = joints(0.005);
+  const double x = 0.02, speed = 12.0;
+  const auto curve = element_deflection_curves(w.system, w.modes, *source, 0, {0}, {speed}, {x, x}).front();
+  const Element& e = w.system.vehicle.elements[0];
+  const double k = series_stiffness(e.vertical_stages);
+  const double omega = 2.0 * kPi * source->frequency_hz(speed, 1);
+  const double c = 4.0 * e.vertical_stages[0].relative_friction * w.system.element_loads[0] / (kPi * omega * x);
+  const double expected = std::abs(std::complex<double>(k, omega * c)) * curve.amplitudes[0];
+  EXPECT_NEAR(curve.spring_forces[0], expected, 1e-12 * expected);
+  // Without friction the force is the spring's alone.
+  const auto plain = element_deflection_curves(w.system, w.modes, *source, 0, {0}, {speed}).front();
+  EXPECT_NEAR(plain.spring_forces[0], k * plain.amplitudes[0], 1e-12 * k * plain.amplitudes[0]);
+}
+
 TEST(ElementDeflection, UndampedResonanceIsUnboundedNotInfinite) {
   const BounceOnly w;
   const auto source = joints(0.005);

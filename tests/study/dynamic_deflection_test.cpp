@@ -143,9 +143,10 @@ TEST(PermissibleDeflection, LimitsFollowTheBookByElementAndStage) {
   EXPECT_NE(l[0].basis.find("bogie-less freight cars 25 mm"), std::string::npos);
 }
 
-// A coil in series with a leaf spring takes the whole stretch while the leaves stick, so its
-// check takes share 1, the bound; the leaf stage itself keeps its share k_element/k_leaf.
-// And a stage with no static load (0.2 f_st = 0) is not checked rather than checked against 0.
+// A coil in series with a friction stage carries the friction force too: it is checked by the
+// springs' force over its own stiffness (2 × 1.5 MN/m), the friction stage itself by its share
+// k_element/k_stage. And a stage with no static load (0.2 f_st = 0) is not checked rather than
+// checked against 0.
 TEST(PermissibleDeflection, SeriesFrictionAndZeroLoad) {
   std::string car = kBogieCar;
   const std::string bolster = R"(vertical = [{ kind = "elliptic", stiffness = "1 MN/m" }, { kind = "coil", stiffness = "1.5 MN/m", count = 2 }])";
@@ -157,7 +158,9 @@ TEST(PermissibleDeflection, SeriesFrictionAndZeroLoad) {
   auto l = study::permissible_deflections(rule, s);
   ASSERT_EQ(l.size(), 3u);
   EXPECT_NEAR(l[1].share, 0.75, 1e-12);  // "Elliptic": kinds are matched whatever their case
-  EXPECT_EQ(l[2].share, 1.0);
+  EXPECT_EQ(l[1].force_stiffness, 0.0);
+  EXPECT_NEAR(l[2].share, 0.25, 1e-12);
+  EXPECT_EQ(l[2].force_stiffness, 3.0e6);
   s.element_loads[1] = 0.0;
   l = study::permissible_deflections(rule, s);
   ASSERT_EQ(l.size(), 2u);  // the elliptic stage's 0.2 f_st is 0: left out
@@ -307,6 +310,52 @@ service = "freight"
   for (const auto& d : deep.deflections) EXPECT_TRUE(d.unbounded) << d.element;
   const VariantResult base = evaluate_variant(with_friction.variants[0], 0, s.deflection_rule);
   for (const auto& d : base.deflections) EXPECT_TRUE(d.kept()) << d.element;
+}
+
+// The grid's largest value is refined: a 5 km/h grid and a 0.5 km/h one find the same worst
+// deflection (golden-section search to 1e-6 of the speed; the value is flat to second order
+// at the peak, so 1e-9 of it).
+TEST(PermissibleDeflection, PeaksBetweenGridSpeedsAreRefined) {
+  const Study s = load_study(study_file(R"(
+[[variant]]
+name = "coarse"
+scene_overrides = { "speed.step" = "5 km/h" }
+[[variant]]
+name = "fine"
+scene_overrides = { "speed.step" = "0.5 km/h" }
+[permissible_dynamic_deflection]
+rule = "lehner"
+service = "freight"
+)"));
+  const auto results = evaluate_study(s, {});
+  ASSERT_EQ(results.size(), 3u);
+  const double coarse = *metric_value(results[1], "dynamic_deflection_ratio");
+  const double fine = *metric_value(results[2], "dynamic_deflection_ratio");
+  EXPECT_NEAR(coarse, fine, 1e-9 * fine);
+  EXPECT_NE(std::fmod(results[1].deflections[0].speed * 3.6, 5.0), 0.0);  // not a grid speed
+}
+
+// Viscous dampers damp the resonance that friction does not stop: finite, not unbounded.
+TEST(PermissibleDeflection, ViscouslyDampedResonanceIsFinite) {
+  const Study s = load_study(study_file(R"(
+[[variant]]
+name = "deep joints, dampers"
+overrides = { "suspension.vertical_damping" = "30 kN*s/m" }
+scene_overrides = { "source[0].dip_depth" = "40 mm" }
+[permissible_dynamic_deflection]
+rule = "lehner"
+service = "freight"
+)"));
+  const VariantResult r = evaluate_variant(s.variants[1], 1, s.deflection_rule);
+  ASSERT_TRUE(r.ok()) << r.failure;
+  bool not_stopped = false;
+  for (const auto& c : r.critical_speeds) not_stopped |= !c.friction_stops;
+  ASSERT_TRUE(not_stopped);
+  for (const auto& d : r.deflections) {
+    EXPECT_FALSE(d.unbounded) << d.element;
+    EXPECT_GT(d.deflection, 0.0);
+  }
+  EXPECT_TRUE(std::isfinite(*metric_value(r, "dynamic_deflection_ratio")));
 }
 
 // Shards carry the rule they were checked by; a merge under another rule is refused.
