@@ -61,6 +61,22 @@ TEST(Studies, ResortCarAgainstFetteCarComesOutAsTheBookCompares) {
   EXPECT_EQ(c.variants.back().result.name, "Fette car");
   for (size_t i = 1; i < c.variants.size(); ++i)
     EXPECT_GT(*c.variants[i - 1].criteria[0], *c.variants[i].criteria[0]);
+  // Lehner's passenger limits (coil 30 mm, elliptic 0.2 f_st): leaf friction φ1 = 0.0843 and
+  // Galakhov friction φ3 = 0.035 stop every resonance of the resort car, so it keeps them;
+  // the Fette car's bogies stand on helical springs, and the cradle friction φ3 = 0.0295 alone
+  // does not stop their antiphase bounce at 306 km/h ("a bogie with no friction springs keeps
+  // oscillating", digest §2.2): unbounded.
+  for (const auto& c : resort.critical_speeds) EXPECT_TRUE(c.friction_stops) << c.mode_name;
+  EXPECT_LT(*metric_value(resort, "dynamic_deflection_ratio"), 1.0);
+  bool antiphase_grows = false;
+  for (const auto& c : fette.critical_speeds)
+    antiphase_grows |= c.mode_name == "bogies bounce, antiphase" && !c.friction_stops && std::abs(c.speed * 3.6 - 306.3) < 0.1;
+  EXPECT_TRUE(antiphase_grows);
+  ASSERT_FALSE(fette.deflections.empty());
+  for (const auto& d : fette.deflections) {
+    EXPECT_TRUE(d.unbounded) << d.element;
+    EXPECT_NEAR(d.speed * 3.6, 306.3, 0.1) << d.element;
+  }
 }
 
 // The extreme points of the two-axle sweep equal single library runs of vehicles and scenes
