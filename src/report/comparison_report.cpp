@@ -176,7 +176,7 @@ std::optional<double> body_deflection(const VariantResult& r) { return metric_va
 
 // The deflection rule in one line, to tell shards of different rules apart: "none", or
 // "lehner freight" followed by the element limits (m, exact).
-std::string rule_text(const DeflectionRule& rule) {
+std::string rule_key(const DeflectionRule& rule) {
   if (!rule.active()) return "none";
   std::string s = std::string(to_string(rule.book)) + " " + to_string(rule.service);
   for (const auto& [name, limit] : rule.element_limits) s += "; " + name + " = " + exact(limit) + " m";
@@ -339,7 +339,7 @@ void write_shard(std::ostream& out, const Study& study, const EvaluationOptions&
   j["variant_count"] = study.variants.size();
   j["shard"] = options.shard;
   j["shards"] = options.shards;
-  j["permissible_dynamic_deflection"] = rule_text(study.deflection_rule);
+  j["permissible_dynamic_deflection"] = rule_key(study.deflection_rule);
   j["results"] = json::array();
   for (const auto& r : results) j["results"].push_back(result_json(r));
   out << j.dump(1) << "\n";
@@ -374,9 +374,9 @@ std::vector<VariantResult> read_shard(std::istream& in, const std::string& file,
           throw InputError(file, 0, 0, "a shard from an older railmodal that does not record its deflection rule: "
                                        "evaluate it again");
     const std::string rule = j.value("permissible_dynamic_deflection", "none");
-    if (rule != rule_text(study.deflection_rule))
+    if (rule != rule_key(study.deflection_rule))
       throw InputError(file, 0, 0, "a shard checked for permissible dynamic deflections by '" + rule +
-                                       "', the study asks for '" + rule_text(study.deflection_rule) + "'");
+                                       "', the study asks for '" + rule_key(study.deflection_rule) + "'");
     for (const auto& r : j.at("results")) results.push_back(result_from_json(r));
   } catch (const json::exception& e) {
     throw InputError(file, 0, 0, std::string("a shard with missing or mistyped fields: ") + e.what());

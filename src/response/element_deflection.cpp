@@ -11,6 +11,7 @@
 
 #include "railmodal/response.hpp"
 #include "response/friction_damping.hpp"
+#include "response/modal_checks.hpp"
 
 namespace railmodal {
 
@@ -29,13 +30,10 @@ std::complex<double> track_under(const LinearSystem& system, const HarmonicLoad&
   return u;
 }
 
-// Whether an undamped mode that the response found resonant stretches the element: its
-// stretch is more than round-off of the mode's largest entry times the map row's size.
+// Whether an undamped mode that the response found resonant stretches the element.
 bool stretched_by_resonance(const HarmonicResponse& r, const ModalResult& modes, const Eigen::RowVectorXd& row) {
-  for (int index : r.resonant_modes) {
-    const Eigen::VectorXd& shape = modes.modes[index - 1].shape;
-    if (std::abs(row.dot(shape)) > 1e-9 * shape.cwiseAbs().maxCoeff() * row.cwiseAbs().sum()) return true;
-  }
+  for (int index : r.resonant_modes)
+    if (response::moves(row, modes.modes[index - 1].shape)) return true;
   return false;
 }
 
@@ -48,8 +46,12 @@ std::vector<DeflectionCurve> element_deflection_curves(const LinearSystem& syste
                                                        const std::vector<double>& friction_reference_stretch) {
   const int element_count = static_cast<int>(system.vehicle.elements.size());
   std::vector<DeflectionCurve> curves;
+  std::vector<Eigen::RowVectorXd> rows;  // each element's stretch per unit of each DOF
+  std::vector<double> stiffness;         // its spring stages in series
   for (int e : elements) {
     if (e < 0 || e >= element_count) throw std::invalid_argument("deflection curve: no such element");
+    rows.push_back(system.element_vertical_map.row(e));
+    stiffness.push_back(series_stiffness(system.vehicle.elements[e].vertical_stages));
     DeflectionCurve c;
     c.source = source_index;
     c.element = e;
@@ -75,25 +77,23 @@ std::vector<DeflectionCurve> element_deflection_curves(const LinearSystem& syste
       const LinearSystem& s = friction_linearised ? linearised : system;
       const HarmonicLoad load = source.load(s, speeds[v], k);
       const HarmonicResponse r = harmonic_response(s, modes, generalized_load(s, load), load.frequency_hz);
-      for (DeflectionCurve& c : curves) {
+      for (size_t i = 0; i < curves.size(); ++i) {
+        DeflectionCurve& c = curves[i];
         if (c.unbounded[v]) continue;
-        const Eigen::RowVectorXd row = system.element_vertical_map.row(c.element);
-        if (r.unbounded && stretched_by_resonance(r, modes, row)) {
+        if (r.unbounded && stretched_by_resonance(r, modes, rows[i])) {
           c.unbounded[v] = true;
           c.amplitudes[v] = 0.0;
           c.spring_forces[v] = 0.0;
           continue;
         }
         const std::complex<double> stretch =
-            (row.cast<std::complex<double>>() * r.displacement).value() - track_under(system, load, c.element);
+            (rows[i].cast<std::complex<double>>() * r.displacement).value() - track_under(system, load, c.element);
         c.amplitudes[v] += std::abs(stretch);
         const double friction = friction_linearised && static_cast<size_t>(c.element) < friction_reference_stretch.size()
                                     ? response::equivalent_friction_damping(system, c.element, omega,
                                                                             friction_reference_stretch[c.element])
                                     : 0.0;
-        c.spring_forces[v] +=
-            std::abs(std::complex<double>(series_stiffness(system.vehicle.elements[c.element].vertical_stages), omega * friction) *
-                     stretch);
+        c.spring_forces[v] += std::abs(std::complex<double>(stiffness[i], omega * friction) * stretch);
       }
     }
   }

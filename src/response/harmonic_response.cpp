@@ -5,6 +5,7 @@
 
 #include "railmodal/errors.hpp"
 #include "railmodal/response.hpp"
+#include "response/modal_checks.hpp"
 
 namespace railmodal {
 
@@ -19,20 +20,13 @@ double modal_damping(const LinearSystem& system, const Mode& mode) {
   return mode.shape.dot(system.damping * mode.shape);
 }
 
-// No damping acts on the mode: φᵀCφ is round-off of ‖C‖‖φ‖² (a damper that the mode does not
-// move, e.g. one on the axis of symmetry of an antisymmetric mode: exactly zero in theory, ~1e-17
-// in the computed φ — taken at face value it would give a finite "resonance" of 1e14).
-bool undamped(const LinearSystem& system, const Mode& mode) {
-  return std::abs(modal_damping(system, mode)) <= 1e-12 * system.damping.norm() * mode.shape.squaredNorm();
-}
-
 // Undamped modes at ω. With C positive semi-definite, φᵀCφ = 0 means Cφ = 0, so each is a
 // null vector of the dynamic stiffness D = K − ω²M + iωC.
 std::vector<const Mode*> undamped_modes_at(const LinearSystem& system, const ModalResult& modes, double omega) {
   std::vector<const Mode*> at;
   for (const Mode& m : modes.modes)
     if (m.kind == ModeKind::oscillatory && std::abs(m.eigenvalue - omega * omega) <= kAtResonance * m.eigenvalue &&
-        undamped(system, m))
+        response::undamped(system, m))
       at.push_back(&m);
   return at;
 }
@@ -130,7 +124,7 @@ HarmonicResponse modal_harmonic_response(const LinearSystem& system, const Modal
     const Mode& mode = modes.modes[j];
     const Eigen::VectorXcd phi = mode.shape.cast<std::complex<double>>();
     const double c = modal_damping(system, mode);
-    if (mode.kind == ModeKind::oscillatory && undamped(system, mode) &&
+    if (mode.kind == ModeKind::oscillatory && response::undamped(system, mode) &&
         std::abs(mode.eigenvalue - omega * omega) <= kAtResonance * mode.eigenvalue) {
       // At its own frequency an undamped mode adds nothing finite: unbounded if driven.
       if (drives(mode, load)) out.resonant_modes.push_back(mode.index);

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "model/rigid_body.hpp"
 #include "response/friction_damping.hpp"
 #include "railmodal/response.hpp"
 
@@ -13,47 +12,38 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Vertical stretch (upper relative to lower) of an element per unit of each DOF.
-Eigen::RowVectorXd vertical_stretch_row(const LinearSystem& system, const Element& e) {
-  const Vehicle& v = system.vehicle;
-  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(system.size());
-  for (int d = 0; d < system.size(); ++d) {
-    const Body& body = v.bodies[system.dofs[d].body];
-    const int motion = static_cast<int>(system.dofs[d].motion);
-    if (body.name == e.upper) row(d) += model::point_map(body, e.point)(2, motion);
-    if (body.name == e.lower) row(d) -= model::point_map(body, e.point)(2, motion);
-  }
-  return row;
+// Friction force R = φ × load of each friction stage of element k, and the stage's share
+// k_element/k_stage of the element's stretch (in series every stage carries the element's force).
+template <typename Visit>
+void for_each_friction_stage_of(const LinearSystem& system, size_t k, Visit visit) {
+  const Element& e = system.vehicle.elements[k];
+  const double k_element = series_stiffness(e.vertical_stages);
+  if (!(k_element > 0.0)) return;
+  for (const SpringStage& s : e.vertical_stages)
+    if (s.relative_friction > 0.0)
+      visit(s.relative_friction * std::abs(system.element_loads[k]), k_element / (s.stiffness * s.count));
 }
 
-// Friction force R = φ × load of each stage, and the stage's share k_element/k_stage of the
-// element's stretch (in series every stage carries the element's force).
+// The same over every element; `visit(k, friction, share)`.
 template <typename Visit>
 void for_each_friction_stage(const LinearSystem& system, Visit visit) {
-  const Vehicle& v = system.vehicle;
-  for (size_t k = 0; k < v.elements.size(); ++k) {
-    const Element& e = v.elements[k];
-    const double k_element = series_stiffness(e.vertical_stages);
-    if (!(k_element > 0.0)) continue;
-    for (const SpringStage& s : e.vertical_stages)
-      if (s.relative_friction > 0.0)
-        visit(k, e, s.relative_friction * std::abs(system.element_loads[k]), k_element / (s.stiffness * s.count));
-  }
+  for (size_t k = 0; k < system.vehicle.elements.size(); ++k)
+    for_each_friction_stage_of(system, k, [&](double friction, double share) { visit(k, friction, share); });
 }
 
 }  // namespace
 
 double modal_friction_work(const LinearSystem& system, const Eigen::VectorXd& shape) {
   double work = 0.0;
-  for_each_friction_stage(system, [&](size_t, const Element& e, double friction, double share) {
-    work += friction * std::abs(share * vertical_stretch_row(system, e).dot(shape));
+  for_each_friction_stage(system, [&](size_t k, double friction, double share) {
+    work += friction * std::abs(share * system.element_vertical_map.row(k).dot(shape));
   });
   return work;
 }
 
 bool has_leaf_friction(const LinearSystem& system) {
   bool any = false;
-  for_each_friction_stage(system, [&](size_t, const Element&, double, double) { any = true; });
+  for_each_friction_stage(system, [&](size_t, double, double) { any = true; });
   return any;
 }
 
@@ -68,10 +58,10 @@ double response::equivalent_friction_damping(const LinearSystem& system, std::si
                                              double stretch) {
   if (!(omega > 0.0) || !(stretch > 0.0)) return 0.0;
   double c = 0.0;
-  for_each_friction_stage(system, [&](size_t k, const Element&, double friction, double share) {
+  for_each_friction_stage_of(system, element, [&](double friction, double share) {
     // With the element stretching X the stage stretches share·X and friction dissipates
     // 4R·share·X per cycle; a damper across the element dissipates πcωX²: c = 4R·share/(πωX).
-    if (k == element) c += 4.0 * friction * share / (kPi * omega * stretch);
+    c += 4.0 * friction * share / (kPi * omega * stretch);
   });
   return c;
 }
@@ -84,7 +74,7 @@ LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double
   for (size_t k = 0; k < v.elements.size() && k < stretch_per_element.size(); ++k) {
     const double c = response::equivalent_friction_damping(system, k, omega, stretch_per_element[k]);
     if (c == 0.0) continue;
-    const Eigen::RowVectorXd row = vertical_stretch_row(system, v.elements[k]);
+    const Eigen::RowVectorXd row = system.element_vertical_map.row(k);
     out.damping += c * row.transpose() * row;
     for (auto& input : out.track_inputs)
       if (input.element == static_cast<int>(k)) input.load_per_velocity.col(2) += c * row.transpose();

@@ -1,8 +1,10 @@
 // Adaptive refinement of a damped resonance peak: golden-section search on a bracket.
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "railmodal/response.hpp"
+#include "response/golden_section.hpp"
 
 namespace railmodal {
 
@@ -19,23 +21,11 @@ Peak refine_peak(const LinearSystem& system, const ModalResult& modes, const Exc
     return curves[0].amplitudes[0];
   };
   // Golden section keeps one interior point per step: the bracket shrinks by 0.618 per solve.
-  const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
-  double a = low, b = high;
-  double c = b - ratio * (b - a), d = a + ratio * (b - a);
-  double fc = amplitude(c), fd = amplitude(d);
-  while (b - a > relative_tolerance * 0.5 * (a + b) && !peak.unbounded) {
-    if (fc >= fd) {
-      b = d, d = c, fd = fc;
-      c = b - ratio * (b - a);
-      fc = amplitude(c);
-    } else {
-      a = c, c = d, fc = fd;
-      d = a + ratio * (b - a);
-      fd = amplitude(d);
-    }
-  }
-  peak.speed = fc >= fd ? c : d;
-  peak.amplitude = std::max(fc, fd);
+  const auto g = response::golden_section(low, high, relative_tolerance, amplitude, [&](double a) {
+    return peak.unbounded ? std::nan("") : a;
+  });
+  peak.speed = g.fc >= g.fd ? g.c : g.d;
+  peak.amplitude = std::max(g.fc, g.fd);
   return peak;
 }
 

@@ -7,6 +7,8 @@
 #include "railmodal/errors.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/study.hpp"
+#include "response/golden_section.hpp"
+#include "response/modal_checks.hpp"
 #include "study/permissible_deflection.hpp"
 
 namespace railmodal {
@@ -67,25 +69,14 @@ void summarise_response(const CriticalSpeedStudy& study, VariantResult* r) {
   }
 }
 
-// Whether the oscillatory modes of a critical speed's eigenspace have no viscous damping in the
-// vehicle itself (φᵀCφ round-off of ‖C‖‖φ‖², as the harmonic response decides).
-bool undamped_group(const LinearSystem& system, const ModalResult& modes, const CriticalSpeed& cs) {
+// The oscillatory modes of a critical speed's eigenspace (frequencies within 1e-8, as
+// Mode::repeated and the critical speeds group them).
+std::vector<const Mode*> eigenspace(const ModalResult& modes, const CriticalSpeed& cs) {
   const double lambda = modes.modes[cs.mode - 1].eigenvalue;
+  std::vector<const Mode*> group;
   for (const Mode& m : modes.modes)
-    if (m.kind == ModeKind::oscillatory && std::abs(m.eigenvalue - lambda) <= 1e-8 * lambda &&
-        std::abs(m.shape.dot(system.damping * m.shape)) > 1e-12 * system.damping.norm() * m.shape.squaredNorm())
-      return false;
-  return true;
-}
-
-// Whether any mode of that eigenspace stretches the element of map row `row`.
-bool group_stretches(const ModalResult& modes, const CriticalSpeed& cs, const Eigen::RowVectorXd& row) {
-  const double lambda = modes.modes[cs.mode - 1].eigenvalue;
-  for (const Mode& m : modes.modes)
-    if (m.kind == ModeKind::oscillatory && std::abs(m.eigenvalue - lambda) <= 1e-8 * lambda &&
-        std::abs(row.dot(m.shape)) > 1e-9 * m.shape.cwiseAbs().maxCoeff() * row.cwiseAbs().sum())
-      return true;
-  return false;
+    if (m.kind == ModeKind::oscillatory && std::abs(m.eigenvalue - lambda) <= 1e-8 * lambda) group.push_back(&m);
+  return group;
 }
 
 // The response of one element for one source at the largest point near grid point v (a local
@@ -97,23 +88,11 @@ DeflectionCurve refine_deflection(const CriticalSpeedStudy& study, const Excitat
   auto at = [&](double speed) {
     return element_deflection_curves(study.system, study.modes, source, s, {element}, {speed}, reference).front();
   };
-  auto value = [](const DeflectionCurve& c) { return c.unbounded[0] ? -1.0 : c.amplitudes[0]; };
-  constexpr double kGolden = 0.61803398874989484820;
-  double low = curve.speeds[v - 1], high = curve.speeds[v + 1];
-  double x1 = high - kGolden * (high - low), x2 = low + kGolden * (high - low);
-  DeflectionCurve c1 = at(x1), c2 = at(x2);
-  while (high - low > 1e-6 * curve.speeds[v] && value(c1) >= 0.0 && value(c2) >= 0.0) {
-    if (value(c1) >= value(c2)) {
-      high = x2, x2 = x1, c2 = c1;
-      x1 = high - kGolden * (high - low), c1 = at(x1);
-    } else {
-      low = x1, x1 = x2, c1 = c2;
-      x2 = low + kGolden * (high - low), c2 = at(x2);
-    }
-  }
-  if (value(c1) < 0.0) return c1;
-  if (value(c2) < 0.0) return c2;
-  return value(c1) >= value(c2) ? c1 : c2;
+  auto score = [](const DeflectionCurve& c) { return c.unbounded[0] ? std::nan("") : c.amplitudes[0]; };
+  const auto g = response::golden_section(curve.speeds[v - 1], curve.speeds[v + 1], 1e-6, at, score);
+  if (std::isnan(score(g.fc))) return g.fc;
+  if (std::isnan(score(g.fd))) return g.fd;
+  return score(g.fc) >= score(g.fd) ? g.fc : g.fd;
 }
 
 // The largest dynamic deflection of every element or stage the rule limits, over every source
@@ -163,10 +142,15 @@ void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& stu
   }
   // Rule 1: resonances that nothing damps and friction does not stop.
   for (const CriticalSpeed& cs : study.critical_speeds) {
-    if (cs.friction_stops || !undamped_group(system, study.modes, cs)) continue;
+    const std::vector<const Mode*> group = eigenspace(study.modes, cs);
+    if (cs.friction_stops ||
+        !std::all_of(group.begin(), group.end(), [&](const Mode* m) { return response::undamped(system, *m); }))
+      continue;
     for (size_t i = 0; i < limits.size(); ++i) {
       VariantResult::DeflectionCheck& c = r->deflections[i];
-      if (!c.unbounded && group_stretches(study.modes, cs, system.element_vertical_map.row(limits[i].element)))
+      const Eigen::RowVectorXd row = system.element_vertical_map.row(limits[i].element);
+      if (!c.unbounded &&
+          std::any_of(group.begin(), group.end(), [&](const Mode* m) { return response::moves(row, m->shape); }))
         c.unbounded = true, c.speed = cs.speed, c.source = cs.source;
     }
   }
