@@ -7,56 +7,21 @@
 
 #include "railmodal/railmodal.hpp"
 #include "study/permissible_deflection.hpp"
+#include "study/study_files.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
 namespace {
 
 // The loaded two-axle freight wagon of Example 3 with its leaf-spring friction φ = 0.075.
-const char* kWagon = R"(
-[vehicle]
-name = "wagon"
-template = "two-axle"
-gravity = "981 cm/s^2"
-[body]
-weight = "22626 kgf"
-cg_height = "100 cm"
-radius_of_gyration = { roll = "110 cm", pitch = "260 cm", yaw = "260 cm" }
-[suspension]
-wheelbase = "3810 mm"
-spring_spacing = "211.4 cm"
-spring = [{ kind = "leaf", static_deflection = "57.2 mm", relative_friction = 0.075 }]
-)";
+const std::string kWagon = example3_wagon(", relative_friction = 0.075");
 
-const char* kScene = R"(
-[scene]
-name = "joints"
-dofs = "vertical"
-[speed]
-min = "20 km/h"
-max = "150 km/h"
-step = "1 km/h"
-[[source]]
-kind = "rail_joints"
-rail_length = "10 m"
-dip_depth = "5 mm"
-)";
+std::string study_file(const std::string& body) { return write_study(kWagon, body); }
 
-std::string study_file(const std::string& body) {
-  write_temp("wagon.toml", kWagon);
-  write_temp("scene.toml", kScene);
-  return write_temp("study.toml", "[study]\nname = \"s\"\nvehicle = \"wagon.toml\"\nscene = \"scene.toml\"\n" + body);
-}
+InputError study_error(const std::string& body) { return study_error_at(study_file(body), body); }
 
-InputError study_error(const std::string& body) {
-  try {
-    load_study(study_file(body));
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no error for:\n" << body;
-  return InputError("", 0, 0, "");
-}
+// Lehner's limits for freight cars, which most tests here check.
+const std::string kLehnerFreight = "[permissible_dynamic_deflection]\nrule = \"lehner\"\nservice = \"freight\"\n";
 
 // A bogie car in two stages: a bogie on coil axle-box springs, the body on the bogie through a
 // bolster of an elliptic spring in series with coils (the book's double suspension).
@@ -279,7 +244,7 @@ max_dynamic_deflection_ratio = 1
 // equal to Lehner's 0.4 f_st gives that spring exactly the deflection Lehner's check of all four
 // gives it (the other three are linearised at the same stretch), not an undamped resonance.
 TEST(PermissibleDeflection, UnlimitedSpringsKeepTheirFriction) {
-  const Study lehner = load_study(study_file("[permissible_dynamic_deflection]\nrule = \"lehner\"\nservice = \"freight\"\n"));
+  const Study lehner = load_study(study_file(kLehnerFreight));
   const Study own = load_study(study_file("[permissible_dynamic_deflection]\nelements = { \"front left spring\" = \"22.88 mm\" }\n"));
   const VariantResult a = evaluate_variant(lehner.variants[0], 0, lehner.deflection_rule);
   const VariantResult b = evaluate_variant(own.variants[0], 0, own.deflection_rule);
@@ -299,10 +264,7 @@ TEST(PermissibleDeflection, SceneFrictionAmplitudeDoesNotHideAGrowingResonance) 
 [[variant]]
 name = "deep joints"
 scene_overrides = { "source[0].dip_depth" = "40 mm" }
-[permissible_dynamic_deflection]
-rule = "lehner"
-service = "freight"
-)"));
+)" + kLehnerFreight));
   Study with_friction = s;
   for (auto& v : with_friction.variants) v.scene.friction_reference_amplitude = 0.005;
   const VariantResult deep = evaluate_variant(with_friction.variants[1], 1, s.deflection_rule);
@@ -323,10 +285,7 @@ scene_overrides = { "speed.step" = "5 km/h" }
 [[variant]]
 name = "fine"
 scene_overrides = { "speed.step" = "0.5 km/h" }
-[permissible_dynamic_deflection]
-rule = "lehner"
-service = "freight"
-)"));
+)" + kLehnerFreight));
   const auto results = evaluate_study(s, {});
   ASSERT_EQ(results.size(), 3u);
   const double coarse = *metric_value(results[1], "dynamic_deflection_ratio");
@@ -342,10 +301,7 @@ TEST(PermissibleDeflection, ViscouslyDampedResonanceIsFinite) {
 name = "deep joints, dampers"
 overrides = { "suspension.vertical_damping" = "30 kN*s/m" }
 scene_overrides = { "source[0].dip_depth" = "40 mm" }
-[permissible_dynamic_deflection]
-rule = "lehner"
-service = "freight"
-)"));
+)" + kLehnerFreight));
   const VariantResult r = evaluate_variant(s.variants[1], 1, s.deflection_rule);
   ASSERT_TRUE(r.ok()) << r.failure;
   bool not_stopped = false;
@@ -360,7 +316,7 @@ service = "freight"
 
 // Shards carry the rule they were checked by; a merge under another rule is refused.
 TEST(PermissibleDeflection, ShardOfAnotherRuleIsRefused) {
-  const Study checked = load_study(study_file("[permissible_dynamic_deflection]\nrule = \"lehner\"\nservice = \"freight\"\n"));
+  const Study checked = load_study(study_file(kLehnerFreight));
   const auto results = evaluate_study(checked, {});
   std::ostringstream shard;
   write_shard(shard, checked, {}, results);

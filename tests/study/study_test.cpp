@@ -4,61 +4,20 @@
 #include <sstream>
 
 #include "railmodal/railmodal.hpp"
+#include "study/study_files.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
 namespace {
 
-// A two-axle wagon (the book's Example 3 reduced) and a one-source scene beside each study.
-const char* kWagon = R"(
-[vehicle]
-name = "wagon"
-template = "two-axle"
-gravity = "981 cm/s^2"
-[body]
-weight = "22626 kgf"
-cg_height = "100 cm"
-radius_of_gyration = { roll = "110 cm", pitch = "260 cm", yaw = "260 cm" }
-[suspension]
-wheelbase = "3810 mm"
-spring_spacing = "211.4 cm"
-spring = [{ kind = "leaf", static_deflection = "57.2 mm" }]
-)";
-
-const char* kScene = R"(
-[scene]
-name = "joints"
-dofs = "vertical"
-[speed]
-min = "20 km/h"
-max = "150 km/h"
-step = "1 km/h"
-[[source]]
-kind = "rail_joints"
-rail_length = "10 m"
-dip_depth = "5 mm"
-)";
-
 std::string study_file(const std::string& body, const std::string& head = "") {
-  write_temp("wagon.toml", kWagon);
-  write_temp("scene.toml", kScene);
-  return write_temp("study.toml",
-                    "[study]\nname = \"s\"\nvehicle = \"wagon.toml\"\nscene = \"scene.toml\"\n" + head + body);
+  return write_study(example3_wagon(), body, head);
 }
 
 double vertical_stiffness(const Vehicle& v) { return series_stiffness(v.elements.front().vertical_stages); }
 
 // The error a study gives, with its location.
-InputError study_error(const std::string& body) {
-  const std::string path = study_file(body);
-  try {
-    load_study(path);
-  } catch (const InputError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no error for:\n" << body;
-  return InputError("", 0, 0, "");
-}
+InputError study_error(const std::string& body) { return study_error_at(study_file(body), body); }
 
 TEST(StudyReader, OverrideWithUnitsChangesTheSpringBeforeTheReaderChecksIt) {
   const Study s = load_study(study_file(R"(
