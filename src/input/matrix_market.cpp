@@ -8,13 +8,13 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
 #include <string_view>
 
+#include "input/utf8.hpp"
 #include "railmodal/errors.hpp"
 
 namespace railmodal {
@@ -57,39 +57,18 @@ std::string quoted(std::string_view text) {
 // 0 if `line` is UTF-8 text without control characters (tab allowed), else the 1-based
 // column of the first offending byte and a description in *what.
 int text_problem(std::string_view line, std::string* what) {
-  const auto byte = [](unsigned char b) {
-    static const char* hex = "0123456789abcdef";
-    return std::string("0x") + hex[b >> 4] + hex[b & 15];
-  };
-  for (size_t i = 0; i < line.size();) {
+  const size_t bad_utf8 = input::invalid_utf8_at(line);
+  const size_t end = std::min(bad_utf8, line.size());
+  for (size_t i = 0; i < end; ++i) {
     const auto b = static_cast<unsigned char>(line[i]);
-    if (b < 0x80) {
-      if ((b < 0x20 && b != '\t') || b == 0x7f) {
-        *what = "control character " + byte(b) + ": this is not a text file";
-        return static_cast<int>(i) + 1;
-      }
-      ++i;
-      continue;
-    }
-    // Lead byte: length and the smallest code point it may encode (no overlong forms).
-    int length = 0;
-    uint32_t code = 0, least = 0;
-    if ((b & 0xe0) == 0xc0) length = 2, code = b & 0x1f, least = 0x80;
-    else if ((b & 0xf0) == 0xe0) length = 3, code = b & 0x0f, least = 0x800;
-    else if ((b & 0xf8) == 0xf0) length = 4, code = b & 0x07, least = 0x10000;
-    bool ok = length > 0 && i + length <= line.size();
-    for (int k = 1; ok && k < length; ++k) {
-      const auto c = static_cast<unsigned char>(line[i + k]);
-      ok = (c & 0xc0) == 0x80;
-      code = (code << 6) | (c & 0x3f);
-    }
-    if (!ok || code < least || code > 0x10ffff || (code >= 0xd800 && code <= 0xdfff)) {
-      *what = "byte " + byte(b) + " is not UTF-8 text";
+    if ((b < 0x20 && b != '\t') || b == 0x7f) {
+      *what = "control character " + input::byte_name(b) + ": this is not a text file";
       return static_cast<int>(i) + 1;
     }
-    i += length;
   }
-  return 0;
+  if (bad_utf8 == std::string_view::npos) return 0;
+  *what = "byte " + input::byte_name(static_cast<unsigned char>(line[bad_utf8])) + " is not UTF-8 text";
+  return static_cast<int>(bad_utf8) + 1;
 }
 
 // Reads lines, counting them, dropping a CR before the LF, and rejecting what is not text.

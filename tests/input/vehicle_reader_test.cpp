@@ -78,6 +78,21 @@ TEST(VehicleReader, BrokenTomlNamesLine) {
   expect_error("wheelbase = \"400 cm\"", "wheelbase = \"400 cm", {"bad.toml:9", "TOML syntax"});
 }
 
+// A TOML file must be UTF-8. The reader checks before toml11 parses: toml11 3.7.1 reads past
+// its buffer when it reports bad UTF-8 inside a literal string (found by the fuzzer), and bad
+// bytes in a comment or a basic string get the same located message.
+TEST(VehicleReader, InvalidUtf8NamesLineAndColumn) {
+  expect_error("name = \"test wagon\"", "'na\xffme' = \"test wagon\"", {"bad.toml:2:4", "byte 0xff is not UTF-8 text"});
+  expect_error("name = \"test wagon\"", "name = '''test\n\xc0\xaf'''", {"bad.toml:3:1", "byte 0xc0 is not UTF-8 text"});
+  expect_error("[body]", "[body] # Ma\xdf", {"bad.toml:4:12", "byte 0xdf is not UTF-8 text"});
+  expect_error("test wagon", "test \xed\xa0\x80wagon", {"bad.toml:2:14", "byte 0xed is not UTF-8 text"});
+  // Well-formed UTF-8 stays accepted: "Maße" and a 4-byte code point in strings and comments.
+  std::string text = kGood;
+  text.replace(text.find("test wagon"), 10, "Ma\xc3\x9f" "e \xf0\x9f\x9a\x83");
+  const Vehicle v = load_vehicle(write_temp("utf8.toml", "# \xc3\xa9t\xc3\xa9\n" + text));
+  EXPECT_EQ(v.name, "Ma\xc3\x9f" "e \xf0\x9f\x9a\x83");
+}
+
 TEST(VehicleReader, UnknownTemplate) {
   expect_error("\"two-axle\"", "\"three-axle\"", {"key 'vehicle.template': unknown template"});
 }
