@@ -6,7 +6,7 @@
 #include <regex>
 #include <sstream>
 
-#include "input/utf8.hpp"
+#include "input/toml_preflight.hpp"
 #include "railmodal/errors.hpp"
 
 namespace railmodal::input {
@@ -234,14 +234,7 @@ toml::value parse_toml_file(const std::string& file) {
   std::ostringstream text;
   text << in.rdbuf();
   const std::string content = text.str();
-  if (const size_t bad = invalid_utf8_at(content); bad != std::string::npos) {
-    const size_t newline = content.rfind('\n', bad);  // content[bad] is not '\n'
-    const size_t line_begin = newline == std::string::npos ? 0 : newline + 1;
-    const auto line = 1 + std::count(content.begin(), content.begin() + static_cast<std::ptrdiff_t>(bad), '\n');
-    throw InputError(file, static_cast<int>(line), static_cast<int>(bad - line_begin) + 1,
-                     "byte " + byte_name(static_cast<unsigned char>(content[bad])) +
-                         " is not UTF-8 text (a TOML file must be UTF-8)");
-  }
+  check_toml_preflight(content, file);
   try {
     std::istringstream stream(content);
     return toml::parse(stream, file);

@@ -1,7 +1,5 @@
-// UTF-8 validity of input text. Both readers need it: Matrix Market comments must be text,
-// and a TOML document must be UTF-8 (TOML 1.0, "Spec") — besides, Debian's toml11 3.7.1
-// reads past its buffer when it reports invalid UTF-8 inside a literal string, so the TOML
-// reader must never hand it such bytes.
+// UTF-8 validity of input text: Matrix Market files must be text, and a TOML document must be
+// UTF-8 (TOML 1.0; see toml_preflight.hpp for why toml11 must not see anything else).
 #pragma once
 
 #include <cstddef>
