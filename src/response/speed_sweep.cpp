@@ -25,6 +25,7 @@ namespace {
 
 constexpr double kTwoPi = 6.28318530717958647692;
 constexpr double kAtResonance = 1e-9;  // as in the direct solve: ω² within 1e-9 of λ
+constexpr double kRoundOffShare = 1e-12;  // a mode shape's component indistinguishable from 0
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -132,6 +133,22 @@ bool agrees_with_direct(const LinearSystem& system, const ModalResult& modes, co
   return true;
 }
 
+// A block of speeds for the vectorised kernels: ω, ω², the load scale s(ω), and the response
+// (re, im) and unbounded flags they add to.
+constexpr int kBlock = 256;
+struct Block {
+  const double* w;
+  const double* w2;
+  const double* scale;
+  double* re;
+  double* im;
+  unsigned char* resonant;  // 0 or 1 (bytes: the flag loops vectorise)
+  int count;
+  bool ascending;  // ω rises through the block
+};
+using Kernel = std::function<void(const Block&)>;
+using Prepare = std::function<Kernel(int harmonic, int dof)>;
+
 }  // namespace
 
 std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
@@ -170,73 +187,92 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     }
   };
 
-  // Speeds as arrays (vectorised by Eigen), one pass per harmonic and output DOF: `respond`
-  // adds the complex response of one DOF to a harmonic's load at every speed (re, im) and
-  // flags the speeds where it is unbounded; the sums over harmonics and the phases are common.
-  using Flags = Eigen::Array<bool, Eigen::Dynamic, 1>;
-  using Respond = std::function<void(int k, int dof, const Eigen::ArrayXd& w, const Eigen::ArrayXd& w2,
-                                     const Eigen::ArrayXd& scale, Eigen::ArrayXd& re, Eigen::ArrayXd& im, Flags& resonant)>;
-  bool ascending = false;  // the speeds in increasing order (set by `vectorised`)
-  auto vectorised = [&](const Respond& respond) {
+  // Speeds in blocks small enough to stay in L1 cache, one pass per block, harmonic and output
+  // DOF: `prepare(k, dof)` projects harmonic k's load on the modes once and returns the kernel
+  // that adds the complex response of that DOF at a block of speeds (re, im) and flags the
+  // speeds where it is unbounded; the sums over harmonics and the phases are common. No array
+  // spans all speeds but the curves themselves: fresh 80 kB work arrays per harmonic cost more
+  // in page faults and cache misses than the arithmetic.
+  auto vectorised = [&](const Prepare& prepare) {
     const int count = static_cast<int>(speeds.size());
-    const Eigen::ArrayXd V = Eigen::Map<const Eigen::ArrayXd>(speeds.data(), count);
-    ascending = std::is_sorted(speeds.begin(), speeds.end());
-    if (!(V > 0.0).all() || !V.isFinite().all()) throw std::invalid_argument("amplitude curve: speeds must be positive");
+    const bool ascending = std::is_sorted(speeds.begin(), speeds.end());
+    for (double v : speeds)
+      if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument("amplitude curve: speeds must be positive");
     // Each output DOF once: displacement, velocity and acceleration of one DOF share its
     // response, its unbounded speeds and its phase (one atan2 per speed and DOF).
     std::vector<int> dofs;
     for (const OutputRequest& o : outputs)
       if (std::find(dofs.begin(), dofs.end(), o.dof) == dofs.end()) dofs.push_back(o.dof);
     auto slot = [&](int dof) { return static_cast<size_t>(std::find(dofs.begin(), dofs.end(), dof) - dofs.begin()); };
-    bool wants[3] = {false, false, false};
-    for (const OutputRequest& o : outputs) wants[static_cast<int>(o.quantity)] = true;
-    // Σ_k |x_k|·ω_k^p for p = 0, 1, 2 (displacement, velocity, acceleration), per DOF.
-    std::vector<std::array<Eigen::ArrayXd, 3>> sum(dofs.size());
-    for (auto& per_dof : sum)
-      for (int q = 0; q < 3; ++q)
-        if (wants[q]) per_dof[q] = Eigen::ArrayXd::Zero(count);
-    std::vector<Eigen::ArrayXd> first_arg(dofs.size(), Eigen::ArrayXd::Zero(count));  // arg x of harmonic 1, rad
-    std::vector<Flags> unbounded(dofs.size(), Flags::Constant(count, false));
-    Eigen::ArrayXd input_arg = Eigen::ArrayXd::Zero(count);  // arg of s(ω)·input, rad; NaN: no input
-    // Work arrays, allocated once: fresh 80 kB arrays per mode cost more in page faults
-    // than the arithmetic.
-    Eigen::ArrayXd w(count), w2(count), scale(count), re(count), im(count), magnitude(count);
-    Flags resonant(count);
-    for (int k = 1; k <= source.harmonic_count(); ++k) {
-      const SeparableLoad& p = parts[k - 1];
-      w = V * (kTwoPi * k / source.wavelength());
-      w2 = w.square();
-      for (int v = 0; v < count; ++v) scale(v) = source.load_scale(w(v), p.reference_omega);
-      if (k == 1) {
-        const double arg = input == 0.0 ? kNaN : std::arg(input);
-        for (int v = 0; v < count; ++v) input_arg(v) = scale(v) == 0.0 ? kNaN : arg + (scale(v) < 0.0 ? kPi : 0.0);
-      }
-      for (size_t d = 0; d < dofs.size(); ++d) {
-        re.setZero();
-        im.setZero();
-        resonant.setConstant(false);
-        respond(k, dofs[d], w, w2, scale, re, im, resonant);
-        magnitude = (re.square() + im.square()).sqrt();
-        if (wants[0]) sum[d][0] += magnitude;
-        if (wants[1]) sum[d][1] += magnitude * w;
-        if (wants[2]) sum[d][2] += magnitude * w2;
-        unbounded[d] = unbounded[d] || resonant;
-        if (k == 1)
-          for (int v = 0; v < count; ++v) first_arg[d](v) = re(v) == 0.0 && im(v) == 0.0 ? kNaN : std::atan2(im(v), re(v));
-      }
+    std::vector<std::vector<Kernel>> kernels(source.harmonic_count());
+    for (int k = 1; k <= source.harmonic_count(); ++k)
+      for (int dof : dofs) kernels[k - 1].push_back(prepare(k, dof));
+    for (AmplitudeCurve& c : curves) {
+      c.speeds = speeds;
+      c.amplitudes.resize(count);
+      c.unbounded.resize(count);
+      c.phases_deg.resize(count);
     }
-    for (size_t o = 0; o < outputs.size(); ++o) {
-      const size_t d = slot(outputs[o].dof);
-      const int q = static_cast<int>(outputs[o].quantity);
-      curves[o].speeds = speeds;
-      curves[o].amplitudes.resize(count);
-      curves[o].unbounded.resize(count);
-      curves[o].phases_deg.resize(count);
-      for (int v = 0; v < count; ++v) {
-        curves[o].unbounded[v] = unbounded[d](v);
-        curves[o].amplitudes[v] = unbounded[d](v) ? 0.0 : sum[d][q](v);
-        const double arg = first_arg[d](v) - input_arg(v);
-        curves[o].phases_deg[v] = unbounded[d](v) || std::isnan(arg) ? 0.0 : wrapped_phase_deg(arg, outputs[o].quantity);
+    // Per block: Σ_k |x_k|·ω_k^p for p = 0, 1, 2 (displacement, velocity, acceleration), arg x
+    // of harmonic 1 (rad) and the unbounded flags, per DOF; arg of s(ω)·input (NaN: no input).
+    struct PerDof {
+      std::array<std::array<double, kBlock>, 3> sum;
+      std::array<double, kBlock> first_arg;
+      std::array<unsigned char, kBlock> unbounded;
+    };
+    std::vector<PerDof> per_dof(dofs.size());
+    alignas(64) std::array<double, kBlock> w, w2, scale, re, im, input_arg;
+    std::array<unsigned char, kBlock> resonant;
+    const double reference_arg = input == 0.0 ? kNaN : std::arg(input);
+    for (int begin = 0; begin < count; begin += kBlock) {
+      const int n = std::min(kBlock, count - begin);
+      for (PerDof& d : per_dof) {
+        for (auto& sum : d.sum) std::fill_n(sum.begin(), n, 0.0);
+        std::fill_n(d.unbounded.begin(), n, 0);
+      }
+      for (int k = 1; k <= source.harmonic_count(); ++k) {
+        const SeparableLoad& p = parts[k - 1];
+        const double to_omega = kTwoPi * k / source.wavelength();
+        for (int v = 0; v < n; ++v) {
+          w[v] = speeds[begin + v] * to_omega;
+          w2[v] = w[v] * w[v];
+        }
+        for (int v = 0; v < n; ++v) scale[v] = source.load_scale(w[v], p.reference_omega);
+        if (k == 1)
+          for (int v = 0; v < n; ++v) input_arg[v] = scale[v] == 0.0 ? kNaN : reference_arg + (scale[v] < 0.0 ? kPi : 0.0);
+        for (size_t d = 0; d < dofs.size(); ++d) {
+          std::fill_n(re.begin(), n, 0.0);
+          std::fill_n(im.begin(), n, 0.0);
+          std::fill_n(resonant.begin(), n, 0);
+          kernels[k - 1][d](Block{w.data(), w2.data(), scale.data(), re.data(), im.data(), resonant.data(), n, ascending});
+          PerDof& out = per_dof[d];
+          // Separate arrays, so that each loop vectorises.
+          const double* __restrict rv = re.data();
+          const double* __restrict iv = im.data();
+          double* __restrict s0 = out.sum[0].data();
+          double* __restrict s1 = out.sum[1].data();
+          double* __restrict s2 = out.sum[2].data();
+          for (int v = 0; v < n; ++v) {
+            const double magnitude = std::sqrt(rv[v] * rv[v] + iv[v] * iv[v]);
+            s0[v] += magnitude;
+            s1[v] += magnitude * w[v];
+            s2[v] += magnitude * w2[v];
+          }
+          for (int v = 0; v < n; ++v) out.unbounded[v] |= resonant[v];
+          if (k == 1)
+            for (int v = 0; v < n; ++v) out.first_arg[v] = re[v] == 0.0 && im[v] == 0.0 ? kNaN : std::atan2(im[v], re[v]);
+        }
+      }
+      for (size_t o = 0; o < outputs.size(); ++o) {
+        const PerDof& d = per_dof[slot(outputs[o].dof)];
+        const int q = static_cast<int>(outputs[o].quantity);
+        AmplitudeCurve& c = curves[o];
+        for (int v = 0; v < n; ++v) {
+          c.unbounded[begin + v] = d.unbounded[v];
+          c.amplitudes[begin + v] = d.unbounded[v] ? 0.0 : d.sum[q][v];
+          const double arg = d.first_arg[v] - input_arg[v];
+          c.phases_deg[begin + v] = d.unbounded[v] || std::isnan(arg) ? 0.0 : wrapped_phase_deg(arg, outputs[o].quantity);
+        }
       }
     }
     return curves;
@@ -245,71 +281,87 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
   if (basis.exact && !equivalent_friction) {
     // x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/(λ_j − ω² + iωc_j) + s(ω)·static_o(ω).
     const int m = static_cast<int>(basis.modes.size());
-    return vectorised([&](int k, int dof, const Eigen::ArrayXd& w, const Eigen::ArrayXd& w2, const Eigen::ArrayXd& scale,
-                          Eigen::ArrayXd& re, Eigen::ArrayXd& im, Flags& resonant) {
+    struct Term {
+      double ar, ai, br, bi, lambda, c, tolerance;
+      bool undamped, moves;
+      std::complex<double> a, b;
+      double drive_floor;
+    };
+    return vectorised([&](int k, int dof) -> Kernel {
       const SeparableLoad& p = parts[k - 1];
-      const int count = static_cast<int>(w.size());
       const double q_norm_k = p.stiffness_part.norm(), q_norm_c = p.damping_part.norm();
+      std::vector<Term> terms;
       for (int j = 0; j < m; ++j) {
         const Mode& mode = *basis.modes[j];
+        // A mode whose share of this DOF is at the eigensolver's round-off (below 1e-12 of its
+        // largest component: a pitch mode at the body's bounce in a symmetric car) adds noise,
+        // not response; skipping it changes the output by at most 1e-12 of that mode's own
+        // response at its largest DOF, and most outputs of a symmetric vehicle skip most modes.
         const double at = mode.shape(dof);
-        if (at == 0.0) continue;
+        if (std::abs(at) <= kRoundOffShare * mode.shape.cwiseAbs().maxCoeff()) continue;
         const std::complex<double> a = mode.shape.cast<std::complex<double>>().dot(p.stiffness_part) * at;
         const std::complex<double> b = mode.shape.cast<std::complex<double>>().dot(p.damping_part) * at;
         if (a == 0.0 && b == 0.0) continue;  // the load does not reach this mode at all
         const double c = basis.damping[j], lambda = mode.eigenvalue;
-        const bool moves = std::abs(at) > 1e-9 * mode.shape.cwiseAbs().maxCoeff();
         const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
-        const double tolerance = undamped ? kAtResonance * lambda : -1.0;
-        const double drive_floor = 1e-12 * std::abs(at) * mode.shape.norm();
-        // One branch-free loop per mode, so that the compiler vectorises it. An undamped mode at
-        // its own frequency adds nothing finite: the gap there becomes ∞ and the term exactly 0
-        // (a select, where a branch or a masked division would stop the vectorising); those
-        // speeds are flagged below.
-        const double* wv = w.data();
-        const double* w2v = w2.data();
-        const double* sv = scale.data();
-        double* rv = re.data();
-        double* iv = im.data();
-        const double ar = a.real(), ai = a.imag(), br = b.real(), bi = b.imag();
-        if (undamped) {
-          for (int v = 0; v < count; ++v) {
-            const double gap = lambda - w2v[v];
-            const double f = sv[v] / (std::abs(gap) <= tolerance ? kInfinity : gap);
-            rv[v] += (ar - wv[v] * bi) * f;
-            iv[v] += (ai + wv[v] * br) * f;
-          }
-        } else {
-          for (int v = 0; v < count; ++v) {
-            const double gap = lambda - w2v[v], di = wv[v] * c;
-            const double nr = ar - wv[v] * bi, ni = ai + wv[v] * br;
-            const double f = sv[v] / (gap * gap + di * di);
-            rv[v] += (nr * gap + ni * di) * f;
-            iv[v] += (ni * gap - nr * di) * f;
-          }
-        }
-        // Unbounded where the undamped mode sits at ω, moves this DOF and the load drives it (as
-        // the direct solve decides). ω² rises with the speed, so on a sorted grid those speeds
-        // are one run found by bisection.
-        if (undamped && moves) {
-          const int first = ascending ? static_cast<int>(std::lower_bound(w2v, w2v + count, lambda - tolerance) - w2v) : 0;
-          for (int v = first; v < count && (!ascending || w2v[v] <= lambda + tolerance); ++v)
-            if (std::abs(lambda - w2v[v]) <= tolerance &&
-                std::abs(a + std::complex<double>(0.0, wv[v]) * b) > drive_floor * (q_norm_k + wv[v] * q_norm_c))
-              resonant(v) = true;
-        }
+        terms.push_back({a.real(), a.imag(), b.real(), b.imag(), lambda, c, undamped ? kAtResonance * lambda : -1.0,
+                         undamped, std::abs(at) > 1e-9 * mode.shape.cwiseAbs().maxCoeff(), a, b,
+                         1e-12 * std::abs(at) * mode.shape.norm()});
       }
       // Massless DOFs also follow their own loads: K_mm⁻¹ Q_m(ω).
+      std::complex<double> sk = 0.0, sc = 0.0;
       for (size_t i = 0; i < basis.massless.size(); ++i) {
         if (basis.massless[i] != dof) continue;
-        std::complex<double> sk = 0.0, sc = 0.0;
         for (size_t c = 0; c < basis.massless.size(); ++c) {
           sk += basis.massless_flexibility(i, c) * p.stiffness_part(basis.massless[c]);
           sc += basis.massless_flexibility(i, c) * p.damping_part(basis.massless[c]);
         }
-        re += scale * (sk.real() - w * sc.imag());
-        im += scale * (sk.imag() + w * sc.real());
       }
+      return [terms = std::move(terms), sk, sc, q_norm_k, q_norm_c](const Block& b) {
+        const int n = b.count;
+        const double* __restrict wv = b.w;
+        const double* __restrict w2v = b.w2;
+        const double* __restrict sv = b.scale;
+        double* __restrict rv = b.re;
+        double* __restrict iv = b.im;
+        for (const Term& t : terms) {
+          // One branch-free loop per mode, so that the compiler vectorises it. An undamped mode
+          // at its own frequency adds nothing finite: the gap there becomes ∞ and the term
+          // exactly 0 (a select, where a branch or a masked division would stop the
+          // vectorising); those speeds are flagged below.
+          if (t.undamped) {
+            for (int v = 0; v < n; ++v) {
+              const double gap = t.lambda - w2v[v];
+              const double f = sv[v] / (std::abs(gap) <= t.tolerance ? kInfinity : gap);
+              rv[v] += (t.ar - wv[v] * t.bi) * f;
+              iv[v] += (t.ai + wv[v] * t.br) * f;
+            }
+          } else {
+            for (int v = 0; v < n; ++v) {
+              const double gap = t.lambda - w2v[v], di = wv[v] * t.c;
+              const double nr = t.ar - wv[v] * t.bi, ni = t.ai + wv[v] * t.br;
+              const double f = sv[v] / (gap * gap + di * di);
+              rv[v] += (nr * gap + ni * di) * f;
+              iv[v] += (ni * gap - nr * di) * f;
+            }
+          }
+          // Unbounded where the undamped mode sits at ω, moves this DOF and the load drives it
+          // (as the direct solve decides). ω² rises with the speed, so on a sorted grid those
+          // speeds are one run found by bisection.
+          if (t.undamped && t.moves) {
+            const int first = b.ascending ? static_cast<int>(std::lower_bound(w2v, w2v + n, t.lambda - t.tolerance) - w2v) : 0;
+            for (int v = first; v < n && (!b.ascending || w2v[v] <= t.lambda + t.tolerance); ++v)
+              if (std::abs(t.lambda - w2v[v]) <= t.tolerance &&
+                  std::abs(t.a + std::complex<double>(0.0, wv[v]) * t.b) > t.drive_floor * (q_norm_k + wv[v] * q_norm_c))
+                b.resonant[v] = 1;
+          }
+        }
+        if (sk != 0.0 || sc != 0.0)
+          for (int v = 0; v < n; ++v) {
+            rv[v] += sv[v] * (sk.real() - wv[v] * sc.imag());
+            iv[v] += sv[v] * (sk.imag() + wv[v] * sc.real());
+          }
+      };
     });
   }
 
@@ -332,22 +384,27 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
         return scale * x;
       };
       if (agrees_with_direct(system, modes, source, parts, outputs, speeds, at_speed))
-        return vectorised([&](int k, int dof, const Eigen::ArrayXd& w, const Eigen::ArrayXd&, const Eigen::ArrayXd& scale,
-                              Eigen::ArrayXd& re, Eigen::ArrayXd& im, Flags&) {
-          const int count = static_cast<int>(w.size());
+        return vectorised([&](int k, int dof) -> Kernel {
+          // (a_r + iωb_r)/(iω − λ_r) per root: every root strictly damped, so no division by 0.
+          struct Root {
+            double ar, ai, br, bi, decay, lambda_im;
+          };
+          std::vector<Root> terms;
           for (Eigen::Index r = 0; r < cm.roots.size(); ++r) {
             const std::complex<double> a = cm.shapes(dof, r) * on_roots_k[k - 1](r);
             const std::complex<double> b = cm.shapes(dof, r) * on_roots_c[k - 1](r);
-            const double dr = -cm.roots(r).real(), lambda_im = cm.roots(r).imag();
-            for (int v = 0; v < count; ++v) {
-              // (a + iωb)/(iω − λ_r): every root strictly damped, so dr > 0 and no division by 0.
-              const double nr = a.real() - w(v) * b.imag(), ni = a.imag() + w(v) * b.real();
-              const double di = w(v) - lambda_im;
-              const double f = scale(v) / (dr * dr + di * di);
-              re(v) += (nr * dr + ni * di) * f;
-              im(v) += (ni * dr - nr * di) * f;
-            }
+            terms.push_back({a.real(), a.imag(), b.real(), b.imag(), -cm.roots(r).real(), cm.roots(r).imag()});
           }
+          return [terms = std::move(terms)](const Block& b) {
+            for (const Root& t : terms)
+              for (int v = 0; v < b.count; ++v) {
+                const double nr = t.ar - b.w[v] * t.bi, ni = t.ai + b.w[v] * t.br;
+                const double di = b.w[v] - t.lambda_im;
+                const double f = b.scale[v] / (t.decay * t.decay + di * di);
+                b.re[v] += (nr * t.decay + ni * di) * f;
+                b.im[v] += (ni * t.decay - nr * di) * f;
+              }
+          };
         });
     }
   }

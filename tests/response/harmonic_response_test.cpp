@@ -256,6 +256,58 @@ TEST(AmplitudeCurves, FastSweepEqualsDirectSolves) {
   }
 }
 
+// The sweep skips what a mode shape has at the eigensolver's round-off at an output (below
+// 1e-12 of its largest component, speed_sweep.cpp) and must keep every real coupling, however
+// weak. A rear spring 1e-7 stiffer than the front couples bounce and pitch weakly; 1e-8 off the
+// pitch resonance in ω the body's bounce is mostly the pitch mode's share, so a sweep that
+// dropped it would be wrong by orders of magnitude. Tolerance 1e-7: at 1e-8 off resonance the
+// direct solve's matrix has a condition number ~1/(2·1e-8), so each side carries ~1e-8 of
+// round-off (measured 2.3e-8).
+TEST(AmplitudeCurves, WeakCouplingsKeptNearResonance) {
+  const std::string file = write_temp("weak_coupling.toml", R"toml(
+[vehicle]
+name = "bounce and pitch weakly coupled"
+[[body]]
+name = "b"
+mass = "20 t"
+inertia = { roll = "1e5 kg*m^2", pitch = "2e5 kg*m^2", yaw = "1e5 kg*m^2" }
+centre_of_gravity = ["0 m", "0 m", "0 m"]
+held = ["lateral", "roll", "yaw"]
+[[element]]
+name = "front"
+upper = "b"
+point = ["3 m", "0 m", "0 m"]
+vertical = { stiffness = "1 MN/m" }
+[[element]]
+name = "rear"
+upper = "b"
+point = ["-3 m", "0 m", "0 m"]
+vertical = { stiffness = "1.0000001 MN/m" }
+)toml");
+  const LinearSystem sys = assemble(load_vehicle(file), DofSet::all);
+  const ModalResult modes = solve_modes(sys);
+  const int bounce = sys.index_of("b.bounce");
+  const Mode& pitch = modes.modes.front();  // 9.5 rad/s, below the bounce's 10 rad/s
+  ASSERT_EQ(pitch.name, "b pitch");
+  const double share = std::abs(pitch.shape(bounce)) / pitch.shape.cwiseAbs().maxCoeff();
+  ASSERT_GT(share, 1e-9);  // real, far above round-off
+  ASSERT_LT(share, 1e-5);  // and weak
+  RailJoints j;
+  j.rail_length = 12.5;
+  j.dip_depth = 0.005;
+  j.harmonics = 1;
+  const auto source = make_source(j);
+  const double speed = source->speed_for(std::sqrt(pitch.eigenvalue) * (1.0 + 1e-8) / (2.0 * M_PI), 1);
+  const auto curves = amplitude_curves(sys, modes, *source, 0, {{bounce, ResponseQuantity::displacement}}, {speed});
+  const std::vector<double> direct = direct_amplitudes(sys, modes, *source, speed, ResponseQuantity::displacement);
+  ASSERT_FALSE(curves[0].unbounded[0]);
+  EXPECT_NEAR(curves[0].amplitudes[0], direct[bounce], 1e-7 * direct[bounce]);
+  // Without the pitch term the bounce would be its static-like share alone: orders smaller.
+  const HarmonicLoad load = source->load(sys, speed, 1);
+  const auto far = harmonic_response(sys, modes, generalized_load(sys, load), load.frequency_hz * 0.5);
+  EXPECT_GT(direct[bounce], 100.0 * std::abs(far.displacement(bounce)));
+}
+
 // Discrete dampers (non-proportional C): the sweep takes the complex modes of the first-order
 // form. The Manchester coach (15 DOFs, dampers everywhere), all DOFs as outputs, against a
 // direct solve at every speed and harmonic: 1e-10 of the largest, as the proportional path.
