@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "railmodal/response.hpp"
+#include "response/modal_checks.hpp"
 
 namespace railmodal {
 
@@ -41,20 +42,6 @@ Evaluation respond(const LinearSystem& system, const ModalResult& modes, const H
   return e;
 }
 
-// Oscillatory modes grouped by frequency: a repeated frequency (relative gap below 1e-8, as
-// Mode::repeated) is one eigenspace, whose basis the solver chose arbitrarily.
-std::vector<std::vector<const Mode*>> eigenspaces(const ModalResult& modes) {
-  std::vector<std::vector<const Mode*>> groups;
-  for (const Mode& m : modes.modes) {
-    if (m.kind != ModeKind::oscillatory) continue;
-    if (!groups.empty() && std::abs(m.eigenvalue - groups.back().front()->eigenvalue) <= 1e-8 * m.eigenvalue)
-      groups.back().push_back(&m);
-    else
-      groups.push_back({&m});
-  }
-  return groups;
-}
-
 }  // namespace
 
 std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,
@@ -62,7 +49,7 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
                                                 const CriticalSpeedOptions& options) {
   if (!(options.min_speed > 0.0) || !(options.max_speed >= options.min_speed) || !std::isfinite(options.max_speed))
     throw std::invalid_argument("critical speeds: need 0 < min_speed ≤ max_speed");
-  const auto groups = eigenspaces(modes);
+  const auto groups = response::eigenspaces(modes);
   std::vector<CriticalSpeed> found;
   for (size_t s = 0; s < sources.size(); ++s) {
     const ExcitationSource& source = *sources[s];

@@ -1,9 +1,11 @@
-// Two tests on a mode that several parts of the response must decide alike: whether damping
-// acts on it, and whether it moves a given quantity (a DOF, an element's stretch).
+// What several parts of the response must decide alike about modes: whether damping acts on a
+// mode, whether it moves a given quantity (a DOF, an element's stretch), and which modes share
+// one eigenspace.
 #pragma once
 
 #include <Eigen/Core>
 #include <cmath>
+#include <vector>
 
 #include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"
@@ -21,6 +23,28 @@ inline bool undamped(const LinearSystem& system, const Mode& mode) {
 /// (symmetry zeros are round-off, far below).
 inline bool moves(const Eigen::RowVectorXd& row, const Eigen::VectorXd& shape) {
   return std::abs(row.dot(shape)) > 1e-9 * shape.cwiseAbs().maxCoeff() * row.cwiseAbs().sum();
+}
+
+/// Oscillatory modes grouped by frequency: a repeated frequency (relative gap below 1e-8, as
+/// Mode::repeated) is one eigenspace, whose basis the solver chose arbitrarily. Modes come in
+/// ascending order, so each group is a run; the critical speeds name a group by its first mode.
+inline std::vector<std::vector<const Mode*>> eigenspaces(const ModalResult& modes) {
+  std::vector<std::vector<const Mode*>> groups;
+  for (const Mode& m : modes.modes) {
+    if (m.kind != ModeKind::oscillatory) continue;
+    if (!groups.empty() && std::abs(m.eigenvalue - groups.back().front()->eigenvalue) <= 1e-8 * m.eigenvalue)
+      groups.back().push_back(&m);
+    else
+      groups.push_back({&m});
+  }
+  return groups;
+}
+
+/// The eigenspace whose first mode has 1-based index `mode` (CriticalSpeed::mode); empty if none.
+inline std::vector<const Mode*> eigenspace_of(const ModalResult& modes, int mode) {
+  for (auto& group : eigenspaces(modes))
+    if (group.front()->index == mode) return group;
+  return {};
 }
 
 }  // namespace railmodal::response

@@ -69,16 +69,6 @@ void summarise_response(const CriticalSpeedStudy& study, VariantResult* r) {
   }
 }
 
-// The oscillatory modes of a critical speed's eigenspace (frequencies within 1e-8, as
-// Mode::repeated and the critical speeds group them).
-std::vector<const Mode*> eigenspace(const ModalResult& modes, const CriticalSpeed& cs) {
-  const double lambda = modes.modes[cs.mode - 1].eigenvalue;
-  std::vector<const Mode*> group;
-  for (const Mode& m : modes.modes)
-    if (m.kind == ModeKind::oscillatory && std::abs(m.eigenvalue - lambda) <= 1e-8 * lambda) group.push_back(&m);
-  return group;
-}
-
 // The response of one element for one source at the largest point near grid point v (a local
 // maximum of its stretch): golden-section search between the neighbours, to 1e-6 of the
 // speed, as the damped peaks of the amplitude curves are refined. Returns the curve at that
@@ -142,7 +132,7 @@ void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& stu
   }
   // Rule 1: resonances that nothing damps and friction does not stop.
   for (const CriticalSpeed& cs : study.critical_speeds) {
-    const std::vector<const Mode*> group = eigenspace(study.modes, cs);
+    const std::vector<const Mode*> group = response::eigenspace_of(study.modes, cs.mode);
     if (cs.friction_stops ||
         !std::all_of(group.begin(), group.end(), [&](const Mode* m) { return response::undamped(system, *m); }))
       continue;
