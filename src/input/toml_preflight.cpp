@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <set>
 #include <string_view>
+#include <vector>
 
 #include "input/utf8.hpp"
 #include "railmodal/errors.hpp"
@@ -24,9 +26,21 @@ class Scanner {
 
   void run() {
     int depth = 0;
+    bool statement_start = true;  // at the start of a line outside any array or inline table
     while (i_ < s_.size()) {
       const char c = s_[i_];
-      if (c == '#') {
+      if (statement_start && (c == ' ' || c == '\t' || c == '\r')) {
+        ++i_;
+        continue;
+      }
+      if (statement_start && c != '\n' && c != '#') {
+        statement_start = false;
+        if (statement()) continue;
+      }
+      if (c == '\n') {
+        statement_start = depth == 0;
+        ++i_;
+      } else if (c == '#') {
         skip_to_line_end();
       } else if (c == '"' || c == '\'') {
         skip_string(c);
@@ -46,6 +60,81 @@ class Scanner {
   }
 
  private:
+  using KeyPath = std::vector<std::string>;
+
+  // A table header, or the key of a key = value line. A header whose path runs through a key
+  // that holds an array value (`a = []`, then `[a.b]`) is refused: it is not TOML, and toml11
+  // 3.7.1 takes the last element of that array as the table to extend, which for an empty
+  // array is undefined behaviour (upstream 8e95891). Returns false, having consumed nothing,
+  // where the line is neither (toml11 then reports it).
+  bool statement() {
+    size_t j = i_;
+    if (s_[j] == '[') {
+      const bool array_of_tables = j + 1 < s_.size() && s_[j + 1] == '[';
+      j += array_of_tables ? 2 : 1;
+      KeyPath path;
+      if (!key_path(j, path)) return false;
+      if (s_.compare(j, array_of_tables ? 2 : 1, array_of_tables ? "]]" : "]") != 0) return false;
+      for (size_t n = 1; n <= path.size(); ++n)
+        if (array_values_.count(KeyPath(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(n))))
+          fail(i_, std::string("the table ") + (array_of_tables ? "[[" : "[") + join(path) + (array_of_tables ? "]]" : "]") + " extends '" + join(KeyPath(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(n))) +
+                       "', which is an array value (a key = [...] line), not a table");
+      table_ = path;
+      i_ = j + (array_of_tables ? 2 : 1);
+      return true;
+    }
+    KeyPath key;
+    if (!key_path(j, key)) return false;
+    if (j >= s_.size() || s_[j] != '=') return false;
+    ++j;
+    while (j < s_.size() && (s_[j] == ' ' || s_[j] == '\t')) ++j;
+    if (j < s_.size() && s_[j] == '[') {
+      KeyPath full = table_;
+      full.insert(full.end(), key.begin(), key.end());
+      array_values_.insert(full);
+    }
+    i_ = j;  // the value is scanned as any other text
+    return true;
+  }
+
+  // A dotted key (bare, "basic" or 'literal' parts; whitespace around the dots) from j, and
+  // the whitespace after it. Quoted parts are kept as written (escapes not decoded).
+  bool key_path(size_t& j, KeyPath& out) const {
+    auto blank = [&] {
+      while (j < s_.size() && (s_[j] == ' ' || s_[j] == '\t')) ++j;
+    };
+    for (;;) {
+      blank();
+      if (j >= s_.size()) return false;
+      const char q = s_[j];
+      size_t begin = j, end = j;
+      if (q == '"' || q == '\'') {
+        ++j;
+        begin = j;
+        while (j < s_.size() && s_[j] != q && s_[j] != '\n') j += (q == '"' && s_[j] == '\\') ? 2 : 1;
+        if (j >= s_.size() || s_[j] != q) return false;
+        end = j++;
+      } else {
+        while (j < s_.size() && (std::isalnum(static_cast<unsigned char>(s_[j])) || s_[j] == '_' || s_[j] == '-')) ++j;
+        end = j;
+        if (end == begin) return false;
+      }
+      out.emplace_back(s_, begin, end - begin);
+      blank();
+      if (j < s_.size() && s_[j] == '.') {
+        ++j;
+        continue;
+      }
+      return true;
+    }
+  }
+
+  static std::string join(const KeyPath& path) {
+    std::string out;
+    for (const std::string& part : path) out += (out.empty() ? "" : ".") + part;
+    return out;
+  }
+
   static bool is_word_char(char c) {
     return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '+' || c == '.' || c == ':';
   }
@@ -122,6 +211,8 @@ class Scanner {
   const std::string& s_;
   const std::string& file_;
   size_t i_ = 0;
+  KeyPath table_;                   // the current table's path
+  std::set<KeyPath> array_values_;  // keys given an array value, with their table's path
 };
 
 }  // namespace

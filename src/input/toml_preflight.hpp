@@ -6,7 +6,9 @@
 //   - arrays and inline tables nested deeper than 64 (toml11 recurses once per level and
 //     overflows the stack at a few thousand; upstream 8e214ec limits it to 64);
 //   - integer literals outside 64 bits (toml11 overflows a signed integer reading a long binary
-//     literal, and clamps long decimal, octal and hexadecimal ones to the largest integer).
+//     literal, and clamps long decimal, octal and hexadecimal ones to the largest integer);
+//   - a table header through a key that holds an array value (`a = []`, then `[a.b]`: toml11
+//     takes the last element of the empty array, upstream 8e95891).
 #pragma once
 
 #include <string>

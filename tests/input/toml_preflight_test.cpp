@@ -79,6 +79,19 @@ TEST(TomlPreflight, IntegersMustFitIn64Bits) {
   expect_accepted("a = 1e400\nb = 1979-05-27T07:32:00Z\nk99999999999999999999x = 1.5\nc = \"99999999999999999999 kgf\"\n");
 }
 
+TEST(TomlPreflight, TableHeadersThroughArrayValuesAreRefused) {
+  // toml11 3.7.1 took the last element of the empty array as the table to extend (UBSan).
+  expect_rejected("a = []\n[a.b]\nc = 1\n", 2, 1, "the table [a.b] extends 'a', which is an array value");
+  expect_rejected("x.a = [ # c\n ]\n[x.a.b.c]\n", 3, 1, "extends 'x.a'");
+  expect_rejected("[s]\na = []\n[ s . a . b ]\n", 3, 1, "extends 's.a'");
+  expect_rejected("\"a\" = [1]\n['a'.b]\n", 2, 1, "extends 'a'");
+  expect_rejected("a = []\n[[a]]\n", 2, 1, "the table [[a]] extends 'a'");
+  // Arrays of tables may be extended, and other tables' keys of the same name are others.
+  expect_accepted("[[a]]\nx = 1\n[a.b]\ny = 2\n[s]\nv = []\n[t.v]\n[s.w]\n");
+  // Only a line's key counts: '=' and brackets inside values and strings are values.
+  expect_accepted("a = \"b = []\"\n[b.c]\nd = [[1], [2]]\n[e]\n");
+}
+
 TEST(TomlPreflight, InvalidUtf8IsLocated) {
   expect_rejected("a = 1\nb = 'x\xff'\n", 2, 7, "byte 0xff is not UTF-8 text");
   expect_accepted("a = 'Ma\xc3\x9f" "e' # \xe2\x80\x94 \xf0\x9f\x9a\x83\n");
