@@ -197,7 +197,12 @@ class Scanner {
       int d = -1;
       if (std::isdigit(static_cast<unsigned char>(c))) d = c - '0';
       else if (radix == 16 && std::isxdigit(static_cast<unsigned char>(c))) d = std::tolower(c) - 'a' + 10;
-      if (d < 0 || d >= radix) return;  // not an integer literal
+      // Past its digits a decimal word is something else (a float, a date, a key); toml11 reads
+      // the digits of 0x, 0o and 0b as an integer whatever follows them.
+      if (d < 0 || d >= radix) {
+        if (radix == 10) return;
+        break;
+      }
       ++digits;
       if (value > (largest - static_cast<uint64_t>(d)) / static_cast<uint64_t>(radix)) too_large = true;
       else value = value * static_cast<uint64_t>(radix) + static_cast<uint64_t>(d);

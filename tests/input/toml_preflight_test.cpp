@@ -71,6 +71,8 @@ TEST(TomlPreflight, IntegersMustFitIn64Bits) {
   // toml11 3.7.1 overflowed a signed integer on 63 binary digits (UBSan) and clamped the others.
   expect_accepted("a = 0b" + repeat("1", 62) + "\n");
   expect_rejected("a = 0b" + repeat("0", 63) + "\n", 1, 5, "does not fit in 64 bits");
+  // toml11 reads the digits whatever follows them (the fuzzer: 0b00…0lbums.songs]]).
+  expect_rejected("a = 0b" + repeat("0", 63) + "lbums.songs]]\n", 1, 5, "does not fit in 64 bits");
   expect_accepted("a = 9_223_372_036_854_775_807\nb = -9223372036854775808\nc = 0x7fffffffffffffff\n");
   expect_rejected("a = 9223372036854775808\n", 1, 5, "the integer 9223372036854775808 does not fit");
   expect_rejected("a = 0x8000000000000000\n", 1, 5, "does not fit");
