@@ -200,9 +200,14 @@ void read_sweep(TableReader& t, int number, std::vector<VariantSpec>* specs, con
     }
   } else {
     // Full grid, the first parameter varying slowest (nested loops in the order written).
+    // Checked factor by factor: four parameters of 65 536 values multiply to 2^64, which a
+    // running product would wrap to 0 (an empty sweep, silently).
+    constexpr size_t kMaxGrid = 10000000;
     size_t total = 1;
-    for (const auto& p : parameters) total *= p.values.size();
-    if (total > 10000000) t.fail("parameters", "the grid has more than 10 million points");
+    for (const auto& p : parameters) {
+      if (p.values.size() > kMaxGrid / total) t.fail("parameters", "the grid has more than 10 million points");
+      total *= p.values.size();
+    }
     for (size_t n = 0; n < total; ++n) {
       std::vector<toml::value> values(parameters.size());
       std::string label;

@@ -128,6 +128,18 @@ parameters = [
   EXPECT_NEAR(vertical_stiffness(s.variants[0].vehicle) / vertical_stiffness(s.variants[4].vehicle), 2.0, 1e-14);
 }
 
+TEST(StudyReader, GridSizeIsCheckedWithoutWrappingAround) {
+  // 65 536⁴ = 2^64 points: a running product in 64 bits wraps to 0, which would be an empty
+  // sweep and no error. The limit (10 million) is met on the second factor.
+  std::string parameters;
+  for (const char* key : {"body.cg_height", "suspension.wheelbase", "suspension.spring_spacing",
+                          "suspension.spring[0].static_deflection"})
+    parameters += std::string("  { key = \"") + key + "\", from = \"1 mm\", to = \"65536 mm\", step = \"1 mm\" },\n";
+  const InputError e = study_error("\n[[sweep]]\nname = \"huge\"\nparameters = [\n" + parameters + "]\n");
+  EXPECT_EQ(e.line(), 8);
+  EXPECT_NE(e.message().find("the grid has more than 10 million points"), std::string::npos) << e.what();
+}
+
 TEST(StudyReader, SampleIsSeededAndPortable) {
   const std::string body = R"(
 [[sweep]]
