@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <istream>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -31,7 +32,14 @@ struct StudyVariant {
   std::vector<StudyParameter> parameters;
   Vehicle vehicle;
   Scene scene;
+  /// false: load_study named this variant but did not read it (another shard's); its vehicle
+  /// and scene are empty, and read_variant reads them.
+  bool read = true;
 };
+
+namespace detail {
+struct StudyPlan;  // how to read each variant: the parsed files and the overrides (study_reader.cpp)
+}
 
 /// A bound on a metric (docs/studies.md lists the metrics), SI.
 struct RankingConstraint {
@@ -83,13 +91,27 @@ struct Study {
   std::vector<StudyVariant> variants;  ///< base (unless base = false), variants, sweep points
   Ranking ranking;
   DeflectionRule deflection_rule;  ///< [permissible_dynamic_deflection]; none: not checked
+  std::shared_ptr<const detail::StudyPlan> plan;  ///< for read_variant; shared by copies
 };
+
+/// Whether variant `index` is in shard `shard` of `shards` (1 <= shard <= shards): index mod
+/// shards = shard − 1. Shards interleave, so each gets a like mix of the study's variants.
+inline bool in_shard(int index, int shard, int shards) { return index % shards == shard - 1; }
 
 /// Reads a study file and every variant it defines: overrides are applied to the vehicle's
 /// (or scene's) TOML before the usual readers check it. Throws InputError naming the study
 /// file, line, variant and key for a bad override, and the vehicle or scene file for their
 /// own errors.
-Study load_study(const std::string& path);
+///
+/// With `read_only`, the variants it rejects are named but not read (StudyVariant::read is
+/// false): a shard reads its own share only, in its share of the time and memory (about 10 kB
+/// a read variant), and a bad override in another shard's variant is that shard's error.
+/// Names, sweeps and ranking are checked for the whole study either way.
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only = {});
+
+/// Variant `index` with its vehicle and scene: a copy of the one load_study read, or read now
+/// from the study's files (throwing InputError as load_study would).
+StudyVariant read_variant(const Study& study, int index);
 
 /// What the evaluation found for one variant (SI inside).
 struct VariantResult {
@@ -159,7 +181,8 @@ struct EvaluationOptions {
   std::function<void(double)> progress;  ///< fraction done, called from one thread at a time
 };
 
-/// The variants of this shard, in index order; the same whatever the thread count.
+/// The variants of this shard, in index order; the same whatever the thread count. Each must
+/// have been read (load_study with this shard, or all); std::invalid_argument otherwise.
 std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options);
 
 /// The value of a metric for a result, SI, or nothing when the result has no such value

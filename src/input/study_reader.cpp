@@ -21,7 +21,6 @@
 
 namespace railmodal {
 namespace input {
-namespace {
 
 struct Override {
   std::string key;
@@ -38,6 +37,27 @@ struct VariantSpec {
   std::vector<StudyParameter> parameters;
   std::vector<Override> overrides;
 };
+
+}  // namespace input
+
+namespace detail {
+
+// What read_variant needs to read any variant later: the specs, and the files parsed once.
+struct StudyPlan {
+  std::string path;
+  std::vector<input::VariantSpec> specs;
+  std::map<std::string, toml::value> vehicle_documents;
+  std::string scene_file;
+  toml::value scene_document;
+  Scene base_scene;
+  DeflectionRule rule;
+  int rule_line = 0, rule_column = 0, elements_line = 0, elements_column = 0;
+};
+
+}  // namespace detail
+
+namespace input {
+namespace {
 
 std::string shortest(double x) {
   char buffer[32];
@@ -347,23 +367,61 @@ Result read_with_overrides(const toml::value& base, const std::string& file, con
   }
 }
 
+// Variant `index` of the plan read in full; `plain` caches vehicles read without overrides.
+StudyVariant read_planned(const detail::StudyPlan& plan, int index, std::map<std::string, Vehicle>* plain) {
+  const VariantSpec& spec = plan.specs.at(static_cast<size_t>(index));
+  const std::string& path = plan.path;
+  const toml::value& vehicle_document = plan.vehicle_documents.at(spec.vehicle_file);
+  std::vector<const Override*> on_vehicle, on_scene;
+  for (const auto& o : spec.overrides) (o.scene ? on_scene : on_vehicle).push_back(&o);
+  StudyVariant variant;
+  variant.name = spec.name;
+  variant.parameters = spec.parameters;
+  if (on_vehicle.empty()) {
+    auto cached = plain ? plain->find(spec.vehicle_file) : std::map<std::string, Vehicle>::iterator{};
+    if (plain && cached != plain->end()) variant.vehicle = cached->second;
+    else variant.vehicle = read_vehicle(vehicle_document, spec.vehicle_file);
+    if (plain && cached == plain->end()) (*plain)[spec.vehicle_file] = variant.vehicle;
+  } else {
+    variant.vehicle = read_with_overrides<Vehicle>(vehicle_document, spec.vehicle_file, on_vehicle, spec, path, read_vehicle);
+  }
+  variant.scene = on_scene.empty()
+                      ? plan.base_scene
+                      : read_with_overrides<Scene>(plan.scene_document, plan.scene_file, on_scene, spec, path, read_scene);
+  if (plan.rule.active() && variant.scene.dofs == DofSet::lateral)
+    throw InputError(path, plan.rule_line, plan.rule_column,
+                     "key 'permissible_dynamic_deflection': variant '" + spec.name + "': the scene's dofs = \"lateral\" "
+                     "has no bounce or pitch, so no vertical spring deflection to check (use \"vertical\" or \"all\")");
+  for (const auto& [element, limit] : plan.rule.element_limits) {
+    bool found = false;
+    for (const Element& e : variant.vehicle.elements) found = found || (e.name == element && !e.vertical_stages.empty());
+    if (!found)
+      throw InputError(path, plan.elements_line, plan.elements_column,
+                       "key 'permissible_dynamic_deflection.elements': variant '" + spec.name + "': no element '" +
+                           element + "' with vertical springs in vehicle '" + variant.vehicle.name + "'");
+  }
+  return variant;
+}
+
 }  // namespace
 }  // namespace input
 
-Study load_study(const std::string& path) {
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only) {
   using namespace input;
   const toml::value document = parse_toml_file(path);
   TableReader root(document, path, "");
+  auto plan = std::make_shared<detail::StudyPlan>();
+  plan->path = path;
   Study study;
   study.source = path;
   TableReader head = root.table("study");
   study.name = head.optional_string("name").value_or(std::filesystem::path(path).stem().string());
   const std::string vehicle_file = existing_file(head, "vehicle");
-  const std::string scene_file = existing_file(head, "scene");
+  plan->scene_file = existing_file(head, "scene");
   const bool base = head.optional_boolean("base").value_or(true);
   head.finish();
 
-  std::vector<VariantSpec> specs;
+  std::vector<VariantSpec>& specs = plan->specs;
   if (base) specs.push_back({"base", line_of(document.as_table().at("study")), 0, vehicle_file, {}, {}});
   if (root.has("variant"))
     for (auto& t : root.tables("variant")) {
@@ -385,13 +443,13 @@ Study load_study(const std::string& path) {
     int number = 0;
     for (auto& t : root.tables("sweep")) read_sweep(t, ++number, &specs, vehicle_file);
   }
-  int elements_line = 0, elements_column = 0, rule_line = 0, rule_column = 0;
   if (root.has("permissible_dynamic_deflection")) {
-    rule_line = line_of(root.raw("permissible_dynamic_deflection"));
-    rule_column = column_of(root.raw("permissible_dynamic_deflection"));
+    plan->rule_line = line_of(root.raw("permissible_dynamic_deflection"));
+    plan->rule_column = column_of(root.raw("permissible_dynamic_deflection"));
     TableReader t = root.table("permissible_dynamic_deflection");
-    study.deflection_rule = read_deflection_rule(t, &elements_line, &elements_column);
+    plan->rule = read_deflection_rule(t, &plan->elements_line, &plan->elements_column);
   }
+  study.deflection_rule = plan->rule;
   if (root.has("ranking")) {
     TableReader t = root.table("ranking");
     read_ranking(t, &study.ranking, study.deflection_rule.active());
@@ -399,47 +457,39 @@ Study load_study(const std::string& path) {
   root.finish();
   if (specs.empty()) throw InputError(path, 0, 0, "no variants: base = false and no [[variant]] or [[sweep]]");
 
-  std::map<std::string, toml::value> vehicle_documents;
-  const toml::value scene_document = parse_toml_file(scene_file);
-  Scene base_scene = read_scene(scene_document, scene_file);
-  if (!(base_scene.max_speed > 0.0))
-    throw InputError(scene_file, 0, 0, "the scene has no [speed] range: a study sweeps the speeds for critical speeds");
-  std::map<std::string, Vehicle> plain_vehicles;  // files without overrides, read once
+  plan->scene_document = parse_toml_file(plan->scene_file);
+  plan->base_scene = read_scene(plan->scene_document, plan->scene_file);
+  if (!(plan->base_scene.max_speed > 0.0))
+    throw InputError(plan->scene_file, 0, 0, "the scene has no [speed] range: a study sweeps the speeds for critical speeds");
   std::set<std::string> names;
   for (const VariantSpec& spec : specs) {
     if (!names.insert(spec.name).second)
       throw InputError(path, spec.line, spec.column, "variant '" + spec.name + "': another variant has this name");
-    if (!vehicle_documents.count(spec.vehicle_file)) vehicle_documents[spec.vehicle_file] = parse_toml_file(spec.vehicle_file);
-    std::vector<const Override*> on_vehicle, on_scene;
-    for (const auto& o : spec.overrides) (o.scene ? on_scene : on_vehicle).push_back(&o);
-    StudyVariant variant;
-    variant.name = spec.name;
-    variant.parameters = spec.parameters;
-    if (on_vehicle.empty()) {
-      if (!plain_vehicles.count(spec.vehicle_file))
-        plain_vehicles[spec.vehicle_file] = read_vehicle(vehicle_documents[spec.vehicle_file], spec.vehicle_file);
-      variant.vehicle = plain_vehicles[spec.vehicle_file];
-    } else {
-      variant.vehicle = read_with_overrides<Vehicle>(vehicle_documents[spec.vehicle_file], spec.vehicle_file, on_vehicle,
-                                                     spec, path, read_vehicle);
-    }
-    variant.scene = on_scene.empty() ? base_scene
-                                     : read_with_overrides<Scene>(scene_document, scene_file, on_scene, spec, path, read_scene);
-    if (study.deflection_rule.active() && variant.scene.dofs == DofSet::lateral)
-      throw InputError(path, rule_line, rule_column,
-                       "key 'permissible_dynamic_deflection': variant '" + spec.name + "': the scene's dofs = \"lateral\" "
-                       "has no bounce or pitch, so no vertical spring deflection to check (use \"vertical\" or \"all\")");
-    for (const auto& [element, limit] : study.deflection_rule.element_limits) {
-      bool found = false;
-      for (const Element& e : variant.vehicle.elements) found = found || (e.name == element && !e.vertical_stages.empty());
-      if (!found)
-        throw InputError(path, elements_line, elements_column,
-                         "key 'permissible_dynamic_deflection.elements': variant '" + spec.name + "': no element '" +
-                             element + "' with vertical springs in vehicle '" + variant.vehicle.name + "'");
-    }
-    study.variants.push_back(std::move(variant));
+    if (!plan->vehicle_documents.count(spec.vehicle_file))
+      plan->vehicle_documents[spec.vehicle_file] = parse_toml_file(spec.vehicle_file);
   }
+  std::map<std::string, Vehicle> plain_vehicles;  // files without overrides, read once
+  for (int i = 0; i < static_cast<int>(specs.size()); ++i) {
+    if (!read_only || read_only(i)) {
+      study.variants.push_back(read_planned(*plan, i, &plain_vehicles));
+    } else {
+      StudyVariant named;
+      named.name = specs[i].name;
+      named.parameters = specs[i].parameters;
+      named.read = false;
+      study.variants.push_back(std::move(named));
+    }
+  }
+  study.plan = std::move(plan);
   return study;
+}
+
+StudyVariant read_variant(const Study& study, int index) {
+  if (index < 0 || index >= static_cast<int>(study.variants.size()))
+    throw std::out_of_range("read_variant: the study has no variant " + std::to_string(index + 1));
+  if (study.variants[index].read) return study.variants[index];
+  if (!study.plan) throw std::invalid_argument("read_variant: variant '" + study.variants[index].name + "' was never read");
+  return input::read_planned(*study.plan, index, nullptr);
 }
 
 }  // namespace railmodal

@@ -399,11 +399,11 @@ std::vector<CurveSet> curve_sets(const Study& study, const Comparison& c, std::v
   for (const RankedVariant* v : best_variants(c)) wanted.push_back({v, false});
   std::vector<CurveSet> sets;
   for (const auto& [v, base] : wanted) {
-    const StudyVariant& variant = study.variants.at(v->result.index);
     CurveSet s;
     s.label = base ? "base" : std::to_string(v->rank) + ". " + v->result.name;
     s.base = base;
     try {
+      const StudyVariant variant = read_variant(study, v->result.index);  // merged shards read it now
       s.study = study_critical_speeds(variant.scene, variant.vehicle);
       sets.push_back(std::move(s));
     } catch (const std::exception& e) {  // NumericalError, InputError: say so, draw the rest

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "railmodal/study.hpp"
@@ -14,7 +15,12 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
     throw std::invalid_argument("shard must be K/N with 1 <= K <= N");
   std::vector<int> indices;
   for (int i = 0; i < static_cast<int>(study.variants.size()); ++i)
-    if (i % options.shards == options.shard - 1) indices.push_back(i);
+    if (in_shard(i, options.shard, options.shards)) {
+      if (!study.variants[i].read)
+        throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
+                                    "') was not read: load the study with this shard");
+      indices.push_back(i);
+    }
   std::vector<VariantResult> results(indices.size());
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min(threads, static_cast<int>(indices.size())));

@@ -163,6 +163,56 @@ sample = { count = 3, seed = 42 }
   for (int i = 0; i < 3; ++i) EXPECT_EQ(again.variants[i].parameters, s.variants[i].parameters);
 }
 
+TEST(StudyReader, AShardReadsOnlyItsOwnVariants) {
+  // Indices: 0 base, 1 soft, 2 stiff, 3 bad (wheelbase -1 m, line 16). Shard 1 of 2 reads 0 and 2.
+  const std::string path = study_file(R"(
+[[variant]]
+name = "soft"
+overrides = { "suspension.spring[0].static_deflection" = "80 mm" }
+
+[[variant]]
+name = "stiff"
+overrides = { "suspension.spring[0].static_deflection" = "40 mm" }
+
+[[variant]]
+name = "bad"
+overrides = { "suspension.wheelbase" = "-1 m" }
+)");
+  const Study shard = load_study(path, [](int index) { return in_shard(index, 1, 2); });
+  ASSERT_EQ(shard.variants.size(), 4u);  // every variant named, for the shard's JSON and the merge
+  EXPECT_EQ(shard.variants[3].name, "bad");
+  EXPECT_TRUE(shard.variants[0].read);
+  EXPECT_TRUE(shard.variants[2].read);
+  EXPECT_FALSE(shard.variants[1].read);
+  EXPECT_TRUE(shard.variants[1].vehicle.elements.empty());
+  EXPECT_EQ(shard.variants[1].parameters[0].second, "80 mm");
+  // Read later, a variant is the one a load that selects it reads (the same code on the same
+  // files: equal to the last bit).
+  const StudyVariant soft = read_variant(shard, 1);
+  EXPECT_TRUE(soft.read);
+  EXPECT_EQ(soft.name, "soft");
+  const Study all_but_bad = load_study(path, [](int index) { return index != 3; });
+  ASSERT_TRUE(all_but_bad.variants[1].read);
+  EXPECT_EQ(vertical_stiffness(soft.vehicle), vertical_stiffness(all_but_bad.variants[1].vehicle));
+  EXPECT_NE(vertical_stiffness(soft.vehicle), vertical_stiffness(shard.variants[0].vehicle));
+  // The other shard's bad override is that shard's error, with the study's line and key.
+  try {
+    read_variant(shard, 3);
+    ADD_FAILURE() << "no error for the bad variant";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 16);
+    EXPECT_NE(e.message().find("variant 'bad': key 'suspension.wheelbase': must be positive"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(load_study(path), InputError);  // a whole load checks every variant
+  EvaluationOptions own, other;
+  own.threads = other.threads = 1;
+  own.shards = other.shards = 2;
+  own.shard = 1;
+  other.shard = 2;
+  EXPECT_EQ(evaluate_study(shard, own).size(), 2u);
+  EXPECT_THROW(evaluate_study(shard, other), std::invalid_argument);  // variants it never read
+}
+
 TEST(StudyReader, RankingKeysAreChecked) {
   InputError e = study_error("\n[ranking]\nmin_critical_speed = \"90 mm\"\n");
   EXPECT_NE(e.message().find("key 'ranking.min_critical_speed': expected a speed"), std::string::npos) << e.what();

@@ -70,7 +70,8 @@ struct ShardText {
 
 ShardText evaluate_shard(const Options& o, int rank, int size, int threads, std::optional<railmodal::Study>& study) {
   try {
-    study = railmodal::load_study(o.study);
+    // Each rank reads its own variants only; rank 0's report reads the others it draws.
+    study = railmodal::load_study(o.study, [&](int index) { return railmodal::in_shard(index, rank + 1, size); });
     railmodal::EvaluationOptions evaluation;
     evaluation.shard = rank + 1;
     evaluation.shards = size;

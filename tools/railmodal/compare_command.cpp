@@ -42,7 +42,12 @@ int run(const CompareOptions& o) {
     evaluation.shards = std::stoi(m[2]);
   }
   try {
-    const Study study = load_study(o.study);
+    // A shard reads its own variants only; a merge reads none but those its report draws
+    // (read_variant); a whole run reads and checks every variant before evaluating any.
+    const int shard = evaluation.shard, shards = evaluation.shards;
+    const bool merging = !o.merge.empty();
+    const Study study =
+        load_study(o.study, [&](int index) { return !merging && in_shard(index, shard, shards); });
     std::ostringstream text;
     if (!o.shard.empty()) {
       if (!o.quiet) evaluation.progress = terminal_progress("compare");
