@@ -13,6 +13,7 @@
 
 #include "input/document_readers.hpp"
 #include "input/key_path.hpp"
+#include "input/study_loader.hpp"
 #include "input/table_reader.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
@@ -184,7 +185,14 @@ SweepParameter read_parameter(TableReader& t, bool sample) {
   return p;
 }
 
-void read_sweep(TableReader& t, int number, std::vector<VariantSpec>* specs, const std::string& base_vehicle) {
+// "a million variants" for the default limit.
+std::string variants_text(size_t count) {
+  return count == 1000000 ? "a million variants" : std::to_string(count) + " variants";
+}
+
+// Adds the sweep's variants to `specs`, which may hold `max_variants` in all.
+void read_sweep(TableReader& t, int number, std::vector<VariantSpec>* specs, const std::string& base_vehicle,
+                size_t max_variants) {
   const std::string name = t.optional_string("name").value_or("sweep " + std::to_string(number));
   const bool sample = t.has("sample");
   std::vector<SweepParameter> parameters;
@@ -207,6 +215,8 @@ void read_sweep(TableReader& t, int number, std::vector<VariantSpec>* specs, con
   if (sample) {
     TableReader s = t.table("sample");
     const int count = s.count("count", 1);
+    if (static_cast<size_t>(count) > max_variants - specs->size())
+      s.fail("count", "would take the study over " + variants_text(max_variants) + " (each is held in memory, in every shard)");
     const int seed = s.count("seed", 0);
     s.finish();
     study::Xoshiro256 generator(static_cast<uint64_t>(seed));
@@ -222,10 +232,12 @@ void read_sweep(TableReader& t, int number, std::vector<VariantSpec>* specs, con
     // Full grid, the first parameter varying slowest (nested loops in the order written).
     // Checked factor by factor: four parameters of 65 536 values multiply to 2^64, which a
     // running product would wrap to 0 (an empty sweep, silently).
-    constexpr size_t kMaxGrid = 10000000;
+    const size_t room = max_variants - specs->size();
     size_t total = 1;
     for (const auto& p : parameters) {
-      if (p.values.size() > kMaxGrid / total) t.fail("parameters", "the grid has more than 10 million points");
+      if (p.values.size() > room / total)
+        t.fail("parameters", "the grid would take the study over " + variants_text(max_variants) +
+                                 " (each is held in memory, in every shard)");
       total *= p.values.size();
     }
     for (size_t n = 0; n < total; ++n) {
@@ -404,10 +416,8 @@ StudyVariant read_planned(const detail::StudyPlan& plan, int index, std::map<std
 }
 
 }  // namespace
-}  // namespace input
 
-Study load_study(const std::string& path, const std::function<bool(int index)>& read_only) {
-  using namespace input;
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants) {
   const toml::value document = parse_toml_file(path);
   TableReader root(document, path, "");
   auto plan = std::make_shared<detail::StudyPlan>();
@@ -437,11 +447,13 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
       for (auto& o : read_overrides(t, "scene_overrides", true)) spec.overrides.push_back(o);
       for (const auto& o : spec.overrides) spec.parameters.push_back({(o.scene ? "scene:" : "") + o.key, o.text});
       t.finish();
+      if (specs.size() >= max_variants)
+        throw InputError(path, spec.line, spec.column, "the study has more than " + variants_text(max_variants));
       specs.push_back(spec);
     }
   if (root.has("sweep")) {
     int number = 0;
-    for (auto& t : root.tables("sweep")) read_sweep(t, ++number, &specs, vehicle_file);
+    for (auto& t : root.tables("sweep")) read_sweep(t, ++number, &specs, vehicle_file, max_variants);
   }
   if (root.has("permissible_dynamic_deflection")) {
     plan->rule_line = line_of(root.raw("permissible_dynamic_deflection"));
@@ -482,6 +494,12 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
   }
   study.plan = std::move(plan);
   return study;
+}
+
+}  // namespace input
+
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only) {
+  return input::load_study(path, read_only, input::kMaxStudyVariants);
 }
 
 StudyVariant read_variant(const Study& study, int index) {

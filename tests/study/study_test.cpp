@@ -130,14 +130,31 @@ parameters = [
 
 TEST(StudyReader, GridSizeIsCheckedWithoutWrappingAround) {
   // 65 536⁴ = 2^64 points: a running product in 64 bits wraps to 0, which would be an empty
-  // sweep and no error. The limit (10 million) is met on the second factor.
+  // sweep and no error. The limit (a million variants in the study) is met on the second factor.
   std::string parameters;
   for (const char* key : {"body.cg_height", "suspension.wheelbase", "suspension.spring_spacing",
                           "suspension.spring[0].static_deflection"})
     parameters += std::string("  { key = \"") + key + "\", from = \"1 mm\", to = \"65536 mm\", step = \"1 mm\" },\n";
   const InputError e = study_error("\n[[sweep]]\nname = \"huge\"\nparameters = [\n" + parameters + "]\n");
   EXPECT_EQ(e.line(), 8);
-  EXPECT_NE(e.message().find("the grid has more than 10 million points"), std::string::npos) << e.what();
+  EXPECT_NE(e.message().find("the grid would take the study over a million variants"), std::string::npos) << e.what();
+  // The limit is the study's: a grid of exactly 10^6 points, or a sample of 10^6, is one too
+  // many beside the base (checked before any variant is made, so this test stays fast).
+  const InputError grid = study_error(R"(
+[[sweep]]
+parameters = [{ key = "body.cg_height", from = "1 mm", to = "1000 mm", step = "1 mm" },
+              { key = "suspension.wheelbase", from = "1 mm", to = "1000 mm", step = "1 mm" }]
+)");
+  EXPECT_NE(grid.message().find("the grid would take the study over a million variants"), std::string::npos) << grid.what();
+  const InputError sample = study_error(R"(
+[[sweep]]
+sample = { count = 1000000 }
+parameters = [{ key = "body.cg_height", from = "1.0 mm", to = "1000.0 mm" }]
+)");
+  EXPECT_EQ(sample.line(), 7);
+  EXPECT_NE(sample.message().find("key 'sweep[0].sample.count': would take the study over a million variants"),
+            std::string::npos)
+      << sample.what();
 }
 
 TEST(StudyReader, SampleIsSeededAndPortable) {
