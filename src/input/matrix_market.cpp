@@ -1,6 +1,7 @@
 // Matrix Market reader: the subset finite-element tools export for M, C and K (square,
 // real or integer, coordinate or array, general or symmetric), with every error located at
 // its file, line and column. Format: https://math.nist.gov/MatrixMarket/formats.html.
+#include "input/input_file.hpp"
 #include "railmodal/matrix_market.hpp"
 
 #include <Eigen/SparseCore>
@@ -278,8 +279,7 @@ void check_symmetric(const Eigen::SparseMatrix<double>& A, const std::vector<Ent
 }  // namespace
 
 MatrixMarketMatrix read_matrix_market(const std::string& path, bool require_symmetric) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, 0, 0, "cannot open the file");
+  std::ifstream in = input::open_input(path);
   Lines lines(in, path);
   std::string line;
   if (!lines.next(&line)) lines.fail(0, std::string("the file is empty; it must start with the banner '") + kBanner + "'");

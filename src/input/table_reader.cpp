@@ -1,3 +1,4 @@
+#include "input/input_file.hpp"
 #include "input/table_reader.hpp"
 
 #include <algorithm>
@@ -229,8 +230,7 @@ void TableReader::finish() const {
 }
 
 toml::value parse_toml_file(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file, 0, 0, "cannot open the file");
+  std::ifstream in = open_input(file);
   std::ostringstream text;
   text << in.rdbuf();
   const std::string content = text.str();

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "input/input_file.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"
@@ -346,8 +347,7 @@ void write_shard(std::ostream& out, const Study& study, const EvaluationOptions&
 }
 
 std::vector<VariantResult> read_shard(const std::string& file, const Study& study) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file, 0, 0, "cannot open the file");
+  std::ifstream in = input::open_input(file);
   return read_shard(in, file, study);
 }
 
