@@ -29,10 +29,11 @@ rm -rf "$corpus" && mkdir -p "$corpus"
 i=0
 for f in data/vehicles/*.toml tests/cli/bad/*.toml tests/corpus/bad_inputs/*.toml; do
   [ -e "$f" ] || continue
-  if grep -q '^\[scene\]' "$f"; then p='\x01'; else p='\x00'; fi
+  if grep -q '^\[scene\]' "$f"; then p='\x01'; elif grep -q '^\[study\]' "$f"; then p='\x03'; else p='\x00'; fi
   { printf "$p"; cat "$f"; } > "$corpus/seed$((i++))"
 done
 for f in data/scenes/*.toml; do { printf '\x01'; cat "$f"; } > "$corpus/seed$((i++))"; done
+for f in data/studies/*.toml; do { printf '\x03'; cat "$f"; } > "$corpus/seed$((i++))"; done
 for f in data/matrices/*.mtx tests/cli/bad/*.mtx tests/corpus/bad_inputs/*.mtx; do
   [ -e "$f" ] || continue
   { printf '\x02'; cat "$f"; } > "$corpus/seed$((i++))"

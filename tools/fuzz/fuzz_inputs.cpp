@@ -1,7 +1,8 @@
-// libFuzzer target for the input parsers: vehicle files, scene files, Matrix Market files.
-// The first byte picks the parser; the rest is the file. Each stage may throw only what the
-// command line turns into its documented exit code:
-//   parsers (load_vehicle, load_scene, load_matrix_model)  InputError           exit 3
+// libFuzzer target for the input parsers: vehicle files, scene files, Matrix Market files,
+// study files. The first byte picks the parser; the rest is the file. Each stage may throw
+// only what the command line turns into its documented exit code:
+//   parsers (load_vehicle, load_scene, load_matrix_model,
+//            load_study)                                   InputError           exit 3
 //   assemble                                                std::invalid_argument, which the
 //                                                           CLI rethrows as InputError: exit 3
 //   solve_modes (default options, at least one DOF)         NumericalError       exit 4
@@ -15,10 +16,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
+#include <system_error>
 #include <stdexcept>
 #include <string>
 
+#include "input/study_loader.hpp"
 #include "railmodal/railmodal.hpp"
 #include "railmodal/matrix_market.hpp"
 
@@ -37,6 +41,21 @@ const std::string& scratch(const char* name) {
   return path;
 }
 
+// A study's path: <scratch>/studies/study.toml, beside links to the bundled vehicles and
+// scenes, so that the bundled studies' "../vehicles/…" and "../scenes/…" resolve.
+const std::string& study_path() {
+  static const std::string path = [] {
+    const std::string root = scratch("studies");
+    std::error_code ignored;
+    std::filesystem::create_directories(root, ignored);
+    const std::filesystem::path parent = std::filesystem::path(root).parent_path();
+    for (const char* folder : {"vehicles", "scenes"})
+      std::filesystem::create_directory_symlink(std::string(RAILMODAL_DATA_DIR) + "/" + folder, parent / folder, ignored);
+    return root + "/study.toml";
+  }();
+  return path;
+}
+
 void write(const std::string& path, const uint8_t* data, size_t size) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
@@ -46,7 +65,7 @@ void write(const std::string& path, const uint8_t* data, size_t size) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size < 1) return 0;
-  const int which = data[0] % 3;
+  const int which = data[0] % 4;
   try {
     if (which == 0) {
       const std::string path = scratch("vehicle.toml");
@@ -63,6 +82,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       const std::string path = scratch("scene.toml");
       write(path, data + 1, size - 1);
       railmodal::load_scene(path);
+    } else if (which == 3) {
+      // The reader's paths, not a study's size: at most 64 variants listed and 2 read (a
+      // million listed take 2.7 GB, over the fuzzer's memory limit).
+      const std::string& path = study_path();
+      write(path, data + 1, size - 1);
+      railmodal::input::load_study(path, [](int index) { return index < 2; }, 64);
     } else {
       const std::string mass = scratch("M.mtx");
       write(mass, data + 1, size - 1);
