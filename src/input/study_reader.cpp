@@ -187,7 +187,7 @@ SweepParameter read_parameter(TableReader& t, bool sample) {
 
 // "a million variants" for the default limit.
 std::string variants_text(size_t count) {
-  return count == 1000000 ? "a million variants" : std::to_string(count) + " variants";
+  return count == kMaxStudyVariants ? "a million variants" : std::to_string(count) + " variants";
 }
 
 // Adds the sweep's variants to `specs`, which may hold `max_variants` in all.
@@ -389,11 +389,12 @@ StudyVariant read_planned(const detail::StudyPlan& plan, int index, std::map<std
   StudyVariant variant;
   variant.name = spec.name;
   variant.parameters = spec.parameters;
-  if (on_vehicle.empty()) {
-    auto cached = plain ? plain->find(spec.vehicle_file) : std::map<std::string, Vehicle>::iterator{};
-    if (plain && cached != plain->end()) variant.vehicle = cached->second;
-    else variant.vehicle = read_vehicle(vehicle_document, spec.vehicle_file);
-    if (plain && cached == plain->end()) (*plain)[spec.vehicle_file] = variant.vehicle;
+  if (on_vehicle.empty() && plain) {
+    const auto [cached, fresh] = plain->try_emplace(spec.vehicle_file);
+    if (fresh) cached->second = read_vehicle(vehicle_document, spec.vehicle_file);
+    variant.vehicle = cached->second;
+  } else if (on_vehicle.empty()) {
+    variant.vehicle = read_vehicle(vehicle_document, spec.vehicle_file);
   } else {
     variant.vehicle = read_with_overrides<Vehicle>(vehicle_document, spec.vehicle_file, on_vehicle, spec, path, read_vehicle);
   }

@@ -75,10 +75,13 @@ class Scanner {
       KeyPath path;
       if (!key_path(j, path)) return false;
       if (s_.compare(j, array_of_tables ? 2 : 1, array_of_tables ? "]]" : "]") != 0) return false;
-      for (size_t n = 1; n <= path.size(); ++n)
-        if (array_values_.count(KeyPath(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(n))))
-          fail(i_, std::string("the table ") + (array_of_tables ? "[[" : "[") + join(path) + (array_of_tables ? "]]" : "]") + " extends '" + join(KeyPath(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(n))) +
-                       "', which is an array value (a key = [...] line), not a table");
+      KeyPath prefix;
+      for (const std::string& part : path) {
+        prefix.push_back(part);
+        if (array_values_.count(prefix))
+          fail(i_, std::string("the table ") + (array_of_tables ? "[[" : "[") + join(path) + (array_of_tables ? "]]" : "]") +
+                       " extends '" + join(prefix) + "', which is an array value (a key = [...] line), not a table");
+      }
       table_ = path;
       i_ = j + (array_of_tables ? 2 : 1);
       return true;

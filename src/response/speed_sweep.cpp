@@ -94,17 +94,11 @@ double wrapped_phase_deg(double difference, ResponseQuantity q) {
   return phase;
 }
 
-// Phase of the FRF in degrees: x against an input of argument `input_arg` (rad). arg x − arg
-// input rather than arg(x/input): one atan2 per speed, no complex division.
-double phase_deg(std::complex<double> x, double input_arg, ResponseQuantity q) {
-  if (x == 0.0) return 0.0;
-  return wrapped_phase_deg(std::arg(x) - input_arg, q);
-}
-
-// The same against the input `scale`·`input` (scale real: its sign turns the input by π).
+// Phase of the FRF in degrees: x against the input `scale`·`input` (scale real: its sign turns
+// the input by π). arg x − arg input rather than arg(x/input): no complex division.
 double phase_deg(std::complex<double> x, double scale, std::complex<double> input, ResponseQuantity q) {
-  if (input == 0.0 || scale == 0.0) return 0.0;
-  return phase_deg(x, std::arg(input) + (scale < 0.0 ? kPi : 0.0), q);
+  if (input == 0.0 || scale == 0.0 || x == 0.0) return 0.0;
+  return wrapped_phase_deg(std::arg(x) - (std::arg(input) + (scale < 0.0 ? kPi : 0.0)), q);
 }
 
 // Whether an expansion of the response (`at_speed(k, dof, ω, s)`) matches the direct solve at
