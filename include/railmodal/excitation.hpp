@@ -10,6 +10,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <complex>
 #include <memory>
 #include <optional>
@@ -75,9 +76,16 @@ class ExcitationSource {
   SeparableLoad separable_load(const LinearSystem& system, int harmonic) const;
   /// s(ω)/s(ω_ref): how the input amplitude scales with frequency (1 for a fixed profile,
   /// (ω/ω_ref)² for an unbalance, the track's ρ²/(ρ² − ω²) ratio for joints on elastic track).
-  virtual double load_scale(double omega, double reference_omega) const {
+  double load_scale(double omega, double reference_omega) const {
+    double scale = 1.0;
+    load_scales(&omega, 1, reference_omega, &scale);
+    return scale;
+  }
+  /// load_scale at `count` frequencies `omega` into `out`: one call per block of a sweep
+  /// rather than a virtual call per speed. The default is a fixed profile, s = 1.
+  virtual void load_scales(const double* omega, int count, double reference_omega, double* out) const {
     (void)omega, (void)reference_omega;
-    return 1.0;
+    std::fill_n(out, count, 1.0);
   }
 
   double frequency_hz(double speed, int harmonic) const { return harmonic * speed / wavelength(); }

@@ -1,4 +1,5 @@
 // Displacement sources: rail joints, wheel eccentricity and flats, kinematic hunting.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -52,8 +53,13 @@ class RailJointSource final : public ExcitationSource {
     return out.str();
   }
   double wavelength() const override { return p_.rail_length; }
-  double load_scale(double omega, double reference_omega) const override {
-    return track_factor(omega) / track_factor(reference_omega);
+  void load_scales(const double* omega, int count, double reference_omega, double* out) const override {
+    if (!(p_.track_stiffness > 0.0)) {  // a rigid track: the wheel follows the dip as it is
+      std::fill_n(out, count, 1.0);
+      return;
+    }
+    const double reference = track_factor(reference_omega);
+    for (int i = 0; i < count; ++i) out[i] = track_factor(omega[i]) / reference;
   }
   int harmonic_count() const override { return p_.harmonics; }
 

@@ -32,8 +32,8 @@ class UnbalanceSource final : public ExcitationSource {
     return out.str();
   }
   double wavelength() const override { return kPi * p_.wheel_diameter; }
-  double load_scale(double omega, double reference_omega) const override {
-    return (omega / reference_omega) * (omega / reference_omega);  // m ρ ω²
+  void load_scales(const double* omega, int count, double reference_omega, double* out) const override {
+    for (int i = 0; i < count; ++i) out[i] = (omega[i] / reference_omega) * (omega[i] / reference_omega);  // m ρ ω²
   }
   int harmonic_count() const override { return p_.harmonics; }
 
