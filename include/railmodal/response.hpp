@@ -9,6 +9,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <initializer_list>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -116,6 +118,34 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
                                                 const std::vector<const ExcitationSource*>& sources,
                                                 const CriticalSpeedOptions& options);
 
+/// The speeds of a sweep, m/s, ascending or as given: immutable, and shared rather than copied
+/// by the curves of one sweep (a sweep of 10⁴ speeds and 8 curves would otherwise spend more
+/// time copying its grid and faulting in the copies than computing the responses).
+class SpeedGrid {
+ public:
+  SpeedGrid() = default;
+  SpeedGrid(std::vector<double> speeds)  // NOLINT: implicit, a curve's speeds can be set from a vector
+      : values_(std::make_shared<const std::vector<double>>(std::move(speeds))) {}
+  SpeedGrid(std::initializer_list<double> speeds) : SpeedGrid(std::vector<double>(speeds)) {}
+  const std::vector<double>& values() const { return values_ ? *values_ : no_speeds(); }
+  size_t size() const { return values().size(); }
+  bool empty() const { return values().empty(); }
+  double operator[](size_t i) const { return values()[i]; }
+  double front() const { return values().front(); }
+  double back() const { return values().back(); }
+  std::vector<double>::const_iterator begin() const { return values().begin(); }
+  std::vector<double>::const_iterator end() const { return values().end(); }
+  friend bool operator==(const SpeedGrid& a, const SpeedGrid& b) { return a.values() == b.values(); }
+  friend bool operator!=(const SpeedGrid& a, const SpeedGrid& b) { return !(a == b); }
+
+ private:
+  static const std::vector<double>& no_speeds() {
+    static const std::vector<double> none;
+    return none;
+  }
+  std::shared_ptr<const std::vector<double>> values_;
+};
+
 /// Amplitude of one output against speed for one source: at each speed the sum over the
 /// source's harmonics of the harmonic amplitudes (the bound of the peak of their sum; exact
 /// for a one-harmonic source). Speeds where the response is unbounded are flagged.
@@ -123,7 +153,7 @@ struct AmplitudeCurve {
   int source = 0;
   std::string output;
   ResponseQuantity quantity = ResponseQuantity::displacement;
-  std::vector<double> speeds;      ///< m/s
+  SpeedGrid speeds;
   std::vector<double> amplitudes;  ///< m, m/s or m/s² (rad for rotations); 0 where unbounded
   std::vector<bool> unbounded;
   /// Phase of the output's first harmonic against the source's input at its leading wheel
@@ -138,12 +168,14 @@ struct OutputRequest {
   ResponseQuantity quantity = ResponseQuantity::displacement;
 };
 
-/// One curve per output, from one direct solve per speed and harmonic.
+/// One curve per output, from one direct solve per speed and harmonic (or the modal
+/// expansion that agrees with it). The curves share `speeds` (a vector converts, copied
+/// once); sweeps of several sources over one grid can pass one SpeedGrid and share it too.
 /// `friction_reference_amplitude` as in CriticalSpeedOptions.
 std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
                                              const ExcitationSource& source, int source_index,
                                              const std::vector<OutputRequest>& outputs,
-                                             const std::vector<double>& speeds,
+                                             const SpeedGrid& speeds,
                                              double friction_reference_amplitude = 0.0);
 
 /// Dynamic deflection of one suspension element against speed for one source: the amplitude
@@ -154,7 +186,7 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
 struct DeflectionCurve {
   int source = 0;
   int element = 0;                 ///< index into vehicle.elements
-  std::vector<double> speeds;      ///< m/s
+  SpeedGrid speeds;
   std::vector<double> amplitudes;  ///< m; 0 where unbounded
   /// N: the force through the element's spring stages, Σ_k |(k_e + iω c_k) y_k| with k_e
   /// their series stiffness and c_k the linearised leaf friction, which acts inside a stage

@@ -99,7 +99,6 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
         curves = std::move(part);
       } else {
         for (size_t o = 0; o < curves.size(); ++o) {
-          curves[o].speeds.insert(curves[o].speeds.end(), part[o].speeds.begin(), part[o].speeds.end());
           curves[o].amplitudes.insert(curves[o].amplitudes.end(), part[o].amplitudes.begin(), part[o].amplitudes.end());
           curves[o].unbounded.insert(curves[o].unbounded.end(), part[o].unbounded.begin(), part[o].unbounded.end());
           curves[o].phases_deg.insert(curves[o].phases_deg.end(), part[o].phases_deg.begin(), part[o].phases_deg.end());
@@ -107,7 +106,9 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
       }
       if (progress) progress((s * speeds.size() + first + chunk.size()) / total);
     }
+    const SpeedGrid grid(speeds);  // the chunks' grids joined, shared by the source's curves
     for (size_t o = 0; o < curves.size(); ++o) {
+      curves[o].speeds = grid;
       study.curves.push_back(curves[o]);
       for (const Peak& p : refine_peaks(study, *sources[s], outputs[o], curves[o]))
         study.peaks.push_back({static_cast<int>(study.curves.size()) - 1, p});

@@ -48,6 +48,7 @@ std::vector<DeflectionCurve> element_deflection_curves(const LinearSystem& syste
   std::vector<DeflectionCurve> curves;
   std::vector<Eigen::RowVectorXd> rows;  // each element's stretch per unit of each DOF
   std::vector<double> stiffness;         // its spring stages in series
+  const SpeedGrid grid(speeds);
   for (int e : elements) {
     if (e < 0 || e >= element_count) throw std::invalid_argument("deflection curve: no such element");
     rows.push_back(system.element_vertical_map.row(e));
@@ -55,7 +56,7 @@ std::vector<DeflectionCurve> element_deflection_curves(const LinearSystem& syste
     DeflectionCurve c;
     c.source = source_index;
     c.element = e;
-    c.speeds = speeds;
+    c.speeds = grid;
     c.amplitudes.assign(speeds.size(), 0.0);
     c.spring_forces.assign(speeds.size(), 0.0);
     c.unbounded.assign(speeds.size(), false);

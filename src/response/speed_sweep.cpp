@@ -18,6 +18,7 @@
 
 #include "railmodal/response.hpp"
 #include "response/state_space_modes.hpp"
+#include "response/sweep_kernels.hpp"
 
 namespace railmodal {
 
@@ -26,7 +27,6 @@ namespace {
 constexpr double kTwoPi = 6.28318530717958647692;
 constexpr double kAtResonance = 1e-9;  // as in the direct solve: ω² within 1e-9 of λ
 constexpr double kRoundOffShare = 1e-12;  // a mode shape's component indistinguishable from 0
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct ModalBasis {
@@ -84,11 +84,14 @@ std::complex<double> reference_input(const LinearSystem& system, const Excitatio
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegrees = 180.0 / kPi;
 
-// Phase of the FRF in degrees from arg x − arg input (rad), +90° per time derivative, in
-// (−180, 180].
+// The FRF's phase turns by +90° per time derivative of x.
+double phase_offset_deg(ResponseQuantity q) {
+  return q == ResponseQuantity::velocity ? 90.0 : q == ResponseQuantity::acceleration ? 180.0 : 0.0;
+}
+
+// Phase of the FRF in degrees from arg x − arg input (rad), in (−180, 180].
 double wrapped_phase_deg(double difference, ResponseQuantity q) {
-  double phase = difference * kDegrees +
-                 (q == ResponseQuantity::velocity ? 90.0 : q == ResponseQuantity::acceleration ? 180.0 : 0.0);
+  double phase = difference * kDegrees + phase_offset_deg(q);
   while (phase > 180.0) phase -= 360.0;
   while (phase <= -180.0) phase += 360.0;
   return phase;
@@ -127,28 +130,19 @@ bool agrees_with_direct(const LinearSystem& system, const ModalResult& modes, co
   return true;
 }
 
-// A block of speeds for the vectorised kernels: ω, ω², the load scale s(ω), and the response
-// (re, im) and unbounded flags they add to.
-constexpr int kBlock = 256;
-struct Block {
-  const double* w;
-  const double* w2;
-  const double* scale;
-  double* re;
-  double* im;
-  unsigned char* resonant;  // 0 or 1 (bytes: the flag loops vectorise)
-  int count;
-  bool ascending;  // ω rises through the block
-};
-using Kernel = std::function<void(const Block&)>;
+// What a kernel adds for one harmonic and output DOF at a block of speeds: the complex response
+// into b.re and b.im, and 1 in `resonant` at the speeds where the response is unbounded (on a
+// grid where ω rises, `ascending`, those are found by bisection); true if it flagged any.
+using Kernel = std::function<bool(const response::SweepBlock& b, double* resonant, bool ascending)>;
 using Prepare = std::function<Kernel(int harmonic, int dof)>;
+using response::kSweepBlock;
 
 }  // namespace
 
 std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
                                              const ExcitationSource& source, int source_index,
                                              const std::vector<OutputRequest>& outputs,
-                                             const std::vector<double>& speeds,
+                                             const SpeedGrid& speeds,
                                              double friction_reference_amplitude) {
   std::vector<AmplitudeCurve> curves;
   for (const OutputRequest& o : outputs) {
@@ -157,9 +151,7 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     c.source = source_index;
     c.output = system.dofs[o.dof].label;
     c.quantity = o.quantity;
-    c.speeds.reserve(speeds.size());
-    c.amplitudes.reserve(speeds.size());
-    c.unbounded.reserve(speeds.size());
+    c.speeds = speeds;  // shared, not copied
     curves.push_back(c);
   }
   const bool equivalent_friction = friction_reference_amplitude > 0.0 && has_leaf_friction(system);
@@ -171,29 +163,19 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
   auto power = [](ResponseQuantity q, double omega) {
     return q == ResponseQuantity::displacement ? 1.0 : q == ResponseQuantity::velocity ? omega : omega * omega;
   };
-  auto finish = [&](double speed, const std::vector<double>& sum, const std::vector<bool>& unbounded,
-                    const std::vector<double>& phase) {
-    for (size_t o = 0; o < outputs.size(); ++o) {
-      curves[o].speeds.push_back(speed);
-      curves[o].amplitudes.push_back(unbounded[o] ? 0.0 : sum[o]);
-      curves[o].unbounded.push_back(unbounded[o]);
-      curves[o].phases_deg.push_back(unbounded[o] ? 0.0 : phase[o]);
-    }
-  };
 
   // Speeds in blocks small enough to stay in L1 cache, one pass per block, harmonic and output
   // DOF: `prepare(k, dof)` projects harmonic k's load on the modes once and returns the kernel
-  // that adds the complex response of that DOF at a block of speeds (re, im) and flags the
-  // speeds where it is unbounded; the sums over harmonics and the phases are common. No array
-  // spans all speeds but the curves themselves: fresh 80 kB work arrays per harmonic cost more
-  // in page faults and cache misses than the arithmetic.
+  // that adds the complex response of that DOF at a block of speeds; the sums over harmonics and
+  // the phases are common. No array spans all speeds but the curves themselves: fresh 80 kB
+  // work arrays per harmonic cost more in page faults and cache misses than the arithmetic.
   auto vectorised = [&](const Prepare& prepare) {
     const int count = static_cast<int>(speeds.size());
     const bool ascending = std::is_sorted(speeds.begin(), speeds.end());
     for (double v : speeds)
       if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument("amplitude curve: speeds must be positive");
     // Each output DOF once: displacement, velocity and acceleration of one DOF share its
-    // response, its unbounded speeds and its phase (one atan2 per speed and DOF).
+    // response, its unbounded speeds and its phase (one arg x per speed and DOF).
     std::vector<int> dofs;
     for (const OutputRequest& o : outputs)
       if (std::find(dofs.begin(), dofs.end(), o.dof) == dofs.end()) dofs.push_back(o.dof);
@@ -202,71 +184,64 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     for (int k = 1; k <= source.harmonic_count(); ++k)
       for (int dof : dofs) kernels[k - 1].push_back(prepare(k, dof));
     for (AmplitudeCurve& c : curves) {
-      c.speeds = speeds;
       c.amplitudes.resize(count);
-      c.unbounded.resize(count);
+      c.unbounded.assign(count, false);  // set below where flagged: rare, and bits are slow to write
       c.phases_deg.resize(count);
     }
-    // Per block: Σ_k |x_k|·ω_k^p for p = 0, 1, 2 (displacement, velocity, acceleration), arg x
-    // of harmonic 1 (rad) and the unbounded flags, per DOF; arg of s(ω)·input (NaN: no input).
+    // Per block and DOF: Σ_k |x_k|·ω_k^p for p = 0, 1, 2 (displacement, velocity,
+    // acceleration), arg x of harmonic 1 (rad), and the unbounded flags (0 or 1, as doubles so
+    // that the loops mixing them with values vectorise); arg of s(ω)·input (NaN: no input).
     struct PerDof {
-      std::array<std::array<double, kBlock>, 3> sum;
-      std::array<double, kBlock> first_arg;
-      std::array<unsigned char, kBlock> unbounded;
+      std::array<std::array<double, kSweepBlock>, 3> sum;
+      std::array<double, kSweepBlock> first_arg;
+      std::array<double, kSweepBlock> unbounded;
+      bool any_unbounded;  // in this block: most blocks have none, and skip the flag loops
     };
     std::vector<PerDof> per_dof(dofs.size());
-    alignas(64) std::array<double, kBlock> w, w2, scale, re, im, input_arg;
-    std::array<unsigned char, kBlock> resonant;
+    alignas(64) std::array<double, kSweepBlock> w, w2, scale, re, im, input_arg;
+    alignas(64) std::array<double, kSweepBlock> resonant{};  // all 0 between kernels
     const double reference_arg = input == 0.0 ? kNaN : std::arg(input);
-    for (int begin = 0; begin < count; begin += kBlock) {
-      const int n = std::min(kBlock, count - begin);
+    for (int begin = 0; begin < count; begin += kSweepBlock) {
+      const int n = std::min(kSweepBlock, count - begin);
       for (PerDof& d : per_dof) {
         for (auto& sum : d.sum) std::fill_n(sum.begin(), n, 0.0);
-        std::fill_n(d.unbounded.begin(), n, 0);
+        std::fill_n(d.unbounded.begin(), n, 0.0);
+        d.any_unbounded = false;
       }
       for (int k = 1; k <= source.harmonic_count(); ++k) {
         const SeparableLoad& p = parts[k - 1];
         const double to_omega = kTwoPi * k / source.wavelength();
-        for (int v = 0; v < n; ++v) {
-          w[v] = speeds[begin + v] * to_omega;
-          w2[v] = w[v] * w[v];
-        }
-        for (int v = 0; v < n; ++v) scale[v] = source.load_scale(w[v], p.reference_omega);
+        const double* at = speeds.values().data() + begin;
+        for (int v = 0; v < n; ++v) w[v] = at[v] * to_omega;
+        for (int v = 0; v < n; ++v) w2[v] = w[v] * w[v];
+        source.load_scales(w.data(), n, p.reference_omega, scale.data());
         if (k == 1)
           for (int v = 0; v < n; ++v) input_arg[v] = scale[v] == 0.0 ? kNaN : reference_arg + (scale[v] < 0.0 ? kPi : 0.0);
+        const response::SweepBlock block{w.data(), w2.data(), scale.data(), re.data(), im.data(), n};
         for (size_t d = 0; d < dofs.size(); ++d) {
           std::fill_n(re.begin(), n, 0.0);
           std::fill_n(im.begin(), n, 0.0);
-          std::fill_n(resonant.begin(), n, 0);
-          kernels[k - 1][d](Block{w.data(), w2.data(), scale.data(), re.data(), im.data(), resonant.data(), n, ascending});
           PerDof& out = per_dof[d];
-          // Separate arrays, so that each loop vectorises.
-          const double* __restrict rv = re.data();
-          const double* __restrict iv = im.data();
-          double* __restrict s0 = out.sum[0].data();
-          double* __restrict s1 = out.sum[1].data();
-          double* __restrict s2 = out.sum[2].data();
-          for (int v = 0; v < n; ++v) {
-            const double magnitude = std::sqrt(rv[v] * rv[v] + iv[v] * iv[v]);
-            s0[v] += magnitude;
-            s1[v] += magnitude * w[v];
-            s2[v] += magnitude * w2[v];
+          if (kernels[k - 1][d](block, resonant.data(), ascending)) {
+            for (int v = 0; v < n; ++v) out.unbounded[v] = std::max(out.unbounded[v], resonant[v]);
+            std::fill_n(resonant.begin(), n, 0.0);
+            out.any_unbounded = true;
           }
-          for (int v = 0; v < n; ++v) out.unbounded[v] |= resonant[v];
-          if (k == 1)
-            for (int v = 0; v < n; ++v) out.first_arg[v] = re[v] == 0.0 && im[v] == 0.0 ? kNaN : std::atan2(im[v], re[v]);
+          response::add_magnitudes(block, out.sum[0].data(), out.sum[1].data(), out.sum[2].data());
+          if (k == 1) response::arguments(re.data(), im.data(), n, out.first_arg.data());
         }
       }
       for (size_t o = 0; o < outputs.size(); ++o) {
         const PerDof& d = per_dof[slot(outputs[o].dof)];
-        const int q = static_cast<int>(outputs[o].quantity);
+        const double* sum = d.sum[static_cast<int>(outputs[o].quantity)].data();
         AmplitudeCurve& c = curves[o];
-        for (int v = 0; v < n; ++v) {
-          c.unbounded[begin + v] = d.unbounded[v];
-          c.amplitudes[begin + v] = d.unbounded[v] ? 0.0 : d.sum[q][v];
-          const double arg = d.first_arg[v] - input_arg[v];
-          c.phases_deg[begin + v] = d.unbounded[v] || std::isnan(arg) ? 0.0 : wrapped_phase_deg(arg, outputs[o].quantity);
-        }
+        double* amplitudes = c.amplitudes.data() + begin;
+        std::copy_n(sum, n, amplitudes);
+        if (d.any_unbounded)
+          for (int v = 0; v < n; ++v)
+            if (d.unbounded[v] != 0.0) c.unbounded[begin + v] = true, amplitudes[v] = 0.0;
+        response::phases_deg(d.first_arg.data(), input_arg.data(), d.unbounded.data(),
+                             phase_offset_deg(outputs[o].quantity), n, c.phases_deg.data() + begin);
       }
     }
     return curves;
@@ -275,32 +250,35 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
   if (basis.exact && !equivalent_friction) {
     // x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/(λ_j − ω² + iωc_j) + s(ω)·static_o(ω).
     const int m = static_cast<int>(basis.modes.size());
-    struct Term {
-      double ar, ai, br, bi, lambda, c, tolerance;
-      bool undamped, moves;
+    // An undamped mode that moves the DOF: unbounded where ω² is within `tolerance` of λ and the
+    // load drives it, |a + iωb| above `drive_floor`·(|Q_K| + ω|Q_C|), as the direct solve decides.
+    struct Resonance {
+      double lambda, tolerance;
       std::complex<double> a, b;
       double drive_floor;
     };
     return vectorised([&](int k, int dof) -> Kernel {
       const SeparableLoad& p = parts[k - 1];
       const double q_norm_k = p.stiffness_part.norm(), q_norm_c = p.damping_part.norm();
-      std::vector<Term> terms;
+      std::vector<response::ModalTerm> terms;
+      std::vector<Resonance> resonances;
       for (int j = 0; j < m; ++j) {
         const Mode& mode = *basis.modes[j];
         // A mode whose share of this DOF is at the eigensolver's round-off (below 1e-12 of its
         // largest component: a pitch mode at the body's bounce in a symmetric car) adds noise,
         // not response; skipping it changes the output by at most 1e-12 of that mode's own
         // response at its largest DOF, and most outputs of a symmetric vehicle skip most modes.
-        const double at = mode.shape(dof);
-        if (std::abs(at) <= kRoundOffShare * mode.shape.cwiseAbs().maxCoeff()) continue;
+        const double at = mode.shape(dof), largest = mode.shape.cwiseAbs().maxCoeff();
+        if (std::abs(at) <= kRoundOffShare * largest) continue;
         const std::complex<double> a = mode.shape.cast<std::complex<double>>().dot(p.stiffness_part) * at;
         const std::complex<double> b = mode.shape.cast<std::complex<double>>().dot(p.damping_part) * at;
         if (a == 0.0 && b == 0.0) continue;  // the load does not reach this mode at all
         const double c = basis.damping[j], lambda = mode.eigenvalue;
         const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
-        terms.push_back({a.real(), a.imag(), b.real(), b.imag(), lambda, c, undamped ? kAtResonance * lambda : -1.0,
-                         undamped, std::abs(at) > 1e-9 * mode.shape.cwiseAbs().maxCoeff(), a, b,
-                         1e-12 * std::abs(at) * mode.shape.norm()});
+        const double tolerance = undamped ? kAtResonance * lambda : -1.0;
+        terms.push_back({a.real(), a.imag(), b.real(), b.imag(), lambda, c, tolerance, undamped});
+        if (undamped && std::abs(at) > 1e-9 * largest)
+          resonances.push_back({lambda, tolerance, a, b, 1e-12 * std::abs(at) * mode.shape.norm()});
       }
       // Massless DOFs also follow their own loads: K_mm⁻¹ Q_m(ω).
       std::complex<double> sk = 0.0, sc = 0.0;
@@ -311,50 +289,20 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
           sc += basis.massless_flexibility(i, c) * p.damping_part(basis.massless[c]);
         }
       }
-      return [terms = std::move(terms), sk, sc, q_norm_k, q_norm_c](const Block& b) {
-        const int n = b.count;
-        const double* __restrict wv = b.w;
-        const double* __restrict w2v = b.w2;
-        const double* __restrict sv = b.scale;
-        double* __restrict rv = b.re;
-        double* __restrict iv = b.im;
-        for (const Term& t : terms) {
-          // One branch-free loop per mode, so that the compiler vectorises it. An undamped mode
-          // at its own frequency adds nothing finite: the gap there becomes ∞ and the term
-          // exactly 0 (a select, where a branch or a masked division would stop the
-          // vectorising); those speeds are flagged below.
-          if (t.undamped) {
-            for (int v = 0; v < n; ++v) {
-              const double gap = t.lambda - w2v[v];
-              const double f = sv[v] / (std::abs(gap) <= t.tolerance ? kInfinity : gap);
-              rv[v] += (t.ar - wv[v] * t.bi) * f;
-              iv[v] += (t.ai + wv[v] * t.br) * f;
-            }
-          } else {
-            for (int v = 0; v < n; ++v) {
-              const double gap = t.lambda - w2v[v], di = wv[v] * t.c;
-              const double nr = t.ar - wv[v] * t.bi, ni = t.ai + wv[v] * t.br;
-              const double f = sv[v] / (gap * gap + di * di);
-              rv[v] += (nr * gap + ni * di) * f;
-              iv[v] += (ni * gap - nr * di) * f;
-            }
-          }
-          // Unbounded where the undamped mode sits at ω, moves this DOF and the load drives it
-          // (as the direct solve decides). ω² rises with the speed, so on a sorted grid those
-          // speeds are one run found by bisection.
-          if (t.undamped && t.moves) {
-            const int first = b.ascending ? static_cast<int>(std::lower_bound(w2v, w2v + n, t.lambda - t.tolerance) - w2v) : 0;
-            for (int v = first; v < n && (!b.ascending || w2v[v] <= t.lambda + t.tolerance); ++v)
-              if (std::abs(t.lambda - w2v[v]) <= t.tolerance &&
-                  std::abs(t.a + std::complex<double>(0.0, wv[v]) * t.b) > t.drive_floor * (q_norm_k + wv[v] * q_norm_c))
-                b.resonant[v] = 1;
-          }
+      return [terms = std::move(terms), resonances = std::move(resonances), sk, sc, q_norm_k, q_norm_c](
+                 const response::SweepBlock& b, double* resonant, bool ascending) {
+        response::add_modal_terms(terms.data(), terms.size(), b);
+        bool flagged = false;
+        for (const Resonance& t : resonances) {
+          const double* w2 = b.w2;
+          const int first = ascending ? static_cast<int>(std::lower_bound(w2, w2 + b.count, t.lambda - t.tolerance) - w2) : 0;
+          for (int v = first; v < b.count && (!ascending || w2[v] <= t.lambda + t.tolerance); ++v)
+            if (std::abs(t.lambda - w2[v]) <= t.tolerance &&
+                std::abs(t.a + std::complex<double>(0.0, b.w[v]) * t.b) > t.drive_floor * (q_norm_k + b.w[v] * q_norm_c))
+              resonant[v] = 1.0, flagged = true;
         }
-        if (sk != 0.0 || sc != 0.0)
-          for (int v = 0; v < n; ++v) {
-            rv[v] += sv[v] * (sk.real() - wv[v] * sc.imag());
-            iv[v] += sv[v] * (sk.imag() + wv[v] * sc.real());
-          }
+        if (sk != 0.0 || sc != 0.0) response::add_static_term(sk.real(), sk.imag(), sc.real(), sc.imag(), b);
+        return flagged;
       };
     });
   }
@@ -377,27 +325,18 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
           x += cm.shapes(dof, r) * (on_roots_k[k - 1](r) + iw * on_roots_c[k - 1](r)) / (iw - cm.roots(r));
         return scale * x;
       };
-      if (agrees_with_direct(system, modes, source, parts, outputs, speeds, at_speed))
+      if (agrees_with_direct(system, modes, source, parts, outputs, speeds.values(), at_speed))
         return vectorised([&](int k, int dof) -> Kernel {
           // (a_r + iωb_r)/(iω − λ_r) per root: every root strictly damped, so no division by 0.
-          struct Root {
-            double ar, ai, br, bi, decay, lambda_im;
-          };
-          std::vector<Root> terms;
+          std::vector<response::RootTerm> terms;
           for (Eigen::Index r = 0; r < cm.roots.size(); ++r) {
             const std::complex<double> a = cm.shapes(dof, r) * on_roots_k[k - 1](r);
             const std::complex<double> b = cm.shapes(dof, r) * on_roots_c[k - 1](r);
             terms.push_back({a.real(), a.imag(), b.real(), b.imag(), -cm.roots(r).real(), cm.roots(r).imag()});
           }
-          return [terms = std::move(terms)](const Block& b) {
-            for (const Root& t : terms)
-              for (int v = 0; v < b.count; ++v) {
-                const double nr = t.ar - b.w[v] * t.bi, ni = t.ai + b.w[v] * t.br;
-                const double di = b.w[v] - t.lambda_im;
-                const double f = b.scale[v] / (t.decay * t.decay + di * di);
-                b.re[v] += (nr * t.decay + ni * di) * f;
-                b.im[v] += (ni * t.decay - nr * di) * f;
-              }
+          return [terms = std::move(terms)](const response::SweepBlock& b, double*, bool) {
+            response::add_root_terms(terms.data(), terms.size(), b);
+            return false;  // every root damped: bounded everywhere
           };
         });
     }
@@ -433,7 +372,11 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
         if (k == 1) phase[o] = phase_deg(r.displacement(outputs[o].dof), scale, input, outputs[o].quantity);
       }
     }
-    finish(speed, sum, unbounded, phase);
+    for (size_t o = 0; o < outputs.size(); ++o) {
+      curves[o].amplitudes.push_back(unbounded[o] ? 0.0 : sum[o]);
+      curves[o].unbounded.push_back(unbounded[o]);
+      curves[o].phases_deg.push_back(unbounded[o] ? 0.0 : phase[o]);
+    }
   }
   return curves;
 }

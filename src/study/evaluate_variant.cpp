@@ -146,11 +146,11 @@ void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& stu
   }
   // Rule 2: the largest finite deflection of each check per source: on the grid and at every
   // local maximum of the element's stretch above 1 % of its largest, refined.
-  const std::vector<double> speeds = study.curves.empty() ? std::vector<double>{} : study.curves.front().speeds;
+  const SpeedGrid speeds = study.curves.empty() ? SpeedGrid() : study.curves.front().speeds;
   for (size_t s = 0; s < study.scene.sources.size() && !speeds.empty(); ++s) {
     const ExcitationSource& source = *study.scene.sources[s];
     const std::vector<DeflectionCurve> curves =
-        element_deflection_curves(system, study.modes, source, static_cast<int>(s), elements, speeds, reference);
+        element_deflection_curves(system, study.modes, source, static_cast<int>(s), elements, speeds.values(), reference);
     for (const DeflectionCurve& curve : curves) {
       // Every check of this element sees the curve at these speeds (one each, or the refined one).
       auto take = [&](const DeflectionCurve& at, size_t v, double speed) {

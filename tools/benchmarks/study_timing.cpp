@@ -92,8 +92,8 @@ nlohmann::json variant_json(const StudyVariant& variant, const VariantResult& re
   j["min_speed"] = scene.min_speed;
   j["max_speed"] = scene.max_speed;
   j["speed_step"] = scene.speed_step;
-  const std::vector<double>& grid = study.curves.empty() ? std::vector<double>{} : study.curves.front().speeds;
-  j["speeds"] = grid;
+  const SpeedGrid grid = study.curves.empty() ? SpeedGrid() : study.curves.front().speeds;
+  j["speeds"] = grid.values();
   nlohmann::json sources = nlohmann::json::array();
   for (const auto& source : scene.sources) {
     nlohmann::json harmonics = nlohmann::json::array();

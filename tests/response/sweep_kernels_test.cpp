@@ -1,0 +1,111 @@
+// The sweep's block arithmetic (response/sweep_kernels): the branch-free atan2 against libm,
+// the phase wrap over its whole input range, and the sweep's curves sharing one speed grid.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+#include <vector>
+
+#include "railmodal/railmodal.hpp"
+#include "response/sweep_kernels.hpp"
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// One unit in the last place of π (2⁻⁵¹): the spacing of doubles in [2, 4), where atan2 of the
+// left half-plane lands. The kernel promises 2 of them.
+const double kUlpOfPi = std::ldexp(1.0, -51);
+
+TEST(SweepKernels, FastAtan2AgreesWithLibmToTwoUlpOfPiInEveryQuadrant) {
+  std::mt19937_64 random(20261124);
+  std::uniform_real_distribution<double> angle(-kPi, kPi), exponent(-30.0, 30.0);
+  double worst = 0.0;
+  for (int i = 0; i < 200000; ++i) {
+    const double r = std::pow(10.0, exponent(random)), a = angle(random);
+    const double x = r * std::cos(a), y = r * std::sin(a);
+    worst = std::max(worst, std::abs(response::fast_atan2(y, x) - std::atan2(y, x)));
+  }
+  // The reduction's seams (t = 0.66, |y| = |x|) and the axes, where a select changes branch.
+  for (double t : {0.0, 0.66, std::nextafter(0.66, 1.0), 1.0, 1e-300, 1e300})
+    for (double sx : {1.0, -1.0})
+      for (double sy : {1.0, -1.0}) {
+        if (sy * t != 0.0)  // −0: libm gives −π on the negative axis, the kernel +π (checked below)
+          worst = std::max(worst, std::abs(response::fast_atan2(sy * t, sx) - std::atan2(sy * t, sx)));
+        worst = std::max(worst, std::abs(response::fast_atan2(sy, sx * t) - std::atan2(sy, sx * t)));
+      }
+  EXPECT_LE(worst, 2.0 * kUlpOfPi);
+  std::cout << "fast_atan2: largest difference from libm " << worst / kUlpOfPi << " ulp of pi\n";
+  EXPECT_DOUBLE_EQ(response::fast_atan2(0.0, -1.0), kPi);
+  EXPECT_DOUBLE_EQ(response::fast_atan2(-0.0, -1.0), kPi);  // −0 counts as +0: the same phase
+  EXPECT_DOUBLE_EQ(response::fast_atan2(-1.0, 0.0), -kPi / 2);
+  EXPECT_TRUE(std::isnan(response::fast_atan2(0.0, 0.0)));  // no response: no phase
+}
+
+// The loop form (the vectorised one) gives what the scalar form gives, NaN included.
+TEST(SweepKernels, ArgumentsOfABlockAreTheScalarOnes) {
+  std::vector<double> re, im;
+  for (int i = 0; i < 37; ++i) {  // not a multiple of any vector width: the tail loop too
+    re.push_back(std::cos(0.3 * i) * (i % 5 == 0 ? 0.0 : 1.0 + i));
+    im.push_back(std::sin(0.3 * i) * (i % 5 == 0 ? 0.0 : 1.0 + i));
+  }
+  std::vector<double> out(re.size());
+  response::arguments(re.data(), im.data(), static_cast<int>(re.size()), out.data());
+  for (size_t i = 0; i < re.size(); ++i) {
+    if (i % 5 == 0) {
+      EXPECT_TRUE(std::isnan(out[i])) << i;
+    } else {
+      EXPECT_EQ(out[i], response::fast_atan2(im[i], re[i])) << i;
+    }
+  }
+}
+
+// arg x ∈ [−π, π] and arg input ∈ [−π, 2π] (π added for a negative load scale), plus up to 180°
+// for an acceleration: the difference spans [−540°, 540°], and each wraps into (−180°, 180°]
+// to the same angle modulo 360°.
+TEST(SweepKernels, PhasesWrapTheWholeRangeIntoOneTurn) {
+  std::vector<double> x, input, flags;
+  for (double a : {-kPi, -2.0, 0.0, 1.0, kPi})
+    for (double b : {-kPi, -1.0, 0.0, kPi, 5.0, 2.0 * kPi}) x.push_back(a), input.push_back(b), flags.push_back(0.0);
+  x.push_back(1.0), input.push_back(std::nan("")), flags.push_back(0.0);  // no input: phase 0
+  x.push_back(1.0), input.push_back(0.0), flags.push_back(1.0);           // unbounded: phase 0
+  for (double offset : {0.0, 90.0, 180.0}) {
+    std::vector<double> out(x.size());
+    response::phases_deg(x.data(), input.data(), flags.data(), offset, static_cast<int>(x.size()), out.data());
+    for (size_t i = 0; i + 2 < x.size(); ++i) {
+      const double raw = (x[i] - input[i]) * 180.0 / kPi + offset;
+      EXPECT_GT(out[i], -180.0) << raw;
+      EXPECT_LE(out[i], 180.0) << raw;
+      const double turns = (raw - out[i]) / 360.0;
+      EXPECT_NEAR(turns, std::round(turns), 1e-12) << raw;  // whole turns taken off, to round-off
+    }
+    EXPECT_EQ(out[x.size() - 2], 0.0);
+    EXPECT_EQ(out[x.size() - 1], 0.0);
+  }
+}
+
+// A sweep's curves share its grid (one copy per sweep, not per curve); a vector converts.
+TEST(SweepKernels, CurvesOfOneSweepShareTheirSpeedGrid) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("resort_car.toml")), DofSet::vertical);
+  const ModalResult modes = solve_modes(sys);
+  RailJoints j;
+  j.rail_length = 12.5;
+  const auto source = make_source(j);
+  const int bounce = sys.index_of("body.bounce");
+  const SpeedGrid grid(std::vector<double>{10.0, 20.0, 30.0});
+  const auto curves = amplitude_curves(sys, modes, *source, 0,
+                                       {{bounce, ResponseQuantity::displacement}, {bounce, ResponseQuantity::acceleration}},
+                                       grid);
+  ASSERT_EQ(curves.size(), 2u);
+  EXPECT_EQ(&curves[0].speeds.values(), &grid.values());
+  EXPECT_EQ(&curves[1].speeds.values(), &grid.values());
+  const auto from_vector =
+      amplitude_curves(sys, modes, *source, 0, {{bounce, ResponseQuantity::displacement}}, std::vector<double>{10.0, 20.0, 30.0});
+  EXPECT_EQ(from_vector[0].speeds, grid);
+  EXPECT_EQ(from_vector[0].amplitudes, curves[0].amplitudes);
+}
+
+}  // namespace
+}  // namespace railmodal::test
