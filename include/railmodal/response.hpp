@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <complex>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -159,13 +160,23 @@ struct AmplitudeCurve {
   /// Phase of the output's first harmonic against the source's input at its leading wheel
   /// (its first force for an unbalance), degrees in (−180, 180]; 0 where unbounded or where
   /// the source has no input. With the amplitude of harmonic 1 this is the FRF (displacement
-  /// transmissibility or receptance, ×iω for velocity, ×−ω² for acceleration).
+  /// transmissibility or receptance, ×iω for velocity, ×−ω² for acceleration). Empty when
+  /// the output was requested without its phase (OutputRequest::phase).
   std::vector<double> phases_deg;
 };
+
+/// The input that AmplitudeCurve::phases_deg are measured against, at unit load scale: harmonic
+/// 1 at the source's leading wheel (smallest delay; its largest component) or, with no wheel
+/// input, its first force. 0 when the source has no input. A speed where the load scale s(ω)
+/// is negative turns the reference by π.
+std::complex<double> phase_reference(const LinearSystem& system, const ExcitationSource& source);
 
 struct OutputRequest {
   int dof = 0;  ///< index into LinearSystem::dofs
   ResponseQuantity quantity = ResponseQuantity::displacement;
+  /// false: the curve's phases_deg stays empty. Amplitude-only sweeps (peak refinement, the
+  /// sweep benchmark's first row) save an arg x per speed and 8 bytes per speed of output.
+  bool phase = true;
 };
 
 /// One curve per output, from one direct solve per speed and harmonic (or the modal

@@ -14,9 +14,12 @@ Peak refine_peak(const LinearSystem& system, const ModalResult& modes, const Exc
   if (!(low > 0.0) || !(high > low) || !(relative_tolerance > 0.0))
     throw std::invalid_argument("refine_peak: need 0 < low < high and a positive tolerance");
   Peak peak;
+  OutputRequest amplitude_only = output;
+  amplitude_only.phase = false;
   auto amplitude = [&](double speed) {
     ++peak.evaluations;
-    const auto curves = amplitude_curves(system, modes, source, 0, {output}, {speed}, friction_reference_amplitude);
+    const auto curves =
+        amplitude_curves(system, modes, source, 0, {amplitude_only}, {speed}, friction_reference_amplitude);
     if (curves[0].unbounded[0]) peak.unbounded = true;
     return curves[0].amplitudes[0];
   };

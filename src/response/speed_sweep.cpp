@@ -64,23 +64,6 @@ ModalBasis modal_basis(const LinearSystem& system, const ModalResult& modes) {
   return b;
 }
 
-// The source's input of harmonic 1 at its leading wheel (smallest delay), or its first force,
-// at the reference frequency of its separable load: the phase reference of the curves.
-std::complex<double> reference_input(const LinearSystem& system, const ExcitationSource& source) {
-  const HarmonicLoad load = source.load(system, 1e-3 * source.wavelength(), 1);
-  const WheelInput* lead = nullptr;
-  for (const WheelInput& w : load.wheels)
-    if (w.amplitude.cwiseAbs().maxCoeff() > 0.0 && (!lead || w.delay_s < lead->delay_s)) lead = &w;
-  const Eigen::Vector3cd* u = lead ? &lead->amplitude : nullptr;
-  for (const PointForce& f : load.forces)
-    if (!u && f.amplitude.cwiseAbs().maxCoeff() > 0.0) u = &f.amplitude;
-  if (!u) return 0.0;
-  int largest = 0;
-  for (int d = 1; d < 3; ++d)
-    if (std::abs((*u)(d)) > std::abs((*u)(largest))) largest = d;
-  return (*u)(largest);
-}
-
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegrees = 180.0 / kPi;
 
@@ -139,6 +122,21 @@ using response::kSweepBlock;
 
 }  // namespace
 
+std::complex<double> phase_reference(const LinearSystem& system, const ExcitationSource& source) {
+  const HarmonicLoad load = source.load(system, 1e-3 * source.wavelength(), 1);
+  const WheelInput* lead = nullptr;
+  for (const WheelInput& w : load.wheels)
+    if (w.amplitude.cwiseAbs().maxCoeff() > 0.0 && (!lead || w.delay_s < lead->delay_s)) lead = &w;
+  const Eigen::Vector3cd* u = lead ? &lead->amplitude : nullptr;
+  for (const PointForce& f : load.forces)
+    if (!u && f.amplitude.cwiseAbs().maxCoeff() > 0.0) u = &f.amplitude;
+  if (!u) return 0.0;
+  int largest = 0;
+  for (int d = 1; d < 3; ++d)
+    if (std::abs((*u)(d)) > std::abs((*u)(largest))) largest = d;
+  return (*u)(largest);
+}
+
 std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
                                              const ExcitationSource& source, int source_index,
                                              const std::vector<OutputRequest>& outputs,
@@ -155,7 +153,7 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     curves.push_back(c);
   }
   const bool equivalent_friction = friction_reference_amplitude > 0.0 && has_leaf_friction(system);
-  const std::complex<double> input = reference_input(system, source);
+  const std::complex<double> input = phase_reference(system, source);
   const ModalBasis basis = modal_basis(system, modes);
   std::vector<SeparableLoad> parts;
   for (int k = 1; k <= source.harmonic_count(); ++k) parts.push_back(source.separable_load(system, k));
@@ -180,13 +178,16 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     for (const OutputRequest& o : outputs)
       if (std::find(dofs.begin(), dofs.end(), o.dof) == dofs.end()) dofs.push_back(o.dof);
     auto slot = [&](int dof) { return static_cast<size_t>(std::find(dofs.begin(), dofs.end(), dof) - dofs.begin()); };
+    std::vector<bool> dof_phase(dofs.size());  // some output of this DOF wants its phase
+    for (const OutputRequest& o : outputs) dof_phase[slot(o.dof)] = dof_phase[slot(o.dof)] || o.phase;
+    const bool any_phase = std::find(dof_phase.begin(), dof_phase.end(), true) != dof_phase.end();
     std::vector<std::vector<Kernel>> kernels(source.harmonic_count());
     for (int k = 1; k <= source.harmonic_count(); ++k)
       for (int dof : dofs) kernels[k - 1].push_back(prepare(k, dof));
-    for (AmplitudeCurve& c : curves) {
-      c.amplitudes.resize(count);
-      c.unbounded.assign(count, false);  // set below where flagged: rare, and bits are slow to write
-      c.phases_deg.resize(count);
+    for (size_t o = 0; o < outputs.size(); ++o) {
+      curves[o].amplitudes.resize(count);
+      curves[o].unbounded.assign(count, false);  // set below where flagged: rare, and bits are slow to write
+      if (outputs[o].phase) curves[o].phases_deg.resize(count);
     }
     // Per block and DOF: Σ_k |x_k|·ω_k^p for p = 0, 1, 2 (displacement, velocity,
     // acceleration), arg x of harmonic 1 (rad), and the unbounded flags (0 or 1, as doubles so
@@ -215,7 +216,7 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
         for (int v = 0; v < n; ++v) w[v] = at[v] * to_omega;
         for (int v = 0; v < n; ++v) w2[v] = w[v] * w[v];
         source.load_scales(w.data(), n, p.reference_omega, scale.data());
-        if (k == 1)
+        if (k == 1 && any_phase)
           for (int v = 0; v < n; ++v) input_arg[v] = scale[v] == 0.0 ? kNaN : reference_arg + (scale[v] < 0.0 ? kPi : 0.0);
         const response::SweepBlock block{w.data(), w2.data(), scale.data(), re.data(), im.data(), n};
         for (size_t d = 0; d < dofs.size(); ++d) {
@@ -228,7 +229,7 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
             out.any_unbounded = true;
           }
           response::add_magnitudes(block, out.sum[0].data(), out.sum[1].data(), out.sum[2].data());
-          if (k == 1) response::arguments(re.data(), im.data(), n, out.first_arg.data());
+          if (k == 1 && dof_phase[d]) response::arguments(re.data(), im.data(), n, out.first_arg.data());
         }
       }
       for (size_t o = 0; o < outputs.size(); ++o) {
@@ -240,8 +241,9 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
         if (d.any_unbounded)
           for (int v = 0; v < n; ++v)
             if (d.unbounded[v] != 0.0) c.unbounded[begin + v] = true, amplitudes[v] = 0.0;
-        response::phases_deg(d.first_arg.data(), input_arg.data(), d.unbounded.data(),
-                             phase_offset_deg(outputs[o].quantity), n, c.phases_deg.data() + begin);
+        if (outputs[o].phase)
+          response::phases_deg(d.first_arg.data(), input_arg.data(), d.unbounded.data(),
+                               phase_offset_deg(outputs[o].quantity), n, c.phases_deg.data() + begin);
       }
     }
     return curves;
@@ -270,15 +272,23 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
         // response at its largest DOF, and most outputs of a symmetric vehicle skip most modes.
         const double at = mode.shape(dof), largest = mode.shape.cwiseAbs().maxCoeff();
         if (std::abs(at) <= kRoundOffShare * largest) continue;
-        const std::complex<double> a = mode.shape.cast<std::complex<double>>().dot(p.stiffness_part) * at;
-        const std::complex<double> b = mode.shape.cast<std::complex<double>>().dot(p.damping_part) * at;
-        if (a == 0.0 && b == 0.0) continue;  // the load does not reach this mode at all
+        // Likewise a modal load at round-off of what the load could give that mode (1e-12 of
+        // ‖φ‖‖Q‖, as for the drive floor below): a load on the bogies' pitch meets a bounce mode
+        // only through eigensolver noise, and that noise, summed, would be the response — with
+        // an arbitrary phase — where the exact response is 0.
+        std::complex<double> load_k = mode.shape.cast<std::complex<double>>().dot(p.stiffness_part);
+        std::complex<double> load_c = mode.shape.cast<std::complex<double>>().dot(p.damping_part);
+        const double shape_norm = mode.shape.norm();
+        if (std::abs(load_k) <= kRoundOffShare * shape_norm * q_norm_k) load_k = 0.0;
+        if (std::abs(load_c) <= kRoundOffShare * shape_norm * q_norm_c) load_c = 0.0;
+        const std::complex<double> a = load_k * at, b = load_c * at;
+        if (a == 0.0 && b == 0.0) continue;  // the load does not reach this mode
         const double c = basis.damping[j], lambda = mode.eigenvalue;
         const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
         const double tolerance = undamped ? kAtResonance * lambda : -1.0;
         terms.push_back({a.real(), a.imag(), b.real(), b.imag(), lambda, c, tolerance, undamped});
         if (undamped && std::abs(at) > 1e-9 * largest)
-          resonances.push_back({lambda, tolerance, a, b, 1e-12 * std::abs(at) * mode.shape.norm()});
+          resonances.push_back({lambda, tolerance, a, b, 1e-12 * std::abs(at) * shape_norm});
       }
       // Massless DOFs also follow their own loads: K_mm⁻¹ Q_m(ω).
       std::complex<double> sk = 0.0, sc = 0.0;
@@ -369,13 +379,14 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
           continue;
         }
         sum[o] += std::abs(r.displacement(outputs[o].dof)) * power(outputs[o].quantity, omega);
-        if (k == 1) phase[o] = phase_deg(r.displacement(outputs[o].dof), scale, input, outputs[o].quantity);
+        if (k == 1 && outputs[o].phase)
+          phase[o] = phase_deg(r.displacement(outputs[o].dof), scale, input, outputs[o].quantity);
       }
     }
     for (size_t o = 0; o < outputs.size(); ++o) {
       curves[o].amplitudes.push_back(unbounded[o] ? 0.0 : sum[o]);
       curves[o].unbounded.push_back(unbounded[o]);
-      curves[o].phases_deg.push_back(unbounded[o] ? 0.0 : phase[o]);
+      if (outputs[o].phase) curves[o].phases_deg.push_back(unbounded[o] ? 0.0 : phase[o]);
     }
   }
   return curves;

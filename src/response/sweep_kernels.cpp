@@ -7,7 +7,8 @@
 // CPU (GNU ifunc). AVX2 halves the cost of the divisions and square roots that dominate a sweep.
 // Without FMA in the AVX2 build, both give the same bits.
 // g++ only, and not in the sanitised build: the resolver runs before the sanitiser's runtime.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+#if !defined(RAILMODAL_VECTOR_CLONES) && defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
+    !defined(__SANITIZE_ADDRESS__)
 #define RAILMODAL_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #endif
 #ifndef RAILMODAL_VECTOR_CLONES
@@ -31,11 +32,12 @@ constexpr double kHalfPiRest = 6.123233995736765886130e-17;
 inline double atan2_kernel(double y, double x) {
   const double ax = std::abs(x), ay = std::abs(y);
   const bool steep = ay > ax;
-  const double t = (steep ? ax : ay) / (steep ? ay : ax);  // [0, 1]; NaN for 0/0
-  // atan t = π/4 + atan((t − 1)/(t + 1)) above 0.66, so that the rational sees |r| ≤ 0.21.
-  const bool big = t > 0.66;
-  const double below = t - 1.0, above = t + 1.0;
-  const double r = (big ? below : t) / (big ? above : 1.0);
+  const double lo = steep ? ax : ay, hi = steep ? ay : ax;  // atan of t = lo/hi ∈ [0, 1]
+  // atan t = π/4 + atan((t − 1)/(t + 1)) above 0.66, so that the rational sees |r| ≤ 0.21;
+  // (lo − hi)/(lo + hi) is that in one division, and lo − hi is exact there (Sterbenz).
+  const bool big = lo > 0.66 * hi;
+  const double below = lo - hi, above = lo + hi;
+  const double r = (big ? below : lo) / (big ? above : hi);  // NaN for 0/0
   const double z = r * r;
   // Cephes atan.c: atan r = r + r·z·P(z)/Q(z) on |r| ≤ 0.66, relative error ~1e-16.
   const double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z -

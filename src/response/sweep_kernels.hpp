@@ -48,7 +48,7 @@ void add_magnitudes(const SweepBlock& b, double* sum0, double* sum1, double* sum
 /// arg x = atan2(im, re) per speed (rad), NaN where x = 0; see fast_atan2.
 void arguments(const double* re, const double* im, int count, double* out);
 
-/// atan2(y, x) to within 2 ulp of π (about 4.4e-16 rad) in all four quadrants: Cephes's
+/// atan2(y, x) to within 2 ulp of π (8.9e-16 rad) of libm in all four quadrants: Cephes's
 /// rational approximation of atan on [0, 0.66] after the reduction to [0, 1] by |y|/|x| or
 /// |x|/|y| and to ±0.21 by (t − 1)/(t + 1). NaN for x = y = 0, where the phase is undefined;
 /// −0 counts as +0. Branch-free, so that a loop of it vectorises (libm's atan2 does not).

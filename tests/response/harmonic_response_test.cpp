@@ -112,6 +112,12 @@ vertical_damping = "12 kN*s/m"
     if (acc > 180.0) acc -= 360.0;
     EXPECT_NEAR(curves[1].phases_deg[v], acc, 1e-9);
   }
+  // Without its phase an output keeps the same amplitudes, bit for bit, and no phases.
+  OutputRequest amplitude_only{0, ResponseQuantity::acceleration};
+  amplitude_only.phase = false;
+  const auto without = amplitude_curves(sys, modes, *source, 0, {amplitude_only}, speeds);
+  EXPECT_TRUE(without[0].phases_deg.empty());
+  EXPECT_EQ(without[0].amplitudes, curves[1].amplitudes);
 }
 
 // With C = 0 or proportional damping the modes decouple exactly: superposition over all modes

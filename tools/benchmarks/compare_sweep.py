@@ -8,7 +8,8 @@ build/tools/benchmarks/sweep_timing times its own sweep and writes the model and
 harmonic's load Q(ω) = Q_K + iωQ_C; this script redoes the same computation vectorised in
 numpy two ways — batched direct solves of (K − ω²M + iωC)x = Q over all speeds
 (numpy.linalg.solve), and modal superposition after scipy.linalg.eigh — checks that all
-three agree, and prints the times and ratios.
+three agree, and prints the times and ratios. Then both sides again with the phase of
+harmonic 1 against the source's reference input (the report's FRF phase).
 
     /usr/bin/python3 tools/benchmarks/compare_sweep.py [--repeats 7] [--driver PATH]
 
@@ -72,15 +73,17 @@ def direct_sweep(model):
     return out
 
 
-def modal_sweep(model):
-    """Modal superposition (C = 0 here), vectorised over speeds with broadcasting."""
+def modal_sweep(model, phases=False):
+    """Modal superposition (C = 0 here), vectorised over speeds with broadcasting; with
+    `phases`, also the phase of harmonic 1 against the source's reference input, in degrees
+    (+180 for the acceleration), wrapped into (-180, 180]."""
     M, K, C = (np.array(model[k]) for k in ("mass", "stiffness", "damping"))
     lam, phi = scipy.linalg.eigh(K, M)
     c = np.einsum("ij,ik,kj->j", phi, C, phi)
     V = np.array(model["speeds"])
     d = model["output_dof"]
     out = []
-    for wavelength, parts in loads(model):
+    for (wavelength, parts), source in zip(loads(model), model["sources"]):
         disp = np.zeros(V.size)
         acc = np.zeros(V.size)
         for k, qk, qc in parts:
@@ -90,8 +93,33 @@ def modal_sweep(model):
             x = q @ phi[d, :]
             disp += np.abs(x)
             acc += np.abs(x) * w**2
-        out += [disp, acc]
+            if phases and k == 1:
+                reference = source["phase_reference"]
+                arg = np.angle(x) - np.arctan2(reference["im"], reference["re"])
+                phase_disp = np.degrees(arg)
+                phase_acc = phase_disp + 180.0
+                phase_disp, phase_acc = (np.where(x == 0, 0.0, 180.0 - np.mod(180.0 - p, 360.0))
+                                         for p in (phase_disp, phase_acc))
+        out += [disp, acc] if not phases else [(disp, phase_disp), (acc, phase_acc)]
     return out
+
+
+def phase_defined(model):
+    """Per source, the speeds where harmonic 1 reaches the output: |x₁| above 1e-9 of
+    Σ_j |q_j|·max|φ_j| (what the modal loads could give). Elsewhere the exact response is 0 or
+    nearly so, and either side's phase is that of round-off (railmodal drops modal loads and
+    shares at round-off, so it reports 0 where the exact response is 0). Not timed."""
+    M, K = (np.array(model[k]) for k in ("mass", "stiffness"))
+    lam, phi = scipy.linalg.eigh(K, M)
+    V = np.array(model["speeds"])
+    d = model["output_dof"]
+    masks = []
+    for wavelength, parts in loads(model):
+        _, qk, qc = parts[0]
+        w = 2 * np.pi * V / wavelength
+        q = ((phi.T @ qk)[None, :] + 1j * w[:, None] * (phi.T @ qc)[None, :]) / (lam[None, :] - (w**2)[:, None])
+        masks.append(np.abs(q @ phi[d, :]) > 1e-9 * (np.abs(q) @ np.abs(phi).max(axis=0)))
+    return masks
 
 
 def main():
@@ -103,24 +131,39 @@ def main():
         sys.exit(f"compare_sweep.py: error: {args.driver} is missing; build with benchmarks (bash tools/test.sh)")
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "sweep.json")
-        run = subprocess.run([args.driver, os.path.join(ROOT, "data"), path, str(args.repeats)],
+        # The C++ sweep takes about a millisecond: at least 101 runs, so that its median is not
+        # the cold first run's.
+        run = subprocess.run([args.driver, os.path.join(ROOT, "data"), path, str(max(args.repeats, 101))],
                              check=True, capture_output=True, text=True)
-        ours = float(run.stdout.split()[1])
+        times = dict(line.split() for line in run.stdout.splitlines())
+        ours, ours_with_phases = float(times["sweep_s"]), float(times["sweep_with_phases_s"])
         with open(path) as f:
             model = json.load(f)
     direct_s, direct = median_seconds(lambda: direct_sweep(model), args.repeats)
     modal_s, modal = median_seconds(lambda: modal_sweep(model), args.repeats)
+    phases_s, with_phases = median_seconds(lambda: modal_sweep(model, phases=True), args.repeats)
     reference = [np.array(a["values"]) for a in model["amplitudes"]]
     def worst(results):
         return max(float(np.max(np.abs(r - a)) / max(np.max(np.abs(a)), 1e-300)) for r, a in zip(results, reference))
+    # Phases compared as angles (179.9999 and -179.9999 are 0.0002 degrees apart), where
+    # harmonic 1 reaches the output.
+    defined = [m for m in phase_defined(model) for _ in range(2)]
+    phase_difference = max(float(np.max(np.abs(np.mod(p - np.array(a["phases_deg"]) + 180.0, 360.0) - 180.0)[m],
+                                        initial=0.0))
+                           for (_, p), a, m in zip(with_phases, model["amplitudes"], defined))
     n = len(model["mass"])
     harmonics = sum(len(s["harmonics"]) for s in model["sources"])
     print(f"sweep: {len(model['speeds'])} speeds x {harmonics} source harmonics, {n} DOFs, 2 outputs")
-    print(f"railmodal (C++)                    {ours * 1e3:9.2f} ms")
-    print(f"numpy batched direct solves        {direct_s * 1e3:9.2f} ms   ratio {direct_s / ours:7.1f}x   "
+    print("amplitudes (railmodal also flags unbounded speeds; numpy does not):")
+    print(f"  railmodal (C++)                    {ours * 1e3:9.2f} ms")
+    print(f"  numpy batched direct solves        {direct_s * 1e3:9.2f} ms   ratio {direct_s / ours:7.1f}x   "
           f"max rel. difference {worst(direct):.1e}")
-    print(f"numpy/scipy modal, vectorised      {modal_s * 1e3:9.2f} ms   ratio {modal_s / ours:7.1f}x   "
+    print(f"  numpy/scipy modal, vectorised      {modal_s * 1e3:9.2f} ms   ratio {modal_s / ours:7.1f}x   "
           f"max rel. difference {worst(modal):.1e}")
+    print("amplitudes and the phase of harmonic 1:")
+    print(f"  railmodal (C++)                    {ours_with_phases * 1e3:9.2f} ms")
+    print(f"  numpy/scipy modal, vectorised      {phases_s * 1e3:9.2f} ms   ratio {phases_s / ours_with_phases:7.1f}x   "
+          f"max rel. difference {worst([a for a, _ in with_phases]):.1e}, phase {phase_difference:.1e} deg")
 
 
 if __name__ == "__main__":

@@ -1,11 +1,13 @@
 // The C++ side of compare_sweep.py: a sweep of 10 000 speeds over all sources for the resort
 // car (all DOFs), timed in the same run as numpy/scipy. Writes the model and the sources'
-// separable loads to JSON for the script to redo the same computation, and its amplitudes
-// for the script to compare.
+// separable loads to JSON for the script to redo the same computation, and its amplitudes and
+// phases for the script to compare.
 //
-//   sweep_timing DATA_DIR OUT.json REPEATS    prints "sweep_s T" (median of REPEATS runs)
+//   sweep_timing DATA_DIR OUT.json REPEATS    prints "sweep_s T" (amplitudes only) and
+//                                             "sweep_with_phases_s T", medians of REPEATS runs
 #include <algorithm>
 #include <chrono>
+#include <complex>
 #include <fstream>
 #include <iterator>
 #include <iostream>
@@ -53,27 +55,44 @@ int main(int argc, char** argv) {
   hunting.amplitude = 0.005;
   const std::vector<std::shared_ptr<ExcitationSource>> sources = {make_source(joints), make_source(eccentricity),
                                                                   make_source(flat), make_source(hunting)};
-  // The report's outputs: body bounce displacement and acceleration.
+  // The report's outputs: body bounce displacement and acceleration, first as amplitudes only
+  // (what the script's first rows compute), then with the phases of harmonic 1 as well.
   const int bounce = sys.index_of("body.bounce");
-  const std::vector<OutputRequest> outputs = {{bounce, ResponseQuantity::displacement},
-                                              {bounce, ResponseQuantity::acceleration}};
+  std::vector<OutputRequest> amplitudes_only = {{bounce, ResponseQuantity::displacement},
+                                                {bounce, ResponseQuantity::acceleration}};
+  for (OutputRequest& o : amplitudes_only) o.phase = false;
+  const std::vector<OutputRequest> with_phases = {{bounce, ResponseQuantity::displacement},
+                                                  {bounce, ResponseQuantity::acceleration}};
   std::vector<double> speeds(10000);
   for (size_t i = 0; i < speeds.size(); ++i) speeds[i] = 1.0 + 59.0 * i / (speeds.size() - 1);  // 3.6–216 km/h
   const SpeedGrid grid(speeds);  // one grid for every source's curves, as the report shares it
 
-  std::vector<AmplitudeCurve> curves;
-  std::vector<double> times;
-  for (int r = 0; r < repeats; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    curves.clear();
+  auto sweep = [&](const std::vector<OutputRequest>& outputs) {
+    std::vector<AmplitudeCurve> curves;
     for (size_t s = 0; s < sources.size(); ++s) {
       auto c = amplitude_curves(sys, modes, *sources[s], static_cast<int>(s), outputs, grid);
       curves.insert(curves.end(), std::make_move_iterator(c.begin()), std::make_move_iterator(c.end()));
     }
+    return curves;
+  };
+  // The two configurations alternate, so that both see the same machine.
+  std::vector<AmplitudeCurve> curves;
+  std::vector<double> times, times_with_phases;
+  for (int r = 0; r < repeats; ++r) {
+    auto start = std::chrono::steady_clock::now();
+    curves = sweep(amplitudes_only);
     times.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    curves.clear();
+    start = std::chrono::steady_clock::now();
+    curves = sweep(with_phases);
+    times_with_phases.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
-  std::sort(times.begin(), times.end());
-  std::cout << "sweep_s " << times[times.size() / 2] << "\n";
+  auto median = [](std::vector<double> t) {
+    std::sort(t.begin(), t.end());
+    return t[t.size() / 2];
+  };
+  std::cout << "sweep_s " << median(times) << "\n";
+  std::cout << "sweep_with_phases_s " << median(times_with_phases) << "\n";
 
   nlohmann::json j;
   j["mass"] = matrix(sys.mass);
@@ -89,10 +108,15 @@ int main(int argc, char** argv) {
       h.push_back({{"harmonic", k}, {"stiffness_part", complex_vector(p.stiffness_part)},
                    {"damping_part", complex_vector(p.damping_part)}});
     }
-    j["sources"].push_back({{"kind", source->kind()}, {"wavelength", source->wavelength()}, {"harmonics", h}});
+    const std::complex<double> reference = phase_reference(sys, *source);
+    j["sources"].push_back({{"kind", source->kind()},
+                            {"wavelength", source->wavelength()},
+                            {"harmonics", h},
+                            {"phase_reference", {{"re", reference.real()}, {"im", reference.imag()}}}});
   }
   j["amplitudes"] = nlohmann::json::array();
-  for (const auto& c : curves) j["amplitudes"].push_back({{"quantity", to_string(c.quantity)}, {"values", c.amplitudes}});
+  for (const auto& c : curves)
+    j["amplitudes"].push_back({{"quantity", to_string(c.quantity)}, {"values", c.amplitudes}, {"phases_deg", c.phases_deg}});
   std::ofstream(argv[2]) << j.dump();
   return 0;
 }
