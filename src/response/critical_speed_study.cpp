@@ -89,6 +89,7 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
   // The grid in chunks, so that a long sweep reports its progress.
   constexpr size_t kChunk = 4096;
   const double total = static_cast<double>(sources.size() * speeds.size());
+  const SpeedGrid grid(speeds);  // the chunks' grids joined, shared by every curve
   for (size_t s = 0; s < sources.size(); ++s) {
     std::vector<AmplitudeCurve> curves;
     for (size_t first = 0; first < speeds.size(); first += kChunk) {
@@ -106,11 +107,10 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
       }
       if (progress) progress((s * speeds.size() + first + chunk.size()) / total);
     }
-    const SpeedGrid grid(speeds);  // the chunks' grids joined, shared by the source's curves
     for (size_t o = 0; o < curves.size(); ++o) {
       curves[o].speeds = grid;
-      study.curves.push_back(curves[o]);
-      for (const Peak& p : refine_peaks(study, *sources[s], outputs[o], curves[o]))
+      study.curves.push_back(std::move(curves[o]));
+      for (const Peak& p : refine_peaks(study, *sources[s], outputs[o], study.curves.back()))
         study.peaks.push_back({static_cast<int>(study.curves.size()) - 1, p});
     }
   }

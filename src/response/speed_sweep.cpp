@@ -199,7 +199,10 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
       bool any_unbounded;  // in this block: most blocks have none, and skip the flag loops
     };
     std::vector<PerDof> per_dof(dofs.size());
-    alignas(64) std::array<double, kSweepBlock> w, w2, scale, re, im, input_arg;
+    for (PerDof& d : per_dof) d.first_arg.fill(kNaN);
+    alignas(64) std::array<double, kSweepBlock> w, w2, scale, re, im;
+    alignas(64) std::array<double, kSweepBlock> input_arg;
+    input_arg.fill(kNaN);  // no phase unless harmonic 1 sets it (a source could have none)
     alignas(64) std::array<double, kSweepBlock> resonant{};  // all 0 between kernels
     const double reference_arg = input == 0.0 ? kNaN : std::arg(input);
     for (int begin = 0; begin < count; begin += kSweepBlock) {
@@ -246,7 +249,7 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
                                phase_offset_deg(outputs[o].quantity), n, c.phases_deg.data() + begin);
       }
     }
-    return curves;
+    return std::move(curves);  // a captured reference: a plain return would copy every curve
   };
 
   if (basis.exact && !equivalent_friction) {
