@@ -3,17 +3,20 @@
 #include <cmath>
 #include <limits>
 
-// Each loop below is built for SSE2 (every x86-64) and for AVX2, and the loader picks one by the
-// CPU (GNU ifunc). AVX2 halves the cost of the divisions and square roots that dominate a sweep.
-// Without FMA in the AVX2 build, both give the same bits.
-// g++ only, and not in the sanitised build: the resolver runs before the sanitiser's runtime.
+// The block loops below (add_*, arguments, phases_deg) are built for SSE2 (every x86-64) and
+// for AVX2, and the loader picks one by the CPU (a GNU ifunc: glibc only, and not under a
+// sanitiser, whose runtime the resolver would run before). AVX2 halves the cost of the
+// divisions and square roots that dominate the arithmetic. Without FMA in the AVX2 build, and
+// with contraction off for this file (CMakeLists.txt), both give the same bits.
 #if !defined(RAILMODAL_VECTOR_CLONES) && defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
-    !defined(__SANITIZE_ADDRESS__)
+    defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
 #define RAILMODAL_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
 #endif
 #ifndef RAILMODAL_VECTOR_CLONES
 #define RAILMODAL_VECTOR_CLONES
 #endif
+// Each clone must inline its loop to build it for its own target; GCC at -O2 does not.
+#define RAILMODAL_INLINE_LOOP [[gnu::always_inline]] inline
 
 namespace railmodal::response {
 
@@ -29,7 +32,7 @@ constexpr double kHalfPiRest = 6.123233995736765886130e-17;
 
 // Every select below picks between values already computed, so that it stays a select (a
 // branch would stop the vectorising; CMakeLists.txt builds this file without trapping maths).
-inline double atan2_kernel(double y, double x) {
+RAILMODAL_INLINE_LOOP double atan2_kernel(double y, double x) {
   const double ax = std::abs(x), ay = std::abs(y);
   const bool steep = ay > ax;
   const double lo = steep ? ax : ay, hi = steep ? ay : ax;  // atan of t = lo/hi ∈ [0, 1]
@@ -58,9 +61,10 @@ inline double atan2_kernel(double y, double x) {
 // The loops, with every array a restrict parameter: GCC takes restrict from parameters (also
 // once inlined), and without it the run-time overlap checks of seven arrays exceed its limit
 // and the loop stays scalar.
-inline void modal_terms(const ModalTerm* terms, std::size_t count, int n, const double* __restrict w,
-                        const double* __restrict w2, const double* __restrict scale, double* __restrict re,
-                        double* __restrict im) {
+RAILMODAL_INLINE_LOOP void modal_terms(const ModalTerm* terms, std::size_t count, int n,
+                                       const double* __restrict w, const double* __restrict w2,
+                                       const double* __restrict scale, double* __restrict re,
+                                       double* __restrict im) {
   for (std::size_t j = 0; j < count; ++j) {
     const ModalTerm t = terms[j];
     if (t.undamped) {
@@ -84,8 +88,9 @@ inline void modal_terms(const ModalTerm* terms, std::size_t count, int n, const 
   }
 }
 
-inline void root_terms(const RootTerm* terms, std::size_t count, int n, const double* __restrict w,
-                       const double* __restrict scale, double* __restrict re, double* __restrict im) {
+RAILMODAL_INLINE_LOOP void root_terms(const RootTerm* terms, std::size_t count, int n,
+                                      const double* __restrict w, const double* __restrict scale,
+                                      double* __restrict re, double* __restrict im) {
   for (std::size_t j = 0; j < count; ++j) {
     const RootTerm t = terms[j];
     for (int v = 0; v < n; ++v) {
@@ -98,9 +103,9 @@ inline void root_terms(const RootTerm* terms, std::size_t count, int n, const do
   }
 }
 
-inline void magnitudes(int n, const double* __restrict re, const double* __restrict im, const double* __restrict w,
-                       const double* __restrict w2, double* __restrict s0, double* __restrict s1,
-                       double* __restrict s2) {
+RAILMODAL_INLINE_LOOP void magnitudes(int n, const double* __restrict re, const double* __restrict im,
+                                      const double* __restrict w, const double* __restrict w2,
+                                      double* __restrict s0, double* __restrict s1, double* __restrict s2) {
   for (int v = 0; v < n; ++v) {
     const double magnitude = std::sqrt(re[v] * re[v] + im[v] * im[v]);
     s0[v] += magnitude;
@@ -109,12 +114,13 @@ inline void magnitudes(int n, const double* __restrict re, const double* __restr
   }
 }
 
-inline void atan2s(int n, const double* __restrict re, const double* __restrict im, double* __restrict out) {
+RAILMODAL_INLINE_LOOP void atan2s(int n, const double* __restrict re, const double* __restrict im,
+                                  double* __restrict out) {
   for (int v = 0; v < n; ++v) out[v] = atan2_kernel(im[v], re[v]);
 }
 
-inline void phases(int n, const double* __restrict arg_x, const double* __restrict arg_input,
-                   const double* __restrict unbounded, double offset_deg, double* __restrict out) {
+RAILMODAL_INLINE_LOOP void phases(int n, const double* __restrict arg_x, const double* __restrict arg_input,
+                                  const double* __restrict unbounded, double offset_deg, double* __restrict out) {
   for (int v = 0; v < n; ++v) {
     const double difference = arg_x[v] - arg_input[v];
     const double phase = difference * kDegrees + offset_deg;  // in [−540, 540]

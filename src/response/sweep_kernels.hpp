@@ -1,7 +1,7 @@
 // The arithmetic of a speed sweep over one block of speeds: every loop branch-free over the
-// block, so that the compiler vectorises it, and built twice on x86-64 (SSE2 and AVX2, chosen
-// at run time by the CPU). The two builds give identical results: no fused multiply-add, and
-// every operation is elementwise and correctly rounded at any vector width.
+// block, so that the compiler vectorises it, and built twice on x86-64 with glibc (SSE2 and
+// AVX2, chosen at run time by the CPU). The two builds give identical results: no fused
+// multiply-add, and every operation is elementwise and correctly rounded at any vector width.
 #pragma once
 
 #include <cstddef>
@@ -51,12 +51,15 @@ void arguments(const double* re, const double* im, int count, double* out);
 /// atan2(y, x) to within 2 ulp of π (8.9e-16 rad) of libm in all four quadrants: Cephes's
 /// rational approximation of atan on [0, 0.66] after the reduction to [0, 1] by |y|/|x| or
 /// |x|/|y| and to ±0.21 by (t − 1)/(t + 1). NaN for x = y = 0, where the phase is undefined;
-/// −0 counts as +0. Branch-free, so that a loop of it vectorises (libm's atan2 does not).
+/// −0 counts as +0. For |x|, |y| between 1e-300 and 1e300 (a response in metres or radians):
+/// beyond, |x| + |y| may overflow or 0.66·|y| round, and the result loses accuracy.
+/// Branch-free, so that a loop of it vectorises (libm's atan2 does not).
 double fast_atan2(double y, double x);
 
 /// Phase in degrees, in (−180, 180]: (arg x − arg input) + `offset_deg` (90° per time
 /// derivative), 0 where either argument is NaN or the speed is flagged unbounded (≠ 0).
-/// Both arguments lie in [−π, 2π], so at most two turns are taken off.
+/// For arg x ∈ [−π, π], arg input ∈ [−π, 2π] (π added for a negative load scale) and an
+/// offset in [0°, 180°], the sum lies in [−540°, 540°]: at most two turns are taken off.
 void phases_deg(const double* arg_x, const double* arg_input, const double* unbounded, double offset_deg, int count,
                 double* out);
 
