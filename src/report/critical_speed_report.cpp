@@ -421,7 +421,7 @@ void write_json(std::ostream& out, const CriticalSpeedStudy& st) {
     for (size_t i = 0; i < c.speeds.size(); ++i) {
       speeds.push_back(c.speeds[i] * kKmh);
       amplitudes.push_back(c.unbounded[i] ? json(nullptr) : json(c.amplitudes[i]));
-      phases.push_back(c.unbounded[i] ? json(nullptr) : json(c.phases_deg[i]));
+      phases.push_back(c.unbounded[i] || c.phases_deg.empty() ? json(nullptr) : json(c.phases_deg[i]));
     }
     j["curves"].push_back({{"source_index", c.source + 1}, {"output", c.output}, {"quantity", to_string(c.quantity)},
                            {"unit", is_rotation(st.system, c.output) ? "rad-based SI" : "SI (m, m/s, m/s²)"},

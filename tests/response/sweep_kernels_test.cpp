@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -37,6 +38,13 @@ TEST(SweepKernels, FastAtan2AgreesWithLibmToTwoUlpOfPiInEveryQuadrant) {
         worst = std::max(worst, std::abs(response::fast_atan2(sy, sx * t) - std::atan2(sy, sx * t)));
       }
   EXPECT_LE(worst, 2.0 * kUlpOfPi);
+  // Small angles to their own precision, not just to π's: a phase of 1e-20 rad is not 0.
+  double worst_relative = 0.0;
+  for (double e = -20.0; e <= -1.0; e += 0.01) {
+    const double t = std::pow(10.0, e);
+    worst_relative = std::max(worst_relative, std::abs(response::fast_atan2(t, 1.0) / std::atan2(t, 1.0) - 1.0));
+  }
+  EXPECT_LE(worst_relative, 4.0 * std::numeric_limits<double>::epsilon());
   std::cout << "fast_atan2: largest difference from libm " << worst / kUlpOfPi << " ulp of pi\n";
   EXPECT_DOUBLE_EQ(response::fast_atan2(0.0, -1.0), kPi);
   EXPECT_DOUBLE_EQ(response::fast_atan2(-0.0, -1.0), kPi);  // −0 counts as +0: the same phase
