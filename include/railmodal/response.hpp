@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <complex>
+#include <cstddef>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -129,9 +130,9 @@ class SpeedGrid {
       : values_(std::make_shared<const std::vector<double>>(std::move(speeds))) {}
   SpeedGrid(std::initializer_list<double> speeds) : SpeedGrid(std::vector<double>(speeds)) {}
   const std::vector<double>& values() const { return values_ ? *values_ : no_speeds(); }
-  size_t size() const { return values().size(); }
+  std::size_t size() const { return values().size(); }
   bool empty() const { return values().empty(); }
-  double operator[](size_t i) const { return values()[i]; }
+  double operator[](std::size_t i) const { return values()[i]; }
   double front() const { return values().front(); }
   double back() const { return values().back(); }
   std::vector<double>::const_iterator begin() const { return values().begin(); }
