@@ -32,9 +32,7 @@ std::vector<const Mode*> undamped_modes_at(const LinearSystem& system, const Mod
 }
 
 // A load drives a mode unless its modal force is round-off of ‖φ‖‖Q‖ (a symmetry zero).
-bool drives(const Mode& mode, const Eigen::VectorXcd& load) {
-  return std::abs(mode.shape.cast<std::complex<double>>().dot(load)) > 1e-12 * mode.shape.norm() * load.norm();
-}
+bool drives(const Mode& mode, const Eigen::VectorXcd& load) { return response::modal_force(mode, load) != 0.0; }
 
 void check_sizes(const LinearSystem& system, const ModalResult& modes, const Eigen::VectorXcd& load,
                  double frequency_hz) {

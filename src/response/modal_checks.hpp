@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <complex>
 #include <vector>
 
 #include "railmodal/linear_system.hpp"
@@ -17,6 +18,14 @@ namespace railmodal::response {
 /// taken at face value it would give a finite "resonance" of 1e14).
 inline bool undamped(const LinearSystem& system, const Mode& mode) {
   return std::abs(mode.shape.dot(system.damping * mode.shape)) <= 1e-12 * system.damping.norm() * mode.shape.squaredNorm();
+}
+
+/// The modal force φᵀQ, or exactly 0 where it is round-off of ‖φ‖‖Q‖: a symmetry zero that the
+/// computed eigenvectors blur to ~1e-17 (a load on the bogies' pitch against a bounce mode).
+/// Below that a load neither drives a mode at resonance nor adds to a response.
+inline std::complex<double> modal_force(const Mode& mode, const Eigen::VectorXcd& load) {
+  const std::complex<double> f = mode.shape.cast<std::complex<double>>().dot(load);
+  return std::abs(f) > 1e-12 * mode.shape.norm() * load.norm() ? f : 0.0;
 }
 
 /// The mode moves the quantity row·x: by more than 1e-9 of its largest entry times ‖row‖₁

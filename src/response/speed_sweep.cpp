@@ -17,6 +17,7 @@
 #include <stdexcept>
 
 #include "railmodal/response.hpp"
+#include "response/modal_checks.hpp"
 #include "response/state_space_modes.hpp"
 #include "response/sweep_kernels.hpp"
 
@@ -279,16 +280,13 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
         // response at its largest DOF, and most outputs of a symmetric vehicle skip most modes.
         const double at = mode.shape(dof), largest = mode.shape.cwiseAbs().maxCoeff();
         if (std::abs(at) <= kRoundOffShare * largest) continue;
-        // Likewise a modal load at round-off of what the load could give that mode (1e-12 of
-        // ‖φ‖‖Q‖, as for the drive floor below): a load on the bogies' pitch meets a bounce mode
-        // only through eigensolver noise, and that noise, summed, would be the response — with
-        // an arbitrary phase — where the exact response is 0.
-        std::complex<double> load_k = mode.shape.cast<std::complex<double>>().dot(p.stiffness_part);
-        std::complex<double> load_c = mode.shape.cast<std::complex<double>>().dot(p.damping_part);
+        // Likewise a modal load at round-off (response::modal_force, the direct solve's test of
+        // whether a load drives a mode): a load on the bogies' pitch meets a bounce mode only
+        // through eigensolver noise, and that noise, summed, would be the response — with an
+        // arbitrary phase — where the exact response is 0.
         const double shape_norm = mode.shape.norm();
-        if (std::abs(load_k) <= kRoundOffShare * shape_norm * q_norm_k) load_k = 0.0;
-        if (std::abs(load_c) <= kRoundOffShare * shape_norm * q_norm_c) load_c = 0.0;
-        const std::complex<double> a = load_k * at, b = load_c * at;
+        const std::complex<double> a = response::modal_force(mode, p.stiffness_part) * at;
+        const std::complex<double> b = response::modal_force(mode, p.damping_part) * at;
         if (a == 0.0 && b == 0.0) continue;  // the load does not reach this mode
         const double c = basis.damping[j], lambda = mode.eigenvalue;
         const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
