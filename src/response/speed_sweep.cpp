@@ -70,26 +70,10 @@ ModalBasis modal_basis(const LinearSystem& system, const ModalResult& modes) {
 }
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kDegrees = 180.0 / kPi;
 
 // The FRF's phase turns by +90° per time derivative of x.
 double phase_offset_deg(ResponseQuantity q) {
   return q == ResponseQuantity::velocity ? 90.0 : q == ResponseQuantity::acceleration ? 180.0 : 0.0;
-}
-
-// Phase of the FRF in degrees from arg x − arg input (rad), in (−180, 180].
-double wrapped_phase_deg(double difference, ResponseQuantity q) {
-  double phase = difference * kDegrees + phase_offset_deg(q);
-  while (phase > 180.0) phase -= 360.0;
-  while (phase <= -180.0) phase += 360.0;
-  return phase;
-}
-
-// Phase of the FRF in degrees: x against the input `scale`·`input` (scale real: its sign turns
-// the input by π). arg x − arg input rather than arg(x/input): no complex division.
-double phase_deg(std::complex<double> x, double scale, std::complex<double> input, ResponseQuantity q) {
-  if (input == 0.0 || scale == 0.0 || x == 0.0) return 0.0;
-  return wrapped_phase_deg(std::arg(x) - (std::arg(input) + (scale < 0.0 ? kPi : 0.0)), q);
 }
 
 // Whether an expansion of the response (`at_speed(k, dof, ω, s)`) matches the direct solve at
@@ -159,6 +143,10 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
   }
   const bool equivalent_friction = friction_reference_amplitude > 0.0 && has_leaf_friction(system);
   const std::complex<double> input = phase_reference(system, source);
+  // arg of the input s(ω)·input that phases refer to (s real: its sign turns the input by π);
+  // NaN, and so no phase, where there is no input.
+  const double reference_arg = input == 0.0 ? kNaN : std::arg(input);
+  auto input_arg_at = [&](double scale) { return scale == 0.0 ? kNaN : reference_arg + (scale < 0.0 ? kPi : 0.0); };
   const ModalBasis basis = modal_basis(system, modes);
   std::vector<SeparableLoad> parts;
   for (int k = 1; k <= source.harmonic_count(); ++k) parts.push_back(source.separable_load(system, k));
@@ -209,7 +197,6 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
     alignas(64) std::array<double, kSweepBlock> input_arg;
     input_arg.fill(kNaN);  // no phase unless harmonic 1 sets it (a source could have none)
     alignas(64) std::array<double, kSweepBlock> resonant{};  // all 0 between kernels
-    const double reference_arg = input == 0.0 ? kNaN : std::arg(input);
     for (int begin = 0; begin < count; begin += kSweepBlock) {
       const int n = std::min(kSweepBlock, count - begin);
       for (PerDof& d : per_dof) {
@@ -225,7 +212,7 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
         for (int v = 0; v < n; ++v) w2[v] = w[v] * w[v];
         source.load_scales(w.data(), n, p.reference_omega, scale.data());
         if (k == 1 && any_phase)
-          for (int v = 0; v < n; ++v) input_arg[v] = scale[v] == 0.0 ? kNaN : reference_arg + (scale[v] < 0.0 ? kPi : 0.0);
+          for (int v = 0; v < n; ++v) input_arg[v] = input_arg_at(scale[v]);
         const response::SweepBlock block{w.data(), w2.data(), scale.data(), re.data(), im.data(), n};
         for (size_t d = 0; d < dofs.size(); ++d) {
           std::fill_n(re.begin(), n, 0.0);
@@ -383,9 +370,11 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
           unbounded[o] = true;
           continue;
         }
-        sum[o] += std::abs(r.displacement(outputs[o].dof)) * power(outputs[o].quantity, omega);
+        const std::complex<double> x = r.displacement(outputs[o].dof);
+        sum[o] += std::abs(x) * power(outputs[o].quantity, omega);
         if (k == 1 && outputs[o].phase)
-          phase[o] = phase_deg(r.displacement(outputs[o].dof), scale, input, outputs[o].quantity);
+          phase[o] = response::phase_deg(response::fast_atan2(x.imag(), x.real()), input_arg_at(scale),
+                                         phase_offset_deg(outputs[o].quantity));
       }
     }
     for (size_t o = 0; o < outputs.size(); ++o) {

@@ -119,22 +119,31 @@ RAILMODAL_INLINE_LOOP void atan2s(int n, const double* __restrict re, const doub
   for (int v = 0; v < n; ++v) out[v] = atan2_kernel(im[v], re[v]);
 }
 
+RAILMODAL_INLINE_LOOP double phase_kernel(double arg_x, double arg_input, double offset_deg) {
+  const double difference = arg_x - arg_input;
+  const double phase = difference * kDegrees + offset_deg;  // in [−540, 540]
+  const double down = phase - 360.0, up = phase + 360.0;
+  const double once = phase > 180.0 ? down : phase <= -180.0 ? up : phase;
+  const double again = once + 360.0;  // −540 needs two turns
+  const double wrapped = once <= -180.0 ? again : once;
+  return difference != difference ? 0.0 : wrapped;
+}
+
 RAILMODAL_INLINE_LOOP void phases(int n, const double* __restrict arg_x, const double* __restrict arg_input,
                                   const double* __restrict unbounded, double offset_deg, double* __restrict out) {
   for (int v = 0; v < n; ++v) {
-    const double difference = arg_x[v] - arg_input[v];
-    const double phase = difference * kDegrees + offset_deg;  // in [−540, 540]
-    const double down = phase - 360.0, up = phase + 360.0;
-    const double once = phase > 180.0 ? down : phase <= -180.0 ? up : phase;
-    const double again = once + 360.0;  // −540 needs two turns
-    const double wrapped = once <= -180.0 ? again : once;
-    out[v] = unbounded[v] != 0.0 || difference != difference ? 0.0 : wrapped;
+    const double phase = phase_kernel(arg_x[v], arg_input[v], offset_deg);
+    out[v] = unbounded[v] != 0.0 ? 0.0 : phase;
   }
 }
 
 }  // namespace
 
 double fast_atan2(double y, double x) { return atan2_kernel(y, x); }
+
+double phase_deg(double arg_x, double arg_input, double offset_deg) {
+  return phase_kernel(arg_x, arg_input, offset_deg);
+}
 
 RAILMODAL_VECTOR_CLONES
 void add_modal_terms(const ModalTerm* terms, std::size_t count, const SweepBlock& b) {

@@ -57,9 +57,12 @@ void arguments(const double* re, const double* im, int count, double* out);
 double fast_atan2(double y, double x);
 
 /// Phase in degrees, in (−180, 180]: (arg x − arg input) + `offset_deg` (90° per time
-/// derivative), 0 where either argument is NaN or the speed is flagged unbounded (≠ 0).
-/// For arg x ∈ [−π, π], arg input ∈ [−π, 2π] (π added for a negative load scale) and an
-/// offset in [0°, 180°], the sum lies in [−540°, 540°]: at most two turns are taken off.
+/// derivative), 0 where either argument is NaN. For arg x ∈ [−π, π], arg input ∈ [−π, 2π] (π
+/// added for a negative load scale) and an offset in [0°, 180°], the sum lies in
+/// [−540°, 540°]: at most two turns are taken off.
+double phase_deg(double arg_x, double arg_input, double offset_deg);
+
+/// phase_deg over a block, and 0 where the speed is flagged unbounded (≠ 0).
 void phases_deg(const double* arg_x, const double* arg_input, const double* unbounded, double offset_deg, int count,
                 double* out);
 
