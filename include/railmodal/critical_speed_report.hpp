@@ -1,5 +1,15 @@
 // A critical-speed study of one vehicle in one scene, and its report: Markdown, a
 // self-contained HTML page with inline SVG plots, CSV and JSON.
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Scene scene = railmodal::load_scene("data/scenes/resort_car_10m_rails.toml");
+//     railmodal::Vehicle vehicle = railmodal::load_vehicle(scene.vehicle_file);
+//     railmodal::CriticalSpeedStudy study = railmodal::study_critical_speeds(scene, vehicle);
+//     railmodal::write_critical_speed_report(std::cout, study, railmodal::ReportFormat::markdown);
+//   }
 #pragma once
 
 #include <functional>

@@ -1,13 +1,17 @@
 // railmodal — damped (complex) modes of M q̈ + C q̇ + K q = 0.
 //
 //   #include <railmodal/railmodal.hpp>
-//   auto vehicle = railmodal::load_vehicle("data/vehicles/manchester_benchmark_coach.toml");
-//   auto system = railmodal::assemble(vehicle, railmodal::DofSet::all);
-//   railmodal::DampedModalResult r = railmodal::solve_damped_modes(system);
-//   for (const auto& mode : r.modes)
-//     if (mode.damped_frequency_hz)
-//       std::cout << mode.name << "  f_d = " << *mode.damped_frequency_hz << " Hz  zeta = "
-//                 << *mode.damping_ratio << "\n";
+//   #include <iostream>
+//
+//   int main() {
+//     auto vehicle = railmodal::load_vehicle("data/vehicles/manchester_benchmark_coach.toml");
+//     auto system = railmodal::assemble(vehicle, railmodal::DofSet::all);
+//     railmodal::DampedModalResult r = railmodal::solve_damped_modes(system);
+//     for (const auto& mode : r.modes)
+//       if (mode.damped_frequency_hz)
+//         std::cout << mode.name << "  f_d = " << *mode.damped_frequency_hz << " Hz  zeta = "
+//                   << *mode.damping_ratio << "\n";
+//   }
 #pragma once
 
 #include <Eigen/Core>

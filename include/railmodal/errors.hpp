@@ -1,9 +1,18 @@
 // railmodal — the two kinds of failure a caller must tell apart.
 //
-//   try {
-//     auto v = railmodal::load_vehicle("wagon.toml");
-//   } catch (const railmodal::InputError& e) {
-//     std::cerr << e.what() << "\n";   // wagon.toml:12:9: error: key 'body.mass': ...
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     try {
+//       auto vehicle = railmodal::load_vehicle("tests/cli/bad/wrong_unit.toml");
+//     } catch (const railmodal::InputError& e) {
+//       std::cerr << e.what() << "\n";  // wrong_unit.toml:9:13: error: key 'body.cg_height': ...
+//       return 0;                        // the file is wrong: tell the user
+//     } catch (const railmodal::NumericalError& e) {
+//       std::cerr << e.what() << "\n";  // the model cannot be solved as given
+//     }
+//     return 1;
 //   }
 #pragma once
 

@@ -1,5 +1,19 @@
 // Excitation sources: what the track and the running gear feed into a wagon at a speed.
 //
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::WheelFlat flat;  // a 60 mm flat, 0.6 mm deep, on a 950 mm wheel
+//     flat.wheel_diameter = 0.95;
+//     flat.depth = 0.0006;
+//     flat.length = 0.06;
+//     flat.harmonics = 4;
+//     auto source = railmodal::make_source(flat);
+//     // harmonic k runs at k·V/(πD): the speed at which harmonic 2 meets a 4.38 Hz mode
+//     std::cout << source->description() << ": " << source->speed_for(4.38, 2) * 3.6 << " km/h\n";
+//   }
+//
 // Every source here is periodic along the track with a fundamental wavelength Λ (the rail
 // length for joints, the wheel circumference πD for wheel defects and unbalance, the hunting
 // wavelength for conicity), so harmonic k of a source runs at f = k·V/Λ and a mode of

@@ -1,5 +1,15 @@
 // The fft-check as a page: time histories, spectra with the modal frequencies marked, the
 // checks and (nonlinear scenes) the half periods, in one self-contained HTML file.
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <fstream>
+//
+//   int main() {
+//     railmodal::Scene scene = railmodal::load_scene("data/scenes/resort_car_free_response.toml");
+//     railmodal::Vehicle vehicle = railmodal::load_vehicle(scene.vehicle_file);
+//     std::ofstream page("/dev/null");  // a file name such as fft_check.html
+//     railmodal::write_fft_check_html(page, railmodal::fft_check(scene, vehicle), scene, vehicle);
+//   }
 #pragma once
 
 #include <ostream>

@@ -1,7 +1,12 @@
 // railmodal — reading vehicle files (TOML with units).
 //
 //   #include <railmodal/railmodal.hpp>
-//   railmodal::Vehicle v = railmodal::load_vehicle("data/vehicles/two_axle_freight_wagon.toml");
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Vehicle v = railmodal::load_vehicle("data/vehicles/two_axle_freight_wagon.toml");
+//     std::cout << v.name << ": " << v.bodies.size() << " bodies, " << v.elements.size() << " elements\n";
+//   }
 //
 // A file is either a template ("two-axle", "bogie") whose few keys generate the bodies and
 // elements, or the general form with [[body]] and [[element]] tables. docs/input.md

@@ -1,9 +1,14 @@
 // railmodal — the assembled linear system M q̈ + C q̇ + K q = f.
 //
 //   #include <railmodal/railmodal.hpp>
-//   railmodal::Vehicle v = railmodal::load_vehicle("data/vehicles/resort_car.toml");
-//   railmodal::LinearSystem s = railmodal::assemble(v, railmodal::DofSet::vertical);
-//   for (const auto& dof : s.dofs) std::cout << dof.label << "\n";   // body.bounce, ...
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Vehicle v = railmodal::load_vehicle("data/vehicles/resort_car.toml");
+//     railmodal::LinearSystem s = railmodal::assemble(v, railmodal::DofSet::vertical);
+//     for (const auto& dof : s.dofs) std::cout << dof.label << "\n";  // body.bounce, ...
+//     std::cout << "K(0,0) = " << s.stiffness(0, 0) << " N/m\n";
+//   }
 #pragma once
 
 #include <Eigen/Core>

@@ -2,13 +2,17 @@
 // format finite-element tools export (https://math.nist.gov/MatrixMarket/formats.html).
 //
 //   #include <railmodal/railmodal.hpp>
-//   railmodal::MatrixModel model =
-//       railmodal::load_matrix_model("data/matrices/resort_car_vertical_M.mtx",
-//                                    "data/matrices/resort_car_vertical_K.mtx");
-//   railmodal::LinearSystem system = railmodal::to_linear_system(model);  // dense
-//   railmodal::ModalResult result = railmodal::solve_modes(system);
-//   // or, for a large model, sparse end to end: solve_modes(to_sparse_system(model), options)
-//   for (const auto& mode : result.modes) std::cout << mode.name << "  " << mode.frequency_hz << "\n";
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::MatrixModel model =
+//         railmodal::load_matrix_model("data/matrices/resort_car_vertical_M.mtx",
+//                                      "data/matrices/resort_car_vertical_K.mtx");
+//     railmodal::LinearSystem system = railmodal::to_linear_system(model);  // dense
+//     railmodal::ModalResult result = railmodal::solve_modes(system);
+//     // or, for a large model, sparse end to end: solve_modes(to_sparse_system(model), options)
+//     for (const auto& mode : result.modes) std::cout << mode.name << "  " << mode.frequency_hz << "\n";
+//   }
 //
 // Accepted: `%%MatrixMarket matrix coordinate|array real|integer general|symmetric`,
 // square. Symmetric files store the lower triangle (i ≥ j), which is mirrored; duplicate

@@ -1,18 +1,25 @@
 // railmodal — natural modes of an assembled vehicle.
 //
 //   #include <railmodal/railmodal.hpp>
-//   auto vehicle = railmodal::load_vehicle("data/vehicles/fette_car.toml");
-//   auto system = railmodal::assemble(vehicle, railmodal::DofSet::all);
-//   railmodal::ModalResult result = railmodal::solve_modes(system);
-//   for (const auto& mode : result.modes)
-//     std::cout << mode.name << "  " << mode.frequency_hz << " Hz  " << mode.period_s << " s\n";
+//   #include <iostream>
 //
-//   // The 20 lowest modes of a 100 000-DOF train of wagons with ARPACK:
-//   railmodal::ModalOptions options;
-//   options.solver = railmodal::ModalSolver::arpack;
-//   options.mode_count = 20;
-//   auto train = railmodal::wagon_train({20000});
-//   railmodal::ModalResult lowest = railmodal::solve_modes(train, options);
+//   int main() {
+//     auto vehicle = railmodal::load_vehicle("data/vehicles/fette_car.toml");
+//     auto system = railmodal::assemble(vehicle, railmodal::DofSet::all);
+//     railmodal::ModalResult result = railmodal::solve_modes(system);
+//     for (const auto& mode : result.modes)
+//       std::cout << mode.name << "  " << mode.frequency_hz << " Hz  " << mode.period_s << " s\n";
+//
+//     // The 20 lowest modes of a 10 000-DOF train of wagons with ARPACK:
+//     railmodal::ModalOptions options;
+//     options.solver = railmodal::ModalSolver::arpack;
+//     options.mode_count = 20;
+//     std::string why;
+//     if (!options.is_valid(&why)) return 1;
+//     auto train = railmodal::wagon_train(2000);
+//     railmodal::ModalResult lowest = railmodal::solve_modes(train, options);
+//     std::cout << lowest.modes.size() << " modes by " << railmodal::to_string(lowest.solver.solver) << "\n";
+//   }
 #pragma once
 
 #include <Eigen/Core>

@@ -4,7 +4,7 @@
 //   #include <iostream>
 //
 //   int main() {
-//     railmodal::Vehicle vehicle = railmodal::load_vehicle("resort_car.toml");
+//     railmodal::Vehicle vehicle = railmodal::load_vehicle("data/vehicles/resort_car.toml");
 //     railmodal::LinearSystem system = railmodal::assemble(vehicle, railmodal::DofSet::all);
 //     railmodal::ModalResult result = railmodal::solve_modes(system);
 //     for (const railmodal::Mode& mode : result.modes)

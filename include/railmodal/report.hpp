@@ -1,8 +1,14 @@
 // railmodal — writing modal results for people (table) and programs (CSV, JSON).
 //
-//   auto system = railmodal::assemble(vehicle, railmodal::DofSet::all);
-//   auto result = railmodal::solve_modes(system);
-//   railmodal::write_modes(std::cout, system, result, railmodal::OutputFormat::table);
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     auto vehicle = railmodal::load_vehicle("data/vehicles/fette_car.toml");
+//     auto system = railmodal::assemble(vehicle, railmodal::DofSet::all);
+//     auto result = railmodal::solve_modes(system);
+//     railmodal::write_modes(std::cout, system, result, railmodal::OutputFormat::table);
+//   }
 #pragma once
 
 #include <optional>

@@ -1,5 +1,30 @@
 // Steady harmonic response and critical speeds.
 //
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     auto vehicle = railmodal::load_vehicle("data/vehicles/two_axle_freight_wagon.toml");
+//     auto system = railmodal::assemble(vehicle, railmodal::DofSet::vertical);
+//     auto modes = railmodal::solve_modes(system);
+//     railmodal::RailJoints joints;
+//     joints.rail_length = 12.5;
+//     joints.dip_depth = 0.005;
+//     auto source = railmodal::make_source(joints);
+//     railmodal::CriticalSpeedOptions options;
+//     options.min_speed = 10.0 / 3.6;
+//     options.max_speed = 120.0 / 3.6;
+//     for (const railmodal::CriticalSpeed& c : railmodal::find_critical_speeds(system, modes, {source.get()}, options))
+//       std::cout << c.speed * 3.6 << " km/h: harmonic " << c.harmonic << " meets " << c.mode_name << "\n";
+//     // the amplitude of body bounce from 10 to 120 km/h
+//     std::vector<double> speeds;
+//     for (double v = 10.0; v <= 120.0; v += 1.0) speeds.push_back(v / 3.6);
+//     railmodal::OutputRequest bounce;
+//     bounce.dof = system.index_of("body.bounce");
+//     auto curves = railmodal::amplitude_curves(system, modes, *source, 0, {bounce}, speeds);
+//     std::cout << curves.front().amplitudes.size() << " speeds\n";
+//   }
+//
 // The steady state of M ẍ + C ẋ + K x = Re(Q e^{iωt}) is x = Re(X e^{iωt}) with
 // (K − ω²M + iωC) X = Q. Displacement input at the wheels makes X/u a displacement
 // transmissibility; a force input makes X/F a receptance (iωX/F mobility, −ω²X/F

@@ -1,5 +1,14 @@
 // A scene: a vehicle on a track at a range of speeds, with the excitation sources it names
 // and the outputs it wants. Only the named sources are built and evaluated.
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Scene scene = railmodal::load_scene("data/scenes/resort_car_10m_rails.toml");
+//     std::cout << scene.name << ": " << scene.min_speed * 3.6 << "-" << scene.max_speed * 3.6 << " km/h\n";
+//     for (const auto& source : scene.sources) std::cout << "  " << source->description() << "\n";
+//   }
 #pragma once
 
 #include <memory>

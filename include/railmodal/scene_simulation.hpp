@@ -1,5 +1,17 @@
 // Running a scene in the time domain, and checking the spectrum of what it did against the
 // modes.
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Scene scene = railmodal::load_scene("data/scenes/resort_car_free_response.toml");
+//     railmodal::Vehicle vehicle = railmodal::load_vehicle(scene.vehicle_file);
+//     railmodal::FftCheckResult r = railmodal::fft_check(scene, vehicle);
+//     for (const railmodal::FftCheck& c : r.checks)
+//       if (c.peak_hz)
+//         std::cout << c.mode_name << ": modal " << c.modal_hz << " Hz, spectral peak " << *c.peak_hz << " Hz\n";
+//   }
 #pragma once
 
 #include <optional>

@@ -2,11 +2,16 @@
 // Matrix Market files, solved for their lowest modes with ARPACK (docs/solvers.md).
 //
 //   #include <railmodal/railmodal.hpp>
-//   railmodal::SparseSystem train = railmodal::wagon_train(400);   // 2 000 DOFs
-//   railmodal::ModalOptions options;
-//   options.solver = railmodal::ModalSolver::arpack;
-//   options.mode_count = 20;
-//   railmodal::ModalResult lowest = railmodal::solve_modes(train, options);
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::SparseSystem train = railmodal::wagon_train(400);  // 2 000 DOFs
+//     railmodal::ModalOptions options;
+//     options.solver = railmodal::ModalSolver::arpack;
+//     options.mode_count = 20;
+//     railmodal::ModalResult lowest = railmodal::solve_modes(train, options);
+//     std::cout << "lowest: " << lowest.modes.front().frequency_hz << " Hz\n";
+//   }
 #pragma once
 
 #include <Eigen/SparseCore>

@@ -1,8 +1,14 @@
 // railmodal — static lateral stability of a body on its springs (bogie-wagons-natural
 // digest §2.6–2.7): the metacentric height and Nolltein's measure.
 //
-//   auto s = railmodal::lateral_stability(vehicle, "body");
-//   std::cout << "h = " << s.metacentric_height << " m, h - d0 = " << s.margin << " m\n";
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     auto vehicle = railmodal::load_vehicle("data/vehicles/resort_car.toml");
+//     auto s = railmodal::lateral_stability(vehicle, "body");
+//     std::cout << "h = " << s.metacentric_height << " m, h - d0 = " << s.margin << " m\n";
+//   }
 #pragma once
 
 #include <string>

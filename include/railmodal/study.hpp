@@ -2,10 +2,14 @@
 // ranked (docs/studies.md describes the study file).
 //
 //   #include <railmodal/study.hpp>
-//   railmodal::Study study = railmodal::load_study("data/studies/resort_against_fette.toml");
-//   std::vector<railmodal::VariantResult> results = railmodal::evaluate_study(study, {});
-//   railmodal::Comparison comparison = railmodal::rank_variants(study, results);
-//   railmodal::write_comparison(std::cout, comparison, railmodal::ComparisonFormat::table);
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Study study = railmodal::load_study("data/studies/resort_against_fette.toml");
+//     std::vector<railmodal::VariantResult> results = railmodal::evaluate_study(study, {});
+//     railmodal::Comparison comparison = railmodal::rank_variants(study, results);
+//     railmodal::write_comparison_report(std::cout, study, comparison, railmodal::ComparisonFormat::table);
+//   }
 #pragma once
 
 #include <functional>

@@ -7,26 +7,31 @@
 // Example (a single body on four springs, the book's two-axle wagon reduced to essentials):
 //
 //   #include <railmodal/railmodal.hpp>
-//   railmodal::Vehicle v;
-//   railmodal::Body body;
-//   body.name = "body";
-//   body.mass = 20000.0;
-//   body.inertia = {3.0e4, 1.2e5, 1.2e5};
-//   body.centre_of_gravity = {0.0, 0.0, 1.0};
-//   body.reference_point = {0.0, 0.0, 0.0};     // pitch and roll about the axle plane
-//   body.held = {railmodal::Motion::lateral, railmodal::Motion::yaw};
-//   v.bodies.push_back(body);
-//   for (double x : {-1.9, 1.9})
-//     for (double y : {-0.8, 0.8}) {
-//       railmodal::Element e;
-//       e.name = "spring";
-//       e.upper = "body";                          // lower = "" : the track / wheelsets
-//       e.point = {x, y, 0.0};
-//       e.vertical_stages = {{"leaf", 9.0e5, 1}};
-//       v.elements.push_back(e);
-//     }
-//   auto system = railmodal::assemble(v, railmodal::DofSet::all);
-//   auto modes = railmodal::solve_modes(system);
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Vehicle v;
+//     railmodal::Body body;
+//     body.name = "body";
+//     body.mass = 20000.0;
+//     body.inertia = {3.0e4, 1.2e5, 1.2e5};
+//     body.centre_of_gravity = {0.0, 0.0, 1.0};
+//     body.reference_point = {0.0, 0.0, 0.0};  // pitch and roll about the axle plane
+//     body.held = {railmodal::Motion::lateral, railmodal::Motion::yaw};
+//     v.bodies.push_back(body);
+//     for (double x : {-1.9, 1.9})
+//       for (double y : {-0.8, 0.8}) {
+//         railmodal::Element e;
+//         e.name = "spring";
+//         e.upper = "body";  // lower = "" : the track / wheelsets
+//         e.point = {x, y, 0.0};
+//         e.vertical_stages = {{"leaf", 9.0e5, 1}};
+//         v.elements.push_back(e);
+//       }
+//     auto system = railmodal::assemble(v, railmodal::DofSet::all);
+//     for (const auto& mode : railmodal::solve_modes(system).modes)
+//       std::cout << mode.name << "  " << mode.frequency_hz << " Hz\n";
+//   }
 #pragma once
 
 #include <Eigen/Core>
