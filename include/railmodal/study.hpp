@@ -197,6 +197,9 @@ std::optional<double> metric_value(const VariantResult& result, const std::strin
 /// is "critical_speed:body bounce").
 bool is_metric(const std::string& metric);
 std::string canonical_metric(const std::string& metric);
+/// The SI unit of a metric's values and limits: "m/s" (critical speeds, peak velocities), "m",
+/// "s", "m/s^2", "rad", "rad/s", "rad/s^2", or "" for a ratio.
+const char* metric_unit(const std::string& metric);
 
 struct RankedVariant {
   VariantResult result;

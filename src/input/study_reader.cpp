@@ -17,7 +17,6 @@
 #include "input/table_reader.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
-#include "study/metrics.hpp"
 #include "study/sampling.hpp"
 
 namespace railmodal {
@@ -293,6 +292,19 @@ DeflectionRule read_deflection_rule(TableReader& t, int* elements_line, int* ele
   return rule;
 }
 
+// The quantity a limit on the metric is read as, from the metric's SI unit. Vehicle files
+// have no units of angular acceleration: such limits are plain numbers (rad/s²).
+Quantity limit_quantity(const std::string& metric) {
+  const std::string unit = metric_unit(metric);
+  if (unit == "m/s") return Quantity::speed;
+  if (unit == "m") return Quantity::length;
+  if (unit == "s") return Quantity::time;
+  if (unit == "m/s^2") return Quantity::acceleration;
+  if (unit == "rad") return Quantity::angle;
+  if (unit == "rad/s") return Quantity::angular_speed;
+  return Quantity::dimensionless;
+}
+
 void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
   const std::string method = t.optional_string("method").value_or("lexicographic");
   if (method != "lexicographic" && method != "weighted") t.fail("method", "must be \"lexicographic\" or \"weighted\"");
@@ -312,7 +324,7 @@ void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
     RankingConstraint c;
     c.metric = canonical_metric(key.substr(4));
     check_metric(t, key, key.substr(4));
-    (key[1] == 'i' ? c.min : c.max) = t.quantity(key, study::metric_quantity(c.metric));
+    (key[1] == 'i' ? c.min : c.max) = t.quantity(key, limit_quantity(c.metric));
     ranking->constraints.push_back(c);
   }
   if (t.has("constraints"))
@@ -321,8 +333,8 @@ void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
       const std::string metric = r.string("metric");
       check_metric(r, "metric", metric);
       c.metric = canonical_metric(metric);
-      c.min = r.optional_quantity("min", study::metric_quantity(c.metric));
-      c.max = r.optional_quantity("max", study::metric_quantity(c.metric));
+      c.min = r.optional_quantity("min", limit_quantity(c.metric));
+      c.max = r.optional_quantity("max", limit_quantity(c.metric));
       if (!c.min && !c.max) r.fail("metric", "a constraint needs min or max");
       r.finish();
       ranking->constraints.push_back(c);
