@@ -84,6 +84,9 @@ struct DeflectionRule {
 };
 const char* to_string(DeflectionRule::Book book);
 const char* to_string(DeflectionRule::Service service);
+/// The rule in one line, as a shard records it to tell results of different rules apart:
+/// "none", or "lehner freight" followed by the element limits ("; spring = 0.03 m", exact).
+std::string to_string(const DeflectionRule& rule);
 
 struct Study {
   std::string name;
