@@ -38,7 +38,7 @@ struct StudyVariant {
 };
 
 namespace detail {
-struct StudyPlan;  // how to read each variant: the parsed files and the overrides (study_reader.cpp)
+struct StudySource;  // how to read each variant: the study file read and its variants (load_study.cpp)
 }
 
 /// A bound on a metric (docs/studies.md lists the metrics), SI.
@@ -94,7 +94,7 @@ struct Study {
   std::vector<StudyVariant> variants;  ///< base (unless base = false), variants, sweep points
   Ranking ranking;
   DeflectionRule deflection_rule;  ///< [permissible_dynamic_deflection]; none: not checked
-  std::shared_ptr<const detail::StudyPlan> plan;  ///< for read_variant; shared by copies
+  std::shared_ptr<const detail::StudySource> plan;  ///< for read_variant; shared by copies
 };
 
 /// Whether variant `index` is in shard `shard` of `shards` (1 <= shard <= shards): index mod
