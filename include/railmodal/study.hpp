@@ -42,7 +42,7 @@ struct StudyVariant {
 };
 
 namespace detail {
-struct StudyPlan;  // how to read each variant: the parsed files and the overrides (study_reader.cpp)
+struct StudySource;  // how to read each variant: the study file read and its variants (load_study.cpp)
 }
 
 /// A bound on a metric (docs/studies.md lists the metrics), SI.
@@ -88,6 +88,9 @@ struct DeflectionRule {
 };
 const char* to_string(DeflectionRule::Book book);
 const char* to_string(DeflectionRule::Service service);
+/// The rule in one line, as a shard records it to tell results of different rules apart:
+/// "none", or "lehner freight" followed by the element limits ("; spring = 0.03 m", exact).
+std::string to_string(const DeflectionRule& rule);
 
 struct Study {
   std::string name;
@@ -95,7 +98,7 @@ struct Study {
   std::vector<StudyVariant> variants;  ///< base (unless base = false), variants, sweep points
   Ranking ranking;
   DeflectionRule deflection_rule;  ///< [permissible_dynamic_deflection]; none: not checked
-  std::shared_ptr<const detail::StudyPlan> plan;  ///< for read_variant; shared by copies
+  std::shared_ptr<const detail::StudySource> plan;  ///< for read_variant; shared by copies
 };
 
 /// Whether variant `index` is in shard `shard` of `shards` (1 <= shard <= shards): index mod
@@ -201,6 +204,9 @@ std::optional<double> metric_value(const VariantResult& result, const std::strin
 /// is "critical_speed:body bounce").
 bool is_metric(const std::string& metric);
 std::string canonical_metric(const std::string& metric);
+/// The SI unit of a metric's values and limits: "m/s" (critical speeds, peak velocities), "m",
+/// "s", "m/s^2", "rad", "rad/s", "rad/s^2", or "" for a ratio.
+const char* metric_unit(const std::string& metric);
 
 struct RankedVariant {
   VariantResult result;

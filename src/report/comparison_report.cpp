@@ -1,16 +1,14 @@
 // The ranked comparison as a table, CSV or JSON, and the JSON of one shard's results.
 // A shard's JSON holds every field of its results with doubles written to round trip, so a
-// merge ranks exactly the numbers a single run would have ranked.
+// merge ranks exactly the numbers a single run would have ranked (src/input/shard_reader.cpp
+// reads it back).
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
-#include "input/input_file.hpp"
-#include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"
 #include "study/metrics.hpp"
@@ -72,43 +70,6 @@ json result_json(const VariantResult& r) {
                                           {"kept", c.kept()}});
   }
   return j;
-}
-
-VariantResult result_from_json(const json& j) {
-  VariantResult r;
-  r.index = j.at("index").get<int>();
-  r.name = j.at("name").get<std::string>();
-  for (const auto& p : j.at("parameters")) r.parameters.push_back({p.at("key").get<std::string>(), p.at("value").get<std::string>()});
-  if (!j.at("failure").is_null()) r.failure = j.at("failure").get<std::string>();
-  for (const auto& m : j.at("modes"))
-    r.modes.push_back({m.at("name").get<std::string>(), m.at("kind").get<std::string>(), m.at("frequency_hz").get<double>(),
-                       m.at("period_s").get<double>(), m.at("divergence_rate_per_s").get<double>()});
-  for (const auto& s : j.at("static_deflections"))
-    r.static_deflections.push_back({s.at("body").get<std::string>(), s.at("deflection_m").get<double>()});
-  if (!j.at("metacentric_height_m").is_null()) r.metacentric_height = j.at("metacentric_height_m").get<double>();
-  for (const auto& c : j.at("critical_speeds"))
-    r.critical_speeds.push_back({c.at("speed_m_s").get<double>(), c.at("source").get<int>(),
-                                 c.at("source_kind").get<std::string>(), c.at("harmonic").get<int>(),
-                                 c.at("mode_name").get<std::string>(), c.at("friction_stops").get<bool>()});
-  for (const auto& p : j.at("peaks"))
-    r.peaks.push_back({p.at("source").get<int>(), p.at("output").get<std::string>(), p.at("quantity").get<std::string>(),
-                       p.at("amplitude").get<double>(), p.at("speed_m_s").get<double>(), p.at("unbounded").get<bool>()});
-  if (j.contains("dynamic_deflections")) {
-    r.deflections_checked = true;
-    for (const auto& c : j.at("dynamic_deflections")) {
-      VariantResult::DeflectionCheck d;
-      d.element = c.at("element").get<std::string>();
-      d.stage = c.at("stage").get<std::string>();
-      d.basis = c.at("basis").get<std::string>();
-      d.permissible = c.at("permissible_m").get<double>();
-      d.deflection = c.at("deflection_m").get<double>();
-      d.speed = c.at("speed_m_s").get<double>();
-      d.source = c.at("source").get<int>();
-      d.unbounded = c.at("unbounded").get<bool>();
-      r.deflections.push_back(d);
-    }
-  }
-  return r;
 }
 
 json ranking_json(const Ranking& ranking) {
@@ -174,15 +135,6 @@ std::string criterion_heading(const RankingCriterion& c) {
 }
 
 std::optional<double> body_deflection(const VariantResult& r) { return metric_value(r, "static_deflection"); }
-
-// The deflection rule in one line, to tell shards of different rules apart: "none", or
-// "lehner freight" followed by the element limits (m, exact).
-std::string rule_key(const DeflectionRule& rule) {
-  if (!rule.active()) return "none";
-  std::string s = std::string(to_string(rule.book)) + " " + to_string(rule.service);
-  for (const auto& [name, limit] : rule.element_limits) s += "; " + name + " = " + exact(limit) + " m";
-  return s;
-}
 
 }  // namespace
 
@@ -340,51 +292,10 @@ void write_shard(std::ostream& out, const Study& study, const EvaluationOptions&
   j["variant_count"] = study.variants.size();
   j["shard"] = options.shard;
   j["shards"] = options.shards;
-  j["permissible_dynamic_deflection"] = rule_key(study.deflection_rule);
+  j["permissible_dynamic_deflection"] = to_string(study.deflection_rule);
   j["results"] = json::array();
   for (const auto& r : results) j["results"].push_back(result_json(r));
   out << j.dump(1) << "\n";
-}
-
-std::vector<VariantResult> read_shard(const std::string& file, const Study& study) {
-  std::ifstream in = input::open_input(file);
-  return read_shard(in, file, study);
-}
-
-std::vector<VariantResult> read_shard(std::istream& in, const std::string& file, const Study& study) {
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw InputError(file, 0, 0, std::string("not a shard of railmodal compare (JSON: ") + e.what() + ")");
-  }
-  std::vector<VariantResult> results;
-  try {
-    if (j.value("format", "") != "railmodal-compare-shard")
-      throw InputError(file, 0, 0, "not a shard written by railmodal compare --shard");
-    if (j.at("study").get<std::string>() != study.name || j.at("variant_count").get<size_t>() != study.variants.size())
-      throw InputError(file, 0, 0, "a shard of another study ('" + j.at("study").get<std::string>() + "', " +
-                                       std::to_string(j.at("variant_count").get<size_t>()) + " variants), not of '" +
-                                       study.name + "' (" + std::to_string(study.variants.size()) + " variants)");
-    // A shard evaluated under another deflection rule would merge into a ranking it was not
-    // checked for.
-    if (!j.contains("permissible_dynamic_deflection"))
-      for (const auto& r : j.at("results"))
-        if (r.contains("dynamic_deflections"))
-          throw InputError(file, 0, 0, "a shard from an older railmodal that does not record its deflection rule: "
-                                       "evaluate it again");
-    const std::string rule = j.value("permissible_dynamic_deflection", "none");
-    if (rule != rule_key(study.deflection_rule))
-      throw InputError(file, 0, 0, "a shard checked for permissible dynamic deflections by '" + rule +
-                                       "', the study asks for '" + rule_key(study.deflection_rule) + "'");
-    for (const auto& r : j.at("results")) results.push_back(result_from_json(r));
-  } catch (const json::exception& e) {
-    throw InputError(file, 0, 0, std::string("a shard with missing or mistyped fields: ") + e.what());
-  }
-  for (const auto& r : results)
-    if (r.index < 0 || r.index >= static_cast<int>(study.variants.size()) || study.variants[r.index].name != r.name)
-      throw InputError(file, 0, 0, "variant '" + r.name + "' is not at index " + std::to_string(r.index) + " of the study");
-  return results;
 }
 
 }  // namespace railmodal

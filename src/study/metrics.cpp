@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <string_view>
 
 #include "railmodal/study.hpp"
 
@@ -98,36 +99,29 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
   return std::nullopt;
 }
 
-namespace study {
-
-input::Quantity metric_quantity(const std::string& name) {
+const char* metric_unit(const std::string& name) {
   const std::string metric = canonical_metric(name);
-  if (metric == "lowest_critical_speed" || starts_with(metric, "critical_speed:")) return input::Quantity::speed;
-  if (starts_with(metric, "period:")) return input::Quantity::time;
-  if (starts_with(metric, "dynamic_deflection_ratio")) return input::Quantity::dimensionless;
+  if (metric == "lowest_critical_speed" || starts_with(metric, "critical_speed:")) return "m/s";
+  if (starts_with(metric, "period:")) return "s";
+  if (starts_with(metric, "dynamic_deflection_ratio")) return "";
   std::string dof, quantity;
   if (split_peak(metric, &dof, &quantity)) {
     const bool rotation = is_rotation(dof);
-    if (quantity == "displacement") return rotation ? input::Quantity::angle : input::Quantity::length;
-    if (quantity == "velocity") return rotation ? input::Quantity::angular_speed : input::Quantity::speed;
-    return rotation ? input::Quantity::dimensionless : input::Quantity::acceleration;  // rad/s²: no units to write
+    if (quantity == "displacement") return rotation ? "rad" : "m";
+    if (quantity == "velocity") return rotation ? "rad/s" : "m/s";
+    return rotation ? "rad/s^2" : "m/s^2";
   }
-  return input::Quantity::length;  // static deflections, metacentric height
+  return "m";  // static deflections, metacentric height
 }
 
+namespace study {
+
 DisplayUnit display_unit(const std::string& metric) {
-  switch (metric_quantity(metric)) {
-    case input::Quantity::speed: return starts_with(canonical_metric(metric), "peak:") ? DisplayUnit{"m/s", 1.0} : DisplayUnit{"km/h", 3.6};
-    case input::Quantity::length: return {"mm", 1000.0};
-    case input::Quantity::time: return {"s", 1.0};
-    case input::Quantity::acceleration: return {"m/s^2", 1.0};
-    case input::Quantity::angle: return {"rad", 1.0};
-    case input::Quantity::angular_speed: return {"rad/s", 1.0};
-    case input::Quantity::dimensionless:
-      if (starts_with(canonical_metric(metric), "dynamic_deflection_ratio")) return {"", 1.0};
-      return {"rad/s^2", 1.0};
-    default: return {"rad/s^2", 1.0};
-  }
+  const char* si = metric_unit(metric);
+  // Critical speeds in km/h, as the book gives them; peak velocities stay in m/s.
+  if (std::string_view(si) == "m/s" && !starts_with(canonical_metric(metric), "peak:")) return {"km/h", 3.6};
+  if (std::string_view(si) == "m") return {"mm", 1000.0};
+  return {si, 1.0};
 }
 
 bool infinite_is_unbounded(const std::string& metric) {

@@ -1,15 +1,10 @@
-// What a study can rank by: metric names, their physical quantity (to read limits with
-// units) and the unit reports show them in.
+// How reports show a study's metrics: the unit of each (railmodal::metric_unit gives the SI
+// one) and its values.
 #pragma once
 
 #include <string>
 
-#include "input/units.hpp"
-
 namespace railmodal::study {
-
-/// The quantity a metric's values and limits have (after canonical_metric).
-input::Quantity metric_quantity(const std::string& metric);
 
 /// The unit a report shows a metric in and the factor from SI: km/h, mm, s, ...
 struct DisplayUnit {

@@ -3,6 +3,7 @@
 #include "study/permissible_deflection.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -20,6 +21,18 @@ const char* to_string(DeflectionRule::Book book) {
 
 const char* to_string(DeflectionRule::Service service) {
   return service == DeflectionRule::Service::freight ? "freight" : "passenger";
+}
+
+std::string to_string(const DeflectionRule& rule) {
+  if (!rule.active()) return "none";
+  std::string s = std::string(to_string(rule.book)) + " " + to_string(rule.service);
+  for (const auto& [name, limit] : rule.element_limits) {
+    // Exact: the shortest text that reads back as the same double.
+    char buffer[32];
+    const auto written = std::to_chars(buffer, buffer + sizeof buffer, limit);
+    s += "; " + name + " = " + (std::isfinite(limit) ? std::string(buffer, written.ptr) : std::string()) + " m";
+  }
+  return s;
 }
 
 namespace study {

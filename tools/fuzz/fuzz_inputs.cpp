@@ -22,7 +22,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "input/study_loader.hpp"
+#include "load_study.hpp"
 #include "railmodal/railmodal.hpp"
 #include "railmodal/matrix_market.hpp"
 
@@ -87,7 +87,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       // million listed take 2.7 GB, over the fuzzer's memory limit).
       const std::string& path = study_path();
       write(path, data + 1, size - 1);
-      railmodal::input::load_study(path, [](int index) { return index < 2; }, 64);
+      railmodal::load_study(path, [](int index) { return index < 2; }, 64);
     } else {
       const std::string mass = scratch("M.mtx");
       write(mass, data + 1, size - 1);

@@ -8,14 +8,10 @@
 
 #include "railmodal/study.hpp"
 
-namespace railmodal::input {
-
-/// Every variant is listed in memory, in every shard, even when not read: about 2.7 kB each
-/// (10^6 listed: 2.7 GB and 10 s on the development machine), and a read one about 10 kB.
-inline constexpr size_t kMaxStudyVariants = 1000000;
+namespace railmodal {
 
 /// railmodal::load_study, refusing a study of more than `max_variants` variants at the
 /// [[variant]] or [[sweep]] that goes over.
 Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants);
 
-}  // namespace railmodal::input
+}  // namespace railmodal

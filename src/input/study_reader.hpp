@@ -1,0 +1,46 @@
+// The study reader: a study file (docs/studies.md) into the study's plan, and each variant the
+// plan lists into a vehicle and a scene. Each variant is its base vehicle's (or scene's) TOML
+// with the variant's values written into it, read by the usual readers; their complaints
+// about a value are sent back to the study line that wrote it.
+#pragma once
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <toml.hpp>
+#include <vector>
+
+#include "railmodal/study.hpp"
+#include "study/study_plan.hpp"
+
+namespace railmodal::input {
+
+/// Every variant is listed in memory, in every shard, even when not read: about 2.7 kB each
+/// (10^6 listed: 2.7 GB and 10 s on the development machine), and a read one about 10 kB.
+inline constexpr size_t kMaxStudyVariants = 1000000;
+
+/// A study file read: the plan it writes, and what reading its variants needs.
+struct StudyFile {
+  std::string path;
+  study::StudyPlan plan;
+  std::vector<toml::value> written;  ///< the values the plan's WrittenValue::index refer to
+  std::string scene_file;
+  toml::value scene_document;
+  Scene base_scene;
+  std::map<std::string, toml::value> vehicle_documents;  ///< by file, filled by check_variants
+  study::Place rule_place, elements_place;  ///< [permissible_dynamic_deflection] and its elements
+};
+
+/// Reads the study file and its scene. Throws InputError at the [[variant]] or [[sweep]] that
+/// takes the study over `max_variants` variants, or for anything else wrong in the file.
+StudyFile read_study_file(const std::string& path, size_t max_variants);
+
+/// Checks that the variants have names of their own and parses their vehicle files, in
+/// study order.
+void check_variants(const std::vector<study::VariantSpec>& variants, StudyFile* file);
+
+/// One variant with its vehicle and scene; `plain` (optional) caches vehicles read without
+/// changes.
+StudyVariant read_variant(const StudyFile& file, const study::VariantSpec& spec, std::map<std::string, Vehicle>* plain);
+
+}  // namespace railmodal::input

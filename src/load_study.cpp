@@ -1,0 +1,66 @@
+// Where the study reader (input) and the study plan (study) meet: the reader fills the plan
+// from the study file, the plan lists its variants, and the reader reads those asked for.
+// Neither layer calls the other.
+#include "load_study.hpp"
+
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "input/study_reader.hpp"
+#include "study/planned_variants.hpp"
+
+namespace railmodal {
+
+namespace detail {
+
+// What read_variant needs to read any variant later: the study file read and its variants.
+struct StudySource {
+  input::StudyFile file;
+  std::vector<study::VariantSpec> variants;
+};
+
+}  // namespace detail
+
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants) {
+  auto source = std::make_shared<detail::StudySource>();
+  source->file = input::read_study_file(path, max_variants);
+  source->variants = study::planned_variants(source->file.plan);
+  input::check_variants(source->variants, &source->file);
+  Study study;
+  study.name = source->file.plan.name;
+  study.source = path;
+  study.ranking = source->file.plan.ranking;
+  study.deflection_rule = source->file.plan.deflection_rule;
+  std::map<std::string, Vehicle> plain_vehicles;  // files without changes, read once
+  for (int i = 0; i < static_cast<int>(source->variants.size()); ++i) {
+    const study::VariantSpec& spec = source->variants[i];
+    if (!read_only || read_only(i)) {
+      study.variants.push_back(input::read_variant(source->file, spec, &plain_vehicles));
+    } else {
+      StudyVariant named;
+      named.name = spec.name;
+      named.parameters = spec.parameters;
+      named.read = false;
+      study.variants.push_back(std::move(named));
+    }
+  }
+  study.plan = std::move(source);
+  return study;
+}
+
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only) {
+  return load_study(path, read_only, input::kMaxStudyVariants);
+}
+
+StudyVariant read_variant(const Study& study, int index) {
+  if (index < 0 || index >= static_cast<int>(study.variants.size()))
+    throw std::out_of_range("read_variant: the study has no variant " + std::to_string(index + 1));
+  if (study.variants[index].read) return study.variants[index];
+  if (!study.plan) throw std::invalid_argument("read_variant: variant '" + study.variants[index].name + "' was never read");
+  return input::read_variant(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), nullptr);
+}
+
+}  // namespace railmodal
