@@ -309,7 +309,8 @@ std::complex<double> massless_follower(const ModalBasis& basis, const Eigen::Vec
   std::complex<double> x = 0.0;
   for (size_t i = 0; i < basis.massless.size(); ++i) {
     if (basis.massless[i] != dof) continue;
-    for (size_t c = 0; c < basis.massless.size(); ++c) x += basis.massless_flexibility(i, c) * load_part(basis.massless[c]);
+    for (size_t c = 0; c < basis.massless.size(); ++c)
+      x += basis.massless_flexibility(i, c) * load_part(basis.massless[c]);
   }
   return x;
 }

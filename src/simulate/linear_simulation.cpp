@@ -128,8 +128,9 @@ void next_state(const double* G, int R, int cols, const double* z, double* y) {
 }
 
 // The sources as harmonics of the load, condensed onto the kept DOFs: F_r + Sᵀ F_m.
-std::vector<Harmonic> condensed_harmonics(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
-                                          double speed, const Partition& p, double h) {
+std::vector<Harmonic> condensed_harmonics(const LinearSystem& system,
+                                          const std::vector<const ExcitationSource*>& sources, double speed,
+                                          const Partition& p, double h) {
   const int r = static_cast<int>(p.kept.size()), m = static_cast<int>(p.massless.size());
   std::vector<Harmonic> harmonics;
   for (const ExcitationSource* source : sources)

@@ -475,7 +475,8 @@ class Integration {
 
   // The slots of the new regime whose zero is where the step now starts: the kinks that fired,
   // and every slot of a friction element just resolved (its regime starts at its zero).
-  void mark_just_fired(const std::vector<Slot>& slots, const std::vector<int>& fired, const std::vector<int>& candidates) {
+  void mark_just_fired(const std::vector<Slot>& slots, const std::vector<int>& fired,
+                       const std::vector<int>& candidates) {
     const std::vector<Slot> next = model_.slots();
     just_fired_.assign(next.size(), false);
     for (int s : fired)

@@ -343,7 +343,8 @@ class ModeSearch {
       const int end = cluster_end(values, wanted_, options_.zero_tolerance * result.scale);
       result.summary.count_checked = false;
       if (end < available && op_.negative_pivots() >= 0 && !count_agrees(values, end, result.summary)) continue;
-      if (end == available && nev == most_ && op_.negative_pivots() >= 0) check_cluster_is_whole(values, end, result.scale);
+      if (end == available && nev == most_ && op_.negative_pivots() >= 0)
+        check_cluster_is_whole(values, end, result.scale);
       if (end < available || nev == most_) {
         values.conservativeResize(end);
         vectors.conservativeResize(Eigen::NoChange, end);
