@@ -276,30 +276,37 @@ void check_symmetric(const Eigen::SparseMatrix<double>& A, const std::vector<Ent
   }
 }
 
-}  // namespace
-
-MatrixMarketMatrix read_matrix_market(const std::string& path, bool require_symmetric) {
-  std::ifstream in = input::open_input(path);
-  Lines lines(in, path);
-  std::string line;
-  if (!lines.next(&line)) lines.fail(0, std::string("the file is empty; it must start with the banner '") + kBanner + "'");
-  const Header header = parse_banner(line, lines);
-
-  DofNames names;
-  // Size line: the first line that is neither a comment nor blank.
-  std::vector<Token> size;
-  while (lines.next(&line)) {
-    if (is_comment(line)) {
-      names.read(line, lines);
+// The next line that holds data, passing comments (which may name the DOFs) and blank lines,
+// into *line; its tokens (views into *line), or none at the end of the file.
+std::vector<Token> next_data_line(Lines& lines, DofNames& names, std::string* line) {
+  while (lines.next(line)) {
+    if (is_comment(*line)) {
+      names.read(*line, lines);
       continue;
     }
-    if (is_blank(line)) continue;
-    size = split(line);
-    break;
+    if (is_blank(*line)) continue;
+    return split(*line);
   }
+  return {};
+}
+
+// The size line: n (square), and the number of entries (coordinate) or values (array) to come.
+struct SizeLine {
+  long long n = 0;
+  long long expected = 0;
+  std::string expected_text;  // "12 entries", or "21 values (a symmetric 6 × 6 array)"
+  int line = 0;
+  int last_column = 0;
+};
+
+SizeLine read_size_line(Lines& lines, DofNames& names, const Header& header) {
+  std::string line;
+  const std::vector<Token> size = next_data_line(lines, names, &line);
   const std::string size_form = header.coordinate ? "ROWS COLUMNS ENTRIES" : "ROWS COLUMNS";
   if (size.empty()) lines.fail(0, "the file ends before the size line (" + size_form + ")");
-  const int size_line = lines.number();
+  SizeLine out;
+  out.line = lines.number();
+  out.last_column = size.back().column;
   if (size.size() != (header.coordinate ? 3u : 2u))
     lines.fail(size[0].column, "the size line of a " + std::string(header.coordinate ? "coordinate" : "array") +
                                    " file is '" + size_form + "', found " + std::to_string(size.size()) + " words");
@@ -317,79 +324,106 @@ MatrixMarketMatrix read_matrix_market(const std::string& path, bool require_symm
   if (n > kMaxRows)
     lines.fail(size[0].column, "the matrix has " + std::to_string(n) + " rows, more than the " +
                                    std::to_string(kMaxRows) + " railmodal reads");
+  out.n = n;
   // Array: column by column, the lower triangle only when symmetric.
-  const long long expected = header.coordinate ? numbers[2] : header.symmetric ? n * (n + 1) / 2 : n * n;
-  const std::string expected_text =
-      header.coordinate ? std::to_string(expected) + " entries"
-                        : std::to_string(expected) + " values (a " + (header.symmetric ? "symmetric " : "general ") +
+  out.expected = header.coordinate ? numbers[2] : header.symmetric ? n * (n + 1) / 2 : n * n;
+  out.expected_text =
+      header.coordinate ? std::to_string(out.expected) + " entries"
+                        : std::to_string(out.expected) + " values (a " + (header.symmetric ? "symmetric " : "general ") +
                               std::to_string(n) + " × " + std::to_string(n) + " array)";
+  return out;
+}
 
+// 'ROW COLUMN VALUE', 1-based, in the lower triangle when the file is symmetric.
+void read_coordinate_entry(const std::vector<Token>& tokens, long long n, const Header& header, const Lines& lines,
+                           Entry* e) {
+  if (tokens.size() != 3)
+    lines.fail(tokens[0].column, "an entry is 'ROW COLUMN VALUE', found " + std::to_string(tokens.size()) + " words");
+  long long index[2];
+  for (int k = 0; k < 2; ++k) {
+    const auto v = count_of(tokens[k].text);
+    if (!v) lines.fail(tokens[k].column, std::string(k == 0 ? "row" : "column") + " index " +
+                                             quoted(tokens[k].text) + " is not a positive integer");
+    if (*v < 1 || *v > n)
+      lines.fail(tokens[k].column, std::string(k == 0 ? "row" : "column") + " index " + std::to_string(*v) +
+                                       " is out of range 1.." + std::to_string(n));
+    index[k] = *v - 1;
+  }
+  if (header.symmetric && index[0] < index[1])
+    lines.fail(tokens[0].column, "entry (" + std::to_string(index[0] + 1) + ", " + std::to_string(index[1] + 1) +
+                                     ") lies above the diagonal: a symmetric file stores the lower triangle "
+                                     "(row ≥ column)");
+  e->row = static_cast<int>(index[0]);
+  e->col = static_cast<int>(index[1]);
+  e->value = parse_value(tokens[2], header.integer, lines);
+}
+
+// The entries up to the end of the file: exactly as many as the size line declares.
+std::vector<Entry> read_entries(Lines& lines, DofNames& names, const Header& header, const SizeLine& size) {
   std::vector<Entry> entries;
-  entries.reserve(static_cast<size_t>(std::min<long long>(expected, 1 << 20)));
+  entries.reserve(static_cast<size_t>(std::min<long long>(size.expected, 1 << 20)));
   long long array_row = 0, array_col = 0;
-  while (lines.next(&line)) {
-    if (is_comment(line)) {
-      names.read(line, lines);
-      continue;
-    }
-    if (is_blank(line)) continue;
-    const auto tokens = split(line);
-    if (static_cast<long long>(entries.size()) == expected)
-      lines.fail(tokens[0].column, "more entries than the " + expected_text + " the size line (line " +
-                                       std::to_string(size_line) + ") declares");
+  std::string line;
+  for (std::vector<Token> tokens; !(tokens = next_data_line(lines, names, &line)).empty();) {
+    if (static_cast<long long>(entries.size()) == size.expected)
+      lines.fail(tokens[0].column, "more entries than the " + size.expected_text + " the size line (line " +
+                                       std::to_string(size.line) + ") declares");
     Entry e;
     e.line = lines.number();
     e.column = tokens[0].column;
     if (header.coordinate) {
-      if (tokens.size() != 3)
-        lines.fail(tokens[0].column, "an entry is 'ROW COLUMN VALUE', found " + std::to_string(tokens.size()) + " words");
-      long long index[2];
-      for (int k = 0; k < 2; ++k) {
-        const auto v = count_of(tokens[k].text);
-        if (!v) lines.fail(tokens[k].column, std::string(k == 0 ? "row" : "column") + " index " +
-                                                 quoted(tokens[k].text) + " is not a positive integer");
-        if (*v < 1 || *v > n)
-          lines.fail(tokens[k].column, std::string(k == 0 ? "row" : "column") + " index " + std::to_string(*v) +
-                                           " is out of range 1.." + std::to_string(n));
-        index[k] = *v - 1;
-      }
-      if (header.symmetric && index[0] < index[1])
-        lines.fail(tokens[0].column, "entry (" + std::to_string(index[0] + 1) + ", " + std::to_string(index[1] + 1) +
-                                         ") lies above the diagonal: a symmetric file stores the lower triangle "
-                                         "(row ≥ column)");
-      e.row = static_cast<int>(index[0]);
-      e.col = static_cast<int>(index[1]);
-      e.value = parse_value(tokens[2], header.integer, lines);
-    } else {
+      read_coordinate_entry(tokens, size.n, header, lines, &e);
+    } else {  // one value per line, column by column
       if (tokens.size() != 1)
         lines.fail(tokens[1].column, "an array file holds one value per line, found " + std::to_string(tokens.size()));
       e.row = static_cast<int>(array_row);
       e.col = static_cast<int>(array_col);
       e.value = parse_value(tokens[0], header.integer, lines);
-      if (++array_row == n) {
+      if (++array_row == size.n) {
         ++array_col;
         array_row = header.symmetric ? array_col : 0;
       }
     }
     entries.push_back(e);
   }
-  if (static_cast<long long>(entries.size()) < expected)
-    lines.fail_at(size_line, size.back().column,
-                  "the size line declares " + expected_text + " but the file ends after " + std::to_string(entries.size()));
+  if (static_cast<long long>(entries.size()) < size.expected)
+    lines.fail_at(size.line, size.last_column,
+                  "the size line declares " + size.expected_text + " but the file ends after " +
+                      std::to_string(entries.size()));
+  return entries;
+}
+
+// Duplicates summed; a symmetric file's entries mirrored above the diagonal.
+Eigen::SparseMatrix<double> sparse_matrix(const std::vector<Entry>& entries, long long n, bool symmetric) {
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(entries.size() * (symmetric ? 2 : 1));
+  for (const Entry& e : entries) {
+    triplets.emplace_back(e.row, e.col, e.value);
+    if (symmetric && e.row != e.col) triplets.emplace_back(e.col, e.row, e.value);
+  }
+  Eigen::SparseMatrix<double> matrix(static_cast<int>(n), static_cast<int>(n));
+  matrix.setFromTriplets(triplets.begin(), triplets.end());  // sums duplicates
+  return matrix;
+}
+
+}  // namespace
+
+MatrixMarketMatrix read_matrix_market(const std::string& path, bool require_symmetric) {
+  std::ifstream in = input::open_input(path);
+  Lines lines(in, path);
+  std::string line;
+  if (!lines.next(&line)) lines.fail(0, std::string("the file is empty; it must start with the banner '") + kBanner + "'");
+  const Header header = parse_banner(line, lines);
+  DofNames names;
+  const SizeLine size = read_size_line(lines, names, header);
+  const std::vector<Entry> entries = read_entries(lines, names, header, size);
 
   MatrixMarketMatrix out;
   out.symmetric_storage = header.symmetric;
-  out.size_line = size_line;
-  out.dof_labels = names.labels(n, lines);
+  out.size_line = size.line;
+  out.dof_labels = names.labels(size.n, lines);
   out.labels_line = names.list_line ? names.list_line : names.indexed_line;
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(entries.size() * (header.symmetric ? 2 : 1));
-  for (const Entry& e : entries) {
-    triplets.emplace_back(e.row, e.col, e.value);
-    if (header.symmetric && e.row != e.col) triplets.emplace_back(e.col, e.row, e.value);
-  }
-  out.matrix.resize(static_cast<int>(n), static_cast<int>(n));
-  out.matrix.setFromTriplets(triplets.begin(), triplets.end());  // sums duplicates
+  out.matrix = sparse_matrix(entries, size.n, header.symmetric);
   if (require_symmetric && !header.symmetric) check_symmetric(out.matrix, entries, lines);
   return out;
 }

@@ -127,125 +127,148 @@ std::shared_ptr<const ExcitationSource> unbalance(TableReader& t) {
   return make_source(p);
 }
 
+std::shared_ptr<const ExcitationSource> source(TableReader& t) {
+  const std::string kind = t.string("kind");
+  try {
+    if (kind == "rail_joints") return rail_joints(t);
+    if (kind == "wheel_eccentricity") return eccentricity(t);
+    if (kind == "wheel_flat") return flat(t);
+    if (kind == "hunting") return hunting(t);
+    if (kind == "unbalance") return unbalance(t);
+    t.fail("kind", "unknown source '" + kind + "' (rail_joints, wheel_eccentricity, wheel_flat, hunting, unbalance)");
+  } catch (const std::invalid_argument& e) {
+    t.fail("kind", e.what());
+  }
+}
+
+// [scene]: its name, the vehicle file (relative to the scene's folder) and the DOF set.
+void read_scene_table(TableReader& root, const std::string& path, Scene& scene) {
+  TableReader t = root.table("scene");
+  scene.name = t.optional_string("name").value_or(std::filesystem::path(path).stem().string());
+  if (t.has("vehicle")) {
+    const std::string vehicle = t.string("vehicle");
+    const std::filesystem::path base = std::filesystem::path(path).parent_path();
+    scene.vehicle_file = (std::filesystem::path(vehicle).is_absolute() ? std::filesystem::path(vehicle)
+                                                                        : base / vehicle).lexically_normal().string();
+    if (!std::filesystem::exists(scene.vehicle_file)) t.fail("vehicle", "no such file: " + scene.vehicle_file);
+  }
+  const std::string dofs = t.optional_string("dofs").value_or("all");
+  const auto set = dof_set_from_string(dofs);
+  if (!set) t.fail("dofs", "must be vertical, lateral or all, not '" + dofs + "'");
+  scene.dofs = *set;
+  t.finish();
+}
+
+std::vector<std::string> read_effects(TableReader& t) {
+  std::vector<std::string> effects;
+  for (const auto& effect : t.strings("effects")) {
+    if (effect != "viscous_dampers" && effect != "leaf_friction" && effect != "progressive_springs")
+      t.fail("effects", "unknown effect '" + effect +
+                            "' (viscous_dampers, leaf_friction, progressive_springs; sources go in [[source]] tables)");
+    if (std::find(effects.begin(), effects.end(), effect) != effects.end())
+      t.fail("effects", "names '" + effect + "' twice");
+    effects.push_back(effect);
+  }
+  return effects;
+}
+
+// [[simulation.initial]]: a rotation's displacement is an angle, its velocity an angular speed.
+InitialCondition read_initial_condition(TableReader& i) {
+  InitialCondition ic;
+  ic.dof = i.string("dof");
+  const bool rotation = ic.dof.find(".roll") != std::string::npos || ic.dof.find(".pitch") != std::string::npos ||
+                        ic.dof.find(".yaw") != std::string::npos;
+  ic.displacement = i.optional_quantity("displacement", rotation ? Quantity::angle : Quantity::length).value_or(0.0);
+  ic.velocity = i.optional_quantity("velocity", rotation ? Quantity::angular_speed : Quantity::speed).value_or(0.0);
+  i.finish();
+  return ic;
+}
+
+// [simulation]; `with_sources`: the scene has [[source]] tables.
+SimulationSpec read_simulation(TableReader t, bool with_sources) {
+  SimulationSpec sim;
+  // A released wagon standing still needs no speed; sources do.
+  if (with_sources || t.has("speed")) sim.speed = t.positive("speed", Quantity::speed);
+  if (t.has("final_speed")) {
+    sim.final_speed = t.positive("final_speed", Quantity::speed);
+    if (!with_sources) t.fail("final_speed", "a speed ramp needs [[source]] tables to run over");
+  }
+  sim.duration = t.positive("duration", Quantity::time);
+  sim.time_step = t.positive("time_step", Quantity::time);
+  if (sim.duration / sim.time_step > 1e8) t.fail("time_step", "gives more than 1e8 steps; take a longer step");
+  if (sim.time_step > sim.duration) t.fail("time_step", "is longer than the duration");
+  if (t.has("effects")) sim.effects = read_effects(t);
+  if (t.has("tolerance")) {
+    sim.tolerance = t.positive("tolerance", Quantity::dimensionless);
+    if (!(sim.tolerance < 1e-2)) t.fail("tolerance", "must be below 1e-2 (default 1e-10)");
+  }
+  if (t.has("event_tolerance")) sim.event_tolerance = t.positive("event_tolerance", Quantity::time);
+  if (t.has("friction_law")) {
+    sim.friction_law = t.string("friction_law");
+    if (sim.friction_law != "proportional" && sim.friction_law != "constant")
+      t.fail("friction_law", "is \"proportional\" (φ times the spring's reaction, the book's law) or \"constant\" "
+                             "(φ times the static load)");
+  }
+  if (t.has("initial"))
+    for (auto& i : t.tables("initial")) sim.initial.push_back(read_initial_condition(i));
+  if (t.has("outputs")) sim.outputs = t.strings("outputs");
+  t.finish();
+  return sim;
+}
+
+// [speed]: the sweep's range, 400 steps unless given.
+void read_speed_range(TableReader t, Scene& scene) {
+  scene.min_speed = t.positive("min", Quantity::speed);
+  scene.max_speed = t.positive("max", Quantity::speed);
+  if (!(scene.max_speed > scene.min_speed)) t.fail("max", "must be above min");
+  scene.speed_step = t.optional_positive("step", Quantity::speed).value_or((scene.max_speed - scene.min_speed) / 400.0);
+  if ((scene.max_speed - scene.min_speed) / scene.speed_step > 1e6)
+    t.fail("step", "gives more than a million speeds; take a coarser step");
+  t.finish();
+}
+
+SceneOutput read_output(TableReader& t) {
+  SceneOutput out;
+  out.dof = t.string("dof");
+  const std::string quantity = t.optional_string("quantity").value_or("displacement");
+  if (quantity == "displacement") out.quantity = ResponseQuantity::displacement;
+  else if (quantity == "velocity") out.quantity = ResponseQuantity::velocity;
+  else if (quantity == "acceleration") out.quantity = ResponseQuantity::acceleration;
+  else t.fail("quantity", "must be displacement, velocity or acceleration, not '" + quantity + "'");
+  t.finish();
+  return out;
+}
+
+// [friction]: the criterion (default), or equivalent viscous damping at a reference amplitude.
+void read_friction(TableReader t, Scene& scene) {
+  const std::string model = t.optional_string("model").value_or("criterion");
+  if (model == "equivalent_viscous") {
+    scene.friction_reference_amplitude = t.positive("reference_amplitude", Quantity::length);
+  } else if (model != "criterion") {
+    t.fail("model", "must be \"criterion\" or \"equivalent_viscous\", not '" + model + "'");
+  } else if (t.has("reference_amplitude")) {
+    t.fail("reference_amplitude", "applies only to model = \"equivalent_viscous\"");
+  }
+  t.finish();
+}
+
 }  // namespace
 
 Scene read_scene(const toml::value& document, const std::string& path) {
   TableReader root(document, path, "");
   Scene scene;
   scene.source = path;
-  {
-    TableReader t = root.table("scene");
-    scene.name = t.optional_string("name").value_or(std::filesystem::path(path).stem().string());
-    if (t.has("vehicle")) {
-      const std::string vehicle = t.string("vehicle");
-      const std::filesystem::path base = std::filesystem::path(path).parent_path();
-      scene.vehicle_file = (std::filesystem::path(vehicle).is_absolute() ? std::filesystem::path(vehicle)
-                                                                          : base / vehicle).lexically_normal().string();
-      if (!std::filesystem::exists(scene.vehicle_file)) t.fail("vehicle", "no such file: " + scene.vehicle_file);
-    }
-    const std::string dofs = t.optional_string("dofs").value_or("all");
-    const auto set = dof_set_from_string(dofs);
-    if (!set) t.fail("dofs", "must be vertical, lateral or all, not '" + dofs + "'");
-    scene.dofs = *set;
-    t.finish();
-  }
-  if (root.has("simulation")) {
-    TableReader t = root.table("simulation");
-    SimulationSpec sim;
-    // A released wagon standing still needs no speed; sources do.
-    if (root.has("source") || t.has("speed")) sim.speed = t.positive("speed", Quantity::speed);
-    if (t.has("final_speed")) {
-      sim.final_speed = t.positive("final_speed", Quantity::speed);
-      if (!root.has("source")) t.fail("final_speed", "a speed ramp needs [[source]] tables to run over");
-    }
-    sim.duration = t.positive("duration", Quantity::time);
-    sim.time_step = t.positive("time_step", Quantity::time);
-    if (sim.duration / sim.time_step > 1e8) t.fail("time_step", "gives more than 1e8 steps; take a longer step");
-    if (sim.time_step > sim.duration) t.fail("time_step", "is longer than the duration");
-    if (t.has("effects"))
-      for (const auto& effect : t.strings("effects")) {
-        if (effect != "viscous_dampers" && effect != "leaf_friction" && effect != "progressive_springs")
-          t.fail("effects", "unknown effect '" + effect +
-                                "' (viscous_dampers, leaf_friction, progressive_springs; sources go in [[source]] tables)");
-        if (std::find(sim.effects.begin(), sim.effects.end(), effect) != sim.effects.end())
-          t.fail("effects", "names '" + effect + "' twice");
-        sim.effects.push_back(effect);
-      }
-    if (t.has("tolerance")) {
-      sim.tolerance = t.positive("tolerance", Quantity::dimensionless);
-      if (!(sim.tolerance < 1e-2)) t.fail("tolerance", "must be below 1e-2 (default 1e-10)");
-    }
-    if (t.has("event_tolerance")) sim.event_tolerance = t.positive("event_tolerance", Quantity::time);
-    if (t.has("friction_law")) {
-      sim.friction_law = t.string("friction_law");
-      if (sim.friction_law != "proportional" && sim.friction_law != "constant")
-        t.fail("friction_law", "is \"proportional\" (φ times the spring's reaction, the book's law) or \"constant\" "
-                               "(φ times the static load)");
-    }
-    if (t.has("initial"))
-      for (auto& i : t.tables("initial")) {
-        InitialCondition ic;
-        ic.dof = i.string("dof");
-        const bool rotation = ic.dof.find(".roll") != std::string::npos || ic.dof.find(".pitch") != std::string::npos ||
-                              ic.dof.find(".yaw") != std::string::npos;
-        ic.displacement = i.optional_quantity("displacement", rotation ? Quantity::angle : Quantity::length).value_or(0.0);
-        ic.velocity = i.optional_quantity("velocity", rotation ? Quantity::angular_speed : Quantity::speed).value_or(0.0);
-        i.finish();
-        sim.initial.push_back(ic);
-      }
-    if (t.has("outputs")) sim.outputs = t.strings("outputs");
-    t.finish();
-    scene.simulation = sim;
-  }
-  if (root.has("speed") || !scene.simulation) {
-    TableReader t = root.table("speed");
-    scene.min_speed = t.positive("min", Quantity::speed);
-    scene.max_speed = t.positive("max", Quantity::speed);
-    if (!(scene.max_speed > scene.min_speed)) t.fail("max", "must be above min");
-    scene.speed_step = t.optional_positive("step", Quantity::speed).value_or((scene.max_speed - scene.min_speed) / 400.0);
-    if ((scene.max_speed - scene.min_speed) / scene.speed_step > 1e6)
-      t.fail("step", "gives more than a million speeds; take a coarser step");
-    t.finish();
-  }
+  read_scene_table(root, path, scene);
+  if (root.has("simulation")) scene.simulation = read_simulation(root.table("simulation"), root.has("source"));
+  if (root.has("speed") || !scene.simulation) read_speed_range(root.table("speed"), scene);
   if (root.has("source") || !scene.simulation)
-  for (auto& t : root.tables("source")) {
-    const std::string kind = t.string("kind");
-    try {
-      if (kind == "rail_joints") scene.sources.push_back(rail_joints(t));
-      else if (kind == "wheel_eccentricity") scene.sources.push_back(eccentricity(t));
-      else if (kind == "wheel_flat") scene.sources.push_back(flat(t));
-      else if (kind == "hunting") scene.sources.push_back(hunting(t));
-      else if (kind == "unbalance") scene.sources.push_back(unbalance(t));
-      else t.fail("kind", "unknown source '" + kind + "' (rail_joints, wheel_eccentricity, wheel_flat, hunting, unbalance)");
-    } catch (const std::invalid_argument& e) {
-      t.fail("kind", e.what());
-    }
-    t.finish();
-  }
-  if (root.has("output"))
-    for (auto& t : root.tables("output")) {
-      SceneOutput out;
-      out.dof = t.string("dof");
-      const std::string quantity = t.optional_string("quantity").value_or("displacement");
-      if (quantity == "displacement") out.quantity = ResponseQuantity::displacement;
-      else if (quantity == "velocity") out.quantity = ResponseQuantity::velocity;
-      else if (quantity == "acceleration") out.quantity = ResponseQuantity::acceleration;
-      else t.fail("quantity", "must be displacement, velocity or acceleration, not '" + quantity + "'");
+    for (auto& t : root.tables("source")) {
+      scene.sources.push_back(source(t));
       t.finish();
-      scene.outputs.push_back(out);
     }
-  if (root.has("friction")) {
-    TableReader t = root.table("friction");
-    const std::string model = t.optional_string("model").value_or("criterion");
-    if (model == "equivalent_viscous") {
-      scene.friction_reference_amplitude = t.positive("reference_amplitude", Quantity::length);
-    } else if (model != "criterion") {
-      t.fail("model", "must be \"criterion\" or \"equivalent_viscous\", not '" + model + "'");
-    } else if (t.has("reference_amplitude")) {
-      t.fail("reference_amplitude", "applies only to model = \"equivalent_viscous\"");
-    }
-    t.finish();
-  }
+  if (root.has("output"))
+    for (auto& t : root.tables("output")) scene.outputs.push_back(read_output(t));
+  if (root.has("friction")) read_friction(root.table("friction"), scene);
   root.finish();
   return scene;
 }

@@ -49,33 +49,103 @@ LoadDeflectionCurve read_curve(TableReader& stage) {
   return c;
 }
 
+// Exactly one way of giving the stiffness: one of the keys, or the kind's geometry (returned
+// as "coil geometry", "leaf geometry" or "elliptic geometry").
+std::string stiffness_given_by(const TableReader& t, const std::string& kind) {
+  std::vector<std::string> given;
+  for (const char* k : {"stiffness", "flexibility", "static_deflection", "load_deflection"})
+    if (t.has(k)) given.push_back(k);
+  const bool coil = kind == "coil" && any_of(t, kCoilGeometry);
+  const bool leaf = kind == "leaf" && any_of(t, kLeafGeometry);
+  const bool elliptic = kind == "elliptic" && any_of(t, kEllipticGeometry);
+  if (coil || leaf || elliptic) given.push_back(kind + " geometry");
+  if (given.size() != 1) {
+    const std::string choices =
+        "give exactly one of stiffness, flexibility, static_deflection, load_deflection" +
+        std::string(kind == "coil"       ? " or the coil geometry (wire_diameter, mean_radius, active_coils, shear_modulus)"
+                    : kind == "leaf"     ? " or the leaf geometry (length, leaf_width, leaf_thickness, leaves, full_length_leaves, modulus)"
+                    : kind == "elliptic" ? " or the elliptic geometry (length, leaf_width, leaf_thickness, leaves, rows, modulus)"
+                                         : "");
+    t.fail(given.empty() ? "stiffness" : given[1], given.empty() ? "missing: " + choices
+                                                                 : "conflicts with " + given[0] + ": " + choices);
+  }
+  return given[0];
+}
+
+// The tangent of the load-deflection curve at the load the spring carries.
+double curve_stiffness(TableReader& t, std::optional<double> element_load, SpringStage* stage) {
+  LoadDeflectionCurve& curve = stage->curve.emplace(read_curve(t));
+  const double load = load_per_spring(t, element_load, stage->count, "load_deflection");
+  if (load > curve.load.back())
+    t.fail("load", "is beyond the last point of load_deflection; extend the curve");
+  return curve.stiffness_at(load);
+}
+
+double coil_stiffness(TableReader& t) {
+  const double d = t.positive("wire_diameter", Quantity::length);
+  double r = 0.0;
+  if (t.has("mean_radius") == t.has("mean_diameter"))
+    t.fail("mean_radius", "give exactly one of mean_radius and mean_diameter");
+  r = t.has("mean_radius") ? t.positive("mean_radius", Quantity::length)
+                           : t.positive("mean_diameter", Quantity::length) / 2.0;
+  const double n = t.positive("active_coils", Quantity::dimensionless);
+  const double G = t.positive("shear_modulus", Quantity::modulus);
+  return model::coil_spring_stiffness(d, r, n, G);  // eq. (4)
+}
+
+// The leaf spring's geometry into *g, and its stiffness: at the carried load where inclined
+// shackles make it depend on the load.
+double leaf_stiffness(TableReader& t, std::optional<double> element_load, int count, model::LeafSpringGeometry* g) {
+  g->length = t.positive("length", Quantity::length);
+  g->leaf_width = t.positive("leaf_width", Quantity::length);
+  g->leaf_thickness = t.positive("leaf_thickness", Quantity::length);
+  g->leaves = t.count("leaves", 1);
+  g->full_length_leaves = t.count("full_length_leaves", 1);
+  if (g->full_length_leaves > g->leaves) t.fail("full_length_leaves", "cannot exceed leaves");
+  g->modulus = t.positive("modulus", Quantity::modulus);
+  g->shackle_inclination = t.optional_positive("shackle_inclination", Quantity::angle, true).value_or(0.0);
+  if (g->shackle_inclination >= 1.5707963267948966)
+    t.fail("shackle_inclination", "must be below 90 degrees (write \"33.4 deg\")");
+  g->free_camber = t.optional_positive("free_camber", Quantity::length, true).value_or(0.0);
+  if (g->shackle_inclination > 0.0 && !t.has("free_camber"))
+    t.fail("free_camber", "missing: inclined shackles need the free (factory) camber, eq. (92a)");
+  const double load = g->shackle_inclination > 0.0 ? load_per_spring(t, element_load, count, "shackle_inclination")
+                                                   : 1.0;  // linear: any load gives the same stiffness
+  return model::leaf_spring_stiffness(*g, load);  // eqs. (26), (92a), (93)
+}
+
+double elliptic_stiffness(TableReader& t) {
+  return model::elliptic_spring_stiffness(
+      t.positive("length", Quantity::length), t.positive("leaf_width", Quantity::length),
+      t.positive("leaf_thickness", Quantity::length), t.count("leaves", 1), t.count("rows", 1),
+      t.positive("modulus", Quantity::modulus));
+}
+
+// Leaf friction: φ directly, or Marié's eq. (34) from the leaf-on-leaf coefficient ψ.
+void read_leaf_friction(TableReader& t, const std::optional<model::LeafSpringGeometry>& leaf, SpringStage* stage) {
+  if (t.has("relative_friction") && t.has("leaf_friction"))
+    t.fail("leaf_friction", "conflicts with relative_friction: give one of them");
+  if (t.has("relative_friction")) {
+    stage->relative_friction = t.positive("relative_friction", Quantity::dimensionless, true);
+    if (!(stage->relative_friction < 1.0))
+      t.fail("relative_friction", "must be below 1 (the book's φ is 0.02 … 0.15)");
+  } else if (t.has("leaf_friction")) {
+    if (!leaf) t.fail("leaf_friction", "needs the leaf geometry (Marié's eq. (34)); or give relative_friction");
+    const double psi = t.positive("leaf_friction", Quantity::dimensionless, true);
+    stage->relative_friction = model::leaf_spring_relative_friction(*leaf, psi);
+    if (!(stage->relative_friction < 1.0))
+      t.fail("leaf_friction", "gives a relative friction φ of " + std::to_string(stage->relative_friction) +
+                                  ", not below 1");
+  }
+}
+
 }  // namespace
 
 SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load) {
   SpringStage stage;
   stage.kind = t.optional_string("kind").value_or("spring");
   stage.count = t.optional_count("count", 1).value_or(1);
-
-  // Exactly one way of giving the stiffness.
-  std::vector<std::string> given;
-  for (const char* k : {"stiffness", "flexibility", "static_deflection", "load_deflection"})
-    if (t.has(k)) given.push_back(k);
-  const bool coil = stage.kind == "coil" && any_of(t, kCoilGeometry);
-  const bool leaf = stage.kind == "leaf" && any_of(t, kLeafGeometry);
-  const bool elliptic = stage.kind == "elliptic" && any_of(t, kEllipticGeometry);
-  if (coil || leaf || elliptic) given.push_back(stage.kind + " geometry");
-  if (given.size() != 1) {
-    const std::string choices =
-        "give exactly one of stiffness, flexibility, static_deflection, load_deflection" +
-        std::string(stage.kind == "coil"       ? " or the coil geometry (wire_diameter, mean_radius, active_coils, shear_modulus)"
-                    : stage.kind == "leaf"     ? " or the leaf geometry (length, leaf_width, leaf_thickness, leaves, full_length_leaves, modulus)"
-                    : stage.kind == "elliptic" ? " or the elliptic geometry (length, leaf_width, leaf_thickness, leaves, rows, modulus)"
-                                               : "");
-    t.fail(given.empty() ? "stiffness" : given[1], given.empty() ? "missing: " + choices
-                                                                 : "conflicts with " + given[0] + ": " + choices);
-  }
-
-  const std::string& way = given[0];
+  const std::string way = stiffness_given_by(t, stage.kind);
   std::optional<model::LeafSpringGeometry> leaf_geometry;
   if (way == "stiffness") {
     stage.stiffness = t.positive("stiffness", Quantity::stiffness);
@@ -85,63 +155,17 @@ SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load
     const double f = t.positive("static_deflection", Quantity::length);
     stage.stiffness = load_per_spring(t, element_load, stage.count, "static_deflection") / f;
   } else if (way == "load_deflection") {
-    LoadDeflectionCurve& curve = stage.curve.emplace(read_curve(t));
-    const double load = load_per_spring(t, element_load, stage.count, "load_deflection");
-    if (load > curve.load.back())
-      t.fail("load", "is beyond the last point of load_deflection; extend the curve");
-    stage.stiffness = curve.stiffness_at(load);  // the tangent at the carried load
-  } else if (coil) {
-    const double d = t.positive("wire_diameter", Quantity::length);
-    double r = 0.0;
-    if (t.has("mean_radius") == t.has("mean_diameter"))
-      t.fail("mean_radius", "give exactly one of mean_radius and mean_diameter");
-    r = t.has("mean_radius") ? t.positive("mean_radius", Quantity::length)
-                             : t.positive("mean_diameter", Quantity::length) / 2.0;
-    const double n = t.positive("active_coils", Quantity::dimensionless);
-    const double G = t.positive("shear_modulus", Quantity::modulus);
-    stage.stiffness = model::coil_spring_stiffness(d, r, n, G);  // eq. (4)
-  } else if (leaf) {
-    model::LeafSpringGeometry& g = leaf_geometry.emplace();
-    g.length = t.positive("length", Quantity::length);
-    g.leaf_width = t.positive("leaf_width", Quantity::length);
-    g.leaf_thickness = t.positive("leaf_thickness", Quantity::length);
-    g.leaves = t.count("leaves", 1);
-    g.full_length_leaves = t.count("full_length_leaves", 1);
-    if (g.full_length_leaves > g.leaves) t.fail("full_length_leaves", "cannot exceed leaves");
-    g.modulus = t.positive("modulus", Quantity::modulus);
-    g.shackle_inclination = t.optional_positive("shackle_inclination", Quantity::angle, true).value_or(0.0);
-    if (g.shackle_inclination >= 1.5707963267948966)
-      t.fail("shackle_inclination", "must be below 90 degrees (write \"33.4 deg\")");
-    g.free_camber = t.optional_positive("free_camber", Quantity::length, true).value_or(0.0);
-    if (g.shackle_inclination > 0.0 && !t.has("free_camber"))
-      t.fail("free_camber", "missing: inclined shackles need the free (factory) camber, eq. (92a)");
-    const double load = g.shackle_inclination > 0.0
-                            ? load_per_spring(t, element_load, stage.count, "shackle_inclination")
-                            : 1.0;  // linear: any load gives the same stiffness
-    stage.stiffness = model::leaf_spring_stiffness(g, load);  // eqs. (26), (92a), (93)
+    stage.stiffness = curve_stiffness(t, element_load, &stage);
+  } else if (way == "coil geometry") {
+    stage.stiffness = coil_stiffness(t);
+  } else if (way == "leaf geometry") {
+    stage.stiffness = leaf_stiffness(t, element_load, stage.count, &leaf_geometry.emplace());
   } else {
-    stage.stiffness = model::elliptic_spring_stiffness(
-        t.positive("length", Quantity::length), t.positive("leaf_width", Quantity::length),
-        t.positive("leaf_thickness", Quantity::length), t.count("leaves", 1), t.count("rows", 1),
-        t.positive("modulus", Quantity::modulus));
+    stage.stiffness = elliptic_stiffness(t);
   }
-  // Leaf friction: φ directly, or Marié's eq. (34) from the leaf-on-leaf coefficient ψ.
-  if (t.has("relative_friction") && t.has("leaf_friction"))
-    t.fail("leaf_friction", "conflicts with relative_friction: give one of them");
-  if (t.has("relative_friction")) {
-    stage.relative_friction = t.positive("relative_friction", Quantity::dimensionless, true);
-    if (!(stage.relative_friction < 1.0))
-      t.fail("relative_friction", "must be below 1 (the book's φ is 0.02 … 0.15)");
-  } else if (t.has("leaf_friction")) {
-    if (!leaf_geometry)
-      t.fail("leaf_friction", "needs the leaf geometry (Marié's eq. (34)); or give relative_friction");
-    const double psi = t.positive("leaf_friction", Quantity::dimensionless, true);
-    stage.relative_friction = model::leaf_spring_relative_friction(*leaf_geometry, psi);
-    if (!(stage.relative_friction < 1.0))
-      t.fail("leaf_friction", "gives a relative friction φ of " + std::to_string(stage.relative_friction) +
-                                  ", not below 1");
-  }
-  if (t.has("load") && way != "static_deflection" && way != "load_deflection" && !(leaf && t.has("shackle_inclination")))
+  read_leaf_friction(t, leaf_geometry, &stage);
+  if (t.has("load") && way != "static_deflection" && way != "load_deflection" &&
+      !(leaf_geometry && t.has("shackle_inclination")))
     t.positive("load", Quantity::force);  // documented carried load; accepted, not needed
   t.finish();
   return stage;

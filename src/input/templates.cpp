@@ -15,6 +15,121 @@ void read_damping(TableReader& t, Element* e) {
   e->lateral_damping = t.optional_positive("lateral_damping", Quantity::damping, true).value_or(0.0);
 }
 
+// The sprung parts of a bogie (frame, bolster, cradle), one per end, from [bogie]; without
+// them (single suspension) only the bolster height is read.
+struct BogieFrame {
+  double mass = 0.0;
+  Eigen::Vector3d inertia = Eigen::Vector3d::Zero();
+  double cg_height = 0.0;       // h1, above the axle plane
+  double half_wheelbase = 0.0;  // l2
+  double bolster = 0.0;         // height of the bolster plane
+};
+
+BogieFrame read_bogie_frame(TableReader& root, bool sprung, double gravity) {
+  BogieFrame f;
+  if (sprung) {
+    TableReader g = root.table("bogie");
+    f.mass = read_mass(g, gravity);
+    f.inertia = read_inertia(g, f.mass);
+    f.cg_height = g.quantity("cg_height", Quantity::length);
+    f.half_wheelbase = g.positive("wheelbase", Quantity::length) / 2.0;
+    f.bolster = g.optional_quantity("bolster_height", Quantity::length).value_or(0.0);
+    g.finish();
+  } else if (root.has("bogie")) {  // unsprung bogie frames: only the bolster height matters
+    TableReader g = root.table("bogie");
+    f.bolster = g.optional_quantity("bolster_height", Quantity::length).value_or(0.0);
+    g.finish();
+  }
+  return f;
+}
+
+// [secondary]: the cradle springs' lateral spacing, a swing hanger, and the anti-roll bar.
+struct Secondary {
+  double half_spacing = 0.0;  // b3
+  std::optional<SwingHanger> hanger;
+  double anti_roll_bar = 0.0;  // roll stiffness between body and each bogie (torsion bar), N·m/rad
+};
+
+Secondary read_secondary(TableReader& sec) {
+  Secondary s;
+  s.half_spacing = sec.positive("spacing", Quantity::length) / 2.0;
+  if (sec.has("hanger")) s.hanger = read_hanger(sec);
+  s.anti_roll_bar = sec.optional_positive("anti_roll_bar", Quantity::rotational_stiffness, true).value_or(0.0);
+  return s;
+}
+
+// One end of the wagon: its bogie's name, what the body's springs stand on there (the bogie,
+// or the track for single suspension: empty), and the bogie centre's x.
+struct BogieEnd {
+  std::string name;
+  std::string lower;
+  double x = 0.0;
+};
+
+Body bogie_body(const BogieEnd& end, const BogieFrame& f, const TableReader& pri) {
+  Body bogie;
+  bogie.name = end.name;
+  bogie.mass = f.mass;
+  bogie.inertia = f.inertia;
+  bogie.reference_point = {end.x, 0.0, 0.0};  // pitch about the axle plane, §2.5
+  bogie.centre_of_gravity = {end.x, 0.0, f.cg_height};
+  const bool lateral = pri.has("lateral"), longitudinal = pri.has("longitudinal");
+  if (!lateral) bogie.held.push_back(Motion::lateral);  // wheelsets guide the frame
+  if (!lateral && !longitudinal) bogie.held.push_back(Motion::yaw);
+  return bogie;
+}
+
+// Primary springs: four axlebox locations (half wheelbase l2, half spacing b2), each carrying
+// `load`, a quarter of the bogie's share.
+void add_axlebox_springs(TableReader& pri, const BogieEnd& end, double l2, double b2, double load, bool triple,
+                         Vehicle* v) {
+  for (int axle : {+1, -1})
+    for (int side : {+1, -1}) {
+      Element e;
+      e.name = end.name + (axle > 0 ? " leading" : " trailing") + (side > 0 ? " left" : " right") + " axlebox";
+      e.upper = end.name;
+      e.point = {end.x + axle * l2, side * b2, 0.0};
+      e.vertical_stages = read_spring_stages(pri, "spring", load);
+      if (e.vertical_stages.empty()) pri.fail("spring", "missing: the axlebox spring stages");
+      if (triple && e.vertical_stages.size() < 2)
+        pri.fail("spring", "triple suspension needs two primary stages in series (leaf, then coil)");
+      e.lateral_stages = read_spring_stages(pri, "lateral", load);
+      e.longitudinal_stages = read_spring_stages(pri, "longitudinal", load);
+      read_damping(pri, &e);
+      v->elements.push_back(e);
+    }
+}
+
+// Secondary (cradle) springs: one set each side, in the bolster plane, each carrying `load`.
+void add_cradle_springs(TableReader& sec, const Secondary& s, const BogieEnd& end, double bolster, double load,
+                        Vehicle* v) {
+  for (int side : {+1, -1}) {
+    Element e;
+    e.name = end.name + (side > 0 ? " left" : " right") + " cradle";
+    e.lower = end.lower;
+    e.upper = "body";
+    e.point = {end.x, side * s.half_spacing, bolster};
+    e.vertical_stages = read_spring_stages(sec, "spring", load);
+    if (e.vertical_stages.empty()) sec.fail("spring", "missing: the cradle spring stages");
+    e.lateral_stages = read_spring_stages(sec, "lateral", load);
+    e.longitudinal_stages = read_spring_stages(sec, "longitudinal", load);
+    e.hanger = s.hanger;
+    read_damping(sec, &e);
+    v->elements.push_back(e);
+  }
+}
+
+void add_anti_roll_bar(const Secondary& s, const BogieEnd& end, double bolster, Vehicle* v) {
+  if (!(s.anti_roll_bar > 0.0)) return;
+  Element bar;
+  bar.name = end.name + " anti-roll bar";
+  bar.lower = end.lower;
+  bar.upper = "body";
+  bar.point = {end.x, 0.0, bolster};
+  bar.rotational_stiffness = {s.anti_roll_bar, 0.0, 0.0};
+  v->elements.push_back(bar);
+}
+
 }  // namespace
 
 void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
@@ -74,34 +189,14 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   const double l3 = bt.positive("bogie_spacing", Quantity::length) / 2.0;
   bt.finish();
 
-  // Bogies: sprung parts of the bogie (frame, bolster, cradle), one per end.
-  double bogie_mass = 0.0, h1 = 0.0, l2 = 0.0, bolster = 0.0;
-  Eigen::Vector3d bogie_inertia = Eigen::Vector3d::Zero();
   const bool sprung_bogies = suspension != "single";
-  if (sprung_bogies) {
-    TableReader g = root.table("bogie");
-    bogie_mass = read_mass(g, v->gravity);
-    bogie_inertia = read_inertia(g, bogie_mass);
-    h1 = g.quantity("cg_height", Quantity::length);  // above the axle plane
-    l2 = g.positive("wheelbase", Quantity::length) / 2.0;
-    bolster = g.optional_quantity("bolster_height", Quantity::length).value_or(0.0);
-    g.finish();
-  } else if (root.has("bogie")) {  // unsprung bogie frames: only the bolster height matters
-    TableReader g = root.table("bogie");
-    bolster = g.optional_quantity("bolster_height", Quantity::length).value_or(0.0);
-    g.finish();
-  }
-  body.reference_point = {0.0, 0.0, bolster};
-  body.centre_of_gravity = {0.0, 0.0, bolster + d0};
+  const BogieFrame frame = read_bogie_frame(root, sprung_bogies, v->gravity);
+  body.reference_point = {0.0, 0.0, frame.bolster};
+  body.centre_of_gravity = {0.0, 0.0, frame.bolster + d0};
   v->bodies.push_back(body);
 
   TableReader sec = root.table("secondary");
-  const double b3 = sec.positive("spacing", Quantity::length) / 2.0;
-  std::optional<SwingHanger> hanger;
-  if (sec.has("hanger")) hanger = read_hanger(sec);
-  // Roll stiffness between body and each bogie (torsion bar), N·m/rad.
-  const double anti_roll_bar =
-      sec.optional_positive("anti_roll_bar", Quantity::rotational_stiffness, true).value_or(0.0);
+  const Secondary secondary = read_secondary(sec);
   std::optional<TableReader> pri;
   double b2 = 0.0;
   if (sprung_bogies) {
@@ -112,65 +207,16 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   }
 
   const double g = v->gravity;
-  const char* bogie_names[] = {"bogie1", "bogie2"};
   for (int k = 0; k < 2; ++k) {
-    const double xc = k == 0 ? l3 : -l3;
-    std::string lower;  // the track for single suspension
+    BogieEnd end{k == 0 ? "bogie1" : "bogie2", "", k == 0 ? l3 : -l3};
     if (sprung_bogies) {
-      Body bogie;
-      bogie.name = bogie_names[k];
-      bogie.mass = bogie_mass;
-      bogie.inertia = bogie_inertia;
-      bogie.reference_point = {xc, 0.0, 0.0};  // pitch about the axle plane, §2.5
-      bogie.centre_of_gravity = {xc, 0.0, h1};
-      const bool lateral = pri->has("lateral"), longitudinal = pri->has("longitudinal");
-      if (!lateral) bogie.held.push_back(Motion::lateral);  // wheelsets guide the frame
-      if (!lateral && !longitudinal) bogie.held.push_back(Motion::yaw);
-      v->bodies.push_back(bogie);
-      lower = bogie.name;
-      // Primary springs: four axlebox locations; each carries a quarter of the bogie's share.
-      const double load = (body.mass / 2.0 + bogie_mass) * g / 4.0;
-      for (int axle : {+1, -1})
-        for (int side : {+1, -1}) {
-          Element e;
-          e.name = bogie.name + (axle > 0 ? " leading" : " trailing") + (side > 0 ? " left" : " right") + " axlebox";
-          e.upper = bogie.name;
-          e.point = {xc + axle * l2, side * b2, 0.0};
-          e.vertical_stages = read_spring_stages(*pri, "spring", load);
-          if (e.vertical_stages.empty()) pri->fail("spring", "missing: the axlebox spring stages");
-          if (suspension == "triple" && e.vertical_stages.size() < 2)
-            pri->fail("spring", "triple suspension needs two primary stages in series (leaf, then coil)");
-          e.lateral_stages = read_spring_stages(*pri, "lateral", load);
-          e.longitudinal_stages = read_spring_stages(*pri, "longitudinal", load);
-          read_damping(*pri, &e);
-          v->elements.push_back(e);
-        }
+      v->bodies.push_back(bogie_body(end, frame, *pri));
+      end.lower = end.name;
+      add_axlebox_springs(*pri, end, frame.half_wheelbase, b2, (body.mass / 2.0 + frame.mass) * g / 4.0,
+                          suspension == "triple", v);
     }
-    // Secondary (cradle) springs: one set each side, in the bolster plane.
-    const double load = body.mass * g / 4.0;
-    for (int side : {+1, -1}) {
-      Element e;
-      e.name = std::string(bogie_names[k]) + (side > 0 ? " left" : " right") + " cradle";
-      e.lower = lower;
-      e.upper = "body";
-      e.point = {xc, side * b3, bolster};
-      e.vertical_stages = read_spring_stages(sec, "spring", load);
-      if (e.vertical_stages.empty()) sec.fail("spring", "missing: the cradle spring stages");
-      e.lateral_stages = read_spring_stages(sec, "lateral", load);
-      e.longitudinal_stages = read_spring_stages(sec, "longitudinal", load);
-      e.hanger = hanger;
-      read_damping(sec, &e);
-      v->elements.push_back(e);
-    }
-    if (anti_roll_bar > 0.0) {
-      Element bar;
-      bar.name = std::string(bogie_names[k]) + " anti-roll bar";
-      bar.lower = lower;
-      bar.upper = "body";
-      bar.point = {xc, 0.0, bolster};
-      bar.rotational_stiffness = {anti_roll_bar, 0.0, 0.0};
-      v->elements.push_back(bar);
-    }
+    add_cradle_springs(sec, secondary, end, frame.bolster, body.mass * g / 4.0, v);
+    add_anti_roll_bar(secondary, end, frame.bolster, v);
   }
   sec.finish();
   if (pri) pri->finish();

@@ -228,97 +228,97 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
   return loads;
 }
 
-}  // namespace
+// The matrices in full coordinates before the static loads are known: M, C, and K of the
+// springs (hangers' lateral stiffness left out), with each element's point map.
+struct FullModel {
+  Eigen::MatrixXd M, C, K_springs;
+  std::vector<ElementMap> maps;  // one per element
+};
 
-LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
-  std::map<std::string, int> index;
-  check_vehicle(vehicle, &index);
-  const Layout layout{static_cast<int>(vehicle.bodies.size())};
+FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string, int>& index, const Layout& layout) {
   const int N = layout.size();
-
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(N, N);
-  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(N, N);
-  Eigen::MatrixXd K_springs = Eigen::MatrixXd::Zero(N, N);
-  Eigen::MatrixXd K_gravity = Eigen::MatrixXd::Zero(N, N);
-
+  FullModel f{Eigen::MatrixXd::Zero(N, N), Eigen::MatrixXd::Zero(N, N), Eigen::MatrixXd::Zero(N, N), {}};
   for (int b = 0; b < layout.bodies; ++b)
-    M.block(b * kMotionsPerBody, b * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) =
+    f.M.block(b * kMotionsPerBody, b * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) =
         model::body_mass(vehicle.bodies[b]);
-
-  std::vector<ElementMap> maps;
   for (const Element& e : vehicle.elements) {
-    maps.push_back(element_map(vehicle, index, e));
-    // A hanger's lateral stiffness needs the static load: it is added below.
+    f.maps.push_back(element_map(vehicle, index, e));
+    // A hanger's lateral stiffness needs the static load: it is added later.
     const double lateral = e.hanger ? 0.0 : series_stiffness(e.lateral_stages);
-    add_element(maps.back(),
+    add_element(f.maps.back(),
                 {series_stiffness(e.longitudinal_stages), lateral, series_stiffness(e.vertical_stages)},
-                &K_springs);
-    add_rotational(maps.back(), e.rotational_stiffness, &K_springs);
-    add_element(maps.back(), {0.0, e.lateral_damping, e.vertical_damping}, &C);
+                &f.K_springs);
+    add_rotational(f.maps.back(), e.rotational_stiffness, &f.K_springs);
+    add_element(f.maps.back(), {0.0, e.lateral_damping, e.vertical_damping}, &f.C);
   }
+  return f;
+}
 
-  const std::vector<double> loads = static_loads(vehicle, layout, maps, K_springs);
-
-  Eigen::MatrixXd K = K_springs;
-  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
-    const Element& e = vehicle.elements[k];
-    if (e.hanger) add_element(maps[k], {0.0, model::lateral_stiffness(e, loads[k]), 0.0}, &K);
-  }
-
-  // Dead loads: each weight at its CG, each element's static load at its point.
+// Dead loads: each weight at its CG, each element's static load at its point.
+Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const std::map<std::string, int>& index,
+                                  const Layout& layout, const std::vector<double>& loads) {
+  Eigen::MatrixXd K_gravity = Eigen::MatrixXd::Zero(layout.size(), layout.size());
+  auto block = [&](int body) {
+    return K_gravity.block(body * kMotionsPerBody, body * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody);
+  };
   for (int b = 0; b < layout.bodies; ++b) {
     const Body& body = vehicle.bodies[b];
-    K_gravity.block(b * kMotionsPerBody, b * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) +=
-        model::dead_load_stiffness(body, body.centre_of_gravity,
-                                   Eigen::Vector3d(0.0, 0.0, -body.mass * vehicle.gravity));
+    block(b) += model::dead_load_stiffness(body, body.centre_of_gravity,
+                                           Eigen::Vector3d(0.0, 0.0, -body.mass * vehicle.gravity));
   }
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
     const Eigen::Vector3d on_upper(0.0, 0.0, loads[k]);
     const int up = index.at(e.upper);
-    K_gravity.block(up * kMotionsPerBody, up * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) +=
-        model::dead_load_stiffness(vehicle.bodies[up], e.point, on_upper);
+    block(up) += model::dead_load_stiffness(vehicle.bodies[up], e.point, on_upper);
     if (!e.lower.empty()) {
       const int low = index.at(e.lower);
-      K_gravity.block(low * kMotionsPerBody, low * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) +=
-          model::dead_load_stiffness(vehicle.bodies[low], e.point, -on_upper);
+      block(low) += model::dead_load_stiffness(vehicle.bodies[low], e.point, -on_upper);
     }
   }
-  K += K_gravity;
+  return K_gravity;
+}
 
-  // Keep the motions of the requested set that are not held.
-  LinearSystem system;
+// The motions of the requested set that are not held, and their DOFs.
+std::vector<int> kept_coordinates(const Vehicle& vehicle, const Layout& layout, DofSet set, std::vector<Dof>* dofs) {
   std::vector<int> keep;
   for (int c : free_coordinates(vehicle, layout)) {
     const auto motion = static_cast<Motion>(c % kMotionsPerBody);
     if (!in_set(motion, set)) continue;
     const int b = c / kMotionsPerBody;
     keep.push_back(c);
-    system.dofs.push_back({vehicle.bodies[b].name + "." + to_string(motion), b, motion});
+    dofs->push_back({vehicle.bodies[b].name + "." + to_string(motion), b, motion});
   }
+  return keep;
+}
+
+Eigen::MatrixXd pick(const Eigen::MatrixXd& A, const std::vector<int>& keep) {
   const int n = static_cast<int>(keep.size());
-  auto pick = [&](const Eigen::MatrixXd& A) {
-    Eigen::MatrixXd out(n, n);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) out(i, j) = A(keep[i], keep[j]);
-    return out;
-  };
-  system.mass = pick(M);
-  system.damping = pick(C);
-  system.stiffness = pick(K);
-  system.gravity_stiffness = pick(K_gravity);
-  system.vehicle = vehicle;
-  system.element_loads = loads;
-  system.element_vertical_map = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(vehicle.elements.size()), n);
-  for (size_t k = 0; k < vehicle.elements.size(); ++k)
+  Eigen::MatrixXd out(n, n);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) out(i, j) = A(keep[i], keep[j]);
+  return out;
+}
+
+// Row k: the vertical stretch of element k per kept coordinate.
+Eigen::MatrixXd element_vertical_map(const std::vector<ElementMap>& maps, const std::vector<int>& keep) {
+  const int n = static_cast<int>(keep.size());
+  Eigen::MatrixXd map = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(maps.size()), n);
+  for (size_t k = 0; k < maps.size(); ++k)
     for (int i = 0; i < n; ++i) {
       const int body = keep[i] / kMotionsPerBody, motion = keep[i] % kMotionsPerBody;
-      if (body == maps[k].upper) system.element_vertical_map(k, i) += maps[k].up(2, motion);
-      if (body == maps[k].lower) system.element_vertical_map(k, i) -= maps[k].low(2, motion);
+      if (body == maps[k].upper) map(k, i) += maps[k].up(2, motion);
+      if (body == maps[k].lower) map(k, i) -= maps[k].low(2, motion);
     }
+  return map;
+}
 
-  // Where the track's displacement enters: the final stiffness of each track element
-  // (hangers included) and its damping, seen from the kept coordinates of its upper body.
+// Where the track's displacement enters: the final stiffness of each track element
+// (hangers included) and its damping, seen from the kept coordinates of its upper body.
+std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const std::vector<ElementMap>& maps,
+                                     const std::vector<double>& loads, const std::vector<int>& keep) {
+  const int n = static_cast<int>(keep.size());
+  std::vector<TrackInput> inputs;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
     if (!e.lower.empty()) continue;
@@ -338,8 +338,38 @@ LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
         input.load_per_velocity(i, d) = maps[k].up(d, motion) * damping(d);
       }
     }
-    system.track_inputs.push_back(std::move(input));
+    inputs.push_back(std::move(input));
   }
+  return inputs;
+}
+
+}  // namespace
+
+LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
+  std::map<std::string, int> index;
+  check_vehicle(vehicle, &index);
+  const Layout layout{static_cast<int>(vehicle.bodies.size())};
+
+  const FullModel full = springs_and_masses(vehicle, index, layout);
+  const std::vector<double> loads = static_loads(vehicle, layout, full.maps, full.K_springs);
+  Eigen::MatrixXd K = full.K_springs;
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Element& e = vehicle.elements[k];
+    if (e.hanger) add_element(full.maps[k], {0.0, model::lateral_stiffness(e, loads[k]), 0.0}, &K);
+  }
+  const Eigen::MatrixXd K_gravity = gravity_stiffness(vehicle, index, layout, loads);
+  K += K_gravity;
+
+  LinearSystem system;
+  const std::vector<int> keep = kept_coordinates(vehicle, layout, set, &system.dofs);
+  system.mass = pick(full.M, keep);
+  system.damping = pick(full.C, keep);
+  system.stiffness = pick(K, keep);
+  system.gravity_stiffness = pick(K_gravity, keep);
+  system.vehicle = vehicle;
+  system.element_loads = loads;
+  system.element_vertical_map = element_vertical_map(full.maps, keep);
+  system.track_inputs = track_inputs(vehicle, full.maps, loads, keep);
   return system;
 }
 

@@ -73,91 +73,103 @@ std::vector<const RankedVariant*> best_variants(const Comparison& c) {
 
 // ---- why the winner wins ------------------------------------------------------------------
 
+// How the winner beats the runner-up: on the weighted objective, or on the first criterion
+// where they differ (or that they tie on all).
+std::string against_runner_up(const Comparison& c, const Writer& w, const RankedVariant& winner,
+                              const RankedVariant& runner) {
+  const auto& objective = c.ranking.objective;
+  if (c.ranking.weighted)
+    return w.text(" Its weighted objective is " + significant(winner.objective.value_or(NAN), 6) + " against " +
+                  significant(runner.objective.value_or(NAN), 6) + " for the runner-up ") +
+           w.bold(runner.result.name) + w.text(".");
+  size_t k = 0;
+  while (k < objective.size() && k < winner.criteria.size() && k < runner.criteria.size() &&
+         winner.criteria[k] == runner.criteria[k])
+    ++k;
+  if (k < objective.size() && k < winner.criteria.size() && k < runner.criteria.size())
+    return w.text(" It is ahead of the runner-up ") + w.bold(runner.result.name) +
+           w.text(" on " + goal(objective[k]) + ": " + metric_text(objective[k].metric, winner.criteria[k]) +
+                  " against " + metric_text(objective[k].metric, runner.criteria[k]) +
+                  (k > 0 ? " (the criteria before it tie)." : "."));
+  return w.text(" It ties with the runner-up ") + w.bold(runner.result.name) +
+         w.text(" on every criterion and comes first in study order.");
+}
+
+// The winner's objective against the base design's, and why the base is not in front.
+std::string against_base(const Comparison& c, const Writer& w, const RankedVariant& winner,
+                         const RankedVariant& base) {
+  const auto& objective = c.ranking.objective;
+  std::string b = w.text("Against the base:");
+  for (size_t k = 0; k < objective.size(); ++k) {
+    const auto& mine = k < winner.criteria.size() ? winner.criteria[k] : std::nullopt;
+    const auto& theirs = k < base.criteria.size() ? base.criteria[k] : std::nullopt;
+    b += w.text(std::string(k ? ";" : "") + " " + objective[k].metric + " " + metric_text(objective[k].metric, mine) +
+                " (base " + metric_text(objective[k].metric, theirs) + ")");
+  }
+  b += w.text(".");
+  if (!base.result.ok()) b += w.text(" The base itself failed: " + base.result.failure + ".");
+  else if (!base.feasible && !base.violations.empty()) b += w.text(" The base violates " + base.violations.front() + ".");
+  return b;
+}
+
+// Who ranks first and why, and how it compares with the base design.
+void add_winner(const Comparison& c, const Writer& w, size_t feasible, std::vector<std::string>* out) {
+  const RankedVariant* base = find_base(c);
+  const RankedVariant& winner = c.variants.front();
+  std::string s = w.bold(winner.result.name) + w.text(" ranks first of " + std::to_string(c.variants.size()) +
+                                                    " variants (" + std::to_string(feasible) + " feasible).");
+  const RankedVariant* runner = c.variants.size() > 1 && c.variants[1].feasible ? &c.variants[1] : nullptr;
+  if (runner && !c.ranking.objective.empty()) s += against_runner_up(c, w, winner, *runner);
+  out->push_back(s);
+  if (base && &winner == base)
+    out->push_back(w.text("The base design is best: no variant improves on it within the constraints."));
+  else if (base && !c.ranking.objective.empty())
+    out->push_back(against_base(c, w, winner, *base));
+}
+
+std::string constraint_sentence(const Comparison& c, const Writer& w, const RankingConstraint& k, size_t failed) {
+  size_t violating = 0;
+  for (const RankedVariant& v : c.variants) {
+    if (!v.result.ok()) continue;
+    const auto x = metric_value(v.result, k.metric);
+    violating += !x || (k.min && *x < *k.min) || (k.max && *x > *k.max);
+  }
+  std::string bound;
+  if (k.min) bound += " ≥ " + metric_text(k.metric, *k.min);
+  if (k.max) bound += std::string(k.min ? " and" : "") + " ≤ " + metric_text(k.metric, *k.max);
+  return w.text("Constraint " + k.metric + bound + ": " + std::to_string(violating) + " of " +
+                std::to_string(c.variants.size() - failed) + " evaluated variants violate it.");
+}
+
+// Whether the winner keeps the book's permissible dynamic deflections, and how closely.
+std::string deflection_sentence(const VariantResult& r, const Writer& w) {
+  const VariantResult::DeflectionCheck* worst = nullptr;
+  for (const auto& d : r.deflections)
+    if (!worst || d.unbounded > worst->unbounded ||
+        (d.unbounded == worst->unbounded && d.deflection / d.permissible > worst->deflection / worst->permissible))
+      worst = &d;
+  if (!worst) return w.text("No spring of the winner falls under the permissible-deflection rule.");
+  if (worst->unbounded)
+    return w.text("The winner exceeds the permissible dynamic deflection: a resonance that friction does not "
+                  "stop stretches " + worst->element + " without limit at " +
+                  fixed(worst->speed * kKmh, 1) + " km/h.");
+  return w.text(std::string(worst->kept() ? "The winner keeps" : "The winner exceeds") +
+                " the permissible dynamic deflections: at worst " +
+                significant(worst->deflection / worst->permissible, 3) + " of the limit (" + worst->element + ", " +
+                worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h.");
+}
+
 std::vector<std::string> verdict(const Comparison& c, const Writer& w) {
   std::vector<std::string> out;
   size_t feasible = 0, failed = 0;
   for (const RankedVariant& v : c.variants) feasible += v.feasible, failed += !v.result.ok();
-  const RankedVariant* base = find_base(c);
-  const auto& objective = c.ranking.objective;
-
-  if (feasible == 0) {
+  if (feasible == 0)
     out.push_back(w.text("No variant meets every constraint: the table ranks them all as infeasible."));
-  } else {
-    const RankedVariant& winner = c.variants.front();
-    std::string s = w.bold(winner.result.name) + w.text(" ranks first of " + std::to_string(c.variants.size()) +
-                                                      " variants (" + std::to_string(feasible) + " feasible).");
-    const RankedVariant* runner = c.variants.size() > 1 && c.variants[1].feasible ? &c.variants[1] : nullptr;
-    if (runner && !objective.empty()) {
-      if (c.ranking.weighted) {
-        s += w.text(" Its weighted objective is " + significant(winner.objective.value_or(NAN), 6) + " against " +
-                    significant(runner->objective.value_or(NAN), 6) + " for the runner-up ") +
-             w.bold(runner->result.name) + w.text(".");
-      } else {
-        size_t k = 0;
-        while (k < objective.size() && k < winner.criteria.size() && k < runner->criteria.size() &&
-               winner.criteria[k] == runner->criteria[k])
-          ++k;
-        if (k < objective.size() && k < winner.criteria.size() && k < runner->criteria.size()) {
-          s += w.text(" It is ahead of the runner-up ") + w.bold(runner->result.name) +
-               w.text(" on " + goal(objective[k]) + ": " + metric_text(objective[k].metric, winner.criteria[k]) +
-                      " against " + metric_text(objective[k].metric, runner->criteria[k]) +
-                      (k > 0 ? " (the criteria before it tie)." : "."));
-        } else {
-          s += w.text(" It ties with the runner-up ") + w.bold(runner->result.name) +
-               w.text(" on every criterion and comes first in study order.");
-        }
-      }
-    }
-    out.push_back(s);
-    if (base && &winner == base) {
-      out.push_back(w.text("The base design is best: no variant improves on it within the constraints."));
-    } else if (base && !objective.empty()) {
-      std::string b = w.text("Against the base:");
-      for (size_t k = 0; k < objective.size(); ++k) {
-        const auto& mine = k < winner.criteria.size() ? winner.criteria[k] : std::nullopt;
-        const auto& theirs = k < base->criteria.size() ? base->criteria[k] : std::nullopt;
-        b += w.text(std::string(k ? ";" : "") + " " + objective[k].metric + " " + metric_text(objective[k].metric, mine) +
-                    " (base " + metric_text(objective[k].metric, theirs) + ")");
-      }
-      b += w.text(".");
-      if (!base->result.ok()) b += w.text(" The base itself failed: " + base->result.failure + ".");
-      else if (!base->feasible && !base->violations.empty()) b += w.text(" The base violates " + base->violations.front() + ".");
-      out.push_back(b);
-    }
-  }
-  for (const RankingConstraint& k : c.ranking.constraints) {
-    size_t violating = 0;
-    for (const RankedVariant& v : c.variants) {
-      if (!v.result.ok()) continue;
-      const auto x = metric_value(v.result, k.metric);
-      violating += !x || (k.min && *x < *k.min) || (k.max && *x > *k.max);
-    }
-    std::string bound;
-    if (k.min) bound += " ≥ " + metric_text(k.metric, *k.min);
-    if (k.max) bound += std::string(k.min ? " and" : "") + " ≤ " + metric_text(k.metric, *k.max);
-    out.push_back(w.text("Constraint " + k.metric + bound + ": " + std::to_string(violating) + " of " +
-                         std::to_string(c.variants.size() - failed) + " evaluated variants violate it."));
-  }
-  if (c.deflection_rule.active() && feasible > 0 && c.variants.front().result.ok()) {
-    // Whether the winner keeps the book's permissible dynamic deflections, and how closely.
-    const VariantResult& r = c.variants.front().result;
-    const VariantResult::DeflectionCheck* worst = nullptr;
-    for (const auto& d : r.deflections)
-      if (!worst || d.unbounded > worst->unbounded ||
-          (d.unbounded == worst->unbounded && d.deflection / d.permissible > worst->deflection / worst->permissible))
-        worst = &d;
-    if (!worst)
-      out.push_back(w.text("No spring of the winner falls under the permissible-deflection rule."));
-    else if (worst->unbounded)
-      out.push_back(w.text("The winner exceeds the permissible dynamic deflection: a resonance that friction does not "
-                           "stop stretches " + worst->element + " without limit at " +
-                           fixed(worst->speed * kKmh, 1) + " km/h."));
-    else
-      out.push_back(w.text(std::string(worst->kept() ? "The winner keeps" : "The winner exceeds") +
-                           " the permissible dynamic deflections: at worst " +
-                           significant(worst->deflection / worst->permissible, 3) + " of the limit (" + worst->element +
-                           ", " + worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h."));
-  }
+  else
+    add_winner(c, w, feasible, &out);
+  for (const RankingConstraint& k : c.ranking.constraints) out.push_back(constraint_sentence(c, w, k, failed));
+  if (c.deflection_rule.active() && feasible > 0 && c.variants.front().result.ok())
+    out.push_back(deflection_sentence(c.variants.front().result, w));
   if (failed > 0) {
     for (const RankedVariant& v : c.variants)
       if (!v.result.ok()) {

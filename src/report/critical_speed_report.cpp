@@ -249,6 +249,95 @@ void write_markdown(std::ostream& out, const CriticalSpeedStudy& st) {
 
 // ---- HTML -----------------------------------------------------------------------------------
 
+// Up to the highest excitation frequency in the range (or the lowest mode, if higher):
+// natural frequencies no source reaches would squash the ones that matter. But no higher
+// than 1.3 times the highest natural frequency: a flat's sixth harmonic at 160 km/h reaches
+// 89 Hz and would press every mode and crossing of a 1–5 Hz wagon onto the axis.
+double campbell_top_frequency(const CriticalSpeedStudy& st) {
+  double f_top = 0.0, f_lowest = INFINITY, f_highest = 0.0;
+  for (const auto& src : st.scene.sources)
+    f_top = std::max(f_top, src->frequency_hz(st.scene.max_speed, src->harmonic_count()));
+  for (const Mode& m : st.modes.modes)
+    if (m.kind == ModeKind::oscillatory) f_lowest = std::min(f_lowest, m.frequency_hz), f_highest = std::max(f_highest, m.frequency_hz);
+  if (std::isfinite(f_lowest)) f_top = std::min(std::max(f_top, f_lowest), 1.3 * f_highest);
+  return f_top;
+}
+
+// Each source's harmonics as lines f = kV/Λ, the fundamental solid and labelled, the higher
+// harmonics dashed, all in the source's colour.
+void add_excitation_lines(const CriticalSpeedStudy& st, report::Chart* c) {
+  for (size_t s = 0; s < st.scene.sources.size(); ++s) {
+    const auto& src = *st.scene.sources[s];
+    for (int k = 1; k <= src.harmonic_count(); ++k) {
+      report::ChartSeries line;
+      line.label = k > 1 ? "" : source_label(st, static_cast<int>(s)) + (src.harmonic_count() == 1 ? "" : " (k = 1…" + std::to_string(src.harmonic_count()) + ")");
+      line.dashed = k > 1;
+      line.colour = static_cast<int>(s);  // every harmonic in its source's colour, as the legend shows
+      for (double V : {st.scene.min_speed, st.scene.max_speed}) {
+        line.x.push_back(V * kKmh);
+        line.y.push_back(src.frequency_hz(V, k));
+      }
+      c->series.push_back(line);
+    }
+  }
+}
+
+// Campbell diagram: excitation lines f = kV/Λ against the natural frequencies.
+report::Chart campbell_chart(const CriticalSpeedStudy& st) {
+  report::Chart c;
+  c.id = "campbell";
+  c.title = "Campbell diagram: excitation frequencies against speed";
+  c.x_label = "speed (km/h)";
+  c.y_label = "frequency (Hz)";
+  c.x_min = st.scene.min_speed * kKmh;
+  c.x_max = st.scene.max_speed * kKmh;
+  c.y_min = 0.0;
+  c.y_max = 1.1 * std::max(campbell_top_frequency(st), 1e-3);
+  for (const Mode& m : st.modes.modes)
+    if (m.kind == ModeKind::oscillatory && m.frequency_hz <= c.y_max)
+      c.lines.push_back({std::to_string(m.index) + " " + m.name + " " + fixed(m.frequency_hz, 2) + " Hz", m.frequency_hz, false});
+  add_excitation_lines(st, &c);
+  report::ChartSeries hits;
+  hits.label = "critical speeds";
+  hits.markers_only = true;
+  hits.colour = static_cast<int>(st.scene.sources.size());  // a colour no source line has
+  for (const auto& r : st.critical_speeds) {
+    hits.x.push_back(r.speed * kKmh);
+    hits.y.push_back(r.frequency_hz);
+  }
+  c.series.push_back(hits);
+  c.width = 900;
+  c.height = 420;
+  return c;
+}
+
+// One chart per output and quantity, all sources on it: amplitude on a log scale, with a
+// dotted vertical line at each unbounded speed. `k` numbers the chart (from 0).
+report::Chart amplitude_chart(const CriticalSpeedStudy& st, const std::string& label, ResponseQuantity quantity,
+                              size_t k) {
+  const Unit u = unit_of(st.system, label, quantity);
+  report::Chart c;
+  c.id = "curve-" + std::to_string(k + 1);
+  c.title = label + " " + to_string(quantity);
+  c.x_label = "speed (km/h)";
+  c.y_label = std::string(to_string(quantity)) + " amplitude (" + u.name + ")";
+  c.log_y = true;
+  c.x_min = st.scene.min_speed * kKmh;
+  c.x_max = st.scene.max_speed * kKmh;
+  for (const auto& curve : st.curves) {
+    if (curve.output != label || curve.quantity != quantity) continue;
+    report::ChartSeries s;
+    s.label = source_label(st, curve.source);
+    for (size_t i = 0; i < curve.speeds.size(); ++i) {
+      s.x.push_back(curve.speeds[i] * kKmh);
+      s.y.push_back(curve.unbounded[i] ? NAN : curve.amplitudes[i] * u.scale);
+      if (curve.unbounded[i]) c.lines.push_back({"", curve.speeds[i] * kKmh, true});
+    }
+    c.series.push_back(s);
+  }
+  return c;
+}
+
 void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
   const Vehicle& v = st.system.vehicle;
   report::write_html_head(out, "Critical speeds: " + v.name);
@@ -266,95 +355,21 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
     write_html_table(out, critical_speed_table(st));
     out << "<p class=note>" << html_escape(kCriticalSpeedNote) << "</p>\n";
   }
-
-  // Campbell diagram: excitation lines f = kV/Λ against the natural frequencies.
-  {
-    report::Chart c;
-    c.id = "campbell";
-    c.title = "Campbell diagram: excitation frequencies against speed";
-    c.x_label = "speed (km/h)";
-    c.y_label = "frequency (Hz)";
-    c.x_min = st.scene.min_speed * kKmh;
-    c.x_max = st.scene.max_speed * kKmh;
-    // Up to the highest excitation frequency in the range (or the lowest mode, if higher):
-    // natural frequencies no source reaches would squash the ones that matter. But no higher
-    // than 1.3 times the highest natural frequency: a flat's sixth harmonic at 160 km/h reaches
-    // 89 Hz and would press every mode and crossing of a 1–5 Hz wagon onto the axis.
-    double f_top = 0.0, f_lowest = INFINITY, f_highest = 0.0;
-    for (const auto& src : st.scene.sources)
-      f_top = std::max(f_top, src->frequency_hz(st.scene.max_speed, src->harmonic_count()));
-    for (const Mode& m : st.modes.modes)
-      if (m.kind == ModeKind::oscillatory) f_lowest = std::min(f_lowest, m.frequency_hz), f_highest = std::max(f_highest, m.frequency_hz);
-    if (std::isfinite(f_lowest)) f_top = std::min(std::max(f_top, f_lowest), 1.3 * f_highest);
-    c.y_min = 0.0;
-    c.y_max = 1.1 * std::max(f_top, 1e-3);
-    for (const Mode& m : st.modes.modes)
-      if (m.kind == ModeKind::oscillatory && m.frequency_hz <= c.y_max)
-        c.lines.push_back({std::to_string(m.index) + " " + m.name + " " + fixed(m.frequency_hz, 2) + " Hz", m.frequency_hz, false});
-    for (size_t s = 0; s < st.scene.sources.size(); ++s) {
-      const auto& src = *st.scene.sources[s];
-      for (int k = 1; k <= src.harmonic_count(); ++k) {
-        report::ChartSeries line;
-        line.label = k > 1 ? "" : source_label(st, static_cast<int>(s)) + (src.harmonic_count() == 1 ? "" : " (k = 1…" + std::to_string(src.harmonic_count()) + ")");
-        line.dashed = k > 1;
-        line.colour = static_cast<int>(s);  // every harmonic in its source's colour, as the legend shows
-        for (double V : {st.scene.min_speed, st.scene.max_speed}) {
-          line.x.push_back(V * kKmh);
-          line.y.push_back(src.frequency_hz(V, k));
-        }
-        c.series.push_back(line);
-      }
-    }
-    report::ChartSeries hits;
-    hits.label = "critical speeds";
-    hits.markers_only = true;
-    hits.colour = static_cast<int>(st.scene.sources.size());  // a colour no source line has
-    for (const auto& r : st.critical_speeds) {
-      hits.x.push_back(r.speed * kKmh);
-      hits.y.push_back(r.frequency_hz);
-    }
-    c.series.push_back(hits);
-    c.width = 900;
-    c.height = 420;
-    out << "<h2>Campbell diagram</h2>\n" << report::svg_chart(c)
-        << "<p class=note>Solid: the fundamental of each source; dashed: its higher harmonics. Dotted horizontal "
-           "lines: natural frequencies. Circles: the critical speeds of the table.</p>\n";
-  }
+  out << "<h2>Campbell diagram</h2>\n" << report::svg_chart(campbell_chart(st))
+      << "<p class=note>Solid: the fundamental of each source; dashed: its higher harmonics. Dotted horizontal "
+         "lines: natural frequencies. Circles: the critical speeds of the table.</p>\n";
 
   out << "<h2>Amplitude against speed</h2>\n<p class=note>"
       << (any_force_source(st) ? "Force sources: receptance times the source's force (∝ V²). " : "")
       << "Displacement sources: the source amplitude times the displacement transmissibility. Sum over the "
          "source's harmonics (the bound of the peak of their sum). Logarithmic scale; dotted vertical lines "
          "mark unbounded (undamped) resonances.</p>\n";
-  // One chart per output and quantity, all sources on it.
   std::vector<std::pair<std::string, ResponseQuantity>> outputs;
   for (const auto& c : st.curves)
     if (std::find(outputs.begin(), outputs.end(), std::make_pair(c.output, c.quantity)) == outputs.end())
       outputs.push_back({c.output, c.quantity});
-  for (size_t k = 0; k < outputs.size(); ++k) {
-    const auto& [label, quantity] = outputs[k];
-    const Unit u = unit_of(st.system, label, quantity);
-    report::Chart c;
-    c.id = "curve-" + std::to_string(k + 1);
-    c.title = label + " " + to_string(quantity);
-    c.x_label = "speed (km/h)";
-    c.y_label = std::string(to_string(quantity)) + " amplitude (" + u.name + ")";
-    c.log_y = true;
-    c.x_min = st.scene.min_speed * kKmh;
-    c.x_max = st.scene.max_speed * kKmh;
-    for (const auto& curve : st.curves) {
-      if (curve.output != label || curve.quantity != quantity) continue;
-      report::ChartSeries s;
-      s.label = source_label(st, curve.source);
-      for (size_t i = 0; i < curve.speeds.size(); ++i) {
-        s.x.push_back(curve.speeds[i] * kKmh);
-        s.y.push_back(curve.unbounded[i] ? NAN : curve.amplitudes[i] * u.scale);
-        if (curve.unbounded[i]) c.lines.push_back({"", curve.speeds[i] * kKmh, true});
-      }
-      c.series.push_back(s);
-    }
-    out << report::svg_chart(c);
-  }
+  for (size_t k = 0; k < outputs.size(); ++k)
+    out << report::svg_chart(amplitude_chart(st, outputs[k].first, outputs[k].second, k));
 
   out << "<h2>Peaks</h2>\n";
   write_html_table(out, curve_peak_table(st));

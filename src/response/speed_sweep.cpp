@@ -76,26 +76,43 @@ double phase_offset_deg(ResponseQuantity q) {
   return q == ResponseQuantity::velocity ? 90.0 : q == ResponseQuantity::acceleration ? 180.0 : 0.0;
 }
 
+// What every way of sweeping shares: the problem, and the source's separable load per harmonic.
+struct Sweep {
+  const LinearSystem& system;
+  const ModalResult& modes;
+  const ExcitationSource& source;
+  const std::vector<OutputRequest>& outputs;
+  const SpeedGrid& speeds;
+  std::vector<SeparableLoad> parts;  // harmonic k at k − 1
+  double reference_arg;              // arg of the input that phases refer to; NaN without input
+};
+
+// arg of the input s(ω)·input that phases refer to (s real: its sign turns the input by π);
+// NaN, and so no phase, where there is no input.
+double input_arg(double reference_arg, double scale) {
+  return scale == 0.0 ? kNaN : reference_arg + (scale < 0.0 ? kPi : 0.0);
+}
+
 // Whether an expansion of the response (`at_speed(k, dof, ω, s)`) matches the direct solve at
 // nine speeds spread over the sweep, every harmonic and output: to 1e-8 of the response's
 // largest entry. The expansion is exact in exact arithmetic; its round-off grows with the
 // conditioning of the eigenvectors, and this is where a bad case shows before it is used.
 template <typename AtSpeed>
-bool agrees_with_direct(const LinearSystem& system, const ModalResult& modes, const ExcitationSource& source,
-                        const std::vector<SeparableLoad>& parts, const std::vector<OutputRequest>& outputs,
-                        const std::vector<double>& speeds, const AtSpeed& at_speed) {
+bool agrees_with_direct(const Sweep& s, const AtSpeed& at_speed) {
+  const std::vector<double>& speeds = s.speeds.values();
   if (speeds.empty()) return true;
   for (int sample = 0; sample <= 8; ++sample) {
     const double speed = speeds[(speeds.size() - 1) * sample / 8];
-    for (int k = 1; k <= source.harmonic_count(); ++k) {
-      const SeparableLoad& p = parts[k - 1];
-      const double omega = kTwoPi * source.frequency_hz(speed, k);
-      const double scale = source.load_scale(omega, p.reference_omega);
+    for (int k = 1; k <= s.source.harmonic_count(); ++k) {
+      const SeparableLoad& p = s.parts[k - 1];
+      const double omega = kTwoPi * s.source.frequency_hz(speed, k);
+      const double scale = s.source.load_scale(omega, p.reference_omega);
       const HarmonicResponse direct = harmonic_response(
-          system, modes, scale * (p.stiffness_part + std::complex<double>(0.0, omega) * p.damping_part), omega / kTwoPi);
+          s.system, s.modes, scale * (p.stiffness_part + std::complex<double>(0.0, omega) * p.damping_part),
+          omega / kTwoPi);
       if (direct.unbounded) return false;
       const double size = direct.displacement.cwiseAbs().maxCoeff();
-      for (const OutputRequest& o : outputs)
+      for (const OutputRequest& o : s.outputs)
         if (!(std::abs(at_speed(k, o.dof, omega, scale) - direct.displacement(o.dof)) <= 1e-8 * size)) return false;
     }
   }
@@ -108,6 +125,325 @@ bool agrees_with_direct(const LinearSystem& system, const ModalResult& modes, co
 using Kernel = std::function<bool(const response::SweepBlock& b, double* resonant, bool ascending)>;
 using Prepare = std::function<Kernel(int harmonic, int dof)>;
 using response::kSweepBlock;
+
+// Each output DOF once: displacement, velocity and acceleration of one DOF share its
+// response, its unbounded speeds and its phase (one arg x per speed and DOF).
+struct OutputDofs {
+  std::vector<int> dofs;
+  std::vector<bool> phase;        // some output of this DOF wants its phase
+  std::vector<size_t> of_output;  // where each output's DOF is in `dofs`
+  bool any_phase = false;
+};
+
+OutputDofs output_dofs(const std::vector<OutputRequest>& outputs) {
+  OutputDofs d;
+  for (const OutputRequest& o : outputs)
+    if (std::find(d.dofs.begin(), d.dofs.end(), o.dof) == d.dofs.end()) d.dofs.push_back(o.dof);
+  for (const OutputRequest& o : outputs)
+    d.of_output.push_back(static_cast<size_t>(std::find(d.dofs.begin(), d.dofs.end(), o.dof) - d.dofs.begin()));
+  d.phase.assign(d.dofs.size(), false);
+  for (size_t o = 0; o < outputs.size(); ++o) d.phase[d.of_output[o]] = d.phase[d.of_output[o]] || outputs[o].phase;
+  d.any_phase = std::find(d.phase.begin(), d.phase.end(), true) != d.phase.end();
+  return d;
+}
+
+// Per block and DOF: Σ_k |x_k|·ω_k^p for p = 0, 1, 2 (displacement, velocity,
+// acceleration), arg x of harmonic 1 (rad), and the unbounded flags (0 or 1, as doubles so
+// that the loops mixing them with values vectorise).
+struct DofSums {
+  std::array<std::array<double, kSweepBlock>, 3> sum;
+  std::array<double, kSweepBlock> first_arg;
+  std::array<double, kSweepBlock> unbounded;
+  bool any_unbounded;  // in this block: most blocks have none, and skip the flag loops
+};
+
+// The arrays of one block of speeds, reused from block to block: ω, ω², s(ω), the response of
+// one harmonic and DOF, the arg of s(ω)·input (NaN: no input), and the kernels' flags.
+struct BlockWork {
+  alignas(64) std::array<double, kSweepBlock> w, w2, scale, re, im;
+  alignas(64) std::array<double, kSweepBlock> input_arg;
+  alignas(64) std::array<double, kSweepBlock> resonant{};  // all 0 between kernels
+  std::vector<DofSums> per_dof;
+};
+
+// What the block loop runs: the output DOFs, and per harmonic (k at k − 1) the kernel of each.
+struct BlockPlan {
+  OutputDofs dofs;
+  std::vector<std::vector<Kernel>> kernels;
+  bool ascending;
+};
+
+void clear_sums(std::vector<DofSums>& per_dof, int n) {
+  for (DofSums& d : per_dof) {
+    for (auto& sum : d.sum) std::fill_n(sum.begin(), n, 0.0);
+    std::fill_n(d.unbounded.begin(), n, 0.0);
+    d.any_unbounded = false;
+  }
+}
+
+// Adds harmonic k at the block of n speeds from `begin` to every DOF's sums; harmonic 1 also
+// gives the arguments that the phases refer to.
+void add_harmonic(const Sweep& s, const BlockPlan& plan, int k, int begin, int n, BlockWork& work) {
+  const SeparableLoad& p = s.parts[k - 1];
+  const double to_omega = kTwoPi * k / s.source.wavelength();
+  const double* at = s.speeds.values().data() + begin;
+  for (int v = 0; v < n; ++v) work.w[v] = at[v] * to_omega;
+  for (int v = 0; v < n; ++v) work.w2[v] = work.w[v] * work.w[v];
+  s.source.load_scales(work.w.data(), n, p.reference_omega, work.scale.data());
+  if (k == 1 && plan.dofs.any_phase) {
+    const double reference_arg = s.reference_arg;  // a local: the stores below cannot change it
+    for (int v = 0; v < n; ++v) work.input_arg[v] = input_arg(reference_arg, work.scale[v]);
+  }
+  const response::SweepBlock block{work.w.data(), work.w2.data(), work.scale.data(), work.re.data(), work.im.data(), n};
+  for (size_t d = 0; d < plan.dofs.dofs.size(); ++d) {
+    std::fill_n(work.re.begin(), n, 0.0);
+    std::fill_n(work.im.begin(), n, 0.0);
+    DofSums& out = work.per_dof[d];
+    if (plan.kernels[k - 1][d](block, work.resonant.data(), plan.ascending)) {
+      for (int v = 0; v < n; ++v) out.unbounded[v] = std::max(out.unbounded[v], work.resonant[v]);
+      std::fill_n(work.resonant.begin(), n, 0.0);
+      out.any_unbounded = true;
+    }
+    response::add_magnitudes(block, out.sum[0].data(), out.sum[1].data(), out.sum[2].data());
+    if (k == 1 && plan.dofs.phase[d]) response::arguments(work.re.data(), work.im.data(), n, out.first_arg.data());
+  }
+}
+
+// The block's sums, unbounded speeds and phases into each output's curve.
+void write_block(const std::vector<OutputRequest>& outputs, const BlockPlan& plan, const BlockWork& work, int begin,
+                 int n, std::vector<AmplitudeCurve>& curves) {
+  for (size_t o = 0; o < outputs.size(); ++o) {
+    const DofSums& d = work.per_dof[plan.dofs.of_output[o]];
+    const double* sum = d.sum[static_cast<int>(outputs[o].quantity)].data();
+    AmplitudeCurve& c = curves[o];
+    double* amplitudes = c.amplitudes.data() + begin;
+    std::copy_n(sum, n, amplitudes);
+    if (d.any_unbounded)
+      for (int v = 0; v < n; ++v)
+        if (d.unbounded[v] != 0.0) c.unbounded[begin + v] = true, amplitudes[v] = 0.0;
+    if (outputs[o].phase)
+      response::phases_deg(d.first_arg.data(), work.input_arg.data(), d.unbounded.data(),
+                           phase_offset_deg(outputs[o].quantity), n, c.phases_deg.data() + begin);
+  }
+}
+
+// Speeds in blocks small enough to stay in L1 cache, one pass per block, harmonic and output
+// DOF: `prepare(k, dof)` projects harmonic k's load on the modes once and returns the kernel
+// that adds the complex response of that DOF at a block of speeds; the sums over harmonics and
+// the phases are common. No array spans all speeds but the curves themselves: fresh 80 kB
+// work arrays per harmonic cost more in page faults and cache misses than the arithmetic.
+std::vector<AmplitudeCurve> sweep_in_blocks(const Sweep& s, std::vector<AmplitudeCurve> curves,
+                                            const Prepare& prepare) {
+  const int count = static_cast<int>(s.speeds.size());
+  BlockPlan plan;
+  plan.ascending = std::is_sorted(s.speeds.begin(), s.speeds.end());
+  for (double v : s.speeds)
+    if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument("amplitude curve: speeds must be positive");
+  plan.dofs = output_dofs(s.outputs);
+  plan.kernels.resize(s.source.harmonic_count());
+  for (int k = 1; k <= s.source.harmonic_count(); ++k)
+    for (int dof : plan.dofs.dofs) plan.kernels[k - 1].push_back(prepare(k, dof));
+  for (size_t o = 0; o < s.outputs.size(); ++o) {
+    curves[o].amplitudes.resize(count);
+    curves[o].unbounded.assign(count, false);  // set below where flagged: rare, and bits are slow to write
+    if (s.outputs[o].phase) curves[o].phases_deg.resize(count);
+  }
+  BlockWork work;
+  work.per_dof.resize(plan.dofs.dofs.size());
+  for (DofSums& d : work.per_dof) d.first_arg.fill(kNaN);
+  work.input_arg.fill(kNaN);  // no phase unless harmonic 1 sets it (a source could have none)
+  for (int begin = 0; begin < count; begin += kSweepBlock) {
+    const int n = std::min(kSweepBlock, count - begin);
+    clear_sums(work.per_dof, n);
+    for (int k = 1; k <= s.source.harmonic_count(); ++k) add_harmonic(s, plan, k, begin, n, work);
+    write_block(s.outputs, plan, work, begin, n, curves);
+  }
+  return curves;
+}
+
+// An undamped mode that moves the DOF: unbounded where ω² is within `tolerance` of λ and the
+// load drives it, |a + iωb| above `drive_floor`·(|Q_K| + ω|Q_C|), as the direct solve decides.
+struct Resonance {
+  double lambda, tolerance;
+  std::complex<double> a, b;
+  double drive_floor;
+};
+
+// The modes' terms of one harmonic's response at one DOF, x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/
+// (λ_j − ω² + iωc_j), and the resonances among them.
+struct ModalTerms {
+  std::vector<response::ModalTerm> terms;
+  std::vector<Resonance> resonances;
+};
+
+ModalTerms modal_terms(const ModalBasis& basis, const SeparableLoad& p, int dof) {
+  ModalTerms out;
+  for (size_t j = 0; j < basis.modes.size(); ++j) {
+    const Mode& mode = *basis.modes[j];
+    // A mode whose share of this DOF is at the eigensolver's round-off (below 1e-12 of its
+    // largest component: a pitch mode at the body's bounce in a symmetric car) adds noise,
+    // not response; skipping it changes the output by at most 1e-12 of that mode's own
+    // response at its largest DOF, and most outputs of a symmetric vehicle skip most modes.
+    const double at = mode.shape(dof), largest = mode.shape.cwiseAbs().maxCoeff();
+    if (std::abs(at) <= kRoundOffShare * largest) continue;
+    // Likewise a modal load at round-off (response::modal_force, the direct solve's test of
+    // whether a load drives a mode): a load on the bogies' pitch meets a bounce mode only
+    // through eigensolver noise, and that noise, summed, would be the response — with an
+    // arbitrary phase — where the exact response is 0.
+    const double shape_norm = mode.shape.norm();
+    const std::complex<double> a = response::modal_force(mode, p.stiffness_part) * at;
+    const std::complex<double> b = response::modal_force(mode, p.damping_part) * at;
+    if (a == 0.0 && b == 0.0) continue;  // the load does not reach this mode
+    const double c = basis.damping[j], lambda = mode.eigenvalue;
+    const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
+    const double tolerance = undamped ? kAtResonance * lambda : -1.0;
+    out.terms.push_back({a.real(), a.imag(), b.real(), b.imag(), lambda, c, tolerance, undamped});
+    if (undamped && std::abs(at) > 1e-9 * largest)
+      out.resonances.push_back({lambda, tolerance, a, b, 1e-12 * std::abs(at) * shape_norm});
+  }
+  return out;
+}
+
+// A massless DOF also follows its own load part: row `dof` of K_mm⁻¹ Q_m; 0 for a DOF with mass.
+std::complex<double> massless_follower(const ModalBasis& basis, const Eigen::VectorXcd& load_part, int dof) {
+  std::complex<double> x = 0.0;
+  for (size_t i = 0; i < basis.massless.size(); ++i) {
+    if (basis.massless[i] != dof) continue;
+    for (size_t c = 0; c < basis.massless.size(); ++c)
+      x += basis.massless_flexibility(i, c) * load_part(basis.massless[c]);
+  }
+  return x;
+}
+
+// 1 in `resonant` at the block's speeds where a resonance has no steady state; true if any.
+bool flag_resonances(const std::vector<Resonance>& resonances, double q_norm_k, double q_norm_c,
+                     const response::SweepBlock& b, double* resonant, bool ascending) {
+  bool flagged = false;
+  for (const Resonance& t : resonances) {
+    const double* w2 = b.w2;
+    const int first = ascending ? static_cast<int>(std::lower_bound(w2, w2 + b.count, t.lambda - t.tolerance) - w2) : 0;
+    for (int v = first; v < b.count && (!ascending || w2[v] <= t.lambda + t.tolerance); ++v)
+      if (std::abs(t.lambda - w2[v]) <= t.tolerance &&
+          std::abs(t.a + std::complex<double>(0.0, b.w[v]) * t.b) > t.drive_floor * (q_norm_k + b.w[v] * q_norm_c))
+        resonant[v] = 1.0, flagged = true;
+  }
+  return flagged;
+}
+
+// Modal superposition where it is exact: x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/(λ_j − ω² + iωc_j)
+// + s(ω)·static_o(ω).
+Kernel modal_kernel(const ModalBasis& basis, const SeparableLoad& p, int dof) {
+  const double q_norm_k = p.stiffness_part.norm(), q_norm_c = p.damping_part.norm();
+  ModalTerms modal = modal_terms(basis, p, dof);
+  const std::complex<double> sk = massless_follower(basis, p.stiffness_part, dof);
+  const std::complex<double> sc = massless_follower(basis, p.damping_part, dof);
+  return [terms = std::move(modal.terms), resonances = std::move(modal.resonances), sk, sc, q_norm_k, q_norm_c](
+             const response::SweepBlock& b, double* resonant, bool ascending) {
+    response::add_modal_terms(terms.data(), terms.size(), b);
+    const bool flagged = flag_resonances(resonances, q_norm_k, q_norm_c, b, resonant, ascending);
+    if (sk != 0.0 || sc != 0.0) response::add_static_term(sk.real(), sk.imag(), sc.real(), sc.imag(), b);
+    return flagged;
+  };
+}
+
+// The participations of Q_K and Q_C in each complex root, per harmonic (k at k − 1).
+struct RootLoads {
+  std::vector<Eigen::VectorXcd> stiffness, damping;
+};
+
+RootLoads root_loads(const response::StateSpaceModes& cm, const std::vector<SeparableLoad>& parts) {
+  RootLoads loads;
+  for (const SeparableLoad& p : parts) {
+    loads.stiffness.push_back(cm.projection * p.stiffness_part);
+    loads.damping.push_back(cm.projection * p.damping_part);
+  }
+  return loads;
+}
+
+// The complex modes' expansion of harmonic k's response at one DOF and ω, for the check.
+std::complex<double> expanded_response(const response::StateSpaceModes& cm, const RootLoads& loads, int k, int dof,
+                                       double omega, double scale) {
+  std::complex<double> x = 0.0;
+  const std::complex<double> iw(0.0, omega);
+  for (Eigen::Index r = 0; r < cm.roots.size(); ++r)
+    x += cm.shapes(dof, r) * (loads.stiffness[k - 1](r) + iw * loads.damping[k - 1](r)) / (iw - cm.roots(r));
+  return scale * x;
+}
+
+// The same expansion as a kernel: (a_r + iωb_r)/(iω − λ_r) per root, every root strictly
+// damped, so no division by 0.
+Kernel root_kernel(const response::StateSpaceModes& cm, const RootLoads& loads, int k, int dof) {
+  std::vector<response::RootTerm> terms;
+  for (Eigen::Index r = 0; r < cm.roots.size(); ++r) {
+    const std::complex<double> a = cm.shapes(dof, r) * loads.stiffness[k - 1](r);
+    const std::complex<double> b = cm.shapes(dof, r) * loads.damping[k - 1](r);
+    terms.push_back({a.real(), a.imag(), b.real(), b.imag(), -cm.roots(r).real(), cm.roots(r).imag()});
+  }
+  return [terms = std::move(terms)](const response::SweepBlock& b, double*, bool) {
+    response::add_root_terms(terms.data(), terms.size(), b);
+    return false;  // every root damped: bounded everywhere
+  };
+}
+
+double power(ResponseQuantity q, double omega) {
+  return q == ResponseQuantity::displacement ? 1.0 : q == ResponseQuantity::velocity ? omega : omega * omega;
+}
+
+// Harmonic k's response at one speed by a direct solve. Friction as equivalent viscous damping
+// also changes the input's velocity term: the load is rebuilt on the damped system.
+HarmonicResponse direct_response(const Sweep& s, int k, double speed, double omega, double scale,
+                                 bool equivalent_friction, double friction_reference_amplitude) {
+  if (equivalent_friction) {
+    const LinearSystem damped = with_equivalent_friction_damping(s.system, omega, friction_reference_amplitude);
+    const HarmonicLoad load = s.source.load(damped, speed, k);
+    return harmonic_response(damped, s.modes, generalized_load(damped, load), load.frequency_hz);
+  }
+  const SeparableLoad& p = s.parts[k - 1];
+  const std::complex<double> iw(0.0, omega);
+  return harmonic_response(s.system, s.modes, scale * (p.stiffness_part + iw * p.damping_part), omega / kTwoPi);
+}
+
+// The direct path: non-proportional damping, or friction as equivalent viscous damping.
+std::vector<AmplitudeCurve> direct_curves(const Sweep& s, std::vector<AmplitudeCurve> curves,
+                                          bool equivalent_friction, double friction_reference_amplitude) {
+  const std::vector<OutputRequest>& outputs = s.outputs;
+  std::vector<double> sum(outputs.size()), phase(outputs.size());
+  std::vector<bool> unbounded(outputs.size());
+  for (double speed : s.speeds) {
+    std::fill(sum.begin(), sum.end(), 0.0);
+    std::fill(phase.begin(), phase.end(), 0.0);
+    std::fill(unbounded.begin(), unbounded.end(), false);
+    for (int k = 1; k <= s.source.harmonic_count(); ++k) {
+      const double omega = kTwoPi * s.source.frequency_hz(speed, k);
+      const double scale = s.source.load_scale(omega, s.parts[k - 1].reference_omega);
+      const HarmonicResponse r =
+          direct_response(s, k, speed, omega, scale, equivalent_friction, friction_reference_amplitude);
+      for (size_t o = 0; o < outputs.size(); ++o) {
+        if (unbounded_at(r, s.modes, outputs[o].dof)) {
+          unbounded[o] = true;
+          continue;
+        }
+        const std::complex<double> x = r.displacement(outputs[o].dof);
+        sum[o] += std::abs(x) * power(outputs[o].quantity, omega);
+        if (k == 1 && outputs[o].phase)
+          phase[o] = response::phase_deg(response::fast_atan2(x.imag(), x.real()), input_arg(s.reference_arg, scale),
+                                         phase_offset_deg(outputs[o].quantity));
+      }
+    }
+    for (size_t o = 0; o < outputs.size(); ++o) {
+      curves[o].amplitudes.push_back(unbounded[o] ? 0.0 : sum[o]);
+      curves[o].unbounded.push_back(unbounded[o]);
+      if (outputs[o].phase) curves[o].phases_deg.push_back(unbounded[o] ? 0.0 : phase[o]);
+    }
+  }
+  return curves;
+}
+
+std::vector<SeparableLoad> separable_loads(const LinearSystem& system, const ExcitationSource& source) {
+  std::vector<SeparableLoad> parts;
+  for (int k = 1; k <= source.harmonic_count(); ++k) parts.push_back(source.separable_load(system, k));
+  return parts;
+}
 
 }  // namespace
 
@@ -143,247 +479,30 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
   }
   const bool equivalent_friction = friction_reference_amplitude > 0.0 && has_leaf_friction(system);
   const std::complex<double> input = phase_reference(system, source);
-  // arg of the input s(ω)·input that phases refer to (s real: its sign turns the input by π);
-  // NaN, and so no phase, where there is no input.
   const double reference_arg = input == 0.0 ? kNaN : std::arg(input);
-  auto input_arg_at = [&](double scale) { return scale == 0.0 ? kNaN : reference_arg + (scale < 0.0 ? kPi : 0.0); };
   const ModalBasis basis = modal_basis(system, modes);
-  std::vector<SeparableLoad> parts;
-  for (int k = 1; k <= source.harmonic_count(); ++k) parts.push_back(source.separable_load(system, k));
+  const Sweep sweep{system, modes, source, outputs, speeds, separable_loads(system, source), reference_arg};
 
-  auto power = [](ResponseQuantity q, double omega) {
-    return q == ResponseQuantity::displacement ? 1.0 : q == ResponseQuantity::velocity ? omega : omega * omega;
-  };
-
-  // Speeds in blocks small enough to stay in L1 cache, one pass per block, harmonic and output
-  // DOF: `prepare(k, dof)` projects harmonic k's load on the modes once and returns the kernel
-  // that adds the complex response of that DOF at a block of speeds; the sums over harmonics and
-  // the phases are common. No array spans all speeds but the curves themselves: fresh 80 kB
-  // work arrays per harmonic cost more in page faults and cache misses than the arithmetic.
-  auto vectorised = [&](const Prepare& prepare) {
-    const int count = static_cast<int>(speeds.size());
-    const bool ascending = std::is_sorted(speeds.begin(), speeds.end());
-    for (double v : speeds)
-      if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument("amplitude curve: speeds must be positive");
-    // Each output DOF once: displacement, velocity and acceleration of one DOF share its
-    // response, its unbounded speeds and its phase (one arg x per speed and DOF).
-    std::vector<int> dofs;
-    for (const OutputRequest& o : outputs)
-      if (std::find(dofs.begin(), dofs.end(), o.dof) == dofs.end()) dofs.push_back(o.dof);
-    auto slot = [&](int dof) { return static_cast<size_t>(std::find(dofs.begin(), dofs.end(), dof) - dofs.begin()); };
-    std::vector<bool> dof_phase(dofs.size());  // some output of this DOF wants its phase
-    for (const OutputRequest& o : outputs) dof_phase[slot(o.dof)] = dof_phase[slot(o.dof)] || o.phase;
-    const bool any_phase = std::find(dof_phase.begin(), dof_phase.end(), true) != dof_phase.end();
-    std::vector<std::vector<Kernel>> kernels(source.harmonic_count());
-    for (int k = 1; k <= source.harmonic_count(); ++k)
-      for (int dof : dofs) kernels[k - 1].push_back(prepare(k, dof));
-    for (size_t o = 0; o < outputs.size(); ++o) {
-      curves[o].amplitudes.resize(count);
-      curves[o].unbounded.assign(count, false);  // set below where flagged: rare, and bits are slow to write
-      if (outputs[o].phase) curves[o].phases_deg.resize(count);
-    }
-    // Per block and DOF: Σ_k |x_k|·ω_k^p for p = 0, 1, 2 (displacement, velocity,
-    // acceleration), arg x of harmonic 1 (rad), and the unbounded flags (0 or 1, as doubles so
-    // that the loops mixing them with values vectorise); arg of s(ω)·input (NaN: no input).
-    struct PerDof {
-      std::array<std::array<double, kSweepBlock>, 3> sum;
-      std::array<double, kSweepBlock> first_arg;
-      std::array<double, kSweepBlock> unbounded;
-      bool any_unbounded;  // in this block: most blocks have none, and skip the flag loops
-    };
-    std::vector<PerDof> per_dof(dofs.size());
-    for (PerDof& d : per_dof) d.first_arg.fill(kNaN);
-    alignas(64) std::array<double, kSweepBlock> w, w2, scale, re, im;
-    alignas(64) std::array<double, kSweepBlock> input_arg;
-    input_arg.fill(kNaN);  // no phase unless harmonic 1 sets it (a source could have none)
-    alignas(64) std::array<double, kSweepBlock> resonant{};  // all 0 between kernels
-    for (int begin = 0; begin < count; begin += kSweepBlock) {
-      const int n = std::min(kSweepBlock, count - begin);
-      for (PerDof& d : per_dof) {
-        for (auto& sum : d.sum) std::fill_n(sum.begin(), n, 0.0);
-        std::fill_n(d.unbounded.begin(), n, 0.0);
-        d.any_unbounded = false;
-      }
-      for (int k = 1; k <= source.harmonic_count(); ++k) {
-        const SeparableLoad& p = parts[k - 1];
-        const double to_omega = kTwoPi * k / source.wavelength();
-        const double* at = speeds.values().data() + begin;
-        for (int v = 0; v < n; ++v) w[v] = at[v] * to_omega;
-        for (int v = 0; v < n; ++v) w2[v] = w[v] * w[v];
-        source.load_scales(w.data(), n, p.reference_omega, scale.data());
-        if (k == 1 && any_phase)
-          for (int v = 0; v < n; ++v) input_arg[v] = input_arg_at(scale[v]);
-        const response::SweepBlock block{w.data(), w2.data(), scale.data(), re.data(), im.data(), n};
-        for (size_t d = 0; d < dofs.size(); ++d) {
-          std::fill_n(re.begin(), n, 0.0);
-          std::fill_n(im.begin(), n, 0.0);
-          PerDof& out = per_dof[d];
-          if (kernels[k - 1][d](block, resonant.data(), ascending)) {
-            for (int v = 0; v < n; ++v) out.unbounded[v] = std::max(out.unbounded[v], resonant[v]);
-            std::fill_n(resonant.begin(), n, 0.0);
-            out.any_unbounded = true;
-          }
-          response::add_magnitudes(block, out.sum[0].data(), out.sum[1].data(), out.sum[2].data());
-          if (k == 1 && dof_phase[d]) response::arguments(re.data(), im.data(), n, out.first_arg.data());
-        }
-      }
-      for (size_t o = 0; o < outputs.size(); ++o) {
-        const PerDof& d = per_dof[slot(outputs[o].dof)];
-        const double* sum = d.sum[static_cast<int>(outputs[o].quantity)].data();
-        AmplitudeCurve& c = curves[o];
-        double* amplitudes = c.amplitudes.data() + begin;
-        std::copy_n(sum, n, amplitudes);
-        if (d.any_unbounded)
-          for (int v = 0; v < n; ++v)
-            if (d.unbounded[v] != 0.0) c.unbounded[begin + v] = true, amplitudes[v] = 0.0;
-        if (outputs[o].phase)
-          response::phases_deg(d.first_arg.data(), input_arg.data(), d.unbounded.data(),
-                               phase_offset_deg(outputs[o].quantity), n, c.phases_deg.data() + begin);
-      }
-    }
-    return std::move(curves);  // a captured reference: a plain return would copy every curve
-  };
-
-  if (basis.exact && !equivalent_friction) {
-    // x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/(λ_j − ω² + iωc_j) + s(ω)·static_o(ω).
-    const int m = static_cast<int>(basis.modes.size());
-    // An undamped mode that moves the DOF: unbounded where ω² is within `tolerance` of λ and the
-    // load drives it, |a + iωb| above `drive_floor`·(|Q_K| + ω|Q_C|), as the direct solve decides.
-    struct Resonance {
-      double lambda, tolerance;
-      std::complex<double> a, b;
-      double drive_floor;
-    };
-    return vectorised([&](int k, int dof) -> Kernel {
-      const SeparableLoad& p = parts[k - 1];
-      const double q_norm_k = p.stiffness_part.norm(), q_norm_c = p.damping_part.norm();
-      std::vector<response::ModalTerm> terms;
-      std::vector<Resonance> resonances;
-      for (int j = 0; j < m; ++j) {
-        const Mode& mode = *basis.modes[j];
-        // A mode whose share of this DOF is at the eigensolver's round-off (below 1e-12 of its
-        // largest component: a pitch mode at the body's bounce in a symmetric car) adds noise,
-        // not response; skipping it changes the output by at most 1e-12 of that mode's own
-        // response at its largest DOF, and most outputs of a symmetric vehicle skip most modes.
-        const double at = mode.shape(dof), largest = mode.shape.cwiseAbs().maxCoeff();
-        if (std::abs(at) <= kRoundOffShare * largest) continue;
-        // Likewise a modal load at round-off (response::modal_force, the direct solve's test of
-        // whether a load drives a mode): a load on the bogies' pitch meets a bounce mode only
-        // through eigensolver noise, and that noise, summed, would be the response — with an
-        // arbitrary phase — where the exact response is 0.
-        const double shape_norm = mode.shape.norm();
-        const std::complex<double> a = response::modal_force(mode, p.stiffness_part) * at;
-        const std::complex<double> b = response::modal_force(mode, p.damping_part) * at;
-        if (a == 0.0 && b == 0.0) continue;  // the load does not reach this mode
-        const double c = basis.damping[j], lambda = mode.eigenvalue;
-        const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
-        const double tolerance = undamped ? kAtResonance * lambda : -1.0;
-        terms.push_back({a.real(), a.imag(), b.real(), b.imag(), lambda, c, tolerance, undamped});
-        if (undamped && std::abs(at) > 1e-9 * largest)
-          resonances.push_back({lambda, tolerance, a, b, 1e-12 * std::abs(at) * shape_norm});
-      }
-      // Massless DOFs also follow their own loads: K_mm⁻¹ Q_m(ω).
-      std::complex<double> sk = 0.0, sc = 0.0;
-      for (size_t i = 0; i < basis.massless.size(); ++i) {
-        if (basis.massless[i] != dof) continue;
-        for (size_t c = 0; c < basis.massless.size(); ++c) {
-          sk += basis.massless_flexibility(i, c) * p.stiffness_part(basis.massless[c]);
-          sc += basis.massless_flexibility(i, c) * p.damping_part(basis.massless[c]);
-        }
-      }
-      return [terms = std::move(terms), resonances = std::move(resonances), sk, sc, q_norm_k, q_norm_c](
-                 const response::SweepBlock& b, double* resonant, bool ascending) {
-        response::add_modal_terms(terms.data(), terms.size(), b);
-        bool flagged = false;
-        for (const Resonance& t : resonances) {
-          const double* w2 = b.w2;
-          const int first = ascending ? static_cast<int>(std::lower_bound(w2, w2 + b.count, t.lambda - t.tolerance) - w2) : 0;
-          for (int v = first; v < b.count && (!ascending || w2[v] <= t.lambda + t.tolerance); ++v)
-            if (std::abs(t.lambda - w2[v]) <= t.tolerance &&
-                std::abs(t.a + std::complex<double>(0.0, b.w[v]) * t.b) > t.drive_floor * (q_norm_k + b.w[v] * q_norm_c))
-              resonant[v] = 1.0, flagged = true;
-        }
-        if (sk != 0.0 || sc != 0.0) response::add_static_term(sk.real(), sk.imag(), sc.real(), sc.imag(), b);
-        return flagged;
-      };
-    });
-  }
+  if (basis.exact && !equivalent_friction)
+    return sweep_in_blocks(sweep, std::move(curves),
+                           [&](int k, int dof) { return modal_kernel(basis, sweep.parts[k - 1], dof); });
 
   // Discrete dampers (damping not proportional): the complex modes of the first-order form,
   // where they are trustworthy and agree with the direct solve at sample speeds; otherwise
-  // (and for friction as equivalent viscous damping) one direct solve per speed below.
+  // (and for friction as equivalent viscous damping) one direct solve per speed.
   if (!equivalent_friction && speeds.size() > kDirectUpTo) {
     if (const auto complex_modes = response::state_space_modes(system)) {
       const response::StateSpaceModes& cm = *complex_modes;
-      std::vector<Eigen::VectorXcd> on_roots_k, on_roots_c;  // participations of Q_K and Q_C per harmonic
-      for (const SeparableLoad& p : parts) {
-        on_roots_k.push_back(cm.projection * p.stiffness_part);
-        on_roots_c.push_back(cm.projection * p.damping_part);
-      }
+      const RootLoads loads = root_loads(cm, sweep.parts);
       auto at_speed = [&](int k, int dof, double omega, double scale) {
-        std::complex<double> x = 0.0;
-        const std::complex<double> iw(0.0, omega);
-        for (Eigen::Index r = 0; r < cm.roots.size(); ++r)
-          x += cm.shapes(dof, r) * (on_roots_k[k - 1](r) + iw * on_roots_c[k - 1](r)) / (iw - cm.roots(r));
-        return scale * x;
+        return expanded_response(cm, loads, k, dof, omega, scale);
       };
-      if (agrees_with_direct(system, modes, source, parts, outputs, speeds.values(), at_speed))
-        return vectorised([&](int k, int dof) -> Kernel {
-          // (a_r + iωb_r)/(iω − λ_r) per root: every root strictly damped, so no division by 0.
-          std::vector<response::RootTerm> terms;
-          for (Eigen::Index r = 0; r < cm.roots.size(); ++r) {
-            const std::complex<double> a = cm.shapes(dof, r) * on_roots_k[k - 1](r);
-            const std::complex<double> b = cm.shapes(dof, r) * on_roots_c[k - 1](r);
-            terms.push_back({a.real(), a.imag(), b.real(), b.imag(), -cm.roots(r).real(), cm.roots(r).imag()});
-          }
-          return [terms = std::move(terms)](const response::SweepBlock& b, double*, bool) {
-            response::add_root_terms(terms.data(), terms.size(), b);
-            return false;  // every root damped: bounded everywhere
-          };
-        });
+      if (agrees_with_direct(sweep, at_speed))
+        return sweep_in_blocks(sweep, std::move(curves),
+                               [&](int k, int dof) { return root_kernel(cm, loads, k, dof); });
     }
   }
-
-  // The direct path: non-proportional damping, or friction as equivalent viscous damping.
-  std::vector<double> sum(outputs.size()), phase(outputs.size());
-  std::vector<bool> unbounded(outputs.size());
-  for (double speed : speeds) {
-    std::fill(sum.begin(), sum.end(), 0.0);
-    std::fill(phase.begin(), phase.end(), 0.0);
-    std::fill(unbounded.begin(), unbounded.end(), false);
-    for (int k = 1; k <= source.harmonic_count(); ++k) {
-      const SeparableLoad& p = parts[k - 1];
-      const double omega = kTwoPi * source.frequency_hz(speed, k);
-      const double scale = source.load_scale(omega, p.reference_omega);
-      const std::complex<double> iw(0.0, omega);
-      HarmonicResponse r;
-      if (equivalent_friction) {
-        // The damper also changes the input's velocity term: rebuild the load on that system.
-        const LinearSystem damped = with_equivalent_friction_damping(system, omega, friction_reference_amplitude);
-        const HarmonicLoad load = source.load(damped, speed, k);
-        r = harmonic_response(damped, modes, generalized_load(damped, load), load.frequency_hz);
-      } else {
-        r = harmonic_response(system, modes, scale * (p.stiffness_part + iw * p.damping_part), omega / kTwoPi);
-      }
-      for (size_t o = 0; o < outputs.size(); ++o) {
-        if (unbounded_at(r, modes, outputs[o].dof)) {
-          unbounded[o] = true;
-          continue;
-        }
-        const std::complex<double> x = r.displacement(outputs[o].dof);
-        sum[o] += std::abs(x) * power(outputs[o].quantity, omega);
-        if (k == 1 && outputs[o].phase)
-          phase[o] = response::phase_deg(response::fast_atan2(x.imag(), x.real()), input_arg_at(scale),
-                                         phase_offset_deg(outputs[o].quantity));
-      }
-    }
-    for (size_t o = 0; o < outputs.size(); ++o) {
-      curves[o].amplitudes.push_back(unbounded[o] ? 0.0 : sum[o]);
-      curves[o].unbounded.push_back(unbounded[o]);
-      if (outputs[o].phase) curves[o].phases_deg.push_back(unbounded[o] ? 0.0 : phase[o]);
-    }
-  }
-  return curves;
+  return direct_curves(sweep, std::move(curves), equivalent_friction, friction_reference_amplitude);
 }
 
 }  // namespace railmodal

@@ -127,6 +127,169 @@ void next_state(const double* G, int R, int cols, const double* z, double* y) {
   if (i0 < R) rows_times<kRows>(G + i0, R, cols, z, y + i0);
 }
 
+// The sources as harmonics of the load, condensed onto the kept DOFs: F_r + Sᵀ F_m.
+std::vector<Harmonic> condensed_harmonics(const LinearSystem& system,
+                                          const std::vector<const ExcitationSource*>& sources, double speed,
+                                          const Partition& p, double h) {
+  const int r = static_cast<int>(p.kept.size()), m = static_cast<int>(p.massless.size());
+  std::vector<Harmonic> harmonics;
+  for (const ExcitationSource* source : sources)
+    for (int k = 1; k <= source->harmonic_count(); ++k) {
+      const HarmonicLoad load = source->load(system, speed, k);
+      const Eigen::VectorXcd Q = generalized_load(system, load);
+      if (Q.norm() == 0.0) continue;
+      Harmonic hk;
+      hk.retained.resize(r);
+      for (int i = 0; i < r; ++i) hk.retained(i) = Q(p.kept[i]);
+      hk.massless.resize(m);
+      for (int j = 0; j < m; ++j) hk.massless(j) = Q(p.massless[j]);
+      if (m > 0) hk.retained += p.S.transpose().cast<std::complex<double>>() * hk.massless;
+      hk.omega = kTwoPi * load.frequency_hz;
+      hk.turn = std::exp(std::complex<double>(0.0, hk.omega * h));
+      harmonics.push_back(hk);
+    }
+  return harmonics;
+}
+
+// The vector z = [s; 0…; Re p_1, Im p_1, …] that a step multiplies: the state s = (x_r, v_r)
+// padded with zeros to R rows, a multiple of kRows (see next_state), then the phase
+// p_k = e^{iω_k t} of each harmonic.
+struct StepVector {
+  int r = 0;  // retained DOFs
+  int R = 0;  // rows of the padded state
+  int H = 0;  // harmonics
+  int size() const { return R + 2 * H; }
+  int phase(int k) const { return R + 2 * k; }  // Re p_k, followed by Im p_k
+};
+
+// The whole step as one product. With p_k = e^{iω_k t} at the start of a step the load is
+// F = Σ Re(Q_k p_k) and at its end F⁺ = Σ Re(Q_k p_k e^{iω_k Δt}), so
+//   s⁺ = Φ s + (Γ0 − Γ1) F + Γ1 F⁺ = Φ s + Σ Re(W_k p_k),  W_k = (Γ0 − Γ1 + Γ1 e^{iω_k Δt}) Q_k,
+// and with z as above, s⁺ = G z, G = [Φ | Re W_1, −Im W_1 | …]: one product per step instead
+// of the loads and three products, the input folded into the transition once.
+Eigen::MatrixXd step_matrix(const Transition& T, const std::vector<Harmonic>& harmonics, const StepVector& z) {
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(z.R, z.size());
+  G.topLeftCorner(2 * z.r, 2 * z.r) = T.Phi;
+  for (int k = 0; k < z.H; ++k) {
+    const auto& hk = harmonics[k];
+    const Eigen::VectorXcd W = (T.Gamma0 - T.Gamma1).cast<std::complex<double>>() * hk.retained +
+                               T.Gamma1.cast<std::complex<double>>() * (hk.retained * hk.turn);
+    G.col(z.phase(k)).head(2 * z.r) = W.real();
+    G.col(z.phase(k) + 1).head(2 * z.r) = -W.imag();
+  }
+  return G;
+}
+
+Eigen::VectorXd initial_z(const LinearSystem& system, const SimulationOptions& options, const Partition& p,
+                          const StepVector& z) {
+  Eigen::VectorXd z0 = Eigen::VectorXd::Zero(z.size());
+  for (const auto& ic : options.initial) {
+    const int d = system.index_of(ic.dof);
+    if (d < 0) throw std::invalid_argument("simulation: initial condition on unknown DOF '" + ic.dof + "'");
+    const auto at = std::find(p.kept.begin(), p.kept.end(), d);
+    if (at == p.kept.end())
+      throw std::invalid_argument("simulation: '" + ic.dof + "' is massless; it follows the others statically");
+    z0(at - p.kept.begin()) = ic.displacement;
+    z0(z.r + (at - p.kept.begin())) = ic.velocity;
+  }
+  for (int k = 0; k < z.H; ++k) z0(z.phase(k)) = 1.0;  // p_k = 1 at t = 0
+  return z0;
+}
+
+// Static recovery of the massless DOFs, x_m = S x_r + P F_m and v_m = S v_r + P Ḟ_m, as
+// products on z too: F_m = Σ Re(Q_mk p_k), Ḟ_m = Σ Re(iω_k Q_mk p_k).
+struct MasslessRecovery {
+  Eigen::MatrixXd Rx, Rv;
+};
+
+MasslessRecovery massless_recovery(const Partition& p, const std::vector<Harmonic>& harmonics, const StepVector& z) {
+  const int m = static_cast<int>(p.massless.size());
+  MasslessRecovery rec{Eigen::MatrixXd::Zero(m, z.size()), Eigen::MatrixXd::Zero(m, z.size())};
+  if (m == 0) return rec;
+  rec.Rx.leftCols(z.r) = p.S;
+  rec.Rv.middleCols(z.r, z.r) = p.S;
+  for (int k = 0; k < z.H; ++k) {
+    const auto& hk = harmonics[k];
+    const Eigen::VectorXcd PQ = p.P.cast<std::complex<double>>() * hk.massless;
+    const Eigen::VectorXcd PdQ = PQ * std::complex<double>(0.0, hk.omega);
+    rec.Rx.col(z.phase(k)) = PQ.real();
+    rec.Rx.col(z.phase(k) + 1) = -PQ.imag();
+    rec.Rv.col(z.phase(k)) = PdQ.real();
+    rec.Rv.col(z.phase(k) + 1) = -PdQ.imag();
+  }
+  return rec;
+}
+
+// The output arrays for steps + 1 instants, with their times.
+TimeHistory empty_history(const LinearSystem& system, int steps, double h) {
+  const int n = system.size();
+  TimeHistory out;
+  for (const auto& d : system.dofs) out.labels.push_back(d.label);
+  out.time.resize(steps + 1);
+  for (int i = 0; i <= steps; ++i) out.time(i) = i * h;
+  out.displacement.resize(steps + 1, n);
+  out.velocity.resize(steps + 1, n);
+  advise_huge_pages(&out.displacement);
+  advise_huge_pages(&out.velocity);
+  return out;
+}
+
+// The phases advance by rotation, p ← p e^{iωΔt}; they are reset to e^{iωt} from t every
+// kResync steps so that the rounding of the rotations does not build up over long records.
+constexpr int kResync = 1024;
+
+void advance_phases(const std::vector<Harmonic>& harmonics, const StepVector& z, int i, double h, const double* prev,
+                    double* next) {
+  if (i % kResync == 0) {
+    for (int k = 0; k < z.H; ++k) {
+      const std::complex<double> pk = std::polar(1.0, harmonics[k].omega * (i * h));
+      next[z.phase(k)] = pk.real();
+      next[z.phase(k) + 1] = pk.imag();
+    }
+  } else {
+    for (int k = 0; k < z.H; ++k) {
+      const std::complex<double> pk =
+          std::complex<double>(prev[z.phase(k)], prev[z.phase(k) + 1]) * harmonics[k].turn;
+      next[z.phase(k)] = pk.real();
+      next[z.phase(k) + 1] = pk.imag();
+    }
+  }
+}
+
+// March in blocks of kBlock steps through a small buffer of z (one column per step, in
+// cache), then copy each block into the per-DOF columns of the output: the transposition
+// is done a cache-sized block at a time, and the loop itself allocates nothing.
+void march(const Eigen::MatrixXd& G, const MasslessRecovery& rec, const std::vector<Harmonic>& harmonics,
+           const Partition& p, const StepVector& z, const Eigen::VectorXd& z0, double h, TimeHistory& out) {
+  constexpr int kBlock = 128;
+  const int steps = static_cast<int>(out.time.size()) - 1;
+  const int r = z.r, m = static_cast<int>(p.massless.size());
+  Eigen::MatrixXd buffer(z.size(), kBlock);
+  Eigen::MatrixXd xm(m, kBlock), vm(m, kBlock);
+  buffer.col(0) = z0;
+  for (int first = 0; first <= steps; first += kBlock) {
+    const int count = std::min(kBlock, steps + 1 - first);
+    for (int c = (first == 0 ? 1 : 0); c < count; ++c) {
+      const auto prev = buffer.col(c == 0 ? kBlock - 1 : c - 1);
+      auto next = buffer.col(c);
+      next_state(G.data(), z.R, z.size(), prev.data(), next.data());
+      advance_phases(harmonics, z, first + c, h, prev.data(), next.data());
+    }
+    const auto block = buffer.leftCols(count);
+    for (int j = 0; j < r; ++j) {
+      out.displacement.col(p.kept[j]).segment(first, count) = block.row(j).transpose();
+      out.velocity.col(p.kept[j]).segment(first, count) = block.row(r + j).transpose();
+    }
+    if (m == 0) continue;
+    xm.leftCols(count).noalias() = rec.Rx * block;
+    vm.leftCols(count).noalias() = rec.Rv * block;
+    for (int j = 0; j < m; ++j) {
+      out.displacement.col(p.massless[j]).segment(first, count) = xm.row(j).head(count).transpose();
+      out.velocity.col(p.massless[j]).segment(first, count) = vm.row(j).head(count).transpose();
+    }
+  }
+}
+
 }  // namespace
 
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
@@ -145,130 +308,18 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
   const double h = options.time_step;
 
   const Partition p = partition(system);
-  const int r = static_cast<int>(p.kept.size());
-  const int m = static_cast<int>(p.massless.size());
   const Transition T = transition(p, h);
+  const std::vector<Harmonic> harmonics = condensed_harmonics(system, sources, options.speed, p, h);
+  StepVector z;
+  z.r = static_cast<int>(p.kept.size());
+  z.R = (2 * z.r + kRows - 1) / kRows * kRows;
+  z.H = static_cast<int>(harmonics.size());
+  const Eigen::MatrixXd G = step_matrix(T, harmonics, z);
+  const Eigen::VectorXd z0 = initial_z(system, options, p, z);
+  const MasslessRecovery recovery = massless_recovery(p, harmonics, z);
 
-  // The sources as harmonics of the load, condensed onto the kept DOFs: F_r + Sᵀ F_m.
-  std::vector<Harmonic> harmonics;
-  for (const ExcitationSource* source : sources)
-    for (int k = 1; k <= source->harmonic_count(); ++k) {
-      const HarmonicLoad load = source->load(system, options.speed, k);
-      const Eigen::VectorXcd Q = generalized_load(system, load);
-      if (Q.norm() == 0.0) continue;
-      Harmonic hk;
-      hk.retained.resize(r);
-      for (int i = 0; i < r; ++i) hk.retained(i) = Q(p.kept[i]);
-      hk.massless.resize(m);
-      for (int j = 0; j < m; ++j) hk.massless(j) = Q(p.massless[j]);
-      if (m > 0) hk.retained += p.S.transpose().cast<std::complex<double>>() * hk.massless;
-      hk.omega = kTwoPi * load.frequency_hz;
-      hk.turn = std::exp(std::complex<double>(0.0, hk.omega * h));
-      harmonics.push_back(hk);
-    }
-  const int H = static_cast<int>(harmonics.size());
-
-  // The whole step as one product. With p_k = e^{iω_k t} at the start of a step the load is
-  // F = Σ Re(Q_k p_k) and at its end F⁺ = Σ Re(Q_k p_k e^{iω_k Δt}), so
-  //   s⁺ = Φ s + (Γ0 − Γ1) F + Γ1 F⁺ = Φ s + Σ Re(W_k p_k),  W_k = (Γ0 − Γ1 + Γ1 e^{iω_k Δt}) Q_k,
-  // and with z = [s; Re p_1, Im p_1, …], s⁺ = G z, G = [Φ | Re W_1, −Im W_1 | …]: one product
-  // per step instead of the loads and three products, the input folded into the transition
-  // once. The state is padded with zeros to R rows, a multiple of kRows (see next_state).
-  const int R = (2 * r + kRows - 1) / kRows * kRows;
-  const int Z = R + 2 * H;
-  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(R, Z);
-  G.topLeftCorner(2 * r, 2 * r) = T.Phi;
-  for (int k = 0; k < H; ++k) {
-    const auto& hk = harmonics[k];
-    const Eigen::VectorXcd W = (T.Gamma0 - T.Gamma1).cast<std::complex<double>>() * hk.retained +
-                               T.Gamma1.cast<std::complex<double>>() * (hk.retained * hk.turn);
-    G.col(R + 2 * k).head(2 * r) = W.real();
-    G.col(R + 2 * k + 1).head(2 * r) = -W.imag();
-  }
-
-  Eigen::VectorXd z0 = Eigen::VectorXd::Zero(Z);
-  for (const auto& ic : options.initial) {
-    const int d = system.index_of(ic.dof);
-    if (d < 0) throw std::invalid_argument("simulation: initial condition on unknown DOF '" + ic.dof + "'");
-    const auto at = std::find(p.kept.begin(), p.kept.end(), d);
-    if (at == p.kept.end())
-      throw std::invalid_argument("simulation: '" + ic.dof + "' is massless; it follows the others statically");
-    z0(at - p.kept.begin()) = ic.displacement;
-    z0(r + (at - p.kept.begin())) = ic.velocity;
-  }
-  for (int k = 0; k < H; ++k) z0(R + 2 * k) = 1.0;  // p_k = 1 at t = 0
-
-  // Static recovery of the massless DOFs, x_m = S x_r + P F_m and v_m = S v_r + P Ḟ_m, as
-  // products on z too: F_m = Σ Re(Q_mk p_k), Ḟ_m = Σ Re(iω_k Q_mk p_k).
-  Eigen::MatrixXd Rx = Eigen::MatrixXd::Zero(m, Z), Rv = Eigen::MatrixXd::Zero(m, Z);
-  if (m > 0) {
-    Rx.leftCols(r) = p.S;
-    Rv.middleCols(r, r) = p.S;
-    for (int k = 0; k < H; ++k) {
-      const auto& hk = harmonics[k];
-      const Eigen::VectorXcd PQ = p.P.cast<std::complex<double>>() * hk.massless;
-      const Eigen::VectorXcd PdQ = PQ * std::complex<double>(0.0, hk.omega);
-      Rx.col(R + 2 * k) = PQ.real();
-      Rx.col(R + 2 * k + 1) = -PQ.imag();
-      Rv.col(R + 2 * k) = PdQ.real();
-      Rv.col(R + 2 * k + 1) = -PdQ.imag();
-    }
-  }
-
-  TimeHistory out;
-  for (const auto& d : system.dofs) out.labels.push_back(d.label);
-  out.time.resize(steps + 1);
-  for (int i = 0; i <= steps; ++i) out.time(i) = i * h;
-  out.displacement.resize(steps + 1, n);
-  out.velocity.resize(steps + 1, n);
-  advise_huge_pages(&out.displacement);
-  advise_huge_pages(&out.velocity);
-
-  // March in blocks of kBlock steps through a small buffer of z (one column per step, in
-  // cache), then copy each block into the per-DOF columns of the output: the transposition
-  // is done a cache-sized block at a time, and the loop itself allocates nothing.
-  constexpr int kBlock = 128;
-  // The phases advance by rotation, p ← p e^{iωΔt}; they are reset to e^{iωt} from t every
-  // kResync steps so that the rounding of the rotations does not build up over long records.
-  constexpr int kResync = 1024;
-  Eigen::MatrixXd buffer(Z, kBlock);
-  Eigen::MatrixXd xm(m, kBlock), vm(m, kBlock);
-  buffer.col(0) = z0;
-  for (int first = 0; first <= steps; first += kBlock) {
-    const int count = std::min(kBlock, steps + 1 - first);
-    for (int c = (first == 0 ? 1 : 0); c < count; ++c) {
-      const int i = first + c;
-      const auto prev = buffer.col(c == 0 ? kBlock - 1 : c - 1);
-      auto next = buffer.col(c);
-      next_state(G.data(), R, Z, prev.data(), next.data());
-      if (i % kResync == 0) {
-        for (int k = 0; k < H; ++k) {
-          const std::complex<double> pk = std::polar(1.0, harmonics[k].omega * (i * h));
-          next(R + 2 * k) = pk.real();
-          next(R + 2 * k + 1) = pk.imag();
-        }
-      } else {
-        for (int k = 0; k < H; ++k) {
-          const std::complex<double> pk =
-              std::complex<double>(prev(R + 2 * k), prev(R + 2 * k + 1)) * harmonics[k].turn;
-          next(R + 2 * k) = pk.real();
-          next(R + 2 * k + 1) = pk.imag();
-        }
-      }
-    }
-    const auto block = buffer.leftCols(count);
-    for (int j = 0; j < r; ++j) {
-      out.displacement.col(p.kept[j]).segment(first, count) = block.row(j).transpose();
-      out.velocity.col(p.kept[j]).segment(first, count) = block.row(r + j).transpose();
-    }
-    if (m == 0) continue;
-    xm.leftCols(count).noalias() = Rx * block;
-    vm.leftCols(count).noalias() = Rv * block;
-    for (int j = 0; j < m; ++j) {
-      out.displacement.col(p.massless[j]).segment(first, count) = xm.row(j).head(count).transpose();
-      out.velocity.col(p.massless[j]).segment(first, count) = vm.row(j).head(count).transpose();
-    }
-  }
+  TimeHistory out = empty_history(system, steps, h);
+  march(G, recovery, harmonics, p, z, z0, h, out);
   return out;
 }
 

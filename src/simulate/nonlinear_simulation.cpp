@@ -294,6 +294,221 @@ double error_norm(const Eigen::VectorXd& error, const Eigen::VectorXd& y0, const
   return worst;
 }
 
+// The harmonics of every source at the initial speed, and the loads the nonlinear elements
+// read their track inputs from (one per harmonic, also where the load is zero).
+struct SourceHarmonics {
+  std::vector<HarmonicLoad> loads;
+  std::vector<const ExcitationSource*> load_sources;
+  std::vector<Harmonic> harmonics;  // only those with a load
+};
+
+SourceHarmonics source_harmonics(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
+                                 double speed, const simulate::SpeedProfile& profile) {
+  SourceHarmonics out;
+  for (const ExcitationSource* source : sources)
+    for (int k = 1; k <= source->harmonic_count(); ++k) {
+      out.loads.push_back(source->load(system, speed, k));
+      out.load_sources.push_back(source);
+      const Eigen::VectorXcd Q = generalized_load(system, out.loads.back());
+      if (Q.norm() == 0.0) continue;
+      Harmonic h;
+      h.load = Q;
+      h.wavenumber = kTwoPi * out.loads.back().frequency_hz / speed;
+      h.source = source;
+      if (profile.acceleration != 0.0) h.parts = source->separable_load(system, k);
+      out.harmonics.push_back(std::move(h));
+    }
+  return out;
+}
+
+// y = (x, v) at t = 0 from the initial conditions.
+Eigen::VectorXd initial_state(const LinearSystem& system, const SimulationOptions& options) {
+  const int n = system.size();
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * n);
+  for (const auto& ic : options.initial) {
+    const int d = system.index_of(ic.dof);
+    if (d < 0) throw std::invalid_argument("simulation: initial condition on unknown DOF '" + ic.dof + "'");
+    y(d) = ic.displacement;
+    y(n + d) = ic.velocity;
+  }
+  return y;
+}
+
+// The slots whose event fires first in a step (within event_tolerance of each other), and when.
+struct FiredSlots {
+  double at = INFINITY;  // into the step
+  std::vector<int> slots;
+};
+
+// The integration: adaptive Dormand–Prince steps, each cut at the first located event, where
+// the model resolves the new regime. Writes the outputs, events and step count into `out`.
+class Integration {
+ public:
+  Integration(Model& model, const SimulationOptions& options, Eigen::VectorXd y, TimeHistory& out)
+      : model_(model), options_(options), n_(model.size()), y_(std::move(y)), h_(options.time_step), out_(out) {}
+
+  // At rest at t = 0 every friction element is a candidate for sticking.
+  void start_at_rest() {
+    std::vector<int> resting;
+    for (size_t i = 0; i < model_.elements().size(); ++i)
+      if (model_.elements()[i].friction > 0.0 &&
+          std::abs(model_.compression_rate(static_cast<int>(i), 0.0, y_.tail(n_))) <= options_.tolerance)
+        resting.push_back(static_cast<int>(i));
+    for (const auto& e : model_.resolve(0.0, &y_, resting))
+      if (e.kind != SimulationEvent::Kind::reversal) out_.events.push_back(e);
+    stamp(0);
+  }
+
+  void record(int i, double t) {
+    out_.time(i) = t;
+    out_.displacement.row(i) = y_.head(n_).transpose();
+    out_.velocity.row(i) = y_.tail(n_).transpose();
+  }
+
+  void advance_to(double target) {
+    while (t_ < target) {
+      const double hh = std::min(h_, target - t_);
+      if (hh < 1e-15 * std::max(1.0, target)) {
+        t_ = target;
+        break;
+      }
+      const auto step = step_from_here(hh);
+      const double err = error_norm(step.error, y_, step.y, options_.tolerance);
+      if (!step.y.allFinite()) throw NumericalError("simulation diverged at t = " + std::to_string(t_) + " s");
+      ++out_.steps_taken;
+      if (err > 1.0) {
+        h_ = hh * std::max(0.2, 0.9 * std::pow(err, -0.2));
+        if (h_ < 1e-14 * std::max(1.0, t_))
+          throw NumericalError("simulation: step size underflow at t = " + std::to_string(t_) + " s");
+        continue;
+      }
+      const std::vector<Slot> slots = model_.slots();
+      const FiredSlots fired = first_events(slots, hh, step.y);
+      if (fired.slots.empty()) {
+        y_ = step.y;
+        t_ = (hh == target - t_) ? target : t_ + hh;
+        h_ = hh * std::min(5.0, 0.9 * std::pow(std::max(err, 1e-10), -0.2));
+        just_fired_.assign(slots.size(), false);
+        continue;
+      }
+      fire(slots, fired);
+    }
+  }
+
+ private:
+  simulate::DormandPrinceStep step_from_here(double length) const {
+    const auto rhs = [this](double t, const Eigen::VectorXd& state, Eigen::VectorXd* dy) { model_.rhs(t, state, dy); };
+    return simulate::dormand_prince_step(rhs, t_, y_, length);
+  }
+
+  // Events: an event function that changes sign over the step (sliding: the compression
+  // rate against the sliding direction reaches zero; stuck: the holding force reaches
+  // ±φR_el; kink: the deflection crosses a corner of the curve).
+  FiredSlots first_events(const std::vector<Slot>& slots, double hh, const Eigen::VectorXd& y1) {
+    const std::vector<double> h0 = model_.slot_values(slots, t_, y_), h1 = model_.slot_values(slots, t_ + hh, y1);
+    if (just_fired_.size() != slots.size()) just_fired_.assign(slots.size(), false);
+    FiredSlots first;
+    for (size_t s = 0; s < slots.size(); ++s) {
+      const bool crossed = slots[s].kind == Slot::Kind::kink ? (h0[s] > 0.0) != (h1[s] > 0.0) && !just_fired_[s]
+                                                              : h1[s] < 0.0 && (h0[s] >= 0.0 || !just_fired_[s]);
+      if (!crossed) continue;
+      const double at = locate_zero(slots, s, hh, h0[s], h1[s]);
+      if (at < first.at - options_.event_tolerance) {
+        first.at = at;
+        first.slots.assign(1, static_cast<int>(s));
+      } else if (std::abs(at - first.at) <= options_.event_tolerance) {
+        first.slots.push_back(static_cast<int>(s));
+      }
+    }
+    return first;
+  }
+
+  // Illinois false position on the step length for slot s's zero; the root is bracketed by
+  // (lo, hi], and hi is returned.
+  double locate_zero(const std::vector<Slot>& slots, size_t s, double hh, double glo, double ghi) const {
+    double lo = 0.0, hi = hh;
+    if (slots[s].kind != Slot::Kind::kink && glo < 0.0) glo = 0.0;  // already past: fire at once
+    int side = 0;
+    while (hi - lo > options_.event_tolerance && glo != 0.0) {
+      double mid = (lo * ghi - hi * glo) / (ghi - glo);
+      if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+      const auto trial = step_from_here(mid);
+      const double g = model_.slot_values(slots, t_ + mid, trial.y)[s];
+      if ((g > 0.0) == (glo > 0.0)) {
+        lo = mid, glo = g;
+        if (side == -1) ghi *= 0.5;
+        side = -1;
+      } else {
+        hi = mid, ghi = g;
+        if (side == 1) glo *= 0.5;
+        side = 1;
+      }
+    }
+    return glo == 0.0 ? lo : hi;
+  }
+
+  // Moves to the event, records kinks, lets the model resolve the friction elements' new
+  // regime, and marks the slots whose zero is now behind.
+  void fire(const std::vector<Slot>& slots, const FiredSlots& fired) {
+    if (fired.at > 0.0) y_ = step_from_here(fired.at).y;
+    t_ += fired.at;
+    // A regime that cannot last a step (a zero that fires again at once) would stall time;
+    // say so instead of spinning.
+    events_here_ = fired.at > 0.0 ? 0 : events_here_ + 1;
+    if (events_here_ > 64)
+      throw NumericalError("simulation: friction events chatter at t = " + std::to_string(t_) +
+                           " s (no consistent stick/slip state); try a larger event_tolerance");
+    const size_t first_event = out_.events.size();
+    std::vector<int> candidates, releasing;
+    for (int s : fired.slots) {
+      if (slots[s].kind == Slot::Kind::kink) {
+        out_.events.push_back(event(t_, model_.elements()[slots[s].element].element, SimulationEvent::Kind::kink));
+        continue;
+      }
+      candidates.push_back(slots[s].element);
+      if (slots[s].kind == Slot::Kind::stuck) releasing.push_back(slots[s].element);
+    }
+    for (const auto& e : model_.resolve(t_, &y_, candidates, releasing)) out_.events.push_back(e);
+    stamp(first_event);
+    mark_just_fired(slots, fired.slots, candidates);
+  }
+
+  // The slots of the new regime whose zero is where the step now starts: the kinks that fired,
+  // and every slot of a friction element just resolved (its regime starts at its zero).
+  void mark_just_fired(const std::vector<Slot>& slots, const std::vector<int>& fired,
+                       const std::vector<int>& candidates) {
+    const std::vector<Slot> next = model_.slots();
+    just_fired_.assign(next.size(), false);
+    for (int s : fired)
+      for (size_t q = 0; q < next.size(); ++q)
+        if (next[q].element == slots[s].element && next[q].kind == Slot::Kind::kink &&
+            slots[s].kind == Slot::Kind::kink && next[q].kink == slots[s].kink)
+          just_fired_[q] = true;
+    for (size_t q = 0; q < next.size(); ++q)
+      if (next[q].kind != Slot::Kind::kink &&
+          std::find(candidates.begin(), candidates.end(), next[q].element) != candidates.end())
+        just_fired_[q] = true;
+  }
+
+  // Events carry the state they leave behind.
+  void stamp(size_t from) {
+    for (size_t e = from; e < out_.events.size(); ++e) {
+      out_.events[e].displacement = y_.head(n_);
+      out_.events[e].velocity = y_.tail(n_);
+    }
+  }
+
+  Model& model_;
+  const SimulationOptions& options_;
+  const int n_;
+  Eigen::VectorXd y_;
+  double t_ = 0.0;
+  double h_;
+  std::vector<bool> just_fired_;  // slots that fired at the start of this step: their zero is behind us
+  int events_here_ = 0;           // events in a row without time moving on
+  TimeHistory& out_;
+};
+
 }  // namespace
 
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
@@ -317,32 +532,11 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
   simulate::SpeedProfile profile;
   profile.initial = options.speed;
   if (options.final_speed > 0.0) profile.acceleration = (options.final_speed - options.speed) / options.duration;
-  std::vector<HarmonicLoad> loads;
-  std::vector<const ExcitationSource*> load_sources;
-  std::vector<Harmonic> harmonics;
-  for (const ExcitationSource* source : sources)
-    for (int k = 1; k <= source->harmonic_count(); ++k) {
-      loads.push_back(source->load(system, options.speed, k));
-      load_sources.push_back(source);
-      const Eigen::VectorXcd Q = generalized_load(system, loads.back());
-      if (Q.norm() == 0.0) continue;
-      Harmonic h;
-      h.load = Q;
-      h.wavenumber = kTwoPi * loads.back().frequency_hz / options.speed;
-      h.source = source;
-      if (profile.acceleration != 0.0) h.parts = source->separable_load(system, k);
-      harmonics.push_back(std::move(h));
-    }
-  Model model(system, harmonics, simulate::nonlinear_elements(system, loads, effects, load_sources, profile), profile,
-              effects.constant_friction);
-
-  Eigen::VectorXd y = Eigen::VectorXd::Zero(2 * n);
-  for (const auto& ic : options.initial) {
-    const int d = system.index_of(ic.dof);
-    if (d < 0) throw std::invalid_argument("simulation: initial condition on unknown DOF '" + ic.dof + "'");
-    y(d) = ic.displacement;
-    y(n + d) = ic.velocity;
-  }
+  SourceHarmonics excitation = source_harmonics(system, sources, options.speed, profile);
+  Model model(system, std::move(excitation.harmonics),
+              simulate::nonlinear_elements(system, excitation.loads, effects, excitation.load_sources, profile),
+              profile, effects.constant_friction);
+  Eigen::VectorXd y = initial_state(system, options);
 
   const int outputs = static_cast<int>(std::llround(options.duration / options.time_step));
   TimeHistory out;
@@ -350,134 +544,13 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
   out.time.resize(outputs + 1);
   out.displacement.resize(outputs + 1, n);
   out.velocity.resize(outputs + 1, n);
-  auto record = [&](int i, double t) {
-    out.time(i) = t;
-    out.displacement.row(i) = y.head(n).transpose();
-    out.velocity.row(i) = y.tail(n).transpose();
-  };
-
-  // Events carry the state they leave behind.
-  const auto stamp = [&](size_t from) {
-    for (size_t e = from; e < out.events.size(); ++e) {
-      out.events[e].displacement = y.head(n);
-      out.events[e].velocity = y.tail(n);
-    }
-  };
-
-  // At rest at t = 0 every friction element is a candidate for sticking.
-  const auto rhs = [&model](double t, const Eigen::VectorXd& state, Eigen::VectorXd* dy) { model.rhs(t, state, dy); };
-  {
-    std::vector<int> resting;
-    for (size_t i = 0; i < model.elements().size(); ++i)
-      if (model.elements()[i].friction > 0.0 &&
-          std::abs(model.compression_rate(static_cast<int>(i), 0.0, y.tail(n))) <= options.tolerance)
-        resting.push_back(static_cast<int>(i));
-    for (const auto& e : model.resolve(0.0, &y, resting))
-      if (e.kind != SimulationEvent::Kind::reversal) out.events.push_back(e);
-    stamp(0);
-  }
-  record(0, 0.0);
-
-  double t = 0.0;
-  double h = options.time_step;
-  std::vector<bool> just_fired;  // slots that fired at the start of this step: their zero is behind us
-  int events_here = 0;           // events in a row without time moving on
+  Integration integration(model, options, std::move(y), out);
+  integration.start_at_rest();
+  integration.record(0, 0.0);
   for (int i = 1; i <= outputs; ++i) {
     const double target = i * options.time_step;
-    while (t < target) {
-      const double hh = std::min(h, target - t);
-      if (hh < 1e-15 * std::max(1.0, target)) {
-        t = target;
-        break;
-      }
-      const auto step = simulate::dormand_prince_step(rhs, t, y, hh);
-      const double err = error_norm(step.error, y, step.y, options.tolerance);
-      if (!step.y.allFinite()) throw NumericalError("simulation diverged at t = " + std::to_string(t) + " s");
-      ++out.steps_taken;
-      if (err > 1.0) {
-        h = hh * std::max(0.2, 0.9 * std::pow(err, -0.2));
-        if (h < 1e-14 * std::max(1.0, t)) throw NumericalError("simulation: step size underflow at t = " + std::to_string(t) + " s");
-        continue;
-      }
-      // Events: an event function that changes sign over the step (sliding: the compression
-      // rate against the sliding direction reaches zero; stuck: the holding force reaches
-      // ±φR_el; kink: the deflection crosses a corner of the curve).
-      const std::vector<Slot> slots = model.slots();
-      const std::vector<double> h0 = model.slot_values(slots, t, y), h1 = model.slot_values(slots, t + hh, step.y);
-      if (just_fired.size() != slots.size()) just_fired.assign(slots.size(), false);
-      double first = INFINITY;
-      std::vector<int> fired;
-      for (size_t s = 0; s < slots.size(); ++s) {
-        const bool crossed = slots[s].kind == Slot::Kind::kink ? (h0[s] > 0.0) != (h1[s] > 0.0) && !just_fired[s]
-                                                                : h1[s] < 0.0 && (h0[s] >= 0.0 || !just_fired[s]);
-        if (!crossed) continue;
-        // Illinois false position on the step length; the root is bracketed by (lo, hi].
-        double lo = 0.0, hi = hh, glo = h0[s], ghi = h1[s];
-        if (slots[s].kind != Slot::Kind::kink && glo < 0.0) glo = 0.0;  // already past: fire at once
-        int side = 0;
-        while (hi - lo > options.event_tolerance && glo != 0.0) {
-          double mid = (lo * ghi - hi * glo) / (ghi - glo);
-          if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
-          const auto trial = simulate::dormand_prince_step(rhs, t, y, mid);
-          const double g = model.slot_values(slots, t + mid, trial.y)[s];
-          if ((g > 0.0) == (glo > 0.0)) {
-            lo = mid, glo = g;
-            if (side == -1) ghi *= 0.5;
-            side = -1;
-          } else {
-            hi = mid, ghi = g;
-            if (side == 1) glo *= 0.5;
-            side = 1;
-          }
-        }
-        if (glo == 0.0) hi = lo;
-        if (hi < first - options.event_tolerance) {
-          first = hi;
-          fired.assign(1, static_cast<int>(s));
-        } else if (std::abs(hi - first) <= options.event_tolerance) {
-          fired.push_back(static_cast<int>(s));
-        }
-      }
-      if (fired.empty()) {
-        y = step.y;
-        t = (hh == target - t) ? target : t + hh;
-        h = hh * std::min(5.0, 0.9 * std::pow(std::max(err, 1e-10), -0.2));
-        just_fired.assign(slots.size(), false);
-        continue;
-      }
-      if (first > 0.0) y = simulate::dormand_prince_step(rhs, t, y, first).y;
-      t += first;
-      // A regime that cannot last a step (a zero that fires again at once) would stall time;
-      // say so instead of spinning.
-      events_here = first > 0.0 ? 0 : events_here + 1;
-      if (events_here > 64)
-        throw NumericalError("simulation: friction events chatter at t = " + std::to_string(t) +
-                             " s (no consistent stick/slip state); try a larger event_tolerance");
-      const size_t first_event = out.events.size();
-      std::vector<int> candidates, releasing;
-      for (int s : fired) {
-        if (slots[s].kind == Slot::Kind::kink) {
-          out.events.push_back(event(t, model.elements()[slots[s].element].element, SimulationEvent::Kind::kink));
-          continue;
-        }
-        candidates.push_back(slots[s].element);
-        if (slots[s].kind == Slot::Kind::stuck) releasing.push_back(slots[s].element);
-      }
-      for (const auto& e : model.resolve(t, &y, candidates, releasing)) out.events.push_back(e);
-      stamp(first_event);
-      const std::vector<Slot> next = model.slots();
-      just_fired.assign(next.size(), false);
-      for (int s : fired)
-        for (size_t q = 0; q < next.size(); ++q)
-          if (next[q].element == slots[s].element && next[q].kind == Slot::Kind::kink && slots[s].kind == Slot::Kind::kink &&
-              next[q].kink == slots[s].kink)
-            just_fired[q] = true;
-      for (size_t q = 0; q < next.size(); ++q)  // a friction element's regime starts at its zero
-        if (next[q].kind != Slot::Kind::kink &&
-            std::find(candidates.begin(), candidates.end(), next[q].element) != candidates.end())
-          just_fired[q] = true;
-    }
-    record(i, target);
+    integration.advance_to(target);
+    integration.record(i, target);
   }
   return out;
 }

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -142,89 +143,105 @@ std::string dsaupd_failure(a_int info, a_int converged, int nev, int ncv, const 
   return s.str();
 }
 
-// One ARPACK run for the nev eigenvalues nearest σ, then a Rayleigh–Ritz step in the
-// subspace they span: λ from the projected K and M, not from σ + 1/ν, whose error grows as
-// the largest ν (a rigid-body mode near σ) dwarfs the others.
-Run run_arpack(const SparseMatrix& M, const SparseMatrix& K, const ShiftedInverse& op, int nev,
-               const ArpackOptions& o) {
+// ARPACK's Lanczos factorisation OP V = V T + r eₖᵀ once dsaupd has converged (V: n × ncv,
+// M-orthonormal, column-major in V; T tridiagonal, in workl at ipntr(5): subdiagonal in its
+// first column, diagonal in its second; r in resid).
+struct Lanczos {
+  a_int ncv = 0;
+  Eigen::VectorXd resid, V, workd, workl;
+  a_int iparam[11] = {}, ipntr[11] = {};
+};
+
+// One reverse-communication request of dsaupd; false when it asks for none (done or failed).
+bool serve_request(a_int ido, const SparseMatrix& M, const ShiftedInverse& op, Lanczos& l, a_int n) {
+  double* x = l.workd.data() + l.ipntr[0] - 1;
+  double* y = l.workd.data() + l.ipntr[1] - 1;
+  // In place and without temporaries: these run two or three times a Lanczos step.
+  if (ido == -1) {  // y = (K − σM)⁻¹ M x
+    Eigen::Map<Eigen::VectorXd>(y, n).noalias() = M * Eigen::Map<const Eigen::VectorXd>(x, n);
+    op.solve_in_place(y);
+  } else if (ido == 1) {  // M x is already at ipntr(3)
+    std::copy_n(l.workd.data() + l.ipntr[2] - 1, n, y);
+    op.solve_in_place(y);
+  } else if (ido == 2) {  // y = M x
+    Eigen::Map<Eigen::VectorXd>(y, n).noalias() = M * Eigen::Map<const Eigen::VectorXd>(x, n);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// dsaupd until the nev largest ν of OP have converged.
+Lanczos lanczos(const SparseMatrix& M, const ShiftedInverse& op, int nev, const ArpackOptions& o) {
   const a_int n = static_cast<a_int>(M.rows());
-  a_int ncv = o.subspace_size > 0 ? o.subspace_size : std::max(2 * nev + 1, 20);
-  ncv = std::clamp<a_int>(ncv, nev + 1, n);
-  const a_int lworkl = ncv * (ncv + 8);
+  Lanczos l;
+  l.ncv = o.subspace_size > 0 ? o.subspace_size : std::max(2 * nev + 1, 20);
+  l.ncv = std::clamp<a_int>(l.ncv, nev + 1, n);
+  const a_int lworkl = l.ncv * (l.ncv + 8);
   // A fixed pseudo-random start: the same answer on every run.
-  Eigen::VectorXd resid(n);
+  l.resid.resize(n);
   std::mt19937 random(20240601);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  for (a_int i = 0; i < n; ++i) resid(i) = uniform(random);
-  Eigen::VectorXd V(static_cast<Eigen::Index>(n) * ncv), workd(3 * static_cast<Eigen::Index>(n)), workl(lworkl);
+  for (a_int i = 0; i < n; ++i) l.resid(i) = uniform(random);
+  l.V.resize(static_cast<Eigen::Index>(n) * l.ncv);
+  l.workd.resize(3 * static_cast<Eigen::Index>(n));
+  l.workl.resize(lworkl);
   // tol 0 asks for machine precision. dsaupd puts dlamch('EpsMach') in its place only on its
   // first call, in its argument, which the C binding takes by value: every later call, where
   // the convergence test is made, would see 0 again and demand error bounds of exactly 0
   // (115 solves where machine precision takes 81 on the 10⁵-DOF train).
   const double tol = o.tolerance > 0.0 ? o.tolerance : kMachinePrecision;
-  a_int iparam[11] = {}, ipntr[11] = {};
-  iparam[0] = 1;                // exact shifts
-  iparam[2] = o.max_iterations;  // restarts allowed
-  iparam[6] = 3;                // mode 3: shift-invert, B = M
-  a_int ido = 0, info = 1;      // info = 1: resid holds the start vector
-
-  std::lock_guard<std::mutex> lock(arpack_mutex);
-  for (;;) {
-    dsaupd_c(&ido, "G", n, "LM", nev, tol, resid.data(), ncv, V.data(), n, iparam, ipntr, workd.data(),
-             workl.data(), lworkl, &info);
-    double* x = workd.data() + ipntr[0] - 1;
-    double* y = workd.data() + ipntr[1] - 1;
-    // In place and without temporaries: these run two or three times a Lanczos step.
-    if (ido == -1) {  // y = (K − σM)⁻¹ M x
-      Eigen::Map<Eigen::VectorXd>(y, n).noalias() = M * Eigen::Map<const Eigen::VectorXd>(x, n);
-      op.solve_in_place(y);
-    } else if (ido == 1) {  // M x is already at ipntr(3)
-      std::copy_n(workd.data() + ipntr[2] - 1, n, y);
-      op.solve_in_place(y);
-    } else if (ido == 2) {  // y = M x
-      Eigen::Map<Eigen::VectorXd>(y, n).noalias() = M * Eigen::Map<const Eigen::VectorXd>(x, n);
-    } else {
-      break;
-    }
+  l.iparam[0] = 1;                 // exact shifts
+  l.iparam[2] = o.max_iterations;  // restarts allowed
+  l.iparam[6] = 3;                 // mode 3: shift-invert, B = M
+  a_int ido = 0, info = 1;         // info = 1: resid holds the start vector
+  {
+    std::lock_guard<std::mutex> lock(arpack_mutex);
+    do {
+      dsaupd_c(&ido, "G", n, "LM", nev, tol, l.resid.data(), l.ncv, l.V.data(), n, l.iparam, l.ipntr,
+               l.workd.data(), l.workl.data(), lworkl, &info);
+    } while (serve_request(ido, M, op, l, n));
   }
   if (info < 0 && info != -8 && info != -9999)
     throw std::logic_error("ARPACK dsaupd rejected its arguments: info = " + std::to_string(info));
   // Never a partial answer: fewer converged Ritz values than asked is a failure.
-  if (info != 0 || iparam[4] < nev) throw NumericalError(dsaupd_failure(info == 0 ? 1 : info, iparam[4], nev, ncv, o));
+  if (info != 0 || l.iparam[4] < nev)
+    throw NumericalError(dsaupd_failure(info == 0 ? 1 : info, l.iparam[4], nev, l.ncv, o));
+  return l;
+}
 
-  // The Ritz vectors, as dseupd computes them but with one matrix product: ARPACK leaves the
-  // Lanczos factorisation OP V = V T + r eₖᵀ (V: n × ncv, M-orthonormal; T tridiagonal, in
-  // workl at ipntr(5): subdiagonal in its first column, diagonal in its second; r in resid).
-  // For the nev eigenpairs (θ, s) of T largest in |θ|, z = V s + r (eₖᵀs)/θ = OP V s / θ:
-  // dseupd's purification, which keeps z in the range of OP (no component a massless DOF
-  // could hide). dseupd gets V s by applying nev Householder reflectors to V one at a time,
-  // 0.11 s of reference-BLAS vector operations at 10⁵ DOFs; V · S takes 0.03 s.
+// The Ritz vectors, as dseupd computes them but with one matrix product. For the nev
+// eigenpairs (θ, s) of T largest in |θ|, z = V s + r (eₖᵀs)/θ = OP V s / θ: dseupd's
+// purification, which keeps z in the range of OP (no component a massless DOF could hide).
+// dseupd gets V s by applying nev Householder reflectors to V one at a time, 0.11 s of
+// reference-BLAS vector operations at 10⁵ DOFs; V · S takes 0.03 s.
+Eigen::MatrixXd ritz_vectors(const Lanczos& l, int nev) {
+  const a_int n = static_cast<a_int>(l.resid.size()), ncv = l.ncv;
   Eigen::MatrixXd Z(n, nev);
-  {
-    const double* h = workl.data() + ipntr[4] - 1;
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> tridiagonal;
-    tridiagonal.computeFromTridiagonal(Eigen::Map<const Eigen::VectorXd>(h + ncv, ncv),
-                                       Eigen::Map<const Eigen::VectorXd>(h + 1, ncv - 1), Eigen::ComputeEigenvectors);
-    if (tridiagonal.info() != Eigen::Success)
-      throw NumericalError("the eigenvalues of ARPACK's Lanczos tridiagonal matrix did not converge");
-    const Eigen::VectorXd& theta = tridiagonal.eigenvalues();
-    std::vector<Eigen::Index> order(ncv);
-    for (Eigen::Index i = 0; i < ncv; ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [&theta](Eigen::Index a, Eigen::Index b) { return std::abs(theta(a)) > std::abs(theta(b)); });
-    Eigen::MatrixXd S(ncv, nev);
-    Eigen::VectorXd w(nev);
-    for (int k = 0; k < nev; ++k) {
-      S.col(k) = tridiagonal.eigenvectors().col(order[k]);
-      w(k) = S(ncv - 1, k) / theta(order[k]);
-    }
-    Z.noalias() = Eigen::Map<const Eigen::MatrixXd>(V.data(), n, ncv) * S;
-    Z.noalias() += resid * w.transpose();
+  const double* h = l.workl.data() + l.ipntr[4] - 1;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> tridiagonal;
+  tridiagonal.computeFromTridiagonal(Eigen::Map<const Eigen::VectorXd>(h + ncv, ncv),
+                                     Eigen::Map<const Eigen::VectorXd>(h + 1, ncv - 1), Eigen::ComputeEigenvectors);
+  if (tridiagonal.info() != Eigen::Success)
+    throw NumericalError("the eigenvalues of ARPACK's Lanczos tridiagonal matrix did not converge");
+  const Eigen::VectorXd& theta = tridiagonal.eigenvalues();
+  std::vector<Eigen::Index> order(ncv);
+  for (Eigen::Index i = 0; i < ncv; ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&theta](Eigen::Index a, Eigen::Index b) { return std::abs(theta(a)) > std::abs(theta(b)); });
+  Eigen::MatrixXd S(ncv, nev);
+  Eigen::VectorXd w(nev);
+  for (int k = 0; k < nev; ++k) {
+    S.col(k) = tridiagonal.eigenvectors().col(order[k]);
+    w(k) = S(ncv - 1, k) / theta(order[k]);
   }
-  V = Eigen::VectorXd();  // the Lanczos basis (n·ncv) is not needed any more
-  workd = Eigen::VectorXd();
+  Z.noalias() = Eigen::Map<const Eigen::MatrixXd>(l.V.data(), n, ncv) * S;
+  Z.noalias() += l.resid * w.transpose();
+  return Z;
+}
 
-  // Rayleigh–Ritz: (ZᵀKZ) y = λ (ZᵀMZ) y; φ = Z y is M-orthonormal.
+// Rayleigh–Ritz: (ZᵀKZ) y = λ (ZᵀMZ) y; φ = Z y is M-orthonormal.
+void rayleigh_ritz(const SparseMatrix& M, const SparseMatrix& K, const Eigen::MatrixXd& Z, Run& run) {
   Eigen::MatrixXd A, B;
   {
     const Eigen::MatrixXd KZ = K * Z;  // one n × nev product at a time
@@ -239,12 +256,25 @@ Run run_arpack(const SparseMatrix& M, const SparseMatrix& K, const ShiftedInvers
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> rr(A, B);
   if (rr.info() != Eigen::Success)
     throw NumericalError("the Ritz vectors ARPACK returned are not independent in the mass metric");
-  Run run;
   run.values = rr.eigenvalues();
   run.vectors.noalias() = Z * rr.eigenvectors();
-  run.ncv = ncv;
-  run.restarts = iparam[2];
-  run.operations = iparam[8];
+}
+
+// One ARPACK run for the nev eigenvalues nearest σ, then a Rayleigh–Ritz step in the
+// subspace they span: λ from the projected K and M, not from σ + 1/ν, whose error grows as
+// the largest ν (a rigid-body mode near σ) dwarfs the others.
+Run run_arpack(const SparseMatrix& M, const SparseMatrix& K, const ShiftedInverse& op, int nev,
+               const ArpackOptions& o) {
+  Run run;
+  Eigen::MatrixXd Z;
+  {  // the Lanczos basis (n·ncv) is not needed once Z is formed
+    const Lanczos l = lanczos(M, op, nev, o);
+    Z = ritz_vectors(l, nev);
+    run.ncv = l.ncv;
+    run.restarts = l.iparam[2];
+    run.operations = l.iparam[8];
+  }
+  rayleigh_ritz(M, K, Z, run);
   return run;
 }
 
@@ -262,23 +292,174 @@ std::string shift_text(double sigma) {
   return s.str();
 }
 
+// A massless DOF needs a restraint: its row of K − σM is then its row of K.
+void check_massless_restrained(const SparseMatrix& K, const std::vector<int>& massless,
+                               const std::vector<std::string>& labels) {
+  if (massless.empty()) return;
+  std::vector<bool> stiff(K.rows(), false);
+  for (int j = 0; j < K.outerSize(); ++j)
+    for (SparseMatrix::InnerIterator it(K, j); it; ++it)
+      if (it.value() != 0.0) stiff[it.row()] = true;
+  for (int s : massless)
+    if (!stiff[s])
+      throw NumericalError("degree of freedom '" + labels[s] +
+                           "' has neither mass nor a restraint; give it inertia or hold it");
+}
+
+// The search for the lowest modes above the shift σ: ARPACK runs, each asking for a few more
+// modes than wanted, until the modes kept end where a cluster of repeated eigenvalues ends and
+// their count agrees with the inertia of K − μM.
+class ModeSearch {
+ public:
+  ModeSearch(const SparseMatrix& M, const SparseMatrix& K, const ModalOptions& options, int wanted, int most)
+      : M_(M), K_(K), options_(options), o_(options.arpack), wanted_(wanted), most_(most),
+        automatic_shift_(std::isnan(o_.shift)), scale_(spectrum_scale(M, K)),
+        sigma_(automatic_shift_ ? -kShiftFraction * scale_ : o_.shift),
+        extra_(std::max(2, wanted / 10)) {}  // a few more than asked, so that a cluster cut at N shows where it ends
+
+  Eigenpairs solve(Eigenpairs result) {
+    for (int attempt = 0;; ++attempt) {
+      if (!factored_) factor_at_shift();
+      const int nev = std::min(wanted_ + extra_, most_);
+      Run run = run_arpack(M_, K_, op_, nev, o_);
+      record(run, nev, result.summary);
+      if (automatic_shift_ && missed_unstable(run.values)) {
+        if (attempt >= 12) throw NumericalError("ARPACK: could not place the shift below the unstable modes");
+        move_below(run.values);
+        continue;
+      }
+      Eigen::VectorXd values = std::move(run.values);
+      Eigen::MatrixXd vectors = std::move(run.vectors);
+      if (!automatic_shift_) drop_below_shift(values, vectors);
+      const int available = static_cast<int>(values.size());
+      if (available <= wanted_ && nev < most_) {  // one more than N shows whether a cluster goes on
+        extra_ *= 2;
+        continue;
+      }
+      if (available < wanted_)
+        throw NumericalError("ARPACK: only " + std::to_string(available) + " modes lie above the shift σ = " +
+                             shift_text(sigma_) + " 1/s², not " + std::to_string(wanted_));
+      result.scale = std::max(scale_, values.cwiseAbs().maxCoeff());
+      const int end = cluster_end(values, wanted_, options_.zero_tolerance * result.scale);
+      result.summary.count_checked = false;
+      if (end < available && op_.negative_pivots() >= 0 && !count_agrees(values, end, result.summary)) continue;
+      if (end == available && nev == most_ && op_.negative_pivots() >= 0)
+        check_cluster_is_whole(values, end, result.scale);
+      if (end < available || nev == most_) {
+        values.conservativeResize(end);
+        vectors.conservativeResize(Eigen::NoChange, end);
+        result.values = std::move(values);
+        result.vectors = std::move(vectors);
+        return result;
+      }
+      extra_ *= 2;  // the cluster reaches the last Ritz value found: look further
+    }
+  }
+
+ private:
+  // σ an eigenvalue to working precision: an automatic σ moves, a given one is an error.
+  void factor_at_shift() {
+    for (int move = 0; !op_.factor(K_ - sigma_ * M_); ++move) {
+      if (!automatic_shift_ || move == 8)
+        throw NumericalError("K − σM is singular at σ = " + shift_text(sigma_) +
+                             " 1/s² (σ is an eigenvalue); choose another shift");
+      sigma_ *= 1.7;
+    }
+    factored_ = true;
+  }
+
+  void record(const Run& run, int nev, SolverSummary& summary) const {
+    summary.runs += 1;
+    summary.solver = ModalSolver::arpack;
+    summary.shift = sigma_;
+    summary.factorisation = op_.name();
+    summary.requested = nev;
+    summary.subspace_size = run.ncv;
+    summary.restarts = run.restarts;
+    summary.operator_applications += run.operations;
+  }
+
+  // Unstable modes below σ that were missed: the inertia counts more eigenvalues below σ than
+  // were found.
+  bool missed_unstable(const Eigen::VectorXd& values) const {
+    return op_.negative_pivots() > static_cast<int>((values.array() < sigma_).count());
+  }
+
+  // The nev found are the nearest σ, within r of it, so the missed ones lie below σ − r.
+  void move_below(const Eigen::VectorXd& values) {
+    const double r = (values.array() - sigma_).abs().maxCoeff();
+    sigma_ = std::min(10.0 * sigma_, sigma_ - 2.0 * r);
+    factored_ = false;
+  }
+
+  // The modes to answer from: every one found for an automatic σ (the search put σ below all
+  // that were missed), those above a given σ.
+  void drop_below_shift(Eigen::VectorXd& values, Eigen::MatrixXd& vectors) const {
+    const int below_sigma = static_cast<int>((values.array() < sigma_).count());  // ascending: the first ones
+    values = Eigen::VectorXd(values.tail(values.size() - below_sigma));
+    vectors = Eigen::MatrixXd(vectors.rightCols(vectors.cols() - below_sigma));
+  }
+
+  // Eigenvalues of (K, M) below μ, by the negative pivots of K − μM less those below a given
+  // σ; none where the factorisation does not count them.
+  std::optional<int> eigenvalues_below(double mu) const {
+    const int skipped = automatic_shift_ ? 0 : op_.negative_pivots();
+    ShiftedInverse check;
+    check.use_ordering_of(op_);
+    if (!check.factor(K_ - mu * M_) || check.negative_pivots() < 0) return std::nullopt;
+    return check.negative_pivots() - skipped;
+  }
+
+  // The count check: by Sylvester's law, K − μM with μ between the last mode kept and the
+  // next one found has as many negative pivots as there are eigenvalues below μ. More than
+  // were found means Lanczos skipped one (a copy of a repeated frequency, say): false, to look
+  // again with a larger subspace; a failure rather than an answer with a part of a cluster.
+  bool count_agrees(const Eigen::VectorXd& values, int end, SolverSummary& summary) {
+    const double mu = 0.5 * (values(end - 1) + values(end));
+    const std::optional<int> exist = eigenvalues_below(mu);
+    if (!exist) return true;
+    if (*exist > end) {
+      if (++missed_runs_ == 3)
+        throw NumericalError("ARPACK found " + std::to_string(end) + " eigenvalues below " + shift_text(mu) +
+                             " 1/s² but the inertia of K − μM counts " + std::to_string(*exist));
+      extra_ = std::max(2 * extra_, *exist - wanted_ + 3);
+      return false;
+    }
+    summary.count_checked = true;
+    return true;
+  }
+
+  // The cluster reaches the last mode ARPACK can give: does it go on past it?
+  void check_cluster_is_whole(const Eigen::VectorXd& values, int end, double scale) const {
+    const double top = values(end - 1);
+    const double mu = top + 0.5e-8 * std::max(std::abs(top), options_.zero_tolerance * scale);
+    const std::optional<int> exist = eigenvalues_below(mu);
+    if (exist && *exist > end)
+      throw NumericalError("the repeated eigenvalue " + shift_text(top) + " 1/s² has more copies than the " +
+                           std::to_string(most_) + " modes ARPACK can compute here; use the dense solver");
+  }
+
+  const SparseMatrix& M_;
+  const SparseMatrix& K_;
+  const ModalOptions& options_;
+  const ArpackOptions& o_;
+  const int wanted_, most_;
+  const bool automatic_shift_;
+  const double scale_;
+  double sigma_;
+  int extra_;
+  int missed_runs_ = 0;
+  ShiftedInverse op_;
+  bool factored_ = false;
+};
+
 }  // namespace
 
 Eigenpairs arpack_eigenpairs(const SparseMatrix& M, const SparseMatrix& K, const std::vector<std::string>& labels,
                              int count, const ModalOptions& options) {
   const int n = static_cast<int>(M.rows());
   const std::vector<int> massless = massless_dofs(M);
-  // A massless DOF needs a restraint: its row of K − σM is then its row of K.
-  if (!massless.empty()) {
-    std::vector<bool> stiff(n, false);
-    for (int j = 0; j < K.outerSize(); ++j)
-      for (SparseMatrix::InnerIterator it(K, j); it; ++it)
-        if (it.value() != 0.0) stiff[it.row()] = true;
-    for (int s : massless)
-      if (!stiff[s])
-        throw NumericalError("degree of freedom '" + labels[s] +
-                             "' has neither mass nor a restraint; give it inertia or hold it");
-  }
+  check_massless_restrained(K, massless, labels);
   // Shift-invert sees only the eigenvalues of the DOFs with mass (the massless ones have
   // infinite λ, ν = 0), and ARPACK finds at most n − 1 of n.
   const int most = n - static_cast<int>(massless.size()) - 1;
@@ -289,112 +470,9 @@ Eigenpairs arpack_eigenpairs(const SparseMatrix& M, const SparseMatrix& K, const
                                 (massless.empty() ? std::string() : ", " + std::to_string(massless.size()) + " massless") +
                                 "), not " + std::to_string(count) + "; the dense solver gives them all");
   const int wanted = count > 0 ? count : std::min(kArpackDefaultModes, most);
-
-  const ArpackOptions& o = options.arpack;
-  const bool automatic_shift = std::isnan(o.shift);
-  const double scale = spectrum_scale(M, K);
-  double sigma = automatic_shift ? -kShiftFraction * scale : o.shift;
-  // A few more than asked, so that a cluster cut at N shows where it ends.
-  int extra = std::max(2, wanted / 10);
-  int missed_runs = 0;
   Eigenpairs result;
   result.massless = massless;
-  ShiftedInverse op;
-  bool factored = false;
-  for (int attempt = 0;; ++attempt) {
-    if (!factored) {
-      // σ an eigenvalue to working precision: an automatic σ moves, a given one is an error.
-      for (int move = 0; !op.factor(K - sigma * M); ++move) {
-        if (!automatic_shift || move == 8)
-          throw NumericalError("K − σM is singular at σ = " + shift_text(sigma) +
-                               " 1/s² (σ is an eigenvalue); choose another shift");
-        sigma *= 1.7;
-      }
-      factored = true;
-    }
-    const int nev = std::min(wanted + extra, most);
-    Run run = run_arpack(M, K, op, nev, o);
-    result.summary.runs += 1;
-    result.summary.solver = ModalSolver::arpack;
-    result.summary.shift = sigma;
-    result.summary.factorisation = op.name();
-    result.summary.requested = nev;
-    result.summary.subspace_size = run.ncv;
-    result.summary.restarts = run.restarts;
-    result.summary.operator_applications += run.operations;
-
-    // Unstable modes below σ that were missed (the inertia counts more eigenvalues below σ
-    // than were found): an automatic σ moves below them. The nev found are the nearest σ,
-    // within r of it, so the missed ones lie below σ − r.
-    const int below = op.negative_pivots();
-    const int found_below = static_cast<int>((run.values.array() < sigma).count());
-    if (automatic_shift && below > found_below) {
-      if (attempt >= 12) throw NumericalError("ARPACK: could not place the shift below the unstable modes");
-      const double r = (run.values.array() - sigma).abs().maxCoeff();
-      sigma = std::min(10.0 * sigma, sigma - 2.0 * r);
-      factored = false;
-      continue;
-    }
-    // The modes to answer from: every one found for an automatic σ (the loop above put σ
-    // below all that were missed), those above a given σ.
-    Eigen::VectorXd values = std::move(run.values);
-    Eigen::MatrixXd vectors = std::move(run.vectors);
-    if (!automatic_shift) {
-      const int below_sigma = static_cast<int>((values.array() < sigma).count());  // ascending: the first ones
-      values = Eigen::VectorXd(values.tail(values.size() - below_sigma));
-      vectors = Eigen::MatrixXd(vectors.rightCols(vectors.cols() - below_sigma));
-    }
-    const int available = static_cast<int>(values.size());
-    if (available <= wanted && nev < most) {  // one more than N shows whether a cluster goes on
-      extra *= 2;
-      continue;
-    }
-    if (available < wanted)
-      throw NumericalError("ARPACK: only " + std::to_string(available) + " modes lie above the shift σ = " +
-                           shift_text(sigma) + " 1/s², not " + std::to_string(wanted));
-    result.scale = std::max(scale, values.cwiseAbs().maxCoeff());
-    const int end = cluster_end(values, wanted, options.zero_tolerance * result.scale);
-    // The count check: by Sylvester's law, K − μM with μ between the last mode kept and the
-    // next one found has as many negative pivots as there are eigenvalues below μ. More than
-    // were found means Lanczos skipped one (a copy of a repeated frequency, say): look again
-    // with a larger subspace, and fail rather than answer with a part of a cluster.
-    result.summary.count_checked = false;
-    if (end < available && op.negative_pivots() >= 0) {
-      const double mu = 0.5 * (values(end - 1) + values(end));
-      const int skipped = automatic_shift ? 0 : op.negative_pivots();  // below a given σ
-      ShiftedInverse check;
-      check.use_ordering_of(op);
-      if (check.factor(K - mu * M) && check.negative_pivots() >= 0) {
-        const int exist = check.negative_pivots() - skipped;
-        if (exist > end) {
-          if (++missed_runs == 3)
-            throw NumericalError("ARPACK found " + std::to_string(end) + " eigenvalues below " + shift_text(mu) +
-                                 " 1/s² but the inertia of K − μM counts " + std::to_string(exist));
-          extra = std::max(2 * extra, exist - wanted + 3);
-          continue;
-        }
-        result.summary.count_checked = true;
-      }
-    }
-    if (end == available && nev == most && op.negative_pivots() >= 0) {
-      // The cluster reaches the last mode ARPACK can give: does it go on past it?
-      const double top = values(end - 1);
-      const double mu = top + 0.5e-8 * std::max(std::abs(top), options.zero_tolerance * result.scale);
-      ShiftedInverse check;
-      check.use_ordering_of(op);
-      if (check.factor(K - mu * M) && check.negative_pivots() - (automatic_shift ? 0 : op.negative_pivots()) > end)
-        throw NumericalError("the repeated eigenvalue " + shift_text(top) + " 1/s² has more copies than the " +
-                             std::to_string(most) + " modes ARPACK can compute here; use the dense solver");
-    }
-    if (end < available || nev == most) {
-      values.conservativeResize(end);
-      vectors.conservativeResize(Eigen::NoChange, end);
-      result.values = std::move(values);
-      result.vectors = std::move(vectors);
-      return result;
-    }
-    extra *= 2;  // the cluster reaches the last Ritz value found: look further
-  }
+  return ModeSearch(M, K, options, wanted, most).solve(std::move(result));
 }
 
 }  // namespace railmodal::solve

@@ -104,33 +104,32 @@ DeflectionCurve refine_deflection(const CriticalSpeedStudy& study, const Excitat
 // elements (the least damping any limited element assumes; too much for such a spring if it
 // moves more than that); the vehicle's dampers act as they are. Grid maxima are refined by
 // golden-section search.
-void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& study, VariantResult* r) {
-  r->deflections_checked = true;
-  if (study.scene.dofs == DofSet::lateral)  // load_study refuses this; a direct call fails the variant
-    throw std::invalid_argument("permissible dynamic deflections need the vertical motions: the scene's dofs are lateral");
-  const LinearSystem& system = study.system;
-  const std::vector<study::PermissibleDeflection> limits = study::permissible_deflections(rule, system);
-  if (limits.empty()) return;
+// The elements with a limit, and the stretch at which each element's friction is linearised:
+// its first limit, or the largest of them for an element without one (see above).
+struct FrictionReference {
   std::vector<int> elements;
-  std::vector<double> reference(system.vehicle.elements.size(), 0.0);
+  std::vector<double> stretch;  // per element of the vehicle
+};
+
+FrictionReference friction_reference(const std::vector<study::PermissibleDeflection>& limits, size_t element_count) {
+  FrictionReference f;
+  f.stretch.assign(element_count, 0.0);
   for (const auto& l : limits) {
-    if (std::find(elements.begin(), elements.end(), l.element) == elements.end()) elements.push_back(l.element);
+    if (std::find(f.elements.begin(), f.elements.end(), l.element) == f.elements.end()) f.elements.push_back(l.element);
     const double stretch = l.permissible / l.share;
-    reference[l.element] = reference[l.element] > 0.0 ? std::min(reference[l.element], stretch) : stretch;
+    f.stretch[l.element] = f.stretch[l.element] > 0.0 ? std::min(f.stretch[l.element], stretch) : stretch;
   }
-  const double largest = *std::max_element(reference.begin(), reference.end());
-  for (size_t k = 0; k < reference.size(); ++k)
-    if (std::find(elements.begin(), elements.end(), static_cast<int>(k)) == elements.end()) reference[k] = largest;
-  for (const auto& l : limits) {
-    VariantResult::DeflectionCheck c;
-    const Element& e = system.vehicle.elements[l.element];
-    c.element = e.name;
-    c.stage = l.stage < 0 ? "" : e.vertical_stages[l.stage].kind;
-    c.basis = l.basis;
-    c.permissible = l.permissible;
-    r->deflections.push_back(c);
-  }
-  // Rule 1: resonances that nothing damps and friction does not stop.
+  const double largest = *std::max_element(f.stretch.begin(), f.stretch.end());
+  for (size_t k = 0; k < f.stretch.size(); ++k)
+    if (std::find(f.elements.begin(), f.elements.end(), static_cast<int>(k)) == f.elements.end())
+      f.stretch[k] = largest;
+  return f;
+}
+
+// Rule 1: resonances that nothing damps and friction does not stop.
+void flag_undamped_resonances(const CriticalSpeedStudy& study, const std::vector<study::PermissibleDeflection>& limits,
+                              VariantResult* r) {
+  const LinearSystem& system = study.system;
   for (const CriticalSpeed& cs : study.critical_speeds) {
     const std::vector<const Mode*> group = response::eigenspace_of(study.modes, cs.mode);
     if (cs.friction_stops ||
@@ -144,44 +143,70 @@ void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& stu
         c.unbounded = true, c.speed = cs.speed, c.source = cs.source;
     }
   }
-  // Rule 2: the largest finite deflection of each check per source: on the grid and at every
-  // local maximum of the element's stretch above 1 % of its largest, refined.
-  const SpeedGrid speeds = study.curves.empty() ? SpeedGrid() : study.curves.front().speeds;
-  for (size_t s = 0; s < study.scene.sources.size() && !speeds.empty(); ++s) {
-    const ExcitationSource& source = *study.scene.sources[s];
-    const std::vector<DeflectionCurve> curves =
-        element_deflection_curves(system, study.modes, source, static_cast<int>(s), elements, speeds.values(), reference);
-    for (const DeflectionCurve& curve : curves) {
-      // Every check of this element sees the curve at these speeds (one each, or the refined one).
-      auto take = [&](const DeflectionCurve& at, size_t v, double speed) {
-        for (size_t i = 0; i < limits.size(); ++i) {
-          const auto& l = limits[i];
-          VariantResult::DeflectionCheck& c = r->deflections[i];
-          if (l.element != curve.element || c.unbounded) continue;
-          if (at.unbounded[v]) {
-            c.unbounded = true, c.speed = speed, c.source = static_cast<int>(s);
-            continue;
-          }
-          const double d = l.force_stiffness > 0.0 ? at.spring_forces[v] / l.force_stiffness : l.share * at.amplitudes[v];
-          if (d > c.deflection) c.deflection = d, c.speed = speed, c.source = static_cast<int>(s);
-        }
-      };
-      double largest = 0.0;
-      for (size_t v = 0; v < speeds.size(); ++v) {
-        take(curve, v, speeds[v]);
-        if (!curve.unbounded[v]) largest = std::max(largest, curve.amplitudes[v]);
-      }
-      for (size_t v = 1; v + 1 < speeds.size(); ++v) {
-        const bool peak = !curve.unbounded[v - 1] && !curve.unbounded[v] && !curve.unbounded[v + 1] &&
-                          curve.amplitudes[v] >= curve.amplitudes[v - 1] && curve.amplitudes[v] > curve.amplitudes[v + 1] &&
-                          curve.amplitudes[v] >= 0.01 * largest;
-        if (!peak) continue;
-        const DeflectionCurve refined =
-            refine_deflection(study, source, static_cast<int>(s), curve.element, reference, curve, v);
-        take(refined, 0, refined.speeds[0]);
-      }
+}
+
+// Every check of the curve's element sees the curve `at` at its point v, speed `speed`, of source s.
+void take_deflection(const std::vector<study::PermissibleDeflection>& limits, int element, const DeflectionCurve& at,
+                     size_t v, double speed, int s, VariantResult* r) {
+  for (size_t i = 0; i < limits.size(); ++i) {
+    const auto& l = limits[i];
+    VariantResult::DeflectionCheck& c = r->deflections[i];
+    if (l.element != element || c.unbounded) continue;
+    if (at.unbounded[v]) {
+      c.unbounded = true, c.speed = speed, c.source = s;
+      continue;
     }
+    const double d = l.force_stiffness > 0.0 ? at.spring_forces[v] / l.force_stiffness : l.share * at.amplitudes[v];
+    if (d > c.deflection) c.deflection = d, c.speed = speed, c.source = s;
   }
+}
+
+// Rule 2 for one element's curve under source s: on the grid, and at every local maximum of
+// the element's stretch above 1 % of its largest, refined.
+void check_curve(const CriticalSpeedStudy& study, const std::vector<study::PermissibleDeflection>& limits,
+                 const std::vector<double>& reference, int s, const DeflectionCurve& curve, VariantResult* r) {
+  const std::vector<double>& speeds = curve.speeds.values();
+  double largest = 0.0;
+  for (size_t v = 0; v < speeds.size(); ++v) {
+    take_deflection(limits, curve.element, curve, v, speeds[v], s, r);
+    if (!curve.unbounded[v]) largest = std::max(largest, curve.amplitudes[v]);
+  }
+  for (size_t v = 1; v + 1 < speeds.size(); ++v) {
+    const bool peak = !curve.unbounded[v - 1] && !curve.unbounded[v] && !curve.unbounded[v + 1] &&
+                      curve.amplitudes[v] >= curve.amplitudes[v - 1] && curve.amplitudes[v] > curve.amplitudes[v + 1] &&
+                      curve.amplitudes[v] >= 0.01 * largest;
+    if (!peak) continue;
+    const DeflectionCurve refined =
+        refine_deflection(study, *study.scene.sources[s], s, curve.element, reference, curve, v);
+    take_deflection(limits, curve.element, refined, 0, refined.speeds[0], s, r);
+  }
+}
+
+void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& study, VariantResult* r) {
+  r->deflections_checked = true;
+  if (study.scene.dofs == DofSet::lateral)  // load_study refuses this; a direct call fails the variant
+    throw std::invalid_argument("permissible dynamic deflections need the vertical motions: the scene's dofs are lateral");
+  const LinearSystem& system = study.system;
+  const std::vector<study::PermissibleDeflection> limits = study::permissible_deflections(rule, system);
+  if (limits.empty()) return;
+  const FrictionReference reference = friction_reference(limits, system.vehicle.elements.size());
+  for (const auto& l : limits) {
+    VariantResult::DeflectionCheck c;
+    const Element& e = system.vehicle.elements[l.element];
+    c.element = e.name;
+    c.stage = l.stage < 0 ? "" : e.vertical_stages[l.stage].kind;
+    c.basis = l.basis;
+    c.permissible = l.permissible;
+    r->deflections.push_back(c);
+  }
+  flag_undamped_resonances(study, limits, r);
+  // Rule 2: the largest finite deflection of each check per source.
+  const SpeedGrid speeds = study.curves.empty() ? SpeedGrid() : study.curves.front().speeds;
+  for (size_t s = 0; s < study.scene.sources.size() && !speeds.empty(); ++s)
+    for (const DeflectionCurve& curve :
+         element_deflection_curves(system, study.modes, *study.scene.sources[s], static_cast<int>(s),
+                                   reference.elements, speeds.values(), reference.stretch))
+      check_curve(study, limits, reference.stretch, static_cast<int>(s), curve, r);
   for (auto& c : r->deflections)
     if (c.unbounded) c.deflection = 0.0;
 }
