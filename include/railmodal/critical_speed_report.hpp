@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "railmodal/modal.hpp"
+#include "railmodal/output_format.hpp"
 #include "railmodal/response.hpp"
 #include "railmodal/scene.hpp"
 
@@ -39,10 +40,7 @@ struct CriticalSpeedStudy {
 CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle,
                                          const std::function<void(double)>& progress = {});
 
-enum class ReportFormat { markdown, html, csv, json };
-const char* to_string(ReportFormat format);
-std::optional<ReportFormat> report_format_from_string(const std::string& word);
-
-void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, ReportFormat format);
+/// Writes markdown, html, csv or json (std::invalid_argument for table).
+void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, OutputFormat format);
 
 }  // namespace railmodal

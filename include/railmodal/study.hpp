@@ -5,7 +5,7 @@
 //   railmodal::Study study = railmodal::load_study("data/studies/resort_against_fette.toml");
 //   std::vector<railmodal::VariantResult> results = railmodal::evaluate_study(study, {});
 //   railmodal::Comparison comparison = railmodal::rank_variants(study, results);
-//   railmodal::write_comparison(std::cout, comparison, railmodal::ComparisonFormat::table);
+//   railmodal::write_comparison(std::cout, comparison, railmodal::OutputFormat::table);
 #pragma once
 
 #include <functional>
@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "railmodal/output_format.hpp"
 #include "railmodal/scene.hpp"
 #include "railmodal/vehicle.hpp"
 
@@ -219,11 +220,9 @@ struct Comparison {
 /// merged shards). Ties keep study order.
 Comparison rank_variants(const Study& study, std::vector<VariantResult> results);
 
-enum class ComparisonFormat { table, csv, json, markdown, html };
-std::optional<ComparisonFormat> comparison_format_from_string(const std::string& word);
-/// table, csv or json: from the ranked results alone. markdown and html need the study
+/// Writes table, csv or json: from the ranked results alone. markdown and html need the study
 /// (write_comparison_report); here they throw std::invalid_argument.
-void write_comparison(std::ostream& out, const Comparison& comparison, ComparisonFormat format);
+void write_comparison(std::ostream& out, const Comparison& comparison, OutputFormat format);
 
 /// The report of a study in any format; markdown and html are documents to hand in: why the
 /// winner wins (its criteria against the base and the runner-up, what the others violate),
@@ -234,7 +233,7 @@ void write_comparison(std::ostream& out, const Comparison& comparison, Compariso
 inline constexpr int kReportRows = 40;
 inline constexpr int kReportBest = 3;
 void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
-                             ComparisonFormat format);
+                             OutputFormat format);
 
 /// The results of one shard as JSON, and back (checked against the study: same name, same
 /// number of variants, each name at its index). read_shard throws InputError naming `file`.

@@ -655,10 +655,10 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c) {
 }  // namespace
 
 void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
-                             ComparisonFormat format) {
+                             OutputFormat format) {
   switch (format) {
-    case ComparisonFormat::markdown: write_markdown(out, study, comparison); break;
-    case ComparisonFormat::html: write_html(out, study, comparison); break;
+    case OutputFormat::markdown: write_markdown(out, study, comparison); break;
+    case OutputFormat::html: write_html(out, study, comparison); break;
     default: write_comparison(out, comparison, format); break;
   }
 }

@@ -106,7 +106,7 @@ int merge_and_write(const Options& o, const railmodal::Study& study, const std::
                                                        study.variants[i].name + "')");
     std::ostringstream text;
     railmodal::write_comparison_report(text, study, railmodal::rank_variants(study, std::move(results)),
-                                       *railmodal::comparison_format_from_string(o.format));
+                                       *railmodal::output_format_from_string(o.format));
     return write_output(o.output, text.str());
   } catch (const railmodal::InputError& e) {
     std::cerr << e.what() << "\n";

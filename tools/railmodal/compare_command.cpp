@@ -24,7 +24,7 @@ struct CompareOptions {
 };
 
 int run(const CompareOptions& o) {
-  const ComparisonFormat format = *comparison_format_from_string(o.format);  // CLI11 checked the word
+  const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   EvaluationOptions evaluation;
   evaluation.threads = o.threads;
   if (!o.shard.empty()) {
