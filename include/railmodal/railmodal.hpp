@@ -12,6 +12,7 @@
 //   }
 #pragma once
 
+#include "railmodal/critical_speed.hpp"
 #include "railmodal/critical_speed_report.hpp"
 #include "railmodal/damped_modal.hpp"
 #include "railmodal/errors.hpp"
@@ -21,6 +22,7 @@
 #include "railmodal/linear_system.hpp"
 #include "railmodal/matrix_market.hpp"
 #include "railmodal/modal.hpp"
+#include "railmodal/output_format.hpp"
 #include "railmodal/report.hpp"
 #include "railmodal/response.hpp"
 #include "railmodal/scene.hpp"

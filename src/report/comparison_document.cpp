@@ -10,7 +10,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "railmodal/critical_speed_report.hpp"
+#include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"
