@@ -28,6 +28,7 @@
 #include "railmodal/scene.hpp"
 #include "railmodal/scene_simulation.hpp"
 #include "railmodal/simulation.hpp"
+#include "railmodal/simulation_report.hpp"
 #include "railmodal/sparse_system.hpp"
 #include "railmodal/spectrum.hpp"
 #include "railmodal/stability.hpp"

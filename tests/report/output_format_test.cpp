@@ -43,6 +43,16 @@ TEST(OutputFormat, WritersRefuseFormatsTheyDoNotWriteByName) {
   EXPECT_EQ(refusal(out, [](std::ostream& o) { write_comparison(o, Comparison{}, OutputFormat::html); })
                 .rfind("write_comparison writes table, csv or json, not html", 0),
             0u);
+  EXPECT_EQ(refusal(out, [](std::ostream& o) {
+              write_time_history(o, TimeHistory{}, Scene{}, Vehicle{}, OutputFormat::table);
+            }),
+            "write_time_history writes csv or json, not table");
+  EXPECT_EQ(refusal(out, [](std::ostream& o) { write_spectra(o, OutputSpectra{}, OutputFormat::json); }),
+            "write_spectra writes csv, not json");
+  EXPECT_EQ(refusal(out, [](std::ostream& o) {
+              write_fft_check(o, FftCheckResult{}, Scene{}, Vehicle{}, OutputFormat::markdown);
+            }),
+            "write_fft_check writes table, csv, json or html, not markdown");
   EXPECT_EQ(out.str(), "") << "a refused format writes nothing";
 }
 
