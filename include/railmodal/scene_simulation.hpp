@@ -91,9 +91,4 @@ struct FftCheckResult {
 /// left out: the step cannot resolve them).
 FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle);
 
-/// What a check without a peak means, for the reports: "not excited (modal amplitude 2.1e-13
-/// of the largest)", or, for an excited mode, that no line lies within 3 resolutions (in a
-/// nonlinear scene, where friction and kinks move the lines, pointing to the half periods).
-std::string missing_peak_remark(const FftCheck& check, bool nonlinear);
-
 }  // namespace railmodal

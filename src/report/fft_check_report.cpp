@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -100,6 +101,19 @@ report::Chart spectrum_chart(const FftCheckResult& r, size_t k) {
   for (const auto& check : r.checks)
     c.lines.push_back({std::to_string(check.mode), check.modal_hz, true});
   return c;
+}
+
+// What a check without a peak means: "not excited (modal amplitude 2.1e-13 of the largest)",
+// or, for an excited mode, that no line lies within 3 resolutions (in a nonlinear scene, where
+// friction and kinks move the lines, pointing to the half periods).
+std::string missing_peak_remark(const FftCheck& check, bool nonlinear) {
+  if (!check.excited) {
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.1e", check.modal_amplitude_ratio);
+    return std::string("not excited (modal amplitude ") + ratio + " of the largest)";
+  }
+  return nonlinear ? "no line within 3 resolutions (nonlinear: see the half periods)"
+                   : "no line within 3 resolutions";
 }
 
 void checks_table(std::ostream& out, const FftCheckResult& r) {

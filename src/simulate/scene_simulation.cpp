@@ -1,7 +1,6 @@
 // A scene's simulation with only its named effects, and the FFT check of its result.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "railmodal/scene_simulation.hpp"
@@ -134,16 +133,6 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle) {
     out.linear_half_period_s = 0.5 / mode.frequency_hz;
   }
   return out;
-}
-
-std::string missing_peak_remark(const FftCheck& check, bool nonlinear) {
-  if (!check.excited) {
-    char ratio[32];
-    std::snprintf(ratio, sizeof ratio, "%.1e", check.modal_amplitude_ratio);
-    return std::string("not excited (modal amplitude ") + ratio + " of the largest)";
-  }
-  return nonlinear ? "no line within 3 resolutions (nonlinear: see the half periods)"
-                   : "no line within 3 resolutions";
 }
 
 }  // namespace railmodal
