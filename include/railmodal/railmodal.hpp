@@ -12,6 +12,7 @@
 //   }
 #pragma once
 
+#include "railmodal/comparison_report.hpp"
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/critical_speed_report.hpp"
 #include "railmodal/damped_modal.hpp"

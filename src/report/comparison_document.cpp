@@ -10,6 +10,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "railmodal/comparison_report.hpp"
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "input/input_file.hpp"
+#include "railmodal/comparison_report.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "railmodal/comparison_report.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 

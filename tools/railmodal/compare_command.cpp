@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "railmodal/comparison_report.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 
