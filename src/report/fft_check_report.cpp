@@ -290,7 +290,8 @@ void write_fft_check(std::ostream& out, const FftCheckResult& result, const Scen
     case OutputFormat::csv: write_csv(out, result); break;
     case OutputFormat::json: write_json(out, result, scene); break;
     case OutputFormat::html: write_html(out, result, scene, vehicle); break;
-    default: throw std::invalid_argument(report::unwritten_format("write_fft_check", "table, csv, json or html", format));
+    default:
+      throw std::invalid_argument(report::unwritten_format("write_fft_check", "table, csv, json or html", format));
   }
 }
 

@@ -22,7 +22,8 @@ void write_history_json(std::ostream& out, const TimeHistory& h, const Scene& sc
   if (scene_effects(scene).any()) {  // the nonlinear path: its stick/slip/kink events
     j["events"] = nlohmann::json::array();
     for (const SimulationEvent& e : h.events)
-      j["events"].push_back({{"time_s", e.time}, {"element", vehicle.elements.at(e.element).name}, {"kind", to_string(e.kind)}});
+      j["events"].push_back(
+          {{"time_s", e.time}, {"element", vehicle.elements.at(e.element).name}, {"kind", to_string(e.kind)}});
     j["integration_steps"] = h.steps_taken;
   }
   out << j.dump() << "\n";
@@ -52,7 +53,8 @@ void write_time_history(std::ostream& out, const TimeHistory& history, const Sce
 }
 
 void write_spectra(std::ostream& out, const OutputSpectra& spectra, OutputFormat format) {
-  if (format != OutputFormat::csv) throw std::invalid_argument(report::unwritten_format("write_spectra", "csv", format));
+  if (format != OutputFormat::csv)
+    throw std::invalid_argument(report::unwritten_format("write_spectra", "csv", format));
   out << std::setprecision(10) << "frequency_hz";
   for (const std::string& dof : spectra.dofs) out << "," << dof;
   out << "\n";

@@ -38,7 +38,9 @@ TEST(OutputFormat, WritersRefuseFormatsTheyDoNotWriteByName) {
               write_damped_modes(o, LinearSystem{}, DampedModalResult{}, OutputFormat::markdown);
             }),
             "write_damped_modes writes table, csv or json, not markdown");
-  EXPECT_EQ(refusal(out, [](std::ostream& o) { write_critical_speed_report(o, CriticalSpeedStudy{}, OutputFormat::table); }),
+  EXPECT_EQ(refusal(out, [](std::ostream& o) {
+              write_critical_speed_report(o, CriticalSpeedStudy{}, OutputFormat::table);
+            }),
             "write_critical_speed_report writes markdown, html, csv or json, not table");
   EXPECT_EQ(refusal(out, [](std::ostream& o) { write_comparison(o, Comparison{}, OutputFormat::html); })
                 .rfind("write_comparison writes table, csv or json, not html", 0),
