@@ -1,5 +1,5 @@
-// A critical-speed study of one vehicle in one scene, and its report: Markdown, a
-// self-contained HTML page with inline SVG plots, CSV and JSON.
+// railmodal — the report of a critical-speed study: Markdown, a self-contained HTML page with
+// inline SVG plots, CSV and JSON.
 //
 //   #include <railmodal/railmodal.hpp>
 //   #include <iostream>
@@ -8,51 +8,18 @@
 //     railmodal::Scene scene = railmodal::load_scene("data/scenes/resort_car_10m_rails.toml");
 //     railmodal::Vehicle vehicle = railmodal::load_vehicle(scene.vehicle_file);
 //     railmodal::CriticalSpeedStudy study = railmodal::study_critical_speeds(scene, vehicle);
-//     railmodal::write_critical_speed_report(std::cout, study, railmodal::ReportFormat::markdown);
+//     railmodal::write_critical_speed_report(std::cout, study, railmodal::OutputFormat::markdown);
 //   }
 #pragma once
 
-#include <functional>
-#include <optional>
 #include <ostream>
-#include <string>
-#include <vector>
 
-#include "railmodal/modal.hpp"
-#include "railmodal/response.hpp"
-#include "railmodal/scene.hpp"
+#include "railmodal/critical_speed.hpp"
+#include "railmodal/output_format.hpp"
 
 namespace railmodal {
 
-struct CriticalSpeedStudy {
-  Scene scene;
-  LinearSystem system;
-  ModalResult modes;
-  std::vector<CriticalSpeed> critical_speeds;  ///< sorted by speed
-  std::vector<AmplitudeCurve> curves;          ///< per source and output, on the scene's grid
-  /// Damped resonance peaks of the curves: every local maximum of the grid above 1 % of the
-  /// curve's largest value, refined by golden-section search to 1e-6 of its speed.
-  struct CurvePeak {
-    int curve = 0;  ///< index into curves
-    Peak peak;
-  };
-  std::vector<CurvePeak> peaks;
-};
-
-/// Assembles the vehicle in the scene's DOF set, solves its modes, finds the critical speeds
-/// of the scene's sources in its speed range and the amplitude curves of its outputs (or, if
-/// it names none, of the most energetic DOF of each excited mode). The speed grid holds the
-/// scene's step and every critical speed.
-/// `progress`, if given, is called with the fraction done (0…1) as the sweep advances (the
-/// command line shows it on a terminal when a study takes over a second). Throws
-/// NumericalError for a vehicle with an unstable mode: it has no steady response.
-CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle,
-                                         const std::function<void(double)>& progress = {});
-
-enum class ReportFormat { markdown, html, csv, json };
-const char* to_string(ReportFormat format);
-std::optional<ReportFormat> report_format_from_string(const std::string& word);
-
-void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, ReportFormat format);
+/// Writes markdown, html, csv or json (std::invalid_argument for table).
+void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, OutputFormat format);
 
 }  // namespace railmodal

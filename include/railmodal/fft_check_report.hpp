@@ -1,28 +1,40 @@
-// The fft-check as a page: time histories, spectra with the modal frequencies marked, the
-// checks and (nonlinear scenes) the half periods, in one self-contained HTML file.
+// railmodal — the report of an fft-check: the spectral peaks of a scene's simulated response
+// against the modal frequencies, as a table, CSV, JSON or a self-contained HTML page.
 //
 //   #include <railmodal/railmodal.hpp>
-//   #include <fstream>
+//   #include <iostream>
 //
 //   int main() {
 //     railmodal::Scene scene = railmodal::load_scene("data/scenes/resort_car_free_response.toml");
 //     railmodal::Vehicle vehicle = railmodal::load_vehicle(scene.vehicle_file);
-//     std::ofstream page("/dev/null");  // a file name such as fft_check.html
-//     railmodal::write_fft_check_html(page, railmodal::fft_check(scene, vehicle), scene, vehicle);
+//     railmodal::FftCheckResult result = railmodal::fft_check(scene, vehicle);
+//     railmodal::write_fft_check(std::cout, result, scene, vehicle, railmodal::OutputFormat::table);
 //   }
 #pragma once
 
 #include <ostream>
 
+#include "railmodal/output_format.hpp"
 #include "railmodal/scene_simulation.hpp"
 #include "railmodal/vehicle.hpp"
 
 namespace railmodal {
 
-/// Writes a self-contained HTML page (inline SVG, no scripts): the displacement histories of
-/// the DOFs whose spectra were taken (with the stick/slip/kink events marked when there are
-/// few enough to see), each spectrum up to 1.5× the highest checked mode with every modal
-/// frequency as a vertical line, the check table and the half-period table.
-void write_fft_check_html(std::ostream& out, const FftCheckResult& result, const Scene& scene, const Vehicle& vehicle);
+/// Writes table, csv, json or html (std::invalid_argument for markdown).
+///   table: the checks (mode, DOF, modal and peak frequency, relative error, resolution and
+///   whether the peak lies within it, or why there is none) and, for a nonlinear scene, the
+///   half periods between the turning points and between passes through the static position.
+///   csv: one row per check: mode, mode_name, dof, modal_hz, peak_hz, rel_error,
+///   resolution_hz, within_resolution, excited, modal_amplitude_ratio (no peak: blank).
+///   json: {"scene", "checks": [{the csv's columns; no peak: null}], and for a nonlinear scene
+///   "half_periods": {"dof", "linear_half_period_s", "between_turning_points_s",
+///   "between_crossings_s", "turning_points": [{"time_s", "displacement"}], "comes_to_rest"}}.
+///   html: a self-contained page (inline SVG, no scripts): the displacement histories of the
+///   DOFs whose spectra were taken (with the stick/slip/kink events marked when there are few
+///   enough to see), each spectrum up to 1.5× the highest checked mode with every modal
+///   frequency as a vertical line, the check table and the half-period table.
+/// `vehicle` names the page's vehicle.
+void write_fft_check(std::ostream& out, const FftCheckResult& result, const Scene& scene, const Vehicle& vehicle,
+                     OutputFormat format);
 
 }  // namespace railmodal

@@ -12,6 +12,8 @@
 //   }
 #pragma once
 
+#include "railmodal/comparison_report.hpp"
+#include "railmodal/critical_speed.hpp"
 #include "railmodal/critical_speed_report.hpp"
 #include "railmodal/damped_modal.hpp"
 #include "railmodal/errors.hpp"
@@ -21,11 +23,13 @@
 #include "railmodal/linear_system.hpp"
 #include "railmodal/matrix_market.hpp"
 #include "railmodal/modal.hpp"
+#include "railmodal/output_format.hpp"
 #include "railmodal/report.hpp"
 #include "railmodal/response.hpp"
 #include "railmodal/scene.hpp"
 #include "railmodal/scene_simulation.hpp"
 #include "railmodal/simulation.hpp"
+#include "railmodal/simulation_report.hpp"
 #include "railmodal/sparse_system.hpp"
 #include "railmodal/spectrum.hpp"
 #include "railmodal/stability.hpp"

@@ -11,40 +11,39 @@
 //   }
 #pragma once
 
-#include <optional>
 #include <ostream>
 #include <string>
 
 #include "railmodal/damped_modal.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"
+#include "railmodal/output_format.hpp"
 
 namespace railmodal {
 
-enum class OutputFormat { table, csv, json };
-const char* to_string(OutputFormat format);
-std::optional<OutputFormat> output_format_from_string(const std::string& word);
-
-/// table: one row per mode (index, name, Hz, s, rad/s, centre of oscillation) and the mode
-/// shapes below; csv: one row per mode with one column per DOF; json:
-/// {"vehicle", "dofs", "modes": [{"index", "kind", "frequency_hz", "period_s", "omega_rad_s",
-/// "divergence_rate_per_s", "name", "stable", "repeated", "centre_of_oscillation", "residual",
-/// "shape": {label: value}}], "condensed", "max_residual", "orthonormality_error"}.
-/// JSON also holds "solver": {"name", and for ARPACK "shift", "factorisation", "requested",
-/// "subspace_size", "restarts", "operator_applications", "runs", "count_checked"}.
+/// Writes table, csv or json (std::invalid_argument for markdown and html). table: one row
+/// per mode (index, name, Hz, s, rad/s, centre of oscillation) and the mode shapes below;
+/// csv: one row per mode with one column per DOF; json: {"vehicle", "dofs", "modes":
+/// [{"index", "kind", "frequency_hz", "period_s", "omega_rad_s", "divergence_rate_per_s",
+/// "name", "stable", "repeated", "centre_of_oscillation", "residual", "shape": {label:
+/// value}}], "condensed", "max_residual", "orthonormality_error"}. JSON also holds "solver":
+/// {"name", and for ARPACK "shift", "factorisation", "requested", "subspace_size", "restarts",
+/// "operator_applications", "runs", "count_checked"}.
 void write_modes(std::ostream& out, const LinearSystem& system, const ModalResult& result,
                  OutputFormat format);
 
-/// Damped modes. table: one row per mode (index, name, f_d, ζ, f_n, the undamped f_0,
-/// stability, a remark for overdamped, critical, divergent, first-order and rigid-body
-/// modes); csv: the same with the eigenvalues; json: {"vehicle", "dofs", "modes": [{"index",
-/// "name", "kind", "stable", "eigenvalues": [[re, im]], "damped_frequency_hz",
-/// "damping_ratio", "natural_frequency_hz", "undamped_mode", "undamped_frequency_hz",
-/// "decay_rate_per_s", "residual", "shape": {label: [re, im]}}], "condensed", "first_order",
-/// "stable", "max_residual"}; absent quantities are null.
+/// Damped modes; writes table, csv or json (std::invalid_argument for markdown and html).
+/// table: one row per mode (index, name, f_d, ζ, f_n, the undamped f_0, stability, a remark
+/// for overdamped, critical, divergent, first-order and rigid-body modes); csv: the same with
+/// the eigenvalues; json: {"vehicle", "dofs", "modes": [{"index", "name", "kind", "stable",
+/// "eigenvalues": [[re, im]], "damped_frequency_hz", "damping_ratio", "natural_frequency_hz",
+/// "undamped_mode", "undamped_frequency_hz", "decay_rate_per_s", "residual", "shape": {label:
+/// [re, im]}}], "condensed", "first_order", "stable", "max_residual"}; absent quantities are
+/// null.
 void write_damped_modes(std::ostream& out, const LinearSystem& system, const DampedModalResult& result,
                         OutputFormat format);
-/// The same for a model without a LinearSystem (a SparseSystem): `title` names it.
+/// The same for a model without a LinearSystem (a SparseSystem): `title` names it. Writes
+/// table, csv or json.
 void write_modes(std::ostream& out, const std::string& title, const ModalResult& result, OutputFormat format);
 
 }  // namespace railmodal

@@ -37,6 +37,19 @@ NonlinearEffects scene_effects(const Scene& scene);
 /// nonlinearity (std::invalid_argument if it has none).
 TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle);
 
+/// The columns of a scene's history that it outputs: the DOFs its [simulation] names, in the
+/// history's order, or every DOF when it names none.
+std::vector<int> output_columns(const TimeHistory& history, const Scene& scene);
+
+/// The amplitude spectra of a scene's outputs, taken as fft_check takes them (Hann window,
+/// zero-padded ×4): peak amplitudes of the displacement in m or rad, up to the Nyquist
+/// frequency. std::invalid_argument for a record of fewer than 2 samples.
+struct OutputSpectra {
+  std::vector<std::string> dofs;  ///< the output_columns' labels
+  std::vector<Spectrum> spectra;  ///< one per DOF
+};
+OutputSpectra output_spectra(const TimeHistory& history, const Scene& scene);
+
 /// One mode against the spectrum of its most energetic DOF.
 struct FftCheck {
   int mode = 0;
@@ -89,10 +102,5 @@ struct FftCheckResult {
 /// most energetic DOF with the modal frequencies (modes above half the Nyquist frequency are
 /// left out: the step cannot resolve them).
 FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle);
-
-/// What a check without a peak means, for the reports: "not excited (modal amplitude 2.1e-13
-/// of the largest)", or, for an excited mode, that no line lies within 3 resolutions (in a
-/// nonlinear scene, where friction and kinks move the lines, pointing to the half periods).
-std::string missing_peak_remark(const FftCheck& check, bool nonlinear);
 
 }  // namespace railmodal

@@ -1,14 +1,14 @@
 // railmodal — design studies: variants of a base vehicle in a scene, evaluated, compared and
 // ranked (docs/studies.md describes the study file).
 //
-//   #include <railmodal/study.hpp>
+//   #include <railmodal/comparison_report.hpp>
 //   #include <iostream>
 //
 //   int main() {
 //     railmodal::Study study = railmodal::load_study("data/studies/resort_against_fette.toml");
 //     std::vector<railmodal::VariantResult> results = railmodal::evaluate_study(study, {});
 //     railmodal::Comparison comparison = railmodal::rank_variants(study, results);
-//     railmodal::write_comparison_report(std::cout, study, comparison, railmodal::ComparisonFormat::table);
+//     railmodal::write_comparison(std::cout, comparison, railmodal::OutputFormat::table);
 //   }
 #pragma once
 
@@ -228,23 +228,6 @@ struct Comparison {
 /// Ranks every variant of the study; `results` must hold each index once (from one run or
 /// merged shards). Ties keep study order.
 Comparison rank_variants(const Study& study, std::vector<VariantResult> results);
-
-enum class ComparisonFormat { table, csv, json, markdown, html };
-std::optional<ComparisonFormat> comparison_format_from_string(const std::string& word);
-/// table, csv or json: from the ranked results alone. markdown and html need the study
-/// (write_comparison_report); here they throw std::invalid_argument.
-void write_comparison(std::ostream& out, const Comparison& comparison, ComparisonFormat format);
-
-/// The report of a study in any format; markdown and html are documents to hand in: why the
-/// winner wins (its criteria against the base and the runner-up, what the others violate),
-/// the ranked table (first kReportRows variants), each swept parameter against the periods
-/// and the objective, and the amplitude-against-speed curves of the best kReportBest
-/// feasible variants over the base's (recomputed from `study`: a critical-speed study each).
-/// HTML is one self-contained page with inline SVG plots.
-inline constexpr int kReportRows = 40;
-inline constexpr int kReportBest = 3;
-void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
-                             ComparisonFormat format);
 
 /// The results of one shard as JSON, and back (checked against the study: same name, same
 /// number of variants, each name at its index). read_shard throws InputError naming `file`.

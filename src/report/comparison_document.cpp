@@ -10,7 +10,8 @@
 #include <set>
 #include <stdexcept>
 
-#include "railmodal/critical_speed_report.hpp"
+#include "railmodal/comparison_report.hpp"
+#include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"
@@ -667,10 +668,10 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c) {
 }  // namespace
 
 void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
-                             ComparisonFormat format) {
+                             OutputFormat format) {
   switch (format) {
-    case ComparisonFormat::markdown: write_markdown(out, study, comparison); break;
-    case ComparisonFormat::html: write_html(out, study, comparison); break;
+    case OutputFormat::markdown: write_markdown(out, study, comparison); break;
+    case OutputFormat::html: write_html(out, study, comparison); break;
     default: write_comparison(out, comparison, format); break;
   }
 }

@@ -9,8 +9,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "railmodal/comparison_report.hpp"
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"
+#include "report/unwritten_format.hpp"
 #include "study/metrics.hpp"
 
 namespace railmodal {
@@ -259,28 +261,19 @@ void write_table(std::ostream& out, const Comparison& c) {
 
 }  // namespace
 
-std::optional<ComparisonFormat> comparison_format_from_string(const std::string& word) {
-  if (word == "table") return ComparisonFormat::table;
-  if (word == "csv") return ComparisonFormat::csv;
-  if (word == "json") return ComparisonFormat::json;
-  if (word == "markdown") return ComparisonFormat::markdown;
-  if (word == "html") return ComparisonFormat::html;
-  return std::nullopt;
-}
-
-void write_comparison(std::ostream& out, const Comparison& comparison, ComparisonFormat format) {
+void write_comparison(std::ostream& out, const Comparison& comparison, OutputFormat format) {
   switch (format) {
-    case ComparisonFormat::table: write_table(out, comparison); break;
-    case ComparisonFormat::csv:
+    case OutputFormat::table: write_table(out, comparison); break;
+    case OutputFormat::csv:
       for (const auto& row : report::comparison_rows(comparison, true)) {
         for (size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << csv_field(row[i]);
         out << "\n";
       }
       break;
-    case ComparisonFormat::json: write_json(out, comparison); break;
-    case ComparisonFormat::markdown:
-    case ComparisonFormat::html:
-      throw std::invalid_argument("write_comparison: the markdown and html reports need the study (write_comparison_report)");
+    case OutputFormat::json: write_json(out, comparison); break;
+    default:
+      throw std::invalid_argument(report::unwritten_format("write_comparison", "table, csv or json", format) +
+                                  " (the markdown and html reports need the study: write_comparison_report)");
   }
 }
 

@@ -3,30 +3,16 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 
 #include "model/element_stiffness.hpp"
 #include "railmodal/critical_speed_report.hpp"
 #include "report/document_table.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
+#include "report/unwritten_format.hpp"
 
 namespace railmodal {
-
-const char* to_string(ReportFormat format) {
-  switch (format) {
-    case ReportFormat::markdown: return "markdown";
-    case ReportFormat::html: return "html";
-    case ReportFormat::csv: return "csv";
-    case ReportFormat::json: return "json";
-  }
-  return "?";
-}
-
-std::optional<ReportFormat> report_format_from_string(const std::string& word) {
-  for (ReportFormat f : {ReportFormat::markdown, ReportFormat::html, ReportFormat::csv, ReportFormat::json})
-    if (word == to_string(f)) return f;
-  return std::nullopt;
-}
 
 namespace {
 
@@ -448,12 +434,15 @@ void write_json(std::ostream& out, const CriticalSpeedStudy& st) {
 
 }  // namespace
 
-void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, ReportFormat format) {
+void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, OutputFormat format) {
   switch (format) {
-    case ReportFormat::markdown: write_markdown(out, study); break;
-    case ReportFormat::html: write_html(out, study); break;
-    case ReportFormat::csv: write_csv(out, study); break;
-    case ReportFormat::json: write_json(out, study); break;
+    case OutputFormat::markdown: write_markdown(out, study); break;
+    case OutputFormat::html: write_html(out, study); break;
+    case OutputFormat::csv: write_csv(out, study); break;
+    case OutputFormat::json: write_json(out, study); break;
+    default:
+      throw std::invalid_argument(
+          report::unwritten_format("write_critical_speed_report", "markdown, html, csv or json", format));
   }
 }
 

@@ -3,9 +3,11 @@
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 
 #include "railmodal/report.hpp"
 #include "report/text_format.hpp"
+#include "report/unwritten_format.hpp"
 
 namespace railmodal {
 namespace {
@@ -147,6 +149,7 @@ void write_damped_modes(std::ostream& out, const LinearSystem& system, const Dam
     case OutputFormat::table: write_table(out, system, result); break;
     case OutputFormat::csv: write_csv(out, result); break;
     case OutputFormat::json: write_json(out, system, result); break;
+    default: throw std::invalid_argument(report::unwritten_format("write_damped_modes", "table, csv or json", format));
   }
 }
 

@@ -1,15 +1,22 @@
+// The fft-check for people (table, an HTML page with plots) and programs (CSV, JSON).
 #include "railmodal/fft_check_report.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 
 #include "report/svg_chart.hpp"
+#include "report/text_format.hpp"
+#include "report/unwritten_format.hpp"
 
 namespace railmodal {
 
 using report::html_escape;
+using report::significant;
 
 namespace {
 
@@ -96,6 +103,19 @@ report::Chart spectrum_chart(const FftCheckResult& r, size_t k) {
   return c;
 }
 
+// What a check without a peak means: "not excited (modal amplitude 2.1e-13 of the largest)",
+// or, for an excited mode, that no line lies within 3 resolutions (in a nonlinear scene, where
+// friction and kinks move the lines, pointing to the half periods).
+std::string missing_peak_remark(const FftCheck& check, bool nonlinear) {
+  if (!check.excited) {
+    char ratio[32];
+    std::snprintf(ratio, sizeof ratio, "%.1e", check.modal_amplitude_ratio);
+    return std::string("not excited (modal amplitude ") + ratio + " of the largest)";
+  }
+  return nonlinear ? "no line within 3 resolutions (nonlinear: see the half periods)"
+                   : "no line within 3 resolutions";
+}
+
 void checks_table(std::ostream& out, const FftCheckResult& r) {
   out << "<table><tr><th>#</th><th>mode</th><th>dof</th><th>modal [Hz]</th><th>peak [Hz]</th><th>rel. error</th>"
          "<th>resolution [Hz]</th><th>check</th></tr>\n";
@@ -138,9 +158,94 @@ void swings_table(std::ostream& out, const FftCheckResult& r) {
   }
 }
 
-}  // namespace
+void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene) {
+  nlohmann::json j;
+  j["scene"] = scene.name;
+  j["checks"] = nlohmann::json::array();
+  for (const auto& c : r.checks)
+    j["checks"].push_back({{"mode", c.mode},
+                           {"mode_name", c.mode_name},
+                           {"dof", c.dof},
+                           {"modal_hz", c.modal_hz},
+                           {"peak_hz", c.peak_hz ? nlohmann::json(*c.peak_hz) : nlohmann::json(nullptr)},
+                           {"rel_error", c.peak_hz ? nlohmann::json(c.rel_error) : nlohmann::json(nullptr)},
+                           {"resolution_hz", c.resolution_hz},
+                           {"within_resolution", c.within_resolution},
+                           {"excited", c.excited},
+                           {"modal_amplitude_ratio", c.modal_amplitude_ratio}});
+  if (r.swings) {
+    const Swings& w = *r.swings;
+    nlohmann::json turns = nlohmann::json::array();
+    for (size_t i = 0; i < w.turning_times.size(); ++i)
+      turns.push_back({{"time_s", w.turning_times[i]}, {"displacement", w.turning_values[i]}});
+    j["half_periods"] = {{"dof", w.dof},
+                         {"linear_half_period_s", r.linear_half_period_s},
+                         {"between_turning_points_s", w.half_periods_between_turns()},
+                         {"between_crossings_s", w.half_periods_between_crossings()},
+                         {"turning_points", turns},
+                         {"comes_to_rest", w.comes_to_rest}};
+  }
+  out << j.dump(2) << "\n";
+}
 
-void write_fft_check_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, const Vehicle& vehicle) {
+void write_csv(std::ostream& out, const FftCheckResult& r) {
+  out << "mode,mode_name,dof,modal_hz,peak_hz,rel_error,resolution_hz,within_resolution,excited,modal_amplitude_ratio\n"
+      << std::setprecision(10);
+  for (const auto& c : r.checks)
+    out << c.mode << ",\"" << c.mode_name << "\"," << c.dof << "," << c.modal_hz << ","
+        << (c.peak_hz ? significant(*c.peak_hz, 10) : "") << "," << (c.peak_hz ? significant(c.rel_error, 10) : "")
+        << "," << c.resolution_hz << "," << (c.within_resolution ? "true" : "false") << ","
+        << (c.excited ? "true" : "false") << "," << c.modal_amplitude_ratio << "\n";
+}
+
+// Nonlinear scenes, in the table: the turning points of the swinging DOF and the half periods
+// between them.
+void swings_text(std::ostream& out, const FftCheckResult& r) {
+  const Swings& w = *r.swings;
+  out << std::right << "\nnonlinear scene: spectral lines are broadened; the half periods of " << w.dof
+      << " (linear: " << std::fixed << std::setprecision(4) << r.linear_half_period_s << " s)\n"
+      << std::setw(5) << "#" << std::setw(14) << "turn at [s]" << std::setw(16) << "displacement" << std::setw(18)
+      << "half period [s]" << "\n";
+  const auto halves = w.half_periods_between_turns();
+  for (size_t i = 0; i < w.turning_times.size(); ++i) {
+    out << std::setw(5) << i + 1 << std::setw(14) << std::setprecision(4) << w.turning_times[i] << std::setw(16)
+        << std::setprecision(6) << w.turning_values[i];
+    if (i > 0) out << std::setw(18) << std::setprecision(4) << halves[i - 1];
+    out << "\n";
+  }
+  if (w.comes_to_rest) out << "      then at rest (a stuck spring)\n";
+  const auto crossings = w.half_periods_between_crossings();
+  if (!crossings.empty()) {
+    out << "half periods between passes through the static position [s]:";
+    for (size_t i = 0; i < crossings.size() && i < 8; ++i) out << " " << std::setprecision(4) << crossings[i];
+    if (crossings.size() > 8) out << " … (" << crossings.size() << " in all)";
+    out << "\n";
+  }
+}
+
+void write_table(std::ostream& out, const FftCheckResult& r, const Scene& scene) {
+  out << "railmodal fft-check: " << scene.name << "\n"
+      << "spectra: Hann window, zero-padded x4, of " << r.history.time.size() << " samples at "
+      << 1.0 / scene.simulation->time_step << " Hz\n\n";
+  out << std::left << std::setw(5) << "#" << std::setw(32) << "mode" << std::setw(16) << "dof" << std::right
+      << std::setw(11) << "modal [Hz]" << std::setw(11) << "peak [Hz]" << std::setw(12) << "rel. error" << std::setw(13)
+      << "resol. [Hz]" << "  check\n";
+  for (const auto& c : r.checks) {
+    out << std::left << std::setw(5) << c.mode << std::setw(32) << c.mode_name << std::setw(16) << c.dof << std::right
+        << std::fixed << std::setprecision(4) << std::setw(11) << c.modal_hz;
+    if (c.peak_hz)
+      out << std::setw(11) << *c.peak_hz << std::scientific << std::setprecision(2) << std::setw(12) << c.rel_error
+          << std::fixed << std::setprecision(4) << std::setw(13) << c.resolution_hz << "  "
+          << (c.within_resolution ? "ok" : "OUTSIDE the resolution");
+    else
+      out << std::setw(11) << "—" << std::setw(12) << "" << std::setw(13) << "" << "  "
+          << missing_peak_remark(c, r.swings.has_value());
+    out << "\n";
+  }
+  if (r.swings) swings_text(out, r);
+}
+
+void write_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, const Vehicle& vehicle) {
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>FFT check: " << html_escape(scene.name)
       << "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:24px auto;color:#222}"
          "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:3px 8px}"
@@ -174,6 +279,20 @@ void write_fft_check_html(std::ostream& out, const FftCheckResult& r, const Scen
   out << "</p>\n<h2>Spectra</h2>\n<p>Dotted lines: the modal frequencies, numbered as in the checks.</p>\n";
   for (size_t k = 0; k < r.spectra.size(); ++k) out << report::svg_chart(spectrum_chart(r, k)) << "\n";
   out << "</body></html>\n";
+}
+
+}  // namespace
+
+void write_fft_check(std::ostream& out, const FftCheckResult& result, const Scene& scene, const Vehicle& vehicle,
+                     OutputFormat format) {
+  switch (format) {
+    case OutputFormat::table: write_table(out, result, scene); break;
+    case OutputFormat::csv: write_csv(out, result); break;
+    case OutputFormat::json: write_json(out, result, scene); break;
+    case OutputFormat::html: write_html(out, result, scene, vehicle); break;
+    default:
+      throw std::invalid_argument(report::unwritten_format("write_fft_check", "table, csv, json or html", format));
+  }
 }
 
 }  // namespace railmodal

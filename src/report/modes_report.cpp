@@ -2,26 +2,13 @@
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 
 #include "railmodal/report.hpp"
 #include "report/text_format.hpp"
+#include "report/unwritten_format.hpp"
 
 namespace railmodal {
-
-const char* to_string(OutputFormat format) {
-  switch (format) {
-    case OutputFormat::table: return "table";
-    case OutputFormat::csv: return "csv";
-    case OutputFormat::json: return "json";
-  }
-  return "?";
-}
-
-std::optional<OutputFormat> output_format_from_string(const std::string& word) {
-  for (OutputFormat f : {OutputFormat::table, OutputFormat::csv, OutputFormat::json})
-    if (word == to_string(f)) return f;
-  return std::nullopt;
-}
 
 namespace {
 
@@ -193,6 +180,7 @@ void write_modes(std::ostream& out, const std::string& title, const ModalResult&
     case OutputFormat::table: write_table(out, title, result); break;
     case OutputFormat::csv: write_csv(out, result); break;
     case OutputFormat::json: write_json(out, title, result); break;
+    default: throw std::invalid_argument(report::unwritten_format("write_modes", "table, csv or json", format));
   }
 }
 

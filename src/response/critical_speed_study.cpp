@@ -4,7 +4,7 @@
 #include <set>
 #include <stdexcept>
 
-#include "railmodal/critical_speed_report.hpp"
+#include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
 
 namespace railmodal {

@@ -1,10 +1,10 @@
 // A scene's simulation with only its named effects, and the FFT check of its result.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "railmodal/scene_simulation.hpp"
+#include "simulate/record_spectrum.hpp"
 
 namespace railmodal {
 
@@ -71,13 +71,8 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle) {
   const LinearSystem system = scene_system(scene, vehicle);
   out.modes = solve_modes(system);
   const double fs = 1.0 / scene.simulation->time_step;
-  // Hann (the window for frequencies) with ×4 zero padding: interpolation error far below a bin.
-  SpectrumOptions options;
-  options.window = Window::hann;
-  options.padding = Padding::to_length;
   const Eigen::Index n = out.history.time.size();
-  options.padded_length = 4 * n;
-  SpectrumAnalyzer analyzer(n, options);
+  SpectrumAnalyzer analyzer(n, record_spectrum_options(n));
   // Modal coordinates η = ΦᵀM x over the record: mass-normalised, so one scale for every mode
   // whatever its DOFs' units; a mode far below the most excited one holds only round-off.
   Eigen::VectorXd dof_energy(system.size());  // M_dd max|x_d|²: comparable across m and rad
@@ -138,16 +133,6 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle) {
     out.linear_half_period_s = 0.5 / mode.frequency_hz;
   }
   return out;
-}
-
-std::string missing_peak_remark(const FftCheck& check, bool nonlinear) {
-  if (!check.excited) {
-    char ratio[32];
-    std::snprintf(ratio, sizeof ratio, "%.1e", check.modal_amplitude_ratio);
-    return std::string("not excited (modal amplitude ") + ratio + " of the largest)";
-  }
-  return nonlinear ? "no line within 3 resolutions (nonlinear: see the half periods)"
-                   : "no line within 3 resolutions";
 }
 
 }  // namespace railmodal

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "railmodal/critical_speed_report.hpp"
+#include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/study.hpp"

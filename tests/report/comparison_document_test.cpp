@@ -18,7 +18,7 @@ struct TwoAxleStudy {
   Study study = load_study(std::string(RAILMODAL_DATA_DIR) + "/studies/two_axle_rail_length_and_springs.toml");
   Comparison comparison = rank_variants(study, evaluate_study(study, {}));
 
-  std::string report(ComparisonFormat format) const {
+  std::string report(OutputFormat format) const {
     std::ostringstream out;
     write_comparison_report(out, study, comparison, format);
     return out.str();
@@ -67,7 +67,7 @@ TEST(ComparisonReport, VerdictNamesTheWinnerAndTheRunnerUpFromTheRanking) {
   const RankedVariant& winner = s.comparison.variants[0];
   const RankedVariant& runner = s.comparison.variants[1];
   ASSERT_TRUE(winner.feasible && runner.feasible);
-  const std::string md = s.report(ComparisonFormat::markdown);
+  const std::string md = s.report(OutputFormat::markdown);
   EXPECT_NE(md.find("**" + winner.result.name + "** ranks first of 16 variants"), std::string::npos) << md;
   EXPECT_NE(md.find("ahead of the runner-up **" + runner.result.name + "**"), std::string::npos) << md;
   // The softest springs win: a longer period is what the objective asks for first, and the
@@ -84,13 +84,13 @@ TEST(ComparisonReport, ConstraintSentenceCountsTheInfeasibleVariants) {
   size_t infeasible = 0;
   for (const RankedVariant& v : s.comparison.variants) infeasible += v.result.ok() && !v.feasible;
   ASSERT_GT(infeasible, 0u);  // soft springs on short rails resonate below 90 km/h
-  const std::string md = s.report(ComparisonFormat::markdown);
+  const std::string md = s.report(OutputFormat::markdown);
   EXPECT_NE(md.find(": " + std::to_string(infeasible) + " of 16 evaluated variants violate it."), std::string::npos) << md;
 }
 
 TEST(ComparisonReport, RankedTableHoldsEveryVariantInRankOrder) {
   const TwoAxleStudy& s = two_axle();
-  const auto rows = table_after(s.report(ComparisonFormat::markdown), "## Ranked variants");
+  const auto rows = table_after(s.report(OutputFormat::markdown), "## Ranked variants");
   ASSERT_EQ(rows.size(), 2 + s.comparison.variants.size());  // header, rule, variants
   for (size_t i = 0; i < s.comparison.variants.size(); ++i) {
     const auto c = cells(rows[2 + i]);
@@ -104,7 +104,7 @@ TEST(ComparisonReport, RankedTableHoldsEveryVariantInRankOrder) {
 // each rail length's row spans all five.
 TEST(ComparisonReport, SweepTablesGroupTheVariantsByEachParameterValue) {
   const TwoAxleStudy& s = two_axle();
-  const std::string md = s.report(ComparisonFormat::markdown);
+  const std::string md = s.report(OutputFormat::markdown);
   const auto springs = table_after(md, "### suspension.spring[0].static_deflection");
   ASSERT_EQ(springs.size(), 2u + 5u) << md;
   const auto head = cells(springs[0]);
@@ -128,7 +128,7 @@ TEST(ComparisonReport, SweepTablesGroupTheVariantsByEachParameterValue) {
 
 TEST(ComparisonReport, PeakTableHasTheBaseAndTheBestFeasibleVariants) {
   const TwoAxleStudy& s = two_axle();
-  const auto rows = table_after(s.report(ComparisonFormat::markdown), "## Peak responses");
+  const auto rows = table_after(s.report(OutputFormat::markdown), "## Peak responses");
   ASSERT_EQ(rows.size(), 2u + 1u + static_cast<size_t>(kReportBest));
   EXPECT_EQ(cells(rows[2]).at(0), "base");
   int shown = 0;
@@ -141,7 +141,7 @@ TEST(ComparisonReport, PeakTableHasTheBaseAndTheBestFeasibleVariants) {
 
 TEST(ComparisonReport, HtmlIsOnePageWithItsPlotsInline) {
   const TwoAxleStudy& s = two_axle();
-  const std::string html = s.report(ComparisonFormat::html);
+  const std::string html = s.report(OutputFormat::html);
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("</body></html>"), std::string::npos);
   for (const char* outside : {"<script", "src=", "href=", "<link", "@import"})
@@ -172,7 +172,7 @@ TEST(ComparisonReport, NoFeasibleVariantIsSaidPlainly) {
   TwoAxleStudy s;
   s.study.ranking.constraints = {{"bounce_period", 10.0, std::nullopt}};  // 10 s: no wagon
   s.comparison = rank_variants(s.study, evaluate_study(s.study, {}));
-  const std::string md = s.report(ComparisonFormat::markdown);
+  const std::string md = s.report(OutputFormat::markdown);
   EXPECT_NE(md.find("No variant meets every constraint"), std::string::npos) << md;
   EXPECT_NE(md.find(": 16 of 16 evaluated variants violate it."), std::string::npos) << md;
   // Nothing is feasible: the curves are those of the best-ranked evaluated variants.
@@ -182,13 +182,13 @@ TEST(ComparisonReport, NoFeasibleVariantIsSaidPlainly) {
 TEST(ComparisonReport, TheRankedFormatsDoNotNeedTheStudyButTheReportsDo) {
   const TwoAxleStudy& s = two_axle();
   std::ostringstream table, via_report;
-  write_comparison(table, s.comparison, ComparisonFormat::table);
-  write_comparison_report(via_report, s.study, s.comparison, ComparisonFormat::table);
+  write_comparison(table, s.comparison, OutputFormat::table);
+  write_comparison_report(via_report, s.study, s.comparison, OutputFormat::table);
   EXPECT_EQ(table.str(), via_report.str());
   std::ostringstream out;
-  EXPECT_THROW(write_comparison(out, s.comparison, ComparisonFormat::html), std::invalid_argument);
-  EXPECT_EQ(comparison_format_from_string("markdown"), ComparisonFormat::markdown);
-  EXPECT_EQ(comparison_format_from_string("html"), ComparisonFormat::html);
+  EXPECT_THROW(write_comparison(out, s.comparison, OutputFormat::html), std::invalid_argument);
+  EXPECT_EQ(output_format_from_string("markdown"), OutputFormat::markdown);
+  EXPECT_EQ(output_format_from_string("html"), OutputFormat::html);
 }
 
 }  // namespace

@@ -221,10 +221,10 @@ max_dynamic_deflection_ratio = 1
   ASSERT_EQ(c.variants[1].violations.size(), 1u);
   EXPECT_NE(c.variants[1].violations[0].find("dynamic_deflection_ratio unbounded > 1"), std::string::npos) << c.variants[1].violations[0];
   std::ostringstream table, json;
-  write_comparison(table, c, ComparisonFormat::table);
+  write_comparison(table, c, OutputFormat::table);
   EXPECT_NE(table.str().find("dyn. deflection / permissible"), std::string::npos);
   EXPECT_NE(table.str().find("unbounded"), std::string::npos);
-  write_comparison(json, c, ComparisonFormat::json);
+  write_comparison(json, c, OutputFormat::json);
   EXPECT_NE(json.str().find("\"keeps_permissible_deflections\": false"), std::string::npos);
   EXPECT_NE(json.str().find("\"rule\": \"lehner\""), std::string::npos);
 
@@ -341,7 +341,7 @@ TEST(PermissibleDeflection, NotCheckedUnlessTheStudyNamesARule) {
   EXPECT_TRUE(results[0].deflections.empty());
   EXPECT_FALSE(metric_value(results[0], "dynamic_deflection_ratio").has_value());
   std::ostringstream table;
-  write_comparison(table, rank_variants(s, results), ComparisonFormat::table);
+  write_comparison(table, rank_variants(s, results), OutputFormat::table);
   EXPECT_EQ(table.str().find("deflection / permissible"), std::string::npos);
 }
 

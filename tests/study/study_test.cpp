@@ -308,8 +308,8 @@ parameters = [{ key = "suspension.spring[0].static_deflection", from = "40 mm", 
   const auto serial = evaluate_study(s, one);
   const auto parallel = evaluate_study(s, two);
   std::ostringstream a, b;
-  write_comparison(a, rank_variants(s, serial), ComparisonFormat::json);
-  write_comparison(b, rank_variants(s, parallel), ComparisonFormat::json);
+  write_comparison(a, rank_variants(s, serial), OutputFormat::json);
+  write_comparison(b, rank_variants(s, parallel), OutputFormat::json);
   EXPECT_EQ(a.str(), b.str());
   // Shard 2/3 holds indices 1 and 4.
   EvaluationOptions shard = one;

@@ -4,7 +4,7 @@
 // VB-3) go through the source types that the general path uses.
 #include <cmath>
 
-#include "railmodal/critical_speed_report.hpp"
+#include "railmodal/critical_speed.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {

@@ -132,7 +132,7 @@ std::string shard_text(const Study& study, const std::vector<VariantResult>& res
 
 std::string csv_text(const Study& study, const std::vector<VariantResult>& results) {
   std::ostringstream out;
-  write_comparison(out, rank_variants(study, results), ComparisonFormat::csv);
+  write_comparison(out, rank_variants(study, results), OutputFormat::csv);
   return out.str();
 }
 

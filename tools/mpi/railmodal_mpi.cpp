@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "railmodal/comparison_report.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 
@@ -106,7 +107,7 @@ int merge_and_write(const Options& o, const railmodal::Study& study, const std::
                                                        study.variants[i].name + "')");
     std::ostringstream text;
     railmodal::write_comparison_report(text, study, railmodal::rank_variants(study, std::move(results)),
-                                       *railmodal::comparison_format_from_string(o.format));
+                                       *railmodal::output_format_from_string(o.format));
     return write_output(o.output, text.str());
   } catch (const railmodal::InputError& e) {
     std::cerr << e.what() << "\n";

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "railmodal/comparison_report.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 
@@ -24,7 +25,7 @@ struct CompareOptions {
 };
 
 int run(const CompareOptions& o) {
-  const ComparisonFormat format = *comparison_format_from_string(o.format);  // CLI11 checked the word
+  const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   EvaluationOptions evaluation;
   evaluation.threads = o.threads;
   if (!o.shard.empty()) {

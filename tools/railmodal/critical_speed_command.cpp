@@ -19,7 +19,7 @@ struct CriticalSpeedCommandOptions {
 };
 
 int run(const CriticalSpeedCommandOptions& o) {
-  const ReportFormat format = *report_format_from_string(o.format);  // CLI11 checked the word
+  const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   std::string current = o.scene;  // the file an error without a location belongs to
   try {
     Scene scene = load_scene(o.scene);

@@ -1,0 +1,39 @@
+// railmodal — the report of a design study: the ranked variants as a table, CSV or JSON, and
+// documents to hand in (Markdown, a self-contained HTML page with inline SVG plots).
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <fstream>
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Study study = railmodal::load_study("data/studies/two_axle_rail_length_and_springs.toml");
+//     railmodal::Comparison comparison = railmodal::rank_variants(study, railmodal::evaluate_study(study, {}));
+//     railmodal::write_comparison(std::cout, comparison, railmodal::OutputFormat::table);
+//     std::ofstream page("/dev/null");  // a file such as study.html
+//     railmodal::write_comparison_report(page, study, comparison, railmodal::OutputFormat::html);
+//   }
+#pragma once
+
+#include <ostream>
+
+#include "railmodal/output_format.hpp"
+#include "railmodal/study.hpp"
+
+namespace railmodal {
+
+/// Writes table, csv or json: from the ranked results alone. markdown and html need the study
+/// (write_comparison_report); here they throw std::invalid_argument.
+void write_comparison(std::ostream& out, const Comparison& comparison, OutputFormat format);
+
+/// The report of a study in any format; markdown and html are documents to hand in: why the
+/// winner wins (its criteria against the base and the runner-up, what the others violate),
+/// the ranked table (first kReportRows variants), each swept parameter against the periods
+/// and the objective, and the amplitude-against-speed curves of the best kReportBest
+/// feasible variants over the base's (recomputed from `study`: a critical-speed study each).
+/// HTML is one self-contained page with inline SVG plots.
+inline constexpr int kReportRows = 40;
+inline constexpr int kReportBest = 3;
+void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
+                             OutputFormat format);
+
+}  // namespace railmodal

@@ -1,0 +1,38 @@
+// railmodal — writing a scene's simulation: the time histories of its outputs (CSV, or JSON
+// with a nonlinear scene's events) and their amplitude spectra (CSV).
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <fstream>
+//
+//   int main() {
+//     railmodal::Scene scene = railmodal::load_scene("data/scenes/leaf_spring_drop_test.toml");
+//     railmodal::Vehicle vehicle = railmodal::load_vehicle(scene.vehicle_file);
+//     railmodal::TimeHistory history = railmodal::simulate_scene(scene, vehicle);
+//     std::ofstream out("/dev/null");  // a file such as history.csv
+//     railmodal::write_time_history(out, history, scene, vehicle, railmodal::OutputFormat::csv);
+//     railmodal::OutputSpectra spectra = railmodal::output_spectra(history, scene);
+//     railmodal::write_spectra(out, spectra, railmodal::OutputFormat::csv);
+//   }
+#pragma once
+
+#include <ostream>
+
+#include "railmodal/output_format.hpp"
+#include "railmodal/scene_simulation.hpp"
+#include "railmodal/vehicle.hpp"
+
+namespace railmodal {
+
+/// Writes csv or json (std::invalid_argument for table, markdown and html) of the DOFs the
+/// scene's simulation outputs (output_columns), numbers to ten significant digits. csv:
+/// "time_s" and one column per DOF, one row per sample; json: {"scene", "time_s",
+/// "displacement": {label: [...]}}, and for a nonlinear scene "events": [{"time_s", "element",
+/// "kind"}] and "integration_steps". `vehicle` names the events' elements.
+void write_time_history(std::ostream& out, const TimeHistory& history, const Scene& scene, const Vehicle& vehicle,
+                        OutputFormat format);
+
+/// Writes csv (std::invalid_argument for every other format): "frequency_hz" and one column
+/// per DOF, one row per bin up to the Nyquist frequency, amplitudes to ten significant digits.
+void write_spectra(std::ostream& out, const OutputSpectra& spectra, OutputFormat format);
+
+}  // namespace railmodal
