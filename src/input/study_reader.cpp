@@ -190,16 +190,14 @@ std::string variants_text(size_t count) {
   return count == kMaxStudyVariants ? "a million variants" : std::to_string(count) + " variants";
 }
 
-// Adds the sweep's variants to `specs`, which may hold `max_variants` in all.
-void read_sweep(TableReader& t, int number, std::vector<VariantSpec>* specs, const std::string& base_vehicle,
-                size_t max_variants) {
-  const std::string name = t.optional_string("name").value_or("sweep " + std::to_string(number));
-  const bool sample = t.has("sample");
+// A sweep's parameters, and how each of its variants overrides the base vehicle (or scene).
+struct SweepPlan {
+  std::string name;
   std::vector<SweepParameter> parameters;
-  for (auto& p : t.tables("parameters")) parameters.push_back(read_parameter(p, sample));
-  if (parameters.empty()) t.fail("parameters", "expected at least one parameter");
-  const int line = line_of(t.raw("parameters"));
-  auto add = [&](const std::string& variant_name, const std::vector<toml::value>& values) {
+  int line = 0;  // of its parameters: where its variants come from
+  std::string base_vehicle;
+
+  VariantSpec variant(const std::string& variant_name, const std::vector<toml::value>& values) const {
     VariantSpec spec;
     spec.name = variant_name;
     spec.line = line;
@@ -210,49 +208,69 @@ void read_sweep(TableReader& t, int number, std::vector<VariantSpec>* specs, con
       spec.overrides.push_back({p.key, p.scene, values[j], text, p.line, p.column});
       spec.parameters.push_back({(p.scene ? "scene:" : "") + p.key, text});
     }
-    specs->push_back(spec);
-  };
-  if (sample) {
-    TableReader s = t.table("sample");
-    const int count = s.count("count", 1);
-    if (static_cast<size_t>(count) > max_variants - specs->size())
-      s.fail("count", "would take the study over " + variants_text(max_variants) + " (each is held in memory, in every shard)");
-    const int seed = s.count("seed", 0);
-    s.finish();
-    study::Xoshiro256 generator(static_cast<uint64_t>(seed));
-    for (int i = 0; i < count; ++i) {
-      std::vector<toml::value> values;
-      for (const auto& p : parameters) {
-        const double u = generator.uniform();
-        values.push_back(make_value(p.from.number + u * (p.to.number - p.from.number), p.from));
-      }
-      add(name + " #" + std::to_string(i + 1), values);
-    }
-  } else {
-    // Full grid, the first parameter varying slowest (nested loops in the order written).
-    // Checked factor by factor: four parameters of 65 536 values multiply to 2^64, which a
-    // running product would wrap to 0 (an empty sweep, silently).
-    const size_t room = max_variants - specs->size();
-    size_t total = 1;
-    for (const auto& p : parameters) {
-      if (p.values.size() > room / total)
-        t.fail("parameters", "the grid would take the study over " + variants_text(max_variants) +
-                                 " (each is held in memory, in every shard)");
-      total *= p.values.size();
-    }
-    for (size_t n = 0; n < total; ++n) {
-      std::vector<toml::value> values(parameters.size());
-      std::string label;
-      size_t rest = n;
-      for (size_t j = parameters.size(); j-- > 0;) {
-        values[j] = parameters[j].values[rest % parameters[j].values.size()];
-        rest /= parameters[j].values.size();
-      }
-      for (size_t j = 0; j < parameters.size(); ++j)
-        label += (j ? ", " : ": ") + parameters[j].label + " = " + value_text(values[j]);
-      add(name + label, values);
-    }
+    return spec;
   }
+};
+
+// [sweep.sample]: `count` variants drawn uniformly between each parameter's bounds, from `seed`.
+void add_sampled_variants(TableReader s, const SweepPlan& plan, std::vector<VariantSpec>* specs, size_t max_variants) {
+  const int count = s.count("count", 1);
+  if (static_cast<size_t>(count) > max_variants - specs->size())
+    s.fail("count", "would take the study over " + variants_text(max_variants) + " (each is held in memory, in every shard)");
+  const int seed = s.count("seed", 0);
+  s.finish();
+  study::Xoshiro256 generator(static_cast<uint64_t>(seed));
+  for (int i = 0; i < count; ++i) {
+    std::vector<toml::value> values;
+    for (const auto& p : plan.parameters) {
+      const double u = generator.uniform();
+      values.push_back(make_value(p.from.number + u * (p.to.number - p.from.number), p.from));
+    }
+    specs->push_back(plan.variant(plan.name + " #" + std::to_string(i + 1), values));
+  }
+}
+
+// Full grid, the first parameter varying slowest (nested loops in the order written).
+// Checked factor by factor: four parameters of 65 536 values multiply to 2^64, which a
+// running product would wrap to 0 (an empty sweep, silently).
+void add_grid_variants(TableReader& t, const SweepPlan& plan, std::vector<VariantSpec>* specs, size_t max_variants) {
+  const std::vector<SweepParameter>& parameters = plan.parameters;
+  const size_t room = max_variants - specs->size();
+  size_t total = 1;
+  for (const auto& p : parameters) {
+    if (p.values.size() > room / total)
+      t.fail("parameters", "the grid would take the study over " + variants_text(max_variants) +
+                               " (each is held in memory, in every shard)");
+    total *= p.values.size();
+  }
+  for (size_t n = 0; n < total; ++n) {
+    std::vector<toml::value> values(parameters.size());
+    std::string label;
+    size_t rest = n;
+    for (size_t j = parameters.size(); j-- > 0;) {
+      values[j] = parameters[j].values[rest % parameters[j].values.size()];
+      rest /= parameters[j].values.size();
+    }
+    for (size_t j = 0; j < parameters.size(); ++j)
+      label += (j ? ", " : ": ") + parameters[j].label + " = " + value_text(values[j]);
+    specs->push_back(plan.variant(plan.name + label, values));
+  }
+}
+
+// Adds the sweep's variants to `specs`, which may hold `max_variants` in all.
+void read_sweep(TableReader& t, int number, std::vector<VariantSpec>* specs, const std::string& base_vehicle,
+                size_t max_variants) {
+  SweepPlan plan;
+  plan.name = t.optional_string("name").value_or("sweep " + std::to_string(number));
+  const bool sample = t.has("sample");
+  for (auto& p : t.tables("parameters")) plan.parameters.push_back(read_parameter(p, sample));
+  if (plan.parameters.empty()) t.fail("parameters", "expected at least one parameter");
+  plan.line = line_of(t.raw("parameters"));
+  plan.base_vehicle = base_vehicle;
+  if (sample)
+    add_sampled_variants(t.table("sample"), plan, specs, max_variants);
+  else
+    add_grid_variants(t, plan, specs, max_variants);
   t.finish();
 }
 
