@@ -73,6 +73,47 @@ ModeDescription describe_by_dof(const LinearSystem& system, const Eigen::VectorX
   return d;
 }
 
+// How the leading body moves: its word, the motion whose phase twins compare, and the
+// centre of roll or pitch where the word has one.
+struct LeadingMotion {
+  std::string word;
+  Motion key = Motion::bounce;
+  std::optional<CentreOfOscillation> centre;
+};
+
+LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const BodyEnergy& e) {
+  std::array<double, kTerms> t = e.term;
+  t[kPitch] += t[kLongitudinal];
+  t[kLongitudinal] = 0.0;
+  int word = 0;
+  for (int k = 1; k < kTerms; ++k)
+    if (t[k] > t[word]) word = k;
+
+  LeadingMotion m;
+  const double share_lateral = e.total > 0 ? t[kLateral] / e.total : 0.0;
+  const double share_roll = e.total > 0 ? t[kRoll] / e.total : 0.0;
+  // Sway needs a free lateral motion; a body held laterally (two-axle wagon, bogie frame)
+  // simply rolls about its fixed axis, the book's "side rocking".
+  const bool lateral_free = system.index_of(body.name + ".lateral") >= 0;
+  if (lateral_free && (word == kLateral || word == kRoll) && share_lateral >= 0.1 && share_roll >= 0.1) {
+    m.centre = centre_of(body, e.motion, true);
+    const bool lower = !m.centre->at_infinity && m.centre->position < body.centre_of_gravity.z();
+    m.word = lower ? "lower sway" : "upper sway";
+    m.key = Motion::roll;
+    return m;
+  }
+  switch (word) {
+    case kLateral: m.word = "lateral"; m.key = Motion::lateral; break;
+    case kVertical: m.word = "bounce"; m.key = Motion::bounce; break;
+    case kRoll: m.word = "roll"; m.key = Motion::roll; break;
+    case kPitch: m.word = "pitch"; m.key = Motion::pitch; break;
+    default: m.word = "yaw"; m.key = Motion::yaw; break;
+  }
+  if (word == kRoll) m.centre = centre_of(body, e.motion, true);
+  if (word == kPitch) m.centre = centre_of(body, e.motion, false);
+  return m;
+}
+
 }  // namespace
 
 ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape) {
@@ -90,52 +131,22 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
   }
   const BodyEnergy& e = energy[lead];
   const Body& body = bodies[lead];
-
-  // Leading motion of the leading body.
-  std::array<double, kTerms> t = e.term;
-  t[kPitch] += t[kLongitudinal];
-  t[kLongitudinal] = 0.0;
-  int word = 0;
-  for (int k = 1; k < kTerms; ++k)
-    if (t[k] > t[word]) word = k;
-
+  const LeadingMotion leading = leading_motion(system, body, e);
   ModeDescription d;
-  std::string motion_word;
-  Motion key_motion = Motion::bounce;
-  const double share_lateral = e.total > 0 ? t[kLateral] / e.total : 0.0;
-  const double share_roll = e.total > 0 ? t[kRoll] / e.total : 0.0;
-  // Sway needs a free lateral motion; a body held laterally (two-axle wagon, bogie frame)
-  // simply rolls about its fixed axis, the book's "side rocking".
-  const bool lateral_free = system.index_of(body.name + ".lateral") >= 0;
-  if (lateral_free && (word == kLateral || word == kRoll) && share_lateral >= 0.1 && share_roll >= 0.1) {
-    d.centre = centre_of(body, e.motion, true);
-    const bool lower = !d.centre->at_infinity && d.centre->position < body.centre_of_gravity.z();
-    motion_word = lower ? "lower sway" : "upper sway";
-    key_motion = Motion::roll;
-  } else {
-    switch (word) {
-      case kLateral: motion_word = "lateral"; key_motion = Motion::lateral; break;
-      case kVertical: motion_word = "bounce"; key_motion = Motion::bounce; break;
-      case kRoll: motion_word = "roll"; key_motion = Motion::roll; break;
-      case kPitch: motion_word = "pitch"; key_motion = Motion::pitch; break;
-      default: motion_word = "yaw"; key_motion = Motion::yaw; break;
-    }
-    if (word == kRoll) d.centre = centre_of(body, e.motion, true);
-    if (word == kPitch) d.centre = centre_of(body, e.motion, false);
-  }
+  d.centre = leading.centre;
 
   // A twin body (bogie1/bogie2) sharing the energy: name the pair and their phase.
   const std::string family = family_of(body.name);
   for (size_t b = 0; b < bodies.size(); ++b) {
     if (static_cast<int>(b) == lead || family.empty() || family == body.name) continue;
     if (family_of(bodies[b].name) != family || energy[b].total < 0.5 * e.total) continue;
-    const int m = static_cast<int>(key_motion);
+    const int m = static_cast<int>(leading.key);
     const double a = e.motion(m), other = energy[b].motion(m);
     const std::string phase = a * other >= 0.0 ? "in phase" : "antiphase";
-    d.name = family + "s " + motion_word + ", " + phase;
+    d.name = family + "s " + leading.word + ", " + phase;
     return d;
   }
-  d.name = body.name + " " + motion_word;
+  d.name = body.name + " " + leading.word;
   return d;
 }
 

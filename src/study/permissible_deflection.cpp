@@ -67,10 +67,8 @@ bool friction_elsewhere(const Element& e, size_t stage) {
   return false;
 }
 
-}  // namespace
-
-std::vector<PermissibleDeflection> permissible_deflections(const DeflectionRule& rule, const LinearSystem& system) {
-  const Vehicle& v = system.vehicle;
+// Every element a study limit names must exist (listing those with vertical springs if not).
+void check_named_elements(const DeflectionRule& rule, const Vehicle& v) {
   for (const auto& [name, limit] : rule.element_limits) {
     bool found = false;
     for (const Element& e : v.elements) found = found || e.name == name;
@@ -82,15 +80,59 @@ std::vector<PermissibleDeflection> permissible_deflections(const DeflectionRule&
                                   "' with vertical springs in vehicle '" + v.name + "' (" + known + ")");
     }
   }
+}
+
+// A limit of 0 (a stage with no static load, so 0.2 f_st = 0) checks nothing meaningful.
+void add_limit(const PermissibleDeflection& limit, std::vector<PermissibleDeflection>* out) {
+  if (limit.permissible > 0.0) out->push_back(limit);
+}
+
+// The book's limits of the stages of element k, whose series stiffness is k_element.
+void add_stage_limits(const DeflectionRule& rule, const LinearSystem& system, size_t k, double k_element,
+                      std::vector<PermissibleDeflection>* out) {
+  const Element& e = system.vehicle.elements[k];
+  const bool passenger = rule.service == DeflectionRule::Service::passenger;
+  const int element = static_cast<int>(k);
+  for (size_t s = 0; s < e.vertical_stages.size(); ++s) {
+    const SpringStage& stage = e.vertical_stages[s];
+    const std::string kind = lower_case(stage.kind);
+    // In series every stage carries the element's force: a stage deflects k_element/k_stage
+    // of the element's stretch.
+    const double share = k_element / (stage.stiffness * stage.count);
+    const double by_force = friction_elsewhere(e, s) ? stage.stiffness * stage.count : 0.0;
+    const int index = static_cast<int>(s);
+    if (rule.book == DeflectionRule::Book::korotkevich) {
+      // Korotkevich (1935), p. 97: elliptic springs of passenger cars.
+      if (passenger && kind == "elliptic")
+        add_limit({element, index, 0.030, share, "Korotkevich: elliptic springs of passenger cars 30 mm", by_force},
+                  out);
+    } else if (rule.book == DeflectionRule::Book::lehner) {
+      // Lehner, pp. 150–153: by spring kind; leaf springs only for freight cars.
+      const double f_st = static_deflection(stage, system.element_loads[k]);
+      if (kind == "coil")
+        add_limit({element, index, 0.030, share, "Lehner: coil springs 30 mm", by_force}, out);
+      else if (kind == "elliptic")
+        add_limit({element, index, 0.2 * f_st, share, "Lehner: elliptic springs 0.2 f_st = 0.2 × " + millimetres(f_st),
+                   by_force},
+                  out);
+      else if (kind == "leaf" && !passenger)
+        add_limit({element, index, 0.4 * f_st, share,
+                   "Lehner: freight leaf springs 0.4 f_st = 0.4 × " + millimetres(f_st), by_force},
+                  out);
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<PermissibleDeflection> permissible_deflections(const DeflectionRule& rule, const LinearSystem& system) {
+  const Vehicle& v = system.vehicle;
+  check_named_elements(rule, v);
   const bool passenger = rule.service == DeflectionRule::Service::passenger;
   // Korotkevich's axle-box limits are for cars without bogies: every spring stands on the track.
   bool bogieless = true;
   for (const Element& e : v.elements) bogieless = bogieless && (e.lower.empty() || e.vertical_stages.empty());
   std::vector<PermissibleDeflection> out;
-  // A limit of 0 (a stage with no static load, so 0.2 f_st = 0) checks nothing meaningful.
-  auto add = [&](const PermissibleDeflection& limit) {
-    if (limit.permissible > 0.0) out.push_back(limit);
-  };
   for (size_t k = 0; k < v.elements.size(); ++k) {
     const Element& e = v.elements[k];
     const double k_element = series_stiffness(e.vertical_stages);
@@ -99,41 +141,18 @@ std::vector<PermissibleDeflection> permissible_deflections(const DeflectionRule&
     bool overridden = false;
     for (const auto& [name, limit] : rule.element_limits)
       if (name == e.name) {
-        add({element, -1, limit, 1.0, "study: " + millimetres(limit)});
+        add_limit({element, -1, limit, 1.0, "study: " + millimetres(limit)}, &out);
         overridden = true;
       }
     if (overridden) continue;
-    for (size_t s = 0; s < e.vertical_stages.size(); ++s) {
-      const SpringStage& stage = e.vertical_stages[s];
-      const std::string kind = lower_case(stage.kind);
-      // In series every stage carries the element's force: a stage deflects k_element/k_stage
-      // of the element's stretch.
-      const double share = k_element / (stage.stiffness * stage.count);
-      const double by_force = friction_elsewhere(e, s) ? stage.stiffness * stage.count : 0.0;
-      const int index = static_cast<int>(s);
-      if (rule.book == DeflectionRule::Book::korotkevich) {
-        // Korotkevich (1935), p. 97: elliptic springs of passenger cars.
-        if (passenger && kind == "elliptic")
-          add({element, index, 0.030, share, "Korotkevich: elliptic springs of passenger cars 30 mm", by_force});
-      } else if (rule.book == DeflectionRule::Book::lehner) {
-        // Lehner, pp. 150–153: by spring kind; leaf springs only for freight cars.
-        const double f_st = static_deflection(stage, system.element_loads[k]);
-        if (kind == "coil")
-          add({element, index, 0.030, share, "Lehner: coil springs 30 mm", by_force});
-        else if (kind == "elliptic")
-          add({element, index, 0.2 * f_st, share, "Lehner: elliptic springs 0.2 f_st = 0.2 × " + millimetres(f_st),
-               by_force});
-        else if (kind == "leaf" && !passenger)
-          add({element, index, 0.4 * f_st, share, "Lehner: freight leaf springs 0.4 f_st = 0.4 × " + millimetres(f_st),
-               by_force});
-      }
-    }
+    add_stage_limits(rule, system, k, k_element, &out);
     // Korotkevich: the axle-box springs as a whole, of 2- and 3-axle passenger cars and of
     // bogie-less freight cars.
     if (rule.book == DeflectionRule::Book::korotkevich && bogieless && e.lower.empty())
-      add({element, -1, passenger ? 0.040 : 0.025, 1.0,
-           passenger ? "Korotkevich: axle-box springs of 2- and 3-axle passenger cars 40 mm"
-                     : "Korotkevich: axle-box springs of bogie-less freight cars 25 mm"});
+      add_limit({element, -1, passenger ? 0.040 : 0.025, 1.0,
+                 passenger ? "Korotkevich: axle-box springs of 2- and 3-axle passenger cars 40 mm"
+                           : "Korotkevich: axle-box springs of bogie-less freight cars 25 mm"},
+                &out);
   }
   return out;
 }
