@@ -35,7 +35,10 @@ enum class DampedModeKind {
   rigid_body    ///< λ = 0 (a direction nothing restrains), with the rate at which its velocity
                 ///< decays as the second eigenvalue
 };
+/// "underdamped", "critical", "overdamped", "divergent", "first-order", "rigid-body"
 const char* to_string(DampedModeKind kind);
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<DampedModeKind> damped_mode_kind_from_string(const std::string& word);
 
 struct DampedModalOptions {
   /// Options of the undamped solve the damped modes are matched to (its zero_tolerance on

@@ -32,7 +32,9 @@ enum class ModeKind {
   rigid_body,   ///< λ = 0 within the tolerance: a direction nothing restrains
   unstable      ///< λ < 0: diverges as e^{σt}, σ = √−λ (e.g. CG too high for the springs)
 };
-const char* to_string(ModeKind kind);
+const char* to_string(ModeKind kind);  ///< "oscillatory", "rigid-body", "unstable"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<ModeKind> mode_kind_from_string(const std::string& word);
 
 /// Which eigensolver back-end computes the modes (docs/solvers.md).
 enum class ModalSolver {
@@ -41,6 +43,7 @@ enum class ModalSolver {
   automatic   ///< dense up to kArpackAboveDofs degrees of freedom, ARPACK above
 };
 const char* to_string(ModalSolver solver);  ///< "dense", "arpack", "auto"
+/// Inverse of to_string; std::nullopt for an unknown word.
 std::optional<ModalSolver> modal_solver_from_string(const std::string& word);
 
 /// ModalSolver::automatic chooses ARPACK for models with more degrees of freedom than this

@@ -53,7 +53,9 @@ HarmonicResponse modal_harmonic_response(const LinearSystem& system, const Modal
                                          int mode_count = 0);
 
 enum class ResponseQuantity { displacement, velocity, acceleration };
-const char* to_string(ResponseQuantity quantity);
+const char* to_string(ResponseQuantity quantity);  ///< "displacement", "velocity", "acceleration"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<ResponseQuantity> response_quantity_from_string(const std::string& word);
 
 /// |X|, |iωX| or |ω²X| of one DOF.
 double response_amplitude(const HarmonicResponse& response, int dof, ResponseQuantity quantity);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,7 +65,9 @@ struct SimulationEvent {
   /// between events, so these points and the regular samples interpolate it piece by piece.
   Eigen::VectorXd displacement, velocity;
 };
-const char* to_string(SimulationEvent::Kind kind);
+const char* to_string(SimulationEvent::Kind kind);  ///< "stick", "slip", "reversal", "kink"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<SimulationEvent::Kind> simulation_event_kind_from_string(const std::string& word);
 
 /// Sampled response: one row per time, one column per DOF.
 struct TimeHistory {

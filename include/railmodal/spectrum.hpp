@@ -69,6 +69,9 @@ enum class Padding {
   to_length,          ///< M = SpectrumOptions::padded_length (≥ N)
   next_power_of_two,  ///< M = the smallest power of two ≥ N
 };
+const char* to_string(Padding padding);  ///< "none", "to-length", "next-power-of-two"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<Padding> padding_from_string(const std::string& word);
 
 struct SpectrumOptions {
   Window window = Window::hann;

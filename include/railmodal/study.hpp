@@ -82,8 +82,11 @@ struct DeflectionRule {
   std::vector<std::pair<std::string, double>> element_limits;
   bool active() const { return book != Book::none || !element_limits.empty(); }
 };
-const char* to_string(DeflectionRule::Book book);
-const char* to_string(DeflectionRule::Service service);
+const char* to_string(DeflectionRule::Book book);  ///< "none", "korotkevich", "lehner"
+const char* to_string(DeflectionRule::Service service);  ///< "passenger", "freight"
+/// Inverses of to_string; std::nullopt for an unknown word.
+std::optional<DeflectionRule::Book> deflection_book_from_string(const std::string& word);
+std::optional<DeflectionRule::Service> deflection_service_from_string(const std::string& word);
 
 struct Study {
   std::string name;

@@ -30,6 +30,13 @@ const char* to_string(SimulationEvent::Kind kind) {
   return "?";
 }
 
+std::optional<SimulationEvent::Kind> simulation_event_kind_from_string(const std::string& word) {
+  using Kind = SimulationEvent::Kind;
+  for (Kind k : {Kind::stick, Kind::slip, Kind::reversal, Kind::kink})
+    if (word == to_string(k)) return k;
+  return std::nullopt;
+}
+
 namespace {
 
 using simulate::NonlinearElement;

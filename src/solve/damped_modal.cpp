@@ -49,6 +49,13 @@ const char* to_string(DampedModeKind kind) {
   return "?";
 }
 
+std::optional<DampedModeKind> damped_mode_kind_from_string(const std::string& word) {
+  for (DampedModeKind k : {DampedModeKind::underdamped, DampedModeKind::critical, DampedModeKind::overdamped,
+                           DampedModeKind::divergent, DampedModeKind::first_order, DampedModeKind::rigid_body})
+    if (word == to_string(k)) return k;
+  return std::nullopt;
+}
+
 bool DampedModalOptions::is_valid(std::string* why) const {
   if (!undamped.is_valid(why)) return false;
   if (!(critical_gap > 0.0 && critical_gap < 1e-2)) {

@@ -22,6 +22,12 @@ const char* to_string(ModeKind kind) {
   return "?";
 }
 
+std::optional<ModeKind> mode_kind_from_string(const std::string& word) {
+  for (ModeKind k : {ModeKind::oscillatory, ModeKind::rigid_body, ModeKind::unstable})
+    if (word == to_string(k)) return k;
+  return std::nullopt;
+}
+
 const char* to_string(ModalSolver solver) {
   switch (solver) {
     case ModalSolver::dense: return "dense";

@@ -41,6 +41,21 @@ void check_signal(const Eigen::Ref<const Eigen::VectorXd>& signal, Eigen::Index 
 
 }  // namespace
 
+const char* to_string(Padding padding) {
+  switch (padding) {
+    case Padding::none: return "none";
+    case Padding::to_length: return "to-length";
+    case Padding::next_power_of_two: return "next-power-of-two";
+  }
+  return "?";
+}
+
+std::optional<Padding> padding_from_string(const std::string& word) {
+  for (Padding p : {Padding::none, Padding::to_length, Padding::next_power_of_two})
+    if (word == to_string(p)) return p;
+  return std::nullopt;
+}
+
 bool SpectrumOptions::is_valid(std::string* why) const {
   if (padding == Padding::to_length && padded_length < 2) {
     if (why) *why = "padded_length must be at least 2 (and the signal length) with Padding::to_length";
