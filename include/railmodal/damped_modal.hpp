@@ -101,6 +101,9 @@ struct DampedModalResult {
   std::vector<std::string> first_order;
   bool stable = true;  ///< every mode is stable
   double max_residual = 0.0;
+  /// The method, the residual check and the stages ("undamped modes", "state-space
+  /// eigenvalues", "matching and shapes"); the undamped solve has its own in undamped.solver.
+  AnalysisSummary summary;
 };
 
 /// Damped modes: the eigenvalues of the first-order (state-space) form of

@@ -23,6 +23,7 @@
 
 #include "railmodal/linear_system.hpp"
 #include "railmodal/sparse_system.hpp"
+#include "railmodal/summary.hpp"
 
 namespace railmodal {
 
@@ -94,8 +95,11 @@ struct ModalOptions {
 /// kArpackDefaultModes when 0) are fewer than half the DOFs, else dense.
 ModalSolver choose_solver(ModalSolver requested, int dofs, int mode_count);
 
-/// How the modes were computed.
-struct SolverSummary {
+/// How the modes were computed. As every analysis summary: the method, the checks (relative
+/// residual against ModalOptions::max_residual, M-orthonormality, and for ARPACK the inertia
+/// count) and the wall time of the stages ("eigensolve", "classify and check"; "densify"
+/// first when a sparse model goes to the dense solver).
+struct SolverSummary : AnalysisSummary {
   ModalSolver solver = ModalSolver::dense;  ///< the back-end used (never automatic)
   // ARPACK only:
   double shift = 0.0;          ///< σ of the last run

@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "railmodal/summary.hpp"
+
 namespace railmodal {
 
 /// Data windows, all in the periodic (DFT-even) form w[n], n = 0 … N−1, so that a tone
@@ -110,6 +112,9 @@ struct Spectrum {
   double bin_spacing = 0.0;
   Window window = Window::hann;
   double coherent_gain = 0.0;  ///< Σw/N of the window as applied
+  /// The method (window, padding), the check that every amplitude is finite and the stage
+  /// times ("window", "transform", "scale"). Refilled without allocating when reused.
+  AnalysisSummary summary;
 
   double frequency(Eigen::Index bin) const { return static_cast<double>(bin) * bin_spacing; }
   Eigen::VectorXd frequencies() const;  ///< frequency(k) for every bin, Hz

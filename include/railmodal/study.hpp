@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "railmodal/scene.hpp"
+#include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
 
 namespace railmodal {
@@ -167,6 +168,9 @@ struct VariantResult {
   std::vector<PeakSummary> peaks;
   bool deflections_checked = false;  ///< the study names a deflection rule
   std::vector<DeflectionCheck> deflections;  ///< every element or stage the rule limits
+  /// The checks (modes, critical speeds, deflections kept) and the stage times of the
+  /// evaluation; not written to shards (read_shard leaves it empty).
+  AnalysisSummary summary;
 
   bool ok() const { return failure.empty(); }
 };
@@ -182,11 +186,16 @@ struct EvaluationOptions {
   int shard = 1;        ///< this process evaluates the variants with index % shards == shard − 1
   int shards = 1;
   std::function<void(double)> progress;  ///< fraction done, called from one thread at a time
+  /// Returns false and explains in *why when an option is out of range.
+  bool is_valid(std::string* why) const;
 };
 
 /// The variants of this shard, in index order; the same whatever the thread count. Each must
-/// have been read (load_study with this shard, or all); std::invalid_argument otherwise.
-std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options);
+/// have been read (load_study with this shard, or all); std::invalid_argument otherwise, and
+/// for invalid options. `summary`, if given, receives the threads, the variants evaluated and
+/// failed, and the stage time.
+std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options,
+                                          AnalysisSummary* summary = nullptr);
 
 /// The value of a metric for a result, SI, or nothing when the result has no such value
 /// (no mode of that name). "lowest_critical_speed" and "critical_speed:<mode>" are +∞ without

@@ -34,6 +34,8 @@
 
 #include "railmodal/damped_modal.hpp"
 #include "railmodal/errors.hpp"
+#include "require_valid.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
@@ -137,8 +139,7 @@ double relative_residual(const LinearSystem& s, const Eigen::MatrixXd& C, cd lam
 }  // namespace
 
 DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedModalOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument("DampedModalOptions: " + why);
+  require_valid(options, "DampedModalOptions: ");
   const int n = system.size();
   Eigen::MatrixXd C = system.damping;
   if (C.size() == 0) C = Eigen::MatrixXd::Zero(n, n);
@@ -149,7 +150,9 @@ DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedMod
   if (!C.allFinite()) throw NumericalError("the damping matrix contains NaN or infinity");
 
   DampedModalResult result;
+  StageClock clock(&result.summary);
   result.undamped = solve_modes(system, options.undamped);  // checks M and K, condenses, names
+  clock.lap("undamped modes");
   result.dofs = system.dofs;
   const ModalResult& und = result.undamped;
   const Eigen::MatrixXd& M = system.mass;
@@ -249,6 +252,7 @@ DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedMod
   if (eig.info() != Eigen::Success) throw NumericalError("the state-space eigensolver did not converge");
   const Eigen::VectorXcd values = eig.eigenvalues();
   const Eigen::MatrixXcd vectors = scaling.cast<cd>().asDiagonal() * eig.eigenvectors();
+  clock.lap("state-space eigenvalues");
 
   double scale = 0.0;
   for (int i = 0; i < values.size(); ++i) scale = std::max(scale, std::abs(values(i)));
@@ -433,6 +437,12 @@ DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedMod
     return a.undamped_mode < b.undamped_mode;
   });
   for (size_t i = 0; i < result.modes.size(); ++i) result.modes[i].index = static_cast<int>(i) + 1;
+  clock.lap("matching and shapes");
+  result.summary.analysis = "damped modes";
+  result.summary.method = "QR of the balanced state matrix on the undamped modal basis (Eigen), roots matched to "
+                          "undamped modes by their energy";
+  result.summary.checks.push_back({"max relative residual", result.max_residual, options.undamped.max_residual,
+                                   result.max_residual <= options.undamped.max_residual});
   if (!(result.max_residual <= options.undamped.max_residual))
     throw NumericalError("damped eigen-solution residual " + std::to_string(result.max_residual) +
                          " exceeds the limit " + std::to_string(options.undamped.max_residual));
