@@ -191,7 +191,9 @@ struct SpectralPeak {
 /// Spectral peaks in ascending frequency: local maxima of the amplitude away from bin 0 and
 /// the last bin, with the dip that options.min_dip asks for, of at least options.threshold
 /// times the largest such maximum. Throws std::invalid_argument for invalid options or a
-/// spectrum with fewer than 3 bins.
-std::vector<SpectralPeak> find_peaks(const Spectrum& spectrum, const PeakOptions& options = {});
+/// spectrum with fewer than 3 bins. `summary`, if given, receives the method, the maxima
+/// found and kept, and the stage times.
+std::vector<SpectralPeak> find_peaks(const Spectrum& spectrum, const PeakOptions& options = {},
+                                     AnalysisSummary* summary = nullptr);
 
 }  // namespace railmodal

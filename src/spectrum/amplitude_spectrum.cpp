@@ -4,6 +4,7 @@
 #include <string>
 
 #include "railmodal/spectrum.hpp"
+#include "require_valid.hpp"
 #include "spectrum/real_fft.hpp"
 
 namespace railmodal {
@@ -107,8 +108,7 @@ struct SpectrumAnalyzer::Impl {
 };
 
 SpectrumAnalyzer::SpectrumAnalyzer(Eigen::Index signal_length, const SpectrumOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  require_valid(options, "");
   if (signal_length < 2)
     throw std::invalid_argument("a spectrum needs a signal of at least 2 samples, got " + std::to_string(signal_length));
   impl_ = std::make_unique<Impl>(signal_length, options);

@@ -192,6 +192,27 @@ TEST(AnalysisSummary, SpectrumReusedWithoutGrowing) {
   }
 }
 
+TEST(AnalysisSummary, SpectralPeaks) {
+  Eigen::VectorXd x(1000);
+  for (Eigen::Index n = 0; n < x.size(); ++n) x(n) = std::sin(0.3 * static_cast<double>(n));
+  const Spectrum spectrum = amplitude_spectrum(x, 100.0);
+  AnalysisSummary s;
+  double wall = 0.0;
+  const auto peaks = timed([&] { return find_peaks(spectrum, {}, &s); }, &wall);
+  expect_filled(s, wall);
+  ASSERT_EQ(s.checks.size(), 2u);
+  EXPECT_EQ(s.checks[1].value, static_cast<double>(peaks.size()));
+}
+
+TEST(AnalysisSummary, LateralStability) {
+  double wall = 0.0;
+  const LateralStability s =
+      timed([&] { return lateral_stability(load_vehicle(data_file("resort_car.toml")), "body"); }, &wall);
+  expect_filled(s.summary, wall);
+  ASSERT_EQ(s.summary.checks.size(), 1u);
+  EXPECT_DOUBLE_EQ(s.summary.checks[0].value, -s.margin);
+}
+
 TEST(AnalysisSummary, StudyVariantsAndShard) {
   StudyVariant variant;
   variant.name = "base";
