@@ -5,8 +5,9 @@
 //
 //   railmodal::DampedModalResult r = railmodal::solve_damped_modes(system);
 //   std::cout << r.summary.brief() << "\n";
-//   // damped modes by state-space QR on the undamped modal basis: 1 of 1 checks passed;
-//   // 0.0021 s (undamped modes 0.0009 s, state-space eigenvalues 0.0008 s, matching 0.0004 s)
+//   // damped modes by QR of the balanced state matrix on the undamped modal basis (Eigen), roots
+//   // matched to undamped modes by their energy: 1 of 1 checks passed; 0.0021 s (undamped modes
+//   // 0.0009 s, state-space eigenvalues 0.0008 s, matching and shapes 0.0004 s)
 #pragma once
 
 #include <limits>
