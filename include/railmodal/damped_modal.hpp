@@ -39,7 +39,10 @@ enum class DampedModeKind {
   rigid_body    ///< λ = 0 (a direction nothing restrains), with the rate at which its velocity
                 ///< decays as the second eigenvalue
 };
+/// "underdamped", "critical", "overdamped", "divergent", "first-order", "rigid-body"
 const char* to_string(DampedModeKind kind);
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<DampedModeKind> damped_mode_kind_from_string(const std::string& word);
 
 struct DampedModalOptions {
   /// Options of the undamped solve the damped modes are matched to (its zero_tolerance on
@@ -102,6 +105,9 @@ struct DampedModalResult {
   std::vector<std::string> first_order;
   bool stable = true;  ///< every mode is stable
   double max_residual = 0.0;
+  /// The method, the residual check and the stages ("undamped modes", "state-space
+  /// eigenvalues", "matching and shapes"); the undamped solve has its own in undamped.solver.
+  AnalysisSummary summary;
 };
 
 /// Damped modes: the eigenvalues of the first-order (state-space) form of

@@ -118,7 +118,9 @@ class ExcitationSource {
 /// rail length; the sinusoidal flat, eq. (280)); triangular η = h(1 − 2|s|/l); parabolic
 /// η = h(1 − 4s²/l²) (the parabolic flat, §2.10).
 enum class DipShape { cosine, triangular, parabolic };
-const char* to_string(DipShape shape);
+const char* to_string(DipShape shape);  ///< "cosine", "triangular", "parabolic"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<DipShape> dip_shape_from_string(const std::string& word);
 
 /// Complex amplitude of harmonic k (≥ 1) of a train of dips −η repeating every `period`,
 /// the dip centred at s = 0: the profile is Σ_k Re(A_k e^{i2πks/period}). A_k is real.
@@ -181,6 +183,9 @@ struct Hunting {
   };
   std::optional<Meineke> meineke;
 };
+const char* to_string(Hunting::Model model);  ///< "free_wheelset", "rigid_bogie", "given" (as in scene files)
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<Hunting::Model> hunting_model_from_string(const std::string& word);
 
 /// Klingel's wavelength of a free wheelset, eq. (264b): λ = 2π√(s r / (2n)).
 double klingel_wavelength(double conicity, double rolling_circle_spacing, double rolling_radius);

@@ -30,6 +30,7 @@
 
 #include "railmodal/linear_system.hpp"
 #include "railmodal/sparse_system.hpp"
+#include "railmodal/summary.hpp"
 
 namespace railmodal {
 
@@ -39,7 +40,9 @@ enum class ModeKind {
   rigid_body,   ///< λ = 0 within the tolerance: a direction nothing restrains
   unstable      ///< λ < 0: diverges as e^{σt}, σ = √−λ (e.g. CG too high for the springs)
 };
-const char* to_string(ModeKind kind);
+const char* to_string(ModeKind kind);  ///< "oscillatory", "rigid-body", "unstable"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<ModeKind> mode_kind_from_string(const std::string& word);
 
 /// Which eigensolver back-end computes the modes (docs/solvers.md).
 enum class ModalSolver {
@@ -48,6 +51,7 @@ enum class ModalSolver {
   automatic   ///< dense up to kArpackAboveDofs degrees of freedom, ARPACK above
 };
 const char* to_string(ModalSolver solver);  ///< "dense", "arpack", "auto"
+/// Inverse of to_string; std::nullopt for an unknown word.
 std::optional<ModalSolver> modal_solver_from_string(const std::string& word);
 
 /// ModalSolver::automatic chooses ARPACK for models with more degrees of freedom than this
@@ -98,8 +102,11 @@ struct ModalOptions {
 /// kArpackDefaultModes when 0) are fewer than half the DOFs, else dense.
 ModalSolver choose_solver(ModalSolver requested, int dofs, int mode_count);
 
-/// How the modes were computed.
-struct SolverSummary {
+/// How the modes were computed. As every analysis summary: the method, the checks (relative
+/// residual against ModalOptions::max_residual, M-orthonormality, and for ARPACK the inertia
+/// count) and the wall time of the stages ("eigensolve", "classify and check"; "densify"
+/// first when a sparse model goes to the dense solver).
+struct SolverSummary : AnalysisSummary {
   ModalSolver solver = ModalSolver::dense;  ///< the back-end used (never automatic)
   // ARPACK only:
   double shift = 0.0;          ///< σ of the last run

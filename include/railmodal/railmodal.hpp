@@ -34,4 +34,5 @@
 #include "railmodal/spectrum.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/study.hpp"
+#include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"

@@ -44,6 +44,7 @@
 
 #include "railmodal/excitation.hpp"
 #include "railmodal/modal.hpp"
+#include "railmodal/summary.hpp"
 
 namespace railmodal {
 
@@ -78,7 +79,9 @@ HarmonicResponse modal_harmonic_response(const LinearSystem& system, const Modal
                                          int mode_count = 0);
 
 enum class ResponseQuantity { displacement, velocity, acceleration };
-const char* to_string(ResponseQuantity quantity);
+const char* to_string(ResponseQuantity quantity);  ///< "displacement", "velocity", "acceleration"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<ResponseQuantity> response_quantity_from_string(const std::string& word);
 
 /// |X|, |iωX| or |ω²X| of one DOF.
 double response_amplitude(const HarmonicResponse& response, int dof, ResponseQuantity quantity);
@@ -137,13 +140,18 @@ struct CriticalSpeedOptions {
   /// > 0: leaf friction also acts as equivalent viscous damping for this element stretch
   /// amplitude (m), so resonances get finite amplitudes; 0: friction only in the criterion.
   double friction_reference_amplitude = 0.0;
+  /// Returns false and explains in *why when an option is out of range.
+  bool is_valid(std::string* why) const;
 };
 
 /// Every resonance V = Λ·f/k in the range, for every source, harmonic and oscillatory mode
-/// that the source loads, sorted by speed.
+/// that the source loads, sorted by speed. Throws std::invalid_argument for invalid options.
+/// `summary`, if given, receives the method, the checks (resonances found, driven, stopped by
+/// friction) and the stage times.
 std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,
                                                 const std::vector<const ExcitationSource*>& sources,
-                                                const CriticalSpeedOptions& options);
+                                                const CriticalSpeedOptions& options,
+                                                AnalysisSummary* summary = nullptr);
 
 /// The speeds of a sweep, m/s, ascending or as given: immutable, and shared rather than copied
 /// by the curves of one sweep (a sweep of 10⁴ speeds and 8 curves would otherwise spend more
@@ -208,12 +216,16 @@ struct OutputRequest {
 /// One curve per output, from one direct solve per speed and harmonic (or the modal
 /// expansion that agrees with it). The curves share `speeds` (a vector converts, copied
 /// once); sweeps of several sources over one grid can pass one SpeedGrid and share it too.
-/// `friction_reference_amplitude` as in CriticalSpeedOptions.
+/// `friction_reference_amplitude` as in CriticalSpeedOptions. Throws std::invalid_argument for
+/// an output DOF out of range or a speed not positive and finite. `summary`, if given,
+/// receives the path taken (modal superposition, complex modes, or direct solves), the
+/// unbounded speeds found and the stage times.
 std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
                                              const ExcitationSource& source, int source_index,
                                              const std::vector<OutputRequest>& outputs,
                                              const SpeedGrid& speeds,
-                                             double friction_reference_amplitude = 0.0);
+                                             double friction_reference_amplitude = 0.0,
+                                             AnalysisSummary* summary = nullptr);
 
 /// Dynamic deflection of one suspension element against speed for one source: the amplitude
 /// of its vertical stretch, upper end relative to lower end (relative to the track under it
@@ -235,12 +247,15 @@ struct DeflectionCurve {
 /// One curve per element, from one direct solve per speed and harmonic. Leaf friction of
 /// element k acts as the equivalent viscous damper for a stretch amplitude of
 /// `friction_reference_stretch[k]` (m; see with_equivalent_friction_damping); 0, or no entry,
-/// leaves that element's friction out of the linear model.
+/// leaves that element's friction out of the linear model. Throws std::invalid_argument for an
+/// element out of range or a speed not positive and finite. `summary`, if given, receives the
+/// method, the unbounded points found and the stage times.
 std::vector<DeflectionCurve> element_deflection_curves(const LinearSystem& system, const ModalResult& modes,
                                                        const ExcitationSource& source, int source_index,
                                                        const std::vector<int>& elements,
                                                        const std::vector<double>& speeds,
-                                                       const std::vector<double>& friction_reference_stretch = {});
+                                                       const std::vector<double>& friction_reference_stretch = {},
+                                                       AnalysisSummary* summary = nullptr);
 /// The largest amplitude of one output between `low` and `high` (a bracket holding one
 /// damped resonance peak), by golden-section search until the bracket is narrower than
 /// `relative_tolerance` × speed. Each evaluation is one direct solve per source harmonic.
@@ -251,8 +266,10 @@ struct Peak {
   bool unbounded = false;  ///< an undamped resonance: no finite peak
 };
 
+/// Throws std::invalid_argument unless 0 < low < high and relative_tolerance > 0. `summary`, if
+/// given, receives the method, the evaluations and the final bracket, and the stage time.
 Peak refine_peak(const LinearSystem& system, const ModalResult& modes, const ExcitationSource& source,
                  const OutputRequest& output, double low, double high, double relative_tolerance,
-                 double friction_reference_amplitude = 0.0);
+                 double friction_reference_amplitude = 0.0, AnalysisSummary* summary = nullptr);
 
 }  // namespace railmodal

@@ -96,6 +96,9 @@ struct FftCheckResult {
   /// half periods check what broad spectral lines cannot.
   std::optional<Swings> swings;
   double linear_half_period_s = 0.0;  ///< π/ω of that mode, for comparison
+  /// The checks (modes checked, excited, within resolution) and the stage times; the
+  /// simulation, modes and spectra carry their own.
+  AnalysisSummary summary;
 };
 
 /// Simulates the scene and compares the spectral peaks of each excited oscillatory mode's

@@ -25,11 +25,13 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "railmodal/excitation.hpp"
 #include "railmodal/linear_system.hpp"
+#include "railmodal/summary.hpp"
 
 namespace railmodal {
 
@@ -55,6 +57,10 @@ struct SimulationOptions {
   /// Nonlinear path only: events (stick, slip, reversal, a kink of a progressive spring) are
   /// located to within this time, s.
   double event_tolerance = 1e-12;
+  /// Returns false and explains in *why when an option is out of range. The rules that depend
+  /// on the path or the sources (a speed with sources, a ramp, the step count) are the
+  /// simulation's own.
+  bool is_valid(std::string* why) const;
 };
 
 /// The suspension nonlinearities a simulation follows; an effect left out is not built (the
@@ -82,7 +88,9 @@ struct SimulationEvent {
   /// between events, so these points and the regular samples interpolate it piece by piece.
   Eigen::VectorXd displacement, velocity;
 };
-const char* to_string(SimulationEvent::Kind kind);
+const char* to_string(SimulationEvent::Kind kind);  ///< "stick", "slip", "reversal", "kink"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<SimulationEvent::Kind> simulation_event_kind_from_string(const std::string& word);
 
 /// Sampled response: one row per time, one column per DOF.
 struct TimeHistory {
@@ -92,11 +100,15 @@ struct TimeHistory {
   Eigen::MatrixXd velocity;         ///< m/s or rad/s
   std::vector<SimulationEvent> events;  ///< nonlinear path: every regime change, in time order
   int steps_taken = 0;                  ///< integrator steps (nonlinear path), for cost reports
+  /// The path and its integrator, the check that the history is finite (and, nonlinear, the
+  /// steps and events) and the stage times.
+  AnalysisSummary summary;
 };
 
 /// Linear scene: the sources enter through their harmonic loads Σ_k Re(Q_k e^{iω_k t}) (as in
 /// the harmonic response), the vehicle's viscous dampers through C. Throws std::invalid_argument
-/// for bad options or initial conditions on unknown or massless DOFs.
+/// for invalid options (SimulationOptions::is_valid), a speed ramp, more than 1e8 steps, sources
+/// without a positive speed, or initial conditions on unknown or massless DOFs.
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                             const SimulationOptions& options);
 
@@ -107,8 +119,10 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
 /// decay of a leaf spring comes out to the tolerance (2φf/(1 ± φ) per half period, then rest in
 /// the dead band). Stuck springs are constraints (their relative velocity is zero; the friction
 /// force is what holds them, checked against φ times the elastic reaction).
-/// Throws std::invalid_argument for what it cannot model: a friction or progressive stage in
-/// series with other stages (a massless spring end), or massless degrees of freedom.
+/// Throws std::invalid_argument for invalid options (SimulationOptions::is_valid), more than 1e8
+/// output steps, sources without a positive speed, a ramp without sources, and for what it
+/// cannot model: a friction or progressive stage in series with other stages (a massless
+/// spring end), or massless degrees of freedom.
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                                const SimulationOptions& options, const NonlinearEffects& effects);
 

@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+#include "railmodal/summary.hpp"
+
 namespace railmodal {
 
 /// Data windows, all in the periodic (DFT-even) form w[n], n = 0 … N−1, so that a tone
@@ -69,6 +71,9 @@ enum class Padding {
   to_length,          ///< M = SpectrumOptions::padded_length (≥ N)
   next_power_of_two,  ///< M = the smallest power of two ≥ N
 };
+const char* to_string(Padding padding);  ///< "none", "to-length", "next-power-of-two"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<Padding> padding_from_string(const std::string& word);
 
 struct SpectrumOptions {
   Window window = Window::hann;
@@ -107,6 +112,9 @@ struct Spectrum {
   double bin_spacing = 0.0;
   Window window = Window::hann;
   double coherent_gain = 0.0;  ///< Σw/N of the window as applied
+  /// The method (window, padding), the check that every amplitude is finite and the stage
+  /// times ("window", "transform", "scale"). Refilled without allocating when reused.
+  AnalysisSummary summary;
 
   double frequency(Eigen::Index bin) const { return static_cast<double>(bin) * bin_spacing; }
   Eigen::VectorXd frequencies() const;  ///< frequency(k) for every bin, Hz
@@ -183,7 +191,9 @@ struct SpectralPeak {
 /// Spectral peaks in ascending frequency: local maxima of the amplitude away from bin 0 and
 /// the last bin, with the dip that options.min_dip asks for, of at least options.threshold
 /// times the largest such maximum. Throws std::invalid_argument for invalid options or a
-/// spectrum with fewer than 3 bins.
-std::vector<SpectralPeak> find_peaks(const Spectrum& spectrum, const PeakOptions& options = {});
+/// spectrum with fewer than 3 bins. `summary`, if given, receives the method, the maxima
+/// found and kept, and the stage times.
+std::vector<SpectralPeak> find_peaks(const Spectrum& spectrum, const PeakOptions& options = {},
+                                     AnalysisSummary* summary = nullptr);
 
 }  // namespace railmodal

@@ -13,6 +13,7 @@
 
 #include <string>
 
+#include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
 
 namespace railmodal {
@@ -32,10 +33,13 @@ struct LateralStability {
   /// springs nearest the track; ≥ 4 1/m (0.04 1/cm) for three-axle and ≥ 6 1/m
   /// (0.06 1/cm) for bogie cars.
   double nolltein_measure(double b2) const { return metacentric_height / (b2 * cg_height); }
+  /// The method, the check h − d0 ≥ 0 (as d0 − h ≤ 0) and the stages ("assemble", "condense").
+  AnalysisSummary summary;
 };
 
 /// Computes the static roll stiffness from the elastic springs of the assembled vehicle
-/// (gravity excluded, since h is compared with d0) by static condensation.
+/// (gravity excluded, since h is compared with d0) by static condensation. Throws
+/// std::invalid_argument when the body has no free roll motion.
 LateralStability lateral_stability(const Vehicle& vehicle, const std::string& body);
 
 }  // namespace railmodal

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "railmodal/scene.hpp"
+#include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
 
 namespace railmodal {
@@ -86,8 +87,11 @@ struct DeflectionRule {
   std::vector<std::pair<std::string, double>> element_limits;
   bool active() const { return book != Book::none || !element_limits.empty(); }
 };
-const char* to_string(DeflectionRule::Book book);
-const char* to_string(DeflectionRule::Service service);
+const char* to_string(DeflectionRule::Book book);  ///< "none", "korotkevich", "lehner"
+const char* to_string(DeflectionRule::Service service);  ///< "passenger", "freight"
+/// Inverses of to_string; std::nullopt for an unknown word.
+std::optional<DeflectionRule::Book> deflection_book_from_string(const std::string& word);
+std::optional<DeflectionRule::Service> deflection_service_from_string(const std::string& word);
 /// The rule in one line, as a shard records it to tell results of different rules apart:
 /// "none", or "lehner freight" followed by the element limits ("; spring = 0.03 m", exact).
 std::string to_string(const DeflectionRule& rule);
@@ -171,6 +175,9 @@ struct VariantResult {
   std::vector<PeakSummary> peaks;
   bool deflections_checked = false;  ///< the study names a deflection rule
   std::vector<DeflectionCheck> deflections;  ///< every element or stage the rule limits
+  /// The checks (modes, critical speeds, deflections kept) and the stage times of the
+  /// evaluation; not written to shards (read_shard leaves it empty).
+  AnalysisSummary summary;
 
   bool ok() const { return failure.empty(); }
 };
@@ -186,11 +193,16 @@ struct EvaluationOptions {
   int shard = 1;        ///< this process evaluates the variants with index % shards == shard − 1
   int shards = 1;
   std::function<void(double)> progress;  ///< fraction done, called from one thread at a time
+  /// Returns false and explains in *why when an option is out of range.
+  bool is_valid(std::string* why) const;
 };
 
 /// The variants of this shard, in index order; the same whatever the thread count. Each must
-/// have been read (load_study with this shard, or all); std::invalid_argument otherwise.
-std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options);
+/// have been read (load_study with this shard, or all); std::invalid_argument otherwise, and
+/// for invalid options. `summary`, if given, receives the threads, the variants evaluated and
+/// failed, and the stage time.
+std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options,
+                                          AnalysisSummary* summary = nullptr);
 
 /// The value of a metric for a result, SI, or nothing when the result has no such value
 /// (no mode of that name). "lowest_critical_speed" and "critical_speed:<mode>" are +∞ without

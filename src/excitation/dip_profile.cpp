@@ -30,6 +30,12 @@ const char* to_string(DipShape shape) {
   return "?";
 }
 
+std::optional<DipShape> dip_shape_from_string(const std::string& word) {
+  for (DipShape s : {DipShape::cosine, DipShape::triangular, DipShape::parabolic})
+    if (word == to_string(s)) return s;
+  return std::nullopt;
+}
+
 double dip_harmonic(DipShape shape, double depth, double length, double period, int k) {
   if (!(period > 0.0) || !(length > 0.0) || length > period * (1.0 + 1e-12) || k < 1)
     throw std::invalid_argument("dip_harmonic: need 0 < length ≤ period and k ≥ 1");

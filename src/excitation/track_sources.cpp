@@ -240,6 +240,21 @@ class HuntingSource final : public ExcitationSource {
 
 }  // namespace
 
+const char* to_string(Hunting::Model model) {
+  switch (model) {
+    case Hunting::Model::free_wheelset: return "free_wheelset";
+    case Hunting::Model::rigid_bogie: return "rigid_bogie";
+    case Hunting::Model::given: return "given";
+  }
+  return "?";
+}
+
+std::optional<Hunting::Model> hunting_model_from_string(const std::string& word) {
+  for (Hunting::Model m : {Hunting::Model::free_wheelset, Hunting::Model::rigid_bogie, Hunting::Model::given})
+    if (word == to_string(m)) return m;
+  return std::nullopt;
+}
+
 double klingel_wavelength(double conicity, double rolling_circle_spacing, double rolling_radius) {
   require(conicity > 0.0 && rolling_circle_spacing > 0.0 && rolling_radius > 0.0,
           "hunting: conicity, rolling-circle spacing and rolling radius must be positive");

@@ -16,8 +16,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 DipShape read_shape(TableReader& t, const std::string& key) {
   const std::string word = t.optional_string(key).value_or("cosine");
-  for (DipShape s : {DipShape::cosine, DipShape::triangular, DipShape::parabolic})
-    if (word == to_string(s)) return s;
+  if (const auto shape = dip_shape_from_string(word)) return *shape;
   t.fail(key, "unknown shape '" + word + "' (cosine, triangular, parabolic)");
 }
 
@@ -65,9 +64,7 @@ std::shared_ptr<const ExcitationSource> flat(TableReader& t) {
 std::shared_ptr<const ExcitationSource> hunting(TableReader& t) {
   Hunting p;
   const std::string model = t.optional_string("model").value_or("free_wheelset");
-  if (model == "free_wheelset") p.model = Hunting::Model::free_wheelset;
-  else if (model == "rigid_bogie") p.model = Hunting::Model::rigid_bogie;
-  else if (model == "given") p.model = Hunting::Model::given;
+  if (const auto m = hunting_model_from_string(model)) p.model = *m;
   else t.fail("model", "unknown hunting model '" + model + "' (free_wheelset, rigid_bogie, given)");
   if (p.model == Hunting::Model::given) {
     p.given_wavelength = t.positive("wavelength", Quantity::length);
@@ -231,9 +228,7 @@ SceneOutput read_output(TableReader& t) {
   SceneOutput out;
   out.dof = t.string("dof");
   const std::string quantity = t.optional_string("quantity").value_or("displacement");
-  if (quantity == "displacement") out.quantity = ResponseQuantity::displacement;
-  else if (quantity == "velocity") out.quantity = ResponseQuantity::velocity;
-  else if (quantity == "acceleration") out.quantity = ResponseQuantity::acceleration;
+  if (const auto q = response_quantity_from_string(quantity)) out.quantity = *q;
   else t.fail("quantity", "must be displacement, velocity or acceleration, not '" + quantity + "'");
   t.finish();
   return out;

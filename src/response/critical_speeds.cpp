@@ -7,7 +7,9 @@
 #include <stdexcept>
 
 #include "railmodal/response.hpp"
+#include "require_valid.hpp"
 #include "response/modal_checks.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
@@ -44,12 +46,30 @@ Evaluation respond(const LinearSystem& system, const ModalResult& modes, const H
 
 }  // namespace
 
+bool CriticalSpeedOptions::is_valid(std::string* why) const {
+  const auto fail = [why](const char* text) {
+    if (why) *why = text;
+    return false;
+  };
+  if (!(min_speed > 0.0) || !(max_speed >= min_speed) || !std::isfinite(max_speed))
+    return fail("need 0 < min_speed ≤ max_speed");
+  if (!(participation_floor >= 0.0 && participation_floor < 1.0))
+    return fail("participation_floor must satisfy 0 ≤ participation_floor < 1");
+  if (!(friction_reference_amplitude >= 0.0) || !std::isfinite(friction_reference_amplitude))
+    return fail("friction_reference_amplitude must be 0 (friction only in the criterion) or a positive stretch");
+  return true;
+}
+
 std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,
                                                 const std::vector<const ExcitationSource*>& sources,
-                                                const CriticalSpeedOptions& options) {
-  if (!(options.min_speed > 0.0) || !(options.max_speed >= options.min_speed) || !std::isfinite(options.max_speed))
-    throw std::invalid_argument("critical speeds: need 0 < min_speed ≤ max_speed");
+                                                const CriticalSpeedOptions& options, AnalysisSummary* summary) {
+  require_valid(options, "critical speeds: ");
+  AnalysisSummary own;
+  if (!summary) summary = &own;
+  *summary = AnalysisSummary{};
+  StageClock clock(summary);
   const auto groups = response::eigenspaces(modes);
+  int in_range = 0;
   std::vector<CriticalSpeed> found;
   for (size_t s = 0; s < sources.size(); ++s) {
     const ExcitationSource& source = *sources[s];
@@ -58,6 +78,7 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
         const Mode& first = *group.front();
         const double speed = source.speed_for(first.frequency_hz, k);
         if (speed < options.min_speed || speed > options.max_speed) continue;
+        ++in_range;
         const HarmonicLoad load = source.load(system, speed, k);
         const Eigen::VectorXcd Q = generalized_load(system, load);
         // The mode of the eigenspace that the load drives: φ* = Φ_E Φ_EᵀQ / ‖Φ_EᵀQ‖
@@ -114,8 +135,18 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
         found.push_back(row);
       }
   }
+  clock.lap("resonances");
   std::stable_sort(found.begin(), found.end(),
                    [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.speed < b.speed; });
+  clock.lap("sort");
+  summary->analysis = "critical speeds";
+  summary->method = "V = Λ·f/k for each source harmonic and eigenspace, modal force against the participation "
+                    "floor, direct harmonic solve at each resonance";
+  const double driven = static_cast<double>(found.size());
+  summary->checks.push_back({"resonances driven, of those in range", driven, static_cast<double>(in_range), true});
+  const double stopped = static_cast<double>(
+      std::count_if(found.begin(), found.end(), [](const CriticalSpeed& c) { return c.friction_stops; }));
+  summary->checks.push_back({"resonances leaf friction stops (Den Hartog)", stopped, driven, true});
   return found;
 }
 

@@ -53,6 +53,12 @@ const char* to_string(ResponseQuantity quantity) {
   return "?";
 }
 
+std::optional<ResponseQuantity> response_quantity_from_string(const std::string& word) {
+  for (ResponseQuantity q : {ResponseQuantity::displacement, ResponseQuantity::velocity, ResponseQuantity::acceleration})
+    if (word == to_string(q)) return q;
+  return std::nullopt;
+}
+
 double response_amplitude(const HarmonicResponse& response, int dof, ResponseQuantity quantity) {
   const double omega = kTwoPi * response.frequency_hz;
   const double x = std::abs(response.displacement(dof));

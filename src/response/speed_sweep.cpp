@@ -20,6 +20,7 @@
 #include "response/modal_checks.hpp"
 #include "response/state_space_modes.hpp"
 #include "response/sweep_kernels.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
@@ -462,11 +463,14 @@ std::complex<double> phase_reference(const LinearSystem& system, const Excitatio
   return (*u)(largest);
 }
 
-std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
-                                             const ExcitationSource& source, int source_index,
-                                             const std::vector<OutputRequest>& outputs,
-                                             const SpeedGrid& speeds,
-                                             double friction_reference_amplitude) {
+namespace {
+
+// amplitude_curves() without its summary; *method names the path taken (a literal: the
+// summary-less calls of peak refinement allocate nothing for it).
+std::vector<AmplitudeCurve> sweep_curves(const LinearSystem& system, const ModalResult& modes,
+                                         const ExcitationSource& source, int source_index,
+                                         const std::vector<OutputRequest>& outputs, const SpeedGrid& speeds,
+                                         double friction_reference_amplitude, const char** method) {
   std::vector<AmplitudeCurve> curves;
   for (const OutputRequest& o : outputs) {
     if (o.dof < 0 || o.dof >= system.size()) throw std::invalid_argument("amplitude curve: no such output DOF");
@@ -483,9 +487,11 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
   const ModalBasis basis = modal_basis(system, modes);
   const Sweep sweep{system, modes, source, outputs, speeds, separable_loads(system, source), reference_arg};
 
-  if (basis.exact && !equivalent_friction)
+  if (basis.exact && !equivalent_friction) {
+    *method = "modal superposition over the undamped modes, blocks of speeds";
     return sweep_in_blocks(sweep, std::move(curves),
                            [&](int k, int dof) { return modal_kernel(basis, sweep.parts[k - 1], dof); });
+  }
 
   // Discrete dampers (damping not proportional): the complex modes of the first-order form,
   // where they are trustworthy and agree with the direct solve at sample speeds; otherwise
@@ -497,12 +503,39 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
       auto at_speed = [&](int k, int dof, double omega, double scale) {
         return expanded_response(cm, loads, k, dof, omega, scale);
       };
-      if (agrees_with_direct(sweep, at_speed))
+      if (agrees_with_direct(sweep, at_speed)) {
+        *method = "complex modes of the first-order form, checked against direct solves at 9 speeds";
         return sweep_in_blocks(sweep, std::move(curves),
                                [&](int k, int dof) { return root_kernel(cm, loads, k, dof); });
+      }
     }
   }
+  *method = equivalent_friction ? "direct solve per speed and harmonic, leaf friction as equivalent viscous damping"
+                                : "direct solve per speed and harmonic";
   return direct_curves(sweep, std::move(curves), equivalent_friction, friction_reference_amplitude);
+}
+
+}  // namespace
+
+std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const ModalResult& modes,
+                                             const ExcitationSource& source, int source_index,
+                                             const std::vector<OutputRequest>& outputs, const SpeedGrid& speeds,
+                                             double friction_reference_amplitude, AnalysisSummary* summary) {
+  const char* method = "";
+  if (!summary)  // peak refinement sweeps one speed at a time: no clock, no strings
+    return sweep_curves(system, modes, source, source_index, outputs, speeds, friction_reference_amplitude, &method);
+  *summary = AnalysisSummary{};
+  StageClock clock(summary);
+  std::vector<AmplitudeCurve> curves = sweep_curves(system, modes, source, source_index, outputs, speeds,
+                                                    friction_reference_amplitude, &method);
+  clock.lap("sweep");
+  summary->method = method;
+  summary->analysis = "amplitude against speed";
+  size_t unbounded = 0;
+  for (const AmplitudeCurve& c : curves) unbounded += std::count(c.unbounded.begin(), c.unbounded.end(), true);
+  summary->checks.push_back({"points where an undamped resonance makes the response unbounded",
+                             static_cast<double>(unbounded), std::numeric_limits<double>::infinity(), true});
+  return curves;
 }
 
 }  // namespace railmodal

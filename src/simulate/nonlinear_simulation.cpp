@@ -11,12 +11,16 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "railmodal/errors.hpp"
 #include "railmodal/simulation.hpp"
+#include "require_valid.hpp"
+#include "simulate/history_summary.hpp"
 #include "simulate/dormand_prince.hpp"
 #include "simulate/nonlinear_elements.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
@@ -28,6 +32,13 @@ const char* to_string(SimulationEvent::Kind kind) {
     case SimulationEvent::Kind::kink: return "kink";
   }
   return "?";
+}
+
+std::optional<SimulationEvent::Kind> simulation_event_kind_from_string(const std::string& word) {
+  using Kind = SimulationEvent::Kind;
+  for (Kind k : {Kind::stick, Kind::slip, Kind::reversal, Kind::kink})
+    if (word == to_string(k)) return k;
+  return std::nullopt;
 }
 
 namespace {
@@ -515,20 +526,19 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
                                const SimulationOptions& options, const NonlinearEffects& effects) {
   const int n = system.size();
   if (n == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
-  if (!(options.duration > 0.0) || !(options.time_step > 0.0) || !std::isfinite(options.duration))
-    throw std::invalid_argument("simulation: duration and time step must be positive");
+  require_valid(options, "simulation: ");
   if (options.duration / options.time_step > 1e8)
     throw std::invalid_argument("simulation: more than 1e8 output steps; take a longer time step");
-  if (!(options.tolerance > 0.0) || !(options.event_tolerance > 0.0))
-    throw std::invalid_argument("simulation: tolerance and event tolerance must be positive");
   if (!sources.empty() && !(options.speed > 0.0)) throw std::invalid_argument("simulation: the speed must be positive");
-  if (options.final_speed < 0.0 || !std::isfinite(options.final_speed) || (options.final_speed > 0.0 && sources.empty()))
+  if (options.final_speed > 0.0 && sources.empty())
     throw std::invalid_argument("simulation: a final speed must be positive, and needs sources to run over");
   for (int i = 0; i < n; ++i)
     if (system.mass.row(i).cwiseAbs().maxCoeff() == 0.0)
       throw std::invalid_argument("simulation: '" + system.dofs[i].label +
                                   "' is massless; the nonlinear path needs inertia at every degree of freedom");
 
+  AnalysisSummary summary;
+  StageClock clock(&summary);
   simulate::SpeedProfile profile;
   profile.initial = options.speed;
   if (options.final_speed > 0.0) profile.acceleration = (options.final_speed - options.speed) / options.duration;
@@ -539,6 +549,7 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
   Eigen::VectorXd y = initial_state(system, options);
 
   const int outputs = static_cast<int>(std::llround(options.duration / options.time_step));
+  clock.lap("model");
   TimeHistory out;
   for (const auto& d : system.dofs) out.labels.push_back(d.label);
   out.time.resize(outputs + 1);
@@ -552,6 +563,13 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
     integration.advance_to(target);
     integration.record(i, target);
   }
+  clock.lap("integrate");
+  summary.checks.push_back({"integrator steps", static_cast<double>(out.steps_taken),
+                            std::numeric_limits<double>::infinity(), true});
+  summary.checks.push_back({"events", static_cast<double>(out.events.size()), std::numeric_limits<double>::infinity(),
+                            true});
+  simulate::summarise_history(&out, std::move(summary), "time history, nonlinear",
+                              "adaptive Dormand–Prince 5(4), events located by Illinois false position");
   return out;
 }
 

@@ -34,6 +34,8 @@
 
 #include "railmodal/damped_modal.hpp"
 #include "railmodal/errors.hpp"
+#include "require_valid.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
@@ -47,6 +49,13 @@ const char* to_string(DampedModeKind kind) {
     case DampedModeKind::rigid_body: return "rigid-body";
   }
   return "?";
+}
+
+std::optional<DampedModeKind> damped_mode_kind_from_string(const std::string& word) {
+  for (DampedModeKind k : {DampedModeKind::underdamped, DampedModeKind::critical, DampedModeKind::overdamped,
+                           DampedModeKind::divergent, DampedModeKind::first_order, DampedModeKind::rigid_body})
+    if (word == to_string(k)) return k;
+  return std::nullopt;
 }
 
 bool DampedModalOptions::is_valid(std::string* why) const {
@@ -527,8 +536,7 @@ void order_modes(std::vector<DampedMode>& modes) {
 }  // namespace
 
 DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedModalOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument("DampedModalOptions: " + why);
+  require_valid(options, "DampedModalOptions: ");
   const int n = system.size();
   Eigen::MatrixXd C = system.damping;
   if (C.size() == 0) C = Eigen::MatrixXd::Zero(n, n);
@@ -539,7 +547,9 @@ DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedMod
   if (!C.allFinite()) throw NumericalError("the damping matrix contains NaN or infinity");
 
   DampedModalResult result;
+  StageClock clock(&result.summary);
   result.undamped = solve_modes(system, options.undamped);  // checks M and K, condenses, names
+  clock.lap("undamped modes");
   result.dofs = system.dofs;
   const ModalResult& und = result.undamped;
 
@@ -550,6 +560,7 @@ DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedMod
   const ReducedEquations eq = reduce_equations(system, C, und, q);
   const StateLayout layout = lay_out_state(und, eq.lambda, q.first_order());
   const StateEigensolution solution = solve_state_matrix(state_matrix(layout, eq));
+  clock.lap("state-space eigenvalues");
 
   std::vector<Root> roots = state_roots(solution);
   const std::vector<Share> shares = energy_shares(roots, layout, eq.Kw);
@@ -566,6 +577,12 @@ DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedMod
       result.stable = result.stable && result.modes.back().stable;
     }
   order_modes(result.modes);
+  clock.lap("matching and shapes");
+  result.summary.analysis = "damped modes";
+  result.summary.method = "QR of the balanced state matrix on the undamped modal basis (Eigen), roots matched to "
+                          "undamped modes by their energy";
+  result.summary.checks.push_back({"max relative residual", result.max_residual, options.undamped.max_residual,
+                                   result.max_residual <= options.undamped.max_residual});
   if (!(result.max_residual <= options.undamped.max_residual))
     throw NumericalError("damped eigen-solution residual " + std::to_string(result.max_residual) +
                          " exceeds the limit " + std::to_string(options.undamped.max_residual));

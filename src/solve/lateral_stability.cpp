@@ -5,11 +5,15 @@
 
 #include "railmodal/linear_system.hpp"
 #include "railmodal/stability.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
 LateralStability lateral_stability(const Vehicle& vehicle, const std::string& body_name) {
+  LateralStability out;
+  StageClock clock(&out.summary);
   const LinearSystem s = assemble(vehicle, DofSet::lateral);
+  clock.lap("assemble");
   const Eigen::MatrixXd K = s.stiffness - s.gravity_stiffness;  // springs only
   const int roll = s.index_of(body_name + ".roll");
   if (roll < 0) throw std::invalid_argument("body '" + body_name + "' has no free roll motion");
@@ -32,12 +36,15 @@ LateralStability lateral_stability(const Vehicle& vehicle, const std::string& bo
   const Body* body = nullptr;
   for (const auto& b : vehicle.bodies)
     if (b.name == body_name) body = &b;
-  LateralStability out;
   out.body = body_name;
   out.roll_stiffness = k;
   out.metacentric_height = k / (body->mass * vehicle.gravity);
   out.cg_height = body->centre_of_gravity.z() - body->reference_point.z();
   out.margin = out.metacentric_height - out.cg_height;
+  clock.lap("condense");
+  out.summary.analysis = "static lateral stability";
+  out.summary.method = "roll stiffness of the elastic springs by static condensation, h = k/W (eq. (235b))";
+  out.summary.checks.push_back({"d0 − h, m (≤ 0: the body returns, §2.6)", -out.margin, 0.0, out.margin >= 0.0});
   return out;
 }
 

@@ -4,12 +4,15 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 
 #include "railmodal/errors.hpp"
 #include "railmodal/modal.hpp"
+#include "require_valid.hpp"
 #include "solve/eigenpairs.hpp"
 #include "solve/mode_naming.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
@@ -20,6 +23,12 @@ const char* to_string(ModeKind kind) {
     case ModeKind::unstable: return "unstable";
   }
   return "?";
+}
+
+std::optional<ModeKind> mode_kind_from_string(const std::string& word) {
+  for (ModeKind k : {ModeKind::oscillatory, ModeKind::rigid_body, ModeKind::unstable})
+    if (word == to_string(k)) return k;
+  return std::nullopt;
 }
 
 const char* to_string(ModalSolver solver) {
@@ -104,9 +113,23 @@ constexpr double kTwoPi = 6.283185307179586476925;
 
 using Describe = std::function<solve::ModeDescription(const Eigen::VectorXd&)>;
 
-void check_options(const ModalOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument("ModalOptions: " + why);
+void check_options(const ModalOptions& options) { require_valid(options, "ModalOptions: "); }
+
+// The summary of a result make_result() returned: its method, checks and stage times.
+void summarise(ModalResult* result, const ModalOptions& options, std::vector<StageTiming> stages) {
+  SolverSummary& s = result->solver;
+  s.analysis = "undamped modes";
+  s.method = s.solver == ModalSolver::dense
+                 ? "dense: static condensation of massless DOFs, Cholesky of M, symmetric QR (Eigen)"
+                 : "ARPACK shift-invert Lanczos on (K − σM)⁻¹M, " + s.factorisation + " of K − σM";
+  s.checks.push_back({"max relative residual", result->max_residual, options.max_residual, true});
+  s.checks.push_back({"M-orthonormality error max|ΦᵀMΦ − I|", result->orthonormality_error,
+                      std::numeric_limits<double>::infinity(), true});
+  if (s.count_checked) {
+    const double found = static_cast<double>(result->modes.size());
+    s.checks.push_back({"eigenvalues below the last mode by the inertia of K − μM", found, found, true});
+  }
+  s.stages = std::move(stages);
 }
 
 // Classifies, names and checks the first `keep` eigenpairs. Matrix: dense or sparse.
@@ -193,13 +216,22 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
     throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
   const Describe describe = [&system](const Eigen::VectorXd& shape) { return solve::describe_mode(system, shape); };
   const auto labels = labels_of(system.dofs);
+  AnalysisSummary timing;
+  StageClock clock(&timing);
+  ModalResult result;
   if (choose_solver(options.solver, n, options.mode_count) == ModalSolver::dense) {
     const solve::Eigenpairs pairs = solve::dense_eigenpairs(M, K, labels);
-    return make_result(system.dofs, M, K, pairs, dense_keep(pairs, options), options, describe);
+    clock.lap("eigensolve");
+    result = make_result(system.dofs, M, K, pairs, dense_keep(pairs, options), options, describe);
+  } else {
+    const Eigen::SparseMatrix<double> Ms = M.sparseView(), Ks = K.sparseView();
+    const solve::Eigenpairs pairs = solve::arpack_eigenpairs(Ms, Ks, labels, options.mode_count, options);
+    clock.lap("eigensolve");
+    result = make_result(system.dofs, Ms, Ks, pairs, static_cast<int>(pairs.values.size()), options, describe);
   }
-  const Eigen::SparseMatrix<double> Ms = M.sparseView(), Ks = K.sparseView();
-  const solve::Eigenpairs pairs = solve::arpack_eigenpairs(Ms, Ks, labels, options.mode_count, options);
-  return make_result(system.dofs, Ms, Ks, pairs, static_cast<int>(pairs.values.size()), options, describe);
+  clock.lap("classify and check");
+  summarise(&result, options, std::move(timing.stages));
+  return result;
 }
 
 ModalResult solve_modes(const SparseSystem& system, const ModalOptions& options) {
@@ -208,10 +240,16 @@ ModalResult solve_modes(const SparseSystem& system, const ModalOptions& options)
   if (n == 0) throw std::invalid_argument("the system has no degrees of freedom");
   if (system.mass.rows() != n || system.stiffness.rows() != n || system.mass.cols() != n || system.stiffness.cols() != n)
     throw std::invalid_argument("SparseSystem: mass and stiffness must be n × n for n DOFs");
+  AnalysisSummary timing;
+  StageClock clock(&timing);
   if (choose_solver(options.solver, n, options.mode_count) == ModalSolver::dense) {
     ModalOptions dense = options;
     dense.solver = ModalSolver::dense;
-    return solve_modes(to_linear_system(system), dense);
+    const LinearSystem densified = to_linear_system(system);
+    clock.lap("densify");
+    ModalResult result = solve_modes(densified, dense);
+    result.solver.stages.insert(result.solver.stages.begin(), timing.stages.front());
+    return result;
   }
   if (!all_finite(system.mass) || !all_finite(system.stiffness))
     throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
@@ -223,8 +261,12 @@ ModalResult solve_modes(const SparseSystem& system, const ModalOptions& options)
   };
   const solve::Eigenpairs pairs =
       solve::arpack_eigenpairs(system.mass, system.stiffness, labels_of(system.dofs), options.mode_count, options);
-  return make_result(system.dofs, system.mass, system.stiffness, pairs, static_cast<int>(pairs.values.size()),
-                     options, describe);
+  clock.lap("eigensolve");
+  ModalResult result = make_result(system.dofs, system.mass, system.stiffness, pairs,
+                                   static_cast<int>(pairs.values.size()), options, describe);
+  clock.lap("classify and check");
+  summarise(&result, options, std::move(timing.stages));
+  return result;
 }
 
 }  // namespace railmodal

@@ -1,8 +1,10 @@
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "railmodal/spectrum.hpp"
+#include "require_valid.hpp"
 #include "spectrum/real_fft.hpp"
 
 namespace railmodal {
@@ -39,7 +41,46 @@ void check_signal(const Eigen::Ref<const Eigen::VectorXd>& signal, Eigen::Index 
                                   ": samples must be finite");
 }
 
+using Clock = std::chrono::steady_clock;
+
+double seconds(Clock::time_point from, Clock::time_point to) { return std::chrono::duration<double>(to - from).count(); }
+
+// Fills the spectrum's summary in place: a reused Spectrum keeps its strings' and vectors'
+// storage, so that compute() into it allocates nothing (stage names fit in a short string).
+void summarise(Spectrum* s, const Clock::time_point (&marks)[4]) {
+  AnalysisSummary& summary = s->summary;
+  summary.analysis = "amplitude spectrum";
+  summary.method = "FFTW r2c (estimate plan) of the windowed record less its weighted mean, zero-padded";
+  summary.checks.resize(1);
+  const bool finite = s->amplitude.allFinite();
+  summary.checks[0].name = "amplitudes that are not finite";
+  summary.checks[0].value = finite ? 0.0 : 1.0;
+  summary.checks[0].limit = 0.0;
+  summary.checks[0].passed = finite;
+  summary.stages.resize(3);
+  const char* names[3] = {"window", "transform", "scale"};
+  for (int i = 0; i < 3; ++i) {
+    summary.stages[i].stage = names[i];
+    summary.stages[i].seconds = seconds(marks[i], marks[i + 1]);
+  }
+}
+
 }  // namespace
+
+const char* to_string(Padding padding) {
+  switch (padding) {
+    case Padding::none: return "none";
+    case Padding::to_length: return "to-length";
+    case Padding::next_power_of_two: return "next-power-of-two";
+  }
+  return "?";
+}
+
+std::optional<Padding> padding_from_string(const std::string& word) {
+  for (Padding p : {Padding::none, Padding::to_length, Padding::next_power_of_two})
+    if (word == to_string(p)) return p;
+  return std::nullopt;
+}
 
 bool SpectrumOptions::is_valid(std::string* why) const {
   if (padding == Padding::to_length && padded_length < 2) {
@@ -67,8 +108,7 @@ struct SpectrumAnalyzer::Impl {
 };
 
 SpectrumAnalyzer::SpectrumAnalyzer(Eigen::Index signal_length, const SpectrumOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+  require_valid(options, "");
   if (signal_length < 2)
     throw std::invalid_argument("a spectrum needs a signal of at least 2 samples, got " + std::to_string(signal_length));
   impl_ = std::make_unique<Impl>(signal_length, options);
@@ -92,6 +132,8 @@ void SpectrumAnalyzer::compute(const Eigen::Ref<const Eigen::VectorXd>& signal, 
                                Spectrum* out) {
   const Eigen::Index n = signal_length(), m = transform_length();
   check_signal(signal, n, sampling_rate);
+  Clock::time_point marks[4];
+  marks[0] = Clock::now();
   const Eigen::VectorXd& w = impl_->window;
   // The window-weighted mean: subtracting it zeroes bin 0 exactly. The plain mean would add
   // a line of its own (−mean·w) when the record holds a non-integer number of cycles.
@@ -99,7 +141,9 @@ void SpectrumAnalyzer::compute(const Eigen::Ref<const Eigen::VectorXd>& signal, 
   auto input = impl_->fft.input();
   input.head(n) = (signal.array() - mean) * w.array();
   input.tail(m - n).setZero();
+  marks[1] = Clock::now();
   impl_->fft.execute();
+  marks[2] = Clock::now();
 
   // One-sided peak amplitude: 2|X[k]|/Σw, except the unpaired bins 0 and M/2 (see Spectrum).
   // √(re² + im²) rather than std::abs, whose hypot cost nearly as much as the transform
@@ -114,6 +158,8 @@ void SpectrumAnalyzer::compute(const Eigen::Ref<const Eigen::VectorXd>& signal, 
   out->bin_spacing = sampling_rate / static_cast<double>(m);
   out->window = impl_->options.window;
   out->coherent_gain = impl_->weight / static_cast<double>(n);
+  marks[3] = Clock::now();
+  summarise(out, marks);
 }
 
 Spectrum amplitude_spectrum(const Eigen::Ref<const Eigen::VectorXd>& signal, double sampling_rate,

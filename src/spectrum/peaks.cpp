@@ -5,7 +5,9 @@
 #include <string>
 
 #include "railmodal/spectrum.hpp"
+#include "require_valid.hpp"
 #include "spectrum/windows.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 namespace {
@@ -64,15 +66,18 @@ bool PeakOptions::is_valid(std::string* why) const {
   return true;
 }
 
-std::vector<SpectralPeak> find_peaks(const Spectrum& spectrum, const PeakOptions& options) {
-  std::string why;
-  if (!options.is_valid(&why)) throw std::invalid_argument(why);
+std::vector<SpectralPeak> find_peaks(const Spectrum& spectrum, const PeakOptions& options, AnalysisSummary* summary) {
+  require_valid(options, "");
   const Eigen::VectorXd& a = spectrum.amplitude;
   if (a.size() < 3)
     throw std::invalid_argument("peaks need a spectrum of at least 3 bins, got " + std::to_string(a.size()));
   if (!(spectrum.bin_spacing > 0.0) || !(spectrum.resolution > 0.0))
     throw std::invalid_argument("the spectrum's bin_spacing and resolution must be positive");
 
+  AnalysisSummary own;
+  if (!summary) summary = &own;
+  *summary = AnalysisSummary{};
+  StageClock clock(summary);
   std::vector<Eigen::Index> maxima;
   double largest = 0.0;
   for (Eigen::Index k = 1; k + 1 < a.size(); ++k) {
@@ -87,6 +92,13 @@ std::vector<SpectralPeak> find_peaks(const Spectrum& spectrum, const PeakOptions
   std::vector<SpectralPeak> peaks;
   for (Eigen::Index k : maxima)
     if (a(k) >= options.threshold * largest) peaks.push_back(interpolate(spectrum, k, window_half_width));
+  clock.lap("maxima and interpolation");
+  summary->analysis = "spectral peaks";
+  summary->method = "local maxima with the dip min_dip asks for, parabolic interpolation of the log-amplitudes";
+  constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+  summary->checks.push_back({"local maxima with their dip", static_cast<double>(maxima.size()), kNoLimit, true});
+  summary->checks.push_back({"of them above the threshold", static_cast<double>(peaks.size()),
+                             static_cast<double>(maxima.size()), true});
   return peaks;
 }
 

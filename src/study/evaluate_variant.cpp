@@ -2,6 +2,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
@@ -10,6 +11,7 @@
 #include "response/golden_section.hpp"
 #include "response/modal_checks.hpp"
 #include "study/permissible_deflection.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 namespace {
@@ -211,6 +213,22 @@ void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& stu
     if (c.unbounded) c.deflection = 0.0;
 }
 
+// The analysis, method and checks of an evaluation (its stages are timed already).
+void summarise_evaluation(VariantResult* r) {
+  AnalysisSummary& s = r->summary;
+  s.analysis = "design variant";
+  s.method = "critical-speed study of the variant in its scene, then its metrics";
+  constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+  s.checks.push_back({"evaluated (0: failed)", r->ok() ? 1.0 : 0.0, kNoLimit, r->ok()});
+  s.checks.push_back({"modes", static_cast<double>(r->modes.size()), kNoLimit, true});
+  s.checks.push_back({"critical speeds", static_cast<double>(r->critical_speeds.size()), kNoLimit, true});
+  if (r->deflections_checked) {
+    const double kept = static_cast<double>(std::count_if(r->deflections.begin(), r->deflections.end(),
+                                                          [](const VariantResult::DeflectionCheck& c) { return c.kept(); }));
+    s.checks.push_back({"permissible deflections kept", kept, static_cast<double>(r->deflections.size()), true});
+  }
+}
+
 // The failure of a vehicle with no steady response: its modes (when they can be computed), and
 // the unstable one named.
 void describe_failure(const StudyVariant& variant, const std::string& why, VariantResult* r) {
@@ -236,6 +254,7 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
   r.index = index;
   r.name = variant.name;
   r.parameters = variant.parameters;
+  StageClock clock(&r.summary);
   try {
     // One assembly and one modal solve serve everything: the study's own.
     CriticalSpeedStudy study;
@@ -243,13 +262,18 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
       study = study_critical_speeds(variant.scene, variant.vehicle);
     } catch (const NumericalError& e) {
       describe_failure(variant, e.what(), &r);
+      clock.lap("failure");
+      summarise_evaluation(&r);
       return r;
     }
+    clock.lap("critical-speed study");
     summarise_modes(study.modes, &r);
     static_deflections(variant.vehicle, study.system, &r);
     metacentric_height(variant.vehicle, &r);
     summarise_response(study, &r);
+    clock.lap("summaries");
     if (rule.active()) check_deflections(rule, study, &r);
+    clock.lap("deflection checks");
   } catch (const NumericalError& e) {
     if (r.failure.empty()) r.failure = std::string("numerical failure: ") + e.what();
   } catch (const InputError& e) {
@@ -258,6 +282,7 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
     r.failure = e.what();
   }
   if (!r.ok()) r.deflections.clear();  // a check cut short is no verdict
+  summarise_evaluation(&r);
   return r;
 }
 

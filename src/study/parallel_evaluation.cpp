@@ -1,18 +1,36 @@
 // The variants of a shard on several threads. Each result depends only on its variant and
 // lands in its own slot, so the output is the same whatever the number of threads.
+#include <algorithm>
 #include <atomic>
+#include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
 #include <thread>
 
 #include "railmodal/study.hpp"
+#include "require_valid.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
-std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options) {
-  if (options.shards < 1 || options.shard < 1 || options.shard > options.shards)
-    throw std::invalid_argument("shard must be K/N with 1 <= K <= N");
+bool EvaluationOptions::is_valid(std::string* why) const {
+  const auto fail = [why](const char* text) {
+    if (why) *why = text;
+    return false;
+  };
+  if (shards < 1 || shard < 1 || shard > shards) return fail("shard must be K/N with 1 <= K <= N");
+  if (threads < 0) return fail("threads must be 0 (every core) or positive");
+  return true;
+}
+
+std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options,
+                                          AnalysisSummary* summary) {
+  require_valid(options, "");
+  AnalysisSummary own;
+  if (!summary) summary = &own;
+  *summary = AnalysisSummary{};
+  StageClock clock(summary);
   std::vector<int> indices;
   for (int i = 0; i < static_cast<int>(study.variants.size()); ++i)
     if (in_shard(i, options.shard, options.shards)) {
@@ -48,6 +66,14 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
   for (int t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
   for (auto& t : pool) t.join();
+  clock.lap("evaluate variants");
+  summary->analysis = "design study, shard " + std::to_string(options.shard) + " of " + std::to_string(options.shards);
+  summary->method = "evaluate_variant on " + std::to_string(threads) + " thread(s), one result slot per variant";
+  const double failed = static_cast<double>(
+      std::count_if(results.begin(), results.end(), [](const VariantResult& r) { return !r.ok(); }));
+  summary->checks.push_back({"variants evaluated", static_cast<double>(results.size()),
+                             std::numeric_limits<double>::infinity(), true});
+  summary->checks.push_back({"variants that failed", failed, std::numeric_limits<double>::infinity(), true});
   return results;
 }
 

@@ -35,6 +35,20 @@ std::string to_string(const DeflectionRule& rule) {
   return s;
 }
 
+std::optional<DeflectionRule::Book> deflection_book_from_string(const std::string& word) {
+  using Book = DeflectionRule::Book;
+  for (Book b : {Book::none, Book::korotkevich, Book::lehner})
+    if (word == to_string(b)) return b;
+  return std::nullopt;
+}
+
+std::optional<DeflectionRule::Service> deflection_service_from_string(const std::string& word) {
+  using Service = DeflectionRule::Service;
+  for (Service s : {Service::passenger, Service::freight})
+    if (word == to_string(s)) return s;
+  return std::nullopt;
+}
+
 namespace study {
 namespace {
 

@@ -1,0 +1,37 @@
+// The rules a SimulationOptions keeps on either path, and what every history's summary checks.
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "railmodal/simulation.hpp"
+#include "simulate/history_summary.hpp"
+
+namespace railmodal {
+
+bool SimulationOptions::is_valid(std::string* why) const {
+  const auto fail = [why](const char* text) {
+    if (why) *why = text;
+    return false;
+  };
+  if (!(duration > 0.0) || !(time_step > 0.0) || !std::isfinite(duration))
+    return fail("duration and time step must be positive");
+  if (!(tolerance > 0.0) || !(event_tolerance > 0.0)) return fail("tolerance and event tolerance must be positive");
+  if (final_speed < 0.0 || !std::isfinite(final_speed))
+    return fail("a final speed must be positive, and needs sources to run over");
+  return true;
+}
+
+namespace simulate {
+
+void summarise_history(TimeHistory* history, AnalysisSummary summary, std::string analysis, std::string method) {
+  summary.analysis = std::move(analysis);
+  summary.method = std::move(method);
+  const bool finite = history->displacement.allFinite() && history->velocity.allFinite();
+  summary.checks.push_back({"samples that are not finite", finite ? 0.0 : 1.0, 0.0, finite});
+  summary.checks.push_back({"samples", static_cast<double>(history->time.size()),
+                            std::numeric_limits<double>::infinity(), true});
+  history->summary = std::move(summary);
+}
+
+}  // namespace simulate
+}  // namespace railmodal

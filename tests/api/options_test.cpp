@@ -1,0 +1,164 @@
+// Every options struct validates itself: is_valid names the option and the rule it breaks,
+// and the analysis that takes the options throws std::invalid_argument with that message.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "railmodal/railmodal.hpp"
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// is_valid is false, says why in words holding `names` (the option and its rule), and does
+// not need somewhere to say it.
+template <class Options>
+void expect_invalid(const Options& options, const std::string& names) {
+  std::string why;
+  EXPECT_FALSE(options.is_valid(&why));
+  EXPECT_NE(why.find(names), std::string::npos) << why;
+  EXPECT_FALSE(options.is_valid(nullptr));
+}
+
+template <class Options>
+void expect_valid(const Options& options) {
+  std::string why = "untouched";
+  EXPECT_TRUE(options.is_valid(&why)) << why;
+  EXPECT_EQ(why, "untouched");
+}
+
+// The message of the std::invalid_argument that `call` throws ("" if it throws none).
+template <class Call>
+std::string invalid_argument_of(const Call& call) {
+  try {
+    call();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+CriticalSpeedOptions speed_range(double low, double high) {
+  CriticalSpeedOptions o;
+  o.min_speed = low;
+  o.max_speed = high;
+  return o;
+}
+
+TEST(CriticalSpeedOptions, NeedsASpeedRangeAndSaneFloors) {
+  expect_valid(speed_range(1.0, 50.0));
+  expect_valid(speed_range(10.0, 10.0));
+  expect_invalid(CriticalSpeedOptions{}, "0 < min_speed ≤ max_speed");  // no range given
+  expect_invalid(speed_range(-1.0, 10.0), "0 < min_speed ≤ max_speed");
+  expect_invalid(speed_range(20.0, 10.0), "0 < min_speed ≤ max_speed");
+  expect_invalid(speed_range(1.0, kInf), "0 < min_speed ≤ max_speed");
+  expect_invalid(speed_range(kNaN, 10.0), "0 < min_speed ≤ max_speed");
+  CriticalSpeedOptions o = speed_range(1.0, 50.0);
+  o.participation_floor = -1e-9;
+  expect_invalid(o, "participation_floor must satisfy 0 ≤ participation_floor < 1");
+  o.participation_floor = 1.0;
+  expect_invalid(o, "participation_floor");
+  o = speed_range(1.0, 50.0);
+  o.friction_reference_amplitude = -0.01;
+  expect_invalid(o, "friction_reference_amplitude");
+  o.friction_reference_amplitude = kNaN;
+  expect_invalid(o, "friction_reference_amplitude");
+}
+
+TEST(CriticalSpeedOptions, FindCriticalSpeedsThrowsTheRule) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("resort_car.toml")), DofSet::vertical);
+  const ModalResult modes = solve_modes(sys);
+  EXPECT_EQ(invalid_argument_of([&] { find_critical_speeds(sys, modes, {}, speed_range(20.0, 10.0)); }),
+            "critical speeds: need 0 < min_speed ≤ max_speed");
+  CriticalSpeedOptions o = speed_range(1.0, 50.0);
+  o.participation_floor = 2.0;
+  EXPECT_EQ(invalid_argument_of([&] { find_critical_speeds(sys, modes, {}, o); }),
+            "critical speeds: participation_floor must satisfy 0 ≤ participation_floor < 1");
+}
+
+SimulationOptions run(double duration, double time_step) {
+  SimulationOptions o;
+  o.duration = duration;
+  o.time_step = time_step;
+  return o;
+}
+
+TEST(SimulationOptions, NeedsADurationAStepAndPositiveTolerances) {
+  expect_valid(run(1.0, 1e-3));
+  expect_invalid(SimulationOptions{}, "duration and time step must be positive");  // no duration given
+  expect_invalid(run(0.0, 1e-3), "duration and time step must be positive");
+  expect_invalid(run(1.0, 0.0), "duration and time step must be positive");
+  expect_invalid(run(kInf, 1e-3), "duration and time step must be positive");
+  SimulationOptions o = run(1.0, 1e-3);
+  o.tolerance = 0.0;
+  expect_invalid(o, "tolerance and event tolerance must be positive");
+  o = run(1.0, 1e-3);
+  o.event_tolerance = -1e-12;
+  expect_invalid(o, "event tolerance must be positive");
+  o = run(1.0, 1e-3);
+  o.final_speed = -1.0;
+  expect_invalid(o, "final speed must be positive");
+  o.final_speed = kInf;
+  expect_invalid(o, "final speed must be positive");
+  o.final_speed = 20.0;  // a ramp is valid options; whether the path takes it is the path's rule
+  expect_valid(o);
+}
+
+TEST(SimulationOptions, BothPathsThrowTheRule) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("resort_car.toml")), DofSet::vertical);
+  SimulationOptions o = run(1.0, 0.0);
+  EXPECT_EQ(invalid_argument_of([&] { simulate_linear(sys, {}, o); }),
+            "simulation: duration and time step must be positive");
+  EXPECT_EQ(invalid_argument_of([&] { simulate_nonlinear(sys, {}, o, {}); }),
+            "simulation: duration and time step must be positive");
+  o = run(1.0, 1e-2);
+  o.tolerance = -1.0;
+  EXPECT_EQ(invalid_argument_of([&] { simulate_linear(sys, {}, o); }),
+            "simulation: tolerance and event tolerance must be positive");
+  EXPECT_EQ(invalid_argument_of([&] { simulate_nonlinear(sys, {}, o, {}); }),
+            "simulation: tolerance and event tolerance must be positive");
+  // Path rules stay the path's own.
+  o = run(1.0, 1e-2);
+  o.final_speed = 10.0;
+  EXPECT_NE(invalid_argument_of([&] { simulate_linear(sys, {}, o); }).find("speed ramp"), std::string::npos);
+  EXPECT_EQ(invalid_argument_of([&] { simulate_nonlinear(sys, {}, o, {}); }),
+            "simulation: a final speed must be positive, and needs sources to run over");
+}
+
+TEST(EvaluationOptions, DefaultsAreValidAndShardsAreChecked) {
+  expect_valid(EvaluationOptions{});
+  EvaluationOptions o;
+  o.shard = 2;
+  o.shards = 4;
+  o.threads = 3;
+  expect_valid(o);
+  o.shard = 5;
+  expect_invalid(o, "shard must be K/N with 1 <= K <= N");
+  o.shard = 0;
+  expect_invalid(o, "shard must be K/N with 1 <= K <= N");
+  o.shard = 1;
+  o.shards = 0;
+  expect_invalid(o, "shard must be K/N with 1 <= K <= N");
+  o.shards = 1;
+  o.threads = -1;
+  expect_invalid(o, "threads must be 0 (every core) or positive");
+}
+
+TEST(EvaluationOptions, EvaluateStudyThrowsTheRule) {
+  EvaluationOptions o;
+  o.shard = 3;
+  o.shards = 2;
+  EXPECT_EQ(invalid_argument_of([&] { evaluate_study(Study{}, o); }), "shard must be K/N with 1 <= K <= N");
+  o.shard = 1;
+  o.threads = -2;
+  EXPECT_EQ(invalid_argument_of([&] { evaluate_study(Study{}, o); }), "threads must be 0 (every core) or positive");
+}
+
+}  // namespace
+}  // namespace railmodal::test
