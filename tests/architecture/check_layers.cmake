@@ -14,17 +14,20 @@
 # the study plan (study) meet.
 cmake_minimum_required(VERSION 3.16)
 
+set(foundations "require_valid;summary")
 set(may_include_model "")
 set(may_include_input "model")
-set(may_include_excitation "model")
-set(may_include_solve "model")
-set(may_include_spectrum "")
-set(may_include_response "model;excitation;solve;spectrum")
-set(may_include_simulate "model;excitation;solve;spectrum;response")
-set(may_include_study "model;excitation;solve;spectrum;response;simulate")
-set(may_include_report "model;excitation;solve;spectrum;response;simulate;study")
+set(may_include_excitation "model;${foundations}")
+set(may_include_solve "model;${foundations}")
+set(may_include_spectrum "${foundations}")
+set(may_include_response "model;excitation;solve;spectrum;${foundations}")
+set(may_include_simulate "model;excitation;solve;spectrum;response;${foundations}")
+set(may_include_study "model;excitation;solve;spectrum;response;simulate;${foundations}")
+set(may_include_report "model;excitation;solve;spectrum;response;simulate;study;${foundations}")
 set(may_include_errors "")
 set(may_include_load_study "input;study")
+set(may_include_require_valid "")
+set(may_include_summary "")
 # Single headers of another stage a stage may include: plan types a reader fills.
 set(may_include_headers_input "study/study_plan.hpp")
 
