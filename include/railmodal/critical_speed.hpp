@@ -20,6 +20,7 @@
 #include "railmodal/modal.hpp"
 #include "railmodal/response.hpp"
 #include "railmodal/scene.hpp"
+#include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
 
 namespace railmodal {
@@ -37,6 +38,10 @@ struct CriticalSpeedStudy {
     Peak peak;
   };
   std::vector<CurvePeak> peaks;
+  /// What was computed and how, the modes' residual and the unbounded curve points, and the
+  /// wall time of each stage (assembly and modes, critical speeds, amplitude curves, peak
+  /// refinement). No report writes it.
+  AnalysisSummary summary;
 };
 
 /// Assembles the vehicle in the scene's DOF set, solves its modes, finds the critical speeds

@@ -1,11 +1,14 @@
 // The whole critical-speed study of a scene: modes, resonances, amplitude curves.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
@@ -45,29 +48,20 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
   return peaks;
 }
 
-}  // namespace
-
-CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle,
-                                         const std::function<void(double)>& progress) {
-  CriticalSpeedStudy study;
-  study.scene = scene;
-  study.system = assemble(vehicle, scene.dofs);
-  if (study.system.size() == 0) throw std::invalid_argument("no free degrees of freedom in the chosen set");
-  study.modes = solve_modes(study.system);
-  for (const Mode& m : study.modes.modes)
+// Assembles and solves the vehicle; a vehicle with an unstable mode has no steady response.
+void solve_stable_modes(const Scene& scene, const Vehicle& vehicle, CriticalSpeedStudy* study) {
+  study->system = assemble(vehicle, scene.dofs);
+  if (study->system.size() == 0) throw std::invalid_argument("no free degrees of freedom in the chosen set");
+  study->modes = solve_modes(study->system);
+  for (const Mode& m : study->modes.modes)
     if (m.kind == ModeKind::unstable)
       throw NumericalError("mode " + std::to_string(m.index) + " (" + m.name + ") is unstable (divergence rate " +
                            std::to_string(m.divergence_rate) +
                            " 1/s): the vehicle has no steady response to harmonic input; see railmodal modes");
+}
 
-  std::vector<const ExcitationSource*> sources;
-  for (const auto& s : scene.sources) sources.push_back(s.get());
-  CriticalSpeedOptions options;
-  options.min_speed = scene.min_speed;
-  options.max_speed = scene.max_speed;
-  options.friction_reference_amplitude = scene.friction_reference_amplitude;
-  study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
-
+// The scene's outputs, or (if it names none) the DOF reported for each critical speed.
+std::vector<OutputRequest> curve_outputs(const Scene& scene, const CriticalSpeedStudy& study) {
   std::vector<OutputRequest> outputs;
   for (const auto& o : scene.outputs) {
     const int dof = study.system.index_of(o.dof);
@@ -85,35 +79,90 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
       if (seen.insert(r.output).second) outputs.push_back({study.system.index_of(r.output), ResponseQuantity::displacement});
     if (outputs.empty()) outputs.push_back({0, ResponseQuantity::displacement});
   }
-  const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
-  // The grid in chunks, so that a long sweep reports its progress.
+  return outputs;
+}
+
+// One source's curves over the whole grid, swept in chunks so that a long sweep reports its
+// progress (`done` sweeps are finished before this one, of `total` speeds × sources).
+std::vector<AmplitudeCurve> source_curves(const CriticalSpeedStudy& study, const ExcitationSource& source,
+                                          int source_index, const std::vector<OutputRequest>& outputs,
+                                          const std::vector<double>& speeds, double done, double total,
+                                          const std::function<void(double)>& progress) {
   constexpr size_t kChunk = 4096;
+  std::vector<AmplitudeCurve> curves;
+  for (size_t first = 0; first < speeds.size(); first += kChunk) {
+    const std::vector<double> chunk(speeds.begin() + first, speeds.begin() + std::min(speeds.size(), first + kChunk));
+    auto part = amplitude_curves(study.system, study.modes, source, source_index, outputs, chunk,
+                                 study.scene.friction_reference_amplitude);
+    if (curves.empty()) {
+      curves = std::move(part);
+    } else {
+      for (size_t o = 0; o < curves.size(); ++o) {
+        curves[o].amplitudes.insert(curves[o].amplitudes.end(), part[o].amplitudes.begin(), part[o].amplitudes.end());
+        curves[o].unbounded.insert(curves[o].unbounded.end(), part[o].unbounded.begin(), part[o].unbounded.end());
+        curves[o].phases_deg.insert(curves[o].phases_deg.end(), part[o].phases_deg.begin(), part[o].phases_deg.end());
+      }
+    }
+    if (progress) progress((done + first + chunk.size()) / total);
+  }
+  return curves;
+}
+
+// What the study did, and the checks it inherits from its parts.
+void summarise(CriticalSpeedStudy* study, double sweep_seconds, double peak_seconds) {
+  AnalysisSummary& s = study->summary;
+  s.stages.push_back({"amplitude curves", sweep_seconds});
+  s.stages.push_back({"peak refinement", peak_seconds});
+  s.analysis = "critical speeds and amplitude curves";
+  s.method = "critical speeds where a source harmonic meets an excited mode; amplitude against speed on the "
+             "scene's grid and every critical speed; peaks refined by golden-section search";
+  s.checks.push_back({"modes: max relative residual", study->modes.max_residual, ModalOptions{}.max_residual,
+                      study->modes.max_residual <= ModalOptions{}.max_residual});
+  size_t unbounded = 0;
+  for (const AmplitudeCurve& c : study->curves) unbounded += std::count(c.unbounded.begin(), c.unbounded.end(), true);
+  s.checks.push_back({"curve points unbounded by an undamped resonance", static_cast<double>(unbounded),
+                      std::numeric_limits<double>::infinity(), true});
+}
+
+}  // namespace
+
+CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle,
+                                         const std::function<void(double)>& progress) {
+  CriticalSpeedStudy study;
+  StageClock clock(&study.summary);
+  study.scene = scene;
+  solve_stable_modes(scene, vehicle, &study);
+  clock.lap("assembly and modes");
+
+  std::vector<const ExcitationSource*> sources;
+  for (const auto& s : scene.sources) sources.push_back(s.get());
+  CriticalSpeedOptions options;
+  options.min_speed = scene.min_speed;
+  options.max_speed = scene.max_speed;
+  options.friction_reference_amplitude = scene.friction_reference_amplitude;
+  study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
+  clock.lap("critical speeds");
+
+  const std::vector<OutputRequest> outputs = curve_outputs(scene, study);
+  const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
   const double total = static_cast<double>(sources.size() * speeds.size());
   const SpeedGrid grid(speeds);  // the chunks' grids joined, shared by every curve
+  double sweep_seconds = 0.0, peak_seconds = 0.0;  // interleaved per source: timed apart
   for (size_t s = 0; s < sources.size(); ++s) {
-    std::vector<AmplitudeCurve> curves;
-    for (size_t first = 0; first < speeds.size(); first += kChunk) {
-      const std::vector<double> chunk(speeds.begin() + first, speeds.begin() + std::min(speeds.size(), first + kChunk));
-      auto part = amplitude_curves(study.system, study.modes, *sources[s], static_cast<int>(s), outputs, chunk,
-                                   scene.friction_reference_amplitude);
-      if (curves.empty()) {
-        curves = std::move(part);
-      } else {
-        for (size_t o = 0; o < curves.size(); ++o) {
-          curves[o].amplitudes.insert(curves[o].amplitudes.end(), part[o].amplitudes.begin(), part[o].amplitudes.end());
-          curves[o].unbounded.insert(curves[o].unbounded.end(), part[o].unbounded.begin(), part[o].unbounded.end());
-          curves[o].phases_deg.insert(curves[o].phases_deg.end(), part[o].phases_deg.begin(), part[o].phases_deg.end());
-        }
-      }
-      if (progress) progress((s * speeds.size() + first + chunk.size()) / total);
-    }
+    const auto started = std::chrono::steady_clock::now();
+    std::vector<AmplitudeCurve> curves = source_curves(study, *sources[s], static_cast<int>(s), outputs, speeds,
+                                                       static_cast<double>(s * speeds.size()), total, progress);
+    const auto swept = std::chrono::steady_clock::now();
     for (size_t o = 0; o < curves.size(); ++o) {
       curves[o].speeds = grid;
       study.curves.push_back(std::move(curves[o]));
       for (const Peak& p : refine_peaks(study, *sources[s], outputs[o], study.curves.back()))
         study.peaks.push_back({static_cast<int>(study.curves.size()) - 1, p});
     }
+    sweep_seconds += std::chrono::duration<double>(swept - started).count();
+    peak_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - swept).count();
   }
+  summarise(&study, sweep_seconds, peak_seconds);
   return study;
 }
 

@@ -130,6 +130,18 @@ TEST(AnalysisSummary, CriticalSpeeds) {
   EXPECT_EQ(s.checks[0].value, static_cast<double>(found.size()));
 }
 
+TEST(AnalysisSummary, CriticalSpeedStudy) {
+  const Scene scene = load_scene(std::string(RAILMODAL_DATA_DIR) + "/scenes/resort_car_wheel_defects.toml");
+  const Vehicle vehicle = load_vehicle(scene.vehicle_file);
+  double wall = 0.0;
+  const CriticalSpeedStudy study = timed([&] { return study_critical_speeds(scene, vehicle); }, &wall);
+  expect_filled(study.summary, wall);
+  EXPECT_TRUE(has_check(study.summary, "residual"));
+  ASSERT_EQ(study.summary.stages.size(), 4u);  // assembly and modes, critical speeds, curves, peaks
+  EXPECT_EQ(study.summary.stages[2].stage, "amplitude curves");
+  EXPECT_EQ(study.summary.stages[3].stage, "peak refinement");
+}
+
 TEST(AnalysisSummary, AmplitudeAndDeflectionCurvesAndPeaks) {
   const SceneFixture f;
   const ExcitationSource& source = *f.scene.sources.front();
