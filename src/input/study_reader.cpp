@@ -5,7 +5,6 @@
 #include "input/study_reader.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -15,22 +14,17 @@
 #include "input/key_path.hpp"
 #include "input/table_reader.hpp"
 #include "railmodal/errors.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal::input {
 namespace {
-
-std::string shortest(double x) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, result.ptr);
-}
 
 // A value on one line, as a study would write it; table keys sorted (the TOML library keeps
 // no order), strings unquoted at the top level only.
 std::string value_text(const toml::value& v, bool top = true) {
   if (v.is_string()) return top ? v.as_string().str : "\"" + v.as_string().str + "\"";
   if (v.is_integer()) return std::to_string(v.as_integer());
-  if (v.is_floating()) return shortest(v.as_floating());
+  if (v.is_floating()) return shortest_text(v.as_floating());
   if (v.is_boolean()) return v.as_boolean() ? "true" : "false";
   std::string out;
   if (v.is_array()) {
@@ -84,7 +78,7 @@ study::WrittenNumber number_with_unit(TableReader& t, const std::string& key) {
 }
 
 toml::value make_value(const study::WrittenNumber& x) {
-  if (!x.unit.empty()) return toml::value(shortest(x.number) + " " + x.unit);
+  if (!x.unit.empty()) return toml::value(shortest_text(x.number) + " " + x.unit);
   if (x.integer) return toml::value(static_cast<toml::integer>(std::llround(x.number)));
   return toml::value(x.number);
 }

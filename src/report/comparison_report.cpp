@@ -3,7 +3,6 @@
 // merge ranks exactly the numbers a single run would have ranked (src/input/shard_reader.cpp
 // reads it back).
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -13,6 +12,7 @@
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"
 #include "report/unwritten_format.hpp"
+#include "shortest_text.hpp"
 #include "study/metrics.hpp"
 
 namespace railmodal {
@@ -123,10 +123,7 @@ std::string number(double x, const char* format = "%.4f") {
 
 // Shortest text that reads back as the same double (CSV is for programs).
 std::string exact(double x) {
-  if (!std::isfinite(x)) return "";
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, result.ptr);
+  return std::isfinite(x) ? shortest_text(x) : std::string();
 }
 
 std::string status(const RankedVariant& v) { return !v.result.ok() ? "failed" : v.feasible ? "yes" : "no"; }

@@ -1,9 +1,9 @@
 // The book's permissible dynamic deflections (springs digest §5, p. 14): which elements and
 // stages each rule limits, and by how much.
 #include "study/permissible_deflection.hpp"
+#include "shortest_text.hpp"
 
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -27,10 +27,7 @@ std::string to_string(const DeflectionRule& rule) {
   if (!rule.active()) return "none";
   std::string s = std::string(to_string(rule.book)) + " " + to_string(rule.service);
   for (const auto& [name, limit] : rule.element_limits) {
-    // Exact: the shortest text that reads back as the same double.
-    char buffer[32];
-    const auto written = std::to_chars(buffer, buffer + sizeof buffer, limit);
-    s += "; " + name + " = " + (std::isfinite(limit) ? std::string(buffer, written.ptr) : std::string()) + " m";
+    s += "; " + name + " = " + (std::isfinite(limit) ? shortest_text(limit) : std::string()) + " m";  // exact
   }
   return s;
 }

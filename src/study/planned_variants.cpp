@@ -1,20 +1,14 @@
 // A study plan's variants: the ones it writes, then each sweep's grid or seeded sample
 // (docs/studies.md, "Sweeps and samples").
 #include "study/planned_variants.hpp"
+#include "shortest_text.hpp"
 
-#include <charconv>
 #include <cmath>
 
 #include "study/sampling.hpp"
 
 namespace railmodal::study {
 namespace {
-
-std::string shortest(double x) {
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, result.ptr);
-}
 
 // A variant of the sweep with the given assignments, one per parameter.
 VariantSpec sweep_point(const StudyPlan& plan, const Sweep& sweep, std::string name, std::vector<Assignment> assignments) {
@@ -68,9 +62,9 @@ void add_grid(const StudyPlan& plan, const Sweep& sweep, std::vector<VariantSpec
 }  // namespace
 
 std::string WrittenNumber::text() const {
-  if (!unit.empty()) return shortest(number) + " " + unit;
+  if (!unit.empty()) return shortest_text(number) + " " + unit;
   if (integer) return std::to_string(std::llround(number));
-  return shortest(number);
+  return shortest_text(number);
 }
 
 std::vector<VariantSpec> planned_variants(const StudyPlan& plan) {

@@ -14,9 +14,9 @@
 # the study plan (study) meet.
 cmake_minimum_required(VERSION 3.16)
 
-set(foundations "require_valid;summary")
-set(may_include_model "")
-set(may_include_input "model")
+set(foundations "require_valid;summary;shortest_text")
+set(may_include_model "shortest_text")
+set(may_include_input "model;shortest_text")
 set(may_include_excitation "model;${foundations}")
 set(may_include_solve "model;${foundations}")
 set(may_include_spectrum "${foundations}")
@@ -28,6 +28,7 @@ set(may_include_errors "")
 set(may_include_load_study "input;study")
 set(may_include_require_valid "")
 set(may_include_summary "")
+set(may_include_shortest_text "")
 # Single headers of another stage a stage may include: plan types a reader fills.
 set(may_include_headers_input "study/study_plan.hpp")
 
