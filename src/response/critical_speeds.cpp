@@ -64,10 +64,8 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
                                                 const std::vector<const ExcitationSource*>& sources,
                                                 const CriticalSpeedOptions& options, AnalysisSummary* summary) {
   require_valid(options, "critical speeds: ");
-  AnalysisSummary own;
-  if (!summary) summary = &own;
-  *summary = AnalysisSummary{};
-  StageClock clock(summary);
+  if (summary) *summary = AnalysisSummary{};
+  StageClock clock(summary);  // no clock, no strings without a summary
   const auto groups = response::eigenspaces(modes);
   int in_range = 0;
   std::vector<CriticalSpeed> found;
@@ -139,14 +137,16 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
   std::stable_sort(found.begin(), found.end(),
                    [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.speed < b.speed; });
   clock.lap("sort");
-  summary->analysis = "critical speeds";
-  summary->method = "V = Λ·f/k for each source harmonic and eigenspace, modal force against the participation "
-                    "floor, direct harmonic solve at each resonance";
-  const double driven = static_cast<double>(found.size());
-  summary->checks.push_back({"resonances driven, of those in range", driven, static_cast<double>(in_range), true});
-  const double stopped = static_cast<double>(
-      std::count_if(found.begin(), found.end(), [](const CriticalSpeed& c) { return c.friction_stops; }));
-  summary->checks.push_back({"resonances leaf friction stops (Den Hartog)", stopped, driven, true});
+  if (summary) {
+    summary->analysis = "critical speeds";
+    summary->method = "V = Λ·f/k for each source harmonic and eigenspace, modal force against the participation "
+                      "floor, direct harmonic solve at each resonance";
+    const double driven = static_cast<double>(found.size());
+    summary->checks.push_back({"resonances driven, of those in range", driven, static_cast<double>(in_range), true});
+    const double stopped = static_cast<double>(
+        std::count_if(found.begin(), found.end(), [](const CriticalSpeed& c) { return c.friction_stops; }));
+    summary->checks.push_back({"resonances leaf friction stops (Den Hartog)", stopped, driven, true});
+  }
   return found;
 }
 

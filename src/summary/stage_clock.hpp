@@ -3,7 +3,6 @@
 
 #include <chrono>
 #include <string>
-#include <utility>
 
 #include "railmodal/summary.hpp"
 
@@ -11,12 +10,16 @@ namespace railmodal {
 
 /// Starts timing on construction; each lap() ends the stage running since the last lap (or
 /// construction) and appends it with its name. Stages are consecutive, so they never overlap.
+/// With a null summary (an out-parameter the caller did not pass) it reads no clock and builds
+/// no strings: peak and deflection refinement run an analysis per golden-section step.
 class StageClock {
  public:
-  explicit StageClock(AnalysisSummary* summary) : summary_(summary), start_(Clock::now()) {}
-  void lap(std::string stage) {
+  explicit StageClock(AnalysisSummary* summary)
+      : summary_(summary), start_(summary ? Clock::now() : Clock::time_point{}) {}
+  void lap(const char* stage) {
+    if (!summary_) return;
     const Clock::time_point now = Clock::now();
-    summary_->stages.push_back({std::move(stage), std::chrono::duration<double>(now - start_).count()});
+    summary_->stages.push_back({stage, std::chrono::duration<double>(now - start_).count()});
     start_ = now;
   }
 
