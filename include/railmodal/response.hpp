@@ -140,7 +140,9 @@ struct CriticalSpeedOptions {
   /// > 0: leaf friction also acts as equivalent viscous damping for this element stretch
   /// amplitude (m), so resonances get finite amplitudes; 0: friction only in the criterion.
   double friction_reference_amplitude = 0.0;
-  /// Returns false and explains in *why when an option is out of range.
+  /// Returns false and explains in *why when an option is out of range: 0 < min_speed ≤
+  /// max_speed, finite; participation_floor in [0, 1); friction_reference_amplitude finite and
+  /// ≥ 0.
   bool is_valid(std::string* why) const;
 };
 

@@ -57,9 +57,10 @@ struct SimulationOptions {
   /// Nonlinear path only: events (stick, slip, reversal, a kink of a progressive spring) are
   /// located to within this time, s.
   double event_tolerance = 1e-12;
-  /// Returns false and explains in *why when an option is out of range. The rules that depend
-  /// on the path or the sources (a speed with sources, a ramp, the step count) are the
-  /// simulation's own.
+  /// Returns false and explains in *why when an option is out of range: duration and time step
+  /// positive, tolerances positive, final_speed finite and ≥ 0. Both paths check every option,
+  /// also those only the nonlinear path reads. The rules that depend on the path or the sources
+  /// (a speed with sources, a ramp, the step count) are the simulation's own.
   bool is_valid(std::string* why) const;
 };
 

@@ -189,7 +189,7 @@ struct VariantResult {
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule = {});
 
 struct EvaluationOptions {
-  int threads = 0;      ///< 0: std::thread::hardware_concurrency()
+  int threads = 0;      ///< ≥ 0; 0: std::thread::hardware_concurrency()
   int shard = 1;        ///< this process evaluates the variants with index % shards == shard − 1
   int shards = 1;
   std::function<void(double)> progress;  ///< fraction done, called from one thread at a time

@@ -15,8 +15,8 @@
 
 namespace railmodal::input {
 
-/// Every variant is listed in memory, in every shard, even when not read: about 2.7 kB each
-/// (10^6 listed: 2.7 GB and 10 s on the development machine), and a read one about 10 kB.
+/// Every variant is listed in memory, in every shard, even when not read: about 2.5 kB each
+/// (10^6 listed: 2.5 GB and 7.6 s on the development machine), and a read one about 10 kB.
 inline constexpr size_t kMaxStudyVariants = 1000000;
 
 /// A study file read: the plan it writes, and what reading its variants needs.
