@@ -60,6 +60,94 @@ bool CriticalSpeedOptions::is_valid(std::string* why) const {
   return true;
 }
 
+namespace {
+
+using Eigenspace = std::vector<const Mode*>;
+
+// What a load does to an eigenspace: the mode of it that the load drives, φ* = Φ_E Φ_EᵀQ / ‖Φ_EᵀQ‖
+// (mass-normalised, as each φ is), with F₀ = ‖Φ_EᵀQ‖ its modal force.
+struct DrivenMode {
+  Eigen::VectorXcd unscaled_shape;  // Φ_E conj(Φ_EᵀQ): φ* before the division by F₀
+  double F0 = 0.0;
+};
+
+DrivenMode driven_mode(const Eigenspace& group, const Eigen::VectorXcd& Q) {
+  DrivenMode d;
+  d.unscaled_shape = Eigen::VectorXcd::Zero(Q.size());
+  double F0_squared = 0.0;
+  for (const Mode* m : group) {
+    const std::complex<double> f = m->shape.cast<std::complex<double>>().dot(Q);
+    d.unscaled_shape += m->shape.cast<std::complex<double>>() * std::conj(f);
+    F0_squared += std::norm(f);
+  }
+  d.F0 = std::sqrt(F0_squared);
+  return d;
+}
+
+// The DOF a critical speed reports: the mode's most energetic one, or for a repeated frequency
+// the one that moves most, weighted by its mass, in the driven combination.
+int reported_dof(const LinearSystem& system, const Eigenspace& group, const Eigen::VectorXd& magnitude) {
+  if (group.size() == 1) return dominant_dof(*group.front());
+  int out = 0;
+  for (int d = 1; d < magnitude.size(); ++d)
+    if (magnitude(d) * std::sqrt(std::abs(system.mass(d, d))) > magnitude(out) * std::sqrt(std::abs(system.mass(out, out))))
+      out = d;
+  return out;
+}
+
+// Growth per half period without damping, and what leaf friction takes of it (Den Hartog).
+void add_growth_and_friction(const LinearSystem& system, const Eigenspace& group, const Eigen::VectorXcd& Q,
+                             double F0, double at_output, CriticalSpeed* row) {
+  const Mode& first = *group.front();
+  // For friction, the real combination (exact when the modal forces share a phase).
+  Eigen::VectorXd driven = Eigen::VectorXd::Zero(system.size());
+  for (const Mode* m : group)
+    driven += m->shape * (std::conj(m->shape.cast<std::complex<double>>().dot(Q)) / F0).real();
+  // Undamped growth at resonance: q = F₀ t sin(ωt)/(2ω), π F₀/(2λ) per half period π/ω.
+  row->growth_per_half_period = kPi * F0 / (2.0 * first.eigenvalue) * at_output;
+  const double friction = modal_friction_work(system, group.size() == 1 ? first.shape : driven);
+  row->friction_decrement_per_half_period = 2.0 * friction / first.eigenvalue * at_output;
+  if (friction > 0.0) {
+    row->friction_stops = kPi * F0 <= 4.0 * friction;
+    row->friction_threshold_scale = 4.0 * friction / (kPi * F0);
+  }
+}
+
+// The critical speed where harmonic k of source s meets the eigenspace, if the load drives it.
+std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalResult& modes,
+                                       const ExcitationSource& source, int s, int k, double speed,
+                                       const Eigenspace& group, const CriticalSpeedOptions& options) {
+  const Mode& first = *group.front();
+  const HarmonicLoad load = source.load(system, speed, k);
+  const Eigen::VectorXcd Q = generalized_load(system, load);
+  const DrivenMode d = driven_mode(group, Q);
+  // Driven unless the modal force is below 1e-9 of ‖φ‖‖Q‖: symmetry zeros (roll under
+  // square joints) are round-off, ~1e-16 of it. Scale-free, whatever else is in range.
+  if (!(d.F0 > options.participation_floor * first.shape.norm() * Q.norm())) return std::nullopt;
+  // A complex modal-force vector (inputs out of phase) gives a rotating combination;
+  // its magnitude per DOF is what the output sees.
+  const Eigen::VectorXd magnitude = (d.unscaled_shape / d.F0).cwiseAbs();
+
+  CriticalSpeed row;
+  row.speed = speed;
+  row.source = s;
+  row.source_kind = source.kind();
+  row.harmonic = k;
+  row.mode = first.index;
+  row.mode_name = first.name;
+  for (size_t g = 1; g < group.size(); ++g) row.mode_name += " + " + group[g]->name;
+  row.frequency_hz = first.frequency_hz;
+  const int out = reported_dof(system, group, magnitude);
+  row.output = system.dofs[out].label;
+  add_growth_and_friction(system, group, Q, d.F0, magnitude(out), &row);
+  const HarmonicResponse response = respond(system, modes, load, options.friction_reference_amplitude).response;
+  row.unbounded = unbounded_at(response, modes, out);
+  row.amplitude = row.unbounded ? 0.0 : std::abs(response.displacement(out));
+  return row;
+}
+
+}  // namespace
+
 std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,
                                                 const std::vector<const ExcitationSource*>& sources,
                                                 const CriticalSpeedOptions& options, AnalysisSummary* summary) {
@@ -73,64 +161,11 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
     const ExcitationSource& source = *sources[s];
     for (int k = 1; k <= source.harmonic_count(); ++k)
       for (const auto& group : groups) {
-        const Mode& first = *group.front();
-        const double speed = source.speed_for(first.frequency_hz, k);
+        const double speed = source.speed_for(group.front()->frequency_hz, k);
         if (speed < options.min_speed || speed > options.max_speed) continue;
         ++in_range;
-        const HarmonicLoad load = source.load(system, speed, k);
-        const Eigen::VectorXcd Q = generalized_load(system, load);
-        // The mode of the eigenspace that the load drives: φ* = Φ_E Φ_EᵀQ / ‖Φ_EᵀQ‖
-        // (mass-normalised, as each φ is); F₀ = ‖Φ_EᵀQ‖ is its modal force.
-        Eigen::VectorXcd shape = Eigen::VectorXcd::Zero(system.size());
-        double F0_squared = 0.0;
-        for (const Mode* m : group) {
-          const std::complex<double> f = m->shape.cast<std::complex<double>>().dot(Q);
-          shape += m->shape.cast<std::complex<double>>() * std::conj(f);
-          F0_squared += std::norm(f);
-        }
-        const double F0 = std::sqrt(F0_squared);
-        // Driven unless the modal force is below 1e-9 of ‖φ‖‖Q‖: symmetry zeros (roll under
-        // square joints) are round-off, ~1e-16 of it. Scale-free, whatever else is in range.
-        if (!(F0 > options.participation_floor * first.shape.norm() * Q.norm())) continue;
-        // For friction, the real combination (exact when the modal forces share a phase).
-        Eigen::VectorXd driven = Eigen::VectorXd::Zero(system.size());
-        for (const Mode* m : group)
-          driven += m->shape * (std::conj(m->shape.cast<std::complex<double>>().dot(Q)) / F0).real();
-        // A complex modal-force vector (inputs out of phase) gives a rotating combination;
-        // its magnitude per DOF is what the output sees.
-        Eigen::VectorXd magnitude = (shape / F0).cwiseAbs();
-
-        CriticalSpeed row;
-        row.speed = speed;
-        row.source = static_cast<int>(s);
-        row.source_kind = source.kind();
-        row.harmonic = k;
-        row.mode = first.index;
-        row.mode_name = first.name;
-        for (size_t g = 1; g < group.size(); ++g) row.mode_name += " + " + group[g]->name;
-        row.frequency_hz = first.frequency_hz;
-        int out = 0;
-        if (group.size() == 1) {
-          out = dominant_dof(first);
-        } else {
-          for (int d = 1; d < magnitude.size(); ++d)
-            if (magnitude(d) * std::sqrt(std::abs(system.mass(d, d))) > magnitude(out) * std::sqrt(std::abs(system.mass(out, out))))
-              out = d;
-        }
-        row.output = system.dofs[out].label;
-        const double at_output = magnitude(out);
-        // Undamped growth at resonance: q = F₀ t sin(ωt)/(2ω), π F₀/(2λ) per half period π/ω.
-        row.growth_per_half_period = kPi * F0 / (2.0 * first.eigenvalue) * at_output;
-        const double friction = modal_friction_work(system, group.size() == 1 ? first.shape : driven);
-        row.friction_decrement_per_half_period = 2.0 * friction / first.eigenvalue * at_output;
-        if (friction > 0.0) {
-          row.friction_stops = kPi * F0 <= 4.0 * friction;
-          row.friction_threshold_scale = 4.0 * friction / (kPi * F0);
-        }
-        const HarmonicResponse response = respond(system, modes, load, options.friction_reference_amplitude).response;
-        row.unbounded = unbounded_at(response, modes, out);
-        row.amplitude = row.unbounded ? 0.0 : std::abs(response.displacement(out));
-        found.push_back(row);
+        if (auto row = resonance(system, modes, source, static_cast<int>(s), k, speed, group, options))
+          found.push_back(std::move(*row));
       }
   }
   clock.lap("resonances");
