@@ -36,4 +36,9 @@ inline constexpr int kReportBest = 3;
 void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
                              OutputFormat format);
 
+/// The results of one shard of a study as JSON (railmodal compare --shard), for read_shard
+/// (study.hpp) to merge: the study's name and size, the evaluation's shard, and each result.
+void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
+                 const std::vector<VariantResult>& results);
+
 }  // namespace railmodal

@@ -241,10 +241,9 @@ struct Comparison {
 /// merged shards). Ties keep study order.
 Comparison rank_variants(const Study& study, std::vector<VariantResult> results);
 
-/// The results of one shard as JSON, and back (checked against the study: same name, same
-/// number of variants, each name at its index). read_shard throws InputError naming `file`.
-void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
-                 const std::vector<VariantResult>& results);
+/// The results of one shard read back from the JSON write_shard wrote (comparison_report.hpp),
+/// checked against the study: same name, same number of variants, each name at its index.
+/// Throws InputError naming `file`.
 std::vector<VariantResult> read_shard(const std::string& file, const Study& study);
 /// The same from a stream (a shard received over MPI, say); messages name `origin`.
 std::vector<VariantResult> read_shard(std::istream& in, const std::string& origin, const Study& study);
