@@ -10,7 +10,8 @@
 //     railmodal::Comparison comparison = railmodal::rank_variants(study, railmodal::evaluate_study(study, {}));
 //     railmodal::write_comparison(std::cout, comparison, railmodal::OutputFormat::table);
 //     std::ofstream page("/dev/null");  // a file such as study.html
-//     railmodal::write_comparison_report(page, study, comparison, railmodal::OutputFormat::html);
+//     railmodal::ComparisonCurves curves = railmodal::comparison_curves(study, comparison, railmodal::kReportBest);
+//     railmodal::write_comparison_report(page, study, comparison, curves, railmodal::OutputFormat::html);
 //   }
 #pragma once
 
@@ -29,12 +30,13 @@ void write_comparison(std::ostream& out, const Comparison& comparison, OutputFor
 /// winner wins (its criteria against the base and the runner-up, what the others violate),
 /// the ranked table (first kReportRows variants), each swept parameter against the periods
 /// and the objective, and the amplitude-against-speed curves of the best kReportBest
-/// feasible variants over the base's (recomputed from `study`: a critical-speed study each).
-/// HTML is one self-contained page with inline SVG plots.
+/// feasible variants over the base's, from `curves` (comparison_curves(study, comparison,
+/// kReportBest); table, csv and json do not draw them: pass {}). HTML is one self-contained
+/// page with inline SVG plots. The writer reads no file and runs no analysis.
 inline constexpr int kReportRows = 40;
 inline constexpr int kReportBest = 3;
 void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
-                             OutputFormat format);
+                             const ComparisonCurves& curves, OutputFormat format);
 
 /// The results of one shard of a study as JSON (railmodal compare --shard), for read_shard
 /// (study.hpp) to merge: the study's name and size, the evaluation's shard, and each result.

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "railmodal/critical_speed.hpp"
 #include "railmodal/scene.hpp"
 #include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
@@ -240,6 +241,30 @@ struct Comparison {
 /// Ranks every variant of the study; `results` must hold each index once (from one run or
 /// merged shards). Ties keep study order.
 Comparison rank_variants(const Study& study, std::vector<VariantResult> results);
+
+/// The comparison's base design (the study's vehicle unmodified, when the study keeps it), or
+/// nullptr.
+const RankedVariant* comparison_base(const Comparison& comparison);
+/// The best `count` designs other than the base, in rank order: the feasible ones, or any
+/// evaluated ones when none is feasible.
+std::vector<const RankedVariant*> best_designs(const Comparison& comparison, int count);
+
+/// A design's critical-speed study, as a comparison report draws it.
+struct DesignCurves {
+  std::string label;  ///< "base", "1. softer springs"
+  bool base = false;
+  CriticalSpeedStudy study;
+};
+/// The response curves a comparison report draws: the base's (when it was evaluated) and the
+/// best designs', in that order, and a note for each design that could not be studied.
+struct ComparisonCurves {
+  std::vector<DesignCurves> designs;
+  std::vector<std::string> notes;  ///< "No curves for NAME: why"
+};
+/// Studies the base and the best `best` designs of `comparison` (study_critical_speeds of each),
+/// reading those the study did not read (results merged from shards) with read_variant. A
+/// design that cannot be read or solved gets a note, not an exception.
+ComparisonCurves comparison_curves(const Study& study, const Comparison& comparison, int best);
 
 /// The results of one shard read back from the JSON write_shard wrote (comparison_report.hpp),
 /// checked against the study: same name, same number of variants, each name at its index.

@@ -50,28 +50,6 @@ std::string metric_text(const std::string& metric, const std::optional<double>& 
 
 std::string goal(const RankingCriterion& c) { return std::string(c.maximise ? "max " : "min ") + c.metric; }
 
-bool is_base(const VariantResult& r) { return r.index == 0 && r.name == "base" && r.parameters.empty(); }
-
-const RankedVariant* find_base(const Comparison& c) {
-  for (const RankedVariant& v : c.variants)
-    if (is_base(v.result)) return &v;
-  return nullptr;
-}
-
-// The best few: feasible variants in rank order other than the base (any evaluated ones when
-// none is feasible).
-std::vector<const RankedVariant*> best_variants(const Comparison& c) {
-  std::vector<const RankedVariant*> best;
-  for (bool need_feasible : {true, false}) {
-    for (const RankedVariant& v : c.variants)
-      if (best.size() < static_cast<size_t>(kReportBest) && v.result.ok() && !is_base(v.result) &&
-          (v.feasible || !need_feasible) && std::find(best.begin(), best.end(), &v) == best.end())
-        best.push_back(&v);
-    if (!best.empty()) break;
-  }
-  return best;
-}
-
 // ---- why the winner wins ------------------------------------------------------------------
 
 // How the winner beats the runner-up: on the weighted objective, or on the first criterion
@@ -115,7 +93,7 @@ std::string against_base(const Comparison& c, const Writer& w, const RankedVaria
 
 // Who ranks first and why, and how it compares with the base design.
 void add_winner(const Comparison& c, const Writer& w, size_t feasible, std::vector<std::string>* out) {
-  const RankedVariant* base = find_base(c);
+  const RankedVariant* base = comparison_base(c);
   const RankedVariant& winner = c.variants.front();
   std::string s = w.bold(winner.result.name) + w.text(" ranks first of " + std::to_string(c.variants.size()) +
                                                     " variants (" + std::to_string(feasible) + " feasible).");
@@ -400,32 +378,6 @@ Table sweep_table(const Comparison& c, const SweptParameter& p, const VariantRes
 
 // ---- response curves of the best designs ------------------------------------------------------
 
-struct CurveSet {
-  std::string label;  ///< "base", "1. softer springs"
-  bool base = false;
-  CriticalSpeedStudy study;
-};
-
-std::vector<CurveSet> curve_sets(const Study& study, const Comparison& c, std::vector<std::string>* notes) {
-  std::vector<std::pair<const RankedVariant*, bool>> wanted;
-  if (const RankedVariant* base = find_base(c); base && base->result.ok()) wanted.push_back({base, true});
-  for (const RankedVariant* v : best_variants(c)) wanted.push_back({v, false});
-  std::vector<CurveSet> sets;
-  for (const auto& [v, base] : wanted) {
-    CurveSet s;
-    s.label = base ? "base" : std::to_string(v->rank) + ". " + v->result.name;
-    s.base = base;
-    try {
-      const StudyVariant variant = read_variant(study, v->result.index);  // merged shards read it now
-      s.study = study_critical_speeds(variant.scene, variant.vehicle);
-      sets.push_back(std::move(s));
-    } catch (const std::exception& e) {  // NumericalError, InputError: say so, draw the rest
-      notes->push_back("No curves for " + v->result.name + ": " + e.what());
-    }
-  }
-  return sets;
-}
-
 struct CurveKey {
   int source;
   std::string output;
@@ -442,7 +394,7 @@ const AmplitudeCurve* find_curve(const CriticalSpeedStudy& st, const CurveKey& k
   return nullptr;
 }
 
-std::vector<CurveKey> curve_keys(const std::vector<CurveSet>& sets) {
+std::vector<CurveKey> curve_keys(const std::vector<DesignCurves>& sets) {
   std::vector<CurveKey> keys;
   if (sets.empty()) return keys;
   for (const AmplitudeCurve& curve : sets.front().study.curves)
@@ -474,13 +426,13 @@ std::string peak_text(const CriticalSpeedStudy& st, const CurveKey& key) {
   return significant(amplitude * u.scale, 4) + " " + u.name + " at " + fixed(speed * kKmh, 1) + " km/h";
 }
 
-Table peak_table(const std::vector<CurveSet>& sets, const std::vector<CurveKey>& keys) {
+Table peak_table(const std::vector<DesignCurves>& sets, const std::vector<CurveKey>& keys) {
   Table t;
   t.headers = {"variant"};
   for (const CurveKey& k : keys) t.headers.push_back(curve_title(sets.front().study, k) + ": peak");
   t.numeric.assign(t.headers.size(), true);
   t.numeric.front() = false;
-  for (const CurveSet& s : sets) {
+  for (const DesignCurves& s : sets) {
     std::vector<std::string> row{s.label};
     for (const CurveKey& k : keys) row.push_back(peak_text(s.study, k));
     t.rows.push_back(row);
@@ -488,7 +440,7 @@ Table peak_table(const std::vector<CurveSet>& sets, const std::vector<CurveKey>&
   return t;
 }
 
-void write_curve_charts(std::ostream& out, const std::vector<CurveSet>& sets, const std::vector<CurveKey>& keys) {
+void write_curve_charts(std::ostream& out, const std::vector<DesignCurves>& sets, const std::vector<CurveKey>& keys) {
   for (size_t k = 0; k < keys.size(); ++k) {
     const CriticalSpeedStudy& first = sets.front().study;
     const report::Unit u = report::unit_of(first.system, keys[k].output, keys[k].quantity);
@@ -500,7 +452,7 @@ void write_curve_charts(std::ostream& out, const std::vector<CurveSet>& sets, co
     chart.log_y = true;
     chart.x_min = INFINITY;
     chart.x_max = -INFINITY;
-    for (const CurveSet& s : sets) {
+    for (const DesignCurves& s : sets) {
       int index = 0;
       const AmplitudeCurve* curve = find_curve(s.study, keys[k], &index);
       if (!curve) continue;
@@ -541,8 +493,8 @@ Table deflection_table(const Comparison& c) {
   t.headers = {"variant", "limit", "permissible", "worst element", "deflection / permissible", "at", "kept"};
   t.numeric = {false, false, true, false, true, true, false};
   std::vector<const RankedVariant*> shown;
-  if (const RankedVariant* base = find_base(c)) shown.push_back(base);
-  for (const RankedVariant* v : best_variants(c)) shown.push_back(v);
+  if (const RankedVariant* base = comparison_base(c)) shown.push_back(base);
+  for (const RankedVariant* v : best_designs(c, kReportBest)) shown.push_back(v);
   auto ratio = [](const VariantResult::DeflectionCheck& d) { return d.unbounded ? INFINITY : d.deflection / d.permissible; };
   for (const RankedVariant* v : shown) {
     const VariantResult& r = v->result;
@@ -588,13 +540,13 @@ std::string ranking_text(const Comparison& c) {
 }
 
 const VariantResult* reference_result(const Comparison& c) {
-  if (const RankedVariant* base = find_base(c); base && base->result.ok()) return &base->result;
+  if (const RankedVariant* base = comparison_base(c); base && base->result.ok()) return &base->result;
   for (const RankedVariant& v : c.variants)
     if (v.result.ok()) return &v.result;
   return nullptr;
 }
 
-void write_markdown(std::ostream& out, const Study& study, const Comparison& c) {
+void write_markdown(std::ostream& out, const Study& study, const Comparison& c, const ComparisonCurves& curves) {
   const Writer w{false};
   out << "# Design comparison: " << c.study << "\n\nStudy `" << study.source << "`, " << c.variants.size()
       << " variants. " << ranking_text(c) << "\n\n## Why the winner wins\n\n";
@@ -612,8 +564,7 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c) 
       report::write_markdown_table(out, sweep_table(c, p, *reference));
     }
   }
-  std::vector<std::string> notes;
-  const std::vector<CurveSet> sets = curve_sets(study, c, &notes);
+  const std::vector<DesignCurves>& sets = curves.designs;
   if (!sets.empty()) {
     out << "## Peak responses of the best variants\n\nThe largest amplitude of each output over the speed range, "
            "for the base and the best " << kReportBest << " variants; the curves are in the HTML report.\n\n";
@@ -623,10 +574,10 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c) 
     out << "## Permissible dynamic deflections\n\n" << rule_text(c.deflection_rule) << "\n\n";
     report::write_markdown_table(out, deflection_table(c));
   }
-  for (const std::string& n : notes) out << n << "\n\n";
+  for (const std::string& n : curves.notes) out << n << "\n\n";
 }
 
-void write_html(std::ostream& out, const Study& study, const Comparison& c) {
+void write_html(std::ostream& out, const Study& study, const Comparison& c, const ComparisonCurves& curves) {
   const Writer w{true};
   report::write_html_head(out, "Design comparison: " + c.study);
   out << "<h1>Design comparison: " << html_escape(c.study) << "</h1>\n<p>Study <code>" << html_escape(study.source)
@@ -644,8 +595,7 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c) {
            "differ in the other parameters).</p>\n";
     write_sweep_charts(out, c, swept, *reference);
   }
-  std::vector<std::string> notes;
-  const std::vector<CurveSet> sets = curve_sets(study, c, &notes);
+  const std::vector<DesignCurves>& sets = curves.designs;
   if (!sets.empty()) {
     const std::vector<CurveKey> keys = curve_keys(sets);
     out << "<h2>Amplitude against speed: the best variants over the base</h2>\n<p class=note>The base dashed; the "
@@ -661,17 +611,17 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c) {
         << "</p>\n";
     report::write_html_table(out, deflection_table(c));
   }
-  for (const std::string& n : notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
+  for (const std::string& n : curves.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
   out << "<p class=note>Written by railmodal compare.</p>\n</body></html>\n";
 }
 
 }  // namespace
 
 void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
-                             OutputFormat format) {
+                             const ComparisonCurves& curves, OutputFormat format) {
   switch (format) {
-    case OutputFormat::markdown: write_markdown(out, study, comparison); break;
-    case OutputFormat::html: write_html(out, study, comparison); break;
+    case OutputFormat::markdown: write_markdown(out, study, comparison, curves); break;
+    case OutputFormat::html: write_html(out, study, comparison, curves); break;
     default: write_comparison(out, comparison, format); break;
   }
 }

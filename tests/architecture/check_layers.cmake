@@ -10,8 +10,12 @@
 # spring formulas, and fills the study's plan type (study/study_plan.hpp, types only); nothing
 # includes input: an analysis or a report that read files would be a back-edge. Files at the
 # top of src/ belong to no stage, each a unit of its own: errors.cpp (InputError and the
-# like, which every stage throws) and load_study.cpp/.hpp, where the study reader (input) and
-# the study plan (study) meet.
+# like, which every stage throws); load_study.cpp/.hpp, where the study reader (input) and the
+# study plan (study) meet; comparison_curves.cpp, which reads and studies the designs a
+# comparison report draws (public calls only), so that the report reads no file. Foundations
+# below every stage, which include nothing of the stages: require_valid.hpp (the one check of
+# an options struct) and summary/ (the stage clock of an AnalysisSummary), which any analysis
+# and report may include, and shortest_text.hpp (round-trip number text), which any stage may.
 cmake_minimum_required(VERSION 3.16)
 
 set(foundations "require_valid;summary;shortest_text")
@@ -26,6 +30,7 @@ set(may_include_study "model;excitation;solve;spectrum;response;simulate;${found
 set(may_include_report "model;excitation;solve;spectrum;response;simulate;study;${foundations}")
 set(may_include_errors "")
 set(may_include_load_study "input;study")
+set(may_include_comparison_curves "")
 set(may_include_require_valid "")
 set(may_include_summary "")
 set(may_include_shortest_text "")

@@ -20,7 +20,7 @@ struct TwoAxleStudy {
 
   std::string report(OutputFormat format) const {
     std::ostringstream out;
-    write_comparison_report(out, study, comparison, format);
+    write_comparison_report(out, study, comparison, comparison_curves(study, comparison, kReportBest), format);
     return out.str();
   }
 };
@@ -183,7 +183,7 @@ TEST(ComparisonReport, TheRankedFormatsDoNotNeedTheStudyButTheReportsDo) {
   const TwoAxleStudy& s = two_axle();
   std::ostringstream table, via_report;
   write_comparison(table, s.comparison, OutputFormat::table);
-  write_comparison_report(via_report, s.study, s.comparison, OutputFormat::table);
+  write_comparison_report(via_report, s.study, s.comparison, {}, OutputFormat::table);
   EXPECT_EQ(table.str(), via_report.str());
   std::ostringstream out;
   EXPECT_THROW(write_comparison(out, s.comparison, OutputFormat::html), std::invalid_argument);

@@ -106,8 +106,14 @@ int merge_and_write(const Options& o, const railmodal::Study& study, const std::
         throw railmodal::InputError(o.study, 0, 0, "no rank returned variant " + std::to_string(i + 1) + " ('" +
                                                        study.variants[i].name + "')");
     std::ostringstream text;
-    railmodal::write_comparison_report(text, study, railmodal::rank_variants(study, std::move(results)),
-                                       *railmodal::output_format_from_string(o.format));
+    const railmodal::Comparison comparison = railmodal::rank_variants(study, std::move(results));
+    const railmodal::OutputFormat format = *railmodal::output_format_from_string(o.format);
+    // The documents draw the best designs' curves: studied here, read first (the shards did not).
+    const bool document = format == railmodal::OutputFormat::markdown || format == railmodal::OutputFormat::html;
+    railmodal::write_comparison_report(
+        text, study, comparison,
+        document ? railmodal::comparison_curves(study, comparison, railmodal::kReportBest) : railmodal::ComparisonCurves{},
+        format);
     return write_output(o.output, text.str());
   } catch (const railmodal::InputError& e) {
     std::cerr << e.what() << "\n";

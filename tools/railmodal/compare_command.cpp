@@ -72,7 +72,11 @@ int run(const CompareOptions& o) {
           throw InputError(o.merge.front(), 0, 0, "no shard holds variant " + std::to_string(i + 1) + " ('" +
                                                       study.variants[i].name + "'): give every shard of the study");
     }
-    write_comparison_report(text, study, rank_variants(study, std::move(results)), format);
+    const Comparison comparison = rank_variants(study, std::move(results));
+    // The documents draw the best designs' curves: studied here, read first if merged.
+    const bool document = format == OutputFormat::markdown || format == OutputFormat::html;
+    write_comparison_report(text, study, comparison,
+                            document ? comparison_curves(study, comparison, kReportBest) : ComparisonCurves{}, format);
     return write_output(o.output, text.str());
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
