@@ -236,6 +236,8 @@ struct Comparison {
   Ranking ranking;
   DeflectionRule deflection_rule;  ///< the study's; active: results hold deflection checks
   std::vector<RankedVariant> variants;  ///< in rank order
+  /// The order applied, the feasible and failed counts, and the time the ranking took.
+  AnalysisSummary summary;
 };
 
 /// Ranks every variant of the study; `results` must hold each index once (from one run or

@@ -7,6 +7,7 @@
 
 #include "railmodal/study.hpp"
 #include "study/metrics.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 namespace {
@@ -23,65 +24,103 @@ double sort_value(const std::optional<double>& value, bool maximise) {
 
 }  // namespace
 
+namespace {
+
+// Whether an evaluated variant meets the study's constraints (each violation in words), and
+// the values of its criteria.
+void check_constraints(const VariantResult& r, const Ranking& ranking, RankedVariant* v) {
+  for (const RankingConstraint& c : ranking.constraints) {
+    const std::optional<double> value = metric_value(r, c.metric);
+    if (!value && r.deflections_checked && c.metric.rfind("dynamic_deflection_ratio", 0) == 0)
+      v->violations.push_back("no " + c.metric + ": no spring of this variant falls under the deflection rule");
+    else if (!value) v->violations.push_back("no " + c.metric);
+    else if (c.min && *value < *c.min) v->violations.push_back(c.metric + " " + shown(c.metric, *value) + " < " + shown(c.metric, *c.min));
+    else if (c.max && *value > *c.max) v->violations.push_back(c.metric + " " + shown(c.metric, *value) + " > " + shown(c.metric, *c.max));
+  }
+  v->feasible = v->violations.empty();
+  for (const RankingCriterion& c : ranking.objective) v->criteria.push_back(metric_value(r, c.metric));
+}
+
+// The variant's sort key: feasible, then infeasible, then failed; within a group the objective
+// (the weighted sum, or the criteria in order); then the study order. Sets v->objective.
+std::vector<double> rank_key(const VariantResult& r, const Ranking& ranking, RankedVariant* v) {
+  std::vector<double> key{r.ok() ? (v->feasible ? 0.0 : 1.0) : 2.0};
+  if (r.ok() && !ranking.objective.empty()) {
+    if (ranking.weighted) {
+      double sum = 0.0;
+      for (size_t k = 0; k < ranking.objective.size(); ++k)
+        sum += ranking.objective[k].weight * sort_value(v->criteria[k], ranking.objective[k].maximise);
+      // The sum is minimised; reported with the sign it has (maximised criteria negative).
+      if (std::isfinite(sum)) v->objective = sum;
+      key.push_back(std::isnan(sum) ? kWorst : sum);
+    } else {
+      v->objective = v->criteria.front();
+      for (size_t k = 0; k < ranking.objective.size(); ++k)
+        key.push_back(sort_value(v->criteria[k], ranking.objective[k].maximise));
+    }
+  }
+  key.push_back(r.index);
+  return key;
+}
+
+// The variants sorted by their keys, numbered from 1.
+std::vector<RankedVariant> in_rank_order(std::vector<RankedVariant> variants, const std::vector<std::vector<double>>& keys) {
+  std::vector<size_t> order(variants.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return keys[a] < keys[b]; });
+  std::vector<RankedVariant> ranked;
+  for (size_t position = 0; position < order.size(); ++position) {
+    ranked.push_back(std::move(variants[order[position]]));
+    ranked.back().rank = static_cast<int>(position) + 1;
+  }
+  return ranked;
+}
+
+void summarise(Comparison* c) {
+  AnalysisSummary& s = c->summary;
+  s.analysis = "ranking of a design study";
+  s.method = std::string("constraints first (feasible, infeasible, failed), then ") +
+             (c->ranking.objective.empty() ? "study order"
+              : c->ranking.weighted        ? "the weighted sum of the criteria, then study order"
+                                           : "the criteria in order, then study order");
+  const auto count = [c](bool (*pick)(const RankedVariant&)) {
+    return static_cast<double>(std::count_if(c->variants.begin(), c->variants.end(), pick));
+  };
+  constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+  s.checks.push_back({"variants feasible", count([](const RankedVariant& v) { return v.result.ok() && v.feasible; }),
+                      kNoLimit, true});
+  s.checks.push_back({"variants that failed", count([](const RankedVariant& v) { return !v.result.ok(); }), kNoLimit,
+                      true});
+}
+
+}  // namespace
+
 Comparison rank_variants(const Study& study, std::vector<VariantResult> results) {
   if (results.size() != study.variants.size())
     throw std::invalid_argument("results for " + std::to_string(results.size()) + " variants, the study has " +
                                 std::to_string(study.variants.size()));
+  Comparison out;
+  StageClock clock(&out.summary);
   std::sort(results.begin(), results.end(), [](const VariantResult& a, const VariantResult& b) { return a.index < b.index; });
   for (size_t i = 0; i < results.size(); ++i)
     if (results[i].index != static_cast<int>(i) || results[i].name != study.variants[i].name)
       throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
                                   "') is missing or appears twice");
-  const Ranking& ranking = study.ranking;
-  Comparison out;
   out.study = study.name;
   out.source = study.source;
-  out.ranking = ranking;
+  out.ranking = study.ranking;
   out.deflection_rule = study.deflection_rule;
   std::vector<std::vector<double>> keys;  // group, criteria (or weighted sum), index
   for (VariantResult& r : results) {
     RankedVariant v;
-    if (r.ok()) {
-      for (const RankingConstraint& c : ranking.constraints) {
-        const std::optional<double> value = metric_value(r, c.metric);
-        if (!value && r.deflections_checked && c.metric.rfind("dynamic_deflection_ratio", 0) == 0)
-          v.violations.push_back("no " + c.metric + ": no spring of this variant falls under the deflection rule");
-        else if (!value) v.violations.push_back("no " + c.metric);
-        else if (c.min && *value < *c.min) v.violations.push_back(c.metric + " " + shown(c.metric, *value) + " < " + shown(c.metric, *c.min));
-        else if (c.max && *value > *c.max) v.violations.push_back(c.metric + " " + shown(c.metric, *value) + " > " + shown(c.metric, *c.max));
-      }
-      v.feasible = v.violations.empty();
-      for (const RankingCriterion& c : ranking.objective) v.criteria.push_back(metric_value(r, c.metric));
-    }
-    std::vector<double> key{r.ok() ? (v.feasible ? 0.0 : 1.0) : 2.0};
-    if (r.ok() && !ranking.objective.empty()) {
-      if (ranking.weighted) {
-        double sum = 0.0;
-        for (size_t k = 0; k < ranking.objective.size(); ++k)
-          sum += ranking.objective[k].weight * sort_value(v.criteria[k], ranking.objective[k].maximise);
-        // The sum is minimised; reported with the sign it has (maximised criteria negative).
-        if (std::isfinite(sum)) v.objective = sum;
-        key.push_back(std::isnan(sum) ? kWorst : sum);
-      } else {
-        v.objective = v.criteria.front();
-        for (size_t k = 0; k < ranking.objective.size(); ++k)
-          key.push_back(sort_value(v.criteria[k], ranking.objective[k].maximise));
-      }
-    }
-    key.push_back(r.index);
-    keys.push_back(key);
+    if (r.ok()) check_constraints(r, out.ranking, &v);
+    keys.push_back(rank_key(r, out.ranking, &v));
     v.result = std::move(r);
     out.variants.push_back(std::move(v));
   }
-  std::vector<size_t> order(out.variants.size());
-  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return keys[a] < keys[b]; });
-  std::vector<RankedVariant> ranked;
-  for (size_t position = 0; position < order.size(); ++position) {
-    ranked.push_back(std::move(out.variants[order[position]]));
-    ranked.back().rank = static_cast<int>(position) + 1;
-  }
-  out.variants = std::move(ranked);
+  out.variants = in_rank_order(std::move(out.variants), keys);
+  clock.lap("rank");
+  summarise(&out);
   return out;
 }
 

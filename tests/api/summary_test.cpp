@@ -246,5 +246,18 @@ TEST(AnalysisSummary, StudyVariantsAndShard) {
   }
 }
 
+TEST(AnalysisSummary, Ranking) {
+  const Study study = load_study(std::string(RAILMODAL_DATA_DIR) + "/studies/two_axle_rail_length_and_springs.toml");
+  std::vector<VariantResult> results = evaluate_study(study, {});
+  double wall = 0.0;
+  const Comparison c = timed([&] { return rank_variants(study, std::move(results)); }, &wall);
+  expect_filled(c.summary, wall);
+  ASSERT_EQ(c.summary.checks.size(), 2u);
+  size_t feasible = 0;
+  for (const RankedVariant& v : c.variants) feasible += v.result.ok() && v.feasible;
+  EXPECT_EQ(c.summary.checks[0].value, static_cast<double>(feasible));  // "variants feasible"
+  EXPECT_EQ(c.summary.checks[1].value, 0.0);                            // none failed
+}
+
 }  // namespace
 }  // namespace railmodal::test
