@@ -47,16 +47,13 @@ Evaluation respond(const LinearSystem& system, const ModalResult& modes, const H
 }  // namespace
 
 bool CriticalSpeedOptions::is_valid(std::string* why) const {
-  const auto fail = [why](const char* text) {
-    if (why) *why = text;
-    return false;
-  };
   if (!(min_speed > 0.0) || !(max_speed >= min_speed) || !std::isfinite(max_speed))
-    return fail("need 0 < min_speed ≤ max_speed");
+    return invalid(why, "need 0 < min_speed ≤ max_speed");
   if (!(participation_floor >= 0.0 && participation_floor < 1.0))
-    return fail("participation_floor must satisfy 0 ≤ participation_floor < 1");
+    return invalid(why, "participation_floor must satisfy 0 ≤ participation_floor < 1");
   if (!(friction_reference_amplitude >= 0.0) || !std::isfinite(friction_reference_amplitude))
-    return fail("friction_reference_amplitude must be 0 (friction only in the criterion) or a positive stretch");
+    return invalid(why,
+                   "friction_reference_amplitude must be 0 (friction only in the criterion) or a positive stretch");
   return true;
 }
 

@@ -4,20 +4,18 @@
 #include <string>
 
 #include "railmodal/simulation.hpp"
+#include "require_valid.hpp"
 #include "simulate/history_summary.hpp"
 
 namespace railmodal {
 
 bool SimulationOptions::is_valid(std::string* why) const {
-  const auto fail = [why](const char* text) {
-    if (why) *why = text;
-    return false;
-  };
   if (!(duration > 0.0) || !(time_step > 0.0) || !std::isfinite(duration))
-    return fail("duration and time step must be positive");
-  if (!(tolerance > 0.0) || !(event_tolerance > 0.0)) return fail("tolerance and event tolerance must be positive");
+    return invalid(why, "duration and time step must be positive");
+  if (!(tolerance > 0.0) || !(event_tolerance > 0.0))
+    return invalid(why, "tolerance and event tolerance must be positive");
   if (final_speed < 0.0 || !std::isfinite(final_speed))
-    return fail("a final speed must be positive, and needs sources to run over");
+    return invalid(why, "a final speed must be positive, and needs sources to run over");
   return true;
 }
 

@@ -60,10 +60,8 @@ std::optional<DampedModeKind> damped_mode_kind_from_string(const std::string& wo
 
 bool DampedModalOptions::is_valid(std::string* why) const {
   if (!undamped.is_valid(why)) return false;
-  if (!(critical_gap > 0.0 && critical_gap < 1e-2)) {
-    if (why) *why = "critical_gap must satisfy 0 < critical_gap < 1e-2";
-    return false;
-  }
+  if (!(critical_gap > 0.0 && critical_gap < 1e-2))
+    return invalid(why, "critical_gap must satisfy 0 < critical_gap < 1e-2");
   return true;
 }
 

@@ -47,30 +47,19 @@ std::optional<ModalSolver> modal_solver_from_string(const std::string& word) {
 }
 
 bool ArpackOptions::is_valid(std::string* why) const {
-  const auto fail = [why](const char* text) {
-    if (why) *why = text;
-    return false;
-  };
-  if (!std::isnan(shift) && !std::isfinite(shift)) return fail("arpack.shift must be finite (or NaN for automatic)");
-  if (!(tolerance >= 0.0 && tolerance < 1.0)) return fail("arpack.tolerance must satisfy 0 <= tolerance < 1");
-  if (subspace_size < 0) return fail("arpack.subspace_size must be 0 (automatic) or positive");
-  if (max_iterations < 1) return fail("arpack.max_iterations must be at least 1");
+  if (!std::isnan(shift) && !std::isfinite(shift))
+    return invalid(why, "arpack.shift must be finite (or NaN for automatic)");
+  if (!(tolerance >= 0.0 && tolerance < 1.0)) return invalid(why, "arpack.tolerance must satisfy 0 <= tolerance < 1");
+  if (subspace_size < 0) return invalid(why, "arpack.subspace_size must be 0 (automatic) or positive");
+  if (max_iterations < 1) return invalid(why, "arpack.max_iterations must be at least 1");
   return true;
 }
 
 bool ModalOptions::is_valid(std::string* why) const {
-  if (!(zero_tolerance > 0.0 && zero_tolerance < 1e-2)) {
-    if (why) *why = "zero_tolerance must satisfy 0 < zero_tolerance < 1e-2";
-    return false;
-  }
-  if (!(max_residual > 0.0)) {
-    if (why) *why = "max_residual must be positive";
-    return false;
-  }
-  if (mode_count < 0) {
-    if (why) *why = "mode_count must be 0 (all, or ARPACK's default) or positive";
-    return false;
-  }
+  if (!(zero_tolerance > 0.0 && zero_tolerance < 1e-2))
+    return invalid(why, "zero_tolerance must satisfy 0 < zero_tolerance < 1e-2");
+  if (!(max_residual > 0.0)) return invalid(why, "max_residual must be positive");
+  if (mode_count < 0) return invalid(why, "mode_count must be 0 (all, or ARPACK's default) or positive");
   return arpack.is_valid(why);
 }
 

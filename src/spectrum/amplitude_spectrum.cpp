@@ -83,10 +83,8 @@ std::optional<Padding> padding_from_string(const std::string& word) {
 }
 
 bool SpectrumOptions::is_valid(std::string* why) const {
-  if (padding == Padding::to_length && padded_length < 2) {
-    if (why) *why = "padded_length must be at least 2 (and the signal length) with Padding::to_length";
-    return false;
-  }
+  if (padding == Padding::to_length && padded_length < 2)
+    return invalid(why, "padded_length must be at least 2 (and the signal length) with Padding::to_length");
   return true;
 }
 

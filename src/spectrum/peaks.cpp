@@ -55,14 +55,10 @@ SpectralPeak interpolate(const Spectrum& s, Eigen::Index k, double window_half_w
 }  // namespace
 
 bool PeakOptions::is_valid(std::string* why) const {
-  if (!(threshold > 0.0 && threshold <= 1.0)) {
-    if (why) *why = "threshold must be in (0, 1], got " + std::to_string(threshold);
-    return false;
-  }
-  if (!(min_dip >= 0.0 && min_dip < 1.0)) {
-    if (why) *why = "min_dip must be in [0, 1), got " + std::to_string(min_dip);
-    return false;
-  }
+  if (!(threshold > 0.0 && threshold <= 1.0))
+    return invalid(why, "threshold must be in (0, 1], got " + std::to_string(threshold));
+  if (!(min_dip >= 0.0 && min_dip < 1.0))
+    return invalid(why, "min_dip must be in [0, 1), got " + std::to_string(min_dip));
   return true;
 }
 

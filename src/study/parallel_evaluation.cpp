@@ -15,12 +15,8 @@
 namespace railmodal {
 
 bool EvaluationOptions::is_valid(std::string* why) const {
-  const auto fail = [why](const char* text) {
-    if (why) *why = text;
-    return false;
-  };
-  if (shards < 1 || shard < 1 || shard > shards) return fail("shard must be K/N with 1 <= K <= N");
-  if (threads < 0) return fail("threads must be 0 (every core) or positive");
+  if (shards < 1 || shard < 1 || shard > shards) return invalid(why, "shard must be K/N with 1 <= K <= N");
+  if (threads < 0) return invalid(why, "threads must be 0 (every core) or positive");
   return true;
 }
 
