@@ -63,4 +63,12 @@ StudyVariant read_variant(const Study& study, int index) {
   return input::read_variant(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), nullptr);
 }
 
+std::vector<std::string> study_files(const Study& study) {
+  std::vector<std::string> files{study.source};
+  if (!study.plan) return files;
+  files.push_back(study.plan->file.scene_file);
+  for (const auto& [file, document] : study.plan->file.vehicle_documents) files.push_back(file);
+  return files;
+}
+
 }  // namespace railmodal

@@ -125,6 +125,10 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
 /// from the study's files (throwing InputError as load_study would).
 StudyVariant read_variant(const Study& study, int index);
 
+/// The files the study is read from, whichever variants load_study read: the study file, its
+/// scene and every variant's vehicle file, each once (a program must not write over them).
+std::vector<std::string> study_files(const Study& study);
+
 /// What the evaluation found for one variant (SI inside).
 struct VariantResult {
   struct ModeSummary {

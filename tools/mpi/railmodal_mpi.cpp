@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
@@ -36,7 +37,8 @@ using railmodal::cli::kInternal;
 using railmodal::cli::kOutput;
 using railmodal::cli::kSuccess;
 using railmodal::cli::kUsage;
-using railmodal::cli::write_output;
+using railmodal::cli::OutputError;
+using railmodal::cli::OutputFiles;
 
 struct Options {
   std::string study;
@@ -87,9 +89,22 @@ ShardText evaluate_shard(const Options& o, int rank, int size, int threads, std:
   }
 }
 
-/// Rank 0: the gathered shards ranked and written as railmodal compare writes them.
-int merge_and_write(const Options& o, const railmodal::Study& study, const std::vector<std::string>& shards) {
+/// Rank 0's output, opened before any rank evaluates so that a bad path fails first.
+ShardText open_output(const Options& o, OutputFiles& outputs, std::ostream** out) {
   try {
+    *out = &outputs.open(o.output);
+    outputs.refuse_inputs({o.study});
+    return {};
+  } catch (const OutputError& e) {
+    return {e.code(), e.what()};
+  }
+}
+
+/// Rank 0: the gathered shards ranked and written as railmodal compare writes them.
+int merge_and_write(const Options& o, const railmodal::Study& study, const std::vector<std::string>& shards,
+                    OutputFiles& outputs, std::ostream& out) {
+  try {
+    outputs.refuse_inputs(railmodal::study_files(study));
     std::vector<railmodal::VariantResult> results;
     std::set<int> seen;
     for (size_t r = 0; r < shards.size(); ++r) {
@@ -105,19 +120,23 @@ int merge_and_write(const Options& o, const railmodal::Study& study, const std::
       if (!seen.count(static_cast<int>(i)))
         throw railmodal::InputError(o.study, 0, 0, "no rank returned variant " + std::to_string(i + 1) + " ('" +
                                                        study.variants[i].name + "')");
-    std::ostringstream text;
     const railmodal::Comparison comparison = railmodal::rank_variants(study, std::move(results));
     const railmodal::OutputFormat format = *railmodal::output_format_from_string(o.format);
     // The documents draw the best designs' curves: studied here, read first (the shards did not).
     const bool document = format == railmodal::OutputFormat::markdown || format == railmodal::OutputFormat::html;
-    railmodal::write_comparison_report(
-        text, study, comparison,
-        document ? railmodal::comparison_curves(study, comparison, railmodal::kReportBest) : railmodal::ComparisonCurves{},
-        format);
-    return write_output(o.output, text.str());
+    railmodal::write_comparison_report(out, study, comparison,
+                                       document
+                                           ? railmodal::comparison_curves(study, comparison, railmodal::kReportBest)
+                                           : railmodal::ComparisonCurves{},
+                                       format);
+    outputs.commit();
+    return kSuccess;
   } catch (const railmodal::InputError& e) {
     std::cerr << e.what() << "\n";
     return kInput;
+  } catch (const OutputError& e) {
+    std::cerr << e.what() << "\n";
+    return e.code();
   } catch (const std::exception& e) {
     std::cerr << "railmodal-mpi: internal error: " << e.what() << "\n";
     return kInternal;
@@ -127,7 +146,10 @@ int merge_and_write(const Options& o, const railmodal::Study& study, const std::
 int run(const Options& o, int rank, int size) {
   const int threads = o.threads > 0 ? o.threads : default_threads();  // collective: before anything can fail
   std::optional<railmodal::Study> study;
-  ShardText shard = evaluate_shard(o, rank, size, threads, study);
+  OutputFiles outputs;  // rank 0's
+  std::ostream* out = nullptr;
+  ShardText shard = rank == 0 ? open_output(o, outputs, &out) : ShardText{};
+  if (shard.code == kSuccess) shard = evaluate_shard(o, rank, size, threads, study);
   // Every rank learns whether any failed, so none waits for a shard that never comes; the
   // lowest failing rank prints its message (all ranks read the same study: one message).
   int code = shard.code;
@@ -175,7 +197,7 @@ int run(const Options& o, int rank, int size) {
     std::vector<std::string> shards;
     for (int r = 0; r < size; ++r) shards.emplace_back(bytes.data() + offsets[r], static_cast<size_t>(lengths[r]));
     bytes.clear();
-    code = merge_and_write(o, *study, shards);
+    code = merge_and_write(o, *study, shards, outputs, *out);
   }
   MPI_Bcast(&code, 1, MPI_INT, 0, MPI_COMM_WORLD);
   return code;

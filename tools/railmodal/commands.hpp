@@ -19,10 +19,6 @@ std::function<int()> add_fft_check_command(CLI::App& app);
 /// Registers `compare`.
 std::function<int()> add_compare_command(CLI::App& app);
 
-/// Writes `text` to `path` whole or not at all (temporary file, then rename); "-" or ""
-/// is standard output. Returns kOutput with a message on stderr when it cannot.
-int write_output(const std::string& path, const std::string& text);
-
 /// A progress reporter for long runs: shows "name: 42 %" on stderr, only when stderr is a
 /// terminal and only once the run has taken a second; clears the line at 100 %.
 std::function<void(double)> terminal_progress(const std::string& name);

@@ -4,9 +4,9 @@
 #include <memory>
 #include <regex>
 #include <set>
-#include <sstream>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
@@ -43,17 +43,22 @@ int run(const CompareOptions& o) {
     evaluation.shards = std::stoi(m[2]);
   }
   try {
+    OutputFiles outputs;
+    std::ostream& out = outputs.open(o.output);
+    outputs.refuse_inputs({o.study});
+    outputs.refuse_inputs(o.merge);
     // A shard reads its own variants only; a merge reads none but those its report draws
     // (read_variant); a whole run reads and checks every variant before evaluating any.
     const int shard = evaluation.shard, shards = evaluation.shards;
     const bool merging = !o.merge.empty();
     const Study study =
         load_study(o.study, [&](int index) { return !merging && in_shard(index, shard, shards); });
-    std::ostringstream text;
+    outputs.refuse_inputs(study_files(study));
     if (!o.shard.empty()) {
       if (!o.quiet) evaluation.progress = terminal_progress("compare");
-      write_shard(text, study, evaluation, evaluate_study(study, evaluation));
-      return write_output(o.output, text.str());
+      write_shard(out, study, evaluation, evaluate_study(study, evaluation));
+      outputs.commit();
+      return kSuccess;
     }
     std::vector<VariantResult> results;
     if (o.merge.empty()) {
@@ -75,9 +80,10 @@ int run(const CompareOptions& o) {
     const Comparison comparison = rank_variants(study, std::move(results));
     // The documents draw the best designs' curves: studied here, read first if merged.
     const bool document = format == OutputFormat::markdown || format == OutputFormat::html;
-    write_comparison_report(text, study, comparison,
+    write_comparison_report(out, study, comparison,
                             document ? comparison_curves(study, comparison, kReportBest) : ComparisonCurves{}, format);
-    return write_output(o.output, text.str());
+    outputs.commit();
+    return kSuccess;
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
     return kInput;

@@ -1,9 +1,9 @@
 // railmodal critical-speed [WAGON] --scene SCENE [--format markdown|html|csv|json] [-o OUT]
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "railmodal/critical_speed_report.hpp"
 #include "railmodal/railmodal.hpp"
 
@@ -22,6 +22,8 @@ int run(const CriticalSpeedCommandOptions& o) {
   const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   std::string current = o.scene;  // the file an error without a location belongs to
   try {
+    OutputFiles outputs;
+    std::ostream& out = outputs.open(o.output);
     Scene scene = load_scene(o.scene);
     if (scene.sources.empty() || scene.max_speed <= 0.0) {
       std::cerr << o.scene << ": error: the scene has no [speed] range and [[source]]: nothing to sweep"
@@ -35,6 +37,7 @@ int run(const CriticalSpeedCommandOptions& o) {
       return kUsage;
     }
     current = scene.vehicle_file;
+    outputs.refuse_inputs({o.scene, scene.vehicle_file});
     const Vehicle vehicle = load_vehicle(scene.vehicle_file);
     try {
       assemble(vehicle, scene.dofs);  // a vehicle that cannot be assembled is the vehicle file's fault
@@ -47,9 +50,9 @@ int run(const CriticalSpeedCommandOptions& o) {
     } catch (const std::invalid_argument& e) {
       throw InputError(o.scene, 0, 0, e.what());  // the scene's sources do not fit this vehicle
     }
-    std::ostringstream text;
-    write_critical_speed_report(text, study, format);
-    return write_output(o.output, text.str());
+    write_critical_speed_report(out, study, format);
+    outputs.commit();
+    return kSuccess;
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
     return kInput;

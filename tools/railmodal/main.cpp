@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 
 namespace railmodal::cli {
 
@@ -52,6 +53,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("simulate")) return run_simulate();
     if (app.got_subcommand("fft-check")) return run_fft_check();
     if (app.got_subcommand("compare")) return run_compare();
+  } catch (const OutputError& e) {
+    std::cerr << e.what() << "\n";
+    return e.code();
   } catch (const std::exception& e) {
     std::cerr << "railmodal: internal error: " << e.what() << "\n";
     return kInternal;

@@ -3,9 +3,9 @@
 //   both with [--solver dense|arpack|auto] [--modes N] (undamped modes)
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "railmodal/railmodal.hpp"
 
 namespace railmodal::cli {
@@ -73,7 +73,7 @@ std::string solve_matrices(const ModesOptions& o, const ModalOptions& options, M
 }
 
 // Damped modes: the state-space problem of every mode, dense (vehicle or matrices).
-int run_damped(const ModesOptions& o, bool matrices, OutputFormat format) {
+int run_damped(const ModesOptions& o, bool matrices, OutputFormat format, std::ostream& out) {
   LinearSystem system;
   if (matrices) {
     const MatrixModel model = load_matrix_model(o.mass, o.stiffness, o.damping);
@@ -88,9 +88,8 @@ int run_damped(const ModesOptions& o, bool matrices, OutputFormat format) {
       return kInput;
     }
   }
-  std::ostringstream text;
-  write_damped_modes(text, system, solve_damped_modes(system), format);
-  return write_output(o.output, text.str());
+  write_damped_modes(out, system, solve_damped_modes(system), format);
+  return kSuccess;
 }
 
 int run(const ModesOptions& o) {
@@ -102,7 +101,14 @@ int run(const ModesOptions& o) {
   const OutputFormat format = *output_format_from_string(o.format);
   const ModalOptions options = modal_options(o);
   try {
-    if (o.damped) return run_damped(o, matrices, format);
+    OutputFiles outputs;
+    std::ostream& out = outputs.open(o.output);
+    outputs.refuse_inputs({o.file, o.mass, o.stiffness, o.damping});
+    if (o.damped) {
+      const int code = run_damped(o, matrices, format, out);
+      if (code == kSuccess) outputs.commit();
+      return code;
+    }
     ModalResult result;
     std::string title;
     if (matrices) {
@@ -116,9 +122,9 @@ int run(const ModesOptions& o) {
       title = system.vehicle.name;
       result = solve_modes(system, options);
     }
-    std::ostringstream text;
-    write_modes(text, title, result, format);
-    return write_output(o.output, text.str());
+    write_modes(out, title, result, format);
+    outputs.commit();
+    return kSuccess;
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
     return kInput;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "output_file.hpp"
 #include "railmodal/railmodal.hpp"
 
 namespace railmodal::cli {
@@ -37,24 +38,26 @@ int load(const SimulateOptions& o, Scene* scene, Vehicle* vehicle) {
 int run(const SimulateOptions& o, bool check) {
   const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   try {
+    OutputFiles outputs;
+    std::ostream& text = outputs.open(o.output);
+    std::ostream* spectra = o.spectra.empty() ? nullptr : &outputs.open(o.spectra);
     Scene scene;
     Vehicle vehicle;
     if (const int code = load(o, &scene, &vehicle); code != kSuccess) return code;
-    std::ostringstream text, spectra;
+    outputs.refuse_inputs({o.scene, scene.vehicle_file});
     try {
       if (check) {
         write_fft_check(text, fft_check(scene, vehicle), scene, vehicle, format);
       } else {
         const TimeHistory h = simulate_scene(scene, vehicle);
         write_time_history(text, h, scene, vehicle, format);
-        if (!o.spectra.empty()) write_spectra(spectra, output_spectra(h, scene), OutputFormat::csv);
+        if (spectra) write_spectra(*spectra, output_spectra(h, scene), OutputFormat::csv);
       }
     } catch (const std::invalid_argument& e) {
       throw InputError(o.scene, 0, 0, e.what());
     }
-    if (!o.spectra.empty())
-      if (const int code = write_output(o.spectra, spectra.str()); code != kSuccess) return code;
-    return write_output(o.output, text.str());
+    outputs.commit();
+    return kSuccess;
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
     return kInput;
