@@ -24,23 +24,34 @@ struct CompareOptions {
   bool quiet = false;
 };
 
+// A study holds at most a million variants (docs/studies.md; kMaxStudyVariants in the study
+// reader): a million shards give each at most one.
+constexpr int kMaxShards = 1000000;
+
+// "K/N" into evaluation->shard and shards; false if it is not 1 <= K <= N <= kMaxShards.
+bool parse_shard(const std::string& text, EvaluationOptions* evaluation) {
+  std::smatch m;
+  static const std::regex pattern(R"((\d{1,7})/(\d{1,7}))");  // 7 digits: kMaxShards, without overflow
+  if (!std::regex_match(text, m, pattern)) return false;
+  evaluation->shard = std::stoi(m[1]);
+  evaluation->shards = std::stoi(m[2]);
+  return evaluation->shard >= 1 && evaluation->shard <= evaluation->shards && evaluation->shards <= kMaxShards;
+}
+
 int run(const CompareOptions& o) {
   const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   EvaluationOptions evaluation;
   evaluation.threads = o.threads;
   if (!o.shard.empty()) {
-    std::smatch m;
-    static const std::regex pattern(R"((\d{1,6})/(\d{1,6}))");
-    if (!std::regex_match(o.shard, m, pattern) || std::stoi(m[1]) < 1 || std::stoi(m[1]) > std::stoi(m[2])) {
-      std::cerr << "railmodal: error: --shard expects K/N with 1 <= K <= N, such as 2/4, not '" << o.shard << "'\n";
+    if (!parse_shard(o.shard, &evaluation)) {
+      std::cerr << "railmodal: error: --shard expects K/N with 1 <= K <= N <= " << kMaxShards
+                << " (a study holds at most a million variants), such as 2/4, not '" << o.shard << "'\n";
       return kUsage;
     }
     if (!o.merge.empty()) {
       std::cerr << "railmodal: error: --shard and --merge exclude each other\n";
       return kUsage;
     }
-    evaluation.shard = std::stoi(m[1]);
-    evaluation.shards = std::stoi(m[2]);
   }
   try {
     OutputFiles outputs;
