@@ -1,5 +1,7 @@
 // Study files: overrides, sweeps, samples, errors; ranking; parallel evaluation.
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 
@@ -228,6 +230,24 @@ overrides = { "suspension.wheelbase" = "-1 m" }
   other.shard = 2;
   EXPECT_EQ(evaluate_study(shard, own).size(), 2u);
   EXPECT_THROW(evaluate_study(shard, other), std::invalid_argument);  // variants it never read
+}
+
+TEST(StudyReader, StudyFilesAreEveryFileTheStudyIsReadFrom) {
+  // Shard 1 of 4 reads the base (the resort car) only; the Fette car is another shard's, and
+  // still the study's file: no output of any shard may be written over it.
+  namespace fs = std::filesystem;
+  const std::string data = RAILMODAL_DATA_DIR;
+  const Study shard =
+      load_study(data + "/studies/resort_against_fette.toml", [](int index) { return in_shard(index, 1, 4); });
+  ASSERT_FALSE(shard.variants.back().read);
+  const std::vector<std::string> files = study_files(shard);
+  for (const char* expected : {"/studies/resort_against_fette.toml", "/scenes/fette_car_10m_rails.toml",
+                               "/vehicles/resort_car.toml", "/vehicles/fette_car.toml"})
+    EXPECT_EQ(std::count_if(files.begin(), files.end(),
+                            [&](const std::string& file) { return fs::equivalent(file, data + expected); }),
+              1)
+        << expected;
+  EXPECT_EQ(files.size(), 4u);
 }
 
 TEST(StudyReader, RankingKeysAreChecked) {
