@@ -109,6 +109,7 @@ struct OutputFiles::Output {
   std::unique_ptr<std::ostream> stream;
 
   bool standard_output() const { return path == "-"; }
+  bool written_in_place() const { return !standard_output() && temporary.empty(); }  ///< a device, once opened
   std::ostream& out() { return standard_output() ? std::cout : *stream; }
   bool is(const Output& other) const {
     return resolved == other.resolved || (exists && other.exists && device == other.device && inode == other.inode);
@@ -147,14 +148,15 @@ std::ostream& OutputFiles::open(const std::string& path) {
     output->device = status.st_dev;
     output->inode = status.st_ino;
   }
+  // A device may take several outputs (/dev/null), a file or standard output one.
+  const bool device = output->exists && !S_ISREG(status.st_mode);
   for (const auto& earlier : outputs_)
-    if (output->is(*earlier))
+    if (!device && !earlier->written_in_place() && output->is(*earlier))
       throw OutputError(kUsage, "railmodal: error: two outputs of this run are one file ('" + earlier->path +
                                     "' and '" + output->path + "'): each output needs a file of its own");
   if (!output->standard_output()) {
     // A device or pipe (/dev/null, a FIFO) is written as the run goes: renaming would replace it.
-    output->fd = output->exists && !S_ISREG(status.st_mode) ? ::open(path.c_str(), O_WRONLY | O_NOCTTY)
-                                                            : create_temporary(path, &output->temporary);
+    output->fd = device ? ::open(path.c_str(), O_WRONLY | O_NOCTTY) : create_temporary(path, &output->temporary);
     if (output->fd < 0) throw OutputError(kOutput, cannot_write(path, std::strerror(errno)));
     output->buffer = std::make_unique<DescriptorBuffer>(output->fd);
     output->stream = std::make_unique<std::ostream>(output->buffer.get());
