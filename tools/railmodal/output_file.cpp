@@ -114,8 +114,10 @@ struct OutputFiles::Output {
   bool is(const Output& other) const {
     return resolved == other.resolved || (exists && other.exists && device == other.device && inode == other.inode);
   }
-  // Written, flushed and on the disk (a rename then never exposes a file still being written
-  // after a crash); throws OutputError otherwise.
+  // Written and flushed; throws OutputError otherwise. No fsync: it cost 10 ms per file (a
+  // 14 ms `modes` run took 24.6 ms), and the guarantee users need is against a failed or killed
+  // run, which the rename gives; surviving power loss is the file system's (ext4 flushes a file
+  // renamed over another, auto_da_alloc).
   void finish() {
     if (standard_output()) {
       if (!std::cout.flush()) throw OutputError(kOutput, "railmodal: error: cannot write to standard output");
@@ -123,7 +125,6 @@ struct OutputFiles::Output {
     }
     if (!stream->flush())
       throw OutputError(kOutput, cannot_write(path, std::strerror(buffer->error() ? buffer->error() : EIO)));
-    if (!temporary.empty() && ::fsync(fd) != 0) throw OutputError(kOutput, cannot_write(path, std::strerror(errno)));
     if (::close(std::exchange(fd, -1)) != 0) throw OutputError(kOutput, cannot_write(path, std::strerror(errno)));
   }
 };
