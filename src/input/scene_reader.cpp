@@ -142,13 +142,7 @@ std::shared_ptr<const ExcitationSource> source(TableReader& t) {
 void read_scene_table(TableReader& root, const std::string& path, Scene& scene) {
   TableReader t = root.table("scene");
   scene.name = t.optional_string("name").value_or(std::filesystem::path(path).stem().string());
-  if (t.has("vehicle")) {
-    const std::string vehicle = t.string("vehicle");
-    const std::filesystem::path base = std::filesystem::path(path).parent_path();
-    scene.vehicle_file = (std::filesystem::path(vehicle).is_absolute() ? std::filesystem::path(vehicle)
-                                                                        : base / vehicle).lexically_normal().string();
-    if (!std::filesystem::exists(scene.vehicle_file)) t.fail("vehicle", "no such file: " + scene.vehicle_file);
-  }
+  if (t.has("vehicle")) scene.vehicle_file = t.existing_file("vehicle");
   const std::string dofs = t.optional_string("dofs").value_or("all");
   const auto set = dof_set_from_string(dofs);
   if (!set) t.fail("dofs", "must be vertical, lateral or all, not '" + dofs + "'");
