@@ -313,7 +313,8 @@ void read_variants(TableReader& root, const toml::value& document, size_t max_va
       study::VariantSpec spec = read_variant_table(t, plan.vehicle_file, file);
       if (plan.variants.size() >= max_variants)
         throw InputError(file->path, spec.place.line, spec.place.column,
-                         "the study has more than " + variants_text(max_variants));
+                         "the study has more than " + variants_text(max_variants) +
+                             " (each listed costs about 3 kB of memory, in every shard)");
       plan.variants.push_back(std::move(spec));
     }
   if (root.has("sweep")) {
