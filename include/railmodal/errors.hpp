@@ -21,6 +21,12 @@
 
 namespace railmodal {
 
+/// Where an input file writes a key: line and column, 1-based (0 when not known).
+struct KeyPlace {
+  int line = 0;
+  int column = 0;
+};
+
 /// Bad input: names the file, line, column and key. what() is
 /// "file:line:col: error: message" (line and column omitted when unknown).
 class InputError : public std::runtime_error {

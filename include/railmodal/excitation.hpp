@@ -86,6 +86,19 @@ class ExcitationSource {
   /// std::invalid_argument otherwise.
   HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const;
 
+  /// Why the source cannot act on `system`: the key of its scene table to blame ("body",
+  /// "phases") and the reason ("the vehicle has no body 'frame'"). load() throws
+  /// std::invalid_argument then; check_scene_fits (scene.hpp) asks first, so that a scene's
+  /// error names the key and its line.
+  struct Misfit {
+    std::string key;
+    std::string reason;
+  };
+  virtual std::optional<Misfit> misfit(const LinearSystem& system) const {
+    (void)system;
+    return std::nullopt;
+  }
+
   /// The load's split for fast sweeps over speed (see SeparableLoad).
   SeparableLoad separable_load(const LinearSystem& system, int harmonic) const;
   /// s(ω)/s(ω_ref): how the input amplitude scales with frequency (1 for a fixed profile,

@@ -11,11 +11,13 @@
 //   }
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "railmodal/errors.hpp"
 #include "railmodal/excitation.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/response.hpp"
@@ -61,7 +63,18 @@ struct Scene {
   /// the default): friction only decides whether a resonance can grow.
   double friction_reference_amplitude = 0.0;
   std::optional<SimulationSpec> simulation;  ///< present when the scene simulates
+  /// Where the file writes the names that only the assembled vehicle can check, by key path:
+  /// "output[0].dof", "simulation.outputs[1]", "simulation.initial[0].dof", and the keys of
+  /// sources ExcitationSource::misfit names ("source[2].body", "source[2].phases"; a key left
+  /// to its default is placed at its table). Empty for a scene built in code.
+  std::map<std::string, KeyPlace> name_places;
 };
+
+/// Checks the scene's names against its assembled vehicle: the DOFs of its [[output]] tables
+/// and of its simulation's outputs and initial conditions are labels of `system`, and every
+/// source fits it (ExcitationSource::misfit). Throws InputError at the key in the scene file,
+/// listing the DOFs there are. The analyses of a scene call it before they start.
+void check_scene_fits(const Scene& scene, const LinearSystem& system);
 
 /// Reads a scene file; errors are InputError with file, line, column and key.
 Scene load_scene(const std::string& path);

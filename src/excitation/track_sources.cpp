@@ -116,15 +116,19 @@ class EccentricitySource final : public ExcitationSource {
   }
   double wavelength() const override { return kPi * p_.wheel_diameter / p_.lobes; }
   int harmonic_count() const override { return 1; }
+  std::optional<Misfit> misfit(const LinearSystem& system) const override {
+    const size_t wheelsets = excitation::wheelsets(system).size();
+    if (p_.phases.empty() || p_.phases.size() == wheelsets) return std::nullopt;
+    return Misfit{"phases",
+                  std::to_string(p_.phases.size()) + " phases given for " + std::to_string(wheelsets) + " wheelsets"};
+  }
 
   HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const override {
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
     if (harmonic != 1) return out;  // a pure sinusoid of the wheel's turn
+    if (const auto m = misfit(system)) throw std::invalid_argument("wheel eccentricity: " + m->reason);
     const auto sets = excitation::wheelsets(system);
-    if (!p_.phases.empty() && p_.phases.size() != sets.size())
-      throw std::invalid_argument("wheel eccentricity: " + std::to_string(p_.phases.size()) +
-                                  " phases given for " + std::to_string(sets.size()) + " wheelsets");
     for (size_t j = 0; j < sets.size(); ++j)
       for (int index : sets[j].inputs) {
         // The wheels turn together: no delay; e sin(ωt + ψ) = Re(−i e e^{iψ} e^{iωt}).

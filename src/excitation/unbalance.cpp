@@ -36,15 +36,16 @@ class UnbalanceSource final : public ExcitationSource {
     for (int i = 0; i < count; ++i) out[i] = (omega[i] / reference_omega) * (omega[i] / reference_omega);  // m ρ ω²
   }
   int harmonic_count() const override { return p_.harmonics; }
+  std::optional<Misfit> misfit(const LinearSystem& system) const override {
+    if (body_index(system) < 0) return Misfit{"body", "the vehicle has no body '" + p_.body + "'"};
+    return std::nullopt;
+  }
 
   HarmonicLoad load_at(const LinearSystem& system, double speed, int harmonic) const override {
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
-    const auto& bodies = system.vehicle.bodies;
-    int body = -1;
-    for (size_t b = 0; b < bodies.size(); ++b)
-      if (bodies[b].name == p_.body) body = static_cast<int>(b);
-    if (body < 0) throw std::invalid_argument("unbalance: the vehicle has no body '" + p_.body + "'");
+    if (const auto m = misfit(system)) throw std::invalid_argument("unbalance: " + m->reason);
+    const int body = body_index(system);
     const double omega = 2.0 * speed / p_.wheel_diameter;  // wheel turning speed, rad/s
     const double omega2 = omega * omega;
     if (harmonic == 1)
@@ -71,6 +72,13 @@ class UnbalanceSource final : public ExcitationSource {
   }
 
  private:
+  int body_index(const LinearSystem& system) const {
+    const auto& bodies = system.vehicle.bodies;
+    for (size_t b = 0; b < bodies.size(); ++b)
+      if (bodies[b].name == p_.body) return static_cast<int>(b);
+    return -1;
+  }
+
   Unbalance p_;
 };
 

@@ -6,7 +6,9 @@ double read_mass(TableReader& t, double gravity) {
   if (t.has("mass") == t.has("weight"))
     t.fail("mass", t.has("mass") ? "give mass or weight, not both" : "missing: give mass (\"34 t\") or weight (\"34000 kgf\")");
   if (t.has("mass")) return t.positive("mass", Quantity::mass);
-  return t.positive("weight", Quantity::force) / gravity;  // the book's m = P/g
+  const double mass = t.positive("weight", Quantity::force) / gravity;  // the book's m = P/g
+  if (!within_magnitudes(mass)) t.fail("weight", "divided by the gravity gives a mass: " + magnitude_complaint(mass));
+  return mass;
 }
 
 Eigen::Vector3d read_inertia(TableReader& t, double mass) {
@@ -22,6 +24,8 @@ Eigen::Vector3d read_inertia(TableReader& t, double mass) {
     if (radii) {
       const auto r = sub.optional_positive(names[k], Quantity::length, true);
       inertia(k) = r ? mass * *r * *r : 0.0;
+      if (!within_magnitudes(inertia(k)))
+        sub.fail(names[k], "with the mass gives a moment of inertia: " + magnitude_complaint(inertia(k)));
     } else {
       inertia(k) = sub.optional_positive(names[k], Quantity::inertia, true).value_or(0.0);
     }

@@ -13,6 +13,7 @@
 #include "input/document_readers.hpp"
 #include "input/key_path.hpp"
 #include "input/table_reader.hpp"
+#include "input/value_place.hpp"
 #include "railmodal/errors.hpp"
 #include "shortest_text.hpp"
 
@@ -40,18 +41,9 @@ std::string value_text(const toml::value& v, bool top = true) {
   return "(date or time)";
 }
 
-int line_of(const toml::value& v) { return static_cast<int>(v.location().line()); }
-int column_of(const toml::value& v) { return static_cast<int>(v.location().column()); }
-
-std::string resolve(const std::string& study_file, const std::string& relative) {
-  const std::filesystem::path p(relative);
-  return (p.is_absolute() ? p : std::filesystem::path(study_file).parent_path() / p).lexically_normal().string();
-}
-
-std::string existing_file(TableReader& t, const std::string& key) {
-  const std::string file = resolve(t.file(), t.string(key));
-  if (!std::filesystem::exists(file)) t.fail(key, "no such file: " + file);
-  return file;
+study::Place place(const toml::value& v) {
+  const KeyPlace p = place_of(v);
+  return {p.line, p.column};
 }
 
 // A number with an optional unit after it: "40 mm" → 40, "mm"; 40 → 40, "".
@@ -134,7 +126,7 @@ study::SweepParameter read_parameter(TableReader& t, bool sample, StudyFile* fil
   const size_t dot = p.key.find_last_of('.');
   p.label = t.optional_string("label").value_or(dot == std::string::npos ? p.key : p.key.substr(dot + 1));
   const toml::value& where = t.raw(p.scene ? "scene_key" : "key");
-  p.place = {line_of(where), column_of(where)};
+  p.place = place(where);
   if (sample) read_interval(t, &p);
   else read_values(t, &p, file);
   t.finish();
@@ -153,7 +145,7 @@ study::Sweep read_sweep(TableReader& t, int number, size_t* listed, size_t max_v
   const bool sample = t.has("sample");
   for (auto& p : t.tables("parameters")) sweep.parameters.push_back(read_parameter(p, sample, file));
   if (sweep.parameters.empty()) t.fail("parameters", "expected at least one parameter");
-  sweep.line = line_of(t.raw("parameters"));
+  sweep.line = place(t.raw("parameters")).line;
   const size_t room = max_variants - *listed;
   if (sample) {
     TableReader s = t.table("sample");
@@ -190,7 +182,7 @@ std::vector<study::Assignment> read_overrides(TableReader& t, const std::string&
   for (const auto& [path, value] : table.as_table()) sorted[path] = &value;
   for (const auto& [path, value] : sorted) {
     const study::WrittenValue written = keep(*value, file);
-    out.push_back({path, scene, {line_of(*value), column_of(*value)}, written.text, written.index, {}});
+    out.push_back({path, scene, place(*value), written.text, written.index, {}});
   }
   return out;
 }
@@ -200,10 +192,10 @@ std::vector<study::Assignment> read_overrides(TableReader& t, const std::string&
 study::VariantSpec read_variant_table(TableReader& t, const std::string& base_vehicle, StudyFile* file) {
   study::VariantSpec spec;
   spec.name = t.string("name");
-  spec.place = {line_of(t.raw("name")), column_of(t.raw("name"))};
+  spec.place = place(t.raw("name"));
   spec.vehicle_file = base_vehicle;
   if (t.has("vehicle")) {
-    spec.vehicle_file = existing_file(t, "vehicle");
+    spec.vehicle_file = t.existing_file("vehicle");
     spec.parameters.push_back({"vehicle", t.string("vehicle")});
   }
   spec.assignments = read_overrides(t, "overrides", false, file);
@@ -230,7 +222,8 @@ DeflectionRule read_deflection_rule(TableReader& t, int* elements_line, int* ele
   if (t.has("elements")) {
     TableReader e = t.table("elements");
     for (const std::string& name : e.keys()) rule.element_limits.push_back({name, e.positive(name, Quantity::length)});
-    *elements_line = line_of(t.raw("elements")), *elements_column = column_of(t.raw("elements"));
+    const study::Place at = place(t.raw("elements"));
+    *elements_line = at.line, *elements_column = at.column;
     e.finish();
   }
   if (!rule.active()) t.fail("rule", "name a rule (\"korotkevich\" or \"lehner\") or give element limits");
@@ -309,17 +302,19 @@ void read_variants(TableReader& root, const toml::value& document, size_t max_va
   study::StudyPlan& plan = file->plan;
   TableReader head = root.table("study");
   plan.name = head.optional_string("name").value_or(std::filesystem::path(file->path).stem().string());
-  plan.vehicle_file = existing_file(head, "vehicle");
-  file->scene_file = existing_file(head, "scene");
+  plan.vehicle_file = head.existing_file("vehicle");
+  file->scene_file = head.existing_file("scene");
   const bool base = head.optional_boolean("base").value_or(true);
   head.finish();
-  if (base) plan.variants.push_back({"base", {line_of(document.as_table().at("study")), 0}, plan.vehicle_file, {}, {}});
+  if (base)
+    plan.variants.push_back({"base", {place(document.as_table().at("study")).line, 0}, plan.vehicle_file, {}, {}});
   if (root.has("variant"))
     for (auto& t : root.tables("variant")) {
       study::VariantSpec spec = read_variant_table(t, plan.vehicle_file, file);
       if (plan.variants.size() >= max_variants)
         throw InputError(file->path, spec.place.line, spec.place.column,
-                         "the study has more than " + variants_text(max_variants));
+                         "the study has more than " + variants_text(max_variants) +
+                             " (each listed costs about 3 kB of memory, in every shard)");
       plan.variants.push_back(std::move(spec));
     }
   if (root.has("sweep")) {
@@ -391,7 +386,7 @@ StudyFile read_study_file(const std::string& path, size_t max_variants) {
   study::StudyPlan& plan = file.plan;
   if (root.has("permissible_dynamic_deflection")) {
     const toml::value& where = root.raw("permissible_dynamic_deflection");
-    file.rule_place = {line_of(where), column_of(where)};
+    file.rule_place = place(where);
     TableReader t = root.table("permissible_dynamic_deflection");
     plan.deflection_rule = read_deflection_rule(t, &file.elements_place.line, &file.elements_place.column);
   }

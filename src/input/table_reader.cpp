@@ -3,11 +3,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <regex>
 #include <sstream>
+#include <system_error>
 
 #include "input/toml_preflight.hpp"
+#include "input/value_place.hpp"
 #include "railmodal/errors.hpp"
 
 namespace railmodal::input {
@@ -27,6 +31,20 @@ const char* type_name(const toml::value& v) {
 
 }  // namespace
 
+bool within_magnitudes(double si) {
+  return si == 0.0 || (std::abs(si) >= kSmallestMagnitude && std::abs(si) <= kLargestMagnitude);
+}
+
+std::string magnitude_complaint(double si) {
+  std::ostringstream out;
+  if (std::abs(si) > kLargestMagnitude)
+    out << "the value is beyond any physical quantity (more than 1e30";
+  else
+    out << "the value " << std::setprecision(3) << si << " is below any physical quantity (less than 1e-30";
+  out << " in SI units): a quantity is zero or of magnitude 1e-30 to 1e30 in SI units";
+  return out.str();
+}
+
 TableReader::TableReader(const toml::value& table, std::string file, std::string path)
     : table_(table), file_(std::move(file)), path_(std::move(path)) {}
 
@@ -34,15 +52,13 @@ std::string TableReader::key_path(const std::string& key) const {
   return path_.empty() ? key : path_ + "." + key;
 }
 
+KeyPlace TableReader::place(const std::string& key) const {
+  return place_of(has(key) ? table_.as_table().at(key) : table_);
+}
+
 void TableReader::fail(const std::string& key, const std::string& message) const {
-  const toml::value* where = &table_;
-  if (table_.is_table() && table_.as_table().count(key)) where = &table_.as_table().at(key);
-  const auto loc = where->location();
-  const int line = static_cast<int>(loc.line());
-  const int column = static_cast<int>(loc.column());
-  const bool known = loc.file_name() != "unknown file";
-  throw InputError(file_, known ? line : 0, known ? column : 0,
-                   "key '" + key_path(key) + "': " + message);
+  const KeyPlace where = place(key);
+  throw InputError(file_, where.line, where.column, "key '" + key_path(key) + "': " + message);
 }
 
 bool TableReader::has(const std::string& key) const {
@@ -75,8 +91,8 @@ const toml::value& TableReader::at(const std::string& key) {
     if (table_.is_table())
       for (const auto& [present, value] : table_.as_table())
         if (!read_.count(present) && edit_distance(present, key) <= 2) {
-          const auto loc = value.location();
-          throw InputError(file_, static_cast<int>(loc.line()), static_cast<int>(loc.column()),
+          const KeyPlace place = place_of(value);
+          throw InputError(file_, place.line, place.column,
                            "key '" + key_path(key) + "': missing; is '" + present + "' a misspelling of it?");
         }
     fail(key, "missing (required)");
@@ -102,9 +118,7 @@ double TableReader::to_quantity(const toml::value& v, const std::string& key, Qu
                   ", got " + type_name(v));
   }
   if (!std::isfinite(value)) fail(key, "the value is not a finite number");
-  // TOML parsers clamp an overflowing literal (1e400) to the largest double; nothing physical in
-  // a vehicle or scene comes near 1e30 in SI, and such a value would overflow the assembly.
-  if (std::abs(value) > 1e30) fail(key, "the value is beyond any physical quantity (more than 1e30 in SI units)");
+  if (!within_magnitudes(value)) fail(key, magnitude_complaint(value));
   return value;
 }
 
@@ -189,6 +203,19 @@ std::optional<bool> TableReader::optional_boolean(const std::string& key) {
   const toml::value& v = at(key);
   if (!v.is_boolean()) fail(key, std::string("expected true or false, got ") + type_name(v));
   return v.as_boolean();
+}
+
+std::string TableReader::existing_file(const std::string& key) {
+  const std::filesystem::path named(string(key));
+  const std::string path =
+      (named.is_absolute() ? named : std::filesystem::path(file_).parent_path() / named).lexically_normal().string();
+  // Not std::filesystem::exists(path), which throws for a loop or a long name: that is the
+  // file's fault, not ours.
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (status.type() == std::filesystem::file_type::not_found) fail(key, "no such file: " + path);
+  if (error) fail(key, "cannot reach the file " + path + ": " + error.message());
+  return path;
 }
 
 const toml::value& TableReader::raw(const std::string& key) { return at(key); }

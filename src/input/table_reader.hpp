@@ -10,8 +10,21 @@
 #include <vector>
 
 #include "input/units.hpp"
+#include "railmodal/errors.hpp"
 
 namespace railmodal::input {
+
+/// The magnitudes a quantity may have in SI units, whatever its kind, besides zero. The same
+/// band for every kind: a railway vehicle's quantities are all many decades inside it (a
+/// 1e15 N/m "rigid" link, a 1e-6 m dip), and within it a product or quotient of up to ten
+/// inputs (k·a², k/m, ...) stays a normal double (1e±300), so no step of the analyses
+/// overflows or underflows to a subnormal (5e-324 kg read as a mass gave "rigid-body" modes).
+inline constexpr double kSmallestMagnitude = 1e-30;
+inline constexpr double kLargestMagnitude = 1e30;
+/// Whether `si` is zero or inside [kSmallestMagnitude, kLargestMagnitude] in magnitude.
+bool within_magnitudes(double si);
+/// Why `si` is not: "the value ... is below any physical quantity ...", naming the band.
+std::string magnitude_complaint(double si);
 
 class TableReader {
  public:
@@ -34,6 +47,10 @@ class TableReader {
   /// An array of quantities of one kind, e.g. ["0 deg", "90 deg"].
   std::vector<double> quantities(const std::string& key, Quantity kind);
   std::optional<bool> optional_boolean(const std::string& key);
+  /// The file a string names, relative to this file's folder unless absolute, normalised.
+  /// Fails when it does not exist, or when the system cannot tell (a symbolic link loop, a
+  /// name too long, a folder that may not be read), with the system's reason.
+  std::string existing_file(const std::string& key);
   /// The value itself, for callers that keep it as written (a study's override values).
   const toml::value& raw(const std::string& key);
   /// The keys present, sorted (so that callers visit them in a fixed order).
@@ -45,6 +62,8 @@ class TableReader {
   /// Throws for the first key that was never read.
   void finish() const;
 
+  /// Where this key's value is written (the table's place when the key is absent).
+  KeyPlace place(const std::string& key) const;
   /// An InputError at this key's value (or at the table when the key is absent).
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
   std::string key_path(const std::string& key) const;

@@ -52,6 +52,7 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
 void solve_stable_modes(const Scene& scene, const Vehicle& vehicle, CriticalSpeedStudy* study) {
   study->system = assemble(vehicle, scene.dofs);
   if (study->system.size() == 0) throw std::invalid_argument("no free degrees of freedom in the chosen set");
+  check_scene_fits(scene, study->system);
   study->modes = solve_modes(study->system);
   for (const Mode& m : study->modes.modes)
     if (m.kind == ModeKind::unstable)
@@ -63,16 +64,8 @@ void solve_stable_modes(const Scene& scene, const Vehicle& vehicle, CriticalSpee
 // The scene's outputs, or (if it names none) the DOF reported for each critical speed.
 std::vector<OutputRequest> curve_outputs(const Scene& scene, const CriticalSpeedStudy& study) {
   std::vector<OutputRequest> outputs;
-  for (const auto& o : scene.outputs) {
-    const int dof = study.system.index_of(o.dof);
-    if (dof < 0) {
-      std::string known;
-      for (const auto& d : study.system.dofs) known += (known.empty() ? "" : ", ") + d.label;
-      throw InputError(scene.source, 0, 0, "output '" + o.dof + "' is not a degree of freedom of this vehicle in the '" +
-                                              to_string(scene.dofs) + "' set (" + known + ")");
-    }
-    outputs.push_back({dof, o.quantity});
-  }
+  for (const auto& o : scene.outputs)
+    outputs.push_back({study.system.index_of(o.dof), o.quantity});  // check_scene_fits checked
   if (outputs.empty()) {
     std::set<std::string> seen;
     for (const auto& r : study.critical_speeds)

@@ -71,6 +71,7 @@ TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle) {
   if (!scene.simulation) throw std::invalid_argument("the scene has no [simulation] table");
   const SimulationSpec& spec = *scene.simulation;
   const LinearSystem system = scene_system(scene, vehicle);
+  check_scene_fits(scene, system);
   std::vector<const ExcitationSource*> sources;
   for (const auto& s : scene.sources) sources.push_back(s.get());
   SimulationOptions options;

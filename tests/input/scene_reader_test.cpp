@@ -155,5 +155,58 @@ TEST(SceneReader, UnknownOutputDofIsReported) {
   EXPECT_THROW(study_critical_speeds(s, load_vehicle(s.vehicle_file)), InputError);
 }
 
+// A name only the assembled vehicle can check (a DOF, a body, the number of wheelsets) is
+// refused at its key, line and column, listing what there is (issue 18, items 11 and 15).
+void expect_misfit(const std::string& scene_text, const std::string& where, const std::vector<std::string>& parts) {
+  const Scene s = load_scene(write_scene(scene_text));
+  try {
+    check_scene_fits(s, assemble(load_vehicle(s.vehicle_file), s.dofs));
+    FAIL() << "no error for " << where;
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("scene.toml:" + where + ": error: "), std::string::npos) << e.what();
+    for (const auto& part : parts) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+  }
+}
+
+TEST(SceneReader, NamesTheVehicleLacksAreRefusedAtTheirKey) {
+  const Scene good = load_scene(write_scene(kScene + kSimulation));
+  EXPECT_NO_THROW(check_scene_fits(good, assemble(load_vehicle(good.vehicle_file), good.dofs)));
+  std::string output = kScene;
+  output.replace(output.find("dof = \"body.bounce\""), 19, "dof = \"body.sway\"");
+  expect_misfit(output, "14:7",
+                {"key 'output[0].dof': 'body.sway' is not a degree of freedom", "(body.bounce, body.pitch)"});
+  std::string outputs = kSimulation;
+  outputs.replace(outputs.find("time_step = \"1 ms\""), 18,
+                  "time_step = \"1 ms\"\noutputs = [\"body.bounce\", \"nope\"]");
+  expect_misfit(kScene + outputs, "21:27", {"key 'simulation.outputs': 'nope' is not a degree of freedom"});
+  std::string initial = kSimulation;
+  initial.replace(initial.find("dof = \"body.bounce\""), 19, "dof = \"body.sway\"");
+  expect_misfit(kScene + initial, "25:7", {"key 'simulation.initial[0].dof': 'body.sway'"});
+  const std::string eccentric =
+      "[[source]]\nkind = \"wheel_eccentricity\"\nwheel_diameter = \"950 mm\"\n"
+      "eccentricity = \"1 mm\"\nphases = [\"0 deg\"]\n";
+  expect_misfit(kScene + eccentric, "20:10", {"key 'source[1].phases': 1 phases given for 2 wheelsets"});
+  const std::string unbalance =
+      "[[source]]\nkind = \"unbalance\"\nbody = \"frame\"\nwheel_diameter = \"950 mm\"\n"
+      "[[source.rotating]]\npoint = [\"0 m\", \"0 m\", \"0 m\"]\nmass = \"10 kg\"\nradius = \"1 m\"\n";
+  expect_misfit(kScene + unbalance, "18:8", {"key 'source[1].body': the vehicle has no body 'frame'"});
+}
+
+// A vehicle path the system cannot follow is the scene's error, with the system's reason,
+// not an exception of std::filesystem (issue 18, item 12).
+TEST(SceneReader, UnreachableVehiclePathIsAnInputError) {
+  const std::filesystem::path folder = std::filesystem::path(write_scene(kScene)).parent_path();
+  std::filesystem::remove(folder / "loop_a");
+  std::filesystem::remove(folder / "loop_b");
+  std::filesystem::create_symlink("loop_b", folder / "loop_a");
+  std::filesystem::create_symlink("loop_a", folder / "loop_b");
+  expect_error("vehicle = \"scene_wagon.toml\"", "vehicle = \"loop_a/wagon.toml\"",
+               {"scene.toml:3:11: error: key 'scene.vehicle': cannot reach the file", "loop_a/wagon.toml: "});
+  std::string long_name;
+  for (int i = 0; i < 2500; ++i) long_name += "a/";
+  expect_error("vehicle = \"scene_wagon.toml\"", "vehicle = \"" + long_name + "wagon.toml\"",
+               {"scene.toml:3:11: error: key 'scene.vehicle': cannot reach the file"});
+}
+
 }  // namespace
 }  // namespace railmodal::test

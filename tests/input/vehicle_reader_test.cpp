@@ -74,6 +74,25 @@ TEST(VehicleReader, NonPhysicalValues) {
   expect_error("\"1000 kgf/cm\"", "\"-1000 kgf/cm\"", {"key 'suspension.spring.stiffness': must be positive"});
 }
 
+// A nonzero magnitude outside [1e-30, 1e30] in SI is refused at its key, whatever the kind, and
+// so is a quantity the reader derives from such inputs (issue 18, item 10). The edges are read.
+TEST(VehicleReader, AbsurdMagnitudes) {
+  expect_error("weight = \"20000 kgf\"", "mass = 5e-324",
+               {"bad.toml:5:8: error: key 'body.mass': the value 4.94e-324 is below any physical quantity",
+                "zero or of magnitude 1e-30 to 1e30 in SI units"});
+  expect_error("\"1000 kgf/cm\"", "\"1e-31 N/m\"", {"key 'suspension.spring.stiffness': the value 1e-31 is below"});
+  expect_error("\"1000 kgf/cm\"", "1e31", {"key 'suspension.spring.stiffness': the value is beyond any physical"});
+  expect_error("name = \"test wagon\"", "name = \"test wagon\"\ngravity = 1e-320",
+               {"bad.toml:3:11: error: key 'vehicle.gravity': the value 1e-320 is below"});
+  expect_error("template = \"two-axle\"\n[body]\nweight = \"20000 kgf\"",
+               "template = \"two-axle\"\ngravity = 1e29\n[body]\nweight = 1e-20",
+               {"key 'body.weight': divided by the gravity gives a mass: the value 1e-49 is below"});
+  std::string edges = kGood;
+  edges.replace(edges.find("\"20000 kgf\""), 11, "\"1e30 N\"");
+  edges.replace(edges.find("\"1000 kgf/cm\""), 13, "1e-30");
+  EXPECT_NO_THROW(load_vehicle(write_temp("edges.toml", edges)));
+}
+
 TEST(VehicleReader, BrokenTomlNamesLine) {
   expect_error("wheelbase = \"400 cm\"", "wheelbase = \"400 cm", {"bad.toml:9", "TOML syntax"});
 }

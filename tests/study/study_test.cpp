@@ -81,6 +81,18 @@ overrides = { 'element."rear spring".vertical.stiffness' = "2000 kgf/cm" }
   EXPECT_DOUBLE_EQ(series_stiffness(v.elements[1].vertical_stages), 2000 * kKgfPerCm);
 }
 
+// A variant's vehicle path the system cannot follow is the study's error at the key, with the
+// system's reason; std::filesystem::exists threw it as an internal error (issue 18, item 12).
+TEST(StudyReader, UnreachableVehiclePathNamesTheKey) {
+  std::string long_name;
+  for (int i = 0; i < 2500; ++i) long_name += "a/";
+  const InputError e = study_error("\n[[variant]]\nname = \"far\"\nvehicle = \"" + long_name + "wagon.toml\"\n");
+  EXPECT_EQ(e.line(), 8);
+  EXPECT_EQ(e.column(), 11);
+  EXPECT_NE(e.message().find("key 'variant[0].vehicle': cannot reach the file"), std::string::npos) << e.what();
+  EXPECT_NE(e.message().find("File name too long"), std::string::npos) << e.what();
+}
+
 TEST(StudyReader, BadOverridesNameTheStudyLineVariantAndKey) {
   // Unknown key: the vehicle reader's complaint, sent back to the study's line.
   InputError e = study_error("\n[[variant]]\nname = \"typo\"\noverrides = { \"suspension.spring[0].static_deflecton\" = \"80 mm\" }\n");

@@ -1,0 +1,51 @@
+// The names a scene uses, checked against its assembled vehicle before any analysis: a DOF
+// or a body the vehicle lacks is the scene file's error, at the key that names it.
+#include "railmodal/scene.hpp"
+
+namespace railmodal {
+namespace {
+
+// An InputError at the place the scene writes `place_key`, naming `key`.
+[[noreturn]] void fail_at(const Scene& scene, const std::string& place_key, const std::string& key,
+                          const std::string& message) {
+  const auto found = scene.name_places.find(place_key);
+  const KeyPlace place = found == scene.name_places.end() ? KeyPlace{} : found->second;
+  throw InputError(scene.source, place.line, place.column, "key '" + key + "': " + message);
+}
+
+// Checks that `dof` is one of the system's DOFs.
+void check_dof(const Scene& scene, const LinearSystem& system, const std::string& dof, const std::string& place_key,
+               const std::string& key) {
+  if (system.index_of(dof) >= 0) return;
+  std::string known;
+  for (const auto& d : system.dofs) known += (known.empty() ? "" : ", ") + d.label;
+  fail_at(scene, place_key, key,
+          "'" + dof + "' is not a degree of freedom of this vehicle in the '" + to_string(scene.dofs) + "' set (" +
+              known + ")");
+}
+
+}  // namespace
+
+void check_scene_fits(const Scene& scene, const LinearSystem& system) {
+  for (size_t i = 0; i < scene.outputs.size(); ++i) {
+    const std::string key = "output[" + std::to_string(i) + "].dof";
+    check_dof(scene, system, scene.outputs[i].dof, key, key);
+  }
+  if (scene.simulation) {
+    const std::vector<std::string>& outputs = scene.simulation->outputs;
+    for (size_t i = 0; i < outputs.size(); ++i)
+      check_dof(scene, system, outputs[i], "simulation.outputs[" + std::to_string(i) + "]", "simulation.outputs");
+    const std::vector<InitialCondition>& initial = scene.simulation->initial;
+    for (size_t i = 0; i < initial.size(); ++i) {
+      const std::string key = "simulation.initial[" + std::to_string(i) + "].dof";
+      check_dof(scene, system, initial[i].dof, key, key);
+    }
+  }
+  for (size_t i = 0; i < scene.sources.size(); ++i)
+    if (const auto misfit = scene.sources[i]->misfit(system)) {
+      const std::string key = "source[" + std::to_string(i) + "]." + misfit->key;
+      fail_at(scene, key, key, misfit->reason);
+    }
+}
+
+}  // namespace railmodal
