@@ -59,11 +59,12 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
       << "f [Hz]" << std::setw(11) << "T [s]" << std::setw(12) << "ω [rad/s]" << "  "
       << "centre of oscillation\n";
   for (const auto& m : r.modes) {
-    out << std::left << std::setw(4) << m.index << std::setw(34) << (m.repeated ? m.name + " *" : m.name)
+    out << report::left_cell(std::to_string(m.index), 4) << report::left_cell(m.repeated ? m.name + " *" : m.name, 34)
         << std::right;
     if (m.kind == ModeKind::oscillatory) {
-      out << std::fixed << std::setprecision(4) << std::setw(11) << m.frequency_hz << std::setw(11)
-          << m.period_s << std::setw(12) << std::setprecision(3) << m.omega_rad_s;
+      out << report::right_cell(report::fixed(m.frequency_hz, 4), 11)
+          << report::right_cell(report::fixed(m.period_s, 4), 11)
+          << report::right_cell(report::fixed(m.omega_rad_s, 3), 12);
     } else if (m.kind == ModeKind::unstable) {
       out << std::setw(34) << ("diverges, σ = " + number(m.divergence_rate, 4, true) + " 1/s");
     } else {
@@ -82,7 +83,7 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
   for (const auto& m : r.modes) out << std::setw(11) << m.index;
   out << "\n";
   for (size_t i = 0; i < r.dofs.size(); ++i) {
-    out << std::left << std::setw(18) << r.dofs[i].label << std::right;
+    out << report::left_cell(r.dofs[i].label, 18) << std::right;
     for (const auto& m : r.modes) {
       // Entries at round-off level of the mode's largest read as exact zeros (JSON and CSV
       // keep the raw values).

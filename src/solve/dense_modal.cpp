@@ -7,6 +7,7 @@
 
 #include "railmodal/errors.hpp"
 #include "railmodal/modal.hpp"
+#include "shortest_text.hpp"
 #include "solve/eigenpairs.hpp"
 
 namespace railmodal::solve {
@@ -37,9 +38,8 @@ Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<std
     double pivot = M(j, j) - L.row(j).head(j).squaredNorm();
     // Round-off in a positive definite matrix leaves pivots of order ε·scale at worst.
     if (!(pivot > tiny))
-      throw NumericalError("the mass matrix is not positive definite at degree of freedom '" +
-                           labels[j] + "' (pivot " + std::to_string(pivot) +
-                           "): its inertia is zero or depends on the others");
+      throw NumericalError("the mass matrix is not positive definite at degree of freedom '" + labels[j] + "' (pivot " +
+                           shortest_text(pivot, 3) + "): its inertia is zero or depends on the others");
     L(j, j) = std::sqrt(pivot);
     for (int i = j + 1; i < n; ++i)
       L(i, j) = (M(i, j) - L.row(i).head(j).dot(L.row(j).head(j))) / L(j, j);

@@ -10,6 +10,7 @@
 #include "railmodal/errors.hpp"
 #include "railmodal/modal.hpp"
 #include "require_valid.hpp"
+#include "shortest_text.hpp"
 #include "solve/eigenpairs.hpp"
 #include "solve/mode_naming.hpp"
 #include "summary/stage_clock.hpp"
@@ -168,8 +169,8 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
   const Eigen::MatrixXd G = phi.transpose() * M_phi;
   result.orthonormality_error = (G - Eigen::MatrixXd::Identity(keep, keep)).cwiseAbs().maxCoeff();
   if (!(result.max_residual <= options.max_residual))
-    throw NumericalError("eigen-solution residual " + std::to_string(result.max_residual) +
-                         " exceeds the limit " + std::to_string(options.max_residual));
+    throw NumericalError("eigen-solution residual " + shortest_text(result.max_residual, 3) + " exceeds the limit " +
+                         shortest_text(options.max_residual, 3));
   return result;
 }
 
