@@ -97,6 +97,10 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
   }
   out << std::defaultfloat << "\nchecks: max relative residual " << std::setprecision(2) << r.max_residual
       << ", max |ΦᵀMΦ − I| " << r.orthonormality_error << "\n";
+  for (const Check& c : r.solver.checks)
+    if (!c.passed)
+      out << "warning: check failed: " << c.name << " " << std::setprecision(2) << c.value << ", limit " << c.limit
+          << " (docs/accuracy.md)\n";
 }
 
 void write_csv(std::ostream& out, const ModalResult& r) {

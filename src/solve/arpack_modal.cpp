@@ -21,6 +21,7 @@
 
 #include "railmodal/errors.hpp"
 #include "solve/eigenpairs.hpp"
+#include "solve/low_modes.hpp"
 
 extern "C" {
 // arpack-ng's ISO C binding. arpack.h declares it beside complex variants whose C99
@@ -350,6 +351,7 @@ class ModeSearch {
         vectors.conservativeResize(Eigen::NoChange, end);
         result.values = std::move(values);
         result.vectors = std::move(vectors);
+        finish_low_end(result);
         return result;
       }
       extra_ *= 2;  // the cluster reaches the last Ritz value found: look further
@@ -357,6 +359,21 @@ class ModeSearch {
   }
 
  private:
+  // Rigid-body modes counted by the inertia of K ∓ tM; beside stiff links (found λ tiny against
+  // max Kᵢᵢ/Mᵢᵢ) the modes found solved again in double-double, since the Rayleigh–Ritz step's
+  // ZᵀKZ in double carries an error of ε·‖K‖ (low_modes.hpp). The rounding bound: 4ε times the
+  // largest |λ| of the problem the modes were last solved in.
+  void finish_low_end(Eigenpairs& result) const {
+    result.zero_band = zero_band(K_, M_);
+    result.rigid_count = eigenvalues_near_zero(K_, M_, result.zero_band);
+    double top = result.scale;
+    if (needs_refinement(result.values, result.scale, result.zero_band)) {
+      refine_low_modes(K_, M_, static_cast<int>(result.values.size()), &result.values, &result.vectors);
+      top = result.values.cwiseAbs().maxCoeff();
+    }
+    result.errors = Eigen::VectorXd::Constant(result.values.size(), 8.0 * kUnitRoundoff * top);
+  }
+
   // σ an eigenvalue to working precision: an automatic σ moves, a given one is an error.
   void factor_at_shift() {
     for (int move = 0; !op_.factor(K_ - sigma_ * M_); ++move) {
