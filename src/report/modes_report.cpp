@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "railmodal/report.hpp"
 #include "report/text_format.hpp"
@@ -82,13 +83,15 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
   out << std::left << std::setw(18) << "dof" << std::right;
   for (const auto& m : r.modes) out << std::setw(11) << m.index;
   out << "\n";
+  // Entries at round-off level of the mode's largest read as exact zeros (JSON and CSV keep the
+  // raw values). The largest once per mode: per entry it made the table quadratic in the DOFs.
+  std::vector<double> round_off;
+  for (const auto& m : r.modes) round_off.push_back(1e-12 * m.shape.cwiseAbs().maxCoeff());
   for (size_t i = 0; i < r.dofs.size(); ++i) {
     out << report::left_cell(r.dofs[i].label, 18) << std::right;
-    for (const auto& m : r.modes) {
-      // Entries at round-off level of the mode's largest read as exact zeros (JSON and CSV
-      // keep the raw values).
-      const double v = m.shape(static_cast<int>(i));
-      if (std::abs(v) <= 1e-12 * m.shape.cwiseAbs().maxCoeff())
+    for (size_t k = 0; k < r.modes.size(); ++k) {
+      const double v = r.modes[k].shape(static_cast<int>(i));
+      if (std::abs(v) <= round_off[k])
         out << std::setw(11) << "0";
       else
         out << std::setw(11) << std::scientific << std::setprecision(2) << v;
