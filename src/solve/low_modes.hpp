@@ -17,7 +17,7 @@ constexpr double kUnitRoundoff = 0.5 * 2.220446049250313e-16;
 /// perturbs it by |ΔK| ≤ m·ε·|K| row by row, which moves an eigenvalue by about m·ε·d at most
 /// (d bounds ‖M^-½|K|M^-½‖ for a diagonal M), so an eigenvalue inside (−t, t) cannot be told
 /// from zero and one outside can: a soft spring of 100 N/m beside a 1e15 N/m link between two
-/// 1000 kg masses (λ = 0.05 1/s², t = 7e-3 1/s²) is not rigid; beside 1e17 N/m it is.
+/// 1000 kg masses (λ = 0.05 1/s², t = 7e-3 1/s²) is not rigid; beside 1e16 N/m (t = 0.07) it is.
 /// t = 1 when K = 0.
 double zero_band(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M);
 double zero_band(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M);
