@@ -14,4 +14,12 @@ inline std::string shortest_text(double x) {
   return std::string(buffer, written.ptr);
 }
 
+/// At most `digits` significant digits, as printf's %g, for numbers in messages: "1e-11" and
+/// "1.23e-08" where std::to_string's %f prints "0.000000".
+inline std::string shortest_text(double x, int digits) {
+  char buffer[48];
+  const auto written = std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::general, digits);
+  return std::string(buffer, written.ptr);
+}
+
 }  // namespace railmodal

@@ -78,12 +78,13 @@ struct ArpackOptions {
 };
 
 struct ModalOptions {
-  /// |λ| below this fraction of the largest |λ| counts as zero (rigid-body mode). The dense
-  /// solver's eigenvalues carry an absolute error of order n·ε·|λ|max (ε = 2.2e-16), so a true
-  /// zero lands far below 1e-13·|λ|max, while a soft spring beside a link 1e12 times stiffer
-  /// (|λ| ≈ 1e-12·|λ|max) is still told from zero: a looser default would call it rigid.
-  /// ARPACK, which does not see the top of the spectrum, uses max(Kᵢᵢ/Mᵢᵢ) (a lower bound)
-  /// in place of the largest |λ|.
+  /// Rigid-body modes are counted by the inertia of K ∓ tM (the eigenvalues within t of zero,
+  /// t = 8·m·ε·max Σⱼ|Kᵢⱼ|/Mᵢᵢ with m the most nonzeros in a row of K: what storing K in double
+  /// can move an eigenvalue by), so a soft spring beside a link 1e15 times stiffer is told from
+  /// zero. Only where that count fails (a factorisation breaks down) does |λ| below this
+  /// fraction of the largest |λ| count as zero. It also bounds the gap under which two rigid-body
+  /// eigenvalues are one repeated zero. ARPACK, which does not see the top of the spectrum, uses
+  /// max(Kᵢᵢ/Mᵢᵢ) (a lower bound) in place of the largest |λ|.
   double zero_tolerance = 1e-13;
   /// Reject if the relative residual of any mode exceeds this (a solver failure).
   double max_residual = 1e-8;
@@ -101,6 +102,10 @@ struct ModalOptions {
 /// automatic is ARPACK when dofs > kArpackAboveDofs and the modes wanted (mode_count, or
 /// kArpackDefaultModes when 0) are fewer than half the DOFs, else dense.
 ModalSolver choose_solver(ModalSolver requested, int dofs, int mode_count);
+
+/// SolverSummary fails its rounding check when a mode's eigenvalue_error exceeds this fraction
+/// of |λ| (a frequency with fewer than about 6 correct digits).
+constexpr double kEigenvalueAccuracy = 1e-6;
 
 /// How the modes were computed. As every analysis summary: the method, the checks (relative
 /// residual against ModalOptions::max_residual, M-orthonormality, and for ARPACK the inertia
@@ -148,6 +153,10 @@ struct Mode {
   /// two span is determined, not this shape on its own (symmetric bogies, for instance).
   bool repeated = false;
   double residual = 0.0;  ///< ‖Kφ − λMφ‖ / (‖K‖‖φ‖ + |λ|‖M‖‖φ‖)
+  /// A bound of |λ − λexact| from rounding, 1/s²: 4ε times the largest |λ| of the problem the
+  /// mode was solved in (the whole spectrum, or the low modes solved again in double-double
+  /// beside stiff links; docs/accuracy.md). The residual does not show this error.
+  double eigenvalue_error = 0.0;
 };
 
 struct ModalResult {

@@ -7,6 +7,7 @@
 
 #include "excitation/wheelsets.hpp"
 #include "railmodal/excitation.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
@@ -93,7 +94,7 @@ class RailJointSource final : public ExcitationSource {
     const double rho2 = p_.track_stiffness / p_.half_wheelset_mass;
     if (std::abs(rho2 - n * n) <= 1e-12 * rho2)
       throw std::invalid_argument("rail joints: this speed meets the wheelset-on-track resonance ρ = " +
-                                  std::to_string(std::sqrt(rho2)) + " 1/s");
+                                  shortest_text(std::sqrt(rho2), 4) + " 1/s");
     return rho2 / (rho2 - n * n);
   }
   RailJoints p_;

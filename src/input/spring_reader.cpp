@@ -4,6 +4,7 @@
 #include <string>
 
 #include "model/spring_formulas.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal::input {
 namespace {
@@ -134,8 +135,8 @@ void read_leaf_friction(TableReader& t, const std::optional<model::LeafSpringGeo
     const double psi = t.positive("leaf_friction", Quantity::dimensionless, true);
     stage->relative_friction = model::leaf_spring_relative_friction(*leaf, psi);
     if (!(stage->relative_friction < 1.0))
-      t.fail("leaf_friction", "gives a relative friction φ of " + std::to_string(stage->relative_friction) +
-                                  ", not below 1");
+      t.fail("leaf_friction",
+             "gives a relative friction φ of " + shortest_text(stage->relative_friction, 4) + ", not below 1");
   }
 }
 

@@ -1,4 +1,3 @@
-#include "input/input_file.hpp"
 #include "input/table_reader.hpp"
 
 #include <algorithm>
@@ -10,9 +9,11 @@
 #include <sstream>
 #include <system_error>
 
+#include "input/input_file.hpp"
 #include "input/toml_preflight.hpp"
 #include "input/value_place.hpp"
 #include "railmodal/errors.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal::input {
 namespace {
@@ -135,7 +136,7 @@ double TableReader::positive(const std::string& key, Quantity kind, bool allow_z
   const double value = quantity(key, kind);
   if (allow_zero ? value < 0.0 : !(value > 0.0))
     fail(key, std::string("must be ") + (allow_zero ? "zero or positive" : "positive") + ", got " +
-                  std::to_string(value) + " (SI)");
+                  shortest_text(value, 6) + " (SI)");
   return value;
 }
 

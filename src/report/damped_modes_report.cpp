@@ -67,10 +67,11 @@ void write_table(std::ostream& out, const LinearSystem& system, const DampedModa
       << std::setw(10) << "ζ" /* 2 bytes, 1 column */ << std::setw(10) << "f_n [Hz]" << std::setw(10) << "f_0 [Hz]" << "  " << std::left
       << std::setw(10) << "stability" << "remark\n";
   for (const auto& m : r.modes) {
-    out << std::left << std::setw(4) << m.index << std::setw(34) << m.name << std::right << std::setw(10)
-        << fixed_or_blank(m.damped_frequency_hz, 4) << std::setw(9) << fixed_or_blank(m.damping_ratio, 4)
-        << std::setw(10) << fixed_or_blank(m.natural_frequency_hz, 4) << std::setw(10)
-        << fixed_or_blank(undamped_frequency(r, m), 4) << "  ";
+    out << report::left_cell(std::to_string(m.index), 4) << report::left_cell(m.name, 34)
+        << report::right_cell(fixed_or_blank(m.damped_frequency_hz, 4), 10)
+        << report::right_cell(fixed_or_blank(m.damping_ratio, 4), 9)
+        << report::right_cell(fixed_or_blank(m.natural_frequency_hz, 4), 10)
+        << report::right_cell(fixed_or_blank(undamped_frequency(r, m), 4), 10) << "  ";
     const std::string note = remark(m);
     if (note.empty())
       out << (m.stable ? "stable" : "UNSTABLE") << "\n";

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "railmodal/report.hpp"
 #include "report/text_format.hpp"
@@ -59,11 +60,12 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
       << "f [Hz]" << std::setw(11) << "T [s]" << std::setw(12) << "ω [rad/s]" << "  "
       << "centre of oscillation\n";
   for (const auto& m : r.modes) {
-    out << std::left << std::setw(4) << m.index << std::setw(34) << (m.repeated ? m.name + " *" : m.name)
+    out << report::left_cell(std::to_string(m.index), 4) << report::left_cell(m.repeated ? m.name + " *" : m.name, 34)
         << std::right;
     if (m.kind == ModeKind::oscillatory) {
-      out << std::fixed << std::setprecision(4) << std::setw(11) << m.frequency_hz << std::setw(11)
-          << m.period_s << std::setw(12) << std::setprecision(3) << m.omega_rad_s;
+      out << report::right_cell(report::fixed(m.frequency_hz, 4), 11)
+          << report::right_cell(report::fixed(m.period_s, 4), 11)
+          << report::right_cell(report::fixed(m.omega_rad_s, 3), 12);
     } else if (m.kind == ModeKind::unstable) {
       out << std::setw(34) << ("diverges, σ = " + number(m.divergence_rate, 4, true) + " 1/s");
     } else {
@@ -81,13 +83,15 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
   out << std::left << std::setw(18) << "dof" << std::right;
   for (const auto& m : r.modes) out << std::setw(11) << m.index;
   out << "\n";
+  // Entries at round-off level of the mode's largest read as exact zeros (JSON and CSV keep the
+  // raw values). The largest once per mode: per entry it made the table quadratic in the DOFs.
+  std::vector<double> round_off;
+  for (const auto& m : r.modes) round_off.push_back(1e-12 * m.shape.cwiseAbs().maxCoeff());
   for (size_t i = 0; i < r.dofs.size(); ++i) {
-    out << std::left << std::setw(18) << r.dofs[i].label << std::right;
-    for (const auto& m : r.modes) {
-      // Entries at round-off level of the mode's largest read as exact zeros (JSON and CSV
-      // keep the raw values).
-      const double v = m.shape(static_cast<int>(i));
-      if (std::abs(v) <= 1e-12 * m.shape.cwiseAbs().maxCoeff())
+    out << report::left_cell(r.dofs[i].label, 18) << std::right;
+    for (size_t k = 0; k < r.modes.size(); ++k) {
+      const double v = r.modes[k].shape(static_cast<int>(i));
+      if (std::abs(v) <= round_off[k])
         out << std::setw(11) << "0";
       else
         out << std::setw(11) << std::scientific << std::setprecision(2) << v;
@@ -96,6 +100,10 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
   }
   out << std::defaultfloat << "\nchecks: max relative residual " << std::setprecision(2) << r.max_residual
       << ", max |ΦᵀMΦ − I| " << r.orthonormality_error << "\n";
+  for (const Check& c : r.solver.checks)
+    if (!c.passed)
+      out << "warning: check failed: " << c.name << " " << std::setprecision(2) << c.value << ", limit " << c.limit
+          << " (docs/accuracy.md)\n";
 }
 
 void write_csv(std::ostream& out, const ModalResult& r) {

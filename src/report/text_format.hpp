@@ -31,4 +31,15 @@ inline std::string fixed(double value, int decimals) {
   return s.str();
 }
 
+/// A table cell: `text` right-aligned in `width` characters, or after one space when it is
+/// wider, so that a large number never runs into the column before it.
+inline std::string right_cell(const std::string& text, size_t width) {
+  return text.size() < width ? std::string(width - text.size(), ' ') + text : " " + text;
+}
+
+/// `text` left-aligned in `width` characters, or followed by one space when it is wider.
+inline std::string left_cell(const std::string& text, size_t width) {
+  return text.size() < width ? text + std::string(width - text.size(), ' ') : text + " ";
+}
+
 }  // namespace railmodal::report

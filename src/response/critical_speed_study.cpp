@@ -8,6 +8,7 @@
 
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
+#include "shortest_text.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -57,7 +58,7 @@ void solve_stable_modes(const Scene& scene, const Vehicle& vehicle, CriticalSpee
   for (const Mode& m : study->modes.modes)
     if (m.kind == ModeKind::unstable)
       throw NumericalError("mode " + std::to_string(m.index) + " (" + m.name + ") is unstable (divergence rate " +
-                           std::to_string(m.divergence_rate) +
+                           shortest_text(m.divergence_rate, 4) +
                            " 1/s): the vehicle has no steady response to harmonic input; see railmodal modes");
 }
 

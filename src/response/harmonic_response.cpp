@@ -6,6 +6,7 @@
 #include "railmodal/errors.hpp"
 #include "railmodal/response.hpp"
 #include "response/modal_checks.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
@@ -106,7 +107,7 @@ HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult
   const double residual = (A * x - rhs).norm();
   // A load on a direction nothing restrains (a rigid-body mode at ω = 0) has no steady state.
   if (!x.allFinite() || !(residual <= 1e-8 * (rhs.norm() + A.norm() * x.norm())))
-    throw NumericalError("harmonic response at " + std::to_string(frequency_hz) +
+    throw NumericalError("harmonic response at " + shortest_text(frequency_hz, 6) +
                          " Hz: the dynamic stiffness is singular for this load (an unrestrained direction?)");
   out.displacement = x.head(n);
   out.unbounded = !out.resonant_modes.empty();

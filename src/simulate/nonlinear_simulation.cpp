@@ -17,8 +17,9 @@
 #include "railmodal/errors.hpp"
 #include "railmodal/simulation.hpp"
 #include "require_valid.hpp"
-#include "simulate/history_summary.hpp"
+#include "shortest_text.hpp"
 #include "simulate/dormand_prince.hpp"
+#include "simulate/history_summary.hpp"
 #include "simulate/nonlinear_elements.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -385,12 +386,12 @@ class Integration {
       }
       const auto step = step_from_here(hh);
       const double err = error_norm(step.error, y_, step.y, options_.tolerance);
-      if (!step.y.allFinite()) throw NumericalError("simulation diverged at t = " + std::to_string(t_) + " s");
+      if (!step.y.allFinite()) throw NumericalError("simulation diverged at t = " + shortest_text(t_, 9) + " s");
       ++out_.steps_taken;
       if (err > 1.0) {
         h_ = hh * std::max(0.2, 0.9 * std::pow(err, -0.2));
         if (h_ < 1e-14 * std::max(1.0, t_))
-          throw NumericalError("simulation: step size underflow at t = " + std::to_string(t_) + " s");
+          throw NumericalError("simulation: step size underflow at t = " + shortest_text(t_, 9) + " s");
         continue;
       }
       const std::vector<Slot> slots = model_.slots();
@@ -467,7 +468,7 @@ class Integration {
     // say so instead of spinning.
     events_here_ = fired.at > 0.0 ? 0 : events_here_ + 1;
     if (events_here_ > 64)
-      throw NumericalError("simulation: friction events chatter at t = " + std::to_string(t_) +
+      throw NumericalError("simulation: friction events chatter at t = " + shortest_text(t_, 9) +
                            " s (no consistent stick/slip state); try a larger event_tolerance");
     const size_t first_event = out_.events.size();
     std::vector<int> candidates, releasing;

@@ -21,6 +21,7 @@
 
 #include "railmodal/errors.hpp"
 #include "solve/eigenpairs.hpp"
+#include "solve/low_modes.hpp"
 
 extern "C" {
 // arpack-ng's ISO C binding. arpack.h declares it beside complex variants whose C99
@@ -312,14 +313,22 @@ void check_massless_restrained(const SparseMatrix& K, const std::vector<int>& ma
 class ModeSearch {
  public:
   ModeSearch(const SparseMatrix& M, const SparseMatrix& K, const ModalOptions& options, int wanted, int most)
-      : M_(M), K_(K), options_(options), o_(options.arpack), wanted_(wanted), most_(most),
-        automatic_shift_(std::isnan(o_.shift)), scale_(spectrum_scale(M, K)),
+      : M_(M),
+        K_(K),
+        options_(options),
+        o_(options.arpack),
+        wanted_(wanted),
+        most_(most),
+        automatic_shift_(std::isnan(o_.shift)),
+        scale_(spectrum_scale(M, K)),
         sigma_(automatic_shift_ ? -kShiftFraction * scale_ : o_.shift),
+        zero_band_(zero_band(K, M)),
         extra_(std::max(2, wanted / 10)) {}  // a few more than asked, so that a cluster cut at N shows where it ends
 
   Eigenpairs solve(Eigenpairs result) {
     for (int attempt = 0;; ++attempt) {
       if (!factored_) factor_at_shift();
+      if (automatic_shift_ && attempt == 0) adapt_shift();
       const int nev = std::min(wanted_ + extra_, most_);
       Run run = run_arpack(M_, K_, op_, nev, o_);
       record(run, nev, result.summary);
@@ -350,6 +359,7 @@ class ModeSearch {
         vectors.conservativeResize(Eigen::NoChange, end);
         result.values = std::move(values);
         result.vectors = std::move(vectors);
+        finish_low_end(result);
         return result;
       }
       extra_ *= 2;  // the cluster reaches the last Ritz value found: look further
@@ -357,6 +367,53 @@ class ModeSearch {
   }
 
  private:
+  // Rigid-body modes counted by the inertia of K ∓ tM; beside stiff links (found λ tiny against
+  // max Kᵢᵢ/Mᵢᵢ) the modes found solved again in double-double, since the Rayleigh–Ritz step's
+  // ZᵀKZ in double carries an error of ε·‖K‖ (low_modes.hpp). The rounding bound: 4ε times the
+  // largest |λ| of the problem the modes were last solved in.
+  void finish_low_end(Eigenpairs& result) const {
+    result.zero_band = zero_band_;
+    result.rigid_count = eigenvalues_near_zero(K_, M_, result.zero_band);
+    double top = result.scale;
+    if (needs_refinement(result.values, result.scale, result.zero_band)) {
+      refine_low_modes(K_, M_, static_cast<int>(result.values.size()), &result.values, &result.vectors);
+      top = result.values.cwiseAbs().maxCoeff();
+    }
+    result.errors = Eigen::VectorXd::Constant(result.values.size(), 8.0 * kUnitRoundoff * top);
+  }
+
+  // The automatic σ = −1e-6·max Kᵢᵢ/Mᵢᵢ can lie far below the lowest eigenvalues (a 1e5-DOF
+  // chain: λ₁ = 1e-9, σ = −2e-6), where every ν = 1/(λ − σ) ≈ 1/|σ| and Lanczos hardly tells
+  // them apart (200 solves for 5 modes, 1500 at 1e6 DOFs). Inverse iteration with the factors
+  // at hand weights each mode by 1/(λ − σ): after two steps from the vector of ones (smooth,
+  // so mostly low modes) its Rayleigh quotient ρ lies between λ₁ and |σ| (about √(λ₁|σ|) for a
+  // chain). While ρ is well above zero (no rigid-body mode, whose ρ falls inside the zero band)
+  // and below |σ|/10, σ moves up to −ρ: a few moves bring it to the scale of λ₁. A σ already
+  // near the lowest eigenvalues (every wagon) stays where it is.
+  void adapt_shift() {
+    for (int move = 0; move < 8; ++move) {
+      const double rho = rayleigh_estimate();
+      if (!(rho > zero_band_ && rho < 0.1 * -sigma_)) return;
+      sigma_ = -rho;
+      factored_ = false;
+      factor_at_shift();
+    }
+  }
+
+  // ρ of two inverse-iteration steps x ← (K − σM)⁻¹Mx from x = 1.
+  double rayleigh_estimate() const {
+    Eigen::VectorXd x = Eigen::VectorXd::Ones(M_.rows());
+    for (int step = 0; step < 2; ++step) {
+      Eigen::VectorXd y = M_ * x;
+      op_.solve_in_place(y.data());
+      const double norm = y.norm();
+      if (!(norm > 0.0) || !std::isfinite(norm)) return 0.0;
+      x = y / norm;
+    }
+    const double mass = x.dot(M_ * x);
+    return mass > 0.0 ? x.dot(K_ * x) / mass : 0.0;
+  }
+
   // σ an eigenvalue to working precision: an automatic σ moves, a given one is an error.
   void factor_at_shift() {
     for (int move = 0; !op_.factor(K_ - sigma_ * M_); ++move) {
@@ -447,6 +504,7 @@ class ModeSearch {
   const bool automatic_shift_;
   const double scale_;
   double sigma_;
+  const double zero_band_;
   int extra_;
   int missed_runs_ = 0;
   ShiftedInverse op_;

@@ -27,14 +27,16 @@
 // massless DOFs that the coordinates above remove exactly. The w states have other units,
 // so the matrix is balanced by powers of two (Parlett–Reinsch, as LAPACK's dgebal) before the
 // solve: exact in floating point, a no-op on the already balanced mode blocks.
+#include "railmodal/damped_modal.hpp"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "railmodal/damped_modal.hpp"
 #include "railmodal/errors.hpp"
 #include "require_valid.hpp"
+#include "shortest_text.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -582,8 +584,8 @@ DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedMod
   result.summary.checks.push_back({"max relative residual", result.max_residual, options.undamped.max_residual,
                                    result.max_residual <= options.undamped.max_residual});
   if (!(result.max_residual <= options.undamped.max_residual))
-    throw NumericalError("damped eigen-solution residual " + std::to_string(result.max_residual) +
-                         " exceeds the limit " + std::to_string(options.undamped.max_residual));
+    throw NumericalError("damped eigen-solution residual " + shortest_text(result.max_residual, 3) +
+                         " exceeds the limit " + shortest_text(options.undamped.max_residual, 3));
   return result;
 }
 

@@ -7,7 +7,9 @@
 
 #include "railmodal/errors.hpp"
 #include "railmodal/modal.hpp"
+#include "shortest_text.hpp"
 #include "solve/eigenpairs.hpp"
+#include "solve/low_modes.hpp"
 
 namespace railmodal::solve {
 
@@ -37,9 +39,8 @@ Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<std
     double pivot = M(j, j) - L.row(j).head(j).squaredNorm();
     // Round-off in a positive definite matrix leaves pivots of order ε·scale at worst.
     if (!(pivot > tiny))
-      throw NumericalError("the mass matrix is not positive definite at degree of freedom '" +
-                           labels[j] + "' (pivot " + std::to_string(pivot) +
-                           "): its inertia is zero or depends on the others");
+      throw NumericalError("the mass matrix is not positive definite at degree of freedom '" + labels[j] + "' (pivot " +
+                           shortest_text(pivot, 3) + "): its inertia is zero or depends on the others");
     L(j, j) = std::sqrt(pivot);
     for (int i = j + 1; i < n; ++i)
       L(i, j) = (M(i, j) - L.row(i).head(j).dot(L.row(j).head(j))) / L(j, j);
@@ -51,34 +52,33 @@ Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<std
 
 namespace {
 
-// The direct solve gives every λ to an absolute n·ε·λmax, which leaves the low modes of a
-// system with a huge stiffness contrast (a soft spring beside a nearly rigid link: λmax/λ ≈
-// 1e12) with only a few correct digits. When K is positive definite the reciprocal problem
-// M φ = μ K φ (μ = 1/λ) gives them to n·ε·λ/λmin instead: its answers replace the direct
-// ones below the geometric mean of the spectrum, where they are the more accurate. Spectra
-// narrower than 1e8 (every wagon) are left as they are.
-void refine_low_modes(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, Eigen::VectorXd* lambda, Eigen::MatrixXd* phi) {
-  const Eigen::Index m = lambda->size();
-  if (m < 2 || !((*lambda)(0) > 0.0) || (*lambda)(m - 1) / (*lambda)(0) < 1e8) return;
-  const Eigen::LLT<Eigen::MatrixXd> llt(K);
-  if (llt.info() != Eigen::Success) return;
-  const Eigen::MatrixXd Lk = llt.matrixL();
-  const auto lower = Lk.triangularView<Eigen::Lower>();
-  Eigen::MatrixXd B = lower.solve(M);
-  B = lower.solve(B.transpose()).transpose();
-  B = 0.5 * (B + B.transpose());
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(B);
-  if (eig.info() != Eigen::Success) return;
-  const double crossover = std::sqrt((*lambda)(0) * (*lambda)(m - 1));
-  for (Eigen::Index k = 0; k < m; ++k) {
-    const double mu = eig.eigenvalues()(m - 1 - k);  // largest μ: lowest λ
-    if (!(mu > 0.0) || 1.0 / mu >= crossover) break;
-    Eigen::VectorXd v = Lk.transpose().triangularView<Eigen::Upper>().solve(eig.eigenvectors().col(m - 1 - k));
-    v /= std::sqrt(v.dot(M * v));
-    if (v.dot(phi->col(k)) < 0.0) v = -v;  // keep the direct solve's sign
-    (*lambda)(k) = 1.0 / mu;
-    phi->col(k) = v;
-  }
+// The direct solve gives every λ to an absolute error of about ε·λmax, which leaves the low
+// modes of a system with a huge stiffness or mass contrast (a soft spring beside a nearly
+// rigid link: λmax/λ ≈ 1e13) with only a few correct digits. The modes below the geometric
+// mean of the spectrum are solved again in the subspace they span with ZᵀKZ and ZᵀMZ formed
+// in double-double (refine_low_modes): their error is then about ε times the largest of them.
+// Spectra narrower than 1e8 (every wagon) are left as they are. Returns how many were refined.
+int refine_low_end(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, double zero, Eigen::VectorXd* lambda,
+                   Eigen::MatrixXd* phi) {
+  const double top = lambda->cwiseAbs().maxCoeff();
+  if (!needs_refinement(*lambda, top, zero)) return 0;
+  double lowest = top;
+  for (Eigen::Index k = 0; k < lambda->size(); ++k)
+    if (std::abs((*lambda)(k)) > zero) lowest = std::min(lowest, std::abs((*lambda)(k)));
+  const double crossover = std::sqrt(lowest * top);
+  int window = 0;
+  while (window < lambda->size() && std::abs((*lambda)(window)) < crossover) ++window;
+  refine_low_modes(K, M, window, lambda, phi);
+  return window;
+}
+
+// The bound of each λ's rounding error: 4ε times the largest |λ| of the problem it was solved in
+// (the refined window, or the whole spectrum).
+Eigen::VectorXd rounding_bounds(const Eigen::VectorXd& lambda, int refined) {
+  const double eps = 2.0 * kUnitRoundoff;
+  Eigen::VectorXd bound = Eigen::VectorXd::Constant(lambda.size(), 4.0 * eps * lambda.cwiseAbs().maxCoeff());
+  if (refined > 0) bound.head(refined).setConstant(4.0 * eps * lambda.head(refined).cwiseAbs().maxCoeff());
+  return bound;
 }
 
 }  // namespace
@@ -127,7 +127,11 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
   if (eig.info() != Eigen::Success) throw NumericalError("the symmetric eigensolver did not converge");
   result.values = eig.eigenvalues();  // ascending
   Eigen::MatrixXd phi_kept = L.transpose().triangularView<Eigen::Upper>().solve(eig.eigenvectors());
-  refine_low_modes(Kr, Mr, &result.values, &phi_kept);
+  // Rigid-body modes are counted by the inertia of K ∓ tM, not read off the computed λ.
+  result.zero_band = zero_band(Kr, Mr);
+  result.rigid_count = eigenvalues_near_zero(Kr, Mr, result.zero_band);
+  const int refined = refine_low_end(Kr, Mr, result.zero_band, &result.values, &phi_kept);
+  result.errors = rounding_bounds(result.values, refined);
 
   const int m = static_cast<int>(kept.size());
   result.vectors = Eigen::MatrixXd::Zero(n, m);

@@ -17,6 +17,11 @@ struct Eigenpairs {
   std::vector<int> massless;  ///< DOFs with a zero row of M (condensed statically)
   /// The |λ| that ModalOptions::zero_tolerance is a fraction of.
   double scale = 0.0;
+  /// The number of eigenvalues of (K, M) that are zero to working precision, by inertia
+  /// (low_modes.hpp), or -1 when it could not be counted (ModalOptions::zero_tolerance decides).
+  int rigid_count = -1;
+  double zero_band = 0.0;  ///< t of eigenvalues_near_zero, 1/s²
+  Eigen::VectorXd errors;  ///< a bound of each λ's rounding error, 1/s²
   SolverSummary summary;
 };
 

@@ -10,7 +10,9 @@
 #include "railmodal/errors.hpp"
 #include "railmodal/modal.hpp"
 #include "require_valid.hpp"
+#include "shortest_text.hpp"
 #include "solve/eigenpairs.hpp"
+#include "solve/low_modes.hpp"
 #include "solve/mode_naming.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -104,6 +106,32 @@ using Describe = std::function<solve::ModeDescription(const Eigen::VectorXd&)>;
 
 void check_options(const ModalOptions& options) { require_valid(options, "ModalOptions: "); }
 
+// Which of the eigenvalues `lambda` are rigid-body modes: the Eigenpairs::rigid_count of
+// smallest |λ| when the inertia counted them (a soft spring beside a stiff link, λ tiny against
+// λmax but K positive definite, is then oscillatory), else those with |λ| ≤ zero.
+std::vector<bool> rigid_body_modes(const Eigen::VectorXd& lambda, const solve::Eigenpairs& pairs, double zero) {
+  const int m = static_cast<int>(lambda.size());
+  std::vector<bool> rigid(m, false);
+  if (pairs.rigid_count < 0) {
+    for (int k = 0; k < m; ++k) rigid[k] = std::abs(lambda(k)) <= zero;
+    return rigid;
+  }
+  std::vector<int> by_size(m);
+  for (int k = 0; k < m; ++k) by_size[k] = k;
+  std::stable_sort(by_size.begin(), by_size.end(),
+                   [&lambda](int a, int b) { return std::abs(lambda(a)) < std::abs(lambda(b)); });
+  for (int k = 0; k < std::min(m, pairs.rigid_count); ++k) rigid[by_size[k]] = true;
+  return rigid;
+}
+
+// The largest bound of the relative rounding error of λ over the modes that are not rigid.
+double relative_error_bound(const std::vector<Mode>& modes) {
+  double worst = 0.0;
+  for (const Mode& m : modes)
+    if (m.kind != ModeKind::rigid_body) worst = std::max(worst, m.eigenvalue_error / std::abs(m.eigenvalue));
+  return worst;
+}
+
 // The summary of a result make_result() returned: its method, checks and stage times.
 void summarise(ModalResult* result, const ModalOptions& options, std::vector<StageTiming> stages) {
   SolverSummary& s = result->solver;
@@ -114,6 +142,10 @@ void summarise(ModalResult* result, const ModalOptions& options, std::vector<Sta
   s.checks.push_back({"max relative residual", result->max_residual, options.max_residual, true});
   s.checks.push_back({"M-orthonormality error max|ΦᵀMΦ − I|", result->orthonormality_error,
                       std::numeric_limits<double>::infinity(), true});
+  // Rounding, not the solver's convergence: the residual cannot see it (issue 18 item 9).
+  const double bound = relative_error_bound(result->modes);
+  s.checks.push_back(
+      {"max relative rounding error bound of λ", bound, kEigenvalueAccuracy, bound <= kEigenvalueAccuracy});
   if (s.count_checked) {
     const double found = static_cast<double>(result->modes.size());
     s.checks.push_back({"eigenvalues below the last mode by the inertia of K − μM", found, found, true});
@@ -132,14 +164,16 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
   const Eigen::VectorXd lambda = pairs.values.head(keep);
   const Eigen::MatrixXd phi = pairs.vectors.leftCols(keep);
   const double zero = options.zero_tolerance * pairs.scale;
+  const std::vector<bool> rigid = rigid_body_modes(lambda, pairs, zero);
   const double norm_K = K.norm(), norm_M = M.norm();
   const Eigen::MatrixXd K_phi = K * phi, M_phi = M * phi;
   for (int k = 0; k < keep; ++k) {
     Mode mode;
     mode.index = k + 1;
     mode.eigenvalue = lambda(k);
+    mode.eigenvalue_error = pairs.errors.size() > k ? pairs.errors(k) : 0.0;
     mode.shape = phi.col(k);
-    if (std::abs(lambda(k)) <= zero) {
+    if (rigid[k]) {
       mode.kind = ModeKind::rigid_body;
     } else if (lambda(k) < 0.0) {
       mode.kind = ModeKind::unstable;
@@ -168,8 +202,8 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
   const Eigen::MatrixXd G = phi.transpose() * M_phi;
   result.orthonormality_error = (G - Eigen::MatrixXd::Identity(keep, keep)).cwiseAbs().maxCoeff();
   if (!(result.max_residual <= options.max_residual))
-    throw NumericalError("eigen-solution residual " + std::to_string(result.max_residual) +
-                         " exceeds the limit " + std::to_string(options.max_residual));
+    throw NumericalError("eigen-solution residual " + shortest_text(result.max_residual, 3) + " exceeds the limit " +
+                         shortest_text(options.max_residual, 3));
   return result;
 }
 

@@ -5,6 +5,7 @@
 
 #include "railmodal/spectrum.hpp"
 #include "require_valid.hpp"
+#include "shortest_text.hpp"
 #include "spectrum/real_fft.hpp"
 
 namespace railmodal {
@@ -31,7 +32,7 @@ Eigen::Index transform_length_for(Eigen::Index signal_length, const SpectrumOpti
 
 void check_signal(const Eigen::Ref<const Eigen::VectorXd>& signal, Eigen::Index expected, double sampling_rate) {
   if (!(sampling_rate > 0.0) || !std::isfinite(sampling_rate))
-    throw std::invalid_argument("sampling_rate must be positive and finite, got " + std::to_string(sampling_rate));
+    throw std::invalid_argument("sampling_rate must be positive and finite, got " + shortest_text(sampling_rate));
   if (signal.size() != expected)
     throw std::invalid_argument("signal must have the analyzer's " + std::to_string(expected) + " samples, got " +
                                 std::to_string(signal.size()));

@@ -6,6 +6,7 @@
 
 #include "railmodal/spectrum.hpp"
 #include "require_valid.hpp"
+#include "shortest_text.hpp"
 #include "spectrum/windows.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -56,9 +57,9 @@ SpectralPeak interpolate(const Spectrum& s, Eigen::Index k, double window_half_w
 
 bool PeakOptions::is_valid(std::string* why) const {
   if (!(threshold > 0.0 && threshold <= 1.0))
-    return invalid(why, "threshold must be in (0, 1], got " + std::to_string(threshold));
+    return invalid(why, "threshold must be in (0, 1], got " + shortest_text(threshold));
   if (!(min_dip >= 0.0 && min_dip < 1.0))
-    return invalid(why, "min_dip must be in [0, 1), got " + std::to_string(min_dip));
+    return invalid(why, "min_dip must be in [0, 1), got " + shortest_text(min_dip));
   return true;
 }
 

@@ -68,6 +68,34 @@ TEST(ModalSolve, MassMatrixThatIsNotPositiveDefiniteNamesTheDof) {
   }
 }
 
+// Issue 18 item 15: numbers in messages keep their significant digits; %f printed a 1e-11
+// pivot as "0.000000".
+TEST(ModalSolve, TinyMassPivotIsReportedWithItsDigits) {
+  Eigen::Matrix2d M;
+  M << 1e6, 0.0, 0.0, 1e-11;  // pivot 1e-11, below 64·ε·1e6 ≈ 1.4e-8: not positive definite
+  try {
+    solve_modes(two_dof(M, Eigen::Matrix2d::Identity()));
+    FAIL();
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("(pivot 1e-11)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ModalSolve, ResidualLimitMessageHasSignificantDigits) {
+  ModalOptions o;
+  o.max_residual = 1e-30;  // below the round-off of any coupled system: the check must refuse
+  Eigen::Matrix2d K;
+  K << 2.0, -1.0, -1.0, 1.0;
+  try {
+    solve_modes(two_dof(Eigen::Matrix2d::Identity(), K), o);
+    FAIL();
+  } catch (const NumericalError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("exceeds the limit 1e-30"), std::string::npos) << what;
+    EXPECT_EQ(what.find("0.000000"), std::string::npos) << what;
+  }
+}
+
 TEST(ModalSolve, MasslessDofIsCondensedStatically) {
   Eigen::Matrix2d M, K;
   M << 2.0, 0.0, 0.0, 0.0;

@@ -1,7 +1,10 @@
 // railmodal modes FILE [--dofs vertical|lateral|all] [--format table|csv|json] [--damped] [-o OUT]
 // railmodal modes --mass M.mtx --stiffness K.mtx [--damping C.mtx] [--format ...] [--damped] [-o OUT]
-//   both with [--solver dense|arpack|auto] [--modes N] (undamped modes)
+//   both with [--solver dense|arpack|auto] [--modes N] [--shift SIGMA] (undamped modes)
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <memory>
 
 #include "commands.hpp"
@@ -24,6 +27,7 @@ struct ModesOptions {
   bool damped = false;  // complex modes of M q̈ + C q̇ + K q = 0 instead of K φ = λ M φ
   std::string solver = "auto";
   int modes = 0;  // 0: all (dense), kArpackDefaultModes (ARPACK)
+  double shift = std::numeric_limits<double>::quiet_NaN();  // ARPACK's σ, 1/s²; NaN: automatic
 };
 
 int usage_error(const std::string& message) {
@@ -57,12 +61,21 @@ ModalOptions modal_options(const ModesOptions& o) {
   ModalOptions options;
   options.solver = *modal_solver_from_string(o.solver);  // CLI11 checked the word
   options.mode_count = o.modes;
+  options.arpack.shift = o.shift;
   return options;
+}
+
+// A given shift is ARPACK's: refused when the dense solver takes the model.
+void check_shift_applies(const ModesOptions& o, const ModalOptions& options, int dofs) {
+  if (!std::isnan(o.shift) && choose_solver(options.solver, dofs, options.mode_count) == ModalSolver::dense)
+    throw std::invalid_argument("--shift applies to the ARPACK solver, and the dense solver takes this model (" +
+                                std::to_string(dofs) + " DOFs); add --solver arpack --modes N");
 }
 
 // Matrices stay sparse unless the dense solver takes them (ARPACK never sees a dense copy).
 std::string solve_matrices(const ModesOptions& o, const ModalOptions& options, ModalResult* result) {
   const SparseSystem system = to_sparse_system(load_matrix_model(o.mass, o.stiffness, o.damping));
+  check_shift_applies(o, options, system.size());
   if (choose_solver(options.solver, system.size(), options.mode_count) == ModalSolver::dense &&
       system.size() > kMaxDenseDofs)
     throw InputError(o.mass, 0, 0, std::to_string(system.size()) + " degrees of freedom: more than the " +
@@ -94,8 +107,9 @@ int run_damped(const ModesOptions& o, bool matrices, OutputFormat format, std::o
 
 int run(const ModesOptions& o) {
   if (const std::string problem = input_problem(o); !problem.empty()) return usage_error(problem);
-  if (o.damped && (o.solver == "arpack" || o.modes > 0))
-    return usage_error("--damped solves every mode densely; --solver arpack and --modes apply to undamped modes");
+  if (o.damped && (o.solver == "arpack" || o.modes > 0 || !std::isnan(o.shift)))
+    return usage_error(
+        "--damped solves every mode densely; --solver arpack, --modes and --shift apply to undamped modes");
   const bool matrices = o.file.empty();
   const std::string source = matrices ? o.mass + ", " + o.stiffness : o.file;  // for numerical errors
   const OutputFormat format = *output_format_from_string(o.format);
@@ -120,6 +134,7 @@ int run(const ModesOptions& o) {
         return kInput;
       }
       title = system.vehicle.name;
+      check_shift_applies(o, options, system.size());
       result = solve_modes(system, options);
     }
     write_modes(out, title, result, format);
@@ -131,9 +146,17 @@ int run(const ModesOptions& o) {
   } catch (const NumericalError& e) {
     std::cerr << source << ": error: numerical failure: " << e.what() << "\n";
     return kNumerical;
-  } catch (const std::invalid_argument& e) {  // --modes beyond what ARPACK can give
+  } catch (const std::invalid_argument& e) {  // --modes beyond what ARPACK can give, --shift for dense
     return usage_error(e.what());
   }
+}
+
+// CLI11 check of --shift: a finite number (nan and inf parse as doubles but are no shift).
+std::string finite_number(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !std::isfinite(value)) return "must be a finite number, got " + text;
+  return "";
 }
 
 }  // namespace
@@ -166,6 +189,10 @@ std::function<int()> add_modes_command(CLI::App& app) {
                   "The N lowest modes (and the rest of a repeated frequency's cluster); default all (dense), " +
                       std::to_string(kArpackDefaultModes) + " (ARPACK)")
       ->check(CLI::Range(1, 1 << 30));
+  cmd->add_option("--shift", options->shift,
+                  "ARPACK's shift σ in 1/s² (ω² units): the modes returned are the lowest above σ. Default: "
+                  "automatic, just below zero at the scale of the lowest eigenvalues")
+      ->check(finite_number);
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   return [options, dofs] {

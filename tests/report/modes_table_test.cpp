@@ -1,0 +1,60 @@
+// The modes tables keep their columns apart however large the numbers (issue 18 item 15: at
+// ω ≥ 1e8 the frequency, period and ω of a stiff mode ran together into one word).
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "railmodal/railmodal.hpp"
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+// The whitespace-separated words of the table line that starts with `start`.
+std::vector<std::string> words_of_line(const std::string& text, const std::string& start) {
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind(start, 0) == 0) {
+      std::istringstream in(line);
+      std::vector<std::string> words;
+      for (std::string w; in >> w;) words.push_back(w);
+      return words;
+    }
+  return {};
+}
+
+// One DOF, m = 1 kg, k = 1e18 N/m: ω = 1e9 rad/s, f = 1.59e8 Hz.
+LinearSystem stiff_oscillator() {
+  LinearSystem s;
+  s.dofs = {{"a_degree_of_freedom_label_longer_than_its_column", 0, Motion::bounce}};
+  s.mass = Eigen::MatrixXd::Constant(1, 1, 1.0);
+  s.stiffness = Eigen::MatrixXd::Constant(1, 1, 1e18);
+  s.damping = Eigen::MatrixXd::Zero(1, 1);
+  s.gravity_stiffness = Eigen::MatrixXd::Zero(1, 1);
+  return s;
+}
+
+TEST(ModesTable, StiffModeColumnsStaySeparate) {
+  const LinearSystem system = stiff_oscillator();
+  std::ostringstream out;
+  write_modes(out, "stiff", solve_modes(system), OutputFormat::table);
+  // #, name, f, T, ω: five words (the name has no space).
+  const auto row = words_of_line(out.str(), "1   ");
+  ASSERT_EQ(row.size(), 5u) << out.str();
+  EXPECT_EQ(row[2], "159154943.0919") << out.str();
+  EXPECT_EQ(row[4], "1000000000.000") << out.str();
+  // The shapes table: the long label and the entry are two words.
+  EXPECT_EQ(words_of_line(out.str(), "a_degree").size(), 2u) << out.str();
+}
+
+TEST(ModesTable, StiffDampedModeColumnsStaySeparate) {
+  std::ostringstream out;
+  write_damped_modes(out, stiff_oscillator(), solve_damped_modes(stiff_oscillator()), OutputFormat::table);
+  // #, name, f_d, ζ, f_n, f_0, stability.
+  const auto row = words_of_line(out.str(), "1   ");
+  ASSERT_EQ(row.size(), 7u) << out.str();
+  EXPECT_EQ(row[2], "159154943.0919") << out.str();
+}
+
+}  // namespace
+}  // namespace railmodal::test
