@@ -55,7 +55,8 @@ struct SimulationOptions {
   /// 5(4)) integrator, relative to the state's scale (plus the same absolute floor in m).
   double tolerance = 1e-10;
   /// Nonlinear path only: events (stick, slip, reversal, a kink of a progressive spring) are
-  /// located to within this time, s.
+  /// located to within this time, s. Below resolvable_event_tolerance(duration) the
+  /// simulation uses that limit instead and says so in its summary.
   double event_tolerance = 1e-12;
   /// Returns false and explains in *why when an option is out of range: duration and time step
   /// positive, tolerances positive, final_speed finite and ≥ 0. Both paths check every option,
@@ -63,6 +64,12 @@ struct SimulationOptions {
   /// (a speed with sources, a ramp, the step count) are the simulation's own.
   bool is_valid(std::string* why) const;
 };
+
+/// The finest event tolerance a run of `duration` seconds can honour, s: events are located in
+/// absolute time t ≤ duration, where neighbouring doubles lie up to ε·duration apart
+/// (ε = 2⁻⁵² ≈ 2.2e-16), so a finer tolerance cannot be met and an event search held to it
+/// would stall between two neighbouring doubles (0.67 fs for a 3 s run).
+double resolvable_event_tolerance(double duration);
 
 /// The suspension nonlinearities a simulation follows; an effect left out is not built (the
 /// element keeps its linear stiffness and the linear path runs when nothing is named).

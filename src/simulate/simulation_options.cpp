@@ -19,6 +19,8 @@ bool SimulationOptions::is_valid(std::string* why) const {
   return true;
 }
 
+double resolvable_event_tolerance(double duration) { return std::numeric_limits<double>::epsilon() * duration; }
+
 namespace simulate {
 
 void summarise_history(TimeHistory* history, AnalysisSummary summary, std::string analysis, std::string method) {
