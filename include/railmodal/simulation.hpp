@@ -113,13 +113,33 @@ struct TimeHistory {
   AnalysisSummary summary;
 };
 
+/// Receives a history's samples in time order as a simulation produces them, a block of
+/// consecutive samples at a time, so that a long record can be written as it goes instead of
+/// held whole (simulate_linear and simulate_nonlinear given a sink keep no samples).
+class HistorySink {
+ public:
+  virtual ~HistorySink() = default;
+  /// Called once, before any work on the samples: the DOF labels (the columns) and how many
+  /// samples will come. A sink that cannot hold what it would need throws
+  /// std::invalid_argument here, with its estimate, and the simulation stops.
+  virtual void begin(const std::vector<std::string>& labels, Eigen::Index samples) = 0;
+  /// One row per sample: times (s) and, per DOF, displacements (m or rad) and velocities
+  /// (m/s or rad/s).
+  virtual void write(const Eigen::Ref<const Eigen::VectorXd>& time,
+                     const Eigen::Ref<const Eigen::MatrixXd>& displacement,
+                     const Eigen::Ref<const Eigen::MatrixXd>& velocity) = 0;
+};
+
 /// Linear scene: the sources enter through their harmonic loads Σ_k Re(Q_k e^{iω_k t}) (as in
 /// the harmonic response), the vehicle's viscous dampers through C. Throws std::invalid_argument
 /// for invalid options (SimulationOptions::is_valid), a speed ramp, more than 1e8 steps, sources
 /// without a positive speed, or initial conditions on unknown or massless DOFs.
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                             const SimulationOptions& options);
-
+/// The same, its samples given to `sink` as they are produced: the history returned holds the
+/// labels and the summary, and no samples.
+TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
+                            const SimulationOptions& options, HistorySink& sink);
 
 /// Nonlinear scene: the linear model plus the named suspension nonlinearities of its vertical
 /// elements, integrated by an adaptive Dormand–Prince 5(4) method whose steps end on the output
@@ -133,5 +153,9 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
 /// spring end), or massless degrees of freedom.
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                                const SimulationOptions& options, const NonlinearEffects& effects);
+/// The same, its samples given to `sink` as they are produced: the history returned holds the
+/// labels, events, step count and summary, and no samples.
+TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
+                               const SimulationOptions& options, const NonlinearEffects& effects, HistorySink& sink);
 
 }  // namespace railmodal

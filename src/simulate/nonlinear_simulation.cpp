@@ -356,7 +356,14 @@ struct FiredSlots {
 class Integration {
  public:
   Integration(Model& model, const SimulationOptions& options, Eigen::VectorXd y, TimeHistory& out)
-      : model_(model), options_(options), n_(model.size()), y_(std::move(y)), h_(options.time_step), out_(out) {}
+      : model_(model),
+        options_(options),
+        n_(model.size()),
+        y_(std::move(y)),
+        h_(options.time_step),
+        out_(out),
+        x_(1, n_),
+        v_(1, n_) {}
 
   // At rest at t = 0 every friction element is a candidate for sticking.
   void start_at_rest() {
@@ -370,10 +377,12 @@ class Integration {
     stamp(0);
   }
 
-  void record(int i, double t) {
-    out_.time(i) = t;
-    out_.displacement.row(i) = y_.head(n_).transpose();
-    out_.velocity.row(i) = y_.tail(n_).transpose();
+  // Gives the sample at t to the sink; returns whether it is finite.
+  bool record(double t, HistorySink& sink) {
+    x_ = y_.head(n_).transpose();
+    v_ = y_.tail(n_).transpose();
+    sink.write(Eigen::VectorXd::Constant(1, t), x_, v_);
+    return y_.allFinite();
   }
 
   void advance_to(double target) {
@@ -527,12 +536,24 @@ class Integration {
   std::vector<bool> just_fired_;  // slots that fired at the start of this step: their zero is behind us
   int events_here_ = 0;           // events in a row without time moving on
   TimeHistory& out_;
+  Eigen::MatrixXd x_, v_;  // the sample being recorded, as one row
 };
 
 }  // namespace
 
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                                const SimulationOptions& options, const NonlinearEffects& effects) {
+  TimeHistory out;
+  simulate::HistoryRecorder recorder(&out);
+  TimeHistory result = simulate_nonlinear(system, sources, options, effects, recorder);
+  result.time = std::move(out.time);
+  result.displacement = std::move(out.displacement);
+  result.velocity = std::move(out.velocity);
+  return result;
+}
+
+TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
+                               const SimulationOptions& options, const NonlinearEffects& effects, HistorySink& sink) {
   const int n = system.size();
   if (n == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
   require_valid(options, "simulation: ");
@@ -567,23 +588,21 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
   clock.lap("model");
   TimeHistory out;
   for (const auto& d : system.dofs) out.labels.push_back(d.label);
-  out.time.resize(outputs + 1);
-  out.displacement.resize(outputs + 1, n);
-  out.velocity.resize(outputs + 1, n);
+  sink.begin(out.labels, outputs + 1);
   Integration integration(model, used, std::move(y), out);
   integration.start_at_rest();
-  integration.record(0, 0.0);
+  bool finite = integration.record(0.0, sink);
   for (int i = 1; i <= outputs; ++i) {
     const double target = i * options.time_step;
     integration.advance_to(target);
-    integration.record(i, target);
+    finite = integration.record(target, sink) && finite;
   }
   clock.lap("integrate");
   summary.checks.push_back({"integrator steps", static_cast<double>(out.steps_taken),
                             std::numeric_limits<double>::infinity(), true});
   summary.checks.push_back({"events", static_cast<double>(out.events.size()), std::numeric_limits<double>::infinity(),
                             true});
-  simulate::summarise_history(&out, std::move(summary), "time history, nonlinear",
+  simulate::summarise_history(&out, outputs + 1, finite, std::move(summary), "time history, nonlinear",
                               "adaptive Dormand–Prince 5(4), events located by Illinois false position");
   return out;
 }

@@ -3,6 +3,8 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <ostream>
+#include <string>
 
 namespace railmodal::cli {
 
@@ -22,6 +24,10 @@ std::function<int()> add_compare_command(CLI::App& app);
 /// Writes `text` to `path` whole or not at all (temporary file, then rename); "-" or ""
 /// is standard output. Returns kOutput with a message on stderr when it cannot.
 int write_output(const std::string& path, const std::string& text);
+/// The same for text that `write` streams into the file as it is produced, so that it is never
+/// held whole; `write` returns an exit code, and anything but kSuccess (or an exception)
+/// leaves no file.
+int write_output(const std::string& path, const std::function<int(std::ostream&)>& write);
 
 /// A progress reporter for long runs: shows "name: 42 %" on stderr, only when stderr is a
 /// terminal and only once the run has taken a second; clears the line at 100 %.

@@ -9,9 +9,17 @@
 namespace railmodal::cli {
 
 int write_output(const std::string& path, const std::string& text) {
+  return write_output(path, [&text](std::ostream& out) {
+    out << text;
+    return kSuccess;
+  });
+}
+
+int write_output(const std::string& path, const std::function<int(std::ostream&)>& write) {
   if (path.empty() || path == "-") {
-    std::cout << text << std::flush;
-    return std::cout ? kSuccess : kOutput;
+    const int code = write(std::cout);
+    std::cout << std::flush;
+    return code != kSuccess ? code : std::cout ? kSuccess : kOutput;
   }
   namespace fs = std::filesystem;
   const fs::path target(path);
@@ -20,8 +28,9 @@ int write_output(const std::string& path, const std::string& text) {
   if (fs::exists(status) && !fs::is_regular_file(status)) {
     // A device or pipe (/dev/null, a FIFO): write into it; renaming over it would replace it.
     std::ofstream out(target, std::ios::binary);
-    out << text;
+    const int code = write(out);
     out.close();
+    if (code != kSuccess) return code;
     if (out) return kSuccess;
     std::cerr << path << ": error: cannot write the output file\n";
     return kOutput;
@@ -29,11 +38,20 @@ int write_output(const std::string& path, const std::string& text) {
   const fs::path temporary = target.parent_path() / ("." + target.filename().string() + ".tmp");
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out) {
+    int code = kSuccess;
+    try {
+      code = write(out);
+    } catch (...) {
+      out.close();
       std::error_code ignored;
       fs::remove(temporary, ignored);
+      throw;
+    }
+    out.close();
+    if (code != kSuccess || !out) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      if (code != kSuccess) return code;
       std::cerr << path << ": error: cannot write the output file\n";
       return kOutput;
     }
