@@ -362,6 +362,7 @@ class Integration {
         y_(std::move(y)),
         h_(options.time_step),
         out_(out),
+        time_(1),
         x_(1, n_),
         v_(1, n_) {}
 
@@ -379,9 +380,10 @@ class Integration {
 
   // Gives the sample at t to the sink; returns whether it is finite.
   bool record(double t, HistorySink& sink) {
+    time_(0) = t;
     x_ = y_.head(n_).transpose();
     v_ = y_.tail(n_).transpose();
-    sink.write(Eigen::VectorXd::Constant(1, t), x_, v_);
+    sink.write(time_, x_, v_);
     return y_.allFinite();
   }
 
@@ -536,7 +538,8 @@ class Integration {
   std::vector<bool> just_fired_;  // slots that fired at the start of this step: their zero is behind us
   int events_here_ = 0;           // events in a row without time moving on
   TimeHistory& out_;
-  Eigen::MatrixXd x_, v_;  // the sample being recorded, as one row
+  Eigen::VectorXd time_;  // the sample being recorded, as one row
+  Eigen::MatrixXd x_, v_;
 };
 
 }  // namespace
