@@ -50,7 +50,9 @@ struct CriticalSpeedStudy {
 /// scene's step and every critical speed.
 /// `progress`, if given, is called with the fraction done (0…1) as the sweep advances (the
 /// command line shows it on a terminal when a study takes over a second). Throws
-/// NumericalError for a vehicle with an unstable mode: it has no steady response.
+/// NumericalError for a vehicle with an unstable mode: it has no steady response, and
+/// std::invalid_argument, before the sweep and with the estimate, for curves of more than 10⁷
+/// points (sources × outputs × speeds of the grid; docs/input.md, "Resource limits").
 CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle,
                                          const std::function<void(double)>& progress = {});
 

@@ -33,13 +33,49 @@ LinearSystem scene_system(const Scene& scene, const Vehicle& vehicle);
 /// The nonlinearities the scene names (leaf_friction, progressive_springs).
 NonlinearEffects scene_effects(const Scene& scene);
 
+/// The memory, bytes, that a run may spend on the samples it must hold whole (an FFT needs the
+/// whole record, and a JSON history is written a DOF at a time): 4 GB, fixed, so that a scene
+/// is accepted or refused alike on every machine; half of a small 8 GB machine. Runs that
+/// would need more are refused before a sample is computed, with the estimate
+/// (docs/input.md, "Resource limits").
+constexpr double kDefaultMemoryLimit = 4e9;
+
 /// Runs the scene's [simulation] on the linear path, or on the nonlinear one when it names a
 /// nonlinearity (std::invalid_argument if it has none).
 TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle);
+/// The same, its samples given to each of `sinks` as they are produced (the history returned
+/// holds no samples): memory stays bounded by what the sinks keep.
+TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle, const std::vector<HistorySink*>& sinks);
 
 /// The columns of a scene's history that it outputs: the DOFs its [simulation] names, in the
 /// history's order, or every DOF when it names none.
 std::vector<int> output_columns(const TimeHistory& history, const Scene& scene);
+std::vector<int> output_columns(const std::vector<std::string>& labels, const Scene& scene);
+
+/// A sink that keeps the times and displacements of a scene's output columns, all that a JSON
+/// history and the output spectra need: history() has the output DOFs as its labels and
+/// columns, and no velocities. Its begin() refuses (std::invalid_argument, with the estimate)
+/// a record over `memory_limit` bytes: 8 bytes a sample for the time and for each output, and
+/// with `for_spectra` the spectra's own 16 a sample for each output and the transform's 120
+/// (output_spectra: ×4 zero padding).
+class OutputRecord final : public HistorySink {
+ public:
+  OutputRecord(const Scene& scene, bool for_spectra, double memory_limit = kDefaultMemoryLimit);
+  void begin(const std::vector<std::string>& labels, Eigen::Index samples) override;
+  void write(const Eigen::Ref<const Eigen::VectorXd>& time, const Eigen::Ref<const Eigen::MatrixXd>& displacement,
+             const Eigen::Ref<const Eigen::MatrixXd>& velocity) override;
+  /// The record, with the events, step count and summary of `result` (what simulate_scene
+  /// returned); the record is moved out.
+  TimeHistory history(TimeHistory result);
+
+ private:
+  const Scene& scene_;
+  bool for_spectra_;
+  double memory_limit_;
+  std::vector<int> columns_;
+  TimeHistory record_;
+  Eigen::Index next_ = 0;
+};
 
 /// The amplitude spectra of a scene's outputs, taken as fft_check takes them (Hann window,
 /// zero-padded ×4): peak amplitudes of the displacement in m or rad, up to the Nyquist
@@ -103,7 +139,10 @@ struct FftCheckResult {
 
 /// Simulates the scene and compares the spectral peaks of each excited oscillatory mode's
 /// most energetic DOF with the modal frequencies (modes above half the Nyquist frequency are
-/// left out: the step cannot resolve them).
-FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle);
+/// left out: the step cannot resolve them). It holds the whole record of every DOF, with
+/// velocities, and spectra: refused before simulating (std::invalid_argument, with the
+/// estimate) when that would take over `memory_limit` bytes, estimated as 40 bytes a sample
+/// for each DOF and 100 for the transform (measured: 294 bytes a sample for 6 DOFs).
+FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memory_limit = kDefaultMemoryLimit);
 
 }  // namespace railmodal

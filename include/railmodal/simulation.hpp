@@ -55,7 +55,8 @@ struct SimulationOptions {
   /// 5(4)) integrator, relative to the state's scale (plus the same absolute floor in m).
   double tolerance = 1e-10;
   /// Nonlinear path only: events (stick, slip, reversal, a kink of a progressive spring) are
-  /// located to within this time, s.
+  /// located to within this time, s. Below resolvable_event_tolerance(duration) the
+  /// simulation uses that limit instead and says so in its summary.
   double event_tolerance = 1e-12;
   /// Returns false and explains in *why when an option is out of range: duration and time step
   /// positive, tolerances positive, final_speed finite and ≥ 0. Both paths check every option,
@@ -63,6 +64,12 @@ struct SimulationOptions {
   /// (a speed with sources, a ramp, the step count) are the simulation's own.
   bool is_valid(std::string* why) const;
 };
+
+/// The finest event tolerance a run of `duration` seconds can honour, s: events are located in
+/// absolute time t ≤ duration, where neighbouring doubles lie up to ε·duration apart
+/// (ε = 2⁻⁵² ≈ 2.2e-16), so a finer tolerance cannot be met and an event search held to it
+/// would stall between two neighbouring doubles (0.67 fs for a 3 s run).
+double resolvable_event_tolerance(double duration);
 
 /// The suspension nonlinearities a simulation follows; an effect left out is not built (the
 /// element keeps its linear stiffness and the linear path runs when nothing is named).
@@ -106,13 +113,33 @@ struct TimeHistory {
   AnalysisSummary summary;
 };
 
+/// Receives a history's samples in time order as a simulation produces them, a block of
+/// consecutive samples at a time, so that a long record can be written as it goes instead of
+/// held whole (simulate_linear and simulate_nonlinear given a sink keep no samples).
+class HistorySink {
+ public:
+  virtual ~HistorySink() = default;
+  /// Called once, before any work on the samples: the DOF labels (the columns) and how many
+  /// samples will come. A sink that cannot hold what it would need throws
+  /// std::invalid_argument here, with its estimate, and the simulation stops.
+  virtual void begin(const std::vector<std::string>& labels, Eigen::Index samples) = 0;
+  /// One row per sample: times (s) and, per DOF, displacements (m or rad) and velocities
+  /// (m/s or rad/s).
+  virtual void write(const Eigen::Ref<const Eigen::VectorXd>& time,
+                     const Eigen::Ref<const Eigen::MatrixXd>& displacement,
+                     const Eigen::Ref<const Eigen::MatrixXd>& velocity) = 0;
+};
+
 /// Linear scene: the sources enter through their harmonic loads Σ_k Re(Q_k e^{iω_k t}) (as in
 /// the harmonic response), the vehicle's viscous dampers through C. Throws std::invalid_argument
 /// for invalid options (SimulationOptions::is_valid), a speed ramp, more than 1e8 steps, sources
 /// without a positive speed, or initial conditions on unknown or massless DOFs.
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                             const SimulationOptions& options);
-
+/// The same, its samples given to `sink` as they are produced: the history returned holds the
+/// labels and the summary, and no samples.
+TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
+                            const SimulationOptions& options, HistorySink& sink);
 
 /// Nonlinear scene: the linear model plus the named suspension nonlinearities of its vertical
 /// elements, integrated by an adaptive Dormand–Prince 5(4) method whose steps end on the output
@@ -126,5 +153,9 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
 /// spring end), or massless degrees of freedom.
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                                const SimulationOptions& options, const NonlinearEffects& effects);
+/// The same, its samples given to `sink` as they are produced: the history returned holds the
+/// labels, events, step count and summary, and no samples.
+TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
+                               const SimulationOptions& options, const NonlinearEffects& effects, HistorySink& sink);
 
 }  // namespace railmodal

@@ -16,6 +16,8 @@
 #pragma once
 
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "railmodal/output_format.hpp"
 #include "railmodal/scene_simulation.hpp"
@@ -27,9 +29,25 @@ namespace railmodal {
 /// scene's simulation outputs (output_columns), numbers to ten significant digits. csv:
 /// "time_s" and one column per DOF, one row per sample; json: {"scene", "time_s",
 /// "displacement": {label: [...]}}, and for a nonlinear scene "events": [{"time_s", "element",
-/// "kind"}] and "integration_steps". `vehicle` names the events' elements.
+/// "kind"}] and "integration_steps". `vehicle` names the events' elements. The history may be
+/// an OutputRecord's (its output columns only). The text is streamed, never held whole.
 void write_time_history(std::ostream& out, const TimeHistory& history, const Scene& scene, const Vehicle& vehicle,
                         OutputFormat format);
+
+/// Writes the csv of write_time_history as the simulation produces it, row by row, holding no
+/// samples: pass it to simulate_scene as a sink (and an OutputRecord beside it for spectra).
+class CsvHistoryWriter final : public HistorySink {
+ public:
+  CsvHistoryWriter(std::ostream& out, const Scene& scene);
+  void begin(const std::vector<std::string>& labels, Eigen::Index samples) override;  ///< the header
+  void write(const Eigen::Ref<const Eigen::VectorXd>& time, const Eigen::Ref<const Eigen::MatrixXd>& displacement,
+             const Eigen::Ref<const Eigen::MatrixXd>& velocity) override;
+
+ private:
+  std::ostream& out_;
+  const Scene& scene_;
+  std::vector<int> columns_;
+};
 
 /// Writes csv (std::invalid_argument for every other format): "frequency_hz" and one column
 /// per DOF, one row per bin up to the Nyquist frequency, amplitudes to ten significant digits.

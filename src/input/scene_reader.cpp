@@ -1,6 +1,7 @@
 #include <algorithm>
 // load_scene: [scene], [speed], [[source]] and [[output]] tables.
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "input/document_readers.hpp"
@@ -195,7 +196,15 @@ SimulationSpec read_simulation(TableReader t, bool with_sources, std::map<std::s
     sim.tolerance = t.positive("tolerance", Quantity::dimensionless);
     if (!(sim.tolerance < 1e-2)) t.fail("tolerance", "must be below 1e-2 (default 1e-10)");
   }
-  if (t.has("event_tolerance")) sim.event_tolerance = t.positive("event_tolerance", Quantity::time);
+  if (t.has("event_tolerance")) {
+    sim.event_tolerance = t.positive("event_tolerance", Quantity::time);
+    if (sim.event_tolerance < resolvable_event_tolerance(sim.duration)) {
+      char limit[96];
+      std::snprintf(limit, sizeof limit, "%.2g s over a %.6g s run (2.2e-16 of the duration)",
+                    resolvable_event_tolerance(sim.duration), sim.duration);
+      t.fail("event_tolerance", std::string("is finer than double precision resolves time: at least ") + limit);
+    }
+  }
   if (t.has("friction_law")) {
     sim.friction_law = t.string("friction_law");
     if (sim.friction_law != "proportional" && sim.friction_law != "constant")

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -76,6 +77,28 @@ std::vector<OutputRequest> curve_outputs(const Scene& scene, const CriticalSpeed
   return outputs;
 }
 
+// The curves hold sources × outputs × speeds points, and the grid holds every source's
+// critical speeds, so a scene's curves grow as the square of its sources (200 rail-joint
+// sources: 1000 curves of 1341 speeds, 113 MB of JSON; 2000: 1.45 GB). Refused before the
+// sweep above kMaxCurvePoints: about 3 GB while the JSON report is written (some 300 bytes a
+// point measured, where the study itself holds 17), and 10 times the points of a bundled
+// scene's largest grid (a [speed] range of 10⁶ steps for one source and output).
+constexpr double kMaxCurvePoints = 1e7;
+constexpr double kReportBytesPerPoint = 300.0;
+
+void check_curve_points(size_t sources, size_t outputs, size_t speeds, size_t critical_speeds) {
+  const double points = static_cast<double>(sources) * static_cast<double>(outputs) * static_cast<double>(speeds);
+  if (points <= kMaxCurvePoints) return;
+  char message[400];
+  std::snprintf(message, sizeof message,
+                "the amplitude curves would need about %.2g GB for %zu sources x %zu outputs x %zu speeds (the "
+                "scene's grid and all %zu critical speeds) = %.3g points; the limit is %.0e points (about %.0f GB): "
+                "give fewer sources or outputs, or a coarser [speed] step",
+                points * kReportBytesPerPoint / 1e9, sources, outputs, speeds, critical_speeds, points, kMaxCurvePoints,
+                kMaxCurvePoints * kReportBytesPerPoint / 1e9);
+  throw std::invalid_argument(message);
+}
+
 // One source's curves over the whole grid, swept in chunks so that a long sweep reports its
 // progress (`done` sweeps are finished before this one, of `total` speeds × sources).
 std::vector<AmplitudeCurve> source_curves(const CriticalSpeedStudy& study, const ExcitationSource& source,
@@ -139,6 +162,7 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
 
   const std::vector<OutputRequest> outputs = curve_outputs(scene, study);
   const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
+  check_curve_points(sources.size(), outputs.size(), speeds.size(), study.critical_speeds.size());
   const double total = static_cast<double>(sources.size() * speeds.size());
   const SpeedGrid grid(speeds);  // the chunks' grids joined, shared by every curve
   double sweep_seconds = 0.0, peak_seconds = 0.0;  // interleaved per source: timed apart

@@ -1,4 +1,4 @@
-// The summary both simulation paths give their history.
+// The summary both simulation paths give their history, and the sinks the library keeps for itself.
 #pragma once
 
 #include <string>
@@ -9,6 +9,33 @@ namespace railmodal::simulate {
 
 /// Moves `summary` (its stages timed) into history->summary with the analysis, the method and
 /// the checks every history gets: its samples are finite, and how many there are.
-void summarise_history(TimeHistory* history, AnalysisSummary summary, std::string analysis, std::string method);
+void summarise_history(TimeHistory* history, Eigen::Index samples, bool finite, AnalysisSummary summary,
+                       std::string analysis, std::string method);
+
+/// A sink that keeps every sample in a TimeHistory: what the simulations return when given no
+/// sink of their own.
+class HistoryRecorder final : public HistorySink {
+ public:
+  explicit HistoryRecorder(TimeHistory* history) : history_(history) {}
+  void begin(const std::vector<std::string>& labels, Eigen::Index samples) override;
+  void write(const Eigen::Ref<const Eigen::VectorXd>& time, const Eigen::Ref<const Eigen::MatrixXd>& displacement,
+             const Eigen::Ref<const Eigen::MatrixXd>& velocity) override;
+
+ private:
+  TimeHistory* history_;
+  Eigen::Index next_ = 0;
+};
+
+/// Passes every block to each of `sinks` in turn.
+class HistoryFanOut final : public HistorySink {
+ public:
+  explicit HistoryFanOut(std::vector<HistorySink*> sinks) : sinks_(std::move(sinks)) {}
+  void begin(const std::vector<std::string>& labels, Eigen::Index samples) override;
+  void write(const Eigen::Ref<const Eigen::VectorXd>& time, const Eigen::Ref<const Eigen::MatrixXd>& displacement,
+             const Eigen::Ref<const Eigen::MatrixXd>& velocity) override;
+
+ private:
+  std::vector<HistorySink*> sinks_;
+};
 
 }  // namespace railmodal::simulate

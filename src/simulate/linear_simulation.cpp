@@ -3,12 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <cstdint>
 #include <stdexcept>
 #include <unsupported/Eigen/MatrixFunctions>
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
 
 #include "railmodal/errors.hpp"
 #include "railmodal/simulation.hpp"
@@ -89,24 +85,6 @@ Transition transition(const Partition& p, double h) {
   if (!t.Phi.allFinite() || !t.Gamma0.allFinite() || !t.Gamma1.allFinite())
     throw NumericalError("simulation: the state transition overflowed (an unstable vehicle over this step?)");
   return t;
-}
-
-// Asks the kernel to back a large output array with 2 MB pages, as numpy does for every array
-// of 4 MB or more: a million steps of 15 DOFs is 240 MB of output, whose first touch with
-// 4 kB pages is 60 000 page faults; with huge pages it is 120. Under a hypervisor that
-// shadows guest page tables a fault costs ~17 µs, so this took a million-step run from 1.4 s
-// to 0.5 s (before the product below); on bare metal it saves less. Only advice: it changes no result, and does nothing
-// where unsupported.
-void advise_huge_pages(Eigen::MatrixXd* array) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
-  const auto begin = reinterpret_cast<std::uintptr_t>(array->data());
-  const std::uintptr_t end = begin + static_cast<std::uintptr_t>(array->size()) * sizeof(double);
-  const std::uintptr_t first = (begin + kHuge - 1) & ~(kHuge - 1), last = end & ~(kHuge - 1);
-  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
-#else
-  (void)array;
-#endif
 }
 
 // y = G z for G column-major R × cols, R a multiple of kRows (8): a block of K rows at a time,
@@ -223,20 +201,6 @@ MasslessRecovery massless_recovery(const Partition& p, const std::vector<Harmoni
   return rec;
 }
 
-// The output arrays for steps + 1 instants, with their times.
-TimeHistory empty_history(const LinearSystem& system, int steps, double h) {
-  const int n = system.size();
-  TimeHistory out;
-  for (const auto& d : system.dofs) out.labels.push_back(d.label);
-  out.time.resize(steps + 1);
-  for (int i = 0; i <= steps; ++i) out.time(i) = i * h;
-  out.displacement.resize(steps + 1, n);
-  out.velocity.resize(steps + 1, n);
-  advise_huge_pages(&out.displacement);
-  advise_huge_pages(&out.velocity);
-  return out;
-}
-
 // The phases advance by rotation, p ← p e^{iωΔt}; they are reset to e^{iωt} from t every
 // kResync steps so that the rounding of the rotations does not build up over long records.
 constexpr int kResync = 1024;
@@ -260,15 +224,19 @@ void advance_phases(const std::vector<Harmonic>& harmonics, const StepVector& z,
 }
 
 // March in blocks of kBlock steps through a small buffer of z (one column per step, in
-// cache), then copy each block into the per-DOF columns of the output: the transposition
-// is done a cache-sized block at a time, and the loop itself allocates nothing.
-void march(const Eigen::MatrixXd& G, const MasslessRecovery& rec, const std::vector<Harmonic>& harmonics,
-           const Partition& p, const StepVector& z, const Eigen::VectorXd& z0, double h, TimeHistory& out) {
+// cache), then hand each block to the sink as rows of samples (the transposition is done a
+// cache-sized block at a time, and the loop itself allocates nothing). Returns whether every
+// sample was finite.
+bool march(const Eigen::MatrixXd& G, const MasslessRecovery& rec, const std::vector<Harmonic>& harmonics,
+           const Partition& p, const StepVector& z, const Eigen::VectorXd& z0, double h, int steps, HistorySink& sink) {
   constexpr int kBlock = 128;
-  const int steps = static_cast<int>(out.time.size()) - 1;
   const int r = z.r, m = static_cast<int>(p.massless.size());
+  const int n = r + m;
   Eigen::MatrixXd buffer(z.size(), kBlock);
   Eigen::MatrixXd xm(m, kBlock), vm(m, kBlock);
+  Eigen::MatrixXd x(kBlock, n), v(kBlock, n);
+  Eigen::VectorXd time(kBlock);
+  bool finite = true;
   buffer.col(0) = z0;
   for (int first = 0; first <= steps; first += kBlock) {
     const int count = std::min(kBlock, steps + 1 - first);
@@ -278,25 +246,41 @@ void march(const Eigen::MatrixXd& G, const MasslessRecovery& rec, const std::vec
       next_state(G.data(), z.R, z.size(), prev.data(), next.data());
       advance_phases(harmonics, z, first + c, h, prev.data(), next.data());
     }
+    for (int c = 0; c < count; ++c) time(c) = (first + c) * h;
     const auto block = buffer.leftCols(count);
     for (int j = 0; j < r; ++j) {
-      out.displacement.col(p.kept[j]).segment(first, count) = block.row(j).transpose();
-      out.velocity.col(p.kept[j]).segment(first, count) = block.row(r + j).transpose();
+      x.col(p.kept[j]).head(count) = block.row(j).transpose();
+      v.col(p.kept[j]).head(count) = block.row(r + j).transpose();
     }
-    if (m == 0) continue;
-    xm.leftCols(count).noalias() = rec.Rx * block;
-    vm.leftCols(count).noalias() = rec.Rv * block;
-    for (int j = 0; j < m; ++j) {
-      out.displacement.col(p.massless[j]).segment(first, count) = xm.row(j).head(count).transpose();
-      out.velocity.col(p.massless[j]).segment(first, count) = vm.row(j).head(count).transpose();
+    if (m > 0) {
+      xm.leftCols(count).noalias() = rec.Rx * block;
+      vm.leftCols(count).noalias() = rec.Rv * block;
+      for (int j = 0; j < m; ++j) {
+        x.col(p.massless[j]).head(count) = xm.row(j).head(count).transpose();
+        v.col(p.massless[j]).head(count) = vm.row(j).head(count).transpose();
+      }
     }
+    finite = finite && x.topRows(count).allFinite() && v.topRows(count).allFinite();
+    sink.write(time.head(count), x.topRows(count), v.topRows(count));
   }
+  return finite;
 }
 
 }  // namespace
 
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                             const SimulationOptions& options) {
+  TimeHistory out;
+  simulate::HistoryRecorder recorder(&out);
+  TimeHistory result = simulate_linear(system, sources, options, recorder);
+  result.time = std::move(out.time);
+  result.displacement = std::move(out.displacement);
+  result.velocity = std::move(out.velocity);
+  return result;
+}
+
+TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
+                            const SimulationOptions& options, HistorySink& sink) {
   const int n = system.size();
   if (n == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
   require_valid(options, "simulation: ");
@@ -323,10 +307,12 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
   const MasslessRecovery recovery = massless_recovery(p, harmonics, z);
   clock.lap("state transition");
 
-  TimeHistory out = empty_history(system, steps, h);
-  march(G, recovery, harmonics, p, z, z0, h, out);
+  TimeHistory out;
+  for (const auto& d : system.dofs) out.labels.push_back(d.label);
+  sink.begin(out.labels, steps + 1);
+  const bool finite = march(G, recovery, harmonics, p, z, z0, h, steps, sink);
   clock.lap("march");
-  simulate::summarise_history(&out, std::move(summary), "time history, linear",
+  simulate::summarise_history(&out, steps + 1, finite, std::move(summary), "time history, linear",
                               "exact state transition e^{AΔt} with first-order-hold load (Van Loan)");
   return out;
 }

@@ -357,7 +357,15 @@ struct FiredSlots {
 class Integration {
  public:
   Integration(Model& model, const SimulationOptions& options, Eigen::VectorXd y, TimeHistory& out)
-      : model_(model), options_(options), n_(model.size()), y_(std::move(y)), h_(options.time_step), out_(out) {}
+      : model_(model),
+        options_(options),
+        n_(model.size()),
+        y_(std::move(y)),
+        h_(options.time_step),
+        out_(out),
+        time_(1),
+        x_(1, n_),
+        v_(1, n_) {}
 
   // At rest at t = 0 every friction element is a candidate for sticking.
   void start_at_rest() {
@@ -371,10 +379,13 @@ class Integration {
     stamp(0);
   }
 
-  void record(int i, double t) {
-    out_.time(i) = t;
-    out_.displacement.row(i) = y_.head(n_).transpose();
-    out_.velocity.row(i) = y_.tail(n_).transpose();
+  // Gives the sample at t to the sink; returns whether it is finite.
+  bool record(double t, HistorySink& sink) {
+    time_(0) = t;
+    x_ = y_.head(n_).transpose();
+    v_ = y_.tail(n_).transpose();
+    sink.write(time_, x_, v_);
+    return y_.allFinite();
   }
 
   void advance_to(double target) {
@@ -436,14 +447,23 @@ class Integration {
   }
 
   // Illinois false position on the step length for slot s's zero; the root is bracketed by
-  // (lo, hi], and hi is returned.
+  // (lo, hi], and hi is returned. It stops at the event tolerance, or where no double lies
+  // between lo and hi; the bound on the iterations only guards against a bracket that stops
+  // shrinking (Illinois converges superlinearly, and even bisection from a 1 s step reaches
+  // 1e-300 s in 1000 halvings: 400 is far beyond what a located zero takes).
   double locate_zero(const std::vector<Slot>& slots, size_t s, double hh, double glo, double ghi) const {
+    constexpr int kMaxIterations = 400;
     double lo = 0.0, hi = hh;
     if (slots[s].kind != Slot::Kind::kink && glo < 0.0) glo = 0.0;  // already past: fire at once
     int side = 0;
-    while (hi - lo > options_.event_tolerance && glo != 0.0) {
+    for (int iteration = 0; hi - lo > options_.event_tolerance && glo != 0.0; ++iteration) {
+      if (iteration == kMaxIterations)
+        throw NumericalError("simulation: an event near t = " + std::to_string(t_) + " s was not located to " +
+                             std::to_string(options_.event_tolerance) + " s in " + std::to_string(kMaxIterations) +
+                             " iterations; try a larger event_tolerance");
       double mid = (lo * ghi - hi * glo) / (ghi - glo);
       if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+      if (!(mid > lo && mid < hi)) break;  // lo and hi are neighbouring doubles
       const auto trial = step_from_here(mid);
       const double g = model_.slot_values(slots, t_ + mid, trial.y)[s];
       if ((g > 0.0) == (glo > 0.0)) {
@@ -519,12 +539,25 @@ class Integration {
   std::vector<bool> just_fired_;  // slots that fired at the start of this step: their zero is behind us
   int events_here_ = 0;           // events in a row without time moving on
   TimeHistory& out_;
+  Eigen::VectorXd time_;  // the sample being recorded, as one row
+  Eigen::MatrixXd x_, v_;
 };
 
 }  // namespace
 
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                                const SimulationOptions& options, const NonlinearEffects& effects) {
+  TimeHistory out;
+  simulate::HistoryRecorder recorder(&out);
+  TimeHistory result = simulate_nonlinear(system, sources, options, effects, recorder);
+  result.time = std::move(out.time);
+  result.displacement = std::move(out.displacement);
+  result.velocity = std::move(out.velocity);
+  return result;
+}
+
+TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
+                               const SimulationOptions& options, const NonlinearEffects& effects, HistorySink& sink) {
   const int n = system.size();
   if (n == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
   require_valid(options, "simulation: ");
@@ -540,6 +573,12 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
 
   AnalysisSummary summary;
   StageClock clock(&summary);
+  SimulationOptions used = options;
+  if (used.event_tolerance < resolvable_event_tolerance(options.duration)) {
+    used.event_tolerance = resolvable_event_tolerance(options.duration);
+    summary.checks.push_back({"event tolerance raised to the resolution of time over the run (ε·duration), s",
+                              used.event_tolerance, std::numeric_limits<double>::infinity(), true});
+  }
   simulate::SpeedProfile profile;
   profile.initial = options.speed;
   if (options.final_speed > 0.0) profile.acceleration = (options.final_speed - options.speed) / options.duration;
@@ -553,23 +592,21 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
   clock.lap("model");
   TimeHistory out;
   for (const auto& d : system.dofs) out.labels.push_back(d.label);
-  out.time.resize(outputs + 1);
-  out.displacement.resize(outputs + 1, n);
-  out.velocity.resize(outputs + 1, n);
-  Integration integration(model, options, std::move(y), out);
+  sink.begin(out.labels, outputs + 1);
+  Integration integration(model, used, std::move(y), out);
   integration.start_at_rest();
-  integration.record(0, 0.0);
+  bool finite = integration.record(0.0, sink);
   for (int i = 1; i <= outputs; ++i) {
     const double target = i * options.time_step;
     integration.advance_to(target);
-    integration.record(i, target);
+    finite = integration.record(target, sink) && finite;
   }
   clock.lap("integrate");
   summary.checks.push_back({"integrator steps", static_cast<double>(out.steps_taken),
                             std::numeric_limits<double>::infinity(), true});
   summary.checks.push_back({"events", static_cast<double>(out.events.size()), std::numeric_limits<double>::infinity(),
                             true});
-  simulate::summarise_history(&out, std::move(summary), "time history, nonlinear",
+  simulate::summarise_history(&out, outputs + 1, finite, std::move(summary), "time history, nonlinear",
                               "adaptive Dormand–Prince 5(4), events located by Illinois false position");
   return out;
 }

@@ -19,15 +19,16 @@ bool SimulationOptions::is_valid(std::string* why) const {
   return true;
 }
 
+double resolvable_event_tolerance(double duration) { return std::numeric_limits<double>::epsilon() * duration; }
+
 namespace simulate {
 
-void summarise_history(TimeHistory* history, AnalysisSummary summary, std::string analysis, std::string method) {
+void summarise_history(TimeHistory* history, Eigen::Index samples, bool finite, AnalysisSummary summary,
+                       std::string analysis, std::string method) {
   summary.analysis = std::move(analysis);
   summary.method = std::move(method);
-  const bool finite = history->displacement.allFinite() && history->velocity.allFinite();
   summary.checks.push_back({"samples that are not finite", finite ? 0.0 : 1.0, 0.0, finite});
-  summary.checks.push_back({"samples", static_cast<double>(history->time.size()),
-                            std::numeric_limits<double>::infinity(), true});
+  summary.checks.push_back({"samples", static_cast<double>(samples), std::numeric_limits<double>::infinity(), true});
   history->summary = std::move(summary);
 }
 

@@ -136,6 +136,9 @@ TEST(SceneReader, SimulationErrors) {
   expect_simulation_error("tolerance = 1e-9", "tolerance = 0.5", {"key 'simulation.tolerance'", "below 1e-2"});
   expect_simulation_error("tolerance = 1e-9", "tolerance = -1e-9", {"key 'simulation.tolerance'"});
   expect_simulation_error("\"1e-10 s\"", "\"1e-10 mm\"", {"key 'simulation.event_tolerance'", "expected a time"});
+  // ε·2 s = 4.4e-16 s: 1e-30 s would hang the event search (issue 18, item 2).
+  expect_simulation_error("\"1e-10 s\"", "\"1e-30 s\"",
+                          {"key 'simulation.event_tolerance'", "finer than double precision", "at least 4.4e-16 s"});
   expect_simulation_error("speed = \"75 km/h\"\n", "", {"key 'simulation.speed'", "missing"});
   expect_simulation_error("time_step = \"1 ms\"", "time_step = \"3 s\"", {"key 'simulation.time_step'", "longer than the duration"});
   expect_simulation_error("speed = \"75 km/h\"", "speed = \"75 km/h\"\nfinal_speed = \"100 kgf\"",

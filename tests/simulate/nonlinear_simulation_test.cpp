@@ -1,5 +1,6 @@
 // The nonlinear path: only the named effects are built, the curve of a progressive spring,
 // and what it refuses (with a message that says why).
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <memory>
@@ -162,6 +163,29 @@ vertical = [{ kind = "leaf", static_deflection = "145 mm", relative_friction = 0
   }
   o.event_tolerance = 0.0;
   EXPECT_THROW(simulate_nonlinear(sys, {}, o, NonlinearEffects{}), std::invalid_argument);
+}
+
+// An event tolerance finer than time can be resolved over the run (issue 18, item 2: 1e-30 s
+// never returned) is raised to ε·duration, and the summary says so. The run then locates the
+// same events as one asked for that limit: bit for bit, since the options it runs with are the same.
+TEST(NonlinearSimulation, EventToleranceBelowTheResolutionIsRaised) {
+  Scene s = load_scene(scene_file("two_axle_freight_wagon_joints_friction.toml"));
+  const Vehicle v = load_vehicle(s.vehicle_file);
+  s.simulation->duration = 1.0;
+  s.simulation->event_tolerance = 1e-30;
+  const TimeHistory fine = simulate_scene(s, v);
+  const double limit = resolvable_event_tolerance(1.0);
+  EXPECT_EQ(limit, std::ldexp(1.0, -52));
+  const auto raised = std::find_if(fine.summary.checks.begin(), fine.summary.checks.end(),
+                                   [](const Check& c) { return c.name.find("event tolerance raised") == 0; });
+  ASSERT_NE(raised, fine.summary.checks.end());
+  EXPECT_EQ(raised->value, limit);
+  s.simulation->event_tolerance = limit;
+  const TimeHistory at_limit = simulate_scene(s, v);
+  ASSERT_FALSE(fine.events.empty());
+  ASSERT_EQ(fine.events.size(), at_limit.events.size());
+  for (size_t e = 0; e < fine.events.size(); ++e) EXPECT_EQ(fine.events[e].time, at_limit.events[e].time);
+  EXPECT_EQ(fine.displacement, at_limit.displacement);
 }
 
 }  // namespace

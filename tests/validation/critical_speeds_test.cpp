@@ -96,6 +96,29 @@ TEST(CriticalSpeeds, StudyReportsProgress) {
   EXPECT_DOUBLE_EQ(seen.back(), 1.0);
 }
 
+// Issue 18, item 5: every curve is swept on a grid that holds every source's critical speeds,
+// so the curves grow as the square of the sources (2000 sources: 1.45 GB of JSON, 4.8 GB of
+// memory). 2000 rail-joint sources of distinct lengths (some 4 critical speeds each in range)
+// give about 2000 × 2 outputs × 8000 speeds = 3e7 points, over the limit of 1e7: refused
+// before the sweep, with the estimate.
+TEST(CriticalSpeeds, StudyRefusesCurvesBeyondTheLimit) {
+  Scene scene = load_scene(scene_file("resort_car_10m_rails.toml"));
+  for (int i = 1; i < 2000; ++i) {
+    RailJoints joints;
+    joints.rail_length = 10.0 + 1e-3 * i;
+    joints.dip_depth = 0.005;
+    scene.sources.push_back(make_source(joints));
+  }
+  try {
+    study_critical_speeds(scene, load_vehicle(scene.vehicle_file));
+    FAIL() << "curves of 2000 sources were swept";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    for (const char* part : {"would need about", "GB for 2000 sources x 2 outputs x ", "the limit is 1e+07 points"})
+      EXPECT_NE(what.find(part), std::string::npos) << what;
+  }
+}
+
 // Square joints excite bounce and pitch only; the lateral modes of a full model get no row.
 TEST(CriticalSpeeds, SquareJointsDoNotExciteLateralModes) {
   Scene scene = load_scene(scene_file("resort_car_10m_rails.toml"));

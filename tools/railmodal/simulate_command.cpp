@@ -1,8 +1,9 @@
-// railmodal simulate SCENE [--vehicle WAGON] [--format csv|json] [-o OUT] [--spectra SPECTRA.csv]
-// railmodal fft-check SCENE [--vehicle WAGON] [--format table|csv|json|html] [-o OUT]
+// railmodal simulate SCENE [--vehicle WAGON] [--format csv|json] [-o OUT] [--spectra SPECTRA.csv] [--memory-limit GB]
+// railmodal fft-check SCENE [--vehicle WAGON] [--format table|csv|json|html] [-o OUT] [--memory-limit GB]
 #include <iostream>
 #include <memory>
-#include <sstream>
+#include <optional>
+#include <vector>
 
 #include "commands.hpp"
 #include "output_file.hpp"
@@ -17,6 +18,7 @@ struct SimulateOptions {
   std::string format;
   std::string output = "-";
   std::string spectra;  // simulate: also the amplitude spectra, to this file
+  double memory_limit_gb = kDefaultMemoryLimit / 1e9;  // for what a run must hold whole
 };
 
 // Loads the scene and its vehicle; the command line's vehicle wins over the scene's.
@@ -35,8 +37,39 @@ int load(const SimulateOptions& o, Scene* scene, Vehicle* vehicle) {
   return kSuccess;
 }
 
+// simulate: a csv history streams to `text` as the run goes; a json one, and the spectra
+// (`spectra`, if asked for), are written from the record of the outputs once it is complete.
+void write_simulation(const SimulateOptions& o, const Scene& scene, const Vehicle& vehicle, std::ostream& text,
+                      std::ostream* spectra) {
+  const OutputFormat format = *output_format_from_string(o.format);
+  CsvHistoryWriter csv(text, scene);
+  std::optional<OutputRecord> record;
+  if (format == OutputFormat::json || spectra) record.emplace(scene, spectra != nullptr, o.memory_limit_gb * 1e9);
+  std::vector<HistorySink*> sinks;
+  if (record) sinks.push_back(&*record);  // first: it refuses a record too large before any text
+  if (format == OutputFormat::csv) sinks.push_back(&csv);
+  const TimeHistory result = simulate_scene(scene, vehicle, sinks);
+  if (!record) return;
+  const TimeHistory h = record->history(result);
+  if (format == OutputFormat::json) write_time_history(text, h, scene, vehicle, format);
+  if (spectra) write_spectra(*spectra, output_spectra(h, scene), OutputFormat::csv);
+}
+
+// Everything one run writes, into the streams of its outputs (spectra: null when not asked).
+void write_run(const SimulateOptions& o, bool check, const Scene& scene, const Vehicle& vehicle, std::ostream& text,
+               std::ostream* spectra) {
+  try {
+    if (check)
+      write_fft_check(text, fft_check(scene, vehicle, o.memory_limit_gb * 1e9), scene, vehicle,
+                      *output_format_from_string(o.format));
+    else
+      write_simulation(o, scene, vehicle, text, spectra);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(o.scene, 0, 0, e.what());
+  }
+}
+
 int run(const SimulateOptions& o, bool check) {
-  const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   try {
     OutputFiles outputs;
     std::ostream& text = outputs.open(o.output);
@@ -45,17 +78,7 @@ int run(const SimulateOptions& o, bool check) {
     Vehicle vehicle;
     if (const int code = load(o, &scene, &vehicle); code != kSuccess) return code;
     outputs.refuse_inputs({o.scene, scene.vehicle_file});
-    try {
-      if (check) {
-        write_fft_check(text, fft_check(scene, vehicle), scene, vehicle, format);
-      } else {
-        const TimeHistory h = simulate_scene(scene, vehicle);
-        write_time_history(text, h, scene, vehicle, format);
-        if (spectra) write_spectra(*spectra, output_spectra(h, scene), OutputFormat::csv);
-      }
-    } catch (const std::invalid_argument& e) {
-      throw InputError(o.scene, 0, 0, e.what());
-    }
+    write_run(o, check, scene, vehicle, text, spectra);
     outputs.commit();
     return kSuccess;
   } catch (const InputError& e) {
@@ -80,6 +103,11 @@ std::function<int()> add(CLI::App& app, const std::string& name, const std::stri
   if (!check)
     cmd->add_option("--spectra", options->spectra,
                     "Also write the amplitude spectra of the written DOFs (CSV: Hann, zero-padded x4, peak amplitudes)");
+  cmd->add_option("--memory-limit", options->memory_limit_gb,
+                  "GB a run may hold for a record it needs whole (fft-check, --spectra, json); larger runs are "
+                  "refused up front")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   return [options, check] { return run(*options, check); };
 }
 
