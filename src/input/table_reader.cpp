@@ -230,10 +230,7 @@ void TableReader::finish() const {
 }
 
 toml::value parse_toml_file(const std::string& file) {
-  std::ifstream in = open_input(file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string content = text.str();
+  const std::string content = read_input_text(file, kMaxTomlFileSize, kTomlFileSizeReason);
   check_toml_preflight(content, file);
   try {
     std::istringstream stream(content);
