@@ -227,6 +227,9 @@ struct DofNames {
   }
 
   void add(long long index, const Token& label, int line, const Lines& lines) {
+    // Before the size line nothing else bounds them: at most one name per row railmodal reads.
+    if (static_cast<long long>(by_index.size()) == kMaxRows)
+      lines.fail(label.column, "more DOF names than the " + std::to_string(kMaxRows) + " rows railmodal reads");
     // A map from label to DOF: a 10⁵-DOF model names its DOFs in linear-logarithmic time.
     if (const auto twice = index_of.find(std::string(label.text)); twice != index_of.end())
       lines.fail(label.column, "DOF label " + quoted(label.text) + " is given twice (also DOF " +

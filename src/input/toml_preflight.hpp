@@ -27,11 +27,13 @@ namespace railmodal::input {
 
 inline constexpr int kMaxTomlNesting = 64;
 inline constexpr size_t kMaxTomlLineLength = 8192;
-// toml11 keeps about 110 bytes per byte of a file of small values (a value and its source
-// region per "1,"): 16 MiB is at most about 1.8 GB while parsing, and about 50 s.
-inline constexpr size_t kMaxTomlFileSize = size_t(16) << 20;
+// toml11 keeps up to about 160 bytes per byte of a file of small values (a value and its
+// source region per "1,") and parses 0.15 MB/s of the densest ones (8 MiB took 1.3 GB and 48 s
+// as integers, 0.9 GB and 61 s as empty strings): 4 MiB is at most about 0.7 GB and 30 s. A
+// study of 10^4 explicit variants takes about 1 MB.
+inline constexpr size_t kMaxTomlFileSize = size_t(4) << 20;
 inline constexpr const char* kTomlFileSizeReason =
-    "a TOML input (16 MiB: parsing takes up to about 110 bytes of memory per byte of file)";
+    "a TOML input (parsing takes up to about 160 bytes of memory per byte of file)";
 
 // Throws InputError(file, line, column, why) at the first such place in `content`.
 void check_toml_preflight(const std::string& content, const std::string& file);
