@@ -68,24 +68,25 @@ class Scanner {
         statement_start = false;
         if (statement()) continue;
       }
-      if (expecting_key_ && c != ' ' && c != '\t' && c != '}') inline_key();
-      if (i_ >= s_.size()) break;
-      const char d = s_[i_];
-      if (d == '\n') {
+      if (expecting_key_ && c != ' ' && c != '\t' && c != '}') {
+        inline_key();
+        continue;
+      }
+      if (c == '\n') {
         statement_start = open_.empty();
         ++i_;
-      } else if (d == '#') {
+      } else if (c == '#') {
         skip_to_line_end();
-      } else if (d == '"' || d == '\'') {
-        skip_string(d);
-      } else if (d == '[' || d == '{') {
-        open(d);
-      } else if (d == ']' || d == '}') {
+      } else if (c == '"' || c == '\'') {
+        skip_string(c);
+      } else if (c == '[' || c == '{') {
+        open(c);
+      } else if (c == ']' || c == '}') {
         close();
-      } else if (d == ',') {
+      } else if (c == ',') {
         expecting_key_ = !open_.empty() && open_.back().inline_table;
         ++i_;
-      } else if (is_word_char(d)) {
+      } else if (is_word_char(c)) {
         check_word();
       } else {
         ++i_;
