@@ -33,13 +33,15 @@ def limit_memory():
 
 
 def run(command):
-    """Wall time (s), peak resident memory (MB) and exit code of one run."""
-    timed = ["/usr/bin/time", "-f", "%M"] + command
+    """Wall time (s), CPU time (s, user and system: steadier than wall time on a busy machine),
+    peak resident memory (MB) and exit code of one run."""
+    timed = ["/usr/bin/time", "-f", "%M %U %S"] + command
     start = time.perf_counter()
     p = subprocess.run(timed, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True,
                        preexec_fn=limit_memory, timeout=600)
     seconds = time.perf_counter() - start  # /usr/bin/time's %e has 10 ms steps
-    return seconds, int(p.stderr.strip().splitlines()[-1]) / 1024, p.returncode
+    kilobytes, user, system = p.stderr.strip().splitlines()[-1].split()
+    return seconds, float(user) + float(system), int(kilobytes) / 1024, p.returncode
 
 
 def write(path, text):
@@ -139,10 +141,10 @@ def main():
                     path = make(directory, size)
                     results.append(run(command(path)))
                     os.remove(path)
-                (t1, m1, c1), (t2, m2, c2) = results
-                ratio = t2 / t1 if t1 > 0 else float("nan")
-                print("%-6s %-52s %7.3f s %6.0f MB (exit %d) | %7.3f s %6.0f MB (exit %d) | time ratio %5.1f"
-                      % (group, title, t1, m1, c1, t2, m2, c2, ratio))
+                (t1, u1, m1, c1), (t2, u2, m2, c2) = results
+                print("%-6s %-52s %7.3f s (cpu %6.2f s) %5.0f MB exit %d | %7.3f s (cpu %6.2f s) %5.0f MB exit %d"
+                      " | ratio %5.1f (cpu %s)" % (group, title, t1, u1, m1, c1, t2, u2, m2, c2, t2 / t1,
+                                                   "%.1f" % (u2 / u1) if u1 >= 0.05 else "-"))
                 sys.stdout.flush()
 
 
