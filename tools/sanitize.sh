@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The test suite under AddressSanitizer and UndefinedBehaviorSanitizer (g++), then the
 # input-parser fuzzer (clang, libFuzzer) for a short run over the bundled and malformed
-# inputs. Both are part of CI (.ci/run); FUZZ_SECONDS sets the fuzzing time (default 60).
+# inputs. Both are part of CI (.ci/run); FUZZ_SECONDS sets the fuzzing time (default 60),
+# FUZZ_MAX_LEN the largest input (default 20000 bytes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install_dependencies.sh
@@ -38,6 +39,12 @@ for f in data/matrices/*.mtx tests/cli/bad/*.mtx tests/corpus/bad_inputs/*.mtx; 
   [ -e "$f" ] || continue
   { printf '\x02'; cat "$f"; } > "$corpus/seed$((i++))"
 done
+# Inputs at the parsers' limits (docs/input.md, "Resource limits"), for the mutations to cross:
+# a key 64 tables deep, a header 64 deep, a line of 8192 bytes of the densest values.
+printf '\x00[vehicle]\n%sa = 1\n' "$(printf 'a.%.0s' {1..63})" > "$corpus/seed$((i++))"
+printf '\x00[%sa]\nb = 1\n' "$(printf 'a.%.0s' {1..63})" > "$corpus/seed$((i++))"
+printf '\x00[vehicle]\na = [ %s1]\n' "$(printf '"",%.0s' {1..2728})" > "$corpus/seed$((i++))"
+printf '\x03[study]\n%s' "$(printf '[[variant]]\nname = "v%s"\n' {1..200})" > "$corpus/seed$((i++))"
 # The fuzzer writes each input to /dev/shm/railmodal_fuzz_<pid>/ (fuzz_inputs.cpp): remove those
 # directories whose process has ended (this run's, and any an interrupted run left), on any exit.
 # Crash, leak and timeout reproducers go to build-fuzz/, not the working directory.
@@ -49,5 +56,8 @@ clean_fuzz_scratch() {
   done
 }
 trap clean_fuzz_scratch EXIT
-build-fuzz/tools/fuzz/fuzz_inputs -max_total_time="${FUZZ_SECONDS:-60}" -rss_limit_mb=4096 -print_final_stats=1 \
-  -artifact_prefix=build-fuzz/ "$corpus" 2>&1 | tail -15
+# -max_len: inputs up to 20 000 bytes, past the 8192-byte line limit and the 64-level nesting
+# limit (libFuzzer's default follows the largest seed). -timeout: an input parsed for longer
+# than 10 s is a time bug (issue 18: 30 000 strings on one line took 32 s), not a slow run.
+build-fuzz/tools/fuzz/fuzz_inputs -max_total_time="${FUZZ_SECONDS:-60}" -max_len="${FUZZ_MAX_LEN:-20000}" -timeout=10 \
+  -rss_limit_mb=4096 -print_final_stats=1 -artifact_prefix=build-fuzz/ "$corpus" 2>&1 | tail -15

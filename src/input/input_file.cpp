@@ -1,6 +1,7 @@
 #include "input/input_file.hpp"
 
 #include <filesystem>
+#include <string>
 #include <system_error>
 
 #include "railmodal/errors.hpp"
@@ -18,6 +19,19 @@ std::ifstream open_input(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, 0, "cannot open the file");
   return in;
+}
+
+std::string read_input_text(const std::string& path, size_t limit, const std::string& why) {
+  std::ifstream in = open_input(path);
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, static_cast<size_t>(in.gcount()));
+    if (text.size() > limit)
+      throw InputError(path, 0, 0, "the file is larger than " + std::to_string(limit) + " bytes, the limit for " + why);
+  }
+  if (in.bad()) throw InputError(path, 0, 0, "cannot read the file");
+  return text;
 }
 
 }  // namespace railmodal::input

@@ -1,6 +1,7 @@
 // Opening an input file (vehicle, scene, study, Matrix Market, shard) for reading.
 #pragma once
 
+#include <cstddef>
 #include <fstream>
 #include <string>
 
@@ -10,5 +11,10 @@ namespace railmodal::input {
 /// when it is a directory (which opens on Linux and reads as empty: a misleading "missing
 /// table" later) or a device (/dev/zero never ends). Pipes are kept: `<(command)` works.
 std::ifstream open_input(const std::string& path);
+
+/// The whole file, read with open_input. A file of more than `limit` bytes is refused (an
+/// InputError naming it, `limit`, and `why` the limit exists) once limit + 1 bytes are read:
+/// memory stays bounded for a pipe or a file that grows.
+std::string read_input_text(const std::string& path, size_t limit, const std::string& why);
 
 }  // namespace railmodal::input

@@ -1,7 +1,6 @@
 // Matrix Market reader: the subset finite-element tools export for M, C and K (square,
 // real or integer, coordinate or array, general or symmetric), with every error located at
 // its file, line and column. Format: https://math.nist.gov/MatrixMarket/formats.html.
-#include "input/input_file.hpp"
 #include "railmodal/matrix_market.hpp"
 
 #include <Eigen/SparseCore>
@@ -10,11 +9,13 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
 #include <string_view>
 
+#include "input/input_file.hpp"
 #include "input/utf8.hpp"
 #include "railmodal/errors.hpp"
 
@@ -55,34 +56,45 @@ std::string quoted(std::string_view text) {
   return "'" + std::string(text.substr(0, kShown)) + (text.size() > kShown ? "...'" : "'");
 }
 
-// 0 if `line` is UTF-8 text without control characters (tab allowed), else the 1-based
-// column of the first offending byte and a description in *what.
-int text_problem(std::string_view line, std::string* what) {
-  const size_t bad_utf8 = input::invalid_utf8_at(line);
-  const size_t end = std::min(bad_utf8, line.size());
-  for (size_t i = 0; i < end; ++i) {
-    const auto b = static_cast<unsigned char>(line[i]);
-    if ((b < 0x20 && b != '\t') || b == 0x7f) {
-      *what = "control character " + input::byte_name(b) + ": this is not a text file";
-      return static_cast<int>(i) + 1;
-    }
-  }
-  if (bad_utf8 == std::string_view::npos) return 0;
-  *what = "byte " + input::byte_name(static_cast<unsigned char>(line[bad_utf8])) + " is not UTF-8 text";
-  return static_cast<int>(bad_utf8) + 1;
-}
+// A line longer than this is not a Matrix Market line (an entry takes under 80 bytes; a
+// `% railmodal dofs:` list may be split over as many lines as it needs).
+constexpr size_t kMaxLineLength = size_t(1) << 20;
+// Each entry costs about 100 bytes while it is read and assembled (the entry and its line and
+// column, the triplet and its mirror, the sparse matrix and the copy setFromTriplets makes):
+// 2·10⁷ entries are about 2 GB, as much as the 10⁷-row limit's diagonal matrix twice over.
+constexpr long long kMaxEntries = 20'000'000;
+constexpr double kBytesPerEntry = 100.0;
 
-// Reads lines, counting them, dropping a CR before the LF, and rejecting what is not text.
+bool is_control(unsigned char b) { return (b < 0x20 && b != '\t') || b == 0x7f; }
+
+// Reads lines, counting them, dropping a CR before the LF, and rejecting what is not text
+// at the first offending byte, before reading the rest of its line (a 1 GB hole of NULs is
+// refused after one byte, not read whole).
 class Lines {
  public:
   Lines(std::istream& in, const std::string& file) : in_(in), file_(file) {}
 
   bool next(std::string* line) {
-    if (!std::getline(in_, *line)) return false;
+    line->clear();
+    std::streambuf& buffer = *in_.rdbuf();
+    int c = buffer.sbumpc();
+    if (c == std::char_traits<char>::eof()) return false;
+    if (number_ == std::numeric_limits<int>::max())
+      fail(0, "the file has more than " + std::to_string(number_) + " lines: this is not a Matrix Market file");
     ++number_;
-    if (!line->empty() && line->back() == '\r') line->pop_back();
-    std::string what;
-    if (const int column = text_problem(*line, &what)) fail(column, what);
+    for (; c != std::char_traits<char>::eof() && c != '\n'; c = buffer.sbumpc()) {
+      const auto b = static_cast<unsigned char>(c);
+      const int column = static_cast<int>(line->size()) + 1;
+      if (is_control(b) && !(b == '\r' && buffer.sgetc() == '\n'))
+        fail(column, "control character " + input::byte_name(b) + ": this is not a text file");
+      if (line->size() == kMaxLineLength)
+        fail(column,
+             "the line is longer than " + std::to_string(kMaxLineLength) + " bytes: this is not a Matrix Market file");
+      if (b != '\r') line->push_back(static_cast<char>(c));
+    }
+    if (const size_t bad = input::invalid_utf8_at(*line); bad != std::string::npos)
+      fail(static_cast<int>(bad) + 1,
+           "byte " + input::byte_name(static_cast<unsigned char>((*line)[bad])) + " is not UTF-8 text");
     return true;
   }
   int number() const { return number_; }
@@ -215,6 +227,9 @@ struct DofNames {
   }
 
   void add(long long index, const Token& label, int line, const Lines& lines) {
+    // Before the size line nothing else bounds them: at most one name per row railmodal reads.
+    if (static_cast<long long>(by_index.size()) == kMaxRows)
+      lines.fail(label.column, "more DOF names than the " + std::to_string(kMaxRows) + " rows railmodal reads");
     // A map from label to DOF: a 10⁵-DOF model names its DOFs in linear-logarithmic time.
     if (const auto twice = index_of.find(std::string(label.text)); twice != index_of.end())
       lines.fail(label.column, "DOF label " + quoted(label.text) + " is given twice (also DOF " +
@@ -290,6 +305,13 @@ std::vector<Token> next_data_line(Lines& lines, DofNames& names, std::string* li
   return {};
 }
 
+std::string gigabytes(double bytes) {
+  std::ostringstream s;
+  s.precision(2);
+  s << bytes / 1e9 << " GB";
+  return s.str();
+}
+
 // The size line: n (square), and the number of entries (coordinate) or values (array) to come.
 struct SizeLine {
   long long n = 0;
@@ -327,6 +349,12 @@ SizeLine read_size_line(Lines& lines, DofNames& names, const Header& header) {
   out.n = n;
   // Array: column by column, the lower triangle only when symmetric.
   out.expected = header.coordinate ? numbers[2] : header.symmetric ? n * (n + 1) / 2 : n * n;
+  if (out.expected > kMaxEntries)
+    lines.fail(size[header.coordinate ? 2 : 0].column,
+               "the size line declares " + std::to_string(out.expected) + (header.coordinate ? " entries" : " values") +
+                   ", which would need about " + gigabytes(static_cast<double>(out.expected) * kBytesPerEntry) +
+                   " to read; railmodal reads at most " + std::to_string(kMaxEntries) + " (about " +
+                   gigabytes(static_cast<double>(kMaxEntries) * kBytesPerEntry) + ")");
   out.expected_text =
       header.coordinate ? std::to_string(out.expected) + " entries"
                         : std::to_string(out.expected) + " values (a " + (header.symmetric ? "symmetric " : "general ") +

@@ -24,10 +24,41 @@ class Scanner {
     throw InputError(file_, static_cast<int>(line), static_cast<int>(at - line_begin) + 1, why);
   }
 
-  void run() {
-    int depth = 0;
+  // The first place, and what is wrong there, of: a byte that is not UTF-8, a byte TOML 1.0
+  // allows nowhere (control characters other than tab and the newline CR LF or LF), or a line
+  // longer than kMaxTomlLineLength. npos when there is none.
+  size_t text_problem(std::string* why) const {
+    const size_t end = std::min(invalid_utf8_at(s_), s_.size());
+    size_t line_begin = 0;
+    for (size_t k = 0; k < end; ++k) {
+      const auto b = static_cast<unsigned char>(s_[k]);
+      if (b == '\n') {
+        line_begin = k + 1;
+        continue;
+      }
+      const bool newline = b == '\r' && k + 1 < s_.size() && s_[k + 1] == '\n';
+      if (k - line_begin == kMaxTomlLineLength && !newline) {
+        *why = "the line is longer than " + std::to_string(kMaxTomlLineLength) +
+               " bytes (toml11 scans the whole line once per value on it; an array may span lines)";
+        return k;
+      }
+      if ((b < 0x20 && b != '\t' && !newline) || b == 0x7f) {
+        *why = control_name(b) +
+               " is not allowed in TOML, not even in a comment or string (write it as an escape "
+               "in a \"basic\" string)";
+        return k;
+      }
+    }
+    if (end < s_.size())
+      *why =
+          "byte " + byte_name(static_cast<unsigned char>(s_[end])) + " is not UTF-8 text (a TOML file must be UTF-8)";
+    return end < s_.size() ? end : std::string::npos;
+  }
+
+  // The structure before `end`; what follows is not looked at.
+  void run(size_t end) {
     bool statement_start = true;  // at the start of a line outside any array or inline table
-    while (i_ < s_.size()) {
+    while (i_ < end) {
       const char c = s_[i_];
       if (statement_start && (c == ' ' || c == '\t' || c == '\r')) {
         ++i_;
@@ -37,19 +68,23 @@ class Scanner {
         statement_start = false;
         if (statement()) continue;
       }
+      if (expecting_key_ && c != ' ' && c != '\t' && c != '}') {
+        inline_key();
+        continue;
+      }
       if (c == '\n') {
-        statement_start = depth == 0;
+        statement_start = open_.empty();
         ++i_;
       } else if (c == '#') {
         skip_to_line_end();
       } else if (c == '"' || c == '\'') {
         skip_string(c);
       } else if (c == '[' || c == '{') {
-        if (++depth > kMaxTomlNesting)
-          fail(i_, "arrays and inline tables nested more than " + std::to_string(kMaxTomlNesting) + " deep");
-        ++i_;
+        open(c);
       } else if (c == ']' || c == '}') {
-        depth = std::max(depth - 1, 0);
+        close();
+      } else if (c == ',') {
+        expecting_key_ = !open_.empty() && open_.back().inline_table;
         ++i_;
       } else if (is_word_char(c)) {
         check_word();
@@ -62,6 +97,50 @@ class Scanner {
  private:
   using KeyPath = std::vector<std::string>;
 
+  // An array or inline table being read, and the dotted key inside it whose value is being read
+  // (`{a.b.c = 1}` nests c two tables below the inline table).
+  struct Open {
+    bool inline_table;
+    int key_depth;  // the parts of the current key after the first
+  };
+
+  // The depth a value opened here would have: the table header's parts, the line's key parts
+  // after the first, and every open array or inline table with its key. toml11 recurses once per
+  // level of all of these alike (dotted keys and headers make nested tables).
+  void open(char c) {
+    ++depth_;
+    if (depth_ > kMaxTomlNesting) fail(i_, nesting_message());
+    open_.push_back({c == '{', 0});
+    expecting_key_ = c == '{';
+    ++i_;
+  }
+
+  void close() {
+    if (!open_.empty()) {
+      depth_ -= 1 + open_.back().key_depth;
+      open_.pop_back();
+    }
+    expecting_key_ = false;
+    ++i_;
+  }
+
+  // The key of an inline table's key = value pair, its parts counted into the depth.
+  void inline_key() {
+    expecting_key_ = false;
+    Open& table = open_.back();
+    size_t j = i_;
+    KeyPath key;
+    if (!key_path(j, key, depth_ - table.key_depth)) return;
+    depth_ += static_cast<int>(key.size()) - 1 - table.key_depth;
+    table.key_depth = static_cast<int>(key.size()) - 1;
+    i_ = j;
+  }
+
+  static std::string nesting_message() {
+    return "tables, arrays and inline tables nested more than " + std::to_string(kMaxTomlNesting) +
+           " deep (each part of a dotted key or table header is a table)";
+  }
+
   // A table header, or the key of a key = value line. A header whose path runs through a key
   // that holds an array value (`a = []`, then `[a.b]`) is refused: it is not TOML, and toml11
   // 3.7.1 takes the last element of that array as the table to extend, which for an empty
@@ -69,11 +148,12 @@ class Scanner {
   // where the line is neither (toml11 then reports it).
   bool statement() {
     size_t j = i_;
+    depth_ = table_depth_;
     if (s_[j] == '[') {
       const bool array_of_tables = j + 1 < s_.size() && s_[j + 1] == '[';
       j += array_of_tables ? 2 : 1;
       KeyPath path;
-      if (!key_path(j, path)) return false;
+      if (!key_path(j, path, 1)) return false;
       if (s_.compare(j, array_of_tables ? 2 : 1, array_of_tables ? "]]" : "]") != 0) return false;
       KeyPath prefix;
       for (const std::string& part : path) {
@@ -83,11 +163,13 @@ class Scanner {
                        " extends '" + join(prefix) + "', which is an array value (a key = [...] line), not a table");
       }
       table_ = path;
+      depth_ = table_depth_ = static_cast<int>(path.size());
       i_ = j + (array_of_tables ? 2 : 1);
       return true;
     }
     KeyPath key;
-    if (!key_path(j, key)) return false;
+    if (!key_path(j, key, table_depth_)) return false;
+    depth_ = table_depth_ + static_cast<int>(key.size()) - 1;
     if (j >= s_.size() || s_[j] != '=') return false;
     ++j;
     while (j < s_.size() && (s_[j] == ' ' || s_[j] == '\t')) ++j;
@@ -101,8 +183,10 @@ class Scanner {
   }
 
   // A dotted key (bare, "basic" or 'literal' parts; whitespace around the dots) from j, and
-  // the whitespace after it. Quoted parts are kept as written (escapes not decoded).
-  bool key_path(size_t& j, KeyPath& out) const {
+  // the whitespace after it. Quoted parts are kept as written (escapes not decoded). Its first
+  // part names a key of a table at `first_depth`; each further part nests a table one deeper,
+  // and a part deeper than kMaxTomlNesting is refused where it starts.
+  bool key_path(size_t& j, KeyPath& out, int first_depth) const {
     auto blank = [&] {
       while (j < s_.size() && (s_[j] == ' ' || s_[j] == '\t')) ++j;
     };
@@ -122,6 +206,8 @@ class Scanner {
         end = j;
         if (end == begin) return false;
       }
+      if (first_depth + static_cast<int>(out.size()) > kMaxTomlNesting)
+        fail(q == '"' || q == '\'' ? begin - 1 : begin, nesting_message());
       out.emplace_back(s_, begin, end - begin);
       blank();
       if (j < s_.size() && s_[j] == '.') {
@@ -136,6 +222,12 @@ class Scanner {
     std::string out;
     for (const std::string& part : path) out += (out.empty() ? "" : ".") + part;
     return out;
+  }
+
+  static std::string control_name(unsigned char b) {
+    if (b == 0) return "a NUL byte (0x00)";
+    if (b == '\r') return "a carriage return (0x0d) not followed by a line feed";
+    return "the control character " + byte_name(b);
   }
 
   static bool is_word_char(char c) {
@@ -220,6 +312,11 @@ class Scanner {
   const std::string& file_;
   size_t i_ = 0;
   KeyPath table_;                   // the current table's path
+  int table_depth_ = 0;             // its parts
+  int depth_ = 0;                   // see open()
+  std::vector<Open> open_;          // arrays and inline tables not yet closed
+  bool expecting_key_ = false;      // after '{' or an inline table's ','
+
   std::set<KeyPath> array_values_;  // keys given an array value, with their table's path
 };
 
@@ -227,10 +324,11 @@ class Scanner {
 
 void check_toml_preflight(const std::string& content, const std::string& file) {
   Scanner scanner(content, file);
-  if (const size_t bad = invalid_utf8_at(content); bad != std::string::npos)
-    scanner.fail(bad, "byte " + byte_name(static_cast<unsigned char>(content[bad])) +
-                          " is not UTF-8 text (a TOML file must be UTF-8)");
-  scanner.run();
+  // Reported in file order: a deep key on a long line is reported as deep.
+  std::string why;
+  const size_t bad = scanner.text_problem(&why);
+  scanner.run(std::min(bad, content.size()));
+  if (bad != std::string::npos) scanner.fail(bad, why);
 }
 
 }  // namespace railmodal::input

@@ -1,9 +1,16 @@
 // Matrix Market input: every accepted variant, every error with its line, column and
 // message, the model built from M, K (and C) files, and its modes.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstdio>
 #include <sstream>
+#include <thread>
 
 #include "test_support.hpp"
 
@@ -127,8 +134,10 @@ std::vector<BadCase> bad_cases() {
       {"pattern", "%%MatrixMarket matrix coordinate pattern general\n", 1, 34, "field 'pattern' is not supported"},
       {"complex", "%%MatrixMarket matrix coordinate complex general\n", 1, 34, "field 'complex' is not supported"},
       {"unknown_field", "%%MatrixMarket matrix coordinate float general\n", 1, 34, "unknown field 'float'"},
-      {"hermitian", "%%MatrixMarket matrix coordinate real hermitian\n", 1, 39, "symmetry 'hermitian' is not supported"},
-      {"skew", "%%MatrixMarket matrix array real skew-symmetric\n", 1, 34, "symmetry 'skew-symmetric' is not supported"},
+      {"hermitian", "%%MatrixMarket matrix coordinate real hermitian\n", 1, 39,
+       "symmetry 'hermitian' is not supported"},
+      {"skew", "%%MatrixMarket matrix array real skew-symmetric\n", 1, 34,
+       "symmetry 'skew-symmetric' is not supported"},
       {"unknown_symmetry", kCoord.substr(0, 38) + "upper\n", 1, 39, "unknown symmetry 'upper'"},
       {"no_size_line", kCoord + "% only a comment\n", 2, 0, "ends before the size line"},
       {"size_words", kCoord + "2 2\n", 2, 1, "'ROWS COLUMNS ENTRIES', found 2 words"},
@@ -150,16 +159,32 @@ std::vector<BadCase> bad_cases() {
       {"overflow", kCoord + "1 1 1\n1 1 1e999\n", 3, 5, "value '1e999' is outside the range of a double"},
       {"integer_field", "%%MatrixMarket matrix coordinate integer general\n1 1 1\n1 1 1.5\n", 3, 5,
        "'1.5' is not an integer (the banner declares integer values)"},
-      {"too_many", kCoord + "2 2 1\n1 1 1\n% fine\n2 2 1\n", 5, 1, "more entries than the 1 entries the size line (line 2)"},
+      {"too_many", kCoord + "2 2 1\n1 1 1\n% fine\n2 2 1\n", 5, 1,
+       "more entries than the 1 entries the size line (line 2)"},
       {"too_few", kCoord + "2 2 3\n1 1 1\n2 2 1\n", 2, 5, "declares 3 entries but the file ends after 2"},
-      {"array_too_few", kArray + "2 2\n1\n2\n3\n", 2, 3, "declares 4 values (a general 2 × 2 array) but the file ends after 3"},
+      {"array_too_few", kArray + "2 2\n1\n2\n3\n", 2, 3,
+       "declares 4 values (a general 2 × 2 array) but the file ends after 3"},
       {"array_too_many", "%%MatrixMarket matrix array real symmetric\n2 2\n1\n2\n3\n4\n", 6, 1,
        "more entries than the 3 values (a symmetric 2 × 2 array)"},
       {"array_two_per_line", kArray + "2 2\n1 2\n3\n4\n", 3, 3, "one value per line, found 2"},
-      {"not_utf8", kCoord + "% Ma\xdf" "e\n1 1 1\n1 1 1\n", 2, 5, "byte 0xdf is not UTF-8 text"},
+      {"not_utf8",
+       kCoord + "% Ma\xdf"
+                "e\n1 1 1\n1 1 1\n",
+       2, 5, "byte 0xdf is not UTF-8 text"},
       {"overlong_utf8", kCoord + "% \xc0\xaf\n1 1 1\n1 1 1\n", 2, 3, "byte 0xc0 is not UTF-8 text"},
       {"nul_byte", kCoord + "1 1 1\n1 1 1" + std::string(1, '\0') + "\n", 3, 6, "control character 0x00"},
-      {"binary", std::string("\x7f" "ELF\x02\x01", 6), 1, 1, "control character 0x7f"},
+      {"binary",
+       std::string("\x7f"
+                   "ELF\x02\x01",
+                   6),
+       1, 1, "control character 0x7f"},
+      {"nul_hole", kCoord + "2 2 1\n" + std::string(100000, '\0') + "\n1 1 1\n", 3, 1, "control character 0x00"},
+      {"long_line", kCoord + "% " + std::string(1 << 20, 'x') + "\n1 1 0\n", 2, 1 + (1 << 20),
+       "longer than 1048576 bytes"},
+      // Issue 18: absurd declared sizes are refused before any entry is read, with the estimate.
+      {"too_many_entries", kCoord + "10000000 10000000 20000001\n", 2, 19,
+       "declares 20000001 entries, which would need about 2 GB to read; railmodal reads at most 20000000"},
+      {"array_too_large", kArray + "5000 5000\n", 2, 1, "declares 25000000 values, which would need about 2.5 GB"},
       {"unknown_directive", kSym + "% railmodal dfos: a b\n2 2 0\n", 2, 13, "unknown railmodal comment 'dfos:'"},
       {"empty_directive", kSym + "% railmodal\n2 2 0\n", 2, 3, "empty railmodal comment"},
       {"list_too_short", kSym + "% railmodal dofs: a\n2 2 0\n", 2, 1, "name 1 DOFs but the matrix has 2 rows"},
@@ -167,7 +192,8 @@ std::vector<BadCase> bad_cases() {
       {"index_out_of_range", kSym + "2 2 0\n% railmodal dof 5 x\n", 3, 19, "DOF index 5 exceeds the 2 rows"},
       {"index_zero", kSym + "% railmodal dof 0 x\n2 2 0\n", 2, 17, "DOF index '0' is not a positive integer"},
       {"dof_words", kSym + "% railmodal dof 1\n2 2 0\n", 2, 13, "expected '% railmodal dof INDEX LABEL'"},
-      {"duplicate_label", kSym + "% railmodal dofs: a a\n2 2 0\n", 2, 21, "DOF label 'a' is given twice (also DOF 1, line 2)"},
+      {"duplicate_label", kSym + "% railmodal dofs: a a\n2 2 0\n", 2, 21,
+       "DOF label 'a' is given twice (also DOF 1, line 2)"},
       {"index_named_twice", kSym + "% railmodal dof 1 a\n% railmodal dof 1 b\n2 2 0\n", 3, 19,
        "DOF 1 is already named 'a' (line 2)"},
       {"both_forms", kSym + "% railmodal dofs: a b\n% railmodal dof 1 c\n2 2 0\n", 3, 13, "not both"},
@@ -197,6 +223,42 @@ TEST_P(BadMatrixMarket, ErrorNamesFileLineAndColumn) {
 
 INSTANTIATE_TEST_SUITE_P(Errors, BadMatrixMarket, ::testing::ValuesIn(bad_cases()),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// Issue 18: a 1 GB file whose third line was a hole of NULs was read whole (2.1 GB, 48 s)
+// before the error. The reader must stop at the first bad byte: the file here is a pipe fed
+// 64 MiB of NULs, and the writer counts what it got to write before the reader closed it.
+TEST(MatrixMarket, StopsReadingAtTheFirstBadByte) {
+  const std::string fifo = write_temp("hole.mtx", "");
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const auto old_handler = std::signal(SIGPIPE, SIG_IGN);  // the writer sees EPIPE instead
+  size_t written = 0;
+  std::thread writer([&] {
+    const int fd = open(fifo.c_str(), O_WRONLY);
+    const std::string head = kCoord + "2 2 1\n";
+    written += static_cast<size_t>(std::max<ssize_t>(0, write(fd, head.data(), head.size())));
+    const std::string hole(1 << 16, '\0');
+    for (int chunk = 0; chunk < 1024; ++chunk) {
+      const ssize_t n = write(fd, hole.data(), hole.size());
+      if (n <= 0) break;
+      written += static_cast<size_t>(n);
+    }
+    close(fd);
+  });
+  try {
+    read_matrix_market(fifo);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3);
+    EXPECT_EQ(e.column(), 1);
+  }
+  writer.join();
+  std::signal(SIGPIPE, old_handler);
+  std::remove(fifo.c_str());
+  // What the pipe (64 KiB on Linux) and the stream's buffer hold at most, with a margin: far
+  // below the 64 MiB a reader of whole lines takes in.
+  EXPECT_LT(written, size_t(4) << 20);
+}
 
 TEST(MatrixMarket, SymmetryCheckIgnoresRoundOff) {
   // 1e-16 relative: what an exporter's own round-off leaves; well inside 1e-10.
