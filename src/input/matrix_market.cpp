@@ -16,6 +16,7 @@
 #include <string_view>
 
 #include "input/input_file.hpp"
+#include "input/table_reader.hpp"
 #include "input/utf8.hpp"
 #include "railmodal/errors.hpp"
 
@@ -176,6 +177,10 @@ double parse_value(const Token& t, bool integer, const Lines& lines) {
   if (error != std::errc() || end != text.data() + text.size())
     lines.fail(t.column, quoted(t.text) + " is not a number");
   if (!std::isfinite(value)) lines.fail(t.column, "value " + quoted(t.text) + " is not a finite number");
+  // The same band as a quantity in a TOML file (table_reader.hpp): a subnormal mass gave an
+  // eigensolver that "did not converge" instead of an input error.
+  if (!input::within_magnitudes(value))
+    lines.fail(t.column, "value " + quoted(t.text) + ": " + input::magnitude_complaint(value));
   return value;
 }
 

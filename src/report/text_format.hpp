@@ -23,9 +23,15 @@ inline std::string significant(double value, int digits) {
   return s.str();
 }
 
-/// `value` with `decimals` digits after the point; round-off never prints as "-0.0".
+/// `value` with `decimals` digits after the point; round-off never prints as "-0.0". From 1e9
+/// on, in scientific notation with as many digits after the point: a stiff link's ω of 1e150
+/// printed fixed was 150 digits, none of them meaningful past the 16th.
 inline std::string fixed(double value, int decimals) {
   std::ostringstream s;
+  if (std::abs(value) >= 1e9) {
+    s << std::scientific << std::setprecision(decimals) << value;
+    return s.str();
+  }
   const double half_unit = 0.5 * std::pow(10.0, -decimals);
   s << std::fixed << std::setprecision(decimals) << (std::abs(value) < half_unit ? 0.0 : value);
   return s.str();

@@ -113,6 +113,16 @@ TEST(HardCases, SingularMassIsNamed) {
   }
 }
 
+// A subnormal mass (issue 18, item 10): 5e-324 kg read from a vehicle file gave "rigid-body"
+// and "unstable" modes and exit 0. The readers now refuse it (the corpus has both files);
+// built in code, the solver must still not return a classification: K/M overflows, and that
+// is a numerical failure, never a silent answer.
+TEST(HardCases, SubnormalMassIsNeverASilentAnswer) {
+  const Eigen::MatrixXd M = Eigen::Vector2d(5e-324, 5e-324).asDiagonal();
+  const Eigen::MatrixXd K = chain_stiffness({100.0, 100.0}, true);
+  EXPECT_THROW(solve_modes(system_of(M, K)), NumericalError);
+}
+
 // Mass ratio 1e-12: a light DOF on a stiff spring gives a mode 1e6 times faster; both are
 // found, the slow one to round-off of the exact 2 × 2 solution.
 TEST(HardCases, NearlySingularMass) {
