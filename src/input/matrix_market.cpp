@@ -65,6 +65,8 @@ constexpr size_t kMaxLineLength = size_t(1) << 20;
 // 2·10⁷ entries are about 2 GB, as much as the 10⁷-row limit's diagonal matrix twice over.
 constexpr long long kMaxEntries = 20'000'000;
 constexpr double kBytesPerEntry = 100.0;
+// A DOF label names a body and a motion ("wagon3.bogie2.wheelset1.lateral" is 31 bytes).
+constexpr size_t kMaxLabelLength = 256;
 
 bool is_control(unsigned char b) { return (b < 0x20 && b != '\t') || b == 0x7f; }
 
@@ -88,10 +90,11 @@ class Lines {
       const int column = static_cast<int>(line->size()) + 1;
       if (is_control(b) && !(b == '\r' && buffer.sgetc() == '\n'))
         fail(column, "control character " + input::byte_name(b) + ": this is not a text file");
+      if (b == '\r') continue;  // the CR of a CRLF: not part of the line, nor of its length
       if (line->size() == kMaxLineLength)
         fail(column,
              "the line is longer than " + std::to_string(kMaxLineLength) + " bytes: this is not a Matrix Market file");
-      if (b != '\r') line->push_back(static_cast<char>(c));
+      line->push_back(static_cast<char>(c));
     }
     if (const size_t bad = input::invalid_utf8_at(*line); bad != std::string::npos)
       fail(static_cast<int>(bad) + 1,
@@ -232,9 +235,14 @@ struct DofNames {
   }
 
   void add(long long index, const Token& label, int line, const Lines& lines) {
-    // Before the size line nothing else bounds them: at most one name per row railmodal reads.
+    // Before the size line nothing else bounds them: at most one name per row railmodal reads,
+    // each of a label's length, so that names cost at most about 3 GB (10⁷ of them, each in two
+    // maps, about 300 bytes with its label) however long the file's lines.
     if (static_cast<long long>(by_index.size()) == kMaxRows)
       lines.fail(label.column, "more DOF names than the " + std::to_string(kMaxRows) + " rows railmodal reads");
+    if (label.text.size() > kMaxLabelLength)
+      lines.fail(label.column, "a DOF label of " + std::to_string(label.text.size()) + " bytes: labels are at most " +
+                                   std::to_string(kMaxLabelLength) + " bytes");
     // A map from label to DOF: a 10⁵-DOF model names its DOFs in linear-logarithmic time.
     if (const auto twice = index_of.find(std::string(label.text)); twice != index_of.end())
       lines.fail(label.column, "DOF label " + quoted(label.text) + " is given twice (also DOF " +

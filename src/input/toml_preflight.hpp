@@ -13,7 +13,7 @@
 //     (region::comments() from parse_value_helper, and an error message it formats and drops
 //     for every "basic" string in parse_basic_string), so the time grows with the square of a
 //     line's length: 30 000 strings on one line took 32 s. At 8192 bytes the slowest line
-//     (2700 empty strings) takes 0.1 s, about twice its time split over many lines;
+//     (2728 empty strings) takes about 0.05 s, about twice its time split over many lines;
 //   - integer literals outside 64 bits (toml11 overflows a signed integer reading a long binary
 //     literal, and clamps long decimal, octal and hexadecimal ones to the largest integer);
 //   - a table header through a key that holds an array value (`a = []`, then `[a.b]`: toml11

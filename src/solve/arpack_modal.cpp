@@ -369,8 +369,8 @@ class ModeSearch {
  private:
   // Rigid-body modes counted by the inertia of K ∓ tM; beside stiff links (found λ tiny against
   // max Kᵢᵢ/Mᵢᵢ) the modes found solved again in double-double, since the Rayleigh–Ritz step's
-  // ZᵀKZ in double carries an error of ε·‖K‖ (low_modes.hpp). The rounding bound: 4ε times the
-  // largest |λ| of the problem the modes were last solved in.
+  // ZᵀKZ in double carries an error of ε·‖K‖ (low_modes.hpp). The rounding bound: rounding_bound
+  // of the largest |λ| of the problem the modes were last solved in.
   void finish_low_end(Eigenpairs& result) const {
     result.zero_band = zero_band_;
     result.rigid_count = eigenvalues_near_zero(K_, M_, result.zero_band);
@@ -379,7 +379,7 @@ class ModeSearch {
       refine_low_modes(K_, M_, static_cast<int>(result.values.size()), &result.values, &result.vectors);
       top = result.values.cwiseAbs().maxCoeff();
     }
-    result.errors = Eigen::VectorXd::Constant(result.values.size(), 8.0 * kUnitRoundoff * top);
+    result.errors = Eigen::VectorXd::Constant(result.values.size(), rounding_bound(top));
   }
 
   // The automatic σ = −1e-6·max Kᵢᵢ/Mᵢᵢ can lie far below the lowest eigenvalues (a 1e5-DOF

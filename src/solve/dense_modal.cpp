@@ -75,9 +75,8 @@ int refine_low_end(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, double ze
 // The bound of each λ's rounding error: 4ε times the largest |λ| of the problem it was solved in
 // (the refined window, or the whole spectrum).
 Eigen::VectorXd rounding_bounds(const Eigen::VectorXd& lambda, int refined) {
-  const double eps = 2.0 * kUnitRoundoff;
-  Eigen::VectorXd bound = Eigen::VectorXd::Constant(lambda.size(), 4.0 * eps * lambda.cwiseAbs().maxCoeff());
-  if (refined > 0) bound.head(refined).setConstant(4.0 * eps * lambda.head(refined).cwiseAbs().maxCoeff());
+  Eigen::VectorXd bound = Eigen::VectorXd::Constant(lambda.size(), rounding_bound(lambda.cwiseAbs().maxCoeff()));
+  if (refined > 0) bound.head(refined).setConstant(rounding_bound(lambda.head(refined).cwiseAbs().maxCoeff()));
   return bound;
 }
 

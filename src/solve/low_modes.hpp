@@ -29,6 +29,12 @@ double zero_band(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix
 int eigenvalues_near_zero(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, double t);
 int eigenvalues_near_zero(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, double t);
 
+/// The bound of the rounding error of an eigenvalue solved in a problem whose largest |λ| is
+/// `top`: 4ε·top (a backward-stable solver's error ε·‖M^-½KM^-½‖, with room for the reduction).
+/// The dense solver knows `top` (every λ, or those of the refined window); ARPACK, which finds
+/// only the lowest, takes max Kᵢᵢ/Mᵢᵢ, a lower bound of λmax of the same order.
+inline double rounding_bound(double top) { return 8.0 * kUnitRoundoff * top; }
+
 /// A spectrum whose low end needs refine_low_modes: λ_top/|λ| above 1e8 for its lowest nonzero
 /// |λ|, where a direct solve's absolute error ε·λ_top leaves fewer than 8 digits.
 bool needs_refinement(const Eigen::VectorXd& values, double top, double zero);

@@ -72,6 +72,16 @@ TEST(MatrixMarket, IntegerFieldCaseInsensitiveBannerAndCrlf) {
   EXPECT_EQ(A, expected);
 }
 
+// The 1 MiB line limit counts the line, not the CR of its CRLF: a line of exactly the limit
+// is read whether it ends in LF or CRLF (the CRLF one was refused).
+TEST(MatrixMarket, LineOfTheLimitIsReadWithEitherEnding) {
+  for (const std::string end : {"\n", "\r\n"}) {
+    const std::string comment = "% " + std::string((1 << 20) - 2, 'x') + end;
+    EXPECT_EQ(read_dense("%%MatrixMarket matrix coordinate real general" + end + comment + "1 1 1" + end + "1 1 4" + end),
+              Eigen::MatrixXd::Constant(1, 1, 4.0));
+  }
+}
+
 TEST(MatrixMarket, CommentsNameDofsAsAListOrOneByOne) {
   const auto list = read_matrix_market(write_temp("list.mtx",
                                                   "%%MatrixMarket matrix coordinate real symmetric\n"
@@ -190,6 +200,9 @@ std::vector<BadCase> bad_cases() {
       {"list_too_short", kSym + "% railmodal dofs: a\n2 2 0\n", 2, 1, "name 1 DOFs but the matrix has 2 rows"},
       {"list_too_long", kSym + "% railmodal dofs: a b c\n2 2 0\n", 2, 23, "name more DOFs than the 2 rows"},
       {"index_out_of_range", kSym + "2 2 0\n% railmodal dof 5 x\n", 3, 19, "DOF index 5 exceeds the 2 rows"},
+      // DOF names come before the size line: each label is bounded, so names cost a bounded memory.
+      {"label_too_long", kSym + "% railmodal dofs: " + std::string(257, 'a') + " b\n2 2 0\n", 2, 19,
+       "a DOF label of 257 bytes: labels are at most 256 bytes"},
       {"index_zero", kSym + "% railmodal dof 0 x\n2 2 0\n", 2, 17, "DOF index '0' is not a positive integer"},
       {"dof_words", kSym + "% railmodal dof 1\n2 2 0\n", 2, 13, "expected '% railmodal dof INDEX LABEL'"},
       {"duplicate_label", kSym + "% railmodal dofs: a a\n2 2 0\n", 2, 21,

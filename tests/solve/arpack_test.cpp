@@ -243,9 +243,6 @@ TEST(Arpack, UnstableAndRigidBodyModesComeFirst) {
   expect_agree(a, solve_modes(s, dense(4)), 4, s.mass, 1e-10, "unstable");
 }
 
-// A massless DOF held by springs is condensed implicitly (shift-invert keeps the iterates in
-// the range of (K − σM)⁻¹M, where its row of K is satisfied), as the dense solver does
-// explicitly; without a restraint it is the dense solver's error, naming it.
 // Issue 18 item 8: a long chain's lowest eigenvalues lie far below the fixed fraction
 // σ = −1e-6·max Kᵢᵢ/Mᵢᵢ = −2e-6 (λ₁ = 4 sin²(π/2(n+1)) ≈ 2.5e-8 at n = 2·10⁴), where Lanczos
 // hardly separates them. The automatic shift moves to the scale of λ₁: within a factor 10 of
@@ -273,6 +270,9 @@ TEST(Arpack, AutomaticShiftFollowsTheLowestEigenvalues) {
   }
 }
 
+// A massless DOF held by springs is condensed implicitly (shift-invert keeps the iterates in
+// the range of (K − σM)⁻¹M, where its row of K is satisfied), as the dense solver does
+// explicitly; without a restraint it is the dense solver's error, naming it.
 TEST(Arpack, MasslessDegreesOfFreedom) {
   const int n = 40;  // a chain of 40 masses on springs; DOF 20 massless
   Triplets m, k;
