@@ -77,8 +77,9 @@ TEST(MatrixMarket, IntegerFieldCaseInsensitiveBannerAndCrlf) {
 TEST(MatrixMarket, LineOfTheLimitIsReadWithEitherEnding) {
   for (const std::string end : {"\n", "\r\n"}) {
     const std::string comment = "% " + std::string((1 << 20) - 2, 'x') + end;
-    EXPECT_EQ(read_dense("%%MatrixMarket matrix coordinate real general" + end + comment + "1 1 1" + end + "1 1 4" + end),
-              Eigen::MatrixXd::Constant(1, 1, 4.0));
+    EXPECT_EQ(
+        read_dense("%%MatrixMarket matrix coordinate real general" + end + comment + "1 1 1" + end + "1 1 4" + end),
+        Eigen::MatrixXd::Constant(1, 1, 4.0));
   }
 }
 
