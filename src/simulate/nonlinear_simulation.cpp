@@ -458,8 +458,8 @@ class Integration {
     int side = 0;
     for (int iteration = 0; hi - lo > options_.event_tolerance && glo != 0.0; ++iteration) {
       if (iteration == kMaxIterations)
-        throw NumericalError("simulation: an event near t = " + std::to_string(t_) + " s was not located to " +
-                             std::to_string(options_.event_tolerance) + " s in " + std::to_string(kMaxIterations) +
+        throw NumericalError("simulation: an event near t = " + shortest_text(t_, 9) + " s was not located to " +
+                             shortest_text(options_.event_tolerance, 9) + " s in " + std::to_string(kMaxIterations) +
                              " iterations; try a larger event_tolerance");
       double mid = (lo * ghi - hi * glo) / (ghi - glo);
       if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
