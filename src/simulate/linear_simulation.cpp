@@ -270,13 +270,7 @@ bool march(const Eigen::MatrixXd& G, const MasslessRecovery& rec, const std::vec
 
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                             const SimulationOptions& options) {
-  TimeHistory out;
-  simulate::HistoryRecorder recorder(&out);
-  TimeHistory result = simulate_linear(system, sources, options, recorder);
-  result.time = std::move(out.time);
-  result.displacement = std::move(out.displacement);
-  result.velocity = std::move(out.velocity);
-  return result;
+  return simulate::recorded([&](HistorySink& sink) { return simulate_linear(system, sources, options, sink); });
 }
 
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,

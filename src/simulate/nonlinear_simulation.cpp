@@ -547,13 +547,8 @@ class Integration {
 
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                                const SimulationOptions& options, const NonlinearEffects& effects) {
-  TimeHistory out;
-  simulate::HistoryRecorder recorder(&out);
-  TimeHistory result = simulate_nonlinear(system, sources, options, effects, recorder);
-  result.time = std::move(out.time);
-  result.displacement = std::move(out.displacement);
-  result.velocity = std::move(out.velocity);
-  return result;
+  return simulate::recorded(
+      [&](HistorySink& sink) { return simulate_nonlinear(system, sources, options, effects, sink); });
 }
 
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,

@@ -71,13 +71,7 @@ LinearSystem scene_system(const Scene& scene, const Vehicle& vehicle) {
 }
 
 TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle) {
-  TimeHistory out;
-  simulate::HistoryRecorder recorder(&out);
-  TimeHistory result = simulate_scene(scene, vehicle, {&recorder});
-  result.time = std::move(out.time);
-  result.displacement = std::move(out.displacement);
-  result.velocity = std::move(out.velocity);
-  return result;
+  return simulate::recorded([&](HistorySink& sink) { return simulate_scene(scene, vehicle, {&sink}); });
 }
 
 TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle, const std::vector<HistorySink*>& sinks) {
