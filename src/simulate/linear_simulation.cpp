@@ -10,6 +10,7 @@
 #include "railmodal/simulation.hpp"
 #include "require_valid.hpp"
 #include "simulate/history_summary.hpp"
+#include "simulate/sample_count.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -284,7 +285,7 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
   if (options.final_speed > 0.0)
     throw std::invalid_argument("simulation: a speed ramp changes the load's frequency; the state transition holds it "
                                 "fixed (simulate_nonlinear takes ramps, with or without nonlinear effects)");
-  const int steps = static_cast<int>(std::llround(options.duration / options.time_step));
+  const int steps = static_cast<int>(simulate::sample_count(options.duration, options.time_step) - 1);
   const double h = options.time_step;
   AnalysisSummary summary;
   StageClock clock(&summary);

@@ -20,6 +20,7 @@
 #include "shortest_text.hpp"
 #include "simulate/dormand_prince.hpp"
 #include "simulate/history_summary.hpp"
+#include "simulate/sample_count.hpp"
 #include "simulate/nonlinear_elements.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -583,7 +584,7 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
               profile, effects.constant_friction);
   Eigen::VectorXd y = initial_state(system, options);
 
-  const int outputs = static_cast<int>(std::llround(options.duration / options.time_step));
+  const int outputs = static_cast<int>(simulate::sample_count(options.duration, options.time_step) - 1);
   clock.lap("model");
   TimeHistory out;
   for (const auto& d : system.dofs) out.labels.push_back(d.label);

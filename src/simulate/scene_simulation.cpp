@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "simulate/history_summary.hpp"
+#include "simulate/sample_count.hpp"
 #include "simulate/record_memory.hpp"
 #include "simulate/record_spectrum.hpp"
 #include "summary/stage_clock.hpp"
@@ -106,7 +107,8 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memo
     // spectrum each (2N + 1 bins: 16), and the transform's 72 and the modal products' 8 (with
     // room to spare: 294 bytes a sample measured for 6 DOFs against 340 estimated).
     const int dofs = system.size();
-    const double samples = std::floor(scene.simulation->duration / scene.simulation->time_step + 0.5) + 1.0;
+    const double samples =
+        static_cast<double>(simulate::sample_count(scene.simulation->duration, scene.simulation->time_step));
     simulate::require_record_fits("fft-check (the whole record of every DOF, for its transforms)", samples, dofs,
                                   40.0 * dofs + 100.0, memory_limit);
   }
