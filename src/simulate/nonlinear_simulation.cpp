@@ -502,6 +502,11 @@ class Integration {
       if (slots[s].kind == Slot::Kind::stuck) releasing.push_back(slots[s].element);
     }
     for (const auto& e : model_.resolve(t_, &y_, candidates, releasing)) out_.events.push_back(e);
+    if (out_.events.size() > options_.max_events)
+      throw NumericalError("simulation: more than " + std::to_string(options_.max_events) +
+                           " stick/slip/kink events by t = " + shortest_text(t_, 9) +
+                           " s: each is held with the state after it, and the limit (max_events) bounds their "
+                           "memory; simulate a shorter duration");
     stamp(first_event);
     mark_just_fired(slots, fired.slots, candidates);
   }
