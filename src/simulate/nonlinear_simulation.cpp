@@ -20,8 +20,8 @@
 #include "shortest_text.hpp"
 #include "simulate/dormand_prince.hpp"
 #include "simulate/history_summary.hpp"
-#include "simulate/sample_count.hpp"
 #include "simulate/nonlinear_elements.hpp"
+#include "simulate/sample_count.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {

@@ -8,9 +8,9 @@
 #include <stdexcept>
 
 #include "simulate/history_summary.hpp"
-#include "simulate/sample_count.hpp"
 #include "simulate/record_memory.hpp"
 #include "simulate/record_spectrum.hpp"
+#include "simulate/sample_count.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
