@@ -25,6 +25,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,6 +59,12 @@ struct SimulationOptions {
   /// located to within this time, s. Below resolvable_event_tolerance(duration) the
   /// simulation uses that limit instead and says so in its summary.
   double event_tolerance = 1e-12;
+  /// Nonlinear path only: the most events a run records before it stops with NumericalError.
+  /// Each event is held with the state after it: 16 bytes a DOF, and up to about 180 more for
+  /// the event, its two vectors' heap headers and the list's spare capacity. Their number
+  /// follows the motion, not the step count: the default, 10⁷, bounds that list to about
+  /// 2.7 GB for 6 DOFs (a friction run has a few events a second).
+  std::size_t max_events = 10'000'000;
   /// Returns false and explains in *why when an option is out of range: duration and time step
   /// positive, tolerances positive, final_speed finite and ≥ 0. Both paths check every option,
   /// also those only the nonlinear path reads. The rules that depend on the path or the sources

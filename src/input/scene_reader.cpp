@@ -200,8 +200,8 @@ SimulationSpec read_simulation(TableReader t, bool with_sources, std::map<std::s
     sim.event_tolerance = t.positive("event_tolerance", Quantity::time);
     if (sim.event_tolerance < resolvable_event_tolerance(sim.duration)) {
       char limit[96];
-      std::snprintf(limit, sizeof limit, "%.2g s over a %.6g s run (2.2e-16 of the duration)",
-                    resolvable_event_tolerance(sim.duration), sim.duration);
+      std::snprintf(limit, sizeof limit, "%.2g s over a %.6g s run (%.2g of the duration)",
+                    resolvable_event_tolerance(sim.duration), sim.duration, resolvable_event_tolerance(1.0));
       t.fail("event_tolerance", std::string("is finer than double precision resolves time: at least ") + limit);
     }
   }

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 
 #include "railmodal/simulation.hpp"
 
@@ -25,6 +26,19 @@ class HistoryRecorder final : public HistorySink {
   TimeHistory* history_;
   Eigen::Index next_ = 0;
 };
+
+/// The history that `simulate(sink)` returns with every sample it gave `sink` kept in it: what
+/// the simulations that take no sink return.
+template <class Simulate>
+TimeHistory recorded(Simulate&& simulate) {
+  TimeHistory samples;
+  HistoryRecorder recorder(&samples);
+  TimeHistory result = simulate(static_cast<HistorySink&>(recorder));
+  result.time = std::move(samples.time);
+  result.displacement = std::move(samples.displacement);
+  result.velocity = std::move(samples.velocity);
+  return result;
+}
 
 /// Passes every block to each of `sinks` in turn.
 class HistoryFanOut final : public HistorySink {

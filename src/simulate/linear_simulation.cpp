@@ -10,6 +10,7 @@
 #include "railmodal/simulation.hpp"
 #include "require_valid.hpp"
 #include "simulate/history_summary.hpp"
+#include "simulate/sample_count.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -270,13 +271,7 @@ bool march(const Eigen::MatrixXd& G, const MasslessRecovery& rec, const std::vec
 
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                             const SimulationOptions& options) {
-  TimeHistory out;
-  simulate::HistoryRecorder recorder(&out);
-  TimeHistory result = simulate_linear(system, sources, options, recorder);
-  result.time = std::move(out.time);
-  result.displacement = std::move(out.displacement);
-  result.velocity = std::move(out.velocity);
-  return result;
+  return simulate::recorded([&](HistorySink& sink) { return simulate_linear(system, sources, options, sink); });
 }
 
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
@@ -290,7 +285,7 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
   if (options.final_speed > 0.0)
     throw std::invalid_argument("simulation: a speed ramp changes the load's frequency; the state transition holds it "
                                 "fixed (simulate_nonlinear takes ramps, with or without nonlinear effects)");
-  const int steps = static_cast<int>(std::llround(options.duration / options.time_step));
+  const int steps = static_cast<int>(simulate::sample_count(options.duration, options.time_step) - 1);
   const double h = options.time_step;
   AnalysisSummary summary;
   StageClock clock(&summary);

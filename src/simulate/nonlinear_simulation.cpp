@@ -21,6 +21,7 @@
 #include "simulate/dormand_prince.hpp"
 #include "simulate/history_summary.hpp"
 #include "simulate/nonlinear_elements.hpp"
+#include "simulate/sample_count.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -458,8 +459,8 @@ class Integration {
     int side = 0;
     for (int iteration = 0; hi - lo > options_.event_tolerance && glo != 0.0; ++iteration) {
       if (iteration == kMaxIterations)
-        throw NumericalError("simulation: an event near t = " + std::to_string(t_) + " s was not located to " +
-                             std::to_string(options_.event_tolerance) + " s in " + std::to_string(kMaxIterations) +
+        throw NumericalError("simulation: an event near t = " + shortest_text(t_, 9) + " s was not located to " +
+                             shortest_text(options_.event_tolerance, 9) + " s in " + std::to_string(kMaxIterations) +
                              " iterations; try a larger event_tolerance");
       double mid = (lo * ghi - hi * glo) / (ghi - glo);
       if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
@@ -501,6 +502,11 @@ class Integration {
       if (slots[s].kind == Slot::Kind::stuck) releasing.push_back(slots[s].element);
     }
     for (const auto& e : model_.resolve(t_, &y_, candidates, releasing)) out_.events.push_back(e);
+    if (out_.events.size() > options_.max_events)
+      throw NumericalError("simulation: more than " + std::to_string(options_.max_events) +
+                           " stick/slip/kink events by t = " + shortest_text(t_, 9) +
+                           " s: each is held with the state after it, and the limit (max_events) bounds their "
+                           "memory; simulate a shorter duration");
     stamp(first_event);
     mark_just_fired(slots, fired.slots, candidates);
   }
@@ -547,13 +553,8 @@ class Integration {
 
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                                const SimulationOptions& options, const NonlinearEffects& effects) {
-  TimeHistory out;
-  simulate::HistoryRecorder recorder(&out);
-  TimeHistory result = simulate_nonlinear(system, sources, options, effects, recorder);
-  result.time = std::move(out.time);
-  result.displacement = std::move(out.displacement);
-  result.velocity = std::move(out.velocity);
-  return result;
+  return simulate::recorded(
+      [&](HistorySink& sink) { return simulate_nonlinear(system, sources, options, effects, sink); });
 }
 
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
@@ -588,7 +589,7 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
               profile, effects.constant_friction);
   Eigen::VectorXd y = initial_state(system, options);
 
-  const int outputs = static_cast<int>(std::llround(options.duration / options.time_step));
+  const int outputs = static_cast<int>(simulate::sample_count(options.duration, options.time_step) - 1);
   clock.lap("model");
   TimeHistory out;
   for (const auto& d : system.dofs) out.labels.push_back(d.label);

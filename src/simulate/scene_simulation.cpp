@@ -10,6 +10,7 @@
 #include "simulate/history_summary.hpp"
 #include "simulate/record_memory.hpp"
 #include "simulate/record_spectrum.hpp"
+#include "simulate/sample_count.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -53,6 +54,55 @@ void summarise_checks(FftCheckResult* out) {
                       count([](const FftCheck& c) { return c.within_resolution; }), excited, true});
 }
 
+// Refuses, before the run, a record fft-check could not hold: the history of every DOF
+// (displacement and velocity, 16 bytes a sample each), up to one spectrum each (2N + 1 bins:
+// 16), and the transform's 72 and the modal products' 8 (with room to spare: 294 bytes a sample
+// measured for 6 DOFs against 340 estimated).
+void require_check_fits(const SimulationSpec& spec, int dofs, double memory_limit) {
+  const double samples = static_cast<double>(simulate::sample_count(spec.duration, spec.time_step));
+  simulate::require_record_fits("fft-check (the whole record of every DOF, for its transforms)", samples, dofs,
+                                40.0 * dofs + 100.0, memory_limit);
+}
+
+// How much each oscillatory mode moves over the record: the largest |η| of its modal
+// coordinate, and the mode that moves most.
+struct ModalAmplitudes {
+  std::vector<double> amplitude;  // per mode of the result; 0 for the non-oscillatory ones
+  double most = 0.0;
+  int most_mode = -1;
+};
+
+ModalAmplitudes modal_amplitudes(const LinearSystem& system, const ModalResult& modes, const TimeHistory& history) {
+  ModalAmplitudes e;
+  e.amplitude.assign(modes.modes.size(), 0.0);
+  for (size_t r = 0; r < modes.modes.size(); ++r) {
+    const Mode& mode = modes.modes[r];
+    if (mode.kind != ModeKind::oscillatory) continue;
+    const Eigen::VectorXd Mphi = system.mass * mode.shape;
+    e.amplitude[r] = (history.displacement * Mphi).cwiseAbs().maxCoeff();
+    if (e.amplitude[r] > e.most) e.most = e.amplitude[r], e.most_mode = static_cast<int>(r);
+  }
+  return e;
+}
+
+// Sets the check's resolution from `spectrum` and, for an excited mode, its peak: the peak
+// nearest the modal frequency, when within 3 resolutions of it.
+void match_peak(const Spectrum& spectrum, FftCheck* check) {
+  check->resolution_hz = spectrum.resolution;
+  if (!check->excited) return;
+  const double f = check->modal_hz;
+  const SpectralPeak* nearest = nullptr;
+  const auto peaks = find_peaks(spectrum);
+  for (const auto& p : peaks)
+    if (!nearest || std::abs(p.frequency - f) < std::abs(nearest->frequency - f)) nearest = &p;
+  if (nearest && std::abs(nearest->frequency - f) <= 3.0 * std::max(nearest->resolution, spectrum.resolution)) {
+    check->peak_hz = nearest->frequency;
+    check->resolution_hz = std::max(nearest->resolution, spectrum.resolution);
+    check->rel_error = (nearest->frequency - f) / f;
+    check->within_resolution = std::abs(nearest->frequency - f) <= check->resolution_hz;
+  }
+}
+
 }  // namespace
 
 NonlinearEffects scene_effects(const Scene& scene) {
@@ -71,13 +121,7 @@ LinearSystem scene_system(const Scene& scene, const Vehicle& vehicle) {
 }
 
 TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle) {
-  TimeHistory out;
-  simulate::HistoryRecorder recorder(&out);
-  TimeHistory result = simulate_scene(scene, vehicle, {&recorder});
-  result.time = std::move(out.time);
-  result.displacement = std::move(out.displacement);
-  result.velocity = std::move(out.velocity);
-  return result;
+  return simulate::recorded([&](HistorySink& sink) { return simulate_scene(scene, vehicle, {&sink}); });
 }
 
 TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle, const std::vector<HistorySink*>& sinks) {
@@ -107,15 +151,7 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memo
   FftCheckResult out;
   StageClock clock(&out.summary);
   const LinearSystem system = scene_system(scene, vehicle);
-  {
-    // The history of every DOF (displacement and velocity, 16 bytes a sample each), up to one
-    // spectrum each (2N + 1 bins: 16), and the transform's 72 and the modal products' 8 (with
-    // room to spare: 294 bytes a sample measured for 6 DOFs against 340 estimated).
-    const int dofs = system.size();
-    const double samples = std::floor(scene.simulation->duration / scene.simulation->time_step + 0.5) + 1.0;
-    simulate::require_record_fits("fft-check (the whole record of every DOF, for its transforms)", samples, dofs,
-                                  40.0 * dofs + 100.0, memory_limit);
-  }
+  require_check_fits(*scene.simulation, system.size(), memory_limit);
   out.history = simulate_scene(scene, vehicle);
   clock.lap("simulate");
   out.modes = solve_modes(system);
@@ -128,16 +164,7 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memo
   Eigen::VectorXd dof_energy(system.size());  // M_dd max|x_d|²: comparable across m and rad
   for (int d = 0; d < system.size(); ++d)
     dof_energy(d) = system.mass(d, d) * out.history.displacement.col(d).cwiseAbs2().maxCoeff();
-  std::vector<double> modal_amplitude(out.modes.modes.size(), 0.0);
-  double most_excited = 0.0;
-  int most_excited_mode = -1;
-  for (size_t r = 0; r < out.modes.modes.size(); ++r) {
-    const Mode& mode = out.modes.modes[r];
-    if (mode.kind != ModeKind::oscillatory) continue;
-    const Eigen::VectorXd Mphi = system.mass * mode.shape;
-    modal_amplitude[r] = (out.history.displacement * Mphi).cwiseAbs().maxCoeff();
-    if (modal_amplitude[r] > most_excited) most_excited = modal_amplitude[r], most_excited_mode = static_cast<int>(r);
-  }
+  const ModalAmplitudes amplitudes = modal_amplitudes(system, out.modes, out.history);
   for (size_t r = 0; r < out.modes.modes.size(); ++r) {
     const Mode& mode = out.modes.modes[r];
     if (mode.kind != ModeKind::oscillatory || mode.frequency_hz > fs / 4.0) continue;
@@ -149,37 +176,21 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memo
       out.spectra.push_back(analyzer.compute(out.history.displacement.col(dof), fs));
       at = out.spectrum_dofs.end() - 1;
     }
-    const Spectrum& spectrum = out.spectra[at - out.spectrum_dofs.begin()];
     FftCheck check;
     check.mode = mode.index;
     check.mode_name = mode.name;
     check.dof = label;
     check.modal_hz = mode.frequency_hz;
-    check.resolution_hz = spectrum.resolution;
-    check.modal_amplitude_ratio = most_excited > 0.0 ? modal_amplitude[r] / most_excited : 0.0;
+    check.modal_amplitude_ratio = amplitudes.most > 0.0 ? amplitudes.amplitude[r] / amplitudes.most : 0.0;
     check.excited = check.modal_amplitude_ratio >= FftCheck::kExcitedRatio;
-    if (!check.excited) {
-      out.checks.push_back(check);
-      continue;
-    }
-    const SpectralPeak* nearest = nullptr;
-    const auto peaks = find_peaks(spectrum);
-    for (const auto& p : peaks)
-      if (!nearest || std::abs(p.frequency - mode.frequency_hz) < std::abs(nearest->frequency - mode.frequency_hz))
-        nearest = &p;
-    if (nearest && std::abs(nearest->frequency - mode.frequency_hz) <= 3.0 * std::max(nearest->resolution, spectrum.resolution)) {
-      check.peak_hz = nearest->frequency;
-      check.resolution_hz = std::max(nearest->resolution, spectrum.resolution);
-      check.rel_error = (nearest->frequency - mode.frequency_hz) / mode.frequency_hz;
-      check.within_resolution = std::abs(nearest->frequency - mode.frequency_hz) <= check.resolution_hz;
-    }
+    match_peak(out.spectra[at - out.spectrum_dofs.begin()], &check);
     out.checks.push_back(check);
   }
   clock.lap("spectra and peaks");
   // Friction and kinks broaden the lines: the half periods of the most excited mode's DOF
   // are the check (the lowest mode may barely move: the two-axle wagon's pitch over joints).
-  if (scene_effects(scene).any() && most_excited_mode >= 0) {
-    const Mode& mode = out.modes.modes[most_excited_mode];
+  if (scene_effects(scene).any() && amplitudes.most_mode >= 0) {
+    const Mode& mode = out.modes.modes[amplitudes.most_mode];
     out.swings = swings(out.history, showing_dof(mode, dof_energy));
     out.linear_half_period_s = 0.5 / mode.frequency_hz;
   }

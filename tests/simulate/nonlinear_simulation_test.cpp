@@ -118,6 +118,32 @@ TEST(NonlinearSimulation, SceneEffectsChooseThePath) {
   EXPECT_NEAR(h.displacement.col(0).maxCoeff(), 0.039, 1e-9);
 }
 
+// A run's events are held with their states, and their number follows the motion, not the
+// step count: past max_events the run stops with the limit in the message instead of growing
+// the list without bound (issue 18, review of item 4). The wagon over joints with friction
+// has many more than 5 events in a second.
+TEST(NonlinearSimulation, EventsBeyondTheLimitAreRefused) {
+  const Scene s = load_scene(scene_file("two_axle_freight_wagon_joints_friction.toml"));
+  const LinearSystem system = scene_system(s, load_vehicle(s.vehicle_file));
+  std::vector<const ExcitationSource*> sources;
+  for (const auto& source : s.sources) sources.push_back(source.get());
+  SimulationOptions o;
+  o.speed = s.simulation->speed;
+  o.duration = 1.0;
+  o.time_step = s.simulation->time_step;
+  const size_t all = simulate_nonlinear(system, sources, o, scene_effects(s)).events.size();
+  ASSERT_GT(all, 5u);
+  o.max_events = 5;
+  try {
+    simulate_nonlinear(system, sources, o, scene_effects(s));
+    FAIL() << "a run with more events than max_events was not refused";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than 5 stick/slip/kink events"), std::string::npos) << e.what();
+  }
+  o.max_events = all;
+  EXPECT_EQ(simulate_nonlinear(system, sources, o, scene_effects(s)).events.size(), all);
+}
+
 // A Khanin-type curve: 260 kg/cm to the kink at 70 mm, 356 kg/cm beyond (Example 10).
 TEST(LoadDeflectionCurve, PiecewiseLinearWithKink) {
   LoadDeflectionCurve c;
