@@ -52,7 +52,7 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
 }
 
 Study load_study(const std::string& path, const std::function<bool(int index)>& read_only) {
-  return load_study(path, read_only, input::kMaxStudyVariants);
+  return load_study(path, read_only, kMaxStudyVariants);
 }
 
 StudyVariant read_variant(const Study& study, int index) {

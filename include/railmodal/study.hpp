@@ -12,6 +12,7 @@
 //   }
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <istream>
 #include <memory>
@@ -105,6 +106,12 @@ struct Study {
   DeflectionRule deflection_rule;  ///< [permissible_dynamic_deflection]; none: not checked
   std::shared_ptr<const detail::StudySource> plan;  ///< for read_variant; shared by copies
 };
+
+/// The most variants a study may hold: the base, [[variant]] tables and sweep points, listed in
+/// memory in every shard, each at about 2.5 kB (10^6: 2.5 GB and 7.6 s on the development
+/// machine; docs/studies.md). load_study refuses a study over it, at the table that goes over.
+/// It bounds the number of shards too: that many give each at most one variant.
+inline constexpr std::size_t kMaxStudyVariants = 1000000;
 
 /// Whether variant `index` is in shard `shard` of `shards` (1 <= shard <= shards): index mod
 /// shards = shard − 1. Shards interleave, so each gets a like mix of the study's variants.

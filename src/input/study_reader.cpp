@@ -133,9 +133,9 @@ study::SweepParameter read_parameter(TableReader& t, bool sample, StudyFile* fil
   return p;
 }
 
-// "a million variants" for the default limit.
+// "a million variants" for 10^6 (kMaxStudyVariants), "64 variants" otherwise.
 std::string variants_text(size_t count) {
-  return count == kMaxStudyVariants ? "a million variants" : std::to_string(count) + " variants";
+  return count == 1000000 ? "a million variants" : std::to_string(count) + " variants";
 }
 
 // A sweep of the study, which adds its variants to the `*listed` so far; `max_variants` in all.

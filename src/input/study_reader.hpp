@@ -15,11 +15,10 @@
 
 namespace railmodal::input {
 
-/// Every variant is listed in memory, in every shard, even when not read: about 2.5 kB each
-/// (10^6 listed: 2.5 GB and 7.6 s on the development machine), and a read one about 10 kB.
-/// An explicit [[variant]] table costs about 3 kB with its parsed TOML, and 45 µs to read
+/// The limit on a study's variants is railmodal::kMaxStudyVariants (study.hpp). Every variant is
+/// listed in memory, in every shard, even when not read: about 2.5 kB each, and a read one about
+/// 10 kB. An explicit [[variant]] table costs about 3 kB with its parsed TOML, and 45 µs to read
 /// (100 000: 320 MB, 4.7 s CPU; tools/benchmarks/study_variants_linearity.py).
-inline constexpr size_t kMaxStudyVariants = 1000000;
 
 /// A study file read: the plan it writes, and what reading its variants needs.
 struct StudyFile {

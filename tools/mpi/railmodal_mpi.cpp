@@ -71,40 +71,69 @@ struct ShardText {
   std::string text;  ///< the shard, or the message when code != kSuccess
 };
 
-ShardText evaluate_shard(const Options& o, int rank, int size, int threads, std::optional<railmodal::Study>& study) {
+/// `step`'s text, or its failure with the exit code and message railmodal gives it.
+template <class Step>
+ShardText guarded(const Step& step) {
   try {
-    // Each rank reads its own variants only; rank 0's report reads the others it draws.
-    study = railmodal::load_study(o.study, [&](int index) { return railmodal::in_shard(index, rank + 1, size); });
+    return {kSuccess, step()};
+  } catch (const railmodal::InputError& e) {
+    return {kInput, e.what()};
+  } catch (const OutputError& e) {
+    return {e.code(), e.what()};
+  } catch (const std::exception& e) {
+    return {kInternal, std::string("railmodal-mpi: internal error: ") + e.what()};
+  }
+}
+
+/// The study with this rank's variants read; rank 0's report reads the others it draws.
+railmodal::Study load_own_variants(const Options& o, int rank, int size) {
+  return railmodal::load_study(o.study, [&](int index) { return railmodal::in_shard(index, rank + 1, size); });
+}
+
+/// Rank 0, before any rank evaluates: its output opened, its study read, and the output refused
+/// if it is one of the study's files (as railmodal compare does), so that these fail first.
+ShardText prepare_output(const Options& o, int size, OutputFiles& outputs, std::ostream** out,
+                         std::optional<railmodal::Study>& study) {
+  return guarded([&] {
+    *out = &outputs.open(o.output);
+    outputs.refuse_inputs({o.study});
+    study = load_own_variants(o, 0, size);
+    outputs.refuse_inputs(railmodal::study_files(*study));
+    return std::string();
+  });
+}
+
+ShardText evaluate_shard(const Options& o, int rank, int size, int threads, std::optional<railmodal::Study>& study) {
+  return guarded([&] {
+    if (!study) study = load_own_variants(o, rank, size);
     railmodal::EvaluationOptions evaluation;
     evaluation.shard = rank + 1;
     evaluation.shards = size;
     evaluation.threads = threads;
     std::ostringstream out;
     railmodal::write_shard(out, *study, evaluation, railmodal::evaluate_study(*study, evaluation));
-    return {kSuccess, out.str()};
-  } catch (const railmodal::InputError& e) {
-    return {kInput, e.what()};
-  } catch (const std::exception& e) {
-    return {kInternal, std::string("railmodal-mpi: internal error: ") + e.what()};
-  }
+    return out.str();
+  });
 }
 
-/// Rank 0's output, opened before any rank evaluates so that a bad path fails first.
-ShardText open_output(const Options& o, OutputFiles& outputs, std::ostream** out) {
-  try {
-    *out = &outputs.open(o.output);
-    outputs.refuse_inputs({o.study});
-    return {};
-  } catch (const OutputError& e) {
-    return {e.code(), e.what()};
-  }
+/// Collective: every rank learns whether any failed, so none waits for a shard that never
+/// comes. The lowest failing rank prints its message and every rank returns that rank's code.
+int first_failure(const ShardText& mine, int rank, int size) {
+  int failing = mine.code != kSuccess ? rank : size;
+  int first = size;
+  MPI_Allreduce(&failing, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
+  if (first == size) return kSuccess;
+  int code = mine.code;
+  MPI_Bcast(&code, 1, MPI_INT, first, MPI_COMM_WORLD);
+  if (rank == first)
+    std::cerr << (rank == 0 ? "" : "railmodal-mpi: rank " + std::to_string(rank) + ": ") << mine.text << "\n";
+  return code;
 }
 
 /// Rank 0: the gathered shards ranked and written as railmodal compare writes them.
 int merge_and_write(const Options& o, const railmodal::Study& study, const std::vector<std::string>& shards,
                     OutputFiles& outputs, std::ostream& out) {
   try {
-    outputs.refuse_inputs(railmodal::study_files(study));
     std::vector<railmodal::VariantResult> results;
     std::set<int> seen;
     for (size_t r = 0; r < shards.size(); ++r) {
@@ -148,21 +177,12 @@ int run(const Options& o, int rank, int size) {
   std::optional<railmodal::Study> study;
   OutputFiles outputs;  // rank 0's
   std::ostream* out = nullptr;
-  ShardText shard = rank == 0 ? open_output(o, outputs, &out) : ShardText{};
-  if (shard.code == kSuccess) shard = evaluate_shard(o, rank, size, threads, study);
-  // Every rank learns whether any failed, so none waits for a shard that never comes; the
-  // lowest failing rank prints its message (all ranks read the same study: one message).
-  int code = shard.code;
-  int worst = kSuccess;
-  MPI_Allreduce(&code, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  if (worst != kSuccess) {
-    int failing = code != kSuccess ? rank : size;
-    int first = size;
-    MPI_Allreduce(&failing, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
-    if (rank == first)
-      std::cerr << (rank == 0 ? "" : "railmodal-mpi: rank " + std::to_string(rank) + ": ") << shard.text << "\n";
-    return worst;
-  }
+  // Rank 0's output and study are checked before any rank evaluates: a bad output fails alone.
+  int code = first_failure(rank == 0 ? prepare_output(o, size, outputs, &out, study) : ShardText{}, rank, size);
+  if (code != kSuccess) return code;
+  ShardText shard = evaluate_shard(o, rank, size, threads, study);
+  code = first_failure(shard, rank, size);
+  if (code != kSuccess) return code;
 
   // The shards' lengths, then their bytes, to rank 0 (one Gatherv holds at most INT_MAX bytes).
   const long long own_length = static_cast<long long>(shard.text.size());
@@ -192,7 +212,6 @@ int run(const Options& o, int rank, int size) {
   shard.text.clear();
   shard.text.shrink_to_fit();
 
-  code = kSuccess;
   if (rank == 0) {
     std::vector<std::string> shards;
     for (int r = 0; r < size; ++r) shards.emplace_back(bytes.data() + offsets[r], static_cast<size_t>(lengths[r]));

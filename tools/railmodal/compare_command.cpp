@@ -24,9 +24,9 @@ struct CompareOptions {
   bool quiet = false;
 };
 
-// A study holds at most a million variants (docs/studies.md; kMaxStudyVariants in the study
-// reader): a million shards give each at most one.
-constexpr int kMaxShards = 1000000;
+// As many shards as a study may hold variants give each at most one.
+constexpr int kMaxShards = static_cast<int>(kMaxStudyVariants);
+static_assert(kMaxStudyVariants < 10000000, "parse_shard reads at most 7 digits");
 
 // "K/N" into evaluation->shard and shards; false if it is not 1 <= K <= N <= kMaxShards.
 bool parse_shard(const std::string& text, EvaluationOptions* evaluation) {
@@ -45,7 +45,7 @@ int run(const CompareOptions& o) {
   if (!o.shard.empty()) {
     if (!parse_shard(o.shard, &evaluation)) {
       std::cerr << "railmodal: error: --shard expects K/N with 1 <= K <= N <= " << kMaxShards
-                << " (a study holds at most a million variants), such as 2/4, not '" << o.shard << "'\n";
+                << " (the most variants a study may hold), such as 2/4, not '" << o.shard << "'\n";
       return kUsage;
     }
     if (!o.merge.empty()) {

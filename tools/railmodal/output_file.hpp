@@ -24,8 +24,8 @@ class OutputError : public std::runtime_error {
 ///
 ///     OutputFiles outputs;
 ///     std::ostream& out = outputs.open(o.output);      // before the analysis: a bad path fails now
-///     outputs.refuse_inputs({o.scene, scene.vehicle_file});
-///     write_time_history(out, simulate_scene(scene, vehicle), scene, vehicle, format);
+///     outputs.refuse_inputs({o.file});                 // railmodal does not write over its inputs
+///     write_modes(out, system.vehicle.name, solve_modes(system, options), format);
 ///     outputs.commit();                                // every file appears, or none
 ///
 /// A file is written into a temporary beside it (a new name, created exclusively: nothing
