@@ -133,9 +133,10 @@ study::SweepParameter read_parameter(TableReader& t, bool sample, StudyFile* fil
   return p;
 }
 
-// "a million variants" for 10^6 (kMaxStudyVariants), "64 variants" otherwise.
+// "a million variants" for the limit (kMaxStudyVariants, 10^6), "64 variants" otherwise.
 std::string variants_text(size_t count) {
-  return count == 1000000 ? "a million variants" : std::to_string(count) + " variants";
+  static_assert(kMaxStudyVariants == 1000000, "the text below names the limit");
+  return count == kMaxStudyVariants ? "a million variants" : std::to_string(count) + " variants";
 }
 
 // A sweep of the study, which adds its variants to the `*listed` so far; `max_variants` in all.

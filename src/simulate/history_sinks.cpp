@@ -14,7 +14,7 @@ namespace {
 // of 4 MB or more: a million steps of 15 DOFs is 240 MB of output, whose first touch with
 // 4 kB pages is 60 000 page faults; with huge pages it is 120. Under a hypervisor that
 // shadows guest page tables a fault costs ~17 µs, so this took a million-step run from 1.4 s
-// to 0.5 s (before the product below); on bare metal it saves less. Only advice: it changes no result, and does nothing
+// to 0.5 s; on bare metal it saves less. Only advice: it changes no result, and does nothing
 // where unsupported.
 void advise_huge_pages(Eigen::MatrixXd* array) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)

@@ -133,7 +133,7 @@ int first_failure(const ShardText& mine, int rank, int size) {
 /// Rank 0: the gathered shards ranked and written as railmodal compare writes them.
 int merge_and_write(const Options& o, const railmodal::Study& study, const std::vector<std::string>& shards,
                     OutputFiles& outputs, std::ostream& out) {
-  try {
+  const ShardText written = guarded([&] {
     std::vector<railmodal::VariantResult> results;
     std::set<int> seen;
     for (size_t r = 0; r < shards.size(); ++r) {
@@ -159,17 +159,10 @@ int merge_and_write(const Options& o, const railmodal::Study& study, const std::
                                            : railmodal::ComparisonCurves{},
                                        format);
     outputs.commit();
-    return kSuccess;
-  } catch (const railmodal::InputError& e) {
-    std::cerr << e.what() << "\n";
-    return kInput;
-  } catch (const OutputError& e) {
-    std::cerr << e.what() << "\n";
-    return e.code();
-  } catch (const std::exception& e) {
-    std::cerr << "railmodal-mpi: internal error: " << e.what() << "\n";
-    return kInternal;
-  }
+    return std::string();
+  });
+  if (written.code != kSuccess) std::cerr << written.text << "\n";
+  return written.code;
 }
 
 int run(const Options& o, int rank, int size) {
