@@ -36,3 +36,4 @@
 #include "railmodal/study.hpp"
 #include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
+#include "railmodal/version.hpp"

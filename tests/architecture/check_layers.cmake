@@ -15,7 +15,8 @@
 # comparison report draws (public calls only), so that the report reads no file. Foundations
 # below every stage, which include nothing of the stages: require_valid.hpp (the one check of
 # an options struct) and summary/ (the stage clock of an AnalysisSummary), which any analysis
-# and report may include, and shortest_text.hpp (round-trip number text), which any stage may.
+# and report may include, and shortest_text.hpp (round-trip number text), which any stage may. version.cpp defines
+# railmodal::version() and includes nothing of the stages.
 cmake_minimum_required(VERSION 3.16)
 
 set(foundations "require_valid;summary;shortest_text")
@@ -34,6 +35,7 @@ set(may_include_comparison_curves "")
 set(may_include_require_valid "")
 set(may_include_summary "")
 set(may_include_shortest_text "")
+set(may_include_version "")
 # Single headers of another stage a stage may include: plan types a reader fills.
 set(may_include_headers_input "study/study_plan.hpp")
 
