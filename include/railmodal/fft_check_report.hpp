@@ -24,9 +24,10 @@ namespace railmodal {
 ///   table: the checks (mode, DOF, modal and peak frequency, relative error, resolution and
 ///   whether the peak lies within it, or why there is none) and, for a nonlinear scene, the
 ///   half periods between the turning points and between passes through the static position.
-///   csv: one row per check: mode, mode_name, dof, modal_hz, peak_hz, rel_error,
-///   resolution_hz, within_resolution, excited, modal_amplitude_ratio (no peak: blank).
-///   json: {"scene", "checks": [{the csv's columns; no peak: null}], and for a nonlinear scene
+///   csv: one row per check: mode, mode_name, dof, modal [Hz], peak [Hz], rel_error,
+///   resolution [Hz], within_resolution, excited, modal_amplitude_ratio (no peak: blank).
+///   json: {"scene", "checks": [{the csv's columns, keyed mode_name, modal_hz, peak_hz,
+///   resolution_hz, …; no peak: null}], and for a nonlinear scene
 ///   "half_periods": {"dof", "linear_half_period_s", "between_turning_points_s",
 ///   "between_crossings_s", "turning_points": [{"time_s", "displacement"}], "comes_to_rest"}}.
 ///   html: a self-contained page (inline SVG, no scripts): the displacement histories of the

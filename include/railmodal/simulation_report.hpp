@@ -27,10 +27,11 @@ namespace railmodal {
 
 /// Writes csv or json (std::invalid_argument for table, markdown and html) of the DOFs the
 /// scene's simulation outputs (output_columns), numbers to ten significant digits. csv:
-/// "time_s" and one column per DOF, one row per sample; json: {"scene", "time_s",
-/// "displacement": {label: [...]}}, and for a nonlinear scene "events": [{"time_s", "element",
-/// "kind"}] and "integration_steps". `vehicle` names the events' elements. The history may be
-/// an OutputRecord's (its output columns only). The text is streamed, never held whole.
+/// "time [s]" and one column per DOF ("body.bounce [m]", "body.pitch [rad]"), one row per
+/// sample; json: {"scene", "time_s", "displacement": {label: [...]}}, and for a nonlinear
+/// scene "events": [{"time_s", "element", "kind"}] and "integration_steps". `vehicle` names the
+/// events' elements. The history may be an OutputRecord's (its output columns only). The text
+/// is streamed, never held whole.
 void write_time_history(std::ostream& out, const TimeHistory& history, const Scene& scene, const Vehicle& vehicle,
                         OutputFormat format);
 
@@ -49,8 +50,8 @@ class CsvHistoryWriter final : public HistorySink {
   std::vector<int> columns_;
 };
 
-/// Writes csv (std::invalid_argument for every other format): "frequency_hz" and one column
-/// per DOF, one row per bin up to the Nyquist frequency, amplitudes to ten significant digits.
+/// Writes csv (std::invalid_argument for every other format): "frequency [Hz]" and one column
+/// per DOF ("body.bounce [m]"), one row per bin up to the Nyquist frequency, amplitudes to ten significant digits.
 void write_spectra(std::ostream& out, const OutputSpectra& spectra, OutputFormat format);
 
 }  // namespace railmodal

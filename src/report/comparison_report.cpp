@@ -11,6 +11,7 @@
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"
+#include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
 #include "shortest_text.hpp"
 #include "study/metrics.hpp"
@@ -147,10 +148,11 @@ std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& 
   if (deflections) head.push_back(for_csv ? "dynamic_deflection_ratio" : "dyn. deflection / permissible");
   head.push_back("periods [s]");
   if (for_csv) {
-    head.back() = "periods_s";
-    head[2 + (for_csv ? 1 : 0) + c.ranking.objective.size() + 1] = "lowest_critical_speed_kmh";
-    head[2 + (for_csv ? 1 : 0) + c.ranking.objective.size() + 2] = "static_deflection_mm";
-    for (const char* h : {"critical_speeds_kmh", "failure", "violations"}) head.push_back(h);
+    head.back() = report::csv_heading("periods", "s");
+    head[2 + (for_csv ? 1 : 0) + c.ranking.objective.size() + 1] = report::csv_heading("lowest_critical_speed", "km/h");
+    head[2 + (for_csv ? 1 : 0) + c.ranking.objective.size() + 2] = report::csv_heading("static_deflection", "mm");
+    head.push_back(report::csv_heading("critical_speeds", "km/h"));
+    for (const char* h : {"failure", "violations"}) head.push_back(h);
   }
   rows.push_back(head);
   for (const RankedVariant& v : c.variants) {

@@ -369,8 +369,12 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
 // ---- CSV and JSON ---------------------------------------------------------------------------
 
 void write_csv(std::ostream& out, const CriticalSpeedStudy& st) {
-  out << "speed_kmh,source,source_index,harmonic,mode,mode_name,frequency_hz,output,amplitude,unbounded,"
-         "growth_per_half_period,friction_decrement_per_half_period,friction_stops,friction_threshold_scale\n";
+  // The amplitudes are of each row's output: m, or rad for a roll, pitch or yaw.
+  using report::csv_heading;
+  out << csv_heading("speed", "km/h") << ",source,source_index,harmonic,mode,mode_name,"
+      << csv_heading("frequency", "Hz") << ",output," << csv_heading("amplitude", "m or rad") << ",unbounded,"
+      << csv_heading("growth_per_half_period", "m or rad") << ","
+      << csv_heading("friction_decrement_per_half_period", "m or rad") << ",friction_stops,friction_threshold_scale\n";
   out << std::setprecision(10);
   for (const auto& r : st.critical_speeds)
     out << r.speed * kKmh << "," << r.source_kind << "," << r.source + 1 << "," << r.harmonic << "," << r.mode << ","

@@ -85,9 +85,13 @@ void write_table(std::ostream& out, const LinearSystem& system, const DampedModa
 }
 
 void write_csv(std::ostream& out, const DampedModalResult& r) {
-  out << "index,name,kind,stable,damped_frequency_hz,damping_ratio,natural_frequency_hz,undamped_mode,"
-         "undamped_frequency_hz,decay_rate_per_s,eigenvalue1_re,eigenvalue1_im,eigenvalue2_re,eigenvalue2_im,"
-         "residual\n";
+  using report::csv_heading;
+  out << "index,name,kind,stable," << csv_heading("damped_frequency", "Hz") << ",damping_ratio,"
+      << csv_heading("natural_frequency", "Hz") << ",undamped_mode," << csv_heading("undamped_frequency", "Hz") << ","
+      << csv_heading("decay_rate", "1/s");
+  for (const char* part : {"eigenvalue1_re", "eigenvalue1_im", "eigenvalue2_re", "eigenvalue2_im"})
+    out << "," << csv_heading(part, "1/s");  // λ = −σ ± iω_d
+  out << ",residual\n";
   for (const auto& m : r.modes) {
     out << m.index << "," << csv_field(m.name) << "," << to_string(m.kind) << "," << (m.stable ? "true" : "false")
         << "," << optional_number(m.damped_frequency_hz, 10) << "," << optional_number(m.damping_ratio, 10) << ","

@@ -35,6 +35,16 @@ std::string number(double value, int precision, bool present) {
 }
 
 using report::csv_field;
+using report::csv_heading;
+
+// The unit of a mass-normalised shape's entry (φᵀMφ = 1): the modal coordinate is in √kg·m, so
+// a translation's entry is in m per √kg·m and a rotation's in rad per √kg·m. A matrix model's
+// units are its matrices' (unknown): "".
+std::string shape_unit(const Dof& dof) {
+  if (dof.body < 0) return "";
+  const std::string unit = report::displacement_unit(dof.label);
+  return unit == "rad" ? "rad/(sqrt(kg) m)" : unit == "m" ? "1/sqrt(kg)" : "";
+}
 
 // One line on how ARPACK found the modes (nothing for the dense solver, which finds all).
 std::string solver_line(const ModalResult& r) {
@@ -107,8 +117,9 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
 }
 
 void write_csv(std::ostream& out, const ModalResult& r) {
-  out << "index,name,kind,frequency_hz,period_s,omega_rad_s,divergence_rate_per_s,centre_of_oscillation";
-  for (const auto& d : r.dofs) out << "," << csv_field(d.label);
+  out << "index,name,kind," << csv_heading("frequency", "Hz") << "," << csv_heading("period", "s") << ","
+      << csv_heading("omega", "rad/s") << "," << csv_heading("divergence_rate", "1/s") << ",centre_of_oscillation";
+  for (const auto& d : r.dofs) out << "," << csv_field(csv_heading(d.label, shape_unit(d)));
   out << "\n";
   for (const auto& m : r.modes) {
     const bool osc = m.kind == ModeKind::oscillatory;

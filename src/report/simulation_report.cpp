@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
 
 namespace railmodal {
@@ -61,8 +62,9 @@ CsvHistoryWriter::CsvHistoryWriter(std::ostream& out, const Scene& scene) : out_
 
 void CsvHistoryWriter::begin(const std::vector<std::string>& labels, Eigen::Index) {
   columns_ = output_columns(labels, scene_);
-  out_ << std::setprecision(10) << "time_s";
-  for (int c : columns_) out_ << "," << labels[c];
+  out_ << std::setprecision(10) << report::csv_heading("time", "s");
+  for (int c : columns_)
+    out_ << "," << report::csv_field(report::csv_heading(labels[c], report::displacement_unit(labels[c])));
   out_ << "\n";
 }
 
@@ -93,8 +95,9 @@ void write_time_history(std::ostream& out, const TimeHistory& history, const Sce
 void write_spectra(std::ostream& out, const OutputSpectra& spectra, OutputFormat format) {
   if (format != OutputFormat::csv)
     throw std::invalid_argument(report::unwritten_format("write_spectra", "csv", format));
-  out << std::setprecision(10) << "frequency_hz";
-  for (const std::string& dof : spectra.dofs) out << "," << dof;
+  out << std::setprecision(10) << report::csv_heading("frequency", "Hz");  // spectra of displacements
+  for (const std::string& dof : spectra.dofs)
+    out << "," << report::csv_field(report::csv_heading(dof, report::displacement_unit(dof)));
   out << "\n";
   const std::vector<Spectrum>& s = spectra.spectra;
   for (Eigen::Index b = 0; !s.empty() && b < s.front().amplitude.size(); ++b) {

@@ -1,10 +1,13 @@
 // Text helpers shared by the report writers.
 #pragma once
 
-#include <iomanip>
 #include <cmath>
+#include <iomanip>
+#include <optional>
 #include <sstream>
 #include <string>
+
+#include "railmodal/vehicle.hpp"
 
 namespace railmodal::report {
 
@@ -14,6 +17,22 @@ inline std::string csv_field(const std::string& text) {
   std::string quoted = "\"";
   for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
+}
+
+/// A CSV column heading with its unit, "name [unit]" ("body.bounce [m]", "speed [km/h]"); the
+/// bare name for a column without a unit (a count, a ratio, a name) or whose unit is not known
+/// (""). Every CSV railmodal writes heads its columns so (docs/input.md, "Output files").
+inline std::string csv_heading(const std::string& name, const std::string& unit) {
+  return unit.empty() ? name : name + " [" + unit + "]";
+}
+
+/// The SI unit of a vehicle DOF's displacement, from the motion its label ends with
+/// ("bogie1.pitch": rad, "body.bounce": m); "" for a label naming no motion (a matrix model's
+/// "dof1", in whatever units its matrices are).
+inline std::string displacement_unit(const std::string& label) {
+  const std::optional<Motion> motion = motion_from_string(label.substr(label.rfind('.') + 1));
+  if (!motion) return "";
+  return *motion == Motion::roll || *motion == Motion::pitch || *motion == Motion::yaw ? "rad" : "m";
 }
 
 /// `value` with `digits` significant digits.

@@ -32,7 +32,7 @@ golden_cases() {
     else
       for f in markdown html csv json; do
         local ext=$f; [ "$f" = markdown ] && ext=md
-        echo "critical-speed/$name.$ext critical-speed --scene $s --format $f -q"
+        echo "critical-speed/$name.$ext critical-speed $s --format $f -q"
       done
     fi
   done

@@ -33,7 +33,8 @@ TEST(SimulationReport, WritesTheNamedOutputsInTheHistorysOrder) {
   std::ostringstream csv;
   write_time_history(csv, h, scene, vehicle, OutputFormat::csv);
   const std::string history = csv.str();
-  EXPECT_EQ(first_line(history), "time_s,body.bounce,body.pitch");
+  // Every column names its unit (issue 17 item 10): m for a translation, rad for a rotation.
+  EXPECT_EQ(first_line(history), "time [s],body.bounce [m],body.pitch [rad]");
   EXPECT_EQ(std::count(history.begin(), history.end(), '\n'), 1 + h.time.size());
 
   const OutputSpectra spectra = output_spectra(h, scene);
@@ -41,7 +42,7 @@ TEST(SimulationReport, WritesTheNamedOutputsInTheHistorysOrder) {
   std::ostringstream spectra_csv;
   write_spectra(spectra_csv, spectra, OutputFormat::csv);
   const std::string text = spectra_csv.str();
-  EXPECT_EQ(first_line(text), "frequency_hz,body.bounce,body.pitch");
+  EXPECT_EQ(first_line(text), "frequency [Hz],body.bounce [m],body.pitch [rad]");
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1 + spectra.spectra.front().amplitude.size());
 }
 
@@ -52,9 +53,9 @@ TEST(SimulationReport, WritesOnlyTheNamedOutputs) {
   EXPECT_EQ(output_columns(h, scene), (std::vector<int>{1}));
   std::ostringstream csv, spectra_csv;
   write_time_history(csv, h, scene, vehicle, OutputFormat::csv);
-  EXPECT_EQ(first_line(csv.str()), "time_s,body.pitch");
+  EXPECT_EQ(first_line(csv.str()), "time [s],body.pitch [rad]");
   write_spectra(spectra_csv, output_spectra(h, scene), OutputFormat::csv);
-  EXPECT_EQ(first_line(spectra_csv.str()), "frequency_hz,body.pitch");
+  EXPECT_EQ(first_line(spectra_csv.str()), "frequency [Hz],body.pitch [rad]");
 }
 
 TEST(SimulationReport, SpectraAreThoseOfTheFftCheck) {

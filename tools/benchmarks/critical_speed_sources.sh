@@ -20,7 +20,7 @@ for n in 20 200 2000; do
     done
   } > "$work/s$n.toml"
   code=0
-  /usr/bin/time -f "%M %e" -o "$work/time" "$exe" critical-speed --scene "$work/s$n.toml" --format json -q \
+  /usr/bin/time -f "%M %e" -o "$work/time" "$exe" critical-speed "$work/s$n.toml" --format json -q \
     -o "$work/s$n.json" 2>/dev/null || code=$?
   size=$([ -f "$work/s$n.json" ] && stat -c %s "$work/s$n.json" || echo 0)
   read -r kb seconds < <(tail -1 "$work/time")

@@ -29,6 +29,7 @@
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
+#include "railmodal/version.hpp"
 
 namespace {
 
@@ -228,6 +229,7 @@ int main(int argc, char** argv) {
   Options o;
   CLI::App app{"railmodal-mpi: railmodal compare across MPI ranks (mpirun -np N railmodal-mpi compare STUDY.toml)"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "railmodal-mpi " + std::string(railmodal::version()));
   CLI::App* cmd = app.add_subcommand(
       "compare", "Evaluate and rank the variants of a design study, rank r evaluating shard r+1 of N (docs/studies.md)");
   cmd->add_option("study", o.study, "Study file (TOML), e.g. data/studies/resort_against_fette.toml")->required();
@@ -251,6 +253,8 @@ int main(int argc, char** argv) {
     if (rank == 0) std::cout << app.help();
   } catch (const CLI::CallForAllHelp&) {
     if (rank == 0) std::cout << app.help("", CLI::AppFormatMode::All);
+  } catch (const CLI::CallForVersion& e) {
+    if (rank == 0) std::cout << e.what() << "\n";
   } catch (const CLI::ParseError& e) {
     if (rank == 0) std::cerr << "railmodal-mpi: error: " << e.what() << "\nRun 'railmodal-mpi --help' for usage.\n";
     code = kUsage;

@@ -19,6 +19,9 @@ std::function<int()> add_fft_check_command(CLI::App& app);
 /// Registers `compare`.
 std::function<int()> add_compare_command(CLI::App& app);
 
+/// Notes on stderr that `old_spelling` still works but is deprecated for `new_spelling`.
+void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling);
+
 /// A progress reporter for long runs: shows "name: 42 %" on stderr, only when stderr is a
 /// terminal and only once the run has taken a second; clears the line at 100 %.
 std::function<void(double)> terminal_progress(const std::string& name);

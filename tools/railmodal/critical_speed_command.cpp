@@ -1,4 +1,5 @@
-// railmodal critical-speed [WAGON] --scene SCENE [--format markdown|html|csv|json] [-o OUT]
+// railmodal critical-speed SCENE [--vehicle VEHICLE] [--format markdown|html|csv|json] [-o OUT]
+// (the old spelling, critical-speed [VEHICLE] --scene SCENE, still works with a deprecation note)
 #include <iostream>
 #include <memory>
 
@@ -11,6 +12,7 @@ namespace railmodal::cli {
 namespace {
 
 struct CriticalSpeedCommandOptions {
+  std::string argument;  // the scene; in the old spelling (--scene given), the vehicle
   std::string vehicle;
   std::string scene;
   std::string format = "markdown";
@@ -18,7 +20,27 @@ struct CriticalSpeedCommandOptions {
   bool quiet = false;
 };
 
-int run(const CriticalSpeedCommandOptions& o) {
+// The old spelling, `critical-speed [VEHICLE] --scene SCENE`, read as the new one with a note on
+// stderr; "" if the options are fine, else the usage error.
+std::string read_spelling(CriticalSpeedCommandOptions* o) {
+  if (o->scene.empty()) {
+    if (o->argument.empty())
+      return "critical-speed needs a SCENE file: railmodal critical-speed SCENE [--vehicle VEHICLE]";
+    o->scene = o->argument;
+    return "";
+  }
+  if (!o->argument.empty() && !o->vehicle.empty())
+    return "give the vehicle once: railmodal critical-speed SCENE --vehicle VEHICLE";
+  warn_deprecated_spelling("critical-speed [VEHICLE] --scene SCENE", "critical-speed SCENE [--vehicle VEHICLE]");
+  if (!o->argument.empty()) o->vehicle = o->argument;
+  return "";
+}
+
+int run(CriticalSpeedCommandOptions o) {
+  if (const std::string problem = read_spelling(&o); !problem.empty()) {
+    std::cerr << "railmodal: error: " << problem << "\nRun 'railmodal critical-speed --help' for usage.\n";
+    return kUsage;
+  }
   const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   std::string current = o.scene;  // the file an error without a location belongs to
   try {
@@ -33,7 +55,8 @@ int run(const CriticalSpeedCommandOptions& o) {
     }
     if (!o.vehicle.empty()) scene.vehicle_file = o.vehicle;  // the command line wins over the scene
     if (scene.vehicle_file.empty()) {
-      std::cerr << "railmodal: error: no vehicle: give WAGON.toml or a 'vehicle' key in " << o.scene << "\n";
+      std::cerr << "railmodal: error: no vehicle: give --vehicle VEHICLE.toml or a 'vehicle' key in " << o.scene
+                << "\n";
       return kUsage;
     }
     current = scene.vehicle_file;
@@ -68,9 +91,12 @@ std::function<int()> add_critical_speed_command(CLI::App& app) {
   auto options = std::make_shared<CriticalSpeedCommandOptions>();
   CLI::App* cmd = app.add_subcommand(
       "critical-speed", "Resonance speeds of a vehicle for the excitation sources of a scene, with a report");
-  cmd->add_option("vehicle", options->vehicle, "Vehicle file (TOML); default: the scene's 'vehicle'");
-  cmd->add_option("--scene", options->scene, "Scene file (TOML), e.g. data/scenes/resort_car_10m_rails.toml")
-      ->required();
+  cmd->add_option("scene", options->argument,
+                  "Scene file (TOML) with a [speed] range and [[source]] tables, e.g. "
+                  "data/scenes/resort_car_10m_rails.toml");
+  cmd->add_option("--vehicle", options->vehicle, "Vehicle file (TOML); default: the scene's 'vehicle'");
+  cmd->add_option("--scene", options->scene,
+                  "Deprecated spelling: critical-speed [VEHICLE] --scene SCENE (works, with a note on stderr)");
   cmd->add_option("--format", options->format, "Report format")
       ->check(CLI::IsMember({"markdown", "html", "csv", "json"}))
       ->capture_default_str();

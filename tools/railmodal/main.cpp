@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "output_file.hpp"
+#include "railmodal/version.hpp"
 
 namespace railmodal::cli {
 
@@ -24,12 +25,22 @@ std::function<void(double)> terminal_progress(const std::string& name) {
   };
 }
 
+void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling) {
+  std::cerr << "railmodal: note: '" << old_spelling << "' is deprecated and will be removed; write 'railmodal "
+            << new_spelling << "'\n";
+}
+
 }  // namespace railmodal::cli
 
 int main(int argc, char** argv) {
   using namespace railmodal::cli;
   CLI::App app{"railmodal: natural modes and critical speeds of railway wagons"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", "railmodal " + std::string(railmodal::version()));
+  // One convention for every subcommand (README.md, "Commands").
+  app.footer(
+      "Every command takes the file it analyses as its argument: modes VEHICLE, critical-speed SCENE, "
+      "simulate SCENE, fft-check SCENE, compare STUDY. A scene names its vehicle; --vehicle VEHICLE replaces it.");
   auto run_modes = add_modes_command(app);
   auto run_critical_speed = add_critical_speed_command(app);
   auto run_simulate = add_simulate_command(app);
@@ -42,6 +53,9 @@ int main(int argc, char** argv) {
     return kSuccess;
   } catch (const CLI::CallForAllHelp&) {
     std::cout << app.help("", CLI::AppFormatMode::All);
+    return kSuccess;
+  } catch (const CLI::CallForVersion& e) {
+    std::cout << e.what() << "\n";
     return kSuccess;
   } catch (const CLI::ParseError& e) {
     std::cerr << "railmodal: error: " << e.what() << "\nRun 'railmodal --help' for usage.\n";

@@ -1,5 +1,5 @@
-// railmodal simulate SCENE [--vehicle WAGON] [--format csv|json] [-o OUT] [--spectra SPECTRA.csv] [--memory-limit GB]
-// railmodal fft-check SCENE [--vehicle WAGON] [--format table|csv|json|html] [-o OUT] [--memory-limit GB]
+// railmodal simulate SCENE [--vehicle VEHICLE] [--format csv|json] [-o OUT] [--spectra SPECTRA.csv] [--memory-limit GB]
+// railmodal fft-check SCENE [--vehicle VEHICLE] [--format table|csv|json|html] [-o OUT] [--memory-limit GB]
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -26,7 +26,7 @@ int load(const SimulateOptions& o, Scene* scene, Vehicle* vehicle) {
   *scene = load_scene(o.scene);
   if (!o.vehicle.empty()) scene->vehicle_file = o.vehicle;
   if (scene->vehicle_file.empty()) {
-    std::cerr << "railmodal: error: no vehicle: give --vehicle WAGON.toml or a 'vehicle' key in " << o.scene << "\n";
+    std::cerr << "railmodal: error: no vehicle: give --vehicle VEHICLE.toml or a 'vehicle' key in " << o.scene << "\n";
     return kUsage;
   }
   if (!scene->simulation) {
