@@ -44,4 +44,7 @@ golden_cases() {
     done
     echo "compare/$name.shard1of2.json compare $s --shard 1/2 --threads 2 -q"
   done
+  # The deprecated spelling of critical-speed (issue 17 item 10) writes the same bytes as the new:
+  # this file equals two_axle_freight_wagon_joints.csv.
+  echo "critical-speed/two_axle_freight_wagon_joints.old_spelling.csv critical-speed data/vehicles/two_axle_freight_wagon.toml --scene data/scenes/two_axle_freight_wagon_joints.toml --format csv -q"
 }

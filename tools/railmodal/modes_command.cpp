@@ -1,4 +1,4 @@
-// railmodal modes FILE [--dofs vertical|lateral|all] [--format table|csv|json] [--damped] [-o OUT]
+// railmodal modes VEHICLE [--dofs vertical|lateral|all] [--format table|csv|json] [--damped] [-o OUT]
 // railmodal modes --mass M.mtx --stiffness K.mtx [--damping C.mtx] [--format ...] [--damped] [-o OUT]
 //   both with [--solver dense|arpack|auto] [--modes N] [--shift SIGMA] (undamped modes)
 #include <cmath>
@@ -165,7 +165,7 @@ std::function<int()> add_modes_command(CLI::App& app) {
   auto options = std::make_shared<ModesOptions>();
   CLI::App* cmd = app.add_subcommand(
       "modes", "Natural frequencies, periods and mode shapes of a vehicle, or of M and K matrices (Matrix Market)");
-  cmd->add_option("file", options->file, "Vehicle file (TOML), e.g. data/vehicles/resort_car.toml");
+  cmd->add_option("vehicle", options->file, "Vehicle file (TOML), e.g. data/vehicles/resort_car.toml");
   cmd->add_option("--mass", options->mass, "Mass matrix M (Matrix Market .mtx), instead of a vehicle file");
   cmd->add_option("--stiffness", options->stiffness, "Stiffness matrix K (Matrix Market), with --mass");
   cmd->add_option("--damping", options->damping,
