@@ -153,11 +153,13 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
 /// times and on located events, so that between events the motion is smooth and the Coulomb
 /// decay of a leaf spring comes out to the tolerance (2φf/(1 ± φ) per half period, then rest in
 /// the dead band). Stuck springs are constraints (their relative velocity is zero; the friction
-/// force is what holds them, checked against φ times the elastic reaction).
+/// force is what holds them, checked against φ times the elastic reaction); a leaf in series with
+/// elastic stages is one element whose state is the leaf's own deflection, held while the force
+/// through the pair stays within (1 ± φ) times the leaf's reaction.
 /// Throws std::invalid_argument for invalid options (SimulationOptions::is_valid), more than 1e8
 /// output steps, sources without a positive speed, a ramp without sources, and for what it
-/// cannot model: a friction or progressive stage in series with other stages (a massless
-/// spring end), or massless degrees of freedom.
+/// cannot model: two friction stages in one element, a progressive stage in series with other
+/// stages, or massless degrees of freedom.
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                                const SimulationOptions& options, const NonlinearEffects& effects);
 /// The same, its samples given to `sink` as they are produced: the history returned holds the

@@ -9,9 +9,17 @@
 namespace railmodal::response {
 
 /// The viscous damper across element `element` that dissipates per cycle what its leaf-friction
-/// stages do when the element stretches by `stretch` at circular frequency ω:
-/// Σ 4R·s/(πωX) over the stages, R = φ × load, s the stage's share of the stretch. 0 without
-/// friction or for a non-positive stretch.
+/// stages do when the element stretches by `stretch` X at circular frequency ω:
+/// Σ 4R·s·(X − h)/(πωX²) over the stages, R = φ × load, s the stage's share of the stretch and
+/// h = R/k_c the stretch the elastic stages in series take alone while the leaf holds
+/// (leaf_hold_stretch; 0 for a leaf alone). 0 without friction, for a non-positive stretch,
+/// or for X ≤ h (the leaf never slips).
 double equivalent_friction_damping(const LinearSystem& system, std::size_t element, double omega, double stretch);
+
+/// The stretch h = R/k_c of element `element` that its elastic stages take alone while its
+/// friction leaf holds (R = φ × load, k_c the series stiffness of the other stages): under a
+/// harmonic stretch X the leaf deflects share·(X − h), and not at all for X ≤ h. 0 for an
+/// element without friction or whose friction leaf is its only stage.
+double leaf_hold_stretch(const LinearSystem& system, std::size_t element);
 
 }  // namespace railmodal::response

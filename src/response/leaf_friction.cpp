@@ -1,5 +1,23 @@
 // Leaf-spring friction in the frequency domain: the work it does against a mode (for the
 // resonance criterion) and, when a user asks for it, an equivalent viscous damper.
+//
+// The series model, the same as the simulation's (src/simulate/nonlinear_elements.cpp): a leaf
+// with friction force T = φ·P (P its static load; 1 ± φ ≈ 1, as the book's criterion takes it,
+// bogie-wagons-forced digest §2.8 and E4) in series with elastic stages of series stiffness k_c,
+// the pair stretched harmonically by X. At each reversal the leaf holds while the force through
+// the pair crosses its band of width 2T, which the coils alone take: a stretch of 2T/k_c. The
+// rest of the half-cycle's travel, 2X − 2T/k_c, is shared by the stages in series, the leaf
+// taking share = k_e/c_l of it (k_e the element's series stiffness, c_l the leaf's). So the leaf
+// slides share·(X − T/k_c) either way of its mean, and friction dissipates per cycle
+//     W(X) = 4T·share·(X − T/k_c)   for X > T/k_c, and nothing below (the leaf never slips).
+// A leaf alone (k_c → ∞) gives the book's 4T·X (Den Hartog). The growth criterion compares
+// slopes, πF₀ against dW/dA = 4T·share·|d| per unit modal amplitude A: the hold costs a fixed
+// stretch, not a rate, so a resonance that friction does not stop grows without bound as for
+// the leaf alone, and one that it stops still grows, from rest, until
+//     πF₀·A = Σ 4T·share·(|d|·A − T/k_c),
+// the friction-limited amplitude (tests/validation/friction_decay_test.cpp checks it against
+// the simulated triple suspension).
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -12,23 +30,29 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Friction force R = φ × load of each friction stage of element k, and the stage's share
-// k_element/k_stage of the element's stretch (in series every stage carries the element's force).
+// Friction force R = φ × load of each friction stage of element k, the stage's share
+// k_element/k_stage of the element's stretch (in series every stage carries the element's force),
+// and the stretch R/k_c the other stages take alone while it holds (0 for a stage alone).
 template <typename Visit>
 void for_each_friction_stage_of(const LinearSystem& system, size_t k, Visit visit) {
   const Element& e = system.vehicle.elements[k];
   const double k_element = series_stiffness(e.vertical_stages);
   if (!(k_element > 0.0)) return;
   for (const SpringStage& s : e.vertical_stages)
-    if (s.relative_friction > 0.0)
-      visit(s.relative_friction * std::abs(system.element_loads[k]), k_element / (s.stiffness * s.count));
+    if (s.relative_friction > 0.0) {
+      double others_flexibility = 0.0;  // 1/k_c of the other stages in series
+      for (const SpringStage& o : e.vertical_stages)
+        if (&o != &s) others_flexibility += 1.0 / (o.stiffness * o.count);
+      const double friction = s.relative_friction * std::abs(system.element_loads[k]);
+      visit(friction, k_element / (s.stiffness * s.count), friction * others_flexibility);
+    }
 }
 
 // The same over every element; `visit(k, friction, share)`.
 template <typename Visit>
 void for_each_friction_stage(const LinearSystem& system, Visit visit) {
   for (size_t k = 0; k < system.vehicle.elements.size(); ++k)
-    for_each_friction_stage_of(system, k, [&](double friction, double share) { visit(k, friction, share); });
+    for_each_friction_stage_of(system, k, [&](double friction, double share, double) { visit(k, friction, share); });
 }
 
 }  // namespace
@@ -58,12 +82,18 @@ double response::equivalent_friction_damping(const LinearSystem& system, std::si
                                              double stretch) {
   if (!(omega > 0.0) || !(stretch > 0.0)) return 0.0;
   double c = 0.0;
-  for_each_friction_stage_of(system, element, [&](double friction, double share) {
-    // With the element stretching X the stage stretches share·X and friction dissipates
-    // 4R·share·X per cycle; a damper across the element dissipates πcωX²: c = 4R·share/(πωX).
-    c += 4.0 * friction * share / (kPi * omega * stretch);
+  for_each_friction_stage_of(system, element, [&](double friction, double share, double hold) {
+    // With the element stretching X the leaf slides share·(X − hold) and friction dissipates
+    // 4R·share·(X − hold) per cycle (see the top); a damper across the element dissipates πcωX².
+    c += 4.0 * friction * share / (kPi * omega * stretch) * std::max(1.0 - hold / stretch, 0.0);
   });
   return c;
+}
+
+double response::leaf_hold_stretch(const LinearSystem& system, std::size_t element) {
+  double hold = 0.0;
+  for_each_friction_stage_of(system, element, [&](double, double, double h) { hold = std::max(hold, h); });
+  return hold;
 }
 
 LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega,

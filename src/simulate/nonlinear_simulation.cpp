@@ -7,7 +7,9 @@
 // regime changes. Friction follows the book's law R = c(1 ± φ)(f ± z) (springs digest §2.3,
 // eqs. (40)–(59)): a force φ·R_el against the sliding, R_el the element's current elastic
 // reaction; a stuck element is a constraint whose holding force must stay within ±φ·R_el, so
-// a free decay stops in the dead band −φf/(1 + φ) ≤ z ≤ φf/(1 − φ).
+// a free decay stops in the dead band −φf/(1 + φ) ≤ z ≤ φf/(1 − φ). A leaf in series with
+// elastic stages is not a constraint: it carries its own deflection s as a state of the model,
+// held while stuck and following the pair's compression while sliding (nonlinear_elements.cpp).
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -76,10 +78,16 @@ struct Slot {
 class Model {
  public:
   Model(const LinearSystem& s, std::vector<Harmonic> harmonics, std::vector<NonlinearElement> elements,
-        const simulate::SpeedProfile& profile, bool constant_friction)
-      : n_(s.size()), M_(s.mass), C_(s.damping), K_(s.stiffness), constant_friction_(constant_friction), profile_(profile),
+        const simulate::SpeedProfile& profile)
+      : n_(s.size()),
+        M_(s.mass),
+        C_(s.damping),
+        K_(s.stiffness),
+        profile_(profile),
         harmonics_(std::move(harmonics)),
-        elements_(std::move(elements)), state_(elements_.size(), 0) {
+        elements_(std::move(elements)),
+        state_(elements_.size(), 0),
+        leaf_(elements_.size(), 0.0) {
     const Eigen::LLT<Eigen::MatrixXd> llt(M_);
     if (llt.info() != Eigen::Success) throw NumericalError("the mass matrix is not positive definite");
     Minv_ = llt.solve(Eigen::MatrixXd::Identity(n_, n_));
@@ -104,11 +112,17 @@ class Model {
   }
   // φ·R_el, the friction force a sliding element feels and a stuck one can hold.
   double friction_limit(int i, double t, const Eigen::VectorXd& x) const {
-    return friction_force(elements_[i], elements_[i].reaction(compression(i, t, x)));
+    return elements_[i].friction_force(elements_[i].reaction(compression(i, t, x)));
   }
-  // φ·R_el (the book's law), or φ·P₀ under the constant (Coulomb) law.
-  double friction_force(const NonlinearElement& e, double reaction) const {
-    return e.friction * (constant_friction_ ? e.static_load : std::max(reaction, 0.0));
+  // A series element's leaf deflection: held while stuck, on its sliding edge otherwise.
+  double leaf_deflection(int i, double delta) const {
+    return state_[i] == 0 ? leaf_[i] : elements_[i].sliding_leaf_deflection(delta, state_[i]);
+  }
+  // A stuck series element: how far the force through it is from the edges of its band.
+  double band_margin(int i, double t, const Eigen::VectorXd& x) const {
+    const NonlinearElement& e = elements_[i];
+    const double reaction = e.leaf_reaction(leaf_[i]);
+    return e.friction_force(reaction) - std::abs(e.series_force(compression(i, t, x), leaf_[i]) - reaction);
   }
 
   // Every generalised force but the holding forces of stuck elements.
@@ -131,7 +145,10 @@ class Model {
       const double reaction = e.reaction(delta);
       double up = 0.0;  // force on the upper end, up positive, beyond the linear model
       if (e.curve) up += reaction - e.static_load - e.tangent * delta;
-      if (e.friction > 0.0 && state_[i] != 0) up += friction_force(e, reaction) * state_[i];
+      if (e.in_series())
+        up += e.series_force(delta, leaf_deflection(static_cast<int>(i), delta)) - e.static_load - e.tangent * delta;
+      else if (e.friction > 0.0 && state_[i] != 0)
+        up += e.friction_force(reaction) * state_[i];
       if (up != 0.0) f->noalias() += e.stretch.transpose() * up;
     }
   }
@@ -198,6 +215,10 @@ class Model {
         case Slot::Kind::sliding: out[s] = state_[i] * compression_rate(i, t, v); break;
         case Slot::Kind::kink: out[s] = elements_[i].static_deflection + compression(i, t, x) - slots[s].kink; break;
         case Slot::Kind::stuck: {
+          if (elements_[i].in_series()) {
+            out[s] = band_margin(i, t, x);
+            break;
+          }
           if (!have_lambda) {
             Eigen::VectorXd f(n_);
             force(t, x, v, &f);
@@ -222,8 +243,14 @@ class Model {
   // Stuck elements get exactly zero relative velocity. Returns the events.
   std::vector<SimulationEvent> resolve(double t, Eigen::VectorXd* y, std::vector<int> candidates,
                                        const std::vector<int>& releasing = {}) {
+    std::vector<SimulationEvent> events;
+    for (int i : candidates)
+      if (elements_[i].in_series()) events.push_back(settle_series(i, t, y->head(n_), releasing));
+    candidates.erase(
+        std::remove_if(candidates.begin(), candidates.end(), [this](int i) { return elements_[i].in_series(); }),
+        candidates.end());
     for (size_t i = 0; i < elements_.size(); ++i)
-      if (elements_[i].friction > 0.0 && state_[i] == 0 &&
+      if (elements_[i].friction > 0.0 && !elements_[i].in_series() && state_[i] == 0 &&
           std::find(candidates.begin(), candidates.end(), static_cast<int>(i)) == candidates.end())
         candidates.push_back(static_cast<int>(i));
     std::sort(candidates.begin(), candidates.end());
@@ -268,7 +295,6 @@ class Model {
       }
       y->tail(n_) -= Minv_ * G_.transpose() * W_.solve(mismatch);
     }
-    std::vector<SimulationEvent> events;
     for (int i : candidates) {
       const int element = elements_[i].element;
       if (state_[i] == 0 && before[i] != 0) events.push_back(event(t, element, SimulationEvent::Kind::stick));
@@ -278,11 +304,68 @@ class Model {
     return events;
   }
 
+  // At t = 0 a leaf in series with springs starts on the edge of its friction band toward
+  // which the pair moves: its compression rate, or from rest the acceleration the springs give
+  // it with the leaf at its frictionless share. This is the book's initial condition (the leaf
+  // slides from the release, (192e) in (196a)–(200)). A pair neither moving nor accelerated (a
+  // car standing in equilibrium) starts stuck at that share, the middle of its band.
+  std::vector<SimulationEvent> place_series_leaves(const Eigen::VectorXd& y) {
+    const auto x = y.head(n_), v = y.tail(n_);
+    const std::vector<int> before = state_;
+    for (size_t i = 0; i < elements_.size(); ++i) {
+      state_[i] = 0;  // no friction force while the acceleration is taken
+      if (elements_[i].in_series()) leaf_[i] = elements_[i].sliding_leaf_deflection(compression(i, 0.0, x), 0);
+    }
+    Eigen::VectorXd f(n_);
+    force(0.0, x, v, &f);
+    const Eigen::VectorXd a = Minv_ * f;
+    std::vector<SimulationEvent> events;
+    for (size_t i = 0; i < elements_.size(); ++i) {
+      state_[i] = before[i];
+      if (!elements_[i].in_series()) continue;
+      double u, du, ddu;
+      elements_[i].track_motion(0.0, &u, &du, &ddu);
+      const double rate = compression_rate(static_cast<int>(i), 0.0, v),
+                   acceleration = -elements_[i].stretch.dot(a) + ddu;
+      const double toward = rate != 0.0 ? rate : acceleration;
+      state_[i] = toward > 0.0 ? 1 : toward < 0.0 ? -1 : 0;
+      if (state_[i] == 0) events.push_back(event(0.0, elements_[i].element, SimulationEvent::Kind::stick));
+    }
+    return events;
+  }
+
  private:
+  // A series element at an event: a stuck one whose force reached an edge of its band slides
+  // toward that edge; a sliding one whose compression rate reached 0 holds its deflection
+  // there if its band is open (it carries load), and otherwise turns.
+  // (Its candidates come from its own fired slot: stuck ones are releasing.)
+  SimulationEvent settle_series(int i, double t, const Eigen::VectorXd& x, const std::vector<int>& releasing) {
+    const NonlinearElement& e = elements_[i];
+    const double delta = compression(i, t, x);
+    if (state_[i] == 0) {
+      if (std::find(releasing.begin(), releasing.end(), i) == releasing.end())
+        throw std::logic_error("a stuck series element was resolved without reaching an edge of its band");
+      state_[i] = e.series_force(delta, leaf_[i]) > e.leaf_reaction(leaf_[i]) ? 1 : -1;
+      return event(t, e.element, SimulationEvent::Kind::slip);
+    }
+    // A band narrower than the rounding of the forces it lies between cannot be told from a
+    // closed one (nor its edges located): such a leaf turns as if frictionless.
+    constexpr double kResolvableBand = 1e-12;
+    const double s = e.sliding_leaf_deflection(delta, state_[i]);
+    if (e.friction_force(e.leaf_reaction(s)) > kResolvableBand * std::abs(e.static_load)) {
+      leaf_[i] = s;
+      state_[i] = 0;
+      return event(t, e.element, SimulationEvent::Kind::stick);
+    }
+    state_[i] = -state_[i];
+    return event(t, e.element, SimulationEvent::Kind::reversal);
+  }
+
   void set_stuck() {
     stuck_.clear();
     for (size_t i = 0; i < elements_.size(); ++i)
-      if (elements_[i].friction > 0.0 && state_[i] == 0) stuck_.push_back(static_cast<int>(i));
+      if (elements_[i].friction > 0.0 && !elements_[i].in_series() && state_[i] == 0)
+        stuck_.push_back(static_cast<int>(i));
     G_.resize(static_cast<Eigen::Index>(stuck_.size()), n_);
     for (size_t r = 0; r < stuck_.size(); ++r) G_.row(r) = elements_[stuck_[r]].stretch;
     if (!stuck_.empty()) W_.compute(G_ * Minv_ * G_.transpose());
@@ -290,11 +373,11 @@ class Model {
 
   int n_;
   Eigen::MatrixXd M_, C_, K_, Minv_;
-  bool constant_friction_;
   simulate::SpeedProfile profile_;
   std::vector<Harmonic> harmonics_;
   std::vector<NonlinearElement> elements_;
   std::vector<int> state_;  // friction elements: +1 sliding into compression, −1 out of it, 0 stuck
+  std::vector<double> leaf_;  // series elements: the leaf's deflection s while stuck, m
   std::vector<int> stuck_;
   Eigen::MatrixXd G_;
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> W_;
@@ -370,9 +453,10 @@ class Integration {
 
   // At rest at t = 0 every friction element is a candidate for sticking.
   void start_at_rest() {
+    for (const auto& e : model_.place_series_leaves(y_)) out_.events.push_back(e);
     std::vector<int> resting;
     for (size_t i = 0; i < model_.elements().size(); ++i)
-      if (model_.elements()[i].friction > 0.0 &&
+      if (model_.elements()[i].friction > 0.0 && !model_.elements()[i].in_series() &&
           std::abs(model_.compression_rate(static_cast<int>(i), 0.0, y_.tail(n_))) <= options_.tolerance)
         resting.push_back(static_cast<int>(i));
     for (const auto& e : model_.resolve(0.0, &y_, resting))
@@ -586,7 +670,7 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
   SourceHarmonics excitation = source_harmonics(system, sources, options.speed, profile);
   Model model(system, std::move(excitation.harmonics),
               simulate::nonlinear_elements(system, excitation.loads, effects, excitation.load_sources, profile),
-              profile, effects.constant_friction);
+              profile);
   Eigen::VectorXd y = initial_state(system, options);
 
   const int outputs = static_cast<int>(simulate::sample_count(options.duration, options.time_step) - 1);

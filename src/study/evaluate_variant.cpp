@@ -118,7 +118,7 @@ FrictionReference friction_reference(const std::vector<study::PermissibleDeflect
   f.stretch.assign(element_count, 0.0);
   for (const auto& l : limits) {
     if (std::find(f.elements.begin(), f.elements.end(), l.element) == f.elements.end()) f.elements.push_back(l.element);
-    const double stretch = l.permissible / l.share;
+    const double stretch = l.permissible / l.share + l.hold;
     f.stretch[l.element] = f.stretch[l.element] > 0.0 ? std::min(f.stretch[l.element], stretch) : stretch;
   }
   const double largest = *std::max_element(f.stretch.begin(), f.stretch.end());
@@ -158,7 +158,8 @@ void take_deflection(const std::vector<study::PermissibleDeflection>& limits, in
       c.unbounded = true, c.speed = speed, c.source = s;
       continue;
     }
-    const double d = l.force_stiffness > 0.0 ? at.spring_forces[v] / l.force_stiffness : l.share * at.amplitudes[v];
+    const double d = l.force_stiffness > 0.0 ? at.spring_forces[v] / l.force_stiffness
+                                             : l.share * std::max(at.amplitudes[v] - l.hold, 0.0);
     if (d > c.deflection) c.deflection = d, c.speed = speed, c.source = s;
   }
 }

@@ -1,12 +1,14 @@
 // The book's permissible dynamic deflections (springs digest §5, p. 14): which elements and
 // stages each rule limits, and by how much.
 #include "study/permissible_deflection.hpp"
-#include "shortest_text.hpp"
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+
+#include "response/friction_damping.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
@@ -111,25 +113,25 @@ void add_stage_limits(const DeflectionRule& rule, const LinearSystem& system, si
     // of the element's stretch.
     const double share = k_element / (stage.stiffness * stage.count);
     const double by_force = friction_elsewhere(e, s) ? stage.stiffness * stage.count : 0.0;
-    const int index = static_cast<int>(s);
+    // A friction stage in series with elastic ones deflects share × (X − hold): it holds while
+    // the others take the force across its band (the series model of the simulation and of the
+    // criterion, response/friction_damping.hpp).
+    const double hold = stage.relative_friction > 0.0 ? response::leaf_hold_stretch(system, k) : 0.0;
+    const auto limit = [&](double permissible, const std::string& basis) {
+      add_limit({element, static_cast<int>(s), permissible, share, basis, by_force, hold}, out);
+    };
     if (rule.book == DeflectionRule::Book::korotkevich) {
       // Korotkevich (1935), p. 97: elliptic springs of passenger cars.
-      if (passenger && kind == "elliptic")
-        add_limit({element, index, 0.030, share, "Korotkevich: elliptic springs of passenger cars 30 mm", by_force},
-                  out);
+      if (passenger && kind == "elliptic") limit(0.030, "Korotkevich: elliptic springs of passenger cars 30 mm");
     } else if (rule.book == DeflectionRule::Book::lehner) {
       // Lehner, pp. 150–153: by spring kind; leaf springs only for freight cars.
       const double f_st = static_deflection(stage, system.element_loads[k]);
       if (kind == "coil")
-        add_limit({element, index, 0.030, share, "Lehner: coil springs 30 mm", by_force}, out);
+        limit(0.030, "Lehner: coil springs 30 mm");
       else if (kind == "elliptic")
-        add_limit({element, index, 0.2 * f_st, share, "Lehner: elliptic springs 0.2 f_st = 0.2 × " + millimetres(f_st),
-                   by_force},
-                  out);
+        limit(0.2 * f_st, "Lehner: elliptic springs 0.2 f_st = 0.2 × " + millimetres(f_st));
       else if (kind == "leaf" && !passenger)
-        add_limit({element, index, 0.4 * f_st, share,
-                   "Lehner: freight leaf springs 0.4 f_st = 0.4 × " + millimetres(f_st), by_force},
-                  out);
+        limit(0.4 * f_st, "Lehner: freight leaf springs 0.4 f_st = 0.4 × " + millimetres(f_st));
     }
   }
 }

@@ -19,6 +19,10 @@ struct PermissibleDeflection {
   /// > 0 (N/m): a stage in series with a leaf-friction stage, which deflects by the force
   /// through the springs (friction included) over this stiffness rather than by its share.
   double force_stiffness = 0.0;
+  /// m: for a leaf-friction stage in series with elastic stages, the element stretch those
+  /// take alone while the leaf holds (response::leaf_hold_stretch); the stage deflects
+  /// share × (stretch − hold), the series model of the simulation and of the criterion.
+  double hold = 0.0;
 };
 
 /// Every limit of `rule` on the vehicle of `system` (its element loads give each stage's

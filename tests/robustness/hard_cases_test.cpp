@@ -9,6 +9,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -645,6 +646,57 @@ TEST(HardCases, UndampedModeOfADampedSystem) {
     }
   }
   EXPECT_LT(damped.max_residual, 1e-12);
+}
+
+// A friction leaf in series with coils (issue 17, item 1) at its extremes: released so far up
+// (200 mm against 120 mm of static deflection) that the pair goes into tension at the top,
+// where the leaf carries no load and so no friction (its band closes: it turns, never sticks
+// there, and the decay goes on); and with coils 8·10⁵ times stiffer than the leaf, whose hold
+// phases last microseconds (located, not chattering: the run ends with a few events).
+TEST(HardCases, SeriesLeafThroughTensionAndBesideStiffCoils) {
+  auto run = [](const std::string& coil_deflection, const std::string& lift) {
+    write_temp("series_leaf.toml", R"([vehicle]
+name = "leaf over coil"
+gravity = "981 cm/s^2"
+[[body]]
+name = "load"
+weight = "1000 kgf"
+inertia = { roll = "0 kg*m^2", pitch = "0 kg*m^2", yaw = "0 kg*m^2" }
+centre_of_gravity = ["0 m", "0 m", "0 m"]
+held = ["lateral", "roll", "pitch", "yaw"]
+[[element]]
+name = "leaf over coil"
+upper = "load"
+point = ["0 m", "0 m", "0 m"]
+load = "1000 kgf"
+vertical = [{ kind = "leaf", static_deflection = "80 mm", relative_friction = 0.05 }, { kind = "coil", static_deflection = ")" +
+                                       coil_deflection + R"(" }]
+)");
+    const Scene s = load_scene(write_temp("series_leaf_scene.toml", R"([scene]
+name = "released"
+vehicle = "series_leaf.toml"
+dofs = "vertical"
+[simulation]
+duration = "2 s"
+time_step = "1 ms"
+effects = ["leaf_friction"]
+[[simulation.initial]]
+dof = "load.bounce"
+displacement = ")" + lift + "\"\n"));
+    return simulate_scene(s, load_vehicle(s.vehicle_file));
+  };
+  const TimeHistory tension = run("40 mm", "200 mm");
+  const auto reversals = std::count_if(tension.events.begin(), tension.events.end(), [](const SimulationEvent& e) {
+    return e.kind == SimulationEvent::Kind::reversal;
+  });
+  EXPECT_GE(reversals, 2);  // the tops, in tension
+  const Swings sw = swings(tension, 0);
+  ASSERT_GE(sw.turning_values.size(), 6u);
+  for (size_t k = 0; k + 1 < 6; ++k) EXPECT_LT(std::abs(sw.turning_values[k + 1]), std::abs(sw.turning_values[k])) << k;
+
+  const TimeHistory stiff = run("0.0001 mm", "60 mm");
+  EXPECT_LT(stiff.events.size(), 40u);
+  EXPECT_TRUE(swings(stiff, 0).turning_values.size() >= 3);
 }
 
 }  // namespace

@@ -126,6 +126,10 @@ TEST(PermissibleDeflection, SeriesFrictionAndZeroLoad) {
   EXPECT_EQ(l[1].force_stiffness, 0.0);
   EXPECT_NEAR(l[2].share, 0.25, 1e-12);
   EXPECT_EQ(l[2].force_stiffness, 3.0e6);
+  // The friction stage holds while the coils take the force across its band, 2 × 0.1·P over
+  // 3 MN/m: it deflects share × (X − 0.1·P/3e6) (issue 17, item 1: the series model).
+  EXPECT_NEAR(l[1].hold, 0.1 * s.element_loads[1] / 3.0e6, 1e-15);
+  EXPECT_EQ(l[2].hold, 0.0);
   s.element_loads[1] = 0.0;
   l = study::permissible_deflections(rule, s);
   ASSERT_EQ(l.size(), 2u);  // the elliptic stage's 0.2 f_st is 0: left out

@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "response/friction_damping.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
@@ -264,6 +265,194 @@ TEST(FrictionDecay, TwoAxleExample3ConstantCoulombCheck) {
   // After the third turn the resonance does not build up again: no later swing reaches it.
   for (size_t i = 4; i < sw.turning_values.size(); ++i) EXPECT_LT(std::abs(sw.turning_values[i]), 3.27e-3) << i;
   EXPECT_GE(count(h, SimulationEvent::Kind::stick), 1);
+}
+
+}  // namespace
+}  // namespace railmodal::test
+
+namespace railmodal::test {
+namespace {
+
+// The double suspension of the springs digest §2.5 (eqs. (70)–(86)): a load on a leaf spring
+// (f₁ = 8 cm, φ = 0.05) in series with a coil spring (f₂ = 4 cm), released 6 cm above its
+// static position. The book lets the leaf always slide (decrement 2φf₁ = 0.80 cm per swing);
+// the digest's own stick–slip simulation of the massless joint (§2.5, "a modelling gap")
+// finds, and the series element here reproduces (issue 17, item 1):
+//  - decrements 0.76, 0.77, 0.75, 0.76, 0.73, 0.72, 0.66, 0.53 cm per swing (printed to 0.01 cm:
+//    ±0.005 cm, and 0.001 cm for reading our turns by cubic Hermite pieces);
+//  - half periods 0.339–0.346 s at large amplitude (the book's 0.347 s, eq. (86)), then
+//    0.28 s and 0.21 s, then π√(f₂/g) = 0.2006 s;
+//  - a persistent oscillation on the coil alone, of 0.17–0.21 cm (≈ φf₂), period 0.401 s.
+TEST(SeriesFrictionDecay, DoubleSuspensionStickSlip) {
+  write_temp("double_suspension.toml", R"([vehicle]
+name = "double suspension"
+gravity = "981 cm/s^2"
+[[body]]
+name = "load"
+weight = "1000 kgf"
+inertia = { roll = "0 kg*m^2", pitch = "0 kg*m^2", yaw = "0 kg*m^2" }
+centre_of_gravity = ["0 m", "0 m", "0 m"]
+held = ["lateral", "roll", "pitch", "yaw"]
+[[element]]
+name = "leaf over coil"
+upper = "load"
+point = ["0 m", "0 m", "0 m"]
+load = "1000 kgf"
+vertical = [{ kind = "leaf", static_deflection = "80 mm", relative_friction = 0.05 },
+            { kind = "coil", static_deflection = "40 mm" }]
+)");
+  const Scene s = load_scene(write_temp("double_suspension_scene.toml", R"([scene]
+name = "double suspension released"
+vehicle = "double_suspension.toml"
+dofs = "vertical"
+[simulation]
+duration = "6 s"
+time_step = "1 ms"
+effects = ["leaf_friction"]
+[[simulation.initial]]
+dof = "load.bounce"
+displacement = "60 mm"
+)"));
+  const TimeHistory h = simulate_scene(s, load_vehicle(s.vehicle_file));
+  const Swings sw = swings(h, 0);
+  ASSERT_GE(sw.turning_values.size(), 14u);
+  const std::vector<double> decrements_cm{0.76, 0.77, 0.75, 0.76, 0.73, 0.72, 0.66, 0.53};
+  for (size_t k = 0; k < decrements_cm.size(); ++k)
+    EXPECT_NEAR((std::abs(sw.turning_values[k]) - std::abs(sw.turning_values[k + 1])) * 100, decrements_cm[k], 0.006)
+        << "swing " << k + 1;
+  const auto half = sw.half_periods_between_turns();
+  for (size_t k = 0; k < 4; ++k) {
+    EXPECT_GE(half[k], 0.339 - 5e-4) << k;
+    EXPECT_LE(half[k], 0.346 + 5e-4) << k;
+  }
+  EXPECT_NEAR(half[7], 0.28, 5e-3);
+  EXPECT_NEAR(half[8], 0.21, 5e-3);
+  const double coil_alone = kPi * std::sqrt(4.0 / kGcm);  // π√(f₂/g) = 0.2006 s
+  for (size_t k = 9; k < half.size(); ++k) EXPECT_NEAR(half[k], coil_alone, 1e-4) << k;
+  for (size_t k = 10; k < sw.turning_values.size(); ++k) {
+    EXPECT_GE(std::abs(sw.turning_values[k]) * 100, 0.17 - 0.005) << k;
+    EXPECT_LE(std::abs(sw.turning_values[k]) * 100, 0.21 + 0.005) << k;
+  }
+}
+
+// The resort car's free decay with its triple suspension (bogie-wagons-natural digest,
+// Example 2, Table 11): the bundled scene, released 70 mm (body) and 31 mm (bogies) up.
+struct ResortCarFriction {
+  double phi1f1 = 0, phi3f3 = 0, phi1 = 0, phi3 = 0;  // the friction arrows φf (m) from the model's static loads
+  double f1 = 0, f2 = 0, f3 = 0;                      // static deflections of leaf, coils, cradle springs (m)
+};
+
+ResortCarFriction resort_car_friction(const LinearSystem& sys) {
+  ResortCarFriction r;
+  for (size_t k = 0; k < sys.vehicle.elements.size(); ++k) {
+    const auto& stages = sys.vehicle.elements[k].vertical_stages;
+    const double P = sys.element_loads[k];
+    if (stages.size() == 2) {  // axlebox: leaf in series with the coils
+      r.phi1 = stages[0].relative_friction;
+      r.f1 = P / (stages[0].stiffness * stages[0].count);
+      r.f2 = P / (stages[1].stiffness * stages[1].count);
+    } else if (stages.size() == 1 && stages[0].relative_friction > 0.0) {  // cradle
+      r.phi3 = stages[0].relative_friction;
+      r.f3 = P / (stages[0].stiffness * stages[0].count);
+    }
+  }
+  r.phi1f1 = r.phi1 * r.f1;
+  r.phi3f3 = r.phi3 * r.f3;
+  return r;
+}
+
+// Table 11 prints the book's mean-friction solution (1 ± φ ≈ 1, the leaves always sliding):
+// body 70 → 47.6 → 25.2 → 2.8 mm, losing 2(φ₁f₁ + φ₃f₃) = 22.4 mm per half period, bogies
+// 31 → 17.8 → 4.6 mm. Here each leaf follows its law exactly. The first stroke loads every
+// spring, the leaves sliding from the release: the body loses 2φ₁f₁/(1 + φ₁) + 2φ₃f₃/(1 + φ₃)
+// (eq. (52) for each friction stage; 20.8 mm) in the half period (198c) gives the loading
+// stroke (0.462 s). Ours: 70 → 49.38 mm in 0.4624 s; the bogie mode the friction offsets excite
+// moves it by 0.2 mm, so 0.5 mm; 2 mm against the printed 47.6 (its 1 ± φ ≈ 1 and rounded φf).
+// After that every reversal makes each axlebox leaf hold while the coils alone take the force
+// across its band: the losses fall below the always-sliding ones (19.9, 16.5, 10.6 mm against
+// the book's 22.4), and the car ends with the leaves stuck, moving a fraction of a mm on its coils.
+TEST(SeriesFrictionDecay, ResortCarTable11) {
+  const Scene s = load_scene(scenes_dir() + "resort_car_friction_decay.toml");
+  const Vehicle v = load_vehicle(s.vehicle_file);
+  const TimeHistory h = simulate_scene(s, v);
+  const ResortCarFriction r = resort_car_friction(scene_system(s, v));
+  const Swings body = swings(h, 0), bogie = swings(h, 2);
+  ASSERT_EQ(h.labels[2], "bogie1.bounce");
+  ASSERT_GE(body.turning_values.size(), 5u);
+  const double loading = 2 * r.phi1f1 / (1 + r.phi1) + 2 * r.phi3f3 / (1 + r.phi3);
+  EXPECT_NEAR(-body.turning_values[1], 0.070 - loading, 0.5e-3);
+  EXPECT_NEAR(-body.turning_values[1], 0.0476, 2e-3);  // Table 11, t = T/2
+  // The loading stroke's half period: the consistent T₂/2 = 0.9447/2 s (digest, Ex. 2) scaled
+  // as (198c) scales it, √(Σ f/(1 + φ) / Σ f) (the springs stiffer by 1 + φ while loaded).
+  const double loading_scale = std::sqrt((r.f1 / (1 + r.phi1) + r.f2 + r.f3 / (1 + r.phi3)) / (r.f1 + r.f2 + r.f3));
+  EXPECT_NEAR(body.turning_times[1], 0.9447 / 2 * loading_scale, 2e-3);
+  EXPECT_NEAR(-bogie.turning_values[1], 0.0178, 1e-3);  // Table 11: the bogie mode's 0.41 of the body's
+  // Holds only take from the loss: every later swing loses less than the leaves would sliding
+  // all the way, 2φ₁f₁/(1 ∓ φ₁) + 2φ₃f₃/(1 ∓ φ₃), and the book's 2Σφf is an upper bound too.
+  for (size_t k = 1; k + 1 < 4; ++k) {
+    const double lost = std::abs(body.turning_values[k]) - std::abs(body.turning_values[k + 1]);
+    EXPECT_LT(lost, 2 * (r.phi1f1 + r.phi3f3)) << k;
+    EXPECT_GT(lost, 0.4 * 2 * (r.phi1f1 + r.phi3f3)) << k;  // still the friction that decays it
+  }
+  double low = INFINITY, high = -INFINITY;
+  for (int i = 0; i < h.time.size(); ++i)
+    if (h.time(i) >= 2.0) low = std::min(low, h.displacement(i, 0)), high = std::max(high, h.displacement(i, 0));
+  EXPECT_LT(high - low, 0.5e-3);  // the last second: a ripple of the body on the coils
+}
+
+// The resort car at its joint-critical speed (bundled scene, 38.11 km/h over 10 m joints with a
+// 5 mm dip): the frictionless car grows by 0.94 mm per half period; with its leaves it settles.
+// The series model says why: friction does work only where a leaf slips, and an axlebox leaf
+// slips only once its element's stretch exceeds the hold stretch T/k_c the coils take alone
+// (response::leaf_hold_stretch, 2.3 mm here; the energy balance πF₀A = Σ 4T·share·(|d|A − T/k_c)).
+// The joints' 2.5 mm half-dip keeps the axlebox stretch about there, so the leaves hold nearly
+// all the time and the car rides on its coils, the cradle springs (alone, 9 times the friction
+// the input needs) held from the start: the response is the forced motion of that stiffer car,
+// not a resonance. Measured: body 0.66 mm, bogies 2.37 mm; the axlebox leaves slip for 8 ms of
+// the last 15 s. Asserted: the body's bounce equal within 5 % over the last two 5 s windows (the
+// joints' beat with the residual free motion on the coils moves it by about 2 %), below 1 mm, the
+// cradle springs never slipping, the axlebox leaves slipping less than 1 % of the time after 5 s.
+TEST(SeriesFrictionDecay, ResortCarAtTheJointCriticalSpeedSettles) {
+  Scene s = load_scene(scenes_dir() + "resort_car_friction_38kmh.toml");
+  const Vehicle v = load_vehicle(s.vehicle_file);
+  const TimeHistory with = simulate_scene(s, v);
+  auto amplitude = [](const TimeHistory& h, int dof, double from, double to) {
+    double low = INFINITY, high = -INFINITY;
+    for (int i = 0; i < h.time.size(); ++i)
+      if (h.time(i) >= from && h.time(i) <= to)
+        low = std::min(low, h.displacement(i, dof)), high = std::max(high, h.displacement(i, dof));
+    return 0.5 * (high - low);
+  };
+  const double early = amplitude(with, 0, 10.0, 15.0), late = amplitude(with, 0, 15.0, 20.0);
+  EXPECT_NEAR(late / early, 1.0, 0.05);
+  EXPECT_LT(late, 1e-3);
+  const LinearSystem sys = scene_system(s, v);
+  const auto& elements = sys.vehicle.elements;
+  std::vector<double> slipping_since(elements.size(), -1.0);
+  double slipping = 0.0;  // s, summed over the axlebox elements, after 5 s
+  for (const SimulationEvent& e : with.events) {
+    const bool axlebox = elements[e.element].vertical_stages.size() == 2;
+    if (!axlebox) {
+      EXPECT_EQ(e.time, 0.0) << elements[e.element].name;  // a cradle spring: held from the start
+    } else if (e.kind == SimulationEvent::Kind::slip) {
+      slipping_since[e.element] = e.time;
+    } else if (e.kind == SimulationEvent::Kind::stick && slipping_since[e.element] >= 0.0) {
+      slipping += std::max(e.time - std::max(slipping_since[e.element], 5.0), 0.0);
+      slipping_since[e.element] = -1.0;
+    }
+  }
+  int axleboxes = 0;
+  for (size_t k = 0; k < elements.size(); ++k)
+    if (elements[k].vertical_stages.size() == 2) {
+      ++axleboxes;
+      EXPECT_NEAR(response::leaf_hold_stretch(sys, k), 2.3e-3, 0.1e-3);
+    }
+  EXPECT_LT(slipping, 0.01 * axleboxes * 15.0);
+
+  s.simulation->effects.clear();
+  const TimeHistory without = simulate_scene(s, v);
+  EXPECT_GT(amplitude(without, 0, 15.0, 20.0), 10 * late);
+  EXPECT_GT(amplitude(without, 0, 15.0, 20.0), 1.2 * amplitude(without, 0, 10.0, 15.0));  // growing
 }
 
 }  // namespace
