@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
+#include <utility>
+#include <vector>
 
 #include "test_support.hpp"
 
@@ -11,26 +14,23 @@ namespace {
 
 using test::kPi;
 
-// The vertical input under the wheel of track element `index` at time t, summed over the
-// source's harmonics: u(t) = Σ Re(A e^{iω(t − τ)}).
-double input_at(const LinearSystem& system, const ExcitationSource& source, double speed, int index, double t) {
-  double u = 0.0;
+// The time in [0, period) where the vertical input under the wheel of track element `index`,
+// u(t) = Σ_k Re(A_k e^{iω_k(t − τ)}) over the source's harmonics, is lowest, on a grid of
+// `samples`.
+double deepest_time(const LinearSystem& system, const ExcitationSource& source, double speed, int index, double period,
+                    int samples) {
+  std::vector<std::pair<std::complex<double>, double>> terms;  // A_k e^{−iω_k τ}, ω_k
   for (int k = 1; k <= source.harmonic_count(); ++k) {
     const HarmonicLoad load = source.load(system, speed, k);
     const double omega = 2.0 * kPi * load.frequency_hz;
     for (const WheelInput& w : load.wheels)
-      if (w.track_input == index) u += std::real(w.amplitude(2) * std::polar(1.0, omega * (t - w.delay_s)));
+      if (w.track_input == index) terms.emplace_back(w.amplitude(2) * std::polar(1.0, -omega * w.delay_s), omega);
   }
-  return u;
-}
-
-// The time in [0, period) where the input under a wheel is lowest, on a grid of `samples`.
-double deepest_time(const LinearSystem& system, const ExcitationSource& source, double speed, int index, double period,
-                    int samples) {
   double best_t = 0.0, best_u = 0.0;
   for (int i = 0; i < samples; ++i) {
     const double t = period * i / samples;
-    const double u = input_at(system, source, speed, index, t);
+    double u = 0.0;
+    for (const auto& [a, omega] : terms) u += std::real(a * std::polar(1.0, omega * t));
     if (u < best_u) best_u = u, best_t = t;
   }
   return best_t;
