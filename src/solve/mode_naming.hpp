@@ -27,7 +27,7 @@ struct ModeDescription {
 ///    the CG when the lateral share is round-off (an uncoupled body);
 ///  - "lateral" when the body is held in roll, or the roll share is round-off;
 ///  - otherwise "lower sway" / "upper sway" as the centre of oscillation lies below / above
-///    the CG, however small either share (docs/input.md, "Mode names").
+///    the CG, however small either share (README, "Mode names").
 /// Bodies named alike but for a trailing number (bogie1, bogie2): a repeated mode led by one of
 /// them names the subspace, "bogies pitch (repeated)"; otherwise a twin with at least half the
 /// leader's energy names the pair and their phase: "bogies bounce, antiphase".
