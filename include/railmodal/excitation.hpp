@@ -155,6 +155,10 @@ struct RailJoints {
   /// (eq. (162) without its free term); without them, by 1 (the book's n² ≪ ρ², eq. (163)).
   double track_stiffness = 0.0;
   double half_wheelset_mass = 0.0;
+  /// Where the track starts: the deepest point of the first joint (of the left rail when
+  /// staggered) lies this far ahead of the leading wheelset at t = 0, m, in [0, L). 0: the
+  /// leading wheelset stands on a joint; the joint reaches it at t = first_joint_at/V.
+  double first_joint_at = 0.0;
 };
 
 /// Wheelset eccentricity e: each wheelset's axle rises and falls e·sin(2πs/πD + ψᵢ)
@@ -176,6 +180,10 @@ struct WheelFlat {
   double length = 0.0;          ///< l, m (≤ πD; πD is the book's whole-revolution case)
   DipShape shape = DipShape::cosine;
   int harmonics = 1;
+  /// Where the flats are at t = 0: the angle every wheel turns before the middle of its flat
+  /// meets the rail, rad, in [0, 2π); the flat arrives at t = flat_angle·D/(2V). 0: every flat
+  /// on the rail at t = 0.
+  double flat_angle = 0.0;
 };
 
 /// Kinematic hunting of conical treads: each wheelset moves laterally y₀ sin(2πs/λ), with
@@ -189,6 +197,9 @@ struct Hunting {
   double bogie_wheelbase = 0.0;         ///< a, m (rigid bogie)
   double given_wavelength = 0.0;        ///< m (given)
   double amplitude = 0.0;               ///< y₀, m
+  /// φ, rad, in [0, 2π): the leading wheelset's path is y₀ sin(2πs/λ + φ), s = V·t the
+  /// distance run since t = 0 (0: on the track's centre line, moving left).
+  double phase = 0.0;
   /// Optional data for Meineke's hunting-limit speed (267), reported beside the source.
   struct Meineke {
     double wheelbase = 0.0, diagonal = 0.0, clearance = 0.0, k = 0.0;  ///< a, d, 2σ (m); k

@@ -144,8 +144,9 @@ struct Mode {
   double frequency_hz = 0.0;   ///< ω/2π for oscillatory modes, else 0
   double period_s = 0.0;       ///< 2π/ω for oscillatory modes, else 0 (infinite period)
   double divergence_rate = 0.0;  ///< σ = √−λ, 1/s, for unstable modes, else 0
-  std::string name;            ///< e.g. "body bounce", "body lower sway", "bogies pitch, antiphase";
-                               ///< without bodies, the DOF with most kinetic energy ("dof3")
+  std::string name;              ///< e.g. "body bounce", "body lower sway", "bogies bounce, antiphase",
+                                 ///< "bogies pitch (repeated)" (README, "Mode names"); without
+                                 ///< bodies, the DOF with most kinetic energy ("dof3")
   Eigen::VectorXd shape;       ///< mass-normalised: φᵀMφ = 1, over LinearSystem::dofs
   Eigen::VectorXd kinetic_energy_share;  ///< per DOF, sums to 1 (φᵢ (Mφ)ᵢ)
   std::optional<CentreOfOscillation> centre;  ///< for pitch and roll modes

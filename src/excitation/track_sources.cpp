@@ -26,6 +26,14 @@ void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument(what);
 }
 
+// Multiplies harmonic k of an input by e^{−i·2πk·ahead/Λ}: the input's feature (a joint, a
+// flat) lies `ahead` of the leading wheelset at t = 0, along the track (docs/scenes.md, "Where
+// the track starts"). Nothing is done at ahead = 0, so that the default start leaves every
+// amplitude, down to the sign of its zero imaginary part, as it was.
+void shift_start(std::complex<double>* amplitude, double ahead, double wavelength, int harmonic) {
+  if (ahead != 0.0) *amplitude *= std::polar(1.0, -2.0 * kPi * harmonic * ahead / wavelength);
+}
+
 // Delay of a wheelset behind the leading one at speed V.
 double delay(const std::vector<excitation::Wheelset>& sets, double x, double speed) {
   return (sets.front().x - x) / speed;
@@ -41,6 +49,8 @@ class RailJointSource final : public ExcitationSource {
     require(p.harmonics >= 1, "rail joints: at least one harmonic");
     require((p.track_stiffness > 0.0) == (p.half_wheelset_mass > 0.0),
             "rail joints: give both track_stiffness and half_wheelset_mass, or neither");
+    require(p.first_joint_at >= 0.0 && p.first_joint_at < p.rail_length,
+            "rail joints: first_joint_at must lie in [0, rail_length)");
   }
   std::string kind() const override { return "rail_joints"; }
   std::string description() const override {
@@ -79,6 +89,7 @@ class RailJointSource final : public ExcitationSource {
         WheelInput w;
         w.track_input = index;
         w.amplitude(2) = A * factor;
+        shift_start(&w.amplitude(2), p_.first_joint_at, p_.rail_length, harmonic);
         w.delay_s = delay(sets, set.x, speed);
         out.wheels.push_back(w);
       }
@@ -153,6 +164,7 @@ class FlatSource final : public ExcitationSource {
     require(p.length > 0.0 && p.length <= kPi * p.wheel_diameter * (1.0 + 1e-9),
             "wheel flat: length must be positive and at most the circumference πD");
     require(p.harmonics >= 1, "wheel flat: at least one harmonic");
+    require(p.flat_angle >= 0.0 && p.flat_angle < 2.0 * kPi, "wheel flat: flat_angle must lie in [0, 2π)");
   }
   std::string kind() const override { return "wheel_flat"; }
   std::string description() const override {
@@ -174,6 +186,8 @@ class FlatSource final : public ExcitationSource {
       WheelInput w;
       w.track_input = index;
       w.amplitude(2) = A;
+      // A flat θ ahead meets the rail once the wheel has rolled θD/2.
+      shift_start(&w.amplitude(2), p_.flat_angle * p_.wheel_diameter / 2.0, wavelength(), harmonic);
       out.wheels.push_back(w);
     }
     return out;
@@ -188,6 +202,7 @@ class HuntingSource final : public ExcitationSource {
   explicit HuntingSource(const Hunting& p) : p_(p) {
     require(p.amplitude >= 0.0, "hunting: amplitude must not be negative");
     require(wavelength() > 0.0 && std::isfinite(wavelength()), "hunting: the wavelength must be positive");
+    require(p.phase >= 0.0 && p.phase < 2.0 * kPi, "hunting: phase must lie in [0, 2π)");
   }
   std::string kind() const override { return "hunting"; }
   std::string description() const override {
@@ -228,11 +243,12 @@ class HuntingSource final : public ExcitationSource {
     const auto sets = excitation::wheelsets(system);
     for (const auto& set : sets)
       for (int index : set.inputs) {
-        // Each wheelset follows the same sinuous path, y0 sin(2πs/λ), reached later by the
-        // wheelsets behind.
+        // Each wheelset follows the same sinuous path, y0 sin(2πs/λ + φ), reached later by the
+        // wheelsets behind: Re(−i y0 e^{iφ} e^{iωt}) at the leading one.
         WheelInput w;
         w.track_input = index;
         w.amplitude(1) = -kI * p_.amplitude;
+        shift_start(&w.amplitude(1), -p_.phase / (2.0 * kPi) * wavelength(), wavelength(), 1);
         w.delay_s = delay(sets, set.x, speed);
         out.wheels.push_back(w);
       }

@@ -16,6 +16,14 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// Where a periodic source is at t = 0, as an angle of its cycle: 0 (the default) to below a
+// full turn, so that one place has one spelling (docs/scenes.md, "Where the track starts").
+double read_start_angle(TableReader& t, const std::string& key) {
+  const double angle = t.optional_quantity(key, Quantity::angle).value_or(0.0);
+  if (!(angle >= 0.0 && angle < 2.0 * kPi)) t.fail(key, "must lie from 0 to below 360 deg");
+  return angle;
+}
+
 DipShape read_shape(TableReader& t, const std::string& key) {
   const std::string word = t.optional_string(key).value_or("cosine");
   if (const auto shape = dip_shape_from_string(word)) return *shape;
@@ -39,6 +47,9 @@ std::shared_ptr<const ExcitationSource> rail_joints(TableReader& t) {
            "missing: the track's dynamics need both track_stiffness and half_wheelset_mass");
   p.track_stiffness = t.optional_positive("track_stiffness", Quantity::stiffness).value_or(0.0);
   p.half_wheelset_mass = t.optional_positive("half_wheelset_mass", Quantity::mass).value_or(0.0);
+  p.first_joint_at = t.optional_positive("first_joint_at", Quantity::length, true).value_or(0.0);
+  if (!(p.first_joint_at < p.rail_length))
+    t.fail("first_joint_at", "must be shorter than the rail length (the next joint is the first)");
   return make_source(p);
 }
 
@@ -60,6 +71,7 @@ std::shared_ptr<const ExcitationSource> flat(TableReader& t) {
     t.fail("length", "cannot exceed the wheel circumference πD");
   p.shape = read_shape(t, "shape");
   p.harmonics = t.optional_count("harmonics", 1).value_or(1);
+  p.flat_angle = read_start_angle(t, "flat_angle");
   return make_source(p);
 }
 
@@ -78,6 +90,7 @@ std::shared_ptr<const ExcitationSource> hunting(TableReader& t) {
     if (p.model == Hunting::Model::rigid_bogie) p.bogie_wheelbase = t.positive("bogie_wheelbase", Quantity::length);
   }
   p.amplitude = t.positive("amplitude", Quantity::length);
+  p.phase = read_start_angle(t, "phase");
   if (t.has("meineke")) {
     TableReader m = t.table("meineke");
     Hunting::Meineke data;

@@ -132,7 +132,9 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   row.harmonic = k;
   row.mode = first.index;
   row.mode_name = first.name;
-  for (size_t g = 1; g < group.size(); ++g) row.mode_name += " + " + group[g]->name;
+  // A repeated cluster of twins has one name for the subspace ("bogies pitch (repeated)").
+  for (size_t g = 1; g < group.size(); ++g)
+    if (group[g]->name != first.name) row.mode_name += " + " + group[g]->name;
   row.frequency_hz = first.frequency_hz;
   const int out = reported_dof(system, group, magnitude);
   row.output = system.dofs[out].label;

@@ -102,7 +102,8 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925;
 
-using Describe = std::function<solve::ModeDescription(const Eigen::VectorXd&)>;
+// Names a mode from its shape and whether it is repeated.
+using Describe = std::function<solve::ModeDescription(const Eigen::VectorXd&, bool)>;
 
 void check_options(const ModalOptions& options) { require_valid(options, "ModalOptions: "); }
 
@@ -167,6 +168,9 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
   const std::vector<bool> rigid = rigid_body_modes(lambda, pairs, zero);
   const double norm_K = K.norm(), norm_M = M.norm();
   const Eigen::MatrixXd K_phi = K * phi, M_phi = M * phi;
+  std::vector<bool> repeated(keep, false);
+  for (int k = 0; k + 1 < keep; ++k)
+    if (solve::same_eigenvalue(lambda(k), lambda(k + 1), zero)) repeated[k] = repeated[k + 1] = true;
   for (int k = 0; k < keep; ++k) {
     Mode mode;
     mode.index = k + 1;
@@ -188,16 +192,14 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
     const double denom = (norm_K + std::abs(lambda(k)) * norm_M) * mode.shape.norm();
     mode.residual = denom > 0.0 ? (K_phi.col(k) - lambda(k) * M_phi.col(k)).norm() / denom : 0.0;
     result.max_residual = std::max(result.max_residual, mode.residual);
-    auto description = describe(mode.shape);
+    mode.repeated = repeated[k];
+    auto description = describe(mode.shape, mode.repeated);
     mode.name = description.name;
     mode.centre = description.centre;
     if (mode.kind == ModeKind::unstable) mode.name += " (unstable)";
     if (mode.kind == ModeKind::rigid_body) mode.name += " (rigid-body)";
     result.modes.push_back(std::move(mode));
   }
-  for (int k = 0; k + 1 < keep; ++k)
-    if (solve::same_eigenvalue(lambda(k), lambda(k + 1), zero))
-      result.modes[k].repeated = result.modes[k + 1].repeated = true;
   // Orthonormality over the kept coordinates (the condensed ones carry no mass).
   const Eigen::MatrixXd G = phi.transpose() * M_phi;
   result.orthonormality_error = (G - Eigen::MatrixXd::Identity(keep, keep)).cwiseAbs().maxCoeff();
@@ -237,7 +239,9 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
   const Eigen::MatrixXd& K = system.stiffness;
   if (!M.allFinite() || !K.allFinite())
     throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
-  const Describe describe = [&system](const Eigen::VectorXd& shape) { return solve::describe_mode(system, shape); };
+  const Describe describe = [&system](const Eigen::VectorXd& shape, bool repeated) {
+    return solve::describe_mode(system, shape, repeated);
+  };
   const auto labels = labels_of(system.dofs);
   AnalysisSummary timing;
   StageClock clock(&timing);
@@ -277,7 +281,7 @@ ModalResult solve_modes(const SparseSystem& system, const ModalOptions& options)
   if (!all_finite(system.mass) || !all_finite(system.stiffness))
     throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
   // Without bodies a mode is named after the DOF with the most kinetic energy φᵢ (Mφ)ᵢ.
-  const Describe describe = [&system](const Eigen::VectorXd& shape) {
+  const Describe describe = [&system](const Eigen::VectorXd& shape, bool) {
     Eigen::Index lead = 0;
     shape.cwiseProduct(system.mass * shape).maxCoeff(&lead);
     return solve::ModeDescription{system.dofs[lead].label, std::nullopt};

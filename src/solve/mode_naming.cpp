@@ -1,6 +1,7 @@
 #include "solve/mode_naming.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -81,42 +82,67 @@ struct LeadingMotion {
   std::optional<CentreOfOscillation> centre;
 };
 
+// Roll and lateral motion of a body free in both are one coupled motion, sway, named by the
+// side of the CG its centre of rotation lies on: the pair's centres are always on opposite
+// sides (their M-orthogonality gives (z₁ − z_cg)(z₂ − z_cg) = −J/m), so the name follows the
+// shape continuously and a small change of the design cannot swap it. Only an uncoupled body
+// (spring plane through the CG, or no lateral stiffness) has a pure lateral or a pure roll
+// mode about the CG; a share below 1e-6 of the sway energy is round-off of such a mode.
+std::string sway_word(const Body& body, const BodyEnergy& e, std::optional<CentreOfOscillation>* centre) {
+  const double sway = e.term[kLateral] + e.term[kRoll];
+  if (e.term[kLateral] <= 1e-6 * sway) {
+    *centre = centre_of(body, e.motion, true);
+    return "roll";
+  }
+  if (e.term[kRoll] <= 1e-6 * sway) return "lateral";
+  *centre = centre_of(body, e.motion, true);
+  const bool lower = !(*centre)->at_infinity && (*centre)->position < body.centre_of_gravity.z();
+  return lower ? "lower sway" : "upper sway";
+}
+
 LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const BodyEnergy& e) {
+  // Longitudinal CG motion comes from pitching about a point off the CG; lateral CG motion
+  // and roll are one sway, whichever of the two is larger.
   std::array<double, kTerms> t = e.term;
   t[kPitch] += t[kLongitudinal];
   t[kLongitudinal] = 0.0;
+  t[kRoll] += t[kLateral];
+  t[kLateral] = 0.0;
   int word = 0;
   for (int k = 1; k < kTerms; ++k)
     if (t[k] > t[word]) word = k;
 
   LeadingMotion m;
-  const double share_lateral = e.total > 0 ? t[kLateral] / e.total : 0.0;
-  const double share_roll = e.total > 0 ? t[kRoll] / e.total : 0.0;
-  // Sway needs a free lateral motion; a body held laterally (two-axle wagon, bogie frame)
-  // simply rolls about its fixed axis, the book's "side rocking".
-  const bool lateral_free = system.index_of(body.name + ".lateral") >= 0;
-  if (lateral_free && (word == kLateral || word == kRoll) && share_lateral >= 0.1 && share_roll >= 0.1) {
-    m.centre = centre_of(body, e.motion, true);
-    const bool lower = !m.centre->at_infinity && m.centre->position < body.centre_of_gravity.z();
-    m.word = lower ? "lower sway" : "upper sway";
-    m.key = Motion::roll;
-    return m;
-  }
   switch (word) {
-    case kLateral: m.word = "lateral"; m.key = Motion::lateral; break;
     case kVertical: m.word = "bounce"; m.key = Motion::bounce; break;
-    case kRoll: m.word = "roll"; m.key = Motion::roll; break;
-    case kPitch: m.word = "pitch"; m.key = Motion::pitch; break;
-    default: m.word = "yaw"; m.key = Motion::yaw; break;
+    case kPitch:
+      m.word = "pitch", m.key = Motion::pitch;
+      m.centre = centre_of(body, e.motion, false);
+      break;
+    case kYaw:
+      m.word = "yaw";
+      m.key = Motion::yaw;
+      break;
+    default: {
+      // A body held laterally rolls about its fixed axis (the book's side rocking) even when
+      // its CG moves more than it turns; one held in roll only translates.
+      const bool lateral_free = system.index_of(body.name + ".lateral") >= 0;
+      const bool roll_free = system.index_of(body.name + ".roll") >= 0;
+      if (roll_free && !lateral_free) {
+        m.word = "roll";
+        m.centre = centre_of(body, e.motion, true);
+      } else {
+        m.word = lateral_free && !roll_free ? "lateral" : sway_word(body, e, &m.centre);
+      }
+      m.key = m.word == "lateral" ? Motion::lateral : Motion::roll;
+    }
   }
-  if (word == kRoll) m.centre = centre_of(body, e.motion, true);
-  if (word == kPitch) m.centre = centre_of(body, e.motion, false);
   return m;
 }
 
 }  // namespace
 
-ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape) {
+ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape, bool repeated) {
   const auto& bodies = system.vehicle.bodies;
   if (bodies.empty()) return describe_by_dof(system, shape);
   std::vector<BodyVector> motion(bodies.size(), BodyVector::Zero());
@@ -135,11 +161,19 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
   ModeDescription d;
   d.centre = leading.centre;
 
-  // A twin body (bogie1/bogie2) sharing the energy: name the pair and their phase.
   const std::string family = family_of(body.name);
-  for (size_t b = 0; b < bodies.size(); ++b) {
-    if (static_cast<int>(b) == lead || family.empty() || family == body.name) continue;
-    if (family_of(bodies[b].name) != family || energy[b].total < 0.5 * e.total) continue;
+  const bool has_twin = !family.empty() && family != body.name &&
+                        std::any_of(bodies.begin(), bodies.end(),
+                                    [&](const Body& b) { return b.name != body.name && family_of(b.name) == family; });
+  // A repeated mode of twin bodies is any combination of the twins' motions (the solver's
+  // basis is arbitrary, its members unequal mixtures): only the shared subspace has a name.
+  if (repeated && has_twin) {
+    d.name = family + "s " + leading.word + " (repeated)";
+    return d;
+  }
+  // A twin body (bogie1/bogie2) sharing the energy: name the pair and their phase.
+  for (size_t b = 0; b < bodies.size() && has_twin; ++b) {
+    if (static_cast<int>(b) == lead || family_of(bodies[b].name) != family || energy[b].total < 0.5 * e.total) continue;
     const int m = static_cast<int>(leading.key);
     const double a = e.motion(m), other = energy[b].motion(m);
     const std::string phase = a * other >= 0.0 ? "in phase" : "antiphase";

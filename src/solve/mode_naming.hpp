@@ -15,19 +15,24 @@ struct ModeDescription {
   std::optional<CentreOfOscillation> centre;
 };
 
-/// Describes a mode shape over system.dofs (all entries, condensed ones recovered).
+/// Describes a mode shape over system.dofs (all entries, condensed ones recovered);
+/// `repeated`: the mode shares its eigenvalue with another (Mode::repeated).
 ///
 /// The kinetic energy of each body is split at its centre of gravity into translation
 /// (lateral, vertical, longitudinal) and rotation (roll, pitch, yaw), terms that cannot be
 /// negative. The body with the most energy names the mode; its leading motion gives the
-/// word: bounce, pitch (longitudinal CG motion comes from pitching about a point below the
-/// CG), roll, lateral, yaw, and "lower sway" / "upper sway" when the body's lateral motion is
-/// free, lateral and roll both carry at least 10 % of its energy and the centre of
-/// oscillation lies below / above the CG.
-/// Bodies named alike but for a trailing number (bogie1, bogie2) that share the energy
-/// (the second at least half the first) are named together: "bogies bounce, antiphase".
+/// word: bounce, pitch (longitudinal CG motion comes from pitching about a point off the CG),
+/// yaw, or, for lateral CG motion and roll taken together:
+///  - "roll" (about the fixed axis: side rocking) when the body is held laterally, or about
+///    the CG when the lateral share is round-off (an uncoupled body);
+///  - "lateral" when the body is held in roll, or the roll share is round-off;
+///  - otherwise "lower sway" / "upper sway" as the centre of oscillation lies below / above
+///    the CG, however small either share (README, "Mode names").
+/// Bodies named alike but for a trailing number (bogie1, bogie2): a repeated mode led by one of
+/// them names the subspace, "bogies pitch (repeated)"; otherwise a twin with at least half the
+/// leader's energy names the pair and their phase: "bogies bounce, antiphase".
 /// A system without bodies (matrices read from files) is named after the DOF with the most
 /// kinetic energy φᵢ (Mφ)ᵢ, e.g. "dof3" or "body.bounce", with no centre of oscillation.
-ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape);
+ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape, bool repeated);
 
 }  // namespace railmodal::solve

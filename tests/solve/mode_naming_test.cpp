@@ -1,0 +1,186 @@
+// Mode names are stable under small changes of the design (issue 17 item 8): a ±1 % change of
+// any numeric parameter of a bundled vehicle may change a mode's name only where the mode's shape
+// changes too.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "test_support.hpp"
+
+namespace railmodal {
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Where each numeric value of a TOML file is: offset and length of every number on the value
+// side of a line (after its first '='), outside comments, not part of a key or a unit's power
+// ("bogie1", "cm/s^2").
+std::vector<std::pair<size_t, size_t>> numbers_in(const std::string& text) {
+  std::vector<std::pair<size_t, size_t>> found;
+  const std::regex number(R"([-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?)");
+  size_t line_start = 0;
+  while (line_start < text.size()) {
+    size_t line_end = text.find('\n', line_start);
+    if (line_end == std::string::npos) line_end = text.size();
+    const std::string line = text.substr(line_start, line_end - line_start);
+    bool quoted = false;
+    size_t value_start = std::string::npos, end = line.size();
+    for (size_t i = 0; i < line.size(); ++i) {
+      if (line[i] == '"') quoted = !quoted;
+      if (!quoted && line[i] == '#') {
+        end = i;
+        break;
+      }
+      if (!quoted && line[i] == '=' && value_start == std::string::npos) value_start = i + 1;
+    }
+    if (value_start != std::string::npos && line.find('[') != 0) {
+      const std::string value = line.substr(value_start, end - value_start);
+      for (std::sregex_iterator it(value.begin(), value.end(), number), stop; it != stop; ++it) {
+        const size_t at = static_cast<size_t>(it->position());
+        const char before = at > 0 ? value[at - 1] : ' ';
+        if (std::isalpha(static_cast<unsigned char>(before)) || before == '_' || before == '^') continue;
+        found.emplace_back(line_start + value_start + at, static_cast<size_t>(it->length()));
+      }
+    }
+    line_start = line_end + 1;
+  }
+  return found;
+}
+
+// The issue's first case: a body held laterally whose only free motion is roll (a two-axle
+// wagon's body) rolls about its fixed axis, the book's side rocking, even with its CG so high
+// that the CG moves more than the body turns. It was named "body lateral", with no centre.
+TEST(ModeNames, BodyHeldLaterallyRollsAboutItsAxis) {
+  Vehicle v = load_vehicle(test::data_file("two_axle_freight_wagon.toml"));
+  Body* body = test::body_named(v, "body");
+  ASSERT_NE(body, nullptr);
+  body->centre_of_gravity.z() = 2.5;  // m above the axle plane, far above the radius of gyration
+  const LinearSystem system = assemble(v, DofSet::lateral);
+  ASSERT_EQ(system.dofs.size(), 1u);  // body.roll only
+  const ModalResult r = solve_modes(system);
+  const Mode& m = r.modes.at(0);
+  EXPECT_EQ(m.name, "body roll");
+  ASSERT_TRUE(m.centre.has_value());
+  EXPECT_EQ(m.centre->about, "roll");
+  EXPECT_FALSE(m.centre->at_infinity);
+  EXPECT_NEAR(m.centre->position, body->reference_point.z(), 1e-12);  // the fixed axis
+}
+
+// The issue's second case: a sway pair was "lateral"/"roll" once either share fell below 10 %
+// and "lower sway"/"upper sway" above it. Lowering the frame's CG towards its spring plane
+// weakens the coupling continuously; the pair keeps its names, the lower sway's centre below
+// the CG and the upper's above, down to a coupling of a few per cent.
+TEST(ModeNames, SwayPairKeepsItsNamesAsTheCouplingWeakens) {
+  for (double scale : {1.0, 0.5, 0.2, 0.1, 0.05}) {
+    Vehicle v = load_vehicle(test::data_file("steam_locomotive_frame.toml"));
+    Body* frame = test::body_named(v, "frame");
+    ASSERT_NE(frame, nullptr);
+    frame->centre_of_gravity.z() *= scale;
+    const ModalResult r = solve_modes(assemble(v, DofSet::lateral));
+    int lower = 0, upper = 0;
+    for (const Mode& m : r.modes) {
+      EXPECT_EQ(m.name.find("lateral"), std::string::npos) << scale << ": " << m.name;
+      EXPECT_NE(m.name, "frame roll") << scale;
+      if (m.name != "frame lower sway" && m.name != "frame upper sway") continue;
+      ASSERT_TRUE(m.centre && !m.centre->at_infinity);
+      const bool below = m.centre->position < frame->centre_of_gravity.z();
+      EXPECT_EQ(below, m.name == "frame lower sway") << scale;
+      ++(below ? lower : upper);
+    }
+    EXPECT_EQ(lower, 1) << scale;
+    EXPECT_EQ(upper, 1) << scale;
+  }
+}
+
+// MAC of two shapes weighted by the unperturbed mass matrix.
+double mac(const Eigen::MatrixXd& M, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  const double ab = a.dot(M * b);
+  return ab * ab / (a.dot(M * a) * b.dot(M * b));
+}
+
+struct Variant {
+  std::string file;
+  DofSet set;
+};
+void PrintTo(const Variant& v, std::ostream* out) { *out << v.file << " (" << to_string(v.set) << ")"; }
+
+class NamesUnderPerturbation : public ::testing::TestWithParam<Variant> {};
+
+// For each perturbed mode, the unperturbed mode most like it (largest MAC): where they are alike
+// (MAC ≥ 0.9, the issue's threshold) they must have the same name. Modes whose shape changes
+// (near-repeated pairs that an asymmetric change splits, modes whose order crosses) may be
+// renamed. Values that cannot be scaled (counts, which must stay integers) are skipped.
+TEST_P(NamesUnderPerturbation, NameChangesOnlyWithTheShape) {
+  const std::string path = test::data_file(GetParam().file);
+  const std::string text = read_text(path);
+  const LinearSystem base_system = assemble(load_vehicle(path), GetParam().set);
+  if (base_system.dofs.empty()) GTEST_SKIP() << "no degrees of freedom in this set";
+  const ModalResult base = solve_modes(base_system);
+  int perturbed = 0;
+  std::vector<std::string> failures;
+  for (const auto& [at, length] : numbers_in(text)) {
+    const double value = std::stod(text.substr(at, length));
+    if (value == 0.0) continue;
+    for (double factor : {1.01, 0.99}) {
+      char scaled[40];
+      std::snprintf(scaled, sizeof scaled, "%.15g", value * factor);
+      const std::string changed = text.substr(0, at) + scaled + text.substr(at + length);
+      ModalResult r;
+      try {
+        const std::string file = test::write_temp(std::filesystem::path(path).filename().string(), changed);
+        const LinearSystem system = assemble(load_vehicle(file), GetParam().set);
+        if (system.dofs.size() != base_system.dofs.size()) continue;
+        r = solve_modes(system);
+      } catch (const std::exception&) {
+        continue;  // an integer count scaled, or a design the change makes invalid
+      }
+      ++perturbed;
+      for (const Mode& m : r.modes) {
+        double best = 0.0;
+        const Mode* like = nullptr;
+        for (const Mode& b : base.modes) {
+          const double v = mac(base_system.mass, b.shape, m.shape);
+          if (v > best) best = v, like = &b;
+        }
+        if (best >= 0.9 && like->name != m.name)
+          failures.push_back("'" + text.substr(at, length) + "' ×" + (factor > 1 ? "1.01" : "0.99") + " at offset " +
+                             std::to_string(at) + ": '" + like->name + "' became '" + m.name + "' with MAC " +
+                             std::to_string(best));
+      }
+    }
+  }
+  EXPECT_GE(perturbed, 8);  // the file's parameters were found and changed (the smallest file has 5)
+  for (const auto& f : failures) ADD_FAILURE() << GetParam().file << " (" << to_string(GetParam().set) << "): " << f;
+}
+
+std::vector<Variant> bundled_vehicles() {
+  std::vector<Variant> v;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(RAILMODAL_DATA_DIR) + "/vehicles"))
+    if (entry.path().extension() == ".toml")
+      for (DofSet set : {DofSet::all, DofSet::vertical, DofSet::lateral})
+        v.push_back({entry.path().filename().string(), set});
+  std::sort(v.begin(), v.end(), [](const Variant& a, const Variant& b) {
+    return a.file != b.file ? a.file < b.file : static_cast<int>(a.set) < static_cast<int>(b.set);
+  });
+  return v;
+}
+
+INSTANTIATE_TEST_SUITE_P(BundledVehicles, NamesUnderPerturbation, ::testing::ValuesIn(bundled_vehicles()),
+                         [](const ::testing::TestParamInfo<Variant>& info) {
+                           std::string name =
+                               info.param.file.substr(0, info.param.file.size() - 5) + "_" + to_string(info.param.set);
+                           return name;
+                         });
+
+}  // namespace
+}  // namespace railmodal
