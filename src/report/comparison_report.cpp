@@ -227,13 +227,14 @@ void write_table(std::ostream& out, const Comparison& c) {
     out << "; objective: ";
     for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
       const auto& crit = c.ranking.objective[k];
-      out << (k ? (c.ranking.weighted ? " + " : ", then ") : "") << (crit.maximise ? "max " : "min ") << crit.metric;
+      out << (k ? (c.ranking.weighted ? " + " : ", then ") : "") << study::title(crit.metric)
+          << (crit.maximise ? " (maximised)" : " (minimised)");
       if (c.ranking.weighted) out << " (weight " << crit.weight << ")";
     }
   }
   out << "\n";
   for (const auto& k : c.ranking.constraints) {
-    out << "constraint: " << k.metric;
+    out << "constraint: " << study::title(k.metric);
     if (k.min) out << " >= " << study::shown(k.metric, *k.min);
     if (k.max) out << (k.min ? " and" : "") << " <= " << study::shown(k.metric, *k.max);
     out << "\n";
