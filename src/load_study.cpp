@@ -63,6 +63,15 @@ StudyVariant read_variant(const Study& study, int index) {
   return input::read_variant(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), nullptr);
 }
 
+std::string parameter_label(const Study& study, const std::string& key) {
+  if (study.plan)
+    for (const study::Sweep& sweep : study.plan->file.plan.sweeps)
+      for (const study::SweepParameter& p : sweep.parameters)
+        if ((p.scene ? "scene:" : "") + p.key == key) return p.label;
+  const size_t dot = key.find_last_of(".:");  // as a sweep names an unlabelled parameter
+  return dot == std::string::npos ? key : key.substr(dot + 1);
+}
+
 std::vector<std::string> study_files(const Study& study) {
   std::vector<std::string> files{study.source};
   if (!study.plan) return files;

@@ -18,6 +18,7 @@
 #include <ostream>
 
 #include "railmodal/output_format.hpp"
+#include "railmodal/provenance.hpp"
 #include "railmodal/study.hpp"
 
 namespace railmodal {
@@ -32,11 +33,13 @@ void write_comparison(std::ostream& out, const Comparison& comparison, OutputFor
 /// and the objective, and the amplitude-against-speed curves of the best kReportBest
 /// feasible variants over the base's, from `curves` (comparison_curves(study, comparison,
 /// kReportBest); table, csv and json do not draw them: pass {}). HTML is one self-contained
-/// page with inline SVG plots. The writer reads no file and runs no analysis.
+/// page with inline SVG plots. The documents end with the railmodal version and `provenance`'s
+/// input files with their digests (provenance_of(study_files(study))). The writer reads no
+/// file and runs no analysis.
 inline constexpr int kReportRows = 40;
 inline constexpr int kReportBest = 3;
 void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
-                             const ComparisonCurves& curves, OutputFormat format);
+                             const ComparisonCurves& curves, OutputFormat format, const Provenance& provenance = {});
 
 /// The results of one shard of a study as JSON (railmodal compare --shard), for read_shard
 /// (study.hpp) to merge: the study's name and size, the evaluation's shard, and each result.

@@ -16,10 +16,14 @@
 
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/output_format.hpp"
+#include "railmodal/provenance.hpp"
 
 namespace railmodal {
 
-/// Writes markdown, html, csv or json (std::invalid_argument for table).
-void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, OutputFormat format);
+/// Writes markdown, html, csv or json (std::invalid_argument for table). The markdown and html
+/// documents end with the railmodal version and `provenance`'s input files and their digests
+/// (provenance_of({scene file, vehicle file})); {}: "input files not recorded".
+void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, OutputFormat format,
+                                 const Provenance& provenance = {});
 
 }  // namespace railmodal

@@ -15,6 +15,7 @@
 #include <ostream>
 
 #include "railmodal/output_format.hpp"
+#include "railmodal/provenance.hpp"
 #include "railmodal/scene_simulation.hpp"
 #include "railmodal/vehicle.hpp"
 
@@ -31,11 +32,13 @@ namespace railmodal {
 ///   "half_periods": {"dof", "linear_half_period_s", "between_turning_points_s",
 ///   "between_crossings_s", "turning_points": [{"time_s", "displacement"}], "comes_to_rest"}}.
 ///   html: a self-contained page (inline SVG, no scripts): the displacement histories of the
-///   DOFs whose spectra were taken (with the stick/slip/kink events marked when there are few
-///   enough to see), each spectrum up to 1.5× the highest checked mode with every modal
-///   frequency as a vertical line, the check table and the half-period table.
+///   DOFs whose spectra were taken, translations (mm) and rotations (mrad) on charts of their
+///   own, with the stick/slip/kink events marked when there are few enough to see; each
+///   spectrum up to 1.5× the highest checked mode with every modal frequency as a vertical
+///   line; the check table and the half-period table. The page ends with the railmodal
+///   version and `provenance`'s input files with their digests.
 /// `vehicle` names the page's vehicle.
 void write_fft_check(std::ostream& out, const FftCheckResult& result, const Scene& scene, const Vehicle& vehicle,
-                     OutputFormat format);
+                     OutputFormat format, const Provenance& provenance = {});
 
 }  // namespace railmodal

@@ -24,6 +24,7 @@
 #include "railmodal/matrix_market.hpp"
 #include "railmodal/modal.hpp"
 #include "railmodal/output_format.hpp"
+#include "railmodal/provenance.hpp"
 #include "railmodal/report.hpp"
 #include "railmodal/response.hpp"
 #include "railmodal/scene.hpp"

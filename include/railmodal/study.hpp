@@ -132,6 +132,10 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
 /// from the study's files (throwing InputError as load_study would).
 StudyVariant read_variant(const Study& study, int index);
 
+/// What a report calls the parameter `key` (as StudyParameter names it): the label the study
+/// gives it in a sweep ("f"), or else the last part of its key path ("static_deflection").
+std::string parameter_label(const Study& study, const std::string& key);
+
 /// The files the study is read from, whichever variants load_study read: the study file, its
 /// scene and every variant's vehicle file, each once (a program must not write over them).
 std::vector<std::string> study_files(const Study& study);

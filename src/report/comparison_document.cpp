@@ -48,7 +48,10 @@ std::string metric_text(const std::string& metric, const std::optional<double>& 
   return significant(*x * u.per_si, 4) + (unit.empty() ? "" : " " + unit);
 }
 
-std::string goal(const RankingCriterion& c) { return std::string(c.maximise ? "max " : "min ") + c.metric; }
+// A criterion as docs/studies.md names its metric: "period of body bounce (maximised)".
+std::string goal(const RankingCriterion& c) {
+  return study::title(c.metric) + (c.maximise ? " (maximised)" : " (minimised)");
+}
 
 // ---- why the winner wins ------------------------------------------------------------------
 
@@ -82,8 +85,8 @@ std::string against_base(const Comparison& c, const Writer& w, const RankedVaria
   for (size_t k = 0; k < objective.size(); ++k) {
     const auto& mine = k < winner.criteria.size() ? winner.criteria[k] : std::nullopt;
     const auto& theirs = k < base.criteria.size() ? base.criteria[k] : std::nullopt;
-    b += w.text(std::string(k ? ";" : "") + " " + objective[k].metric + " " + metric_text(objective[k].metric, mine) +
-                " (base " + metric_text(objective[k].metric, theirs) + ")");
+    b += w.text(std::string(k ? ";" : "") + " " + study::title(objective[k].metric) + " " +
+                metric_text(objective[k].metric, mine) + " (base " + metric_text(objective[k].metric, theirs) + ")");
   }
   b += w.text(".");
   if (!base.result.ok()) b += w.text(" The base itself failed: " + base.result.failure + ".");
@@ -116,7 +119,7 @@ std::string constraint_sentence(const Comparison& c, const Writer& w, const Rank
   std::string bound;
   if (k.min) bound += " ≥ " + metric_text(k.metric, *k.min);
   if (k.max) bound += std::string(k.min ? " and" : "") + " ≤ " + metric_text(k.metric, *k.max);
-  return w.text("Constraint " + k.metric + bound + ": " + std::to_string(violating) + " of " +
+  return w.text("Constraint " + study::title(k.metric) + bound + ": " + std::to_string(violating) + " of " +
                 std::to_string(c.variants.size() - failed) + " evaluated variants violate it.");
 }
 
@@ -134,8 +137,8 @@ std::string deflection_sentence(const VariantResult& r, const Writer& w) {
                   fixed(worst->speed * kKmh, 1) + " km/h.");
   return w.text(std::string(worst->kept() ? "The winner keeps" : "The winner exceeds") +
                 " the permissible dynamic deflections: at worst " +
-                significant(worst->deflection / worst->permissible, 3) + " of the limit (" + worst->element + ", " +
-                worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h.");
+                significant(100.0 * worst->deflection / worst->permissible, 3) + " % of the limit (" + worst->element +
+                ", " + worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h.");
 }
 
 std::vector<std::string> verdict(const Comparison& c, const Writer& w) {
@@ -196,11 +199,12 @@ std::optional<std::pair<double, std::string>> numeric(const std::string& text) {
 
 struct SweptParameter {
   std::string key, unit;
+  std::string label;                                            ///< as the study names it (parameter_label)
   std::vector<std::pair<const RankedVariant*, double>> points;  ///< in study order
 };
 
 // Keys that take at least two numeric values in one unit across the evaluated variants.
-std::vector<SweptParameter> swept_parameters(const Comparison& c) {
+std::vector<SweptParameter> swept_parameters(const Study& study, const Comparison& c) {
   std::vector<const RankedVariant*> in_order;
   for (const RankedVariant& v : c.variants) in_order.push_back(&v);
   std::sort(in_order.begin(), in_order.end(), [](auto* a, auto* b) { return a->result.index < b->result.index; });
@@ -211,7 +215,8 @@ std::vector<SweptParameter> swept_parameters(const Comparison& c) {
     if (!v->result.ok()) continue;
     for (const auto& [key, text] : v->result.parameters) {
       const auto value = numeric(text);
-      if (!position.count(key)) position[key] = out.size(), out.push_back({key, value ? value->second : "", {}});
+      if (!position.count(key))
+        position[key] = out.size(), out.push_back({key, value ? value->second : "", parameter_label(study, key), {}});
       SweptParameter& p = out[position[key]];
       if (!value || value->second != p.unit) mixed.insert(key);
       else p.points.push_back({v, value->first});
@@ -226,7 +231,13 @@ std::vector<SweptParameter> swept_parameters(const Comparison& c) {
   return swept;
 }
 
-std::string axis_label(const SweptParameter& p) { return p.key + (p.unit.empty() ? "" : " (" + p.unit + ")"); }
+// The parameter as the study names it, with the unit its values are written in: "f (mm)".
+std::string axis_label(const SweptParameter& p) { return p.label + (p.unit.empty() ? "" : " (" + p.unit + ")"); }
+
+// A sweep's heading: its label, and the key path it sets (for the reader who looks it up).
+std::string parameter_heading(const SweptParameter& p, const Writer& w) {
+  return w.text(p.label + ": ") + (w.html ? "<code>" + html_escape(p.key) + "</code>" : "`" + p.key + "`");
+}
 
 // The mode names whose periods are plotted: the lowest oscillatory modes of the reference.
 std::vector<std::string> period_modes(const VariantResult& reference) {
@@ -250,19 +261,27 @@ std::optional<double> ranked_value(const RankedVariant& v, const Ranking& rankin
   return v.criteria.empty() ? std::nullopt : v.criteria.front();
 }
 
+// A ratio to a permissible value is shown in per cent of it, as the tables say it.
+bool is_ratio(const std::string& metric) { return study::title(metric).find("/ permissible") != std::string::npos; }
+
+// The axis (and column) of the value ranked first, its unit at the end: "period of body bounce
+// (s)", "largest dynamic deflection (% of permissible)".
 std::string ranked_label(const Ranking& ranking) {
   if (ranking.objective.empty()) return "";
-  if (ranking.weighted) return "weighted objective";
-  const study::DisplayUnit u = study::display_unit(ranking.objective.front().metric);
-  return goal(ranking.objective.front()) + (std::string(u.unit).empty() ? "" : " (" + std::string(u.unit) + ")");
+  if (ranking.weighted) return "weighted objective (weights × SI values)";
+  const std::string& metric = ranking.objective.front().metric;
+  if (is_ratio(metric)) return study::title(metric).substr(0, study::title(metric).find(" / ")) + " (% of permissible)";
+  return study::heading(metric);
 }
 
 double ranked_scale(const Ranking& ranking) {
-  return ranking.weighted || ranking.objective.empty() ? 1.0 : study::display_unit(ranking.objective.front().metric).per_si;
+  if (ranking.weighted || ranking.objective.empty()) return 1.0;
+  const std::string& metric = ranking.objective.front().metric;
+  return is_ratio(metric) ? 100.0 : study::display_unit(metric).per_si;
 }
 
-// Room for the points: 5 % beyond the extreme values, so none sits on the frame, and above
-// the highest as much as the legend (drawn at the top) needs, a tenth of the range a line.
+// Room for the points: 5 % beyond the extreme values, so none sits on the frame (the legend is
+// drawn under the plot and needs none).
 void frame_points(report::Chart* chart) {
   double x_lo = INFINITY, x_hi = -INFINITY, y_lo = INFINITY, y_hi = -INFINITY;
   for (const auto& s : chart->series)
@@ -272,8 +291,7 @@ void frame_points(report::Chart* chart) {
   chart->x_min = x_lo - 0.05 * (x_hi - x_lo);
   chart->x_max = x_hi + 0.05 * (x_hi - x_lo);
   chart->y_min = y_lo >= 0.0 ? 0.0 : y_lo - 0.05 * (y_hi - y_lo);
-  const double legend = 0.15 + 0.1 * static_cast<double>(chart->series.size());
-  chart->y_max = y_hi + legend / (1.0 - legend) * (y_hi - chart->y_min);
+  chart->y_max = y_hi + 0.05 * (y_hi - chart->y_min);
   if (!(chart->y_min < chart->y_max)) chart->y_min = chart->y_max = 0.0;  // all zero: automatic
 }
 
@@ -285,7 +303,7 @@ void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vecto
     const size_t stride = (p.points.size() + kChartPoints - 1) / kChartPoints;
     report::Chart periods;
     periods.id = "sweep-periods-" + std::to_string(k + 1);
-    periods.title = "Periods against " + p.key;
+    periods.title = "Periods against " + p.label;
     periods.x_label = axis_label(p);
     periods.y_label = "period (s)";
     for (const std::string& mode : modes) {
@@ -297,14 +315,17 @@ void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vecto
       if (!s.x.empty()) periods.series.push_back(s);
     }
     frame_points(&periods);
-    out << "<h3>" << html_escape(p.key) << "</h3>\n" << report::svg_chart(periods);
+    out << "<h3>" << parameter_heading(p, Writer{true}) << "</h3>\n" << report::svg_chart(periods);
     if (!c.ranking.objective.empty()) {
       report::Chart objective;
       objective.id = "sweep-objective-" + std::to_string(k + 1);
-      objective.title = "Objective against " + p.key;
+      objective.title = c.ranking.weighted ? "Weighted objective against " + p.label
+                                           : "Objective against " + p.label + ": " + goal(c.ranking.objective.front());
       objective.x_label = axis_label(p);
       objective.y_label = ranked_label(c.ranking);
-      report::ChartSeries feasible{"feasible", {}, {}, false, true}, infeasible{"infeasible", {}, {}, false, true};
+      report::ChartSeries feasible, infeasible;
+      feasible.label = "feasible", infeasible.label = "infeasible";
+      feasible.markers_only = infeasible.markers_only = true;
       for (size_t i = 0; i < p.points.size(); i += stride) {
         const auto y = ranked_value(*p.points[i].first, c.ranking);
         if (!y || !std::isfinite(*y)) continue;
@@ -462,6 +483,7 @@ void write_curve_charts(std::ostream& out, const std::vector<DesignCurves>& sets
       for (size_t i = 0; i < curve->speeds.size(); ++i) {
         series.x.push_back(curve->speeds[i] * kKmh);
         series.y.push_back(curve->unbounded[i] ? NAN : curve->amplitudes[i] * u.scale);
+        if (curve->unbounded[i]) series.unbounded_x.push_back(curve->speeds[i] * kKmh);
       }
       chart.x_min = std::min(chart.x_min, s.study.scene.min_speed * kKmh);
       chart.x_max = std::max(chart.x_max, s.study.scene.max_speed * kKmh);
@@ -490,7 +512,7 @@ std::string rule_text(const DeflectionRule& rule) {
 // that comes closest to it (or exceeds it most), with how many elements share that limit.
 Table deflection_table(const Comparison& c) {
   Table t;
-  t.headers = {"variant", "limit", "permissible", "worst element", "deflection / permissible", "at", "kept"};
+  t.headers = {"variant", "limit", "permissible", "worst element", "its largest dynamic deflection", "at", "verdict"};
   t.numeric = {false, false, true, false, true, true, false};
   std::vector<const RankedVariant*> shown;
   if (const RankedVariant* base = comparison_base(c)) shown.push_back(base);
@@ -514,10 +536,11 @@ Table deflection_table(const Comparison& c) {
       const std::string stage = worst->stage.empty() ? "" : " (" + worst->stage + " stage)";
       t.rows.push_back({r.name, basis, fixed(worst->permissible * 1000.0, 1) + " mm",
                         worst->element + stage + (count > 1 ? ", worst of " + std::to_string(count) : ""),
-                        worst->unbounded ? "unbounded: a resonance friction does not stop"
-                                         : significant(worst->deflection / worst->permissible, 3),
+                        worst->unbounded
+                            ? "unbounded: a resonance friction does not stop"
+                            : significant(100.0 * worst->deflection / worst->permissible, 3) + " % of permissible",
                         fixed(worst->speed * kKmh, 1) + " km/h, source " + std::to_string(worst->source + 1),
-                        worst->kept() ? "yes" : "no"});
+                        worst->kept() ? "within the limit" : "exceeds the limit"});
     }
   }
   return t;
@@ -531,8 +554,8 @@ std::string ranking_text(const Comparison& c) {
   for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
     const RankingCriterion& crit = c.ranking.objective[k];
     if (c.ranking.weighted)
-      s += std::string(k ? " + " : "") + significant(crit.weight, 6) + " × " + (crit.maximise ? "(−" : "") + crit.metric +
-           (crit.maximise ? ")" : "");
+      s += std::string(k ? " + " : "") + significant(crit.weight, 6) + " × " + (crit.maximise ? "(−" : "") +
+           study::title(crit.metric) + (crit.maximise ? ")" : "");
     else
       s += std::string(k ? ", then " : "") + goal(crit);
   }
@@ -546,7 +569,8 @@ const VariantResult* reference_result(const Comparison& c) {
   return nullptr;
 }
 
-void write_markdown(std::ostream& out, const Study& study, const Comparison& c, const ComparisonCurves& curves) {
+void write_markdown(std::ostream& out, const Study& study, const Comparison& c, const ComparisonCurves& curves,
+                    const Provenance& provenance) {
   const Writer w{false};
   out << "# Design comparison: " << c.study << "\n\nStudy `" << study.source << "`, " << c.variants.size()
       << " variants. " << ranking_text(c) << "\n\n## Why the winner wins\n\n";
@@ -554,13 +578,13 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c, 
   out << "\n## Ranked variants\n\n";
   report::write_markdown_table(out, ranked_table(c));
   if (const std::string note = table_note(c); !note.empty()) out << note << "\n\n";
-  const std::vector<SweptParameter> swept = swept_parameters(c);
+  const std::vector<SweptParameter> swept = swept_parameters(study, c);
   const VariantResult* reference = reference_result(c);
   if (!swept.empty() && reference) {
     out << "## Swept parameters\n\nRanges over the variants at each value: the periods of the lowest modes and "
            "the value ranked first. The plots are in the HTML report (`--format html`).\n\n";
     for (const SweptParameter& p : swept) {
-      out << "### " << p.key << "\n\n";
+      out << "### " << parameter_heading(p, w) << "\n\n";
       report::write_markdown_table(out, sweep_table(c, p, *reference));
     }
   }
@@ -575,9 +599,11 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c, 
     report::write_markdown_table(out, deflection_table(c));
   }
   for (const std::string& n : curves.notes) out << n << "\n\n";
+  out << "---\n\nWritten by " << report::provenance_line("compare", provenance) << "\n";
 }
 
-void write_html(std::ostream& out, const Study& study, const Comparison& c, const ComparisonCurves& curves) {
+void write_html(std::ostream& out, const Study& study, const Comparison& c, const ComparisonCurves& curves,
+                const Provenance& provenance) {
   const Writer w{true};
   report::write_html_head(out, "Design comparison: " + c.study);
   out << "<h1>Design comparison: " << html_escape(c.study) << "</h1>\n<p>Study <code>" << html_escape(study.source)
@@ -587,7 +613,7 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
   out << "</ul>\n<h2>Ranked variants</h2>\n";
   report::write_html_table(out, ranked_table(c));
   if (const std::string note = table_note(c); !note.empty()) out << "<p class=note>" << html_escape(note) << "</p>\n";
-  const std::vector<SweptParameter> swept = swept_parameters(c);
+  const std::vector<SweptParameter> swept = swept_parameters(study, c);
   const VariantResult* reference = reference_result(c);
   if (!swept.empty() && reference) {
     out << "<h2>Swept parameters</h2>\n<p class=note>Each evaluated variant is a point: the periods of the "
@@ -612,16 +638,16 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
     report::write_html_table(out, deflection_table(c));
   }
   for (const std::string& n : curves.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
-  out << "<p class=note>Written by railmodal compare.</p>\n</body></html>\n";
+  report::write_html_footer(out, "compare", provenance);
 }
 
 }  // namespace
 
 void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
-                             const ComparisonCurves& curves, OutputFormat format) {
+                             const ComparisonCurves& curves, OutputFormat format, const Provenance& provenance) {
   switch (format) {
-    case OutputFormat::markdown: write_markdown(out, study, comparison, curves); break;
-    case OutputFormat::html: write_html(out, study, comparison, curves); break;
+    case OutputFormat::markdown: write_markdown(out, study, comparison, curves, provenance); break;
+    case OutputFormat::html: write_html(out, study, comparison, curves, provenance); break;
     default: write_comparison(out, comparison, format); break;
   }
 }

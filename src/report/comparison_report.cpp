@@ -134,6 +134,19 @@ std::string criterion_heading(const RankingCriterion& c) {
   return std::string(c.maximise ? "max " : "min ") + c.metric + (unit.empty() ? "" : " [" + unit + "]");
 }
 
+// For people: the metric as the docs name it and how it is ranked, "period of body bounce (s),
+// maximised"; CSV keeps the metric's name (criterion_heading).
+std::string criterion_title(const RankingCriterion& c) {
+  return study::heading(c.metric) + (c.maximise ? ", maximised" : ", minimised");
+}
+
+// The worst dynamic deflection against the permissible one, in words: "33 % of permissible
+// (within)", "130 % of permissible (exceeds)".
+std::string deflection_verdict(double ratio) {
+  if (std::isinf(ratio)) return "unbounded (exceeds)";
+  return number(100.0 * ratio, "%.3g") + " % of permissible" + (ratio <= 1.0 ? " (within)" : " (exceeds)");
+}
+
 std::optional<double> body_deflection(const VariantResult& r) { return metric_value(r, "static_deflection"); }
 
 }  // namespace
@@ -142,10 +155,10 @@ std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& 
   std::vector<std::vector<std::string>> rows;
   std::vector<std::string> head{"rank", "variant", "feasible"};
   if (for_csv) head.push_back("objective");
-  for (const auto& k : c.ranking.objective) head.push_back(criterion_heading(k));
+  for (const auto& k : c.ranking.objective) head.push_back(for_csv ? criterion_heading(k) : criterion_title(k));
   const bool deflections = c.deflection_rule.active();
   for (const char* h : {"lowest critical speed [km/h]", "static deflection [mm]"}) head.push_back(h);
-  if (deflections) head.push_back(for_csv ? "dynamic_deflection_ratio" : "dyn. deflection / permissible");
+  if (deflections) head.push_back(for_csv ? "dynamic_deflection_ratio" : "largest dynamic deflection");
   head.push_back("periods [s]");
   if (for_csv) {
     head.back() = report::csv_heading("periods", "s");
@@ -175,8 +188,8 @@ std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& 
     if (deflections) {
       const auto ratio = r.ok() ? metric_value(r, "dynamic_deflection_ratio") : std::nullopt;
       if (!ratio) row.push_back(for_csv ? "" : "-");
-      else if (std::isinf(*ratio)) row.push_back("unbounded");
-      else row.push_back(for_csv ? exact(*ratio) : number(*ratio, "%.3g") + (*ratio <= 1.0 ? " kept" : " exceeded"));
+      else if (for_csv) row.push_back(std::isinf(*ratio) ? "unbounded" : exact(*ratio));
+      else row.push_back(deflection_verdict(*ratio));
     }
     std::string list;
     for (double p : periods(r)) list += (list.empty() ? "" : " ") + (for_csv ? exact(p) : number(p, "%.3f"));
@@ -216,13 +229,14 @@ void write_table(std::ostream& out, const Comparison& c) {
     out << "; objective: ";
     for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
       const auto& crit = c.ranking.objective[k];
-      out << (k ? (c.ranking.weighted ? " + " : ", then ") : "") << (crit.maximise ? "max " : "min ") << crit.metric;
+      out << (k ? (c.ranking.weighted ? " + " : ", then ") : "") << study::title(crit.metric)
+          << (crit.maximise ? " (maximised)" : " (minimised)");
       if (c.ranking.weighted) out << " (weight " << crit.weight << ")";
     }
   }
   out << "\n";
   for (const auto& k : c.ranking.constraints) {
-    out << "constraint: " << k.metric;
+    out << "constraint: " << study::title(k.metric);
     if (k.min) out << " >= " << study::shown(k.metric, *k.min);
     if (k.max) out << (k.min ? " and" : "") << " <= " << study::shown(k.metric, *k.max);
     out << "\n";

@@ -204,7 +204,7 @@ const char* const kCriticalSpeedNote =
 
 // ---- Markdown -------------------------------------------------------------------------------
 
-void write_markdown(std::ostream& out, const CriticalSpeedStudy& st) {
+void write_markdown(std::ostream& out, const CriticalSpeedStudy& st, const Provenance& provenance) {
   out << "# Critical speeds: " << st.system.vehicle.name << "\n\n";
   out << "Scene **" << st.scene.name << "** (`" << st.scene.source << "`), vehicle `" << st.scene.vehicle_file
       << "`, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "
@@ -231,6 +231,7 @@ void write_markdown(std::ostream& out, const CriticalSpeedStudy& st) {
   write_markdown_table(out, elements_table(st));
   out << "### Modes\n\n";
   write_markdown_table(out, modes_table(st));
+  out << "---\n\nWritten by " << report::provenance_line("critical-speed", provenance) << "\n";
 }
 
 // ---- HTML -----------------------------------------------------------------------------------
@@ -279,9 +280,12 @@ report::Chart campbell_chart(const CriticalSpeedStudy& st) {
   c.x_max = st.scene.max_speed * kKmh;
   c.y_min = 0.0;
   c.y_max = 1.1 * std::max(campbell_top_frequency(st), 1e-3);
+  // Each natural frequency is labelled by its mode's number at the plot's edge, the name in the
+  // legend: whole names collide where modes lie close (the bogies' bounce and pitch pairs).
   for (const Mode& m : st.modes.modes)
     if (m.kind == ModeKind::oscillatory && m.frequency_hz <= c.y_max)
-      c.lines.push_back({std::to_string(m.index) + " " + m.name + " " + fixed(m.frequency_hz, 2) + " Hz", m.frequency_hz, false});
+      c.lines.push_back(
+          {std::to_string(m.index), m.frequency_hz, false, m.name + ", " + fixed(m.frequency_hz, 2) + " Hz"});
   add_excitation_lines(st, &c);
   report::ChartSeries hits;
   hits.label = "critical speeds";
@@ -292,13 +296,12 @@ report::Chart campbell_chart(const CriticalSpeedStudy& st) {
     hits.y.push_back(r.frequency_hz);
   }
   c.series.push_back(hits);
-  c.width = 900;
-  c.height = 420;
   return c;
 }
 
 // One chart per output and quantity, all sources on it: amplitude on a log scale, with a
-// dotted vertical line at each unbounded speed. `k` numbers the chart (from 0).
+// dotted vertical line and a mark at the top at each unbounded speed. `k` numbers the chart
+// (from 0).
 report::Chart amplitude_chart(const CriticalSpeedStudy& st, const std::string& label, ResponseQuantity quantity,
                               size_t k) {
   const Unit u = unit_of(st.system, label, quantity);
@@ -317,14 +320,17 @@ report::Chart amplitude_chart(const CriticalSpeedStudy& st, const std::string& l
     for (size_t i = 0; i < curve.speeds.size(); ++i) {
       s.x.push_back(curve.speeds[i] * kKmh);
       s.y.push_back(curve.unbounded[i] ? NAN : curve.amplitudes[i] * u.scale);
-      if (curve.unbounded[i]) c.lines.push_back({"", curve.speeds[i] * kKmh, true});
+      if (curve.unbounded[i]) {
+        c.lines.push_back({"", curve.speeds[i] * kKmh, true, ""});
+        s.unbounded_x.push_back(curve.speeds[i] * kKmh);
+      }
     }
     c.series.push_back(s);
   }
   return c;
 }
 
-void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
+void write_html(std::ostream& out, const CriticalSpeedStudy& st, const Provenance& provenance) {
   const Vehicle& v = st.system.vehicle;
   report::write_html_head(out, "Critical speeds: " + v.name);
   out << "<h1>Critical speeds: " << html_escape(v.name) << "</h1>\n<p>Scene <b>" << html_escape(st.scene.name)
@@ -341,15 +347,18 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
     write_html_table(out, critical_speed_table(st));
     out << "<p class=note>" << html_escape(kCriticalSpeedNote) << "</p>\n";
   }
-  out << "<h2>Campbell diagram</h2>\n" << report::svg_chart(campbell_chart(st))
+  out << "<h2>Campbell diagram</h2>\n"
+      << report::svg_chart(campbell_chart(st))
       << "<p class=note>Solid: the fundamental of each source; dashed: its higher harmonics. Dotted horizontal "
-         "lines: natural frequencies. Circles: the critical speeds of the table.</p>\n";
+         "lines: natural frequencies, numbered as the modes (the legend names them). Circles: the critical speeds of "
+         "the table.</p>\n";
 
   out << "<h2>Amplitude against speed</h2>\n<p class=note>"
       << (any_force_source(st) ? "Force sources: receptance times the source's force (∝ V²). " : "")
       << "Displacement sources: the source amplitude times the displacement transmissibility. Sum over the "
-         "source's harmonics (the bound of the peak of their sum). Logarithmic scale; dotted vertical lines "
-         "mark unbounded (undamped) resonances.</p>\n";
+         "source's harmonics (the bound of the peak of their sum). Logarithmic scale; a dotted vertical line and a "
+         "triangle at the top mark each unbounded (undamped) resonance, where the curve leaves the plot: the "
+         "axis ends at the largest amplitude found away from them.</p>\n";
   std::vector<std::pair<std::string, ResponseQuantity>> outputs;
   for (const auto& c : st.curves)
     if (std::find(outputs.begin(), outputs.end(), std::make_pair(c.output, c.quantity)) == outputs.end())
@@ -363,7 +372,7 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st) {
   write_html_table(out, bodies_table(st));
   write_html_table(out, elements_table(st));
   write_html_table(out, modes_table(st));
-  out << "<p class=note>Written by railmodal critical-speed.</p>\n</body></html>\n";
+  report::write_html_footer(out, "critical-speed", provenance);
 }
 
 // ---- CSV and JSON ---------------------------------------------------------------------------
@@ -438,10 +447,11 @@ void write_json(std::ostream& out, const CriticalSpeedStudy& st) {
 
 }  // namespace
 
-void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, OutputFormat format) {
+void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, OutputFormat format,
+                                 const Provenance& provenance) {
   switch (format) {
-    case OutputFormat::markdown: write_markdown(out, study); break;
-    case OutputFormat::html: write_html(out, study); break;
+    case OutputFormat::markdown: write_markdown(out, study, provenance); break;
+    case OutputFormat::html: write_html(out, study, provenance); break;
     case OutputFormat::csv: write_csv(out, study); break;
     case OutputFormat::json: write_json(out, study); break;
     default:

@@ -1,6 +1,7 @@
 // Tables, units and page style shared by the report writers.
 #include "report/document_table.hpp"
 
+#include "railmodal/version.hpp"
 #include "report/svg_chart.hpp"
 
 namespace railmodal::report {
@@ -50,10 +51,24 @@ Unit unit_of(const LinearSystem& system, const std::string& label, ResponseQuant
 
 void write_html_head(std::ostream& out, const std::string& title) {
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escape(title)
-      << "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:24px auto;"
+      << "</title>\n<style>body{font-family:sans-serif;max-width:1200px;margin:24px auto;"
          "color:#222;line-height:1.4}table{border-collapse:collapse;margin:8px 0 16px}td,th{border:1px solid #ccc;"
          "padding:3px 8px;font-size:13px}th{background:#f2f2f2}td.n{text-align:right}h2{border-bottom:1px solid #ddd;"
-         "margin-top:28px}.note{color:#555;font-size:13px}.bad{color:#b00}.ok{color:#070}</style></head><body>\n";
+         "margin-top:28px}.note{color:#555;font-size:13px}.bad{color:#b00}.ok{color:#070}footer{border-top:1px solid "
+         "#ddd;margin-top:32px;padding-top:6px}</style></head><body>\n";
+}
+
+std::string provenance_line(const std::string& command, const Provenance& provenance) {
+  std::string line = "railmodal " + std::string(version()) + " " + command;
+  if (provenance.files.empty()) return line + "; input files not recorded.";
+  for (size_t k = 0; k < provenance.files.size(); ++k)
+    line += (k ? ", " : ", from ") + provenance.files[k].path + " (FNV-1a 64 " + provenance.files[k].digest + ")";
+  return line + ".";
+}
+
+void write_html_footer(std::ostream& out, const std::string& command, const Provenance& provenance) {
+  out << "<footer class=note>Written by " << html_escape(provenance_line(command, provenance))
+      << "</footer>\n</body></html>\n";
 }
 
 }  // namespace railmodal::report

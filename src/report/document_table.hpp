@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "railmodal/linear_system.hpp"
+#include "railmodal/provenance.hpp"
 #include "railmodal/response.hpp"
 
 namespace railmodal::report {
@@ -31,5 +32,11 @@ bool is_rotation(const LinearSystem& system, const std::string& label);
 
 /// `<!DOCTYPE html>` up to the opening <body>: the one style every report page shares.
 void write_html_head(std::ostream& out, const std::string& title);
+
+/// What made the page, in one line: "railmodal 0.1.0 critical-speed, from data/scenes/x.toml
+/// (FNV-1a 64 0123456789abcdef), ..." (or that the inputs were not recorded).
+std::string provenance_line(const std::string& command, const Provenance& provenance);
+/// The page's footer (provenance_line) and its closing tags.
+void write_html_footer(std::ostream& out, const std::string& command, const Provenance& provenance);
 
 }  // namespace railmodal::report

@@ -6,9 +6,11 @@
 #include <cstdio>
 #include <iomanip>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
+#include "report/document_table.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
@@ -47,13 +49,14 @@ double shown_duration(const FftCheckResult& r) {
   return lowest > 0.0 ? std::min(end, 10.0 / lowest) : end;
 }
 
-report::Chart history_chart(const FftCheckResult& r) {
+// The histories of the DOFs whose spectra were taken, translations (mm) or rotations (mrad):
+// one unit on each chart's axis. Nothing when no DOF is of that kind.
+std::optional<report::Chart> history_chart(const FftCheckResult& r, bool rotations) {
   report::Chart c;
-  c.id = "history";
-  c.width = 960;
-  c.title = "Time histories";
-  c.x_label = "time [s]";
-  c.y_label = "displacement [mm, mrad]";
+  c.id = rotations ? "history-rotations" : "history-translations";
+  c.title = rotations ? "Time histories: rotations" : "Time histories: translations";
+  c.x_label = "time (s)";
+  c.y_label = rotations ? "rotation (mrad)" : "displacement (mm)";
   const auto& h = r.history;
   const double until = shown_duration(r);
   Eigen::Index samples = 0;
@@ -61,20 +64,21 @@ report::Chart history_chart(const FftCheckResult& r) {
   const Eigen::Index stride = std::max<Eigen::Index>(1, samples / kMaxPlotPoints);
   for (const auto& label : r.spectrum_dofs) {
     const auto at = std::find(h.labels.begin(), h.labels.end(), label);
-    if (at == h.labels.end()) continue;
+    if (at == h.labels.end() || is_rotation(label) != rotations) continue;
     const Eigen::Index col = at - h.labels.begin();
     report::ChartSeries s;
-    s.label = label + (is_rotation(label) ? " [mrad]" : " [mm]");
+    s.label = label;
     for (Eigen::Index i = 0; i < samples; i += stride) {
       s.x.push_back(h.time(i));
       s.y.push_back(1e3 * h.displacement(i, col));
     }
     c.series.push_back(std::move(s));
   }
+  if (c.series.empty()) return std::nullopt;
   c.x_min = 0.0;
   c.x_max = until;
   if (!h.events.empty() && h.events.size() <= kMaxEventLines)
-    for (const auto& e : h.events) c.lines.push_back({"", e.time, true});
+    for (const auto& e : h.events) c.lines.push_back({"", e.time, true, ""});
   return c;
 }
 
@@ -82,10 +86,9 @@ report::Chart spectrum_chart(const FftCheckResult& r, size_t k) {
   const Spectrum& s = r.spectra[k];
   report::Chart c;
   c.id = "spectrum-" + std::to_string(k);
-  c.width = 960;
   c.title = "Amplitude spectrum of " + r.spectrum_dofs[k] + " (" + to_string(s.window) + " window)";
-  c.x_label = "frequency [Hz]";
-  c.y_label = is_rotation(r.spectrum_dofs[k]) ? "amplitude [mrad]" : "amplitude [mm]";
+  c.x_label = "frequency (Hz)";
+  c.y_label = is_rotation(r.spectrum_dofs[k]) ? "amplitude (mrad)" : "amplitude (mm)";
   double top = 0.0;
   for (const auto& check : r.checks) top = std::max(top, check.modal_hz);
   top = top > 0.0 ? 1.5 * top : s.sampling_rate / 2;
@@ -98,8 +101,7 @@ report::Chart spectrum_chart(const FftCheckResult& r, size_t k) {
   c.series.push_back(std::move(line));
   c.x_min = 0.0;
   c.x_max = top;
-  for (const auto& check : r.checks)
-    c.lines.push_back({std::to_string(check.mode), check.modal_hz, true});
+  for (const auto& check : r.checks) c.lines.push_back({std::to_string(check.mode), check.modal_hz, true, ""});
   return c;
 }
 
@@ -247,11 +249,9 @@ void write_table(std::ostream& out, const FftCheckResult& r, const Scene& scene)
   if (r.swings) swings_text(out, r);
 }
 
-void write_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, const Vehicle& vehicle) {
-  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>FFT check: " << html_escape(scene.name)
-      << "</title>\n<style>body{font-family:sans-serif;max-width:1000px;margin:24px auto;color:#222}"
-         "table{border-collapse:collapse;margin:12px 0}td,th{border:1px solid #bbb;padding:3px 8px}"
-         "td.n{text-align:right;font-variant-numeric:tabular-nums}th{background:#eee}</style></head><body>\n";
+void write_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, const Vehicle& vehicle,
+                const Provenance& provenance) {
+  report::write_html_head(out, "FFT check: " + scene.name);
   out << "<h1>FFT check: " << html_escape(scene.name) << "</h1>\n<p>Vehicle <b>" << html_escape(vehicle.name)
       << "</b> (<code>" << html_escape(scene.vehicle_file) << "</code>). ";
   const auto& sim = *scene.simulation;
@@ -270,7 +270,10 @@ void write_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, 
   out << "<h2>Checks</h2>\n";
   checks_table(out, r);
   if (r.swings) swings_table(out, r);
-  out << "<h2>Time histories</h2>\n" << report::svg_chart(history_chart(r)) << "\n<p>";
+  out << "<h2>Time histories</h2>\n";
+  for (bool rotations : {false, true})
+    if (const auto chart = history_chart(r, rotations)) out << report::svg_chart(*chart) << "\n";
+  out << "<p>";
   if (shown_duration(r) < r.history.time(r.history.time.size() - 1))
     out << "The first " << fixed(shown_duration(r), 2) << " s (ten periods of the lowest mode) of the record. ";
   if (!r.history.events.empty() && r.history.events.size() <= kMaxEventLines)
@@ -280,18 +283,18 @@ void write_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, 
         << "lists them). ";
   out << "</p>\n<h2>Spectra</h2>\n<p>Dotted lines: the modal frequencies, numbered as in the checks.</p>\n";
   for (size_t k = 0; k < r.spectra.size(); ++k) out << report::svg_chart(spectrum_chart(r, k)) << "\n";
-  out << "</body></html>\n";
+  report::write_html_footer(out, "fft-check", provenance);
 }
 
 }  // namespace
 
 void write_fft_check(std::ostream& out, const FftCheckResult& result, const Scene& scene, const Vehicle& vehicle,
-                     OutputFormat format) {
+                     OutputFormat format, const Provenance& provenance) {
   switch (format) {
     case OutputFormat::table: write_table(out, result, scene); break;
     case OutputFormat::csv: write_csv(out, result); break;
     case OutputFormat::json: write_json(out, result, scene); break;
-    case OutputFormat::html: write_html(out, result, scene, vehicle); break;
+    case OutputFormat::html: write_html(out, result, scene, vehicle, provenance); break;
     default:
       throw std::invalid_argument(report::unwritten_format("write_fft_check", "table, csv, json or html", format));
   }

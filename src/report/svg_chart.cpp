@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -13,6 +14,13 @@ namespace railmodal::report {
 namespace {
 
 const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2"};
+
+// Within this fraction of an unbounded x the response of an undamped mode is at least
+// 1/(1 − 0.95²) ≈ 10 times its quasi-static value: such points only measure how close the
+// grid came to the resonance, and would set the axis to an arbitrary height.
+constexpr double kNearUnbounded = 0.05;
+
+constexpr double kLegendRow = 18;  // height of a legend row
 
 const char* colour_of(const Chart& chart, size_t k) {
   constexpr size_t n = sizeof(kColours) / sizeof(kColours[0]);
@@ -24,6 +32,13 @@ std::string number(double v) {
   std::ostringstream out;
   out << std::setprecision(4) << v;
   return out.str();
+}
+
+// The width of `text` in the chart's sans-serif at `font_size`: 0.6 em a character (UTF-8
+// continuation bytes take none), a little more than the average glyph, so estimates err wide.
+double text_width(const std::string& text, double font_size) {
+  const auto characters = std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; });
+  return 0.6 * font_size * static_cast<double>(characters);
 }
 
 // Tick values at 1, 2, 5 × 10ⁿ covering [lo, hi].
@@ -53,15 +68,21 @@ std::pair<double, double> x_range(const Chart& chart) {
   return {x0, x1};
 }
 
-// The y range: the chart's, or that of the finite data and horizontal lines, from 0 with 5 %
-// headroom, or in whole decades (at most eight) on a log axis.
+bool near_unbounded(const ChartSeries& s, double x) {
+  return std::any_of(s.unbounded_x.begin(), s.unbounded_x.end(),
+                     [x](double u) { return std::abs(x - u) <= kNearUnbounded * std::abs(u); });
+}
+
+// The y range: the chart's, or that of the finite data (away from unbounded points) and
+// horizontal lines, from 0 with 5 % headroom, or in whole decades (at most eight) on a log axis.
 std::pair<double, double> y_range(const Chart& chart) {
   double y0 = chart.y_min, y1 = chart.y_max;
   if (y1 > y0) return {y0, y1};
   y0 = std::numeric_limits<double>::infinity(), y1 = -y0;
   for (const auto& s : chart.series)
-    for (double y : s.y)
-      if (std::isfinite(y) && (!chart.log_y || y > 0.0)) y0 = std::min(y0, y), y1 = std::max(y1, y);
+    for (size_t i = 0; i < s.y.size(); ++i)
+      if (std::isfinite(s.y[i]) && (!chart.log_y || s.y[i] > 0.0) && !near_unbounded(s, s.x[i]))
+        y0 = std::min(y0, s.y[i]), y1 = std::max(y1, s.y[i]);
   for (const auto& l : chart.lines)
     if (!l.vertical) y0 = std::min(y0, l.value), y1 = std::max(y1, l.value);
   if (!std::isfinite(y0)) y0 = chart.log_y ? 1e-6 : 0.0, y1 = chart.log_y ? 1.0 : 1.0;
@@ -70,27 +91,81 @@ std::pair<double, double> y_range(const Chart& chart) {
     y1 = std::pow(10.0, std::ceil(std::log10(y1)));
     if (y1 / y0 > 1e8) y0 = y1 / 1e8;  // keep eight decades: deep antiresonances would flatten the rest
   } else {
-    if (y0 > 0.0) y0 = 0.0;
-    y1 += 0.05 * (y1 - y0);
+    const double margin = 0.05 * (std::max(y1, 0.0) - std::min(y0, 0.0));  // no curve on the frame
+    y0 = y0 > 0.0 ? 0.0 : y0 - margin;
+    y1 += margin;
   }
   if (!(y1 > y0)) y1 = y0 + 1.0;
   return {y0, y1};
 }
 
-// The plot area inside the margins (axis labels left, line labels and legend room right), and
-// the map from data to it.
+// One entry of the legend under the plot: a swatch and its text.
+struct LegendEntry {
+  enum class Swatch { line, dashed, circle, reference, unbounded } swatch;
+  const char* colour;
+  std::string text;
+};
+
+std::vector<LegendEntry> legend_entries(const Chart& chart) {
+  std::vector<LegendEntry> entries;
+  bool unbounded = false;
+  for (size_t k = 0; k < chart.series.size(); ++k) {
+    const ChartSeries& s = chart.series[k];
+    unbounded = unbounded || !s.unbounded_x.empty();
+    if (s.label.empty()) continue;
+    const auto swatch = s.markers_only ? LegendEntry::Swatch::circle
+                        : s.dashed     ? LegendEntry::Swatch::dashed
+                                       : LegendEntry::Swatch::line;
+    entries.push_back({swatch, colour_of(chart, k), s.label});
+  }
+  if (unbounded)
+    entries.push_back(
+        {LegendEntry::Swatch::unbounded, "#444", "unbounded: an undamped resonance, the curve leaves the plot"});
+  for (const auto& l : chart.lines)
+    if (!l.key.empty()) entries.push_back({LegendEntry::Swatch::reference, "#888", l.label + "  " + l.key});
+  return entries;
+}
+
+constexpr double kLegendFont = 11;
+double entry_width(const LegendEntry& e) { return 34 + text_width(e.text, kLegendFont) + 16; }
+
+// Rows of the legend (each a list of entries) filling `width` left to right.
+std::vector<std::vector<size_t>> flow_legend(const std::vector<LegendEntry>& entries, double width) {
+  std::vector<std::vector<size_t>> rows;
+  double used = width;
+  for (size_t k = 0; k < entries.size(); ++k) {
+    if (rows.empty() || used + entry_width(entries[k]) > width) rows.emplace_back(), used = 0;
+    rows.back().push_back(k);
+    used += entry_width(entries[k]);
+  }
+  return rows;
+}
+
+// The plot area inside the margins (tick labels and axis labels left and below, line labels
+// right and above, the legend below the x axis), and the map from data to it.
 struct Plot {
-  double left = 78, right = 250, top = 34, bottom = 48;
+  double left = 78, right = 20, top = 34, bottom = 48;
   double width, height;  // of the plot area
   double x0, x1, y0, y1;
   bool log_y;
+  std::vector<LegendEntry> legend;
+  std::vector<std::vector<size_t>> legend_rows;
 
-  explicit Plot(const Chart& chart) : log_y(chart.log_y) {
+  explicit Plot(const Chart& chart) : log_y(chart.log_y), legend(legend_entries(chart)) {
+    for (const auto& l : chart.lines) {
+      if (!l.label.empty() && l.vertical) top = 50;  // room for the labels above the plot
+      if (!l.label.empty() && !l.vertical) right = std::max(right, 20 + text_width(l.label, 11));
+    }
+    for (const auto& s : chart.series)
+      if (!s.unbounded_x.empty()) top = 56;  // room for the marks and their words
     width = chart.width - left - right;
     height = chart.height - top - bottom;
     std::tie(x0, x1) = x_range(chart);
     std::tie(y0, y1) = y_range(chart);
+    legend_rows = flow_legend(legend, width);
   }
+  double legend_top() const { return top + height + bottom; }
+  double legend_height() const { return legend_rows.empty() ? 0.0 : kLegendRow * legend_rows.size() + 8; }
   double X(double x) const { return left + (x - x0) / (x1 - x0) * width; }
   double Y(double y) const {
     if (log_y) {
@@ -118,11 +193,10 @@ void write_axes(std::ostream& s, const Chart& chart, const Plot& p) {
     s << "<line x1=\"" << p.left << "\" y1=\"" << p.Y(t) << "\" x2=\"" << p.left + p.width << "\" y2=\"" << p.Y(t)
       << "\" stroke=\"#e4e4e4\"/><text x=\"" << p.left - 6 << "\" y=\"" << p.Y(t) + 4 << "\" text-anchor=\"end\">"
       << number(t) << "</text>\n";
-  const double H = chart.height;
-  s << "<text x=\"" << p.left + p.width / 2 << "\" y=\"" << H - 10 << "\" text-anchor=\"middle\">"
-    << html_escape(chart.x_label) << "</text>\n";
-  s << "<text transform=\"translate(16," << p.top + p.height / 2 << ") rotate(-90)\" text-anchor=\"middle\">"
-    << html_escape(chart.y_label) << "</text>\n";
+  s << "<text class=\"x-label\" x=\"" << p.left + p.width / 2 << "\" y=\"" << p.top + p.height + 38
+    << "\" text-anchor=\"middle\">" << html_escape(chart.x_label) << "</text>\n";
+  s << "<text class=\"y-label\" transform=\"translate(16," << p.top + p.height / 2
+    << ") rotate(-90)\" text-anchor=\"middle\">" << html_escape(chart.y_label) << "</text>\n";
 }
 
 void write_reference_lines(std::ostream& s, const Chart& chart, const Plot& p) {
@@ -137,7 +211,8 @@ void write_reference_lines(std::ostream& s, const Chart& chart, const Plot& p) {
   }
 }
 
-// One series: circles, or polylines broken where a value is missing (or not positive on a log axis).
+// One series: circles, or polylines broken where a value is missing (or not positive on a log
+// axis). Points beyond the plot are clipped by the plot's clip path.
 void write_series(std::ostream& s, const Chart& chart, size_t k, const Plot& p) {
   const auto& series = chart.series[k];
   const char* colour = colour_of(chart, k);
@@ -167,52 +242,121 @@ void write_series(std::ostream& s, const Chart& chart, size_t k, const Plot& p) 
   flush();
 }
 
-// Labels of horizontal lines at the right edge, of vertical lines above the plot, each pushed
-// apart where lines lie closer than a text line (a label's width).
-void write_line_labels(std::ostream& s, const Chart& chart, const Plot& p) {
-  std::vector<std::pair<double, std::string>> labels;
-  for (const auto& l : chart.lines)
-    if (!l.vertical && !l.label.empty() && l.value >= p.y0 && l.value <= p.y1)
-      labels.push_back({p.Y(l.value) + 4, l.label});
-  std::sort(labels.begin(), labels.end());
-  for (size_t k = 1; k < labels.size(); ++k) labels[k].first = std::max(labels[k].first, labels[k - 1].first + 12);
-  for (const auto& [y, text] : labels)
-    s << "<text x=\"" << p.left + p.width + 6 << "\" y=\"" << y << "\" fill=\"#555\" font-size=\"11\">"
-      << html_escape(text) << "</text>\n";
-  std::vector<std::pair<double, std::string>> tops;
-  for (const auto& l : chart.lines)
-    if (l.vertical && !l.label.empty() && l.value >= p.x0 && l.value <= p.x1) tops.push_back({p.X(l.value), l.label});
-  std::sort(tops.begin(), tops.end());
-  for (size_t k = 1; k < tops.size(); ++k)
-    tops[k].first = std::max(tops[k].first, tops[k - 1].first + 3 + 6.2 * static_cast<double>(tops[k - 1].second.size()));
-  for (const auto& [x, text] : tops)
-    s << "<text x=\"" << x << "\" y=\"" << p.top - 4 << "\" fill=\"#555\" font-size=\"10\">" << html_escape(text)
-      << "</text>\n";
+// Starts for intervals of lengths `size` as near their `wanted` starts as they can be within
+// [lo, hi] with `gap` between neighbours, in the order of their wanted starts. Where they do not
+// all fit they run on past hi rather than overlap.
+std::vector<double> spread(const std::vector<double>& wanted, const std::vector<double>& size, double lo, double hi,
+                           double gap) {
+  std::vector<size_t> order(wanted.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return wanted[a] < wanted[b]; });
+  std::vector<double> at(wanted.size());
+  double end = lo - gap;
+  for (size_t i : order) at[i] = std::max(wanted[i], end + gap), end = at[i] + size[i];
+  double start = hi + gap;  // push back from hi where the last ones ran past it
+  for (auto i = order.rbegin(); i != order.rend(); ++i)
+    at[*i] = std::min(at[*i], start - gap - size[*i]), start = at[*i];
+  end = lo - gap;  // and forward again from lo where that pushed the first ones before it
+  for (size_t i : order) at[i] = std::max(at[i], end + gap), end = at[i] + size[i];
+  return at;
 }
 
-// Legend in the plot's top-left corner, on a white card.
-void write_legend(std::ostream& s, const Chart& chart, const Plot& p) {
-  std::vector<size_t> named;
+// Over each unbounded x of each series, a triangle above the plot's top edge, where the curve
+// leaves the plot, and the word "unbounded" above it where the words fit side by side (the
+// legend explains the triangles either way).
+void write_unbounded_marks(std::ostream& s, const Chart& chart, const Plot& p) {
+  std::vector<double> marks;
   for (size_t k = 0; k < chart.series.size(); ++k)
-    if (!chart.series[k].label.empty()) named.push_back(k);
-  if (named.empty()) return;
-  size_t longest = 0;
-  for (size_t k : named) longest = std::max(longest, chart.series[k].label.size());
-  s << "<rect x=\"" << p.left + 8 << "\" y=\"" << p.top + 8 << "\" width=\"" << 40 + 6.2 * longest << "\" height=\""
-    << 16 * named.size() + 8 << "\" fill=\"#fff\" fill-opacity=\"0.9\" stroke=\"#ccc\"/>\n";
-  double ly = p.top + 20;
-  for (size_t k : named) {
-    const char* colour = colour_of(chart, k);
-    if (chart.series[k].markers_only)
-      s << "<circle cx=\"" << p.left + 24 << "\" cy=\"" << ly << "\" r=\"4\" fill=\"none\" stroke=\"" << colour
+    for (double u : chart.series[k].unbounded_x) {
+      if (u < p.x0 || u > p.x1) continue;
+      const double x = p.X(u);
+      marks.push_back(x);
+      s << "<path class=\"unbounded\" d=\"M" << x - 5 << "," << p.top - 2 << " L" << x + 5 << "," << p.top - 2 << " L"
+        << x << "," << p.top - 11 << " Z\" fill=\"" << colour_of(chart, k) << "\"><title>unbounded at " << number(u)
+        << "</title></path>\n";
+    }
+  // One word for each cluster of marks closer than a word's width (several designs at one speed).
+  const double width = text_width("unbounded", 10);
+  std::sort(marks.begin(), marks.end());
+  std::vector<double> wanted;
+  for (size_t k = 0, first = 0; k < marks.size(); ++k)
+    if (k + 1 == marks.size() || marks[k + 1] - marks[first] > width)
+      wanted.push_back((marks[first] + marks[k]) / 2 - width / 2), first = k + 1;
+  if (wanted.empty() || (width + 3) * static_cast<double>(wanted.size()) > p.width + 60) return;
+  const std::vector<double> at =
+      spread(wanted, std::vector<double>(wanted.size(), width), p.left - 30, chart.width - 4.0, 3);
+  for (double x : at)
+    s << "<text class=\"mark-label\" x=\"" << x << "\" y=\"" << p.top - 14 << "\" fill=\"#555\" font-size=\"10\">"
+      << "unbounded</text>\n";
+}
+
+// Labels of horizontal lines right of the plot, of vertical lines above it, spread apart so that
+// none overlaps another, each joined to its line by a short leader.
+void write_line_labels(std::ostream& s, const Chart& chart, const Plot& p) {
+  std::vector<const ReferenceLine*> right, above;
+  for (const auto& l : chart.lines) {
+    if (l.label.empty()) continue;
+    if (!l.vertical && l.value >= p.y0 && l.value <= p.y1) right.push_back(&l);
+    if (l.vertical && l.value >= p.x0 && l.value <= p.x1) above.push_back(&l);
+  }
+  constexpr double kRow = 12;  // a label's height at font size 11
+  std::vector<double> wanted, size;
+  for (const auto* l : right) wanted.push_back(p.Y(l->value) - kRow / 2), size.push_back(kRow);
+  std::vector<double> at = spread(wanted, size, p.top - 8, p.top + p.height + 8, 1);
+  const double edge = p.left + p.width;
+  for (size_t k = 0; k < right.size(); ++k)
+    s << "<polyline class=\"leader\" fill=\"none\" stroke=\"#aaa\" points=\"" << edge << "," << p.Y(right[k]->value)
+      << " " << edge + 6 << "," << at[k] + kRow / 2 << "\"/><text class=\"line-label\" x=\"" << edge + 8 << "\" y=\""
+      << at[k] + kRow - 2 << "\" fill=\"#555\" font-size=\"11\">" << html_escape(right[k]->label) << "</text>\n";
+  wanted.clear(), size.clear();
+  for (const auto* l : above) {
+    size.push_back(text_width(l->label, 10));
+    wanted.push_back(p.X(l->value) - size.back() / 2);
+  }
+  at = spread(wanted, size, p.left - 30, chart.width - 4.0, 3);
+  for (size_t k = 0; k < above.size(); ++k)
+    s << "<polyline class=\"leader\" fill=\"none\" stroke=\"#aaa\" points=\"" << p.X(above[k]->value) << "," << p.top
+      << " " << at[k] + size[k] / 2 << "," << p.top - 6 << "\"/><text class=\"line-label\" x=\"" << at[k] << "\" y=\""
+      << p.top - 8 << "\" fill=\"#555\" font-size=\"10\">" << html_escape(above[k]->label) << "</text>\n";
+}
+
+void write_swatch(std::ostream& s, const LegendEntry& e, double x, double y) {
+  using Swatch = LegendEntry::Swatch;
+  switch (e.swatch) {
+    case Swatch::circle:
+      s << "<circle cx=\"" << x + 10 << "\" cy=\"" << y << "\" r=\"4\" fill=\"none\" stroke=\"" << e.colour
         << "\" stroke-width=\"2\"/>";
-    else
-      s << "<line x1=\"" << p.left + 14 << "\" y1=\"" << ly << "\" x2=\"" << p.left + 34 << "\" y2=\"" << ly
-        << "\" stroke=\"" << colour << "\" stroke-width=\"2\""
-        << (chart.series[k].dashed ? " stroke-dasharray=\"6,4\"" : "") << "/>";
-    s << "<text x=\"" << p.left + 40 << "\" y=\"" << ly + 4 << "\" font-size=\"11\">"
-      << html_escape(chart.series[k].label) << "</text>\n";
-    ly += 16;
+      break;
+    case Swatch::unbounded:
+      s << "<path d=\"M" << x + 5 << "," << y + 4 << " L" << x + 15 << "," << y + 4 << " L" << x + 10 << "," << y - 5
+        << " Z\" fill=\"" << e.colour << "\"/>";
+      break;
+    default:
+      s << "<line x1=\"" << x << "\" y1=\"" << y << "\" x2=\"" << x + 20 << "\" y2=\"" << y << "\" stroke=\""
+        << e.colour << "\" stroke-width=\"2\""
+        << (e.swatch == Swatch::dashed      ? " stroke-dasharray=\"6,4\""
+            : e.swatch == Swatch::reference ? " stroke-dasharray=\"2,3\""
+                                            : "")
+        << "/>";
+  }
+}
+
+// The legend under the x axis, its entries in rows across the plot's width: outside the plot
+// area, so it covers no curve, point or peak.
+void write_legend(std::ostream& s, const Plot& p) {
+  if (p.legend.empty()) return;
+  const double top = p.legend_top();
+  s << "<rect class=\"legend\" x=\"" << p.left << "\" y=\"" << top << "\" width=\"" << p.width << "\" height=\""
+    << p.legend_height() << "\" fill=\"#fff\" stroke=\"#ccc\"/>\n";
+  for (size_t r = 0; r < p.legend_rows.size(); ++r) {
+    double x = p.left + 8;
+    const double y = top + 4 + kLegendRow * (r + 0.5);
+    for (size_t k : p.legend_rows[r]) {
+      const LegendEntry& e = p.legend[k];
+      write_swatch(s, e, x, y);
+      s << "<text x=\"" << x + 26 << "\" y=\"" << y + 4 << "\" font-size=\"11\">" << html_escape(e.text) << "</text>\n";
+      x += entry_width(e);
+    }
   }
 }
 
@@ -234,23 +378,24 @@ std::string html_escape(const std::string& text) {
 
 std::string svg_chart(const Chart& chart) {
   const Plot p(chart);
-  const double W = chart.width, H = chart.height;
+  const double W = chart.width, H = p.legend_top() + p.legend_height() + (p.legend.empty() ? 0.0 : 6.0);
   std::ostringstream s;
   s << std::fixed << std::setprecision(1);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << W << "\" height=\"" << H << "\" viewBox=\"0 0 " << W
-    << " " << H << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << W << " " << H
+    << "\" width=\"100%\" style=\"display:block;height:auto\" font-family=\"sans-serif\" font-size=\"12\">\n";
   s << "<text x=\"" << p.left << "\" y=\"20\" font-size=\"14\" font-weight=\"bold\">" << html_escape(chart.title)
     << "</text>\n";
-  s << "<rect x=\"" << p.left << "\" y=\"" << p.top << "\" width=\"" << p.width << "\" height=\"" << p.height
-    << "\" fill=\"#fff\" stroke=\"#444\"/>\n";
+  s << "<rect class=\"plot\" x=\"" << p.left << "\" y=\"" << p.top << "\" width=\"" << p.width << "\" height=\""
+    << p.height << "\" fill=\"#fff\" stroke=\"#444\"/>\n";
   write_axes(s, chart, p);
   s << "<clipPath id=\"plot-" << chart.id << "\"><rect x=\"" << p.left << "\" y=\"" << p.top << "\" width=\""
     << p.width << "\" height=\"" << p.height << "\"/></clipPath>\n<g clip-path=\"url(#plot-" << chart.id << ")\">\n";
   write_reference_lines(s, chart, p);
   for (size_t k = 0; k < chart.series.size(); ++k) write_series(s, chart, k, p);
   s << "</g>\n";
+  write_unbounded_marks(s, chart, p);
   write_line_labels(s, chart, p);
-  write_legend(s, chart, p);
+  write_legend(s, p);
   s << "</svg>\n";
   return s.str();
 }

@@ -1,5 +1,7 @@
 // A small line chart as inline SVG: axes with ticks, polylines, markers, reference lines.
-// Shared by the HTML reports; no scripts, no external files.
+// Shared by the HTML reports; no scripts, no external files. The SVG scales to the width of
+// the page (a viewBox, width 100 %); the legend sits under the plot area, never over data;
+// labels at the plot's edges are spread apart so that none overlaps another.
 #pragma once
 
 #include <string>
@@ -13,23 +15,27 @@ struct ChartSeries {
   bool dashed = false;
   bool markers_only = false;  ///< draw circles at the points instead of a line
   int colour = -1;  ///< index into the palette; −1: the series' own position (a source's harmonics share one)
+  /// x where the series grows without limit (an undamped resonance): marked by a triangle at the
+  /// top of the plot, and the automatic y range leaves out the points within 5 % of it.
+  std::vector<double> unbounded_x;
 };
 
 struct ReferenceLine {
-  std::string label;
+  std::string label;  ///< short, drawn at the line (right of the plot, or above it for a vertical line)
   double value = 0.0;
   bool vertical = false;  ///< x = value; otherwise y = value
+  std::string key;        ///< what the label stands for, listed in the legend ("label  key"); "": not listed
 };
 
 struct Chart {
   std::string id;  ///< unique within the page (names the plot's clip path); letters, digits, '-'
-  std::string title, x_label, y_label;
+  std::string title, x_label, y_label;  ///< axis labels carry one unit each: "speed (km/h)"
   std::vector<ChartSeries> series;
   std::vector<ReferenceLine> lines;
   bool log_y = false;
   double x_min = 0.0, x_max = 0.0;  ///< equal: from the data
   double y_min = 0.0, y_max = 0.0;  ///< equal: from the data
-  int width = 760, height = 380;
+  int width = 1000, height = 400;   ///< of the viewBox, without the legend (which adds its rows)
 };
 
 std::string svg_chart(const Chart& chart);

@@ -129,6 +129,26 @@ bool infinite_is_unbounded(const std::string& metric) {
   return starts_with(m, "peak:") || starts_with(m, "dynamic_deflection");
 }
 
+std::string title(const std::string& metric) {
+  const std::string m = canonical_metric(metric);
+  std::string dof, quantity;
+  if (m == "lowest_critical_speed") return "lowest critical speed";
+  if (m == "static_deflection") return "static deflection of the body";
+  if (m == "metacentric_height") return "metacentric height";
+  if (m == "dynamic_deflection_ratio") return "largest dynamic deflection / permissible";
+  if (starts_with(m, "critical_speed:")) return "critical speed of " + m.substr(15);
+  if (starts_with(m, "period:")) return "period of " + m.substr(7);
+  if (starts_with(m, "static_deflection:")) return "static deflection of " + m.substr(18);
+  if (starts_with(m, "dynamic_deflection_ratio:")) return "dynamic deflection of " + m.substr(25) + " / permissible";
+  if (split_peak(m, &dof, &quantity)) return "peak " + quantity + " of " + dof;
+  return metric;
+}
+
+std::string heading(const std::string& metric) {
+  const std::string unit = display_unit(metric).unit;
+  return title(metric) + (unit.empty() ? "" : " (" + unit + ")");
+}
+
 std::string shown(const std::string& metric, double si) {
   if (std::isinf(si) && si > 0) return infinite_is_unbounded(metric) ? "unbounded" : "none";
   const DisplayUnit u = display_unit(metric);

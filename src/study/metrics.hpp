@@ -17,6 +17,13 @@ DisplayUnit display_unit(const std::string& metric);
 /// than "none in range" (critical speeds).
 bool infinite_is_unbounded(const std::string& metric);
 
+/// A metric as docs/studies.md describes it, for headings a user reads: "period of body
+/// bounce", "lowest critical speed", "largest dynamic deflection / permissible" (the metric's
+/// name, "period:body bounce", stays in CSV and JSON, where programs read it).
+std::string title(const std::string& metric);
+/// title and the display unit: "period of body bounce (s)".
+std::string heading(const std::string& metric);
+
 /// A value with its display unit, "80 mm", "0.47", or "unbounded" / "none" for +∞.
 std::string shown(const std::string& metric, double si);
 

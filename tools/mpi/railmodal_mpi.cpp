@@ -158,7 +158,9 @@ int merge_and_write(const Options& o, const railmodal::Study& study, const std::
                                        document
                                            ? railmodal::comparison_curves(study, comparison, railmodal::kReportBest)
                                            : railmodal::ComparisonCurves{},
-                                       format);
+                                       format,
+                                       document ? railmodal::provenance_of(railmodal::study_files(study))
+                                                : railmodal::Provenance{});
     outputs.commit();
     return std::string();
   });

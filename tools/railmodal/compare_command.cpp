@@ -91,8 +91,11 @@ int run(const CompareOptions& o) {
     const Comparison comparison = rank_variants(study, std::move(results));
     // The documents draw the best designs' curves: studied here, read first if merged.
     const bool document = format == OutputFormat::markdown || format == OutputFormat::html;
+    // The page names the study's files: merged shards are results of those same files, and give
+    // the page a single run gives, byte for byte.
     write_comparison_report(out, study, comparison,
-                            document ? comparison_curves(study, comparison, kReportBest) : ComparisonCurves{}, format);
+                            document ? comparison_curves(study, comparison, kReportBest) : ComparisonCurves{}, format,
+                            document ? provenance_of(study_files(study)) : Provenance{});
     outputs.commit();
     return kSuccess;
   } catch (const InputError& e) {

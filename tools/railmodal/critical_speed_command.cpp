@@ -73,7 +73,7 @@ int run(CriticalSpeedCommandOptions o) {
     } catch (const std::invalid_argument& e) {
       throw InputError(o.scene, 0, 0, e.what());  // the scene's sources do not fit this vehicle
     }
-    write_critical_speed_report(out, study, format);
+    write_critical_speed_report(out, study, format, provenance_of({o.scene, scene.vehicle_file}));
     outputs.commit();
     return kSuccess;
   } catch (const InputError& e) {

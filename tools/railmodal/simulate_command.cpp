@@ -61,7 +61,7 @@ void write_run(const SimulateOptions& o, bool check, const Scene& scene, const V
   try {
     if (check)
       write_fft_check(text, fft_check(scene, vehicle, o.memory_limit_gb * 1e9), scene, vehicle,
-                      *output_format_from_string(o.format));
+                      *output_format_from_string(o.format), provenance_of({o.scene, scene.vehicle_file}));
     else
       write_simulation(o, scene, vehicle, text, spectra);
   } catch (const std::invalid_argument& e) {
