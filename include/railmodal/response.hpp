@@ -65,9 +65,13 @@ bool unbounded_at(const HarmonicResponse& response, const ModalResult& modes, in
 /// Direct solve of (K − ω²M + iωC) X = Q (dense LU). `modes` (of the same system) is used
 /// to recognise undamped modes at ω: they are exact null vectors of the dynamic stiffness,
 /// so the rest of the response is solved with them bordered out, and the response is
-/// unbounded where a driven one moves a DOF.
-HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult& modes,
-                                   const Eigen::VectorXcd& load, double frequency_hz);
+/// unbounded where a driven one moves a DOF. A mode is driven when its modal force |φᵀQ|
+/// exceeds 1e-9·‖φ‖·`source_load_norm`, the norm of the whole source's load √(Σ_k ‖Q_k‖²)
+/// over its harmonics when `load` is one of them (0, or less than ‖Q‖: the load's own norm):
+/// a harmonic that is itself round-off of its source (the 3rd harmonic of a cosine dip as long
+/// as the rail) drives nothing. The critical speeds and curves pass their source's.
+HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult& modes, const Eigen::VectorXcd& load,
+                                   double frequency_hz, double source_load_norm = 0.0);
 
 /// Modal superposition over the lowest `mode_count` modes (all if ≤ 0) with modal damping
 /// taken from the diagonal of ΦᵀCΦ (exact when C = 0 or C is proportional and no damper
@@ -134,20 +138,19 @@ struct CriticalSpeed {
 struct CriticalSpeedOptions {
   double min_speed = 0.0;  ///< m/s, > 0
   double max_speed = 0.0;  ///< m/s
-  /// A mode counts as excited by a source harmonic when its modal force is above this
-  /// fraction of the largest modal force of that harmonic (symmetry zeros fall below it).
-  double participation_floor = 1e-9;
   /// > 0: leaf friction also acts as equivalent viscous damping for this element stretch
   /// amplitude (m), so resonances get finite amplitudes; 0: friction only in the criterion.
   double friction_reference_amplitude = 0.0;
   /// Returns false and explains in *why when an option is out of range: 0 < min_speed ≤
-  /// max_speed, finite; participation_floor in [0, 1); friction_reference_amplitude finite and
-  /// ≥ 0.
+  /// max_speed, finite; friction_reference_amplitude finite and ≥ 0.
   bool is_valid(std::string* why) const;
 };
 
 /// Every resonance V = Λ·f/k in the range, for every source, harmonic and oscillatory mode
-/// that the source loads, sorted by speed. Throws std::invalid_argument for invalid options.
+/// that the source loads, sorted by speed. A harmonic loads a mode when its modal force exceeds
+/// 1e-9·‖φ‖ times the source's total load √(Σ_k ‖Q_k‖²) at that speed (as harmonic_response
+/// decides): symmetry zeros and harmonics that are round-off of their source give no row.
+/// Throws std::invalid_argument for invalid options.
 /// `summary`, if given, receives the method, the checks (resonances found, driven, stopped by
 /// friction) and the stage times.
 std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,

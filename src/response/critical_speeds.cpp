@@ -34,13 +34,13 @@ struct Evaluation {
   const LinearSystem& system(const LinearSystem& base) const { return damped ? *damped : base; }
 };
 
-Evaluation respond(const LinearSystem& system, const ModalResult& modes, const HarmonicLoad& load,
+Evaluation respond(const LinearSystem& system, const ModalResult& modes, const HarmonicLoad& load, double source_load,
                    double friction_reference_amplitude) {
   Evaluation e;
   if (friction_reference_amplitude > 0.0 && load.frequency_hz > 0.0 && has_leaf_friction(system))
     e.damped = with_equivalent_friction_damping(system, 2.0 * kPi * load.frequency_hz, friction_reference_amplitude);
   e.load = generalized_load(e.system(system), load);
-  e.response = harmonic_response(e.system(system), modes, e.load, load.frequency_hz);
+  e.response = harmonic_response(e.system(system), modes, e.load, load.frequency_hz, source_load);
   return e;
 }
 
@@ -49,8 +49,6 @@ Evaluation respond(const LinearSystem& system, const ModalResult& modes, const H
 bool CriticalSpeedOptions::is_valid(std::string* why) const {
   if (!(min_speed > 0.0) || !(max_speed >= min_speed) || !std::isfinite(max_speed))
     return invalid(why, "need 0 < min_speed ≤ max_speed");
-  if (!(participation_floor >= 0.0 && participation_floor < 1.0))
-    return invalid(why, "participation_floor must satisfy 0 ≤ participation_floor < 1");
   if (!(friction_reference_amplitude >= 0.0) || !std::isfinite(friction_reference_amplitude))
     return invalid(why,
                    "friction_reference_amplitude must be 0 (friction only in the criterion) or a positive stretch");
@@ -118,9 +116,11 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   const HarmonicLoad load = source.load(system, speed, k);
   const Eigen::VectorXcd Q = generalized_load(system, load);
   const DrivenMode d = driven_mode(group, Q);
-  // Driven unless the modal force is below 1e-9 of ‖φ‖‖Q‖: symmetry zeros (roll under
-  // square joints) are round-off, ~1e-16 of it. Scale-free, whatever else is in range.
-  if (!(d.F0 > options.participation_floor * first.shape.norm() * Q.norm())) return std::nullopt;
+  // Driven unless the modal force is round-off of the source's total load (one rule for
+  // every part of the response: response::kLoadRoundOff): symmetry zeros (roll under square
+  // joints), and harmonics that are round-off themselves (the 3rd of a full-length cosine dip).
+  const double source_load = response::source_load_norm(system, source, speed);
+  if (!(d.F0 > response::kLoadRoundOff * first.shape.norm() * source_load)) return std::nullopt;
   // A complex modal-force vector (inputs out of phase) gives a rotating combination;
   // its magnitude per DOF is what the output sees.
   const Eigen::VectorXd magnitude = (d.unscaled_shape / d.F0).cwiseAbs();
@@ -137,7 +137,8 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   const int out = reported_dof(system, group, magnitude);
   row.output = system.dofs[out].label;
   add_growth_and_friction(system, group, Q, d.F0, magnitude(out), &row);
-  const HarmonicResponse response = respond(system, modes, load, options.friction_reference_amplitude).response;
+  const HarmonicResponse response =
+      respond(system, modes, load, source_load, options.friction_reference_amplitude).response;
   row.unbounded = unbounded_at(response, modes, out);
   row.amplitude = row.unbounded ? 0.0 : std::abs(response.displacement(out));
   return row;
@@ -171,8 +172,8 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
   clock.lap("sort");
   if (summary) {
     summary->analysis = "critical speeds";
-    summary->method = "V = Λ·f/k for each source harmonic and eigenspace, modal force against the participation "
-                      "floor, direct harmonic solve at each resonance";
+    summary->method = "V = Λ·f/k for each source harmonic and eigenspace, modal force against 1e-9 of the source's "
+                      "total load, direct harmonic solve at each resonance";
     const double driven = static_cast<double>(found.size());
     summary->checks.push_back({"resonances driven, of those in range", driven, static_cast<double>(in_range), true});
     const double stopped = static_cast<double>(
