@@ -110,6 +110,29 @@ LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double
 LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega,
                                               const std::vector<double>& stretch_per_element);
 
+struct OutputRequest {
+  int dof = 0;  ///< index into LinearSystem::dofs
+  ResponseQuantity quantity = ResponseQuantity::displacement;
+  /// false: the curve's phases_deg stays empty. Amplitude-only sweeps (peak refinement, the
+  /// sweep benchmark's first row) save an arg x per speed and 8 bytes per speed of output.
+  bool phase = true;
+};
+
+/// A resonance as one requested output sees it (CriticalSpeedOptions::outputs).
+struct ResonanceAtOutput {
+  std::string output;  ///< DOF label
+  ResponseQuantity quantity = ResponseQuantity::displacement;
+  bool unbounded = false;  ///< a resonant (undamped, driven) mode moves this DOF
+  /// Steady amplitude (m, m/s, m/s²; rad-based for rotations) of this output at the critical
+  /// speed when bounded, 0 when unbounded; where the resonant modes do not move the DOF, the
+  /// finite rest of the response.
+  double amplitude = 0.0;
+  /// Growth of this output's amplitude per half period without friction or damping: π F₀/(2λ)
+  /// times the driven mode's entry at the DOF, times ω or ω² for velocity or acceleration; 0
+  /// where the mode does not move it.
+  double growth_per_half_period = 0.0;
+};
+
 /// One resonance of one source harmonic with one mode, inside the speed range.
 struct CriticalSpeed {
   double speed = 0.0;           ///< m/s
@@ -133,6 +156,8 @@ struct CriticalSpeed {
   /// Factor on the source amplitude (dip depth, eccentricity, …) at which friction would no
   /// longer stop the resonance; 0 without friction (any amplitude grows).
   double friction_threshold_scale = 0.0;
+  /// The same resonance at every output of CriticalSpeedOptions::outputs, in that order.
+  std::vector<ResonanceAtOutput> outputs;
 };
 
 struct CriticalSpeedOptions {
@@ -141,18 +166,24 @@ struct CriticalSpeedOptions {
   /// > 0: leaf friction also acts as equivalent viscous damping for this element stretch
   /// amplitude (m), so resonances get finite amplitudes; 0: friction only in the criterion.
   double friction_reference_amplitude = 0.0;
+  /// Outputs every critical speed also reports (CriticalSpeed::outputs: amplitude and growth
+  /// per half period at each); empty: only the mode's own `output`. A DOF out of range of the
+  /// system is refused by find_critical_speeds (std::invalid_argument).
+  std::vector<OutputRequest> outputs;
   /// Returns false and explains in *why when an option is out of range: 0 < min_speed ≤
-  /// max_speed, finite; friction_reference_amplitude finite and ≥ 0.
+  /// max_speed, finite; friction_reference_amplitude finite and ≥ 0; every output's DOF ≥ 0.
   bool is_valid(std::string* why) const;
 };
 
 /// Every resonance V = Λ·f/k in the range, for every source, harmonic and oscillatory mode
 /// that the source loads, sorted by speed. A harmonic loads a mode when its modal force exceeds
 /// 1e-9·‖φ‖ times the source's total load √(Σ_k ‖Q_k‖²) at that speed (as harmonic_response
-/// decides): symmetry zeros and harmonics that are round-off of their source give no row.
-/// Throws std::invalid_argument for invalid options.
-/// `summary`, if given, receives the method, the checks (resonances found, driven, stopped by
-/// friction) and the stage times.
+/// decides): symmetry zeros and harmonics that are round-off of their source give no row. The
+/// friction criterion of a row is evaluated on the load's projection onto the modes within 1 %
+/// of its frequency (docs/scenes.md), so it is continuous where modes coincide. Throws
+/// std::invalid_argument for invalid options or an output DOF out of range. `summary`, if
+/// given, receives the method, the checks (resonances found, driven, stopped by friction) and
+/// the stage times.
 std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,
                                                 const std::vector<const ExcitationSource*>& sources,
                                                 const CriticalSpeedOptions& options,
@@ -209,14 +240,6 @@ struct AmplitudeCurve {
 /// input, its first force. 0 when the source has no input. A speed where the load scale s(ω)
 /// is negative turns the reference by π.
 std::complex<double> phase_reference(const LinearSystem& system, const ExcitationSource& source);
-
-struct OutputRequest {
-  int dof = 0;  ///< index into LinearSystem::dofs
-  ResponseQuantity quantity = ResponseQuantity::displacement;
-  /// false: the curve's phases_deg stays empty. Amplitude-only sweeps (peak refinement, the
-  /// sweep benchmark's first row) save an arg x per speed and 8 bytes per speed of output.
-  bool phase = true;
-};
 
 /// One curve per output, from one direct solve per speed and harmonic (or the modal
 /// expansion that agrees with it). The curves share `speeds` (a vector converts, copied

@@ -1,10 +1,11 @@
 // Leaf-spring friction in the frequency domain: the work it does against a mode (for the
 // resonance criterion) and, when a user asks for it, an equivalent viscous damper.
 #include <cmath>
+#include <complex>
 #include <stdexcept>
 
-#include "response/friction_damping.hpp"
 #include "railmodal/response.hpp"
+#include "response/friction_damping.hpp"
 
 namespace railmodal {
 
@@ -37,6 +38,14 @@ double modal_friction_work(const LinearSystem& system, const Eigen::VectorXd& sh
   double work = 0.0;
   for_each_friction_stage(system, [&](size_t k, double friction, double share) {
     work += friction * std::abs(share * system.element_vertical_map.row(k).dot(shape));
+  });
+  return work;
+}
+
+double response::modal_friction_work(const LinearSystem& system, const Eigen::VectorXcd& shape) {
+  double work = 0.0;
+  for_each_friction_stage(system, [&](size_t k, double friction, double share) {
+    work += friction * std::abs(share * system.element_vertical_map.row(k).cast<std::complex<double>>().dot(shape));
   });
   return work;
 }

@@ -64,6 +64,9 @@ TEST(CriticalSpeedOptions, NeedsASpeedRangeAndSaneFloors) {
   expect_invalid(o, "friction_reference_amplitude");
   o.friction_reference_amplitude = kNaN;
   expect_invalid(o, "friction_reference_amplitude");
+  o = speed_range(1.0, 50.0);
+  o.outputs = {OutputRequest{-1}};
+  expect_invalid(o, "outputs must name DOFs by their index, ≥ 0");
 }
 
 TEST(CriticalSpeedOptions, FindCriticalSpeedsThrowsTheRule) {
@@ -76,6 +79,11 @@ TEST(CriticalSpeedOptions, FindCriticalSpeedsThrowsTheRule) {
   EXPECT_EQ(invalid_argument_of([&] { find_critical_speeds(sys, modes, {}, o); }),
             "critical speeds: friction_reference_amplitude must be 0 (friction only in the criterion) or a "
             "positive stretch");
+  o = speed_range(1.0, 50.0);
+  o.outputs = {OutputRequest{sys.size()}};
+  EXPECT_EQ(invalid_argument_of([&] { find_critical_speeds(sys, modes, {}, o); }),
+            "critical speeds: output DOF " + std::to_string(sys.size()) + " is out of range (" +
+                std::to_string(sys.size()) + " DOFs)");
 }
 
 SimulationOptions run(double duration, double time_step) {
