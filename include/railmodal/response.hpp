@@ -128,8 +128,10 @@ struct ResonanceAtOutput {
   /// finite rest of the response.
   double amplitude = 0.0;
   /// Growth of this output's amplitude per half period without friction or damping: π F₀/(2λ)
-  /// times the driven mode's entry at the DOF, times ω or ω² for velocity or acceleration; 0
-  /// where the mode does not move it.
+  /// times the entry at the DOF of the combination the load drives in the resonance's cluster
+  /// (as CriticalSpeed::growth_per_half_period), times ω or ω² for velocity or acceleration; 0
+  /// where it does not move the DOF. A DOF only a near-coincident neighbour moves shows that
+  /// neighbour's growth while its (large, finite) amplitude is not unbounded.
   double growth_per_half_period = 0.0;
 };
 
@@ -146,9 +148,12 @@ struct CriticalSpeed {
   bool unbounded = false;       ///< undamped: the amplitude grows without limit
   double amplitude = 0.0;       ///< steady amplitude of `output` (m or rad) when bounded
   /// Growth of `output` per half period at resonance without friction or damping
-  /// (π F₀/(2λ) in the modal coordinate).
+  /// (π F₀/(2λ) in the modal coordinate) of the combination the load drives in the cluster of
+  /// modes within 1 % of this frequency, each neighbour weighted 1 − gap/1 % (only the
+  /// eigenspace itself when no other mode is that close): continuous as modes coincide.
   double growth_per_half_period = 0.0;
-  /// Decrease per half period that leaf-spring friction imposes (2 Σ R|δ| / λ); 0 without friction.
+  /// Decrease per half period that leaf-spring friction imposes on that combination
+  /// (2 Σ R|δ| / λ, each stage over the amplitude of its own stretch); 0 without friction.
   double friction_decrement_per_half_period = 0.0;
   /// Friction stops the resonance: the growth per half period does not exceed the decrement
   /// (Den Hartog's criterion, the book's (169a) without its static term).
