@@ -12,7 +12,8 @@ n=0
 while read -r name args; do
   out=tests/golden/expected/$name
   mkdir -p "$(dirname "$out")"
-  # A case that fails is recorded too: its exit code and message (check_golden.cmake).
+  # A case that fails is recorded too: its exit code and message, then the report it wrote if
+  # any (a failed fft-check writes its whole report; check_golden.cmake).
   code=0
   # shellcheck disable=SC2086  # the arguments are words without spaces
   if [[ " $args " == *" @OUT@ "* ]]; then
@@ -21,7 +22,8 @@ while read -r name args; do
     "$exe" $args -o "$out" 2>"$out.stderr" || code=$?
   fi
   if [ "$code" != 0 ]; then
-    { echo "exit code $code"; cat "$out.stderr"; } > "$out"
+    { echo "exit code $code"; cat "$out.stderr"; if [ -f "$out" ]; then cat "$out"; fi; } > "$out.failed"
+    mv "$out.failed" "$out"
   fi
   rm -f "$out.stderr"
   n=$((n + 1))

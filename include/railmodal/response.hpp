@@ -65,9 +65,13 @@ bool unbounded_at(const HarmonicResponse& response, const ModalResult& modes, in
 /// Direct solve of (K − ω²M + iωC) X = Q (dense LU). `modes` (of the same system) is used
 /// to recognise undamped modes at ω: they are exact null vectors of the dynamic stiffness,
 /// so the rest of the response is solved with them bordered out, and the response is
-/// unbounded where a driven one moves a DOF.
-HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult& modes,
-                                   const Eigen::VectorXcd& load, double frequency_hz);
+/// unbounded where a driven one moves a DOF. A mode is driven when its modal force |φᵀQ|
+/// exceeds 1e-9·‖φ‖·`source_load_norm`, the norm of the whole source's load √(Σ_k ‖Q_k‖²)
+/// over its harmonics when `load` is one of them (0, or less than ‖Q‖: the load's own norm):
+/// a harmonic that is itself round-off of its source (the 3rd harmonic of a cosine dip as long
+/// as the rail) drives nothing. The critical speeds and curves pass their source's.
+HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult& modes, const Eigen::VectorXcd& load,
+                                   double frequency_hz, double source_load_norm = 0.0);
 
 /// Modal superposition over the lowest `mode_count` modes (all if ≤ 0) with modal damping
 /// taken from the diagonal of ΦᵀCΦ (exact when C = 0 or C is proportional and no damper
@@ -106,6 +110,31 @@ LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double
 LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega,
                                               const std::vector<double>& stretch_per_element);
 
+struct OutputRequest {
+  int dof = 0;  ///< index into LinearSystem::dofs
+  ResponseQuantity quantity = ResponseQuantity::displacement;
+  /// false: the curve's phases_deg stays empty. Amplitude-only sweeps (peak refinement, the
+  /// sweep benchmark's first row) save an arg x per speed and 8 bytes per speed of output.
+  bool phase = true;
+};
+
+/// A resonance as one requested output sees it (CriticalSpeedOptions::outputs).
+struct ResonanceAtOutput {
+  std::string output;  ///< DOF label
+  ResponseQuantity quantity = ResponseQuantity::displacement;
+  bool unbounded = false;  ///< a resonant (undamped, driven) mode moves this DOF
+  /// Steady amplitude (m, m/s, m/s²; rad-based for rotations) of this output at the critical
+  /// speed when bounded, 0 when unbounded; where the resonant modes do not move the DOF, the
+  /// finite rest of the response.
+  double amplitude = 0.0;
+  /// Growth of this output's amplitude per half period without friction or damping: π F₀/(2λ)
+  /// times the entry at the DOF of the combination the load drives in the resonance's cluster
+  /// (as CriticalSpeed::growth_per_half_period), times ω or ω² for velocity or acceleration; 0
+  /// where it does not move the DOF. A DOF only a near-coincident neighbour moves shows that
+  /// neighbour's growth while its (large, finite) amplitude is not unbounded.
+  double growth_per_half_period = 0.0;
+};
+
 /// One resonance of one source harmonic with one mode, inside the speed range.
 struct CriticalSpeed {
   double speed = 0.0;           ///< m/s
@@ -119,9 +148,12 @@ struct CriticalSpeed {
   bool unbounded = false;       ///< undamped: the amplitude grows without limit
   double amplitude = 0.0;       ///< steady amplitude of `output` (m or rad) when bounded
   /// Growth of `output` per half period at resonance without friction or damping
-  /// (π F₀/(2λ) in the modal coordinate).
+  /// (π F₀/(2λ) in the modal coordinate) of the combination the load drives in the cluster of
+  /// modes within 1 % of this frequency, each neighbour weighted 1 − gap/1 % (only the
+  /// eigenspace itself when no other mode is that close): continuous as modes coincide.
   double growth_per_half_period = 0.0;
-  /// Decrease per half period that leaf-spring friction imposes (2 Σ R|δ| / λ); 0 without friction.
+  /// Decrease per half period that leaf-spring friction imposes on that combination
+  /// (2 Σ R|δ| / λ, each stage over the amplitude of its own stretch); 0 without friction.
   double friction_decrement_per_half_period = 0.0;
   /// Friction stops the resonance: the growth per half period does not exceed the decrement
   /// (Den Hartog's criterion, the book's (169a) without its static term).
@@ -129,27 +161,34 @@ struct CriticalSpeed {
   /// Factor on the source amplitude (dip depth, eccentricity, …) at which friction would no
   /// longer stop the resonance; 0 without friction (any amplitude grows).
   double friction_threshold_scale = 0.0;
+  /// The same resonance at every output of CriticalSpeedOptions::outputs, in that order.
+  std::vector<ResonanceAtOutput> outputs;
 };
 
 struct CriticalSpeedOptions {
   double min_speed = 0.0;  ///< m/s, > 0
   double max_speed = 0.0;  ///< m/s
-  /// A mode counts as excited by a source harmonic when its modal force is above this
-  /// fraction of the largest modal force of that harmonic (symmetry zeros fall below it).
-  double participation_floor = 1e-9;
   /// > 0: leaf friction also acts as equivalent viscous damping for this element stretch
   /// amplitude (m), so resonances get finite amplitudes; 0: friction only in the criterion.
   double friction_reference_amplitude = 0.0;
+  /// Outputs every critical speed also reports (CriticalSpeed::outputs: amplitude and growth
+  /// per half period at each); empty: only the mode's own `output`. A DOF out of range of the
+  /// system is refused by find_critical_speeds (std::invalid_argument).
+  std::vector<OutputRequest> outputs;
   /// Returns false and explains in *why when an option is out of range: 0 < min_speed ≤
-  /// max_speed, finite; participation_floor in [0, 1); friction_reference_amplitude finite and
-  /// ≥ 0.
+  /// max_speed, finite; friction_reference_amplitude finite and ≥ 0; every output's DOF ≥ 0.
   bool is_valid(std::string* why) const;
 };
 
 /// Every resonance V = Λ·f/k in the range, for every source, harmonic and oscillatory mode
-/// that the source loads, sorted by speed. Throws std::invalid_argument for invalid options.
-/// `summary`, if given, receives the method, the checks (resonances found, driven, stopped by
-/// friction) and the stage times.
+/// that the source loads, sorted by speed. A harmonic loads a mode when its modal force exceeds
+/// 1e-9·‖φ‖ times the source's total load √(Σ_k ‖Q_k‖²) at that speed (as harmonic_response
+/// decides): symmetry zeros and harmonics that are round-off of their source give no row. The
+/// friction criterion of a row is evaluated on the load's projection onto the modes within 1 %
+/// of its frequency (docs/scenes.md), so it is continuous where modes coincide. Throws
+/// std::invalid_argument for invalid options or an output DOF out of range. `summary`, if
+/// given, receives the method, the checks (resonances found, driven, stopped by friction) and
+/// the stage times.
 std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,
                                                 const std::vector<const ExcitationSource*>& sources,
                                                 const CriticalSpeedOptions& options,
@@ -206,14 +245,6 @@ struct AmplitudeCurve {
 /// input, its first force. 0 when the source has no input. A speed where the load scale s(ω)
 /// is negative turns the reference by π.
 std::complex<double> phase_reference(const LinearSystem& system, const ExcitationSource& source);
-
-struct OutputRequest {
-  int dof = 0;  ///< index into LinearSystem::dofs
-  ResponseQuantity quantity = ResponseQuantity::displacement;
-  /// false: the curve's phases_deg stays empty. Amplitude-only sweeps (peak refinement, the
-  /// sweep benchmark's first row) save an arg x per speed and 8 bytes per speed of output.
-  bool phase = true;
-};
 
 /// One curve per output, from one direct solve per speed and harmonic (or the modal
 /// expansion that agrees with it). The curves share `speeds` (a vector converts, copied

@@ -79,6 +79,28 @@ Table critical_speed_table(const CriticalSpeedStudy& st) {
   return t;
 }
 
+// Every requested output at every critical speed: its amplitude there, or its growth per half
+// period (issue 17 item 7: the table above shows one output per mode).
+Table outputs_table(const CriticalSpeedStudy& st) {
+  Table t{{"speed (km/h)", "source", "k", "mode", "output", "amplitude", "undamped growth per half period"},
+          {true, false, true, false, false, true, true},
+          {}};
+  for (const auto& r : st.critical_speeds)
+    for (const ResonanceAtOutput& o : r.outputs) {
+      const Unit u = unit_of(st.system, o.output, o.quantity);
+      t.rows.push_back({fixed(r.speed * kKmh, 1), source_label(st, r.source), std::to_string(r.harmonic),
+                        std::to_string(r.mode) + " " + r.mode_name, o.output + " " + to_string(o.quantity),
+                        o.unbounded ? "unbounded" : significant(o.amplitude * u.scale, 4) + " " + u.name,
+                        significant(o.growth_per_half_period * u.scale, 3) + " " + u.name});
+    }
+  return t;
+}
+
+const char* const kOutputsNote =
+    "Each output the scene requests, at each critical speed: unbounded where the resonant mode moves it (it then "
+    "grows by the growth per half period), otherwise the steady amplitude of the rest of the response (growth 0: "
+    "the mode does not move it).";
+
 // What the curve is: the source's input times which transfer function.
 std::string transfer_function(const CriticalSpeedStudy& st, const AmplitudeCurve& c) {
   const bool force = st.scene.sources[c.source]->kind() == "unbalance";
@@ -218,6 +240,9 @@ void write_markdown(std::ostream& out, const CriticalSpeedStudy& st, const Prove
   } else {
     write_markdown_table(out, critical_speed_table(st));
     out << kCriticalSpeedNote << "\n\n";
+    out << "### Every output at each critical speed\n\n";
+    write_markdown_table(out, outputs_table(st));
+    out << kOutputsNote << "\n\n";
   }
   out << "## Amplitude against speed\n\n"
       << (any_force_source(st) ? "Force sources: receptance times the source's force (∝ V²). " : "")
@@ -346,6 +371,9 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st, const Provenanc
   } else {
     write_html_table(out, critical_speed_table(st));
     out << "<p class=note>" << html_escape(kCriticalSpeedNote) << "</p>\n";
+    out << "<h3>Every output at each critical speed</h3>\n";
+    write_html_table(out, outputs_table(st));
+    out << "<p class=note>" << html_escape(kOutputsNote) << "</p>\n";
   }
   out << "<h2>Campbell diagram</h2>\n"
       << report::svg_chart(campbell_chart(st))
@@ -377,20 +405,47 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st, const Provenanc
 
 // ---- CSV and JSON ---------------------------------------------------------------------------
 
+// The unit of an output's amplitude: m or rad per its DOF, per s or s² for velocity or acceleration.
+std::string output_unit(const std::string& output, ResponseQuantity quantity) {
+  const std::string unit = report::displacement_unit(output);
+  if (unit.empty() || quantity == ResponseQuantity::displacement) return unit;
+  return unit + (quantity == ResponseQuantity::velocity ? "/s" : "/s^2");
+}
+
+// The per-output columns' names, "<dof>.<quantity>_amplitude [unit]" and
+// "…_growth_per_half_period [unit]" (SI, rad-based), from the first row (every row has the same outputs).
+std::string output_columns(const CriticalSpeedStudy& st) {
+  std::string header;
+  if (st.critical_speeds.empty()) return header;
+  for (const ResonanceAtOutput& o : st.critical_speeds.front().outputs) {
+    const std::string name = o.output + "." + to_string(o.quantity);
+    const std::string unit = output_unit(o.output, o.quantity);
+    header += "," + report::csv_field(report::csv_heading(name + "_amplitude", unit)) + "," +
+              report::csv_field(report::csv_heading(name + "_growth_per_half_period", unit));
+  }
+  return header;
+}
+
 void write_csv(std::ostream& out, const CriticalSpeedStudy& st) {
   // The amplitudes are of each row's output: m, or rad for a roll, pitch or yaw.
   using report::csv_heading;
   out << csv_heading("speed", "km/h") << ",source,source_index,harmonic,mode,mode_name,"
       << csv_heading("frequency", "Hz") << ",output," << csv_heading("amplitude", "m or rad") << ",unbounded,"
       << csv_heading("growth_per_half_period", "m or rad") << ","
-      << csv_heading("friction_decrement_per_half_period", "m or rad") << ",friction_stops,friction_threshold_scale\n";
+      << csv_heading("friction_decrement_per_half_period", "m or rad") << ",friction_stops,friction_threshold_scale"
+      << output_columns(st) << "\n";
   out << std::setprecision(10);
-  for (const auto& r : st.critical_speeds)
+  for (const auto& r : st.critical_speeds) {
     out << r.speed * kKmh << "," << r.source_kind << "," << r.source + 1 << "," << r.harmonic << "," << r.mode << ","
         << report::csv_field(r.mode_name) << "," << r.frequency_hz << "," << r.output << ","
         << (r.unbounded ? "" : significant(r.amplitude, 10)) << "," << (r.unbounded ? "true" : "false") << ","
         << r.growth_per_half_period << "," << r.friction_decrement_per_half_period << ","
-        << (r.friction_stops ? "true" : "false") << "," << r.friction_threshold_scale << "\n";
+        << (r.friction_stops ? "true" : "false") << "," << r.friction_threshold_scale;
+    // Each output: its amplitude (blank where unbounded) and its growth per half period.
+    for (const ResonanceAtOutput& o : r.outputs)
+      out << "," << (o.unbounded ? "" : significant(o.amplitude, 10)) << "," << o.growth_per_half_period;
+    out << "\n";
+  }
 }
 
 void write_json(std::ostream& out, const CriticalSpeedStudy& st) {
@@ -427,6 +482,13 @@ void write_json(std::ostream& out, const CriticalSpeedStudy& st) {
                 {"friction_stops", r.friction_stops}};
     row["friction_threshold_scale"] =
         std::isfinite(r.friction_threshold_scale) ? json(r.friction_threshold_scale) : json(nullptr);
+    row["outputs"] = json::array();
+    for (const ResonanceAtOutput& o : r.outputs)
+      row["outputs"].push_back({{"output", o.output},
+                                {"quantity", to_string(o.quantity)},
+                                {"unbounded", o.unbounded},
+                                {"amplitude", o.unbounded ? json(nullptr) : json(o.amplitude)},
+                                {"growth_per_half_period", o.growth_per_half_period}});
     j["critical_speeds"].push_back(row);
   }
   j["curves"] = json::array();

@@ -118,6 +118,41 @@ std::string missing_peak_remark(const FftCheck& check, bool nonlinear) {
                    : "no line within 3 resolutions";
 }
 
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f %%", 100.0 * fraction);
+  return text;
+}
+
+// One check's verdict in words. A linear scene's line is held to its own width; a nonlinear
+// scene's to FftCheck::kNonlinearTolerance of the mode, and must be that narrow.
+std::string verdict_text(const FftCheck& c, bool nonlinear) {
+  if (!c.peak_hz) return (c.passed ? "" : "FAILED: ") + missing_peak_remark(c, nonlinear);
+  if (!nonlinear) return c.within_resolution ? "ok" : "OUTSIDE the resolution";
+  if (c.resolution_hz > c.tolerance * c.modal_hz)
+    return "FAILED: not resolved (line " + percent(c.resolution_hz / c.modal_hz) + " of f wide; needs ≤ " +
+           percent(c.tolerance) + ": a longer record)";
+  if (!c.passed) return "FAILED: " + percent(std::abs(c.rel_error)) + " off (tolerance " + percent(c.tolerance) + ")";
+  return "ok (within " + percent(c.tolerance) + ")";
+}
+
+// What a nonlinear scene's checks compare, and the verdict of all of them.
+std::string compared_text(const FftCheckResult& r) {
+  if (!r.nonlinear)
+    return "compared: the spectral peak of each excited mode with its modal frequency, within the line's width";
+  return "compared: the spectral peak of each excited mode with its LINEAR modal frequency, within " +
+         percent(FftCheck::kNonlinearTolerance) +
+         " (friction moves the lines by √(1 ± φ), ≤ 4.3 % for φ ≤ 0.085), where the record resolves " +
+         percent(FftCheck::kNonlinearTolerance) + " of f (line width ≤ " + percent(FftCheck::kNonlinearTolerance) +
+         " of f)";
+}
+
+std::string overall_verdict(const FftCheckResult& r) {
+  const auto failed = std::count_if(r.checks.begin(), r.checks.end(), [](const FftCheck& c) { return !c.passed; });
+  if (r.passed) return "verdict: passed (" + std::to_string(r.checks.size()) + " checks)";
+  return "verdict: FAILED (" + std::to_string(failed) + " of " + std::to_string(r.checks.size()) + " checks)";
+}
+
 void checks_table(std::ostream& out, const FftCheckResult& r) {
   out << "<table><tr><th>#</th><th>mode</th><th>dof</th><th>modal [Hz]</th><th>peak [Hz]</th><th>rel. error</th>"
          "<th>resolution [Hz]</th><th>check</th></tr>\n";
@@ -128,15 +163,14 @@ void checks_table(std::ostream& out, const FftCheckResult& r) {
       std::ostringstream rel;
       rel << std::scientific << std::setprecision(2) << c.rel_error;
       out << "<td class=n>" << fixed(*c.peak_hz, 4) << "</td><td class=n>" << rel.str() << "</td><td class=n>"
-          << fixed(c.resolution_hz, 4) << "</td><td>" << (c.within_resolution ? "ok" : "<b>outside the resolution</b>")
-          << "</td>";
+          << fixed(c.resolution_hz, 4) << "</td><td>" << (c.passed ? "" : "<b>")
+          << html_escape(verdict_text(c, r.nonlinear)) << (c.passed ? "" : "</b>") << "</td>";
     } else {
-      out << "<td class=n>—</td><td></td><td></td><td>" << html_escape(missing_peak_remark(c, r.swings.has_value()))
-          << "</td>";
+      out << "<td class=n>—</td><td></td><td></td><td>" << html_escape(verdict_text(c, r.nonlinear)) << "</td>";
     }
     out << "</tr>\n";
   }
-  out << "</table>\n";
+  out << "</table>\n<p>" << html_escape(compared_text(r)) << ". <b>" << html_escape(overall_verdict(r)) << "</b></p>\n";
 }
 
 void swings_table(std::ostream& out, const FftCheckResult& r) {
@@ -174,7 +208,12 @@ void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene) 
                            {"resolution_hz", c.resolution_hz},
                            {"within_resolution", c.within_resolution},
                            {"excited", c.excited},
-                           {"modal_amplitude_ratio", c.modal_amplitude_ratio}});
+                           {"modal_amplitude_ratio", c.modal_amplitude_ratio},
+                           {"tolerance", c.tolerance},
+                           {"passed", c.passed}});
+  j["nonlinear"] = r.nonlinear;
+  j["compared"] = compared_text(r);
+  j["passed"] = r.passed;
   if (r.swings) {
     const Swings& w = *r.swings;
     nlohmann::json turns = nlohmann::json::array();
@@ -193,13 +232,15 @@ void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene) 
 void write_csv(std::ostream& out, const FftCheckResult& r) {
   using report::csv_heading;
   out << "mode,mode_name,dof," << csv_heading("modal", "Hz") << "," << csv_heading("peak", "Hz") << ",rel_error,"
-      << csv_heading("resolution", "Hz") << ",within_resolution,excited,modal_amplitude_ratio\n"
+      << csv_heading("resolution", "Hz") << ",within_resolution,excited,modal_amplitude_ratio,tolerance,passed
+"
       << std::setprecision(10);
   for (const auto& c : r.checks)
     out << c.mode << ",\"" << c.mode_name << "\"," << c.dof << "," << c.modal_hz << ","
         << (c.peak_hz ? significant(*c.peak_hz, 10) : "") << "," << (c.peak_hz ? significant(c.rel_error, 10) : "")
         << "," << c.resolution_hz << "," << (c.within_resolution ? "true" : "false") << ","
-        << (c.excited ? "true" : "false") << "," << c.modal_amplitude_ratio << "\n";
+        << (c.excited ? "true" : "false") << "," << c.modal_amplitude_ratio << "," << c.tolerance << ","
+        << (c.passed ? "true" : "false") << "\n";
 }
 
 // Nonlinear scenes, in the table: the turning points of the swinging DOF and the half periods
@@ -240,12 +281,13 @@ void write_table(std::ostream& out, const FftCheckResult& r, const Scene& scene)
     if (c.peak_hz)
       out << std::setw(11) << *c.peak_hz << std::scientific << std::setprecision(2) << std::setw(12) << c.rel_error
           << std::fixed << std::setprecision(4) << std::setw(13) << c.resolution_hz << "  "
-          << (c.within_resolution ? "ok" : "OUTSIDE the resolution");
+          << verdict_text(c, r.nonlinear);
     else
-      out << std::setw(11) << "—" << std::setw(12) << "" << std::setw(13) << "" << "  "
-          << missing_peak_remark(c, r.swings.has_value());
+      out << std::setw(11) << "—" << std::setw(12) << "" << std::setw(13) << ""
+          << "  " << verdict_text(c, r.nonlinear);
     out << "\n";
   }
+  out << compared_text(r) << "\n" << overall_verdict(r) << "\n";
   if (r.swings) swings_text(out, r);
 }
 

@@ -158,9 +158,13 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
   options.max_speed = scene.max_speed;
   options.friction_reference_amplitude = scene.friction_reference_amplitude;
   study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
+  // Every row reports every output of the curves: the scene's, or (when it names none) the
+  // DOFs the rows report, known only once they are found — then the rows are found again.
+  const std::vector<OutputRequest> outputs = curve_outputs(scene, study);
+  options.outputs = outputs;
+  study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
   clock.lap("critical speeds");
 
-  const std::vector<OutputRequest> outputs = curve_outputs(scene, study);
   const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
   check_curve_points(sources.size(), outputs.size(), speeds.size(), study.critical_speeds.size());
   const double total = static_cast<double>(sources.size() * speeds.size());

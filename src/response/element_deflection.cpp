@@ -75,6 +75,7 @@ std::vector<DeflectionCurve> element_deflection_curves(const LinearSystem& syste
   for (size_t v = 0; v < speeds.size(); ++v) {
     if (!(speeds[v] > 0.0) || !std::isfinite(speeds[v]))
       throw std::invalid_argument("deflection curve: speeds must be positive");
+    const double source_load = response::source_load_norm(system, source, speeds[v]);
     for (int k = 1; k <= source.harmonic_count(); ++k) {
       const double omega = kTwoPi * source.frequency_hz(speeds[v], k);
       // The friction damper also acts on the track's velocity: the load is built on the
@@ -83,7 +84,7 @@ std::vector<DeflectionCurve> element_deflection_curves(const LinearSystem& syste
           friction_linearised ? with_equivalent_friction_damping(system, omega, friction_reference_stretch) : LinearSystem{};
       const LinearSystem& s = friction_linearised ? linearised : system;
       const HarmonicLoad load = source.load(s, speeds[v], k);
-      const HarmonicResponse r = harmonic_response(s, modes, generalized_load(s, load), load.frequency_hz);
+      const HarmonicResponse r = harmonic_response(s, modes, generalized_load(s, load), load.frequency_hz, source_load);
       for (size_t i = 0; i < curves.size(); ++i) {
         DeflectionCurve& c = curves[i];
         if (c.unbounded[v]) continue;

@@ -2,6 +2,7 @@
 // with friction dampers and the element deflection curves, which need the force it carries).
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
 
 #include "railmodal/linear_system.hpp"
@@ -21,5 +22,10 @@ double equivalent_friction_damping(const LinearSystem& system, std::size_t eleme
 /// harmonic stretch X the leaf deflects share·(X − h), and not at all for X ≤ h. 0 for an
 /// element without friction or whose friction leaf is its only stage.
 double leaf_hold_stretch(const LinearSystem& system, std::size_t element);
+
+/// modal_friction_work for a motion Re(ψ e^{iωt}) whose DOFs need not move in phase (modes of a
+/// cluster driven out of phase): Σ R·|δ(ψ)| with δ(ψ) complex, each stage sliding over the
+/// amplitude |δ| of its own stretch. Equal to the real version for ψ = φ·e^{iθ}.
+double modal_friction_work(const LinearSystem& system, const Eigen::VectorXcd& shape);
 
 }  // namespace railmodal::response

@@ -1,5 +1,6 @@
 // Steady harmonic response: direct solve and modal superposition.
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -32,8 +33,11 @@ std::vector<const Mode*> undamped_modes_at(const LinearSystem& system, const Mod
   return at;
 }
 
-// A load drives a mode unless its modal force is round-off of ‖φ‖‖Q‖ (a symmetry zero).
-bool drives(const Mode& mode, const Eigen::VectorXcd& load) { return response::modal_force(mode, load) != 0.0; }
+// A load drives a mode unless its modal force is round-off of ‖φ‖ times the source's total
+// load (response::kLoadRoundOff): a symmetry zero, or a harmonic that is itself round-off.
+bool drives(const Mode& mode, const Eigen::VectorXcd& load, double source_load) {
+  return response::modal_force(mode, load, source_load) != 0.0;
+}
 
 void check_sizes(const LinearSystem& system, const ModalResult& modes, const Eigen::VectorXcd& load,
                  double frequency_hz) {
@@ -79,9 +83,10 @@ bool unbounded_at(const HarmonicResponse& response, const ModalResult& modes, in
   return false;
 }
 
-HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult& modes,
-                                   const Eigen::VectorXcd& load, double frequency_hz) {
+HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult& modes, const Eigen::VectorXcd& load,
+                                   double frequency_hz, double source_load_norm) {
   check_sizes(system, modes, load, frequency_hz);
+  const double source_load = std::max(source_load_norm, load.norm());
   HarmonicResponse out;
   out.frequency_hz = frequency_hz;
   const int n = system.size();
@@ -101,7 +106,7 @@ HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult
     A.block(0, n + k, n, 1) = b;
     A.block(n + k, 0, 1, n) = b.transpose();
     rhs.head(n) -= b * at[k]->shape.cast<std::complex<double>>().dot(load);
-    if (drives(*at[k], load)) out.resonant_modes.push_back(at[k]->index);
+    if (drives(*at[k], load, source_load)) out.resonant_modes.push_back(at[k]->index);
   }
   const Eigen::VectorXcd x = A.partialPivLu().solve(rhs);
   const double residual = (A * x - rhs).norm();
@@ -132,7 +137,7 @@ HarmonicResponse modal_harmonic_response(const LinearSystem& system, const Modal
     if (mode.kind == ModeKind::oscillatory && response::undamped(system, mode) &&
         std::abs(mode.eigenvalue - omega * omega) <= kAtResonance * mode.eigenvalue) {
       // At its own frequency an undamped mode adds nothing finite: unbounded if driven.
-      if (drives(mode, load)) out.resonant_modes.push_back(mode.index);
+      if (drives(mode, load, load.norm())) out.resonant_modes.push_back(mode.index);
       continue;
     }
     const std::complex<double> denominator = mode.eigenvalue - omega * omega + i * omega * c;

@@ -19,10 +19,11 @@
 // the simulated triple suspension).
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <stdexcept>
 
-#include "response/friction_damping.hpp"
 #include "railmodal/response.hpp"
+#include "response/friction_damping.hpp"
 
 namespace railmodal {
 
@@ -61,6 +62,14 @@ double modal_friction_work(const LinearSystem& system, const Eigen::VectorXd& sh
   double work = 0.0;
   for_each_friction_stage(system, [&](size_t k, double friction, double share) {
     work += friction * std::abs(share * system.element_vertical_map.row(k).dot(shape));
+  });
+  return work;
+}
+
+double response::modal_friction_work(const LinearSystem& system, const Eigen::VectorXcd& shape) {
+  double work = 0.0;
+  for_each_friction_stage(system, [&](size_t k, double friction, double share) {
+    work += friction * std::abs(share * system.element_vertical_map.row(k).cast<std::complex<double>>().dot(shape));
   });
   return work;
 }

@@ -8,6 +8,7 @@
 #include <complex>
 #include <vector>
 
+#include "railmodal/excitation.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"
 
@@ -20,12 +21,34 @@ inline bool undamped(const LinearSystem& system, const Mode& mode) {
   return std::abs(mode.shape.dot(system.damping * mode.shape)) <= 1e-12 * system.damping.norm() * mode.shape.squaredNorm();
 }
 
-/// The modal force φᵀQ, or exactly 0 where it is round-off of ‖φ‖‖Q‖: a symmetry zero that the
-/// computed eigenvectors blur to ~1e-17 (a load on the bogies' pitch against a bounce mode).
+/// The one round-off rule for loads: a load Q_k (one harmonic of a source) drives a mode only
+/// where its modal force |φᵀQ_k| exceeds kLoadRoundOff·‖φ‖·‖Q‖, with ‖Q‖ = √(Σ_j ‖Q_j‖²) the
+/// source's TOTAL load over all its harmonics, never the harmonic's own: a harmonic whose load
+/// is itself round-off (the 3rd harmonic of a cosine dip as long as the rail, ~1e-17 of the
+/// fundamental) would otherwise pass a test relative to itself and "resonate" with a growth of
+/// 1e-31 mm. Why 1e-9: what a computed modal force holds of round-off is ~1e-16 of ‖φ‖‖Q‖
+/// (symmetry zeros seen through eigenvectors with residuals of ~1e-15, closed-form Fourier
+/// coefficients at their zeros), so 1e-9 leaves six orders for worse-conditioned eigenvectors;
+/// yet a real load component of 1e-9 of the source's grows a resonance by 1e-9 of what the
+/// source's main harmonic does, below the digits a report prints. The critical speeds, the
+/// direct and modal responses and the sweeps all use this one rule.
+constexpr double kLoadRoundOff = 1e-9;
+
+/// The modal force φᵀQ, or exactly 0 where it is round-off by the rule above, `source_load`
+/// being the source's total load norm √(Σ_j ‖Q_j‖²) (Q's own norm for a one-harmonic load).
 /// Below that a load neither drives a mode at resonance nor adds to a response.
-inline std::complex<double> modal_force(const Mode& mode, const Eigen::VectorXcd& load) {
+inline std::complex<double> modal_force(const Mode& mode, const Eigen::VectorXcd& load, double source_load) {
   const std::complex<double> f = mode.shape.cast<std::complex<double>>().dot(load);
-  return std::abs(f) > 1e-12 * mode.shape.norm() * load.norm() ? f : 0.0;
+  return std::abs(f) > kLoadRoundOff * mode.shape.norm() * source_load ? f : 0.0;
+}
+
+/// The source's total load at a speed, √(Σ_k ‖Q_k‖²) over its harmonics: what kLoadRoundOff
+/// is relative to.
+inline double source_load_norm(const LinearSystem& system, const ExcitationSource& source, double speed) {
+  double squared = 0.0;
+  for (int k = 1; k <= source.harmonic_count(); ++k)
+    squared += generalized_load(system, source.load(system, speed, k)).squaredNorm();
+  return std::sqrt(squared);
 }
 
 /// The mode moves the quantity row·x: by more than 1e-9 of its largest entry times ‖row‖₁

@@ -94,6 +94,19 @@ double input_arg(double reference_arg, double scale) {
   return scale == 0.0 ? kNaN : reference_arg + (scale < 0.0 ? kPi : 0.0);
 }
 
+// The source's total load at a speed, √(Σ_k ‖Q_k‖²) over its harmonics, from the separable
+// parts (without linearised friction): what response::kLoadRoundOff is relative to.
+double source_load_at(const Sweep& s, double speed) {
+  double squared = 0.0;
+  for (int k = 1; k <= s.source.harmonic_count(); ++k) {
+    const SeparableLoad& p = s.parts[k - 1];
+    const double omega = kTwoPi * s.source.frequency_hz(speed, k);
+    const double scale = s.source.load_scale(omega, p.reference_omega);
+    squared += (scale * (p.stiffness_part + std::complex<double>(0.0, omega) * p.damping_part)).squaredNorm();
+  }
+  return std::sqrt(squared);
+}
+
 // Whether an expansion of the response (`at_speed(k, dof, ω, s)`) matches the direct solve at
 // nine speeds spread over the sweep, every harmonic and output: to 1e-8 of the response's
 // largest entry. The expansion is exact in exact arithmetic; its round-off grows with the
@@ -104,13 +117,14 @@ bool agrees_with_direct(const Sweep& s, const AtSpeed& at_speed) {
   if (speeds.empty()) return true;
   for (int sample = 0; sample <= 8; ++sample) {
     const double speed = speeds[(speeds.size() - 1) * sample / 8];
+    const double source_load = source_load_at(s, speed);
     for (int k = 1; k <= s.source.harmonic_count(); ++k) {
       const SeparableLoad& p = s.parts[k - 1];
       const double omega = kTwoPi * s.source.frequency_hz(speed, k);
       const double scale = s.source.load_scale(omega, p.reference_omega);
       const HarmonicResponse direct = harmonic_response(
           s.system, s.modes, scale * (p.stiffness_part + std::complex<double>(0.0, omega) * p.damping_part),
-          omega / kTwoPi);
+          omega / kTwoPi, source_load);
       if (direct.unbounded) return false;
       const double size = direct.displacement.cwiseAbs().maxCoeff();
       for (const OutputRequest& o : s.outputs)
@@ -263,7 +277,8 @@ std::vector<AmplitudeCurve> sweep_in_blocks(const Sweep& s, std::vector<Amplitud
 }
 
 // An undamped mode that moves the DOF: unbounded where ω² is within `tolerance` of λ and the
-// load drives it, |a + iωb| above `drive_floor`·(|Q_K| + ω|Q_C|), as the direct solve decides.
+// load drives it, |a + iωb| above `drive_floor`·(|Q_K| + ω|Q_C|) of the source's whole load, as
+// the direct solve decides.
 struct Resonance {
   double lambda, tolerance;
   std::complex<double> a, b;
@@ -277,7 +292,22 @@ struct ModalTerms {
   std::vector<Resonance> resonances;
 };
 
-ModalTerms modal_terms(const ModalBasis& basis, const SeparableLoad& p, int dof) {
+// The norms of the source's separable parts over all its harmonics, √(Σ_k ‖Q_K,k‖²) and
+// √(Σ_k ‖Q_C,k‖²): the source's total load of each kind, for response::kLoadRoundOff.
+struct PartNorms {
+  double stiffness = 0.0, damping = 0.0;
+};
+
+PartNorms part_norms(const std::vector<SeparableLoad>& parts) {
+  PartNorms n;
+  for (const SeparableLoad& p : parts) {
+    n.stiffness += p.stiffness_part.squaredNorm();
+    n.damping += p.damping_part.squaredNorm();
+  }
+  return {std::sqrt(n.stiffness), std::sqrt(n.damping)};
+}
+
+ModalTerms modal_terms(const ModalBasis& basis, const SeparableLoad& p, const PartNorms& source, int dof) {
   ModalTerms out;
   for (size_t j = 0; j < basis.modes.size(); ++j) {
     const Mode& mode = *basis.modes[j];
@@ -287,20 +317,20 @@ ModalTerms modal_terms(const ModalBasis& basis, const SeparableLoad& p, int dof)
     // response at its largest DOF, and most outputs of a symmetric vehicle skip most modes.
     const double at = mode.shape(dof), largest = mode.shape.cwiseAbs().maxCoeff();
     if (std::abs(at) <= kRoundOffShare * largest) continue;
-    // Likewise a modal load at round-off (response::modal_force, the direct solve's test of
-    // whether a load drives a mode): a load on the bogies' pitch meets a bounce mode only
-    // through eigensolver noise, and that noise, summed, would be the response — with an
-    // arbitrary phase — where the exact response is 0.
+    // Likewise a modal load at round-off of the source's total load (response::modal_force,
+    // the direct solve's test of whether a load drives a mode): a load on the bogies' pitch
+    // meets a bounce mode only through eigensolver noise, and that noise, summed, would be the
+    // response — with an arbitrary phase — where the exact response is 0.
     const double shape_norm = mode.shape.norm();
-    const std::complex<double> a = response::modal_force(mode, p.stiffness_part) * at;
-    const std::complex<double> b = response::modal_force(mode, p.damping_part) * at;
+    const std::complex<double> a = response::modal_force(mode, p.stiffness_part, source.stiffness) * at;
+    const std::complex<double> b = response::modal_force(mode, p.damping_part, source.damping) * at;
     if (a == 0.0 && b == 0.0) continue;  // the load does not reach this mode
     const double c = basis.damping[j], lambda = mode.eigenvalue;
     const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
     const double tolerance = undamped ? kAtResonance * lambda : -1.0;
     out.terms.push_back({a.real(), a.imag(), b.real(), b.imag(), lambda, c, tolerance, undamped});
     if (undamped && std::abs(at) > 1e-9 * largest)
-      out.resonances.push_back({lambda, tolerance, a, b, 1e-12 * std::abs(at) * shape_norm});
+      out.resonances.push_back({lambda, tolerance, a, b, response::kLoadRoundOff * std::abs(at) * shape_norm});
   }
   return out;
 }
@@ -333,9 +363,11 @@ bool flag_resonances(const std::vector<Resonance>& resonances, double q_norm_k, 
 
 // Modal superposition where it is exact: x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/(λ_j − ω² + iωc_j)
 // + s(ω)·static_o(ω).
-Kernel modal_kernel(const ModalBasis& basis, const SeparableLoad& p, int dof) {
-  const double q_norm_k = p.stiffness_part.norm(), q_norm_c = p.damping_part.norm();
-  ModalTerms modal = modal_terms(basis, p, dof);
+Kernel modal_kernel(const ModalBasis& basis, const std::vector<SeparableLoad>& parts, int k, int dof) {
+  const PartNorms source = part_norms(parts);
+  const double q_norm_k = source.stiffness, q_norm_c = source.damping;
+  const SeparableLoad& p = parts[k - 1];
+  ModalTerms modal = modal_terms(basis, p, source, dof);
   const std::complex<double> sk = massless_follower(basis, p.stiffness_part, dof);
   const std::complex<double> sc = massless_follower(basis, p.damping_part, dof);
   return [terms = std::move(modal.terms), resonances = std::move(modal.resonances), sk, sc, q_norm_k, q_norm_c](
@@ -392,16 +424,17 @@ double power(ResponseQuantity q, double omega) {
 
 // Harmonic k's response at one speed by a direct solve. Friction as equivalent viscous damping
 // also changes the input's velocity term: the load is rebuilt on the damped system.
-HarmonicResponse direct_response(const Sweep& s, int k, double speed, double omega, double scale,
+HarmonicResponse direct_response(const Sweep& s, int k, double speed, double omega, double scale, double source_load,
                                  bool equivalent_friction, double friction_reference_amplitude) {
   if (equivalent_friction) {
     const LinearSystem damped = with_equivalent_friction_damping(s.system, omega, friction_reference_amplitude);
     const HarmonicLoad load = s.source.load(damped, speed, k);
-    return harmonic_response(damped, s.modes, generalized_load(damped, load), load.frequency_hz);
+    return harmonic_response(damped, s.modes, generalized_load(damped, load), load.frequency_hz, source_load);
   }
   const SeparableLoad& p = s.parts[k - 1];
   const std::complex<double> iw(0.0, omega);
-  return harmonic_response(s.system, s.modes, scale * (p.stiffness_part + iw * p.damping_part), omega / kTwoPi);
+  return harmonic_response(s.system, s.modes, scale * (p.stiffness_part + iw * p.damping_part), omega / kTwoPi,
+                           source_load);
 }
 
 // The direct path: non-proportional damping, or friction as equivalent viscous damping.
@@ -414,11 +447,12 @@ std::vector<AmplitudeCurve> direct_curves(const Sweep& s, std::vector<AmplitudeC
     std::fill(sum.begin(), sum.end(), 0.0);
     std::fill(phase.begin(), phase.end(), 0.0);
     std::fill(unbounded.begin(), unbounded.end(), false);
+    const double source_load = source_load_at(s, speed);
     for (int k = 1; k <= s.source.harmonic_count(); ++k) {
       const double omega = kTwoPi * s.source.frequency_hz(speed, k);
       const double scale = s.source.load_scale(omega, s.parts[k - 1].reference_omega);
       const HarmonicResponse r =
-          direct_response(s, k, speed, omega, scale, equivalent_friction, friction_reference_amplitude);
+          direct_response(s, k, speed, omega, scale, source_load, equivalent_friction, friction_reference_amplitude);
       for (size_t o = 0; o < outputs.size(); ++o) {
         if (unbounded_at(r, s.modes, outputs[o].dof)) {
           unbounded[o] = true;
@@ -490,7 +524,7 @@ std::vector<AmplitudeCurve> sweep_curves(const LinearSystem& system, const Modal
   if (basis.exact && !equivalent_friction) {
     *method = "modal superposition over the undamped modes, blocks of speeds";
     return sweep_in_blocks(sweep, std::move(curves),
-                           [&](int k, int dof) { return modal_kernel(basis, sweep.parts[k - 1], dof); });
+                           [&](int k, int dof) { return modal_kernel(basis, sweep.parts, k, dof); });
   }
 
   // Discrete dampers (damping not proportional): the complex modes of the first-order form,

@@ -60,15 +60,13 @@ TEST(CriticalSpeedOptions, NeedsASpeedRangeAndSaneFloors) {
   expect_invalid(speed_range(1.0, kInf), "0 < min_speed ≤ max_speed");
   expect_invalid(speed_range(kNaN, 10.0), "0 < min_speed ≤ max_speed");
   CriticalSpeedOptions o = speed_range(1.0, 50.0);
-  o.participation_floor = -1e-9;
-  expect_invalid(o, "participation_floor must satisfy 0 ≤ participation_floor < 1");
-  o.participation_floor = 1.0;
-  expect_invalid(o, "participation_floor");
-  o = speed_range(1.0, 50.0);
   o.friction_reference_amplitude = -0.01;
   expect_invalid(o, "friction_reference_amplitude");
   o.friction_reference_amplitude = kNaN;
   expect_invalid(o, "friction_reference_amplitude");
+  o = speed_range(1.0, 50.0);
+  o.outputs = {OutputRequest{-1}};
+  expect_invalid(o, "outputs must name DOFs by their index, ≥ 0");
 }
 
 TEST(CriticalSpeedOptions, FindCriticalSpeedsThrowsTheRule) {
@@ -77,9 +75,15 @@ TEST(CriticalSpeedOptions, FindCriticalSpeedsThrowsTheRule) {
   EXPECT_EQ(invalid_argument_of([&] { find_critical_speeds(sys, modes, {}, speed_range(20.0, 10.0)); }),
             "critical speeds: need 0 < min_speed ≤ max_speed");
   CriticalSpeedOptions o = speed_range(1.0, 50.0);
-  o.participation_floor = 2.0;
+  o.friction_reference_amplitude = -1.0;
   EXPECT_EQ(invalid_argument_of([&] { find_critical_speeds(sys, modes, {}, o); }),
-            "critical speeds: participation_floor must satisfy 0 ≤ participation_floor < 1");
+            "critical speeds: friction_reference_amplitude must be 0 (friction only in the criterion) or a "
+            "positive stretch");
+  o = speed_range(1.0, 50.0);
+  o.outputs = {OutputRequest{sys.size()}};
+  EXPECT_EQ(invalid_argument_of([&] { find_critical_speeds(sys, modes, {}, o); }),
+            "critical speeds: output DOF " + std::to_string(sys.size()) + " is out of range (" +
+                std::to_string(sys.size()) + " DOFs)");
 }
 
 SimulationOptions run(double duration, double time_step) {

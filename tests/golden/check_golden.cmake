@@ -1,6 +1,7 @@
 # One golden case: runs EXE with ARGS ('|'-separated) from SOURCE_DIR, writing ACTUAL, and fails
 # unless ACTUAL equals EXPECTED byte for byte (showing the first lines of the difference). A run
-# that fails is recorded as "exit code N" and its message (as tools/update_golden.sh writes it).
+# that fails is recorded as "exit code N" and its message (as tools/update_golden.sh writes it),
+# followed by the report it wrote if any (a failed fft-check writes its whole report).
 cmake_minimum_required(VERSION 3.25)  # IN_LIST
 string(REPLACE "|" ";" args "${ARGS}")
 get_filename_component(dir "${ACTUAL}" DIRECTORY)
@@ -14,7 +15,11 @@ endif()
 execute_process(COMMAND "${EXE}" ${args} WORKING_DIRECTORY "${SOURCE_DIR}" RESULT_VARIABLE code
                 OUTPUT_QUIET ERROR_VARIABLE err)
 if(NOT code EQUAL 0)
-  file(WRITE "${ACTUAL}" "exit code ${code}\n${err}")
+  set(report "")
+  if(EXISTS "${ACTUAL}")
+    file(READ "${ACTUAL}" report)
+  endif()
+  file(WRITE "${ACTUAL}" "exit code ${code}\n${err}${report}")
 endif()
 if(NOT EXISTS "${EXPECTED}")
   message(FATAL_ERROR "no golden file ${EXPECTED}: run tools/update_golden.sh and review the new file")

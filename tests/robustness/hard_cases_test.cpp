@@ -697,6 +697,48 @@ displacement = ")" + lift + "\"\n"));
   const TimeHistory stiff = run("0.0001 mm", "60 mm");
   EXPECT_LT(stiff.events.size(), 40u);
   EXPECT_TRUE(swings(stiff, 0).turning_values.size() >= 3);
+
+// A cosine dip as long as the rail (the default, the book's eq. (163)) has only a fundamental:
+// its 2nd and 3rd Fourier coefficients are sin(kπ)/(kπ)-like round-off, ~1e-17 of the first.
+// Judged against their own (round-off) load they used to "drive" every mode, listing critical
+// speeds with a growth of 1e-31 mm that "needs 3.8e31× the input" and marking the curves
+// unbounded there. Judged against the source's total load (response::kLoadRoundOff) they
+// drive nothing: only harmonic 1 is listed, and the curves are bounded at the speeds where the
+// higher harmonics meet the modes (the wagon has no viscous damping, so a driven resonance
+// would be flagged unbounded: the flag is the test).
+TEST(HardCases, HarmonicsThatAreRoundOffOfTheirSourceDriveNothing) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("two_axle_freight_wagon.toml")), DofSet::vertical);
+  const ModalResult modes = solve_modes(sys);
+  RailJoints joints;
+  joints.rail_length = 25.0;
+  joints.dip_depth = 0.005;
+  joints.harmonics = 3;
+  const auto source = make_source(joints);
+  CriticalSpeedOptions options;
+  options.min_speed = 20.0 / 3.6;
+  options.max_speed = 150.0 / 3.6;
+  const std::vector<CriticalSpeed> found = find_critical_speeds(sys, modes, {source.get()}, options);
+  ASSERT_FALSE(found.empty());  // the fundamental meets body pitch at 127 km/h
+  std::vector<double> higher;   // where harmonics 2 and 3 meet the modes
+  for (const Mode& m : modes.modes)
+    for (int k = 2; k <= 3; ++k) higher.push_back(source->speed_for(m.frequency_hz, k));
+  for (const CriticalSpeed& c : found) {
+    EXPECT_EQ(c.harmonic, 1) << c.mode_name << " at " << c.speed * 3.6 << " km/h, growth " << c.growth_per_half_period;
+    EXPECT_GT(c.growth_per_half_period, 1e-6);  // real resonances grow by a fraction of a mm or mrad
+  }
+  std::vector<OutputRequest> outputs{{sys.index_of("body.bounce")}, {sys.index_of("body.pitch")}};
+  for (const AmplitudeCurve& c : amplitude_curves(sys, modes, *source, 0, outputs, higher))
+    for (size_t i = 0; i < c.speeds.size(); ++i)
+      EXPECT_FALSE(c.unbounded[i]) << c.output << " at " << c.speeds[i] * 3.6 << " km/h";
+  for (double v : higher) {  // the direct solve, given the source's total load √(Σ‖Q_k‖²)
+    std::vector<Eigen::VectorXcd> Q;
+    double total = 0.0;
+    for (int k = 1; k <= 3; ++k) Q.push_back(generalized_load(sys, source->load(sys, v, k)));
+    for (const auto& q : Q) total += q.squaredNorm();
+    for (int k = 1; k <= 3; ++k)
+      EXPECT_FALSE(harmonic_response(sys, modes, Q[k - 1], source->frequency_hz(v, k), std::sqrt(total)).unbounded)
+          << "harmonic " << k << " at " << v * 3.6 << " km/h";
+  }
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // is "not excited", never an "ok" read off round-off, and each excited mode is checked on a
 // DOF where it moves.
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include "railmodal/railmodal.hpp"
@@ -74,6 +75,51 @@ TEST(FftCheck, EveryModeIsCheckedWhereItMoves) {
     ASSERT_TRUE(c.peak_hz) << c.mode_name;
     EXPECT_TRUE(c.within_resolution) << c.mode_name << ": " << *c.peak_hz << " against " << c.modal_hz;
   }
+}
+
+// Issue 17 item 9: a short record of a friction scene used to pass as "ok" — the two-axle
+// wagon at 75 km/h over 10 m joints (the bundled Example 3 scene) cut to 1.5 s gave peaks 16 %
+// and 18 % off the modes, each "within the resolution" because its line was 0.9–1.4 Hz wide.
+// A nonlinear check is held to FftCheck::kNonlinearTolerance and must resolve it: this record
+// cannot, and the verdict says FAILED; the report says what was compared and within what.
+TEST(FftCheck, ShortFrictionRecordFailsWithAStatedTolerance) {
+  std::string text;
+  {
+    std::ifstream in(data("scenes/two_axle_freight_wagon_joints_friction.toml"));
+    std::stringstream all;
+    all << in.rdbuf();
+    text = all.str();
+  }
+  const auto replace = [&text](const std::string& from, const std::string& to) {
+    const size_t at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  };
+  replace("duration = \"3 s\"", "duration = \"1.5 s\"");
+  replace("\"../vehicles/two_axle_freight_wagon.toml\"", "\"" + data("vehicles/two_axle_freight_wagon.toml") + "\"");
+  const Scene scene = load_scene(write_temp("short_friction.toml", text));
+  const FftCheckResult r = fft_check(scene, load_vehicle(scene.vehicle_file));
+  EXPECT_TRUE(r.nonlinear);
+  EXPECT_FALSE(r.passed);
+  for (const FftCheck& c : r.checks) {
+    EXPECT_EQ(c.tolerance, FftCheck::kNonlinearTolerance);
+    EXPECT_FALSE(c.passed) << c.mode_name;
+    EXPECT_GT(c.resolution_hz, c.tolerance * c.modal_hz) << c.mode_name;  // why: not resolved
+  }
+  std::ostringstream table;
+  write_fft_check(table, r, scene, load_vehicle(scene.vehicle_file), OutputFormat::table);
+  EXPECT_NE(table.str().find("within 5.0 %"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("FAILED: not resolved"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("verdict: FAILED (2 of 2 checks)"), std::string::npos) << table.str();
+}
+
+// A linear release holds its line within the line's width: the verdict passes.
+TEST(FftCheck, LinearReleasePassesItsVerdict) {
+  const Scene scene = load_scene(data("scenes/resort_car_free_response.toml"));
+  const FftCheckResult r = fft_check(scene, load_vehicle(scene.vehicle_file));
+  EXPECT_FALSE(r.nonlinear);
+  EXPECT_TRUE(r.passed);
+  for (const FftCheck& c : r.checks) EXPECT_TRUE(c.passed) << c.mode_name;
 }
 
 }  // namespace

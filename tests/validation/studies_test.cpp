@@ -72,10 +72,13 @@ TEST(Studies, ResortCarAgainstFetteCarComesOutAsTheBookCompares) {
   for (const auto& c : fette.critical_speeds)
     antiphase_grows |= c.mode_name == "bogies bounce, antiphase" && !c.friction_stops && std::abs(c.speed * 3.6 - 306.3) < 0.1;
   EXPECT_TRUE(antiphase_grows);
+  // The in-phase bogie bounce (306.0 km/h) lies 0.08 % below it: the two grow together
+  // (the friction criterion judges the cluster, issue 17 item 6), so the unbounded deflection is
+  // met at one of the two speeds.
   ASSERT_FALSE(fette.deflections.empty());
   for (const auto& d : fette.deflections) {
     EXPECT_TRUE(d.unbounded) << d.element;
-    EXPECT_NEAR(d.speed * 3.6, 306.3, 0.1) << d.element;
+    EXPECT_NEAR(d.speed * 3.6, 306.15, 0.2) << d.element;  // 306.0 or 306.3, to the 0.1 of the rows
   }
 }
 

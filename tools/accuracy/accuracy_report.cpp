@@ -58,7 +58,10 @@ std::string fix(double v, int decimals) {
 void modal_truncation(const std::string& title, const LinearSystem& system, const ExcitationSource& source,
                       double vmin, double vmax) {
   const ModalResult modes = solve_modes(system);
-  const auto rows = find_critical_speeds(system, modes, {&source}, {vmin, vmax});
+  CriticalSpeedOptions range;
+  range.min_speed = vmin;
+  range.max_speed = vmax;
+  const auto rows = find_critical_speeds(system, modes, {&source}, range);
   std::vector<std::pair<double, Eigen::VectorXcd>> loads;
   for (const auto& r : rows) {
     const HarmonicLoad load = source.load(system, r.speed, r.harmonic);

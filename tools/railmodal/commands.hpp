@@ -7,7 +7,8 @@
 namespace railmodal::cli {
 
 /// Exit codes (docs/product: 0 success, 2 usage, 3 input, 4 numerical, 5 output, 1 internal).
-enum ExitCode { kSuccess = 0, kInternal = 1, kUsage = 2, kInput = 3, kNumerical = 4, kOutput = 5 };
+// kCheckFailed: the run and its report are complete, and the check they report failed (fft-check).
+enum ExitCode { kSuccess = 0, kInternal = 1, kUsage = 2, kInput = 3, kNumerical = 4, kOutput = 5, kCheckFailed = 6 };
 
 /// Registers `modes` on the app; the returned function runs it after parsing.
 std::function<int()> add_modes_command(CLI::App& app);

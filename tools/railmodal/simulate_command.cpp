@@ -55,15 +55,19 @@ void write_simulation(const SimulateOptions& o, const Scene& scene, const Vehicl
   if (spectra) write_spectra(*spectra, output_spectra(h, scene), OutputFormat::csv);
 }
 
-// Everything one run writes, into the streams of its outputs (spectra: null when not asked).
-void write_run(const SimulateOptions& o, bool check, const Scene& scene, const Vehicle& vehicle, std::ostream& text,
+// Everything one run writes, into the streams of its outputs (spectra: null when not asked);
+// false when an fft-check fails (its report says which checks and why).
+bool write_run(const SimulateOptions& o, bool check, const Scene& scene, const Vehicle& vehicle, std::ostream& text,
                std::ostream* spectra) {
   try {
-    if (check)
-      write_fft_check(text, fft_check(scene, vehicle, o.memory_limit_gb * 1e9), scene, vehicle,
-                      *output_format_from_string(o.format), provenance_of({o.scene, scene.vehicle_file}));
-    else
+    if (!check) {
       write_simulation(o, scene, vehicle, text, spectra);
+      return true;
+    }
+    const FftCheckResult result = fft_check(scene, vehicle, o.memory_limit_gb * 1e9);
+    write_fft_check(text, result, scene, vehicle, *output_format_from_string(o.format),
+                    provenance_of({o.scene, scene.vehicle_file}));
+    return result.passed;
   } catch (const std::invalid_argument& e) {
     throw InputError(o.scene, 0, 0, e.what());
   }
@@ -78,9 +82,13 @@ int run(const SimulateOptions& o, bool check) {
     Vehicle vehicle;
     if (const int code = load(o, &scene, &vehicle); code != kSuccess) return code;
     outputs.refuse_inputs({o.scene, scene.vehicle_file});
-    write_run(o, check, scene, vehicle, text, spectra);
+    const bool passed = write_run(o, check, scene, vehicle, text, spectra);
     outputs.commit();
-    return kSuccess;
+    if (passed) return kSuccess;
+    std::cerr << o.scene
+              << ": fft-check FAILED: a spectral peak is outside its tolerance or not resolved (see the "
+                 "report's verdict)\n";
+    return kCheckFailed;
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
     return kInput;
