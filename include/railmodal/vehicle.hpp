@@ -81,10 +81,12 @@ struct LoadDeflectionCurve {
   double stiffness_at(double p) const;
 };
 
-/// One stage of springs in parallel: `count` identical springs of `stiffness` each.
+/// One stage of springs in parallel: `count` identical springs of `stiffness` each. Different
+/// springs side by side (a file's `parallel = [...]`, nested coils) are one spring whose
+/// stiffness is their sum.
 struct SpringStage {
   std::string kind;        ///< "leaf", "coil", "elliptic", "direct", ... (for reports)
-  double stiffness = 0.0;  ///< N/m, of one spring
+  double stiffness = 0.0;  ///< N/m, of one spring (of one set of different springs)
   int count = 1;           ///< identical springs side by side in this stage
   /// Relative friction coefficient φ of a leaf spring (Marié): the friction force as a
   /// fraction of the load the spring carries, R = c(1 ± φ)(f ± z) (springs digest §2.3).
