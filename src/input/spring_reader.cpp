@@ -15,10 +15,9 @@ const std::vector<std::string> kLeafGeometry = {"length", "leaf_width", "leaf_th
                                                 "full_length_leaves", "modulus"};
 const std::vector<std::string> kEllipticGeometry = {"length", "leaf_width", "leaf_thickness",
                                                     "leaves", "rows", "modulus"};
-const std::vector<std::string> kOneSpring = {"stiffness",         "flexibility",   "static_deflection",
-                                             "load_deflection",   "mean_radius",   "mean_diameter",
-                                             "shackle_inclination", "free_camber", "relative_friction",
-                                             "leaf_friction",     "load"};
+const std::vector<std::string> kOneSpring = {
+    "stiffness",           "flexibility", "static_deflection", "load_deflection", "mean_radius", "mean_diameter",
+    "shackle_inclination", "free_camber", "relative_friction", "leaf_friction",   "load"};
 
 bool any_of(const TableReader& t, const std::vector<std::string>& keys) {
   for (const auto& k : keys)
@@ -162,12 +161,14 @@ SpringStage read_parallel_spring(TableReader& t) {
   if (t.has("parallel")) t.fail("parallel", "springs in parallel are listed once, not nested");
   for (const char* key : {"load_deflection", "relative_friction", "leaf_friction"})
     if (t.has(key))
-      t.fail(key, "a spring in parallel with others is taken as linear and without friction; give it as a "
-                  "stage of its own (in series) or give its stiffness");
+      t.fail(key,
+             "a spring in parallel with others is taken as linear and without friction; give it as a "
+             "stage of its own (in series) or give its stiffness");
   for (const char* key : {"static_deflection", "shackle_inclination"})
     if (t.has(key) && !t.has("load"))
-      t.fail(key, "needs the load this spring carries (`load`): springs in parallel share the element's load "
-                  "by their stiffness, so the element's load does not say");
+      t.fail(key,
+             "needs the load this spring carries (`load`): springs in parallel share the element's load "
+             "by their stiffness, so the element's load does not say");
   return read_spring_stage(t, std::nullopt);
 }
 
@@ -186,8 +187,9 @@ SpringStage read_parallel_stage(TableReader& t) {
   SpringStage stage;
   const std::string misplaced = one_spring_key(t);
   if (!misplaced.empty())
-    t.fail(misplaced, "conflicts with parallel: a stage of springs in parallel takes its stiffness from the "
-                      "springs it lists; move this key into one of them");
+    t.fail(misplaced,
+           "conflicts with parallel: a stage of springs in parallel takes its stiffness from the "
+           "springs it lists; move this key into one of them");
   std::vector<TableReader> springs = t.tables("parallel");
   if (springs.size() < 2)
     t.fail("parallel", "lists " + std::to_string(springs.size()) +

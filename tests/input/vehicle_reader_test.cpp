@@ -267,8 +267,10 @@ TEST(VehicleReader, ParallelSpringsSumWithinAStage) {
   const double expected = 1.0 / (1.0 / (1000 * kKgfPerCm) + 1.0 / (2 * 1920 * kKgfPerCm));
   EXPECT_NEAR(series_stiffness(stages) / expected, 1.0, 1e-14);
   // A set of different kinds says so; each spring's count multiplies it.
-  const Vehicle mixed = load_vehicle(write_temp("mixed.toml", with_spring(
-      R"(spring = { parallel = [{ kind = "leaf", stiffness = "1000 kgf/cm" }, { stiffness = "200 kgf/cm", count = 3 }] })")));
+  const Vehicle mixed = load_vehicle(write_temp(
+      "mixed.toml",
+      with_spring(
+          R"(spring = { parallel = [{ kind = "leaf", stiffness = "1000 kgf/cm" }, { stiffness = "200 kgf/cm", count = 3 }] })")));
   EXPECT_EQ(mixed.elements[0].vertical_stages.at(0).kind, "leaf + spring");
   EXPECT_NEAR(mixed.elements[0].vertical_stages[0].stiffness / (1600 * kKgfPerCm), 1.0, 1e-14);
 }
@@ -278,7 +280,8 @@ TEST(VehicleReader, ParallelSpringErrors) {
   auto error = [&](const std::string& spring, const std::vector<std::string>& parts) {
     expect_error(R"(spring = { kind = "coil", stiffness = "1000 kgf/cm" })", spring, parts);
   };
-  error("spring = { parallel = [" + one + "] }", {"bad.toml:11:23:", "key 'suspension.spring.parallel'", "at least two"});
+  error("spring = { parallel = [" + one + "] }",
+        {"bad.toml:11:23:", "key 'suspension.spring.parallel'", "at least two"});
   error("spring = { parallel = [] }", {"key 'suspension.spring.parallel'", "lists 0 spring(s)"});
   error("spring = { parallel = 5 }", {"key 'suspension.spring.parallel'", "expected a table or an array of tables"});
   error("spring = { stiffness = \"9 kgf/cm\", parallel = [" + one + ", " + one + "] }",
@@ -294,8 +297,9 @@ TEST(VehicleReader, ParallelSpringErrors) {
   error("spring = { parallel = [" + one + ", " + one + "], relative_friction = 0.1 }",
         {"key 'suspension.spring.relative_friction'", "conflicts with parallel"});
   // A spring given by static deflection under its own load is well defined.
-  const Vehicle v = load_vehicle(write_temp("deflection.toml", with_spring(
-      "spring = { parallel = [" + one + R"(, { static_deflection = "20 mm", load = "1000 kgf" }] })")));
+  const Vehicle v = load_vehicle(write_temp(
+      "deflection.toml",
+      with_spring("spring = { parallel = [" + one + R"(, { static_deflection = "20 mm", load = "1000 kgf" }] })")));
   EXPECT_NEAR(v.elements[0].vertical_stages.at(0).stiffness / (1920 * kKgfPerCm), 1.0, 1e-14);
 }
 

@@ -110,7 +110,7 @@ TEST(BogieWagonBounce, KhaninCarWithNestedAxleboxSpringsV5) {
   const Vehicle v = load_vehicle(write_temp("khanin_nested.toml", text));
   const auto r = solve_modes(assemble(v, DofSet::vertical));
   EXPECT_NEAR(k2(r, "bogies bounce, in phase") / 6239.8, 1.0, 1e-4);  // book prints 6219
-  EXPECT_NEAR(k2(r, "body bounce") / 119.96, 1.0, 1e-4);               // book prints 119
+  EXPECT_NEAR(k2(r, "body bounce") / 119.96, 1.0, 1e-4);              // book prints 119
 }
 
 // Single suspension (unsprung bogie frames, Diamond type): the body bounces on the cradle
