@@ -305,3 +305,60 @@ TEST(VehicleReader, ParallelSpringErrors) {
 
 }  // namespace
 }  // namespace railmodal::test
+
+namespace railmodal::test {
+namespace {
+
+// Longitudinal motion freed in a file (issue 17 item 11): `free = ["longitudinal"]` on a body,
+// [draw_gear] to hold it, and the errors of each form.
+const std::string kDrawGear = R"(free = ["longitudinal"]
+[draw_gear]
+spacing = "12 m"
+height = "0.6 m"
+spring = { stiffness = "2 MN/m" }
+longitudinal_damping = "10 kN*s/m"
+[suspension])";
+
+TEST(VehicleReader, FreedLongitudinalMotionWithDrawGear) {
+  std::string text = kGood;
+  text.replace(text.find("[suspension]"), 12, kDrawGear);
+  const Vehicle v = load_vehicle(write_temp("draw_gear.toml", text));
+  EXPECT_TRUE(v.bodies.at(0).longitudinal_free);
+  ASSERT_EQ(v.elements.size(), 6u);
+  const Element& front = v.elements[0];
+  EXPECT_EQ(front.name, "front draw gear");
+  EXPECT_EQ(front.point, Eigen::Vector3d(6.0, 0.0, 0.6));
+  EXPECT_EQ(front.longitudinal_stages.at(0).stiffness, 2e6);
+  EXPECT_EQ(front.longitudinal_damping, 1e4);
+  const LinearSystem s = assemble(v, DofSet::vertical);
+  EXPECT_GE(s.index_of("body.longitudinal"), 0);
+  EXPECT_EQ(s.track_inputs.size(), 4u);  // the draw gear is no wheel
+}
+
+TEST(VehicleReader, FreedLongitudinalMotionErrors) {
+  std::string text = kGood;
+  text.replace(text.find("[suspension]"), 12, kDrawGear);
+  auto error = [&](const std::string& from, const std::string& to, const std::vector<std::string>& parts) {
+    std::string bad = text;
+    bad.replace(bad.find(from), from.size(), to);
+    try {
+      load_vehicle(write_temp("bad.toml", bad));
+      FAIL() << "no error for " << to;
+    } catch (const InputError& e) {
+      for (const auto& part : parts) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+  };
+  error("free = [\"longitudinal\"]", "free = [\"bounce\"]",
+        {"bad.toml:8:", "key 'body.free'", "'bounce' is free unless held"});
+  error("free = [\"longitudinal\"]", "free = [\"surge\"]", {"key 'body.free'", "unknown motion 'surge'"});
+  error("free = [\"longitudinal\"]\n", "", {"key 'draw_gear'", "its longitudinal motion is held"});
+  error("spring = { stiffness = \"2 MN/m\" }\n", "", {"key 'draw_gear.spring'", "missing"});
+  error("height = \"0.6 m\"\n", "", {"key 'draw_gear.height'", "missing"});
+  error(
+      "[draw_gear]\nspacing = \"12 m\"\nheight = \"0.6 m\"\nspring = { stiffness = \"2 MN/m\" }\n"
+      "longitudinal_damping = \"10 kN*s/m\"\n",
+      "", {"key 'body'", "nothing holds it longitudinally: add [draw_gear]"});
+}
+
+}  // namespace
+}  // namespace railmodal::test
