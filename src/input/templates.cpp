@@ -191,8 +191,6 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   body.reference_point = {offset, 0.0, 0.0};  // O: in the axle plane below the CG (§2.2)
   body.held = {Motion::lateral, Motion::yaw};  // axlebox guides
   v->bodies.push_back(body);
-  if (!add_draw_gear(root, body, v) && body.longitudinal_free)
-    root.fail("body", "frees its longitudinal motion, but nothing holds it longitudinally: add [draw_gear]");
 
   TableReader s = root.table("suspension");
   const double a1 = s.positive("wheelbase", Quantity::length) / 2.0;
@@ -219,6 +217,8 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   if (s.has("spring") && s.has("front_spring") && s.has("rear_spring"))
     s.fail("spring", "unused: front_spring and rear_spring are both given");
   s.finish();
+  if (!add_draw_gear(root, body, v) && body.longitudinal_free)
+    root.fail("body", "frees its longitudinal motion, but nothing holds it longitudinally: add [draw_gear]");
 }
 
 void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {

@@ -325,7 +325,7 @@ TEST(VehicleReader, FreedLongitudinalMotionWithDrawGear) {
   const Vehicle v = load_vehicle(write_temp("draw_gear.toml", text));
   EXPECT_TRUE(v.bodies.at(0).longitudinal_free);
   ASSERT_EQ(v.elements.size(), 6u);
-  const Element& front = v.elements[0];
+  const Element& front = v.elements[4];  // after the four springs
   EXPECT_EQ(front.name, "front draw gear");
   EXPECT_EQ(front.point, Eigen::Vector3d(6.0, 0.0, 0.6));
   EXPECT_EQ(front.longitudinal_stages.at(0).stiffness, 2e6);
