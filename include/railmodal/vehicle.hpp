@@ -18,6 +18,7 @@
 //     body.centre_of_gravity = {0.0, 0.0, 1.0};
 //     body.reference_point = {0.0, 0.0, 0.0};  // pitch and roll about the axle plane
 //     body.held = {railmodal::Motion::lateral, railmodal::Motion::yaw};
+//     body.longitudinal_free = false;  // the default: surge held, pitch about the reference point
 //     v.bodies.push_back(body);
 //     for (double x : {-1.9, 1.9})
 //       for (double y : {-0.8, 0.8}) {
