@@ -20,20 +20,22 @@
 
 namespace railmodal {
 
-/// Which motions to keep: vertical = bounce and pitch; lateral = lateral, roll and yaw.
+/// Which motions to keep: vertical = bounce and pitch (and longitudinal, where a body frees
+/// it); lateral = lateral, roll and yaw.
 enum class DofSet { vertical, lateral, all };
 const char* to_string(DofSet set);
 std::optional<DofSet> dof_set_from_string(const std::string& word);
 
 /// One degree of freedom: a motion of a body's reference point.
 struct Dof {
-  std::string label;  ///< "<body>.<motion>", e.g. "body.bounce", "bogie1.pitch"
+  std::string label;  ///< "<body>.<motion>", e.g. "body.bounce", "bogie1.pitch", "body.longitudinal"
   int body = 0;       ///< index into the vehicle's bodies; -1 for matrices read from files
   Motion motion = Motion::bounce;
 };
 
 /// An element whose lower end rides on the track (a wheel, through its axlebox springs):
-/// where a displacement of the track enters. A track displacement u (longitudinal, lateral,
+/// where a displacement of the track enters. An element on the ground that resists only
+/// longitudinal motion (draw gear to the rest of the train) is not one. A track displacement u (longitudinal, lateral,
 /// vertical, m) at `point` loads the degrees of freedom with
 /// Q = load_per_displacement · u + load_per_velocity · u̇.
 struct TrackInput {

@@ -18,6 +18,7 @@
 //     body.centre_of_gravity = {0.0, 0.0, 1.0};
 //     body.reference_point = {0.0, 0.0, 0.0};  // pitch and roll about the axle plane
 //     body.held = {railmodal::Motion::lateral, railmodal::Motion::yaw};
+//     body.longitudinal_free = false;  // the default: surge held, pitch about the reference point
 //     v.bodies.push_back(body);
 //     for (double x : {-1.9, 1.9})
 //       for (double y : {-0.8, 0.8}) {
@@ -41,11 +42,12 @@
 
 namespace railmodal {
 
-/// The five motions of a body that railmodal models. Longitudinal motion is not a degree of
-/// freedom: the book's wagons are held longitudinally by the axlebox guides and draw gear.
-enum class Motion { lateral, bounce, roll, pitch, yaw };
+/// The motions of a body's reference point. Longitudinal motion (surge) is held unless the
+/// body frees it (Body::longitudinal_free): the book's wagons are held longitudinally by the
+/// axlebox guides and draw gear, and their pitch is taken about the reference point.
+enum class Motion { lateral, bounce, roll, pitch, yaw, longitudinal };
 
-/// "lateral", "bounce", "roll", "pitch", "yaw".
+/// "lateral", "bounce", "roll", "pitch", "yaw", "longitudinal".
 const char* to_string(Motion motion);
 /// Inverse of to_string; returns std::nullopt for an unknown word.
 std::optional<Motion> motion_from_string(const std::string& word);
@@ -66,6 +68,12 @@ struct Body {
   /// Motions of the reference point held rigidly against the track (axlebox guides,
   /// side bearers): those degrees of freedom are removed.
   std::vector<Motion> held;
+  /// Whether the reference point moves longitudinally (a degree of freedom "<name>.longitudinal",
+  /// resisted by the elements' longitudinal stages and damping: draw gear, traction rods,
+  /// axlebox guides). Held by default: pitch is then about the reference point, with the
+  /// inertia J + m·d² of a CG a height d above it; freed, the results do not depend on where
+  /// the reference point is.
+  bool longitudinal_free = false;
 };
 
 /// Load–deflection curve of one progressive spring (the Khanin conical spring, springs digest
@@ -81,10 +89,12 @@ struct LoadDeflectionCurve {
   double stiffness_at(double p) const;
 };
 
-/// One stage of springs in parallel: `count` identical springs of `stiffness` each.
+/// One stage of springs in parallel: `count` identical springs of `stiffness` each. Different
+/// springs side by side (a file's `parallel = [...]`, nested coils) are one spring whose
+/// stiffness is their sum.
 struct SpringStage {
   std::string kind;        ///< "leaf", "coil", "elliptic", "direct", ... (for reports)
-  double stiffness = 0.0;  ///< N/m, of one spring
+  double stiffness = 0.0;  ///< N/m, of one spring (of one set of different springs)
   int count = 1;           ///< identical springs side by side in this stage
   /// Relative friction coefficient φ of a leaf spring (Marié): the friction force as a
   /// fraction of the load the spring carries, R = c(1 ± φ)(f ± z) (springs digest §2.3).
@@ -115,16 +125,18 @@ struct Element {
   Eigen::Vector3d point{0.0, 0.0, 0.0};  ///< m, vehicle frame
   std::vector<SpringStage> vertical_stages;  ///< in series; empty: no vertical stiffness
   std::vector<SpringStage> lateral_stages;   ///< in series; empty: no lateral stiffness
-  /// In series; resists the longitudinal motion that yaw and pitch give the point (the
-  /// reference points themselves are held longitudinally).
+  /// In series; resists the longitudinal motion of the point: what yaw and pitch give it, and
+  /// the longitudinal motion of a body that frees it (a spring a height h below the reference
+  /// point couples that body's surge and pitch).
   std::vector<SpringStage> longitudinal_stages;
   std::optional<SwingHanger> hanger;  ///< lateral pendulum stiffness, in series with the
                                       ///< lateral stages when both are given
   /// Roll, pitch and yaw stiffness against the relative rotation of the two bodies, N·m/rad
   /// (an anti-roll bar is a roll stiffness between body and bogie).
   Eigen::Vector3d rotational_stiffness{0.0, 0.0, 0.0};
-  double vertical_damping = 0.0;  ///< N·s/m (viscous; carried in C)
-  double lateral_damping = 0.0;   ///< N·s/m
+  double vertical_damping = 0.0;      ///< N·s/m (viscous; carried in C)
+  double lateral_damping = 0.0;       ///< N·s/m
+  double longitudinal_damping = 0.0;  ///< N·s/m
 };
 
 /// A vehicle: bodies, elements and the gravity they stand in.

@@ -1,5 +1,7 @@
 #include "input/body_reader.hpp"
 
+#include "railmodal/vehicle.hpp"
+
 namespace railmodal::input {
 
 double read_mass(TableReader& t, double gravity) {
@@ -32,6 +34,16 @@ Eigen::Vector3d read_inertia(TableReader& t, double mass) {
   }
   sub.finish();
   return inertia;
+}
+
+bool read_longitudinal_free(TableReader& t) {
+  if (!t.has("free")) return false;
+  for (const auto& word : t.strings("free"))
+    if (word != "longitudinal")
+      t.fail("free", motion_from_string(word)
+                         ? "'" + word + "' is free unless held; only longitudinal motion is held unless freed"
+                         : "unknown motion '" + word + "' (only \"longitudinal\" is held unless freed)");
+  return true;
 }
 
 }  // namespace railmodal::input

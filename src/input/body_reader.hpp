@@ -15,4 +15,8 @@ double read_mass(TableReader& t, double gravity);
 /// (a massless rotation, condensed statically).
 Eigen::Vector3d read_inertia(TableReader& t, double mass);
 
+/// `free = ["longitudinal"]`: whether the body frees its longitudinal motion, the one motion
+/// held unless freed (false when absent).
+bool read_longitudinal_free(TableReader& t);
+
 }  // namespace railmodal::input

@@ -1,5 +1,6 @@
 #include "input/spring_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -14,6 +15,9 @@ const std::vector<std::string> kLeafGeometry = {"length", "leaf_width", "leaf_th
                                                 "full_length_leaves", "modulus"};
 const std::vector<std::string> kEllipticGeometry = {"length", "leaf_width", "leaf_thickness",
                                                     "leaves", "rows", "modulus"};
+const std::vector<std::string> kOneSpring = {
+    "stiffness",           "flexibility", "static_deflection", "load_deflection", "mean_radius", "mean_diameter",
+    "shackle_inclination", "free_camber", "relative_friction", "leaf_friction",   "load"};
 
 bool any_of(const TableReader& t, const std::vector<std::string>& keys) {
   for (const auto& k : keys)
@@ -140,9 +144,72 @@ void read_leaf_friction(TableReader& t, const std::optional<model::LeafSpringGeo
   }
 }
 
+// The first key of `t` that describes one spring (its stiffness, geometry, load or friction),
+// which a stage of springs in parallel takes from the springs it lists instead; "" for none.
+std::string one_spring_key(const TableReader& t) {
+  for (const auto* keys : {&kCoilGeometry, &kLeafGeometry, &kEllipticGeometry, &kOneSpring})
+    for (const auto& k : *keys)
+      if (t.has(k)) return k;
+  return "";
+}
+
+// One spring of a parallel set. The set's springs deflect together and share its load by
+// their stiffness, so the element's load does not say what one of them carries (a spring
+// given by static deflection needs its own `load`), and what is not linear in the one
+// deflection they share (a progressive curve, leaf friction) is refused.
+SpringStage read_parallel_spring(TableReader& t) {
+  if (t.has("parallel")) t.fail("parallel", "springs in parallel are listed once, not nested");
+  for (const char* key : {"load_deflection", "relative_friction", "leaf_friction"})
+    if (t.has(key))
+      t.fail(key,
+             "a spring in parallel with others is taken as linear and without friction; give it as a "
+             "stage of its own (in series) or give its stiffness");
+  for (const char* key : {"static_deflection", "shackle_inclination"})
+    if (t.has(key) && !t.has("load"))
+      t.fail(key,
+             "needs the load this spring carries (`load`): springs in parallel share the element's load "
+             "by their stiffness, so the element's load does not say");
+  return read_spring_stage(t, std::nullopt);
+}
+
+// "coil", or "coil + leaf" for a mixed set: each kind once, in the order given.
+std::string join_kinds(const std::vector<std::string>& kinds) {
+  std::string joined;
+  for (size_t i = 0; i < kinds.size(); ++i)
+    if (std::find(kinds.begin(), kinds.begin() + i, kinds[i]) == kinds.begin() + i)
+      joined += (joined.empty() ? "" : " + ") + kinds[i];
+  return joined;
+}
+
+// A stage of different springs side by side (nested coil springs): `parallel = [{...}, ...]`,
+// c = Σ cᵢ (springs digest eq. (25)), with the stage's own `kind` and `count` (sets of them).
+SpringStage read_parallel_stage(TableReader& t) {
+  SpringStage stage;
+  const std::string misplaced = one_spring_key(t);
+  if (!misplaced.empty())
+    t.fail(misplaced,
+           "conflicts with parallel: a stage of springs in parallel takes its stiffness from the "
+           "springs it lists; move this key into one of them");
+  std::vector<TableReader> springs = t.tables("parallel");
+  if (springs.size() < 2)
+    t.fail("parallel", "lists " + std::to_string(springs.size()) +
+                           " spring(s): springs in parallel are at least two (one spring is a stage of its own)");
+  std::vector<std::string> kinds;
+  for (auto& s : springs) {
+    const SpringStage one = read_parallel_spring(s);
+    stage.stiffness += one.stiffness * one.count;
+    kinds.push_back(one.kind);
+  }
+  stage.kind = t.optional_string("kind").value_or(join_kinds(kinds));
+  stage.count = t.optional_count("count", 1).value_or(1);
+  t.finish();
+  return stage;
+}
+
 }  // namespace
 
 SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load) {
+  if (t.has("parallel")) return read_parallel_stage(t);
   SpringStage stage;
   stage.kind = t.optional_string("kind").value_or("spring");
   stage.count = t.optional_count("count", 1).value_or(1);

@@ -13,6 +13,33 @@ namespace {
 void read_damping(TableReader& t, Element* e) {
   e->vertical_damping = t.optional_positive("vertical_damping", Quantity::damping, true).value_or(0.0);
   e->lateral_damping = t.optional_positive("lateral_damping", Quantity::damping, true).value_or(0.0);
+  e->longitudinal_damping = t.optional_positive("longitudinal_damping", Quantity::damping, true).value_or(0.0);
+}
+
+// [draw_gear]: a coupling at each end of the body, `spacing` apart at `height` above the axle
+// plane, holding the body longitudinally against the rest of the train taken as fixed (the
+// ground). Only a body whose longitudinal motion is free has one. Returns whether it is given.
+bool add_draw_gear(TableReader& root, const Body& body, Vehicle* v) {
+  if (!root.has("draw_gear")) return false;
+  TableReader t = root.table("draw_gear");
+  if (!body.longitudinal_free)
+    root.fail("draw_gear",
+              "pulls the body longitudinally, but its longitudinal motion is held: add "
+              "free = [\"longitudinal\"] to [body]");
+  const double half_spacing = t.positive("spacing", Quantity::length) / 2.0;
+  const double height = t.quantity("height", Quantity::length);
+  for (int end : {+1, -1}) {
+    Element e;
+    e.name = end > 0 ? "front draw gear" : "rear draw gear";
+    e.upper = body.name;
+    e.point = {body.reference_point.x() + end * half_spacing, 0.0, height};
+    e.longitudinal_stages = read_spring_stages(t, "spring", std::nullopt);
+    if (e.longitudinal_stages.empty()) t.fail("spring", "missing: the draw gear's spring stages");
+    e.longitudinal_damping = t.optional_positive("longitudinal_damping", Quantity::damping, true).value_or(0.0);
+    v->elements.push_back(e);
+  }
+  t.finish();
+  return true;
 }
 
 // The sprung parts of a bogie (frame, bolster, cradle), one per end, from [bogie]; without
@@ -23,6 +50,7 @@ struct BogieFrame {
   double cg_height = 0.0;       // h1, above the axle plane
   double half_wheelbase = 0.0;  // l2
   double bolster = 0.0;         // height of the bolster plane
+  bool longitudinal_free = false;
 };
 
 BogieFrame read_bogie_frame(TableReader& root, bool sprung, double gravity) {
@@ -34,6 +62,7 @@ BogieFrame read_bogie_frame(TableReader& root, bool sprung, double gravity) {
     f.cg_height = g.quantity("cg_height", Quantity::length);
     f.half_wheelbase = g.positive("wheelbase", Quantity::length) / 2.0;
     f.bolster = g.optional_quantity("bolster_height", Quantity::length).value_or(0.0);
+    f.longitudinal_free = read_longitudinal_free(g);
     g.finish();
   } else if (root.has("bogie")) {  // unsprung bogie frames: only the bolster height matters
     TableReader g = root.table("bogie");
@@ -76,6 +105,7 @@ Body bogie_body(const BogieEnd& end, const BogieFrame& f, const TableReader& pri
   const bool lateral = pri.has("lateral"), longitudinal = pri.has("longitudinal");
   if (!lateral) bogie.held.push_back(Motion::lateral);  // wheelsets guide the frame
   if (!lateral && !longitudinal) bogie.held.push_back(Motion::yaw);
+  bogie.longitudinal_free = f.longitudinal_free;
   return bogie;
 }
 
@@ -130,6 +160,20 @@ void add_anti_roll_bar(const Secondary& s, const BogieEnd& end, double bolster, 
   v->elements.push_back(bar);
 }
 
+// A bogie wagon's body or bogie frames that free their longitudinal motion need something
+// that holds them longitudinally, or the freed motion is a rigid-body mode.
+void check_longitudinal_support(TableReader& root, const Body& body, const BogieFrame& frame, const TableReader& sec,
+                                const std::optional<TableReader>& pri) {
+  if (body.longitudinal_free && !sec.has("longitudinal") && !root.has("draw_gear"))
+    root.fail("body",
+              "frees its longitudinal motion, but nothing holds it longitudinally: give [secondary] "
+              "longitudinal stages or add [draw_gear]");
+  if (frame.longitudinal_free && !pri->has("longitudinal"))
+    root.fail("bogie",
+              "frees the bogie frames' longitudinal motion, but nothing holds them longitudinally: give "
+              "[primary] longitudinal stages");
+}
+
 }  // namespace
 
 void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
@@ -141,6 +185,7 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   body.inertia = read_inertia(b, body.mass);
   const double l = b.quantity("cg_height", Quantity::length);  // CG above the axle plane
   const double offset = b.optional_quantity("cg_offset", Quantity::length).value_or(0.0);
+  body.longitudinal_free = read_longitudinal_free(b);
   b.finish();
   body.centre_of_gravity = {offset, 0.0, l};
   body.reference_point = {offset, 0.0, 0.0};  // O: in the axle plane below the CG (§2.2)
@@ -172,6 +217,8 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   if (s.has("spring") && s.has("front_spring") && s.has("rear_spring"))
     s.fail("spring", "unused: front_spring and rear_spring are both given");
   s.finish();
+  if (!add_draw_gear(root, body, v) && body.longitudinal_free)
+    root.fail("body", "frees its longitudinal motion, but nothing holds it longitudinally: add [draw_gear]");
 }
 
 void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
@@ -187,6 +234,7 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   body.inertia = read_inertia(bt, body.mass);
   const double d0 = bt.quantity("cg_height", Quantity::length);  // above the bolster plane
   const double l3 = bt.positive("bogie_spacing", Quantity::length) / 2.0;
+  body.longitudinal_free = read_longitudinal_free(bt);
   bt.finish();
 
   const bool sprung_bogies = suspension != "single";
@@ -205,6 +253,7 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   } else if (root.has("primary")) {
     root.fail("primary", "a single-suspension wagon has no primary springs (its bogie frames are unsprung)");
   }
+  check_longitudinal_support(root, body, frame, sec, pri);
 
   const double g = v->gravity;
   for (int k = 0; k < 2; ++k) {
@@ -218,6 +267,7 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
     add_cradle_springs(sec, secondary, end, frame.bolster, body.mass * g / 4.0, v);
     add_anti_roll_bar(secondary, end, frame.bolster, v);
   }
+  add_draw_gear(root, v->bodies.front(), v);
   sec.finish();
   if (pri) pri->finish();
 }

@@ -1,4 +1,5 @@
 // load_vehicle: the [vehicle] table, then a template or the general bodies-and-elements form.
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -31,9 +32,12 @@ void read_general(TableReader& root, Vehicle* v) {
     if (t.has("held"))
       for (const auto& word : t.strings("held")) {
         const auto m = motion_from_string(word);
-        if (!m) t.fail("held", "unknown motion '" + word + "' (lateral, bounce, roll, pitch, yaw)");
+        if (!m) t.fail("held", "unknown motion '" + word + "' (lateral, bounce, roll, pitch, yaw, longitudinal)");
         b.held.push_back(*m);
       }
+    b.longitudinal_free = read_longitudinal_free(t);
+    if (b.longitudinal_free && std::find(b.held.begin(), b.held.end(), Motion::longitudinal) != b.held.end())
+      t.fail("free", "longitudinal motion cannot be both free and held");
     t.finish();
     v->bodies.push_back(b);
   }
@@ -56,6 +60,7 @@ void read_general(TableReader& root, Vehicle* v) {
     e.rotational_stiffness = read_rotational_stiffness(t);
     e.vertical_damping = t.optional_positive("vertical_damping", Quantity::damping, true).value_or(0.0);
     e.lateral_damping = t.optional_positive("lateral_damping", Quantity::damping, true).value_or(0.0);
+    e.longitudinal_damping = t.optional_positive("longitudinal_damping", Quantity::damping, true).value_or(0.0);
     t.finish();
     v->elements.push_back(e);
   }

@@ -20,12 +20,13 @@ const char* to_string(Motion motion) {
     case Motion::roll: return "roll";
     case Motion::pitch: return "pitch";
     case Motion::yaw: return "yaw";
+    case Motion::longitudinal: return "longitudinal";
   }
   return "?";
 }
 
 std::optional<Motion> motion_from_string(const std::string& word) {
-  for (Motion m : {Motion::lateral, Motion::bounce, Motion::roll, Motion::pitch, Motion::yaw})
+  for (Motion m : {Motion::lateral, Motion::bounce, Motion::roll, Motion::pitch, Motion::yaw, Motion::longitudinal})
     if (word == to_string(m)) return m;
   return std::nullopt;
 }
@@ -64,7 +65,9 @@ using model::kMotionsPerBody;
 constexpr double kHalfPi = 1.57079632679489661923;
 
 bool in_set(Motion motion, DofSet set) {
-  const bool vertical = motion == Motion::bounce || motion == Motion::pitch;
+  // Longitudinal motion belongs with bounce and pitch: a CG above the reference point and a
+  // spring below it couple surge with pitch, not with the lateral motions.
+  const bool vertical = motion == Motion::bounce || motion == Motion::pitch || motion == Motion::longitudinal;
   switch (set) {
     case DofSet::vertical: return vertical;
     case DofSet::lateral: return !vertical;
@@ -87,6 +90,9 @@ void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
     if (!(body.inertia.array() >= 0.0).all() || !body.inertia.allFinite())
       throw std::invalid_argument("body '" + body.name +
                                   "': moments of inertia must be non-negative and finite");
+    if (body.longitudinal_free &&
+        std::find(body.held.begin(), body.held.end(), Motion::longitudinal) != body.held.end())
+      throw std::invalid_argument("body '" + body.name + "': longitudinal motion is both free and held");
   }
   for (const Element& e : vehicle.elements) {
     for (const std::string* end : {&e.lower, &e.upper}) {
@@ -101,6 +107,8 @@ void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
         if (!(s.stiffness > 0.0) || !std::isfinite(s.stiffness) || s.count < 1)
           throw std::invalid_argument("element '" + e.name +
                                       "': spring stiffness must be positive and finite");
+    if (!(e.longitudinal_damping >= 0.0) || !std::isfinite(e.longitudinal_damping))
+      throw std::invalid_argument("element '" + e.name + "': longitudinal damping must be non-negative and finite");
     if (!(e.rotational_stiffness.array() >= 0.0).all() || !e.rotational_stiffness.allFinite())
       throw std::invalid_argument("element '" + e.name + "': rotational stiffness must be non-negative and finite");
     if (e.hanger && (!(e.hanger->length > 0.0) || std::abs(e.hanger->inclination) >= kHalfPi))
@@ -109,7 +117,7 @@ void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
   }
 }
 
-// Full coordinates: five motions per body, body-major.
+// Full coordinates: six motions per body, body-major.
 struct Layout {
   int bodies;
   int size() const { return bodies * kMotionsPerBody; }
@@ -140,11 +148,19 @@ void add_element(const ElementMap& m, const Eigen::Vector3d& k, Eigen::MatrixXd*
   struct Side { int body; const model::PointMap* map; double sign; };
   const Side sides[2] = {{m.upper, &m.up, 1.0}, {m.lower, &m.low, -1.0}};
   const Eigen::Matrix3d kd = k.asDiagonal();
+  constexpr int kFive = kMotionsPerBody - 1;  // the motions before longitudinal
+  constexpr int kAlong = kFive;               // the longitudinal motion's index
   for (const Side& a : sides)
     for (const Side& b : sides) {
       if (a.body < 0 || b.body < 0) continue;
-      K->block<kMotionsPerBody, kMotionsPerBody>(a.body * kMotionsPerBody, b.body * kMotionsPerBody) +=
-          a.sign * b.sign * a.map->transpose() * kd * *b.map;
+      const int ra = a.body * kMotionsPerBody, cb = b.body * kMotionsPerBody;
+      // The five motions by themselves, as they were assembled before longitudinal motion was
+      // a degree of freedom: the same products of 3 × 5 maps, so a vehicle that frees no surge
+      // gets its matrices bit for bit as before (a 3 × 6 product sums in another order).
+      const Eigen::Matrix<double, 3, kFive> a5 = a.map->leftCols<kFive>(), b5 = b.map->leftCols<kFive>();
+      K->block<kFive, kFive>(ra, cb) += a.sign * b.sign * a5.transpose() * kd * b5;
+      K->block<kMotionsPerBody, 1>(ra, cb + kAlong) += a.sign * b.sign * a.map->transpose() * kd * b.map->col(kAlong);
+      K->block<1, kFive>(ra + kAlong, cb) += a.sign * b.sign * a.map->col(kAlong).transpose() * kd * b5;
     }
 }
 
@@ -160,20 +176,29 @@ void add_rotational(const ElementMap& m, const Eigen::Vector3d& k, Eigen::Matrix
 }
 
 // Vertical relative displacement of the element's point for full coordinates q.
+// Longitudinal motion moves no point vertically: the five motions before it, summed as 3 × 5
+// maps were before it existed (bit for bit the same loads).
 double vertical_stretch(const ElementMap& m, const Eigen::VectorXd& q) {
-  double dz = m.up.row(2).dot(q.segment<kMotionsPerBody>(m.upper * kMotionsPerBody));
-  if (m.lower >= 0) dz -= m.low.row(2).dot(q.segment<kMotionsPerBody>(m.lower * kMotionsPerBody));
+  constexpr int kFive = kMotionsPerBody - 1;
+  const Eigen::Matrix<double, 3, kFive> up = m.up.leftCols<kFive>();
+  double dz = up.row(2).dot(q.segment<kFive>(m.upper * kMotionsPerBody));
+  if (m.lower >= 0) {
+    const Eigen::Matrix<double, 3, kFive> low = m.low.leftCols<kFive>();
+    dz -= low.row(2).dot(q.segment<kFive>(m.lower * kMotionsPerBody));
+  }
   return dz;
 }
 
-// Keep the motions that are not held.
+// Keep the motions that are not held; longitudinal motion only where the body frees it.
 std::vector<int> free_coordinates(const Vehicle& v, const Layout& layout) {
   std::vector<int> free;
   for (int b = 0; b < layout.bodies; ++b)
     for (int m = 0; m < kMotionsPerBody; ++m) {
-      const auto& held = v.bodies[b].held;
-      if (std::find(held.begin(), held.end(), static_cast<Motion>(m)) == held.end())
-        free.push_back(Layout::index(b, static_cast<Motion>(m)));
+      const Body& body = v.bodies[b];
+      const auto motion = static_cast<Motion>(m);
+      if (motion == Motion::longitudinal && !body.longitudinal_free) continue;
+      if (std::find(body.held.begin(), body.held.end(), motion) == body.held.end())
+        free.push_back(Layout::index(b, motion));
     }
   return free;
 }
@@ -249,7 +274,7 @@ FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string,
                 {series_stiffness(e.longitudinal_stages), lateral, series_stiffness(e.vertical_stages)},
                 &f.K_springs);
     add_rotational(f.maps.back(), e.rotational_stiffness, &f.K_springs);
-    add_element(f.maps.back(), {0.0, e.lateral_damping, e.vertical_damping}, &f.C);
+    add_element(f.maps.back(), {e.longitudinal_damping, e.lateral_damping, e.vertical_damping}, &f.C);
   }
   return f;
 }
@@ -313,6 +338,14 @@ Eigen::MatrixXd element_vertical_map(const std::vector<ElementMap>& maps, const 
   return map;
 }
 
+// An element on the ground that resists only longitudinal motion (draw gear to the rest of the
+// train, a traction rod) is no wheel: the track's displacement does not reach it.
+bool pulls_only_along(const Element& e) {
+  return (!e.longitudinal_stages.empty() || e.longitudinal_damping > 0.0) && e.vertical_stages.empty() &&
+         e.lateral_stages.empty() && !e.hanger && e.vertical_damping == 0.0 && e.lateral_damping == 0.0 &&
+         e.rotational_stiffness.isZero(0.0);
+}
+
 // Where the track's displacement enters: the final stiffness of each track element
 // (hangers included) and its damping, seen from the kept coordinates of its upper body.
 std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const std::vector<ElementMap>& maps,
@@ -321,10 +354,10 @@ std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const std::vector<E
   std::vector<TrackInput> inputs;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
-    if (!e.lower.empty()) continue;
+    if (!e.lower.empty() || pulls_only_along(e)) continue;
     const Eigen::Vector3d stiffness(series_stiffness(e.longitudinal_stages), model::lateral_stiffness(e, loads[k]),
                                     series_stiffness(e.vertical_stages));
-    const Eigen::Vector3d damping(0.0, e.lateral_damping, e.vertical_damping);
+    const Eigen::Vector3d damping(e.longitudinal_damping, e.lateral_damping, e.vertical_damping);
     TrackInput input;
     input.element = static_cast<int>(k);
     input.point = e.point;

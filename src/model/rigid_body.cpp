@@ -11,7 +11,7 @@ Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
   return m;
 }
 
-// The five motions as columns of the six rigid-body velocities (vx vy vz ωx ωy ωz).
+// The motions as columns of the six rigid-body velocities (vx vy vz ωx ωy ωz).
 Eigen::Matrix<double, 6, kMotionsPerBody> motion_basis() {
   Eigen::Matrix<double, 6, kMotionsPerBody> b = Eigen::Matrix<double, 6, kMotionsPerBody>::Zero();
   b(1, 0) = 1.0;  // lateral
@@ -19,6 +19,7 @@ Eigen::Matrix<double, 6, kMotionsPerBody> motion_basis() {
   b(3, 2) = 1.0;  // roll
   b(4, 3) = 1.0;  // pitch
   b(5, 4) = 1.0;  // yaw
+  b(0, 5) = 1.0;  // longitudinal
   return b;
 }
 

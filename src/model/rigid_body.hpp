@@ -1,6 +1,6 @@
-// Small-displacement kinematics of a rigid body whose degrees of freedom are the five
-// motions (lateral, bounce, roll, pitch, yaw) of a reference point; longitudinal motion of
-// the reference point is held (see Motion).
+// Small-displacement kinematics of a rigid body whose degrees of freedom are the six
+// motions (lateral, bounce, roll, pitch, yaw, longitudinal) of a reference point; the
+// longitudinal one is a degree of freedom only where the body frees it (see Motion).
 #pragma once
 
 #include <Eigen/Core>
@@ -9,7 +9,7 @@
 
 namespace railmodal::model {
 
-constexpr int kMotionsPerBody = 5;  // lateral, bounce, roll, pitch, yaw — order of Motion
+constexpr int kMotionsPerBody = 6;  // lateral, bounce, roll, pitch, yaw, longitudinal — order of Motion
 using BodyVector = Eigen::Matrix<double, kMotionsPerBody, 1>;
 using BodyMatrix = Eigen::Matrix<double, kMotionsPerBody, kMotionsPerBody>;
 using PointMap = Eigen::Matrix<double, 3, kMotionsPerBody>;

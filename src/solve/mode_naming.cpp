@@ -15,19 +15,25 @@ namespace {
 using model::BodyVector;
 using model::kMotionsPerBody;
 
-// Word for each energy term at the CG; longitudinal CG motion belongs to pitch.
+// Word for each energy term at the CG; longitudinal CG motion belongs to pitch unless the
+// body's longitudinal motion is a degree of freedom.
 enum Term { kLateral, kVertical, kLongitudinal, kRoll, kPitch, kYaw, kTerms };
 
 struct BodyEnergy {
   double total = 0.0;
   std::array<double, kTerms> term{};
-  BodyVector motion = BodyVector::Zero();  // the body's five motions in this mode
+  BodyVector motion = BodyVector::Zero();  // the body's motions in this mode
 };
 
 BodyEnergy energy_of(const Body& body, const BodyVector& q) {
   BodyEnergy e;
   e.motion = q;
-  const Eigen::Vector3d cg = model::point_map(body, body.centre_of_gravity) * q;
+  // The five motions before longitudinal as a 3 × 5 product (the same sums as before it
+  // existed), then the longitudinal one, +0 where it is held.
+  constexpr int kFive = kMotionsPerBody - 1;
+  const model::PointMap map = model::point_map(body, body.centre_of_gravity);
+  const Eigen::Matrix<double, 3, kFive> five = map.leftCols<kFive>();
+  const Eigen::Vector3d cg = five * q.head<kFive>() + map.col(kFive) * q(kFive);
   const Eigen::Vector3d rotation(q(2), q(3), q(4));
   e.term[kLongitudinal] = 0.5 * body.mass * cg.x() * cg.x();
   e.term[kLateral] = 0.5 * body.mass * cg.y() * cg.y();
@@ -101,11 +107,13 @@ std::string sway_word(const Body& body, const BodyEnergy& e, std::optional<Centr
 }
 
 LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const BodyEnergy& e) {
-  // Longitudinal CG motion comes from pitching about a point off the CG; lateral CG motion
-  // and roll are one sway, whichever of the two is larger.
+  // Longitudinal CG motion of a body whose surge is held comes from pitching about a point off
+  // the CG; lateral CG motion and roll are one sway, whichever of the two is larger.
   std::array<double, kTerms> t = e.term;
-  t[kPitch] += t[kLongitudinal];
-  t[kLongitudinal] = 0.0;
+  if (system.index_of(body.name + ".longitudinal") < 0) {  // held surge: the CG's longitudinal motion is pitch
+    t[kPitch] += t[kLongitudinal];
+    t[kLongitudinal] = 0.0;
+  }
   t[kRoll] += t[kLateral];
   t[kLateral] = 0.0;
   int word = 0;
@@ -122,6 +130,10 @@ LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const
     case kYaw:
       m.word = "yaw";
       m.key = Motion::yaw;
+      break;
+    case kLongitudinal:
+      m.word = "longitudinal";
+      m.key = Motion::longitudinal;
       break;
     default: {
       // A body held laterally rolls about its fixed axis (the book's side rocking) even when

@@ -27,7 +27,7 @@ void summarise_modes(const ModalResult& modes, VariantResult* r) {
 // out because the deflection is measured from the unloaded springs, as the book's f_st.
 void static_deflections(const Vehicle& vehicle, const LinearSystem& any, VariantResult* r) {
   const LinearSystem s = any.size() > 0 && std::all_of(any.dofs.begin(), any.dofs.end(), [](const Dof& d) {
-    return d.motion == Motion::bounce || d.motion == Motion::pitch;
+    return d.motion == Motion::bounce || d.motion == Motion::pitch || d.motion == Motion::longitudinal;
   }) ? any : assemble(vehicle, DofSet::vertical);
   if (s.size() == 0) return;
   Eigen::VectorXd up = Eigen::VectorXd::Zero(s.size());

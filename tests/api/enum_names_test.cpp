@@ -56,7 +56,8 @@ TEST(EnumNames, DofSet) {
 }
 
 TEST(EnumNames, Motion) {
-  expect_round_trip({Motion::lateral, Motion::bounce, Motion::roll, Motion::pitch, Motion::yaw}, motion_from_string);
+  expect_round_trip({Motion::lateral, Motion::bounce, Motion::roll, Motion::pitch, Motion::yaw, Motion::longitudinal},
+                    motion_from_string);
 }
 
 TEST(EnumNames, DipShape) {

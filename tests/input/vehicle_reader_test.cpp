@@ -239,3 +239,126 @@ TEST(VehicleReader, LoadDeflectionCurveErrors) {
 
 }  // namespace
 }  // namespace railmodal::test
+
+namespace railmodal::test {
+namespace {
+
+// Springs of different stiffness side by side in one stage (nested coil springs, issue 17
+// item 3): `parallel = [...]` sums them, c = Σ cᵢ (springs digest eq. (25)); a list of
+// stages is still in series.
+const std::string kNested = R"(spring = [{ kind = "leaf", stiffness = "1000 kgf/cm" },
+          { parallel = [{ kind = "coil", stiffness = "1420 kgf/cm" }, { kind = "coil", stiffness = "500 kgf/cm" }], count = 2 }])";
+
+std::string with_spring(const std::string& spring) {
+  std::string text = kGood;
+  const std::string single = R"(spring = { kind = "coil", stiffness = "1000 kgf/cm" })";
+  return text.replace(text.find(single), single.size(), spring);
+}
+
+TEST(VehicleReader, ParallelSpringsSumWithinAStage) {
+  const Vehicle v = load_vehicle(write_temp("nested.toml", with_spring(kNested)));
+  const auto& stages = v.elements.at(0).vertical_stages;
+  ASSERT_EQ(stages.size(), 2u);
+  EXPECT_EQ(stages[1].kind, "coil");
+  EXPECT_EQ(stages[1].count, 2);
+  // 1420 + 500 = 1920 kgf/cm, the Khanin axlebox spring (bogie-wagons-natural digest Ex. 5);
+  // two sets of them in series with the leaf. Tolerance: kgf/cm → N/m rounding, a few ulp.
+  EXPECT_NEAR(stages[1].stiffness / (1920 * kKgfPerCm), 1.0, 1e-14);
+  const double expected = 1.0 / (1.0 / (1000 * kKgfPerCm) + 1.0 / (2 * 1920 * kKgfPerCm));
+  EXPECT_NEAR(series_stiffness(stages) / expected, 1.0, 1e-14);
+  // A set of different kinds says so; each spring's count multiplies it.
+  const Vehicle mixed = load_vehicle(write_temp(
+      "mixed.toml",
+      with_spring(
+          R"(spring = { parallel = [{ kind = "leaf", stiffness = "1000 kgf/cm" }, { stiffness = "200 kgf/cm", count = 3 }] })")));
+  EXPECT_EQ(mixed.elements[0].vertical_stages.at(0).kind, "leaf + spring");
+  EXPECT_NEAR(mixed.elements[0].vertical_stages[0].stiffness / (1600 * kKgfPerCm), 1.0, 1e-14);
+}
+
+TEST(VehicleReader, ParallelSpringErrors) {
+  const std::string one = R"({ kind = "coil", stiffness = "1420 kgf/cm" })";
+  auto error = [&](const std::string& spring, const std::vector<std::string>& parts) {
+    expect_error(R"(spring = { kind = "coil", stiffness = "1000 kgf/cm" })", spring, parts);
+  };
+  error("spring = { parallel = [" + one + "] }",
+        {"bad.toml:11:23:", "key 'suspension.spring.parallel'", "at least two"});
+  error("spring = { parallel = [] }", {"key 'suspension.spring.parallel'", "lists 0 spring(s)"});
+  error("spring = { parallel = 5 }", {"key 'suspension.spring.parallel'", "expected a table or an array of tables"});
+  error("spring = { stiffness = \"9 kgf/cm\", parallel = [" + one + ", " + one + "] }",
+        {"bad.toml:11:24: error: key 'suspension.spring.stiffness'", "conflicts with parallel"});
+  error("spring = { parallel = [" + one + ", { static_deflection = \"30 mm\" }] }",
+        {"key 'suspension.spring.parallel[1].static_deflection'", "needs the load this spring carries"});
+  error("spring = { parallel = [" + one + ", { kind = \"leaf\", stiffness = \"9 kgf/cm\", relative_friction = 0.1 }] }",
+        {"key 'suspension.spring.parallel[1].relative_friction'", "without friction"});
+  error("spring = { parallel = [" + one + ", { parallel = [" + one + ", " + one + "] }] }",
+        {"key 'suspension.spring.parallel[1].parallel'", "not nested"});
+  error("spring = { parallel = [" + one + ", { kind = \"coil\" }] }",
+        {"key 'suspension.spring.parallel[1].stiffness'", "missing"});
+  error("spring = { parallel = [" + one + ", " + one + "], relative_friction = 0.1 }",
+        {"key 'suspension.spring.relative_friction'", "conflicts with parallel"});
+  // A spring given by static deflection under its own load is well defined.
+  const Vehicle v = load_vehicle(write_temp(
+      "deflection.toml",
+      with_spring("spring = { parallel = [" + one + R"(, { static_deflection = "20 mm", load = "1000 kgf" }] })")));
+  EXPECT_NEAR(v.elements[0].vertical_stages.at(0).stiffness / (1920 * kKgfPerCm), 1.0, 1e-14);
+}
+
+}  // namespace
+}  // namespace railmodal::test
+
+namespace railmodal::test {
+namespace {
+
+// Longitudinal motion freed in a file (issue 17 item 11): `free = ["longitudinal"]` on a body,
+// [draw_gear] to hold it, and the errors of each form.
+const std::string kDrawGear = R"(free = ["longitudinal"]
+[draw_gear]
+spacing = "12 m"
+height = "0.6 m"
+spring = { stiffness = "2 MN/m" }
+longitudinal_damping = "10 kN*s/m"
+[suspension])";
+
+TEST(VehicleReader, FreedLongitudinalMotionWithDrawGear) {
+  std::string text = kGood;
+  text.replace(text.find("[suspension]"), 12, kDrawGear);
+  const Vehicle v = load_vehicle(write_temp("draw_gear.toml", text));
+  EXPECT_TRUE(v.bodies.at(0).longitudinal_free);
+  ASSERT_EQ(v.elements.size(), 6u);
+  const Element& front = v.elements[4];  // after the four springs
+  EXPECT_EQ(front.name, "front draw gear");
+  EXPECT_EQ(front.point, Eigen::Vector3d(6.0, 0.0, 0.6));
+  EXPECT_EQ(front.longitudinal_stages.at(0).stiffness, 2e6);
+  EXPECT_EQ(front.longitudinal_damping, 1e4);
+  const LinearSystem s = assemble(v, DofSet::vertical);
+  EXPECT_GE(s.index_of("body.longitudinal"), 0);
+  EXPECT_EQ(s.track_inputs.size(), 4u);  // the draw gear is no wheel
+}
+
+TEST(VehicleReader, FreedLongitudinalMotionErrors) {
+  std::string text = kGood;
+  text.replace(text.find("[suspension]"), 12, kDrawGear);
+  auto error = [&](const std::string& from, const std::string& to, const std::vector<std::string>& parts) {
+    std::string bad = text;
+    bad.replace(bad.find(from), from.size(), to);
+    try {
+      load_vehicle(write_temp("bad.toml", bad));
+      FAIL() << "no error for " << to;
+    } catch (const InputError& e) {
+      for (const auto& part : parts) EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    }
+  };
+  error("free = [\"longitudinal\"]", "free = [\"bounce\"]",
+        {"bad.toml:8:", "key 'body.free'", "'bounce' is free unless held"});
+  error("free = [\"longitudinal\"]", "free = [\"surge\"]", {"key 'body.free'", "unknown motion 'surge'"});
+  error("free = [\"longitudinal\"]\n", "", {"key 'draw_gear'", "its longitudinal motion is held"});
+  error("spring = { stiffness = \"2 MN/m\" }\n", "", {"key 'draw_gear.spring'", "missing"});
+  error("height = \"0.6 m\"\n", "", {"key 'draw_gear.height'", "missing"});
+  error(
+      "[draw_gear]\nspacing = \"12 m\"\nheight = \"0.6 m\"\nspring = { stiffness = \"2 MN/m\" }\n"
+      "longitudinal_damping = \"10 kN*s/m\"\n",
+      "", {"key 'body'", "nothing holds it longitudinally: add [draw_gear]"});
+}
+
+}  // namespace
+}  // namespace railmodal::test

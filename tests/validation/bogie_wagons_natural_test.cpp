@@ -4,6 +4,8 @@
 // load_vehicle → bogie template → assemble → solve_modes.
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include "test_support.hpp"
 
@@ -88,6 +90,27 @@ TEST(BogieWagonBounce, KhaninCarBothStrokesV5) {  // book prints 6219 / 119 and 
   // The progressive spring's low period is the sum of the half periods: 0.2868 + 0.3184 s.
   const double half_sum = (mode_named(down, "body bounce").period_s + mode_named(up, "body bounce").period_s) / 2;
   EXPECT_NEAR(half_sum, 0.2868 + 0.3184, 2e-4);
+}
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The Khanin car's axlebox spring c2 = 1920 kgf/cm (Ex. 5) is a nested pair of coil springs,
+// 1420 and 500 kgf/cm (issue 17 item 3): given as a parallel stage, c = Σ cᵢ (springs digest
+// eq. (25)), the car must give the digest's consistent V5a values, as the summed file does.
+TEST(BogieWagonBounce, KhaninCarWithNestedAxleboxSpringsV5) {
+  std::string text = read_text(data_file("khanin_car_downstroke.toml"));
+  const std::string summed = R"(spring = { kind = "coil", stiffness = "1920 kgf/cm" })";
+  const std::string nested = R"(spring = { parallel = [{ kind = "coil", stiffness = "1420 kgf/cm" },
+                       { kind = "coil", stiffness = "500 kgf/cm" }] })";
+  ASSERT_NE(text.find(summed), std::string::npos);
+  text.replace(text.find(summed), summed.size(), nested);
+  const Vehicle v = load_vehicle(write_temp("khanin_nested.toml", text));
+  const auto r = solve_modes(assemble(v, DofSet::vertical));
+  EXPECT_NEAR(k2(r, "bogies bounce, in phase") / 6239.8, 1.0, 1e-4);  // book prints 6219
+  EXPECT_NEAR(k2(r, "body bounce") / 119.96, 1.0, 1e-4);              // book prints 119
 }
 
 // Single suspension (unsprung bogie frames, Diamond type): the body bounces on the cradle
