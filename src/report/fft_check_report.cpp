@@ -232,8 +232,7 @@ void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene) 
 void write_csv(std::ostream& out, const FftCheckResult& r) {
   using report::csv_heading;
   out << "mode,mode_name,dof," << csv_heading("modal", "Hz") << "," << csv_heading("peak", "Hz") << ",rel_error,"
-      << csv_heading("resolution", "Hz") << ",within_resolution,excited,modal_amplitude_ratio,tolerance,passed
-"
+      << csv_heading("resolution", "Hz") << ",within_resolution,excited,modal_amplitude_ratio,tolerance,passed\n"
       << std::setprecision(10);
   for (const auto& c : r.checks)
     out << c.mode << ",\"" << c.mode_name << "\"," << c.dof << "," << c.modal_hz << ","

@@ -697,6 +697,7 @@ displacement = ")" + lift + "\"\n"));
   const TimeHistory stiff = run("0.0001 mm", "60 mm");
   EXPECT_LT(stiff.events.size(), 40u);
   EXPECT_TRUE(swings(stiff, 0).turning_values.size() >= 3);
+}
 
 // A cosine dip as long as the rail (the default, the book's eq. (163)) has only a fundamental:
 // its 2nd and 3rd Fourier coefficients are sin(kπ)/(kπ)-like round-off, ~1e-17 of the first.
