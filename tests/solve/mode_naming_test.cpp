@@ -102,6 +102,43 @@ TEST(ModeNames, SwayPairKeepsItsNamesAsTheCouplingWeakens) {
   }
 }
 
+// A body with its surge free (issue 17 item 11) has a mode that is mostly surge: it is named
+// "body longitudinal", and its pitch mode, whose CG moves longitudinally too (the draw gear
+// holds the body 0.4 m below its CG), stays "body pitch". Draw gear 2 × 8 MN/m on 20 t: surge
+// at √(1.6e7 / 2e4) / 2π ≈ 4.5 Hz, well apart from bounce (2.2 Hz) and pitch (≈ 1.6 Hz).
+TEST(ModeNames, SurgeOfABodyFreeLongitudinallyIsNamedLongitudinal) {
+  const std::string wagon = R"([vehicle]
+name = "wagon with draw gear"
+template = "two-axle"
+[body]
+weight = "20000 kgf"
+cg_height = "100 cm"
+radius_of_gyration = { roll = "110 cm", pitch = "260 cm" }
+free = ["longitudinal"]
+[suspension]
+wheelbase = "400 cm"
+spring_spacing = "200 cm"
+spring = { kind = "coil", stiffness = "1000 kgf/cm" }
+[draw_gear]
+spacing = "12 m"
+height = "0.6 m"
+spring = { stiffness = "8 MN/m" }
+)";
+  const LinearSystem system = assemble(load_vehicle(test::write_temp("draw_gear.toml", wagon)), DofSet::vertical);
+  const int surge = system.index_of("body.longitudinal");
+  ASSERT_GE(surge, 0);
+  std::vector<std::string> names;
+  for (const Mode& m : solve_modes(system).modes) {
+    names.push_back(m.name);
+    const bool mostly_surge = m.kinetic_energy_share(surge) > 0.5;
+    EXPECT_EQ(m.name == "body longitudinal", mostly_surge) << m.name;
+    if (m.name == "body pitch") {
+      EXPECT_TRUE(m.centre && m.centre->about == "pitch");
+    }
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"body pitch", "body bounce", "body longitudinal"}));
+}
+
 // MAC of two shapes weighted by the unperturbed mass matrix.
 double mac(const Eigen::MatrixXd& M, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   const double ab = a.dot(M * b);
@@ -124,9 +161,8 @@ TEST_P(NamesUnderPerturbation, NameChangesOnlyWithTheShape) {
   const std::string path = test::data_file(GetParam().file);
   const std::string text = read_text(path);
   const LinearSystem base_system = assemble(load_vehicle(path), GetParam().set);
-  if (base_system.dofs.empty()) GTEST_SKIP() << "no degrees of freedom in this set";
   const ModalResult base = solve_modes(base_system);
-  int perturbed = 0;
+  int perturbed = 0, invalid = 0;
   std::vector<std::string> failures;
   for (const auto& [at, length] : numbers_in(text)) {
     const double value = std::stod(text.substr(at, length));
@@ -135,15 +171,17 @@ TEST_P(NamesUnderPerturbation, NameChangesOnlyWithTheShape) {
       char scaled[40];
       std::snprintf(scaled, sizeof scaled, "%.15g", value * factor);
       const std::string changed = text.substr(0, at) + scaled + text.substr(at + length);
-      ModalResult r;
+      LinearSystem system;
       try {
         const std::string file = test::write_temp(std::filesystem::path(path).filename().string(), changed);
-        const LinearSystem system = assemble(load_vehicle(file), GetParam().set);
-        if (system.dofs.size() != base_system.dofs.size()) continue;
-        r = solve_modes(system);
-      } catch (const std::exception&) {
-        continue;  // an integer count scaled, or a design the change makes invalid
+        system = assemble(load_vehicle(file), GetParam().set);
+      } catch (const InputError&) {
+        ++invalid;  // an integer count scaled, or a value the change takes out of its range
+        continue;
       }
+      // A numerical failure of a design 1 % away from a bundled one is a defect: not caught.
+      ASSERT_EQ(system.dofs.size(), base_system.dofs.size()) << "'" << text.substr(at, length) << "' at offset " << at;
+      const ModalResult r = solve_modes(system);
       ++perturbed;
       for (const Mode& m : r.modes) {
         double best = 0.0;
@@ -159,16 +197,29 @@ TEST_P(NamesUnderPerturbation, NameChangesOnlyWithTheShape) {
       }
     }
   }
-  EXPECT_GE(perturbed, 8);  // the file's parameters were found and changed (the smallest file has 5)
+  // The file's parameters were found and changed: the smallest bundled file has 5 nonzero
+  // numbers (pullman_coil_spring.toml), 10 perturbations.
+  EXPECT_GE(perturbed, 10);
+  // Invalid perturbations are integer counts (leaves of a spring) and values at a bound of their
+  // range: at most 2 in a bundled file (measured: 2 of 36 to 46 in the Fette, Khanin and resort
+  // cars, 0 elsewhere). A quarter of the valid ones is well above that and well below "the reader
+  // refuses most changes", which would leave the test checking little.
+  std::printf("%s (%s): %d perturbations, %d refused as invalid input\n", GetParam().file.c_str(),
+              to_string(GetParam().set), perturbed, invalid);
+  EXPECT_LE(4 * invalid, perturbed);
   for (const auto& f : failures) ADD_FAILURE() << GetParam().file << " (" << to_string(GetParam().set) << "): " << f;
 }
 
+// Each bundled vehicle with each set of its DOFs that is not empty (a two-axle wagon held
+// laterally has no lateral set): no instance is skipped.
 std::vector<Variant> bundled_vehicles() {
   std::vector<Variant> v;
   for (const auto& entry : std::filesystem::directory_iterator(std::string(RAILMODAL_DATA_DIR) + "/vehicles"))
-    if (entry.path().extension() == ".toml")
+    if (entry.path().extension() == ".toml") {
+      const Vehicle vehicle = load_vehicle(entry.path().string());
       for (DofSet set : {DofSet::all, DofSet::vertical, DofSet::lateral})
-        v.push_back({entry.path().filename().string(), set});
+        if (!assemble(vehicle, set).dofs.empty()) v.push_back({entry.path().filename().string(), set});
+    }
   std::sort(v.begin(), v.end(), [](const Variant& a, const Variant& b) {
     return a.file != b.file ? a.file < b.file : static_cast<int>(a.set) < static_cast<int>(b.set);
   });
