@@ -149,7 +149,7 @@ struct Mode {
                                  ///< bodies, the DOF with most kinetic energy ("dof3")
   Eigen::VectorXd shape;       ///< mass-normalised: φᵀMφ = 1, over LinearSystem::dofs
   Eigen::VectorXd kinetic_energy_share;  ///< per DOF, sums to 1 (φᵢ (Mφ)ᵢ)
-  std::optional<CentreOfOscillation> centre;  ///< for pitch and roll modes
+  std::optional<CentreOfOscillation> centre;  ///< for pitch, roll and sway modes; none when repeated
   /// Another mode has the same eigenvalue (relative gap below 1e-8): only the subspace the
   /// two span is determined, not this shape on its own (symmetric bogies, for instance).
   bool repeated = false;

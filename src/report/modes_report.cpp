@@ -57,6 +57,14 @@ std::string solver_line(const ModalResult& r) {
   return line.str();
 }
 
+// A repeated mode is marked `*` unless its name already says so: "bogies pitch (repeated)".
+std::string marked(const Mode& m) {
+  const std::string says = "(repeated)";
+  const bool named =
+      m.name.size() >= says.size() && m.name.compare(m.name.size() - says.size(), says.size(), says) == 0;
+  return m.repeated && !named ? m.name + " *" : m.name;
+}
+
 void write_table(std::ostream& out, const std::string& title, const ModalResult& r) {
   out << "railmodal modes: " << title << "\n";
   out << "degrees of freedom: " << r.dofs.size();
@@ -70,8 +78,7 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
       << "f [Hz]" << std::setw(11) << "T [s]" << std::setw(12) << "ω [rad/s]" << "  "
       << "centre of oscillation\n";
   for (const auto& m : r.modes) {
-    out << report::left_cell(std::to_string(m.index), 4) << report::left_cell(m.repeated ? m.name + " *" : m.name, 34)
-        << std::right;
+    out << report::left_cell(std::to_string(m.index), 4) << report::left_cell(marked(m), 34) << std::right;
     if (m.kind == ModeKind::oscillatory) {
       out << report::right_cell(report::fixed(m.frequency_hz, 4), 11)
           << report::right_cell(report::fixed(m.period_s, 4), 11)
@@ -85,8 +92,9 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
   }
   for (const auto& m : r.modes)
     if (m.repeated) {
-      out << "\n* repeated frequency: the modes marked span a shared subspace; any combination of\n"
-             "  their shapes is an equally valid mode shape.\n";
+      out << "\n* or (repeated): repeated frequency: these modes span a shared subspace; any\n"
+             "  combination of their shapes is an equally valid mode shape, so none has a centre\n"
+             "  of oscillation.\n";
       break;
     }
   out << "\nmode shapes (mass-normalised; m and rad per √kg)\n";

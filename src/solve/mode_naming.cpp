@@ -171,7 +171,9 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
   const Body& body = bodies[lead];
   const LeadingMotion leading = leading_motion(system, body, e);
   ModeDescription d;
-  d.centre = leading.centre;
+  // A repeated mode's shape is one arbitrary member of its subspace, and so is its centre of
+  // oscillation (bogies pitch: either bogie's pivot): only a mode of its own has one.
+  if (!repeated) d.centre = leading.centre;
 
   const std::string family = family_of(body.name);
   const bool has_twin = !family.empty() && family != body.name &&

@@ -29,7 +29,8 @@ struct ModeDescription {
 ///  - otherwise "lower sway" / "upper sway" as the centre of oscillation lies below / above
 ///    the CG, however small either share (README, "Mode names").
 /// Bodies named alike but for a trailing number (bogie1, bogie2): a repeated mode led by one of
-/// them names the subspace, "bogies pitch (repeated)"; otherwise a twin with at least half the
+/// them names the subspace, "bogies pitch (repeated)"; a repeated mode has no centre of
+/// oscillation (its shape is an arbitrary member of the subspace); otherwise a twin with at least half the
 /// leader's energy names the pair and their phase: "bogies bounce, antiphase".
 /// A system without bodies (matrices read from files) is named after the DOF with the most
 /// kinetic energy φᵢ (Mφ)ᵢ, e.g. "dof3" or "body.bounce", with no centre of oscillation.

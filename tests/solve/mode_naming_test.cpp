@@ -139,6 +139,21 @@ spring = { stiffness = "8 MN/m" }
   EXPECT_EQ(names, (std::vector<std::string>{"body pitch", "body bounce", "body longitudinal"}));
 }
 
+// The Fette car's bogies pitch at one frequency: the solver's two shapes are an arbitrary basis
+// of the pair's subspace, each printed with one bogie's pivot as its centre (x = ±7 m). Only the
+// subspace is determined: one name, and no centre of oscillation.
+TEST(ModeNames, RepeatedTwinModesHaveOneNameAndNoCentre) {
+  const ModalResult r = solve_modes(assemble(load_vehicle(test::data_file("fette_car.toml")), DofSet::all));
+  int repeated = 0;
+  for (const Mode& m : r.modes) {
+    if (!m.repeated) continue;
+    ++repeated;
+    EXPECT_EQ(m.name, "bogies pitch (repeated)");
+    EXPECT_FALSE(m.centre.has_value()) << m.name << " " << m.centre->position;
+  }
+  EXPECT_EQ(repeated, 2);
+}
+
 // MAC of two shapes weighted by the unperturbed mass matrix.
 double mac(const Eigen::MatrixXd& M, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   const double ab = a.dot(M * b);
