@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "railmodal/critical_speed.hpp"
+#include "railmodal/errors.hpp"
 #include "railmodal/scene.hpp"
 #include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
@@ -48,17 +49,27 @@ namespace detail {
 struct StudySource;  // how to read each variant: the study file read and its variants (load_study.cpp)
 }
 
+/// Where a study file names a metric: its key ("ranking.min_period:body bounce",
+/// "ranking.constraints[1].metric") and line, for an error found only once the variants are
+/// evaluated (a mode name no variant has).
+struct MetricPlace {
+  std::string key;
+  KeyPlace place;
+};
+
 /// A bound on a metric (docs/studies.md lists the metrics), SI.
 struct RankingConstraint {
   std::string metric;
   std::optional<double> min;
   std::optional<double> max;
+  MetricPlace written;
 };
 
 struct RankingCriterion {
   std::string metric;
   bool maximise = false;
   double weight = 1.0;  ///< weighted objective only; SI values times weights are summed
+  MetricPlace written;
 };
 
 struct Ranking {
@@ -256,7 +267,9 @@ struct Comparison {
 };
 
 /// Ranks every variant of the study; `results` must hold each index once (from one run or
-/// merged shards). Ties keep study order.
+/// merged shards). Ties keep study order. Throws InputError naming the study file, line and
+/// key when a metric names a mode (period:<mode>, critical_speed:<mode>) that no evaluated
+/// variant has, listing the names they have: a renamed mode must not silently drop a metric.
 Comparison rank_variants(const Study& study, std::vector<VariantResult> results);
 
 /// The comparison's base design (the study's vehicle unmodified, when the study keeps it), or

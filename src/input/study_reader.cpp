@@ -264,6 +264,7 @@ void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
     RankingConstraint c;
     c.metric = canonical_metric(key.substr(4));
     check_metric(t, key, key.substr(4));
+    c.written = {t.key_path(key), t.place(key)};
     (key[1] == 'i' ? c.min : c.max) = t.quantity(key, limit_quantity(c.metric));
     ranking->constraints.push_back(c);
   }
@@ -273,6 +274,7 @@ void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
       const std::string metric = r.string("metric");
       check_metric(r, "metric", metric);
       c.metric = canonical_metric(metric);
+      c.written = {r.key_path("metric"), r.place("metric")};
       c.min = r.optional_quantity("min", limit_quantity(c.metric));
       c.max = r.optional_quantity("max", limit_quantity(c.metric));
       if (!c.min && !c.max) r.fail("metric", "a constraint needs min or max");
@@ -285,6 +287,7 @@ void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
       const std::string metric = r.string("metric");
       check_metric(r, "metric", metric);
       c.metric = canonical_metric(metric);
+      c.written = {r.key_path("metric"), r.place("metric")};
       const std::string goal = r.string("goal");
       if (goal != "min" && goal != "max") r.fail("goal", "must be \"min\" or \"max\"");
       c.maximise = goal == "max";

@@ -41,6 +41,39 @@ void check_constraints(const VariantResult& r, const Ranking& ranking, RankedVar
   for (const RankingCriterion& c : ranking.objective) v->criteria.push_back(metric_value(r, c.metric));
 }
 
+// The mode a metric names ("period:body bounce" → "body bounce"), or "" for other metrics.
+std::string mode_named(const std::string& metric) {
+  for (const std::string prefix : {"period:", "critical_speed:"})
+    if (metric.rfind(prefix, 0) == 0) return metric.substr(prefix.size());
+  return "";
+}
+
+// A metric naming a mode that no evaluated variant has is a mistake in the study (a name
+// misspelt, or an old name: "bogies pitch, in phase" became "bogies pitch (repeated)"), not a
+// violation of every variant: an error at the study's key, with the names there are. Nothing to
+// check when no variant was evaluated.
+void check_mode_names(const Study& study, const std::vector<VariantResult>& results) {
+  std::set<std::string> names;
+  bool evaluated = false;
+  for (const VariantResult& r : results)
+    if (r.ok()) {
+      evaluated = true;
+      for (const auto& m : r.modes) names.insert(m.name);
+    }
+  if (!evaluated) return;
+  auto check = [&](const std::string& metric, const MetricPlace& written) {
+    const std::string mode = mode_named(metric);
+    if (mode.empty() || names.count(mode)) return;
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
+    throw InputError(study.source, written.place.line, written.place.column,
+                     "key '" + written.key + "': no variant has a mode named '" + mode + "'; the modes are " + list +
+                         " (README, \"Mode names\")");
+  };
+  for (const RankingConstraint& c : study.ranking.constraints) check(c.metric, c.written);
+  for (const RankingCriterion& c : study.ranking.objective) check(c.metric, c.written);
+}
+
 // The variant's sort key: feasible, then infeasible, then failed; within a group the objective
 // (the weighted sum, or the criteria in order); then the study order. Sets v->objective.
 std::vector<double> rank_key(const VariantResult& r, const Ranking& ranking, RankedVariant* v) {
@@ -106,6 +139,7 @@ Comparison rank_variants(const Study& study, std::vector<VariantResult> results)
     if (results[i].index != static_cast<int>(i) || results[i].name != study.variants[i].name)
       throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
                                   "') is missing or appears twice");
+  check_mode_names(study, results);
   out.study = study.name;
   out.source = study.source;
   out.ranking = study.ranking;

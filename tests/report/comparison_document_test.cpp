@@ -190,7 +190,7 @@ TEST(ComparisonReport, HtmlIsOnePageWithItsPlotsInline) {
 
 TEST(ComparisonReport, NoFeasibleVariantIsSaidPlainly) {
   TwoAxleStudy s;
-  s.study.ranking.constraints = {{"bounce_period", 10.0, std::nullopt}};  // 10 s: no wagon
+  s.study.ranking.constraints = {{"bounce_period", 10.0, std::nullopt, {}}};  // 10 s: no wagon
   s.comparison = rank_variants(s.study, evaluate_study(s.study, {}));
   const std::string md = s.report(OutputFormat::markdown);
   EXPECT_NE(md.find("No variant meets every constraint"), std::string::npos) << md;

@@ -290,9 +290,9 @@ Study named(const std::vector<std::string>& names) {
 
 TEST(Ranking, ConstraintsThenLexicographicCriteriaThenStudyOrder) {
   Study s = named({"a", "b", "c", "d", "e"});
-  s.ranking.constraints.push_back({"lowest_critical_speed", 20.0, std::nullopt});
-  s.ranking.objective.push_back({"period:body bounce", true, 1.0});
-  s.ranking.objective.push_back({"lowest_critical_speed", true, 1.0});
+  s.ranking.constraints.push_back({"lowest_critical_speed", 20.0, std::nullopt, {}});
+  s.ranking.objective.push_back({"period:body bounce", true, 1.0, {}});
+  s.ranking.objective.push_back({"lowest_critical_speed", true, 1.0, {}});
   std::vector<VariantResult> results{result(0, "a", 0.8, 25.0), result(1, "b", 0.9, 15.0), result(2, "c", 0.8, 30.0),
                                      result(3, "d", 0.8, 30.0), result(4, "e", 1.0, 30.0)};
   results[4].failure = "unstable";
@@ -313,13 +313,38 @@ TEST(Ranking, ConstraintsThenLexicographicCriteriaThenStudyOrder) {
 TEST(Ranking, WeightedSumIsMinimised) {
   Study s = named({"a", "b"});
   s.ranking.weighted = true;
-  s.ranking.objective.push_back({"period:body bounce", true, 100.0});  // 1 s of period is worth 100 m/s
-  s.ranking.objective.push_back({"lowest_critical_speed", true, 1.0});
+  s.ranking.objective.push_back({"period:body bounce", true, 100.0, {}});  // 1 s of period is worth 100 m/s
+  s.ranking.objective.push_back({"lowest_critical_speed", true, 1.0, {}});
   const Comparison c = rank_variants(s, {result(0, "a", 1.0, 20.0), result(1, "b", 0.8, 45.0)});
   // a: −(100·1.0 + 20) = −120; b: −(80 + 45) = −125: b wins.
   EXPECT_EQ(c.variants[0].result.name, "b");
   EXPECT_DOUBLE_EQ(*c.variants[0].objective, -125.0);
   EXPECT_DOUBLE_EQ(*c.variants[1].objective, -120.0);
+}
+
+// A study written for "bogies pitch, in phase" (since renamed "bogies pitch (repeated)", issue 17
+// item 8) lost that metric silently: every variant lacked it. It is an error at the study's key.
+TEST(Ranking, AModeNoVariantHasIsAnErrorAtTheStudysKey) {
+  Study s = named({"a", "b"});
+  s.source = "study.toml";
+  s.ranking.objective.push_back({"period:body bounce", true, 1.0, {"ranking.objective[0].metric", {7, 15}}});
+  s.ranking.constraints.push_back(
+      {"period:bogies pitch, in phase", std::nullopt, 0.3, {"ranking.constraints[0].metric", {9, 17}}});
+  try {
+    rank_variants(s, {result(0, "a", 1.0, 20.0), result(1, "b", 0.8, 45.0)});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "study.toml:9:17: error: key 'ranking.constraints[0].metric': no variant has a mode named 'bogies pitch, "
+              "in phase'; the modes are 'body bounce' (README, \"Mode names\")");
+  }
+  // A name some variant has is no error; one only failed variants could have had is not checked.
+  s.ranking.constraints.back().metric = "period:body bounce";
+  EXPECT_NO_THROW(rank_variants(s, {result(0, "a", 1.0, 20.0), result(1, "b", 0.8, 45.0)}));
+  s.ranking.constraints.back().metric = "critical_speed:bogies pitch";
+  std::vector<VariantResult> failed{result(0, "a", 1.0, 20.0), result(1, "b", 0.8, 45.0)};
+  for (VariantResult& r : failed) r.failure = "unstable";
+  EXPECT_NO_THROW(rank_variants(s, failed));
 }
 
 TEST(Ranking, MissingOrDuplicateResultsAreRefused) {
