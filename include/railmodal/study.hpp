@@ -90,7 +90,9 @@ struct Ranking {
 /// undamped resonance that leaf friction does not stop exceeds every limit it stretches;
 /// otherwise leaf friction is linearised at the limit itself (docs/studies.md, "Permissible
 /// dynamic deflections"): for one mode, as in the book's (169a), that is exactly whether the
-/// friction-limited amplitude stays within the limit.
+/// friction-limited amplitude stays within the limit. That amplitude is an upper bound of
+/// where the resonance settles (it leaves out the stiffening while a series leaf holds), so the
+/// check is conservative.
 struct DeflectionRule {
   enum class Book { none, korotkevich, lehner };
   enum class Service { passenger, freight };

@@ -54,6 +54,12 @@ void read_general(TableReader& root, Vehicle* v) {
     e.point = to_vector(t.point("point"));
     const auto load = t.optional_positive("load", Quantity::force);
     e.vertical_stages = read_spring_stages(t, "vertical", load);
+    // Neither the friction criterion nor the simulation models two leaves with friction in series
+    // (which one holds and which slides at each reversal); refused here for both.
+    if (std::count_if(e.vertical_stages.begin(), e.vertical_stages.end(),
+                      [](const SpringStage& s) { return s.relative_friction > 0.0; }) > 1)
+      t.fail("vertical",
+             "two stages with leaf friction in series are not modelled; give the element one friction stage");
     e.lateral_stages = read_spring_stages(t, "lateral", load);
     e.longitudinal_stages = read_spring_stages(t, "longitudinal", load);
     if (t.has("hanger")) e.hanger = read_hanger(t);

@@ -13,10 +13,15 @@
 // A leaf alone (k_c → ∞) gives the book's 4T·X (Den Hartog). The growth criterion compares
 // slopes, πF₀ against dW/dA = 4T·share·|d| per unit modal amplitude A: the hold costs a fixed
 // stretch, not a rate, so a resonance that friction does not stop grows without bound as for
-// the leaf alone, and one that it stops still grows, from rest, until
+// the leaf alone. One that it stops cannot grow past
 //     πF₀·A = Σ 4T·share·(|d|·A − T/k_c),
-// the friction-limited amplitude (tests/validation/friction_decay_test.cpp checks it against
-// the simulated triple suspension).
+// the friction-limited amplitude, an upper bound (conservative), not the amplitude it settles
+// at: this balance keeps the damping of the hysteresis loop but not its stiffening (while the
+// leaf holds the pair is as stiff as the coils, so the in-phase stiffness rises from k_e toward
+// k_c as the stretch falls toward T/k_c), which detunes the resonance. A single mass on a leaf
+// over a coil driven over rail joints settles 4–40 % below it (tests/validation/
+// friction_decay_test.cpp, FrictionLimitedAmplitude; 34–90 % under a pure harmonic force).
+// A describing function would add that in-phase stiffness.
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -31,20 +36,22 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Friction force R = φ × load of each friction stage of element k, the stage's share
+// Friction force R = φ × load of the friction stage of element k (one at most: the vehicle
+// reader refuses two), the stage's share
 // k_element/k_stage of the element's stretch (in series every stage carries the element's force),
 // and the stretch R/k_c the other stages take alone while it holds (0 for a stage alone).
 template <typename Visit>
 void for_each_friction_stage_of(const LinearSystem& system, size_t k, Visit visit) {
   const Element& e = system.vehicle.elements[k];
   const double k_element = series_stiffness(e.vertical_stages);
-  if (!(k_element > 0.0)) return;
+  // A leaf in tension carries no friction (the law is φ × a compressive load), as in the simulation.
+  if (!(k_element > 0.0) || !(system.element_loads[k] > 0.0)) return;
   for (const SpringStage& s : e.vertical_stages)
     if (s.relative_friction > 0.0) {
       double others_flexibility = 0.0;  // 1/k_c of the other stages in series
       for (const SpringStage& o : e.vertical_stages)
         if (&o != &s) others_flexibility += 1.0 / (o.stiffness * o.count);
-      const double friction = s.relative_friction * std::abs(system.element_loads[k]);
+      const double friction = s.relative_friction * system.element_loads[k];
       visit(friction, k_element / (s.stiffness * s.count), friction * others_flexibility);
     }
 }

@@ -66,6 +66,8 @@ double NonlinearElement::sliding_leaf_deflection(double delta, int direction) co
   return coil_stiffness * delta / (coil_stiffness + leaf_stiffness);
 }
 
+namespace {
+
 // What an element's vertical stages make of it: the one friction stage (-1: none) and the
 // series stiffness of the others. Throws for what the simulation does not model.
 struct SeriesStages {
@@ -94,6 +96,8 @@ SeriesStages series_stages(const Element& e, bool friction, bool progressive) {
   if (out.friction >= 0) out.others = series_stiffness(others);
   return out;
 }
+
+}  // namespace
 
 std::vector<NonlinearElement> nonlinear_elements(const LinearSystem& system, const std::vector<HarmonicLoad>& loads,
                                                  const NonlinearEffects& effects,

@@ -304,12 +304,14 @@ class Model {
     return events;
   }
 
-  // At t = 0 a leaf in series with springs starts on the edge of its friction band toward
-  // which the pair moves: its compression rate, or from rest the acceleration the springs give
-  // it with the leaf at its frictionless share. This is the book's initial condition (the leaf
-  // slides from the release, (192e) in (196a)–(200)). A pair neither moving nor accelerated (a
-  // car standing in equilibrium) starts stuck at that share, the middle of its band.
-  std::vector<SimulationEvent> place_series_leaves(const Eigen::VectorXd& y) {
+  // At t = 0 a leaf in series with springs starts at its frictionless share of the pair's
+  // deflection. A pair released from an initial condition (its stretch or rate from
+  // [[simulation.initial]] beyond `tolerance`) starts on the edge of its friction band toward
+  // which it moves: its compression rate, or from rest the acceleration the springs give it.
+  // This is the book's initial condition (the leaf slides from the release, (192e) in
+  // (196a)–(200)). Any other pair (a car standing in equilibrium, also while the track moves
+  // under it) starts stuck in the middle of its band, as a single leaf at rest does.
+  std::vector<SimulationEvent> place_series_leaves(const Eigen::VectorXd& y, double tolerance) {
     const auto x = y.head(n_), v = y.tail(n_);
     const std::vector<int> before = state_;
     for (size_t i = 0; i < elements_.size(); ++i) {
@@ -327,7 +329,9 @@ class Model {
       elements_[i].track_motion(0.0, &u, &du, &ddu);
       const double rate = compression_rate(static_cast<int>(i), 0.0, v),
                    acceleration = -elements_[i].stretch.dot(a) + ddu;
-      const double toward = rate != 0.0 ? rate : acceleration;
+      const bool released =
+          std::abs(elements_[i].stretch.dot(x)) > tolerance || std::abs(elements_[i].stretch.dot(v)) > tolerance;
+      const double toward = !released ? 0.0 : std::abs(rate) > tolerance ? rate : acceleration;
       state_[i] = toward > 0.0 ? 1 : toward < 0.0 ? -1 : 0;
       if (state_[i] == 0) events.push_back(event(0.0, elements_[i].element, SimulationEvent::Kind::stick));
     }
@@ -453,7 +457,7 @@ class Integration {
 
   // At rest at t = 0 every friction element is a candidate for sticking.
   void start_at_rest() {
-    for (const auto& e : model_.place_series_leaves(y_)) out_.events.push_back(e);
+    for (const auto& e : model_.place_series_leaves(y_, options_.tolerance)) out_.events.push_back(e);
     std::vector<int> resting;
     for (size_t i = 0; i < model_.elements().size(); ++i)
       if (model_.elements()[i].friction > 0.0 && !model_.elements()[i].in_series() &&

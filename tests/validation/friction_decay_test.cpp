@@ -5,9 +5,12 @@
 // simulate_scene, the path `railmodal simulate` takes.
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
+#include "railmodal/critical_speed.hpp"
 #include "response/friction_damping.hpp"
 #include "test_support.hpp"
 
@@ -407,11 +410,13 @@ TEST(SeriesFrictionDecay, ResortCarTable11) {
 // (response::leaf_hold_stretch, 2.3 mm here; the energy balance πF₀A = Σ 4T·share·(|d|A − T/k_c)).
 // The joints' 2.5 mm half-dip keeps the axlebox stretch about there, so the leaves hold nearly
 // all the time and the car rides on its coils, the cradle springs (alone, 9 times the friction
-// the input needs) held from the start: the response is the forced motion of that stiffer car,
-// not a resonance. Measured: body 0.66 mm, bogies 2.37 mm; the axlebox leaves slip for 8 ms of
-// the last 15 s. Asserted: the body's bounce equal within 5 % over the last two 5 s windows (the
-// joints' beat with the residual free motion on the coils moves it by about 2 %), below 1 mm, the
-// cradle springs never slipping, the axlebox leaves slipping less than 1 % of the time after 5 s.
+// the input needs) held but for moments: the response is the forced motion of that stiffer car,
+// not a resonance. Starting in equilibrium with every leaf stuck mid-band, measured after 5 s:
+// the axlebox leaves never slip (0 ms summed over the 8; before the start was fixed, 6 of the 8
+// slid from t = 0), the cradle springs slip 110 ms summed over the 4; body 0.86 mm over 15–20 s.
+// Asserted: the body's bounce equal within 5 % over the last two 5 s windows (the joints' beat
+// with the residual free motion on the coils moves it by about 2 %), below 1 mm, the axlebox
+// leaves and the cradle springs each slipping less than 1 % of the time after 5 s.
 TEST(SeriesFrictionDecay, ResortCarAtTheJointCriticalSpeedSettles) {
   Scene s = load_scene(scenes_dir() + "resort_car_friction_38kmh.toml");
   const Vehicle v = load_vehicle(s.vehicle_file);
@@ -428,19 +433,26 @@ TEST(SeriesFrictionDecay, ResortCarAtTheJointCriticalSpeedSettles) {
   EXPECT_LT(late, 1e-3);
   const LinearSystem sys = scene_system(s, v);
   const auto& elements = sys.vehicle.elements;
+  // Slipping time after 5 s, summed over the axlebox elements and over the cradle springs (a
+  // slip still open at the end of the run counts to its end).
   std::vector<double> slipping_since(elements.size(), -1.0);
-  double slipping = 0.0;  // s, summed over the axlebox elements, after 5 s
+  double slipping = 0.0, cradle_slipping = 0.0;
+  auto close = [&](int element, double until) {
+    const double slipped = std::max(until - std::max(slipping_since[element], 5.0), 0.0);
+    (elements[element].vertical_stages.size() == 2 ? slipping : cradle_slipping) += slipped;
+    slipping_since[element] = -1.0;
+  };
   for (const SimulationEvent& e : with.events) {
-    const bool axlebox = elements[e.element].vertical_stages.size() == 2;
-    if (!axlebox) {
-      EXPECT_EQ(e.time, 0.0) << elements[e.element].name;  // a cradle spring: held from the start
-    } else if (e.kind == SimulationEvent::Kind::slip) {
+    if (e.kind == SimulationEvent::Kind::slip)
       slipping_since[e.element] = e.time;
-    } else if (e.kind == SimulationEvent::Kind::stick && slipping_since[e.element] >= 0.0) {
-      slipping += std::max(e.time - std::max(slipping_since[e.element], 5.0), 0.0);
-      slipping_since[e.element] = -1.0;
-    }
+    else if (e.kind == SimulationEvent::Kind::stick && slipping_since[e.element] >= 0.0)
+      close(e.element, e.time);
   }
+  for (size_t k = 0; k < elements.size(); ++k)
+    if (slipping_since[k] >= 0.0) close(static_cast<int>(k), with.time(with.time.size() - 1));
+  std::cout << "after 5 s: axlebox leaves slipping " << slipping * 1e3 << " ms, cradle springs "
+            << cradle_slipping * 1e3 << " ms (summed over elements); body " << late * 1e3 << " mm\n";
+  EXPECT_LT(cradle_slipping, 0.01 * 4 * 15.0);  // four cradle springs, held but for moments
   int axleboxes = 0;
   for (size_t k = 0; k < elements.size(); ++k)
     if (elements[k].vertical_stages.size() == 2) {
@@ -453,6 +465,144 @@ TEST(SeriesFrictionDecay, ResortCarAtTheJointCriticalSpeedSettles) {
   const TimeHistory without = simulate_scene(s, v);
   EXPECT_GT(amplitude(without, 0, 15.0, 20.0), 10 * late);
   EXPECT_GT(amplitude(without, 0, 15.0, 20.0), 1.2 * amplitude(without, 0, 10.0, 15.0));  // growing
+}
+
+// A single mass of 1000 kgf on a leaf (f₁ = 80 mm, φ) in series with a coil (f₂ = 40 mm), over
+// 10 m rails (1.7 m from a joint, where the track moves at t = 0): the friction-limited amplitude of docs/scenes.md,
+// πF₀A = 4T·share·(A − h), is an upper bound of where a resonance friction stops settles, not its value. Its equivalent
+// linearisation keeps the damping of the leaf-and-coil loop but not the stiffening while the
+// leaf holds (stiffness k_e rising toward k_c as X → h), which detunes the resonance. In the
+// bound's terms, g/D the growth over the decrement per half period (the critical-speed row),
+// A ≤ h/(1 − g/D), h = φf₂ the hold stretch (response::leaf_hold_stretch). Measured (the
+// resonant harmonic over 50–60 s): φ = 0.05, 2 mm dip: g/D = 0.196, bound 2.49 mm, settled
+// 1.50 mm (40 % below); φ = 0.05, 5 mm: g/D = 0.491, 3.93 mm, 3.76 mm (4 % below); φ = 0.10,
+// 5 mm: g/D = 0.245, 5.30 mm, 3.74 mm (29 % below). The bound is asserted as it stands: it
+// must never be exceeded.
+std::string leaf_over_coil_scene(double phi, double dip_mm, const std::string& initial) {
+  std::ostringstream vehicle;
+  vehicle << R"([vehicle]
+name = "leaf over coil"
+gravity = "981 cm/s^2"
+[[body]]
+name = "load"
+weight = "1000 kgf"
+inertia = { roll = "0 kg*m^2", pitch = "0 kg*m^2", yaw = "0 kg*m^2" }
+centre_of_gravity = ["1.7 m", "0 m", "0 m"]
+held = ["lateral", "roll", "pitch", "yaw"]
+[[element]]
+name = "leaf over coil"
+upper = "load"
+point = ["1.7 m", "0 m", "0 m"]
+load = "1000 kgf"
+vertical = [{ kind = "leaf", static_deflection = "80 mm", relative_friction = )"
+          << phi << R"( },
+            { kind = "coil", static_deflection = "40 mm" }]
+)";
+  write_temp("leaf_over_coil.toml", vehicle.str());
+  std::ostringstream scene;
+  scene << R"([scene]
+name = "leaf over coil on 10 m rails"
+vehicle = "leaf_over_coil.toml"
+dofs = "vertical"
+[speed]
+min = "30 km/h"
+max = "80 km/h"
+step = "0.5 km/h"
+[[source]]
+kind = "rail_joints"
+rail_length = "10 m"
+joints = "opposite"
+dip_depth = ")"
+        << dip_mm << R"( mm"
+[simulation]
+speed = "51.8 km/h"
+duration = "60 s"
+time_step = "5 ms"
+effects = ["leaf_friction"]
+)" << initial;
+  return write_temp("leaf_over_coil_scene.toml", scene.str());
+}
+
+// Amplitude of the component at ω of a DOF's displacement over whole periods from `from`
+// within `to` (trapezoidal sums at the output step, 200 samples a period here).
+double harmonic_amplitude(const TimeHistory& h, int dof, double omega, double from, double to) {
+  const double period = 2 * kPi / omega, end = from + std::floor((to - from) / period) * period;
+  std::complex<double> sum = 0.0;
+  double span = 0.0;
+  for (int i = 1; i < h.time.size(); ++i)
+    if (h.time(i - 1) >= from && h.time(i) <= end) {
+      const double dt = h.time(i) - h.time(i - 1);
+      sum += 0.5 * dt *
+             (h.displacement(i - 1, dof) * std::exp(std::complex<double>(0, -omega * h.time(i - 1))) +
+              h.displacement(i, dof) * std::exp(std::complex<double>(0, -omega * h.time(i))));
+      span += dt;
+    }
+  return 2.0 * std::abs(sum) / span;
+}
+
+struct FrictionLimited {
+  double phi, dip_mm;
+};
+class FrictionLimitedAmplitude : public ::testing::TestWithParam<FrictionLimited> {};
+
+TEST_P(FrictionLimitedAmplitude, IsAnUpperBoundOfTheSettledStretch) {
+  Scene s = load_scene(leaf_over_coil_scene(GetParam().phi, GetParam().dip_mm, ""));
+  const Vehicle v = load_vehicle(s.vehicle_file);
+  const CriticalSpeedStudy study = study_critical_speeds(s, v);
+  const CriticalSpeed* r = nullptr;
+  for (const auto& c : study.critical_speeds)
+    if (c.harmonic == 1) r = &c;
+  ASSERT_NE(r, nullptr);
+  ASSERT_TRUE(r->friction_stops);
+  const double ratio = r->growth_per_half_period / r->friction_decrement_per_half_period;
+  const double hold = response::leaf_hold_stretch(scene_system(s, v), 0);
+  EXPECT_NEAR(hold, GetParam().phi * 0.040, 1e-6);  // h = T/k_c = φP·f₂/P
+  const double bound = hold / (1.0 - ratio);
+  s.simulation->speed = r->speed;  // the frictionless resonance, 51.8 km/h
+  const TimeHistory h = simulate_scene(s, v);
+  // The resonant harmonic's amplitude (the bound's A), projected over whole periods: the
+  // joints' other harmonics add forced motion that no energy balance of one harmonic counts.
+  const double omega = 2 * kPi * r->speed / 10.0;
+  const double settled = harmonic_amplitude(h, 0, omega, 50.0, 60.0);
+  EXPECT_NEAR(settled / harmonic_amplitude(h, 0, omega, 40.0, 50.0), 1.0,
+              0.05);  // settled: two 10 s windows within 5 %
+  EXPECT_LE(settled, bound);
+  std::cout << "phi " << GetParam().phi << " dip " << GetParam().dip_mm << " mm: g/D " << ratio << ", bound "
+            << bound * 1e3 << " mm, settled " << settled * 1e3 << " mm (" << 100 * (1 - settled / bound)
+            << " % below)\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(LeafOverCoil, FrictionLimitedAmplitude,
+                         ::testing::Values(FrictionLimited{0.05, 2.0}, FrictionLimited{0.05, 5.0},
+                                           FrictionLimited{0.10, 5.0}));
+
+// A car standing in equilibrium while the track moves under it starts with each series leaf
+// stuck in the middle of its band (docs/scenes.md), whatever the track's rate at t = 0: the
+// first event of the element is a stick at t = 0. Released from a displacement given in
+// [[simulation.initial]], the leaf slides from the release (the book's initial condition).
+TEST(SeriesFrictionStart, InEquilibriumTheLeafStartsStuckReleasedItSlides) {
+  for (const bool released : {false, true}) {
+    Scene s = load_scene(leaf_over_coil_scene(
+        0.05, 5.0, released ? "[[simulation.initial]]\ndof = \"load.bounce\"\ndisplacement = \"20 mm\"\n" : ""));
+    s.simulation->duration = 1.0;
+    const TimeHistory h = simulate_scene(s, load_vehicle(s.vehicle_file));
+    const bool stuck_at_start =
+        !h.events.empty() && h.events.front().time == 0.0 && h.events.front().kind == SimulationEvent::Kind::stick;
+    EXPECT_EQ(stuck_at_start, !released) << (released ? "released" : "in equilibrium");
+  }
+}
+
+// A leaf whose static load is tension carries no friction in the frequency domain either: the
+// law is φ × a compressive load, and the simulation gives such a leaf none (issue 17, F3).
+TEST(SeriesFrictionCriterion, ALeafInTensionCarriesNoFriction) {
+  const Scene s = load_scene(leaf_over_coil_scene(0.05, 5.0, ""));
+  LinearSystem sys = scene_system(s, load_vehicle(s.vehicle_file));
+  ASSERT_TRUE(has_leaf_friction(sys));
+  EXPECT_GT(response::equivalent_friction_damping(sys, 0, 9.0, 5e-3), 0.0);
+  sys.element_loads[0] = -sys.element_loads[0];
+  EXPECT_FALSE(has_leaf_friction(sys));
+  EXPECT_EQ(response::equivalent_friction_damping(sys, 0, 9.0, 5e-3), 0.0);
+  EXPECT_EQ(response::leaf_hold_stretch(sys, 0), 0.0);
 }
 
 }  // namespace
