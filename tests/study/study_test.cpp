@@ -362,6 +362,27 @@ parameters = [{ key = "suspension.spring[0].static_deflection", from = "40 mm", 
   EXPECT_EQ(back[1].static_deflections, part[1].static_deflections);
 }
 
+// A shard records the digest of the study file it was evaluated from: merged against a study
+// file edited since, its results are of other variants, and it is refused naming the shard.
+TEST(Evaluation, ShardOfAnotherVersionOfTheStudyFileIsRefused) {
+  const std::string path = study_file("");  // the base design alone
+  const Study s = load_study(path);
+  const auto results = evaluate_study(s, {});
+  std::ostringstream current, edited;
+  write_shard(current, s, {}, results, provenance_of({path}));
+  write_shard(edited, s, {}, results, Provenance{{{path, content_digest("an earlier version")}}});
+  EXPECT_EQ(read_shard(write_temp("current_shard.json", current.str()), s).size(), 1u);
+  const std::string shard = write_temp("edited_shard.json", edited.str());
+  try {
+    read_shard(shard, s);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), shard);
+    EXPECT_NE(std::string(e.what()).find("a shard of another version of the study file"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Evaluation, UnstableVariantIsReportedAndDoesNotStopTheStudy) {
   // Pitch stiffness 4a1²c − W·l (eq. (156a)) with 4c = W/f: negative for l > a1²/f = 63 m.
   const Study s = load_study(study_file(R"(
