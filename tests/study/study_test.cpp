@@ -320,6 +320,14 @@ TEST(Ranking, WeightedSumIsMinimised) {
   EXPECT_EQ(c.variants[0].result.name, "b");
   EXPECT_DOUBLE_EQ(*c.variants[0].objective, -125.0);
   EXPECT_DOUBLE_EQ(*c.variants[1].objective, -120.0);
+  // The table says each criterion's goal and weight in one parenthesis (was "(maximised)
+  // (weight 100)").
+  std::ostringstream table;
+  write_comparison(table, c, OutputFormat::table);
+  EXPECT_NE(table.str().find("objective: period of body bounce (maximised, weight 100) + lowest critical speed "
+                             "(maximised, weight 1)\n"),
+            std::string::npos)
+      << table.str();
 }
 
 TEST(Ranking, MissingOrDuplicateResultsAreRefused) {
