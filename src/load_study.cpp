@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "input/study_reader.hpp"
+#include "study/metrics.hpp"
 #include "study/planned_variants.hpp"
 
 namespace railmodal {
@@ -63,7 +64,7 @@ StudyVariant read_variant(const Study& study, int index) {
   return input::read_variant(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), nullptr);
 }
 
-std::string parameter_label(const Study& study, const std::string& key) {
+std::string study::parameter_label(const Study& study, const std::string& key) {
   if (study.plan)
     for (const study::Sweep& sweep : study.plan->file.plan.sweeps)
       for (const study::SweepParameter& p : sweep.parameters)

@@ -42,8 +42,10 @@ void write_comparison_report(std::ostream& out, const Study& study, const Compar
                              const ComparisonCurves& curves, OutputFormat format, const Provenance& provenance = {});
 
 /// The results of one shard of a study as JSON (railmodal compare --shard), for read_shard
-/// (study.hpp) to merge: the study's name and size, the evaluation's shard, and each result.
+/// (study.hpp) to merge: the study's name and size, the evaluation's shard, each result, and
+/// `inputs`' files with their digests (provenance_of(study_files(study)), the study file first:
+/// read_shard refuses a shard of another version of the study file; none: not checked).
 void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
-                 const std::vector<VariantResult>& results);
+                 const std::vector<VariantResult>& results, const Provenance& inputs = {});
 
 }  // namespace railmodal

@@ -21,7 +21,10 @@ namespace railmodal {
 /// One input file of a run.
 struct InputFile {
   std::string path;  ///< as the user gave it: a relative path stays relative, so a page does not depend on where it ran
-  std::string digest;  ///< content_digest of the file's bytes
+  /// content_digest of the file's bytes as provenance_of read them (when the report was
+  /// written, after the run had read it: a file changed in between shows its new bytes); empty
+  /// for a path that is not a regular file (a pipe, `<(cat scene.toml)`), which is not hashed.
+  std::string digest;
 };
 
 /// The input files of a run, in the order the run read them. Reports print them in their
@@ -36,7 +39,9 @@ struct Provenance {
 std::string content_digest(std::string_view bytes);
 
 /// Each file with the digest of its content; the empty path is skipped and a path given twice is
-/// listed once. Throws InputError (file, "cannot be read") for a file that cannot be read.
+/// listed once, and one that is not a regular file is listed with an empty digest (its bytes
+/// were consumed by the run). Throws InputError (file, "cannot be read") for a file that cannot
+/// be read.
 Provenance provenance_of(const std::vector<std::string>& paths);
 
 }  // namespace railmodal

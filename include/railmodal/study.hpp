@@ -145,10 +145,6 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
 /// from the study's files (throwing InputError as load_study would).
 StudyVariant read_variant(const Study& study, int index);
 
-/// What a report calls the parameter `key` (as StudyParameter names it): the label the study
-/// gives it in a sweep ("f"), or else the last part of its key path ("static_deflection").
-std::string parameter_label(const Study& study, const std::string& key);
-
 /// The files the study is read from, whichever variants load_study read: the study file, its
 /// scene and every variant's vehicle file, each once (a program must not write over them).
 std::vector<std::string> study_files(const Study& study);
@@ -299,8 +295,9 @@ struct ComparisonCurves {
 ComparisonCurves comparison_curves(const Study& study, const Comparison& comparison, int best);
 
 /// The results of one shard read back from the JSON write_shard wrote (comparison_report.hpp),
-/// checked against the study: same name, same number of variants, each name at its index.
-/// Throws InputError naming `file`.
+/// checked against the study: same name, same number of variants, each name at its index, and,
+/// when the shard records the study file's digest (write_shard's inputs), the same bytes as the
+/// study file has now. Throws InputError naming `file`.
 std::vector<VariantResult> read_shard(const std::string& file, const Study& study);
 /// The same from a stream (a shard received over MPI, say); messages name `origin`.
 std::vector<VariantResult> read_shard(std::istream& in, const std::string& origin, const Study& study);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 
@@ -29,6 +30,13 @@ Provenance provenance_of(const std::vector<std::string>& paths) {
     if (path.empty()) continue;
     const auto listed = [&](const InputFile& f) { return f.path == path; };
     if (std::any_of(provenance.files.begin(), provenance.files.end(), listed)) continue;
+    // A pipe or a device (`<(cat scene.toml)`) was drained when the run read it: reading it
+    // again would hash nothing, or other bytes, so it is listed unhashed.
+    std::error_code ignored;
+    if (std::filesystem::exists(path, ignored) && !std::filesystem::is_regular_file(path, ignored)) {
+      provenance.files.push_back({path, ""});
+      continue;
+    }
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, 0, 0, "cannot be read");
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -7,6 +7,7 @@
 
 #include "input/input_file.hpp"
 #include "railmodal/errors.hpp"
+#include "railmodal/provenance.hpp"
 #include "railmodal/study.hpp"
 
 namespace railmodal {
@@ -53,6 +54,26 @@ VariantResult result_from_json(const json& j) {
 
 }  // namespace
 
+namespace {
+
+// A shard that records its study file's digest (write_shard's inputs, the study file first) is of
+// the study file as it is now, or its results are of variants the study no longer defines. The
+// study file is hashed as it is read now (provenance_of); one that is not a regular file, and a
+// shard that records no digest (a library caller, one sent over MPI), are not checked.
+void check_study_digest(const json& shard, const std::string& file, const Study& study) {
+  if (!shard.contains("inputs") || shard.at("inputs").empty()) return;
+  const json& recorded = shard.at("inputs").at(0);
+  const std::string then = recorded.at("digest").get<std::string>();
+  const std::string now = provenance_of({study.source}).files.at(0).digest;
+  if (!then.empty() && !now.empty() && then != now)
+    throw InputError(file, 0, 0,
+                     "a shard of another version of the study file: written from " +
+                         recorded.at("path").get<std::string>() + " (FNV-1a 64 " + then + "), " + study.source +
+                         " is now FNV-1a 64 " + now + ": evaluate the shard again");
+}
+
+}  // namespace
+
 std::vector<VariantResult> read_shard(const std::string& file, const Study& study) {
   std::ifstream in = input::open_input(file);
   return read_shard(in, file, study);
@@ -84,6 +105,7 @@ std::vector<VariantResult> read_shard(std::istream& in, const std::string& file,
     if (rule != to_string(study.deflection_rule))
       throw InputError(file, 0, 0, "a shard checked for permissible dynamic deflections by '" + rule +
                                        "', the study asks for '" + to_string(study.deflection_rule) + "'");
+    check_study_digest(j, file, study);
     for (const auto& r : j.at("results")) results.push_back(result_from_json(r));
   } catch (const json::exception& e) {
     throw InputError(file, 0, 0, std::string("a shard with missing or mistyped fields: ") + e.what());

@@ -90,7 +90,8 @@ std::string against_base(const Comparison& c, const Writer& w, const RankedVaria
   }
   b += w.text(".");
   if (!base.result.ok()) b += w.text(" The base itself failed: " + base.result.failure + ".");
-  else if (!base.feasible && !base.violations.empty()) b += w.text(" The base violates " + base.violations.front() + ".");
+  else if (!base.feasible && !base.violations.empty())
+    b += w.text(" The base violates " + study::violations(base.result, c.ranking, true).front() + ".");
   return b;
 }
 
@@ -137,8 +138,8 @@ std::string deflection_sentence(const VariantResult& r, const Writer& w) {
                   fixed(worst->speed * kKmh, 1) + " km/h.");
   return w.text(std::string(worst->kept() ? "The winner keeps" : "The winner exceeds") +
                 " the permissible dynamic deflections: at worst " +
-                significant(100.0 * worst->deflection / worst->permissible, 3) + " % of the limit (" + worst->element +
-                ", " + worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h.");
+                fixed(100.0 * worst->deflection / worst->permissible, 1) + " % of the limit (" + worst->element + ", " +
+                worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h.");
 }
 
 std::vector<std::string> verdict(const Comparison& c, const Writer& w) {
@@ -216,7 +217,8 @@ std::vector<SweptParameter> swept_parameters(const Study& study, const Compariso
     for (const auto& [key, text] : v->result.parameters) {
       const auto value = numeric(text);
       if (!position.count(key))
-        position[key] = out.size(), out.push_back({key, value ? value->second : "", parameter_label(study, key), {}});
+        position[key] = out.size(),
+        out.push_back({key, value ? value->second : "", study::parameter_label(study, key), {}});
       SweptParameter& p = out[position[key]];
       if (!value || value->second != p.unit) mixed.insert(key);
       else p.points.push_back({v, value->first});
@@ -231,8 +233,15 @@ std::vector<SweptParameter> swept_parameters(const Study& study, const Compariso
   return swept;
 }
 
+// A name with its unit: "f [mm]" in a table heading (as the text tables and CSV write it), "f
+// (mm)" on a chart's axis.
+std::string labelled(const std::string& name, const std::string& unit, bool table) {
+  if (unit.empty()) return name;
+  return name + (table ? " [" + unit + "]" : " (" + unit + ")");
+}
+
 // The parameter as the study names it, with the unit its values are written in: "f (mm)".
-std::string axis_label(const SweptParameter& p) { return p.label + (p.unit.empty() ? "" : " (" + p.unit + ")"); }
+std::string axis_label(const SweptParameter& p, bool table) { return labelled(p.label, p.unit, table); }
 
 // A sweep's heading: its label, and the key path it sets (for the reader who looks it up).
 std::string parameter_heading(const SweptParameter& p, const Writer& w) {
@@ -265,13 +274,14 @@ std::optional<double> ranked_value(const RankedVariant& v, const Ranking& rankin
 bool is_ratio(const std::string& metric) { return study::title(metric).find("/ permissible") != std::string::npos; }
 
 // The axis (and column) of the value ranked first, its unit at the end: "period of body bounce
-// (s)", "largest dynamic deflection (% of permissible)".
-std::string ranked_label(const Ranking& ranking) {
+// (s)", "largest dynamic deflection (% of permissible)" ("[s]", "[% of permissible]" in a table).
+std::string ranked_label(const Ranking& ranking, bool table) {
   if (ranking.objective.empty()) return "";
-  if (ranking.weighted) return "weighted objective (weights × SI values)";
+  if (ranking.weighted) return labelled("weighted objective", "weights × SI values", table);
   const std::string& metric = ranking.objective.front().metric;
-  if (is_ratio(metric)) return study::title(metric).substr(0, study::title(metric).find(" / ")) + " (% of permissible)";
-  return study::heading(metric);
+  if (is_ratio(metric))
+    return labelled(study::title(metric).substr(0, study::title(metric).find(" / ")), "% of permissible", table);
+  return labelled(study::title(metric), study::display_unit(metric).unit, table);
 }
 
 double ranked_scale(const Ranking& ranking) {
@@ -304,7 +314,7 @@ void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vecto
     report::Chart periods;
     periods.id = "sweep-periods-" + std::to_string(k + 1);
     periods.title = "Periods against " + p.label;
-    periods.x_label = axis_label(p);
+    periods.x_label = axis_label(p, false);
     periods.y_label = "period (s)";
     for (const std::string& mode : modes) {
       report::ChartSeries s;
@@ -321,8 +331,8 @@ void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vecto
       objective.id = "sweep-objective-" + std::to_string(k + 1);
       objective.title = c.ranking.weighted ? "Weighted objective against " + p.label
                                            : "Objective against " + p.label + ": " + goal(c.ranking.objective.front());
-      objective.x_label = axis_label(p);
-      objective.y_label = ranked_label(c.ranking);
+      objective.x_label = axis_label(p, false);
+      objective.y_label = ranked_label(c.ranking, false);
       report::ChartSeries feasible, infeasible;
       feasible.label = "feasible", infeasible.label = "infeasible";
       feasible.markers_only = infeasible.markers_only = true;
@@ -381,9 +391,9 @@ Table sweep_table(const Comparison& c, const SweptParameter& p, const VariantRes
       if (const auto T = period_of(v->result, modes[m])) row.periods[m].add(*T);
   }
   Table t;
-  t.headers = {axis_label(p), "variants", "feasible"};
-  if (!c.ranking.objective.empty()) t.headers.push_back(ranked_label(c.ranking));
-  for (const auto& m : modes) t.headers.push_back("T " + m + " (s)");
+  t.headers = {axis_label(p, true), "variants", "feasible"};
+  if (!c.ranking.objective.empty()) t.headers.push_back(ranked_label(c.ranking, true));
+  for (const auto& m : modes) t.headers.push_back("T " + m + " [s]");
   t.numeric.assign(t.headers.size(), true);
   for (int b = 0; b < bins; ++b) {
     if (rows[b].variants == 0) continue;
@@ -538,7 +548,7 @@ Table deflection_table(const Comparison& c) {
                         worst->element + stage + (count > 1 ? ", worst of " + std::to_string(count) : ""),
                         worst->unbounded
                             ? "unbounded: a resonance friction does not stop"
-                            : significant(100.0 * worst->deflection / worst->permissible, 3) + " % of permissible",
+                            : fixed(100.0 * worst->deflection / worst->permissible, 1) + " % of permissible",
                         fixed(worst->speed * kKmh, 1) + " km/h, source " + std::to_string(worst->source + 1),
                         worst->kept() ? "within the limit" : "exceeds the limit"});
     }

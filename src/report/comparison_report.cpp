@@ -134,39 +134,50 @@ std::string criterion_heading(const RankingCriterion& c) {
   return std::string(c.maximise ? "max " : "min ") + c.metric + (unit.empty() ? "" : " [" + unit + "]");
 }
 
-// For people: the metric as the docs name it and how it is ranked, "period of body bounce (s),
-// maximised"; CSV keeps the metric's name (criterion_heading).
+// For people: the metric as the docs name it and how it is ranked, "period of body bounce,
+// maximised [s]" (the unit last, as in every table heading); CSV keeps the metric's name
+// (criterion_heading).
 std::string criterion_title(const RankingCriterion& c) {
-  return study::heading(c.metric) + (c.maximise ? ", maximised" : ", minimised");
+  return study::title(c.metric) + (c.maximise ? ", maximised" : ", minimised") + study::unit_bracket(c.metric);
 }
 
-// The worst dynamic deflection against the permissible one, in words: "33 % of permissible
-// (within)", "130 % of permissible (exceeds)".
+// The worst dynamic deflection against the permissible one, in words, to one decimal: "33.0 %
+// of permissible (within)", "130.2 % of permissible (exceeds)".
 std::string deflection_verdict(double ratio) {
   if (std::isinf(ratio)) return "unbounded (exceeds)";
-  return number(100.0 * ratio, "%.3g") + " % of permissible" + (ratio <= 1.0 ? " (within)" : " (exceeds)");
+  return number(100.0 * ratio, "%.1f") + " % of permissible" + (ratio <= 1.0 ? " (within)" : " (exceeds)");
 }
 
 std::optional<double> body_deflection(const VariantResult& r) { return metric_value(r, "static_deflection"); }
+
+// The header: the table's names for people, the CSV's for programs (metric names, units in
+// brackets, the extra columns).
+std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
+  std::vector<std::string> head{"rank", "variant", "feasible"};
+  if (for_csv) head.push_back("objective");
+  for (const auto& k : c.ranking.objective) head.push_back(for_csv ? criterion_heading(k) : criterion_title(k));
+  const bool deflections = c.deflection_rule.active();
+  if (!for_csv) {
+    for (const char* h : {"lowest critical speed [km/h]", "static deflection [mm]"}) head.push_back(h);
+    if (deflections) head.push_back("largest dynamic deflection");
+    head.push_back("periods [s]");
+    return head;
+  }
+  head.push_back(report::csv_heading("lowest_critical_speed", "km/h"));
+  head.push_back(report::csv_heading("static_deflection", "mm"));
+  if (deflections) head.push_back("dynamic_deflection_ratio");
+  head.push_back(report::csv_heading("periods", "s"));
+  head.push_back(report::csv_heading("critical_speeds", "km/h"));
+  for (const char* h : {"failure", "violations"}) head.push_back(h);
+  return head;
+}
 
 }  // namespace
 
 std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& c, bool for_csv) {
   std::vector<std::vector<std::string>> rows;
-  std::vector<std::string> head{"rank", "variant", "feasible"};
-  if (for_csv) head.push_back("objective");
-  for (const auto& k : c.ranking.objective) head.push_back(for_csv ? criterion_heading(k) : criterion_title(k));
+  const std::vector<std::string> head = comparison_head(c, for_csv);
   const bool deflections = c.deflection_rule.active();
-  for (const char* h : {"lowest critical speed [km/h]", "static deflection [mm]"}) head.push_back(h);
-  if (deflections) head.push_back(for_csv ? "dynamic_deflection_ratio" : "largest dynamic deflection");
-  head.push_back("periods [s]");
-  if (for_csv) {
-    head.back() = report::csv_heading("periods", "s");
-    head[2 + (for_csv ? 1 : 0) + c.ranking.objective.size() + 1] = report::csv_heading("lowest_critical_speed", "km/h");
-    head[2 + (for_csv ? 1 : 0) + c.ranking.objective.size() + 2] = report::csv_heading("static_deflection", "mm");
-    head.push_back(report::csv_heading("critical_speeds", "km/h"));
-    for (const char* h : {"failure", "violations"}) head.push_back(h);
-  }
   rows.push_back(head);
   for (const RankedVariant& v : c.variants) {
     const VariantResult& r = v.result;
@@ -230,8 +241,9 @@ void write_table(std::ostream& out, const Comparison& c) {
     for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
       const auto& crit = c.ranking.objective[k];
       out << (k ? (c.ranking.weighted ? " + " : ", then ") : "") << study::title(crit.metric)
-          << (crit.maximise ? " (maximised)" : " (minimised)");
-      if (c.ranking.weighted) out << " (weight " << crit.weight << ")";
+          << (crit.maximise ? " (maximised" : " (minimised");
+      if (c.ranking.weighted) out << ", weight " << crit.weight;
+      out << ")";
     }
   }
   out << "\n";
@@ -266,7 +278,8 @@ void write_table(std::ostream& out, const Comparison& c) {
     if (!v.result.ok()) {
       out << "failed: " << v.result.failure << "\n";
     } else {
-      for (size_t k = 0; k < v.violations.size(); ++k) out << (k ? "; " : "") << v.violations[k];
+      const auto words = study::violations(v.result, c.ranking, true);
+      for (size_t k = 0; k < words.size(); ++k) out << (k ? "; " : "") << words[k];
       out << "\n";
     }
   }
@@ -291,7 +304,7 @@ void write_comparison(std::ostream& out, const Comparison& comparison, OutputFor
 }
 
 void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
-                 const std::vector<VariantResult>& results) {
+                 const std::vector<VariantResult>& results, const Provenance& inputs) {
   json j;
   j["format"] = "railmodal-compare-shard";
   j["study"] = study.name;
@@ -299,6 +312,10 @@ void write_shard(std::ostream& out, const Study& study, const EvaluationOptions&
   j["shard"] = options.shard;
   j["shards"] = options.shards;
   j["permissible_dynamic_deflection"] = to_string(study.deflection_rule);
+  if (!inputs.files.empty()) {
+    j["inputs"] = json::array();
+    for (const InputFile& f : inputs.files) j["inputs"].push_back({{"path", f.path}, {"digest", f.digest}});
+  }
   j["results"] = json::array();
   for (const auto& r : results) j["results"].push_back(result_json(r));
   out << j.dump(1) << "\n";

@@ -62,7 +62,9 @@ std::string provenance_line(const std::string& command, const Provenance& proven
   std::string line = "railmodal " + std::string(version()) + " " + command;
   if (provenance.files.empty()) return line + "; input files not recorded.";
   for (size_t k = 0; k < provenance.files.size(); ++k)
-    line += (k ? ", " : ", from ") + provenance.files[k].path + " (FNV-1a 64 " + provenance.files[k].digest + ")";
+    line += (k ? ", " : ", from ") + provenance.files[k].path +
+            (provenance.files[k].digest.empty() ? " (not a regular file: not hashed)"
+                                                : " (FNV-1a 64 " + provenance.files[k].digest + ")");
   return line + ".";
 }
 

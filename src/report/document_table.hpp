@@ -34,7 +34,8 @@ bool is_rotation(const LinearSystem& system, const std::string& label);
 void write_html_head(std::ostream& out, const std::string& title);
 
 /// What made the page, in one line: "railmodal 0.1.0 critical-speed, from data/scenes/x.toml
-/// (FNV-1a 64 0123456789abcdef), ..." (or that the inputs were not recorded).
+/// (FNV-1a 64 0123456789abcdef), ..." (or that the inputs were not recorded); a file with no
+/// digest "(not a regular file: not hashed)".
 std::string provenance_line(const std::string& command, const Provenance& provenance);
 /// The page's footer (provenance_line) and its closing tags.
 void write_html_footer(std::ostream& out, const std::string& command, const Provenance& provenance);

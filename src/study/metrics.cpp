@@ -144,17 +144,37 @@ std::string title(const std::string& metric) {
   return metric;
 }
 
-std::string heading(const std::string& metric) {
+std::string unit_bracket(const std::string& metric) {
   const std::string unit = display_unit(metric).unit;
-  return title(metric) + (unit.empty() ? "" : " (" + unit + ")");
+  return unit.empty() ? "" : " [" + unit + "]";
 }
 
-std::string shown(const std::string& metric, double si) {
+std::string heading(const std::string& metric) { return title(metric) + unit_bracket(metric); }
+
+std::string shown(const std::string& metric, double si, int digits) {
   if (std::isinf(si) && si > 0) return infinite_is_unbounded(metric) ? "unbounded" : "none";
   const DisplayUnit u = display_unit(metric);
   char text[64];
-  std::snprintf(text, sizeof text, "%.6g", si * u.per_si);
+  std::snprintf(text, sizeof text, "%.*g", digits, si * u.per_si);
   return std::string(text) + (*u.unit ? std::string(" ") + u.unit : std::string());
+}
+
+std::vector<std::string> violations(const VariantResult& r, const Ranking& ranking, bool for_people) {
+  std::vector<std::string> out;
+  const int digits = for_people ? 4 : 6;
+  for (const RankingConstraint& c : ranking.constraints) {
+    const std::string name = for_people ? title(c.metric) : c.metric;
+    const std::optional<double> value = metric_value(r, c.metric);
+    if (!value && r.deflections_checked && starts_with(c.metric, "dynamic_deflection_ratio"))
+      out.push_back("no " + name + ": no spring of this variant falls under the deflection rule");
+    else if (!value)
+      out.push_back("no " + name);
+    else if (c.min && *value < *c.min)
+      out.push_back(name + " " + shown(c.metric, *value, digits) + " < " + shown(c.metric, *c.min, digits));
+    else if (c.max && *value > *c.max)
+      out.push_back(name + " " + shown(c.metric, *value, digits) + " > " + shown(c.metric, *c.max, digits));
+  }
+  return out;
 }
 
 }  // namespace study

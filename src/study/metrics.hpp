@@ -3,6 +3,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
+
+#include "railmodal/study.hpp"
 
 namespace railmodal::study {
 
@@ -21,10 +24,24 @@ bool infinite_is_unbounded(const std::string& metric);
 /// bounce", "lowest critical speed", "largest dynamic deflection / permissible" (the metric's
 /// name, "period:body bounce", stays in CSV and JSON, where programs read it).
 std::string title(const std::string& metric);
-/// title and the display unit: "period of body bounce (s)".
+/// title and the display unit as table headings write it: "period of body bounce [s]".
 std::string heading(const std::string& metric);
+/// The display unit as table headings write it, " [s]", or "" for a ratio.
+std::string unit_bracket(const std::string& metric);
 
-/// A value with its display unit, "80 mm", "0.47", or "unbounded" / "none" for +∞.
-std::string shown(const std::string& metric, double si);
+/// A value with its display unit, "80 mm", "0.47", or "unbounded" / "none" for +∞, to
+/// `digits` significant digits (6 for programs, 4 for people).
+std::string shown(const std::string& metric, double si, int digits = 6);
+
+/// How a result breaks the ranking's constraints, one text each (none when it keeps them).
+/// For programs (CSV, JSON) with the metric's name and 6 significant digits, "critical_speed:body
+/// bounce 79.3089 km/h < 90 km/h"; for people with its title and 4, "critical speed of body
+/// bounce 79.31 km/h < 90 km/h".
+std::vector<std::string> violations(const VariantResult& r, const Ranking& ranking, bool for_people);
+
+/// What a report calls the parameter `key` (as StudyParameter names it): the label the study
+/// gives it in a sweep ("f"), or else the last part of its key path ("static_deflection").
+/// Defined in src/load_study.cpp, which holds the study's plan.
+std::string parameter_label(const Study& study, const std::string& key);
 
 }  // namespace railmodal::study

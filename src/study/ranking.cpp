@@ -12,8 +12,6 @@
 namespace railmodal {
 namespace {
 
-using study::shown;
-
 constexpr double kWorst = std::numeric_limits<double>::infinity();
 
 // The value a criterion sorts by: smaller is better; a missing value is the worst.
@@ -29,14 +27,7 @@ namespace {
 // Whether an evaluated variant meets the study's constraints (each violation in words), and
 // the values of its criteria.
 void check_constraints(const VariantResult& r, const Ranking& ranking, RankedVariant* v) {
-  for (const RankingConstraint& c : ranking.constraints) {
-    const std::optional<double> value = metric_value(r, c.metric);
-    if (!value && r.deflections_checked && c.metric.rfind("dynamic_deflection_ratio", 0) == 0)
-      v->violations.push_back("no " + c.metric + ": no spring of this variant falls under the deflection rule");
-    else if (!value) v->violations.push_back("no " + c.metric);
-    else if (c.min && *value < *c.min) v->violations.push_back(c.metric + " " + shown(c.metric, *value) + " < " + shown(c.metric, *c.min));
-    else if (c.max && *value > *c.max) v->violations.push_back(c.metric + " " + shown(c.metric, *value) + " > " + shown(c.metric, *c.max));
-  }
+  v->violations = study::violations(r, ranking, false);
   v->feasible = v->violations.empty();
   for (const RankingCriterion& c : ranking.objective) v->criteria.push_back(metric_value(r, c.metric));
 }

@@ -35,7 +35,8 @@ echo "${#commands[@]} documented commands run"
 
 # The example outputs: a ``` block whose first line is `$ railmodal ARGS` shows what ARGS print.
 # Each of its other lines must be a line of the real output, in order; a block may leave lines
-# out ("..." on a line of its own) and cut a line short ("..." at its end: the line starts so).
+# out ("..." on a line of its own) and cut a line short ("..." at its end: the line starts so),
+# but must show at least one line: a block with none would check nothing.
 mkdir "$work/blocks"
 awk -v dir="$work/blocks" '
   /^```/ {
@@ -49,6 +50,11 @@ for block in "$work"/blocks/*; do
   [ -e "$block" ] || continue
   blocks=$((blocks + 1))
   command="./build/$(head -n 1 "$block" | cut -c3-)"
+  if ! tail -n +2 "$block" | grep -qv -e '^[[:space:]]*$' -e '^\.\.\.$'; then
+    echo "EMPTY EXPECTED OUTPUT: the block of $command shows no line of what it prints"
+    failed=1
+    continue
+  fi
   (cd "$work" && bash -c "$command" 2>/dev/null | sed 's/[[:space:]]*$//' >"$work/actual") || true
   mapfile -t got <"$work/actual"
   i=0

@@ -36,6 +36,21 @@ TEST(Provenance, RefusesAFileThatCannotBeRead) {
   }
 }
 
+// A pipe (`railmodal critical-speed <(cat scene.toml)`) is empty once the run has read it: its
+// hash would be that of no bytes. A file that is not a regular one is listed, not hashed, and
+// the footer says so. /dev/null stands for the drained pipe (a device, nothing left to read).
+TEST(Provenance, ListsAFileThatIsNotRegularUnhashed) {
+  const Provenance p = provenance_of({"/dev/null"});
+  ASSERT_EQ(p.files.size(), 1u);
+  EXPECT_EQ(p.files[0].path, "/dev/null");
+  EXPECT_EQ(p.files[0].digest, "");
+  const Scene scene = load_scene(std::string(RAILMODAL_DATA_DIR) + "/scenes/resort_car_10m_rails.toml");
+  std::ostringstream page;
+  write_critical_speed_report(page, study_critical_speeds(scene, load_vehicle(scene.vehicle_file)),
+                              OutputFormat::markdown, p);
+  EXPECT_NE(page.str().find(", from /dev/null (not a regular file: not hashed)."), std::string::npos) << page.str();
+}
+
 // Every page says which railmodal and which files made it; without files it says so.
 TEST(Provenance, ReportFootersNameTheVersionAndTheInputs) {
   const Scene scene = load_scene(std::string(RAILMODAL_DATA_DIR) + "/scenes/resort_car_10m_rails.toml");

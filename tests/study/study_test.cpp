@@ -320,6 +320,14 @@ TEST(Ranking, WeightedSumIsMinimised) {
   EXPECT_EQ(c.variants[0].result.name, "b");
   EXPECT_DOUBLE_EQ(*c.variants[0].objective, -125.0);
   EXPECT_DOUBLE_EQ(*c.variants[1].objective, -120.0);
+  // The table says each criterion's goal and weight in one parenthesis (was "(maximised)
+  // (weight 100)").
+  std::ostringstream table;
+  write_comparison(table, c, OutputFormat::table);
+  EXPECT_NE(table.str().find("objective: period of body bounce (maximised, weight 100) + lowest critical speed "
+                             "(maximised, weight 1)\n"),
+            std::string::npos)
+      << table.str();
 }
 
 // A study written for "bogies pitch, in phase" (since renamed "bogies pitch (repeated)", issue 17
@@ -385,6 +393,27 @@ parameters = [{ key = "suspension.spring[0].static_deflection", from = "40 mm", 
   EXPECT_EQ(back[1].modes[1].period_s, part[1].modes[1].period_s);
   EXPECT_EQ(back[1].critical_speeds.front().speed, part[1].critical_speeds.front().speed);
   EXPECT_EQ(back[1].static_deflections, part[1].static_deflections);
+}
+
+// A shard records the digest of the study file it was evaluated from: merged against a study
+// file edited since, its results are of other variants, and it is refused naming the shard.
+TEST(Evaluation, ShardOfAnotherVersionOfTheStudyFileIsRefused) {
+  const std::string path = study_file("");  // the base design alone
+  const Study s = load_study(path);
+  const auto results = evaluate_study(s, {});
+  std::ostringstream current, edited;
+  write_shard(current, s, {}, results, provenance_of({path}));
+  write_shard(edited, s, {}, results, Provenance{{{path, content_digest("an earlier version")}}});
+  EXPECT_EQ(read_shard(write_temp("current_shard.json", current.str()), s).size(), 1u);
+  const std::string shard = write_temp("edited_shard.json", edited.str());
+  try {
+    read_shard(shard, s);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), shard);
+    EXPECT_NE(std::string(e.what()).find("a shard of another version of the study file"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(Evaluation, UnstableVariantIsReportedAndDoesNotStopTheStudy) {

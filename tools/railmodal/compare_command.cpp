@@ -38,21 +38,57 @@ bool parse_shard(const std::string& text, EvaluationOptions* evaluation) {
   return evaluation->shard >= 1 && evaluation->shard <= evaluation->shards && evaluation->shards <= kMaxShards;
 }
 
+// --shard read into `evaluation`: false (with the usage error on stderr) if it is malformed or
+// given with --merge.
+bool read_shard_option(const CompareOptions& o, EvaluationOptions* evaluation) {
+  if (o.shard.empty()) return true;
+  if (!parse_shard(o.shard, evaluation)) {
+    std::cerr << "railmodal: error: --shard expects K/N with 1 <= K <= N <= " << kMaxShards
+              << " (the most variants a study may hold), such as 2/4, not '" << o.shard << "'\n";
+    return false;
+  }
+  if (!o.merge.empty()) {
+    std::cerr << "railmodal: error: --shard and --merge exclude each other\n";
+    return false;
+  }
+  return true;
+}
+
+// The results of the shard files, each variant of the study exactly once.
+std::vector<VariantResult> merged_results(const Study& study, const std::vector<std::string>& files) {
+  std::vector<VariantResult> results;
+  std::set<int> seen;
+  for (const std::string& file : files)
+    for (VariantResult& r : read_shard(file, study)) {
+      if (!seen.insert(r.index).second)
+        throw InputError(file, 0, 0, "variant '" + r.name + "' is also in an earlier shard");
+      results.push_back(std::move(r));
+    }
+  for (size_t i = 0; i < study.variants.size(); ++i)
+    if (!seen.count(static_cast<int>(i)))
+      throw InputError(files.front(), 0, 0,
+                       "no shard holds variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
+                           "'): give every shard of the study");
+  return results;
+}
+
+// The ranking of the results in `format`.
+void write_ranked(std::ostream& out, const Study& study, std::vector<VariantResult> results, OutputFormat format) {
+  const Comparison comparison = rank_variants(study, std::move(results));
+  // The documents draw the best designs' curves: studied here, read first if merged.
+  const bool document = format == OutputFormat::markdown || format == OutputFormat::html;
+  // The page names the study's files: merged shards are results of those same files, and give
+  // the page a single run gives, byte for byte.
+  write_comparison_report(out, study, comparison,
+                          document ? comparison_curves(study, comparison, kReportBest) : ComparisonCurves{}, format,
+                          document ? provenance_of(study_files(study)) : Provenance{});
+}
+
 int run(const CompareOptions& o) {
   const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   EvaluationOptions evaluation;
   evaluation.threads = o.threads;
-  if (!o.shard.empty()) {
-    if (!parse_shard(o.shard, &evaluation)) {
-      std::cerr << "railmodal: error: --shard expects K/N with 1 <= K <= N <= " << kMaxShards
-                << " (the most variants a study may hold), such as 2/4, not '" << o.shard << "'\n";
-      return kUsage;
-    }
-    if (!o.merge.empty()) {
-      std::cerr << "railmodal: error: --shard and --merge exclude each other\n";
-      return kUsage;
-    }
-  }
+  if (!read_shard_option(o, &evaluation)) return kUsage;
   try {
     OutputFiles outputs;
     std::ostream& out = outputs.open(o.output);
@@ -65,37 +101,11 @@ int run(const CompareOptions& o) {
     const Study study =
         load_study(o.study, [&](int index) { return !merging && in_shard(index, shard, shards); });
     outputs.refuse_inputs(study_files(study));
-    if (!o.shard.empty()) {
-      if (!o.quiet) evaluation.progress = terminal_progress("compare");
-      write_shard(out, study, evaluation, evaluate_study(study, evaluation));
-      outputs.commit();
-      return kSuccess;
-    }
-    std::vector<VariantResult> results;
-    if (o.merge.empty()) {
-      if (!o.quiet) evaluation.progress = terminal_progress("compare");
-      results = evaluate_study(study, evaluation);
-    } else {
-      std::set<int> seen;
-      for (const std::string& file : o.merge)
-        for (VariantResult& r : read_shard(file, study)) {
-          if (!seen.insert(r.index).second)
-            throw InputError(file, 0, 0, "variant '" + r.name + "' is also in an earlier shard");
-          results.push_back(std::move(r));
-        }
-      for (size_t i = 0; i < study.variants.size(); ++i)
-        if (!seen.count(static_cast<int>(i)))
-          throw InputError(o.merge.front(), 0, 0, "no shard holds variant " + std::to_string(i + 1) + " ('" +
-                                                      study.variants[i].name + "'): give every shard of the study");
-    }
-    const Comparison comparison = rank_variants(study, std::move(results));
-    // The documents draw the best designs' curves: studied here, read first if merged.
-    const bool document = format == OutputFormat::markdown || format == OutputFormat::html;
-    // The page names the study's files: merged shards are results of those same files, and give
-    // the page a single run gives, byte for byte.
-    write_comparison_report(out, study, comparison,
-                            document ? comparison_curves(study, comparison, kReportBest) : ComparisonCurves{}, format,
-                            document ? provenance_of(study_files(study)) : Provenance{});
+    if (!merging && !o.quiet) evaluation.progress = terminal_progress("compare");
+    if (!o.shard.empty())
+      write_shard(out, study, evaluation, evaluate_study(study, evaluation), provenance_of(study_files(study)));
+    else
+      write_ranked(out, study, merging ? merged_results(study, o.merge) : evaluate_study(study, evaluation), format);
     outputs.commit();
     return kSuccess;
   } catch (const InputError& e) {
