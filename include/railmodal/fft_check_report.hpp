@@ -13,6 +13,7 @@
 #pragma once
 
 #include <ostream>
+#include <string>
 
 #include "railmodal/output_format.hpp"
 #include "railmodal/provenance.hpp"
@@ -26,9 +27,13 @@ namespace railmodal {
 ///   whether the peak lies within it, or why there is none) and, for a nonlinear scene, the
 ///   half periods between the turning points and between passes through the static position.
 ///   csv: one row per check: mode, mode_name, dof, modal [Hz], peak [Hz], rel_error,
-///   resolution [Hz], within_resolution, excited, modal_amplitude_ratio (no peak: blank).
+///   resolution [Hz], within_resolution, excited, modal_amplitude_ratio, tolerance, outcome
+///   (passed, failed, not excited, not resolved, no line), checked, passed, and the whole
+///   record's verdict (passed, FAILED, not checked) on every row (no peak: blank).
 ///   json: {"scene", "checks": [{the csv's columns, keyed mode_name, modal_hz, peak_hz,
-///   resolution_hz, …; no peak: null}], and for a nonlinear scene
+///   resolution_hz, …; no peak: null}], "nonlinear", "compared", "checked" (false: nothing
+///   could be checked), "checks_made", "checks_failed", "passed", "verdict" (as the csv's),
+///   "verdict_text" (fft_check_verdict), and for a nonlinear scene
 ///   "half_periods": {"dof", "linear_half_period_s", "between_turning_points_s",
 ///   "between_crossings_s", "turning_points": [{"time_s", "displacement"}], "comes_to_rest"}}.
 ///   html: a self-contained page (inline SVG, no scripts): the displacement histories of the
@@ -40,5 +45,11 @@ namespace railmodal {
 /// `vehicle` names the page's vehicle.
 void write_fft_check(std::ostream& out, const FftCheckResult& result, const Scene& scene, const Vehicle& vehicle,
                      OutputFormat format, const Provenance& provenance = {});
+
+/// The verdict of all the checks in words, as every report ends: "FAILED: 2 of 6 modes
+/// checked, 1 outside its tolerance; …", "ok: 1 of 6 modes checked, within 5.0 %; 5 not
+/// checked (5 no line)" or "NOT CHECKED: no mode's line could be checked (2 not resolved: a run
+/// of at least 31 s)". "Not checked" is neither a pass nor a failure.
+std::string fft_check_verdict(const FftCheckResult& result);
 
 }  // namespace railmodal

@@ -106,11 +106,19 @@ struct FftCheck {
   static constexpr double kExcitedRatio = 1e-6;
   /// What |peak − modal| is held to, relative to modal_hz. A linear scene: its resolution
   /// (resolution_hz/modal_hz, the width of the line). A nonlinear scene: kNonlinearTolerance,
-  /// and the line must be at least that narrow (resolution_hz ≤ kNonlinearTolerance·modal_hz),
-  /// else the record cannot tell whether the mode is there.
+  /// checked only where the line is at least that narrow (resolution_hz ≤ kNonlinearTolerance·modal_hz).
   double tolerance = 0.0;
-  /// Not excited, or a peak within `tolerance` (nonlinear: and resolved so finely).
-  bool passed = false;
+  /// What became of the check. Only `passed` and `failed` were checked: the others are neither
+  /// a pass nor a failure. A linear scene's excited mode is always checked (no line there is a
+  /// failure); a nonlinear scene's is not when the record cannot resolve the tolerance
+  /// (`not_resolved`) or shows no line near the mode (`no_line`: friction holds it, or a
+  /// forced nonlinear response).
+  enum class Outcome { passed, failed, not_excited, not_resolved, no_line };
+  Outcome outcome = Outcome::not_excited;
+  bool checked() const { return outcome == Outcome::passed || outcome == Outcome::failed; }
+  /// not_resolved: the record length that would resolve the tolerance, in s (the line's width
+  /// falls as 1/duration: duration·resolution_hz/(kNonlinearTolerance·modal_hz)); else 0.
+  double needed_duration_s = 0.0;
   /// Friction and kinks are not expected to keep a line at the linear frequency: leaf friction
   /// R = φ·load moves the half periods to π/k₁, π/k₂ with k² = (1 ± φ)k₀² (springs digest
   /// (51), (63)), √(1 ± φ) − 1 ≤ 4.3 % for the book's φ ≤ 0.085; 5 % holds that and no more,
@@ -145,7 +153,11 @@ struct FftCheckResult {
   std::optional<Swings> swings;
   double linear_half_period_s = 0.0;  ///< π/ω of that mode, for comparison
   bool nonlinear = false;             ///< the scene names a nonlinearity: checks held to kNonlinearTolerance
-  bool passed = false;                ///< every check passed (FftCheck::passed): the verdict
+  int checked = 0;                    ///< checks that were made (FftCheck::checked())
+  int failed = 0;                     ///< of those, outside their tolerance: the verdict FAILED (exit 6)
+  /// The verdict: at least one check made and none failed. Not passed and not failed when
+  /// nothing could be checked (checked == 0): "not checked" is not a pass.
+  bool passed = false;
   /// The checks (modes checked, excited, within resolution) and the stage times; the
   /// simulation, modes and spectra carry their own.
   AnalysisSummary summary;
@@ -153,11 +165,11 @@ struct FftCheckResult {
 
 /// Simulates the scene and compares the spectral peaks of each excited oscillatory mode's
 /// most energetic DOF with the modal frequencies (modes above half the Nyquist frequency are
-/// left out: the step cannot resolve them), each within its FftCheck::tolerance; `passed`
-/// says whether all were. A failed check is an answer, not an exception. It holds the whole record of every DOF, with
-/// velocities, and spectra: refused before simulating (std::invalid_argument, with the
-/// estimate) when that would take over `memory_limit` bytes, estimated as 40 bytes a sample
-/// for each DOF and 100 for the transform (measured: 294 bytes a sample for 6 DOFs).
+/// left out: the step cannot resolve them), each within its FftCheck::tolerance where the record
+/// can check it (FftCheck::outcome); `failed` counts those outside, `checked` those made. A failed check is an answer,
+/// not an exception. It holds the whole record of every DOF, with velocities, and spectra: refused before simulating
+/// (std::invalid_argument, with the estimate) when that would take over `memory_limit` bytes, estimated as 40 bytes a
+/// sample for each DOF and 100 for the transform (measured: 294 bytes a sample for 6 DOFs).
 FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memory_limit = kDefaultMemoryLimit);
 
 }  // namespace railmodal

@@ -105,35 +105,48 @@ report::Chart spectrum_chart(const FftCheckResult& r, size_t k) {
   return c;
 }
 
-// What a check without a peak means: "not excited (modal amplitude 2.1e-13 of the largest)",
-// or, for an excited mode, that no line lies within 3 resolutions (in a nonlinear scene, where
-// friction and kinks move the lines, pointing to the half periods).
-std::string missing_peak_remark(const FftCheck& check, bool nonlinear) {
-  if (!check.excited) {
-    char ratio[32];
-    std::snprintf(ratio, sizeof ratio, "%.1e", check.modal_amplitude_ratio);
-    return std::string("not excited (modal amplitude ") + ratio + " of the largest)";
-  }
-  return nonlinear ? "no line within 3 resolutions (nonlinear: see the half periods)"
-                   : "no line within 3 resolutions";
-}
-
 std::string percent(double fraction) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f %%", 100.0 * fraction);
   return text;
 }
 
+std::string not_excited_text(const FftCheck& c) {
+  char ratio[32];
+  std::snprintf(ratio, sizeof ratio, "%.1e", c.modal_amplitude_ratio);
+  return std::string("not excited (modal amplitude ") + ratio + " of the largest)";
+}
+
+// The run that would resolve the tolerance, rounded up to a readable number of seconds.
+std::string needed_run(double seconds) {
+  char text[48];
+  std::snprintf(text, sizeof text, "a run of at least %.*f s", seconds < 10.0 ? 1 : 0,
+                seconds < 10.0 ? std::ceil(10.0 * seconds) / 10.0 : std::ceil(seconds));
+  return text;
+}
+
 // One check's verdict in words. A linear scene's line is held to its own width; a nonlinear
-// scene's to FftCheck::kNonlinearTolerance of the mode, and must be that narrow.
+// scene's to FftCheck::kNonlinearTolerance of the mode where the record resolves that, and
+// otherwise says why it was not checked (neither a pass nor a failure).
 std::string verdict_text(const FftCheck& c, bool nonlinear) {
-  if (!c.peak_hz) return (c.passed ? "" : "FAILED: ") + missing_peak_remark(c, nonlinear);
-  if (!nonlinear) return c.within_resolution ? "ok" : "OUTSIDE the resolution";
-  if (c.resolution_hz > c.tolerance * c.modal_hz)
-    return "FAILED: not resolved (line " + percent(c.resolution_hz / c.modal_hz) + " of f wide; needs ≤ " +
-           percent(c.tolerance) + ": a longer record)";
-  if (!c.passed) return "FAILED: " + percent(std::abs(c.rel_error)) + " off (tolerance " + percent(c.tolerance) + ")";
-  return "ok (within " + percent(c.tolerance) + ")";
+  using Outcome = FftCheck::Outcome;
+  switch (c.outcome) {
+    case Outcome::not_excited:
+      return not_excited_text(c);
+    case Outcome::no_line:
+      return "not checked: no line within 3 resolutions (friction, a kink or the forcing moved it: see the half "
+             "periods)";
+    case Outcome::not_resolved:
+      return "not checked: the record resolves only " + percent(c.resolution_hz / c.modal_hz) + " of f (needs ≤ " +
+             percent(c.tolerance) + ": " + needed_run(c.needed_duration_s) + ")";
+    case Outcome::passed:
+      return nonlinear ? "ok (within " + percent(c.tolerance) + ")" : "ok";
+    case Outcome::failed:
+      if (!c.peak_hz) return "FAILED: no line within 3 resolutions";
+      return nonlinear ? "FAILED: " + percent(std::abs(c.rel_error)) + " off (tolerance " + percent(c.tolerance) + ")"
+                       : "OUTSIDE the resolution";
+  }
+  return "";
 }
 
 // What a nonlinear scene's checks compare, and the verdict of all of them.
@@ -144,27 +157,77 @@ std::string compared_text(const FftCheckResult& r) {
          percent(FftCheck::kNonlinearTolerance) +
          " (friction moves the lines by √(1 ± φ), ≤ 4.3 % for φ ≤ 0.085), where the record resolves " +
          percent(FftCheck::kNonlinearTolerance) + " of f (line width ≤ " + percent(FftCheck::kNonlinearTolerance) +
-         " of f)";
+         " of f) and shows a line; other modes are not checked";
 }
 
-std::string overall_verdict(const FftCheckResult& r) {
-  const auto failed = std::count_if(r.checks.begin(), r.checks.end(), [](const FftCheck& c) { return !c.passed; });
-  if (r.passed) return "verdict: passed (" + std::to_string(r.checks.size()) + " checks)";
-  return "verdict: FAILED (" + std::to_string(failed) + " of " + std::to_string(r.checks.size()) + " checks)";
+// Why the checks not made were not: "2 not resolved: a run of at least 31 s; 1 no line".
+std::string not_checked_reasons(const FftCheckResult& r) {
+  using Outcome = FftCheck::Outcome;
+  int not_excited = 0, not_resolved = 0, no_line = 0;
+  double needed = 0.0;
+  for (const auto& c : r.checks) {
+    not_excited += c.outcome == Outcome::not_excited;
+    no_line += c.outcome == Outcome::no_line;
+    if (c.outcome == Outcome::not_resolved) ++not_resolved, needed = std::max(needed, c.needed_duration_s);
+  }
+  std::string text;
+  const auto add = [&text](const std::string& part) { text += (text.empty() ? "" : "; ") + part; };
+  if (not_resolved) add(std::to_string(not_resolved) + " not resolved: " + needed_run(needed));
+  if (no_line) add(std::to_string(no_line) + " no line");
+  if (not_excited) add(std::to_string(not_excited) + " not excited");
+  return text;
+}
+
+// The verdict of all the checks: how many were made and passed, and how many were not, and why.
+std::string fft_check_verdict_text(const FftCheckResult& r) {
+  const size_t not_checked = r.checks.size() - static_cast<size_t>(r.checked);
+  const std::string rest =
+      not_checked ? "; " + std::to_string(not_checked) + " not checked (" + not_checked_reasons(r) + ")" : "";
+  const std::string made = std::to_string(r.checked) + " of " + std::to_string(r.checks.size()) + " modes checked";
+  if (r.failed > 0) return "FAILED: " + made + ", " + std::to_string(r.failed) + " outside its tolerance" + rest;
+  if (r.checked == 0) return "NOT CHECKED: no mode's line could be checked (" + not_checked_reasons(r) + ")";
+  const std::string within =
+      r.nonlinear ? "within " + percent(FftCheck::kNonlinearTolerance) : "each within its line's width";
+  return "ok: " + made + ", " + within + rest;
+}
+
+std::string overall_verdict(const FftCheckResult& r) { return "verdict: " + fft_check_verdict(r); }
+
+// The verdict for programs: "passed", "FAILED" or "not checked".
+std::string verdict_word(const FftCheckResult& r) {
+  return r.failed > 0 ? "FAILED" : r.checked == 0 ? "not checked" : "passed";
+}
+
+std::string outcome_word(FftCheck::Outcome o) {
+  using Outcome = FftCheck::Outcome;
+  switch (o) {
+    case Outcome::passed:
+      return "passed";
+    case Outcome::failed:
+      return "failed";
+    case Outcome::not_excited:
+      return "not excited";
+    case Outcome::not_resolved:
+      return "not resolved";
+    case Outcome::no_line:
+      return "no line";
+  }
+  return "";
 }
 
 void checks_table(std::ostream& out, const FftCheckResult& r) {
   out << "<table><tr><th>#</th><th>mode</th><th>dof</th><th>modal [Hz]</th><th>peak [Hz]</th><th>rel. error</th>"
          "<th>resolution [Hz]</th><th>check</th></tr>\n";
   for (const auto& c : r.checks) {
+    const bool failed = c.outcome == FftCheck::Outcome::failed;
     out << "<tr><td class=n>" << c.mode << "</td><td>" << html_escape(c.mode_name) << "</td><td>" << html_escape(c.dof)
         << "</td><td class=n>" << fixed(c.modal_hz, 4) << "</td>";
     if (c.peak_hz) {
       std::ostringstream rel;
       rel << std::scientific << std::setprecision(2) << c.rel_error;
       out << "<td class=n>" << fixed(*c.peak_hz, 4) << "</td><td class=n>" << rel.str() << "</td><td class=n>"
-          << fixed(c.resolution_hz, 4) << "</td><td>" << (c.passed ? "" : "<b>")
-          << html_escape(verdict_text(c, r.nonlinear)) << (c.passed ? "" : "</b>") << "</td>";
+          << fixed(c.resolution_hz, 4) << "</td><td>" << (failed ? "<b>" : "")
+          << html_escape(verdict_text(c, r.nonlinear)) << (failed ? "</b>" : "") << "</td>";
     } else {
       out << "<td class=n>—</td><td></td><td></td><td>" << html_escape(verdict_text(c, r.nonlinear)) << "</td>";
     }
@@ -210,10 +273,17 @@ void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene) 
                            {"excited", c.excited},
                            {"modal_amplitude_ratio", c.modal_amplitude_ratio},
                            {"tolerance", c.tolerance},
-                           {"passed", c.passed}});
+                           {"outcome", outcome_word(c.outcome)},
+                           {"checked", c.checked()},
+                           {"passed", c.outcome == FftCheck::Outcome::passed}});
   j["nonlinear"] = r.nonlinear;
   j["compared"] = compared_text(r);
+  j["checked"] = r.checked > 0;
+  j["checks_made"] = r.checked;
+  j["checks_failed"] = r.failed;
   j["passed"] = r.passed;
+  j["verdict"] = verdict_word(r);
+  j["verdict_text"] = fft_check_verdict(r);
   if (r.swings) {
     const Swings& w = *r.swings;
     nlohmann::json turns = nlohmann::json::array();
@@ -232,14 +302,16 @@ void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene) 
 void write_csv(std::ostream& out, const FftCheckResult& r) {
   using report::csv_heading;
   out << "mode,mode_name,dof," << csv_heading("modal", "Hz") << "," << csv_heading("peak", "Hz") << ",rel_error,"
-      << csv_heading("resolution", "Hz") << ",within_resolution,excited,modal_amplitude_ratio,tolerance,passed\n"
+      << csv_heading("resolution", "Hz")
+      << ",within_resolution,excited,modal_amplitude_ratio,tolerance,outcome,checked,passed,verdict\n"
       << std::setprecision(10);
   for (const auto& c : r.checks)
     out << c.mode << ",\"" << c.mode_name << "\"," << c.dof << "," << c.modal_hz << ","
         << (c.peak_hz ? significant(*c.peak_hz, 10) : "") << "," << (c.peak_hz ? significant(c.rel_error, 10) : "")
         << "," << c.resolution_hz << "," << (c.within_resolution ? "true" : "false") << ","
         << (c.excited ? "true" : "false") << "," << c.modal_amplitude_ratio << "," << c.tolerance << ","
-        << (c.passed ? "true" : "false") << "\n";
+        << outcome_word(c.outcome) << "," << (c.checked() ? "true" : "false") << ","
+        << (c.outcome == FftCheck::Outcome::passed ? "true" : "false") << "," << verdict_word(r) << "\n";
 }
 
 // Nonlinear scenes, in the table: the turning points of the swinging DOF and the half periods
@@ -328,6 +400,8 @@ void write_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, 
 }
 
 }  // namespace
+
+std::string fft_check_verdict(const FftCheckResult& result) { return fft_check_verdict_text(result); }
 
 void write_fft_check(std::ostream& out, const FftCheckResult& result, const Scene& scene, const Vehicle& vehicle,
                      OutputFormat format, const Provenance& provenance) {

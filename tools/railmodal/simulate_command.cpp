@@ -56,21 +56,36 @@ void write_simulation(const SimulateOptions& o, const Scene& scene, const Vehicl
 }
 
 // Everything one run writes, into the streams of its outputs (spectra: null when not asked);
-// false when an fft-check fails (its report says which checks and why).
-bool write_run(const SimulateOptions& o, bool check, const Scene& scene, const Vehicle& vehicle, std::ostream& text,
-               std::ostream* spectra) {
+// the fft-check's result, when it is one (its report says which checks were made and why not).
+std::optional<FftCheckResult> write_run(const SimulateOptions& o, bool check, const Scene& scene,
+                                        const Vehicle& vehicle, std::ostream& text, std::ostream* spectra) {
   try {
     if (!check) {
       write_simulation(o, scene, vehicle, text, spectra);
-      return true;
+      return std::nullopt;
     }
-    const FftCheckResult result = fft_check(scene, vehicle, o.memory_limit_gb * 1e9);
+    FftCheckResult result = fft_check(scene, vehicle, o.memory_limit_gb * 1e9);
     write_fft_check(text, result, scene, vehicle, *output_format_from_string(o.format),
                     provenance_of({o.scene, scene.vehicle_file}));
-    return result.passed;
+    return result;
   } catch (const std::invalid_argument& e) {
     throw InputError(o.scene, 0, 0, e.what());
   }
+}
+
+// An fft-check's exit: 6 when a check made failed; 0 otherwise, with a note on stderr when
+// nothing could be checked (not a pass: the report's verdict says "NOT CHECKED").
+int check_exit(const std::string& scene_file, const FftCheckResult& result) {
+  if (result.failed > 0) {
+    std::cerr << scene_file
+              << ": fft-check FAILED: " << fft_check_verdict(result).substr(std::string("FAILED: ").size()) << "\n";
+    return kCheckFailed;
+  }
+  if (result.checked == 0)
+    std::cerr << scene_file << ": fft-check: nothing was checked: "
+              << fft_check_verdict(result).substr(std::string("NOT CHECKED: ").size())
+              << "; \"not checked\" is not a pass\n";
+  return kSuccess;
 }
 
 int run(const SimulateOptions& o, bool check) {
@@ -82,13 +97,9 @@ int run(const SimulateOptions& o, bool check) {
     Vehicle vehicle;
     if (const int code = load(o, &scene, &vehicle); code != kSuccess) return code;
     outputs.refuse_inputs({o.scene, scene.vehicle_file});
-    const bool passed = write_run(o, check, scene, vehicle, text, spectra);
+    const std::optional<FftCheckResult> result = write_run(o, check, scene, vehicle, text, spectra);
     outputs.commit();
-    if (passed) return kSuccess;
-    std::cerr << o.scene
-              << ": fft-check FAILED: a spectral peak is outside its tolerance or not resolved (see the "
-                 "report's verdict)\n";
-    return kCheckFailed;
+    return result ? check_exit(o.scene, *result) : kSuccess;
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
     return kInput;
