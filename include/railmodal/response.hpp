@@ -77,10 +77,11 @@ HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult
 /// taken from the diagonal of ΦᵀCΦ (exact when C = 0 or C is proportional and no damper
 /// acts on a massless DOF), plus the response of massless (condensed) DOFs
 /// to their own loads through (K_mm + iωC_mm)⁻¹. Compared with the direct solve
-/// in tests and docs/accuracy.md.
+/// in tests and docs/accuracy.md. An undamped mode at ω is driven (the response unbounded)
+/// by the same rule as in harmonic_response, against `source_load_norm` (0: the load's own).
 HarmonicResponse modal_harmonic_response(const LinearSystem& system, const ModalResult& modes,
-                                         const Eigen::VectorXcd& load, double frequency_hz,
-                                         int mode_count = 0);
+                                         const Eigen::VectorXcd& load, double frequency_hz, int mode_count = 0,
+                                         double source_load_norm = 0.0);
 
 enum class ResponseQuantity { displacement, velocity, acceleration };
 const char* to_string(ResponseQuantity quantity);  ///< "displacement", "velocity", "acceleration"

@@ -38,7 +38,10 @@ Eigen::Vector3d read_inertia(TableReader& t, double mass) {
 
 bool read_longitudinal_free(TableReader& t) {
   if (!t.has("free")) return false;
-  for (const auto& word : t.strings("free"))
+  const auto words = t.strings("free");
+  // An empty list frees nothing: refused rather than read as freeing surge (issue 17 review).
+  if (words.empty()) t.fail("free", "is empty: write free = [\"longitudinal\"] or leave the key out");
+  for (const auto& word : words)
     if (word != "longitudinal")
       t.fail("free", motion_from_string(word)
                          ? "'" + word + "' is free unless held; only longitudinal motion is held unless freed"

@@ -247,6 +247,21 @@ std::vector<SpringStage> read_spring_stages(TableReader& parent, const std::stri
   return stages;
 }
 
+std::vector<SpringStage> read_longitudinal_stages(TableReader& parent, const std::string& key,
+                                                  std::optional<double> element_load) {
+  std::vector<SpringStage> stages;
+  if (!parent.has(key)) return stages;
+  for (auto& t : parent.tables(key)) {
+    for (const char* friction : {"relative_friction", "leaf_friction"})
+      if (t.has(friction))
+        t.fail(friction,
+               "leaf friction is taken from vertical stages only; a longitudinal stage is a linear spring: "
+               "give its stiffness alone");
+    stages.push_back(read_spring_stage(t, element_load));
+  }
+  return stages;
+}
+
 Eigen::Vector3d read_rotational_stiffness(TableReader& parent) {
   Eigen::Vector3d k = Eigen::Vector3d::Zero();
   if (!parent.has("rotational")) return k;

@@ -21,6 +21,12 @@ SpringStage read_spring_stage(TableReader& table, std::optional<double> element_
 std::vector<SpringStage> read_spring_stages(TableReader& parent, const std::string& key,
                                             std::optional<double> element_load);
 
+/// The same for longitudinal stages, refusing leaf friction at its key: friction is taken from
+/// vertical stages only (the friction criterion and its equivalent damping), so there it would
+/// be read and silently ignored.
+std::vector<SpringStage> read_longitudinal_stages(TableReader& parent, const std::string& key,
+                                                  std::optional<double> element_load);
+
 /// `rotational = { roll, pitch, yaw }` of an element (N·m/rad), zero when absent.
 Eigen::Vector3d read_rotational_stiffness(TableReader& parent);
 

@@ -33,7 +33,7 @@ bool add_draw_gear(TableReader& root, const Body& body, Vehicle* v) {
     e.name = end > 0 ? "front draw gear" : "rear draw gear";
     e.upper = body.name;
     e.point = {body.reference_point.x() + end * half_spacing, 0.0, height};
-    e.longitudinal_stages = read_spring_stages(t, "spring", std::nullopt);
+    e.longitudinal_stages = read_longitudinal_stages(t, "spring", std::nullopt);
     if (e.longitudinal_stages.empty()) t.fail("spring", "missing: the draw gear's spring stages");
     e.longitudinal_damping = t.optional_positive("longitudinal_damping", Quantity::damping, true).value_or(0.0);
     v->elements.push_back(e);
@@ -124,7 +124,7 @@ void add_axlebox_springs(TableReader& pri, const BogieEnd& end, double l2, doubl
       if (triple && e.vertical_stages.size() < 2)
         pri.fail("spring", "triple suspension needs two primary stages in series (leaf, then coil)");
       e.lateral_stages = read_spring_stages(pri, "lateral", load);
-      e.longitudinal_stages = read_spring_stages(pri, "longitudinal", load);
+      e.longitudinal_stages = read_longitudinal_stages(pri, "longitudinal", load);
       read_damping(pri, &e);
       v->elements.push_back(e);
     }
@@ -142,7 +142,7 @@ void add_cradle_springs(TableReader& sec, const Secondary& s, const BogieEnd& en
     e.vertical_stages = read_spring_stages(sec, "spring", load);
     if (e.vertical_stages.empty()) sec.fail("spring", "missing: the cradle spring stages");
     e.lateral_stages = read_spring_stages(sec, "lateral", load);
-    e.longitudinal_stages = read_spring_stages(sec, "longitudinal", load);
+    e.longitudinal_stages = read_longitudinal_stages(sec, "longitudinal", load);
     e.hanger = s.hanger;
     read_damping(sec, &e);
     v->elements.push_back(e);
@@ -196,6 +196,9 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   const double a1 = s.positive("wheelbase", Quantity::length) / 2.0;
   const double b1 = s.positive("spring_spacing", Quantity::length) / 2.0;
   if (std::abs(offset) >= a1) root.fail("body", "cg_offset puts the CG outside the wheelbase");
+  if (!body.longitudinal_free && s.has("longitudinal_damping"))
+    s.fail("longitudinal_damping",
+           "damps the body's surge, but its longitudinal motion is held: add free = [\"longitudinal\"] to [body]");
   const double weight = body.mass * v->gravity;
   for (int axle : {+1, -1}) {
     // Lever rule: each spring of an axle carries half that axle's share of the weight.

@@ -61,7 +61,7 @@ void read_general(TableReader& root, Vehicle* v) {
       t.fail("vertical",
              "two stages with leaf friction in series are not modelled; give the element one friction stage");
     e.lateral_stages = read_spring_stages(t, "lateral", load);
-    e.longitudinal_stages = read_spring_stages(t, "longitudinal", load);
+    e.longitudinal_stages = read_longitudinal_stages(t, "longitudinal", load);
     if (t.has("hanger")) e.hanger = read_hanger(t);
     e.rotational_stiffness = read_rotational_stiffness(t);
     e.vertical_damping = t.optional_positive("vertical_damping", Quantity::damping, true).value_or(0.0);

@@ -98,8 +98,9 @@ Table outputs_table(const CriticalSpeedStudy& st) {
 
 const char* const kOutputsNote =
     "Each output the scene requests, at each critical speed: unbounded where the resonant mode moves it (it then "
-    "grows by the growth per half period), otherwise the steady amplitude of the rest of the response (growth 0: "
-    "the mode does not move it).";
+    "grows by the growth per half period), otherwise the steady amplitude of the rest of the response (growth 0 "
+    "where no mode within 1 % of the resonance moves it; an output only such a near-coincident neighbour moves "
+    "shows the neighbour's growth, with a large but finite amplitude).";
 
 // What the curve is: the source's input times which transfer function.
 std::string transfer_function(const CriticalSpeedStudy& st, const AmplitudeCurve& c) {

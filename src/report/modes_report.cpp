@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <nlohmann/json.hpp>
@@ -98,7 +99,12 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
       break;
     }
   out << "\nmode shapes (mass-normalised; m and rad per √kg)\n";
-  out << std::left << std::setw(18) << "dof" << std::right;
+  // The DOF column: 18 wide, wider where a label needs it (bogie1.longitudinal is 19), with
+  // one space before the first shape column.
+  size_t dof_width = 18;
+  for (const auto& d : r.dofs) dof_width = std::max(dof_width, d.label.size() + 1);
+  const int label_width = static_cast<int>(dof_width);
+  out << std::left << std::setw(label_width) << "dof" << std::right;
   for (const auto& m : r.modes) out << std::setw(11) << m.index;
   out << "\n";
   // Entries at round-off level of the mode's largest read as exact zeros (JSON and CSV keep the
@@ -106,7 +112,7 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
   std::vector<double> round_off;
   for (const auto& m : r.modes) round_off.push_back(1e-12 * m.shape.cwiseAbs().maxCoeff());
   for (size_t i = 0; i < r.dofs.size(); ++i) {
-    out << report::left_cell(r.dofs[i].label, 18) << std::right;
+    out << report::left_cell(r.dofs[i].label, dof_width) << std::right;
     for (size_t k = 0; k < r.modes.size(); ++k) {
       const double v = r.modes[k].shape(static_cast<int>(i));
       if (std::abs(v) <= round_off[k])

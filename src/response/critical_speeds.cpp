@@ -63,9 +63,12 @@ namespace {
 using Eigenspace = std::vector<const Mode*>;
 
 // What a load does to a set of modes, each counted with a weight w (1: the eigenspace itself):
-// the combination it drives, ψ = Σ w φ conj(φᵀQ) / ‖(w φᵀQ)‖ (mass-normalised, as each φ is;
-// complex where the modal forces are out of phase), and F₀ = ψᴴQ, the modal force on it. With
-// every w = 1 this is the eigenspace's φ* = Φ_E Φ_EᵀQ / ‖Φ_EᵀQ‖ with F₀ = ‖Φ_EᵀQ‖.
+// the combination it drives, ψ = Σ w φ conj(φᵀQ) / N with N = ‖(w φᵀQ)‖ (mass-normalised where
+// every w = 1; complex where the modal forces are out of phase); F₀ = ψᵀQ = Σ w|φᵀQ|²/N (the
+// unconjugated product, real by construction), the modal force on ψ that the energy criterion
+// weighs; and N, with which N·ψ = Σ w (φᵀQ)* φ is the weighted sum of the modes' own forced
+// motions, whose magnitude is what each DOF grows by. With every w = 1 this is the eigenspace's
+// φ* = Φ_E Φ_EᵀQ / ‖Φ_EᵀQ‖ with F₀ = N = ‖Φ_EᵀQ‖.
 struct WeightedMode {
   const Mode* mode;
   double weight;
@@ -74,6 +77,7 @@ struct WeightedMode {
 struct DrivenMode {
   Eigen::VectorXcd shape;  // ψ
   double F0 = 0.0;
+  double N = 0.0;
 };
 
 DrivenMode driven_mode(const std::vector<WeightedMode>& modes, const Eigen::VectorXcd& Q) {
@@ -88,7 +92,8 @@ DrivenMode driven_mode(const std::vector<WeightedMode>& modes, const Eigen::Vect
   }
   if (!(norm_squared > 0.0)) return d;
   d.shape /= std::sqrt(norm_squared);
-  d.F0 = projection / std::sqrt(norm_squared);
+  d.N = std::sqrt(norm_squared);
+  d.F0 = projection / d.N;
   return d;
 }
 
@@ -131,16 +136,27 @@ int reported_dof(const LinearSystem& system, const Eigenspace& group, const Eige
   return out;
 }
 
+// Undamped growth per half period at a DOF whose entry in ψ is `at_output`: each mode j grows
+// as q = fⱼ t sin(ωt)/(2ω), π fⱼ/(2λ) per half period π/ω, so the weighted cluster moves the DOF
+// by π/(2λ)|Σ wⱼ fⱼ φⱼ(i)| = π N |ψ(i)|/(2λ) — exact for a DOF only one mode moves, whatever
+// its neighbours' weights (issue 17 review: π F₀|ψ(i)|/(2λ) overstated it by Σw|f|²/Σw²|f|²,
+// up to 2× inside the 1 % window).
+double growth_at(double eigenvalue, const DrivenMode& cluster, double at_output) {
+  return kPi * cluster.N / (2.0 * eigenvalue) * at_output;
+}
+
 // Growth per half period without damping, and what leaf friction takes of it (Den Hartog), of
 // the combination the load drives in the cluster; `at_output` is its entry at the output.
 void add_growth_and_friction(const LinearSystem& system, double eigenvalue, const DrivenMode& cluster, double at_output,
                              CriticalSpeed* row) {
-  // Undamped growth at resonance: q = F₀ t sin(ωt)/(2ω), π F₀/(2λ) per half period π/ω.
-  row->growth_per_half_period = kPi * cluster.F0 / (2.0 * eigenvalue) * at_output;
+  row->growth_per_half_period = growth_at(eigenvalue, cluster, at_output);
   // Each friction stage slides over the amplitude of its own stretch, in phase with the
-  // others or not: Σ R|δ(ψ)| per unit modal amplitude.
+  // others or not: Σ R|δ(ψ)| per unit modal amplitude. The energy balance on ψ's amplitude a
+  // gains π F₀/(2λ) and loses 2R/λ per half period; the growth above maps a to the output by
+  // (N/F₀)|ψ(i)| (π F₀/(2λ)·(N/F₀)|ψ(i)| = π N|ψ(i)|/(2λ)), so the decrement is mapped alike:
+  // growth ≤ decrement at the output exactly when π F₀ ≤ 4R, the criterion `friction_stops`.
   const double friction = response::modal_friction_work(system, cluster.shape);
-  row->friction_decrement_per_half_period = 2.0 * friction / eigenvalue * at_output;
+  row->friction_decrement_per_half_period = 2.0 * friction / eigenvalue * (cluster.N / cluster.F0) * at_output;
   if (friction > 0.0) {
     row->friction_stops = kPi * cluster.F0 <= 4.0 * friction;
     row->friction_threshold_scale = 4.0 * friction / (kPi * cluster.F0);
@@ -148,8 +164,8 @@ void add_growth_and_friction(const LinearSystem& system, double eigenvalue, cons
 }
 
 // The resonance at each requested output: its steady amplitude (the finite rest where the
-// resonant modes do not move the DOF) or its growth per half period, `modal_growth` (π F₀/(2λ))
-// times the driven mode's entry there, ×ω^p for velocity and acceleration (x = X e^{iωt}).
+// resonant modes do not move the DOF) or its growth per half period, `modal_growth` (π N/(2λ),
+// growth_at) times the driven mode's entry there, ×ω^p for velocity and acceleration (x = X e^{iωt}).
 std::vector<ResonanceAtOutput> at_outputs(const LinearSystem& system, const ModalResult& modes,
                                           const std::vector<OutputRequest>& outputs, const HarmonicResponse& response,
                                           double modal_growth, const Eigen::VectorXd& magnitude) {
@@ -210,7 +226,7 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
       respond(system, modes, load, source_load, options.friction_reference_amplitude).response;
   row.unbounded = unbounded_at(response, modes, out);
   row.amplitude = row.unbounded ? 0.0 : std::abs(response.displacement(out));
-  row.outputs = at_outputs(system, modes, options.outputs, response, kPi * cluster.F0 / (2.0 * first.eigenvalue),
+  row.outputs = at_outputs(system, modes, options.outputs, response, growth_at(first.eigenvalue, cluster, 1.0),
                            cluster_magnitude);
   return row;
 }

@@ -121,8 +121,10 @@ HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult
 }
 
 HarmonicResponse modal_harmonic_response(const LinearSystem& system, const ModalResult& modes,
-                                         const Eigen::VectorXcd& load, double frequency_hz, int mode_count) {
+                                         const Eigen::VectorXcd& load, double frequency_hz, int mode_count,
+                                         double source_load_norm) {
   check_sizes(system, modes, load, frequency_hz);
+  const double source_load = std::max(source_load_norm, load.norm());  // as harmonic_response
   HarmonicResponse out;
   out.frequency_hz = frequency_hz;
   const double omega = kTwoPi * frequency_hz;
@@ -137,7 +139,7 @@ HarmonicResponse modal_harmonic_response(const LinearSystem& system, const Modal
     if (mode.kind == ModeKind::oscillatory && response::undamped(system, mode) &&
         std::abs(mode.eigenvalue - omega * omega) <= kAtResonance * mode.eigenvalue) {
       // At its own frequency an undamped mode adds nothing finite: unbounded if driven.
-      if (drives(mode, load, load.norm())) out.resonant_modes.push_back(mode.index);
+      if (drives(mode, load, source_load)) out.resonant_modes.push_back(mode.index);
       continue;
     }
     const std::complex<double> denominator = mode.eigenvalue - omega * omega + i * omega * c;

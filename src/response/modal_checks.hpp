@@ -31,7 +31,8 @@ inline bool undamped(const LinearSystem& system, const Mode& mode) {
 /// coefficients at their zeros), so 1e-9 leaves six orders for worse-conditioned eigenvectors;
 /// yet a real load component of 1e-9 of the source's grows a resonance by 1e-9 of what the
 /// source's main harmonic does, below the digits a report prints. The critical speeds, the
-/// direct and modal responses and the sweeps all use this one rule.
+/// direct and modal responses (harmonic_response and modal_harmonic_response, each given its
+/// source's `source_load_norm`) and the sweeps all use this one rule.
 constexpr double kLoadRoundOff = 1e-9;
 
 /// The modal force φᵀQ, or exactly 0 where it is round-off by the rule above, `source_load`

@@ -183,12 +183,6 @@ TEST(VehicleReader, MissingFile) {
   EXPECT_THROW(load_vehicle("/nonexistent/wagon.toml"), InputError);
 }
 
-}  // namespace
-}  // namespace railmodal::test
-
-namespace railmodal::test {
-namespace {
-
 // A progressive spring given by its load–deflection curve (Khanin, springs Example 10): the
 // linear models take the tangent at the carried load; bad curves are named.
 const std::string kCurve = R"([vehicle]
@@ -236,12 +230,6 @@ TEST(VehicleReader, LoadDeflectionCurveErrors) {
   expect_curve_error("load = \"1000 kgf\"", "load = \"6000 kgf\"", {"beyond the last point"});
   expect_curve_error("load = \"1000 kgf\"\n", "", {"needs the static load"});
 }
-
-}  // namespace
-}  // namespace railmodal::test
-
-namespace railmodal::test {
-namespace {
 
 // Springs of different stiffness side by side in one stage (nested coil springs, issue 17
 // item 3): `parallel = [...]` sums them, c = Σ cᵢ (springs digest eq. (25)); a list of
@@ -302,12 +290,6 @@ TEST(VehicleReader, ParallelSpringErrors) {
       with_spring("spring = { parallel = [" + one + R"(, { static_deflection = "20 mm", load = "1000 kgf" }] })")));
   EXPECT_NEAR(v.elements[0].vertical_stages.at(0).stiffness / (1920 * kKgfPerCm), 1.0, 1e-14);
 }
-
-}  // namespace
-}  // namespace railmodal::test
-
-namespace railmodal::test {
-namespace {
 
 // Longitudinal motion freed in a file (issue 17 item 11): `free = ["longitudinal"]` on a body,
 // [draw_gear] to hold it, and the errors of each form.

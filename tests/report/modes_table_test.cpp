@@ -23,6 +23,31 @@ std::vector<std::string> words_of_line(const std::string& text, const std::strin
   return {};
 }
 
+// Issue 17 review, item 8: the DOF column was 18 wide, so a freed surge's label
+// (bogie1.longitudinal, 19) pushed its row's shape columns one place right of the heading's.
+// Every line of the shape table now has one length: the heading and each row line up.
+TEST(ModesTable, LongDofLabelsKeepTheShapeColumnsAligned) {
+  Vehicle v = load_vehicle(data_file("manchester_benchmark_coach.toml"));
+  for (Body& b : v.bodies) b.longitudinal_free = true;
+  const LinearSystem sys = assemble(v, DofSet::vertical);
+  std::ostringstream out;
+  write_modes(out, sys, solve_modes(sys), OutputFormat::table);
+  std::istringstream lines(out.str());
+  std::string line;
+  while (std::getline(lines, line) && line.rfind("mode shapes", 0) != 0) {
+  }
+  ASSERT_TRUE(std::getline(lines, line));  // the heading: "dof", then the mode numbers
+  const size_t width = line.size();
+  int rows = 0;
+  bool longitudinal = false;
+  for (; std::getline(lines, line) && !line.empty(); ++rows) {
+    EXPECT_EQ(line.size(), width) << line;
+    longitudinal = longitudinal || line.rfind("bogie1.longitudinal ", 0) == 0;
+  }
+  EXPECT_EQ(rows, sys.size());
+  EXPECT_TRUE(longitudinal);
+}
+
 // One DOF, m = 1 kg, k = 1e18 N/m: ω = 1e9 rad/s, f = 1.59e8 Hz.
 LinearSystem stiff_oscillator() {
   LinearSystem s;

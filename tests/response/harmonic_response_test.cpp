@@ -414,6 +414,22 @@ TEST(HarmonicResponse, UndampedResonanceIsUnboundedNotNaN) {
   EXPECT_TRUE(p.displacement.allFinite());
 }
 
+// Issue 17 item 5's one rule in the modal path too: a harmonic load that is round-off of its
+// source's total load (here 1e-12 of it, below kLoadRoundOff = 1e-9) drives no undamped mode
+// at resonance, in modal superposition as in the direct solve; measured against the load's own
+// norm (the default) it does.
+TEST(HarmonicResponse, ModalPathMeasuresRoundOffAgainstTheSourceLoad) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("two_axle_freight_wagon.toml")), DofSet::vertical);
+  const ModalResult modes = solve_modes(sys);
+  const Mode& bounce = mode_named(modes, "body bounce");
+  Eigen::VectorXcd Q = Eigen::VectorXcd::Zero(sys.size());
+  Q(sys.index_of("body.bounce")) = 1e-9;  // N; the source's total load: 1000 N
+  const double source_load = 1000.0;
+  EXPECT_TRUE(modal_harmonic_response(sys, modes, Q, bounce.frequency_hz).unbounded);
+  EXPECT_FALSE(harmonic_response(sys, modes, Q, bounce.frequency_hz, source_load).unbounded);
+  EXPECT_FALSE(modal_harmonic_response(sys, modes, Q, bounce.frequency_hz, 0, source_load).unbounded);
+}
+
 // At an undamped resonance an output the resonant mode does not move keeps its finite
 // amplitude, even when other modes are damped: the symmetric two-axle wagon with a damper on
 // pitch alone, driven by joints at its bounce frequency. The pitch amplitude there equals the

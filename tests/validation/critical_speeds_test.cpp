@@ -150,6 +150,23 @@ TEST(CriticalSpeeds, FrictionCriterionContinuousThroughTheDesignPoint) {
   EXPECT_GT(std::abs(far.threshold - at.threshold), 0.1 * at.threshold);
 }
 
+// Issue 17 review of item 6: inside the 1 % window pitch joins the bounce resonance with weight
+// 1 − g/1 %, but pitch does not move body.bounce (d0 = 0), so body.bounce grows per half period
+// as bounce alone does: 0.940 mm at every gap. Before, the growth was π F₀|ψ|/(2λ), which is
+// that times Σw|f|²/Σw²|f|² (1.234/1.562/1.935/1.744 mm at gaps 0.27/0.48/0.68/0.88 %). Pitch's
+// frequency scales as 1/r, so r × 1/(1 − g) opens a gap g. The bounce mode itself does not
+// depend on the pitch inertia and pitch's body.bounce entry is a symmetry zero, so the value
+// holds to round-off; 1e-6 leaves room for the eigensolver and is far below the 30 % defect.
+TEST(CriticalSpeeds, ClusterNeighbourDoesNotInflateGrowthItDoesNotMove) {
+  const BodyCriterion alone = body_criterion(1.1, "body bounce");  // 9 % apart: bounce alone
+  ASSERT_GT(alone.bounce_growth, 0.0);
+  for (double gap : {0.0025, 0.005, 0.0075, 0.01 - 1e-6, 0.01 + 1e-6}) {
+    const BodyCriterion near = body_criterion(1.0 / (1.0 - gap), "body bounce");
+    ASSERT_EQ(near.rows, 2) << "split at gap " << gap;
+    EXPECT_NEAR(near.bounce_growth, alone.bounce_growth, 1e-6 * alone.bounce_growth) << "gap " << gap;
+  }
+}
+
 // Progress of a study: non-decreasing, ending at exactly 1.
 TEST(CriticalSpeeds, StudyReportsProgress) {
   const Scene scene = load_scene(scene_file("resort_car_wheel_defects.toml"));

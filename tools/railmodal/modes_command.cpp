@@ -171,7 +171,11 @@ std::function<int()> add_modes_command(CLI::App& app) {
   cmd->add_option("--damping", options->damping,
                   "Damping matrix C (Matrix Market), optional with --mass; used by --damped");
   CLI::Option* dofs =
-      cmd->add_option("--dofs", options->dofs, "Motions: vertical (bounce, pitch), lateral (lateral, roll, yaw) or all")
+      cmd->add_option(
+             "--dofs", options->dofs,
+             "Motions: vertical (bounce, pitch, and surge where a body frees it), lateral (lateral, roll, yaw) "
+             "or all; a subset drops the couplings between the two sets, exact only for a "
+             "vehicle symmetric about its centre line")
           ->check(CLI::IsMember({"vertical", "lateral", "all"}))
           ->capture_default_str();
   cmd->add_option("--format", options->format, "Output format")
