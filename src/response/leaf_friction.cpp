@@ -65,12 +65,9 @@ void for_each_friction_stage(const LinearSystem& system, Visit visit) {
 
 }  // namespace
 
+// A real shape is the in-phase case of the complex one (|x + 0i| = |x| exactly).
 double modal_friction_work(const LinearSystem& system, const Eigen::VectorXd& shape) {
-  double work = 0.0;
-  for_each_friction_stage(system, [&](size_t k, double friction, double share) {
-    work += friction * std::abs(share * system.element_vertical_map.row(k).dot(shape));
-  });
-  return work;
+  return response::modal_friction_work(system, Eigen::VectorXcd(shape.cast<std::complex<double>>()));
 }
 
 double response::modal_friction_work(const LinearSystem& system, const Eigen::VectorXcd& shape) {
