@@ -45,6 +45,17 @@ struct TrackInput {
   Eigen::MatrixXd load_per_velocity;      ///< n × 3, N·s/m and N·m·s/m
 };
 
+/// A damper with a spring in series (Element::series_dampers) seen from the degrees of
+/// freedom: with s = stretch · q the element's stretch along its direction and F the damper
+/// force, the equations gain  M q̈ + C q̇ + K q + stretchᵀ F = f  and  Ḟ = k·(ṡ − F/c).
+struct SeriesDamperRow {
+  int element = 0;  ///< index into vehicle.elements
+  Motion direction = Motion::longitudinal;
+  Eigen::RowVectorXd stretch;  ///< 1 × n, m per unit of each degree of freedom
+  double damping = 0.0;        ///< c, N·s/m
+  double stiffness = 0.0;      ///< k, N/m
+};
+
 /// M, C, K in SI over `dofs`. K = elastic stiffness + gravity (preload) stiffness; the
 /// gravity part is kept separately so reports can show what the preload takes away.
 struct LinearSystem {
@@ -60,6 +71,9 @@ struct LinearSystem {
   /// positive, m) per unit of each degree of freedom; for a track element the track's own
   /// displacement is to be subtracted. The compression of the element is minus this stretch.
   Eigen::MatrixXd element_vertical_map;
+  /// The series spring–dampers of the elements, whose stretch has a component in the kept
+  /// degrees of freedom. Not in M, C, K: see SeriesDamperRow.
+  std::vector<SeriesDamperRow> series_dampers;
 
   int size() const { return static_cast<int>(dofs.size()); }
   /// Index of the DOF with this label, or -1.

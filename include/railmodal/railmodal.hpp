@@ -19,6 +19,8 @@
 #include "railmodal/errors.hpp"
 #include "railmodal/excitation.hpp"
 #include "railmodal/fft_check_report.hpp"
+#include "railmodal/hunting.hpp"
+#include "railmodal/hunting_report.hpp"
 #include "railmodal/input.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/matrix_market.hpp"
@@ -38,3 +40,4 @@
 #include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
 #include "railmodal/version.hpp"
+#include "railmodal/wheel_rail.hpp"

@@ -114,6 +114,16 @@ struct SwingHanger {
   double inclination = 0.0;  ///< α, rad, to the vertical in the mid position
 };
 
+/// A damper in series with a spring (a yaw damper and its rubber end bushes): it carries no
+/// static load and gives no static stiffness; at low frequency it is a damper, at high frequency
+/// the spring. Each one adds a first-order state (the damper force F) to the equations:
+/// Ḟ = k·(ṡ − F/c) with s the stretch of the element along `direction`.
+struct SeriesDamper {
+  Motion direction = Motion::longitudinal;  ///< longitudinal, lateral or bounce (vertical)
+  double damping = 0.0;                     ///< c, N·s/m, > 0
+  double stiffness = 0.0;                   ///< k of the series spring, N/m, > 0
+};
+
 /// A suspension element acting at one point between two bodies, or between a body and the
 /// track (lower = ""). Stages act in series (leaf spring in series with coil springs is the
 /// book's "double suspension"). The element's static vertical load follows from the static
@@ -137,6 +147,62 @@ struct Element {
   double vertical_damping = 0.0;      ///< N·s/m (viscous; carried in C)
   double lateral_damping = 0.0;       ///< N·s/m
   double longitudinal_damping = 0.0;  ///< N·s/m
+  /// Dampers with a spring in series, acting on the same relative motion of the point. Only the
+  /// hunting-stability analysis represents them; the undamped modes leave them out (they carry
+  /// no static force), and the analyses that cannot represent them refuse the vehicle.
+  std::vector<SeriesDamper> series_dampers;
+};
+
+/// Kalker's linear creep coefficients of one wheel–rail contact: the creep forces per unit
+/// creepage, F_x = −f11·ξ_x, F_y = −f22·ξ_y − f23·ξ_sp, M_z = f23·ξ_y − f33·ξ_sp (ξ_sp the
+/// spin creepage, 1/m). f11 = G·a·b·C11, f22 = G·a·b·C22, f23 = G·(ab)^{3/2}·C23,
+/// f33 = G·(ab)²·C33 (Kalker 1967; Knothe and Stichel, Rail Vehicle Dynamics, 2017, §4.3).
+struct CreepCoefficients {
+  double f11 = 0.0;  ///< longitudinal, N
+  double f22 = 0.0;  ///< lateral, N
+  double f23 = 0.0;  ///< lateral–spin, N·m
+  double f33 = 0.0;  ///< spin, N·m²
+};
+
+/// What Hertz's theory needs to size the contact ellipse of one wheel on its rail, and the
+/// material for Kalker's coefficients.
+struct HertzContactInput {
+  /// Normal load on one wheel, N; none: half the wheelset's static axle load (its weight and
+  /// the static loads of the elements it carries).
+  std::optional<double> wheel_load;
+  /// Transverse radius of the wheel tread profile at the contact, m: positive convex, negative
+  /// concave (a worn, hollow tread); none: a straight (conical) tread. The wheel's radius in the
+  /// rolling direction is the wheelset's rolling radius r0.
+  std::optional<double> wheel_transverse_radius;
+  double rail_head_radius = 0.0;  ///< transverse radius of the rail head, m, > 0
+  double youngs_modulus = 2.1e11;  ///< E, Pa (wheel and rail of one steel)
+  double poisson_ratio = 0.28;     ///< ν
+};
+
+/// The linearised wheel–rail contact of one wheelset (docs/stability.md derives its terms).
+struct WheelRailContact {
+  double rolling_radius = 0.0;        ///< r0, m: nominal rolling radius of the wheels
+  double contact_half_spacing = 0.0;  ///< l0, m: half the lateral distance between the contact points
+  double conicity = 0.0;              ///< λ: equivalent conicity (≥ 0)
+  /// ε: contact-angle parameter (the gravitational stiffness is W·ε/l0); none: the value for
+  /// conical wheels on knife-edge rails (docs/stability.md says which).
+  std::optional<double> contact_angle_parameter;
+  /// σ: roll parameter (its definition and the terms it enters are in docs/stability.md);
+  /// none: the value for conical wheels on knife-edge rails.
+  std::optional<double> roll_parameter;
+  /// Exactly one of the two: the creep coefficients given directly (per wheel), or the Hertz
+  /// contact they are computed from.
+  std::optional<CreepCoefficients> creep;
+  std::optional<HertzContactInput> hertz;
+};
+
+/// A wheelset on the rails: a Body (mass, roll and yaw inertia, its lateral and yaw motions
+/// free; its bounce, roll and pitch held, since in the linear model they follow the rails) with
+/// the contact that ties it to the track and the spin inertia that gives the gyroscopic terms.
+struct Wheelset {
+  std::string body;           ///< name of the Body that is the wheelset
+  double spin_inertia = 0.0;  ///< I_y about the axle, kg·m² (≥ 0)
+  WheelRailContact contact;
 };
 
 /// A vehicle: bodies, elements and the gravity they stand in.
@@ -146,6 +212,9 @@ struct Vehicle {
   double gravity = 9.81;  ///< m/s²; the book uses g = 981 cm/s²
   std::vector<Body> bodies;
   std::vector<Element> elements;
+  /// The bodies that are wheelsets on the rails; empty for the book's wagons, whose axles are
+  /// the track (elements with lower = "").
+  std::vector<Wheelset> wheelsets;
 };
 
 /// Combined stiffness of stages in series (each stage = count springs in parallel), N/m.

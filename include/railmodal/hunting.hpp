@@ -1,0 +1,128 @@
+// railmodal — hunting stability: the eigenvalues of a vehicle on its wheelsets against speed
+// (root locus), the linear critical speed, every unstable speed interval, and the critical
+// speed against conicity (docs/stability.md).
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     auto vehicle = railmodal::load_vehicle("data/vehicles/wheelset_on_springs.toml");
+//     auto system = railmodal::assemble(vehicle, railmodal::DofSet::lateral);
+//     railmodal::HuntingOptions options;
+//     options.min_speed = 10.0 / 3.6;
+//     options.max_speed = 500.0 / 3.6;
+//     auto result = railmodal::solve_hunting_stability(system, options);
+//     if (result.critical)
+//       std::cout << "hunts above " << result.critical->speed * 3.6 << " km/h ("
+//                 << result.critical->branch << ", " << result.critical->frequency_hz << " Hz)\n";
+//     else
+//       std::cout << to_string(result.verdict) << "\n";
+//   }
+#pragma once
+
+#include <complex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "railmodal/linear_system.hpp"
+#include "railmodal/summary.hpp"
+#include "railmodal/wheel_rail.hpp"
+
+namespace railmodal {
+
+struct HuntingOptions {
+  double min_speed = 10.0 / 3.6;   ///< m/s, > 0 (the creep damping grows as 1/V)
+  double max_speed = 500.0 / 3.6;  ///< m/s, > min_speed
+  int speed_count = 200;           ///< points of the uniform speed grid, ≥ 2
+  /// Conicities of the design curve (critical speed against conicity); empty: none. The root
+  /// locus is at the vehicle's own conicity.
+  std::vector<double> conicities;
+  /// A damping ratio the user asks about (for example 0.05): the lowest speed at which the
+  /// least-damped branch's ζ falls to it. None: not asked.
+  std::optional<double> damping_threshold;
+  /// The critical speed is refined until its bracket is below this fraction of it.
+  double relative_tolerance = 1e-8;
+  /// Two eigenvectors at neighbouring speeds with a MAC below this are not the same branch:
+  /// the tracking reports a veer there.
+  double continuity_threshold = 0.8;
+  /// Worker threads over speeds and conicities; 0: the hardware's.
+  int threads = 0;
+  bool is_valid(std::string* why) const;
+};
+
+/// One branch of the root locus: an eigenvalue followed from speed to speed.
+struct HuntingBranch {
+  /// What moves most at the lowest speed: "wheelset 1 hunting", "bogie 1 yaw", "body lateral",
+  /// ... (with "(kinematic)" for the branch whose frequency tends to Klingel's V/Λ).
+  std::string name;
+  std::vector<std::complex<double>> eigenvalues;  ///< per speed, 1/s, Im λ ≥ 0
+  std::vector<double> damping_ratio;              ///< ζ = −Re λ/|λ| per speed
+  std::vector<double> frequency_hz;               ///< Im λ/2π per speed
+  /// MAC of the eigenvector with the one it was matched to at the previous speed (1 at the
+  /// first): below HuntingOptions::continuity_threshold the branch veers and its identity there
+  /// is uncertain.
+  std::vector<double> continuity;
+  bool veers = false;  ///< some continuity fell below the threshold
+};
+
+/// A speed interval over which the vehicle is unstable (some ζ < 0).
+struct UnstableInterval {
+  double from = 0.0;  ///< m/s
+  double to = 0.0;    ///< m/s
+  bool from_lowest_speed = false;  ///< already unstable at the lowest speed of the grid
+  bool to_highest_speed = false;   ///< still unstable at the highest speed of the grid
+  std::string branch;              ///< the branch that is unstable there (the least damped)
+};
+
+/// The linear critical speed: where the least-damped branch's ζ crosses 0 from stable below.
+struct HuntingCriticalSpeed {
+  double speed = 0.0;          ///< m/s, refined to HuntingOptions::relative_tolerance
+  std::string branch;
+  double frequency_hz = 0.0;   ///< the hunting frequency there
+  double klingel_frequency_hz = 0.0;  ///< V/Λ of the wheelsets' kinematic wavelength Λ
+  int evaluations = 0;         ///< eigen-solves the refinement took
+};
+
+enum class HuntingVerdict {
+  critical_speed_in_range,    ///< stable at the lowest speed, unstable somewhere above it
+  stable_throughout,          ///< stable at every speed of the range
+  unstable_at_lowest_speed    ///< already unstable at the lowest speed: no critical speed is invented
+};
+const char* to_string(HuntingVerdict verdict);
+std::optional<HuntingVerdict> hunting_verdict_from_string(const std::string& word);
+
+/// One point of the design curve.
+struct ConicityPoint {
+  double conicity = 0.0;
+  HuntingVerdict verdict = HuntingVerdict::stable_throughout;
+  std::optional<HuntingCriticalSpeed> critical;
+};
+
+struct HuntingResult {
+  std::vector<double> speeds;  ///< m/s, the grid
+  std::vector<std::string> dofs;  ///< labels of the degrees of freedom (the first-order system's
+                                  ///< displacement half), in order
+  std::vector<HuntingBranch> branches;  ///< the oscillatory branches (Im λ > 0), least damped first at the top speed
+  HuntingVerdict verdict = HuntingVerdict::stable_throughout;
+  std::optional<HuntingCriticalSpeed> critical;
+  std::vector<UnstableInterval> unstable_intervals;  ///< every one, in order of speed
+  /// The lowest speed at which the least-damped ζ reaches HuntingOptions::damping_threshold.
+  std::optional<double> threshold_speed;
+  std::vector<ConicityPoint> conicity_curve;  ///< one per HuntingOptions::conicities
+  std::vector<ResolvedContact> contacts;      ///< the wheelsets' contact as used
+  /// Checks (the eigen-solve residual, the tracking's continuity) and the stage times.
+  AnalysisSummary summary;
+};
+
+/// Eigenvalues of the first-order form of M q̈ + (C + C_c/V + V·G) q̇ + (K + K_c) q = 0
+/// (series dampers add a state each) over the speed grid, tracked by eigenvector continuity,
+/// with the critical speed, the unstable intervals and the conicity curve.
+///
+/// `system` is an assembly of the lateral motions (DofSet::lateral) or of all motions of a
+/// vehicle with wheelsets. Throws std::invalid_argument for bad options or a vehicle without
+/// wheelsets; NumericalError when an eigen-solve fails (naming the speed). A vehicle stable over
+/// the whole range, or unstable at its lowest speed, is a verdict, never an exception.
+HuntingResult solve_hunting_stability(const LinearSystem& system, const HuntingOptions& options = {});
+
+}  // namespace railmodal
