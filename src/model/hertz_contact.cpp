@@ -23,10 +23,14 @@ struct EllipseIntegrals {
 
 EllipseIntegrals ellipse_integrals(double k) {
   const double e2 = (1.0 - k) * (1.0 + k);  // 1 − k² without the cancellation near k = 1
-  if (e2 < 1e-6) {
-    // Nearly a circle: K − E and E/k² − K lose all their digits to cancellation; their series
-    // in e² (Abramowitz & Stegun, Handbook of Mathematical Functions, §17.3) to first order are exact to O(e⁴) < 1e-12.
-    return {kPi / 4.0 * (1.0 + 3.0 * e2 / 8.0), kPi / 4.0 * (1.0 + 9.0 * e2 / 8.0), kPi / 2.0 * (1.0 + e2 / 4.0)};
+  if (e2 < 1e-4) {
+    // Nearly a circle: K − E and E/k² − K lose their digits to cancellation (about 1e-16/e² of
+    // each), and Hertz's shape equation needs their ratio minus one, which is ~ e². Their
+    // series in e² (from K, E in Abramowitz & Stegun, Handbook of Mathematical Functions,
+    // §17.3) to second order are exact to O(e⁶) < 1e-12; the switch at e² = 1e-4 balances the
+    // two errors, each below 1e-11 in the curvature ratio.
+    return {kPi / 4.0 * (1.0 + e2 * (3.0 / 8.0 + e2 * 15.0 / 64.0)), kPi / 4.0 * (1.0 + e2 * (9.0 / 8.0 + e2 * 75.0 / 64.0)),
+            kPi / 2.0 * (1.0 + e2 * (1.0 / 4.0 + e2 * 9.0 / 64.0))};
   }
   double K, E;
   if (k < 1e-3) {
