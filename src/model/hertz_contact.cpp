@@ -29,7 +29,8 @@ EllipseIntegrals ellipse_integrals(double k) {
     // series in e² (from K, E in Abramowitz & Stegun, Handbook of Mathematical Functions,
     // §17.3) to second order are exact to O(e⁶) < 1e-12; the switch at e² = 1e-4 balances the
     // two errors, each below 1e-11 in the curvature ratio.
-    return {kPi / 4.0 * (1.0 + e2 * (3.0 / 8.0 + e2 * 15.0 / 64.0)), kPi / 4.0 * (1.0 + e2 * (9.0 / 8.0 + e2 * 75.0 / 64.0)),
+    return {kPi / 4.0 * (1.0 + e2 * (3.0 / 8.0 + e2 * 15.0 / 64.0)),
+            kPi / 4.0 * (1.0 + e2 * (9.0 / 8.0 + e2 * 75.0 / 64.0)),
             kPi / 2.0 * (1.0 + e2 * (1.0 / 4.0 + e2 * 9.0 / 64.0))};
   }
   double K, E;

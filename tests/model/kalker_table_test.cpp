@@ -70,7 +70,8 @@ TEST(KalkerTable, BracketedByItsNeighbours) {
       std::array<std::array<double, 4>, 4> corners{};
       int n = 0;
       for (int di = 0; di < 2; ++di)
-        for (int dj = 0; dj < 2; ++dj) corners[n++] = as_array(kalker_coefficients(ratios[i + di], kTabulatedPoisson[j + dj]));
+        for (int dj = 0; dj < 2; ++dj)
+          corners[n++] = as_array(kalker_coefficients(ratios[i + di], kTabulatedPoisson[j + dj]));
       for (double s : {0.13, 0.5, 0.91})
         for (double t : {0.07, 0.5, 0.77}) {
           const double ratio = ratios[i] + s * (ratios[i + 1] - ratios[i]);
@@ -110,7 +111,8 @@ TEST(KalkerTable, OutsideTheTableIsAnError) {
   EXPECT_NO_THROW(kalker_coefficients(1.0 / 0.1, 0.25));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  for (double ratio : {0.0999, 10.01, 0.0, -1.0, nan, inf}) EXPECT_THROW(kalker_coefficients(ratio, 0.25), std::invalid_argument);
+  for (double ratio : {0.0999, 10.01, 0.0, -1.0, nan, inf})
+    EXPECT_THROW(kalker_coefficients(ratio, 0.25), std::invalid_argument);
   for (double nu : {-0.01, 0.501, nan}) EXPECT_THROW(kalker_coefficients(1.0, nu), std::invalid_argument);
   try {
     kalker_coefficients(12.0, 0.25);
