@@ -1,6 +1,6 @@
-// The creepages of a wheelset's two wheels and the linear creep law (docs/stability.md derives
-// each term; Wickens, Fundamentals of Rail Vehicle Dynamics, 2003, ch. 2–3; Knothe and Stichel,
-// Rail Vehicle Dynamics, 2017, ch. 4–5).
+// The creepages of a wheelset's two wheels and the linear creep law. docs/stability.md derives
+// each term from first principles; the classical treatments are Wickens, Fundamentals of Rail
+// Vehicle Dynamics (2003), and Knothe and Stichel, Rail Vehicle Dynamics (2017).
 #include "model/wheelset_creepage.hpp"
 
 namespace railmodal::model {

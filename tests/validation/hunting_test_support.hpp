@@ -18,8 +18,8 @@
 namespace railmodal::test {
 
 /// One wheelset's data. Representative of a passenger-coach wheelset (r0, l0 as the Manchester
-/// benchmark coach's, 0.46 m and 0.75 m); the creep coefficients are of the size Kalker's theory
-/// gives for a ~100 kN axle load (Knothe and Stichel 2017, §4.3).
+/// benchmark coach's, 0.46 m and 0.75 m); the creep coefficients are of the size f = G·a·b·C
+/// (CreepCoefficients) gives for semi-axes of ~6 mm, a wheel load of ~50 kN.
 struct WheelsetData {
   std::string name = "wheelset";
   double x = 0.0;               // m, axle position

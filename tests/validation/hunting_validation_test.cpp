@@ -83,10 +83,10 @@ TEST(HuntingContactTerms, SignsFollowTheFrame) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Free wheelset without gravitational stiffness (ε = 0): unstable at every speed (Wickens 2003,
-// ch. 3: without the gravitational stiffness the free wheelset has no speed range of stability).
-// σ = 0 and f23 = 0 as in the classical statement: a1 = 0 in the quartic above, so it cannot be
-// Hurwitz; the roots show a positive real part.
+// Free wheelset without gravitational stiffness (ε = 0): unstable at every speed (the issue's
+// item 6; the classical result of Wickens's analysis). With σ = 0 and f23 = 0, a1 = 0 in the
+// quartic (hunting_test_support.hpp), so it cannot be Hurwitz; the roots show a positive real
+// part.
 TEST(HuntingValidation, FreeWheelsetWithoutGravitationalStiffnessIsUnstableAtEverySpeed) {
   WheelsetData d;
   d.epsilon = 0.0;
@@ -178,7 +178,7 @@ TEST(HuntingValidation, InfiniteCreepWithSpinTermsMatchesTheFirstOrderLimit) {
 // 2(f11·l0² + f33)·W·ε/l0 − 4·f23·f11·λ·l0/r0 (ε = σ), so the free wheelset on knife-edge rails
 // (ε = λ) is stable at low speed only while 2·f23 < W·r0·(1 + f33/(f11·l0²)) (next test). Our
 // wheelset alone weighs 14.7 kN, so its creep coefficients are taken for that load: f23 = 1e3
-// N·m (f23 grows with the load, as (ab)^{3/2}; Knothe and Stichel 2017, §4.3).
+// N·m (f23 = G·(ab)^{3/2}·C23 grows with the load faster than f11 and f22; CreepCoefficients).
 TEST(HuntingValidation, FreeWheelsetWithGravitationalStiffnessMatchesRouthHurwitz) {
   WheelsetData d;
   d.creep.f23 = 1.0e3;
