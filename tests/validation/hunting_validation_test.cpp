@@ -27,7 +27,8 @@ Vehicle single_wheelset(const WheelsetData& d, double k_y = 0.0, double k_psi = 
 }
 
 // ---------------------------------------------------------------------------------------------
-// The terms themselves, on one free wheelset: each entry against the equations above.
+// The terms themselves, on one free wheelset: each entry against the equations written out in
+// hunting_test_support.hpp (and docs/stability.md).
 TEST(HuntingContactTerms, FreeWheelsetMatricesMatchTheEquations) {
   WheelsetData d;
   const auto m = hunting_model(single_wheelset(d));
