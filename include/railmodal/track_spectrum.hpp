@@ -13,10 +13,10 @@
 //     const railmodal::TrackSpectrum s = railmodal::TrackSpectrum::ore_b176(
 //         railmodal::OreLevel::low, TrackIrregularity::vertical_level, {2 * pi / 70, 2 * pi / 3});
 //     std::cout << s.name() << ": RMS " << 1000 * s.rms() << " mm; S(0.1 rad/m) = "
-//               << s.density(0.1) << " m^2/(rad/m); at 50 m/s, 2 Hz: "
+//               << s.density(0.1) << " m^2/(rad/m);\n  at 50 m/s, 2 Hz: "
 //               << s.temporal_density(2.0, 50.0) << " m^2/Hz\n";
 //   }  // prints: ORE B176 low, vertical level: RMS 1.92189 mm; S(0.1 rad/m) = 3.8118e-05 m^2/(rad/m);
-//      //         at 50 m/s, 2 Hz: 7.29062e-07 m^2/Hz
+//      //           at 50 m/s, 2 Hz: 7.29062e-07 m^2/Hz
 //
 // Conventions (the same for every spectrum, tested in tests/excitation/track_spectrum_test.cpp):
 //  - Units are SI: wavenumber Ω in rad/m (Ω = 2π/λ), densities in m²/(rad/m); cross-level is
