@@ -324,6 +324,24 @@ std::string branch_label(const std::vector<size_t>& order, size_t branch, const 
   return place == kColouredBranches ? "more damped branches" : "";
 }
 
+// The root locus' extent: from the most damped point to the right of Re λ = 0, but no further
+// left than −2 max Im λ (ζ ≈ 0.9): the creep damping, ∝ 1/V, throws the low-speed points of
+// some branches far left (`cut` when it does).
+struct LocusBounds {
+  double left = 0.0, right = 0.0, top = 0.0;
+  bool cut = false;
+};
+LocusBounds locus_bounds(const HuntingResult& r) {
+  LocusBounds b;
+  for (const HuntingBranch& branch : r.branches)
+    for (const std::complex<double>& l : branch.eigenvalues)
+      if (std::isfinite(l.real()) && std::isfinite(l.imag()))
+        b.left = std::min(b.left, l.real()), b.right = std::max(b.right, l.real()), b.top = std::max(b.top, l.imag());
+  b.cut = b.left < -2.0 * b.top;
+  b.left = std::max(b.left, -2.0 * b.top);
+  return b;
+}
+
 // Root locus: Im λ/2π against Re λ, each branch a thin line in its colour and its points shaded
 // by speed (at most 60 a branch, evenly spaced: enough to read the direction of travel).
 report::Chart root_locus_chart(const HuntingResult& r) {
@@ -333,19 +351,12 @@ report::Chart root_locus_chart(const HuntingResult& r) {
   c.title = "Root locus: eigenvalues against speed";
   c.x_label = "real part Re λ (1/s)";
   c.y_label = "frequency Im λ/2π (Hz)";
-  // From the most damped point to the right of Re λ = 0, but no further left than −2 max Im λ
-  // (ζ ≈ 0.9): the creep damping, ∝ 1/V, throws the low-speed points of some branches far left.
-  double left = 0.0, right = 0.0, top = 0.0;
-  for (const HuntingBranch& b : r.branches)
-    for (const std::complex<double>& l : b.eigenvalues)
-      if (std::isfinite(l.real()) && std::isfinite(l.imag()))
-        left = std::min(left, l.real()), right = std::max(right, l.real()), top = std::max(top, l.imag());
-  left = std::max(left, -2.0 * top);
-  const double margin = 0.05 * std::max(right - left, 1e-9);
-  c.x_min = left - margin;
-  c.x_max = right + margin;
+  const LocusBounds bounds = locus_bounds(r);
+  const double margin = 0.05 * std::max(bounds.right - bounds.left, 1e-9);
+  c.x_min = bounds.left - margin;
+  c.x_max = bounds.right + margin;
   c.y_min = 0.0;
-  c.y_max = 1.05 * std::max(top / (2.0 * M_PI), 1e-6);
+  c.y_max = 1.05 * std::max(bounds.top / (2.0 * M_PI), 1e-6);
   const double span = highest_speed(r) - lowest_speed(r);
   c.shade_key = "dots: speed from " + kmh(lowest_speed(r)) + " (dark) to " + kmh(highest_speed(r)) + " (light)";
   c.lines.push_back({"Re λ = 0", 0.0, true, "the stability boundary: right of it a motion grows"});
@@ -472,13 +483,26 @@ void write_html(std::ostream& out, const Page& p) {
   else
     report::write_html_table(out, intervals_table(r));
   out << "<h2>Damping ratio against speed</h2>\n" << report::svg_chart(damping_chart(r));
-  out << "<p class=note>The " << kColouredBranches << " least-damped branches in colour, the others dashed. "
-      << "The axis is cut at ±60 %: creep damping grows as 1/V, so at low speed some branches are damped far "
-         "more.</p>\n";
+  // Say what the chart leaves out, when it does.
+  bool cut = false;
+  for (const HuntingBranch& b : r.branches)
+    for (double z : b.damping_ratio) cut = cut || std::abs(z) > 0.6;
+  if (r.branches.size() > kColouredBranches || cut)
+    out << "<p class=note>"
+        << (r.branches.size() > kColouredBranches
+                ? "The " + std::to_string(kColouredBranches) + " least-damped branches in colour, the others dashed. "
+                : std::string())
+        << (cut ? "The axis is cut at ±60 %: creep damping grows as 1/V, so at low speed some branches are damped "
+                  "far more."
+                : "")
+        << "</p>\n";
   out << "<h2>Root locus</h2>\n" << report::svg_chart(root_locus_chart(r));
   out << "<p class=note>Each branch from the lowest speed (dark dots) to the highest (light); a branch that crosses "
-         "Re λ = 0 to the right becomes unstable there. The axis stops at Re λ = −2 max Im λ (ζ ≈ 0.9): points "
-         "damped more than that lie left of it.</p>\n";
+         "Re λ = 0 to the right becomes unstable there."
+      << (locus_bounds(r).cut ? " The axis stops at Re λ = −2 max Im λ (ζ ≈ 0.9): points damped more than that lie "
+                                "left of it."
+                              : "")
+      << "</p>\n";
   out << "<h2>Branches</h2>\n";
   report::write_html_table(out, branches_table(r));
   out << "<p class=note>" << html_escape(kBranchNote) << "</p>\n";
