@@ -6,6 +6,7 @@
 #include "railmodal/hunting_report.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -519,16 +520,38 @@ void write_html(std::ostream& out, const Page& p) {
 
 // ---- CSV and JSON ----
 
+// A CSV number to 10 significant digits, or blank when it is not finite. std::to_chars (Ryu): the
+// stream's setprecision(10) took 56 ms for a 1000-speed, 20-branch locus (20 000 rows), printf's
+// %.10g 30 ms.
+void csv_number(std::string* row, double value) {
+  *row += ',';
+  if (!std::isfinite(value)) return;
+  char text[32];
+  const std::to_chars_result end = std::to_chars(text, text + sizeof text, value, std::chars_format::general, 10);
+  row->append(text, end.ptr);
+}
+
 void write_csv(std::ostream& out, const HuntingResult& r) {
   using report::csv_heading;
   out << csv_heading("speed", "km/h") << ",branch," << csv_heading("eigenvalue_re", "1/s") << ","
       << csv_heading("eigenvalue_im", "1/s") << "," << csv_heading("frequency", "Hz") << ",damping_ratio,continuity\n";
-  out << std::setprecision(10);
-  for (const HuntingBranch& b : r.branches)
-    for (size_t i = 0; i < b.eigenvalues.size() && i < r.speeds.size(); ++i)
-      out << r.speeds[i] * kKmh << "," << report::csv_field(b.name) << "," << b.eigenvalues[i].real() << ","
-          << b.eigenvalues[i].imag() << "," << b.frequency_hz[i] << "," << b.damping_ratio[i] << ","
-          << (i < b.continuity.size() ? b.continuity[i] : 1.0) << "\n";
+  std::string row;
+  for (const HuntingBranch& b : r.branches) {
+    const std::string name = "," + report::csv_field(b.name);
+    for (size_t i = 0; i < b.eigenvalues.size() && i < r.speeds.size(); ++i) {
+      row.clear();
+      csv_number(&row, r.speeds[i] * kKmh);
+      row.erase(0, 1);  // the first field has no comma before it
+      row += name;
+      csv_number(&row, b.eigenvalues[i].real());
+      csv_number(&row, b.eigenvalues[i].imag());
+      csv_number(&row, b.frequency_hz[i]);
+      csv_number(&row, b.damping_ratio[i]);
+      csv_number(&row, i < b.continuity.size() ? b.continuity[i] : 1.0);
+      row += '\n';
+      out << row;
+    }
+  }
 }
 
 // A finite number, or null (never inf or NaN in JSON).
