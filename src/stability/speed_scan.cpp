@@ -1,0 +1,81 @@
+// Unstable intervals and the threshold speed (see speed_scan.hpp).
+#include "stability/speed_scan.hpp"
+
+#include <algorithm>
+
+#include "stability/damping_search.hpp"
+
+namespace railmodal::stability {
+
+namespace {
+
+// The speed where ζ − target changes sign between grid speeds a and b.
+double refine(const std::function<double(double)>& zeta_at, double target, double a, double b, double za, double zb,
+              double relative_tolerance, int* evaluations, int* own = nullptr) {
+  const BracketedRoot r =
+      bracketed_root([&](double v) { return zeta_at(v) - target; }, a, b, za - target, zb - target, relative_tolerance);
+  *evaluations += r.evaluations;
+  if (own) *own = r.evaluations;
+  return r.x;
+}
+
+}  // namespace
+
+std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speeds, const std::vector<double>& zeta,
+                                                const std::function<double(double)>& zeta_at,
+                                                double relative_tolerance, int* evaluations) {
+  const int n = static_cast<int>(speeds.size());
+  std::vector<ScannedInterval> intervals;
+  for (int s = 0; s < n; ++s) {
+    if (zeta[s] < 0.0) {
+      ScannedInterval interval;
+      interval.grid_index = s;
+      if (s == 0) {
+        interval.from = speeds[0];
+        interval.from_lowest_speed = true;
+      } else {
+        interval.from = refine(zeta_at, 0.0, speeds[s - 1], speeds[s], zeta[s - 1], zeta[s], relative_tolerance,
+                               evaluations, &interval.from_evaluations);
+      }
+      while (s + 1 < n && zeta[s + 1] < 0.0) ++s;
+      if (s == n - 1) {
+        interval.to = speeds[n - 1];
+        interval.to_highest_speed = true;
+      } else {
+        interval.to = refine(zeta_at, 0.0, speeds[s], speeds[s + 1], zeta[s], zeta[s + 1], relative_tolerance,
+                             evaluations);
+      }
+      intervals.push_back(interval);
+      continue;
+    }
+    // The dip guard: a grid minimum nearer zero than its rise to the higher neighbour.
+    if (s == 0 || s == n - 1 || zeta[s - 1] < 0.0 || zeta[s + 1] < 0.0) continue;
+    if (!(zeta[s] <= zeta[s - 1] && zeta[s] <= zeta[s + 1])) continue;
+    if (!(zeta[s] < std::max(zeta[s - 1], zeta[s + 1]) - zeta[s])) continue;
+    const Minimum dip = dip_minimum(zeta_at, speeds[s - 1], speeds[s + 1], relative_tolerance);
+    *evaluations += dip.evaluations;
+    if (!(dip.value < 0.0)) continue;
+    ScannedInterval interval;
+    interval.grid_index = s;
+    interval.from =
+        refine(zeta_at, 0.0, speeds[s - 1], dip.x, zeta[s - 1], dip.value, relative_tolerance, evaluations,
+               &interval.from_evaluations);
+    interval.to = refine(zeta_at, 0.0, dip.x, speeds[s + 1], dip.value, zeta[s + 1], relative_tolerance, evaluations);
+    intervals.push_back(interval);
+  }
+  return intervals;
+}
+
+std::optional<double> threshold_speed(const std::vector<double>& speeds, const std::vector<double>& zeta,
+                                      const std::function<double(double)>& zeta_at, double threshold,
+                                      double relative_tolerance, int* evaluations) {
+  if (zeta.empty()) return std::nullopt;
+  if (zeta[0] <= threshold) return speeds[0];
+  for (size_t s = 1; s < speeds.size(); ++s)
+    if (zeta[s] <= threshold)
+      return refine(zeta_at, threshold, speeds[s - 1], speeds[s], zeta[s - 1], zeta[s], relative_tolerance,
+                    evaluations);
+  return std::nullopt;
+}
+
+}  // namespace railmodal::stability
