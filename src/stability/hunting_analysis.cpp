@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "railmodal/errors.hpp"
 #include "shortest_text.hpp"
@@ -135,23 +136,52 @@ HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& 
   result.speeds = speed_grid(options);
   for (const Dof& d : system.dofs) result.dofs.push_back(d.label);
   const int ns = static_cast<int>(result.speeds.size());
+  // Eigenvalues at every speed; shapes only where the tracking needs them (the first speed,
+  // which names the branches, and both ends of every step the eigenvalues cannot match alone).
   std::vector<SpeedRoots> roots(ns);
-  parallel_for(ns, options.threads, [&](int s) { roots[s] = solve_at_speed(fos, result.speeds[s], true); });
+  parallel_for(ns, options.threads, [&](int s) { roots[s] = solve_at_speed(fos, result.speeds[s], false); });
+  clock.lap("eigenvalues over the speed grid");
+  // Shapes at the first speed (they name the branches), then wherever the tracking asks for
+  // them; tracked again until it asks for none. The eigenvalues do not depend on whether
+  // vectors are asked for (Eigen's real Schur form updates the whole of T either way), which is
+  // checked, so paths found before stay valid.
+  std::vector<int> missing = {0}, with_shapes;
+  RootPaths paths;
+  while (!missing.empty()) {
+    parallel_for(static_cast<int>(missing.size()), options.threads, [&](int k) {
+      SpeedRoots again = solve_at_speed(fos, result.speeds[missing[k]], true);
+      if (again.values != roots[missing[k]].values)
+        throw std::logic_error("hunting stability: the eigenvalues changed when eigenvectors were asked for");
+      roots[missing[k]] = std::move(again);
+    });
+    with_shapes.insert(with_shapes.end(), missing.begin(), missing.end());
+    missing.clear();
+    paths = track_roots(roots, &missing);
+    // A symmetric vehicle's nearly repeated roots (front and rear wheelsets, the two bogies)
+    // can leave the eigenvalues undecided at most speeds: then shapes everywhere at once, in
+    // one parallel batch, rather than pass after pass.
+    if (4 * (missing.size() + with_shapes.size()) > static_cast<size_t>(ns)) {
+      missing.clear();
+      for (int s = 0; s < ns; ++s)
+        if (roots[s].shapes.size() == 0) missing.push_back(s);
+    }
+  }
+  std::sort(with_shapes.begin(), with_shapes.end());
   double residual = 0.0;
-  for (const SpeedRoots& r : roots) {
+  for (int s : with_shapes) {
+    const SpeedRoots& r = roots[s];
     if (!(r.residual <= kMaxResidual))
       throw NumericalError("hunting stability: the eigen-solve at " + shortest_text(r.speed, 6) +
                            " m/s has a relative residual of " + shortest_text(r.residual, 3) + " (limit " +
                            shortest_text(kMaxResidual, 3) + ")");
     residual = std::max(residual, r.residual);
   }
-  clock.lap("eigenvalues over the speed grid");
+  clock.lap("tracking, with eigenvectors where it needs them");
 
-  const RootPaths paths = track_roots(roots);
   const double wavelength = shortest_wavelength(own);
   const Branches branches = group_branches(system, roots, paths, wavelength, options.continuity_threshold);
   result.branches = branches.oscillatory;
-  clock.lap("tracking");
+  clock.lap("branches and names");
 
   std::vector<double> zeta(ns);
   for (int s = 0; s < ns; ++s) zeta[s] = least_damped(roots[s].values).zeta;
@@ -190,6 +220,8 @@ HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& 
                             1.0 - options.continuity_threshold, continuity >= options.continuity_threshold});
   summary.checks.push_back({"least-damped ζ at the lowest speed", zeta.front(), inf, true});
   summary.checks.push_back({"refinement evaluations (eigenvalues only)", static_cast<double>(evaluations), inf, true});
+  summary.checks.push_back({"speeds solved with eigenvectors (for the tracking)", static_cast<double>(with_shapes.size()),
+                            inf, true});
   return result;
 }
 

@@ -1,6 +1,7 @@
 // Root tracking by eigenvector continuity (see root_tracking.hpp for the cost and why).
 #include "stability/root_tracking.hpp"
 
+#include <algorithm>
 #include <complex>
 #include <limits>
 
@@ -54,7 +55,38 @@ std::vector<int> minimum_cost_assignment(const std::vector<std::vector<double>>&
   return column;
 }
 
-RootPaths track_roots(const std::vector<SpeedRoots>& speeds) {
+namespace {
+
+double relative_distance(std::complex<double> a, std::complex<double> b) {
+  const double scale = std::abs(a) + std::abs(b);
+  return scale > 0.0 ? std::abs(a - b) / scale : 0.0;
+}
+
+// The root each path continues to when the eigenvalues alone decide, or an empty vector.
+std::vector<int> clear_continuation(const std::vector<std::complex<double>>& predicted, const Eigen::VectorXcd& now) {
+  const int n = static_cast<int>(now.size());
+  std::vector<int> next(n, -1);
+  std::vector<bool> taken(n, false);
+  std::vector<std::pair<double, int>> order(n);
+  for (int p = 0; p < n; ++p) {
+    for (int j = 0; j < n; ++j) order[j] = {relative_distance(now(j), predicted[p]), j};
+    std::sort(order.begin(), order.end());
+    const std::complex<double> best = now(order[0].second);
+    int k = 1;
+    while (k < n && relative_distance(now(order[k].second), best) <= 1e-10) ++k;  // the same value
+    if (k < n && !(order[0].first <= 0.2 * order[k].first)) return {};
+    int pick = 0;
+    while (pick < k && taken[order[pick].second]) ++pick;
+    if (pick == k) return {};  // every root of that value is another path's
+    next[p] = order[pick].second;
+    taken[next[p]] = true;
+  }
+  return next;
+}
+
+}  // namespace
+
+RootPaths track_roots(const std::vector<SpeedRoots>& speeds, std::vector<int>* missing) {
   RootPaths paths;
   if (speeds.empty()) return paths;
   const int n = static_cast<int>(speeds[0].values.size());
@@ -63,28 +95,37 @@ RootPaths track_roots(const std::vector<SpeedRoots>& speeds) {
   paths.root.push_back(first);
   paths.continuity.push_back(std::vector<double>(n, 1.0));
   std::vector<std::vector<double>> cost(n, std::vector<double>(n));
+  std::vector<std::complex<double>> predicted(n);
   for (size_t s = 1; s < speeds.size(); ++s) {
     const SpeedRoots& now = speeds[s];
     const SpeedRoots& before = speeds[s - 1];
     const std::vector<int>& last = paths.root[s - 1];
-    // All MACs at once: |Uᴴ_before U_now|² (the shapes have unit norm or are zero).
-    const Eigen::MatrixXd mac = (before.shapes.adjoint() * now.shapes).cwiseAbs2();
     for (int p = 0; p < n; ++p) {
-      std::complex<double> predicted = before.values(last[p]);
-      if (s >= 2) predicted = 2.0 * predicted - speeds[s - 2].values(paths.root[s - 2][p]);
-      for (int j = 0; j < n; ++j) {
-        const std::complex<double> value = now.values(j);
-        const double scale = std::abs(value) + std::abs(predicted);
-        const double distance = scale > 0.0 ? std::abs(value - predicted) / scale : 0.0;
-        cost[p][j] = (1.0 - mac(last[p], j)) + distance;
+      predicted[p] = before.values(last[p]);
+      if (s >= 2) predicted[p] = 2.0 * predicted[p] - speeds[s - 2].values(paths.root[s - 2][p]);
+    }
+    std::vector<int> next = clear_continuation(predicted, now.values);
+    std::vector<double> continuity(n, 1.0);
+    if (next.empty()) {
+      const bool shapes = before.shapes.size() > 0 && now.shapes.size() > 0;
+      Eigen::MatrixXd mac = Eigen::MatrixXd::Ones(n, n);
+      // All MACs at once: |Uᴴ_before U_now|² (the shapes have unit norm or are zero).
+      if (shapes) mac = (before.shapes.adjoint() * now.shapes).cwiseAbs2();
+      for (int p = 0; p < n; ++p)
+        for (int j = 0; j < n; ++j) cost[p][j] = (1.0 - mac(last[p], j)) + relative_distance(now.values(j), predicted[p]);
+      next = minimum_cost_assignment(cost);
+      if (shapes) {
+        for (int p = 0; p < n; ++p) continuity[p] = mac(last[p], next[p]);
+      } else {
+        if (before.shapes.size() == 0) missing->push_back(static_cast<int>(s) - 1);
+        if (now.shapes.size() == 0) missing->push_back(static_cast<int>(s));
       }
     }
-    const std::vector<int> next = minimum_cost_assignment(cost);
-    std::vector<double> continuity(n);
-    for (int p = 0; p < n; ++p) continuity[p] = mac(last[p], next[p]);
-    paths.root.push_back(next);
+    paths.root.push_back(std::move(next));
     paths.continuity.push_back(std::move(continuity));
   }
+  std::sort(missing->begin(), missing->end());
+  missing->erase(std::unique(missing->begin(), missing->end()), missing->end());
   return paths;
 }
 

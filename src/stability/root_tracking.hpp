@@ -15,13 +15,20 @@ struct RootPaths {
 };
 
 /// Follows every root (both halves of each conjugate pair, and the real roots) from each speed
-/// to the next by a minimum-cost assignment (Hungarian method), the cost of continuing path p
-/// with root j being (1 − MAC(shape_p, shape_j)) + |λ_j − λ̂_p| / (|λ_j| + |λ̂_p|), λ̂_p the
-/// path's eigenvalue extrapolated linearly from its last two speeds. The MAC keeps a mode's
-/// identity where eigenvalues cross; the eigenvalue term tells apart what the MAC cannot: the
-/// two halves of a conjugate pair (whose shapes are conjugate, MAC ≈ 1 for a nearly real shape)
-/// and the two real roots of an overdamped mode. Needs shapes at every speed.
-RootPaths track_roots(const std::vector<SpeedRoots>& speeds);
+/// to the next, predicting each path's eigenvalue λ̂ linearly from its last two speeds.
+///  - Where the eigenvalues alone decide (each path's nearest root, in relative distance
+///    |λ − λ̂|/(|λ| + |λ̂|), is at most a fifth of the distance to the next nearest root of a
+///    different value, and no two paths want the same one), each path continues to its nearest
+///    root, continuity 1: no shapes are needed there. Roots of the same value (within 1e-10: a
+///    symmetric vehicle's repeated roots) are interchangeable and taken in order.
+///  - Elsewhere, if both speeds have shapes, by the minimum-cost assignment (Hungarian method)
+///    with cost (1 − MAC(shape_p, shape_j)) + |λ_j − λ̂_p|/(|λ_j| + |λ̂_p|), the continuity the
+///    MAC. The MAC keeps a mode's identity where eigenvalues come close or cross; the eigenvalue
+///    term tells apart what the MAC cannot: the two halves of a conjugate pair (conjugate shapes,
+///    MAC ≈ 1 for a nearly real shape) and the two real roots of an overdamped mode.
+///  - If shapes are missing there, the assignment uses the eigenvalue term alone and the speeds
+///    without shapes are added to `missing`: solve them with shapes and track again.
+RootPaths track_roots(const std::vector<SpeedRoots>& speeds, std::vector<int>* missing);
 
 /// The assignment of rows to columns of a square cost matrix that minimises the total cost
 /// (Kuhn–Munkres with potentials, O(n³)); returns the column of each row.
