@@ -62,6 +62,9 @@ double relative_distance(std::complex<double> a, std::complex<double> b) {
   return scale > 0.0 ? std::abs(a - b) / scale : 0.0;
 }
 
+// Roots closer than this (relative distance) are twins: taken as one value, in order.
+constexpr double kTwins = 1e-4;
+
 // The root each path continues to when the eigenvalues alone decide, or an empty vector.
 std::vector<int> clear_continuation(const std::vector<std::complex<double>>& predicted, const Eigen::VectorXcd& now) {
   const int n = static_cast<int>(now.size());
@@ -73,7 +76,7 @@ std::vector<int> clear_continuation(const std::vector<std::complex<double>>& pre
     std::sort(order.begin(), order.end());
     const std::complex<double> best = now(order[0].second);
     int k = 1;
-    while (k < n && relative_distance(now(order[k].second), best) <= 1e-10) ++k;  // the same value
+    while (k < n && relative_distance(now(order[k].second), best) <= kTwins) ++k;
     if (k < n && !(order[0].first <= 0.2 * order[k].first)) return {};
     int pick = 0;
     while (pick < k && taken[order[pick].second]) ++pick;

@@ -19,8 +19,12 @@ struct RootPaths {
 ///  - Where the eigenvalues alone decide (each path's nearest root, in relative distance
 ///    |λ − λ̂|/(|λ| + |λ̂|), is at most a fifth of the distance to the next nearest root of a
 ///    different value, and no two paths want the same one), each path continues to its nearest
-///    root, continuity 1: no shapes are needed there. Roots of the same value (within 1e-10: a
-///    symmetric vehicle's repeated roots) are interchangeable and taken in order.
+///    root, continuity 1: no shapes are needed there. Twins, roots that agree to a relative 1e-4
+///    (a symmetric vehicle's front and rear wheelsets or bogies, whose roots split by 1e-5 and
+///    less), count as one value and are taken in order: which twin a path continues to is not
+///    decided (nor could a MAC decide it reliably where the split is that small), and its ζ and
+///    frequency are right to 1e-4 whichever it is. A true crossing passes through twins without
+///    harm: the prediction from the two speeds before carries each path on.
 ///  - Elsewhere, if both speeds have shapes, by the minimum-cost assignment (Hungarian method)
 ///    with cost (1 − MAC(shape_p, shape_j)) + |λ_j − λ̂_p|/(|λ_j| + |λ̂_p|), the continuity the
 ///    MAC. The MAC keeps a mode's identity where eigenvalues come close or cross; the eigenvalue
