@@ -41,10 +41,17 @@ std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weight
     }
     body_energy[b] += energy(i);
   }
-  const auto leader = std::max_element(body_energy.begin(), body_energy.end(),
-                                       [](const auto& a, const auto& b) { return a.second < b.second; });
-  const int body = leader->first;
-  const double total = leader->second;
+  // What moves most: the largest energy per unit of the body's mass, y² + k_roll²φ² + k_yaw²ψ²
+  // with k the radii of gyration (by energy alone, a car body that follows its bogies would
+  // name every low-speed mode of a bogie vehicle: it is ten times their mass).
+  int body = body_energy.begin()->first;
+  double most = -1.0;
+  for (const auto& [b, e] : body_energy) {
+    const double mass = system.vehicle.bodies[b].mass;
+    const double per_mass = mass > 0.0 ? e / mass : e;
+    if (per_mass > most) most = per_mass, body = b;
+  }
+  const double total = body_energy[body];
   std::vector<std::pair<double, Motion>> motions;
   for (int i = 0; i < n; ++i)
     if (system.dofs[i].body == body) motions.push_back({energy(i), system.dofs[i].motion});
