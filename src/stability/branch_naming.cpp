@@ -14,8 +14,7 @@ namespace {
 std::string spoken(const std::string& name) {
   size_t digits = name.size();
   while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
-  if (digits == 0 || digits == name.size() || !std::isalpha(static_cast<unsigned char>(name[digits - 1])))
-    return name;
+  if (digits == 0 || digits == name.size() || !std::isalpha(static_cast<unsigned char>(name[digits - 1]))) return name;
   return name.substr(0, digits) + " " + name.substr(digits);
 }
 

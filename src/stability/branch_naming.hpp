@@ -10,8 +10,8 @@ namespace railmodal::stability {
 
 /// The name of a root from its displacement shape weighted by √M_ii (squared entries: the
 /// kinetic energy of each degree of freedom, up to the factor ω²/2 they share). The body
-/// that moves most, with the most energy per unit of its mass, names it, in words with a space before a trailing number ("bogie1" →
-/// "bogie 1"):
+/// that moves most, with the most energy per unit of its mass, names it, in words with a space
+/// before a trailing number ("bogie1" → "bogie 1"):
 ///  - a wheelset (a body of system.vehicle.wheelsets) whose lateral and yaw motions both carry
 ///    at least 1 % of its energy is "hunting" (in the kinematic motion the yaw carries little
 ///    energy: ψ = 2πy/Λ), otherwise "lateral" or "yaw";

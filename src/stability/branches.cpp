@@ -90,8 +90,10 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
       const int rp = paths.root[s][p], rq = paths.root[s][q];
       const cd lp = speeds[s].values(rp), lq = speeds[s].values(rq);
       int r;
-      if (lp.imag() > 0.0 || lq.imag() > 0.0) r = lp.imag() >= lq.imag() ? rp : rq;
-      else r = lp.real() >= lq.real() ? rp : rq;
+      if (lp.imag() > 0.0 || lq.imag() > 0.0)
+        r = lp.imag() >= lq.imag() ? rp : rq;
+      else
+        r = lp.real() >= lq.real() ? rp : rq;
       if (s == 0) first_root = r;
       const cd value = speeds[s].values(r);
       const cd upper = value.imag() < 0.0 ? std::conj(value) : value;

@@ -52,7 +52,8 @@ BracketedRoot bracketed_root(const std::function<double(double)>& f, double a, d
     }
     // Half the allowed bracket (the bracket |c − b| ends at most relative_tolerance·|b|), and
     // never below round-off.
-    const double tol = std::max(0.5 * relative_tolerance * std::abs(b), 4.0 * std::numeric_limits<double>::epsilon() * std::abs(b));
+    const double tol =
+        std::max(0.5 * relative_tolerance * std::abs(b), 4.0 * std::numeric_limits<double>::epsilon() * std::abs(b));
     const double m = 0.5 * (c - b);
     if (std::abs(m) <= tol || fb == 0.0) break;
     if (std::abs(e) >= tol && std::abs(fa) > std::abs(fb)) {
@@ -66,8 +67,10 @@ BracketedRoot bracketed_root(const std::function<double(double)>& f, double a, d
         p = s * (2.0 * m * t * (t - r) - (b - a) * (r - 1.0));
         q = (t - 1.0) * (r - 1.0) * (s - 1.0);
       }
-      if (p > 0.0) q = -q;
-      else p = -p;
+      if (p > 0.0)
+        q = -q;
+      else
+        p = -p;
       if (2.0 * p < std::min(3.0 * m * q - std::abs(tol * q), std::abs(e * q))) {
         e = d;
         d = p / q;
@@ -103,8 +106,10 @@ Minimum dip_minimum(const std::function<double(double)>& f, double a, double b, 
     }
     ++out.evaluations;
   }
-  if (f1 <= f2) out.x = x1, out.value = f1;
-  else out.x = x2, out.value = f2;
+  if (f1 <= f2)
+    out.x = x1, out.value = f1;
+  else
+    out.x = x2, out.value = f2;
   return out;
 }
 

@@ -116,8 +116,7 @@ SpeedRoots solve_at_speed(const FirstOrderSystem& system, double speed, bool vec
   const Eigen::VectorXd scaling = solve::balance(A);
   const Eigen::EigenSolver<Eigen::MatrixXd> eig(A, vectors);
   if (eig.info() != Eigen::Success || !eig.eigenvalues().allFinite())
-    throw NumericalError("hunting stability: the eigensolver did not converge at " + shortest_text(speed, 6) +
-                         " m/s");
+    throw NumericalError("hunting stability: the eigensolver did not converge at " + shortest_text(speed, 6) + " m/s");
   SpeedRoots roots;
   roots.speed = speed;
   roots.values = eig.eigenvalues();

@@ -26,13 +26,13 @@ class FirstOrderSystem {
   const Eigen::VectorXd& mass_weights() const { return mass_weights_; }
 
  private:
-  Eigen::MatrixXd stiffness_;          // M⁻¹(K + K_c)
-  Eigen::MatrixXd damping_;            // M⁻¹C
-  Eigen::MatrixXd creep_damping_;      // M⁻¹C_c
-  Eigen::MatrixXd gyroscopic_;         // M⁻¹G
-  Eigen::MatrixXd series_force_;       // M⁻¹Sᵀ, n × m
-  Eigen::MatrixXd series_stretch_;     // k·S, m × n
-  Eigen::VectorXd series_stiffness_;   // k/c, m
+  Eigen::MatrixXd stiffness_;         // M⁻¹(K + K_c)
+  Eigen::MatrixXd damping_;           // M⁻¹C
+  Eigen::MatrixXd creep_damping_;     // M⁻¹C_c
+  Eigen::MatrixXd gyroscopic_;        // M⁻¹G
+  Eigen::MatrixXd series_force_;      // M⁻¹Sᵀ, n × m
+  Eigen::MatrixXd series_stretch_;    // k·S, m × n
+  Eigen::VectorXd series_stiffness_;  // k/c, m
   Eigen::VectorXd mass_weights_;
 };
 

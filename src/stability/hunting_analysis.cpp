@@ -68,8 +68,10 @@ Scan scan(const std::vector<double>& speeds, const std::vector<double>& zeta, co
           double relative_tolerance) {
   Scan out;
   out.intervals = unstable_intervals(speeds, zeta, ZetaFunction{system}, relative_tolerance, &out.evaluations);
-  if (zeta[0] < 0.0) out.verdict = HuntingVerdict::unstable_at_lowest_speed;
-  else if (!out.intervals.empty()) out.verdict = HuntingVerdict::critical_speed_in_range;
+  if (zeta[0] < 0.0)
+    out.verdict = HuntingVerdict::unstable_at_lowest_speed;
+  else if (!out.intervals.empty())
+    out.verdict = HuntingVerdict::critical_speed_in_range;
   return out;
 }
 
@@ -124,7 +126,8 @@ std::vector<ConicityPoint> conicity_curve(const LinearSystem& system, const Cont
 
 }  // namespace
 
-HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& contact, const HuntingOptions& options) {
+HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& contact,
+                               const HuntingOptions& options) {
   HuntingResult result;
   StageClock clock(&result.summary);
   const ContactMatrices own = contact(std::nullopt);
@@ -211,17 +214,18 @@ HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& 
     for (double c : b.continuity) continuity = std::min(continuity, c);
   AnalysisSummary& summary = result.summary;
   summary.analysis = "hunting stability";
-  summary.method = "QR of the balanced first-order state matrix at each speed (Eigen), roots tracked by MAC and "
-                   "eigenvalue continuity (Hungarian assignment), least-damped ζ refined by Brent's method on " +
-                   std::to_string(worker_count(options.threads, ns)) + " thread(s)";
+  summary.method =
+      "QR of the balanced first-order state matrix at each speed (Eigen), roots tracked by MAC and "
+      "eigenvalue continuity (Hungarian assignment), least-damped ζ refined by Brent's method on " +
+      std::to_string(worker_count(options.threads, ns)) + " thread(s)";
   const double inf = std::numeric_limits<double>::infinity();
   summary.checks.push_back({"max relative eigen residual", residual, kMaxResidual, residual <= kMaxResidual});
-  summary.checks.push_back({"1 − minimum branch continuity (MAC)", 1.0 - continuity,
-                            1.0 - options.continuity_threshold, continuity >= options.continuity_threshold});
+  summary.checks.push_back({"1 − minimum branch continuity (MAC)", 1.0 - continuity, 1.0 - options.continuity_threshold,
+                            continuity >= options.continuity_threshold});
   summary.checks.push_back({"least-damped ζ at the lowest speed", zeta.front(), inf, true});
   summary.checks.push_back({"refinement evaluations (eigenvalues only)", static_cast<double>(evaluations), inf, true});
-  summary.checks.push_back({"speeds solved with eigenvectors (for the tracking)", static_cast<double>(with_shapes.size()),
-                            inf, true});
+  summary.checks.push_back(
+      {"speeds solved with eigenvectors (for the tracking)", static_cast<double>(with_shapes.size()), inf, true});
   return result;
 }
 

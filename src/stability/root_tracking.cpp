@@ -38,8 +38,10 @@ std::vector<int> minimum_cost_assignment(const std::vector<std::vector<double>>&
         if (min_to[j] < delta) delta = min_to[j], j1 = j;
       }
       for (int j = 0; j <= n; ++j) {
-        if (used[j]) u[row_of[j]] += delta, v[j] -= delta;
-        else min_to[j] -= delta;
+        if (used[j])
+          u[row_of[j]] += delta, v[j] -= delta;
+        else
+          min_to[j] -= delta;
       }
       j0 = j1;
     } while (row_of[j0] != 0);
@@ -115,7 +117,8 @@ RootPaths track_roots(const std::vector<SpeedRoots>& speeds, std::vector<int>* m
       // All MACs at once: |Uᴴ_before U_now|² (the shapes have unit norm or are zero).
       if (shapes) mac = (before.shapes.adjoint() * now.shapes).cwiseAbs2();
       for (int p = 0; p < n; ++p)
-        for (int j = 0; j < n; ++j) cost[p][j] = (1.0 - mac(last[p], j)) + relative_distance(now.values(j), predicted[p]);
+        for (int j = 0; j < n; ++j)
+          cost[p][j] = (1.0 - mac(last[p], j)) + relative_distance(now.values(j), predicted[p]);
       next = minimum_cost_assignment(cost);
       if (shapes) {
         for (int p = 0; p < n; ++p) continuity[p] = mac(last[p], next[p]);

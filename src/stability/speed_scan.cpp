@@ -22,8 +22,8 @@ double refine(const std::function<double(double)>& zeta_at, double target, doubl
 }  // namespace
 
 std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speeds, const std::vector<double>& zeta,
-                                                const std::function<double(double)>& zeta_at,
-                                                double relative_tolerance, int* evaluations) {
+                                                const std::function<double(double)>& zeta_at, double relative_tolerance,
+                                                int* evaluations) {
   const int n = static_cast<int>(speeds.size());
   std::vector<ScannedInterval> intervals;
   for (int s = 0; s < n; ++s) {
@@ -42,8 +42,8 @@ std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speed
         interval.to = speeds[n - 1];
         interval.to_highest_speed = true;
       } else {
-        interval.to = refine(zeta_at, 0.0, speeds[s], speeds[s + 1], zeta[s], zeta[s + 1], relative_tolerance,
-                             evaluations);
+        interval.to =
+            refine(zeta_at, 0.0, speeds[s], speeds[s + 1], zeta[s], zeta[s + 1], relative_tolerance, evaluations);
       }
       intervals.push_back(interval);
       continue;
@@ -57,9 +57,8 @@ std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speed
     if (!(dip.value < 0.0)) continue;
     ScannedInterval interval;
     interval.grid_index = s;
-    interval.from =
-        refine(zeta_at, 0.0, speeds[s - 1], dip.x, zeta[s - 1], dip.value, relative_tolerance, evaluations,
-               &interval.from_evaluations);
+    interval.from = refine(zeta_at, 0.0, speeds[s - 1], dip.x, zeta[s - 1], dip.value, relative_tolerance, evaluations,
+                           &interval.from_evaluations);
     interval.to = refine(zeta_at, 0.0, dip.x, speeds[s + 1], dip.value, zeta[s + 1], relative_tolerance, evaluations);
     intervals.push_back(interval);
   }

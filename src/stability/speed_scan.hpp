@@ -24,8 +24,8 @@ struct ScannedInterval {
 /// section over the two grid steps around it, and a negative minimum opens an interval whose
 /// two ends are refined.
 std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speeds, const std::vector<double>& zeta,
-                                                const std::function<double(double)>& zeta_at,
-                                                double relative_tolerance, int* evaluations);
+                                                const std::function<double(double)>& zeta_at, double relative_tolerance,
+                                                int* evaluations);
 
 /// The lowest speed at which ζ falls to `threshold` (the lowest grid speed when ζ is already at
 /// or below it there), refined by Brent's method; none when ζ stays above it.

@@ -39,7 +39,8 @@ struct HandBuilt {
 HandBuilt oscillators(const std::vector<Oscillator>& list) {
   const int n = static_cast<int>(list.size());
   HandBuilt h;
-  for (int i = 0; i < n; ++i) h.system.dofs.push_back({"osc" + std::to_string(i + 1) + ".lateral", -1, Motion::lateral});
+  for (int i = 0; i < n; ++i)
+    h.system.dofs.push_back({"osc" + std::to_string(i + 1) + ".lateral", -1, Motion::lateral});
   h.system.mass = Eigen::MatrixXd::Identity(n, n);
   h.system.damping = Eigen::MatrixXd::Zero(n, n);
   h.system.stiffness = Eigen::MatrixXd::Zero(n, n);
@@ -57,7 +58,9 @@ HandBuilt oscillators(const std::vector<Oscillator>& list) {
 
 // The oscillator whose d(V) = c_c/V + c0 + g·V vanishes at V = a and V = b (g > 0):
 // g·V² + c0·V + c_c = g(V − a)(V − b).
-Oscillator unstable_between(double a, double b, double omega = kTwoPi) { return {omega, -0.01 * (a + b), 0.01 * a * b, 0.01}; }
+Oscillator unstable_between(double a, double b, double omega = kTwoPi) {
+  return {omega, -0.01 * (a + b), 0.01 * a * b, 0.01};
+}
 
 HuntingOptions range(double low, double high, int count) {
   HuntingOptions o;

@@ -198,11 +198,11 @@ int main(int argc, char** argv) {
   std::cout << "locus_1_thread_s " << median(t1.wall) << "\nlocus_1_thread_cpu_s " << median(t1.cpu) << "\n";
   std::cout << "locus_2_threads_s " << median(t2.wall) << "\nlocus_2_threads_cpu_s " << median(t2.cpu) << "\n";
   std::cout << "critical_speed_s " << median(tc.wall) << "\ncritical_speed_cpu_s " << median(tc.cpu) << "\n";
-  std::cerr << "stability_timing: " << system.size() << " DOFs, " << system.series_dampers.size()
-            << " series dampers, " << one.branches.size() << " branches; critical speed "
-            << one.critical->speed * 3.6 << " km/h (" << one.critical->branch << ", " << one.critical->frequency_hz
-            << " Hz, Klingel " << one.critical->klingel_frequency_hz << " Hz), coarse grid "
-            << quick.critical->speed * 3.6 << " km/h in " << quick.critical->evaluations << " evaluations\n";
+  std::cerr << "stability_timing: " << system.size() << " DOFs, " << system.series_dampers.size() << " series dampers, "
+            << one.branches.size() << " branches; critical speed " << one.critical->speed * 3.6 << " km/h ("
+            << one.critical->branch << ", " << one.critical->frequency_hz << " Hz, Klingel "
+            << one.critical->klingel_frequency_hz << " Hz), coarse grid " << quick.critical->speed * 3.6 << " km/h in "
+            << quick.critical->evaluations << " evaluations\n";
   std::cerr << "  " << one.summary.brief() << "\n";
   for (const Check& check : one.summary.checks) std::cerr << "  " << check.name << ": " << check.value << "\n";
   for (const HuntingBranch& b : one.branches)
@@ -219,9 +219,10 @@ int main(int argc, char** argv) {
   j["contact_stiffness"] = matrix(c.stiffness);
   j["series"] = nlohmann::json::array();
   for (const SeriesDamperRow& row : system.series_dampers)
-    j["series"].push_back({{"stretch", std::vector<double>(row.stretch.data(), row.stretch.data() + row.stretch.size())},
-                           {"damping", row.damping},
-                           {"stiffness", row.stiffness}});
+    j["series"].push_back(
+        {{"stretch", std::vector<double>(row.stretch.data(), row.stretch.data() + row.stretch.size())},
+         {"damping", row.damping},
+         {"stiffness", row.stiffness}});
   j["speeds"] = one.speeds;
   // The least-damped ζ at each speed, over the branches (what the script recomputes from all
   // roots: here the least-damped root is always an oscillatory one).
