@@ -2,6 +2,7 @@
 #include "stability/speed_scan.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "stability/damping_search.hpp"
 
@@ -9,11 +10,19 @@ namespace railmodal::stability {
 
 namespace {
 
-// The speed where ζ − target changes sign between grid speeds a and b.
+// The speed where ζ − target changes sign between grid speeds a and b. An undamped root (|Re λ|
+// within round-off) makes the least-damped ζ exactly 0 on the stable side; when a grid end is
+// such a 0, an exact 0 counts as stable (> 0), or the root finder would take the grid speed for
+// the answer. Otherwise an exact 0 is the crossing itself (the crossing root within round-off).
 double refine(const std::function<double(double)>& zeta_at, double target, double a, double b, double za, double zb,
               double relative_tolerance, int* evaluations, int* own = nullptr) {
-  const BracketedRoot r =
-      bracketed_root([&](double v) { return zeta_at(v) - target; }, a, b, za - target, zb - target, relative_tolerance);
+  const bool shift = za == target || zb == target;
+  const auto above = [&](double zeta) {
+    const double v = zeta - target;
+    return shift && v == 0.0 ? std::numeric_limits<double>::min() : v;
+  };
+  const BracketedRoot r = bracketed_root([&](double v) { return above(zeta_at(v)); }, a, b, above(za), above(zb),
+                                         relative_tolerance);
   *evaluations += r.evaluations;
   if (own) *own = r.evaluations;
   return r.x;

@@ -96,6 +96,20 @@ TEST(HuntingStability, CriticalSpeedOfAnOscillatorToTheRequestedTolerance) {
   EXPECT_LE(previous, 20);  // Brent converges superlinearly: 1e-12 from a 4 m/s bracket
 }
 
+TEST(HuntingStability, AnUndampedModeDoesNotStopTheRefinementAtTheGrid) {
+  // An undamped 3 Hz mode makes the least-damped ζ exactly 0 at every stable speed; the
+  // crossing must still be refined to where the other mode's ζ turns negative.
+  const HandBuilt h = oscillators({{3.0 * kTwoPi, 0.0, 0.0, 0.0}, {kTwoPi, 1.0, 10.0, -0.01}});
+  const HuntingResult r = hunting_analysis(h.system, h.source(), range(1.0, 200.0, 50));
+  ASSERT_TRUE(r.critical);
+  const double exact = (1.0 + std::sqrt(1.4)) / 0.02;
+  // Here the crossing ends at the edge of the round-off band |ζ| ≤ 1e-11 (damping_search.hpp):
+  // 1e-11 / |dζ/dV| = 1e-11 / 8.6e-4 per m/s = 1.2e-8 m/s from the exact root, within the
+  // 1e-8 relative bracket.
+  EXPECT_LE(std::abs(r.critical->speed - exact), 1e-8 * exact + 2e-8);
+  EXPECT_EQ(r.critical->branch, "osc2.lateral");
+}
+
 TEST(HuntingStability, EveryUnstableIntervalEvenWhereTheVehicleRestabilises) {
   const HandBuilt h = oscillators({unstable_between(30.0, 170.0), unstable_between(250.0, 350.0, 1.3 * kTwoPi)});
   const HuntingResult r = hunting_analysis(h.system, h.source(), range(10.0, 400.0, 80));
