@@ -141,15 +141,23 @@ HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& 
   const int ns = static_cast<int>(result.speeds.size());
   // Eigenvalues at every speed; shapes only where the tracking needs them (the first speed,
   // which names the branches, and both ends of every step the eigenvalues cannot match alone).
+  // On a coarse grid (fewer than 64 speeds) the steps are too long for the eigenvalues alone to
+  // decide most of them: shapes everywhere at once.
+  const bool shapes_everywhere = ns < 64;
   std::vector<SpeedRoots> roots(ns);
-  parallel_for(ns, options.threads, [&](int s) { roots[s] = solve_at_speed(fos, result.speeds[s], false); });
+  parallel_for(ns, options.threads,
+               [&](int s) { roots[s] = solve_at_speed(fos, result.speeds[s], shapes_everywhere); });
   clock.lap("eigenvalues over the speed grid");
   // Shapes at the first speed (they name the branches), then wherever the tracking asks for
   // them; tracked again until it asks for none. The eigenvalues do not depend on whether
   // vectors are asked for (Eigen's real Schur form updates the whole of T either way), which is
   // checked, so paths found before stay valid.
-  std::vector<int> missing = {0}, with_shapes;
-  RootPaths paths;
+  std::vector<int> missing, with_shapes;
+  if (shapes_everywhere)
+    for (int s = 0; s < ns; ++s) with_shapes.push_back(s);
+  else
+    missing.push_back(0);
+  RootPaths paths = track_roots(roots, &missing);
   while (!missing.empty()) {
     parallel_for(static_cast<int>(missing.size()), options.threads, [&](int k) {
       SpeedRoots again = solve_at_speed(fos, result.speeds[missing[k]], true);
