@@ -13,10 +13,10 @@ constexpr double kRigidTolerance = 1e-9;
 constexpr double kGrowthTolerance = 1e-11;
 }  // namespace
 
-RootDamping root_damping(std::complex<double> value, double scale) {
+RootDamping root_damping(std::complex<double> value, double scale, bool raw) {
   const double magnitude = std::abs(value);
   if (magnitude <= kRigidTolerance * scale) return {0.0, true};
-  if (std::abs(value.real()) <= kGrowthTolerance * scale) return {0.0, false};
+  if (!raw && std::abs(value.real()) <= kGrowthTolerance * scale) return {0.0, false};
   return {-value.real() / magnitude, false};
 }
 
@@ -26,11 +26,11 @@ double root_scale(const Eigen::VectorXcd& values) {
   return scale;
 }
 
-LeastDamped least_damped(const Eigen::VectorXcd& values) {
+LeastDamped least_damped(const Eigen::VectorXcd& values, bool raw) {
   const double scale = root_scale(values);
   LeastDamped out;
   for (int i = 0; i < values.size(); ++i) {
-    const RootDamping d = root_damping(values(i), scale);
+    const RootDamping d = root_damping(values(i), scale, raw);
     if (d.rigid) continue;
     if (out.root < 0 || d.zeta < out.zeta) out = {d.zeta, i};
   }

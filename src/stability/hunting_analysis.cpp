@@ -54,7 +54,9 @@ double klingel_frequency(double speed, double wavelength) {
 // The least-damped ζ at any speed: eigenvalues only.
 struct ZetaFunction {
   const FirstOrderSystem& system;
-  double operator()(double speed) const { return least_damped(solve_at_speed(system, speed, false).values).zeta; }
+  double operator()(double speed, bool raw = false) const {
+    return least_damped(solve_at_speed(system, speed, false).values, raw).zeta;
+  }
 };
 
 // What the grid scan of one conicity gives.

@@ -10,18 +10,20 @@ namespace railmodal::stability {
 
 namespace {
 
-// The speed where ζ − target changes sign between grid speeds a and b. An undamped root (|Re λ|
-// within round-off) makes the least-damped ζ exactly 0 on the stable side; when a grid end is
-// such a 0, an exact 0 counts as stable (> 0), or the root finder would take the grid speed for
-// the answer. Otherwise an exact 0 is the crossing itself (the crossing root within round-off).
-double refine(const std::function<double(double)>& zeta_at, double target, double a, double b, double za, double zb,
+// The speed where ζ − target changes sign between grid speeds a and b (classified with the
+// round-off band, so a grid value of exactly 0 is a root within round-off). The refinement
+// follows ζ without the band, so that its accuracy is the bracket's, except where a grid end is
+// exactly 0: an undamped root makes the least-damped ζ exactly 0 on the stable side, and without
+// the band its round-off would decide the sign; there the banded ζ is followed, an exact 0
+// counting as stable (> 0), and the end is known to the band's width (speed_scan.hpp).
+double refine(const ZetaAt& zeta_at, double target, double a, double b, double za, double zb,
               double relative_tolerance, int* evaluations, int* own = nullptr) {
-  const bool shift = za == target || zb == target;
-  const auto above = [&](double zeta) {
+  const bool banded = za == target || zb == target;
+  const auto f = [&](double zeta) {
     const double v = zeta - target;
-    return shift && v == 0.0 ? std::numeric_limits<double>::min() : v;
+    return banded && v == 0.0 ? std::numeric_limits<double>::min() : v;
   };
-  const BracketedRoot r = bracketed_root([&](double v) { return above(zeta_at(v)); }, a, b, above(za), above(zb),
+  const BracketedRoot r = bracketed_root([&](double v) { return f(zeta_at(v, !banded)); }, a, b, f(za), f(zb),
                                          relative_tolerance);
   *evaluations += r.evaluations;
   if (own) *own = r.evaluations;
@@ -31,7 +33,7 @@ double refine(const std::function<double(double)>& zeta_at, double target, doubl
 }  // namespace
 
 std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speeds, const std::vector<double>& zeta,
-                                                const std::function<double(double)>& zeta_at, double relative_tolerance,
+                                                const ZetaAt& zeta_at, double relative_tolerance,
                                                 int* evaluations) {
   const int n = static_cast<int>(speeds.size());
   std::vector<ScannedInterval> intervals;
@@ -61,7 +63,8 @@ std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speed
     if (s == 0 || s == n - 1 || zeta[s - 1] < 0.0 || zeta[s + 1] < 0.0) continue;
     if (!(zeta[s] <= zeta[s - 1] && zeta[s] <= zeta[s + 1])) continue;
     if (!(zeta[s] < std::max(zeta[s - 1], zeta[s + 1]) - zeta[s])) continue;
-    const Minimum dip = dip_minimum(zeta_at, speeds[s - 1], speeds[s + 1], relative_tolerance);
+    const Minimum dip =
+        dip_minimum([&](double v) { return zeta_at(v, false); }, speeds[s - 1], speeds[s + 1], relative_tolerance);
     *evaluations += dip.evaluations;
     if (!(dip.value < 0.0)) continue;
     ScannedInterval interval;
@@ -75,7 +78,7 @@ std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speed
 }
 
 std::optional<double> threshold_speed(const std::vector<double>& speeds, const std::vector<double>& zeta,
-                                      const std::function<double(double)>& zeta_at, double threshold,
+                                      const ZetaAt& zeta_at, double threshold,
                                       double relative_tolerance, int* evaluations) {
   if (zeta.empty()) return std::nullopt;
   if (zeta[0] <= threshold) return speeds[0];

@@ -8,6 +8,10 @@
 
 namespace railmodal::stability {
 
+/// The least-damped ζ at a speed, with the round-off band (raw = false: what classifies a speed
+/// as stable or not) or without it (raw = true: what the refinement follows).
+using ZetaAt = std::function<double(double speed, bool raw)>;
+
 /// One unstable interval: ζ < 0 between `from` and `to`.
 struct ScannedInterval {
   double from = 0.0, to = 0.0;
@@ -24,13 +28,13 @@ struct ScannedInterval {
 /// section over the two grid steps around it, and a negative minimum opens an interval whose
 /// two ends are refined.
 std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speeds, const std::vector<double>& zeta,
-                                                const std::function<double(double)>& zeta_at, double relative_tolerance,
+                                                const ZetaAt& zeta_at, double relative_tolerance,
                                                 int* evaluations);
 
 /// The lowest speed at which ζ falls to `threshold` (the lowest grid speed when ζ is already at
 /// or below it there), refined by Brent's method; none when ζ stays above it.
 std::optional<double> threshold_speed(const std::vector<double>& speeds, const std::vector<double>& zeta,
-                                      const std::function<double(double)>& zeta_at, double threshold,
+                                      const ZetaAt& zeta_at, double threshold,
                                       double relative_tolerance, int* evaluations);
 
 }  // namespace railmodal::stability

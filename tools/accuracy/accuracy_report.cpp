@@ -590,12 +590,9 @@ int main(int argc, char** argv) {
                "refinement costs a handful of solves whatever the grid. A grid can also step over a narrow "
                "unstable interval: at every grid minimum of ζ closer to zero than its rise to the higher "
                "neighbour, golden section looks between the two neighbours (the dip guard). It finds intervals "
-               "down to 5e-5 of the speed that no grid speed falls in. Every end is refined to the tolerance or "
-               "to the round-off floor, whichever is wider: |Re λ| ≤ 1e-11·max|λ| counts as neutral, so an end "
-               "where ζ changes slowly is known to about 1e-11/|dζ/dV| (2e-4 m/s for the 10 mm/s interval, "
-               "whose ζ changes by 4e-8 per m/s there; 1e-8 m/s for a typical critical speed, where it changes "
-               "by 1e-3). The last rows' interval (1 mm/s wide) is not found, rightly: its deepest ζ is −1e-12, "
-               "a growth below that floor. A dip that does not make the grid's ζ a local minimum near "
+               "down to 5e-5 of the speed that no grid speed falls in, each end refined to the tolerance. The "
+               "last rows' interval (1 mm/s wide) is not found, rightly: its deepest ζ is −1e-12, a growth "
+               "below the round-off band (|Re λ| ≤ 1e-11·max|λ| counts as neutral). A dip that does not make the grid's ζ a local minimum near "
                "zero (a narrow interval on a steep slope of ζ) can still be missed: a finer grid is the "
                "remedy.\n\n";
   hunting_root_finder();
