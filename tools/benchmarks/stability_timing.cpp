@@ -10,13 +10,11 @@
 //                                       REPEATS runs
 //
 // The vehicle is built in code through the public API (a body, two bogies, four wheelsets on
-// primary and secondary springs, four yaw dampers with series stiffness), and assembled over
-// the lateral motions (vertical motions decouple from hunting in the linear model). Until the
-// contact terms (contact_matrices) and the assembly of series dampers are merged, this program
-// writes them itself: Wickens' linear wheelset equations (creep damping 2f22/V and 2f11l0²/V,
-// creep stiffness −2f22 and 2f11λl0/r0, gravitational stiffness Wλ/l0, the spin gyroscopic
-// yaw moment I_y·V/r0·λ/l0·ẏ; spin creep left out) and the yaw dampers' stretch rows. The cost
-// is that of the same-sized system whatever builds its terms.
+// primary and secondary springs with their contact data, four yaw dampers with series
+// stiffness), assembled over the lateral motions (vertical motions decouple from hunting in the
+// linear model), and solved by solve_hunting_stability, whose contact terms come from
+// contact_matrices. Until the assembly of series dampers is merged, this program adds the yaw
+// dampers' stretch rows to the assembled system itself.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -27,7 +25,6 @@
 
 #include "model_json.hpp"
 #include "railmodal/railmodal.hpp"
-#include "stability/hunting_analysis.hpp"
 
 using namespace railmodal;
 using benchmarks::matrix;
@@ -110,31 +107,6 @@ void add_yaw_dampers(LinearSystem& s) {
     }
 }
 
-ContactMatrices wickens_contact(const LinearSystem& s, double conicity) {
-  const int n = s.size();
-  ContactMatrices c{Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n), {}};
-  const double axle_load = 9.81 * (32000.0 / 4 + 2615.0 / 2 + kWheelsetMass);
-  for (const Wheelset& w : s.vehicle.wheelsets) {
-    const int y = s.index_of(w.body + ".lateral"), psi = s.index_of(w.body + ".yaw");
-    c.creep_damping(y, y) = 2.0 * kCreep;
-    c.creep_damping(psi, psi) = 2.0 * kCreep * kHalfSpacing * kHalfSpacing;
-    c.stiffness(y, psi) = -2.0 * kCreep;
-    c.stiffness(psi, y) = 2.0 * kCreep * conicity * kHalfSpacing / kRollingRadius;
-    c.stiffness(y, y) = axle_load * conicity / kHalfSpacing;
-    c.gyroscopic(psi, y) = w.spin_inertia / kRollingRadius * conicity / kHalfSpacing;
-    ResolvedContact r;
-    r.body = w.body;
-    r.axle_load = axle_load;
-    r.conicity = conicity;
-    r.rolling_radius = kRollingRadius;
-    r.contact_half_spacing = kHalfSpacing;
-    r.creep = CreepCoefficients{kCreep, kCreep, 0.0, 0.0};
-    r.klingel_wavelength = 2.0 * 3.14159265358979323846 * std::sqrt(kRollingRadius * kHalfSpacing / conicity);
-    c.wheelsets.push_back(r);
-  }
-  return c;
-}
-
 double median(std::vector<double> t) {
   std::sort(t.begin(), t.end());
   return t[t.size() / 2];
@@ -163,9 +135,6 @@ int main(int argc, char** argv) {
   const int repeats = std::max(1, std::atoi(argv[2]));
   LinearSystem system = assemble(bogie_vehicle(), DofSet::lateral);
   add_yaw_dampers(system);
-  const stability::ContactSource contact = [&system](std::optional<double> conicity) {
-    return wickens_contact(system, conicity.value_or(kConicity));
-  };
 
   HuntingOptions locus;
   locus.min_speed = 10.0 / 3.6;
@@ -181,10 +150,10 @@ int main(int argc, char** argv) {
   Times t1, t2, tc;
   for (int r = 0; r < repeats; ++r) {  // alternating, so that all three see the same machine
     locus.threads = 1;
-    time(t1, [&] { one = stability::hunting_analysis(system, contact, locus); });
+    time(t1, [&] { one = solve_hunting_stability(system, locus); });
     locus.threads = 2;
-    time(t2, [&] { two = stability::hunting_analysis(system, contact, locus); });
-    time(tc, [&] { quick = stability::hunting_analysis(system, contact, critical); });
+    time(t2, [&] { two = solve_hunting_stability(system, locus); });
+    time(tc, [&] { quick = solve_hunting_stability(system, critical); });
   }
   for (size_t b = 0; b < one.branches.size(); ++b)
     if (one.branches[b].eigenvalues != two.branches[b].eigenvalues) {
@@ -209,7 +178,7 @@ int main(int argc, char** argv) {
     std::cerr << "  " << b.name << (b.veers ? " (veers)" : "") << ": ζ " << b.damping_ratio.front() << " → "
               << b.damping_ratio.back() << "\n";
 
-  const ContactMatrices c = contact(std::nullopt);
+  const ContactMatrices c = contact_matrices(system);
   nlohmann::json j;
   j["mass"] = matrix(system.mass);
   j["damping"] = matrix(system.damping);
