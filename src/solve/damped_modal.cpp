@@ -37,6 +37,7 @@
 #include "railmodal/errors.hpp"
 #include "require_valid.hpp"
 #include "shortest_text.hpp"
+#include "solve/balance.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -82,32 +83,6 @@ Eigen::MatrixXd take(const Eigen::MatrixXd& A, const std::vector<int>& rows, con
   for (size_t i = 0; i < rows.size(); ++i)
     for (size_t j = 0; j < cols.size(); ++j) out(i, j) = A(rows[i], cols[j]);
   return out;
-}
-
-// Diagonal similarity D⁻¹AD by powers of two that makes each row and column of the
-// off-diagonal part of similar norm (Parlett & Reinsch 1969; LAPACK dgebal without the
-// permutation). Returns D; A is overwritten with D⁻¹AD.
-Eigen::VectorXd balance(Eigen::MatrixXd& A) {
-  const int n = static_cast<int>(A.rows());
-  Eigen::VectorXd d = Eigen::VectorXd::Ones(n);
-  for (bool done = false; !done;) {
-    done = true;
-    for (int i = 0; i < n; ++i) {
-      const double c = A.col(i).cwiseAbs().sum() - std::abs(A(i, i));
-      const double r = A.row(i).cwiseAbs().sum() - std::abs(A(i, i));
-      if (c == 0.0 || r == 0.0) continue;
-      double f = 1.0, cs = c;
-      while (cs < r / 2.0) { f *= 2.0; cs *= 4.0; }
-      while (cs > r * 2.0) { f /= 2.0; cs /= 4.0; }
-      if ((cs + r) / f < 0.95 * (c + r)) {
-        done = false;
-        d(i) *= f;
-        A.row(i) /= f;
-        A.col(i) *= f;
-      }
-    }
-  }
-  return d;
 }
 
 // Massless DOFs: with damping (row or column of C) they become first-order states w, without
@@ -296,7 +271,7 @@ Eigen::MatrixXd state_matrix(const StateLayout& layout, const ReducedEquations& 
 
 // Balanced first (see the file comment); the eigenvectors are scaled back to the state x.
 StateEigensolution solve_state_matrix(Eigen::MatrixXd A) {
-  const Eigen::VectorXd scaling = balance(A);
+  const Eigen::VectorXd scaling = solve::balance(A);
   Eigen::EigenSolver<Eigen::MatrixXd> eig(A, true);
   if (eig.info() != Eigen::Success) throw NumericalError("the state-space eigensolver did not converge");
   return {eig.eigenvalues(), scaling.cast<cd>().asDiagonal() * eig.eigenvectors()};

@@ -1,8 +1,13 @@
-// Hunting stability against speed.
-// PLACEHOLDER until issue 20's stability solver lands.
+// Hunting stability against speed: the options, the verdict's names, and the public entry,
+// which takes the contact terms from contact_matrices() (stability/hunting_analysis.cpp does
+// the work).
+#include <cmath>
 #include <stdexcept>
 
 #include "railmodal/hunting.hpp"
+#include "railmodal/wheel_rail.hpp"
+#include "require_valid.hpp"
+#include "stability/hunting_analysis.hpp"
 
 namespace railmodal {
 
@@ -22,10 +27,31 @@ std::optional<HuntingVerdict> hunting_verdict_from_string(const std::string& wor
   return std::nullopt;
 }
 
-bool HuntingOptions::is_valid(std::string*) const { return true; }
+bool HuntingOptions::is_valid(std::string* why) const {
+  if (!(min_speed > 0.0 && std::isfinite(min_speed)))
+    return invalid(why, "min_speed must be positive and finite (the creep damping grows as 1/V)");
+  if (!(max_speed > min_speed && std::isfinite(max_speed)))
+    return invalid(why, "max_speed must be finite and greater than min_speed");
+  if (speed_count < 2 || speed_count > 1000000) return invalid(why, "speed_count must satisfy 2 ≤ speed_count ≤ 10⁶");
+  for (double c : conicities)
+    if (!(c >= 0.0 && c < 1.0)) return invalid(why, "every conicity must satisfy 0 ≤ conicity < 1");
+  if (damping_threshold && !(*damping_threshold > -1.0 && *damping_threshold < 1.0))
+    return invalid(why, "damping_threshold must satisfy −1 < damping_threshold < 1");
+  if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 0.1))
+    return invalid(why, "relative_tolerance must satisfy 1e-14 ≤ relative_tolerance ≤ 0.1");
+  if (!(continuity_threshold > 0.0 && continuity_threshold <= 1.0))
+    return invalid(why, "continuity_threshold must satisfy 0 < continuity_threshold ≤ 1");
+  if (threads < 0) return invalid(why, "threads must be 0 (every core) or positive");
+  return true;
+}
 
-HuntingResult solve_hunting_stability(const LinearSystem&, const HuntingOptions&) {
-  throw std::logic_error("solve_hunting_stability: not built yet");
+HuntingResult solve_hunting_stability(const LinearSystem& system, const HuntingOptions& options) {
+  require_valid(options, "HuntingOptions: ");
+  if (system.vehicle.wheelsets.empty())
+    throw std::invalid_argument("hunting stability: the vehicle '" + system.vehicle.name +
+                                "' has no wheelsets (docs/stability.md, \"Wheelsets in a vehicle file\")");
+  return stability::hunting_analysis(
+      system, [&system](std::optional<double> conicity) { return contact_matrices(system, conicity); }, options);
 }
 
 }  // namespace railmodal

@@ -51,6 +51,12 @@ TEST(EnumNames, DampedModeKind) {
                     damped_mode_kind_from_string);
 }
 
+TEST(EnumNames, HuntingVerdict) {
+  expect_round_trip({HuntingVerdict::critical_speed_in_range, HuntingVerdict::stable_throughout,
+                     HuntingVerdict::unstable_at_lowest_speed},
+                    hunting_verdict_from_string);
+}
+
 TEST(EnumNames, DofSet) {
   expect_round_trip({DofSet::vertical, DofSet::lateral, DofSet::all}, dof_set_from_string);
 }

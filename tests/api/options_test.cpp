@@ -164,5 +164,48 @@ TEST(EvaluationOptions, EvaluateStudyThrowsTheRule) {
   EXPECT_EQ(invalid_argument_of([&] { evaluate_study(Study{}, o); }), "threads must be 0 (every core) or positive");
 }
 
+TEST(HuntingOptions, EveryOptionHasItsRule) {
+  expect_valid(HuntingOptions{});
+  HuntingOptions o;
+  o.min_speed = 0.0;
+  expect_invalid(o, "min_speed must be positive");
+  o.min_speed = kNaN;
+  expect_invalid(o, "min_speed must be positive");
+  o = {};
+  o.max_speed = o.min_speed;
+  expect_invalid(o, "max_speed must be finite and greater than min_speed");
+  o.max_speed = kInf;
+  expect_invalid(o, "max_speed must be finite and greater than min_speed");
+  o = {};
+  o.speed_count = 1;
+  expect_invalid(o, "2 ≤ speed_count");
+  o = {};
+  o.conicities = {0.1, -0.1};
+  expect_invalid(o, "0 ≤ conicity < 1");
+  o.conicities = {kNaN};
+  expect_invalid(o, "0 ≤ conicity < 1");
+  o = {};
+  o.damping_threshold = 1.0;
+  expect_invalid(o, "−1 < damping_threshold < 1");
+  o.damping_threshold = 0.05;
+  expect_valid(o);
+  o = {};
+  o.relative_tolerance = 0.0;
+  expect_invalid(o, "1e-14 ≤ relative_tolerance ≤ 0.1");
+  o.relative_tolerance = kNaN;
+  expect_invalid(o, "1e-14 ≤ relative_tolerance ≤ 0.1");
+  o = {};
+  o.continuity_threshold = 0.0;
+  expect_invalid(o, "0 < continuity_threshold ≤ 1");
+  o = {};
+  o.threads = -1;
+  expect_invalid(o, "threads must be 0 (every core) or positive");
+  // The analysis throws the rule, prefixed with the options' name.
+  o = {};
+  o.speed_count = 0;
+  EXPECT_EQ(invalid_argument_of([&] { solve_hunting_stability(LinearSystem{}, o); }),
+            "HuntingOptions: speed_count must satisfy 2 ≤ speed_count ≤ 10⁶");
+}
+
 }  // namespace
 }  // namespace railmodal::test

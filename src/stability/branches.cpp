@@ -1,0 +1,134 @@
+// Branches of the root locus from the tracked root paths (see branches.hpp).
+#include "stability/branches.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <map>
+
+#include "stability/branch_naming.hpp"
+#include "stability/damping_search.hpp"
+
+namespace railmodal::stability {
+
+namespace {
+
+using cd = std::complex<double>;
+constexpr double kTwoPi = 6.283185307179586476925;
+
+// The conjugate of root r at one speed: Eigen stores the halves of a pair next to each other.
+int conjugate_of(const Eigen::VectorXcd& values, int r) {
+  if (values(r).imag() == 0.0) return -1;
+  for (int q : {r - 1, r + 1})
+    if (q >= 0 && q < values.size() && values(q) == std::conj(values(r))) return q;
+  return -1;
+}
+
+// The kinematic test. Klingel's motion has a wavelength, not a frequency: at low speed its
+// frequency is about V/Λ and grows in proportion to V, where a suspension mode's stays put.
+// A branch is kinematic when, at the lowest speed where it oscillates, f/(V/Λ) lies within
+// [0.4, 1.25] (a bogie's wheelsets, held together, have a longer wavelength than a free
+// wheelset's: the rigid bogie's is Λ·√(1 + a²f22/(l0²f11)), about twice Λ for a = 1.28 m,
+// l0 = 0.75 m), and f grows with V: over a speed step of at least half that speed, f/V
+// changes by less than a third.
+bool kinematic(const HuntingBranch& b, const std::vector<double>& speeds, double wavelength) {
+  if (!(wavelength > 0.0) || !std::isfinite(wavelength)) return false;
+  const int n = static_cast<int>(speeds.size());
+  int j = 0;
+  while (j < n && !(b.frequency_hz[j] > 0.0)) ++j;
+  if (j == n) return false;
+  const double ratio = b.frequency_hz[j] / (speeds[j] / wavelength);
+  if (ratio < 0.4 || ratio > 1.25) return false;
+  int k = j;
+  while (k < n && speeds[k] < 1.5 * speeds[j]) ++k;
+  if (k == n || !(b.frequency_hz[k] > 0.0)) return false;
+  const double growth = (b.frequency_hz[k] / b.frequency_hz[j]) / (speeds[k] / speeds[j]);
+  return growth > 0.75 && growth < 1.33;
+}
+
+}  // namespace
+
+Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots>& speeds, const RootPaths& paths,
+                        double klingel_wavelength, double continuity_threshold) {
+  const int ns = static_cast<int>(speeds.size());
+  const int np = ns > 0 ? static_cast<int>(speeds[0].values.size()) : 0;
+  std::vector<std::vector<int>> path_of(ns, std::vector<int>(np));
+  for (int s = 0; s < ns; ++s)
+    for (int p = 0; p < np; ++p) path_of[s][paths.root[s][p]] = p;
+
+  // Pairs, from the highest speed down.
+  std::vector<int> partner(np, -2);  // -2: not yet placed, -1: a real root
+  for (int s = ns - 1; s >= 0; --s)
+    for (int p = 0; p < np; ++p) {
+      if (partner[p] != -2) continue;
+      const int q_root = conjugate_of(speeds[s].values, paths.root[s][p]);
+      if (q_root < 0) continue;
+      const int q = path_of[s][q_root];
+      if (q != p && partner[q] == -2) partner[p] = q, partner[q] = p;
+    }
+
+  std::vector<double> grid(ns);
+  for (int s = 0; s < ns; ++s) grid[s] = speeds[s].speed;
+  std::vector<int> group_of_path(np, -1);
+  std::vector<std::string> group_names;
+  std::vector<bool> is_branch;
+  std::vector<HuntingBranch> branches;
+  for (int p = 0; p < np; ++p) {
+    if (group_of_path[p] >= 0) continue;
+    const int q = partner[p] >= 0 ? partner[p] : -1;
+    group_of_path[p] = static_cast<int>(group_names.size());
+    if (q < 0) {  // a real root at every speed
+      const int r = paths.root[0][p];
+      group_names.push_back(root_name(system, speeds[0].shapes.col(r)) + " (real root)");
+      is_branch.push_back(false);
+      continue;
+    }
+    group_of_path[q] = group_of_path[p];
+    HuntingBranch b;
+    int first_root = -1;
+    for (int s = 0; s < ns; ++s) {
+      const int rp = paths.root[s][p], rq = paths.root[s][q];
+      const cd lp = speeds[s].values(rp), lq = speeds[s].values(rq);
+      int r;
+      if (lp.imag() > 0.0 || lq.imag() > 0.0)
+        r = lp.imag() >= lq.imag() ? rp : rq;
+      else
+        r = lp.real() >= lq.real() ? rp : rq;
+      if (s == 0) first_root = r;
+      const cd value = speeds[s].values(r);
+      const cd upper = value.imag() < 0.0 ? std::conj(value) : value;
+      b.eigenvalues.push_back(upper);
+      b.damping_ratio.push_back(root_damping(upper, root_scale(speeds[s].values)).zeta);
+      b.frequency_hz.push_back(upper.imag() / kTwoPi);
+      b.continuity.push_back(std::min(paths.continuity[s][p], paths.continuity[s][q]));
+      if (b.continuity.back() < continuity_threshold) b.veers = true;
+    }
+    b.name = root_name(system, speeds[0].shapes.col(first_root));
+    if (kinematic(b, grid, klingel_wavelength)) b.name += " (kinematic)";
+    group_names.push_back(b.name);
+    is_branch.push_back(true);
+    branches.push_back(std::move(b));
+  }
+  // Names that repeat: " 2", " 3", … (the first keeps its name), branches and real roots alike.
+  std::map<std::string, int> seen;
+  std::vector<std::string> unique(group_names.size());
+  for (size_t g = 0; g < group_names.size(); ++g) {
+    const int count = ++seen[group_names[g]];
+    unique[g] = count == 1 ? group_names[g] : group_names[g] + " " + std::to_string(count);
+  }
+  size_t next_branch = 0;
+  for (size_t g = 0; g < group_names.size(); ++g)
+    if (is_branch[g]) branches[next_branch++].name = unique[g];
+
+  Branches out;
+  out.name_of_root.assign(ns, std::vector<std::string>(np));
+  for (int s = 0; s < ns; ++s)
+    for (int p = 0; p < np; ++p) out.name_of_root[s][paths.root[s][p]] = unique[group_of_path[p]];
+  std::stable_sort(branches.begin(), branches.end(), [](const HuntingBranch& a, const HuntingBranch& b) {
+    return a.damping_ratio.back() < b.damping_ratio.back();
+  });
+  out.oscillatory = std::move(branches);
+  return out;
+}
+
+}  // namespace railmodal::stability

@@ -1,0 +1,242 @@
+// The hunting-stability analysis: eigenvalues over the speed grid, tracking, the unstable
+// intervals and the critical speed, the threshold speed and the conicity curve.
+//
+// Stability is judged by the least-damped root's ζ = −Re λ/|λ| over all roots (branches,
+// real roots, the series dampers' roots), not by Re λ: as V → 0 the creep damping C_c/V
+// grows without bound and every root of the wheelsets' motions either runs off to −∞
+// (ζ = 1) or slows down with V (the kinematic motion, whose eigenvalue scales with V), so
+// Re λ → 0 without saying whether the motion decays per cycle; ζ keeps a limit.
+#include "stability/hunting_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "railmodal/errors.hpp"
+#include "shortest_text.hpp"
+#include "stability/branch_naming.hpp"
+#include "stability/branches.hpp"
+#include "stability/damping_search.hpp"
+#include "stability/first_order_system.hpp"
+#include "stability/parallel_for.hpp"
+#include "stability/root_tracking.hpp"
+#include "stability/speed_scan.hpp"
+#include "summary/stage_clock.hpp"
+
+namespace railmodal::stability {
+
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925;
+// An eigen-solve whose backward error exceeds this is not trusted (Hessenberg QR reaches
+// about n·ε ≈ 1e-14 on a balanced matrix; 1e-8 is six orders above).
+constexpr double kMaxResidual = 1e-8;
+
+std::vector<double> speed_grid(const HuntingOptions& options) {
+  std::vector<double> v(options.speed_count);
+  const double step = (options.max_speed - options.min_speed) / (options.speed_count - 1);
+  for (int s = 0; s < options.speed_count; ++s) v[s] = options.min_speed + step * s;
+  v.back() = options.max_speed;
+  return v;
+}
+
+double shortest_wavelength(const ContactMatrices& contact) {
+  double wavelength = std::numeric_limits<double>::infinity();
+  for (const ResolvedContact& c : contact.wheelsets) wavelength = std::min(wavelength, c.klingel_wavelength);
+  return wavelength;
+}
+
+double klingel_frequency(double speed, double wavelength) {
+  return std::isfinite(wavelength) && wavelength > 0.0 ? speed / wavelength : 0.0;
+}
+
+// The least-damped ζ at any speed: eigenvalues only.
+struct ZetaFunction {
+  const FirstOrderSystem& system;
+  double operator()(double speed, bool raw = false) const {
+    return least_damped(solve_at_speed(system, speed, false).values, raw).zeta;
+  }
+};
+
+// What the grid scan of one conicity gives.
+struct Scan {
+  HuntingVerdict verdict = HuntingVerdict::stable_throughout;
+  std::vector<ScannedInterval> intervals;
+  int evaluations = 0;
+};
+
+Scan scan(const std::vector<double>& speeds, const std::vector<double>& zeta, const FirstOrderSystem& system,
+          double relative_tolerance) {
+  Scan out;
+  out.intervals = unstable_intervals(speeds, zeta, ZetaFunction{system}, relative_tolerance, &out.evaluations);
+  if (zeta[0] < 0.0)
+    out.verdict = HuntingVerdict::unstable_at_lowest_speed;
+  else if (!out.intervals.empty())
+    out.verdict = HuntingVerdict::critical_speed_in_range;
+  return out;
+}
+
+// The critical speed of a scan that has one: the first interval's lower end, with the
+// hunting frequency of the least-damped root there (one more eigen-solve).
+HuntingCriticalSpeed critical_speed(const Scan& scan, const FirstOrderSystem& system, double wavelength) {
+  const ScannedInterval& first = scan.intervals.front();
+  HuntingCriticalSpeed c;
+  c.speed = first.from;
+  const Eigen::VectorXcd values = solve_at_speed(system, c.speed, false).values;
+  const LeastDamped at = least_damped(values);
+  c.frequency_hz = at.root >= 0 ? std::abs(values(at.root).imag()) / kTwoPi : 0.0;
+  c.klingel_frequency_hz = klingel_frequency(c.speed, wavelength);
+  c.evaluations = first.from_evaluations + 1;
+  return c;
+}
+
+ConicityPoint conicity_point(const LinearSystem& system, double conicity, const ContactMatrices& contact,
+                             const std::vector<double>& speeds, const std::vector<double>& zeta,
+                             const HuntingOptions& options) {
+  const FirstOrderSystem fos(system, contact);
+  ConicityPoint point;
+  point.conicity = conicity;
+  const Scan s = scan(speeds, zeta, fos, options.relative_tolerance);
+  point.verdict = s.verdict;
+  if (s.verdict == HuntingVerdict::critical_speed_in_range) {
+    point.critical = critical_speed(s, fos, shortest_wavelength(contact));
+    // Named where it goes unstable (no tracking over this conicity's grid).
+    const SpeedRoots roots = solve_at_speed(fos, point.critical->speed, true);
+    const LeastDamped at = least_damped(roots.values);
+    point.critical->branch = root_name(system, roots.shapes.col(std::max(at.root, 0)));
+  }
+  return point;
+}
+
+std::vector<ConicityPoint> conicity_curve(const LinearSystem& system, const ContactSource& contact,
+                                          const std::vector<double>& speeds, const HuntingOptions& options) {
+  const int nc = static_cast<int>(options.conicities.size()), ns = static_cast<int>(speeds.size());
+  std::vector<ContactMatrices> contacts;
+  for (double c : options.conicities) contacts.push_back(contact(c));  // on this thread (see the header)
+  std::vector<FirstOrderSystem> systems;
+  for (const ContactMatrices& c : contacts) systems.emplace_back(system, c);
+  std::vector<std::vector<double>> zeta(nc, std::vector<double>(ns));
+  parallel_for(nc * ns, options.threads,
+               [&](int k) { zeta[k / ns][k % ns] = ZetaFunction{systems[k / ns]}(speeds[k % ns]); });
+  std::vector<ConicityPoint> curve(nc);
+  parallel_for(nc, options.threads, [&](int c) {
+    curve[c] = conicity_point(system, options.conicities[c], contacts[c], speeds, zeta[c], options);
+  });
+  return curve;
+}
+
+}  // namespace
+
+HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& contact,
+                               const HuntingOptions& options) {
+  HuntingResult result;
+  StageClock clock(&result.summary);
+  const ContactMatrices own = contact(std::nullopt);
+  result.contacts = own.wheelsets;
+  clock.lap("contact matrices");
+  const FirstOrderSystem fos(system, own);
+  clock.lap("factor M");
+
+  result.speeds = speed_grid(options);
+  for (const Dof& d : system.dofs) result.dofs.push_back(d.label);
+  const int ns = static_cast<int>(result.speeds.size());
+  // Eigenvalues at every speed; shapes only where the tracking needs them (the first speed,
+  // which names the branches, and both ends of every step the eigenvalues cannot match alone).
+  // On a coarse grid (fewer than 64 speeds) the steps are too long for the eigenvalues alone to
+  // decide most of them: shapes everywhere at once.
+  const bool shapes_everywhere = ns < 64;
+  std::vector<SpeedRoots> roots(ns);
+  parallel_for(ns, options.threads,
+               [&](int s) { roots[s] = solve_at_speed(fos, result.speeds[s], shapes_everywhere); });
+  clock.lap("eigenvalues over the speed grid");
+  // Shapes at the first speed (they name the branches), then wherever the tracking asks for
+  // them; tracked again until it asks for none. The eigenvalues do not depend on whether
+  // vectors are asked for (Eigen's real Schur form updates the whole of T either way), which is
+  // checked, so paths found before stay valid.
+  std::vector<int> missing, with_shapes;
+  if (shapes_everywhere)
+    for (int s = 0; s < ns; ++s) with_shapes.push_back(s);
+  else
+    missing.push_back(0);
+  RootPaths paths = track_roots(roots, &missing);
+  while (!missing.empty()) {
+    parallel_for(static_cast<int>(missing.size()), options.threads, [&](int k) {
+      SpeedRoots again = solve_at_speed(fos, result.speeds[missing[k]], true);
+      if (again.values != roots[missing[k]].values)
+        throw std::logic_error("hunting stability: the eigenvalues changed when eigenvectors were asked for");
+      roots[missing[k]] = std::move(again);
+    });
+    with_shapes.insert(with_shapes.end(), missing.begin(), missing.end());
+    missing.clear();
+    paths = track_roots(roots, &missing);
+    // A symmetric vehicle's nearly repeated roots (front and rear wheelsets, the two bogies)
+    // can leave the eigenvalues undecided at most speeds: then shapes everywhere at once, in
+    // one parallel batch, rather than pass after pass.
+    if (4 * (missing.size() + with_shapes.size()) > static_cast<size_t>(ns)) {
+      missing.clear();
+      for (int s = 0; s < ns; ++s)
+        if (roots[s].shapes.size() == 0) missing.push_back(s);
+    }
+  }
+  std::sort(with_shapes.begin(), with_shapes.end());
+  double residual = 0.0;
+  for (int s : with_shapes) {
+    const SpeedRoots& r = roots[s];
+    if (!(r.residual <= kMaxResidual))
+      throw NumericalError("hunting stability: the eigen-solve at " + shortest_text(r.speed, 6) +
+                           " m/s has a relative residual of " + shortest_text(r.residual, 3) + " (limit " +
+                           shortest_text(kMaxResidual, 3) + ")");
+    residual = std::max(residual, r.residual);
+  }
+  clock.lap("tracking, with eigenvectors where it needs them");
+
+  const double wavelength = shortest_wavelength(own);
+  const Branches branches = group_branches(system, roots, paths, wavelength, options.continuity_threshold);
+  result.branches = branches.oscillatory;
+  clock.lap("branches and names");
+
+  std::vector<double> zeta(ns);
+  for (int s = 0; s < ns; ++s) zeta[s] = least_damped(roots[s].values).zeta;
+  const Scan own_scan = scan(result.speeds, zeta, fos, options.relative_tolerance);
+  int evaluations = own_scan.evaluations;
+  result.verdict = own_scan.verdict;
+  for (const ScannedInterval& i : own_scan.intervals) {
+    const int at = least_damped(roots[i.grid_index].values).root;
+    result.unstable_intervals.push_back({i.from, i.to, i.from_lowest_speed, i.to_highest_speed,
+                                         at >= 0 ? branches.name_of_root[i.grid_index][at] : std::string()});
+  }
+  if (result.verdict == HuntingVerdict::critical_speed_in_range) {
+    result.critical = critical_speed(own_scan, fos, wavelength);
+    result.critical->branch = result.unstable_intervals.front().branch;
+    evaluations += 1;
+  }
+  if (options.damping_threshold)
+    result.threshold_speed = threshold_speed(result.speeds, zeta, ZetaFunction{fos}, *options.damping_threshold,
+                                             options.relative_tolerance, &evaluations);
+  clock.lap("critical speed and intervals");
+
+  result.conicity_curve = conicity_curve(system, contact, result.speeds, options);
+  clock.lap("conicity curve");
+
+  double continuity = 1.0;
+  for (const HuntingBranch& b : result.branches)
+    for (double c : b.continuity) continuity = std::min(continuity, c);
+  AnalysisSummary& summary = result.summary;
+  summary.analysis = "hunting stability";
+  summary.method =
+      "QR of the balanced first-order state matrix at each speed (Eigen), roots tracked by MAC and "
+      "eigenvalue continuity (Hungarian assignment), least-damped ζ refined by Brent's method on " +
+      std::to_string(worker_count(options.threads, ns)) + " thread(s)";
+  const double inf = std::numeric_limits<double>::infinity();
+  summary.checks.push_back({"max relative eigen residual", residual, kMaxResidual, residual <= kMaxResidual});
+  summary.checks.push_back({"1 − minimum branch continuity (MAC)", 1.0 - continuity, 1.0 - options.continuity_threshold,
+                            continuity >= options.continuity_threshold});
+  summary.checks.push_back({"least-damped ζ at the lowest speed", zeta.front(), inf, true});
+  summary.checks.push_back({"refinement evaluations (eigenvalues only)", static_cast<double>(evaluations), inf, true});
+  summary.checks.push_back(
+      {"speeds solved with eigenvectors (for the tracking)", static_cast<double>(with_shapes.size()), inf, true});
+  return result;
+}
+
+}  // namespace railmodal::stability

@@ -1,0 +1,385 @@
+// The hunting-stability solver on systems built by hand, whose answers are known in closed
+// form: oscillators whose damping coefficient d(V) = c0 + c_c/V + g·V changes sign at the
+// roots of a quadratic, a free wheelset, and a wheelset on springs checked against the
+// Routh–Hurwitz condition of its characteristic polynomial. The contact terms are given
+// directly (stability::hunting_analysis), so these tests do not wait for contact_matrices().
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "railmodal/errors.hpp"
+#include "railmodal/railmodal.hpp"
+#include "stability/damping_search.hpp"
+#include "stability/hunting_analysis.hpp"
+#include "stability/root_tracking.hpp"
+
+namespace railmodal::stability {
+namespace {
+
+constexpr double kTwoPi = 6.283185307179586476925;
+
+// Uncoupled unit oscillators "osc<i>.lateral" (no bodies: named after the DOF) with
+// m = 1, k = ω², d_i(V) = c0 + c_c/V + g·V.
+struct Oscillator {
+  double omega, c0, cc, g;
+};
+
+struct HandBuilt {
+  LinearSystem system;
+  ContactMatrices contact;
+  ContactSource source() const {
+    return [this](std::optional<double>) { return contact; };
+  }
+};
+
+HandBuilt oscillators(const std::vector<Oscillator>& list) {
+  const int n = static_cast<int>(list.size());
+  HandBuilt h;
+  for (int i = 0; i < n; ++i)
+    h.system.dofs.push_back({"osc" + std::to_string(i + 1) + ".lateral", -1, Motion::lateral});
+  h.system.mass = Eigen::MatrixXd::Identity(n, n);
+  h.system.damping = Eigen::MatrixXd::Zero(n, n);
+  h.system.stiffness = Eigen::MatrixXd::Zero(n, n);
+  h.contact.creep_damping = Eigen::MatrixXd::Zero(n, n);
+  h.contact.gyroscopic = Eigen::MatrixXd::Zero(n, n);
+  h.contact.stiffness = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i) {
+    h.system.stiffness(i, i) = list[i].omega * list[i].omega;
+    h.system.damping(i, i) = list[i].c0;
+    h.contact.creep_damping(i, i) = list[i].cc;
+    h.contact.gyroscopic(i, i) = list[i].g;
+  }
+  return h;
+}
+
+// The oscillator whose d(V) = c_c/V + c0 + g·V vanishes at V = a and V = b (g > 0):
+// g·V² + c0·V + c_c = g(V − a)(V − b).
+Oscillator unstable_between(double a, double b, double omega = kTwoPi) {
+  return {omega, -0.01 * (a + b), 0.01 * a * b, 0.01};
+}
+
+HuntingOptions range(double low, double high, int count) {
+  HuntingOptions o;
+  o.min_speed = low;
+  o.max_speed = high;
+  o.speed_count = count;
+  o.threads = 1;
+  return o;
+}
+
+TEST(HuntingStability, CriticalSpeedOfAnOscillatorToTheRequestedTolerance) {
+  // d(V) = 10/V + 1 − 0.01V vanishes at V* = (1 + √1.4)/0.02; there λ = ±iω: 1 Hz.
+  const HandBuilt h = oscillators({{kTwoPi, 1.0, 10.0, -0.01}});
+  const double exact = (1.0 + std::sqrt(1.4)) / 0.02;
+  int previous = 0;
+  for (double tolerance : {1e-4, 1e-8, 1e-12}) {
+    HuntingOptions o = range(1.0, 200.0, 50);
+    o.relative_tolerance = tolerance;
+    const HuntingResult r = hunting_analysis(h.system, h.source(), o);
+    ASSERT_EQ(r.verdict, HuntingVerdict::critical_speed_in_range);
+    ASSERT_TRUE(r.critical);
+    // The bracket ends within tolerance·V; ζ near its root is exact to round-off (1e-15 in
+    // ζ over a slope of 1e-3 per m/s: 1e-12 m/s), so the error is the bracket's.
+    EXPECT_LE(std::abs(r.critical->speed - exact), tolerance * exact + 1e-11) << tolerance;
+    EXPECT_NEAR(r.critical->frequency_hz, 1.0, 1e-9);
+    EXPECT_EQ(r.critical->branch, "osc1.lateral");
+    EXPECT_GE(r.critical->evaluations, previous);  // a tighter tolerance never costs less
+    previous = r.critical->evaluations;
+    ASSERT_EQ(r.unstable_intervals.size(), 1u);
+    EXPECT_TRUE(r.unstable_intervals[0].to_highest_speed);
+    EXPECT_FALSE(r.unstable_intervals[0].from_lowest_speed);
+  }
+  EXPECT_LE(previous, 20);  // Brent converges superlinearly: 1e-12 from a 4 m/s bracket
+}
+
+TEST(HuntingStability, AnUndampedModeDoesNotStopTheRefinementAtTheGrid) {
+  // An undamped 3 Hz mode makes the least-damped ζ exactly 0 at every stable speed; the
+  // crossing must still be refined to where the other mode's ζ turns negative.
+  const HandBuilt h = oscillators({{3.0 * kTwoPi, 0.0, 0.0, 0.0}, {kTwoPi, 1.0, 10.0, -0.01}});
+  const HuntingResult r = hunting_analysis(h.system, h.source(), range(1.0, 200.0, 50));
+  ASSERT_TRUE(r.critical);
+  const double exact = (1.0 + std::sqrt(1.4)) / 0.02;
+  // Here the crossing ends at the edge of the round-off band |ζ| ≤ 1e-11 (damping_search.hpp):
+  // 1e-11 / |dζ/dV| = 1e-11 / 8.6e-4 per m/s = 1.2e-8 m/s from the exact root, within the
+  // 1e-8 relative bracket.
+  EXPECT_LE(std::abs(r.critical->speed - exact), 1e-8 * exact + 2e-8);
+  EXPECT_EQ(r.critical->branch, "osc2.lateral");
+}
+
+TEST(HuntingStability, EveryUnstableIntervalEvenWhereTheVehicleRestabilises) {
+  const HandBuilt h = oscillators({unstable_between(30.0, 170.0), unstable_between(250.0, 350.0, 1.3 * kTwoPi)});
+  const HuntingResult r = hunting_analysis(h.system, h.source(), range(10.0, 400.0, 80));
+  EXPECT_EQ(r.verdict, HuntingVerdict::critical_speed_in_range);
+  ASSERT_EQ(r.unstable_intervals.size(), 2u);
+  const double ends[2][2] = {{30.0, 170.0}, {250.0, 350.0}};
+  for (int i = 0; i < 2; ++i) {
+    EXPECT_NEAR(r.unstable_intervals[i].from, ends[i][0], 1e-7 * ends[i][0]);  // 1e-8 bracket, with margin
+    EXPECT_NEAR(r.unstable_intervals[i].to, ends[i][1], 1e-7 * ends[i][1]);
+    EXPECT_FALSE(r.unstable_intervals[i].from_lowest_speed);
+    EXPECT_FALSE(r.unstable_intervals[i].to_highest_speed);
+  }
+  EXPECT_EQ(r.unstable_intervals[0].branch, "osc1.lateral");
+  EXPECT_EQ(r.unstable_intervals[1].branch, "osc2.lateral");
+  ASSERT_TRUE(r.critical);
+  EXPECT_NEAR(r.critical->speed, 30.0, 1e-7 * 30.0);
+}
+
+TEST(HuntingStability, FindsANarrowIntervalBetweenTwoStableGridSpeeds) {
+  // Unstable over [203, 204] only; the grid (step 10 m/s) has stable speeds at 200 and 210.
+  const HandBuilt h = oscillators({unstable_between(203.0, 204.0)});
+  const HuntingResult r = hunting_analysis(h.system, h.source(), range(10.0, 400.0, 40));
+  ASSERT_EQ(r.unstable_intervals.size(), 1u);
+  EXPECT_NEAR(r.unstable_intervals[0].from, 203.0, 1e-6);
+  EXPECT_NEAR(r.unstable_intervals[0].to, 204.0, 1e-6);
+  EXPECT_EQ(r.verdict, HuntingVerdict::critical_speed_in_range);
+}
+
+TEST(HuntingStability, VerdictsInventNoCriticalSpeed) {
+  const HandBuilt unstable = oscillators({unstable_between(1.0, 1000.0)});
+  const HuntingResult u = hunting_analysis(unstable.system, unstable.source(), range(10.0, 100.0, 20));
+  EXPECT_EQ(u.verdict, HuntingVerdict::unstable_at_lowest_speed);
+  EXPECT_FALSE(u.critical);
+  ASSERT_EQ(u.unstable_intervals.size(), 1u);
+  EXPECT_TRUE(u.unstable_intervals[0].from_lowest_speed);
+  EXPECT_TRUE(u.unstable_intervals[0].to_highest_speed);
+
+  const HandBuilt stable = oscillators({{kTwoPi, 0.5, 10.0, 0.01}});
+  const HuntingResult s = hunting_analysis(stable.system, stable.source(), range(10.0, 100.0, 20));
+  EXPECT_EQ(s.verdict, HuntingVerdict::stable_throughout);
+  EXPECT_FALSE(s.critical);
+  EXPECT_TRUE(s.unstable_intervals.empty());
+}
+
+TEST(HuntingStability, ThresholdSpeedWhereZetaFallsToTheValueAsked) {
+  // d(V) = 2 − 0.01V: ζ = d/(2ω) = 0.05 at V = (2 − 0.1ω)/0.01.
+  const HandBuilt h = oscillators({{kTwoPi, 2.0, 0.0, -0.01}});
+  HuntingOptions o = range(1.0, 300.0, 30);
+  o.damping_threshold = 0.05;
+  const HuntingResult r = hunting_analysis(h.system, h.source(), o);
+  ASSERT_TRUE(r.threshold_speed);
+  EXPECT_NEAR(*r.threshold_speed, (2.0 - 0.1 * kTwoPi) / 0.01, 1e-7 * 200.0);
+  o.damping_threshold = 0.5;  // already below at the lowest speed: that speed
+  EXPECT_EQ(*hunting_analysis(h.system, h.source(), o).threshold_speed, 1.0);
+  o.damping_threshold = -0.9;  // never reached
+  EXPECT_FALSE(hunting_analysis(h.system, h.source(), o).threshold_speed);
+}
+
+// Two oscillators whose damped frequencies cross: DOF 1 (2 Hz) is damped more and more with
+// speed, DOF 2 (1.6 Hz) lightly. Uncoupled, each branch must stay with its DOF (the frequency
+// order swaps at ζ1 = 0.6, V ≈ 75 m/s); with a weak stiffness coupling the pair veers and each
+// branch follows a continuous eigenvalue path.
+TEST(HuntingStability, BranchesKeepTheirIdentityThroughACrossing) {
+  HandBuilt h = oscillators({{2.0 * kTwoPi, 0.0, 0.0, 0.2}, {1.6 * kTwoPi, 0.1, 0.0, 0.0}});
+  const HuntingResult r = hunting_analysis(h.system, h.source(), range(1.0, 150.0, 300));
+  ASSERT_EQ(r.branches.size(), 2u);
+  for (const HuntingBranch& b : r.branches) {
+    const bool first = b.name == "osc1.lateral";
+    ASSERT_TRUE(first || b.name == "osc2.lateral") << b.name;
+    for (size_t s = 0; s < r.speeds.size(); ++s) {
+      const double d = first ? 0.2 * r.speeds[s] : 0.1, w = first ? 2.0 * kTwoPi : 1.6 * kTwoPi;
+      if (d >= 2.0 * w) continue;  // overdamped: the larger real root, checked by the verdict
+      const std::complex<double> exact(-d / 2.0, std::sqrt(w * w - d * d / 4.0));
+      EXPECT_LT(std::abs(b.eigenvalues[s] - exact), 1e-9 * w) << b.name << " at " << r.speeds[s];
+    }
+    EXPECT_FALSE(b.veers);
+  }
+}
+
+TEST(HuntingStability, AVeeringPairIsFollowedContinuouslyAndReportedHonestly) {
+  HandBuilt h = oscillators({{2.0 * kTwoPi, 0.0, 0.0, 0.2}, {1.6 * kTwoPi, 0.1, 0.0, 0.0}});
+  h.system.stiffness(0, 1) = h.system.stiffness(1, 0) = 20.0;  // weak coupling
+  for (int count : {1000, 12}) {
+    HuntingOptions o = range(1.0, 150.0, count);
+    const HuntingResult r = hunting_analysis(h.system, h.source(), o);
+    ASSERT_EQ(r.branches.size(), 2u);
+    EXPECT_NE(r.branches[0].name, r.branches[1].name);
+    for (const HuntingBranch& b : r.branches) {
+      bool veers = false;
+      for (double c : b.continuity) {
+        EXPECT_TRUE(c >= 0.0 && c <= 1.0 + 1e-12);
+        veers = veers || c < o.continuity_threshold;
+      }
+      EXPECT_EQ(b.veers, veers);  // the flag says what the continuities say
+      // Fine grid: no jump from one speed to the next through the veering (near 75 m/s). Above
+      // 110 m/s osc1 nears critical damping (d = 2ω at 125.7 m/s), where its roots meet and
+      // move as √(V − V_c): steps are large there by nature, not by mistracking.
+      if (count == 1000) {
+        for (size_t s = 1; s < r.speeds.size() && r.speeds[s] < 110.0; ++s)
+          EXPECT_LT(std::abs(b.eigenvalues[s] - b.eigenvalues[s - 1]), 0.2) << b.name << " at " << r.speeds[s];
+      }
+    }
+  }
+}
+
+// A free wheelset (m ÿ + 2f22/V ẏ − 2f22ψ = 0, I ψ̈ + 2f11l0²/V ψ̇ + 2f11λl0/r0 y = 0, Wickens'
+// equations without gravitational stiffness) and, with springs to a fixed frame, one that has
+// a critical speed.
+HandBuilt wheelset(double lateral_spring, double yaw_spring, double conicity = 0.2) {
+  const double m = 1500.0, I = 700.0, f = 1e7, l0 = 0.75, r0 = 0.46;
+  HandBuilt h;
+  Body b;
+  b.name = "wheelset1";
+  b.mass = m;
+  h.system.vehicle.bodies.push_back(b);
+  Wheelset w;
+  w.body = "wheelset1";
+  h.system.vehicle.wheelsets.push_back(w);
+  h.system.dofs = {{"wheelset1.lateral", 0, Motion::lateral}, {"wheelset1.yaw", 0, Motion::yaw}};
+  h.system.mass = Eigen::Vector2d(m, I).asDiagonal();
+  h.system.damping = Eigen::MatrixXd::Zero(2, 2);
+  h.system.stiffness = Eigen::Vector2d(lateral_spring, yaw_spring).asDiagonal();
+  h.contact.creep_damping = Eigen::Vector2d(2.0 * f, 2.0 * f * l0 * l0).asDiagonal();
+  h.contact.gyroscopic = Eigen::MatrixXd::Zero(2, 2);
+  h.contact.stiffness = Eigen::MatrixXd::Zero(2, 2);
+  h.contact.stiffness(0, 1) = -2.0 * f;
+  h.contact.stiffness(1, 0) = 2.0 * f * conicity * l0 / r0;
+  ResolvedContact c;
+  c.body = "wheelset1";
+  c.conicity = conicity;
+  c.klingel_wavelength = conicity > 0.0 ? kTwoPi * std::sqrt(r0 * l0 / conicity) : INFINITY;
+  h.contact.wheelsets.push_back(c);
+  return h;
+}
+
+// Routh–Hurwitz for a4λ⁴ + a3λ³ + a2λ² + a1λ + a0 (all a > 0): stable iff a3a2a1 − a4a1² − a0a3² > 0.
+double hurwitz(const HandBuilt& h, double V) {
+  const Eigen::MatrixXd& M = h.system.mass;
+  const Eigen::MatrixXd C = h.contact.creep_damping / V;
+  const Eigen::MatrixXd K = h.system.stiffness + h.contact.stiffness;
+  const double a4 = M(0, 0) * M(1, 1), a3 = M(0, 0) * C(1, 1) + M(1, 1) * C(0, 0);
+  const double a2 = M(0, 0) * K(1, 1) + C(0, 0) * C(1, 1) + M(1, 1) * K(0, 0);
+  const double a1 = C(0, 0) * K(1, 1) + C(1, 1) * K(0, 0), a0 = K(0, 0) * K(1, 1) - K(0, 1) * K(1, 0);
+  return (a3 * a2 * a1 - a4 * a1 * a1 - a0 * a3 * a3) / (a3 * a2 * a1);
+}
+
+TEST(HuntingStability, WheelsetOnSpringsAgainstRouthHurwitz) {
+  const HandBuilt h = wheelset(1e6, 5e6);
+  const HuntingResult r = hunting_analysis(h.system, h.source(), range(1.0, 200.0, 100));
+  ASSERT_EQ(r.verdict, HuntingVerdict::critical_speed_in_range);
+  // The Hurwitz determinant changes sign once: bisect it independently.
+  double lo = 1.0, hi = 200.0;
+  ASSERT_GT(hurwitz(h, lo), 0.0);
+  ASSERT_LT(hurwitz(h, hi), 0.0);
+  for (int i = 0; i < 200 && hi - lo > 1e-12 * hi; ++i) (hurwitz(h, 0.5 * (lo + hi)) > 0.0 ? lo : hi) = 0.5 * (lo + hi);
+  EXPECT_NEAR(r.critical->speed, lo, 1e-7 * lo);
+  EXPECT_EQ(r.critical->branch.rfind("wheelset 1 hunting", 0), 0u) << r.critical->branch;
+  EXPECT_GT(r.critical->klingel_frequency_hz, 0.0);
+}
+
+TEST(HuntingStability, FreeWheelsetHuntsAtEverySpeedAndIsNamedKinematic) {
+  const HandBuilt h = wheelset(0.0, 0.0);
+  const HuntingResult r = hunting_analysis(h.system, h.source(), range(1.0, 100.0, 50));
+  EXPECT_EQ(r.verdict, HuntingVerdict::unstable_at_lowest_speed);
+  EXPECT_FALSE(r.critical);
+  ASSERT_EQ(r.unstable_intervals.size(), 1u);
+  EXPECT_EQ(r.unstable_intervals[0].branch, "wheelset 1 hunting (kinematic)");
+  // Klingel: the kinematic frequency tends to V/Λ at low speed (within 1 % at 1 m/s, where
+  // the creep forces are 1e7 N per unit creepage against a 1500 kg wheelset).
+  const HuntingBranch* kinematic = nullptr;
+  for (const HuntingBranch& b : r.branches)
+    if (b.name == "wheelset 1 hunting (kinematic)") kinematic = &b;
+  ASSERT_NE(kinematic, nullptr);
+  EXPECT_NEAR(kinematic->frequency_hz[0] / (1.0 / r.contacts[0].klingel_wavelength), 1.0, 0.01);
+}
+
+TEST(HuntingStability, LowSpeedLimitAndZeroConicityGiveNoNaN) {
+  for (double conicity : {0.2, 0.0}) {
+    const HandBuilt h = wheelset(1e6, 5e6, conicity);
+    const HuntingResult r = hunting_analysis(h.system, h.source(), range(1e-4, 10.0, 30));
+    for (const HuntingBranch& b : r.branches)
+      for (size_t s = 0; s < r.speeds.size(); ++s) {
+        EXPECT_TRUE(std::isfinite(b.damping_ratio[s]) && std::isfinite(b.frequency_hz[s]));
+        EXPECT_TRUE(std::isfinite(b.eigenvalues[s].real()) && std::isfinite(b.eigenvalues[s].imag()));
+      }
+    EXPECT_EQ(r.verdict, HuntingVerdict::stable_throughout) << conicity;
+    EXPECT_TRUE(std::isfinite(r.summary.checks[2].value));
+    EXPECT_TRUE(r.summary.passed());
+  }
+  // Zero conicity without springs: y is free (a rigid-body root): neutral, never NaN, never "unstable".
+  const HandBuilt free = wheelset(0.0, 0.0, 0.0);
+  const HuntingResult r = hunting_analysis(free.system, free.source(), range(0.1, 100.0, 30));
+  EXPECT_EQ(r.verdict, HuntingVerdict::stable_throughout);
+}
+
+TEST(HuntingStability, PositiveRealRootIsDivergentAndNeverNaN) {
+  EXPECT_EQ(root_damping({3.0, 0.0}, 3.0).zeta, -1.0);
+  EXPECT_EQ(root_damping({-3.0, 0.0}, 3.0).zeta, 1.0);
+  EXPECT_TRUE(root_damping({0.0, 0.0}, 0.0).rigid);
+  EXPECT_EQ(root_damping({0.0, 0.0}, 0.0).zeta, 0.0);
+  HandBuilt h = oscillators({{kTwoPi, 1.0, 0.0, 0.0}});
+  h.system.stiffness(0, 0) = -1.0;  // a saddle: one positive real root
+  const HuntingResult r = hunting_analysis(h.system, h.source(), range(1.0, 10.0, 5));
+  EXPECT_EQ(r.verdict, HuntingVerdict::unstable_at_lowest_speed);
+  EXPECT_TRUE(r.branches.empty());  // real roots are not oscillatory branches
+  ASSERT_EQ(r.unstable_intervals.size(), 1u);
+  EXPECT_EQ(r.unstable_intervals[0].branch, "osc1.lateral (real root)");
+}
+
+TEST(HuntingStability, SameResultOnAnyNumberOfThreads) {
+  const HandBuilt h = wheelset(1e6, 5e6);
+  ContactSource source = [&h](std::optional<double> conicity) {
+    return conicity ? wheelset(1e6, 5e6, *conicity).contact : h.contact;
+  };
+  HuntingOptions o = range(1.0, 200.0, 64);
+  o.conicities = {0.05, 0.1, 0.2, 0.3};
+  o.damping_threshold = 0.05;
+  std::vector<HuntingResult> results;
+  for (int threads : {1, 2, 3}) {
+    o.threads = threads;
+    results.push_back(hunting_analysis(h.system, source, o));
+  }
+  for (const HuntingResult& r : results) {
+    ASSERT_EQ(r.branches.size(), results[0].branches.size());
+    for (size_t b = 0; b < r.branches.size(); ++b) {
+      EXPECT_EQ(r.branches[b].name, results[0].branches[b].name);
+      EXPECT_EQ(r.branches[b].eigenvalues, results[0].branches[b].eigenvalues);
+      EXPECT_EQ(r.branches[b].continuity, results[0].branches[b].continuity);
+    }
+    ASSERT_TRUE(r.critical);
+    EXPECT_EQ(r.critical->speed, results[0].critical->speed);
+    EXPECT_EQ(r.threshold_speed, results[0].threshold_speed);
+    ASSERT_EQ(r.conicity_curve.size(), 4u);
+    for (size_t c = 0; c < 4; ++c) {
+      EXPECT_EQ(r.conicity_curve[c].verdict, results[0].conicity_curve[c].verdict);
+      ASSERT_EQ(r.conicity_curve[c].critical.has_value(), results[0].conicity_curve[c].critical.has_value());
+      if (r.conicity_curve[c].critical) {
+        EXPECT_EQ(r.conicity_curve[c].critical->speed, results[0].conicity_curve[c].critical->speed);
+      }
+    }
+  }
+  // The design curve: a higher conicity hunts at a lower speed.
+  const auto& curve = results[0].conicity_curve;
+  for (size_t c = 1; c < curve.size(); ++c)
+    if (curve[c].critical && curve[c - 1].critical) {
+      EXPECT_LT(curve[c].critical->speed, curve[c - 1].critical->speed);
+    }
+}
+
+TEST(HuntingStability, SingularMassNamesTheDof) {
+  HandBuilt h = wheelset(1e6, 5e6);
+  h.system.mass(1, 1) = 0.0;
+  try {
+    hunting_analysis(h.system, h.source(), range(1.0, 10.0, 5));
+    FAIL() << "no error";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("wheelset1.yaw"), std::string::npos) << e.what();
+  }
+}
+
+TEST(HuntingStability, AVehicleWithoutWheelsetsIsRefused) {
+  const HandBuilt h = oscillators({{kTwoPi, 1.0, 0.0, 0.0}});
+  EXPECT_THROW(solve_hunting_stability(h.system), std::invalid_argument);
+}
+
+TEST(HuntingStability, HungarianAssignmentIsOptimal) {
+  // The greedy choice (row 0 takes column 0 at cost 1) is not optimal here.
+  const std::vector<std::vector<double>> cost = {{1.0, 2.0, 9.0}, {1.1, 9.0, 9.0}, {9.0, 9.0, 1.0}};
+  EXPECT_EQ(minimum_cost_assignment(cost), (std::vector<int>{1, 0, 2}));
+}
+
+}  // namespace
+}  // namespace railmodal::stability
