@@ -211,6 +211,7 @@ HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& 
     result.critical->branch = result.unstable_intervals.front().branch;
     evaluations += 1;
   }
+  result.damping_threshold = options.damping_threshold;
   if (options.damping_threshold)
     result.threshold_speed = threshold_speed(result.speeds, zeta, ZetaFunction{fos}, *options.damping_threshold,
                                              options.relative_tolerance, &evaluations);
