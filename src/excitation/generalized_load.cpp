@@ -2,6 +2,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/analysis_limits.hpp"
 #include "model/rigid_body.hpp"
 #include "railmodal/excitation.hpp"
 
@@ -11,7 +12,19 @@ HarmonicLoad ExcitationSource::load(const LinearSystem& system, double speed, in
   if (!(speed > 0.0) || !std::isfinite(speed))
     throw std::invalid_argument(kind() + ": the speed must be positive and finite");
   if (harmonic < 1) throw std::invalid_argument(kind() + ": harmonics count from 1");
-  return load_at(system, speed, harmonic);
+  HarmonicLoad load = load_at(system, speed, harmonic);
+  // A wheelset takes the rail's lateral displacement through the wheel–rail contact, which M, C
+  // and K do not hold (its track input has no lateral column): refused rather than dropped.
+  for (const WheelInput& w : load.wheels)
+    if (w.amplitude(1) != 0.0 && w.track_input >= 0 && w.track_input < static_cast<int>(system.track_inputs.size())) {
+      const int element = system.track_inputs[w.track_input].element;
+      if (model::stands_on_wheelset(system.vehicle, system.vehicle.elements[element]))
+        throw std::invalid_argument(kind() + ": a lateral track input under wheelset '" +
+                                    system.vehicle.elements[element].lower +
+                                    "' acts through the wheel–rail contact, which this analysis does not model; "
+                                    "`railmodal stability` models the contact");
+    }
+  return load;
 }
 
 namespace {

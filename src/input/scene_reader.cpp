@@ -284,8 +284,8 @@ Scene read_scene(const toml::value& document, const std::string& path) {
   if (root.has("speed") || !scene.simulation) read_speed_range(root.table("speed"), scene);
   if (root.has("source") || !scene.simulation)
     for (auto& t : root.tables("source")) {
-      // The keys ExcitationSource::misfit may blame, once the vehicle is known.
-      for (const char* key : {"body", "phases"})
+      // The keys ExcitationSource::misfit (and check_scene_fits) may blame, once the vehicle is known.
+      for (const char* key : {"kind", "body", "phases"})
         scene.name_places["source[" + std::to_string(scene.sources.size()) + "]." + key] = t.place(key);
       scene.sources.push_back(source(t));
       t.finish();
