@@ -6,8 +6,8 @@
 namespace railmodal::model {
 
 void refuse_series_dampers(const LinearSystem& system, const std::string& analysis) {
-  // The rows, not the elements: a damper no kept motion stretches (a vertical one among the
-  // lateral motions) changes nothing this system describes.
+  // The rows, not the elements: a damper no kept motion stretches (a lateral one among the
+  // vertical motions) changes nothing this system describes.
   for (const SeriesDamperRow& row : system.series_dampers) {
     const auto& elements = system.vehicle.elements;
     const std::string name = row.element >= 0 && row.element < static_cast<int>(elements.size())

@@ -419,8 +419,8 @@ std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const std::vector<E
 }
 
 // The stretch of each series damper along its direction, per kept coordinate, from the same
-// point maps as add_element; a damper whose stretch no kept motion changes (a vertical damper
-// among the lateral motions) is left out.
+// point maps as add_element; a damper whose stretch no kept motion changes (a lateral damper
+// among the vertical motions) is left out.
 std::vector<SeriesDamperRow> series_damper_rows(const Vehicle& vehicle, const std::vector<ElementMap>& maps,
                                                 const std::vector<int>& keep) {
   const int n = static_cast<int>(keep.size());

@@ -59,11 +59,12 @@ void check_scene_fits(const Scene& scene, const LinearSystem& system) {
         fail_at(scene, key, key, e.what());
       }
   }
-  // The scene's analyses (critical speeds, simulation) stand on M, C and K.
+  // The scene's analyses (critical speeds, simulation) stand on M, C and K, which a series
+  // damper is not in: the scene's vehicle is refused where the scene names it.
   try {
-    model::refuse_series_dampers(system, "this scene's analyses");
+    model::refuse_series_dampers(system, "critical speeds and simulation");
   } catch (const std::invalid_argument& e) {
-    throw InputError(system.vehicle.source, 0, 0, e.what());
+    fail_at(scene, "scene.vehicle", "scene.vehicle", e.what());
   }
 }
 

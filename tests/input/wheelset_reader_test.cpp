@@ -237,8 +237,11 @@ TEST(WheelsetReader, BogieYawDamperEachSideBetweenBodyAndFrame) {
   EXPECT_EQ(count, 4);
   const Vehicle high = load_vehicle(write_temp("yaw_damper_high.toml",
                                                replaced(kBogie, "spacing = \"2.6 m\" }", "spacing = \"2.6 m\", height = \"0.5 m\" }")));
-  for (const Element& e : high.elements)
-    if (!e.series_dampers.empty()) EXPECT_DOUBLE_EQ(e.point.z(), 0.5);
+  for (const Element& e : high.elements) {
+    if (!e.series_dampers.empty()) {
+      EXPECT_DOUBLE_EQ(e.point.z(), 0.5);
+    }
+  }
 }
 
 TEST(WheelsetReader, TemplateErrors) {

@@ -3,6 +3,8 @@
 // suspension above the wheelsets, and what the analyses built on M, C and K do with them.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -87,10 +89,12 @@ TEST(SeriesDamperAssembly, StretchRowIsTheRelativeMotionAlongTheDamper) {
   }
 }
 
-// A damper no kept motion stretches is no row: a vertical damper among the lateral motions.
+// A damper no kept motion stretches is no row: a lateral damper among the vertical motions
+// (bounce, pitch and surge move no point sideways). A vertical damper off the centre line is
+// stretched by roll, a lateral motion.
 TEST(SeriesDamperAssembly, OnlyRowsSomeKeptMotionStretches) {
-  EXPECT_TRUE(assemble(damped_pair(Motion::bounce), DofSet::lateral).series_dampers.empty());
   EXPECT_TRUE(assemble(damped_pair(Motion::lateral), DofSet::vertical).series_dampers.empty());
+  EXPECT_EQ(assemble(damped_pair(Motion::bounce), DofSet::lateral).series_dampers.size(), 1u);
   // A longitudinal damper off the centre line is stretched by yaw (lateral set) and pitch
   // (vertical set, the point being above the frame's reference point).
   EXPECT_EQ(assemble(damped_pair(Motion::longitudinal), DofSet::lateral).series_dampers.size(), 1u);
@@ -283,10 +287,10 @@ TEST(WheelsetAnalyses, SeriesDampersAreRefusedNotDropped) {
   sim.time_step = 1e-3;
   expect_series_damper_refused([&] { simulate_linear(s, {}, sim); }, "simulation");
   expect_series_damper_refused([&] { simulate_nonlinear(s, {}, sim, NonlinearEffects{}); }, "simulation");
-  // Where no kept motion stretches the damper, nothing is left out: the lateral motions of a
-  // vertical damper.
-  const LinearSystem lateral = assemble(damped_pair(Motion::bounce), DofSet::lateral);
-  EXPECT_NO_THROW(solve_damped_modes(lateral));
+  // Where no kept motion stretches the damper, nothing is left out: the vertical motions of a
+  // lateral damper.
+  const LinearSystem vertical = assemble(damped_pair(Motion::lateral), DofSet::vertical);
+  EXPECT_NO_THROW(solve_damped_modes(vertical));
 }
 
 // A lateral track input reaches a wheelset through the contact, which these analyses leave out:
