@@ -279,8 +279,8 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   if (wheelset)
     for (const char* key : {"lateral", "longitudinal"})
       if (!s.has(key))
-        s.fail(key, std::string("missing: on wheelsets the body is guided by the springs' ") + key +
-                        " stages, e.g. " + key + " = { stiffness = \"3000 kN/m\" }");
+        s.fail(key, std::string("missing: on wheelsets the body is guided by the springs' ") + key + " stages, e.g. " +
+                        key + " = { stiffness = \"3000 kN/m\" }");
   const double a1 = s.positive("wheelbase", Quantity::length) / 2.0;
   const double b1 = s.positive("spring_spacing", Quantity::length) / 2.0;
   if (std::abs(offset) >= a1) root.fail("body", "cg_offset puts the CG outside the wheelbase");

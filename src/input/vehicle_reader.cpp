@@ -27,7 +27,8 @@ void read_wheelsets(TableReader& root, std::vector<TableReader>& body_tables, Ve
   for (auto& t : root.tables("wheelset")) {
     Wheelset w;
     w.body = t.string("body");
-    const auto found = std::find_if(v->bodies.begin(), v->bodies.end(), [&](const Body& b) { return b.name == w.body; });
+    const auto found =
+        std::find_if(v->bodies.begin(), v->bodies.end(), [&](const Body& b) { return b.name == w.body; });
     if (found == v->bodies.end()) t.fail("body", "no body is named '" + w.body + "'");
     if (!taken.insert(w.body).second) t.fail("body", "body '" + w.body + "' is already a wheelset");
     Body& body = *found;

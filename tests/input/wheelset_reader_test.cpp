@@ -118,10 +118,9 @@ TEST(WheelsetReader, ContactKeyErrors) {
                {"key 'wheelset[0].creep.f33'", "expected a force·length²"});
   expect_error(replaced(kGeneral, "f11 = \"10 MN\"", "f11 = \"10 MN\", f12 = 3"),
                {"key 'wheelset[0].creep.f12': unknown key"});
-  expect_error(replaced(kGeneral, "spin_inertia = \"113 kg*m^2\"\n", ""),
-               {"key 'wheelset[0].spin_inertia': missing"});
-  const std::string hertz = replaced(
-      kGeneral, R"(creep = { f11 = "10 MN", f22 = "9 MN", f23 = "2 kN*m", f33 = "300 N*m^2" })", "hertz = {}");
+  expect_error(replaced(kGeneral, "spin_inertia = \"113 kg*m^2\"\n", ""), {"key 'wheelset[0].spin_inertia': missing"});
+  const std::string hertz =
+      replaced(kGeneral, R"(creep = { f11 = "10 MN", f22 = "9 MN", f23 = "2 kN*m", f33 = "300 N*m^2" })", "hertz = {}");
   expect_error(hertz, {"key 'wheelset[0].hertz.rail_head_radius': missing"});
   expect_error(replaced(hertz, "hertz = {}", "hertz = { rail_head_radius = \"0.3 m\", poisson_ratio = 0.5 }"),
                {"key 'wheelset[0].hertz.poisson_ratio': must be below 0.5"});
@@ -235,8 +234,8 @@ TEST(WheelsetReader, BogieYawDamperEachSideBetweenBodyAndFrame) {
     EXPECT_TRUE(e.vertical_stages.empty() && e.lateral_stages.empty() && e.longitudinal_stages.empty());
   }
   EXPECT_EQ(count, 4);
-  const Vehicle high = load_vehicle(write_temp("yaw_damper_high.toml",
-                                               replaced(kBogie, "spacing = \"2.6 m\" }", "spacing = \"2.6 m\", height = \"0.5 m\" }")));
+  const Vehicle high = load_vehicle(write_temp(
+      "yaw_damper_high.toml", replaced(kBogie, "spacing = \"2.6 m\" }", "spacing = \"2.6 m\", height = \"0.5 m\" }")));
   for (const Element& e : high.elements) {
     if (!e.series_dampers.empty()) {
       EXPECT_DOUBLE_EQ(e.point.z(), 0.5);
@@ -274,11 +273,12 @@ spring = { stiffness = "900 kN/m" }
 )";
 
 TEST(WheelsetReader, TwoAxleTemplateOnWheelsets) {
-  const std::string file = kTwoAxle +
-                           "lateral = { stiffness = \"2 MN/m\" }\nlongitudinal = { stiffness = \"20 MN/m\" }\n"
-                           "[wheelset]\nmass = \"1.2 t\"\ninertia = { roll = \"700 kg*m^2\", yaw = \"700 kg*m^2\" }\n"
-                           "spin_inertia = \"80 kg*m^2\"\nrolling_radius = \"0.45 m\"\n"
-                           "contact_half_spacing = \"0.75 m\"\nconicity = 0.2\nhertz = { rail_head_radius = \"0.3 m\" }\n";
+  const std::string file =
+      kTwoAxle +
+      "lateral = { stiffness = \"2 MN/m\" }\nlongitudinal = { stiffness = \"20 MN/m\" }\n"
+      "[wheelset]\nmass = \"1.2 t\"\ninertia = { roll = \"700 kg*m^2\", yaw = \"700 kg*m^2\" }\n"
+      "spin_inertia = \"80 kg*m^2\"\nrolling_radius = \"0.45 m\"\n"
+      "contact_half_spacing = \"0.75 m\"\nconicity = 0.2\nhertz = { rail_head_radius = \"0.3 m\" }\n";
   const Vehicle v = load_vehicle(write_temp("two_axle_ws.toml", file));
   ASSERT_EQ(v.wheelsets.size(), 2u);
   EXPECT_EQ(v.wheelsets[0].body, "wheelset1");  // front axle, x = +a1

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -56,12 +55,24 @@ Vehicle damped_pair(Motion direction) {
 double expected_stretch(Motion direction, Motion motion, const Eigen::Vector3d& r) {
   Eigen::Vector3d u = Eigen::Vector3d::Zero(), theta = Eigen::Vector3d::Zero();
   switch (motion) {
-    case Motion::longitudinal: u.x() = 1.0; break;
-    case Motion::lateral: u.y() = 1.0; break;
-    case Motion::bounce: u.z() = 1.0; break;
-    case Motion::roll: theta.x() = 1.0; break;
-    case Motion::pitch: theta.y() = 1.0; break;
-    case Motion::yaw: theta.z() = 1.0; break;
+    case Motion::longitudinal:
+      u.x() = 1.0;
+      break;
+    case Motion::lateral:
+      u.y() = 1.0;
+      break;
+    case Motion::bounce:
+      u.z() = 1.0;
+      break;
+    case Motion::roll:
+      theta.x() = 1.0;
+      break;
+    case Motion::pitch:
+      theta.y() = 1.0;
+      break;
+    case Motion::yaw:
+      theta.z() = 1.0;
+      break;
   }
   const Eigen::Vector3d d = u + theta.cross(r);
   return direction == Motion::longitudinal ? d.x() : direction == Motion::lateral ? d.y() : d.z();
@@ -82,8 +93,8 @@ TEST(SeriesDamperAssembly, StretchRowIsTheRelativeMotionAlongTheDamper) {
       const Body& b = v.bodies[s.dofs[i].body];
       const double sign = b.name == "body" ? 1.0 : -1.0;  // upper minus lower
       // Exact: each entry is one product of the point's lever arms (1e-15 covers their rounding).
-      EXPECT_NEAR(row.stretch(i), sign * expected_stretch(direction, s.dofs[i].motion, v.elements[8].point - b.reference_point),
-                  1e-15)
+      EXPECT_NEAR(row.stretch(i),
+                  sign * expected_stretch(direction, s.dofs[i].motion, v.elements[8].point - b.reference_point), 1e-15)
           << to_string(direction) << " " << s.dofs[i].label;
     }
   }
