@@ -327,6 +327,17 @@ TEST(WheelsetAnalyses, LateralTrackInputOnWheelsetsIsRefused) {
   joints.dip_depth = 0.002;
   const HarmonicLoad load = make_source(joints)->load(s, 30.0, 1);
   EXPECT_GT(generalized_load(s, load).norm(), 0.0);  // the vertical input reaches the bogies
+  // A wheelset held by springs to a fixed frame (the track): the frame's lateral motion is no
+  // rail's, and the contact is still left out: refused as well.
+  const LinearSystem one = assemble(load_vehicle(data_file("wheelset_on_springs.toml")), DofSet::lateral);
+  try {
+    lateral->load(one, 30.0, 1);
+    FAIL() << "a lateral input on a vehicle with wheelsets was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("hunting: a lateral track input on a vehicle with wheelsets"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
