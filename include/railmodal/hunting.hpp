@@ -107,6 +107,8 @@ struct HuntingResult {
   HuntingVerdict verdict = HuntingVerdict::stable_throughout;
   std::optional<HuntingCriticalSpeed> critical;
   std::vector<UnstableInterval> unstable_intervals;  ///< every one, in order of speed
+  /// HuntingOptions::damping_threshold as asked (none: not asked), for the reports.
+  std::optional<double> damping_threshold;
   /// The lowest speed at which the least-damped ζ reaches HuntingOptions::damping_threshold.
   std::optional<double> threshold_speed;
   std::vector<ConicityPoint> conicity_curve;  ///< one per HuntingOptions::conicities

@@ -13,9 +13,11 @@
 #pragma once
 
 #include <ostream>
+#include <string>
 
 #include "railmodal/hunting.hpp"
 #include "railmodal/output_format.hpp"
+#include "railmodal/provenance.hpp"
 
 namespace railmodal {
 
@@ -23,5 +25,9 @@ namespace railmodal {
 /// HTML (with SVG plots: root locus coloured by speed, ζ against speed with the critical speed
 /// marked, critical speed against conicity). Throws std::invalid_argument for another format.
 void write_hunting_stability(std::ostream& out, const HuntingResult& result, OutputFormat format);
+/// The same with the report's title, `vehicle` (the vehicle's name; "" writes "vehicle"), and the
+/// input files for the footer of the Markdown and HTML pages (empty: "input files not recorded").
+void write_hunting_stability(std::ostream& out, const HuntingResult& result, OutputFormat format,
+                             const std::string& vehicle, const Provenance& provenance);
 
 }  // namespace railmodal

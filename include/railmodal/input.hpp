@@ -24,4 +24,9 @@ namespace railmodal {
 /// non-physical value (negative or zero mass, negative stiffness, NaN).
 Vehicle load_vehicle(const std::string& path);
 
+/// A speed written as vehicle and scene files write one: "75 km/h", "20.8 m/s" or a bare number
+/// (m/s), in m/s. For programs that take speeds on their command line (railmodal stability
+/// --speeds). Throws std::invalid_argument saying what was expected and what was found.
+double parse_speed(const std::string& text);
+
 }  // namespace railmodal

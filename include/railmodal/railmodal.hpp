@@ -12,6 +12,7 @@
 //   }
 #pragma once
 
+#include "railmodal/comfort_weighting.hpp"
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/critical_speed_report.hpp"
@@ -38,6 +39,7 @@
 #include "railmodal/stability.hpp"
 #include "railmodal/study.hpp"
 #include "railmodal/summary.hpp"
+#include "railmodal/track_spectrum.hpp"
 #include "railmodal/vehicle.hpp"
 #include "railmodal/version.hpp"
 #include "railmodal/wheel_rail.hpp"

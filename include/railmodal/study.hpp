@@ -24,6 +24,7 @@
 
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
+#include "railmodal/hunting.hpp"
 #include "railmodal/scene.hpp"
 #include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
@@ -198,6 +199,12 @@ struct VariantResult {
   std::optional<double> metacentric_height;  ///< of the body named "body", m (eq. (235b))
   std::vector<CriticalSpeedSummary> critical_speeds;  ///< ascending speed
   std::vector<PeakSummary> peaks;
+  /// The linear hunting critical speed (solve_hunting_stability of the lateral assembly at the
+  /// vehicle's own conicity over HuntingOptions' default range, 10–500 km/h), m/s; +∞ when the
+  /// vehicle is stable over the whole range, 0 when it is already unstable at the lowest speed
+  /// (so that maximising it ranks such a design last). None when the study does not ask for the
+  /// metric "hunting_speed", or when the vehicle has no wheelsets.
+  std::optional<double> hunting_speed;
   bool deflections_checked = false;  ///< the study names a deflection rule
   std::vector<DeflectionCheck> deflections;  ///< every element or stage the rule limits
   /// The checks (modes, critical speeds, deflections kept) and the stage times of the
@@ -208,10 +215,17 @@ struct VariantResult {
 };
 
 /// Evaluates one variant: modes, static deflections, metacentric height, critical speeds,
-/// peak responses in its scene and, when `rule` is active, the permissible dynamic
-/// deflections. Never throws for a bad design: an unstable or singular vehicle is a result
-/// with its `failure`.
-VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule = {});
+/// peak responses in its scene, when `rule` is active the permissible dynamic deflections, and
+/// when `hunting` is given the hunting speed (VariantResult::hunting_speed) with those options.
+/// Never throws for a bad design: an unstable or singular vehicle, or a wheelset contact out of
+/// range, is a result with its `failure`.
+VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule = {},
+                               const std::optional<HuntingOptions>& hunting = std::nullopt);
+
+/// The hunting options a study evaluates "hunting_speed" with, when its ranking names that metric
+/// (HuntingOptions' defaults, one thread: the variants are spread over the threads); none otherwise,
+/// and then no variant pays for it.
+std::optional<HuntingOptions> hunting_options_of(const Study& study);
 
 struct EvaluationOptions {
   int threads = 0;      ///< ≥ 0; 0: std::thread::hardware_concurrency()
@@ -233,6 +247,7 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
 /// (no mode of that name). "lowest_critical_speed" and "critical_speed:<mode>" are +∞ without
 /// a critical speed in range.
 std::optional<double> metric_value(const VariantResult& result, const std::string& metric);
+/// "hunting_speed" is VariantResult::hunting_speed (+∞ stable throughout, 0 unstable at the lowest speed).
 /// "dynamic_deflection_ratio" is the largest dynamic deflection over its permissible value
 /// (≤ 1: the design keeps the book's limits; +∞ for an unbounded resonance) and
 /// "dynamic_deflection_ratio:<element>" the same for one element.

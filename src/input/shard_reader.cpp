@@ -2,6 +2,7 @@
 // and checked against the study: the same study, the same deflection rule, each variant at
 // its index.
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -34,6 +35,11 @@ VariantResult result_from_json(const json& j) {
   for (const auto& p : j.at("peaks"))
     r.peaks.push_back({p.at("source").get<int>(), p.at("output").get<std::string>(), p.at("quantity").get<std::string>(),
                        p.at("amplitude").get<double>(), p.at("speed_m_s").get<double>(), p.at("unbounded").get<bool>()});
+  if (j.contains("hunting_speed_m_s")) {
+    const json& h = j.at("hunting_speed_m_s");
+    r.hunting_speed =
+        h.is_string() && h.get<std::string>() == "none" ? std::numeric_limits<double>::infinity() : h.get<double>();
+  }
   if (j.contains("dynamic_deflections")) {
     r.deflections_checked = true;
     for (const auto& c : j.at("dynamic_deflections")) {

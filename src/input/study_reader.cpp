@@ -253,7 +253,7 @@ void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
     if (!is_metric(metric))
       r.fail(key, "unknown metric '" + metric +
                       "' (lowest_critical_speed, critical_speed:<mode name>, bounce_critical_speed, period:<mode name>, bounce_period, static_deflection[:<body>], "
-                      "metacentric_height, peak:<dof>:<displacement|velocity|acceleration>, dynamic_deflection_ratio, "
+                      "metacentric_height, hunting_speed, peak:<dof>:<displacement|velocity|acceleration>, dynamic_deflection_ratio, "
                       "dynamic_deflection_ratio:<element>)");
     if (!deflections_checked && canonical_metric(metric).rfind("dynamic_deflection", 0) == 0)
       r.fail(key, "metric '" + metric + "' needs a [permissible_dynamic_deflection] table naming the rule");

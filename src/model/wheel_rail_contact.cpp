@@ -1,13 +1,198 @@
-// The linearised wheel–rail contact terms of a vehicle's wheelsets.
-// PLACEHOLDER until issue 20's contact work lands.
+// The linearised wheel–rail contact terms of a vehicle's wheelsets: creep damping C_c/V,
+// gyroscopic V·G, creep and gravitational stiffness K_c (docs/stability.md, "The equations of
+// motion", derives every term and cites its sources).
+#include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
+#include "model/wheelset_creepage.hpp"
 #include "railmodal/wheel_rail.hpp"
 
 namespace railmodal {
+namespace {
 
-ContactMatrices contact_matrices(const LinearSystem&, std::optional<double>) {
-  throw std::logic_error("contact_matrices: not built yet");
+constexpr double kPi = 3.14159265358979323846;
+
+[[noreturn]] void fail(const Wheelset& w, const std::string& what) {
+  throw std::invalid_argument("contact_matrices: wheelset '" + w.body + "': " + what);
+}
+
+void require(bool ok, const Wheelset& w, const std::string& name, double value, const char* rule) {
+  if (!ok) fail(w, name + " = " + std::to_string(value) + " " + rule);
+}
+
+int body_index(const Vehicle& v, const Wheelset& w) {
+  for (std::size_t i = 0; i < v.bodies.size(); ++i)
+    if (v.bodies[i].name == w.body) return static_cast<int>(i);
+  fail(w, "no body of that name in the vehicle");
+}
+
+// W: what the rails carry under the wheelset, from its vertical equilibrium: its weight, the
+// static loads of the elements standing on it, less those of elements hanging it from below.
+double axle_load(const LinearSystem& system, const Wheelset& w, int body) {
+  const Vehicle& v = system.vehicle;
+  double load = v.bodies[body].mass * v.gravity;
+  for (std::size_t k = 0; k < v.elements.size() && k < system.element_loads.size(); ++k) {
+    if (v.elements[k].lower == w.body) load += system.element_loads[k];
+    if (v.elements[k].upper == w.body) load -= system.element_loads[k];
+  }
+  require(load > 0.0 && std::isfinite(load), w, "axle load", load, "N: must be positive");
+  return load;
+}
+
+CreepCoefficients resolve_creep(const Wheelset& w, double rolling_radius, double load,
+                                std::optional<HertzContact>* ellipse) {
+  const WheelRailContact& c = w.contact;
+  if (c.creep.has_value() == c.hertz.has_value())
+    fail(w, "give exactly one of the creep coefficients and the Hertz contact");
+  CreepCoefficients f;
+  if (c.creep) {
+    f = *c.creep;
+  } else {
+    HertzContactInput in = *c.hertz;
+    if (!in.wheel_load) in.wheel_load = load / 2.0;  // the static load of one of its two wheels
+    *ellipse = hertz_contact(in, rolling_radius);
+    f = creep_coefficients(**ellipse, in.youngs_modulus, in.poisson_ratio);
+  }
+  require(f.f11 > 0.0 && std::isfinite(f.f11), w, "f11", f.f11, "N: must be positive");
+  require(f.f22 > 0.0 && std::isfinite(f.f22), w, "f22", f.f22, "N: must be positive");
+  require(std::isfinite(f.f23), w, "f23", f.f23, "N·m: must be finite");
+  require(f.f33 >= 0.0 && std::isfinite(f.f33), w, "f33", f.f33, "N·m²: must be ≥ 0");
+  return f;
+}
+
+ResolvedContact resolve(const LinearSystem& system, const Wheelset& w, int body, std::optional<double> conicity) {
+  const WheelRailContact& c = w.contact;
+  ResolvedContact r;
+  r.body = w.body;
+  r.rolling_radius = c.rolling_radius;
+  r.contact_half_spacing = c.contact_half_spacing;
+  r.conicity = conicity.value_or(c.conicity);
+  require(r.rolling_radius > 0.0 && std::isfinite(r.rolling_radius), w, "rolling radius r0", r.rolling_radius,
+          "m: must be positive");
+  require(r.contact_half_spacing > 0.0 && std::isfinite(r.contact_half_spacing), w, "contact half spacing l0",
+          r.contact_half_spacing, "m: must be positive");
+  require(r.conicity >= 0.0 && std::isfinite(r.conicity), w, "conicity", r.conicity, "must be ≥ 0");
+  // Conical wheels on knife-edge rails: the wheelset rolls by (r_left − r_right)/(2l0) = λy/l0, so
+  // σ = λ; the contact angles, fixed on the cones, turn with it, so δ_left − δ_right = 2λy/l0 and
+  // ε = λ (docs/stability.md).
+  r.contact_angle_parameter = c.contact_angle_parameter.value_or(r.conicity);
+  r.roll_parameter = c.roll_parameter.value_or(r.conicity);
+  require(std::isfinite(r.contact_angle_parameter), w, "contact angle parameter", r.contact_angle_parameter,
+          "must be finite");
+  require(std::isfinite(r.roll_parameter), w, "roll parameter", r.roll_parameter, "must be finite");
+  require(w.spin_inertia >= 0.0 && std::isfinite(w.spin_inertia), w, "spin inertia", w.spin_inertia,
+          "kg·m²: must be ≥ 0");
+  r.axle_load = axle_load(system, w, body);
+  r.creep = resolve_creep(w, r.rolling_radius, r.axle_load, &r.ellipse);
+  r.klingel_wavelength = r.conicity > 0.0
+                             ? 2.0 * kPi * std::sqrt(r.rolling_radius * r.contact_half_spacing / r.conicity)
+                             : std::numeric_limits<double>::infinity();
+  return r;
+}
+
+// The two contact forces on the wheelset from a unit of one state variable, at V = 1 (so a rate
+// enters as rate/V: the creep damping's coefficient of 1/V).
+model::WheelsetLoad unit_load(const model::WheelsetGeometry& g, const CreepCoefficients& f,
+                              const model::WheelsetState& s) {
+  const auto c = model::wheelset_creepages(g, s);
+  return model::wheelset_load(g, model::linear_creep_forces(f, c.left), model::linear_creep_forces(f, c.right));
+}
+
+// The wheelset's lateral and yaw DOFs, and the lever from its reference point to the axle centre
+// (its centre of gravity): the axle's lateral displacement is y_ref + (x_axle − x_ref)·ψ.
+struct WheelsetDofs {
+  int lateral = -1;
+  int yaw = -1;
+  double lever = 0.0;
+};
+
+WheelsetDofs locate(const LinearSystem& system, const Wheelset& w, int body) {
+  WheelsetDofs d;
+  for (int i = 0; i < system.size(); ++i) {
+    if (system.dofs[i].body != body) continue;
+    switch (system.dofs[i].motion) {
+      case Motion::lateral:
+        d.lateral = i;
+        break;
+      case Motion::yaw:
+        d.yaw = i;
+        break;
+      case Motion::longitudinal:
+        break;  // rolling along: the contact terms leave it alone
+      default:
+        // Bounce, roll and pitch follow the rails in the linear model (the roll through σ).
+        fail(w, std::string("its ") + to_string(system.dofs[i].motion) +
+                    " must be held: a wheelset's bounce, roll and pitch follow the rails");
+    }
+  }
+  if (d.lateral < 0 || d.yaw < 0)
+    fail(w,
+         "its lateral and yaw motions must be free degrees of freedom of the system (assemble "
+         "the lateral or all motions, and do not hold them)");
+  const Body& b = system.vehicle.bodies[body];
+  d.lever = b.centre_of_gravity.x() - b.reference_point.x();
+  return d;
+}
+
+}  // namespace
+
+ContactMatrices contact_matrices(const LinearSystem& system, std::optional<double> conicity) {
+  const Vehicle& v = system.vehicle;
+  if (v.wheelsets.empty())
+    throw std::invalid_argument("contact_matrices: the vehicle '" + v.name + "' has no wheelsets");
+  if (conicity && !(*conicity >= 0.0 && std::isfinite(*conicity)))
+    throw std::invalid_argument("contact_matrices: conicity = " + std::to_string(*conicity) + " must be ≥ 0");
+  const int n = system.size();
+  ContactMatrices out;
+  out.creep_damping = Eigen::MatrixXd::Zero(n, n);
+  out.gyroscopic = Eigen::MatrixXd::Zero(n, n);
+  out.stiffness = Eigen::MatrixXd::Zero(n, n);
+  for (const Wheelset& w : v.wheelsets) {
+    for (const Wheelset& other : v.wheelsets)
+      if (&other != &w && other.body == w.body) fail(w, "listed twice among the wheelsets");
+    const int body = body_index(v, w);
+    const WheelsetDofs dofs = locate(system, w, body);
+    ResolvedContact r = resolve(system, w, body, conicity);
+    const model::WheelsetGeometry g{r.rolling_radius, r.contact_half_spacing, r.conicity, r.contact_angle_parameter,
+                                    r.roll_parameter};
+
+    // Over the axle centre's (y, ψ): minus the contact loads per unit of each variable.
+    Eigen::Matrix2d stiffness, damping, gyroscopic;
+    const model::WheelsetState unit[4] = {{1, 0, 0, 0, 1}, {0, 1, 0, 0, 1}, {0, 0, 1, 0, 1}, {0, 0, 0, 1, 1}};
+    for (int j = 0; j < 2; ++j) {
+      const auto k = unit_load(g, r.creep, unit[j]);
+      const auto c = unit_load(g, r.creep, unit[j + 2]);
+      stiffness.col(j) << -k.lateral, -k.yaw;
+      damping.col(j) << -c.lateral, -c.yaw;
+    }
+    // Gravitational stiffness: the normal loads W/2 lean inwards at contact angles whose
+    // difference is 2εy/l0, leaving a lateral resultant −W·ε·y/l0 (restoring for ε > 0).
+    stiffness(0, 0) += r.axle_load * r.contact_angle_parameter / r.contact_half_spacing;
+    // Gyroscopic: the spin angular momentum I_y·V/r0 about the axle, tilted by the roll
+    // φ = σy/l0 and the yaw ψ; its rate asks the yaw moment I_y(V/r0)φ̇ and the roll moment
+    // −I_y(V/r0)ψ̇, the latter taken by the rails' normal loads whose inclination turns it into
+    // the lateral force of the skew-symmetric partner (energy is conserved).
+    const double g_coefficient = w.spin_inertia * r.roll_parameter / (r.rolling_radius * r.contact_half_spacing);
+    gyroscopic << 0.0, -g_coefficient, g_coefficient, 0.0;
+
+    // From the axle centre to the DOFs: (y_axle, ψ) = T (y_ref, ψ), generalised forces Tᵀ·F.
+    Eigen::Matrix2d t;
+    t << 1.0, dofs.lever, 0.0, 1.0;
+    const int index[2] = {dofs.lateral, dofs.yaw};
+    const Eigen::Matrix2d k = t.transpose() * stiffness * t;
+    const Eigen::Matrix2d c = t.transpose() * damping * t;
+    const Eigen::Matrix2d gy = t.transpose() * gyroscopic * t;
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) {
+        out.stiffness(index[a], index[b]) += k(a, b);
+        out.creep_damping(index[a], index[b]) += c(a, b);
+        out.gyroscopic(index[a], index[b]) += gy(a, b);
+      }
+    out.wheelsets.push_back(std::move(r));
+  }
+  return out;
 }
 
 }  // namespace railmodal

@@ -64,6 +64,9 @@ json result_json(const VariantResult& r) {
   for (const auto& p : r.peaks)
     j["peaks"].push_back({{"source", p.source}, {"output", p.output}, {"quantity", p.quantity}, {"amplitude", p.amplitude},
                           {"speed_m_s", p.speed}, {"unbounded", p.unbounded}});
+  // Only when the study asks for it (a study without it writes what it always wrote); +∞, stable
+  // over the whole range, is "none".
+  if (r.hunting_speed) j["hunting_speed_m_s"] = std::isinf(*r.hunting_speed) ? json("none") : json(*r.hunting_speed);
   if (r.deflections_checked) {
     j["dynamic_deflections"] = json::array();
     for (const auto& c : r.deflections)

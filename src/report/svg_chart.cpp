@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <limits>
 #include <numeric>
@@ -26,6 +27,21 @@ const char* colour_of(const Chart& chart, size_t k) {
   constexpr size_t n = sizeof(kColours) / sizeof(kColours[0]);
   const int chosen = chart.series[k].colour;
   return kColours[(chosen >= 0 ? static_cast<size_t>(chosen) : k) % n];
+}
+
+// A sequential scale for ChartSeries::shade, from dark blue through teal and green to yellow
+// (the end points and midpoints of matplotlib's viridis, interpolated linearly in sRGB): its
+// lightness rises monotonically, so the order of the shades reads without the colours.
+std::string shade_colour(double t) {
+  static const double stops[][3] = {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
+  t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * 4.0;
+  const int k = std::min(static_cast<int>(t), 3);
+  char text[8];
+  int rgb[3];
+  for (int c = 0; c < 3; ++c)
+    rgb[c] = static_cast<int>(std::lround(stops[k][c] + (t - k) * (stops[k + 1][c] - stops[k][c])));
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
+  return text;
 }
 
 std::string number(double v) {
@@ -101,7 +117,7 @@ std::pair<double, double> y_range(const Chart& chart) {
 
 // One entry of the legend under the plot: a swatch and its text.
 struct LegendEntry {
-  enum class Swatch { line, dashed, circle, reference, unbounded } swatch;
+  enum class Swatch { line, dashed, circle, reference, unbounded, shade } swatch;
   const char* colour;
   std::string text;
 };
@@ -123,6 +139,7 @@ std::vector<LegendEntry> legend_entries(const Chart& chart) {
         {LegendEntry::Swatch::unbounded, "#444", "unbounded: an undamped resonance, the curve leaves the plot"});
   for (const auto& l : chart.lines)
     if (!l.key.empty()) entries.push_back({LegendEntry::Swatch::reference, "#888", l.label + "  " + l.key});
+  if (!chart.shade_key.empty()) entries.push_back({LegendEntry::Swatch::shade, "#444", chart.shade_key});
   return entries;
 }
 
@@ -216,6 +233,14 @@ void write_reference_lines(std::ostream& s, const Chart& chart, const Plot& p) {
 void write_series(std::ostream& s, const Chart& chart, size_t k, const Plot& p) {
   const auto& series = chart.series[k];
   const char* colour = colour_of(chart, k);
+  if (series.markers_only && !series.shade.empty()) {
+    for (size_t i = 0; i < series.x.size(); ++i)
+      if (std::isfinite(series.x[i]) && std::isfinite(series.y[i]))
+        s << "<circle cx=\"" << p.X(series.x[i]) << "\" cy=\"" << p.Y(series.y[i]) << "\" r=\"3\" fill=\""
+          << shade_colour(i < series.shade.size() ? series.shade[i] : 0.0) << "\" stroke=\"" << colour
+          << "\" stroke-width=\"0.6\"/>\n";
+    return;
+  }
   if (series.markers_only) {
     for (size_t i = 0; i < series.x.size(); ++i)
       if (std::isfinite(series.y[i]))
@@ -326,6 +351,11 @@ void write_swatch(std::ostream& s, const LegendEntry& e, double x, double y) {
     case Swatch::circle:
       s << "<circle cx=\"" << x + 10 << "\" cy=\"" << y << "\" r=\"4\" fill=\"none\" stroke=\"" << e.colour
         << "\" stroke-width=\"2\"/>";
+      break;
+    case Swatch::shade:  // the scale, dark to light, in five steps
+      for (int k = 0; k < 5; ++k)
+        s << "<rect x=\"" << x + 4 * k << "\" y=\"" << y - 4 << "\" width=\"4\" height=\"8\" fill=\""
+          << shade_colour(k / 4.0) << "\"/>";
       break;
     case Swatch::unbounded:
       s << "<path d=\"M" << x + 5 << "," << y + 4 << " L" << x + 15 << "," << y + 4 << " L" << x + 10 << "," << y - 5

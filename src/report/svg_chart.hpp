@@ -18,6 +18,10 @@ struct ChartSeries {
   /// x where the series grows without limit (an undamped resonance): marked by a triangle at the
   /// top of the plot, and the automatic y range leaves out the points within 5 % of it.
   std::vector<double> unbounded_x;
+  /// Per point, in [0, 1]: with markers_only, each point is a dot filled by its shade on a
+  /// sequential scale (dark blue, 0, to yellow, 1) instead of the series' colour, which then
+  /// only edges it; Chart::shade_key says what the shade stands for. Empty: no shading.
+  std::vector<double> shade;
 };
 
 struct ReferenceLine {
@@ -32,6 +36,9 @@ struct Chart {
   std::string title, x_label, y_label;  ///< axis labels carry one unit each: "speed (km/h)"
   std::vector<ChartSeries> series;
   std::vector<ReferenceLine> lines;
+  /// What the shades of the series stand for, as the legend says it beside a bar of the scale:
+  /// "speed from 10 km/h (dark) to 500 km/h (light)". "": no scale in the legend.
+  std::string shade_key;
   bool log_y = false;
   double x_min = 0.0, x_max = 0.0;  ///< equal: from the data
   double y_min = 0.0, y_max = 0.0;  ///< equal: from the data

@@ -6,6 +6,7 @@
 
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
+#include "railmodal/hunting.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/study.hpp"
 #include "response/golden_section.hpp"
@@ -214,6 +215,26 @@ void check_deflections(const DeflectionRule& rule, const CriticalSpeedStudy& stu
     if (c.unbounded) c.deflection = 0.0;
 }
 
+// The linear hunting critical speed as a metric: +∞ stable over the range, 0 already unstable at
+// its lowest speed (maximised, such a design ranks last), else the critical speed. Nothing for a
+// vehicle without wheelsets.
+void hunting_speed(const Vehicle& vehicle, const HuntingOptions& options, VariantResult* r) {
+  if (vehicle.wheelsets.empty()) return;
+  const HuntingResult h = solve_hunting_stability(assemble(vehicle, DofSet::lateral), options);
+  switch (h.verdict) {
+    case HuntingVerdict::stable_throughout:
+      r->hunting_speed = std::numeric_limits<double>::infinity();
+      break;
+    case HuntingVerdict::unstable_at_lowest_speed:
+      r->hunting_speed = 0.0;
+      break;
+    case HuntingVerdict::critical_speed_in_range:
+      // Unstable in the range with no refined crossing cannot be: the solver refines every one.
+      r->hunting_speed = h.critical ? h.critical->speed : 0.0;
+      break;
+  }
+}
+
 // The analysis, method and checks of an evaluation (its stages are timed already).
 void summarise_evaluation(VariantResult* r) {
   AnalysisSummary& s = r->summary;
@@ -223,6 +244,7 @@ void summarise_evaluation(VariantResult* r) {
   s.checks.push_back({"evaluated (0: failed)", r->ok() ? 1.0 : 0.0, kNoLimit, r->ok()});
   s.checks.push_back({"modes", static_cast<double>(r->modes.size()), kNoLimit, true});
   s.checks.push_back({"critical speeds", static_cast<double>(r->critical_speeds.size()), kNoLimit, true});
+  if (r->hunting_speed) s.checks.push_back({"hunting speed evaluated", 1.0, kNoLimit, true});
   if (r->deflections_checked) {
     const double kept = static_cast<double>(std::count_if(r->deflections.begin(), r->deflections.end(),
                                                           [](const VariantResult::DeflectionCheck& c) { return c.kept(); }));
@@ -250,7 +272,8 @@ void describe_failure(const StudyVariant& variant, const std::string& why, Varia
 
 }  // namespace
 
-VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule) {
+VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
+                               const std::optional<HuntingOptions>& hunting) {
   VariantResult r;
   r.index = index;
   r.name = variant.name;
@@ -275,6 +298,8 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
     clock.lap("summaries");
     if (rule.active()) check_deflections(rule, study, &r);
     clock.lap("deflection checks");
+    if (hunting) hunting_speed(variant.vehicle, *hunting, &r);
+    clock.lap("hunting stability");
   } catch (const NumericalError& e) {
     if (r.failure.empty()) r.failure = std::string("numerical failure: ") + e.what();
   } catch (const InputError& e) {

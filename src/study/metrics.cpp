@@ -44,8 +44,9 @@ std::string canonical_metric(const std::string& metric) {
 bool is_metric(const std::string& name) {
   const std::string metric = canonical_metric(name);
   std::string dof, quantity;
-  return metric == "lowest_critical_speed" || metric == "static_deflection" || metric == "metacentric_height" ||
-         metric == "dynamic_deflection_ratio" || (starts_with(metric, "dynamic_deflection_ratio:") && metric.size() > 25) ||
+  return metric == "lowest_critical_speed" || metric == "hunting_speed" || metric == "static_deflection" ||
+         metric == "metacentric_height" || metric == "dynamic_deflection_ratio" ||
+         (starts_with(metric, "dynamic_deflection_ratio:") && metric.size() > 25) ||
          (starts_with(metric, "period:") && metric.size() > 7) ||
          (starts_with(metric, "critical_speed:") && metric.size() > 15) ||
          (starts_with(metric, "static_deflection:") && metric.size() > 18) || split_peak(metric, &dof, &quantity);
@@ -74,6 +75,7 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
     return std::nullopt;
   }
   if (metric == "metacentric_height") return r.metacentric_height;
+  if (metric == "hunting_speed") return r.hunting_speed;
   if (metric == "dynamic_deflection_ratio" || starts_with(metric, "dynamic_deflection_ratio:")) {
     // The worst check (of the named element); +∞ for an unbounded resonance. No value when
     // nothing was checked.
@@ -101,7 +103,8 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
 
 const char* metric_unit(const std::string& name) {
   const std::string metric = canonical_metric(name);
-  if (metric == "lowest_critical_speed" || starts_with(metric, "critical_speed:")) return "m/s";
+  if (metric == "lowest_critical_speed" || metric == "hunting_speed" || starts_with(metric, "critical_speed:"))
+    return "m/s";
   if (starts_with(metric, "period:")) return "s";
   if (starts_with(metric, "dynamic_deflection_ratio")) return "";
   std::string dof, quantity;
@@ -133,6 +136,7 @@ std::string title(const std::string& metric) {
   const std::string m = canonical_metric(metric);
   std::string dof, quantity;
   if (m == "lowest_critical_speed") return "lowest critical speed";
+  if (m == "hunting_speed") return "linear hunting speed";
   if (m == "static_deflection") return "static deflection of the body";
   if (m == "metacentric_height") return "metacentric height";
   if (m == "dynamic_deflection_ratio") return "largest dynamic deflection / permissible";

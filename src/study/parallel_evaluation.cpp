@@ -20,6 +20,19 @@ bool EvaluationOptions::is_valid(std::string* why) const {
   return true;
 }
 
+std::optional<HuntingOptions> hunting_options_of(const Study& study) {
+  const auto names_it = [](const std::string& metric) { return canonical_metric(metric) == "hunting_speed"; };
+  const Ranking& ranking = study.ranking;
+  if (std::none_of(ranking.constraints.begin(), ranking.constraints.end(),
+                   [&](const RankingConstraint& c) { return names_it(c.metric); }) &&
+      std::none_of(ranking.objective.begin(), ranking.objective.end(),
+                   [&](const RankingCriterion& c) { return names_it(c.metric); }))
+    return std::nullopt;
+  HuntingOptions options;
+  options.threads = 1;  // the variants are spread over the threads
+  return options;
+}
+
 std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options,
                                           AnalysisSummary* summary) {
   require_valid(options, "");
@@ -34,6 +47,7 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
       indices.push_back(i);
     }
   std::vector<VariantResult> results(indices.size());
+  const std::optional<HuntingOptions> hunting = hunting_options_of(study);
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min(threads, static_cast<int>(indices.size())));
 
@@ -43,7 +57,7 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
   auto work = [&] {
     for (size_t k = next++; k < indices.size(); k = next++) {
       try {
-        results[k] = evaluate_variant(study.variants[indices[k]], indices[k], study.deflection_rule);
+        results[k] = evaluate_variant(study.variants[indices[k]], indices[k], study.deflection_rule, hunting);
       } catch (const std::exception& e) {  // evaluate_variant keeps design failures; this is a bug
         results[k].index = indices[k];
         results[k].name = study.variants[indices[k]].name;

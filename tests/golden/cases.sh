@@ -44,6 +44,17 @@ golden_cases() {
     done
     echo "compare/$name.shard1of2.json compare $s --shard 1/2 --threads 2 -q"
   done
+  # Hunting stability (issue 20) of the bundled vehicles with wheelsets, in every format, alone and
+  # with the design curve and a damping threshold (the CSV holds the root locus only, so its
+  # .conicity twin shows that the curve leaves the locus as it is).
+  for v in wheelset_on_springs manchester_benchmark_coach_wheelsets; do
+    [ -f "data/vehicles/$v.toml" ] || continue
+    for f in table csv json markdown html; do
+      local ext=$f; [ "$f" = markdown ] && ext=md
+      echo "stability/$v.$ext stability data/vehicles/$v.toml --format $f --threads 2"
+      echo "stability/$v.conicity.$ext stability data/vehicles/$v.toml --conicity 0.05,0.1,0.2,0.3,0.4 --threshold 5% --format $f --threads 2"
+    done
+  done
   # The deprecated spelling of critical-speed (issue 17 item 10) writes the same bytes as the new:
   # this file equals two_axle_freight_wagon_joints.csv.
   echo "critical-speed/two_axle_freight_wagon_joints.old_spelling.csv critical-speed data/vehicles/two_axle_freight_wagon.toml --scene data/scenes/two_axle_freight_wagon_joints.toml --format csv -q"

@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "hunting_results.hpp"
+#include "railmodal/hunting_report.hpp"
 #include "report/svg_chart.hpp"
 
 namespace railmodal::report {
@@ -238,6 +240,35 @@ TEST(SvgStructure, UnboundedCurvesAreClippedAndMarked) {
   EXPECT_EQ(svg.find(">100</text>"), std::string::npos);
   EXPECT_NE(svg.find("class=\"unbounded\""), std::string::npos);
   EXPECT_NE(svg.find(">unbounded</text>"), std::string::npos);
+}
+
+// The hunting report's charts (root locus shaded by speed, ζ against speed with its marks,
+// critical speed against conicity) on results built by hand: every verdict and a design curve.
+TEST(SvgStructure, HuntingStabilityChartsReadWell) {
+  for (const HuntingResult& r : {test::conicity_result(), test::unstable_at_lowest_result(), test::stable_result(),
+                                 test::zero_conicity_result()}) {
+    std::ostringstream page;
+    write_hunting_stability(page, r, OutputFormat::html);
+    const std::vector<std::string> charts = svgs_of(page.str());
+    ASSERT_GE(charts.size(), 2u);
+    for (const std::string& svg : charts) EXPECT_EQ(problems(svg), "") << to_string(r.verdict);
+    // The root locus: every branch's points as dots shaded dark to light (the first speed's
+    // dot is the scale's dark end, the last its light end), and the scale in the legend.
+    const std::string& locus = charts[1];
+    EXPECT_NE(locus.find("fill=\"#440154\""), std::string::npos);
+    EXPECT_NE(locus.find("fill=\"#fde725\""), std::string::npos);
+    EXPECT_NE(locus.find("dots: speed from 10.0 km/h (dark) to 500.0 km/h (light)"), std::string::npos);
+  }
+}
+
+// The damping chart marks the critical speed and the threshold: vertical and horizontal lines
+// labelled at the plot's edge.
+TEST(SvgStructure, HuntingDampingChartMarksTheCriticalSpeedAndThreshold) {
+  std::ostringstream page;
+  write_hunting_stability(page, test::two_interval_result(), OutputFormat::html);
+  const std::string damping = svgs_of(page.str()).front();
+  for (const char* label : {"V crit 200.0", "ζ = 5 %", "ζ = 0", "V at ζ = 5 %"})
+    EXPECT_NE(damping.find(std::string(">") + label + "</text>"), std::string::npos) << label;
 }
 
 }  // namespace

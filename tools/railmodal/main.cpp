@@ -40,12 +40,14 @@ int main(int argc, char** argv) {
   // One convention for every subcommand (README.md, "Commands").
   app.footer(
       "Every command takes the file it analyses as its argument: modes VEHICLE, critical-speed SCENE, "
-      "simulate SCENE, fft-check SCENE, compare STUDY. A scene names its vehicle; --vehicle VEHICLE replaces it.");
+      "simulate SCENE, fft-check SCENE, compare STUDY, stability VEHICLE. A scene names its vehicle; --vehicle VEHICLE "
+      "replaces it.");
   auto run_modes = add_modes_command(app);
   auto run_critical_speed = add_critical_speed_command(app);
   auto run_simulate = add_simulate_command(app);
   auto run_fft_check = add_fft_check_command(app);
   auto run_compare = add_compare_command(app);
+  auto run_stability = add_stability_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
@@ -67,6 +69,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("simulate")) return run_simulate();
     if (app.got_subcommand("fft-check")) return run_fft_check();
     if (app.got_subcommand("compare")) return run_compare();
+    if (app.got_subcommand("stability")) return run_stability();
   } catch (const OutputError& e) {
     std::cerr << e.what() << "\n";
     return e.code();

@@ -1,0 +1,200 @@
+// The hunting-stability report on results built by hand (tests/report/hunting_results.hpp):
+// every verdict, every unstable interval with its open ends, the design curve and zero
+// conicity, in every format. The charts' structure is checked in svg_structure_test.cpp.
+#include "railmodal/hunting_report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "hunting_results.hpp"
+
+namespace railmodal {
+namespace {
+
+std::string written(const HuntingResult& r, OutputFormat format) {
+  std::ostringstream out;
+  write_hunting_stability(out, r, format, "hand-built wheelset", Provenance{});
+  return out.str();
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+// A speed as the report's tables print it (one decimal).
+std::string report_speed_kmh(double speed) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(1) << speed * 3.6;
+  return s.str();
+}
+
+// Whether `part` is in `text` (whose notes the plain-text report wraps at spaces: a line break
+// reads as a space).
+bool has(std::string text, const std::string& part) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text.find(part) != std::string::npos;
+}
+
+TEST(HuntingReport, StableThroughoutSaysSoAndInventsNoCriticalSpeed) {
+  const HuntingResult r = test::stable_result();
+  const std::string table = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(table, "verdict: stable_throughout")) << table;
+  EXPECT_TRUE(has(table, "stable at every speed from 10.0 km/h to 500.0 km/h")) << table;
+  EXPECT_TRUE(has(table, "unstable speed intervals: none")) << table;
+  EXPECT_FALSE(has(table, "critical speed 2")) << table;
+  EXPECT_TRUE(has(table, "the nonlinear critical speed")) << table;  // the linear remark
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  EXPECT_EQ(j["verdict"], "stable_throughout");
+  EXPECT_TRUE(j["critical"].is_null());
+  EXPECT_TRUE(j["unstable_intervals"].empty());
+  EXPECT_EQ(j["analysis"], "linear");
+}
+
+TEST(HuntingReport, EveryUnstableIntervalIsListedWithItsOpenEnd) {
+  const HuntingResult r = test::two_interval_result();
+  const std::string table = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(table, "linear critical speed 200.00 km/h (55.555556 m/s)")) << table;
+  EXPECT_TRUE(has(table, "hunting frequency 2.778 Hz (Klingel's V/Λ there: 2.500 Hz)")) << table;
+  EXPECT_TRUE(has(table, "from 200.00 km/h, to 300.00 km/h (wheelset 1 hunting (kinematic))")) << table;
+  EXPECT_TRUE(has(table, "from 400.00 km/h, still unstable at the highest, 500.0 km/h")) << table;
+  EXPECT_TRUE(has(table, "falls to ζ = 5 % at 150.00 km/h")) << table;
+  const std::string markdown = written(r, OutputFormat::markdown);
+  EXPECT_TRUE(has(markdown, "| 400.00 | 500.00 (still unstable at the highest) |")) << markdown;
+  EXPECT_TRUE(has(markdown, "| speed at ζ = 5 % | 150.00 km/h |")) << markdown;
+  EXPECT_TRUE(has(markdown, "Written by railmodal")) << markdown;
+
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  ASSERT_EQ(j["unstable_intervals"].size(), 2u);
+  EXPECT_FALSE(j["unstable_intervals"][0]["to_highest_speed"].get<bool>());
+  EXPECT_TRUE(j["unstable_intervals"][1]["to_highest_speed"].get<bool>());
+  // km/h to 1e-12 relative: the JSON keeps every digit (shortest round trip).
+  EXPECT_NEAR(j["critical"]["speed_kmh"].get<double>(), 200.0, 1e-12 * 200.0);
+  EXPECT_DOUBLE_EQ(j["critical"]["speed_m_s"].get<double>(), 200.0 / 3.6);
+  EXPECT_EQ(j["critical"]["evaluations"], 31);
+  EXPECT_DOUBLE_EQ(j["damping_threshold"].get<double>(), 0.05);
+  EXPECT_NEAR(j["threshold_speed_kmh"].get<double>(), 150.0, 1e-12 * 150.0);
+  ASSERT_EQ(j["branches"].size(), 2u);
+  EXPECT_EQ(j["branches"][0]["eigenvalue_re"].size(), r.speeds.size());
+  EXPECT_EQ(j["speeds_kmh"].size(), r.speeds.size());
+}
+
+TEST(HuntingReport, UnstableAtTheLowestSpeedGivesNoCriticalSpeed) {
+  const HuntingResult r = test::unstable_at_lowest_result();
+  const std::string table = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(table, "already unstable at the lowest speed, 10.0 km/h: no critical speed is given")) << table;
+  EXPECT_TRUE(has(table, "unstable at the lowest speed, 10.0 km/h, to 120.00 km/h")) << table;
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  EXPECT_EQ(j["verdict"], "unstable_at_lowest_speed");
+  EXPECT_TRUE(j["critical"].is_null());
+  EXPECT_TRUE(j["unstable_intervals"][0]["from_lowest_speed"].get<bool>());
+}
+
+TEST(HuntingReport, ConicityCurveGivesBoundsNotValuesOutsideTheRange) {
+  const HuntingResult r = test::conicity_result();
+  const std::string table = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(table, "critical speed against conicity")) << table;
+  EXPECT_TRUE(has(table, "above 500.0")) << table;  // λ = 0.05, stable throughout
+  EXPECT_TRUE(has(table, "below 10.0")) << table;   // λ = 0.4, unstable at the lowest speed
+  EXPECT_TRUE(has(table, "400.00")) << table;       // λ = 0.1: 40/0.1 km/h
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  ASSERT_EQ(j["conicity_curve"].size(), 4u);
+  EXPECT_TRUE(j["conicity_curve"][0]["critical"].is_null());
+  EXPECT_NEAR(j["conicity_curve"][2]["critical"]["speed_kmh"].get<double>(), 200.0, 1e-9);
+  EXPECT_EQ(j["conicity_curve"][3]["verdict"], "unstable_at_lowest_speed");
+  const std::string html = written(r, OutputFormat::html);
+  EXPECT_TRUE(has(html, "Linear critical speed against equivalent conicity")) << html.substr(0, 400);
+}
+
+TEST(HuntingReport, ZeroConicityWritesNoInfinity) {
+  const HuntingResult r = test::zero_conicity_result();
+  for (OutputFormat f :
+       {OutputFormat::table, OutputFormat::csv, OutputFormat::json, OutputFormat::markdown, OutputFormat::html}) {
+    const std::string text = written(r, f);
+    EXPECT_FALSE(has(text, "inf")) << to_string(f);
+    EXPECT_FALSE(has(text, "nan")) << to_string(f);
+  }
+  EXPECT_TRUE(has(written(r, OutputFormat::table), "none (λ = 0: no kinematic oscillation)"));
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  EXPECT_TRUE(j["contacts"][0]["klingel_wavelength_m"].is_null());
+  EXPECT_DOUBLE_EQ(j["contacts"][0]["conicity"].get<double>(), 0.0);
+}
+
+TEST(HuntingReport, CsvHasOneRowPerBranchAndSpeedWithUnitsInTheHeadings) {
+  const HuntingResult r = test::two_interval_result();
+  const std::vector<std::string> lines = lines_of(written(r, OutputFormat::csv));
+  ASSERT_EQ(lines.size(), 1 + r.branches.size() * r.speeds.size());
+  EXPECT_EQ(lines[0],
+            "speed [km/h],branch,eigenvalue_re [1/s],eigenvalue_im [1/s],frequency [Hz],damping_ratio,continuity");
+  // The last row: the body branch at 500 km/h, ζ = 0.1, f = 0.8 Hz, Im λ = 2π·0.8.
+  std::istringstream last(lines.back());
+  std::vector<std::string> cells;
+  for (std::string cell; std::getline(last, cell, ',');) cells.push_back(cell);
+  ASSERT_EQ(cells.size(), 7u);
+  EXPECT_NEAR(std::stod(cells[0]), 500.0, 1e-7);  // 10 significant digits
+  EXPECT_EQ(cells[1], "body lateral");
+  EXPECT_NEAR(std::stod(cells[3]), 2.0 * M_PI * 0.8, 1e-8);
+  EXPECT_NEAR(std::stod(cells[5]), 0.1, 1e-10);
+  // ζ = −Re λ/|λ| holds on every row (the eigenvalue and the ratio come from one branch).
+  for (size_t k = 1; k < lines.size(); ++k) {
+    std::istringstream row(lines[k]);
+    std::vector<double> v;
+    std::string cell;
+    for (int c = 0; std::getline(row, cell, ','); ++c)
+      if (c != 1) v.push_back(std::stod(cell));
+    EXPECT_NEAR(-v[1] / std::hypot(v[1], v[2]), v[4], 1e-8) << lines[k];
+  }
+}
+
+TEST(HuntingReport, VeeringBranchesAreFlagged) {
+  HuntingResult r = test::two_interval_result();
+  r.branches[1].continuity[20] = 0.42;
+  r.branches[1].veers = true;
+  const std::string table = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(table, "VEERS near " + report_speed_kmh(r.speeds[20]))) << table;
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  EXPECT_TRUE(j["branches"][1]["veers"].get<bool>());
+  EXPECT_DOUBLE_EQ(j["branches"][1]["continuity"][20].get<double>(), 0.42);
+}
+
+TEST(HuntingReport, ContactsAreListed) {
+  const std::string table = written(test::stable_result(), OutputFormat::table);
+  // f11 9.43 MN, f22 8.46 MN, f23 12 kN·m, f33 100 N·m², W 100 kN, Λ = 2π√(0.46·0.75/0.2) = 8.252 m.
+  for (const char* part : {"wheelset1", "9.43", "8.46", "12", "100", "0.46", "0.75", "8.252"})
+    EXPECT_TRUE(has(table, part)) << part << "\n" << table;
+}
+
+TEST(HuntingReport, HtmlIsOnePageWithItsThreeChartsAndFooter) {
+  const std::string html = written(test::conicity_result(), OutputFormat::html);
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  size_t charts = 0;
+  for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++charts;
+  EXPECT_EQ(charts, 3u);
+  EXPECT_TRUE(has(html, "<footer class=note>Written by railmodal"));
+  EXPECT_TRUE(has(html, "Root locus"));
+  EXPECT_FALSE(has(html, "<script"));
+  // Without a design curve, two charts.
+  const std::string plain = written(test::two_interval_result(), OutputFormat::html);
+  charts = 0;
+  for (size_t at = plain.find("<svg"); at != std::string::npos; at = plain.find("<svg", at + 1)) ++charts;
+  EXPECT_EQ(charts, 2u);
+}
+
+TEST(HuntingReport, EveryFormatIsWritten) {
+  for (OutputFormat f :
+       {OutputFormat::table, OutputFormat::csv, OutputFormat::json, OutputFormat::markdown, OutputFormat::html})
+    EXPECT_FALSE(written(test::stable_result(), f).empty()) << to_string(f);
+  std::ostringstream out;
+  EXPECT_THROW(write_hunting_stability(out, test::stable_result(), static_cast<OutputFormat>(99)),
+               std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace railmodal

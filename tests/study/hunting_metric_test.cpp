@@ -1,0 +1,128 @@
+// The study metric "hunting_speed" (issue 20): the linear hunting critical speed of a variant, so
+// that `railmodal compare` ranks designs by it. A design stable over the whole range is +∞
+// ("none"), one already unstable at the lowest speed 0: maximised, the first ranks best and the
+// second last. Evaluated only when the study names the metric.
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "railmodal/railmodal.hpp"
+#include "study/study_files.hpp"
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+VariantResult hunting(int index, const std::string& name, std::optional<double> speed) {
+  VariantResult r;
+  r.index = index;
+  r.name = name;
+  r.hunting_speed = speed;
+  return r;
+}
+
+Study hand_study(const std::vector<std::string>& names) {
+  Study s;
+  s.name = "hand";
+  for (const auto& n : names) s.variants.push_back({n, {}, {}, {}});
+  return s;
+}
+
+TEST(HuntingMetric, IsAMetricOfSpeedShownInKmh) {
+  EXPECT_TRUE(is_metric("hunting_speed"));
+  EXPECT_FALSE(is_metric("hunting_speed:wheelset 1"));
+  EXPECT_STREQ(metric_unit("hunting_speed"), "m/s");
+  EXPECT_DOUBLE_EQ(*metric_value(hunting(0, "a", 50.0), "hunting_speed"), 50.0);
+  EXPECT_TRUE(std::isinf(*metric_value(hunting(0, "a", kInf), "hunting_speed")));
+  EXPECT_FALSE(metric_value(hunting(0, "a", std::nullopt), "hunting_speed"));  // not evaluated
+  VariantResult failed = hunting(0, "a", 50.0);
+  failed.failure = "unstable";
+  EXPECT_FALSE(metric_value(failed, "hunting_speed"));
+}
+
+// Maximised: stable throughout (+∞) first, then by speed, unstable at the lowest speed (0) last
+// among the feasible; a min constraint makes the last infeasible; a variant without wheelsets
+// (no value) violates it by having none.
+TEST(HuntingMetric, MaximisedRanksStableFirstAndUnstableAtTheLowestSpeedLast) {
+  Study s = hand_study({"a", "stable", "hunts at once", "d", "no wheelsets"});
+  s.ranking.objective.push_back({"hunting_speed", true, 1.0, {}});
+  std::vector<VariantResult> results{hunting(0, "a", 200.0 / 3.6), hunting(1, "stable", kInf),
+                                     hunting(2, "hunts at once", 0.0), hunting(3, "d", 300.0 / 3.6),
+                                     hunting(4, "no wheelsets", std::nullopt)};
+  Comparison c = rank_variants(s, results);
+  std::vector<std::string> order;
+  for (const auto& v : c.variants) order.push_back(v.result.name);
+  EXPECT_EQ(order[0], "stable");
+  EXPECT_EQ(order[1], "d");
+  EXPECT_EQ(order[2], "a");
+  EXPECT_EQ(std::find(order.begin(), order.end(), "hunts at once") - order.begin() >
+                std::find(order.begin(), order.end(), "a") - order.begin(),
+            true);
+
+  s.ranking.constraints.push_back({"hunting_speed", 150.0 / 3.6, std::nullopt, {}});
+  c = rank_variants(s, results);
+  order.clear();
+  for (const auto& v : c.variants) order.push_back(v.result.name);
+  EXPECT_EQ(order, (std::vector<std::string>{"stable", "d", "a", "hunts at once", "no wheelsets"}));
+  EXPECT_TRUE(c.variants[2].feasible);
+  EXPECT_FALSE(c.variants[3].feasible);
+  ASSERT_EQ(c.variants[3].violations.size(), 1u);
+  EXPECT_EQ(c.variants[3].violations[0], "hunting_speed 0 km/h < 150 km/h");
+  ASSERT_EQ(c.variants[4].violations.size(), 1u);
+  EXPECT_EQ(c.variants[4].violations[0], "no hunting_speed");
+  // People read the metric by its title, and +∞ as "none" (no hunting speed in the range), 0 as
+  // a speed below the range.
+  std::ostringstream table;
+  write_comparison(table, c, OutputFormat::table);
+  EXPECT_NE(table.str().find("linear hunting speed, maximised [km/h]"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("linear hunting speed 0 km/h < 150 km/h"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("none"), std::string::npos) << table.str();
+}
+
+TEST(HuntingMetric, OnlyAStudyThatNamesItPaysForIt) {
+  Study s = hand_study({"a"});
+  s.ranking.objective.push_back({"lowest_critical_speed", true, 1.0, {}});
+  EXPECT_FALSE(hunting_options_of(s));
+  s.ranking.constraints.push_back({"hunting_speed", 150.0 / 3.6, std::nullopt, {}});
+  const std::optional<HuntingOptions> options = hunting_options_of(s);
+  ASSERT_TRUE(options);
+  EXPECT_EQ(options->threads, 1);  // the variants are spread over the threads
+  EXPECT_DOUBLE_EQ(options->max_speed, HuntingOptions().max_speed);
+  EXPECT_TRUE(options->conicities.empty());
+}
+
+// The book's wagon has no wheelsets: asked for, the metric has no value and the variant is still
+// evaluated (its modes and critical speeds as always).
+TEST(HuntingMetric, AVehicleWithoutWheelsetsHasNoValueAndDoesNotFail) {
+  const Study s = load_study(write_study(example3_wagon(), "[ranking]\nmin_hunting_speed = \"150 km/h\"\n"));
+  ASSERT_TRUE(hunting_options_of(s));
+  const VariantResult r = evaluate_variant(s.variants[0], 0, s.deflection_rule, hunting_options_of(s));
+  EXPECT_TRUE(r.ok()) << r.failure;
+  EXPECT_FALSE(r.hunting_speed);
+  EXPECT_FALSE(r.critical_speeds.empty());
+  const std::vector<VariantResult> all = evaluate_study(s, {});
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_TRUE(all[0].ok()) << all[0].failure;
+}
+
+// A shard keeps the metric exactly, +∞ included; a study that does not ask writes no key.
+TEST(HuntingMetric, ShardsCarryItExactly) {
+  const Study s = load_study(write_study(example3_wagon(), "[ranking]\nmax_hunting_speed = \"900 km/h\"\n"));
+  for (double speed : {kInf, 0.0, 200.0 / 3.6}) {
+    std::ostringstream shard;
+    write_shard(shard, s, {}, {hunting(0, "base", speed)});
+    EXPECT_NE(shard.str().find("\"hunting_speed_m_s\""), std::string::npos);
+    const std::vector<VariantResult> back = read_shard(write_temp("hunting_shard.json", shard.str()), s);
+    ASSERT_EQ(back.size(), 1u);
+    ASSERT_TRUE(back[0].hunting_speed);
+    EXPECT_EQ(*back[0].hunting_speed, speed);  // exact: the shard writes round-trip numbers
+  }
+  std::ostringstream without;
+  write_shard(without, s, {}, {hunting(0, "base", std::nullopt)});
+  EXPECT_EQ(without.str().find("hunting_speed"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace railmodal::test
