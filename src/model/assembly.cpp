@@ -86,21 +86,21 @@ void check_wheelsets(const Vehicle& vehicle, const std::map<std::string, int>& i
   for (const Wheelset& w : vehicle.wheelsets) {
     const std::string who = "wheelset '" + w.body + "': ";
     const auto found = index.find(w.body);
-    if (found == index.end()) throw std::invalid_argument(who + "no body has that name");
-    if (!seen.insert(w.body).second) throw std::invalid_argument(who + "the body is listed as a wheelset twice");
+    if (found == index.end()) throw std::invalid_argument(who + "no body of that name");
+    if (!seen.insert(w.body).second) throw std::invalid_argument(who + "listed twice as a wheelset");
     if (!(w.spin_inertia >= 0.0) || !std::isfinite(w.spin_inertia))
       throw std::invalid_argument(who + "spin inertia must be non-negative and finite");
     const Body& body = vehicle.bodies[found->second];
     for (Motion m : {Motion::bounce, Motion::roll, Motion::pitch})
       if (!holds(body, m))
-        throw std::invalid_argument(who + "the body must hold its " + to_string(m) +
-                                    " (a wheelset's bounce, roll and pitch follow the rails)");
+        throw std::invalid_argument(who + "its " + to_string(m) +
+                                    " must be held (a wheelset's bounce, roll and pitch follow the rails)");
     if (body.longitudinal_free)
-      throw std::invalid_argument(who + "the body must hold its longitudinal motion (it rolls with the track)");
+      throw std::invalid_argument(who + "its longitudinal motion must be held (it rolls with the track)");
     for (Motion m : {Motion::lateral, Motion::yaw})
       if (holds(body, m))
-        throw std::invalid_argument(who + "the body must leave its " + to_string(m) +
-                                    " free (the wheel–rail contact acts on it)");
+        throw std::invalid_argument(who + "its lateral and yaw motions must be free (the wheel–rail contact acts on " +
+                                    "them), and its body holds its " + to_string(m));
   }
 }
 

@@ -189,26 +189,28 @@ TEST(WheelsetAssembly, WheelsetIsChecked) {
 
   Vehicle v = one_wheelset();
   v.wheelsets[0].body = "frame";
-  expect_refused(v, "wheelset 'frame': no body has that name");
+  expect_refused(v, "wheelset 'frame': no body of that name");
   v = one_wheelset();
   v.wheelsets.push_back(v.wheelsets[0]);
-  expect_refused(v, "wheelset 'ws': the body is listed as a wheelset twice");
+  expect_refused(v, "wheelset 'ws': listed twice as a wheelset");
   v = one_wheelset();
   v.wheelsets[0].spin_inertia = -1.0;
   expect_refused(v, "wheelset 'ws': spin inertia must be non-negative");
   for (Motion m : {Motion::bounce, Motion::roll, Motion::pitch}) {
     v = one_wheelset();
     v.bodies[0].held.erase(std::find(v.bodies[0].held.begin(), v.bodies[0].held.end(), m));
-    expect_refused(v, std::string("wheelset 'ws': the body must hold its ") + to_string(m));
+    expect_refused(v, std::string("wheelset 'ws': its ") + to_string(m) + " must be held");
   }
   for (Motion m : {Motion::lateral, Motion::yaw}) {
     v = one_wheelset();
     v.bodies[0].held.push_back(m);
-    expect_refused(v, std::string("wheelset 'ws': the body must leave its ") + to_string(m) + " free");
+    expect_refused(v, std::string("wheelset 'ws': its lateral and yaw motions must be free (the wheel–rail contact "
+                              "acts on them), and its body holds its ") +
+                          to_string(m));
   }
   v = one_wheelset();
   v.bodies[0].longitudinal_free = true;
-  expect_refused(v, "wheelset 'ws': the body must hold its longitudinal motion");
+  expect_refused(v, "wheelset 'ws': its longitudinal motion must be held");
 }
 
 // On wheelsets the suspension above them is the suspension on rigid track: the bogies' and the
