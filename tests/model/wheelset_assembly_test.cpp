@@ -344,3 +344,25 @@ TEST(WheelsetAnalyses, LateralTrackInputOnWheelsetsIsRefused) {
 
 }  // namespace
 }  // namespace railmodal::test
+
+namespace railmodal::test {
+namespace {
+
+// The bundled coach on wheelsets: the contact (helper "contact") resolves each wheelset's axle
+// load from the assembly's static loads, (32000 + 2 × 2615 + 4 × 1813) kg × g / 4 on each of four
+// equal axles, and computes its creep coefficients from Hertz (the file gives no creep). 1e-9
+// relative: the loads come from a Cholesky solve of the static equilibrium.
+TEST(WheelsetAssembly, BundledCoachAxleLoadsAreTheBenchmarksMasses) {
+  const Vehicle v = load_vehicle(data_file("manchester_benchmark_coach_wheelsets.toml"));
+  const ContactMatrices c = contact_matrices(assemble(v, DofSet::lateral));
+  ASSERT_EQ(c.wheelsets.size(), 4u);
+  const double axle = (32000.0 + 2 * 2615.0 + 4 * 1813.0) / 4.0 * v.gravity;
+  for (const ResolvedContact& w : c.wheelsets) {
+    EXPECT_NEAR(w.axle_load, axle, 1e-9 * axle) << w.body;
+    EXPECT_TRUE(w.ellipse) << w.body;
+    EXPECT_GT(w.creep.f22, 0.0) << w.body;
+  }
+}
+
+}  // namespace
+}  // namespace railmodal::test
