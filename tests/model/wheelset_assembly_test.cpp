@@ -342,12 +342,6 @@ TEST(WheelsetAnalyses, LateralTrackInputOnWheelsetsIsRefused) {
   }
 }
 
-}  // namespace
-}  // namespace railmodal::test
-
-namespace railmodal::test {
-namespace {
-
 // The bundled coach on wheelsets: the contact (helper "contact") resolves each wheelset's axle
 // load from the assembly's static loads, (32000 + 2 × 2615 + 4 × 1813) kg × g / 4 on each of four
 // equal axles, and computes its creep coefficients from Hertz (the file gives no creep). 1e-9
