@@ -83,7 +83,8 @@ class ExcitationSource {
   /// Harmonics evaluated: 1 … harmonic_count().
   virtual int harmonic_count() const = 0;
   /// The input at `speed` (m/s, > 0 and finite) for `harmonic` (1-based); throws
-  /// std::invalid_argument otherwise.
+  /// std::invalid_argument otherwise, and for a lateral input on a vehicle with wheelsets (it acts
+  /// through the wheel–rail contact, which only the stability analysis models).
   HarmonicLoad load(const LinearSystem& system, double speed, int harmonic) const;
 
   /// Why the source cannot act on `system`: the key of its scene table to blame ("body",

@@ -37,7 +37,11 @@ struct Dof {
 /// where a displacement of the track enters. An element on the ground that resists only
 /// longitudinal motion (draw gear to the rest of the train) is not one. A track displacement u (longitudinal, lateral,
 /// vertical, m) at `point` loads the degrees of freedom with
-/// Q = load_per_displacement · u + load_per_velocity · u̇.
+/// Q = load_per_displacement · u + load_per_velocity · u̇. An element standing on a wheelset
+/// (Vehicle::wheelsets) is one too, for the longitudinal and vertical displacement, which the
+/// wheelset's held motions pass on from the rail; its lateral column is zero, the rail's lateral
+/// displacement acting through the wheel–rail contact that M, C and K do not hold (a source that
+/// moves it is refused: see ExcitationSource::load).
 struct TrackInput {
   int element = 0;        ///< index into vehicle.elements
   Eigen::Vector3d point;  ///< m, vehicle frame (x: along the track, forward)

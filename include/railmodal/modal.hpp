@@ -168,6 +168,10 @@ struct ModalResult {
   double max_residual = 0.0;
   double orthonormality_error = 0.0;  ///< max |ΦᵀMΦ − I|
   SolverSummary solver;
+  /// What these modes leave out of the vehicle, one sentence each, written by every format: on
+  /// wheelsets, the wheel–rail contact terms; the series dampers (they carry no static force).
+  /// Empty for a vehicle without wheelsets or series dampers.
+  std::vector<std::string> notes;
 };
 
 /// Solve K φ = λ M φ densely. Massless degrees of freedom (zero row of M) are condensed out

@@ -28,7 +28,9 @@ namespace railmodal {
 /// "name", "stable", "repeated", "centre_of_oscillation", "residual", "shape": {label:
 /// value}}], "condensed", "max_residual", "orthonormality_error"}. JSON also holds "solver":
 /// {"name", and for ARPACK "shift", "factorisation", "requested", "subspace_size", "restarts",
-/// "operator_applications", "runs", "count_checked"}.
+/// "operator_applications", "runs", "count_checked"}. ModalResult::notes, when there are any,
+/// are "note: ..." lines under the solver line (table), "# note: ..." lines before the heading
+/// (csv) and "notes": [...] (json).
 void write_modes(std::ostream& out, const LinearSystem& system, const ModalResult& result,
                  OutputFormat format);
 
@@ -39,7 +41,7 @@ void write_modes(std::ostream& out, const LinearSystem& system, const ModalResul
 /// "eigenvalues": [[re, im]], "damped_frequency_hz", "damping_ratio", "natural_frequency_hz",
 /// "undamped_mode", "undamped_frequency_hz", "decay_rate_per_s", "residual", "shape": {label:
 /// [re, im]}}], "condensed", "first_order", "stable", "max_residual"}; absent quantities are
-/// null.
+/// null. The undamped result's notes (ModalResult::notes) are written as write_modes writes them.
 void write_damped_modes(std::ostream& out, const LinearSystem& system, const DampedModalResult& result,
                         OutputFormat format);
 /// The same for a model without a LinearSystem (a SparseSystem): `title` names it. Writes

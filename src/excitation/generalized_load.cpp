@@ -1,7 +1,9 @@
 // From wheel inputs and point forces to the generalised load on the degrees of freedom.
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
+#include "model/analysis_limits.hpp"
 #include "model/rigid_body.hpp"
 #include "railmodal/excitation.hpp"
 
@@ -11,7 +13,23 @@ HarmonicLoad ExcitationSource::load(const LinearSystem& system, double speed, in
   if (!(speed > 0.0) || !std::isfinite(speed))
     throw std::invalid_argument(kind() + ": the speed must be positive and finite");
   if (harmonic < 1) throw std::invalid_argument(kind() + ": harmonics count from 1");
-  return load_at(system, speed, harmonic);
+  HarmonicLoad load = load_at(system, speed, harmonic);
+  // On wheelsets the rail's lateral displacement acts through the wheel–rail contact, which M, C
+  // and K do not hold (an element on a wheelset has no lateral column): refused rather than
+  // dropped, whatever element the input was given to.
+  if (!system.vehicle.wheelsets.empty())
+    for (const WheelInput& w : load.wheels) {
+      if (w.amplitude(1) == 0.0) continue;
+      std::string where = "on a vehicle with wheelsets";
+      if (w.track_input >= 0 && w.track_input < static_cast<int>(system.track_inputs.size())) {
+        const Element& e = system.vehicle.elements[system.track_inputs[w.track_input].element];
+        if (model::stands_on_wheelset(system.vehicle, e)) where = "under wheelset '" + e.lower + "'";
+      }
+      throw std::invalid_argument(kind() + ": a lateral track input " + where +
+                                  " acts through the wheel–rail contact, which this analysis does not model; "
+                                  "`railmodal stability` models the contact");
+    }
+  return load;
 }
 
 namespace {

@@ -49,4 +49,62 @@ bool read_longitudinal_free(TableReader& t) {
   return true;
 }
 
+namespace {
+
+// `creep = { f11, f22, f23, f33 }`: Kalker's coefficients of one wheel, given directly.
+CreepCoefficients read_creep(TableReader& parent) {
+  TableReader t = parent.table("creep");
+  CreepCoefficients c;
+  c.f11 = t.positive("f11", Quantity::force);
+  c.f22 = t.positive("f22", Quantity::force);
+  // f23 and f33 may be zero: the spin terms are often left out of a hunting model (Wickens).
+  c.f23 = t.positive("f23", Quantity::moment, true);
+  c.f33 = t.positive("f33", Quantity::force_area, true);
+  t.finish();
+  return c;
+}
+
+// `hertz = { ... }`: what Hertz's theory needs to size the contact ellipse.
+HertzContactInput read_hertz(TableReader& parent) {
+  TableReader t = parent.table("hertz");
+  HertzContactInput h;
+  h.wheel_load = t.optional_positive("wheel_load", Quantity::force);
+  if (t.has("wheel_transverse_radius")) {
+    h.wheel_transverse_radius = t.quantity("wheel_transverse_radius", Quantity::length);
+    if (*h.wheel_transverse_radius == 0.0)
+      t.fail("wheel_transverse_radius",
+             "must not be zero: positive for a convex tread, negative for a concave (hollow) one; leave the key "
+             "out for a straight (conical) tread");
+  }
+  h.rail_head_radius = t.positive("rail_head_radius", Quantity::length);
+  h.youngs_modulus = t.optional_positive("youngs_modulus", Quantity::modulus).value_or(h.youngs_modulus);
+  h.poisson_ratio = t.optional_positive("poisson_ratio", Quantity::dimensionless, true).value_or(h.poisson_ratio);
+  if (!(h.poisson_ratio < 0.5)) t.fail("poisson_ratio", "must be below 0.5 (steel: 0.28 to 0.3)");
+  t.finish();
+  return h;
+}
+
+}  // namespace
+
+WheelRailContact read_contact(TableReader& t) {
+  WheelRailContact c;
+  c.rolling_radius = t.positive("rolling_radius", Quantity::length);
+  c.contact_half_spacing = t.positive("contact_half_spacing", Quantity::length);
+  c.conicity = t.positive("conicity", Quantity::dimensionless, true);
+  c.contact_angle_parameter = t.optional_positive("contact_angle_parameter", Quantity::dimensionless, true);
+  c.roll_parameter = t.optional_quantity("roll_parameter", Quantity::dimensionless);
+  if (t.has("creep") == t.has("hertz"))
+    t.fail("creep", t.has("creep") ? "give creep or hertz, not both"
+                                   : "missing: give the creep coefficients, creep = { f11 = \"…\", f22 = \"…\", "
+                                     "f23 = \"…\", f33 = \"…\" }, or the contact they follow from, hertz = { "
+                                     "rail_head_radius = \"0.3 m\" }");
+  if (t.has("creep"))
+    c.creep = read_creep(t);
+  else
+    c.hertz = read_hertz(t);
+  return c;
+}
+
+double read_spin_inertia(TableReader& t) { return t.positive("spin_inertia", Quantity::inertia, true); }
+
 }  // namespace railmodal::input

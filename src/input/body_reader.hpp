@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 
 #include "input/table_reader.hpp"
+#include "railmodal/vehicle.hpp"
 
 namespace railmodal::input {
 
@@ -18,5 +19,18 @@ Eigen::Vector3d read_inertia(TableReader& t, double mass);
 /// `free = ["longitudinal"]`: whether the body frees its longitudinal motion, the one motion
 /// held unless freed (false when absent).
 bool read_longitudinal_free(TableReader& t);
+
+/// The wheel–rail contact keys of a wheelset table (`[[wheelset]]` or a template's
+/// `[wheelset]`): rolling_radius, contact_half_spacing, conicity, the optional
+/// contact_angle_parameter and roll_parameter, and exactly one of `creep = {f11, f22, f23,
+/// f33}` and `hertz = {...}` (docs/input.md, "Wheelsets").
+WheelRailContact read_contact(TableReader& t);
+
+/// `spin_inertia`: the wheelset's moment of inertia about its axle (kg·m², ≥ 0; required, since
+/// it sets the gyroscopic terms).
+double read_spin_inertia(TableReader& t);
+
+/// The motions a wheelset body holds: bounce, roll and pitch follow the rails in the linear model.
+inline constexpr Motion kWheelsetHeld[] = {Motion::bounce, Motion::roll, Motion::pitch};
 
 }  // namespace railmodal::input

@@ -157,7 +157,10 @@ std::shared_ptr<const ExcitationSource> source(TableReader& t) {
 void read_scene_table(TableReader& root, const std::string& path, Scene& scene) {
   TableReader t = root.table("scene");
   scene.name = t.optional_string("name").value_or(std::filesystem::path(path).stem().string());
-  if (t.has("vehicle")) scene.vehicle_file = t.existing_file("vehicle");
+  if (t.has("vehicle")) {
+    scene.vehicle_file = t.existing_file("vehicle");
+    scene.name_places["scene.vehicle"] = t.place("vehicle");  // check_scene_fits may blame the vehicle
+  }
   const std::string dofs = t.optional_string("dofs").value_or("all");
   const auto set = dof_set_from_string(dofs);
   if (!set) t.fail("dofs", "must be vertical, lateral or all, not '" + dofs + "'");
@@ -284,8 +287,8 @@ Scene read_scene(const toml::value& document, const std::string& path) {
   if (root.has("speed") || !scene.simulation) read_speed_range(root.table("speed"), scene);
   if (root.has("source") || !scene.simulation)
     for (auto& t : root.tables("source")) {
-      // The keys ExcitationSource::misfit may blame, once the vehicle is known.
-      for (const char* key : {"body", "phases"})
+      // The keys ExcitationSource::misfit (and check_scene_fits) may blame, once the vehicle is known.
+      for (const char* key : {"kind", "body", "phases"})
         scene.name_places["source[" + std::to_string(scene.sources.size()) + "]." + key] = t.place(key);
       scene.sources.push_back(source(t));
       t.finish();

@@ -273,6 +273,28 @@ Eigen::Vector3d read_rotational_stiffness(TableReader& parent) {
   return k;
 }
 
+std::vector<SeriesDamper> read_series_dampers(TableReader& parent) {
+  std::vector<SeriesDamper> dampers;
+  if (!parent.has("series_dampers")) return dampers;
+  for (auto& t : parent.tables("series_dampers")) {
+    SeriesDamper d;
+    const std::string direction = t.string("direction");
+    if (direction == "longitudinal")
+      d.direction = Motion::longitudinal;
+    else if (direction == "lateral")
+      d.direction = Motion::lateral;
+    else if (direction == "vertical")
+      d.direction = Motion::bounce;
+    else
+      t.fail("direction", "unknown direction '" + direction + "' (longitudinal, lateral or vertical)");
+    d.damping = t.positive("damping", Quantity::damping);
+    d.stiffness = t.positive("stiffness", Quantity::stiffness);
+    t.finish();
+    dampers.push_back(d);
+  }
+  return dampers;
+}
+
 SwingHanger read_hanger(TableReader& parent) {
   TableReader t = parent.table("hanger");
   SwingHanger h;

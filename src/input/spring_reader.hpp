@@ -30,6 +30,10 @@ std::vector<SpringStage> read_longitudinal_stages(TableReader& parent, const std
 /// `rotational = { roll, pitch, yaw }` of an element (N·m/rad), zero when absent.
 Eigen::Vector3d read_rotational_stiffness(TableReader& parent);
 
+/// `series_dampers = [{ direction, damping, stiffness }, ...]` of an element: dampers with a
+/// spring in series (direction "longitudinal", "lateral" or "vertical"); empty when absent.
+std::vector<SeriesDamper> read_series_dampers(TableReader& parent);
+
 /// The `hanger = {length, inclination}` table of an element or a cradle.
 SwingHanger read_hanger(TableReader& parent);
 

@@ -1,7 +1,9 @@
 #include "input/templates.hpp"
 
 #include <cmath>
+#include <iterator>
 #include <optional>
+#include <string>
 
 #include "input/body_reader.hpp"
 #include "input/spring_reader.hpp"
@@ -14,6 +16,47 @@ void read_damping(TableReader& t, Element* e) {
   e->vertical_damping = t.optional_positive("vertical_damping", Quantity::damping, true).value_or(0.0);
   e->lateral_damping = t.optional_positive("lateral_damping", Quantity::damping, true).value_or(0.0);
   e->longitudinal_damping = t.optional_positive("longitudinal_damping", Quantity::damping, true).value_or(0.0);
+}
+
+// A template's [wheelset]: the same wheelset under every axle.
+struct AxleWheelset {
+  double mass = 0.0;
+  Eigen::Vector3d inertia = Eigen::Vector3d::Zero();  // roll, pitch (= spin), yaw
+  double spin_inertia = 0.0;
+  WheelRailContact contact;
+};
+
+std::optional<AxleWheelset> read_axle_wheelset(TableReader& root, double gravity) {
+  if (!root.has("wheelset")) return std::nullopt;
+  TableReader t = root.table("wheelset");
+  AxleWheelset w;
+  w.mass = read_mass(t, gravity);
+  w.spin_inertia = read_spin_inertia(t);
+  TableReader inertia = t.table("inertia");
+  if (inertia.has("pitch"))
+    inertia.fail("pitch", "a wheelset's pitch is its spin about the axle: give spin_inertia in [wheelset]");
+  const double roll = inertia.positive("roll", Quantity::inertia, true);
+  const double yaw = inertia.positive("yaw", Quantity::inertia, true);
+  inertia.finish();
+  w.inertia = {roll, w.spin_inertia, yaw};
+  w.contact = read_contact(t);
+  t.finish();
+  return w;
+}
+
+// One wheelset body under the axle at x, named "wheelset<n>" in the order the axles are made;
+// returns its name. Its reference point and CG are on the axle, in the axle plane.
+std::string add_wheelset(const AxleWheelset& w, double x, Vehicle* v) {
+  Body b;
+  b.name = "wheelset" + std::to_string(v->wheelsets.size() + 1);
+  b.mass = w.mass;
+  b.inertia = w.inertia;
+  b.centre_of_gravity = {x, 0.0, 0.0};
+  b.reference_point = b.centre_of_gravity;
+  b.held.assign(std::begin(kWheelsetHeld), std::end(kWheelsetHeld));
+  v->bodies.push_back(b);
+  v->wheelsets.push_back(Wheelset{b.name, w.spin_inertia, w.contact});
+  return b.name;
 }
 
 // [draw_gear]: a coupling at each end of the body, `spacing` apart at `height` above the axle
@@ -73,10 +116,20 @@ BogieFrame read_bogie_frame(TableReader& root, bool sprung, double gravity) {
 }
 
 // [secondary]: the cradle springs' lateral spacing, a swing hanger, and the anti-roll bar.
+// yaw_damper = {...}: a longitudinal damper with its end bushes (a series spring) each side,
+// between the body and the bogie frame; the pair resists their relative yaw.
+struct YawDamper {
+  double damping = 0.0;           // N·s/m, of one damper
+  double series_stiffness = 0.0;  // N/m, of its end bushes
+  double half_spacing = 0.0;      // lateral, from the centre line
+  std::optional<double> height;   // above the axle plane; none: the bolster plane
+};
+
 struct Secondary {
   double half_spacing = 0.0;  // b3
   std::optional<SwingHanger> hanger;
   double anti_roll_bar = 0.0;  // roll stiffness between body and each bogie (torsion bar), N·m/rad
+  std::optional<YawDamper> yaw_damper;
 };
 
 Secondary read_secondary(TableReader& sec) {
@@ -84,6 +137,15 @@ Secondary read_secondary(TableReader& sec) {
   s.half_spacing = sec.positive("spacing", Quantity::length) / 2.0;
   if (sec.has("hanger")) s.hanger = read_hanger(sec);
   s.anti_roll_bar = sec.optional_positive("anti_roll_bar", Quantity::rotational_stiffness, true).value_or(0.0);
+  if (sec.has("yaw_damper")) {
+    TableReader t = sec.table("yaw_damper");
+    YawDamper& d = s.yaw_damper.emplace();
+    d.damping = t.positive("damping", Quantity::damping);
+    d.series_stiffness = t.positive("series_stiffness", Quantity::stiffness);
+    d.half_spacing = t.positive("spacing", Quantity::length) / 2.0;
+    d.height = t.optional_quantity("height", Quantity::length);
+    t.finish();
+  }
   return s;
 }
 
@@ -111,13 +173,16 @@ Body bogie_body(const BogieEnd& end, const BogieFrame& f, const TableReader& pri
 
 // Primary springs: four axlebox locations (half wheelbase l2, half spacing b2), each carrying
 // `load`, a quarter of the bogie's share.
+// With wheelsets, each axle's springs stand on its wheelset instead of the track.
 void add_axlebox_springs(TableReader& pri, const BogieEnd& end, double l2, double b2, double load, bool triple,
-                         Vehicle* v) {
-  for (int axle : {+1, -1})
+                         const std::optional<AxleWheelset>& wheelset, Vehicle* v) {
+  for (int axle : {+1, -1}) {
+    const std::string lower = wheelset ? add_wheelset(*wheelset, end.x + axle * l2, v) : "";
     for (int side : {+1, -1}) {
       Element e;
       e.name = end.name + (axle > 0 ? " leading" : " trailing") + (side > 0 ? " left" : " right") + " axlebox";
       e.upper = end.name;
+      e.lower = lower;
       e.point = {end.x + axle * l2, side * b2, 0.0};
       e.vertical_stages = read_spring_stages(pri, "spring", load);
       if (e.vertical_stages.empty()) pri.fail("spring", "missing: the axlebox spring stages");
@@ -128,6 +193,7 @@ void add_axlebox_springs(TableReader& pri, const BogieEnd& end, double l2, doubl
       read_damping(pri, &e);
       v->elements.push_back(e);
     }
+  }
 }
 
 // Secondary (cradle) springs: one set each side, in the bolster plane, each carrying `load`.
@@ -160,6 +226,20 @@ void add_anti_roll_bar(const Secondary& s, const BogieEnd& end, double bolster, 
   v->elements.push_back(bar);
 }
 
+void add_yaw_dampers(const Secondary& s, const BogieEnd& end, double bolster, Vehicle* v) {
+  if (!s.yaw_damper) return;
+  const YawDamper& d = *s.yaw_damper;
+  for (int side : {+1, -1}) {
+    Element e;
+    e.name = end.name + (side > 0 ? " left" : " right") + " yaw damper";
+    e.lower = end.lower;
+    e.upper = "body";
+    e.point = {end.x, side * d.half_spacing, d.height.value_or(bolster)};
+    e.series_dampers = {SeriesDamper{Motion::longitudinal, d.damping, d.series_stiffness}};
+    v->elements.push_back(e);
+  }
+}
+
 // A bogie wagon's body or bogie frames that free their longitudinal motion need something
 // that holds them longitudinally, or the freed motion is a rigid-body mode.
 void check_longitudinal_support(TableReader& root, const Body& body, const BogieFrame& frame, const TableReader& sec,
@@ -189,10 +269,18 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   b.finish();
   body.centre_of_gravity = {offset, 0.0, l};
   body.reference_point = {offset, 0.0, 0.0};  // O: in the axle plane below the CG (§2.2)
-  body.held = {Motion::lateral, Motion::yaw};  // axlebox guides
+  const std::optional<AxleWheelset> wheelset = read_axle_wheelset(root, v->gravity);
+  // The axlebox guides hold the body laterally and in yaw on the track; on wheelsets, the
+  // springs' lateral and longitudinal stages do.
+  if (!wheelset) body.held = {Motion::lateral, Motion::yaw};
   v->bodies.push_back(body);
 
   TableReader s = root.table("suspension");
+  if (wheelset)
+    for (const char* key : {"lateral", "longitudinal"})
+      if (!s.has(key))
+        s.fail(key, std::string("missing: on wheelsets the body is guided by the springs' ") + key + " stages, e.g. " +
+                        key + " = { stiffness = \"3000 kN/m\" }");
   const double a1 = s.positive("wheelbase", Quantity::length) / 2.0;
   const double b1 = s.positive("spring_spacing", Quantity::length) / 2.0;
   if (std::abs(offset) >= a1) root.fail("body", "cg_offset puts the CG outside the wheelbase");
@@ -205,14 +293,20 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
     const double load = weight * (a1 + axle * offset) / (2.0 * a1) / 2.0;
     const std::string own = axle > 0 ? "front_spring" : "rear_spring";
     const std::string key = s.has(own) ? own : "spring";
+    const std::string lower = wheelset ? add_wheelset(*wheelset, axle * a1, v) : "";
     for (int side : {+1, -1}) {
       Element e;
       e.name = std::string(axle > 0 ? "front" : "rear") + (side > 0 ? " left" : " right") + " spring";
       e.upper = "body";
+      e.lower = lower;
       e.point = {axle * a1, side * b1, 0.0};
       // Re-read for each spring: the stage tables are shared, their loads are not.
       e.vertical_stages = read_spring_stages(s, key, load);
       if (e.vertical_stages.empty()) s.fail(key, "missing: the springs' stages, e.g. spring = [{ kind = \"leaf\", stiffness = \"910 kgf/cm\" }]");
+      if (wheelset) {
+        e.lateral_stages = read_spring_stages(s, "lateral", load);
+        e.longitudinal_stages = read_longitudinal_stages(s, "longitudinal", load);
+      }
       read_damping(s, &e);
       v->elements.push_back(e);
     }
@@ -257,6 +351,16 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
     root.fail("primary", "a single-suspension wagon has no primary springs (its bogie frames are unsprung)");
   }
   check_longitudinal_support(root, body, frame, sec, pri);
+  if (secondary.yaw_damper && !sprung_bogies)
+    sec.fail("yaw_damper", "acts between the body and a bogie frame; a single-suspension wagon's frames are unsprung");
+  const std::optional<AxleWheelset> wheelset = read_axle_wheelset(root, v->gravity);
+  if (wheelset && !sprung_bogies)
+    root.fail("wheelset", "stands under primary (axlebox) springs; a single-suspension wagon has none");
+  if (wheelset)
+    for (const char* key : {"lateral", "longitudinal"})
+      if (!pri->has(key))
+        pri->fail(key, std::string("missing: on wheelsets the bogie frame is guided by the axlebox springs' ") + key +
+                           " stages, e.g. " + key + " = { stiffness = \"3000 kN/m\" }");
 
   const double g = v->gravity;
   for (int k = 0; k < 2; ++k) {
@@ -265,10 +369,11 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
       v->bodies.push_back(bogie_body(end, frame, *pri));
       end.lower = end.name;
       add_axlebox_springs(*pri, end, frame.half_wheelbase, b2, (body.mass / 2.0 + frame.mass) * g / 4.0,
-                          suspension == "triple", v);
+                          suspension == "triple", wheelset, v);
     }
     add_cradle_springs(sec, secondary, end, frame.bolster, body.mass * g / 4.0, v);
     add_anti_roll_bar(secondary, end, frame.bolster, v);
+    add_yaw_dampers(secondary, end, frame.bolster, v);
   }
   add_draw_gear(root, v->bodies.front(), v);
   sec.finish();

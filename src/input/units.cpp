@@ -145,6 +145,8 @@ Dimension dimension_of(Quantity q) {
     case Quantity::dimensionless: return dim(0, 0, 0);
     case Quantity::time: return dim(0, 0, 1);
     case Quantity::angular_speed: return dim(0, 0, -1, 1);
+    case Quantity::moment: return dim(1, 2, -2);
+    case Quantity::force_area: return dim(1, 3, -2);
   }
   return dim(0, 0, 0);
 }
@@ -166,6 +168,8 @@ const char* name_of(Quantity q) {
     case Quantity::dimensionless: return "a plain number";
     case Quantity::time: return "a time";
     case Quantity::angular_speed: return "an angular speed";
+    case Quantity::moment: return "a moment (force·length)";
+    case Quantity::force_area: return "a force·length²";
   }
   return "a quantity";
 }
@@ -187,6 +191,8 @@ const char* example_of(Quantity q) {
     case Quantity::dimensionless: return "a number";
     case Quantity::time: return "\"2 ms\" or 0.002 (s)";
     case Quantity::angular_speed: return "\"0.1 rad/s\" or 0.1 (rad/s)";
+    case Quantity::moment: return "\"2.1 kN*m\" or 2100 (N·m)";
+    case Quantity::force_area: return "\"120 N*m^2\" or 120 (N·m²)";
   }
   return "";
 }
@@ -203,7 +209,7 @@ std::string describe(const Dimension& d) {
       {dim(0, 0, 0), "a plain number"},  {dim(1, -1, 0), "mass/length"},
       {dim(0, 1, 0, 0), "length"},       {dim(-1, 1, 0), "length/mass"},
       {dim(1, 1, 0), "mass·length"},     {dim(1, 2, -2), "force·length (moment)"},
-      {dim(1, 2, -2, -1), "moment/angle"},
+      {dim(1, 2, -2, -1), "moment/angle"}, {dim(1, 3, -2), "force·length²"},
   };
   for (const auto& [dimension, name] : names)
     if (dimension == d) return name;

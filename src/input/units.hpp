@@ -17,7 +17,9 @@ struct Dimension {
 /// and example used in error messages.
 enum class Quantity {
   length, mass, force, stiffness, flexibility, inertia, angle, acceleration,
-  damping, modulus, speed, rotational_stiffness, dimensionless, time, angular_speed
+  damping, modulus, speed, rotational_stiffness, dimensionless, time, angular_speed,
+  moment,       ///< force·length, N·m (a creep coefficient f23)
+  force_area    ///< force·length², N·m² (the spin creep coefficient f33)
 };
 Dimension dimension_of(Quantity quantity);
 const char* name_of(Quantity quantity);     ///< "stiffness (force/length)"

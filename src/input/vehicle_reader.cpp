@@ -18,9 +18,41 @@ namespace {
 
 Eigen::Vector3d to_vector(const std::array<double, 3>& p) { return {p[0], p[1], p[2]}; }
 
+// `[[wheelset]]`: a body on the rails. Its bounce, roll and pitch are held (they follow the
+// rails in the linear model) and its longitudinal motion stays held; its lateral and yaw
+// motions are what the contact acts on, so they must be free.
+void read_wheelsets(TableReader& root, std::vector<TableReader>& body_tables, Vehicle* v) {
+  if (!root.has("wheelset")) return;
+  std::set<std::string> taken;
+  for (auto& t : root.tables("wheelset")) {
+    Wheelset w;
+    w.body = t.string("body");
+    const auto found =
+        std::find_if(v->bodies.begin(), v->bodies.end(), [&](const Body& b) { return b.name == w.body; });
+    if (found == v->bodies.end()) t.fail("body", "no body is named '" + w.body + "'");
+    if (!taken.insert(w.body).second) t.fail("body", "body '" + w.body + "' is already a wheelset");
+    Body& body = *found;
+    TableReader& bt = body_tables[static_cast<size_t>(found - v->bodies.begin())];
+    if (body.longitudinal_free)
+      bt.fail("free", "frees the longitudinal motion of '" + body.name +
+                          "', a wheelset: a wheelset's longitudinal motion is held (it rolls with the track)");
+    for (Motion m : {Motion::lateral, Motion::yaw})
+      if (std::find(body.held.begin(), body.held.end(), m) != body.held.end())
+        bt.fail("held", std::string("holds the ") + to_string(m) + " motion of '" + body.name +
+                            "', a wheelset: its lateral and yaw motions are what the wheel–rail contact acts on");
+    for (Motion m : kWheelsetHeld)
+      if (std::find(body.held.begin(), body.held.end(), m) == body.held.end()) body.held.push_back(m);
+    w.spin_inertia = read_spin_inertia(t);
+    w.contact = read_contact(t);
+    t.finish();
+    v->wheelsets.push_back(w);
+  }
+}
+
 void read_general(TableReader& root, Vehicle* v) {
   std::set<std::string> names;
-  for (auto& t : root.tables("body")) {
+  std::vector<TableReader> body_tables = root.tables("body");
+  for (auto& t : body_tables) {
     Body b;
     b.name = t.string("name");
     if (b.name.empty() || b.name == "track") t.fail("name", "must be a non-empty name other than 'track'");
@@ -41,6 +73,7 @@ void read_general(TableReader& root, Vehicle* v) {
     t.finish();
     v->bodies.push_back(b);
   }
+  read_wheelsets(root, body_tables, v);
   if (!root.has("element")) return;
   for (auto& t : root.tables("element")) {
     Element e;
@@ -67,6 +100,7 @@ void read_general(TableReader& root, Vehicle* v) {
     e.vertical_damping = t.optional_positive("vertical_damping", Quantity::damping, true).value_or(0.0);
     e.lateral_damping = t.optional_positive("lateral_damping", Quantity::damping, true).value_or(0.0);
     e.longitudinal_damping = t.optional_positive("longitudinal_damping", Quantity::damping, true).value_or(0.0);
+    e.series_dampers = read_series_dampers(t);
     t.finish();
     v->elements.push_back(e);
   }

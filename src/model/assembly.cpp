@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "model/analysis_limits.hpp"
 #include "model/element_stiffness.hpp"
 #include "model/rigid_body.hpp"
 #include "railmodal/errors.hpp"
@@ -76,6 +77,33 @@ bool in_set(Motion motion, DofSet set) {
   return true;
 }
 
+bool holds(const Body& body, Motion m) { return std::find(body.held.begin(), body.held.end(), m) != body.held.end(); }
+
+// A wheelset's bounce, roll and pitch follow the rails and it rolls with the track (longitudinal
+// held); its lateral and yaw motions are what the wheel–rail contact acts on.
+void check_wheelsets(const Vehicle& vehicle, const std::map<std::string, int>& index) {
+  std::set<std::string> seen;
+  for (const Wheelset& w : vehicle.wheelsets) {
+    const std::string who = "wheelset '" + w.body + "': ";
+    const auto found = index.find(w.body);
+    if (found == index.end()) throw std::invalid_argument(who + "no body of that name");
+    if (!seen.insert(w.body).second) throw std::invalid_argument(who + "listed twice as a wheelset");
+    if (!(w.spin_inertia >= 0.0) || !std::isfinite(w.spin_inertia))
+      throw std::invalid_argument(who + "spin inertia must be non-negative and finite");
+    const Body& body = vehicle.bodies[found->second];
+    for (Motion m : {Motion::bounce, Motion::roll, Motion::pitch})
+      if (!holds(body, m))
+        throw std::invalid_argument(who + "its " + to_string(m) +
+                                    " must be held (a wheelset's bounce, roll and pitch follow the rails)");
+    if (body.longitudinal_free)
+      throw std::invalid_argument(who + "its longitudinal motion must be held (it rolls with the track)");
+    for (Motion m : {Motion::lateral, Motion::yaw})
+      if (holds(body, m))
+        throw std::invalid_argument(who + "its lateral and yaw motions must be free (the wheel–rail contact acts on " +
+                                    "them), and its body holds its " + to_string(m));
+  }
+}
+
 void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
   if (vehicle.bodies.empty()) throw std::invalid_argument("the vehicle has no bodies");
   if (!(vehicle.gravity > 0.0) || !std::isfinite(vehicle.gravity))
@@ -114,7 +142,16 @@ void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
     if (e.hanger && (!(e.hanger->length > 0.0) || std::abs(e.hanger->inclination) >= kHalfPi))
       throw std::invalid_argument("element '" + e.name +
                                   "': hanger length must be positive, inclination below 90°");
+    for (const SeriesDamper& d : e.series_dampers) {
+      if (d.direction != Motion::longitudinal && d.direction != Motion::lateral && d.direction != Motion::bounce)
+        throw std::invalid_argument("element '" + e.name + "': a series damper acts longitudinally, laterally or " +
+                                    "vertically (bounce), not in " + to_string(d.direction));
+      if (!(d.damping > 0.0) || !std::isfinite(d.damping) || !(d.stiffness > 0.0) || !std::isfinite(d.stiffness))
+        throw std::invalid_argument("element '" + e.name +
+                                    "': a series damper's damping and series stiffness must be positive and finite");
+    }
   }
+  check_wheelsets(vehicle, *index);
 }
 
 // Full coordinates: six motions per body, body-major.
@@ -348,16 +385,21 @@ bool pulls_only_along(const Element& e) {
 
 // Where the track's displacement enters: the final stiffness of each track element
 // (hangers included) and its damping, seen from the kept coordinates of its upper body.
+// An element standing on a wheelset takes the rail's longitudinal and vertical displacement as
+// a track element does (the wheelset's held motions follow the rail); the lateral displacement
+// reaches it through the contact, which M, C and K do not hold, so that column stays zero.
 std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const std::vector<ElementMap>& maps,
                                      const std::vector<double>& loads, const std::vector<int>& keep) {
   const int n = static_cast<int>(keep.size());
   std::vector<TrackInput> inputs;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
-    if (!e.lower.empty() || pulls_only_along(e)) continue;
-    const Eigen::Vector3d stiffness(series_stiffness(e.longitudinal_stages), model::lateral_stiffness(e, loads[k]),
+    const bool wheelset = model::stands_on_wheelset(vehicle, e);
+    if ((!e.lower.empty() && !wheelset) || pulls_only_along(e)) continue;
+    const Eigen::Vector3d stiffness(series_stiffness(e.longitudinal_stages),
+                                    wheelset ? 0.0 : model::lateral_stiffness(e, loads[k]),
                                     series_stiffness(e.vertical_stages));
-    const Eigen::Vector3d damping(e.longitudinal_damping, e.lateral_damping, e.vertical_damping);
+    const Eigen::Vector3d damping(e.longitudinal_damping, wheelset ? 0.0 : e.lateral_damping, e.vertical_damping);
     TrackInput input;
     input.element = static_cast<int>(k);
     input.point = e.point;
@@ -374,6 +416,32 @@ std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const std::vector<E
     inputs.push_back(std::move(input));
   }
   return inputs;
+}
+
+// The stretch of each series damper along its direction, per kept coordinate, from the same
+// point maps as add_element; a damper whose stretch no kept motion changes (a lateral damper
+// among the vertical motions) is left out.
+std::vector<SeriesDamperRow> series_damper_rows(const Vehicle& vehicle, const std::vector<ElementMap>& maps,
+                                                const std::vector<int>& keep) {
+  const int n = static_cast<int>(keep.size());
+  std::vector<SeriesDamperRow> rows;
+  for (size_t k = 0; k < vehicle.elements.size(); ++k)
+    for (const SeriesDamper& d : vehicle.elements[k].series_dampers) {
+      const int axis = d.direction == Motion::longitudinal ? 0 : d.direction == Motion::lateral ? 1 : 2;
+      SeriesDamperRow row;
+      row.element = static_cast<int>(k);
+      row.direction = d.direction;
+      row.damping = d.damping;
+      row.stiffness = d.stiffness;
+      row.stretch = Eigen::RowVectorXd::Zero(n);
+      for (int i = 0; i < n; ++i) {
+        const int body = keep[i] / kMotionsPerBody, motion = keep[i] % kMotionsPerBody;
+        if (body == maps[k].upper) row.stretch(i) += maps[k].up(axis, motion);
+        if (body == maps[k].lower) row.stretch(i) -= maps[k].low(axis, motion);
+      }
+      if (!row.stretch.isZero(0.0)) rows.push_back(std::move(row));
+    }
+  return rows;
 }
 
 }  // namespace
@@ -403,6 +471,7 @@ LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
   system.element_loads = loads;
   system.element_vertical_map = element_vertical_map(full.maps, keep);
   system.track_inputs = track_inputs(vehicle, full.maps, loads, keep);
+  system.series_dampers = series_damper_rows(vehicle, full.maps, keep);
   return system;
 }
 

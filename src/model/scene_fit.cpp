@@ -2,6 +2,10 @@
 // or a body the vehicle lacks is the scene file's error, at the key that names it.
 #include "railmodal/scene.hpp"
 
+#include <stdexcept>
+
+#include "model/analysis_limits.hpp"
+
 namespace railmodal {
 namespace {
 
@@ -41,11 +45,27 @@ void check_scene_fits(const Scene& scene, const LinearSystem& system) {
       check_dof(scene, system, initial[i].dof, key, key);
     }
   }
-  for (size_t i = 0; i < scene.sources.size(); ++i)
+  for (size_t i = 0; i < scene.sources.size(); ++i) {
     if (const auto misfit = scene.sources[i]->misfit(system)) {
       const std::string key = "source[" + std::to_string(i) + "]." + misfit->key;
       fail_at(scene, key, key, misfit->reason);
     }
+    // A lateral input under a wheelset is refused by the source's load (ExcitationSource::load):
+    // asked here once, so that the scene's error names the source and its line.
+    if (!system.vehicle.wheelsets.empty()) try {
+        (void)scene.sources[i]->load(system, scene.sources[i]->wavelength(), 1);
+      } catch (const std::invalid_argument& e) {
+        const std::string key = "source[" + std::to_string(i) + "].kind";
+        fail_at(scene, key, key, e.what());
+      }
+  }
+  // The scene's analyses (critical speeds, simulation) stand on M, C and K, which a series
+  // damper is not in: the scene's vehicle is refused where the scene names it.
+  try {
+    model::refuse_series_dampers(system, "critical speeds and simulation");
+  } catch (const std::invalid_argument& e) {
+    fail_at(scene, "scene.vehicle", "scene.vehicle", e.what());
+  }
 }
 
 }  // namespace railmodal

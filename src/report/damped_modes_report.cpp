@@ -62,7 +62,9 @@ void write_table(std::ostream& out, const LinearSystem& system, const DampedModa
     for (const auto& c : r.first_order) out << " " << c;
     out << ")";
   }
-  out << "\n\n";
+  out << "\n";
+  for (const auto& note : r.undamped.notes) out << "note: " << note << "\n";  // none for the book's wagons
+  out << "\n";
   out << std::left << std::setw(4) << "#" << std::setw(34) << "mode" << std::right << std::setw(10) << "f_d [Hz]"
       << std::setw(10) << "ζ" /* 2 bytes, 1 column */ << std::setw(10) << "f_n [Hz]" << std::setw(10) << "f_0 [Hz]" << "  " << std::left
       << std::setw(10) << "stability" << "remark\n";
@@ -86,6 +88,7 @@ void write_table(std::ostream& out, const LinearSystem& system, const DampedModa
 
 void write_csv(std::ostream& out, const DampedModalResult& r) {
   using report::csv_heading;
+  for (const auto& note : r.undamped.notes) out << "# note: " << note << "\n";
   out << "index,name,kind,stable," << csv_heading("damped_frequency", "Hz") << ",damping_ratio,"
       << csv_heading("natural_frequency", "Hz") << ",undamped_mode," << csv_heading("undamped_frequency", "Hz") << ","
       << csv_heading("decay_rate", "1/s");
@@ -143,6 +146,7 @@ void write_json(std::ostream& out, const LinearSystem& system, const DampedModal
   doc["first_order"] = r.first_order;
   doc["stable"] = r.stable;
   doc["max_residual"] = r.max_residual;
+  if (!r.undamped.notes.empty()) doc["notes"] = r.undamped.notes;  // absent for the book's wagons
   out << doc.dump(2) << "\n";
 }
 

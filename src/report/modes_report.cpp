@@ -75,6 +75,7 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
     out << ")";
   }
   out << "\n" << solver_line(r) << "\n";
+  for (const auto& note : r.notes) out << "note: " << note << "\n";
   out << std::left << std::setw(4) << "#" << std::setw(34) << "mode" << std::right << std::setw(11)
       << "f [Hz]" << std::setw(11) << "T [s]" << std::setw(12) << "ω [rad/s]" << "  "
       << "centre of oscillation\n";
@@ -131,6 +132,7 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
 }
 
 void write_csv(std::ostream& out, const ModalResult& r) {
+  for (const auto& note : r.notes) out << "# note: " << note << "\n";  // absent for the book's wagons
   out << "index,name,kind," << csv_heading("frequency", "Hz") << "," << csv_heading("period", "s") << ","
       << csv_heading("omega", "rad/s") << "," << csv_heading("divergence_rate", "1/s") << ",centre_of_oscillation";
   for (const auto& d : r.dofs) out << "," << csv_field(csv_heading(d.label, shape_unit(d)));
@@ -198,6 +200,7 @@ void write_json(std::ostream& out, const std::string& title, const ModalResult& 
     solver["count_checked"] = r.solver.count_checked;
   }
   doc["solver"] = solver;
+  if (!r.notes.empty()) doc["notes"] = r.notes;  // absent for the book's wagons: their files stay as they were
   out << doc.dump(2) << "\n";
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "model/analysis_limits.hpp"
 #include "railmodal/response.hpp"
 #include "require_valid.hpp"
 #include "response/friction_damping.hpp"
@@ -237,6 +238,7 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
                                                 const std::vector<const ExcitationSource*>& sources,
                                                 const CriticalSpeedOptions& options, AnalysisSummary* summary) {
   require_valid(options, "critical speeds: ");
+  model::refuse_series_dampers(system, "critical speeds");
   for (const OutputRequest& o : options.outputs)
     if (o.dof >= system.size())
       throw std::invalid_argument("critical speeds: output DOF " + std::to_string(o.dof) + " is out of range (" +

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/analysis_limits.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/response.hpp"
 #include "response/modal_checks.hpp"
@@ -85,6 +86,7 @@ bool unbounded_at(const HarmonicResponse& response, const ModalResult& modes, in
 
 HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult& modes, const Eigen::VectorXcd& load,
                                    double frequency_hz, double source_load_norm) {
+  model::refuse_series_dampers(system, "harmonic response");
   check_sizes(system, modes, load, frequency_hz);
   const double source_load = std::max(source_load_norm, load.norm());
   HarmonicResponse out;
@@ -123,6 +125,7 @@ HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult
 HarmonicResponse modal_harmonic_response(const LinearSystem& system, const ModalResult& modes,
                                          const Eigen::VectorXcd& load, double frequency_hz, int mode_count,
                                          double source_load_norm) {
+  model::refuse_series_dampers(system, "harmonic response");
   check_sizes(system, modes, load, frequency_hz);
   const double source_load = std::max(source_load_norm, load.norm());  // as harmonic_response
   HarmonicResponse out;

@@ -16,6 +16,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "model/analysis_limits.hpp"
 #include "railmodal/response.hpp"
 #include "response/modal_checks.hpp"
 #include "response/state_space_modes.hpp"
@@ -556,6 +557,7 @@ std::vector<AmplitudeCurve> amplitude_curves(const LinearSystem& system, const M
                                              const std::vector<OutputRequest>& outputs, const SpeedGrid& speeds,
                                              double friction_reference_amplitude, AnalysisSummary* summary) {
   const char* method = "";
+  model::refuse_series_dampers(system, "speed sweep");
   if (!summary)  // peak refinement sweeps one speed at a time: no clock, no strings
     return sweep_curves(system, modes, source, source_index, outputs, speeds, friction_reference_amplitude, &method);
   *summary = AnalysisSummary{};

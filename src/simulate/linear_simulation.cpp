@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include "model/analysis_limits.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/simulation.hpp"
 #include "require_valid.hpp"
@@ -277,6 +278,7 @@ TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const 
 TimeHistory simulate_linear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                             const SimulationOptions& options, HistorySink& sink) {
   const int n = system.size();
+  model::refuse_series_dampers(system, "simulation");
   if (n == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
   require_valid(options, "simulation: ");
   if (options.duration / options.time_step > 1e8)

@@ -16,6 +16,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "model/analysis_limits.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/simulation.hpp"
 #include "require_valid.hpp"
@@ -648,6 +649,7 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                                const SimulationOptions& options, const NonlinearEffects& effects, HistorySink& sink) {
   const int n = system.size();
+  model::refuse_series_dampers(system, "simulation");
   if (n == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
   require_valid(options, "simulation: ");
   if (options.duration / options.time_step > 1e8)

@@ -27,6 +27,7 @@
 // massless DOFs that the coordinates above remove exactly. The w states have other units,
 // so the matrix is balanced by powers of two (Parlett–Reinsch, as LAPACK's dgebal) before the
 // solve: exact in floating point, a no-op on the already balanced mode blocks.
+#include "model/analysis_limits.hpp"
 #include "railmodal/damped_modal.hpp"
 
 #include <Eigen/Dense>
@@ -512,6 +513,7 @@ void order_modes(std::vector<DampedMode>& modes) {
 
 DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedModalOptions& options) {
   require_valid(options, "DampedModalOptions: ");
+  model::refuse_series_dampers(system, "damped modes");
   const int n = system.size();
   Eigen::MatrixXd C = system.damping;
   if (C.size() == 0) C = Eigen::MatrixXd::Zero(n, n);

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "model/analysis_limits.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/modal.hpp"
 #include "require_valid.hpp"
@@ -258,6 +259,7 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
   }
   clock.lap("classify and check");
   summarise(&result, options, std::move(timing.stages));
+  result.notes = model::undamped_mode_notes(system);
   return result;
 }
 

@@ -185,13 +185,19 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
     d.name = family + "s " + leading.word + " (repeated)";
     return d;
   }
-  // A twin body (bogie1/bogie2) sharing the energy: name the pair and their phase.
+  // Twin bodies (bogie1/bogie2, wheelset1…wheelset4) sharing the energy: name the family and
+  // their phase, "in phase" when every twin that shares it moves with the leading body. With
+  // more than two twins the test is over all of them, not the leading body and the first other:
+  // which of four nearly equal wheelsets leads changes with a 1 % change of any parameter.
+  bool shared = false, in_phase = true;
+  const int m = static_cast<int>(leading.key);
   for (size_t b = 0; b < bodies.size() && has_twin; ++b) {
     if (static_cast<int>(b) == lead || family_of(bodies[b].name) != family || energy[b].total < 0.5 * e.total) continue;
-    const int m = static_cast<int>(leading.key);
-    const double a = e.motion(m), other = energy[b].motion(m);
-    const std::string phase = a * other >= 0.0 ? "in phase" : "antiphase";
-    d.name = family + "s " + leading.word + ", " + phase;
+    shared = true;
+    in_phase = in_phase && e.motion(m) * energy[b].motion(m) >= 0.0;
+  }
+  if (shared) {
+    d.name = family + "s " + leading.word + ", " + (in_phase ? "in phase" : "antiphase");
     return d;
   }
   d.name = body.name + " " + leading.word;

@@ -101,7 +101,15 @@ int run_damped(const ModesOptions& o, bool matrices, OutputFormat format, std::o
       return kInput;
     }
   }
-  write_damped_modes(out, system, solve_damped_modes(system), format);
+  DampedModalResult result;
+  try {
+    result = solve_damped_modes(system);
+  } catch (const std::invalid_argument& e) {
+    // The default options are valid: what is refused is the vehicle (a series damper).
+    if (matrices) throw;
+    throw InputError(o.file, 0, 0, e.what());
+  }
+  write_damped_modes(out, system, result, format);
   return kSuccess;
 }
 

@@ -1,0 +1,26 @@
+// What the analyses built on M, C and K cannot represent, refused where each one starts rather
+// than dropped: a damper with a spring in series adds first-order states that only the hunting-
+// stability analysis carries (docs/stability.md, "What `modes` and `critical-speed` do on a
+// vehicle with wheelsets").
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "railmodal/linear_system.hpp"
+
+namespace railmodal::model {
+
+/// Throws std::invalid_argument("<analysis>: element '<name>' has a series damper, which only
+/// `railmodal stability` represents") for the first of the system's series_dampers rows (the
+/// dampers some kept motion stretches).
+void refuse_series_dampers(const LinearSystem& system, const std::string& analysis);
+
+/// What the undamped modes of the system leave out, one sentence each (ModalResult::notes):
+/// the wheel–rail contact of its wheelsets, its series dampers; empty for neither.
+std::vector<std::string> undamped_mode_notes(const LinearSystem& system);
+
+/// Whether the element stands on a wheelset of the vehicle (its lower body is one).
+bool stands_on_wheelset(const Vehicle& vehicle, const Element& element);
+
+}  // namespace railmodal::model
