@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "railmodal/errors.hpp"
 #include "stability/creep_saturation.hpp"
@@ -24,11 +23,9 @@ WheelsetContact locate(const LinearSystem& system, const Wheelset& w, const Reso
     if (d.body < 0 || system.vehicle.bodies[d.body].name != w.body) continue;
     if (d.motion == Motion::lateral) c.lateral = i;
     if (d.motion == Motion::yaw) c.yaw = i;
-    if (d.motion == Motion::roll || d.motion == Motion::bounce || d.motion == Motion::pitch)
-      throw std::invalid_argument("solve_nonlinear_hunting: wheelset '" + w.body +
-                                  "': its bounce, roll and pitch must be held");
   }
-  // contact_matrices has already checked that both are free.
+  // contact_matrices has already checked that both are free and the wheelset's bounce, roll and
+  // pitch held.
   const Body& b = *std::find_if(system.vehicle.bodies.begin(), system.vehicle.bodies.end(),
                                 [&](const Body& body) { return body.name == w.body; });
   c.lever = b.centre_of_gravity.x() - b.reference_point.x();

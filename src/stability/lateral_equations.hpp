@@ -24,7 +24,7 @@ struct WheelsetContact {
   model::WheelsetGeometry geometry;
   CreepCoefficients creep;
   double axle_load = 0.0;       ///< W, N: the gravitational stiffness W·ε/l0
-  double gyroscopic = 0.0;      ///< I_y·σ/(r0·l0), kg·m/rad…: the gyroscopic coupling per unit speed
+  double gyroscopic = 0.0;      ///< g = I_y·σ/(r0·l0), kg: the gyroscopic coupling per unit speed
   double friction_limit = 0.0;  ///< μN per wheel, N
 };
 
