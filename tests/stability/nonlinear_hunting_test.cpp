@@ -116,6 +116,31 @@ TEST(NonlinearHunting, SaturationAndFlangeVanishAtSmallAmplitude) {
   EXPECT_GT(departure, 0.0);  // but the law is not the linear one
 }
 
+TEST(NonlinearHunting, CentredSpinCancelsAtRestButTakesAdhesion) {
+  // With δ0 = 0.05 rad the wheels spin at ∓δ0/r0 when centred: equal and opposite forces
+  // (f23·δ0/r0 ≈ 1.1 kN each, against μN = 20 kN), so the centred wheelset stays at rest; but
+  // each wheel's creep forces saturate sooner: a small lateral force along the spin force meets
+  // the cubic's slope at u0 = 1.1/20, 1 − 2u0/3 + u0²/9, so it is smaller than the linear law's
+  // by about 2u0/3 ≈ 3.6% (without δ0 it is within 1e-4, SaturationAndFlangeVanishAtSmallAmplitude).
+  const LinearSystem s = assemble(wheelset_on_springs(), DofSet::lateral);
+  NonlinearHuntingOptions o;
+  o.wheel_load = 50e3;
+  o.contact_angle = 0.05;
+  const stability::LateralEquations with_spin(s, o);
+  Eigen::VectorXd dx;
+  with_spin.derivative(40.0, Eigen::VectorXd::Zero(with_spin.size()), &dx);
+  EXPECT_EQ(dx.norm(), 0.0);  // the two wheels' terms are exact negatives of each other
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(with_spin.size());
+  x[s.index_of("wheelset.yaw")] = 1e-7;  // a yaw: lateral creepage, resisted by f22 alone
+  with_spin.derivative(40.0, x, &dx);
+  const ContactMatrices c = contact_matrices(s);
+  const Eigen::VectorXd linear = linear_acceleration(s, c, 40.0, x);
+  const int lateral = s.index_of("wheelset.lateral");
+  const double departure = 1.0 - dx[s.size() + lateral] / linear[lateral];
+  const double u0 = 1.0e4 * 0.05 / 0.46 / (0.4 * 50e3);
+  EXPECT_NEAR(departure, 2.0 * u0 / 3.0 - u0 * u0 / 9.0, 1e-3);  // the yaw's own 1e-7 adds ~1e-5
+}
+
 TEST(NonlinearHunting, ShenHedrickElkinsSaturation) {
   const CreepCoefficients f{1.0e7, 0.9e7, 1.0e4, 100.0};
   const double limit = 0.4 * 50e3;
