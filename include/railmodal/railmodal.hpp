@@ -26,6 +26,7 @@
 #include "railmodal/linear_system.hpp"
 #include "railmodal/matrix_market.hpp"
 #include "railmodal/modal.hpp"
+#include "railmodal/nonlinear_hunting.hpp"
 #include "railmodal/output_format.hpp"
 #include "railmodal/provenance.hpp"
 #include "railmodal/report.hpp"

@@ -1,0 +1,143 @@
+// railmodal — the nonlinear critical speed: the lateral equations of a vehicle on its wheelsets
+// integrated in time while the speed ramps down from a disturbed start, with the creep forces
+// saturating at μN and a flange beyond its clearance; the lowest speed at which the hunting limit
+// cycle survives, its amplitude, and the amplitude against speed (docs/stability.md, "The
+// nonlinear critical speed").
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Vehicle v;  // one wheelset on lateral and yaw springs to a fixed frame
+//     v.name = "wheelset on springs";
+//     railmodal::Body b;
+//     b.name = "wheelset";
+//     b.mass = 1500.0;
+//     b.inertia = {700.0, 800.0, 800.0};
+//     b.held = {railmodal::Motion::bounce, railmodal::Motion::roll, railmodal::Motion::pitch};
+//     v.bodies.push_back(b);
+//     for (double y : {-1.0, 1.0}) {
+//       railmodal::Element e;
+//       e.name = y > 0 ? "left" : "right";
+//       e.upper = "wheelset";
+//       e.point = {0.0, y, 0.0};
+//       e.lateral_stages = {{"coil", 5e5, 1}};
+//       e.longitudinal_stages = {{"coil", 1e6, 1}};
+//       v.elements.push_back(e);
+//     }
+//     railmodal::Wheelset w;
+//     w.body = "wheelset";
+//     w.spin_inertia = 100.0;
+//     w.contact.rolling_radius = 0.46;
+//     w.contact.contact_half_spacing = 0.75;
+//     w.contact.conicity = 0.15;
+//     w.contact.creep = railmodal::CreepCoefficients{1.0e7, 0.9e7, 1.0e4, 100.0};
+//     v.wheelsets.push_back(w);
+//
+//     railmodal::NonlinearHuntingOptions options;
+//     options.wheel_load = 50e3;  // N: the load the creep coefficients were sized for
+//     options.start_speed = 80.0;
+//     options.end_speed = 20.0;
+//     auto r = railmodal::solve_nonlinear_hunting(railmodal::assemble(v, railmodal::DofSet::lateral), options);
+//     std::cout << to_string(r.verdict) << "\n";
+//     if (r.critical_speed)
+//       std::cout << "a limit cycle survives down to " << *r.critical_speed * 3.6 << " km/h, amplitude "
+//                 << r.amplitude * 1e3 << " mm\n";
+//   }
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "railmodal/linear_system.hpp"
+#include "railmodal/summary.hpp"
+
+namespace railmodal {
+
+/// The nonlinearities a nonlinear hunting analysis simulates; only those named are (without
+/// creep_saturation the creep law is Kalker's linear one; without flange_contact there is no
+/// flange).
+enum class NonlinearEffect {
+  creep_saturation,  ///< Shen–Hedrick–Elkins: the resultant creep force saturates at μN
+  flange_contact     ///< a stiff lateral spring beyond the flange clearance
+};
+const char* to_string(NonlinearEffect effect);
+std::optional<NonlinearEffect> nonlinear_effect_from_string(const std::string& word);
+
+struct NonlinearHuntingOptions {
+  std::vector<NonlinearEffect> effects{NonlinearEffect::creep_saturation, NonlinearEffect::flange_contact};
+  double friction_coefficient = 0.4;  ///< μ (creep_saturation), > 0
+  /// Normal load on each wheel, N (creep_saturation); none: half the wheelset's axle load W.
+  std::optional<double> wheel_load;
+  /// δ0, rad (creep_saturation): the contact angle of the centred wheelset, whose spin ∓δ0/r0
+  /// takes part of the adhesion at rest. 0: neglected (then the small-amplitude limit is exactly
+  /// the linear model). ≥ 0.
+  double contact_angle = 0.0;
+  double flange_clearance = 0.008;  ///< m (flange_contact): the lateral play before the flange, ≥ 0
+  double flange_stiffness = 1.0e7;  ///< N/m (flange_contact): the rail's lateral stiffness at the flange, > 0
+  double start_speed = 100.0;       ///< m/s: where the ramp starts, with the disturbance
+  double end_speed = 5.0;           ///< m/s: where it stops, 0 < end_speed < start_speed
+  double ramp_rate = 0.5;           ///< m/s²: how fast the speed falls, > 0
+  double disturbance = 0.005;       ///< m: the first wheelset's initial lateral displacement, ≠ 0
+  /// m: an oscillation of the first wheelset below this amplitude has died out, > 0.
+  double extinction_amplitude = 1e-4;
+  /// m/s: the convergence check passes when halving the ramp rate moves the critical speed less.
+  double tolerance = 0.5;
+  bool is_valid(std::string* why) const;
+};
+
+enum class NonlinearHuntingVerdict {
+  limit_cycle_dies_out,    ///< a limit cycle was established and died out during the ramp
+  survives_to_end_speed,   ///< the oscillation still lives at the end speed: the critical speed is below it
+  no_limit_cycle_at_start  ///< the disturbance decayed at once: no limit cycle at the start speed
+};
+const char* to_string(NonlinearHuntingVerdict verdict);
+std::optional<NonlinearHuntingVerdict> nonlinear_hunting_verdict_from_string(const std::string& word);
+
+/// One half cycle of the first wheelset's lateral motion during the ramp.
+struct LimitCyclePoint {
+  double speed = 0.0;      ///< m/s at the half cycle's peak
+  double amplitude = 0.0;  ///< m: the largest |y| of the axle centre over the half cycle
+};
+
+/// What one ramp-down found.
+struct RampDown {
+  double ramp_rate = 0.0;  ///< m/s²
+  NonlinearHuntingVerdict verdict = NonlinearHuntingVerdict::no_limit_cycle_at_start;
+  /// Where the limit cycle was lost, only with limit_cycle_dies_out: the branch ends at the last
+  /// half cycle whose amplitude fell by less than 0.5% from the one before, after which it falls
+  /// faster every half cycle until it dies out; the decay per half cycle of the collapse's first
+  /// half cycles, fitted against speed and extrapolated to zero, gives the speed where the decay
+  /// began (the speed of the branch end itself when the fit cannot, docs/stability.md).
+  std::optional<double> critical_speed;
+  double amplitude = 0.0;              ///< m: the amplitude at the branch end
+  std::vector<LimitCyclePoint> curve;  ///< every half cycle until the oscillation died out
+  int steps = 0;                       ///< accepted Runge–Kutta steps
+};
+
+struct NonlinearHuntingResult {
+  NonlinearHuntingVerdict verdict = NonlinearHuntingVerdict::no_limit_cycle_at_start;  ///< of the stated rate
+  std::optional<double> critical_speed;  ///< m/s: the nonlinear critical speed at the stated ramp rate
+  double amplitude = 0.0;                ///< m: the limit cycle's amplitude there
+  /// The bifurcation plot data: limit-cycle amplitude against speed, one point a half cycle.
+  std::vector<LimitCyclePoint> curve;
+  RampDown stated_rate;  ///< the ramp at options.ramp_rate
+  RampDown halved_rate;  ///< the ramp at options.ramp_rate / 2
+  /// |critical speed at the stated rate − at the halved rate|, m/s; infinite when either has none.
+  double convergence_difference = 0.0;
+  bool converged = false;  ///< same verdict, and the difference within options.tolerance
+  AnalysisSummary summary;
+};
+
+/// Ramps the speed down from options.start_speed, the first wheelset displaced by
+/// options.disturbance, integrating M q̈ + C q̇ + K q + (series dampers) = contact forces(q, q̇, V)
+/// (Dormand–Prince 5(4), adaptive), twice: at the stated ramp rate and at half of it.
+///
+/// `system` is an assembly of the lateral motions (DofSet::lateral) of a vehicle with wheelsets.
+/// Throws std::invalid_argument for bad options or a vehicle without wheelsets (as
+/// contact_matrices); NumericalError when the integration fails (naming the speed). A limit
+/// cycle that survives to the end speed, or none at the start, is a verdict, never an exception.
+NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const NonlinearHuntingOptions& options = {});
+
+}  // namespace railmodal

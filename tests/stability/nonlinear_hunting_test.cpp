@@ -1,0 +1,292 @@
+// The nonlinear critical speed: the lateral equations against the linear model at small
+// amplitude, Shen–Hedrick–Elkins' saturation, and the ramp-down of a wheelset on springs with
+// saturation and flange (docs/stability.md, "The nonlinear critical speed").
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <stdexcept>
+
+#include "railmodal/railmodal.hpp"
+#include "stability/creep_saturation.hpp"
+#include "stability/lateral_equations.hpp"
+#include "validation/hunting_test_support.hpp"
+
+namespace railmodal {
+namespace {
+
+using test::WheelsetData;
+
+// The linear critical speed of the wheelset on springs (k_y = 1e6 N/m, k_ψ = 2e6 N·m/rad), by
+// Routh–Hurwitz in hunting_validation_test.cpp (WheelsetOnSpringsCriticalSpeed).
+constexpr double kLinearCriticalSpeed = 65.330265;
+
+Vehicle wheelset_on_springs() {
+  Vehicle v;
+  v.name = "wheelset on springs";
+  WheelsetData d;
+  test::add_wheelset(v, d);
+  test::add_springs_to_ground(v, d, 1.0e6, 2.0e6);
+  return v;
+}
+
+// Two wheelsets in a frame on soft, damped primary springs, each wheelset's reference point off
+// its axle (so the contact forces reach the DOFs through the lever), and a series damper added by
+// hand: every term of the equations takes part.
+LinearSystem bogie_system() {
+  Vehicle v;
+  v.name = "bogie";
+  Body frame;
+  frame.name = "frame";
+  frame.mass = 2000.0;
+  frame.inertia = {1000.0, 1500.0, 2000.0};
+  v.bodies.push_back(frame);
+  for (int i = 0; i < 2; ++i) {
+    WheelsetData w;
+    w.name = i == 0 ? "wheelset1" : "wheelset2";
+    w.x = i == 0 ? 1.25 : -1.25;
+    test::add_wheelset(v, w);
+    v.bodies.back().reference_point = {w.x + 0.4, 0.0, 0.0};
+    for (double y : {-1.0, 1.0}) {
+      Element e = test::spring(w.name + ".primary", "frame", w.name, {w.x, y, 0.0}, 5e6, 2e6, 1e6);
+      e.lateral_damping = 1e4;
+      v.elements.push_back(e);
+    }
+  }
+  LinearSystem s = assemble(v, DofSet::lateral);
+  SeriesDamperRow d;
+  d.stretch = Eigen::RowVectorXd::Zero(s.size());
+  d.stretch[s.index_of("frame.lateral")] = 1.0;
+  d.damping = 2e4;
+  d.stiffness = 5e6;
+  s.series_dampers.push_back(d);
+  return s;
+}
+
+// M⁻¹(−(C + C_c/V + V·G) q̇ − (K + K_c) q − stretchᵀF): the linear model's accelerations.
+Eigen::VectorXd linear_acceleration(const LinearSystem& s, const ContactMatrices& c, double speed,
+                                    const Eigen::VectorXd& x) {
+  const int n = s.size();
+  const Eigen::VectorXd q = x.head(n), rate = x.segment(n, n);
+  Eigen::VectorXd force =
+      -(s.damping + c.creep_damping / speed + speed * c.gyroscopic) * rate - (s.stiffness + c.stiffness) * q;
+  for (std::size_t k = 0; k < s.series_dampers.size(); ++k)
+    force -= s.series_dampers[k].stretch.transpose() * x[2 * n + static_cast<int>(k)];
+  return s.mass.ldlt().solve(force);
+}
+
+TEST(NonlinearHunting, LinearLawReproducesTheLinearModel) {
+  const LinearSystem s = bogie_system();
+  NonlinearHuntingOptions options;
+  options.effects.clear();  // the linear creep law, no flange
+  const stability::LateralEquations e(s, options);
+  const ContactMatrices c = contact_matrices(s);
+  ASSERT_EQ(e.size(), 2 * s.size() + 1);
+  std::srand(7);
+  for (double speed : {2.0, 30.0, 90.0})
+    for (double amplitude : {1e-6, 1e-3}) {
+      const Eigen::VectorXd x = amplitude * Eigen::VectorXd::Random(e.size());
+      Eigen::VectorXd dx;
+      e.derivative(speed, x, &dx);
+      const Eigen::VectorXd expected = linear_acceleration(s, c, speed, x);
+      // Round-off: the same sums in another order, over forces of the size of the largest term.
+      EXPECT_LE((dx.segment(s.size(), s.size()) - expected).norm(), 1e-11 * expected.norm())
+          << "V = " << speed << ", amplitude " << amplitude;
+      EXPECT_EQ(dx.head(s.size()), x.segment(s.size(), s.size()));
+      const SeriesDamperRow& d = s.series_dampers[0];
+      const double f = x[2 * s.size()];
+      EXPECT_NEAR(dx[2 * s.size()], d.stiffness * (d.stretch.dot(x.segment(s.size(), s.size())) - f / d.damping),
+                  1e-12 * d.stiffness * amplitude);
+    }
+}
+
+TEST(NonlinearHunting, SaturationAndFlangeVanishAtSmallAmplitude) {
+  // Below the clearance the flange does nothing; the saturation's cubic has slope 1 at zero, so
+  // its relative departure from the linear law is F/(3μN): at 1e-7 m, under 1e-4.
+  const LinearSystem s = bogie_system();
+  const stability::LateralEquations e(s, NonlinearHuntingOptions{});
+  const ContactMatrices c = contact_matrices(s);
+  std::srand(11);
+  const Eigen::VectorXd x = 1e-7 * Eigen::VectorXd::Random(e.size());
+  Eigen::VectorXd dx;
+  e.derivative(40.0, x, &dx);
+  const Eigen::VectorXd expected = linear_acceleration(s, c, 40.0, x);
+  const double departure = (dx.segment(s.size(), s.size()) - expected).norm() / expected.norm();
+  EXPECT_LT(departure, 1e-4);
+  EXPECT_GT(departure, 0.0);  // but the law is not the linear one
+}
+
+TEST(NonlinearHunting, CentredSpinCancelsAtRestButTakesAdhesion) {
+  // With δ0 = 0.05 rad the wheels spin at ∓δ0/r0 when centred: equal and opposite forces
+  // (f23·δ0/r0 ≈ 1.1 kN each, against μN = 20 kN), so the centred wheelset stays at rest; but
+  // each wheel's creep forces saturate sooner: a small lateral force along the spin force meets
+  // the cubic's slope at u0 = 1.1/20, 1 − 2u0/3 + u0²/9, so it is smaller than the linear law's
+  // by about 2u0/3 ≈ 3.6% (without δ0 it is within 1e-4, SaturationAndFlangeVanishAtSmallAmplitude).
+  const LinearSystem s = assemble(wheelset_on_springs(), DofSet::lateral);
+  NonlinearHuntingOptions o;
+  o.wheel_load = 50e3;
+  o.contact_angle = 0.05;
+  const stability::LateralEquations with_spin(s, o);
+  Eigen::VectorXd dx;
+  with_spin.derivative(40.0, Eigen::VectorXd::Zero(with_spin.size()), &dx);
+  EXPECT_EQ(dx.norm(), 0.0);  // the two wheels' terms are exact negatives of each other
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(with_spin.size());
+  x[s.index_of("wheelset.yaw")] = 1e-7;  // a yaw: lateral creepage, resisted by f22 alone
+  with_spin.derivative(40.0, x, &dx);
+  const ContactMatrices c = contact_matrices(s);
+  const Eigen::VectorXd linear = linear_acceleration(s, c, 40.0, x);
+  const int lateral = s.index_of("wheelset.lateral");
+  const double departure = 1.0 - dx[s.size() + lateral] / linear[lateral];
+  const double u0 = 1.0e4 * 0.05 / 0.46 / (0.4 * 50e3);
+  EXPECT_NEAR(departure, 2.0 * u0 / 3.0 - u0 * u0 / 9.0, 1e-3);  // the yaw's own 1e-7 adds ~1e-5
+}
+
+TEST(NonlinearHunting, ShenHedrickElkinsSaturation) {
+  const CreepCoefficients f{1.0e7, 0.9e7, 1.0e4, 100.0};
+  const double limit = 0.4 * 50e3;
+  // Small creepage: the linear law, to the cubic's second term u/3.
+  const model::WheelCreepage small{1e-6, -2e-6, 0.0};
+  const auto lin = model::linear_creep_forces(f, small);
+  const auto sat = stability::saturated_creep_forces(f, small, limit);
+  const double u = std::hypot(lin.longitudinal, lin.lateral) / limit;
+  EXPECT_NEAR(sat.lateral / lin.lateral, 1.0 - u / 3.0, u * u / 9.0);
+  // Beyond u = 3: exactly μN, in the direction of the linear forces, the spin moment scaled alike.
+  const model::WheelCreepage large{0.01, 0.02, 0.5};
+  const auto lin_large = model::linear_creep_forces(f, large);
+  const auto sat_large = stability::saturated_creep_forces(f, large, limit);
+  EXPECT_NEAR(std::hypot(sat_large.longitudinal, sat_large.lateral), limit, 1e-9 * limit);
+  EXPECT_NEAR(sat_large.lateral / sat_large.longitudinal, lin_large.lateral / lin_large.longitudinal, 1e-12);
+  EXPECT_NEAR(sat_large.spin_moment / lin_large.spin_moment,
+              limit / std::hypot(lin_large.longitudinal, lin_large.lateral), 1e-12);
+  // Continuous at u = 3, where the cubic reaches μN with zero slope.
+  const double at_three = 3.0 * limit / f.f11;
+  const auto below = stability::saturated_creep_forces(f, {at_three * (1 - 1e-9), 0.0, 0.0}, limit);
+  EXPECT_NEAR(std::abs(below.longitudinal), limit, 1e-9 * limit);
+  // Zero creepage: zero force, not NaN.
+  const auto zero = stability::saturated_creep_forces(f, {}, limit);
+  EXPECT_EQ(zero.lateral, 0.0);
+}
+
+NonlinearHuntingOptions wheelset_options() {
+  NonlinearHuntingOptions o;
+  o.wheel_load = 50e3;  // N: the load creep coefficients of this size belong to (hunting_test_support.hpp)
+  o.friction_coefficient = 0.4;
+  o.flange_clearance = 0.008;
+  o.flange_stiffness = 1.0e7;
+  o.start_speed = 75.0;
+  o.end_speed = 30.0;
+  o.ramp_rate = 0.5;
+  o.disturbance = 0.005;
+  o.tolerance = 0.1;
+  return o;
+}
+
+TEST(NonlinearHunting, WheelsetOnSpringsLimitCycle) {
+  const NonlinearHuntingOptions o = wheelset_options();
+  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  ASSERT_EQ(r.verdict, NonlinearHuntingVerdict::limit_cycle_dies_out);
+  ASSERT_TRUE(r.critical_speed.has_value());
+  RecordProperty("nonlinear_critical_speed", std::to_string(*r.critical_speed));
+  RecordProperty("limit_cycle_amplitude", std::to_string(r.amplitude));
+  RecordProperty("halved_rate_critical_speed", std::to_string(*r.halved_rate.critical_speed));
+  // The limit cycle dies out at or below the linear critical speed (above it the centred running
+  // is unstable, so no oscillation can die out there), but not far below: the subcritical branch
+  // of this wheelset is short.
+  EXPECT_LE(*r.critical_speed, kLinearCriticalSpeed);
+  EXPECT_GT(*r.critical_speed, kLinearCriticalSpeed - 2.0);
+  // The amplitude is bounded by the clearance plus the flange's quasi-static deflection under the
+  // largest force it can meet: both wheels' creep forces at μN and the lateral springs' k_y·A,
+  // A ≤ (d + 2μN/k_f)/(1 − k_y/k_f) = 13.3 mm; the flange is reached, so the bound is not idle.
+  const double bound =
+      (o.flange_clearance + 2.0 * o.friction_coefficient * *o.wheel_load / o.flange_stiffness) / (1.0 - 1.0e6 / 1.0e7);
+  double largest = 0.0;
+  for (const LimitCyclePoint& p : r.curve) {
+    EXPECT_TRUE(std::isfinite(p.amplitude));
+    largest = std::max(largest, p.amplitude);
+  }
+  EXPECT_LE(largest, bound);
+  EXPECT_GT(largest, o.flange_clearance);
+  EXPECT_GT(r.amplitude, 0.5 * o.flange_clearance);
+  // The curve runs down in speed, from the start to the collapse.
+  EXPECT_GT(r.curve.front().speed, r.curve.back().speed);
+  // Convergence in the ramp rate: halving it moves the critical speed by less than 0.1 m/s.
+  EXPECT_TRUE(r.converged) << r.convergence_difference;
+  EXPECT_LT(r.convergence_difference, o.tolerance);
+  EXPECT_TRUE(r.summary.passed());
+}
+
+TEST(NonlinearHunting, SubcriticalLimitCycleBelowTheLinearCriticalSpeed) {
+  // Held at 65.30 m/s (0.03 m/s below the linear critical speed; the ramp of 0.0005 m/s² moves it
+  // by 0.01 m/s in 20 s, some 140 periods) from a 9 mm disturbance, the saturated and flanged
+  // wheelset keeps an 8 mm limit cycle: the branch is subcritical. The linear law, from the same
+  // start, decays to under half of it (3.7 mm), and at 65.1 m/s the nonlinear one decays too
+  // (1.5 mm): the branch's fold lies between, as the ramp-down of WheelsetOnSpringsLimitCycle says.
+  NonlinearHuntingOptions o = wheelset_options();
+  o.start_speed = 65.30;
+  o.end_speed = 65.29;
+  o.ramp_rate = 0.0005;
+  o.disturbance = 0.009;
+  const LinearSystem s = assemble(wheelset_on_springs(), DofSet::lateral);
+  const NonlinearHuntingResult r = solve_nonlinear_hunting(s, o);
+  ASSERT_EQ(r.verdict, NonlinearHuntingVerdict::survives_to_end_speed);
+  EXPECT_GT(r.curve.back().amplitude, 0.007);
+  o.effects.clear();
+  const NonlinearHuntingResult linear = solve_nonlinear_hunting(s, o);
+  EXPECT_LT(linear.curve.back().amplitude, 0.005);
+  o = wheelset_options();
+  o.start_speed = 65.1;
+  o.end_speed = 65.09;
+  o.ramp_rate = 0.0005;
+  o.disturbance = 0.009;
+  EXPECT_LT(solve_nonlinear_hunting(s, o).curve.back().amplitude, 0.003);
+}
+
+TEST(NonlinearHunting, LinearLawRampFindsTheLinearCriticalSpeed) {
+  // With the linear law the ramp-down has no limit cycle to follow: the oscillation grows while
+  // the speed is above the linear critical speed and decays below it, and the onset of decay is
+  // that speed. The ramp lags by about rate·(half a period) ≈ 0.02 m/s.
+  NonlinearHuntingOptions o = wheelset_options();
+  o.effects.clear();
+  o.start_speed = 70.0;
+  o.disturbance = 1e-4;
+  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  ASSERT_TRUE(r.halved_rate.critical_speed.has_value());
+  EXPECT_NEAR(*r.halved_rate.critical_speed, kLinearCriticalSpeed, 0.05);
+  EXPECT_NEAR(*r.critical_speed, kLinearCriticalSpeed, 0.05);
+}
+
+TEST(NonlinearHunting, OptionsAreValidated) {
+  std::string why;
+  EXPECT_TRUE(NonlinearHuntingOptions{}.is_valid(&why));
+  NonlinearHuntingOptions o;
+  o.friction_coefficient = 0.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("friction_coefficient"), std::string::npos);
+  o = {};
+  o.end_speed = o.start_speed;
+  EXPECT_FALSE(o.is_valid(&why));
+  o = {};
+  o.ramp_rate = -1.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("ramp_rate"), std::string::npos);
+  o = {};
+  o.disturbance = 0.0;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_THROW(solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o), std::invalid_argument);
+  Vehicle no_wheelsets = wheelset_on_springs();
+  no_wheelsets.wheelsets.clear();
+  EXPECT_THROW(solve_nonlinear_hunting(assemble(no_wheelsets, DofSet::lateral)), std::invalid_argument);
+}
+
+TEST(NonlinearHunting, EnumNamesRoundTrip) {
+  for (NonlinearEffect e : {NonlinearEffect::creep_saturation, NonlinearEffect::flange_contact})
+    EXPECT_EQ(nonlinear_effect_from_string(to_string(e)), e);
+  for (NonlinearHuntingVerdict v :
+       {NonlinearHuntingVerdict::limit_cycle_dies_out, NonlinearHuntingVerdict::survives_to_end_speed,
+        NonlinearHuntingVerdict::no_limit_cycle_at_start})
+    EXPECT_EQ(nonlinear_hunting_verdict_from_string(to_string(v)), v);
+  EXPECT_FALSE(nonlinear_effect_from_string("flange").has_value());
+}
+
+}  // namespace
+}  // namespace railmodal
