@@ -80,6 +80,10 @@ struct UnstableInterval {
 struct HuntingCriticalSpeed {
   double speed = 0.0;          ///< m/s, refined to HuntingOptions::relative_tolerance
   std::string branch;
+  /// What moves most in the unstable mode at the critical speed, named as branches are
+  /// ("bogie 1 lateral/yaw"): a branch keeps the name of what it was at the lowest speed, which
+  /// after veering can be another body.
+  std::string motion;
   double frequency_hz = 0.0;   ///< the hunting frequency there
   double klingel_frequency_hz = 0.0;  ///< V/Λ of the wheelsets' kinematic wavelength Λ
   int evaluations = 0;         ///< eigen-solves the refinement took
@@ -112,6 +116,10 @@ struct HuntingResult {
   std::optional<double> damping_threshold;
   /// The lowest speed at which the least-damped ζ reaches HuntingOptions::damping_threshold.
   std::optional<double> threshold_speed;
+  /// The least-damped ζ is already at or below the threshold at the lowest speed (a lightly
+  /// damped suspension mode, say): threshold_speed is then the lowest speed, which is no
+  /// crossing; the reports say so and name the branch.
+  bool threshold_at_lowest_speed = false;
   std::vector<ConicityPoint> conicity_curve;  ///< one per HuntingOptions::conicities
   std::vector<ResolvedContact> contacts;      ///< the wheelsets' contact as used
   /// Checks (the eigen-solve residual, the tracking's continuity) and the stage times.

@@ -78,8 +78,9 @@ std::string range_text(const HuntingResult& r) {
 
 // The critical speed with its frequency and Klingel's beside it.
 std::string critical_text(const HuntingCriticalSpeed& c) {
-  return fixed(c.speed * kKmh, 2) + " km/h (" + significant(c.speed, 8) + " m/s), branch '" + c.branch +
-         "', hunting frequency " + fixed(c.frequency_hz, 3) +
+  const std::string motion = c.motion.empty() || c.motion == c.branch ? "" : " (there mostly " + c.motion + ")";
+  return fixed(c.speed * kKmh, 2) + " km/h (" + significant(c.speed, 8) + " m/s), branch '" + c.branch + "'" +
+         motion + ", hunting frequency " + fixed(c.frequency_hz, 3) +
          " Hz (Klingel's V/Λ there: " + fixed(c.klingel_frequency_hz, 3) + " Hz)";
 }
 
@@ -108,9 +109,24 @@ std::string interval_text(const UnstableInterval& u) {
   return from + ", " + to + " (" + u.branch + ")";
 }
 
+// The branch with the least ζ at the lowest speed, and that ζ.
+std::pair<std::string, double> least_damped_at_lowest_speed(const HuntingResult& r) {
+  std::pair<std::string, double> least{"", 0.0};
+  for (const HuntingBranch& b : r.branches)
+    if (!b.damping_ratio.empty() && (least.first.empty() || b.damping_ratio.front() < least.second))
+      least = {b.name, b.damping_ratio.front()};
+  return least;
+}
+
 std::string threshold_text(const HuntingResult& r) {
   if (!r.damping_threshold) return "";
   const std::string zeta = "ζ = " + significant(100.0 * *r.damping_threshold, 4) + " %";
+  if (r.threshold_at_lowest_speed) {
+    const auto [branch, z] = least_damped_at_lowest_speed(r);
+    return "already at or below " + zeta + " at the lowest speed, " + fixed(r.speeds.front() * kKmh, 2) +
+           " km/h (branch '" + branch + "', ζ = " + significant(100.0 * z, 3) + " %): no speed of the range is the "
+           "one where the damping falls to it.";
+  }
   if (r.threshold_speed)
     return "the least-damped branch's damping falls to " + zeta + " at " + fixed(*r.threshold_speed * kKmh, 2) +
            " km/h.";
@@ -137,13 +153,16 @@ Table verdict_table(const HuntingResult& r) {
     t.rows.push_back(
         {"linear critical speed", fixed(c.speed * kKmh, 2) + " km/h = " + significant(c.speed, 8) + " m/s"});
     t.rows.push_back({"hunting branch", c.branch});
+    t.rows.push_back({"what moves most at that speed", c.motion});
     t.rows.push_back({"hunting frequency", fixed(c.frequency_hz, 3) + " Hz"});
     t.rows.push_back({"Klingel's V/Λ at that speed", fixed(c.klingel_frequency_hz, 3) + " Hz"});
     t.rows.push_back({"eigen-solves of the refinement", std::to_string(c.evaluations)});
   }
   if (r.damping_threshold)
     t.rows.push_back({"speed at ζ = " + significant(100.0 * *r.damping_threshold, 4) + " %",
-                      r.threshold_speed ? fixed(*r.threshold_speed * kKmh, 2) + " km/h" : "not reached in the range"});
+                      r.threshold_at_lowest_speed ? "already below at the lowest speed"
+                      : r.threshold_speed         ? fixed(*r.threshold_speed * kKmh, 2) + " km/h"
+                                                  : "not reached in the range"});
   return t;
 }
 
@@ -408,7 +427,7 @@ report::Chart damping_chart(const HuntingResult& r) {
   if (r.critical)
     c.lines.push_back({"V crit " + fixed(r.critical->speed * kKmh, 1), r.critical->speed * kKmh, true,
                        "the linear critical speed (km/h)"});
-  if (r.threshold_speed)
+  if (r.threshold_speed && !r.threshold_at_lowest_speed)
     c.lines.push_back({"V at ζ = " + significant(threshold, 3) + " %", *r.threshold_speed * kKmh, true,
                        "where the least-damped branch reaches the threshold"});
   for (size_t k = 0; k < r.branches.size(); ++k) {
@@ -564,6 +583,7 @@ nlohmann::json critical_json(const std::optional<HuntingCriticalSpeed>& c) {
   return {{"speed_m_s", c->speed},
           {"speed_kmh", c->speed * kKmh},
           {"branch", c->branch},
+          {"motion", c->motion},
           {"frequency_hz", c->frequency_hz},
           {"klingel_frequency_hz", c->klingel_frequency_hz},
           {"evaluations", c->evaluations}};
@@ -612,6 +632,7 @@ void write_json(std::ostream& out, const Page& p) {
   member("unstable_intervals", intervals);
   member("damping_threshold", r.damping_threshold ? json(*r.damping_threshold) : json(nullptr));
   member("threshold_speed_kmh", r.threshold_speed ? json(*r.threshold_speed * kKmh) : json(nullptr));
+  member("threshold_at_lowest_speed", json(r.threshold_at_lowest_speed));
   json curve = json::array();
   for (const ConicityPoint& c : r.conicity_curve)
     curve.push_back(

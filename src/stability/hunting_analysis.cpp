@@ -79,13 +79,15 @@ Scan scan(const std::vector<double>& speeds, const std::vector<double>& zeta, co
 
 // The critical speed of a scan that has one: the first interval's lower end, with the
 // hunting frequency of the least-damped root there (one more eigen-solve).
-HuntingCriticalSpeed critical_speed(const Scan& scan, const FirstOrderSystem& system, double wavelength) {
+HuntingCriticalSpeed critical_speed(const LinearSystem& vehicle, const Scan& scan, const FirstOrderSystem& system,
+                                    double wavelength) {
   const ScannedInterval& first = scan.intervals.front();
   HuntingCriticalSpeed c;
   c.speed = first.from;
-  const Eigen::VectorXcd values = solve_at_speed(system, c.speed, false).values;
-  const LeastDamped at = least_damped(values);
-  c.frequency_hz = at.root >= 0 ? std::abs(values(at.root).imag()) / kTwoPi : 0.0;
+  const SpeedRoots roots = solve_at_speed(system, c.speed, true);
+  const LeastDamped at = least_damped(roots.values);
+  c.frequency_hz = at.root >= 0 ? std::abs(roots.values(at.root).imag()) / kTwoPi : 0.0;
+  c.motion = root_name(vehicle, roots.shapes.col(std::max(at.root, 0)));
   c.klingel_frequency_hz = klingel_frequency(c.speed, wavelength);
   c.evaluations = first.from_evaluations + 1;
   return c;
@@ -100,11 +102,9 @@ ConicityPoint conicity_point(const LinearSystem& system, double conicity, const 
   const Scan s = scan(speeds, zeta, fos, options.relative_tolerance);
   point.verdict = s.verdict;
   if (s.verdict == HuntingVerdict::critical_speed_in_range) {
-    point.critical = critical_speed(s, fos, shortest_wavelength(contact));
+    point.critical = critical_speed(system, s, fos, shortest_wavelength(contact));
     // Named where it goes unstable (no tracking over this conicity's grid).
-    const SpeedRoots roots = solve_at_speed(fos, point.critical->speed, true);
-    const LeastDamped at = least_damped(roots.values);
-    point.critical->branch = root_name(system, roots.shapes.col(std::max(at.root, 0)));
+    point.critical->branch = point.critical->motion;
   }
   return point;
 }
@@ -207,14 +207,16 @@ HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& 
                                          at >= 0 ? branches.name_of_root[i.grid_index][at] : std::string()});
   }
   if (result.verdict == HuntingVerdict::critical_speed_in_range) {
-    result.critical = critical_speed(own_scan, fos, wavelength);
+    result.critical = critical_speed(system, own_scan, fos, wavelength);
     result.critical->branch = result.unstable_intervals.front().branch;
     evaluations += 1;
   }
   result.damping_threshold = options.damping_threshold;
-  if (options.damping_threshold)
+  if (options.damping_threshold) {
     result.threshold_speed = threshold_speed(result.speeds, zeta, ZetaFunction{fos}, *options.damping_threshold,
                                              options.relative_tolerance, &evaluations);
+    result.threshold_at_lowest_speed = !zeta.empty() && zeta.front() <= *options.damping_threshold;
+  }
   clock.lap("critical speed and intervals");
 
   result.conicity_curve = conicity_curve(system, contact, result.speeds, options);
