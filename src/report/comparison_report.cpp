@@ -90,6 +90,15 @@ json ranking_json(const Ranking& ranking) {
   return j;
 }
 
+// A ranking value: a number; +∞ the word the tables print for it ("none": no critical speed in the
+// range, a design stable throughout; "unbounded": an undamped peak), as hunting_speed_m_s and
+// dynamic_deflection_ratio write it; null only for no value (a failed variant, a vehicle without
+// wheelsets for hunting_speed), so that the two never read alike.
+json ranking_value(const std::optional<double>& x, bool peak) {
+  if (x && std::isinf(*x) && *x > 0) return peak ? "unbounded" : "none";
+  return optional_number(x);
+}
+
 void write_json(std::ostream& out, const Comparison& c) {
   json j;
   j["study"] = c.study;
@@ -103,9 +112,16 @@ void write_json(std::ostream& out, const Comparison& c) {
     row["rank"] = v.rank;
     row["feasible"] = v.feasible;
     row["violations"] = v.violations;
-    row["objective"] = optional_number(v.objective);
+    // The objective is +∞ through its criteria: it takes the word of the first that is.
+    bool peak = false, infinite_seen = false;
     row["criteria"] = json::array();
-    for (const auto& x : v.criteria) row["criteria"].push_back(optional_number(x));
+    for (size_t k = 0; k < v.criteria.size(); ++k) {
+      const bool unbounded =
+          k < c.ranking.objective.size() && study::infinite_is_unbounded(c.ranking.objective[k].metric);
+      if (!infinite_seen && v.criteria[k] && std::isinf(*v.criteria[k])) peak = unbounded, infinite_seen = true;
+      row["criteria"].push_back(ranking_value(v.criteria[k], unbounded));
+    }
+    row["objective"] = ranking_value(v.objective, peak);
     row["periods_s"] = periods(v.result);
     row["critical_speeds_kmh"] = critical_speeds_kmh(v.result);
     if (v.result.deflections_checked) {

@@ -232,7 +232,10 @@ void write_markdown(std::ostream& out, const CriticalSpeedStudy& st, const Prove
   out << "Scene **" << st.scene.name << "** (`" << st.scene.source << "`), vehicle `" << st.scene.vehicle_file
       << "`, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "
       << fixed(st.scene.min_speed * kKmh, 1) << "–" << fixed(st.scene.max_speed * kKmh, 1) << " km/h.\n\n";
-  out << friction_model_note(st) << "\n\n## Sources\n\n";
+  out << friction_model_note(st) << "\n\n";
+  // What the modes leave out (ModalResult::notes, as `modes` prints them): none for the book's wagons.
+  for (const std::string& note : st.modes.notes) out << "Note: " << note << ".\n\n";
+  out << "## Sources\n\n";
   write_markdown_table(out, sources_table(st));
   out << "A harmonic k of a source runs at f = k·V/Λ; a mode of frequency f resonates at V = Λ·f/k.\n\n";
   out << "## Critical speeds\n\n";
@@ -364,7 +367,9 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st, const Provenanc
       << "</code>, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "
       << fixed(st.scene.min_speed * kKmh, 1) << "–" << fixed(st.scene.max_speed * kKmh, 1) << " km/h.</p>\n";
 
-  out << "<p>" << html_escape(friction_model_note(st)) << "</p>\n<h2>Sources</h2>\n";
+  out << "<p>" << html_escape(friction_model_note(st)) << "</p>\n";
+  for (const std::string& note : st.modes.notes) out << "<p class=note>Note: " << html_escape(note) << ".</p>\n";
+  out << "<h2>Sources</h2>\n";
   write_html_table(out, sources_table(st));
   out << "<h2>Critical speeds</h2>\n";
   if (st.critical_speeds.empty()) {
@@ -430,6 +435,7 @@ std::string output_columns(const CriticalSpeedStudy& st) {
 void write_csv(std::ostream& out, const CriticalSpeedStudy& st) {
   // The amplitudes are of each row's output: m, or rad for a roll, pitch or yaw.
   using report::csv_heading;
+  for (const std::string& note : st.modes.notes) out << "# note: " << note << "\n";  // as `modes` writes them
   out << csv_heading("speed", "km/h") << ",source,source_index,harmonic,mode,mode_name,"
       << csv_heading("frequency", "Hz") << ",output," << csv_heading("amplitude", "m or rad") << ",unbounded,"
       << csv_heading("growth_per_half_period", "m or rad") << ","
@@ -454,6 +460,7 @@ void write_json(std::ostream& out, const CriticalSpeedStudy& st) {
   json j;
   j["vehicle"] = st.system.vehicle.name;
   j["scene"] = st.scene.name;
+  if (!st.modes.notes.empty()) j["notes"] = st.modes.notes;  // absent for the book's wagons: their files stay
   j["dofs"] = json::array();
   for (const auto& d : st.system.dofs) j["dofs"].push_back(d.label);
   j["sources"] = json::array();

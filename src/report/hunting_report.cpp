@@ -39,7 +39,15 @@ struct Page {
   const Provenance& provenance;
 };
 
-std::string kmh(double speed) { return fixed(speed * kKmh, 1) + " km/h"; }
+// A speed of the range in km/h: one decimal, or as many more (up to 6) as keep it within 0.1 % of
+// its value, so that 0.01 km/h does not print as 0.0.
+std::string range_kmh(double speed) {
+  const double v = speed * kKmh;
+  int decimals = 1;
+  while (decimals < 6 && std::abs(std::stod(fixed(v, decimals)) - v) > 1e-3 * std::abs(v)) ++decimals;
+  return fixed(v, decimals);
+}
+std::string kmh(double speed) { return range_kmh(speed) + " km/h"; }
 std::string percent(double ratio) { return fixed(100.0 * ratio, 2) + " %"; }
 
 double lowest_speed(const HuntingResult& r) { return r.speeds.empty() ? 0.0 : r.speeds.front(); }
@@ -72,8 +80,8 @@ std::vector<size_t> by_least_damping(const HuntingResult& r) {
 }
 
 std::string range_text(const HuntingResult& r) {
-  return fixed(lowest_speed(r) * kKmh, 1) + "–" + fixed(highest_speed(r) * kKmh, 1) + " km/h, " +
-         std::to_string(r.speeds.size()) + " speeds";
+  return range_kmh(lowest_speed(r)) + "–" + range_kmh(highest_speed(r)) + " km/h, " + std::to_string(r.speeds.size()) +
+         " speeds";
 }
 
 // The critical speed with its frequency and Klingel's beside it.
@@ -133,11 +141,39 @@ std::string threshold_text(const HuntingResult& r) {
   return "the least-damped branch's damping stays above " + zeta + " over the whole range.";
 }
 
+// A check's value: counts as integers, the rest to 2 significant digits (as `modes` prints its
+// residual: enough to judge, and the same bytes from run to run).
+std::string check_value(double value) {
+  if (value == std::floor(value) && std::abs(value) < 1e9) return fixed(value, 0);
+  return significant(value, 2);
+}
+
+// The analysis' own checks (HuntingResult::summary), values and limits; never the stage times,
+// which vary from run to run (docs/architecture.md: outputs are byte for byte reproducible).
+std::string checks_text(const HuntingResult& r) {
+  std::string text;
+  for (const Check& c : r.summary.checks) {
+    text += (text.empty() ? "" : "; ") + c.name + " " + check_value(c.value);
+    if (std::isfinite(c.limit)) text += " (limit " + check_value(c.limit) + (c.passed ? ")" : ", FAILED)");
+  }
+  return text.empty() ? "none recorded" : text;
+}
+
+std::vector<std::string> failed_checks(const HuntingResult& r) {
+  std::vector<std::string> failed;
+  for (const Check& c : r.summary.checks)
+    if (!c.passed)
+      failed.push_back(c.name + " " + check_value(c.value) + ", limit " + check_value(c.limit) + " (docs/accuracy.md)");
+  return failed;
+}
+
+std::string method_text(const HuntingResult& r) { return r.summary.method.empty() ? "not recorded" : r.summary.method; }
+
 const char* const kLinearNote =
     "Linear analysis: eigenvalues of the vehicle linearised about running straight and centred on its track, "
     "with linear (unsaturated) creep forces and no flange contact. Its critical speed is where small motions "
-    "start to grow; the nonlinear critical speed, the lowest speed at which a limit cycle survives, is separate "
-    "(docs/stability.md) and may be lower.";
+    "start to grow; the nonlinear critical speed, the lowest speed at which a limit cycle survives, may be lower: "
+    "the library computes it (solve_nonlinear_hunting, docs/stability.md) but no command runs it yet.";
 
 const char* const kBranchNote =
     "ζ = −Re λ/|λ|, f = Im λ/2π. Branches are followed from speed to speed by eigenvector continuity (MAC); "
@@ -177,7 +213,12 @@ Table intervals_table(const HuntingResult& r) {
 }
 
 Table branches_table(const HuntingResult& r) {
-  const std::string low = fixed(lowest_speed(r) * kKmh, 0), high = fixed(highest_speed(r) * kKmh, 0);
+  // Whole km/h in the headings, unless that would hide the speed (0.01 km/h is not "0").
+  auto heading = [](double speed) {
+    const double v = speed * kKmh;
+    return std::abs(std::round(v) - v) <= 1e-3 * std::abs(v) ? fixed(v, 0) : range_kmh(speed);
+  };
+  const std::string low = heading(lowest_speed(r)), high = heading(highest_speed(r));
   Table t{{"#", "branch", "f at " + low + " km/h (Hz)", "ζ at " + low + " km/h", "f at " + high + " km/h (Hz)",
            "ζ at " + high + " km/h", "least ζ", "at (km/h)", "lowest MAC", "tracking"},
           {true, false, true, true, true, true, true, true, true, false},
@@ -207,8 +248,8 @@ Table conicity_table(const HuntingResult& r) {
                         fixed(p.critical->klingel_frequency_hz, 3)});
     else
       t.rows.push_back({significant(p.conicity, 4), to_string(p.verdict),
-                        p.verdict == HuntingVerdict::stable_throughout ? "above " + fixed(highest_speed(r) * kKmh, 1)
-                                                                       : "below " + fixed(lowest_speed(r) * kKmh, 1),
+                        p.verdict == HuntingVerdict::stable_throughout ? "above " + range_kmh(highest_speed(r))
+                                                                       : "below " + range_kmh(lowest_speed(r)),
                         "—", "—", "—"});
   }
   return t;
@@ -300,6 +341,8 @@ void write_table(std::ostream& out, const Page& p) {
   out << "\ncontacts:\n";
   write_text_table(out, contacts_table(r));
   out << wrapped(kContactsNote) << "\n\n" << wrapped(kLinearNote) << "\n";
+  out << "\n" << wrapped("checks: " + checks_text(r)) << "\n" << wrapped("method: " + method_text(r)) << "\n";
+  for (const std::string& f : failed_checks(r)) out << wrapped("warning: check failed: " + f) << "\n";
 }
 
 // ---- Markdown ----
@@ -319,7 +362,8 @@ void write_markdown(std::ostream& out, const Page& p) {
   out << "## Branches\n\n";
   write_markdown_table(out, branches_table(r));
   out << kBranchNote << " The root locus and ζ against speed are drawn in the HTML report (`--format html`); "
-      << "every eigenvalue is in the CSV and JSON.\n\n";
+      << "the CSV and JSON hold each branch's eigenvalue at every speed (the root with Im λ > 0 of each "
+      << "complex pair; the real roots, which do not oscillate, are left out).\n\n";
   if (!r.conicity_curve.empty()) {
     out << "## Critical speed against conicity\n\n";
     write_markdown_table(out, conicity_table(r));
@@ -327,6 +371,8 @@ void write_markdown(std::ostream& out, const Page& p) {
   out << "## Contacts\n\n";
   write_markdown_table(out, contacts_table(r));
   out << kContactsNote << "\n\n" << kLinearNote << "\n\n";
+  out << "## Checks\n\n" << checks_text(r) << ".\n\nMethod: " << method_text(r) << ".\n\n";
+  for (const std::string& f : failed_checks(r)) out << "**Warning: check failed:** " << f << "\n\n";
   out << "---\n\nWritten by " << report::provenance_line("stability", p.provenance) << "\n";
 }
 
@@ -398,6 +444,62 @@ report::Chart root_locus_chart(const HuntingResult& r) {
     c.series.push_back(line);
     c.series.push_back(dots);
   }
+  return c;
+}
+
+// The zoomed panel of the root locus shows where the branches that matter near and cross
+// Re λ = 0: on the full locus the strongly damped roots (on the Manchester coach, Re λ down to
+// −600 1/s) set the scale and the crossing is a few pixels. The branches that matter are those
+// unstable somewhere (their least ζ < 0), else the least-damped one; their points damped less
+// than this are in the panel.
+constexpr double kZoomDamping = 0.10;
+
+// The extent of those points (with Re λ = 0 always in it); `any` is false when there are none,
+// or when they already fill most of the full plot's width (no zoom needed).
+struct ZoomBounds {
+  double left = 0.0, right = 0.0, bottom = 0.0, top = 0.0;
+  bool any = false;
+  std::string branches;  // which, for the note: "the unstable branches" or the least-damped one's name
+};
+ZoomBounds zoom_bounds(const HuntingResult& r) {
+  ZoomBounds z;
+  std::vector<size_t> chosen;
+  for (size_t k = 0; k < r.branches.size(); ++k)
+    if (least_damping(r.branches[k]).value < 0.0) chosen.push_back(k);
+  z.branches = chosen.size() == 1 ? "the unstable branch" : "the unstable branches";
+  if (chosen.empty() && !r.branches.empty()) {
+    chosen.push_back(by_least_damping(r).front());
+    z.branches = "the least-damped branch, '" + r.branches[chosen.front()].name + "'";
+  }
+  z.bottom = std::numeric_limits<double>::infinity();
+  for (size_t k : chosen) {
+    const HuntingBranch& b = r.branches[k];
+    for (size_t i = 0; i < b.eigenvalues.size() && i < b.damping_ratio.size(); ++i) {
+      const std::complex<double> l = b.eigenvalues[i];
+      if (!(b.damping_ratio[i] < kZoomDamping) || !std::isfinite(l.real()) || !std::isfinite(l.imag())) continue;
+      z.any = true;
+      z.left = std::min(z.left, l.real()), z.right = std::max(z.right, l.real());
+      z.bottom = std::min(z.bottom, l.imag()), z.top = std::max(z.top, l.imag());
+    }
+  }
+  const LocusBounds full = locus_bounds(r);
+  if (z.any && z.left - z.right < 0.5 * (full.left - full.right)) z.any = false;  // wider than half the full plot
+  return z;
+}
+
+// The root locus around Re λ = 0: the same branches, the axes cut to the points damped less than
+// kZoomDamping of the branches that matter (the rest is clipped at the plot's edge).
+report::Chart root_locus_zoom_chart(const HuntingResult& r, const ZoomBounds& z) {
+  report::Chart c = root_locus_chart(r);
+  c.id = "root-locus-zoom";
+  c.title = "Root locus near the stability boundary (ζ < " + fixed(100.0 * kZoomDamping, 0) + " %)";
+  const double width = std::max(z.right - z.left, 1e-9);
+  c.x_min = z.left - 0.05 * width;
+  c.x_max = z.right + 0.05 * width;
+  const double bottom = z.bottom / (2.0 * M_PI), top = z.top / (2.0 * M_PI);
+  const double height = std::max(top - bottom, 0.05 * std::max(top, 1e-6));
+  c.y_min = std::max(0.0, bottom - 0.05 * height);
+  c.y_max = top + 0.05 * height;
   return c;
 }
 
@@ -523,6 +625,14 @@ void write_html(std::ostream& out, const Page& p) {
                                 "left of it."
                               : "")
       << "</p>\n";
+  if (const ZoomBounds z = zoom_bounds(r); z.any) {
+    out << "<h3>Near the stability boundary</h3>\n" << report::svg_chart(root_locus_zoom_chart(r, z));
+    out << "<p class=note>The same root locus with the axes cut to the points of " << html_escape(z.branches)
+        << " damped less than ζ = " << fixed(100.0 * kZoomDamping, 0) << " % (Re λ from " << significant(z.left, 3)
+        << " to " << significant(z.right, 3) << " 1/s, f from " << fixed(z.bottom / (2.0 * M_PI), 2) << " to "
+        << fixed(z.top / (2.0 * M_PI), 2)
+        << " Hz): the other branches, and the more damped points, are drawn only where they pass through it.</p>\n";
+  }
   out << "<h2>Branches</h2>\n";
   report::write_html_table(out, branches_table(r));
   out << "<p class=note>" << html_escape(kBranchNote) << "</p>\n";
@@ -534,6 +644,10 @@ void write_html(std::ostream& out, const Page& p) {
   report::write_html_table(out, contacts_table(r));
   out << "<p class=note>" << html_escape(kContactsNote) << "</p>\n<p class=note>" << html_escape(kLinearNote)
       << "</p>\n";
+  out << "<h2>Checks</h2>\n<p>" << html_escape(checks_text(r))
+      << ".</p>\n<p class=note>Method: " << html_escape(method_text(r)) << ".</p>\n";
+  for (const std::string& f : failed_checks(r))
+    out << "<p class=bad><b>Warning: check failed:</b> " << html_escape(f) << "</p>\n";
   report::write_html_footer(out, "stability", p.provenance);
 }
 
@@ -610,6 +724,18 @@ nlohmann::json contact_json(const ResolvedContact& c) {
   return j;
 }
 
+// The analysis' checks, without the stage times (they vary from run to run); a limit of +∞
+// (reported, not bounded) is null.
+nlohmann::json summary_json(const AnalysisSummary& s) {
+  nlohmann::json checks = nlohmann::json::array();
+  for (const Check& c : s.checks)
+    checks.push_back({{"name", c.name},
+                      {"value", number_or_null(c.value)},
+                      {"limit", number_or_null(c.limit)},
+                      {"passed", c.passed}});
+  return {{"analysis", s.analysis}, {"method", s.method}, {"checks", checks}};
+}
+
 // Streamed: the head as one object's members, then each branch dumped on its own (the eigenvalues
 // of a 1000-speed locus are most of the document), in the order written here.
 void write_json(std::ostream& out, const Page& p) {
@@ -622,15 +748,19 @@ void write_json(std::ostream& out, const Page& p) {
   member("analysis", "linear");
   member("verdict", to_string(r.verdict));
   member("critical", critical_json(r.critical));
+  member("summary", summary_json(r.summary));
   json intervals = json::array();
   for (const UnstableInterval& u : r.unstable_intervals)
-    intervals.push_back({{"from_kmh", u.from * kKmh},
+    intervals.push_back({{"from_m_s", u.from},
+                         {"from_kmh", u.from * kKmh},
+                         {"to_m_s", u.to},
                          {"to_kmh", u.to * kKmh},
                          {"from_lowest_speed", u.from_lowest_speed},
                          {"to_highest_speed", u.to_highest_speed},
                          {"branch", u.branch}});
   member("unstable_intervals", intervals);
   member("damping_threshold", r.damping_threshold ? json(*r.damping_threshold) : json(nullptr));
+  member("threshold_speed_m_s", r.threshold_speed ? json(*r.threshold_speed) : json(nullptr));
   member("threshold_speed_kmh", r.threshold_speed ? json(*r.threshold_speed * kKmh) : json(nullptr));
   member("threshold_at_lowest_speed", json(r.threshold_at_lowest_speed));
   json curve = json::array();
@@ -642,6 +772,7 @@ void write_json(std::ostream& out, const Page& p) {
   for (const ResolvedContact& c : r.contacts) contacts.push_back(contact_json(c));
   member("contacts", contacts);
   member("dofs", r.dofs);
+  member("speeds_m_s", r.speeds);
   json speeds = json::array();
   for (double v : r.speeds) speeds.push_back(v * kKmh);
   member("speeds_kmh", speeds);

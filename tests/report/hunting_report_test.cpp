@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -194,6 +195,102 @@ TEST(HuntingReport, EveryFormatIsWritten) {
   std::ostringstream out;
   EXPECT_THROW(write_hunting_stability(out, test::stable_result(), static_cast<OutputFormat>(99)),
                std::invalid_argument);
+}
+
+// The analysis' checks (HuntingResult::summary) are written in every format, as `modes` writes
+// its own; the stage times never are (outputs are byte for byte reproducible). Before, no
+// format wrote any of it.
+TEST(HuntingReport, ChecksAreWrittenInEveryFormatButNotTheTimes) {
+  HuntingResult r = test::stable_result();
+  r.summary.analysis = "hunting stability";
+  r.summary.method = "QR of the state matrix on 2 thread(s)";
+  r.summary.checks = {
+      {"max relative eigen residual", 1.234e-14, 1e-8, true},
+      {"1 − minimum branch continuity (MAC)", 0.5, 0.2, false},
+      {"refinement evaluations (eigenvalues only)", 37.0, std::numeric_limits<double>::infinity(), true}};
+  r.summary.stages = {{"eigensolve", 9.8765}};
+  const std::string table = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(table, "checks: max relative eigen residual 1.2e-14 (limit 1e-08)")) << table;
+  EXPECT_TRUE(has(table, "1 − minimum branch continuity (MAC) 0.5 (limit 0.2, FAILED)")) << table;
+  EXPECT_TRUE(has(table, "refinement evaluations (eigenvalues only) 37")) << table;
+  EXPECT_TRUE(has(table, "method: QR of the state matrix on 2 thread(s)")) << table;
+  EXPECT_TRUE(has(table, "warning: check failed: 1 − minimum branch continuity (MAC) 0.5, limit 0.2")) << table;
+  const std::string markdown = written(r, OutputFormat::markdown), html = written(r, OutputFormat::html);
+  EXPECT_TRUE(has(markdown, "## Checks")) << markdown;
+  EXPECT_TRUE(has(markdown, "2 thread(s)")) << markdown;
+  EXPECT_TRUE(has(html, "<h2>Checks</h2>")) << html;
+  EXPECT_TRUE(has(html, "max relative eigen residual 1.2e-14")) << html;
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  ASSERT_EQ(j["summary"]["checks"].size(), 3u);
+  EXPECT_EQ(j["summary"]["checks"][0]["name"], "max relative eigen residual");
+  EXPECT_DOUBLE_EQ(j["summary"]["checks"][0]["value"].get<double>(), 1.234e-14);
+  EXPECT_FALSE(j["summary"]["checks"][1]["passed"].get<bool>());
+  EXPECT_TRUE(j["summary"]["checks"][2]["limit"].is_null());  // +∞: reported, not bounded
+  EXPECT_EQ(j["summary"]["method"], "QR of the state matrix on 2 thread(s)");
+  for (const std::string& text : {table, markdown, html, j.dump()}) {
+    EXPECT_FALSE(has(text, "9.87")) << text;  // the stage time
+    EXPECT_FALSE(has(text, "eigensolve")) << text;
+  }
+}
+
+// Speeds in JSON are SI (m/s), with km/h beside as the comparison's JSON gives them.
+TEST(HuntingReport, JsonGivesSpeedsInMetresPerSecondWithKmhBeside) {
+  const HuntingResult r = test::two_interval_result();
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  ASSERT_EQ(j["speeds_m_s"].size(), r.speeds.size());
+  EXPECT_DOUBLE_EQ(j["speeds_m_s"][3].get<double>(), r.speeds[3]);
+  EXPECT_DOUBLE_EQ(j["speeds_kmh"][3].get<double>(), r.speeds[3] * 3.6);
+  EXPECT_DOUBLE_EQ(j["unstable_intervals"][0]["from_m_s"].get<double>(), 200.0 / 3.6);
+  EXPECT_DOUBLE_EQ(j["unstable_intervals"][0]["to_m_s"].get<double>(), 300.0 / 3.6);
+  EXPECT_DOUBLE_EQ(j["unstable_intervals"][0]["from_kmh"].get<double>(), 200.0);
+  EXPECT_DOUBLE_EQ(j["threshold_speed_m_s"].get<double>(), 150.0 / 3.6);
+  EXPECT_DOUBLE_EQ(j["critical"]["speed_m_s"].get<double>(), 200.0 / 3.6);
+}
+
+// A range from 0.01 km/h printed "0.0–100.0 km/h": as many decimals as tell it from zero.
+TEST(HuntingReport, ALowSpeedIsNotPrintedAsZero) {
+  HuntingResult r = test::stable_result();
+  r.speeds.front() = 0.01 / 3.6;
+  const std::string table = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(table, "speeds 0.01–500.0 km/h")) << table;
+  EXPECT_TRUE(has(table, "from 0.01 km/h")) << table;
+  EXPECT_TRUE(has(table, "f at 0.01 km/h")) << table;
+  EXPECT_FALSE(has(table, "0.0–")) << table;
+  EXPECT_TRUE(has(written(test::stable_result(), OutputFormat::table), "speeds 10.0–500.0 km/h"));  // as before
+}
+
+// The reports say what the CSV and JSON hold (each branch's root with Im λ > 0; the real roots
+// are left out: "every eigenvalue" was not true), and that the nonlinear critical speed has a
+// library function but no command.
+TEST(HuntingReport, NotesSayWhatTheFilesHoldAndWhatIsNotACommand) {
+  const std::string markdown = written(test::stable_result(), OutputFormat::markdown);
+  EXPECT_FALSE(has(markdown, "every eigenvalue")) << markdown;
+  EXPECT_TRUE(has(markdown, "the real roots, which do not oscillate, are left out")) << markdown;
+  EXPECT_TRUE(has(markdown, "solve_nonlinear_hunting")) << markdown;
+  EXPECT_TRUE(has(markdown, "no command runs it yet")) << markdown;
+}
+
+// A strongly damped 40 Hz branch sets the full locus' scale (Re λ near −80 1/s) and the hunting
+// crossing near Re λ = 0 is a few pixels: a zoomed panel shows the points damped less than 10 %.
+TEST(HuntingReport, RootLocusHasAZoomedPanelNearTheBoundary) {
+  HuntingResult r = test::two_interval_result();
+  r.branches.push_back(test::hand_branch(
+      "bogie yaw", r.speeds, [](double) { return 40.0; }, [](double) { return 0.3; }));
+  const std::string html = written(r, OutputFormat::html);
+  size_t charts = 0;
+  for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++charts;
+  EXPECT_EQ(charts, 3u);  // damping, root locus, and its zoom
+  EXPECT_TRUE(has(html, "plot-root-locus-zoom")) << html;
+  EXPECT_TRUE(has(html, "Near the stability boundary")) << html;
+  // The zoom's Re λ range: the hunting branch's points (ζ < 10 %), within a few 1/s of zero, not
+  // the bogie's −80.
+  const size_t note = html.find("Re λ from ");
+  ASSERT_NE(note, std::string::npos);
+  const double left = std::stod(html.substr(note + std::string("Re λ from ").size()));
+  EXPECT_GT(left, -3.0);
+  EXPECT_LT(left, 0.0);
+  // Without a strongly damped branch the full locus already shows the crossing: no zoom.
+  EXPECT_FALSE(has(written(test::two_interval_result(), OutputFormat::html), "root-locus-zoom"));
 }
 
 }  // namespace

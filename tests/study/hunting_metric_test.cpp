@@ -4,6 +4,8 @@
 // second last. Evaluated only when the study names the metric.
 #include <cmath>
 #include <limits>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "railmodal/railmodal.hpp"
@@ -79,6 +81,28 @@ TEST(HuntingMetric, MaximisedRanksStableFirstAndUnstableAtTheLowestSpeedLast) {
   EXPECT_NE(table.str().find("linear hunting speed, maximised [km/h]"), std::string::npos) << table.str();
   EXPECT_NE(table.str().find("linear hunting speed 0 km/h < 150 km/h"), std::string::npos) << table.str();
   EXPECT_NE(table.str().find("none"), std::string::npos) << table.str();
+}
+
+// In JSON a design stable throughout (+∞) and one with no value (no wheelsets) read differently:
+// "none" (the word the tables print, as hunting_speed_m_s writes it) against null. Before, both
+// objectives were null.
+TEST(HuntingMetric, JsonTellsStableThroughoutFromNoValue) {
+  Study s = hand_study({"a", "stable", "no wheelsets"});
+  s.ranking.objective.push_back({"hunting_speed", true, 1.0, {}});
+  const Comparison c = rank_variants(
+      s, {hunting(0, "a", 200.0 / 3.6), hunting(1, "stable", kInf), hunting(2, "no wheelsets", std::nullopt)});
+  std::ostringstream out;
+  write_comparison(out, c, OutputFormat::json);
+  const nlohmann::json j = nlohmann::json::parse(out.str());
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& v : j.at("variants")) by_name[v.at("name").get<std::string>()] = v;
+  EXPECT_EQ(by_name.at("stable").at("objective"), "none");
+  EXPECT_EQ(by_name.at("stable").at("criteria").at(0), "none");
+  EXPECT_EQ(by_name.at("stable").at("hunting_speed_m_s"), "none");
+  EXPECT_TRUE(by_name.at("no wheelsets").at("objective").is_null());
+  EXPECT_TRUE(by_name.at("no wheelsets").at("criteria").at(0).is_null());
+  EXPECT_FALSE(by_name.at("no wheelsets").contains("hunting_speed_m_s"));
+  EXPECT_DOUBLE_EQ(by_name.at("a").at("objective").get<double>(), 200.0 / 3.6);
 }
 
 TEST(HuntingMetric, OnlyAStudyThatNamesItPaysForIt) {

@@ -60,7 +60,12 @@ int main(int argc, char** argv) {
     std::cout << e.what() << "\n";
     return kSuccess;
   } catch (const CLI::ParseError& e) {
-    std::cerr << "railmodal: error: " << e.what() << "\nRun 'railmodal --help' for usage.\n";
+    // Point at the subcommand's own help when the error is in its options, as the commands' own
+    // usage errors do ("Run 'railmodal stability --help'").
+    const std::vector<CLI::App*> parsed = app.get_subcommands();
+    const std::string help =
+        parsed.empty() ? "railmodal --help" : "railmodal " + parsed.front()->get_name() + " --help";
+    std::cerr << "railmodal: error: " << e.what() << "\nRun '" << help << "' for usage.\n";
     return kUsage;
   }
   try {

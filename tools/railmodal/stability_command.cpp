@@ -26,7 +26,7 @@ struct StabilityOptions {
   std::string conicity;
   std::string threshold;
   int threads = 0;
-  std::string format = "table";
+  std::string format;  // "": from the output file's extension, else table
   std::string output = "-";
 };
 
@@ -35,15 +35,15 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-double speed_of(const std::string& text, const std::string& option) {
+// `why` says what the value must be above zero for.
+double speed_of(const std::string& text, const std::string& option, const std::string& why) {
   double speed = 0.0;
   try {
     speed = parse_speed(text);
   } catch (const std::invalid_argument& e) {
     throw UsageError(option + ": " + e.what());
   }
-  if (!(speed > 0.0) || !std::isfinite(speed))
-    throw UsageError(option + ": a speed must be above zero (the creep damping grows as 1/V), got '" + text + "'");
+  if (!(speed > 0.0) || !std::isfinite(speed)) throw UsageError(option + ": " + why + ", got '" + text + "'");
   return speed;
 }
 
@@ -52,13 +52,14 @@ void read_speeds(const StabilityOptions& o, HuntingOptions* h) {
   const size_t colon = o.speeds.find(':');
   if (colon == std::string::npos || o.speeds.find(':', colon + 1) != std::string::npos)
     throw UsageError("--speeds expects MIN:MAX such as \"10 km/h:500 km/h\", got '" + o.speeds + "'");
-  h->min_speed = speed_of(o.speeds.substr(0, colon), "--speeds");
-  h->max_speed = speed_of(o.speeds.substr(colon + 1), "--speeds");
+  const std::string why = "a speed must be above zero (the creep damping grows as 1/V)";
+  h->min_speed = speed_of(o.speeds.substr(0, colon), "--speeds", why);
+  h->max_speed = speed_of(o.speeds.substr(colon + 1), "--speeds", why);
   if (!(h->max_speed > h->min_speed))
     throw UsageError("--speeds: the highest speed must be above the lowest, got '" + o.speeds + "'");
   if (!o.speed_step.empty()) {
     if (o.speed_count > 0) throw UsageError("give --speed-count or --speed-step, not both");
-    const double step = speed_of(o.speed_step, "--speed-step");
+    const double step = speed_of(o.speed_step, "--speed-step", "the step between speeds must be above zero");
     // The grid is uniform from MIN to MAX: as many speeds as make its spacing at most the step.
     const double intervals = std::ceil((h->max_speed - h->min_speed) / step * (1.0 - 1e-12));
     if (intervals + 1.0 > static_cast<double>(kMaxSpeeds))
@@ -113,8 +114,24 @@ HuntingOptions hunting_options(const StabilityOptions& o) {
   return h;
 }
 
+// The format: --format's word (CLI11 checked it); without it, what the output file's extension
+// says (".html" writes HTML, not the text table into an .html file), else the text table.
+OutputFormat format_of(const StabilityOptions& o) {
+  if (!o.format.empty()) return *output_format_from_string(o.format);
+  const size_t dot = o.output.rfind('.'), slash = o.output.find_last_of("/\\");
+  if (o.output == "-" || dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return OutputFormat::table;
+  std::string ext = o.output.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == "html" || ext == "htm") return OutputFormat::html;
+  if (ext == "csv") return OutputFormat::csv;
+  if (ext == "json") return OutputFormat::json;
+  if (ext == "md" || ext == "markdown") return OutputFormat::markdown;
+  return OutputFormat::table;
+}
+
 int run(const StabilityOptions& o) {
-  const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
+  const OutputFormat format = format_of(o);
   HuntingOptions options;
   try {
     options = hunting_options(o);
@@ -138,9 +155,12 @@ int run(const StabilityOptions& o) {
       // decouples in the linear model of a vehicle symmetric about its centre line).
       result = solve_hunting_stability(assemble(vehicle, DofSet::lateral), options);
     } catch (const std::invalid_argument& e) {
-      throw InputError(o.vehicle, 0, 0, e.what());  // a wheelset or contact value this vehicle cannot take
+      // The options were checked above (HuntingOptions::is_valid), so this is a wheelset or
+      // contact value the reader let through and the contact model cannot take
+      // (wheel_rail_contact.cpp names the wheelset): an input error of the file, whose line is
+      // not known here; InputError with line 0 prints "FILE: error: ...", no position.
+      throw InputError(o.vehicle, 0, 0, e.what());
     }
-    result.damping_threshold = options.damping_threshold;
     write_hunting_stability(out, result, format, vehicle.name, provenance_of({o.vehicle}));
     outputs.commit();
     return kSuccess;
@@ -179,11 +199,12 @@ std::function<int()> add_stability_command(CLI::App& app) {
                   "least-damped branch's damping falls to it");
   cmd->add_option("--threads", options->threads, "Threads over speeds and conicities; 0 (default): every core")
       ->check(CLI::Range(0, 1024));
-  cmd->add_option("--format", options->format,
-                  "Output format: table, csv (every eigenvalue), json, markdown, html (with the root locus, "
-                  "damping and conicity plots)")
-      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}))
-      ->capture_default_str();
+  cmd->add_option(
+         "--format", options->format,
+         "Output format: table, csv (each oscillatory branch's eigenvalue, Im λ > 0, at every speed; real roots "
+         "left out), json, markdown, html (with the root locus, damping and conicity plots); default: "
+         "from the -o file's extension (.html, .csv, .json, .md), else table")
+      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   return [options] { return run(*options); };
