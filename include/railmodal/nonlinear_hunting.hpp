@@ -101,8 +101,8 @@ struct NonlinearHuntingOptions {
 };
 
 enum class NonlinearHuntingVerdict {
-  limit_cycle_dies_out,    ///< a limit cycle was established and died out during the ramp
-  survives_to_end_speed,   ///< the oscillation still lives at the end speed: the critical speed is below it
+  limit_cycle_dies_out,     ///< a limit cycle was established and died out during the ramp
+  survives_to_end_speed,    ///< the oscillation still lives at the end speed: the critical speed is below it
   no_limit_cycle_at_start,  ///< the disturbance decayed at once: no limit cycle at the start speed
   /// The amplitude passed options.amplitude_bound: the oscillation grows without bound (a law
   /// without saturation or flange above its critical speed); the run stopped there.

@@ -120,7 +120,7 @@ HeldCriticalSpeed confirm_by_holding(const stability::LateralEquations& e, const
   bool low_dies = false;
   for (int widen = 0; !hold(high, o.hold_periods); ++widen) {
     if (widen == 4 || high >= top) return held;  // nothing survives near the ramp's answer: unconfirmed
-    low = high;  // it died there: the bracket's lower end
+    low = high;                                  // it died there: the bracket's lower end
     low_dies = true;
     high = std::min(high + o.hold_margin, top);
   }
@@ -187,9 +187,8 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
   } else if (options.hold_periods == 0) {
     // No confirmation asked for: the ramp's answer stands, converged when halving the rate moves
     // it by less than the tolerance.
-    r.convergence = same_verdict && r.convergence_difference <= options.tolerance
-                        ? NonlinearConvergence::converged
-                        : NonlinearConvergence::not_converged;
+    r.convergence = same_verdict && r.convergence_difference <= options.tolerance ? NonlinearConvergence::converged
+                                                                                  : NonlinearConvergence::not_converged;
   } else {
     r.hold = confirm_by_holding(equations, options, r.stated_rate, branch);
     stage("holds of the speed");
@@ -200,8 +199,8 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
     r.convergence = same_verdict && bracket <= options.tolerance && h.doubled_hold_survives
                         ? NonlinearConvergence::converged
                         : NonlinearConvergence::not_converged;
-    r.summary.checks.push_back({"bracket of the held critical speed, m/s", bracket, options.tolerance,
-                                bracket <= options.tolerance});
+    r.summary.checks.push_back(
+        {"bracket of the held critical speed, m/s", bracket, options.tolerance, bracket <= options.tolerance});
     r.summary.checks.push_back({"held critical speed dies in a hold twice as long (count)",
                                 h.doubled_hold_survives ? 0.0 : 1.0, 0.0, h.doubled_hold_survives});
   }

@@ -242,8 +242,8 @@ SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o
   // The hunting period is at least the Klingel period of the wheelset (a bogie's is longer, by
   // up to about two): four times the Klingel time of the periods is more than enough time.
   const double wavelength = std::max(klingel_wavelength(w), 1.0);
-  hold.steps = integrate(e, [speed](double) { return speed; }, 4.0 * periods * wavelength / speed,
-                         largest_step(e, speed), x, watch);
+  hold.steps = integrate(
+      e, [speed](double) { return speed; }, 4.0 * periods * wavelength / speed, largest_step(e, speed), x, watch);
   const auto& p = cycles.peaks();
   const bool grew = std::abs(axle_lateral(w, x)) > o.amplitude_bound;
   hold.periods = static_cast<int>(p.size()) / 2;
@@ -252,8 +252,7 @@ SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o
   // approach to a cycle just above it: a hold survives when, besides never falling below half the
   // start, its amplitude no longer falls over the last quarter of the hold (by more than 1%, the
   // settling still left in a hold that ends on a cycle).
-  const bool settled =
-      p.size() >= 4 && p.back().amplitude >= (1.0 - kSettled) * p[p.size() * 3 / 4 - 1].amplitude;
+  const bool settled = p.size() >= 4 && p.back().amplitude >= (1.0 - kSettled) * p[p.size() * 3 / 4 - 1].amplitude;
   hold.survives = !died && (grew || (static_cast<int>(p.size()) >= 2 * periods + 1 && settled));
   return hold;
 }
