@@ -79,23 +79,39 @@ struct NonlinearHuntingOptions {
   double start_speed = 100.0;       ///< m/s: where the ramp starts, with the disturbance
   double end_speed = 5.0;           ///< m/s: where it stops, 0 < end_speed < start_speed
   double ramp_rate = 0.5;           ///< m/s²: how fast the speed falls, > 0
-  double disturbance = 0.005;       ///< m: the first wheelset's initial lateral displacement, ≠ 0
-  /// m: an oscillation of the first wheelset below this amplitude has died out, > 0.
+  double disturbance = 0.005;       ///< m: every wheelset's initial lateral displacement, ≠ 0
+  /// m: an oscillation whose largest wheelset amplitude is below this has died out, > 0.
   double extinction_amplitude = 1e-4;
-  /// m/s: the convergence check passes when halving the ramp rate moves the critical speed less.
-  double tolerance = 0.5;
+  /// m: a lateral amplitude beyond this is unbounded growth (a law without saturation or flange
+  /// above its critical speed): the run stops there with that verdict. 0.1 m is ten times any
+  /// flange clearance: no wheelset on a track gets there. > extinction_amplitude.
+  double amplitude_bound = 0.1;
+  /// m/s: the held critical speed is bracketed to within this (docs/stability.md). 0.05 m/s
+  /// (0.18 km/h) is well under the ramp's own bias (0.2–0.3 m/s at 0.5 m/s² on the wheelset on
+  /// springs) and what a hold of hold_periods resolves there (the doubled hold agrees). > 0.
+  double tolerance = 0.05;
+  /// Periods a held speed must keep its limit cycle to count as surviving (the confirmation); the
+  /// check holds the answer again for twice as long. ≥ 10; 0 skips the confirmation (the ramp's
+  /// answer is then the critical speed).
+  int hold_periods = 300;
+  /// m/s: the confirmation bisects between the ramp's answer minus this and the answer (widening
+  /// by this step, up to 4 times, when an end is not a bracket). > 0.
+  double hold_margin = 1.0;
   bool is_valid(std::string* why) const;
 };
 
 enum class NonlinearHuntingVerdict {
-  limit_cycle_dies_out,    ///< a limit cycle was established and died out during the ramp
-  survives_to_end_speed,   ///< the oscillation still lives at the end speed: the critical speed is below it
-  no_limit_cycle_at_start  ///< the disturbance decayed at once: no limit cycle at the start speed
+  limit_cycle_dies_out,     ///< a limit cycle was established and died out during the ramp
+  survives_to_end_speed,    ///< the oscillation still lives at the end speed: the critical speed is below it
+  no_limit_cycle_at_start,  ///< the disturbance decayed at once: no limit cycle at the start speed
+  /// The amplitude passed options.amplitude_bound: the oscillation grows without bound (a law
+  /// without saturation or flange above its critical speed); the run stopped there.
+  unbounded_growth
 };
 const char* to_string(NonlinearHuntingVerdict verdict);
 std::optional<NonlinearHuntingVerdict> nonlinear_hunting_verdict_from_string(const std::string& word);
 
-/// One half cycle of the first wheelset's lateral motion during the ramp.
+/// One half cycle of the watched wheelset's lateral motion during the ramp.
 struct LimitCyclePoint {
   double speed = 0.0;      ///< m/s at the half cycle's peak
   double amplitude = 0.0;  ///< m: the largest |y| of the axle centre over the half cycle
@@ -114,30 +130,73 @@ struct RampDown {
   double amplitude = 0.0;              ///< m: the amplitude at the branch end
   std::vector<LimitCyclePoint> curve;  ///< every half cycle until the oscillation died out
   int steps = 0;                       ///< accepted Runge–Kutta steps
+  /// Index (into Vehicle::wheelsets) of the wheelset whose amplitude the curve is: the one with
+  /// the largest lateral amplitudes over the ramp (Σ of its half-cycle amplitudes), so hunting
+  /// carried by any wheelset is seen.
+  int watched_wheelset = 0;
 };
+
+/// One held speed of the confirmation: the ramp's state on the branch, integrated at a fixed speed.
+struct SpeedHold {
+  double speed = 0.0;            ///< m/s
+  bool survives = false;         ///< the amplitude stayed above half the start's for all the periods
+  double start_amplitude = 0.0;  ///< m: the watched wheelset's amplitude in the start state
+  double end_amplitude = 0.0;    ///< m: its last half cycle's amplitude
+  int periods = 0;               ///< periods held (fewer when it died, or grew past the bound)
+  int steps = 0;                 ///< accepted Runge–Kutta steps
+};
+
+/// The critical speed by holding the speed: the lowest speed at which a limit cycle started on the
+/// branch survives options.hold_periods periods, bracketed by bisection.
+struct HeldCriticalSpeed {
+  std::optional<double> lowest_surviving;  ///< m/s: the lowest held speed whose cycle survived
+  std::optional<double> highest_dying;     ///< m/s: the highest held speed below it whose cycle died
+  /// lowest_surviving held again for 2·hold_periods still survives (the hold is long enough).
+  bool doubled_hold_survives = false;
+  std::vector<SpeedHold> holds;  ///< in the order held, the doubled hold last
+  int steps = 0;                 ///< Σ steps of the holds
+};
+
+/// Whether the critical speed is converged.
+enum class NonlinearConvergence {
+  converged,      ///< held critical speed bracketed to within options.tolerance, and the doubled hold survives
+  not_converged,  ///< the rates disagree on the verdict, or the confirmation failed to bracket or confirm
+  not_applicable  ///< both rates agree there is no critical speed (none at the start, survives, unbounded)
+};
+const char* to_string(NonlinearConvergence convergence);
 
 struct NonlinearHuntingResult {
   NonlinearHuntingVerdict verdict = NonlinearHuntingVerdict::no_limit_cycle_at_start;  ///< of the stated rate
-  std::optional<double> critical_speed;  ///< m/s: the nonlinear critical speed at the stated ramp rate
-  double amplitude = 0.0;                ///< m: the limit cycle's amplitude there
+  /// m/s: the nonlinear critical speed: the held one (hold.lowest_surviving) when the
+  /// confirmation ran and bracketed it, else the ramp's at the stated rate.
+  std::optional<double> critical_speed;
+  double amplitude = 0.0;  ///< m: the limit cycle's amplitude at the branch end of the stated rate
   /// The bifurcation plot data: limit-cycle amplitude against speed, one point a half cycle.
   std::vector<LimitCyclePoint> curve;
   RampDown stated_rate;  ///< the ramp at options.ramp_rate
   RampDown halved_rate;  ///< the ramp at options.ramp_rate / 2
-  /// |critical speed at the stated rate − at the halved rate|, m/s; infinite when either has none.
+  /// |critical speed at the stated rate − at the halved rate|, m/s: how far the ramp lags;
+  /// infinite when either has none (then see `convergence`).
   double convergence_difference = 0.0;
-  bool converged = false;  ///< same verdict, and the difference within options.tolerance
+  /// 2·V(rate/2) − V(rate), m/s: the ramps' answers extrapolated to a zero rate, if the lag is
+  /// linear in the rate (information: near a fold it is not, and it stays biased upward).
+  std::optional<double> richardson_critical_speed;
+  HeldCriticalSpeed hold;  ///< the confirmation by holding the speed (empty when not run)
+  NonlinearConvergence convergence = NonlinearConvergence::not_applicable;
+  bool converged = false;  ///< convergence == converged
   AnalysisSummary summary;
 };
 
-/// Ramps the speed down from options.start_speed, the first wheelset displaced by
+/// Ramps the speed down from options.start_speed, every wheelset displaced by
 /// options.disturbance, integrating M q̈ + C q̇ + K q + (series dampers) = contact forces(q, q̇, V)
-/// (Dormand–Prince 5(4), adaptive), twice: at the stated ramp rate and at half of it.
+/// (Dormand–Prince 5(4), adaptive), twice: at the stated ramp rate and at half of it; then, when
+/// the stated rate lost a limit cycle, confirms the speed by holding it (HeldCriticalSpeed).
 ///
 /// `system` is an assembly of the lateral motions (DofSet::lateral) of a vehicle with wheelsets.
 /// Throws std::invalid_argument for bad options or a vehicle without wheelsets (as
 /// contact_matrices); NumericalError when the integration fails (naming the speed). A limit
-/// cycle that survives to the end speed, or none at the start, is a verdict, never an exception.
+/// cycle that survives to the end speed, none at the start, or unbounded growth is a verdict, never an
+/// exception.
 NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const NonlinearHuntingOptions& options = {});
 
 }  // namespace railmodal

@@ -1,7 +1,9 @@
 // The nonlinear critical speed: two ramp-downs, at the stated rate and at half of it, and the
-// convergence check between them (docs/stability.md, "The nonlinear critical speed").
+// confirmation by holding the speed, bisected between the ramp's answer and a margin below it
+// (docs/stability.md, "The nonlinear critical speed").
 #include "railmodal/nonlinear_hunting.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -36,6 +38,20 @@ const char* to_string(NonlinearHuntingVerdict verdict) {
       return "survives_to_end_speed";
     case NonlinearHuntingVerdict::no_limit_cycle_at_start:
       return "no_limit_cycle_at_start";
+    case NonlinearHuntingVerdict::unbounded_growth:
+      return "unbounded_growth";
+  }
+  return "?";
+}
+
+const char* to_string(NonlinearConvergence convergence) {
+  switch (convergence) {
+    case NonlinearConvergence::converged:
+      return "converged";
+    case NonlinearConvergence::not_converged:
+      return "not_converged";
+    case NonlinearConvergence::not_applicable:
+      return "not_applicable";
   }
   return "?";
 }
@@ -43,7 +59,7 @@ const char* to_string(NonlinearHuntingVerdict verdict) {
 std::optional<NonlinearHuntingVerdict> nonlinear_hunting_verdict_from_string(const std::string& word) {
   for (NonlinearHuntingVerdict v :
        {NonlinearHuntingVerdict::limit_cycle_dies_out, NonlinearHuntingVerdict::survives_to_end_speed,
-        NonlinearHuntingVerdict::no_limit_cycle_at_start})
+        NonlinearHuntingVerdict::no_limit_cycle_at_start, NonlinearHuntingVerdict::unbounded_growth})
     if (word == to_string(v)) return v;
   return std::nullopt;
 }
@@ -67,9 +83,69 @@ bool NonlinearHuntingOptions::is_valid(std::string* why) const {
   if (!(disturbance != 0.0 && finite(disturbance))) return fail("disturbance must be nonzero");
   if (!(extinction_amplitude > 0.0 && finite(extinction_amplitude)))
     return fail("extinction_amplitude must be positive");
+  if (!(amplitude_bound > extinction_amplitude && finite(amplitude_bound)))
+    return fail("amplitude_bound must be finite and above extinction_amplitude");
   if (!(tolerance > 0.0 && finite(tolerance))) return fail("tolerance must be positive");
+  if (!(hold_periods == 0 || (hold_periods >= 10 && hold_periods <= 100000)))
+    return fail("hold_periods must be 0 (no confirmation) or from 10 to 100000");
+  if (!(hold_margin > 0.0 && finite(hold_margin))) return fail("hold_margin must be positive");
   return true;
 }
+
+namespace {
+
+// The confirmation: bisects on "does a cycle started on the branch survive hold_periods at this
+// speed" between the ramp's answer minus a margin and the answer (widened by the margin when an end
+// does not bracket), to the tolerance; then holds the lowest surviving speed twice as long.
+HeldCriticalSpeed confirm_by_holding(const stability::LateralEquations& e, const NonlinearHuntingOptions& o,
+                                     const RampDown& ramp, const stability::BranchStates& branch) {
+  HeldCriticalSpeed held;
+  const auto& curve = ramp.curve;
+  // The start state for speed V: the ramp's state on the branch at V (the last half-cycle peak
+  // at or above V; the branch end for any speed below it).
+  const auto start_for = [&](double speed) -> const Eigen::VectorXd& {
+    std::size_t i = 0;
+    while (i < branch.branch_end && curve[i + 1].speed >= speed) ++i;
+    return branch.states[i];
+  };
+  const auto hold = [&](double speed, int periods) {
+    const SpeedHold h = stability::hold_speed(e, o, speed, start_for(speed), ramp.watched_wheelset, periods);
+    held.holds.push_back(h);
+    held.steps += h.steps;
+    return h.survives;
+  };
+  const double top = o.start_speed, bottom = o.end_speed;
+  double high = std::min(*ramp.critical_speed, top);
+  double low = std::max(high - o.hold_margin, bottom);
+  bool low_dies = false;
+  for (int widen = 0; !hold(high, o.hold_periods); ++widen) {
+    if (widen == 4 || high >= top) return held;  // nothing survives near the ramp's answer: unconfirmed
+    low = high;                                  // it died there: the bracket's lower end
+    low_dies = true;
+    high = std::min(high + o.hold_margin, top);
+  }
+  for (int widen = 0; !low_dies; ++widen) {
+    if (low < high && !hold(low, o.hold_periods)) {
+      low_dies = true;
+      break;
+    }
+    if (widen == 4 || low <= bottom) break;
+    high = low;
+    low = std::max(low - o.hold_margin, bottom);
+  }
+  if (low_dies) {
+    while (high - low > o.tolerance) {
+      const double middle = 0.5 * (high + low);
+      (hold(middle, o.hold_periods) ? high : low) = middle;
+    }
+    held.highest_dying = low;
+  }
+  held.lowest_surviving = high;
+  held.doubled_hold_survives = hold(high, 2 * o.hold_periods);
+  return held;
+}
+
+}  // namespace
 
 NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const NonlinearHuntingOptions& options) {
   std::string why;
@@ -77,7 +153,9 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
   using clock = std::chrono::steady_clock;
   NonlinearHuntingResult r;
   r.summary.analysis = "nonlinear critical speed";
-  r.summary.method = "ramp-down of the speed, Dormand-Prince 5(4) with adaptive steps, twice (rate and half rate)";
+  r.summary.method =
+      "ramp-down of the speed, Dormand-Prince 5(4) with adaptive steps, twice (rate and half rate); confirmed by "
+      "holding the speed, bisected";
   auto start = clock::now();
   const auto stage = [&](const std::string& name) {
     const auto now = clock::now();
@@ -86,7 +164,8 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
   };
   const stability::LateralEquations equations(system, options);
   stage("equations");
-  r.stated_rate = stability::ramp_down(equations, options, options.ramp_rate);
+  stability::BranchStates branch;
+  r.stated_rate = stability::ramp_down(equations, options, options.ramp_rate, &branch);
   stage("ramp at the stated rate");
   r.halved_rate = stability::ramp_down(equations, options, options.ramp_rate / 2.0);
   stage("ramp at half the rate");
@@ -95,16 +174,39 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
   r.critical_speed = r.stated_rate.critical_speed;
   r.amplitude = r.stated_rate.amplitude;
   r.curve = r.stated_rate.curve;
-  r.convergence_difference = r.stated_rate.critical_speed && r.halved_rate.critical_speed
-                                 ? std::abs(*r.stated_rate.critical_speed - *r.halved_rate.critical_speed)
-                                 : std::numeric_limits<double>::infinity();
-  r.converged =
-      r.stated_rate.verdict == r.halved_rate.verdict &&
-      (r.verdict != NonlinearHuntingVerdict::limit_cycle_dies_out || r.convergence_difference <= options.tolerance);
-  r.summary.checks.push_back(
-      {"critical speed change on halving the ramp rate, m/s",
-       r.verdict == NonlinearHuntingVerdict::limit_cycle_dies_out ? r.convergence_difference : 0.0, options.tolerance,
-       r.converged});
+  const bool both = r.stated_rate.critical_speed && r.halved_rate.critical_speed;
+  r.convergence_difference = both ? std::abs(*r.stated_rate.critical_speed - *r.halved_rate.critical_speed)
+                                  : std::numeric_limits<double>::infinity();
+  if (both) r.richardson_critical_speed = 2.0 * *r.halved_rate.critical_speed - *r.stated_rate.critical_speed;
+  const bool same_verdict = r.stated_rate.verdict == r.halved_rate.verdict;
+  r.summary.checks.push_back({"critical speed change on halving the ramp rate, m/s (reported)",
+                              both ? r.convergence_difference : 0.0, std::numeric_limits<double>::infinity(), true});
+  if (r.verdict != NonlinearHuntingVerdict::limit_cycle_dies_out) {
+    // No critical speed to converge: the verdict is the answer, if both rates give it.
+    r.convergence = same_verdict ? NonlinearConvergence::not_applicable : NonlinearConvergence::not_converged;
+  } else if (options.hold_periods == 0) {
+    // No confirmation asked for: the ramp's answer stands, converged when halving the rate moves
+    // it by less than the tolerance.
+    r.convergence = same_verdict && r.convergence_difference <= options.tolerance ? NonlinearConvergence::converged
+                                                                                  : NonlinearConvergence::not_converged;
+  } else {
+    r.hold = confirm_by_holding(equations, options, r.stated_rate, branch);
+    stage("holds of the speed");
+    const HeldCriticalSpeed& h = r.hold;
+    if (h.lowest_surviving) r.critical_speed = h.lowest_surviving;
+    const double bracket = h.lowest_surviving && h.highest_dying ? *h.lowest_surviving - *h.highest_dying
+                                                                 : std::numeric_limits<double>::infinity();
+    r.convergence = same_verdict && bracket <= options.tolerance && h.doubled_hold_survives
+                        ? NonlinearConvergence::converged
+                        : NonlinearConvergence::not_converged;
+    r.summary.checks.push_back(
+        {"bracket of the held critical speed, m/s", bracket, options.tolerance, bracket <= options.tolerance});
+    r.summary.checks.push_back({"held critical speed dies in a hold twice as long (count)",
+                                h.doubled_hold_survives ? 0.0 : 1.0, 0.0, h.doubled_hold_survives});
+  }
+  r.converged = r.convergence == NonlinearConvergence::converged;
+  if (r.convergence == NonlinearConvergence::not_converged && !same_verdict)
+    r.summary.checks.push_back({"ramp rates with different verdicts (count)", 1.0, 0.0, false});
   return r;
 }
 

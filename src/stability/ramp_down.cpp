@@ -1,11 +1,14 @@
 // The ramp-down: Dormand–Prince 5(4) with an adaptive step over the speed ramp, and the
-// limit-cycle amplitude read off each half cycle (docs/stability.md, "The nonlinear critical
-// speed", says what this can and cannot show).
+// limit-cycle amplitude read off each half cycle of every wheelset; the held speed: the same at a
+// fixed speed (docs/stability.md, "The nonlinear critical speed", says what this can and cannot
+// show).
 #include "stability/ramp_down.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
+#include <utility>
 
 #include "railmodal/errors.hpp"
 #include "simulate/dormand_prince.hpp"
@@ -25,43 +28,94 @@ constexpr double kOnBranchDecay = 0.005;
 // Samples per hunting period at the start speed: the amplitude is the largest sampled |y| of a
 // half cycle, so it is low by at most 1 − cos(π/100) ≈ 5e-4 of itself.
 constexpr double kSamplesPerPeriod = 100.0;
+// A held cycle whose amplitude falls by more than this over the last quarter of the hold is dying.
+constexpr double kSettled = 0.01;
+
+double klingel_wavelength(const WheelsetContact& w) {
+  const auto& g = w.geometry;
+  return g.conicity > 0.0 ? 2.0 * kPi * std::sqrt(g.rolling_radius * g.contact_half_spacing / g.conicity) : 0.0;
+}
 
 // The largest step: a hundredth of the shortest kinematic period (Klingel's wavelength over
 // the start speed), and never more than 10 ms.
 double largest_step(const LateralEquations& e, double start_speed) {
   double step = 0.01;
   for (const WheelsetContact& w : e.wheelsets()) {
-    const auto& g = w.geometry;
-    if (g.conicity <= 0.0) continue;
-    const double wavelength = 2.0 * kPi * std::sqrt(g.rolling_radius * g.contact_half_spacing / g.conicity);
-    step = std::min(step, wavelength / start_speed / kSamplesPerPeriod);
+    const double wavelength = klingel_wavelength(w);
+    if (wavelength > 0.0) step = std::min(step, wavelength / start_speed / kSamplesPerPeriod);
   }
   return step;
 }
 
-// Follows the half cycles of y: a new one at every change of sign.
+// The axle centre's lateral displacement of wheelset w.
+double axle_lateral(const WheelsetContact& w, const Eigen::VectorXd& x) { return x[w.lateral] + w.lever * x[w.yaw]; }
+
+// Follows the half cycles of y: a new one at every change of sign; keeps the state at each peak.
 class HalfCycles {
  public:
-  void add(double y, double speed) {
+  void add(double y, double speed, const Eigen::VectorXd& x) {
     if (y * sign_ < 0.0) close();
     if (y != 0.0) sign_ = y > 0.0 ? 1.0 : -1.0;
-    if (std::abs(y) > peak_.amplitude) peak_ = {speed, std::abs(y)};
+    if (std::abs(y) > peak_.amplitude) {
+      peak_ = {speed, std::abs(y)};
+      if (keep_states_) peak_state_ = x;
+    }
   }
+  void keep_states() { keep_states_ = true; }
   // The last, unfinished half cycle counts too: an oscillation that stops crossing zero ends there.
-  std::vector<LimitCyclePoint> finish() {
-    close();
-    return std::move(peaks_);
-  }
+  void finish() { close(); }
+  const std::vector<LimitCyclePoint>& peaks() const { return peaks_; }
+  std::vector<LimitCyclePoint>& peaks() { return peaks_; }
+  std::vector<Eigen::VectorXd>& states() { return states_; }
+  double current_peak() const { return peak_.amplitude; }
 
  private:
   void close() {
-    if (peak_.amplitude > 0.0) peaks_.push_back(peak_);
+    if (peak_.amplitude > 0.0) {
+      peaks_.push_back(peak_);
+      if (keep_states_) states_.push_back(peak_state_);
+    }
     peak_ = {};
   }
   double sign_ = 0.0;
+  bool keep_states_ = false;
   LimitCyclePoint peak_;
+  Eigen::VectorXd peak_state_;
   std::vector<LimitCyclePoint> peaks_;
+  std::vector<Eigen::VectorXd> states_;
 };
+
+// Integrates ẋ = f(t, x) from t = 0 until `duration` or until on_step (called after every accepted
+// step with the new t and x) returns false; returns the accepted steps.
+int integrate(const LateralEquations& e, const std::function<double(double)>& speed_at, double duration, double h_max,
+              Eigen::VectorXd& x, const std::function<bool(double, const Eigen::VectorXd&)>& on_step) {
+  const auto rhs = [&](double t, const Eigen::VectorXd& state, Eigen::VectorXd* dx) {
+    e.derivative(speed_at(t), state, dx);
+  };
+  int steps = 0;
+  double t = 0.0, h = h_max / 10.0;
+  while (t < duration) {
+    h = std::min({h, h_max, duration - t});
+    const simulate::DormandPrinceStep step = simulate::dormand_prince_step(rhs, t, x, h);
+    double error = 0.0;
+    for (Eigen::Index i = 0; i < x.size(); ++i)
+      error = std::max(error,
+                       std::abs(step.error[i]) /
+                           (kAbsoluteTolerance + kRelativeTolerance * std::max(std::abs(x[i]), std::abs(step.y[i]))));
+    if (!std::isfinite(error) || h < 1e-12 * std::max(1.0, duration))
+      throw NumericalError("solve_nonlinear_hunting: the integration failed at " + std::to_string(speed_at(t)) +
+                           " m/s (step " + std::to_string(h) + " s, error " + std::to_string(error) + ")");
+    if (error <= 1.0) {
+      t += h;
+      x = step.y;
+      ++steps;
+      if (!on_step(t, x)) break;
+    }
+    // The usual controller of a fifth-order pair, kept within a factor of five either way.
+    h *= std::clamp(0.9 * std::pow(std::max(error, 1e-10), -0.2), 0.2, 5.0);
+  }
+  return steps;
+}
 
 // Where the collapse began. Just after the branch ends the decay per half cycle,
 // d = ln(A_prev/A), grows from 0 about linearly as the speed falls (for a linear law,
@@ -92,7 +146,7 @@ double onset_of_decay(const std::vector<LimitCyclePoint>& peaks, std::size_t las
 // The verdict from the half cycles: the oscillation died out after the last half cycle at or
 // above the extinction amplitude; the limit cycle it came from ends at the last half cycle before
 // that whose amplitude was not collapsing (walking back over the collapse).
-void read_verdict(std::vector<LimitCyclePoint> peaks, double extinction, RampDown* r) {
+void read_verdict(std::vector<LimitCyclePoint> peaks, double extinction, RampDown* r, std::size_t* branch_end) {
   std::size_t alive = peaks.size();
   while (alive > 0 && peaks[alive - 1].amplitude < extinction) --alive;
   if (alive == peaks.size() && alive > 0) {
@@ -110,48 +164,97 @@ void read_verdict(std::vector<LimitCyclePoint> peaks, double extinction, RampDow
     r->verdict = NonlinearHuntingVerdict::limit_cycle_dies_out;
     r->critical_speed = onset_of_decay(peaks, last, alive);
     r->amplitude = peaks[last].amplitude;
+    *branch_end = last;
   }
   r->curve = std::move(peaks);
 }
 
 }  // namespace
 
-RampDown ramp_down(const LateralEquations& e, const NonlinearHuntingOptions& o, double ramp_rate) {
+RampDown ramp_down(const LateralEquations& e, const NonlinearHuntingOptions& o, double ramp_rate,
+                   BranchStates* branch) {
   RampDown r;
   r.ramp_rate = ramp_rate;
   Eigen::VectorXd x = Eigen::VectorXd::Zero(e.size());
-  x[e.wheelsets().front().lateral] = o.disturbance;
+  for (const WheelsetContact& w : e.wheelsets()) x[w.lateral] = o.disturbance;
   const double duration = (o.start_speed - o.end_speed) / ramp_rate;
-  const double h_max = largest_step(e, o.start_speed);
   const auto speed_at = [&](double t) { return o.start_speed - ramp_rate * t; };
-  const auto rhs = [&](double t, const Eigen::VectorXd& state, Eigen::VectorXd* dx) {
-    e.derivative(speed_at(t), state, dx);
-  };
-  HalfCycles cycles;
-  cycles.add(e.leading_lateral(x), o.start_speed);
-  double t = 0.0, h = h_max / 10.0;
-  while (t < duration) {
-    h = std::min({h, h_max, duration - t});
-    const simulate::DormandPrinceStep step = simulate::dormand_prince_step(rhs, t, x, h);
-    double error = 0.0;
-    for (Eigen::Index i = 0; i < x.size(); ++i)
-      error = std::max(error,
-                       std::abs(step.error[i]) /
-                           (kAbsoluteTolerance + kRelativeTolerance * std::max(std::abs(x[i]), std::abs(step.y[i]))));
-    if (!std::isfinite(error) || h < 1e-12 * std::max(1.0, duration))
-      throw NumericalError("solve_nonlinear_hunting: the integration failed at " + std::to_string(speed_at(t)) +
-                           " m/s (step " + std::to_string(h) + " s, error " + std::to_string(error) + ")");
-    if (error <= 1.0) {
-      t += h;
-      x = step.y;
-      ++r.steps;
-      cycles.add(e.leading_lateral(x), speed_at(t));
+  std::vector<HalfCycles> cycles(e.wheelsets().size());
+  bool unbounded = false;
+  const auto watch = [&](double t, const Eigen::VectorXd& state) {
+    for (std::size_t k = 0; k < cycles.size(); ++k) {
+      const double y = axle_lateral(e.wheelsets()[k], state);
+      cycles[k].add(y, speed_at(t), state);
+      // Beyond the bound nothing physical is left to follow: stop, before the growth overflows.
+      if (std::abs(y) > o.amplitude_bound) unbounded = true;
     }
-    // The usual controller of a fifth-order pair, kept within a factor of five either way.
-    h *= std::clamp(0.9 * std::pow(std::max(error, 1e-10), -0.2), 0.2, 5.0);
+    return !unbounded;
+  };
+  if (branch)
+    for (HalfCycles& c : cycles) c.keep_states();
+  watch(0.0, x);
+  r.steps = integrate(e, speed_at, duration, largest_step(e, o.start_speed), x, watch);
+  // The wheelset that carries the oscillation most: the largest Σ of half-cycle amplitudes.
+  double most = -1.0;
+  for (std::size_t k = 0; k < cycles.size(); ++k) {
+    cycles[k].finish();
+    double sum = 0.0;
+    for (const LimitCyclePoint& p : cycles[k].peaks()) sum += p.amplitude;
+    if (sum > most) {
+      most = sum;
+      r.watched_wheelset = static_cast<int>(k);
+    }
   }
-  read_verdict(cycles.finish(), o.extinction_amplitude, &r);
+  HalfCycles& watched = cycles[static_cast<std::size_t>(r.watched_wheelset)];
+  if (unbounded) {
+    r.verdict = NonlinearHuntingVerdict::unbounded_growth;
+    r.curve = std::move(watched.peaks());
+    return r;
+  }
+  std::size_t branch_end = 0;
+  read_verdict(std::move(watched.peaks()), o.extinction_amplitude, &r, &branch_end);
+  if (branch) {
+    branch->states = std::move(watched.states());
+    branch->branch_end = branch_end;
+  }
   return r;
+}
+
+SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o, double speed,
+                     const Eigen::VectorXd& start, int watched, int periods) {
+  SpeedHold hold;
+  hold.speed = speed;
+  const WheelsetContact& w = e.wheelsets()[static_cast<std::size_t>(watched)];
+  Eigen::VectorXd x = start;
+  hold.start_amplitude = std::abs(axle_lateral(w, x));
+  const double half = 0.5 * hold.start_amplitude;
+  HalfCycles cycles;
+  bool died = false;
+  const auto watch = [&](double, const Eigen::VectorXd& state) {
+    const double y = axle_lateral(w, state);
+    cycles.add(y, speed, state);
+    const auto& p = cycles.peaks();
+    // The first half cycle is the start's own; a later one below half of it: the cycle collapsed.
+    if (p.size() > 1 && p.back().amplitude < half) died = true;
+    if (std::abs(y) > o.amplitude_bound) return false;  // grows: it survives, and no more is needed
+    return !died && static_cast<int>(p.size()) < 2 * periods + 1;
+  };
+  // The hunting period is at least the Klingel period of the wheelset (a bogie's is longer, by
+  // up to about two): four times the Klingel time of the periods is more than enough time.
+  const double wavelength = std::max(klingel_wavelength(w), 1.0);
+  hold.steps = integrate(
+      e, [speed](double) { return speed; }, 4.0 * periods * wavelength / speed, largest_step(e, speed), x, watch);
+  const auto& p = cycles.peaks();
+  const bool grew = std::abs(axle_lateral(w, x)) > o.amplitude_bound;
+  hold.periods = static_cast<int>(p.size()) / 2;
+  hold.end_amplitude = p.empty() ? std::abs(axle_lateral(w, x)) : p.back().amplitude;
+  // Near the fold the collapse is slow (the cycle lingers where the branch was) and so is the
+  // approach to a cycle just above it: a hold survives when, besides never falling below half the
+  // start, its amplitude no longer falls over the last quarter of the hold (by more than 1%, the
+  // settling still left in a hold that ends on a cycle).
+  const bool settled = p.size() >= 4 && p.back().amplitude >= (1.0 - kSettled) * p[p.size() * 3 / 4 - 1].amplitude;
+  hold.survives = !died && (grew || (static_cast<int>(p.size()) >= 2 * periods + 1 && settled));
+  return hold;
 }
 
 }  // namespace railmodal::stability

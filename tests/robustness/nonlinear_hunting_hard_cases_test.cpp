@@ -31,6 +31,10 @@ TEST(NonlinearHuntingHardCases, RampToACrawlHasNoNaN) {
   const NonlinearHuntingResult r = solve_nonlinear_hunting(wheelset_on_springs(), o);
   EXPECT_EQ(r.verdict, NonlinearHuntingVerdict::no_limit_cycle_at_start);
   EXPECT_FALSE(r.critical_speed.has_value());
+  // No limit cycle at either rate: no critical speed to converge; not applicable, never "converged".
+  EXPECT_EQ(r.halved_rate.verdict, NonlinearHuntingVerdict::no_limit_cycle_at_start);
+  EXPECT_EQ(r.convergence, NonlinearConvergence::not_applicable);
+  EXPECT_FALSE(r.converged);
   for (const LimitCyclePoint& p : r.curve) EXPECT_TRUE(std::isfinite(p.amplitude) && std::isfinite(p.speed));
   EXPECT_GT(r.stated_rate.steps, 0);
 }
@@ -45,7 +49,8 @@ TEST(NonlinearHuntingHardCases, LimitCycleOutlivesTheRamp) {
   const NonlinearHuntingResult r = solve_nonlinear_hunting(wheelset_on_springs(), o);
   EXPECT_EQ(r.verdict, NonlinearHuntingVerdict::survives_to_end_speed);
   EXPECT_FALSE(r.critical_speed.has_value());
-  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.halved_rate.verdict, NonlinearHuntingVerdict::survives_to_end_speed);
+  EXPECT_EQ(r.convergence, NonlinearConvergence::not_applicable);
   EXPECT_FALSE(r.curve.empty());
 }
 

@@ -10,6 +10,7 @@
 #include "railmodal/railmodal.hpp"
 #include "stability/creep_saturation.hpp"
 #include "stability/lateral_equations.hpp"
+#include "stability/ramp_down.hpp"
 #include "validation/hunting_test_support.hpp"
 
 namespace railmodal {
@@ -177,7 +178,6 @@ NonlinearHuntingOptions wheelset_options() {
   o.end_speed = 30.0;
   o.ramp_rate = 0.5;
   o.disturbance = 0.005;
-  o.tolerance = 0.1;
   return o;
 }
 
@@ -209,9 +209,15 @@ TEST(NonlinearHunting, WheelsetOnSpringsLimitCycle) {
   EXPECT_GT(r.amplitude, 0.5 * o.flange_clearance);
   // The curve runs down in speed, from the start to the collapse.
   EXPECT_GT(r.curve.front().speed, r.curve.back().speed);
-  // Convergence in the ramp rate: halving it moves the critical speed by less than 0.1 m/s.
-  EXPECT_TRUE(r.converged) << r.convergence_difference;
-  EXPECT_LT(r.convergence_difference, o.tolerance);
+  // Halving the ramp rate moves the ramp's answer by less than 0.1 m/s (0.011 measured); the held
+  // critical speed is bracketed to the tolerance, and survives a hold twice as long.
+  EXPECT_LT(r.convergence_difference, 0.1);
+  EXPECT_EQ(r.convergence, NonlinearConvergence::converged);
+  EXPECT_TRUE(r.converged);
+  ASSERT_TRUE(r.hold.lowest_surviving && r.hold.highest_dying);
+  EXPECT_EQ(*r.critical_speed, *r.hold.lowest_surviving);
+  EXPECT_LE(*r.hold.lowest_surviving - *r.hold.highest_dying, o.tolerance);
+  EXPECT_TRUE(r.hold.doubled_hold_survives);
   EXPECT_TRUE(r.summary.passed());
 }
 
@@ -241,18 +247,99 @@ TEST(NonlinearHunting, SubcriticalLimitCycleBelowTheLinearCriticalSpeed) {
   EXPECT_LT(solve_nonlinear_hunting(s, o).curve.back().amplitude, 0.003);
 }
 
+TEST(NonlinearHunting, HeldCriticalSpeedAgreesWithALongHold) {
+  // Saturation only (no flange): the ramp at 0.5 m/s² lost the cycle at 65.03 m/s, but a physics
+  // review's long holds put the fold at 64.7–64.9 m/s, and the confirmation answers 64.815 m/s
+  // (docs/stability.md; figures of the contact model as of this test, not asserted, since the
+  // contact terms may be refined). What is asserted holds for any model: holds five times as long
+  // as the bisection's (1500 periods) agree with it, just above the answer the cycle survives,
+  // just below it dies.
+  NonlinearHuntingOptions o = wheelset_options();
+  o.effects = {NonlinearEffect::creep_saturation};
+  const LinearSystem s = assemble(wheelset_on_springs(), DofSet::lateral);
+  const NonlinearHuntingResult r = solve_nonlinear_hunting(s, o);
+  ASSERT_EQ(r.verdict, NonlinearHuntingVerdict::limit_cycle_dies_out);
+  ASSERT_TRUE(r.critical_speed && r.stated_rate.critical_speed && r.richardson_critical_speed);
+  RecordProperty("held_critical_speed", std::to_string(*r.critical_speed));
+  RecordProperty("ramp_critical_speed", std::to_string(*r.stated_rate.critical_speed));
+  RecordProperty("richardson_critical_speed", std::to_string(*r.richardson_critical_speed));
+  EXPECT_EQ(r.convergence, NonlinearConvergence::converged);
+  EXPECT_LE(*r.critical_speed, kLinearCriticalSpeed + o.tolerance);  // a subcritical branch or none
+  // The long holds, from the ramp's state on the branch, as the bisection starts them.
+  const stability::LateralEquations e(s, o);
+  stability::BranchStates branch;
+  const RampDown ramp = stability::ramp_down(e, o, o.ramp_rate, &branch);
+  const Eigen::VectorXd& start = branch.states[branch.branch_end];
+  const SpeedHold above = stability::hold_speed(e, o, *r.critical_speed + o.tolerance, start, 0, 1500);
+  const SpeedHold below = stability::hold_speed(e, o, *r.critical_speed - o.tolerance, start, 0, 1500);
+  EXPECT_TRUE(above.survives) << above.end_amplitude;
+  EXPECT_FALSE(below.survives) << below.end_amplitude;
+  EXPECT_GT(above.end_amplitude, 0.02);  // a cycle of over 20 mm, not a slow decay
+}
+
+TEST(NonlinearHunting, HuntingOfTheSecondWheelsetIsSeen) {
+  // Two wheelsets on their own springs to the ground, not coupled: the first so stiffly held in
+  // yaw that it does not hunt at all in the ramp, the second the wheelset on springs. The hunting
+  // is the second's, and its critical speed is the single wheelset's (HeldCriticalSpeedAgrees...):
+  // watching the first wheelset alone found no limit cycle.
+  Vehicle v;
+  v.name = "two wheelsets";
+  WheelsetData first, second;
+  first.name = "first";
+  first.x = 1.5;
+  second.name = "second";
+  second.x = -1.5;
+  test::add_wheelset(v, first);
+  test::add_springs_to_ground(v, first, 1.0e6, 6.0e6);
+  test::add_wheelset(v, second);
+  test::add_springs_to_ground(v, second, 1.0e6, 2.0e6);
+  NonlinearHuntingOptions o = wheelset_options();
+  o.end_speed = 60.0;  // the fold is near 65 m/s: the ramp below 60 m/s would only cost time
+  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(v, DofSet::lateral), o);
+  const NonlinearHuntingResult alone = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  EXPECT_EQ(r.stated_rate.watched_wheelset, 1);
+  ASSERT_EQ(r.verdict, NonlinearHuntingVerdict::limit_cycle_dies_out);
+  ASSERT_TRUE(r.critical_speed && alone.critical_speed);
+  // The same equations for the second wheelset, integrated with other step sizes (the step
+  // control sees both): the bisections may end one tolerance apart.
+  EXPECT_NEAR(*r.critical_speed, *alone.critical_speed, 2.0 * o.tolerance);
+}
+
 TEST(NonlinearHunting, LinearLawRampFindsTheLinearCriticalSpeed) {
   // With the linear law the ramp-down has no limit cycle to follow: the oscillation grows while
   // the speed is above the linear critical speed and decays below it, and the onset of decay is
   // that speed. The ramp lags by about rate·(half a period) ≈ 0.02 m/s.
   NonlinearHuntingOptions o = wheelset_options();
   o.effects.clear();
-  o.start_speed = 70.0;
+  o.start_speed = 68.0;
   o.disturbance = 1e-4;
   const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
-  ASSERT_TRUE(r.halved_rate.critical_speed.has_value());
+  ASSERT_TRUE(r.halved_rate.critical_speed.has_value() && r.stated_rate.critical_speed.has_value());
   EXPECT_NEAR(*r.halved_rate.critical_speed, kLinearCriticalSpeed, 0.05);
-  EXPECT_NEAR(*r.critical_speed, kLinearCriticalSpeed, 0.05);
+  EXPECT_NEAR(*r.stated_rate.critical_speed, kLinearCriticalSpeed, 0.05);
+  // Held, the linear law's oscillation grows above the linear critical speed and decays below:
+  // the bisection brackets that speed, within the tolerance and the slow growth of the last
+  // hundredths of a m/s (whose growth over 300 periods is under the 1% settling test).
+  ASSERT_TRUE(r.critical_speed.has_value());
+  EXPECT_NEAR(*r.critical_speed, kLinearCriticalSpeed, 0.1);
+}
+
+TEST(NonlinearHunting, LinearLawGrowsWithoutBound) {
+  // The linear law well above its critical speed on a long ramp: the oscillation grows
+  // exponentially; the run stops at the amplitude bound with that verdict, not an overflow.
+  NonlinearHuntingOptions o = wheelset_options();
+  o.effects.clear();
+  o.start_speed = 100.0;
+  o.ramp_rate = 0.2;
+  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  EXPECT_EQ(r.verdict, NonlinearHuntingVerdict::unbounded_growth);
+  EXPECT_EQ(r.halved_rate.verdict, NonlinearHuntingVerdict::unbounded_growth);
+  EXPECT_FALSE(r.critical_speed.has_value());
+  EXPECT_EQ(r.convergence, NonlinearConvergence::not_applicable);
+  EXPECT_FALSE(r.converged);
+  ASSERT_FALSE(r.curve.empty());
+  for (const LimitCyclePoint& p : r.curve) EXPECT_TRUE(std::isfinite(p.amplitude));
+  EXPECT_GT(r.curve.back().speed, kLinearCriticalSpeed);  // stopped while still above it
 }
 
 TEST(NonlinearHunting, OptionsAreValidated) {
@@ -270,6 +357,13 @@ TEST(NonlinearHunting, OptionsAreValidated) {
   EXPECT_FALSE(o.is_valid(&why));
   EXPECT_NE(why.find("ramp_rate"), std::string::npos);
   o = {};
+  o.hold_periods = 5;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("hold_periods"), std::string::npos);
+  o = {};
+  o.amplitude_bound = o.extinction_amplitude;
+  EXPECT_FALSE(o.is_valid(&why));
+  o = {};
   o.disturbance = 0.0;
   EXPECT_FALSE(o.is_valid(&why));
   EXPECT_THROW(solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o), std::invalid_argument);
@@ -283,8 +377,9 @@ TEST(NonlinearHunting, EnumNamesRoundTrip) {
     EXPECT_EQ(nonlinear_effect_from_string(to_string(e)), e);
   for (NonlinearHuntingVerdict v :
        {NonlinearHuntingVerdict::limit_cycle_dies_out, NonlinearHuntingVerdict::survives_to_end_speed,
-        NonlinearHuntingVerdict::no_limit_cycle_at_start})
+        NonlinearHuntingVerdict::no_limit_cycle_at_start, NonlinearHuntingVerdict::unbounded_growth})
     EXPECT_EQ(nonlinear_hunting_verdict_from_string(to_string(v)), v);
+  EXPECT_STREQ(to_string(NonlinearConvergence::not_applicable), "not_applicable");
   EXPECT_FALSE(nonlinear_effect_from_string("flange").has_value());
 }
 
