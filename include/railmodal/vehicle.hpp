@@ -190,6 +190,11 @@ struct WheelRailContact {
   /// σ: roll parameter (its definition and the terms it enters are in docs/stability.md);
   /// none: the value for conical wheels on knife-edge rails.
   std::optional<double> roll_parameter;
+  /// W, N: the load the rails carry under this wheelset (its weight and all it carries); it sets
+  /// the gravitational stiffness W·ε/l0 and the Hertz wheel load's default W/2. None: the
+  /// wheelset's weight plus the static loads of the system's elements standing on it (only the
+  /// wheelset's own weight when nothing stands on it, e.g. springs to a fixed frame).
+  std::optional<double> axle_load;
   /// Exactly one of the two: the creep coefficients given directly (per wheel), or the Hertz
   /// contact they are computed from.
   std::optional<CreepCoefficients> creep;

@@ -61,6 +61,10 @@ CreepCoefficients creep_coefficients(const HertzContact& ellipse, double youngs_
 struct ResolvedContact {
   std::string body;          ///< the wheelset's body
   double axle_load = 0.0;    ///< W, N: the wheelset's weight and the static loads it carries
+  /// Where W came from: "given" (WheelRailContact::axle_load), "static loads" (the wheelset's
+  /// weight and the static loads of elements standing on it) or "own weight only" (nothing
+  /// stands on it: W is the wheelset's weight alone, usually far below a real axle load).
+  std::string axle_load_source;
   double conicity = 0.0;     ///< λ
   double contact_angle_parameter = 0.0;  ///< ε
   double roll_parameter = 0.0;           ///< σ

@@ -58,8 +58,9 @@ CreepCoefficients read_creep(TableReader& parent) {
   c.f11 = t.positive("f11", Quantity::force);
   c.f22 = t.positive("f22", Quantity::force);
   // f23 and f33 may be zero: the spin terms are often left out of a hunting model (Wickens).
-  c.f23 = t.positive("f23", Quantity::moment, true);
-  c.f33 = t.positive("f33", Quantity::force_area, true);
+  // Left out, they are zero.
+  c.f23 = t.optional_positive("f23", Quantity::moment, true).value_or(0.0);
+  c.f33 = t.optional_positive("f33", Quantity::force_area, true).value_or(0.0);
   t.finish();
   return c;
 }
@@ -91,8 +92,12 @@ WheelRailContact read_contact(TableReader& t) {
   c.rolling_radius = t.positive("rolling_radius", Quantity::length);
   c.contact_half_spacing = t.positive("contact_half_spacing", Quantity::length);
   c.conicity = t.positive("conicity", Quantity::dimensionless, true);
+  // The rule contact_matrices and HuntingOptions apply: an equivalent conicity is a small slope.
+  if (!(c.conicity < 1.0)) t.fail("conicity", "must be below 1 (0 ≤ conicity < 1; typical values 0.05 to 0.5)");
   c.contact_angle_parameter = t.optional_positive("contact_angle_parameter", Quantity::dimensionless, true);
   c.roll_parameter = t.optional_quantity("roll_parameter", Quantity::dimensionless);
+  // W: without it, the wheelset's weight and the static loads of what stands on it.
+  c.axle_load = t.optional_positive("axle_load", Quantity::force);
   if (t.has("creep") == t.has("hertz"))
     t.fail("creep", t.has("creep") ? "give creep or hertz, not both"
                                    : "missing: give the creep coefficients, creep = { f11 = \"…\", f22 = \"…\", "

@@ -36,7 +36,7 @@ std::optional<AxleWheelset> read_axle_wheelset(TableReader& root, double gravity
   if (inertia.has("pitch"))
     inertia.fail("pitch", "a wheelset's pitch is its spin about the axle: give spin_inertia in [wheelset]");
   const double roll = inertia.positive("roll", Quantity::inertia, true);
-  const double yaw = inertia.positive("yaw", Quantity::inertia, true);
+  const double yaw = inertia.positive("yaw", Quantity::inertia);  // its lateral and yaw motions are free
   inertia.finish();
   w.inertia = {roll, w.spin_inertia, yaw};
   w.contact = read_contact(t);

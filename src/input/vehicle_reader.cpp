@@ -40,6 +40,21 @@ void read_wheelsets(TableReader& root, std::vector<TableReader>& body_tables, Ve
       if (std::find(body.held.begin(), body.held.end(), m) != body.held.end())
         bt.fail("held", std::string("holds the ") + to_string(m) + " motion of '" + body.name +
                             "', a wheelset: its lateral and yaw motions are what the wheel–rail contact acts on");
+    // The contact acts at the axle centre, taken as the centre of gravity, on the track's centre
+    // line in the axle plane (y = z = 0): elsewhere the contact points and the elements' levers
+    // would disagree silently. Only x may vary (the axle's position; the reference point may lie
+    // ahead of or behind it, the contact takes that lever).
+    if (body.centre_of_gravity.y() != 0.0 || body.centre_of_gravity.z() != 0.0)
+      bt.fail("centre_of_gravity", "'" + body.name +
+                                       "' is a wheelset: its centre of gravity is the axle centre, on the track's "
+                                       "centre line in the axle plane (y = z = 0; only x may vary)");
+    if (body.reference_point.y() != 0.0 || body.reference_point.z() != 0.0)
+      bt.fail("reference_point", "'" + body.name +
+                                     "' is a wheelset: its reference point must lie on the axle's line along the "
+                                     "track (y = z = 0; only x may differ from the centre of gravity's)");
+    if (!(body.inertia.z() > 0.0))
+      bt.fail(bt.has("inertia") ? "inertia" : "radius_of_gyration",
+              "'" + body.name + "' is a wheelset: its yaw inertia must be positive (its yaw motion is free)");
     for (Motion m : kWheelsetHeld)
       if (std::find(body.held.begin(), body.held.end(), m) == body.held.end()) body.held.push_back(m);
     w.spin_inertia = read_spin_inertia(t);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "model/wheelset_dofs.hpp"
+
 namespace railmodal::model {
 
 void refuse_series_dampers(const LinearSystem& system, const std::string& analysis) {
@@ -32,8 +34,7 @@ std::vector<std::string> undamped_mode_notes(const LinearSystem& system) {
 }
 
 bool stands_on_wheelset(const Vehicle& vehicle, const Element& element) {
-  return !element.lower.empty() && std::any_of(vehicle.wheelsets.begin(), vehicle.wheelsets.end(),
-                                               [&](const Wheelset& w) { return w.body == element.lower; });
+  return !element.lower.empty() && wheelset_of(vehicle, element.lower) != nullptr;
 }
 
 }  // namespace railmodal::model

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "model/wheelset_creepage.hpp"
+#include "model/wheelset_dofs.hpp"
 #include "railmodal/wheel_rail.hpp"
 
 namespace railmodal {
@@ -22,23 +23,27 @@ void require(bool ok, const Wheelset& w, const std::string& name, double value, 
   if (!ok) fail(w, name + " = " + std::to_string(value) + " " + rule);
 }
 
-int body_index(const Vehicle& v, const Wheelset& w) {
-  for (std::size_t i = 0; i < v.bodies.size(); ++i)
-    if (v.bodies[i].name == w.body) return static_cast<int>(i);
-  fail(w, "no body of that name in the vehicle");
-}
-
-// W: what the rails carry under the wheelset, from its vertical equilibrium: its weight, the
-// static loads of the elements standing on it, less those of elements hanging it from below.
-double axle_load(const LinearSystem& system, const Wheelset& w, int body) {
+// W: what the rails carry under the wheelset: given, or from its vertical equilibrium (its
+// weight, the static loads of the elements standing on it, less those of elements hanging it
+// from below). Sets r.axle_load and says where it came from.
+void resolve_axle_load(const LinearSystem& system, const Wheelset& w, int body, ResolvedContact* r) {
   const Vehicle& v = system.vehicle;
-  double load = v.bodies[body].mass * v.gravity;
-  for (std::size_t k = 0; k < v.elements.size() && k < system.element_loads.size(); ++k) {
-    if (v.elements[k].lower == w.body) load += system.element_loads[k];
-    if (v.elements[k].upper == w.body) load -= system.element_loads[k];
+  if (w.contact.axle_load) {
+    r->axle_load = *w.contact.axle_load;
+    r->axle_load_source = "given";
+  } else {
+    double load = v.bodies[body].mass * v.gravity;
+    bool carries = false;
+    for (std::size_t k = 0; k < v.elements.size() && k < system.element_loads.size(); ++k) {
+      if (v.elements[k].lower == w.body) load += system.element_loads[k];
+      if (v.elements[k].upper == w.body) load -= system.element_loads[k];
+      if ((v.elements[k].lower == w.body || v.elements[k].upper == w.body) && system.element_loads[k] != 0.0)
+        carries = true;
+    }
+    r->axle_load = load;
+    r->axle_load_source = carries ? "static loads" : "own weight only";
   }
-  require(load > 0.0 && std::isfinite(load), w, "axle load", load, "N: must be positive");
-  return load;
+  require(r->axle_load > 0.0 && std::isfinite(r->axle_load), w, "axle load", r->axle_load, "N: must be positive");
 }
 
 CreepCoefficients resolve_creep(const Wheelset& w, double rolling_radius, double load,
@@ -73,7 +78,7 @@ ResolvedContact resolve(const LinearSystem& system, const Wheelset& w, int body,
           "m: must be positive");
   require(r.contact_half_spacing > 0.0 && std::isfinite(r.contact_half_spacing), w, "contact half spacing l0",
           r.contact_half_spacing, "m: must be positive");
-  require(r.conicity >= 0.0 && std::isfinite(r.conicity), w, "conicity", r.conicity, "must be ≥ 0");
+  require(r.conicity >= 0.0 && r.conicity < 1.0, w, "conicity", r.conicity, "must be ≥ 0 and below 1");
   // Conical wheels on knife-edge rails: the wheelset rolls by (r_left − r_right)/(2l0) = λy/l0, so
   // σ = λ; the contact angles, fixed on the cones, turn with it, so δ_left − δ_right = 2λy/l0 and
   // ε = λ (docs/stability.md).
@@ -84,7 +89,7 @@ ResolvedContact resolve(const LinearSystem& system, const Wheelset& w, int body,
   require(std::isfinite(r.roll_parameter), w, "roll parameter", r.roll_parameter, "must be finite");
   require(w.spin_inertia >= 0.0 && std::isfinite(w.spin_inertia), w, "spin inertia", w.spin_inertia,
           "kg·m²: must be ≥ 0");
-  r.axle_load = axle_load(system, w, body);
+  resolve_axle_load(system, w, body, &r);
   r.creep = resolve_creep(w, r.rolling_radius, r.axle_load, &r.ellipse);
   r.klingel_wavelength = r.conicity > 0.0
                              ? 2.0 * kPi * std::sqrt(r.rolling_radius * r.contact_half_spacing / r.conicity)
@@ -100,50 +105,15 @@ model::WheelsetLoad unit_load(const model::WheelsetGeometry& g, const CreepCoeff
   return model::wheelset_load(g, model::linear_creep_forces(f, c.left), model::linear_creep_forces(f, c.right));
 }
 
-// The wheelset's lateral and yaw DOFs, and the lever from its reference point to the axle centre
-// (its centre of gravity): the axle's lateral displacement is y_ref + (x_axle − x_ref)·ψ.
-struct WheelsetDofs {
-  int lateral = -1;
-  int yaw = -1;
-  double lever = 0.0;
-};
-
-WheelsetDofs locate(const LinearSystem& system, const Wheelset& w, int body) {
-  WheelsetDofs d;
-  for (int i = 0; i < system.size(); ++i) {
-    if (system.dofs[i].body != body) continue;
-    switch (system.dofs[i].motion) {
-      case Motion::lateral:
-        d.lateral = i;
-        break;
-      case Motion::yaw:
-        d.yaw = i;
-        break;
-      case Motion::longitudinal:
-        break;  // rolling along: the contact terms leave it alone
-      default:
-        // Bounce, roll and pitch follow the rails in the linear model (the roll through σ).
-        fail(w, std::string("its ") + to_string(system.dofs[i].motion) +
-                    " must be held: a wheelset's bounce, roll and pitch follow the rails");
-    }
-  }
-  if (d.lateral < 0 || d.yaw < 0)
-    fail(w,
-         "its lateral and yaw motions must be free degrees of freedom of the system (assemble "
-         "the lateral or all motions, and do not hold them)");
-  const Body& b = system.vehicle.bodies[body];
-  d.lever = b.centre_of_gravity.x() - b.reference_point.x();
-  return d;
-}
-
 }  // namespace
 
 ContactMatrices contact_matrices(const LinearSystem& system, std::optional<double> conicity) {
   const Vehicle& v = system.vehicle;
   if (v.wheelsets.empty())
     throw std::invalid_argument("contact_matrices: the vehicle '" + v.name + "' has no wheelsets");
-  if (conicity && !(*conicity >= 0.0 && std::isfinite(*conicity)))
-    throw std::invalid_argument("contact_matrices: conicity = " + std::to_string(*conicity) + " must be ≥ 0");
+  if (conicity && !(*conicity >= 0.0 && *conicity < 1.0))
+    throw std::invalid_argument("contact_matrices: conicity = " + std::to_string(*conicity) +
+                                " must be ≥ 0 and below 1");
   const int n = system.size();
   ContactMatrices out;
   out.creep_damping = Eigen::MatrixXd::Zero(n, n);
@@ -152,9 +122,8 @@ ContactMatrices contact_matrices(const LinearSystem& system, std::optional<doubl
   for (const Wheelset& w : v.wheelsets) {
     for (const Wheelset& other : v.wheelsets)
       if (&other != &w && other.body == w.body) fail(w, "listed twice among the wheelsets");
-    const int body = body_index(v, w);
-    const WheelsetDofs dofs = locate(system, w, body);
-    ResolvedContact r = resolve(system, w, body, conicity);
+    const model::WheelsetDofs dofs = model::wheelset_dofs(system, w);
+    ResolvedContact r = resolve(system, w, dofs.body, conicity);
     const model::WheelsetGeometry g{r.rolling_radius, r.contact_half_spacing, r.conicity, r.contact_angle_parameter,
                                     r.roll_parameter};
 
@@ -172,9 +141,12 @@ ContactMatrices contact_matrices(const LinearSystem& system, std::optional<doubl
     stiffness(0, 0) += r.axle_load * r.contact_angle_parameter / r.contact_half_spacing;
     // Gyroscopic: the spin angular momentum I_y·V/r0 about the axle, tilted by the roll
     // φ = σy/l0 and the yaw ψ; its rate asks the yaw moment I_y(V/r0)φ̇ and the roll moment
-    // −I_y(V/r0)ψ̇, the latter taken by the rails' normal loads whose inclination turns it into
-    // the lateral force of the skew-symmetric partner (energy is conserved).
-    const double g_coefficient = w.spin_inertia * r.roll_parameter / (r.rolling_radius * r.contact_half_spacing);
+    // −I_y(V/r0)ψ̇. With the roll slaved to y, the roll moment's virtual work through
+    // δφ = σδy/l0 is the lateral force of the skew-symmetric partner (energy is conserved). Seen
+    // as forces, the rails take the roll moment as a normal-load difference whose inclination ±δ0
+    // gives δ0 where σ stands: exact for cones (σ = δ0 = λ), an approximation for worn profiles.
+    const double g_coefficient =
+        model::gyroscopic_coefficient(w.spin_inertia, r.roll_parameter, r.rolling_radius, r.contact_half_spacing);
     gyroscopic << 0.0, -g_coefficient, g_coefficient, 0.0;
 
     // From the axle centre to the DOFs: (y_axle, ψ) = T (y_ref, ψ), generalised forces Tᵀ·F.

@@ -30,9 +30,16 @@ WheelContactForces linear_creep_forces(const CreepCoefficients& f, const WheelCr
 
 WheelsetLoad wheelset_load(const WheelsetGeometry& g, const WheelContactForces& left, const WheelContactForces& right) {
   const double l0 = g.contact_half_spacing;
-  // The moment about z of a force (Fx, Fy) at (0, ±l0): x·Fy − y·Fx = ∓l0·Fx. The contact
-  // planes' small inclinations change the lateral forces only at second order.
-  return {left.lateral + right.lateral,
+  // The lateral generalised force is κ·ΣFy, the transpose of the creepage map (ξy carries κ·ẏ/V):
+  // by virtual work a displacement δy moves the contact points, r0 below an axle that rolls by
+  // σ·δy/l0, through κ·δy. Seen as forces: ΣFy at the rail head has the roll moment r0·ΣFy about
+  // the axle, which the rails take as a normal-load difference r0·ΣFy/l0; the normals, inclined
+  // by ±δ0, add δ0·r0·ΣFy/l0 laterally, and for cones δ0 = σ. With ΣFy alone the lateral creep
+  // would take 2f22κẏ²/V from the motion where the creepages dissipate 2f22κ²ẏ²/V
+  // (docs/stability.md, "The equations of motion").
+  // The moment about z of a force (Fx, Fy) at (0, ±l0): x·Fy − y·Fx = ∓l0·Fx.
+  const double kappa = 1.0 + g.roll_parameter * g.rolling_radius / l0;
+  return {kappa * (left.lateral + right.lateral),
           -l0 * left.longitudinal + l0 * right.longitudinal + left.spin_moment + right.spin_moment};
 }
 

@@ -62,8 +62,10 @@ struct WheelContactForces {
 /// Mz = f23ξy − f33ξsp.
 WheelContactForces linear_creep_forces(const CreepCoefficients& creep, const WheelCreepage& creepage);
 
-/// What the two wheels' forces do to the wheelset: the lateral force and the yaw moment about
-/// the axle centre (a longitudinal force Fx at y = ±l0 turns it by ∓l0·Fx).
+/// What the two wheels' forces do to the wheelset: the generalised lateral force κ·(Fy,left +
+/// Fy,right), κ = 1 + σ·r0/l0 (the transpose of the creepage map: the contact points move κ·δy
+/// when the axle moves δy and rolls σ·δy/l0), and the yaw moment about the axle centre (a
+/// longitudinal force Fx at y = ±l0 turns it by ∓l0·Fx).
 struct WheelsetLoad {
   double lateral = 0.0;  ///< N
   double yaw = 0.0;      ///< N·m

@@ -2,6 +2,7 @@
 // which takes the contact terms from contact_matrices() (stability/hunting_analysis.cpp does
 // the work).
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "railmodal/hunting.hpp"
@@ -34,7 +35,11 @@ bool HuntingOptions::is_valid(std::string* why) const {
     return invalid(why, "max_speed must be finite and greater than min_speed");
   if (speed_count < 2 || speed_count > 1000000) return invalid(why, "speed_count must satisfy 2 ≤ speed_count ≤ 10⁶");
   for (double c : conicities)
-    if (!(c >= 0.0 && c < 1.0)) return invalid(why, "every conicity must satisfy 0 ≤ conicity < 1");
+    if (!(c >= 0.0 && c < 1.0)) {
+      char value[32];
+      std::snprintf(value, sizeof value, "%g", c);
+      return invalid(why, std::string("every conicity must satisfy 0 ≤ conicity < 1 (got ") + value + ")");
+    }
   if (damping_threshold && !(*damping_threshold > -1.0 && *damping_threshold < 1.0))
     return invalid(why, "damping_threshold must satisfy −1 < damping_threshold < 1");
   if (!(relative_tolerance >= 1e-14 && relative_tolerance <= 0.1))

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/wheelset_dofs.hpp"
 #include "railmodal/errors.hpp"
 #include "stability/creep_saturation.hpp"
 
@@ -17,22 +18,17 @@ bool has(const NonlinearHuntingOptions& o, NonlinearEffect e) {
 }
 
 WheelsetContact locate(const LinearSystem& system, const Wheelset& w, const ResolvedContact& r) {
+  // contact_matrices has already checked the wheelset's DOFs; this finds them the same way.
+  const model::WheelsetDofs dofs = model::wheelset_dofs(system, w);
   WheelsetContact c;
-  for (int i = 0; i < system.size(); ++i) {
-    const Dof& d = system.dofs[i];
-    if (d.body < 0 || system.vehicle.bodies[d.body].name != w.body) continue;
-    if (d.motion == Motion::lateral) c.lateral = i;
-    if (d.motion == Motion::yaw) c.yaw = i;
-  }
-  // contact_matrices has already checked that both are free and the wheelset's bounce, roll and
-  // pitch held.
-  const Body& b = *std::find_if(system.vehicle.bodies.begin(), system.vehicle.bodies.end(),
-                                [&](const Body& body) { return body.name == w.body; });
-  c.lever = b.centre_of_gravity.x() - b.reference_point.x();
+  c.lateral = dofs.lateral;
+  c.yaw = dofs.yaw;
+  c.lever = dofs.lever;
   c.geometry = {r.rolling_radius, r.contact_half_spacing, r.conicity, r.contact_angle_parameter, r.roll_parameter};
   c.creep = r.creep;
   c.axle_load = r.axle_load;
-  c.gyroscopic = w.spin_inertia * r.roll_parameter / (r.rolling_radius * r.contact_half_spacing);
+  c.gyroscopic =
+      model::gyroscopic_coefficient(w.spin_inertia, r.roll_parameter, r.rolling_radius, r.contact_half_spacing);
   return c;
 }
 

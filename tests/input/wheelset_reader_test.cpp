@@ -100,6 +100,23 @@ TEST(WheelsetReader, OptionalContactParametersAndHertzDefaults) {
   EXPECT_DOUBLE_EQ(c.hertz->poisson_ratio, 0.28);
 }
 
+// f23 and f33 may be left out (zero: the spin terms are often omitted); axle_load is optional
+// and read in SI (issue 20 review: W fell back silently to the wheelset's own weight).
+TEST(WheelsetReader, SpinCoefficientsDefaultToZeroAndAxleLoadIsRead) {
+  std::string text = replaced(kGeneral, R"(creep = { f11 = "10 MN", f22 = "9 MN", f23 = "2 kN*m", f33 = "300 N*m^2" })",
+                              "axle_load = \"100 kN\"\ncreep = { f11 = \"10 MN\", f22 = \"9 MN\" }");
+  const Vehicle v = load_vehicle(write_temp("ws_no_spin.toml", text));
+  const WheelRailContact& c = v.wheelsets[0].contact;
+  ASSERT_TRUE(c.creep);
+  EXPECT_EQ(c.creep->f23, 0.0);
+  EXPECT_EQ(c.creep->f33, 0.0);
+  ASSERT_TRUE(c.axle_load);
+  EXPECT_DOUBLE_EQ(*c.axle_load, 1.0e5);
+  EXPECT_FALSE(load_vehicle(write_temp("ws.toml", kGeneral)).wheelsets[0].contact.axle_load);
+  expect_error(replaced(text, "axle_load = \"100 kN\"", "axle_load = \"100 kN*m\""),
+               {"key 'wheelset[0].axle_load'", "expected a force"});
+}
+
 TEST(WheelsetReader, CreepOrHertzExactlyOne) {
   expect_error(replaced(kGeneral, R"(creep = { f11 = "10 MN", f22 = "9 MN", f23 = "2 kN*m", f33 = "300 N*m^2" })", ""),
                {"key 'wheelset[0].creep': missing"});
@@ -112,6 +129,9 @@ TEST(WheelsetReader, ContactKeyErrors) {
                {"bad_wheelset.toml:11:", "key 'wheelset[0].rolling_radius': must be positive"});
   expect_error(replaced(kGeneral, "conicity = 0.15", "conicity = -0.1"),
                {"key 'wheelset[0].conicity': must be zero or positive"});
+  // One rule with contact_matrices and the stability command's conicities: 0 ≤ λ < 1.
+  expect_error(replaced(kGeneral, "conicity = 0.15", "conicity = 1.5"),
+               {"bad_wheelset.toml:13:", "key 'wheelset[0].conicity': must be below 1"});
   expect_error(replaced(kGeneral, "f23 = \"2 kN*m\"", "f23 = \"2 kN\""),
                {"key 'wheelset[0].creep.f23'", "expected a moment (force·length)"});
   expect_error(replaced(kGeneral, "f33 = \"300 N*m^2\"", "f33 = \"300 N*m\""),
@@ -139,6 +159,24 @@ TEST(WheelsetReader, WheelsetBodyErrorsAtTheKeyThatCausesThem) {
   expect_error(replaced(kGeneral, "centre_of_gravity = [\"0 m\", \"0 m\", \"0 m\"]",
                         "centre_of_gravity = [\"0 m\", \"0 m\", \"0 m\"]\nfree = [\"longitudinal\"]"),
                {"bad_wheelset.toml:8:", "key 'body[0].free': frees the longitudinal motion of 'ws', a wheelset"});
+  // The contact acts at the centre of gravity, the axle centre: off the track's centre line or the
+  // axle plane it would change the answer silently; a zero yaw inertia would leave the mass matrix singular.
+  for (const char* cg : {"[\"0 m\", \"0.1 m\", \"0 m\"]", "[\"0 m\", \"0 m\", \"0.2 m\"]"})
+    expect_error(
+        replaced(kGeneral, "centre_of_gravity = [\"0 m\", \"0 m\", \"0 m\"]", std::string("centre_of_gravity = ") + cg),
+        {"bad_wheelset.toml:7:", "key 'body[0].centre_of_gravity': 'ws' is a wheelset",
+         "(y = z = 0; only x may vary)"});
+  expect_error(
+      replaced(kGeneral, "centre_of_gravity = [\"0 m\", \"0 m\", \"0 m\"]",
+               "centre_of_gravity = [\"0 m\", \"0 m\", \"0 m\"]\nreference_point = [\"0 m\", \"0 m\", \"0.5 m\"]"),
+      {"bad_wheelset.toml:8:", "key 'body[0].reference_point': 'ws' is a wheelset"});
+  expect_error(replaced(kGeneral, "yaw = \"1120 kg*m^2\"", "yaw = \"0 kg*m^2\""),
+               {"bad_wheelset.toml:6:", "key 'body[0].inertia': 'ws' is a wheelset: its yaw inertia must be positive"});
+  // A longitudinal offset is fine: the contact takes the lever (HuntingValidation tests it).
+  EXPECT_NO_THROW(load_vehicle(write_temp(
+      "ws_ahead.toml",
+      replaced(kGeneral, "centre_of_gravity = [\"0 m\", \"0 m\", \"0 m\"]",
+               "centre_of_gravity = [\"0 m\", \"0 m\", \"0 m\"]\nreference_point = [\"0.7 m\", \"0 m\", \"0 m\"]"))));
 }
 
 TEST(WheelsetReader, SeriesDamperErrors) {

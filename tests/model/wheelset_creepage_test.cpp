@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace railmodal::model {
 namespace {
 
@@ -52,6 +54,36 @@ TEST(WheelsetCreepage, SpinFromContactAngleChange) {
   const CreepCoefficients f{1e7, 0.9e7, 1e4, 100.0};
   EXPECT_DOUBLE_EQ(linear_creep_forces(f, c.left).lateral, -f.f23 * spin);
   EXPECT_DOUBLE_EQ(linear_creep_forces(f, c.left).spin_moment, -f.f33 * spin);
+}
+
+// The loads are the transpose of the creepages (issue 20 review: the lateral load had ΣFy where
+// the creepage has κẏ/V): for any rates, at y = ψ = 0, the power of the generalised forces
+// Q_y·ẏ + Q_ψ·ψ̇ equals V·Σ(Fx·ξx + Fy·ξy + Mz·ξsp), the power the creep forces take at the two
+// contacts. So the creep damping dissipates 2f22κ²ẏ²/V, not 2f22κẏ²/V.
+TEST(WheelsetCreepage, LoadsAreTheTransposeOfTheCreepages) {
+  const CreepCoefficients f{1e7, 0.9e7, 1e4, 100.0};
+  for (const WheelsetGeometry& g : {kGeometry, WheelsetGeometry{0.46, 0.75, 0.4, 0.6, 0.3}}) {
+    const double v = 25.0, y_rate = 0.03, yaw_rate = -0.02;
+    const auto c = wheelset_creepages(g, {0.0, 0.0, y_rate, yaw_rate, v});
+    const auto left = linear_creep_forces(f, c.left), right = linear_creep_forces(f, c.right);
+    const auto load = wheelset_load(g, left, right);
+    auto power = [](const WheelContactForces& F, const WheelCreepage& x) {
+      return F.longitudinal * x.longitudinal + F.lateral * x.lateral + F.spin_moment * x.spin;
+    };
+    const double contact_power = v * (power(left, c.left) + power(right, c.right));
+    // 1e-12 relative: a dozen products of O(1) terms.
+    EXPECT_NEAR(load.lateral * y_rate + load.yaw * yaw_rate, contact_power, 1e-12 * std::abs(contact_power));
+    // And the lateral load alone: κ·ΣFy with κ = 1 + σ·r0/l0.
+    const double kappa = 1.0 + g.roll_parameter * g.rolling_radius / g.contact_half_spacing;
+    EXPECT_DOUBLE_EQ(load.lateral, kappa * (left.lateral + right.lateral));
+  }
+}
+
+// σ = 0: the standard model, whose lateral load is the plain sum of the two wheels' forces.
+TEST(WheelsetCreepage, WithoutRollTheLateralLoadIsThePlainSum) {
+  const WheelsetGeometry g{0.46, 0.75, 0.15, 0.15, 0.0};
+  const WheelContactForces left{100.0, 200.0, 3.0}, right{-100.0, 300.0, 4.0};
+  EXPECT_EQ(wheelset_load(g, left, right).lateral, 500.0);
 }
 
 }  // namespace

@@ -161,6 +161,25 @@ TEST(HuntingContactHardCases, ErrorsNameTheWheelset) {
   expect_error(twice, DofSet::lateral, "listed twice");
 
   EXPECT_THROW(contact_matrices(assemble(good, DofSet::lateral), -1.0), std::invalid_argument);
+
+  // One conicity rule everywhere (reader, HuntingOptions, here): 0 ≤ λ < 1.
+  Vehicle steep = good;
+  steep.wheelsets[0].contact.conicity = 1.5;
+  expect_error(steep, DofSet::lateral, "conicity = 1.500000 must be ≥ 0 and below 1");
+  try {
+    contact_matrices(assemble(good, DofSet::lateral), 1.0);
+    ADD_FAILURE() << "a conicity override of 1 was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("conicity = 1.000000 must be ≥ 0 and below 1"), std::string::npos) << e.what();
+  }
+
+  // The contact acts at the centre of gravity, the axle centre: off the track's centre line or the
+  // axle plane it is refused (a longitudinal offset is the lever, HuntingValidation.AxleLoadAnd…).
+  for (const Eigen::Vector3d& offset : {Eigen::Vector3d(0, 0.1, 0), Eigen::Vector3d(0, 0, 0.2)}) {
+    Vehicle off = good;
+    off.bodies[0].centre_of_gravity += offset;
+    expect_error(off, DofSet::lateral, "'wheelset': its centre of gravity (the axle centre) and reference point");
+  }
 }
 
 // The conicity override replaces λ and the ε, σ that default from it, but not ε, σ given.

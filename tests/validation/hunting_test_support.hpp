@@ -139,19 +139,20 @@ inline double bisect(const std::function<double(double)>& f, double stable, doub
 // ---------------------------------------------------------------------------------------------
 // The characteristic polynomial of one wheelset, derived by hand from the equations of motion
 // (docs/stability.md), not from the assembled matrices. With the lateral spring k_y and the yaw
-// spring k_ψ to a fixed frame, κ = 1 + σ·r0/l0 and g = I_y·σ/(r0·l0), the equations are
+// spring k_ψ to a fixed frame, κ = 1 + σ·r0/l0 and g = I_y·σ/(r0·l0), the equations are (the
+// lateral creepage is κẏ/V − ψ and, its transpose, the generalised lateral force κ·ΣFy)
 //
-//   m ÿ + (2f22κ/V) ẏ + (2f23/V − gV) ψ̇ + (k_y + Wε/l0 − 2f23(ε−σ)/(r0 l0)) y − 2f22 ψ = 0
+//   m ÿ + (2f22κ²/V) ẏ + (2f23κ/V − gV) ψ̇ + (k_y + Wε/l0 − 2f23κ(ε−σ)/(r0 l0)) y − 2f22κ ψ = 0
 //   I ψ̈ + ((2f11 l0² + 2f33)/V) ψ̇ + (gV − 2f23κ/V) ẏ + (2f11 λ l0/r0 − 2f33(ε−σ)/(r0 l0)) y
 //       + (k_ψ + 2f23) ψ = 0
 //
 // With y, ψ ∝ e^{st} and the names
-//   a = 2f22κ/V,  p = k_y + Wε/l0 − 2f23(ε−σ)/(r0 l0),  e = gV − 2f23/V,
+//   a = 2f22κ²/V,  p = k_y + Wε/l0 − 2f23κ(ε−σ)/(r0 l0),  e = gV − 2f23κ/V,
 //   c = (2f11 l0² + 2f33)/V,  q = k_ψ + 2f23,  h = gV − 2f23κ/V,  b = 2f11λl0/r0 − 2f33(ε−σ)/(r0 l0),
-// the determinant (m s² + a s + p)(I s² + c s + q) − (−e s − 2f22)(h s + b) is
+// the determinant (m s² + a s + p)(I s² + c s + q) − (−e s − 2f22κ)(h s + b) is
 //   a4 s⁴ + a3 s³ + a2 s² + a1 s + a0 with
-//   a4 = m I,  a3 = m c + a I,  a2 = m q + a c + p I + e h,  a1 = a q + c p + e b + 2f22 h,
-//   a0 = p q + 2f22 b.
+//   a4 = m I,  a3 = m c + a I,  a2 = m q + a c + p I + e h,  a1 = a q + c p + e b + 2f22κ h,
+//   a0 = p q + 2f22κ b.
 // Routh–Hurwitz for a quartic: stable iff every a_i > 0 and H = a3 a2 a1 − a4 a1² − a3² a0 > 0;
 // the critical speed is where H changes sign (the others staying positive there).
 struct Quartic {
@@ -165,13 +166,14 @@ inline Quartic wheelset_quartic(const WheelsetData& d, double weight, double k_y
   const double r0 = d.r0, l0 = d.l0, v = speed;
   const auto& f = d.creep;
   const double kappa = 1.0 + sig * r0 / l0, g = d.spin_inertia * sig / (r0 * l0);
-  const double a = 2 * f.f22 * kappa / v, p = k_y + weight * eps / l0 - 2 * f.f23 * (eps - sig) / (r0 * l0);
-  const double e = g * v - 2 * f.f23 / v, c = (2 * f.f11 * l0 * l0 + 2 * f.f33) / v, q = k_psi + 2 * f.f23;
+  const double a = 2 * f.f22 * kappa * kappa / v,
+               p = k_y + weight * eps / l0 - 2 * f.f23 * kappa * (eps - sig) / (r0 * l0);
+  const double e = g * v - 2 * f.f23 * kappa / v, c = (2 * f.f11 * l0 * l0 + 2 * f.f33) / v, q = k_psi + 2 * f.f23;
   const double h = g * v - 2 * f.f23 * kappa / v;
   const double b = 2 * f.f11 * d.conicity * l0 / r0 - 2 * f.f33 * (eps - sig) / (r0 * l0);
   const double m = d.mass, i = d.yaw_inertia;
-  return {m * i, m * c + a * i, m * q + a * c + p * i + e * h, a * q + c * p + e * b + 2 * f.f22 * h,
-          p * q + 2 * f.f22 * b};
+  return {m * i, m * c + a * i, m * q + a * c + p * i + e * h, a * q + c * p + e * b + 2 * f.f22 * kappa * h,
+          p * q + 2 * f.f22 * kappa * b};
 }
 
 // The speed at which a Routh–Hurwitz determinant crosses zero, by bisection in [lo, hi].

@@ -42,11 +42,11 @@ TEST(HuntingContactTerms, FreeWheelsetMatricesMatchTheEquations) {
   // Relative 1e-12: the same few products in another order.
   auto near = [](double got, double want) { EXPECT_NEAR(got, want, 1e-12 * std::max(1.0, std::abs(want))); };
   near(k(0, 0), w * lam / d.l0);  // ε = σ = λ: the spin terms in (ε − σ) vanish
-  near(k(0, 1), -2 * f.f22);
+  near(k(0, 1), -2 * f.f22 * kappa);  // the generalised lateral force is κ·ΣFy
   near(k(1, 0), 2 * f.f11 * lam * d.l0 / d.r0);
   near(k(1, 1), 2 * f.f23);
-  near(c(0, 0), 2 * f.f22 * kappa);
-  near(c(0, 1), 2 * f.f23);
+  near(c(0, 0), 2 * f.f22 * kappa * kappa);  // κ in the creepage and in the projection
+  near(c(0, 1), 2 * f.f23 * kappa);
   near(c(1, 0), -2 * f.f23 * kappa);
   near(c(1, 1), 2 * f.f11 * d.l0 * d.l0 + 2 * f.f33);
   near(g(0, 1), -d.spin_inertia * lam / (d.r0 * d.l0));
@@ -176,8 +176,8 @@ TEST(HuntingValidation, InfiniteCreepWithSpinTermsMatchesTheFirstOrderLimit) {
 // Routh–Hurwitz root of the hand-derived quartic.
 //
 // The spin coupling f23 matters here: as V → 0 the quartic's a1·V tends to
-// 2(f11·l0² + f33)·W·ε/l0 − 4·f23·f11·λ·l0/r0 (ε = σ), so the free wheelset on knife-edge rails
-// (ε = λ) is stable at low speed only while 2·f23 < W·r0·(1 + f33/(f11·l0²)) (next test). Our
+// 2(f11·l0² + f33)·W·ε/l0 − 4·f23·κ·f11·λ·l0/r0 (ε = σ), so the free wheelset on knife-edge rails
+// (ε = λ) is stable at low speed only while 2·f23·κ < W·r0·(1 + f33/(f11·l0²)) (next test). Our
 // wheelset alone weighs 14.7 kN, so its creep coefficients are taken for that load: f23 = 1e3
 // N·m (f23 = G·(ab)^{3/2}·C23 grows with the load faster than f11 and f22; CreepCoefficients).
 TEST(HuntingValidation, FreeWheelsetWithGravitationalStiffnessMatchesRouthHurwitz) {
@@ -193,14 +193,15 @@ TEST(HuntingValidation, FreeWheelsetWithGravitationalStiffnessMatchesRouthHurwit
   // 1e-8 relative: both are bisected to 1e-13; the eigenvalue's real part near zero is good to
   // ~1e-15·‖A‖ and crosses zero with a slope that keeps that below 1e-10 in speed.
   EXPECT_NEAR(eigen, routh, 1e-8 * routh);
-  RecordProperty("free_wheelset_critical_speed", std::to_string(routh));  // 1.395148 m/s
+  RecordProperty("free_wheelset_critical_speed", std::to_string(routh));  // 1.340082 m/s (1.395148 before the κ fix)
 }
 
 TEST(HuntingValidation, FreeWheelsetLowSpeedStabilityNeedsSpinCouplingBelowTheGravitationalTerm) {
   WheelsetData d;
   const double weight = d.mass * kG;
+  const double kappa = 1.0 + d.conicity * d.r0 / d.l0;
   const double threshold =
-      weight * d.r0 * (1 + d.creep.f33 / (d.creep.f11 * d.l0 * d.l0)) / 2.0;  // f23 at which a1·V → 0
+      weight * d.r0 * (1 + d.creep.f33 / (d.creep.f11 * d.l0 * d.l0)) / (2.0 * kappa);  // f23 at which a1·V → 0
   for (double factor : {0.95, 1.05}) {
     WheelsetData s = d;
     s.creep.f23 = factor * threshold;
@@ -224,7 +225,8 @@ TEST(HuntingValidation, WheelsetOnSpringsMatchesRouthHurwitz) {
   EXPECT_NEAR(eigen, routh, 1e-8 * routh);
   EXPECT_LT(max_real_part(m, 0.9 * routh), 0.0);
   EXPECT_GT(max_real_part(m, 1.1 * routh), 0.0);
-  RecordProperty("wheelset_on_springs_critical_speed", std::to_string(routh));  // 65.330265 m/s
+  RecordProperty("wheelset_on_springs_critical_speed",
+                 std::to_string(routh));  // 66.205641 m/s (65.330265 before the κ fix)
 }
 
 // The axle load counts the static loads the wheelset carries, and a reference point away from
@@ -250,6 +252,58 @@ TEST(HuntingValidation, AxleLoadAndReferencePointGoThroughTheAssembly) {
   const auto mm = hunting_model(moved);
   EXPECT_NEAR(eigen_critical_speed(m, 1.0, 400.0), routh, 1e-8 * routh);
   EXPECT_NEAR(eigen_critical_speed(mm, 1.0, 400.0), routh, 1e-8 * routh);
+}
+
+// W given (WheelRailContact::axle_load) replaces the vertical equilibrium, in the gravitational
+// stiffness and as the Hertz wheel load's default; ResolvedContact says where W came from, so a
+// W that is only the wheelset's own weight can be marked (issue 20 review: the bundled wheelset
+// on springs had W = 14.7 kN against creep coefficients sized for a 50 kN wheel).
+TEST(HuntingValidation, AxleLoadGivenOrFromTheStaticLoads) {
+  WheelsetData d;
+  const double lam = d.conicity;
+  const Vehicle own = single_wheelset(d, 1.0e6, 2.0e6);  // springs to the ground carry nothing
+  const auto m_own = hunting_model(own);
+  EXPECT_EQ(m_own.contact.wheelsets[0].axle_load_source, "own weight only");
+  EXPECT_NEAR(m_own.contact.wheelsets[0].axle_load, d.mass * kG, 1e-9 * d.mass * kG);
+
+  Vehicle given = own;
+  given.wheelsets[0].contact.axle_load = 1.0e5;
+  const auto m_given = hunting_model(given);
+  EXPECT_EQ(m_given.contact.wheelsets[0].axle_load_source, "given");
+  EXPECT_EQ(m_given.contact.wheelsets[0].axle_load, 1.0e5);
+  // Only the gravitational term changes: W·ε/l0 with ε = λ (1e-9 relative: one sum of two terms).
+  const double diff = m_given.contact.stiffness(0, 0) - m_own.contact.stiffness(0, 0);
+  EXPECT_NEAR(diff, (1.0e5 - d.mass * kG) * lam / d.l0, 1e-9 * 1.0e5 * lam / d.l0);
+  EXPECT_EQ(m_given.contact.stiffness(1, 0), m_own.contact.stiffness(1, 0));
+  EXPECT_EQ(m_given.contact.creep_damping, m_own.contact.creep_damping);
+  // Against the hand-derived quartic with that W: the critical speed moves with it.
+  const double routh = routh_critical_speed(d, 1.0e5, 1.0e6, 2.0e6, 1.0, 400.0);
+  EXPECT_NEAR(eigen_critical_speed(m_given, 1.0, 400.0), routh, 1e-8 * routh);
+
+  // The Hertz contact takes W/2 per wheel unless its wheel load is given.
+  Vehicle hertz = given;
+  hertz.wheelsets[0].contact.creep.reset();
+  HertzContactInput h;
+  h.rail_head_radius = 0.3;
+  hertz.wheelsets[0].contact.hertz = h;
+  const auto m_hertz = hunting_model(hertz);
+  const auto& e = m_hertz.contact.wheelsets[0].ellipse;
+  ASSERT_TRUE(e.has_value());
+  h.wheel_load = 0.5e5;
+  const HertzContact want = hertz_contact(h, d.r0);
+  EXPECT_DOUBLE_EQ(e->a, want.a);
+  EXPECT_DOUBLE_EQ(e->b, want.b);
+
+  // And with a mass standing on it: the static loads.
+  Vehicle loaded = own;
+  Body load;
+  load.name = "load";
+  load.mass = 4000.0;
+  load.inertia = {1000.0, 1000.0, 1000.0};
+  load.held = {Motion::lateral, Motion::roll, Motion::pitch, Motion::yaw};
+  loaded.bodies.push_back(load);
+  for (double y : {-1.0, 1.0}) loaded.elements.push_back(spring("load", "load", "wheelset", {0.0, y, 0.3}, 0, 0, 1e6));
+  EXPECT_EQ(hunting_model(loaded).contact.wheelsets[0].axle_load_source, "static loads");
 }
 
 // ---------------------------------------------------------------------------------------------
