@@ -79,7 +79,7 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
     group_of_path[p] = static_cast<int>(group_names.size());
     if (q < 0) {  // a real root at every speed
       const int r = paths.root[0][p];
-      group_names.push_back(root_name(system, speeds[0].shapes.col(r)) + " (real root)");
+      group_names.push_back(root_name(system, speeds[0].shapes.col(r), false) + " (real root)");
       is_branch.push_back(false);
       continue;
     }
@@ -103,18 +103,23 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
       b.continuity.push_back(std::min(paths.continuity[s][p], paths.continuity[s][q]));
       if (b.continuity.back() < continuity_threshold) b.veers = true;
     }
-    b.name = root_name(system, speeds[0].shapes.col(first_root));
+    // An overdamped pair at the lowest speed (two real roots, or a pair whose Im λ is under 1 %
+    // of |λ|: ζ > 0.99995, a decay of e^−600 per cycle, shown as 0 Hz and ζ = 100 %) is not
+    // hunting there: it does not oscillate.
+    const cd first = speeds[0].values(first_root);
+    b.name = root_name(system, speeds[0].shapes.col(first_root), std::abs(first.imag()) > 0.01 * std::abs(first));
     if (kinematic(b, grid, klingel_wavelength)) b.name += " (kinematic)";
     group_names.push_back(b.name);
     is_branch.push_back(true);
     branches.push_back(std::move(b));
   }
-  // Names that repeat: " 2", " 3", … (the first keeps its name), branches and real roots alike.
+  // Names that repeat: " (2)", " (3)", … (the first keeps its name), branches and real roots
+  // alike; in parentheses so that they do not read as a body's number ("bogie2 yaw 2").
   std::map<std::string, int> seen;
   std::vector<std::string> unique(group_names.size());
   for (size_t g = 0; g < group_names.size(); ++g) {
     const int count = ++seen[group_names[g]];
-    unique[g] = count == 1 ? group_names[g] : group_names[g] + " " + std::to_string(count);
+    unique[g] = count == 1 ? group_names[g] : group_names[g] + " (" + std::to_string(count) + ")";
   }
   size_t next_branch = 0;
   for (size_t g = 0; g < group_names.size(); ++g)
