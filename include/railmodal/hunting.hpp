@@ -55,10 +55,11 @@ struct HuntingOptions {
 /// One branch of the root locus: an eigenvalue followed from speed to speed.
 struct HuntingBranch {
   /// What moves most at the lowest speed, body names as written: "wheelset1 hunting",
-  /// "bogie1 yaw", "body lateral/roll", twins together "bogies yaw, antiphase" (with
-  /// "(kinematic)" for the branch whose frequency tends to Klingel's V/Λ; "hunting" only for a
-  /// root that oscillates there). Decided by the eigenvector at the lowest speed alone; repeats
-  /// get " (2)", " (3)" (docs/stability.md).
+  /// "bogie1 yaw", "body lateral/roll", twins together "bogie1+bogie2 yaw, antiphase", a series
+  /// damper's relaxation −k/c as "series damper relaxation (element)" (with "(kinematic)" for
+  /// the branch whose frequency tends to Klingel's V/Λ; "hunting" only for a root that
+  /// oscillates there). Decided by the eigenvector at the lowest speed alone; repeats get
+  /// " (2)", " (3)" (docs/stability.md).
   std::string name;
   std::vector<std::complex<double>> eigenvalues;  ///< per speed, 1/s, Im λ ≥ 0
   std::vector<double> damping_ratio;              ///< ζ = −Re λ/|λ| per speed

@@ -85,17 +85,23 @@ std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weight
   // leading one share the mode: name the family and the phase of the key motion, "in phase"
   // when every such twin's is within 90° of the leading body's. Which of two nearly equal
   // bogies leads is otherwise decided by round-off (0.71 of one bogie's yaw, 0.70 of the other's).
+  // The twins are listed by their names as written, in the vehicle's order, joined by "+"
+  // ("bogie1+bogie2 yaw, antiphase"): a plural made from the family ("wss" from ws1, ws2)
+  // would mangle names that are not English words.
   const std::string family = family_of(name);
-  bool shared = false, in_phase = true;
+  bool in_phase = true;
+  std::string twins;
   if (!family.empty() && family != name)
     for (const auto& [b, e] : per_mass) {
-      if (b == lead || e < 0.5 * per_mass[lead] || family_of(system.vehicle.bodies[b].name) != family) continue;
-      int twin_key = -1;
-      if (words_of(system, energy, b, oscillatory, &twin_key) != words) continue;
-      shared = true;
+      const std::string& other = system.vehicle.bodies[b].name;
+      int twin_key = key;
+      if (b != lead && (e < 0.5 * per_mass[lead] || family_of(other) != family ||
+                        words_of(system, energy, b, oscillatory, &twin_key) != words))
+        continue;
+      twins += (twins.empty() ? "" : "+") + other;
       in_phase = in_phase && std::real(weighted_shape(key) * std::conj(weighted_shape(twin_key))) >= 0.0;
     }
-  if (shared) return family + "s " + words + ", " + (in_phase ? "in phase" : "antiphase");
+  if (twins != name && !twins.empty()) return twins + " " + words + ", " + (in_phase ? "in phase" : "antiphase");
   return name + " " + words;
 }
 

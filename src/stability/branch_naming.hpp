@@ -18,9 +18,9 @@ namespace railmodal::stability {
 ///  - otherwise the body's motions that carry at least a quarter of its energy, the larger
 ///    first, joined by "/": "body lateral/roll", "bogie1 yaw";
 ///  - when twin bodies (the same name but for a trailing number: bogie1, bogie2) do the same
-///    and move at least half as much per unit mass, the family and the phase of the leading
-///    motion: "bogies yaw, in phase", "wheelsets hunting, antiphase" (as the undamped modes'
-///    names, src/solve/mode_naming.cpp).
+///    and move at least half as much per unit mass, their names joined by "+" and the phase of
+///    the leading motion: "bogie1+bogie2 yaw, in phase", "ws1+ws2 hunting, antiphase" (twins
+///    grouped as the undamped modes' names group them, src/solve/mode_naming.cpp).
 /// A system whose DOFs have no bodies (matrices read from files) is named after the label of
 /// the DOF with the most energy. A shape with no displacement (a series damper's own root,
 /// λ = −k/c, where nothing moves) is "series damper relaxation".

@@ -214,6 +214,35 @@ Vehicle two_axle_wagon() {
   return v;
 }
 
+TEST(HuntingStability, NamesOfRelaxationAndOverdampedRootsAndOfTwins) {
+  // Yaw dampers with a series spring (k = 5 MN/m, c = 20 kN·s/m) between the body and each
+  // wheelset: each adds a state whose root starts near the relaxation −k/c = −250/s (−251.6 at
+  // 10 km/h) and, at higher speed, meets a creep root and forms a complex pair. It is named as
+  // the relaxation it is, not after a body ("wagon body yaw" before); no branch that does not
+  // oscillate at the lowest speed is called hunting; the two wheelsets ws1, ws2 that share a
+  // mode are named by their names as written ("wss" or "ws 1" before).
+  Vehicle v = two_axle_wagon();
+  for (Element& e : v.elements) e.series_dampers.push_back({Motion::longitudinal, 2e4, 5e6});
+  const test::HuntingModel m = test::hunting_model(v);
+  const ContactSource source = [&](std::optional<double>) { return m.contact; };
+  const HuntingResult r = hunting_analysis(m.system, source, range(10.0 / 3.6, 300.0 / 3.6, 60));
+  int relaxations = 0, twins = 0;
+  for (const HuntingBranch& b : r.branches) {
+    const std::complex<double> first = b.eigenvalues.front();
+    if (b.name.rfind("series damper relaxation (", 0) == 0) {
+      ++relaxations;
+      EXPECT_NEAR(first.real(), -250.0, 0.05 * 250.0) << b.name;
+    }
+    if (b.name.find("hunting") != std::string::npos) {
+      EXPECT_GT(first.imag(), 0.01 * std::abs(first)) << b.name;
+    }
+    if (b.name.rfind("ws1+ws2 ", 0) == 0) ++twins;
+    EXPECT_EQ(b.name.find("wss"), std::string::npos) << b.name;
+  }
+  EXPECT_GE(relaxations, 1);
+  EXPECT_GE(twins, 1);
+}
+
 TEST(HuntingStability, BodyModesKeepTheirDampingAtAVanishingSpeed) {
   // At V = 1e-6 m/s the creep roots are ~1e13/s against the body's ~10/s; the bands that tell a
   // rigid-body or undamped root were relative to the largest |λ| and so swallowed every body
