@@ -38,8 +38,9 @@ struct HuntingOptions {
   /// Conicities of the design curve (critical speed against conicity); empty: none. The root
   /// locus is at the vehicle's own conicity.
   std::vector<double> conicities;
-  /// A damping ratio the user asks about (for example 0.05): the lowest speed at which the
-  /// least-damped branch's ζ falls to it. None: not asked.
+  /// A damping ratio the user asks about (for example 0.05): the lowest speed at which an
+  /// oscillatory branch whose ζ was above it at a lower speed falls to it
+  /// (HuntingResult::threshold_speed). None: not asked.
   std::optional<double> damping_threshold;
   /// The critical speed is refined until its bracket is below this fraction of it.
   double relative_tolerance = 1e-8;
@@ -53,8 +54,12 @@ struct HuntingOptions {
 
 /// One branch of the root locus: an eigenvalue followed from speed to speed.
 struct HuntingBranch {
-  /// What moves most at the lowest speed: "wheelset 1 hunting", "bogie 1 yaw", "body lateral",
-  /// ... (with "(kinematic)" for the branch whose frequency tends to Klingel's V/Λ).
+  /// What moves most at the lowest speed, body names as written: "wheelset1 hunting",
+  /// "bogie1 yaw", "body lateral/roll", twins together "bogie1+bogie2 yaw, antiphase", a series
+  /// damper's relaxation −k/c as "series damper relaxation (element)" (with "(kinematic)" for
+  /// the branch whose frequency tends to Klingel's V/Λ; "hunting" only for a root that
+  /// oscillates there). Decided by the eigenvector at the lowest speed alone; repeats get
+  /// " (2)", " (3)" (docs/stability.md).
   std::string name;
   std::vector<std::complex<double>> eigenvalues;  ///< per speed, 1/s, Im λ ≥ 0
   std::vector<double> damping_ratio;              ///< ζ = −Re λ/|λ| per speed
@@ -79,10 +84,14 @@ struct UnstableInterval {
 /// The linear critical speed: where the least-damped branch's ζ crosses 0 from stable below.
 struct HuntingCriticalSpeed {
   double speed = 0.0;          ///< m/s, refined to HuntingOptions::relative_tolerance
+  /// The tracked branch that goes unstable, by its lowest-speed name. Tracking follows it over
+  /// the grid, so a coarse grid (two speeds) can hand the path to another mode and this name
+  /// changes with the grid; `motion` does not.
   std::string branch;
   /// What moves most in the unstable mode at the critical speed, named as branches are
-  /// ("bogie 1 lateral/yaw"): a branch keeps the name of what it was at the lowest speed, which
-  /// after veering can be another body.
+  /// ("bogie1 lateral/yaw"), from the eigenvector at the refined critical speed only: the same
+  /// on any grid that finds the same crossing. A branch keeps the name of what it was at the
+  /// lowest speed, which after veering can be another body.
   std::string motion;
   double frequency_hz = 0.0;   ///< the hunting frequency there
   double klingel_frequency_hz = 0.0;  ///< V/Λ of the wheelsets' kinematic wavelength Λ
@@ -108,18 +117,29 @@ struct HuntingResult {
   std::vector<double> speeds;  ///< m/s, the grid
   std::vector<std::string> dofs;  ///< labels of the degrees of freedom (the first-order system's
                                   ///< displacement half), in order
-  std::vector<HuntingBranch> branches;  ///< the oscillatory branches (Im λ > 0), least damped first at the top speed
+  /// The oscillatory branches (Im λ > 0 at some speed), least damped first at the top speed. Roots
+  /// real at every speed (the creep roots, a series damper's relaxation −k/c) are not branches.
+  std::vector<HuntingBranch> branches;
   HuntingVerdict verdict = HuntingVerdict::stable_throughout;
   std::optional<HuntingCriticalSpeed> critical;
   std::vector<UnstableInterval> unstable_intervals;  ///< every one, in order of speed
   /// HuntingOptions::damping_threshold as asked (none: not asked), for the reports.
   std::optional<double> damping_threshold;
-  /// The lowest speed at which the least-damped ζ reaches HuntingOptions::damping_threshold.
+  /// The lowest speed at which an oscillatory branch whose ζ was ABOVE
+  /// HuntingOptions::damping_threshold at a lower grid speed falls to it (a downward crossing),
+  /// refined between grid speeds; none when no branch crosses downwards. Branches already at or
+  /// below the threshold at the lowest speed (a lightly damped suspension mode: a bogie's yaw at
+  /// 35 Hz, ζ = 4 %) do not decide it: they are listed in below_threshold_at_lowest_speed. Only
+  /// oscillatory branches count: a real root has no damping ratio to speak of (ζ = ±1).
   std::optional<double> threshold_speed;
-  /// The least-damped ζ is already at or below the threshold at the lowest speed (a lightly
-  /// damped suspension mode, say): threshold_speed is then the lowest speed, which is no
-  /// crossing; the reports say so and name the branch.
-  bool threshold_at_lowest_speed = false;
+  std::string threshold_branch;  ///< the branch that crosses at threshold_speed ("" when none)
+  /// The branches whose ζ is at or below the threshold at the lowest speed, least damped first.
+  std::vector<std::string> below_threshold_at_lowest_speed;
+  /// Roots left out of the least-damped search as rigid-body (|λ| ≤ 1e-9 of the oscillatory
+  /// roots' scale: a motion nothing restrains, such as a wheelset at zero conicity without
+  /// gravitational stiffness), most at any grid speed. Neutral: they neither grow nor decay, so
+  /// `stable_throughout` with neutral_roots > 0 means "no root grows", not "every motion decays".
+  int neutral_roots = 0;
   std::vector<ConicityPoint> conicity_curve;  ///< one per HuntingOptions::conicities
   std::vector<ResolvedContact> contacts;      ///< the wheelsets' contact as used
   /// Checks (the eigen-solve residual, the tracking's continuity) and the stage times.

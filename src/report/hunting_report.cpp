@@ -117,28 +117,31 @@ std::string interval_text(const UnstableInterval& u) {
   return from + ", " + to + " (" + u.branch + ")";
 }
 
-// The branch with the least ζ at the lowest speed, and that ζ.
-std::pair<std::string, double> least_damped_at_lowest_speed(const HuntingResult& r) {
-  std::pair<std::string, double> least{"", 0.0};
-  for (const HuntingBranch& b : r.branches)
-    if (!b.damping_ratio.empty() && (least.first.empty() || b.damping_ratio.front() < least.second))
-      least = {b.name, b.damping_ratio.front()};
-  return least;
+// The branches already at or below the threshold at the lowest speed, each with its ζ there:
+// "'bogie 1 yaw' (ζ = 3.99 %), …" ("" when none).
+std::string least_damped_at_lowest_speed(const HuntingResult& r) {
+  std::string list;
+  for (const std::string& name : r.below_threshold_at_lowest_speed) {
+    list += (list.empty() ? "'" : ", '") + name + "'";
+    for (const HuntingBranch& b : r.branches)
+      if (b.name == name && !b.damping_ratio.empty())
+        list += " (ζ = " + significant(100.0 * b.damping_ratio.front(), 3) + " %)";
+  }
+  return list;
 }
 
 std::string threshold_text(const HuntingResult& r) {
   if (!r.damping_threshold) return "";
   const std::string zeta = "ζ = " + significant(100.0 * *r.damping_threshold, 4) + " %";
-  if (r.threshold_at_lowest_speed) {
-    const auto [branch, z] = least_damped_at_lowest_speed(r);
-    return "already at or below " + zeta + " at the lowest speed, " + fixed(r.speeds.front() * kKmh, 2) +
-           " km/h (branch '" + branch + "', ζ = " + significant(100.0 * z, 3) + " %): no speed of the range is the "
-           "one where the damping falls to it.";
-  }
+  std::string text = "no branch damped more than " + zeta + " at a lower speed falls to it within the range.";
   if (r.threshold_speed)
-    return "the least-damped branch's damping falls to " + zeta + " at " + fixed(*r.threshold_speed * kKmh, 2) +
-           " km/h.";
-  return "the least-damped branch's damping stays above " + zeta + " over the whole range.";
+    text = "branch '" + r.threshold_branch + "' falls to " + zeta + " at " + fixed(*r.threshold_speed * kKmh, 2) +
+           " km/h, the lowest speed at which a branch damped more than that at a lower speed falls to it.";
+  const std::string below = least_damped_at_lowest_speed(r);
+  if (!below.empty())
+    text += " Already at or below it at the lowest speed, " + fixed(r.speeds.front() * kKmh, 2) +
+            " km/h, and so not what decides it: " + below + ".";
+  return text;
 }
 
 // A check's value: counts as integers, the rest to 2 significant digits (as `modes` prints its
@@ -194,11 +197,14 @@ Table verdict_table(const HuntingResult& r) {
     t.rows.push_back({"Klingel's V/Λ at that speed", fixed(c.klingel_frequency_hz, 3) + " Hz"});
     t.rows.push_back({"eigen-solves of the refinement", std::to_string(c.evaluations)});
   }
-  if (r.damping_threshold)
-    t.rows.push_back({"speed at ζ = " + significant(100.0 * *r.damping_threshold, 4) + " %",
-                      r.threshold_at_lowest_speed ? "already below at the lowest speed"
-                      : r.threshold_speed         ? fixed(*r.threshold_speed * kKmh, 2) + " km/h"
-                                                  : "not reached in the range"});
+  if (r.damping_threshold) {
+    const std::string zeta = "ζ = " + significant(100.0 * *r.damping_threshold, 4) + " %";
+    t.rows.push_back({"speed at which a branch falls to " + zeta,
+                      r.threshold_speed ? fixed(*r.threshold_speed * kKmh, 2) + " km/h (" + r.threshold_branch + ")"
+                                        : "none in the range"});
+    if (!r.below_threshold_at_lowest_speed.empty())
+      t.rows.push_back({"at or below " + zeta + " at the lowest speed", least_damped_at_lowest_speed(r)});
+  }
   return t;
 }
 
@@ -529,9 +535,9 @@ report::Chart damping_chart(const HuntingResult& r) {
   if (r.critical)
     c.lines.push_back({"V crit " + fixed(r.critical->speed * kKmh, 1), r.critical->speed * kKmh, true,
                        "the linear critical speed (km/h)"});
-  if (r.threshold_speed && !r.threshold_at_lowest_speed)
+  if (r.threshold_speed)
     c.lines.push_back({"V at ζ = " + significant(threshold, 3) + " %", *r.threshold_speed * kKmh, true,
-                       "where the least-damped branch reaches the threshold"});
+                       "where branch '" + r.threshold_branch + "' falls to the threshold"});
   for (size_t k = 0; k < r.branches.size(); ++k) {
     const HuntingBranch& b = r.branches[k];
     report::ChartSeries s;
@@ -762,7 +768,15 @@ void write_json(std::ostream& out, const Page& p) {
   member("damping_threshold", r.damping_threshold ? json(*r.damping_threshold) : json(nullptr));
   member("threshold_speed_m_s", r.threshold_speed ? json(*r.threshold_speed) : json(nullptr));
   member("threshold_speed_kmh", r.threshold_speed ? json(*r.threshold_speed * kKmh) : json(nullptr));
-  member("threshold_at_lowest_speed", json(r.threshold_at_lowest_speed));
+  member("threshold_branch", r.threshold_speed ? json(r.threshold_branch) : json(nullptr));
+  json below = json::array();
+  for (const std::string& name : r.below_threshold_at_lowest_speed) {
+    json zeta = nullptr;
+    for (const HuntingBranch& b : r.branches)
+      if (b.name == name && !b.damping_ratio.empty()) zeta = b.damping_ratio.front();
+    below.push_back({{"branch", name}, {"damping_ratio", zeta}});
+  }
+  member("below_threshold_at_lowest_speed", below);
   json curve = json::array();
   for (const ConicityPoint& c : r.conicity_curve)
     curve.push_back(

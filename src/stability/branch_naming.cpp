@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <complex>
 #include <map>
 #include <vector>
 
@@ -10,12 +11,12 @@ namespace railmodal::stability {
 
 namespace {
 
-// "bogie1" → "bogie 1"; "wheelset_2" and "body" stay as they are.
-std::string spoken(const std::string& name) {
-  size_t digits = name.size();
-  while (digits > 0 && std::isdigit(static_cast<unsigned char>(name[digits - 1]))) --digits;
-  if (digits == 0 || digits == name.size() || !std::isalpha(static_cast<unsigned char>(name[digits - 1]))) return name;
-  return name.substr(0, digits) + " " + name.substr(digits);
+// "bogie1" → "bogie", "wheelset_2" → "wheelset": what twin bodies share (as src/solve/
+// mode_naming.cpp groups them); a name without a trailing number is its own family.
+std::string family_of(const std::string& name) {
+  size_t end = name.size();
+  while (end > 0 && (std::isdigit(static_cast<unsigned char>(name[end - 1])) || name[end - 1] == '_')) --end;
+  return name.substr(0, end);
 }
 
 bool is_wheelset(const LinearSystem& system, const std::string& body) {
@@ -23,14 +24,44 @@ bool is_wheelset(const LinearSystem& system, const std::string& body) {
                      [&](const Wheelset& w) { return w.body == body; });
 }
 
+// The words for what one body does in the shape: "hunting" for an oscillating wheelset whose
+// lateral and yaw both carry at least 1 % of its energy, else its motions carrying at least a
+// quarter of its energy, the larger first, joined by "/". `key` is the DOF whose phase twins
+// compare (the largest motion; for hunting the lateral one).
+std::string words_of(const LinearSystem& system, const Eigen::VectorXd& energy, int body, bool oscillatory, int* key) {
+  const int n = system.size();
+  double total = 0.0;
+  std::vector<std::pair<double, int>> motions;
+  for (int i = 0; i < n; ++i)
+    if (system.dofs[i].body == body) motions.push_back({energy(i), i}), total += energy(i);
+  std::stable_sort(motions.begin(), motions.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  *key = motions.front().second;
+  if (oscillatory && is_wheelset(system, system.vehicle.bodies[body].name)) {
+    double lateral = 0.0, yaw = 0.0;
+    int lateral_dof = -1;
+    for (const auto& [e, i] : motions) {
+      if (system.dofs[i].motion == Motion::lateral) lateral += e, lateral_dof = i;
+      if (system.dofs[i].motion == Motion::yaw) yaw += e;
+    }
+    if (lateral >= 0.01 * total && yaw >= 0.01 * total) {
+      *key = lateral_dof;
+      return "hunting";
+    }
+  }
+  std::string words;
+  for (const auto& [e, i] : motions)
+    if (e >= 0.25 * total) words += (words.empty() ? "" : "/") + std::string(to_string(system.dofs[i].motion));
+  return words;
+}
+
 }  // namespace
 
-std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weighted_shape) {
+std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weighted_shape, bool oscillatory) {
   const int n = system.size();
   const Eigen::VectorXd energy = weighted_shape.cwiseAbs2();
-  if (energy.sum() == 0.0) return "series damper";
+  if (energy.sum() == 0.0) return "series damper relaxation";
   const int bodies = static_cast<int>(system.vehicle.bodies.size());
-  std::map<int, double> body_energy;
+  std::map<int, double> per_mass;
   for (int i = 0; i < n; ++i) {
     const int b = system.dofs[i].body;
     if (b < 0 || b >= bodies) {  // matrices without bodies: the DOF with the most energy
@@ -38,36 +69,40 @@ std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weight
       energy.maxCoeff(&most);
       return system.dofs[most].label;
     }
-    body_energy[b] += energy(i);
+    const double mass = system.vehicle.bodies[b].mass;
+    per_mass[b] += mass > 0.0 ? energy(i) / mass : energy(i);
   }
   // What moves most: the largest energy per unit of the body's mass, y² + k_roll²φ² + k_yaw²ψ²
   // with k the radii of gyration (by energy alone, a car body that follows its bogies would
   // name every low-speed mode of a bogie vehicle: it is ten times their mass).
-  int body = body_energy.begin()->first;
-  double most = -1.0;
-  for (const auto& [b, e] : body_energy) {
-    const double mass = system.vehicle.bodies[b].mass;
-    const double per_mass = mass > 0.0 ? e / mass : e;
-    if (per_mass > most) most = per_mass, body = b;
-  }
-  const double total = body_energy[body];
-  std::vector<std::pair<double, Motion>> motions;
-  for (int i = 0; i < n; ++i)
-    if (system.dofs[i].body == body) motions.push_back({energy(i), system.dofs[i].motion});
-  std::stable_sort(motions.begin(), motions.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-  const std::string& name = system.vehicle.bodies[body].name;
-  if (is_wheelset(system, name)) {
-    double lateral = 0.0, yaw = 0.0;
-    for (const auto& m : motions) {
-      if (m.second == Motion::lateral) lateral += m.first;
-      if (m.second == Motion::yaw) yaw += m.first;
+  int lead = per_mass.begin()->first;
+  for (const auto& [b, e] : per_mass)
+    if (e > per_mass[lead]) lead = b;
+  int key = -1;
+  const std::string words = words_of(system, energy, lead, oscillatory, &key);
+  const std::string& name = system.vehicle.bodies[lead].name;
+  // Twin bodies (bogie1/bogie2, wheelset1…wheelset4) that move at least half as much as the
+  // leading one share the mode: name the family and the phase of the key motion, "in phase"
+  // when every such twin's is within 90° of the leading body's. Which of two nearly equal
+  // bogies leads is otherwise decided by round-off (0.71 of one bogie's yaw, 0.70 of the other's).
+  // The twins are listed by their names as written, in the vehicle's order, joined by "+"
+  // ("bogie1+bogie2 yaw, antiphase"): a plural made from the family ("wss" from ws1, ws2)
+  // would mangle names that are not English words.
+  const std::string family = family_of(name);
+  bool in_phase = true;
+  std::string twins;
+  if (!family.empty() && family != name)
+    for (const auto& [b, e] : per_mass) {
+      const std::string& other = system.vehicle.bodies[b].name;
+      int twin_key = key;
+      if (b != lead && (e < 0.5 * per_mass[lead] || family_of(other) != family ||
+                        words_of(system, energy, b, oscillatory, &twin_key) != words))
+        continue;
+      twins += (twins.empty() ? "" : "+") + other;
+      in_phase = in_phase && std::real(weighted_shape(key) * std::conj(weighted_shape(twin_key))) >= 0.0;
     }
-    if (lateral >= 0.01 * total && yaw >= 0.01 * total) return spoken(name) + " hunting";
-  }
-  std::string words;
-  for (const auto& m : motions)
-    if (m.first >= 0.25 * total) words += (words.empty() ? "" : "/") + std::string(to_string(m.second));
-  return spoken(name) + " " + words;
+  if (twins != name && !twins.empty()) return twins + " " + words + ", " + (in_phase ? "in phase" : "antiphase");
+  return name + " " + words;
 }
 
 }  // namespace railmodal::stability

@@ -10,16 +10,20 @@ namespace railmodal::stability {
 
 /// The name of a root from its displacement shape weighted by √M_ii (squared entries: the
 /// kinetic energy of each degree of freedom, up to the factor ω²/2 they share). The body
-/// that moves most, with the most energy per unit of its mass, names it, in words with a space
-/// before a trailing number ("bogie1" → "bogie 1"):
-///  - a wheelset (a body of system.vehicle.wheelsets) whose lateral and yaw motions both carry
-///    at least 1 % of its energy is "hunting" (in the kinematic motion the yaw carries little
-///    energy: ψ = 2πy/Λ), otherwise "lateral" or "yaw";
-///  - another body is named by its motions that carry at least a quarter of its energy, the
-///    larger first, joined by "/": "body lateral/roll", "bogie 1 yaw".
+/// that moves most, with the most energy per unit of its mass, names it, its name as written:
+///  - an oscillating root (`oscillatory`, the caller's judgement: for a branch, Im λ > 1 % of
+///    |λ| at the lowest speed) of a wheelset (a body of system.vehicle.wheelsets) whose lateral
+///    and yaw motions both carry at least 1 % of its energy is "hunting" (in the kinematic
+///    motion the yaw carries little energy: ψ = 2πy/Λ); a real root never is;
+///  - otherwise the body's motions that carry at least a quarter of its energy, the larger
+///    first, joined by "/": "body lateral/roll", "bogie1 yaw";
+///  - when twin bodies (the same name but for a trailing number: bogie1, bogie2) do the same
+///    and move at least half as much per unit mass, their names joined by "+" and the phase of
+///    the leading motion: "bogie1+bogie2 yaw, in phase", "ws1+ws2 hunting, antiphase" (twins
+///    grouped as the undamped modes' names group them, src/solve/mode_naming.cpp).
 /// A system whose DOFs have no bodies (matrices read from files) is named after the label of
-/// the DOF with the most energy. A shape with no displacement (a series damper's own root
-/// where nothing moves) is "series damper".
-std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weighted_shape);
+/// the DOF with the most energy. A shape with no displacement (a series damper's own root,
+/// λ = −k/c, where nothing moves) is "series damper relaxation".
+std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weighted_shape, bool oscillatory = true);
 
 }  // namespace railmodal::stability

@@ -46,6 +46,23 @@ bool kinematic(const HuntingBranch& b, const std::vector<double>& speeds, double
   return growth > 0.75 && growth < 1.33;
 }
 
+// The series damper whose relaxation −k/c a non-oscillating root lies within 5 % of, by its
+// element's name ("" when none). A series damper adds the state of its force, whose own root is
+// −k/c; the coupling to the suspension moves it by little (0.6 % for a yaw damper of k = 5 MN/m,
+// c = 20 kN·s/m on a two-axle wagon at 10 km/h), but at higher speed it can meet a creep root and
+// form a complex pair: it is then a branch, named as the relaxation it starts as.
+std::string relaxation_of(const LinearSystem& system, cd value) {
+  if (std::abs(value.imag()) > 0.01 * std::abs(value)) return "";
+  for (const SeriesDamperRow& d : system.series_dampers) {
+    const double rate = -d.stiffness / d.damping;
+    if (std::abs(value.real() - rate) <= 0.05 * std::abs(rate)) {
+      const bool named = d.element >= 0 && d.element < static_cast<int>(system.vehicle.elements.size());
+      return "series damper relaxation" + (named ? " (" + system.vehicle.elements[d.element].name + ")" : "");
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots>& speeds, const RootPaths& paths,
@@ -79,7 +96,9 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
     group_of_path[p] = static_cast<int>(group_names.size());
     if (q < 0) {  // a real root at every speed
       const int r = paths.root[0][p];
-      group_names.push_back(root_name(system, speeds[0].shapes.col(r)) + " (real root)");
+      const std::string relaxation = relaxation_of(system, speeds[0].values(r));
+      group_names.push_back(relaxation.empty() ? root_name(system, speeds[0].shapes.col(r), false) + " (real root)"
+                                               : relaxation);
       is_branch.push_back(false);
       continue;
     }
@@ -103,18 +122,25 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
       b.continuity.push_back(std::min(paths.continuity[s][p], paths.continuity[s][q]));
       if (b.continuity.back() < continuity_threshold) b.veers = true;
     }
-    b.name = root_name(system, speeds[0].shapes.col(first_root));
+    // An overdamped pair at the lowest speed (two real roots, or a pair whose Im λ is under 1 %
+    // of |λ|: ζ > 0.99995, a decay of e^−600 per cycle, shown as 0 Hz and ζ = 100 %) is not
+    // hunting there: it does not oscillate.
+    const cd first = speeds[0].values(first_root);
+    b.name = relaxation_of(system, first);
+    if (b.name.empty())
+      b.name = root_name(system, speeds[0].shapes.col(first_root), std::abs(first.imag()) > 0.01 * std::abs(first));
     if (kinematic(b, grid, klingel_wavelength)) b.name += " (kinematic)";
     group_names.push_back(b.name);
     is_branch.push_back(true);
     branches.push_back(std::move(b));
   }
-  // Names that repeat: " 2", " 3", … (the first keeps its name), branches and real roots alike.
+  // Names that repeat: " (2)", " (3)", … (the first keeps its name), branches and real roots
+  // alike; in parentheses so that they do not read as a body's number ("bogie2 yaw 2").
   std::map<std::string, int> seen;
   std::vector<std::string> unique(group_names.size());
   for (size_t g = 0; g < group_names.size(); ++g) {
     const int count = ++seen[group_names[g]];
-    unique[g] = count == 1 ? group_names[g] : group_names[g] + " " + std::to_string(count);
+    unique[g] = count == 1 ? group_names[g] : group_names[g] + " (" + std::to_string(count) + ")";
   }
   size_t next_branch = 0;
   for (size_t g = 0; g < group_names.size(); ++g)

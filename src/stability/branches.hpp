@@ -23,7 +23,7 @@ struct Branches {
 /// continuity is the smaller of the two paths' MACs. Paths complex at no speed are real roots
 /// and are not branches. Each is named by root_name() at the lowest speed; the branches whose
 /// frequency tends to Klingel's V/Λ get " (kinematic)" (see the .cpp for the test), and names
-/// that repeat get " 2", " 3", … in order.
+/// that repeat get " (2)", " (3)", … in order.
 Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots>& speeds, const RootPaths& paths,
                         double klingel_wavelength, double continuity_threshold);
 

@@ -21,9 +21,16 @@ RootDamping root_damping(std::complex<double> value, double scale, bool raw) {
 }
 
 double root_scale(const Eigen::VectorXcd& values) {
-  double scale = 0.0;
-  for (int i = 0; i < values.size(); ++i) scale = std::max(scale, std::abs(values(i)));
-  return scale;
+  // Real roots are left out: as V → 0 the creep roots run off to −∞ as 1/V on the real axis, and
+  // a scale they set would put every suspension mode inside the bands (at V = 1e-6 m/s a car
+  // body's roll at 6 rad/s is 1e-12 of a creep root at 1e13/s). The oscillatory roots keep
+  // the scale of the suspension; only when there are none do the real roots set it.
+  double complex_scale = 0.0, scale = 0.0;
+  for (int i = 0; i < values.size(); ++i) {
+    scale = std::max(scale, std::abs(values(i)));
+    if (values(i).imag() != 0.0) complex_scale = std::max(complex_scale, std::abs(values(i)));
+  }
+  return complex_scale > 0.0 ? complex_scale : scale;
 }
 
 LeastDamped least_damped(const Eigen::VectorXcd& values, bool raw) {

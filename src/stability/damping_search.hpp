@@ -6,7 +6,8 @@
 
 namespace railmodal::stability {
 
-/// ζ = −Re λ/|λ| of one root, the scale being the largest |λ| at that speed:
+/// ζ = −Re λ/|λ| of one root, the scale being root_scale() at that speed (the largest |λ| of the
+/// oscillatory roots: not of the creep roots that run off to −∞ as V → 0):
 ///  - |λ| ≤ 1e-9·scale is a rigid-body root (a free motion nothing restrains: a wheelset at zero
 ///    conicity without gravitational stiffness): neutral, ζ = 0, and left out of the
 ///    least-damped search (it neither grows nor decays);
@@ -25,7 +26,9 @@ struct RootDamping {
 };
 RootDamping root_damping(std::complex<double> value, double scale, bool raw = false);
 
-/// The largest |λ| of a set of roots.
+/// The largest |λ| of the complex roots of a set (the largest of all when none is complex). The
+/// real roots are left out because the creep roots are real and grow as 1/V at low speed: with
+/// them in the scale, every suspension mode fell into the rigid-body band below about 1e-6 m/s.
 double root_scale(const Eigen::VectorXcd& values);
 
 /// The smallest ζ over the roots that are not rigid-body, and which root it is (−1 when every

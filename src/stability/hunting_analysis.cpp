@@ -1,5 +1,7 @@
-// The hunting-stability analysis: eigenvalues over the speed grid, tracking, the unstable
-// intervals and the critical speed, the threshold speed and the conicity curve.
+// The hunting-stability analysis: eigenvalues over the speed grid and their tracking
+// (solve_grid), the branches, the unstable intervals and the critical speed
+// (stability_over_speed), the threshold speed (threshold_crossing), the conicity curve and the
+// summary, each a function of its own.
 //
 // Stability is judged by the least-damped root's ζ = −Re λ/|λ| over all roots (branches,
 // real roots, the series dampers' roots), not by Re λ: as V → 0 the creep damping C_c/V
@@ -10,8 +12,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
-#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "railmodal/errors.hpp"
 #include "shortest_text.hpp"
@@ -126,6 +131,174 @@ std::vector<ConicityPoint> conicity_curve(const LinearSystem& system, const Cont
   return curve;
 }
 
+// The roots over the speed grid, tracked, with eigenvectors where the tracking needs them.
+struct SolvedGrid {
+  std::vector<SpeedRoots> roots;
+  RootPaths paths;
+  int with_shapes = 0;    // speeds solved with eigenvectors
+  double residual = 0.0;  // the largest relative residual of those solves
+};
+
+// Eigenvalues at every speed; shapes only where the tracking needs them (the first speed, which
+// names the branches, and both ends of every step the eigenvalues cannot match alone). On a
+// coarse grid (fewer than 64 speeds) the steps are too long for the eigenvalues alone to decide
+// most of them: shapes everywhere at once.
+SolvedGrid solve_grid(const FirstOrderSystem& fos, const std::vector<double>& speeds, int threads, StageClock* clock) {
+  const int ns = static_cast<int>(speeds.size());
+  const bool shapes_everywhere = ns < 64;
+  SolvedGrid grid;
+  grid.roots.resize(ns);
+  parallel_for(ns, threads, [&](int s) { grid.roots[s] = solve_at_speed(fos, speeds[s], shapes_everywhere); });
+  clock->lap("eigenvalues over the speed grid");
+  std::vector<int> missing, with_shapes;
+  if (shapes_everywhere)
+    for (int s = 0; s < ns; ++s) with_shapes.push_back(s);
+  else
+    missing.push_back(0);
+  grid.paths = track_roots(grid.roots, &missing);
+  while (!missing.empty()) {
+    // The solve with vectors replaces the one without, values and all: Eigen's values agree
+    // either way in practice (its real Schur form updates the whole of T), but were they to
+    // differ in the last bits, the values that go with the vectors are the consistent pair, and
+    // the tracking below runs again on them.
+    parallel_for(static_cast<int>(missing.size()), threads,
+                 [&](int k) { grid.roots[missing[k]] = solve_at_speed(fos, speeds[missing[k]], true); });
+    with_shapes.insert(with_shapes.end(), missing.begin(), missing.end());
+    missing.clear();
+    grid.paths = track_roots(grid.roots, &missing);
+    // A symmetric vehicle's nearly repeated roots (front and rear wheelsets, the two bogies)
+    // can leave the eigenvalues undecided at most speeds: then shapes everywhere at once, in
+    // one parallel batch, rather than pass after pass.
+    if (4 * (missing.size() + with_shapes.size()) > static_cast<size_t>(ns)) {
+      missing.clear();
+      for (int s = 0; s < ns; ++s)
+        if (grid.roots[s].shapes.size() == 0) missing.push_back(s);
+    }
+  }
+  grid.with_shapes = static_cast<int>(with_shapes.size());
+  std::sort(with_shapes.begin(), with_shapes.end());
+  for (int s : with_shapes) {
+    const SpeedRoots& r = grid.roots[s];
+    if (!(r.residual <= kMaxResidual))
+      throw NumericalError("hunting stability: the eigen-solve at " + shortest_text(r.speed, 6) +
+                           " m/s has a relative residual of " + shortest_text(r.residual, 3) + " (limit " +
+                           shortest_text(kMaxResidual, 3) + ")");
+    grid.residual = std::max(grid.residual, r.residual);
+  }
+  return grid;
+}
+
+// The verdict, the unstable intervals (each named after the group of its least-damped root)
+// and the critical speed. Returns the eigen-solves the refinements took.
+int stability_over_speed(const LinearSystem& system, const FirstOrderSystem& fos, const SolvedGrid& grid,
+                         const Branches& branches, const std::vector<double>& zeta, double wavelength,
+                         const HuntingOptions& options, HuntingResult* result) {
+  const Scan own = scan(result->speeds, zeta, fos, options.relative_tolerance);
+  int evaluations = own.evaluations;
+  result->verdict = own.verdict;
+  for (const ScannedInterval& i : own.intervals) {
+    const int at = least_damped(grid.roots[i.grid_index].values).root;
+    result->unstable_intervals.push_back({i.from, i.to, i.from_lowest_speed, i.to_highest_speed,
+                                          at >= 0 ? branches.name_of_root[i.grid_index][at] : std::string()});
+  }
+  if (result->verdict == HuntingVerdict::critical_speed_in_range) {
+    result->critical = critical_speed(system, own, fos, wavelength);
+    result->critical->branch = result->unstable_intervals.front().branch;
+    evaluations += 1;
+  }
+  return evaluations;
+}
+
+// ζ of one branch between grid speeds s − 1 and s: the root (upper half) nearest to the branch's
+// eigenvalue interpolated linearly between the two grid speeds. Within a grid step a branch
+// moves little against its distance to the others (the tracking matched it by eigenvalues or
+// shapes over the whole step), so the nearest root is the branch's.
+double branch_zeta(const FirstOrderSystem& fos, const HuntingBranch& b, const std::vector<double>& speeds, int s,
+                   double speed) {
+  const double t = (speed - speeds[s - 1]) / (speeds[s] - speeds[s - 1]);
+  const std::complex<double> guess = (1.0 - t) * b.eigenvalues[s - 1] + t * b.eigenvalues[s];
+  const Eigen::VectorXcd values = solve_at_speed(fos, speed, false).values;
+  int nearest = 0;
+  for (int i = 1; i < values.size(); ++i)
+    if (std::abs(values(i) - guess) < std::abs(values(nearest) - guess)) nearest = i;
+  const std::complex<double> upper = values(nearest).imag() < 0.0 ? std::conj(values(nearest)) : values(nearest);
+  return root_damping(upper, root_scale(values), true).zeta;
+}
+
+// The threshold speed (HuntingResult::threshold_speed): the lowest downward crossing of the
+// threshold by a branch that was above it at a lower grid speed. Returns the eigen-solves.
+int threshold_crossing(const FirstOrderSystem& fos, double threshold, double relative_tolerance,
+                       HuntingResult* result) {
+  const std::vector<double>& speeds = result->speeds;
+  const int ns = static_cast<int>(speeds.size());
+  std::vector<std::pair<double, std::string>> below;
+  int first_step = ns;  // the earliest grid step in which some branch crosses downwards
+  std::vector<const HuntingBranch*> crossing;
+  for (const HuntingBranch& b : result->branches) {
+    const std::vector<double>& zeta = b.damping_ratio;
+    if (zeta[0] <= threshold) below.push_back({zeta[0], b.name});
+    bool was_above = false;
+    for (int s = 0; s < ns && s <= first_step; ++s) {
+      if (was_above && zeta[s] <= threshold) {
+        if (s < first_step) first_step = s, crossing.clear();
+        crossing.push_back(&b);
+        break;
+      }
+      was_above = was_above || zeta[s] > threshold;
+    }
+  }
+  std::stable_sort(below.begin(), below.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [zeta, name] : below) result->below_threshold_at_lowest_speed.push_back(name);
+  int evaluations = 0;
+  for (const HuntingBranch* b : crossing) {
+    const int s = first_step;
+    const auto f = [&](double v) { return branch_zeta(fos, *b, speeds, s, v) - threshold; };
+    const BracketedRoot root = bracketed_root(f, speeds[s - 1], speeds[s], b->damping_ratio[s - 1] - threshold,
+                                              b->damping_ratio[s] - threshold, relative_tolerance);
+    evaluations += root.evaluations;
+    if (!result->threshold_speed || root.x < *result->threshold_speed) {
+      result->threshold_speed = root.x;
+      result->threshold_branch = b->name;
+    }
+  }
+  return evaluations;
+}
+
+// The most roots left out as rigid-body at any grid speed.
+int neutral_roots(const std::vector<SpeedRoots>& roots) {
+  int most = 0;
+  for (const SpeedRoots& r : roots) {
+    const double scale = root_scale(r.values);
+    int count = 0;
+    for (int i = 0; i < r.values.size(); ++i) count += root_damping(r.values(i), scale).rigid ? 1 : 0;
+    most = std::max(most, count);
+  }
+  return most;
+}
+
+void summarise(const SolvedGrid& grid, const std::vector<double>& zeta, int evaluations, const HuntingOptions& options,
+               HuntingResult* result) {
+  double continuity = 1.0;
+  for (const HuntingBranch& b : result->branches)
+    for (double c : b.continuity) continuity = std::min(continuity, c);
+  AnalysisSummary& summary = result->summary;
+  summary.analysis = "hunting stability";
+  summary.method =
+      "QR of the balanced first-order state matrix at each speed (Eigen), roots tracked by MAC and "
+      "eigenvalue continuity (Hungarian assignment), least-damped ζ refined by Brent's method on " +
+      std::to_string(worker_count(options.threads, static_cast<int>(result->speeds.size()))) + " thread(s)";
+  const double inf = std::numeric_limits<double>::infinity();
+  summary.checks.push_back({"max relative eigen residual", grid.residual, kMaxResidual, grid.residual <= kMaxResidual});
+  summary.checks.push_back({"1 − minimum branch continuity (MAC)", 1.0 - continuity, 1.0 - options.continuity_threshold,
+                            continuity >= options.continuity_threshold});
+  summary.checks.push_back({"least-damped ζ at the lowest speed", zeta.front(), inf, true});
+  summary.checks.push_back({"refinement evaluations (eigenvalues only)", static_cast<double>(evaluations), inf, true});
+  summary.checks.push_back(
+      {"speeds solved with eigenvectors (for the tracking)", static_cast<double>(grid.with_shapes), inf, true});
+  summary.checks.push_back(
+      {"rigid-body roots left out of the search (neutral)", static_cast<double>(result->neutral_roots), inf, true});
+}
+
 }  // namespace
 
 HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& contact,
@@ -140,105 +313,26 @@ HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& 
 
   result.speeds = speed_grid(options);
   for (const Dof& d : system.dofs) result.dofs.push_back(d.label);
-  const int ns = static_cast<int>(result.speeds.size());
-  // Eigenvalues at every speed; shapes only where the tracking needs them (the first speed,
-  // which names the branches, and both ends of every step the eigenvalues cannot match alone).
-  // On a coarse grid (fewer than 64 speeds) the steps are too long for the eigenvalues alone to
-  // decide most of them: shapes everywhere at once.
-  const bool shapes_everywhere = ns < 64;
-  std::vector<SpeedRoots> roots(ns);
-  parallel_for(ns, options.threads,
-               [&](int s) { roots[s] = solve_at_speed(fos, result.speeds[s], shapes_everywhere); });
-  clock.lap("eigenvalues over the speed grid");
-  // Shapes at the first speed (they name the branches), then wherever the tracking asks for
-  // them; tracked again until it asks for none. The eigenvalues do not depend on whether
-  // vectors are asked for (Eigen's real Schur form updates the whole of T either way), which is
-  // checked, so paths found before stay valid.
-  std::vector<int> missing, with_shapes;
-  if (shapes_everywhere)
-    for (int s = 0; s < ns; ++s) with_shapes.push_back(s);
-  else
-    missing.push_back(0);
-  RootPaths paths = track_roots(roots, &missing);
-  while (!missing.empty()) {
-    parallel_for(static_cast<int>(missing.size()), options.threads, [&](int k) {
-      SpeedRoots again = solve_at_speed(fos, result.speeds[missing[k]], true);
-      if (again.values != roots[missing[k]].values)
-        throw std::logic_error("hunting stability: the eigenvalues changed when eigenvectors were asked for");
-      roots[missing[k]] = std::move(again);
-    });
-    with_shapes.insert(with_shapes.end(), missing.begin(), missing.end());
-    missing.clear();
-    paths = track_roots(roots, &missing);
-    // A symmetric vehicle's nearly repeated roots (front and rear wheelsets, the two bogies)
-    // can leave the eigenvalues undecided at most speeds: then shapes everywhere at once, in
-    // one parallel batch, rather than pass after pass.
-    if (4 * (missing.size() + with_shapes.size()) > static_cast<size_t>(ns)) {
-      missing.clear();
-      for (int s = 0; s < ns; ++s)
-        if (roots[s].shapes.size() == 0) missing.push_back(s);
-    }
-  }
-  std::sort(with_shapes.begin(), with_shapes.end());
-  double residual = 0.0;
-  for (int s : with_shapes) {
-    const SpeedRoots& r = roots[s];
-    if (!(r.residual <= kMaxResidual))
-      throw NumericalError("hunting stability: the eigen-solve at " + shortest_text(r.speed, 6) +
-                           " m/s has a relative residual of " + shortest_text(r.residual, 3) + " (limit " +
-                           shortest_text(kMaxResidual, 3) + ")");
-    residual = std::max(residual, r.residual);
-  }
+  const SolvedGrid grid = solve_grid(fos, result.speeds, options.threads, &clock);
   clock.lap("tracking, with eigenvectors where it needs them");
 
   const double wavelength = shortest_wavelength(own);
-  const Branches branches = group_branches(system, roots, paths, wavelength, options.continuity_threshold);
+  const Branches branches = group_branches(system, grid.roots, grid.paths, wavelength, options.continuity_threshold);
   result.branches = branches.oscillatory;
+  result.neutral_roots = neutral_roots(grid.roots);
   clock.lap("branches and names");
 
-  std::vector<double> zeta(ns);
-  for (int s = 0; s < ns; ++s) zeta[s] = least_damped(roots[s].values).zeta;
-  const Scan own_scan = scan(result.speeds, zeta, fos, options.relative_tolerance);
-  int evaluations = own_scan.evaluations;
-  result.verdict = own_scan.verdict;
-  for (const ScannedInterval& i : own_scan.intervals) {
-    const int at = least_damped(roots[i.grid_index].values).root;
-    result.unstable_intervals.push_back({i.from, i.to, i.from_lowest_speed, i.to_highest_speed,
-                                         at >= 0 ? branches.name_of_root[i.grid_index][at] : std::string()});
-  }
-  if (result.verdict == HuntingVerdict::critical_speed_in_range) {
-    result.critical = critical_speed(system, own_scan, fos, wavelength);
-    result.critical->branch = result.unstable_intervals.front().branch;
-    evaluations += 1;
-  }
+  std::vector<double> zeta;
+  for (const SpeedRoots& r : grid.roots) zeta.push_back(least_damped(r.values).zeta);
+  int evaluations = stability_over_speed(system, fos, grid, branches, zeta, wavelength, options, &result);
   result.damping_threshold = options.damping_threshold;
-  if (options.damping_threshold) {
-    result.threshold_speed = threshold_speed(result.speeds, zeta, ZetaFunction{fos}, *options.damping_threshold,
-                                             options.relative_tolerance, &evaluations);
-    result.threshold_at_lowest_speed = !zeta.empty() && zeta.front() <= *options.damping_threshold;
-  }
+  if (options.damping_threshold)
+    evaluations += threshold_crossing(fos, *options.damping_threshold, options.relative_tolerance, &result);
   clock.lap("critical speed and intervals");
 
   result.conicity_curve = conicity_curve(system, contact, result.speeds, options);
   clock.lap("conicity curve");
-
-  double continuity = 1.0;
-  for (const HuntingBranch& b : result.branches)
-    for (double c : b.continuity) continuity = std::min(continuity, c);
-  AnalysisSummary& summary = result.summary;
-  summary.analysis = "hunting stability";
-  summary.method =
-      "QR of the balanced first-order state matrix at each speed (Eigen), roots tracked by MAC and "
-      "eigenvalue continuity (Hungarian assignment), least-damped ζ refined by Brent's method on " +
-      std::to_string(worker_count(options.threads, ns)) + " thread(s)";
-  const double inf = std::numeric_limits<double>::infinity();
-  summary.checks.push_back({"max relative eigen residual", residual, kMaxResidual, residual <= kMaxResidual});
-  summary.checks.push_back({"1 − minimum branch continuity (MAC)", 1.0 - continuity, 1.0 - options.continuity_threshold,
-                            continuity >= options.continuity_threshold});
-  summary.checks.push_back({"least-damped ζ at the lowest speed", zeta.front(), inf, true});
-  summary.checks.push_back({"refinement evaluations (eigenvalues only)", static_cast<double>(evaluations), inf, true});
-  summary.checks.push_back(
-      {"speeds solved with eigenvectors (for the tracking)", static_cast<double>(with_shapes.size()), inf, true});
+  summarise(grid, zeta, evaluations, options, &result);
   return result;
 }
 

@@ -1,4 +1,4 @@
-// Unstable intervals and the threshold speed (see speed_scan.hpp).
+// Unstable intervals (see speed_scan.hpp).
 #include "stability/speed_scan.hpp"
 
 #include <algorithm>
@@ -75,18 +75,6 @@ std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speed
     intervals.push_back(interval);
   }
   return intervals;
-}
-
-std::optional<double> threshold_speed(const std::vector<double>& speeds, const std::vector<double>& zeta,
-                                      const ZetaAt& zeta_at, double threshold,
-                                      double relative_tolerance, int* evaluations) {
-  if (zeta.empty()) return std::nullopt;
-  if (zeta[0] <= threshold) return speeds[0];
-  for (size_t s = 1; s < speeds.size(); ++s)
-    if (zeta[s] <= threshold)
-      return refine(zeta_at, threshold, speeds[s - 1], speeds[s], zeta[s - 1], zeta[s], relative_tolerance,
-                    evaluations);
-  return std::nullopt;
 }
 
 }  // namespace railmodal::stability

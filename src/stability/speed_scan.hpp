@@ -1,9 +1,7 @@
-// The unstable speed intervals and the threshold speed, from the least-damped ζ on the grid
-// refined between grid speeds.
+// The unstable speed intervals, from the least-damped ζ on the grid refined between grid speeds.
 #pragma once
 
 #include <functional>
-#include <optional>
 #include <vector>
 
 namespace railmodal::stability {
@@ -30,11 +28,5 @@ struct ScannedInterval {
 std::vector<ScannedInterval> unstable_intervals(const std::vector<double>& speeds, const std::vector<double>& zeta,
                                                 const ZetaAt& zeta_at, double relative_tolerance,
                                                 int* evaluations);
-
-/// The lowest speed at which ζ falls to `threshold` (the lowest grid speed when ζ is already at
-/// or below it there), refined by Brent's method; none when ζ stays above it.
-std::optional<double> threshold_speed(const std::vector<double>& speeds, const std::vector<double>& zeta,
-                                      const ZetaAt& zeta_at, double threshold,
-                                      double relative_tolerance, int* evaluations);
 
 }  // namespace railmodal::stability

@@ -69,7 +69,9 @@ TEST(HuntingReport, EveryUnstableIntervalIsListedWithItsOpenEnd) {
   EXPECT_TRUE(has(table, "falls to ζ = 5 % at 150.00 km/h")) << table;
   const std::string markdown = written(r, OutputFormat::markdown);
   EXPECT_TRUE(has(markdown, "| 400.00 | 500.00 (still unstable at the highest) |")) << markdown;
-  EXPECT_TRUE(has(markdown, "| speed at ζ = 5 % | 150.00 km/h |")) << markdown;
+  EXPECT_TRUE(
+      has(markdown, "| speed at which a branch falls to ζ = 5 % | 150.00 km/h (wheelset 1 hunting (kinematic)) |"))
+      << markdown;
   EXPECT_TRUE(has(markdown, "Written by railmodal")) << markdown;
 
   const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
@@ -82,9 +84,25 @@ TEST(HuntingReport, EveryUnstableIntervalIsListedWithItsOpenEnd) {
   EXPECT_EQ(j["critical"]["evaluations"], 31);
   EXPECT_DOUBLE_EQ(j["damping_threshold"].get<double>(), 0.05);
   EXPECT_NEAR(j["threshold_speed_kmh"].get<double>(), 150.0, 1e-12 * 150.0);
+  EXPECT_EQ(j["threshold_branch"], "wheelset 1 hunting (kinematic)");
+  EXPECT_TRUE(j["below_threshold_at_lowest_speed"].empty());
   ASSERT_EQ(j["branches"].size(), 2u);
   EXPECT_EQ(j["branches"][0]["eigenvalue_re"].size(), r.speeds.size());
   EXPECT_EQ(j["speeds_kmh"].size(), r.speeds.size());
+}
+
+TEST(HuntingReport, ABranchBelowTheThresholdFromTheLowestSpeedIsListedNotTheCrossing) {
+  const HuntingResult r = test::threshold_below_at_lowest_result();
+  const std::string table = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(table, "branch 'wheelset 1 hunting (kinematic)' falls to ζ = 12 % at 82.20 km/h")) << table;
+  EXPECT_TRUE(has(table, "not what decides it: 'body lateral' (ζ = 10 %)")) << table;
+  const std::string markdown = written(r, OutputFormat::markdown);
+  EXPECT_TRUE(has(markdown, "| at or below ζ = 12 % at the lowest speed | 'body lateral' (ζ = 10 %) |")) << markdown;
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  EXPECT_EQ(j["threshold_branch"], "wheelset 1 hunting (kinematic)");
+  ASSERT_EQ(j["below_threshold_at_lowest_speed"].size(), 1u);
+  EXPECT_EQ(j["below_threshold_at_lowest_speed"][0]["branch"], "body lateral");
+  EXPECT_DOUBLE_EQ(j["below_threshold_at_lowest_speed"][0]["damping_ratio"].get<double>(), 0.1);
 }
 
 TEST(HuntingReport, UnstableAtTheLowestSpeedGivesNoCriticalSpeed) {
