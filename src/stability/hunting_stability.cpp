@@ -12,6 +12,10 @@
 
 namespace railmodal {
 
+namespace {
+constexpr double kLowestSpeed = 1e-3;  // m/s: see HuntingOptions::is_valid
+}  // namespace
+
 const char* to_string(HuntingVerdict verdict) {
   switch (verdict) {
     case HuntingVerdict::critical_speed_in_range: return "critical_speed_in_range";
@@ -29,8 +33,13 @@ std::optional<HuntingVerdict> hunting_verdict_from_string(const std::string& wor
 }
 
 bool HuntingOptions::is_valid(std::string* why) const {
-  if (!(min_speed > 0.0 && std::isfinite(min_speed)))
-    return invalid(why, "min_speed must be positive and finite (the creep damping grows as 1/V)");
+  // The kinematic roots shrink as V while the creep terms grow as 1/V: below about 1 mm/s the
+  // dense eigen-solve's round-off (ε·‖A‖, ‖A‖ ∝ 1/V) reaches the kinematic roots themselves
+  // (for the bundled coach near 1.4e-6 m/s; at 1e-3 m/s the margin is some 5e5), and a root
+  // would read unstable from round-off alone.
+  if (!(min_speed >= kLowestSpeed && std::isfinite(min_speed)))
+    return invalid(why, "min_speed must be at least 1e-3 m/s (below it the eigen-solve cannot resolve the "
+                        "kinematic roots, which shrink as V, against the creep terms, which grow as 1/V)");
   if (!(max_speed > min_speed && std::isfinite(max_speed)))
     return invalid(why, "max_speed must be finite and greater than min_speed");
   if (speed_count < 2 || speed_count > 1000000) return invalid(why, "speed_count must satisfy 2 ≤ speed_count ≤ 10⁶");

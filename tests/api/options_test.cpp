@@ -168,9 +168,11 @@ TEST(HuntingOptions, EveryOptionHasItsRule) {
   expect_valid(HuntingOptions{});
   HuntingOptions o;
   o.min_speed = 0.0;
-  expect_invalid(o, "min_speed must be positive");
+  expect_invalid(o, "min_speed must be at least 1e-3 m/s");
+  o.min_speed = 0.9e-3;  // below the speed whose kinematic roots the eigen-solve resolves
+  expect_invalid(o, "min_speed must be at least 1e-3 m/s");
   o.min_speed = kNaN;
-  expect_invalid(o, "min_speed must be positive");
+  expect_invalid(o, "min_speed must be at least 1e-3 m/s");
   o = {};
   o.max_speed = o.min_speed;
   expect_invalid(o, "max_speed must be finite and greater than min_speed");
