@@ -67,6 +67,9 @@ FirstOrderSystem::FirstOrderSystem(const LinearSystem& system, const ContactMatr
 
   const Eigen::MatrixXd L = cholesky_factor(system);
   const auto llt = [&L](const Eigen::MatrixXd& B) {
+    // No right-hand sides (a vehicle without series dampers): Eigen's triangular solve would bind
+    // a reference to the empty matrix's null data, which UBSan rightly reports.
+    if (B.cols() == 0) return Eigen::MatrixXd(B.rows(), 0);
     Eigen::MatrixXd X = L.triangularView<Eigen::Lower>().solve(B);
     L.transpose().triangularView<Eigen::Upper>().solveInPlace(X);
     return X;
