@@ -45,13 +45,6 @@ BodyEnergy energy_of(const Body& body, const BodyVector& q) {
   return e;
 }
 
-std::string family_of(const std::string& name) {
-  size_t end = name.size();
-  while (end > 0 && (std::isdigit(static_cast<unsigned char>(name[end - 1])) || name[end - 1] == '_'))
-    --end;
-  return name.substr(0, end);
-}
-
 // Height of the line with no lateral motion (roll) or x of the point with no vertical
 // motion (pitch), from the motions of the reference point.
 std::optional<CentreOfOscillation> centre_of(const Body& body, const BodyVector& q, bool roll) {
@@ -202,6 +195,13 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
   }
   d.name = body.name + " " + leading.word;
   return d;
+}
+
+std::string family_of(const std::string& name) {
+  size_t end = name.size();
+  while (end > 0 && (std::isdigit(static_cast<unsigned char>(name[end - 1])) || name[end - 1] == '_'))
+    --end;
+  return name.substr(0, end);
 }
 
 }  // namespace railmodal::solve

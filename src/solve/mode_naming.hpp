@@ -36,4 +36,8 @@ struct ModeDescription {
 /// kinetic energy φᵢ (Mφ)ᵢ, e.g. "dof3" or "body.bounce", with no centre of oscillation.
 ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape, bool repeated);
 
+/// What twin bodies share: "bogie1" → "bogie", "wheelset_2" → "wheelset"; a name without a
+/// trailing number is its own family.
+std::string family_of(const std::string& name);
+
 }  // namespace railmodal::solve

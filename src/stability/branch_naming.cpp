@@ -2,27 +2,16 @@
 #include "stability/branch_naming.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <complex>
 #include <map>
 #include <vector>
 
+#include "model/wheelset_dofs.hpp"
+#include "solve/mode_naming.hpp"
+
 namespace railmodal::stability {
 
 namespace {
-
-// "bogie1" → "bogie", "wheelset_2" → "wheelset": what twin bodies share (as src/solve/
-// mode_naming.cpp groups them); a name without a trailing number is its own family.
-std::string family_of(const std::string& name) {
-  size_t end = name.size();
-  while (end > 0 && (std::isdigit(static_cast<unsigned char>(name[end - 1])) || name[end - 1] == '_')) --end;
-  return name.substr(0, end);
-}
-
-bool is_wheelset(const LinearSystem& system, const std::string& body) {
-  return std::any_of(system.vehicle.wheelsets.begin(), system.vehicle.wheelsets.end(),
-                     [&](const Wheelset& w) { return w.body == body; });
-}
 
 // The words for what one body does in the shape: "hunting" for an oscillating wheelset whose
 // lateral and yaw both carry at least 1 % of its energy, else its motions carrying at least a
@@ -36,7 +25,7 @@ std::string words_of(const LinearSystem& system, const Eigen::VectorXd& energy, 
     if (system.dofs[i].body == body) motions.push_back({energy(i), i}), total += energy(i);
   std::stable_sort(motions.begin(), motions.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   *key = motions.front().second;
-  if (oscillatory && is_wheelset(system, system.vehicle.bodies[body].name)) {
+  if (oscillatory && model::wheelset_of(system.vehicle, system.vehicle.bodies[body].name) != nullptr) {
     double lateral = 0.0, yaw = 0.0;
     int lateral_dof = -1;
     for (const auto& [e, i] : motions) {
@@ -88,14 +77,14 @@ std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weight
   // The twins are listed by their names as written, in the vehicle's order, joined by "+"
   // ("bogie1+bogie2 yaw, antiphase"): a plural made from the family ("wss" from ws1, ws2)
   // would mangle names that are not English words.
-  const std::string family = family_of(name);
+  const std::string family = solve::family_of(name);
   bool in_phase = true;
   std::string twins;
   if (!family.empty() && family != name)
     for (const auto& [b, e] : per_mass) {
       const std::string& other = system.vehicle.bodies[b].name;
       int twin_key = key;
-      if (b != lead && (e < 0.5 * per_mass[lead] || family_of(other) != family ||
+      if (b != lead && (e < 0.5 * per_mass[lead] || solve::family_of(other) != family ||
                         words_of(system, energy, b, oscillatory, &twin_key) != words))
         continue;
       twins += (twins.empty() ? "" : "+") + other;
