@@ -21,6 +21,8 @@
 #include "railmodal/excitation.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/response.hpp"
+#include "railmodal/ride.hpp"
+#include "railmodal/ride_simulation.hpp"
 #include "railmodal/simulation.hpp"
 
 namespace railmodal {
@@ -48,6 +50,20 @@ struct SimulationSpec {
   std::vector<std::string> outputs;  ///< DOF labels to write; empty: all
 };
 
+/// The [ride] table of a scene: what `railmodal ride` computes on the scene's track
+/// irregularity (Scene::irregularity, from its `[[source]] kind = "irregularity"` table).
+struct RideSpec {
+  RideOptions options;              ///< speeds, frequency grid, modal truncation, …
+  std::vector<RideOutput> outputs;  ///< empty: default_ride_outputs of the assembled vehicle
+  /// A time-domain run: on a realisation synthesised from the spectra …
+  std::optional<TrackSynthesisOptions> realisation;
+  /// … or on measured geometry (a file resolved against the scene file's folder).
+  std::string geometry_file;
+  /// The run's speed, step, settling time and the effects it simulates (present when the
+  /// scene asks for a time-domain run).
+  std::optional<RideSimulationOptions> simulation;
+};
+
 struct Scene {
   std::string name;
   std::string source;        ///< the scene file
@@ -63,6 +79,10 @@ struct Scene {
   /// the default): friction only decides whether a resonance can grow.
   double friction_reference_amplitude = 0.0;
   std::optional<SimulationSpec> simulation;  ///< present when the scene simulates
+  /// Random track irregularity (`[[source]] kind = "irregularity"`): not a periodic source, so
+  /// not in `sources`; read by `railmodal ride` only.
+  std::optional<TrackIrregularitySpectra> irregularity;
+  std::optional<RideSpec> ride;  ///< the [ride] table
   /// Where the file writes the names that only the assembled vehicle can check, by key path:
   /// "output[0].dof", "simulation.outputs[1]", "simulation.initial[0].dof", and the keys of
   /// sources ExcitationSource::misfit names ("source[2].body", "source[2].phases"; a key left

@@ -6,7 +6,8 @@
 #   cmake -DSOURCE_DIR=<project root> -P check_layers.cmake
 #
 # The order of the analyses: model < {excitation, solve, spectrum} < {response, simulate} <
-# stability (hunting: eigenvalues against speed, limit cycles) < study < report. The reader (input) fills the model's vehicle and scene with the help of its
+# stability (hunting: eigenvalues against speed, limit cycles) < ride (random track: response
+# spectra, comfort, realisations) < study < report. The reader (input) fills the model's vehicle and scene with the help of its
 # spring formulas, and fills the study's plan type (study/study_plan.hpp, types only); nothing
 # includes input: an analysis or a report that read files would be a back-edge. Files at the
 # top of src/ belong to no stage, each a unit of its own: errors.cpp (InputError and the
@@ -28,8 +29,9 @@ set(may_include_spectrum "${foundations}")
 set(may_include_response "model;excitation;solve;spectrum;${foundations}")
 set(may_include_simulate "model;excitation;solve;spectrum;response;${foundations}")
 set(may_include_stability "model;excitation;solve;spectrum;response;simulate;${foundations}")
-set(may_include_study "model;excitation;solve;spectrum;response;simulate;stability;${foundations}")
-set(may_include_report "model;excitation;solve;spectrum;response;simulate;stability;study;${foundations}")
+set(may_include_ride "model;excitation;solve;spectrum;response;simulate;stability;${foundations}")
+set(may_include_study "model;excitation;solve;spectrum;response;simulate;stability;ride;${foundations}")
+set(may_include_report "model;excitation;solve;spectrum;response;simulate;stability;ride;study;${foundations}")
 set(may_include_errors "")
 set(may_include_load_study "input;study")
 set(may_include_comparison_curves "")

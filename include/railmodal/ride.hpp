@@ -1,0 +1,199 @@
+// railmodal — ride on random track: the response spectra of a vehicle running on track whose
+// irregularity is a stationary random process given by its power spectral density, and the
+// ride indices engineers sign off on (RMS, EN 12299 weighted RMS and its 95th percentile,
+// Sperling's Wz, the mean comfort N_MV).
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     using namespace railmodal;
+//     const LinearSystem system =
+//         assemble(load_vehicle("data/vehicles/manchester_benchmark_coach.toml"), DofSet::vertical);
+//     TrackIrregularitySpectra track;  // ORE B176 low level, wavelengths 3 … 100 m
+//     track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level,
+//                                                    {2 * 3.14159265358979 / 100, 2 * 3.14159265358979 / 3});
+//     RideOptions options;
+//     options.speeds = {100 / 3.6, 200 / 3.6};
+//     const RideResult ride = solve_ride(system, track, default_ride_outputs(system), options);
+//     for (const RideAtSpeed& at : ride.speeds)
+//       for (std::size_t i = 0; i < ride.outputs.size(); ++i)
+//         std::cout << at.speed * 3.6 << " km/h  " << ride.outputs[i].name << ": RMS "
+//                   << at.outputs[i].rms << "\n";
+//   }
+//
+// The method (docs/ride.md, "The response to random track"): the irregularity components
+// (vertical level, alignment, cross-level) are uncorrelated, stationary and one-sided in
+// wavenumber (track_spectrum.hpp). At speed V every track input (wheel) i at x_i meets the
+// same track x_i/V later than one at x = 0, so an output's frequency response to component c is
+// H_c(f) = Σ_i h_{c,i}(f)·e^{iωx_i/V} (the wheelbase and bogie-spacing filters), and its
+// one-sided PSD S_out(f) = Σ_c |H_c(f)|² G_c(f), G_c(f) = (2π/V) S_c(2πf/V). The RMS is
+// √∫S_out df over the frequency grid.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "railmodal/comfort_weighting.hpp"
+#include "railmodal/linear_system.hpp"
+#include "railmodal/response.hpp"
+#include "railmodal/summary.hpp"
+#include "railmodal/track_spectrum.hpp"
+
+namespace railmodal {
+
+/// The irregularity of one track: each component present is a spectrum of its kind
+/// (TrackSpectrum::irregularity() must match), the components uncorrelated.
+struct TrackIrregularitySpectra {
+  std::optional<TrackSpectrum> vertical_level;
+  std::optional<TrackSpectrum> alignment;
+  std::optional<TrackSpectrum> cross_level;
+};
+
+/// A direction of motion or force in the vehicle frame.
+enum class RideAxis { longitudinal, lateral, vertical };
+const char* to_string(RideAxis axis);  ///< "longitudinal", "lateral", "vertical"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<RideAxis> ride_axis_from_string(const std::string& word);
+
+/// One quantity the ride analysis reports.
+struct RideOutput {
+  enum class Kind {
+    point,               ///< motion of a body-fixed point (body, point, axis, quantity)
+    element_deflection,  ///< an element's deflection along `axis` (upper end relative to lower), m
+    element_force,       ///< the force an element carries along `axis`, N (spring + viscous damper)
+    wheel_rail_force,    ///< a wheelset's wheel–rail force along `axis` (lateral: sum of both wheels), N
+  };
+  std::string name;  ///< for reports: "floor over front bogie, vertical"; unique within a request
+  Kind kind = Kind::point;
+  std::string body;                                 ///< point: the body's name
+  Eigen::Vector3d point{0.0, 0.0, 0.0};             ///< point: m, vehicle frame
+  std::string element;                              ///< element_*: element name; wheel_rail_force: wheelset body
+  RideAxis axis = RideAxis::vertical;
+  ResponseQuantity quantity = ResponseQuantity::acceleration;  ///< point only
+};
+const char* to_string(RideOutput::Kind kind);  ///< "point", "element-deflection", "element-force", "wheel-rail-force"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<RideOutput::Kind> ride_output_kind_from_string(const std::string& word);
+
+/// The floor points a ride report looks at when none are named: on the car body (the body with
+/// the largest mass), at floor height (the body's reference point height), above each bogie
+/// centre (or axle, for a two-axle wagon), at mid-car, and 1 m in from each end of the body
+/// (the body's end is taken at the outermost element attached to it plus the overhang the
+/// vehicle gives, else at the outermost element), vertical and lateral acceleration.
+std::vector<RideOutput> default_ride_outputs(const LinearSystem& system);
+
+struct RideOptions {
+  std::vector<double> speeds;    ///< m/s, each > 0 and finite; at least one
+  double min_frequency = 0.1;    ///< Hz, > 0: the grid's lower end
+  double max_frequency = 80.0;   ///< Hz, > min_frequency: the grid's upper end
+  /// Base grid: this many log-spaced points per decade (≥ 10) …
+  int points_per_decade = 100;
+  /// … refined so that each mode in the band has at least this many points within its
+  /// half-power bandwidth (≥ 1; the refinement is what makes a lightly damped peak's area
+  /// converge: docs/accuracy.md, "Ride: frequency grid").
+  int points_per_bandwidth = 8;
+  /// 0: H(f) by a direct solve of the dynamic stiffness at every frequency (exact); n > 0:
+  /// modal superposition over the n lowest undamped modes (truncation: docs/accuracy.md).
+  int modes = 0;
+  /// b, half the distance between the contact points, m, for a cross-level height difference
+  /// Δz to become the roll angle Δz/(2b); 0: the wheelsets' contact_half_spacing where the
+  /// vehicle has wheelsets, else 0.75 m (standard gauge, 1.5 m between contact points).
+  double contact_half_spacing = 0.0;
+  /// T, s: the averaging time of the weighted RMS whose 95th percentile is estimated (EN 12299:
+  /// 5 s).
+  double percentile_window = 5.0;
+  /// Leaf friction in the vehicle: linearised statistically (an equivalent viscous damping
+  /// from the RMS relative velocity across each friction element, iterated to consistency),
+  /// with this relative tolerance on the RMS velocities and at most friction_iterations passes.
+  double friction_tolerance = 1e-6;
+  int friction_iterations = 50;
+  int threads = 1;  ///< ≥ 1: speeds shared among threads
+  /// Keep every output PSD on the grid (RideOutputAtSpeed::psd): reports plot them. Off, only
+  /// the indices are kept (studies).
+  bool keep_spectra = true;
+  bool is_valid(std::string* why) const;
+};
+
+/// One mode's share of an output's variance. With H = Σ_j H_j (H_j the modal term of mode j),
+/// σ² = Σ_j ∫|H_j|²G df + Σ_{j≠k} ∫Re(H_j H_k*)G df: `variance` is the first (the mode alone),
+/// and the cross terms of all pairs are RideOutputAtSpeed::cross_term_variance, so the shares
+/// and the cross term add up to σ² exactly.
+struct ModalContribution {
+  int mode = 0;             ///< index into RideResult::modes
+  double variance = 0.0;    ///< unit² of the output
+  double share = 0.0;       ///< variance / σ²
+};
+
+/// One output at one speed.
+struct RideOutputAtSpeed {
+  /// True when the vehicle has an undamped mode the track excites in the band: its RMS is
+  /// unbounded and every figure below is absent (NaN never appears).
+  bool unbounded = false;
+  double rms = 0.0;  ///< in the output's unit (m, m/s, m/s², N), over the grid's band
+  /// Acceleration at a point only: the RMS of the EN 12299 weighted acceleration (Wb vertical,
+  /// Wd lateral and longitudinal), m/s².
+  std::optional<double> weighted_rms;
+  /// Acceleration at a point, vertical or lateral: Sperling's Wz from the B-weighted RMS
+  /// (the filter form: sperling_wz_from_weighted_rms).
+  std::optional<double> sperling_wz;
+  /// Acceleration at a point: the 95th percentile of the weighted RMS over percentile_window,
+  /// estimated for a stationary Gaussian process (chi-square with ν ≈ 2T(∫S)²/∫S²). An
+  /// estimate, labelled so in every report.
+  std::optional<double> p95_estimate;
+  std::vector<ModalContribution> modes;  ///< largest first; empty when unbounded
+  double cross_term_variance = 0.0;      ///< see ModalContribution
+  Eigen::VectorXd psd;  ///< one-sided, unit²/Hz on RideResult::frequencies (keep_spectra)
+};
+
+/// N_MV at one floor point from the estimated P95 of its axes (en12299_nmv); an axis without an
+/// output counts as zero and is named in `missing_axes`.
+struct RideComfortAtPoint {
+  std::string body;
+  Eigen::Vector3d point{0.0, 0.0, 0.0};
+  double nmv_estimate = 0.0;
+  std::vector<RideAxis> missing_axes;
+};
+
+struct RideAtSpeed {
+  double speed = 0.0;                       ///< m/s
+  std::vector<RideOutputAtSpeed> outputs;   ///< in RideResult::outputs order
+  std::vector<RideComfortAtPoint> comfort;  ///< per distinct point with acceleration outputs
+  /// Input PSDs G_c(f) at this speed on the grid, m²/Hz, in the order vertical level,
+  /// alignment, cross-level (only the components present; keep_spectra).
+  std::vector<Eigen::VectorXd> input_psd;
+};
+
+struct RideMode {
+  std::string name;           ///< "body bounce"
+  double frequency_hz = 0.0;  ///< undamped natural frequency
+};
+
+struct RideResult {
+  std::vector<RideOutput> outputs;
+  Eigen::VectorXd frequencies;  ///< Hz, the grid, increasing
+  std::vector<RideMode> modes;  ///< the undamped modes (names, frequencies), lowest first
+  std::vector<RideAtSpeed> speeds;
+  /// How friction was treated: "none in the vehicle", or "statistical linearisation: …
+  /// converged in N passes" (never the harmonic equivalence of periodic inputs).
+  std::string friction_treatment;
+  /// The grid's integration error estimate: the largest relative change of any RMS between
+  /// the grid and its every-other-point subset (a bound that halving the grid would cause).
+  double grid_error_estimate = 0.0;
+  std::vector<std::string> notes;  ///< what a reader must know (undamped modes, truncation, …)
+  AnalysisSummary summary;
+};
+
+/// The ride of `system` on `track` at every speed of `options`.
+/// Throws std::invalid_argument for invalid options, an output that names no body, element or
+/// wheelset of the system (naming it), a spectrum whose kind does not match its slot, or no
+/// component at all; railmodal::NumericalError naming the frequency where the dynamic
+/// stiffness is singular off an undamped mode. An undamped excited mode is an answer
+/// (RideOutputAtSpeed::unbounded), not an exception.
+RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
+                      const std::vector<RideOutput>& outputs, const RideOptions& options = {});
+
+}  // namespace railmodal

@@ -1,0 +1,132 @@
+// railmodal — ride on random track in the time domain: a realisation of the track synthesised
+// from its spectra (or measured geometry read from a file) run through the simulation with
+// exactly the effects a scene names, the EN 12299 indices from the weighted acceleration
+// history (5 s RMS values, their 95th percentile, the continuous comfort Cc(t)), and the FFT
+// checks that tie the time domain to the frequency-domain ride (ride.hpp).
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     using namespace railmodal;
+//     TrackIrregularitySpectra track;
+//     track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level,
+//                                                    {2 * 3.14159265358979 / 100, 2 * 3.14159265358979 / 3});
+//     TrackSynthesisOptions synthesis;
+//     synthesis.length = 4096.0;  // m
+//     synthesis.step = 0.25;      // m
+//     synthesis.seed = 7;
+//     const TrackGeometry geometry = synthesise_track(track, synthesis);
+//     std::cout << geometry.source << ": " << geometry.vertical_level.size() << " samples\n";
+//   }
+//
+// Conventions (docs/ride.md, "Realisations"): a synthesised profile is periodic with period
+// `length`; its Fourier coefficients are complex Gaussian (independent normal real and
+// imaginary parts, variance S(Ω_k)ΔΩ/2 each), not fixed amplitudes with random phases, so that a
+// realisation's periodogram scatters as chi-square with 2 degrees of freedom about the target.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "railmodal/linear_system.hpp"
+#include "railmodal/ride.hpp"
+#include "railmodal/simulation.hpp"
+#include "railmodal/summary.hpp"
+
+namespace railmodal {
+
+/// Track geometry sampled every `step` metres from distance 0 along the track.
+struct TrackGeometry {
+  double step = 0.0;  ///< m
+  /// m, one sample per step; an empty vector: that component is absent (taken as zero).
+  Eigen::VectorXd vertical_level, alignment, cross_level;
+  /// True for a synthesised profile (it repeats every size·step metres: the FFT checks use
+  /// this); false for measured geometry.
+  bool periodic = false;
+  std::string source;  ///< "ORE B176 low, vertical level; 4096 m every 0.25 m; seed 7" or the file
+  double length() const;  ///< m, samples × step
+};
+
+struct TrackSynthesisOptions {
+  double length = 0.0;      ///< m, > 0: the period of the profile (rounded up to whole steps)
+  double step = 0.0;        ///< m, > 0: the sample spacing (Nyquist wavenumber π/step)
+  std::uint64_t seed = 1;   ///< the same seed gives the same profile on every machine
+  bool is_valid(std::string* why) const;
+};
+
+/// A realisation of `track` by inverse real FFT (FFTW). Throws std::invalid_argument for
+/// invalid options, no component, or a spectrum band the sampling cannot represent (its upper
+/// end above the Nyquist wavenumber, or its lower end below 2π/length), naming which.
+TrackGeometry synthesise_track(const TrackIrregularitySpectra& track, const TrackSynthesisOptions& options);
+
+/// Measured track geometry from a CSV file: a header row naming the columns with units
+/// (`distance [m]`, and any of `vertical level [m]`, `alignment [m]`, `cross-level [m]`; mm
+/// accepted), then rows at a constant distance step. Errors are InputError with file, line and
+/// column name.
+TrackGeometry load_track_geometry(const std::string& path);
+
+struct RideSimulationOptions {
+  double speed = 0.0;      ///< m/s, > 0
+  double time_step = 0.0;  ///< s, > 0; 0 < step ≤ the geometry's step / speed
+  /// s, ≥ 0: simulated but not evaluated, so the start-up transient is left out.
+  double settle_time = 0.0;
+  /// Vehicle effects the scene names (SimulationSpec::effects); nothing else is simulated.
+  NonlinearEffects effects;
+  double window = 5.0;  ///< s: EN 12299's averaging time of the weighted RMS values
+  bool is_valid(std::string* why) const;
+};
+
+/// One output's history and the indices computed from it.
+struct RideHistory {
+  Eigen::VectorXd values;           ///< the output's samples after settle_time, in its unit
+  Eigen::VectorXd weighted;         ///< acceleration at a point: the EN 12299-weighted samples, m/s²
+  Eigen::VectorXd window_rms;       ///< the weighted RMS of each complete window, m/s²
+  double rms = 0.0;                 ///< of `values`
+  std::optional<double> weighted_rms;  ///< of `weighted`
+  std::optional<double> sperling_wz;   ///< from the Sperling-weighted history (filter form)
+  /// The 95th percentile of window_rms (EN 12299 over 60 windows of a 5-minute zone; with
+  /// fewer windows, over those there are, and a note says so).
+  std::optional<double> p95;
+  Eigen::VectorXd continuous_comfort;  ///< Cc(t), m/s²: the running 5 s weighted RMS, every sample
+};
+
+/// The FFT checks of a realisation (issue 21, item 4).
+struct RideFftChecks {
+  /// (a) for a periodic realisation and a linear scene: max over bins and outputs of
+  /// |X_sim − H·X_track| / max|H·X_track| in the simulated steady state.
+  std::optional<double> exact_bin_error;
+  /// (b) the fraction of Welch-PSD bins of the realisation outside the 95 % confidence band of
+  /// the target spectrum (expected about 5 %).
+  double fraction_outside_band = 0.0;
+  /// (c) relative difference of the simulated RMS from the frequency-domain RMS, per output
+  /// (linear scenes: a check; friction scenes: what the statistical linearisation misses).
+  std::vector<double> rms_difference;
+  AnalysisSummary summary;
+};
+
+struct RideSimulationResult {
+  std::vector<RideOutput> outputs;
+  Eigen::VectorXd time;  ///< s, after settle_time
+  std::vector<RideHistory> histories;  ///< in `outputs` order
+  std::vector<RideComfortAtPoint> comfort;  ///< N_MV from the P95 of the histories
+  std::vector<std::string> notes;
+  AnalysisSummary summary;
+};
+
+/// Runs `system` over `geometry` at options.speed, each wheel meeting the track x_i/V after the
+/// leading one. Throws std::invalid_argument for invalid options, a geometry too short for the
+/// run, an output naming nothing in the system.
+RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeometry& geometry,
+                                   const std::vector<RideOutput>& outputs, const RideSimulationOptions& options);
+
+/// The FFT checks of a simulated realisation against the frequency-domain ride of the same
+/// system, spectra and outputs at the same speed.
+RideFftChecks check_ride_realisation(const LinearSystem& system, const TrackIrregularitySpectra& track,
+                                     const TrackGeometry& geometry, const RideSimulationResult& simulated,
+                                     const RideSimulationOptions& options);
+
+}  // namespace railmodal

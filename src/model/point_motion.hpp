@@ -1,0 +1,17 @@
+// The motion of a body-fixed point in terms of the assembled degrees of freedom: the one map
+// that point outputs (ride), point forces and anything else that looks at a point go through,
+// so that a body's flexible modes (when it has them) reach all of them at once.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "railmodal/linear_system.hpp"
+
+namespace railmodal::model {
+
+/// 3 × n: the displacement (longitudinal, lateral, vertical; m) of `point` (vehicle frame, m)
+/// on body `body` per unit of each of the system's degrees of freedom. Rows of DOFs of other
+/// bodies are zero. Throws std::invalid_argument for a body index out of range.
+Eigen::MatrixXd point_displacement_map(const LinearSystem& system, int body, const Eigen::Vector3d& point);
+
+}  // namespace railmodal::model
