@@ -12,11 +12,13 @@
 //   }
 #pragma once
 
+#include "railmodal/balance.hpp"
 #include "railmodal/comfort_weighting.hpp"
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/critical_speed_report.hpp"
 #include "railmodal/damped_modal.hpp"
+#include "railmodal/driving_gear.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/excitation.hpp"
 #include "railmodal/fft_check_report.hpp"

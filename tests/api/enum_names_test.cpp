@@ -66,6 +66,14 @@ TEST(EnumNames, Motion) {
                     motion_from_string);
 }
 
+TEST(EnumNames, GearRotation) {
+  expect_round_trip({GearRotation::forward, GearRotation::backward}, gear_rotation_from_string);
+}
+
+TEST(EnumNames, VerticalRule) {
+  expect_round_trip({VerticalRule::least_squares, VerticalRule::minimax, VerticalRule::book}, vertical_rule_from_string);
+}
+
 TEST(EnumNames, DipShape) {
   expect_round_trip({DipShape::cosine, DipShape::triangular, DipShape::parabolic}, dip_shape_from_string);
 }

@@ -5,7 +5,8 @@
 #
 #   cmake -DSOURCE_DIR=<project root> -P check_layers.cmake
 #
-# The order of the analyses: model < {excitation, solve, spectrum} < {response, simulate} <
+# The order of the analyses: model < gear (the driving gear's forces: a model of its own, whose
+# forces the excitation will take) < {excitation, solve, spectrum} < {response, simulate} <
 # stability (hunting: eigenvalues against speed, limit cycles) < ride (random track: response
 # spectra, comfort, realisations) < study < report. The reader (input) fills the model's vehicle and scene with the help of its
 # spring formulas, and fills the study's plan type (study/study_plan.hpp, types only); nothing
@@ -23,15 +24,16 @@ cmake_minimum_required(VERSION 3.16)
 set(foundations "require_valid;summary;shortest_text")
 set(may_include_model "shortest_text")
 set(may_include_input "model;shortest_text")
-set(may_include_excitation "model;${foundations}")
-set(may_include_solve "model;${foundations}")
+set(may_include_gear "model;${foundations}")
+set(may_include_excitation "model;gear;${foundations}")
+set(may_include_solve "model;gear;${foundations}")
 set(may_include_spectrum "${foundations}")
-set(may_include_response "model;excitation;solve;spectrum;${foundations}")
-set(may_include_simulate "model;excitation;solve;spectrum;response;${foundations}")
-set(may_include_stability "model;excitation;solve;spectrum;response;simulate;${foundations}")
-set(may_include_ride "model;excitation;solve;spectrum;response;simulate;stability;${foundations}")
-set(may_include_study "model;excitation;solve;spectrum;response;simulate;stability;ride;${foundations}")
-set(may_include_report "model;excitation;solve;spectrum;response;simulate;stability;ride;study;${foundations}")
+set(may_include_response "model;gear;excitation;solve;spectrum;${foundations}")
+set(may_include_simulate "model;gear;excitation;solve;spectrum;response;${foundations}")
+set(may_include_stability "model;gear;excitation;solve;spectrum;response;simulate;${foundations}")
+set(may_include_ride "model;gear;excitation;solve;spectrum;response;simulate;stability;${foundations}")
+set(may_include_study "model;gear;excitation;solve;spectrum;response;simulate;stability;ride;${foundations}")
+set(may_include_report "model;gear;excitation;solve;spectrum;response;simulate;stability;ride;study;${foundations}")
 set(may_include_errors "")
 set(may_include_load_study "input;study")
 set(may_include_comparison_curves "")
