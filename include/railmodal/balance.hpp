@@ -106,6 +106,7 @@ struct BalanceTradeOff {
 
 struct BalanceResult {
   double speed = 0.0;  ///< m/s
+  VerticalRule rule = VerticalRule::book;  ///< the rule the vertical counterweights were sized by
   std::vector<WheelBalance> wheels;  ///< axle-major, right then left
   /// The gear with its counterweights added to each wheel's masses (named "counterweight",
   /// "vertical counterweight", "overbalance"; the last marked RotatingMass::overbalance).
@@ -124,6 +125,19 @@ struct BalanceResult {
 /// The counterweights of `gear` at `speed` (m/s, > 0, the design speed). Throws
 /// std::invalid_argument for an invalid gear or options ("BalanceOptions: ...").
 BalanceResult balance_driving_gear(const DrivingGear& gear, double speed, const BalanceOptions& options = {});
+
+/// What `railmodal balance` prints (balance_report.hpp): the gear's forces as given, and its
+/// balancing by each of the three vertical rules with the same overbalance options.
+struct BalanceStudy {
+  std::string name;  ///< DrivingGear::name
+  std::vector<std::string> cylinder_names, axle_names;  ///< GearCylinder::name, GearAxle::name
+  GearResult gear;   ///< the gear as given, at the speed
+  BalanceOptions options;
+  /// One per rule in the order least_squares, minimax, book; only options.rule's has a trade-off.
+  std::vector<BalanceResult> by_rule;
+};
+/// Runs balance_driving_gear for each rule (errors as it).
+BalanceStudy study_balance(const DrivingGear& gear, double speed, const BalanceOptions& options = {});
 
 /// The counter-crank (return crank) of a Walschaerts gear as a rotating mass (Zhdanov eq. (72),
 /// E7): crank radius r, counter-crank throw r_k (from the axle to the eccentric pin), its arm

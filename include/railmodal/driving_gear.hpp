@@ -121,6 +121,9 @@ struct GearAxle {
 
 /// The driving gear of an engine.
 struct DrivingGear {
+  std::string name;             ///< for reports
+  std::string source;           ///< the file it was read from ("" when built in code)
+  double design_speed = 0.0;    ///< m/s, the speed balancing is done for (0: not stated)
   double wheel_diameter = 0.0;  ///< D, m, of the coupled wheels on the rolling circle
   /// S, m: the wheels' counterweight planes at ±S from the centreline (Zhdanov 2S = 1.59 m).
   double wheel_plane_half_spacing = 0.0;
@@ -229,6 +232,11 @@ struct GearResult {
 /// The forces at `speed` (m/s, > 0) over one revolution. Throws std::invalid_argument for an
 /// invalid gear (DrivingGear::is_valid) or options ("GearOptions: ...").
 GearResult solve_driving_gear(const DrivingGear& gear, double speed, const GearOptions& options = {});
+
+/// The [driving_gear] table of a TOML file (a vehicle file or a locomotive file such as
+/// data/locomotives/su.toml; docs/driving_gear.md, "Input"), with units converted to SI. Other
+/// tables of the file are not read here. Throws InputError naming file, line, column and key.
+DrivingGear load_driving_gear(const std::string& path);
 
 /// The speed at which an overload coefficient `alpha` found at `speed` reaches `limit`: every
 /// force grows as V², so V·√(limit/α) (+∞ for α = 0).

@@ -13,6 +13,7 @@
 #pragma once
 
 #include "railmodal/balance.hpp"
+#include "railmodal/balance_report.hpp"
 #include "railmodal/comfort_weighting.hpp"
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/critical_speed.hpp"

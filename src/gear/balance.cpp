@@ -66,6 +66,14 @@ double rod_force_on_wheel(const DrivingGear& g, std::size_t w, double theta, dou
   return sum;
 }
 
+// The revolution a balancing evaluates: its steps, and as many harmonics as they resolve (up to 6).
+GearOptions gear_options_for(const BalanceOptions& options) {
+  GearOptions g;
+  g.steps = options.steps;
+  g.harmonics = std::min(g.harmonics, options.steps / 2 - 1);
+  return g;
+}
+
 bool drives(const DrivingGear& g, std::size_t axle) {
   return std::any_of(g.cylinders.begin(), g.cylinders.end(), [&](const GearCylinder& c) { return static_cast<std::size_t>(c.axle) == axle; });
 }
@@ -98,14 +106,14 @@ BalanceResult balance_driving_gear(const DrivingGear& gear, double speed, const 
   if (!(speed > 0.0) || !std::isfinite(speed)) throw std::invalid_argument("balancing: speed must be positive and finite (m/s)");
   BalanceResult r;
   r.speed = speed;
+  r.rule = options.rule;
   r.summary.analysis = "driving-gear counterweights";
   r.summary.method = std::string("two-plane reduction of the rotating masses; vertical counterweight by the ") +
                      to_string(options.rule) + " rule; " +
                      (options.allowed_alpha > 0 ? "overbalance from the allowed overload coefficient (Zhdanov (89a))"
                                                 : "overbalance from the fraction of reciprocating mass");
   StageClock clock(&r.summary);
-  GearOptions gear_options;
-  gear_options.steps = options.steps;
+  const GearOptions gear_options = gear_options_for(options);
   r.before = solve_driving_gear(gear, speed, gear_options);
   const double omega = r.before.omega, S = gear.wheel_plane_half_spacing;
   const std::size_t wheels = 2 * gear.axles.size();
@@ -230,6 +238,23 @@ BalanceResult balance_driving_gear(const DrivingGear& gear, double speed, const 
     r.summary.checks.push_back({"minimax residual above the least-squares residual, N", worst_minimax_excess, 1e-6,
                                 worst_minimax_excess <= 1e-6});
   return r;
+}
+
+BalanceStudy study_balance(const DrivingGear& gear, double speed, const BalanceOptions& options) {
+  BalanceStudy study;
+  study.name = gear.name;
+  for (const GearCylinder& c : gear.cylinders) study.cylinder_names.push_back(c.name);
+  for (const GearAxle& a : gear.axles) study.axle_names.push_back(a.name);
+  study.options = options;
+  require_valid(options, "BalanceOptions: ");
+  study.gear = solve_driving_gear(gear, speed, gear_options_for(options));
+  for (VerticalRule rule : {VerticalRule::least_squares, VerticalRule::minimax, VerticalRule::book}) {
+    BalanceOptions o = options;
+    o.rule = rule;
+    if (rule != options.rule) o.trade_off_fractions.clear();
+    study.by_rule.push_back(balance_driving_gear(gear, speed, o));
+  }
+  return study;
 }
 
 }  // namespace railmodal

@@ -65,8 +65,8 @@ SineForce minimax(const std::vector<double>& y) {
   // max_i |y_i + a s_i + b c_i| is convex in (a, b) (a maximum of absolute values of affine
   // functions), and so is its minimum over b as a function of a: nested golden sections find the
   // minimum. Every |a|, |b| beyond 2·max|y| leaves a residual above max|y| (the residual at 0).
-  const double bound = 2.0 * *std::max_element(y.begin(), y.end(), [](double p, double q) { return std::abs(p) < std::abs(q); });
-  const double span = std::max(std::abs(bound), 1e-300);
+  const double span = 2.0 * std::abs(*std::max_element(y.begin(), y.end(), [](double p, double q) { return std::abs(p) < std::abs(q); }));
+  if (span == 0.0) return {};  // nothing to balance
   const Steps steps(static_cast<int>(y.size()));
   const auto best_b = [&](double a) {
     return golden_minimum([&](double b) { return residual_of(y, steps, a, b); }, -span, span);

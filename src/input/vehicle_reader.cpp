@@ -141,6 +141,8 @@ Vehicle read_vehicle(const toml::value& document, const std::string& path) {
   } else {
     head.fail("template", "unknown template '" + form + "' (two-axle, bogie, general)");
   }
+  // A locomotive's [driving_gear] is read by load_driving_gear (driving_gear.hpp), not here.
+  if (root.has("driving_gear")) (void)root.raw("driving_gear");
   root.finish();
   return v;
 }

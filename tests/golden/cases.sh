@@ -55,6 +55,16 @@ golden_cases() {
       echo "stability/$v.conicity.$ext stability data/vehicles/$v.toml --conicity 0.05,0.1,0.2,0.3,0.4 --threshold 5% --format $f --threads 2"
     done
   done
+  # The driving gear (issue 22): the bundled locomotives in every format, with no overbalance and
+  # with the coupled wheels overbalanced up to alpha = 0.3 (Zhdanov eq. (89a)).
+  for v in data/locomotives/*.toml; do
+    v=${v#data/locomotives/}; v=${v%.toml}
+    for f in table csv json markdown html; do
+      local ext=$f; [ "$f" = markdown ] && ext=md
+      echo "balance/$v.$ext balance data/locomotives/$v.toml --format $f"
+      echo "balance/$v.alpha.$ext balance data/locomotives/$v.toml --alpha 0.3 --format $f"
+    done
+  done
   # The deprecated spelling of critical-speed (issue 17 item 10) writes the same bytes as the new:
   # this file equals two_axle_freight_wagon_joints.csv.
   echo "critical-speed/two_axle_freight_wagon_joints.old_spelling.csv critical-speed data/vehicles/two_axle_freight_wagon.toml --scene data/scenes/two_axle_freight_wagon_joints.toml --format csv -q"

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gear/su_gear.hpp"
+#include "railmodal/balance.hpp"
 #include "railmodal/driving_gear.hpp"
 
 namespace railmodal {
@@ -218,6 +219,18 @@ TEST(DrivingGearValidation, SuRodDerivedQuantities) {
   EXPECT_NEAR(y1 / kKgf, 4248.23, 0.01);  // recomputed (rigid body, exact ω = 30.03003 1/s); rounding
   EXPECT_NEAR(simple / y1, 1.131, 0.0005);
   EXPECT_NEAR(y2 / y1, 0.2505, 0.0005);
+}
+
+TEST(DrivingGearValidation, CounterCrankGeometryOfTheSu) {
+  // E7 (Zhdanov eq. (72), p. 90): r = 350, l = 405.3, r_k = 150, AS = 135.7 mm, q_k = 35.014 kg.
+  // Book: cos α 0.93147, OS 229 mm, cos ψ 0.97645, ψ 12°30′; consistent: OS 228.98 mm, cos ψ
+  // 0.97648, ψ = 12.45° (12°27′). The consistent values are held (digest rounding).
+  const RotatingMass m = counter_crank(0.350, 0.150, 0.4053, 0.1357, 35.014, 1.0);
+  EXPECT_NEAR(m.radius, 0.22898, 0.000005);
+  EXPECT_NEAR(std::cos(m.angle), 0.97648, 0.000005);
+  EXPECT_NEAR(m.angle * 180 / M_PI, 12.45, 0.005);
+  EXPECT_DOUBLE_EQ(m.mass, 35.014);
+  EXPECT_NEAR(counter_crank(0.350, 0.150, 0.4053, 0.1357, 35.014, -1.0).angle, -m.angle, 1e-15);
 }
 
 }  // namespace
