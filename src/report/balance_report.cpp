@@ -259,7 +259,6 @@ void write_html(std::ostream& out, const BalanceStudy& study, const std::vector<
   const BalanceResult& b = chosen(study);
   report::Chart loads = angle_chart("wheel-loads", "Dynamic wheel loads after balancing (" + rule_of(b) + " rule)",
                                     "dP (kN)");
-  report::Chart engine = angle_chart("surging-nosing", "Surging and nosing after balancing", "kN, kN m");
   for (std::size_t w = 0; w < wheels.size(); ++w) {
     report::ChartSeries s;
     s.label = wheels[w];
@@ -269,17 +268,39 @@ void write_html(std::ostream& out, const BalanceStudy& study, const std::vector<
     }
     loads.series.push_back(s);
   }
-  report::ChartSeries surging, nosing;
-  surging.label = "sum X (kN)";
-  nosing.label = "sum MX (kN m)";
+  // One chart each: an axis carries one unit.
+  report::Chart surging = angle_chart("surging", "Surging after balancing", "sum X (kN)");
+  report::Chart nosing = angle_chart("nosing", "Nosing after balancing", "sum MX (kN m)");
+  report::ChartSeries x, mx;
+  x.label = "sum X";
+  mx.label = "sum MX";
   for (const GearState& st : b.after.states) {
-    surging.x.push_back(st.crank_angle / kDegree);
-    surging.y.push_back(st.surging / 1000.0);
-    nosing.x.push_back(st.crank_angle / kDegree);
-    nosing.y.push_back(st.nosing / 1000.0);
+    x.x.push_back(st.crank_angle / kDegree);
+    x.y.push_back(st.surging / 1000.0);
+    mx.x.push_back(st.crank_angle / kDegree);
+    mx.y.push_back(st.nosing / 1000.0);
   }
-  engine.series = {surging, nosing};
-  out << report::svg_chart(loads) << "\n" << report::svg_chart(engine) << "\n";
+  surging.series = {x};
+  nosing.series = {mx};
+  out << report::svg_chart(loads) << "\n" << report::svg_chart(surging) << "\n" << report::svg_chart(nosing) << "\n";
+  if (!b.trade_off.empty()) {
+    report::Chart trade;
+    trade.id = "trade-off";
+    trade.title = "Largest alpha against the reciprocating mass balanced (" + rule_of(b) + " rule)";
+    trade.x_label = "reciprocating mass balanced (%)";
+    trade.y_label = "largest alpha (% of the static wheel load)";
+    report::ChartSeries alpha;
+    alpha.label = "largest alpha of any wheel";
+    for (const BalanceTradeOff& t : b.trade_off) {
+      alpha.x.push_back(100 * t.fraction);
+      alpha.y.push_back(100 * t.max_alpha);
+    }
+    trade.series = {alpha};
+    for (double limit : {0.3, 1.0})
+      trade.lines.push_back(
+          {report::fixed(limit, 1), 100 * limit, false, limit < 1 ? "the passenger-engine limit" : "wheel lift"});
+    out << report::svg_chart(trade) << "\n";
+  }
   for (const Section& s : sections) {
     out << "<h2>" << report::html_escape(s.title) << "</h2>\n";
     report::write_html_table(out, s.table);

@@ -149,6 +149,26 @@ TEST(DrivingGear, SecondHarmonicsCancelInSurgingAndAddInNosingForCranksAt90Degre
   EXPECT_TRUE(r.summary.passed()) << r.summary.brief();
 }
 
+TEST(DrivingGear, ThreeCranksAt120DegreesLeaveOnlyTheSixthOrderOfSurging) {
+  // Kvasnikov (84)–(86), in-line mechanisms at equal crank spacing: ΣX = Σ_n X_n Σ_i cos n(φ + α_i)
+  // and Σ_i cos n α_i vanishes unless n is a multiple of 3; X has orders 1 and the even ones only
+  // (A_n, eq. (16)), so with three cranks the lowest order left is the sixth (3·A₆ for a
+  // reciprocating mass). Three Су cylinders on the centreline, cranks at 0°, −120°, −240°.
+  DrivingGear g = su_rods_only();
+  g.cylinders = {su_cylinder(true), su_cylinder(true), su_cylinder(true)};
+  for (int i = 0; i < 3; ++i) {
+    g.cylinders[i].lateral = 0.0;
+    g.cylinders[i].axle = 0;
+    g.cylinders[i].crank_offset = -2.0 * M_PI * i / 3;
+  }
+  const GearResult r = solve_driving_gear(g, 100 / 3.6);
+  const double one = r.horizontal_harmonics[0][1].amplitude();  // one cylinder's first order, ≈ 187 kN
+  for (int n : {1, 2, 3, 4, 5}) EXPECT_NEAR(r.surging_harmonics[n].amplitude(), 0.0, 1e-9 * one) << n;
+  // The sixth: three times one cylinder's (round-off of the sums, 1e-9 of the first order).
+  EXPECT_NEAR(r.surging_harmonics[6].amplitude(), 3 * r.horizontal_harmonics[0][6].amplitude(), 1e-9 * one);
+  EXPECT_GT(r.surging_harmonics[6].amplitude(), 1e-6 * one);
+}
+
 TEST(DrivingGear, WheelLoadsCarryTheRodForceMovedToTheWheelPlanes) {
   // The right rod plane is a = 0.345 m outside the right wheel plane (S = 0.795 m): that wheel
   // carries (2S + a)/2S of the right rod's Y and the left wheel −a/2S (Zhdanov (73a)–(74a)).
