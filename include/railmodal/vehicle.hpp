@@ -57,12 +57,12 @@ std::optional<Motion> motion_from_string(const std::string& word);
 
 /// The first vertical bending mode of a body: a free–free Euler–Bernoulli beam of length L lying
 /// along x, centred at `centre`, whose deflection is w(x, t) = φ(x)·q(t). The mode shape is the
-/// closed form of the free–free beam (β₁L = 4.730040745, Timoshenko 1974 §5.3; Blevins 1979
-/// Table 8-1), normalised to φ = 1 at the beam's ends, so q is the ends' vertical displacement
-/// (m) relative to the rigid motion, positive up; the centre then moves −0.6078·q. The mode is
-/// given by exactly one of `beam` (a uniform beam: the frequency and modal mass follow) and
-/// `mode` (the frequency and modal mass directly). docs/ride.md, "Car-body bending", says what
-/// the model takes in and what it leaves out.
+/// closed form of the free–free beam (β₁L = 4.730040745: Blevins 1979 Table 8-1; Thomson and
+/// Dahleh 1998 Appendix D), normalised to φ = 1 at the beam's ends, so q is the ends' vertical
+/// displacement (m) relative to the rigid motion, positive up; the centre then moves −0.6078·q,
+/// and the nodes are 0.2242·L from each end. The mode is given by exactly one of `beam` (a
+/// uniform beam: the frequency and modal mass follow) and `mode` (the frequency and modal mass
+/// directly). docs/ride.md, "Car-body bending", says what the model takes in and leaves out.
 struct BodyBending {
   /// A uniform beam: f = (β₁L)² / (2π L²) · √(EI / m'), modal mass m'·L/4 (for φ = 1 at the ends).
   struct Beam {
