@@ -45,12 +45,42 @@ namespace railmodal {
 /// The motions of a body's reference point. Longitudinal motion (surge) is held unless the
 /// body frees it (Body::longitudinal_free): the book's wagons are held longitudinally by the
 /// axlebox guides and draw gear, and their pitch is taken about the reference point.
-enum class Motion { lateral, bounce, roll, pitch, yaw, longitudinal };
+/// `bending` is not a motion of the reference point but the amplitude of the body's first
+/// vertical bending mode (Body::bending), a degree of freedom "<body>.bending" only of a body
+/// that carries one; it cannot be held.
+enum class Motion { lateral, bounce, roll, pitch, yaw, longitudinal, bending };
 
-/// "lateral", "bounce", "roll", "pitch", "yaw", "longitudinal".
+/// "lateral", "bounce", "roll", "pitch", "yaw", "longitudinal", "bending".
 const char* to_string(Motion motion);
 /// Inverse of to_string; returns std::nullopt for an unknown word.
 std::optional<Motion> motion_from_string(const std::string& word);
+
+/// The first vertical bending mode of a body: a free–free Euler–Bernoulli beam of length L lying
+/// along x, centred at `centre`, whose deflection is w(x, t) = φ(x)·q(t). The mode shape is the
+/// closed form of the free–free beam (β₁L = 4.730040745: Blevins 1979 Table 8-1; Thomson and
+/// Dahleh 1998 Appendix D), normalised to φ = 1 at the beam's ends, so q is the ends' vertical
+/// displacement (m) relative to the rigid motion, positive up; the centre then moves −0.6078·q,
+/// and the nodes are 0.2242·L from each end. The mode is given by exactly one of `beam` (a
+/// uniform beam: the frequency and modal mass follow) and `mode` (the frequency and modal mass
+/// directly). docs/ride.md, "Car-body bending", says what the model takes in and leaves out.
+struct BodyBending {
+  /// A uniform beam: f = (β₁L)² / (2π L²) · √(EI / m'), modal mass m'·L/4 (for φ = 1 at the ends).
+  struct Beam {
+    double bending_stiffness = 0.0;  ///< EI, N·m², > 0
+    double mass_per_length = 0.0;    ///< m', kg/m, > 0
+  };
+  /// The mode itself, as measured or computed elsewhere.
+  struct Mode {
+    double frequency = 0.0;   ///< f_b, Hz, > 0: the free–free body's first bending frequency
+    double modal_mass = 0.0;  ///< m_b, kg, > 0: ∫ m(x) φ(x)² dx with φ = 1 at the beam's ends
+  };
+  double length = 0.0;  ///< L, m, > 0
+  /// x of the beam's centre, m (vehicle frame); none: the body's centre of gravity.
+  std::optional<double> centre;
+  std::optional<Beam> beam;
+  std::optional<Mode> mode;
+  double damping_ratio = 0.0;  ///< ζ, modal: 0 ≤ ζ < 1 (C gains 2ζω_b·m_b)
+};
 
 /// A rigid body: car body, bogie frame, bolster, locomotive frame, ...
 struct Body {
@@ -74,6 +104,9 @@ struct Body {
   /// inertia J + m·d² of a CG a height d above it; freed, the results do not depend on where
   /// the reference point is.
   bool longitudinal_free = false;
+  /// The body's first vertical bending mode (a degree of freedom "<name>.bending"); none: the
+  /// body is rigid, and nothing it takes part in changes.
+  std::optional<BodyBending> bending;
 };
 
 /// Load–deflection curve of one progressive spring (the Khanin conical spring, springs digest

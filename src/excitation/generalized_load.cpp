@@ -4,7 +4,7 @@
 #include <string>
 
 #include "model/analysis_limits.hpp"
-#include "model/rigid_body.hpp"
+#include "model/point_motion.hpp"
 #include "railmodal/excitation.hpp"
 
 namespace railmodal {
@@ -57,10 +57,11 @@ void load_parts(const LinearSystem& system, const HarmonicLoad& load, Eigen::Vec
   for (const PointForce& f : load.forces) {
     if (f.body < 0 || f.body >= static_cast<int>(system.vehicle.bodies.size()))
       throw std::invalid_argument("generalized_load: no such body");
-    const model::PointMap G = model::point_map(system.vehicle.bodies[f.body], f.point);
+    // The point's displacement per DOF, its bending included where the body has a mode: the
+    // force's virtual work, per DOF of that body (the others' columns are zero).
+    const Eigen::MatrixXd G = model::point_displacement_map(system, f.body, f.point);
     for (int d = 0; d < n; ++d)
-      if (system.dofs[d].body == f.body)
-        (*QK)(d) += G.col(static_cast<int>(system.dofs[d].motion)).cast<std::complex<double>>().dot(f.amplitude);
+      if (system.dofs[d].body == f.body) (*QK)(d) += G.col(d).cast<std::complex<double>>().dot(f.amplitude);
   }
 }
 

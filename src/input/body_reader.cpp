@@ -1,5 +1,8 @@
 #include "input/body_reader.hpp"
 
+#include <cmath>
+#include <string>
+
 #include "railmodal/vehicle.hpp"
 
 namespace railmodal::input {
@@ -43,10 +46,56 @@ bool read_longitudinal_free(TableReader& t) {
   if (words.empty()) t.fail("free", "is empty: write free = [\"longitudinal\"] or leave the key out");
   for (const auto& word : words)
     if (word != "longitudinal")
-      t.fail("free", motion_from_string(word)
+      t.fail("free", motion_from_string(word) && word != "bending"
                          ? "'" + word + "' is free unless held; only longitudinal motion is held unless freed"
                          : "unknown motion '" + word + "' (only \"longitudinal\" is held unless freed)");
   return true;
+}
+
+std::optional<BodyBending> read_bending(TableReader& parent) {
+  if (!parent.has("bending")) return std::nullopt;
+  TableReader t = parent.table("bending");
+  BodyBending b;
+  b.length = t.positive("length", Quantity::length);
+  b.centre = t.optional_quantity("centre", Quantity::length);
+  const bool beam = t.has("bending_stiffness") || t.has("mass_per_length");
+  const bool mode = t.has("frequency") || t.has("modal_mass");
+  if (beam == mode)
+    t.fail(beam ? "frequency" : "bending_stiffness",
+           beam ? "give the beam (bending_stiffness and mass_per_length) or the mode (frequency and modal_mass), "
+                  "not both"
+                : "missing: give the beam, bending_stiffness = \"2.5e9 N*m^2\" and mass_per_length = \"1.3 t/m\", "
+                  "or the mode, frequency = \"9 Hz\" and modal_mass = \"8 t\"");
+  if (beam) {
+    b.beam.emplace();
+    b.beam->bending_stiffness = t.positive("bending_stiffness", Quantity::force_area);
+    b.beam->mass_per_length = t.positive("mass_per_length", Quantity::mass_per_length);
+  } else {
+    b.mode.emplace();
+    b.mode->frequency = t.positive("frequency", Quantity::frequency);
+    b.mode->modal_mass = t.positive("modal_mass", Quantity::mass);
+  }
+  // Required: an undamped bending mode has an unbounded resonance, and no default is right.
+  b.damping_ratio = t.positive("damping_ratio", Quantity::dimensionless, true);
+  if (!(b.damping_ratio < 1.0))
+    t.fail("damping_ratio", "must be below 1 (a fraction of critical damping: 0.02 is 2 %)");
+  t.finish();
+  return b;
+}
+
+void check_bending_reach(TableReader& body_table, const Body& body, const std::vector<Element>& elements) {
+  if (!body.bending) return;
+  const double centre = body.bending->centre.value_or(body.centre_of_gravity.x());
+  const double half = 0.5 * body.bending->length;
+  for (const Element& e : elements) {
+    if (e.upper != body.name && e.lower != body.name) continue;
+    // The tolerance of model::BendingMode::shape_at, which would refuse the same element.
+    if (std::abs(e.point.x() - centre) <= half * (1.0 + 2e-9)) continue;
+    TableReader t = body_table.table("bending");
+    t.fail("length", "element '" + e.name + "' acts on '" + body.name + "' at x = " + std::to_string(e.point.x()) +
+                         " m, beyond the ends of the bending beam (x = " + std::to_string(centre - half) + " m to " +
+                         std::to_string(centre + half) + " m): lengthen the beam or move its centre");
+  }
 }
 
 namespace {

@@ -2,6 +2,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
+#include <vector>
 
 #include "input/table_reader.hpp"
 #include "railmodal/vehicle.hpp"
@@ -19,6 +21,16 @@ Eigen::Vector3d read_inertia(TableReader& t, double mass);
 /// `free = ["longitudinal"]`: whether the body frees its longitudinal motion, the one motion
 /// held unless freed (false when absent).
 bool read_longitudinal_free(TableReader& t);
+
+/// `bending = { ... }` (a `[body.bending]` table): the body's first vertical bending mode, a
+/// free–free beam: `length`, optional `centre` (x; default the CG's), `damping_ratio`, and
+/// either `bending_stiffness` (EI) with `mass_per_length`, or `frequency` with `modal_mass`
+/// (mode shape 1 at the beam's ends) (docs/input.md, "Car-body bending"). None when absent.
+std::optional<BodyBending> read_bending(TableReader& t);
+
+/// Fails at the body's `bending.length` when an element attached to `body` acts beyond the
+/// ends of its bending beam (the beam is not there). Nothing when the body has no bending.
+void check_bending_reach(TableReader& body_table, const Body& body, const std::vector<Element>& elements);
 
 /// The wheel–rail contact keys of a wheelset table (`[[wheelset]]` or a template's
 /// `[wheelset]`): rolling_radius, contact_half_spacing, conicity, the optional

@@ -266,6 +266,7 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   const double l = b.quantity("cg_height", Quantity::length);  // CG above the axle plane
   const double offset = b.optional_quantity("cg_offset", Quantity::length).value_or(0.0);
   body.longitudinal_free = read_longitudinal_free(b);
+  body.bending = read_bending(b);
   b.finish();
   body.centre_of_gravity = {offset, 0.0, l};
   body.reference_point = {offset, 0.0, 0.0};  // O: in the axle plane below the CG (§2.2)
@@ -316,6 +317,7 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   s.finish();
   if (!add_draw_gear(root, body, v) && body.longitudinal_free)
     root.fail("body", "frees its longitudinal motion, but nothing holds it longitudinally: add [draw_gear]");
+  check_bending_reach(b, v->bodies.front(), v->elements);
 }
 
 void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
@@ -332,6 +334,7 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   const double d0 = bt.quantity("cg_height", Quantity::length);  // above the bolster plane
   const double l3 = bt.positive("bogie_spacing", Quantity::length) / 2.0;
   body.longitudinal_free = read_longitudinal_free(bt);
+  body.bending = read_bending(bt);
   bt.finish();
 
   const bool sprung_bogies = suspension != "single";
@@ -378,6 +381,7 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   add_draw_gear(root, v->bodies.front(), v);
   sec.finish();
   if (pri) pri->finish();
+  check_bending_reach(bt, v->bodies.front(), v->elements);
 }
 
 }  // namespace railmodal::input

@@ -30,6 +30,7 @@ const std::map<std::string, UnitDefinition>& unit_table() {
       {"mm", {0.001, dim(0, 1, 0)}},
       {"km", {1000.0, dim(0, 1, 0)}},
       {"s", {1.0, dim(0, 0, 1)}},
+      {"Hz", {1.0, dim(0, 0, -1)}},
       {"ms", {1.0e-3, dim(0, 0, 1)}},
       {"min", {60.0, dim(0, 0, 1)}},
       {"h", {3600.0, dim(0, 0, 1)}},
@@ -147,6 +148,8 @@ Dimension dimension_of(Quantity q) {
     case Quantity::angular_speed: return dim(0, 0, -1, 1);
     case Quantity::moment: return dim(1, 2, -2);
     case Quantity::force_area: return dim(1, 3, -2);
+    case Quantity::mass_per_length: return dim(1, -1, 0);
+    case Quantity::frequency: return dim(0, 0, -1);
   }
   return dim(0, 0, 0);
 }
@@ -170,6 +173,8 @@ const char* name_of(Quantity q) {
     case Quantity::angular_speed: return "an angular speed";
     case Quantity::moment: return "a moment (force·length)";
     case Quantity::force_area: return "a force·length²";
+    case Quantity::mass_per_length: return "a mass per length";
+    case Quantity::frequency: return "a frequency";
   }
   return "a quantity";
 }
@@ -193,6 +198,8 @@ const char* example_of(Quantity q) {
     case Quantity::angular_speed: return "\"0.1 rad/s\" or 0.1 (rad/s)";
     case Quantity::moment: return "\"2.1 kN*m\" or 2100 (N·m)";
     case Quantity::force_area: return "\"120 N*m^2\" or 120 (N·m²)";
+    case Quantity::mass_per_length: return "\"1.3 t/m\" or 1300 (kg/m)";
+    case Quantity::frequency: return "\"9 Hz\" or 9 (Hz)";
   }
   return "";
 }

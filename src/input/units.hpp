@@ -19,7 +19,9 @@ enum class Quantity {
   length, mass, force, stiffness, flexibility, inertia, angle, acceleration,
   damping, modulus, speed, rotational_stiffness, dimensionless, time, angular_speed,
   moment,       ///< force·length, N·m (a creep coefficient f23)
-  force_area    ///< force·length², N·m² (the spin creep coefficient f33)
+  force_area,      ///< force·length², N·m² (the spin creep coefficient f33; a beam's EI)
+  mass_per_length, ///< kg/m (a beam's mass per length)
+  frequency        ///< Hz, cycles per second (a bending mode's frequency)
 };
 Dimension dimension_of(Quantity quantity);
 const char* name_of(Quantity quantity);     ///< "stiffness (force/length)"

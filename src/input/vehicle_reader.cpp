@@ -36,6 +36,8 @@ void read_wheelsets(TableReader& root, std::vector<TableReader>& body_tables, Ve
     if (body.longitudinal_free)
       bt.fail("free", "frees the longitudinal motion of '" + body.name +
                           "', a wheelset: a wheelset's longitudinal motion is held (it rolls with the track)");
+    if (body.bending)
+      bt.fail("bending", "'" + body.name + "' is a wheelset: a wheelset is rigid, it carries no bending mode");
     for (Motion m : {Motion::lateral, Motion::yaw})
       if (std::find(body.held.begin(), body.held.end(), m) != body.held.end())
         bt.fail("held", std::string("holds the ") + to_string(m) + " motion of '" + body.name +
@@ -80,11 +82,14 @@ void read_general(TableReader& root, Vehicle* v) {
       for (const auto& word : t.strings("held")) {
         const auto m = motion_from_string(word);
         if (!m) t.fail("held", "unknown motion '" + word + "' (lateral, bounce, roll, pitch, yaw, longitudinal)");
+        if (*m == Motion::bending)
+          t.fail("held", "bending is no rigid motion and cannot be held; a body without a bending table is rigid");
         b.held.push_back(*m);
       }
     b.longitudinal_free = read_longitudinal_free(t);
     if (b.longitudinal_free && std::find(b.held.begin(), b.held.end(), Motion::longitudinal) != b.held.end())
       t.fail("free", "longitudinal motion cannot be both free and held");
+    b.bending = read_bending(t);
     t.finish();
     v->bodies.push_back(b);
   }
@@ -119,6 +124,7 @@ void read_general(TableReader& root, Vehicle* v) {
     t.finish();
     v->elements.push_back(e);
   }
+  for (size_t b = 0; b < v->bodies.size(); ++b) check_bending_reach(body_tables[b], v->bodies[b], v->elements);
 }
 
 }  // namespace

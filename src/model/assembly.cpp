@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "model/analysis_limits.hpp"
+#include "model/body_bending.hpp"
 #include "model/element_stiffness.hpp"
 #include "model/rigid_body.hpp"
 #include "railmodal/errors.hpp"
@@ -22,12 +23,14 @@ const char* to_string(Motion motion) {
     case Motion::pitch: return "pitch";
     case Motion::yaw: return "yaw";
     case Motion::longitudinal: return "longitudinal";
+    case Motion::bending: return "bending";
   }
   return "?";
 }
 
 std::optional<Motion> motion_from_string(const std::string& word) {
-  for (Motion m : {Motion::lateral, Motion::bounce, Motion::roll, Motion::pitch, Motion::yaw, Motion::longitudinal})
+  for (Motion m : {Motion::lateral, Motion::bounce, Motion::roll, Motion::pitch, Motion::yaw, Motion::longitudinal,
+                   Motion::bending})
     if (word == to_string(m)) return m;
   return std::nullopt;
 }
@@ -67,8 +70,10 @@ constexpr double kHalfPi = 1.57079632679489661923;
 
 bool in_set(Motion motion, DofSet set) {
   // Longitudinal motion belongs with bounce and pitch: a CG above the reference point and a
-  // spring below it couple surge with pitch, not with the lateral motions.
-  const bool vertical = motion == Motion::bounce || motion == Motion::pitch || motion == Motion::longitudinal;
+  // spring below it couple surge with pitch, not with the lateral motions. Vertical bending
+  // moves points vertically only: it couples with bounce and pitch.
+  const bool vertical = motion == Motion::bounce || motion == Motion::pitch || motion == Motion::longitudinal ||
+                        motion == Motion::bending;
   switch (set) {
     case DofSet::vertical: return vertical;
     case DofSet::lateral: return !vertical;
@@ -97,6 +102,7 @@ void check_wheelsets(const Vehicle& vehicle, const std::map<std::string, int>& i
                                     " must be held (a wheelset's bounce, roll and pitch follow the rails)");
     if (body.longitudinal_free)
       throw std::invalid_argument(who + "its longitudinal motion must be held (it rolls with the track)");
+    if (body.bending) throw std::invalid_argument(who + "a wheelset is rigid: it carries no bending mode");
     for (Motion m : {Motion::lateral, Motion::yaw})
       if (holds(body, m))
         throw std::invalid_argument(who + "its lateral and yaw motions must be free (the wheel–rail contact acts on " +
@@ -121,6 +127,10 @@ void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
     if (body.longitudinal_free &&
         std::find(body.held.begin(), body.held.end(), Motion::longitudinal) != body.held.end())
       throw std::invalid_argument("body '" + body.name + "': longitudinal motion is both free and held");
+    if (holds(body, Motion::bending))
+      throw std::invalid_argument("body '" + body.name + "': bending is not a motion that can be held (a body " +
+                                  "without a bending mode is rigid)");
+    if (body.bending) model::bending_mode(body);  // checks the mode's data
   }
   for (const Element& e : vehicle.elements) {
     for (const std::string* end : {&e.lower, &e.upper}) {
@@ -154,27 +164,60 @@ void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
   check_wheelsets(vehicle, *index);
 }
 
-// Full coordinates: six motions per body, body-major.
+// Full coordinates: six rigid motions per body, body-major, then one bending coordinate per
+// body that carries a bending mode (none: the layout is the rigid one, index for index).
 struct Layout {
-  int bodies;
-  int size() const { return bodies * kMotionsPerBody; }
+  int bodies = 0;
+  std::vector<int> bending;                 // each body's bending coordinate, or -1
+  std::vector<int> bent;                    // the body of each bending coordinate
+  std::vector<model::BendingMode> modes;    // and its mode
+  explicit Layout(const Vehicle& v) : bodies(static_cast<int>(v.bodies.size())), bending(v.bodies.size(), -1) {
+    for (int b = 0; b < bodies; ++b)
+      if (v.bodies[b].bending) {
+        bending[b] = rigid() + static_cast<int>(bent.size());
+        bent.push_back(b);
+        modes.push_back(model::bending_mode(v.bodies[b]));
+      }
+  }
+  int rigid() const { return bodies * kMotionsPerBody; }
+  int size() const { return rigid() + static_cast<int>(bent.size()); }
   static int index(int body, Motion m) { return body * kMotionsPerBody + static_cast<int>(m); }
+  int body_of(int c) const { return c < rigid() ? c / kMotionsPerBody : bent[c - rigid()]; }
+  Motion motion_of(int c) const { return c < rigid() ? static_cast<Motion>(c % kMotionsPerBody) : Motion::bending; }
 };
 
 // How an element's point moves with the two bodies it joins: relative displacement
-// upper − lower = up · q_upper − low · q_lower (lower = −1: the track).
+// upper − lower = up · q_upper − low · q_lower (lower = −1: the track), plus, on a body with
+// a bending mode, φ(x) times its bending coordinate, vertically (up_bending, low_bending: φ at
+// the point, 0 on a rigid body).
 struct ElementMap {
   int upper = 0, lower = -1;
   model::PointMap up, low;
+  double up_bending = 0.0, low_bending = 0.0;
+
+  // The displacement (longitudinal, lateral, vertical) of the point on the upper (lower) body
+  // per unit of full coordinate c; zero for another body's coordinate.
+  Eigen::Vector3d column(const Layout& layout, bool upper_end, int c) const {
+    const int body = upper_end ? upper : lower;
+    if (body < 0 || layout.body_of(c) != body) return Eigen::Vector3d::Zero();
+    if (c >= layout.rigid()) return {0.0, 0.0, upper_end ? up_bending : low_bending};
+    return (upper_end ? up : low).col(c % kMotionsPerBody);
+  }
 };
 
-ElementMap element_map(const Vehicle& v, const std::map<std::string, int>& index, const Element& e) {
+ElementMap element_map(const Vehicle& v, const Layout& layout, const std::map<std::string, int>& index,
+                       const Element& e) {
   ElementMap m;
   m.upper = index.at(e.upper);
   m.up = model::point_map(v.bodies[m.upper], e.point);
+  const std::string what = "element '" + e.name + "' on body '";
+  if (layout.bending[m.upper] >= 0)
+    m.up_bending = layout.modes[layout.bending[m.upper] - layout.rigid()].shape_at(e.point.x(), what + e.upper + "'");
   if (!e.lower.empty()) {
     m.lower = index.at(e.lower);
     m.low = model::point_map(v.bodies[m.lower], e.point);
+    if (layout.bending[m.lower] >= 0)
+      m.low_bending = layout.modes[layout.bending[m.lower] - layout.rigid()].shape_at(e.point.x(), what + e.lower + "'");
   }
   return m;
 }
@@ -201,6 +244,28 @@ void add_element(const ElementMap& m, const Eigen::Vector3d& k, Eigen::MatrixXd*
     }
 }
 
+// The vertical stiffness (or damping) k_z of an element on a body with a bending mode: the
+// point's vertical displacement gains φ(x)·q_b, so K += Bᵀ k B gains the rows and columns of
+// the bending coordinates. Only these are added here (add_element has the rigid blocks, as
+// before bending existed): a vehicle without bending gets nothing from this.
+void add_bending_coupling(const Layout& layout, const ElementMap& m, double kz, Eigen::MatrixXd* K) {
+  struct Side { int body; const model::PointMap* map; double phi; double sign; };
+  const Side sides[2] = {{m.upper, &m.up, m.up_bending, 1.0}, {m.lower, &m.low, m.low_bending, -1.0}};
+  for (const Side& a : sides) {
+    if (a.body < 0 || layout.bending[a.body] < 0 || kz == 0.0) continue;
+    const int qa = layout.bending[a.body];
+    for (const Side& b : sides) {
+      if (b.body < 0) continue;
+      const double s = a.sign * b.sign * kz * a.phi;
+      // Bending of a against the rigid motions of b, both ways (K stays symmetric).
+      const Eigen::Matrix<double, 1, kMotionsPerBody> row = s * b.map->row(2);
+      K->block<1, kMotionsPerBody>(qa, b.body * kMotionsPerBody) += row;
+      K->block<kMotionsPerBody, 1>(b.body * kMotionsPerBody, qa) += row.transpose();
+      if (layout.bending[b.body] >= 0) (*K)(qa, layout.bending[b.body]) += s * b.phi;
+    }
+  }
+}
+
 // Stiffness against the relative rotation (roll, pitch, yaw) of the two bodies.
 void add_rotational(const ElementMap& m, const Eigen::Vector3d& k, Eigen::MatrixXd* K) {
   for (int a : {m.upper, m.lower})
@@ -215,7 +280,7 @@ void add_rotational(const ElementMap& m, const Eigen::Vector3d& k, Eigen::Matrix
 // Vertical relative displacement of the element's point for full coordinates q.
 // Longitudinal motion moves no point vertically: the five motions before it, summed as 3 × 5
 // maps were before it existed (bit for bit the same loads).
-double vertical_stretch(const ElementMap& m, const Eigen::VectorXd& q) {
+double vertical_stretch(const Layout& layout, const ElementMap& m, const Eigen::VectorXd& q) {
   constexpr int kFive = kMotionsPerBody - 1;
   const Eigen::Matrix<double, 3, kFive> up = m.up.leftCols<kFive>();
   double dz = up.row(2).dot(q.segment<kFive>(m.upper * kMotionsPerBody));
@@ -223,13 +288,17 @@ double vertical_stretch(const ElementMap& m, const Eigen::VectorXd& q) {
     const Eigen::Matrix<double, 3, kFive> low = m.low.leftCols<kFive>();
     dz -= low.row(2).dot(q.segment<kFive>(m.lower * kMotionsPerBody));
   }
+  // The bodies' bending, where they have it (after the rigid sum, which stays as it was).
+  if (layout.bending[m.upper] >= 0) dz += m.up_bending * q(layout.bending[m.upper]);
+  if (m.lower >= 0 && layout.bending[m.lower] >= 0) dz -= m.low_bending * q(layout.bending[m.lower]);
   return dz;
 }
 
-// Keep the motions that are not held; longitudinal motion only where the body frees it.
+// Keep the motions that are not held; longitudinal motion only where the body frees it; a
+// body's bending coordinate (never held) after its rigid motions.
 std::vector<int> free_coordinates(const Vehicle& v, const Layout& layout) {
   std::vector<int> free;
-  for (int b = 0; b < layout.bodies; ++b)
+  for (int b = 0; b < layout.bodies; ++b) {
     for (int m = 0; m < kMotionsPerBody; ++m) {
       const Body& body = v.bodies[b];
       const auto motion = static_cast<Motion>(m);
@@ -237,11 +306,16 @@ std::vector<int> free_coordinates(const Vehicle& v, const Layout& layout) {
       if (std::find(body.held.begin(), body.held.end(), motion) == body.held.end())
         free.push_back(Layout::index(b, motion));
     }
+    if (layout.bending[b] >= 0) free.push_back(layout.bending[b]);
+  }
   return free;
 }
 
 // Static vertical load of each element (compression positive) under gravity, from the
-// springs alone: K q = Q on the free coordinates, minimum-norm where K is singular.
+// springs alone: K q = Q on the free coordinates, minimum-norm where K is singular. A bending
+// coordinate takes no load from the body's weight, taken as spread uniformly along the beam
+// (∫ m' φ ds = 0), and its stiffness ω²m_b: the springs bend the body (it sags between
+// supports), which moves load between supports only where they are more than statics fixes.
 std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const std::vector<ElementMap>& maps,
                                  const Eigen::MatrixXd& K_springs) {
   Eigen::VectorXd Q = Eigen::VectorXd::Zero(layout.size());
@@ -273,10 +347,9 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
     for (int i = 0; i < n; ++i) {
       const Eigen::VectorXd r = Kf * qf - Qf;
       if (std::abs(r(i)) > 1e-8 * Qf.norm()) {
-        const int b = free[i] / kMotionsPerBody;
+        const int b = layout.body_of(free[i]);
         throw NumericalError("no static equilibrium under gravity: nothing holds up body '" +
-                             v.bodies[b].name + "' in " +
-                             to_string(static_cast<Motion>(free[i] % kMotionsPerBody)));
+                             v.bodies[b].name + "' in " + to_string(layout.motion_of(free[i])));
       }
     }
   }
@@ -285,7 +358,7 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
   std::vector<double> loads;
   for (size_t k = 0; k < v.elements.size(); ++k) {
     const double kz = series_stiffness(v.elements[k].vertical_stages);
-    loads.push_back(-kz * vertical_stretch(maps[k], q));  // upper sinks: compression
+    loads.push_back(-kz * vertical_stretch(layout, maps[k], q));  // upper sinks: compression
   }
   return loads;
 }
@@ -303,8 +376,18 @@ FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string,
   for (int b = 0; b < layout.bodies; ++b)
     f.M.block(b * kMotionsPerBody, b * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) =
         model::body_mass(vehicle.bodies[b]);
+  // The bending mode by itself: modal mass m_b, stiffness ω²m_b, damping 2ζω m_b. Its mass is
+  // not coupled to the rigid motions: for a uniform beam the mode is orthogonal to them
+  // (∫ m' φ ds = ∫ m' (x − centre) φ ds = 0), which we take for the body.
+  for (size_t j = 0; j < layout.bent.size(); ++j) {
+    const model::BendingMode& mode = layout.modes[j];
+    const int q = layout.rigid() + static_cast<int>(j);
+    f.M(q, q) = mode.modal_mass;
+    f.K_springs(q, q) = mode.omega * mode.omega * mode.modal_mass;
+    f.C(q, q) = 2.0 * mode.damping_ratio * mode.omega * mode.modal_mass;
+  }
   for (const Element& e : vehicle.elements) {
-    f.maps.push_back(element_map(vehicle, index, e));
+    f.maps.push_back(element_map(vehicle, layout, index, e));
     // A hanger's lateral stiffness needs the static load: it is added later.
     const double lateral = e.hanger ? 0.0 : series_stiffness(e.lateral_stages);
     add_element(f.maps.back(),
@@ -312,11 +395,16 @@ FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string,
                 &f.K_springs);
     add_rotational(f.maps.back(), e.rotational_stiffness, &f.K_springs);
     add_element(f.maps.back(), {e.longitudinal_damping, e.lateral_damping, e.vertical_damping}, &f.C);
+    add_bending_coupling(layout, f.maps.back(), series_stiffness(e.vertical_stages), &f.K_springs);
+    add_bending_coupling(layout, f.maps.back(), e.vertical_damping, &f.C);
   }
   return f;
 }
 
-// Dead loads: each weight at its CG, each element's static load at its point.
+// Dead loads: each weight at its CG, each element's static load at its point. A bending
+// coordinate gets none: its second-order terms (the slope φ' turning a load's lever, the
+// drop of a point off the neutral axis) are left out, as the rotation of the beam's sections
+// is (docs/ride.md, "Car-body bending").
 Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const std::map<std::string, int>& index,
                                   const Layout& layout, const std::vector<double>& loads) {
   Eigen::MatrixXd K_gravity = Eigen::MatrixXd::Zero(layout.size(), layout.size());
@@ -345,9 +433,9 @@ Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const std::map<std::st
 std::vector<int> kept_coordinates(const Vehicle& vehicle, const Layout& layout, DofSet set, std::vector<Dof>* dofs) {
   std::vector<int> keep;
   for (int c : free_coordinates(vehicle, layout)) {
-    const auto motion = static_cast<Motion>(c % kMotionsPerBody);
+    const Motion motion = layout.motion_of(c);
     if (!in_set(motion, set)) continue;
-    const int b = c / kMotionsPerBody;
+    const int b = layout.body_of(c);
     keep.push_back(c);
     dofs->push_back({vehicle.bodies[b].name + "." + to_string(motion), b, motion});
   }
@@ -363,14 +451,15 @@ Eigen::MatrixXd pick(const Eigen::MatrixXd& A, const std::vector<int>& keep) {
 }
 
 // Row k: the vertical stretch of element k per kept coordinate.
-Eigen::MatrixXd element_vertical_map(const std::vector<ElementMap>& maps, const std::vector<int>& keep) {
+Eigen::MatrixXd element_vertical_map(const Layout& layout, const std::vector<ElementMap>& maps,
+                                     const std::vector<int>& keep) {
   const int n = static_cast<int>(keep.size());
   Eigen::MatrixXd map = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(maps.size()), n);
   for (size_t k = 0; k < maps.size(); ++k)
     for (int i = 0; i < n; ++i) {
-      const int body = keep[i] / kMotionsPerBody, motion = keep[i] % kMotionsPerBody;
-      if (body == maps[k].upper) map(k, i) += maps[k].up(2, motion);
-      if (body == maps[k].lower) map(k, i) -= maps[k].low(2, motion);
+      const int body = layout.body_of(keep[i]);
+      if (body == maps[k].upper) map(k, i) += maps[k].column(layout, true, keep[i])(2);
+      if (body == maps[k].lower) map(k, i) -= maps[k].column(layout, false, keep[i])(2);
     }
   return map;
 }
@@ -388,7 +477,7 @@ bool pulls_only_along(const Element& e) {
 // An element standing on a wheelset takes the rail's longitudinal and vertical displacement as
 // a track element does (the wheelset's held motions follow the rail); the lateral displacement
 // reaches it through the contact, which M, C and K do not hold, so that column stays zero.
-std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const std::vector<ElementMap>& maps,
+std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const Layout& layout, const std::vector<ElementMap>& maps,
                                      const std::vector<double>& loads, const std::vector<int>& keep) {
   const int n = static_cast<int>(keep.size());
   std::vector<TrackInput> inputs;
@@ -406,11 +495,11 @@ std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const std::vector<E
     input.load_per_displacement = Eigen::MatrixXd::Zero(n, 3);
     input.load_per_velocity = Eigen::MatrixXd::Zero(n, 3);
     for (int i = 0; i < n; ++i) {
-      if (keep[i] / kMotionsPerBody != maps[k].upper) continue;
-      const int motion = keep[i] % kMotionsPerBody;
+      if (layout.body_of(keep[i]) != maps[k].upper) continue;
+      const Eigen::Vector3d column = maps[k].column(layout, true, keep[i]);
       for (int d = 0; d < 3; ++d) {
-        input.load_per_displacement(i, d) = maps[k].up(d, motion) * stiffness(d);
-        input.load_per_velocity(i, d) = maps[k].up(d, motion) * damping(d);
+        input.load_per_displacement(i, d) = column(d) * stiffness(d);
+        input.load_per_velocity(i, d) = column(d) * damping(d);
       }
     }
     inputs.push_back(std::move(input));
@@ -421,8 +510,8 @@ std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const std::vector<E
 // The stretch of each series damper along its direction, per kept coordinate, from the same
 // point maps as add_element; a damper whose stretch no kept motion changes (a lateral damper
 // among the vertical motions) is left out.
-std::vector<SeriesDamperRow> series_damper_rows(const Vehicle& vehicle, const std::vector<ElementMap>& maps,
-                                                const std::vector<int>& keep) {
+std::vector<SeriesDamperRow> series_damper_rows(const Vehicle& vehicle, const Layout& layout,
+                                                const std::vector<ElementMap>& maps, const std::vector<int>& keep) {
   const int n = static_cast<int>(keep.size());
   std::vector<SeriesDamperRow> rows;
   for (size_t k = 0; k < vehicle.elements.size(); ++k)
@@ -435,9 +524,9 @@ std::vector<SeriesDamperRow> series_damper_rows(const Vehicle& vehicle, const st
       row.stiffness = d.stiffness;
       row.stretch = Eigen::RowVectorXd::Zero(n);
       for (int i = 0; i < n; ++i) {
-        const int body = keep[i] / kMotionsPerBody, motion = keep[i] % kMotionsPerBody;
-        if (body == maps[k].upper) row.stretch(i) += maps[k].up(axis, motion);
-        if (body == maps[k].lower) row.stretch(i) -= maps[k].low(axis, motion);
+        const int body = layout.body_of(keep[i]);
+        if (body == maps[k].upper) row.stretch(i) += maps[k].column(layout, true, keep[i])(axis);
+        if (body == maps[k].lower) row.stretch(i) -= maps[k].column(layout, false, keep[i])(axis);
       }
       if (!row.stretch.isZero(0.0)) rows.push_back(std::move(row));
     }
@@ -449,7 +538,7 @@ std::vector<SeriesDamperRow> series_damper_rows(const Vehicle& vehicle, const st
 LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
   std::map<std::string, int> index;
   check_vehicle(vehicle, &index);
-  const Layout layout{static_cast<int>(vehicle.bodies.size())};
+  const Layout layout(vehicle);
 
   const FullModel full = springs_and_masses(vehicle, index, layout);
   const std::vector<double> loads = static_loads(vehicle, layout, full.maps, full.K_springs);
@@ -469,9 +558,9 @@ LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
   system.gravity_stiffness = pick(K_gravity, keep);
   system.vehicle = vehicle;
   system.element_loads = loads;
-  system.element_vertical_map = element_vertical_map(full.maps, keep);
-  system.track_inputs = track_inputs(vehicle, full.maps, loads, keep);
-  system.series_dampers = series_damper_rows(vehicle, full.maps, keep);
+  system.element_vertical_map = element_vertical_map(layout, full.maps, keep);
+  system.track_inputs = track_inputs(vehicle, layout, full.maps, loads, keep);
+  system.series_dampers = series_damper_rows(vehicle, layout, full.maps, keep);
   return system;
 }
 

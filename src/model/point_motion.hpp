@@ -10,8 +10,11 @@
 namespace railmodal::model {
 
 /// 3 × n: the displacement (longitudinal, lateral, vertical; m) of `point` (vehicle frame, m)
-/// on body `body` per unit of each of the system's degrees of freedom. Rows of DOFs of other
-/// bodies are zero. Throws std::invalid_argument for a body index out of range.
+/// on body `body` per unit of each of the system's degrees of freedom. Columns of DOFs of
+/// other bodies are zero. The body's bending DOF ("<body>.bending", Body::bending) moves the
+/// point vertically by the mode shape φ(x) (1 at the beam's ends). Throws
+/// std::invalid_argument for a body index out of range, or a point beyond the ends of the
+/// body's bending beam.
 Eigen::MatrixXd point_displacement_map(const LinearSystem& system, int body, const Eigen::Vector3d& point);
 
 }  // namespace railmodal::model

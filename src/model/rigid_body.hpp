@@ -9,7 +9,11 @@
 
 namespace railmodal::model {
 
-constexpr int kMotionsPerBody = 6;  // lateral, bounce, roll, pitch, yaw, longitudinal — order of Motion
+// The six rigid motions: lateral, bounce, roll, pitch, yaw, longitudinal, in the order of Motion.
+// Motion::bending, after them, is no motion of the reference point: a body that has a bending
+// mode gets one coordinate more, after every body's six (model/assembly.cpp, Layout), so that
+// the rigid blocks, and everything of a vehicle without bending, stay as they were.
+constexpr int kMotionsPerBody = 6;
 using BodyVector = Eigen::Matrix<double, kMotionsPerBody, 1>;
 using BodyMatrix = Eigen::Matrix<double, kMotionsPerBody, kMotionsPerBody>;
 using PointMap = Eigen::Matrix<double, 3, kMotionsPerBody>;

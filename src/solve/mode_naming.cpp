@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 
+#include "model/body_bending.hpp"
 #include "model/rigid_body.hpp"
 
 namespace railmodal::solve {
@@ -16,18 +17,24 @@ using model::BodyVector;
 using model::kMotionsPerBody;
 
 // Word for each energy term at the CG; longitudinal CG motion belongs to pitch unless the
-// body's longitudinal motion is a degree of freedom.
-enum Term { kLateral, kVertical, kLongitudinal, kRoll, kPitch, kYaw, kTerms };
+// body's longitudinal motion is a degree of freedom. The bending mode's kinetic energy
+// ½ m_b q_b² adds to the rigid terms (the mode is mass-orthogonal to the rigid motions).
+enum Term { kLateral, kVertical, kLongitudinal, kRoll, kPitch, kYaw, kBending, kTerms };
 
 struct BodyEnergy {
   double total = 0.0;
   std::array<double, kTerms> term{};
   BodyVector motion = BodyVector::Zero();  // the body's motions in this mode
+  double bending = 0.0;                    // and its bending amplitude (0: rigid body)
+
+  // The body's coordinate `m` in this mode (the twins' phase test compares them).
+  double amplitude(Motion m) const { return m == Motion::bending ? bending : motion(static_cast<int>(m)); }
 };
 
-BodyEnergy energy_of(const Body& body, const BodyVector& q) {
+BodyEnergy energy_of(const Body& body, const BodyVector& q, double bending) {
   BodyEnergy e;
   e.motion = q;
+  e.bending = bending;
   // The five motions before longitudinal as a 3 × 5 product (the same sums as before it
   // existed), then the longitudinal one, +0 where it is held.
   constexpr int kFive = kMotionsPerBody - 1;
@@ -41,6 +48,7 @@ BodyEnergy energy_of(const Body& body, const BodyVector& q) {
   e.term[kRoll] = 0.5 * body.inertia.x() * rotation.x() * rotation.x();
   e.term[kPitch] = 0.5 * body.inertia.y() * rotation.y() * rotation.y();
   e.term[kYaw] = 0.5 * body.inertia.z() * rotation.z() * rotation.z();
+  if (body.bending) e.term[kBending] = 0.5 * model::bending_mode(body).modal_mass * bending * bending;
   for (double t : e.term) e.total += t;
   return e;
 }
@@ -128,6 +136,10 @@ LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const
       m.word = "longitudinal";
       m.key = Motion::longitudinal;
       break;
+    case kBending:
+      m.word = "first vertical bending";
+      m.key = Motion::bending;
+      break;
     default: {
       // A body held laterally rolls about its fixed axis (the book's side rocking) even when
       // its CG moves more than it turns; one held in roll only translates.
@@ -151,13 +163,19 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
   const auto& bodies = system.vehicle.bodies;
   if (bodies.empty()) return describe_by_dof(system, shape);
   std::vector<BodyVector> motion(bodies.size(), BodyVector::Zero());
-  for (size_t i = 0; i < system.dofs.size(); ++i)
-    motion[system.dofs[i].body](static_cast<int>(system.dofs[i].motion)) = shape(static_cast<int>(i));
+  std::vector<double> bending(bodies.size(), 0.0);
+  for (size_t i = 0; i < system.dofs.size(); ++i) {
+    const Dof& dof = system.dofs[i];
+    if (dof.motion == Motion::bending)
+      bending[dof.body] = shape(static_cast<int>(i));
+    else
+      motion[dof.body](static_cast<int>(dof.motion)) = shape(static_cast<int>(i));
+  }
 
   std::vector<BodyEnergy> energy;
   int lead = 0;
   for (size_t b = 0; b < bodies.size(); ++b) {
-    energy.push_back(energy_of(bodies[b], motion[b]));
+    energy.push_back(energy_of(bodies[b], motion[b], bending[b]));
     if (energy[b].total > energy[lead].total) lead = static_cast<int>(b);
   }
   const BodyEnergy& e = energy[lead];
@@ -183,11 +201,10 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
   // more than two twins the test is over all of them, not the leading body and the first other:
   // which of four nearly equal wheelsets leads changes with a 1 % change of any parameter.
   bool shared = false, in_phase = true;
-  const int m = static_cast<int>(leading.key);
   for (size_t b = 0; b < bodies.size() && has_twin; ++b) {
     if (static_cast<int>(b) == lead || family_of(bodies[b].name) != family || energy[b].total < 0.5 * e.total) continue;
     shared = true;
-    in_phase = in_phase && e.motion(m) * energy[b].motion(m) >= 0.0;
+    in_phase = in_phase && e.amplitude(leading.key) * energy[b].amplitude(leading.key) >= 0.0;
   }
   if (shared) {
     d.name = family + "s " + leading.word + ", " + (in_phase ? "in phase" : "antiphase");

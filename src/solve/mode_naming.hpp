@@ -22,7 +22,9 @@ struct ModeDescription {
 /// (lateral, vertical, longitudinal) and rotation (roll, pitch, yaw), terms that cannot be
 /// negative. The body with the most energy names the mode; its leading motion gives the
 /// word: bounce, pitch (longitudinal CG motion comes from pitching about a point off the CG),
-/// yaw, or, for lateral CG motion and roll taken together:
+/// yaw, "first vertical bending" (a body with a bending mode, Body::bending, whose kinetic
+/// energy ½ m_b q_b² leads: "body first vertical bending"), or, for lateral CG motion and roll
+/// taken together:
 ///  - "roll" (about the fixed axis: side rocking) when the body is held laterally, or about
 ///    the CG when the lateral share is round-off (an uncoupled body);
 ///  - "lateral" when the body is held in roll, or the roll share is round-off;

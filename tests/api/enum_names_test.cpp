@@ -62,7 +62,8 @@ TEST(EnumNames, DofSet) {
 }
 
 TEST(EnumNames, Motion) {
-  expect_round_trip({Motion::lateral, Motion::bounce, Motion::roll, Motion::pitch, Motion::yaw, Motion::longitudinal},
+  expect_round_trip({Motion::lateral, Motion::bounce, Motion::roll, Motion::pitch, Motion::yaw, Motion::longitudinal,
+                     Motion::bending},
                     motion_from_string);
 }
 

@@ -73,6 +73,8 @@ double expected_stretch(Motion direction, Motion motion, const Eigen::Vector3d& 
     case Motion::yaw:
       theta.z() = 1.0;
       break;
+    case Motion::bending:  // these rigid bodies carry no bending mode
+      break;
   }
   const Eigen::Vector3d d = u + theta.cross(r);
   return direction == Motion::longitudinal ? d.x() : direction == Motion::lateral ? d.y() : d.z();
