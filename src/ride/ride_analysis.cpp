@@ -40,6 +40,10 @@ struct Problem {
   Eigen::VectorXd grid;
   Eigen::VectorXd wb2, wd2, sperling_v2, sperling_l2;  // |W|² on the grid
   std::vector<ride::FrictionElement> friction;
+  // Without friction the system is the same at every speed: its output maps and receptances
+  // are computed once and every speed reuses them.
+  std::vector<ride::OutputMap> maps;
+  ride::Receptances shared;
 };
 
 // A mode no damper acts on (the series dampers included).
@@ -93,13 +97,9 @@ std::vector<bool> unbounded_outputs(const Problem& p, const LinearSystem& system
   return out;
 }
 
-// The receptances and spectra of `system` (friction dampers included) at one speed.
-ride::SpeedSpectra spectra_at(const Problem& p, const LinearSystem& system, const std::vector<ride::OutputMap>& maps,
-                              double speed, const std::vector<ride::BandWeights>& bands) {
-  const ride::Receptances r =
-      ride::receptances(system, p.components, maps, p.grid, p.truncation.size() ? &p.truncation : nullptr);
-  return ride::speed_spectra(system, r, p.components, p.grid, speed, bands,
-                             p.contributions.shapes.cols() ? &p.contributions : nullptr);
+ride::Receptances receptances_of(const Problem& p, const LinearSystem& system, const std::vector<ride::OutputMap>& maps) {
+  return ride::receptances(system, p.components, maps, p.grid, p.truncation.size() ? &p.truncation : nullptr,
+                           p.contributions.shapes.cols() ? &p.contributions : nullptr);
 }
 
 struct SpeedOutcome {
@@ -191,8 +191,8 @@ SpeedOutcome solve_speed(const Problem& p, double speed) {
       std::vector<ride::OutputMap> maps;
       for (const ride::FrictionElement& f : p.friction) maps.push_back(ride::stretch_rate_map(system, f.element));
       const ride::Receptances r = ride::receptances(system, p.components, maps, p.grid,
-                                                    p.truncation.size() ? &p.truncation : nullptr);
-      const ride::SpeedSpectra sp = ride::speed_spectra(system, r, p.components, p.grid, speed, bands, nullptr);
+                                                    p.truncation.size() ? &p.truncation : nullptr, nullptr);
+      const ride::SpeedSpectra sp = ride::speed_spectra(system, r, p.components, p.grid, speed, bands);
       std::vector<double> sigma;
       for (const ride::ComponentPower& power : sp.outputs)
         sigma.push_back(std::sqrt(std::max(ride::integral(power, bands, Eigen::VectorXd()), 0.0)));
@@ -204,8 +204,11 @@ SpeedOutcome solve_speed(const Problem& p, double speed) {
   }
   const LinearSystem system =
       friction_damping.empty() ? base : response::with_element_vertical_dampers(base, friction_damping);
-  const std::vector<ride::OutputMap> maps = ride::output_maps(system, *p.outputs, friction_damping);
-  const ride::SpeedSpectra sp = spectra_at(p, system, maps, speed, bands);
+  const std::vector<ride::OutputMap> maps =
+      friction_damping.empty() ? p.maps : ride::output_maps(system, *p.outputs, friction_damping);
+  const ride::Receptances own = friction_damping.empty() ? ride::Receptances{} : receptances_of(p, system, maps);
+  const ride::SpeedSpectra sp =
+      ride::speed_spectra(system, friction_damping.empty() ? p.shared : own, p.components, p.grid, speed, bands);
   std::vector<std::string> driven;
   const std::vector<bool> unbounded = unbounded_outputs(p, system, maps, speed, &driven);
   s.at.speed = speed;
@@ -234,7 +237,7 @@ Problem prepare(const LinearSystem& system, const TrackIrregularitySpectra& trac
   p.outputs = &outputs;
   p.options = &options;
   p.components = ride::track_components(system, track, options.contact_half_spacing);
-  ride::output_maps(system, outputs, {});  // every output names something of the system, or throws
+  p.maps = ride::output_maps(system, outputs, {});  // every output names something of the system, or throws
   ModalOptions modal;
   modal.solver = ModalSolver::dense;
   p.modes = solve_modes(system, modal);
@@ -253,9 +256,10 @@ Problem prepare(const LinearSystem& system, const TrackIrregularitySpectra& trac
   std::vector<const Mode*> split;
   for (const Mode* m : p.oscillatory)
     if (options.modes == 0 || m->index <= truncated) split.push_back(m);
-  p.contributions.shapes.resize(n, static_cast<Eigen::Index>(split.size()));
-  for (size_t j = 0; j < split.size(); ++j) p.contributions.shapes.col(j) = split[j]->shape;
-  p.contributions.left = p.contributions.shapes.transpose() * system.mass;
+  Eigen::MatrixXd shapes(n, static_cast<Eigen::Index>(split.size()));
+  for (size_t j = 0; j < split.size(); ++j) shapes.col(j) = split[j]->shape;
+  p.contributions.shapes = shapes;
+  p.contributions.left = shapes.transpose() * system.mass;
   p.friction = ride::friction_elements(system);
   return p;
 }
@@ -342,6 +346,10 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
   build_grid(&p, options);
   result.frequencies = p.grid;
   clock.lap("grid");
+  if (p.friction.empty()) {
+    p.shared = receptances_of(p, system, p.maps);
+    clock.lap("receptances");
+  }
   const std::vector<SpeedOutcome> speeds = solve_speeds(p, options);
   clock.lap("speeds");
 

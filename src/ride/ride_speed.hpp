@@ -11,12 +11,6 @@
 
 namespace railmodal::ride {
 
-/// The modal basis an output's modal terms are taken in: X = Σ_j φ_j q_j, q_j = φ_jᵀM X.
-struct ModalBasis {
-  Eigen::MatrixXd shapes;  ///< n × J, mass-normalised
-  Eigen::MatrixXd left;    ///< J × n: ΦᵀM
-};
-
 /// A component's band in Hz at `speed` and its weights on the grid.
 std::vector<BandWeights> speed_bands(const std::vector<Component>& components, const Eigen::VectorXd& grid,
                                      double speed);
@@ -29,9 +23,8 @@ struct SpeedSpectra {
 };
 
 /// H_c(f) = Σ_i h_{c,i}(f)·e^{−iωτ_i}, τ_i = (x_front − x_i)/V (the front input first, x
-/// forward), and what the indices need of it. `modal` may be null.
+/// forward), and what the indices need of it (the modal variances when `r` holds modal terms).
 SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, const std::vector<Component>& components,
-                           const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands,
-                           const ModalBasis* modal);
+                           const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands);
 
 }  // namespace railmodal::ride

@@ -281,63 +281,78 @@ OutputMap stretch_rate_map(const LinearSystem& system, int element) {
 
 Receptances receptances(const LinearSystem& system, const std::vector<Component>& components,
                         const std::vector<OutputMap>& maps, const Eigen::VectorXd& grid,
-                        const Eigen::MatrixXd* basis) {
+                        const Eigen::MatrixXd* basis, const ModalBasis* split) {
   const int n = system.size();
   const int m = static_cast<int>(system.track_inputs.size());
   const int C = static_cast<int>(components.size());
   const int O = static_cast<int>(maps.size());
   const Eigen::Index K = grid.size();
-  // Reduced matrices for modal truncation: ΦᵀKΦ, ΦᵀMΦ, ΦᵀCΦ once.
-  Eigen::MatrixXd Kr, Mr, Cr;
-  if (basis) {
-    Kr = basis->transpose() * system.stiffness * *basis;
-    Mr = basis->transpose() * system.mass * *basis;
-    Cr = basis->transpose() * system.damping * *basis;
-  }
+  // K, M, C and each series damper's stretchᵀ·stretch as complex matrices once; in the basis Φ
+  // (modal truncation) ΦᵀKΦ and the rest.
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
+  const Eigen::MatrixXd& Phi = basis ? *basis : I;
+  auto reduced = [&](const Eigen::MatrixXd& A) -> Eigen::MatrixXcd {
+    return basis ? Eigen::MatrixXcd((Phi.transpose() * A * Phi).cast<Complex>()) : Eigen::MatrixXcd(A.cast<Complex>());
+  };
+  const Eigen::MatrixXcd stiffness = reduced(system.stiffness), mass = reduced(system.mass),
+                         damping = reduced(system.damping);
+  std::vector<Eigen::MatrixXcd> series;
+  for (const SeriesDamperRow& sd : system.series_dampers) series.push_back(reduced(sd.stretch.transpose() * sd.stretch));
+  const Eigen::MatrixXcd basis_c = Phi.cast<Complex>();
+  Eigen::MatrixXcd D(stiffness.rows(), stiffness.cols());
+  const int J = split ? static_cast<int>(split->shapes.cols()) : 0;
   Receptances r;
-  r.X.resize(K);
-  r.A.resize(K);
-  r.T.resize(K);
-  Eigen::MatrixXcd Q(n, C * m);
+  r.outputs = O;
+  r.components = C;
+  r.inputs = m;
+  r.modes = J;
+  r.response.resize(static_cast<Eigen::Index>(O) * C * m, K);
+  r.modal.resize(static_cast<Eigen::Index>(J) * C * m, K);
+  r.modal_rows.resize(static_cast<Eigen::Index>(O) * J, K);
+  Eigen::MatrixXcd Q(n, C * m), X(n, C * m), A(O, n), h(O, C * m), q(J, C * m), seen(O, J);
+  const Eigen::MatrixXcd left_c = split ? Eigen::MatrixXcd(split->left.cast<Complex>()) : Eigen::MatrixXcd();
+  const Eigen::MatrixXcd shapes_c = split ? Eigen::MatrixXcd(split->shapes.cast<Complex>()) : Eigen::MatrixXcd();
+  // Q_{c,i} = (P_i + iωV_i)u_{c,i}: its two real parts once.
+  Eigen::MatrixXd stiff_load(n, C * m), damper_load(n, C * m);
+  for (int i = 0; i < m; ++i)
+    for (int c = 0; c < C; ++c) {
+      const TrackInput& t = system.track_inputs[i];
+      stiff_load.col(c * m + i) = t.load_per_displacement * components[c].displacement[i];
+      damper_load.col(c * m + i) = t.load_per_velocity * components[c].displacement[i];
+    }
   for (Eigen::Index k = 0; k < K; ++k) {
     const double omega = kTwoPi * grid(k);
     const Complex iw(0.0, omega);
-    for (int i = 0; i < m; ++i) {
-      const TrackInput& t = system.track_inputs[i];
-      const Eigen::MatrixXcd per_displacement =
-          t.load_per_displacement.cast<Complex>() + iw * t.load_per_velocity.cast<Complex>();
-      for (int c = 0; c < C; ++c) Q.col(c * m + i) = per_displacement * components[c].displacement[i].cast<Complex>();
-    }
-    Eigen::MatrixXcd D;
-    if (basis) {
-      D = Kr.cast<Complex>() - omega * omega * Mr.cast<Complex>() + iw * Cr.cast<Complex>();
-      for (const SeriesDamperRow& s : system.series_dampers) {
-        const Eigen::RowVectorXd sr = s.stretch * *basis;
-        D += maxwell_stiffness(s.stiffness, s.damping, omega) * (sr.transpose() * sr).cast<Complex>();
-      }
-    } else {
-      D = system.stiffness.cast<Complex>() - omega * omega * system.mass.cast<Complex>() +
-          iw * system.damping.cast<Complex>();
-      for (const SeriesDamperRow& s : system.series_dampers)
-        D += maxwell_stiffness(s.stiffness, s.damping, omega) * (s.stretch.transpose() * s.stretch).cast<Complex>();
-    }
+    for (int j = 0; j < C * m; ++j) Q.col(j) = stiff_load.col(j).cast<Complex>() + iw * damper_load.col(j).cast<Complex>();
+    D.noalias() = stiffness - omega * omega * mass;
+    D.noalias() += iw * damping;
+    for (size_t d = 0; d < series.size(); ++d)
+      D.noalias() += maxwell_stiffness(system.series_dampers[d].stiffness, system.series_dampers[d].damping, omega) *
+                     series[d];
     const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(D);
     if (!(lu.rcond() > 1e-14))
       throw NumericalError("ride: the dynamic stiffness K − ω²M + iωC is singular at " + shortest_text(grid(k), 8) +
                            " Hz (reciprocal condition " + shortest_text(lu.rcond(), 3) +
                            "), which is not an undamped mode's frequency");
-    r.X[k] = basis ? Eigen::MatrixXcd(basis->cast<Complex>() * lu.solve(basis->transpose().cast<Complex>() * Q))
-                   : Eigen::MatrixXcd(lu.solve(Q));
-    r.A[k].resize(O, n);
-    r.T[k] = Eigen::MatrixXcd::Zero(O, C * m);
+    if (basis) X.noalias() = basis_c * lu.solve(basis_c.transpose() * Q);
+    else X.noalias() = lu.solve(Q);
+    h.setZero();
     for (int o = 0; o < O; ++o) {
-      r.A[k].row(o) = maps[o].row(omega);
+      A.row(o) = maps[o].row(omega);
       for (size_t t = 0; t < maps[o].inputs.size(); ++t)
         for (int c = 0; c < C; ++c) {
           const int i = maps[o].inputs[t];
-          r.T[k](o, c * m + i) += maps[o].track(t, components[c].displacement[i], omega);
+          h(o, c * m + i) += maps[o].track(t, components[c].displacement[i], omega);
         }
     }
+    h.noalias() += A * X;
+    // Column k, row (o·C + c)·m + i = h(o, c·m + i): the output's index runs slowest.
+    for (int o = 0; o < O; ++o) r.response.col(k).segment(static_cast<Eigen::Index>(o) * C * m, C * m) = h.row(o).transpose();
+    if (!split) continue;
+    q.noalias() = left_c * X;  // J × C·m
+    for (int j = 0; j < J; ++j) r.modal.col(k).segment(static_cast<Eigen::Index>(j) * C * m, C * m) = q.row(j).transpose();
+    seen.noalias() = A * shapes_c;  // O × J
+    for (int o = 0; o < O; ++o) r.modal_rows.col(k).segment(static_cast<Eigen::Index>(o) * J, J) = seen.row(o).transpose();
   }
   return r;
 }

@@ -56,19 +56,31 @@ OutputMap stretch_rate_map(const LinearSystem& system, int element);
 /// k_s(ω) = iωck/(k + iωc): a damper c with a spring k in series, as one complex stiffness.
 std::complex<double> maxwell_stiffness(double stiffness, double damping, double omega);
 
-/// What does not depend on speed, at each grid frequency: X (n × C·m) the DOF response to
-/// component c entering at input i alone (column c·m + i), A (O × n) the output rows, T (O × C·m)
-/// the direct terms.
+/// The modal basis an output's modal terms are taken in: X = Σ_j φ_j q_j, q_j = φ_jᵀM X.
+struct ModalBasis {
+  Eigen::MatrixXd shapes;  ///< n × J, mass-normalised
+  Eigen::MatrixXd left;    ///< J × n: ΦᵀM
+};
+
+/// What does not depend on speed, one column per grid frequency (C components, m inputs, O
+/// outputs, J modes of the split):
 struct Receptances {
-  std::vector<Eigen::MatrixXcd> X, A, T;
+  int outputs = 0, components = 0, inputs = 0, modes = 0;
+  /// Row (o·C + c)·m + i: h_{o,c,i}(f), output o's response to component c entering at input i
+  /// alone: a_o(ω)·X_{c,i} + t_{o,i}(ω)·u_{c,i}, with X_{c,i} = D⁻¹(P_i + iωV_i)u_{c,i}.
+  Eigen::MatrixXcd response;
+  /// Row (j·C + c)·m + i: φ_jᵀM X_{c,i}, mode j's coordinate (with a split basis).
+  Eigen::MatrixXcd modal;
+  /// Row o·J + j: a_o(ω)·φ_j, how much of mode j output o sees.
+  Eigen::MatrixXcd modal_rows;
 };
 
 /// Solves the dynamic stiffness K − ω²M + iωC (+ the series dampers' k_s(ω)) once per grid
 /// frequency for every input at once; with a basis Φ (n × J, not null) in the reduced
 /// coordinates X = Φq, (ΦᵀDΦ)q = ΦᵀQ (modal truncation). Throws railmodal::NumericalError naming
-/// the frequency where the matrix is singular.
+/// the frequency where the matrix is singular. With `split` (not null) the modal terms too.
 Receptances receptances(const LinearSystem& system, const std::vector<Component>& components,
                         const std::vector<OutputMap>& maps, const Eigen::VectorXd& grid,
-                        const Eigen::MatrixXd* basis);
+                        const Eigen::MatrixXd* basis, const ModalBasis* split);
 
 }  // namespace railmodal::ride
