@@ -482,6 +482,59 @@ TEST(Ride, ElementForceOfTheOnlySpringIsMassTimesAcceleration) {
     EXPECT_NEAR(o[0].psd(k), m * m * o[1].psd(k), 1e-9 * m * m * o[1].psd(k) + 1e-300);
 }
 
+// The wheel–rail force of a wheelset carrying a mass on a spring: R = F + m_w·ü_rail with F = m·ẍ
+// (the spring alone holds the mass), so R/u = −ω²(m·T + m_w), T = (k + iωc)/(k − mω² + iωc).
+TEST(Ride, WheelRailForceIsSpringForcePlusTheWheelsetsInertia) {
+  const double m = 2000.0, m_w = 1500.0, k = 1e6, c = 5e3;
+  Vehicle v;
+  v.name = "mass on a wheelset";
+  Body w;
+  w.name = "wheelset";
+  w.mass = m_w;
+  w.inertia = Eigen::Vector3d(700, 100, 800);
+  w.held = {Motion::bounce, Motion::roll, Motion::pitch};
+  Body b;
+  b.name = "body";
+  b.mass = m;
+  b.inertia = Eigen::Vector3d(1, 1, 1);
+  b.held = {Motion::pitch};
+  v.bodies = {w, b};
+  Wheelset ws;
+  ws.body = "wheelset";
+  ws.spin_inertia = 100;
+  ws.contact.rolling_radius = 0.46;
+  ws.contact.contact_half_spacing = 0.75;
+  ws.contact.conicity = 0.15;
+  ws.contact.creep = CreepCoefficients{};
+  ws.contact.creep->f11 = 1e7;
+  ws.contact.creep->f22 = 9e6;
+  v.wheelsets = {ws};
+  Element e;
+  e.name = "spring";
+  e.lower = "wheelset";
+  e.upper = "body";
+  e.vertical_stages = {coil(k)};
+  e.vertical_damping = c;
+  v.elements = {e};
+  const LinearSystem s = assemble(v, DofSet::vertical);
+  TrackIrregularitySpectra track;
+  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  RideOutput force;
+  force.name = "wheel-rail";
+  force.kind = RideOutput::Kind::wheel_rail_force;
+  force.element = "wheelset";
+  RideOptions options;
+  options.speeds = {30.0};
+  const RideResult r = solve_ride(s, track, {force}, options);
+  const RideAtSpeed& at = r.speeds[0];
+  for (Eigen::Index i = 0; i < r.frequencies.size(); ++i) {
+    const double w2 = std::pow(2 * kPi * r.frequencies(i), 2);
+    const std::complex<double> T = std::complex<double>(k, std::sqrt(w2) * c) / std::complex<double>(k - m * w2, std::sqrt(w2) * c);
+    const double expected = std::norm(-w2 * (m * T + m_w)) * at.input_psd[0](i);
+    EXPECT_NEAR(at.outputs[0].psd(i), expected, 1e-9 * expected + 1e-300) << r.frequencies(i);
+  }
+}
+
 TEST(Ride, DefaultOutputsOfTheCoachAreItsFloorPoints) {
   const LinearSystem s =
       assemble(load_vehicle(test::data_file("manchester_benchmark_coach.toml")), DofSet::all);
