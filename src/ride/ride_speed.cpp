@@ -44,7 +44,11 @@ SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, con
     const WavenumberBand b = components[c].spectrum.band();
     for (Eigen::Index k = 0; k < K; ++k) {
       const double wavenumber = kTwoPi * grid(k) / speed;
-      s.input_psd[c](k) = kTwoPi / speed * components[c].spectrum.density(wavenumber);
+      // A band edge's grid point (speed·Ω_edge/2π, rounded) takes the edge value: its round-off
+      // must not put it outside the band.
+      const bool edge = std::abs(wavenumber - b.low) <= 1e-9 * b.low || std::abs(wavenumber - b.high) <= 1e-9 * b.high;
+      s.input_psd[c](k) = kTwoPi / speed *
+                          components[c].spectrum.density(edge ? std::clamp(wavenumber, b.low, b.high) : wavenumber);
       inside_density(c, k) = kTwoPi / speed * components[c].spectrum.density(std::clamp(wavenumber, b.low, b.high));
     }
   }

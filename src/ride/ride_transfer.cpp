@@ -9,9 +9,9 @@
 #include <string>
 
 #include "model/analysis_limits.hpp"
+#include "model/element_stiffness.hpp"
 #include "model/point_motion.hpp"
 #include "model/wheelset_dofs.hpp"
-#include "model/element_stiffness.hpp"
 #include "railmodal/errors.hpp"
 #include "shortest_text.hpp"
 
@@ -330,10 +330,14 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
       D.noalias() += maxwell_stiffness(system.series_dampers[d].stiffness, system.series_dampers[d].damping, omega) *
                      series[d];
     const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(D);
-    if (!(lu.rcond() > 1e-14))
+    // Singular: a pivot of U at round-off of the largest (with partial pivoting the pivots'
+    // spread bounds the condition from below; Eigen's rcond estimate costs more solves than the
+    // solve itself on these small systems, and would be paid at every frequency).
+    const Eigen::VectorXd pivots = lu.matrixLU().diagonal().cwiseAbs();
+    if (!(pivots.minCoeff() > 1e-14 * pivots.maxCoeff()))
       throw NumericalError("ride: the dynamic stiffness K − ω²M + iωC is singular at " + shortest_text(grid(k), 8) +
-                           " Hz (reciprocal condition " + shortest_text(lu.rcond(), 3) +
-                           "), which is not an undamped mode's frequency");
+                           " Hz (smallest pivot " + shortest_text(pivots.minCoeff() / pivots.maxCoeff(), 3) +
+                           " of the largest), which is not an undamped mode's frequency");
     if (basis) X.noalias() = basis_c * lu.solve(basis_c.transpose() * Q);
     else X.noalias() = lu.solve(Q);
     h.setZero();

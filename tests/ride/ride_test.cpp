@@ -347,6 +347,65 @@ TEST(Ride, CrossLevelRollsAStiffBodyByHalfTheHeightDifferenceOverB) {
   EXPECT_NEAR(at.outputs[0].psd(k) / at.input_psd[0](k), filter / (1.5 * 1.5), 1e-3);
 }
 
+// Alignment on a vehicle without wheelsets enters through the track elements' lateral springs:
+// on stiff springs the body follows the track sideways, the mean of the two axles' alignment, so
+// the lateral PSD over G tends to the wheelbase filter cos²(πf·2a/V) at low frequency.
+TEST(Ride, AlignmentMovesAStiffBodySideways) {
+  const LinearSystem s = assemble(
+      body_on_track(12000.0, 60000.0, {{3.0, 1.0}, {3.0, -1.0}, {-3.0, 1.0}, {-3.0, -1.0}}, 5e9, 8e4), DofSet::all);
+  TrackIrregularitySpectra track;
+  track.alignment = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::alignment, {0.06, 2.0});
+  RideOptions options;
+  options.speeds = {20.0};
+  options.max_frequency = 5.0;
+  const RideResult r = solve_ride(
+      s, track, {point_output("side", Eigen::Vector3d(0, 0, 0), RideAxis::lateral, ResponseQuantity::displacement)},
+      options);
+  const Eigen::Index k = r.frequencies.size() / 2;  // ~0.7 Hz, far below the stiff body's lateral modes
+  ASSERT_GT(r.speeds[0].input_psd[0](k), 0.0);
+  const double filter = std::pow(std::cos(kPi * r.frequencies(k) * 6.0 / 20.0), 2);
+  EXPECT_NEAR(r.speeds[0].outputs[0].psd(k) / r.speeds[0].input_psd[0](k), filter, 1e-3);
+}
+
+// The weighted RMS is ∫|W|²S df: against the output's own PSD weighted by en12299_wb and
+// integrated by the trapezoid over the intervals inside the band (both ends nonzero), and
+// Sperling's Wz from ∫B²S; the P95 estimate lies above the weighted RMS it rests on. Two
+// threads give the same numbers as one.
+TEST(Ride, WeightedIndicesAreIntegralsOfTheWeightedPsd) {
+  const LinearSystem s =
+      assemble(body_on_track(12000.0, 60000.0, {{3.5, 0.0}, {-2.5, 0.0}}, 5e5, 8e3), DofSet::vertical);
+  TrackIrregularitySpectra track;
+  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  RideOptions options;
+  options.speeds = {30.0, 45.0};
+  const std::vector<RideOutput> outputs = {
+      point_output("acc", Eigen::Vector3d(1.5, 0, 0.7), RideAxis::vertical, ResponseQuantity::acceleration)};
+  const RideResult r = solve_ride(s, track, outputs, options);
+  const FrequencyWeighting wb = en12299_wb();
+  for (const RideAtSpeed& at : r.speeds) {
+    const Eigen::VectorXd& S = at.outputs[0].psd;
+    double weighted = 0.0, sperling = 0.0, plain = 0.0;
+    for (Eigen::Index k = 0; k + 1 < S.size(); ++k) {
+      if (!(at.input_psd[0](k) > 0.0 && at.input_psd[0](k + 1) > 0.0)) continue;
+      const double h = r.frequencies(k + 1) - r.frequencies(k), f0 = r.frequencies(k), f1 = r.frequencies(k + 1);
+      plain += 0.5 * h * (S(k) + S(k + 1));
+      weighted += 0.5 * h * (std::norm(wb.response(f0)) * S(k) + std::norm(wb.response(f1)) * S(k + 1));
+      sperling += 0.5 * h *
+                  (std::pow(sperling_weighting(f0, SperlingDirection::vertical), 2) * S(k) +
+                   std::pow(sperling_weighting(f1, SperlingDirection::vertical), 2) * S(k + 1));
+    }
+    const RideOutputAtSpeed& o = at.outputs[0];
+    EXPECT_NEAR(o.rms, std::sqrt(plain), 1e-12 * o.rms);
+    EXPECT_NEAR(*o.weighted_rms, std::sqrt(weighted), 1e-12 * o.rms);
+    EXPECT_NEAR(*o.sperling_wz, sperling_wz_from_weighted_rms(std::sqrt(sperling)), 1e-12);
+    EXPECT_GT(*o.p95_estimate, *o.weighted_rms);
+    EXPECT_LT(*o.p95_estimate, 2.0 * *o.weighted_rms);  // ν of tens: the 95th percentile is tens of % above
+  }
+  options.threads = 2;
+  const RideResult shared = solve_ride(s, track, outputs, options);
+  for (size_t v = 0; v < r.speeds.size(); ++v) EXPECT_EQ(shared.speeds[v].outputs[0].rms, r.speeds[v].outputs[0].rms);
+}
+
 TEST(Ride, ChiSquareQuantilesMatchTheTables) {
   // Abramowitz & Stegun Table 26.8 / NIST handbook 1.3.6.7.4: χ²_{0.95} for ν = 1, 2, 10, 100.
   EXPECT_NEAR(ride::chi_square_quantile(0.95, 1.0), 3.841459, 1e-6);
