@@ -30,12 +30,13 @@ struct ComponentPower {
   std::vector<Eigen::VectorXd> power;  ///< per component, on the grid
 };
 
-/// ∫ Σ_c |W(f)|² P_c df over each component's band (W = 1: `weight` empty).
+/// ∫ Σ_c |W(f)|² P_c df over each component's band; `weight` holds |W(f_k)|² on the grid (empty:
+/// W = 1). `coarse`: with every other grid point (BandWeights::coarse_weights).
 double integral(const ComponentPower& p, const std::vector<BandWeights>& bands, const Eigen::VectorXd& weight,
                 bool coarse = false);
 
-/// ∫ (Σ_c |W|² P_c)² df by the trapezoid of the square (the P95 estimate's ∫S²): each interval
-/// takes the components inside their band there.
+/// ∫ (Σ_c |W|² P_c)² df by the trapezoid of the square (the P95 estimate's ∫S²; `weight` as
+/// above): each interval takes the components inside their band there.
 double integral_of_square(const ComponentPower& p, const std::vector<BandWeights>& bands,
                           const Eigen::VectorXd& grid, const Eigen::VectorXd& weight);
 
