@@ -78,6 +78,11 @@ SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, con
   for (Eigen::Index k = 0; k < K; ++k) {
     const double omega = kTwoPi * grid(k);
     for (size_t d = 0; d < delays.size(); ++d) {
+      if (delays[d] == 0.0) {  // the front axle's: no trigonometry
+        cos_d[d] = 1.0;
+        sin_d[d] = 0.0;
+        continue;
+      }
       cos_d[d] = std::cos(omega * delays[d]);
       sin_d[d] = -std::sin(omega * delays[d]);
     }
