@@ -64,8 +64,14 @@ struct RideOutput {
   enum class Kind {
     point,               ///< motion of a body-fixed point (body, point, axis, quantity)
     element_deflection,  ///< an element's deflection along `axis` (upper end relative to lower), m
-    element_force,       ///< the force an element carries along `axis`, N (spring + viscous damper)
-    wheel_rail_force,    ///< a wheelset's wheel–rail force along `axis` (lateral: sum of both wheels), N
+    /// the force an element exerts on its upper body along `axis`, N: −(k + iωc)·deflection
+    /// (spring + viscous damper, the linearised leaf friction and series dampers included);
+    /// vertically the change of its compression load
+    element_force,
+    /// a wheelset's wheel–rail force along `axis`, N, the sum of both wheels, up on the
+    /// wheelset: the forces of the elements standing on it plus its mass times the rail's
+    /// acceleration. Vertical only for now (the lateral one needs the creep forces).
+    wheel_rail_force,
   };
   std::string name;  ///< for reports: "floor over front bogie, vertical"; unique within a request
   Kind kind = Kind::point;
@@ -121,7 +127,9 @@ struct RideOptions {
 /// One mode's share of an output's variance. With H = Σ_j H_j (H_j the modal term of mode j),
 /// σ² = Σ_j ∫|H_j|²G df + Σ_{j≠k} ∫Re(H_j H_k*)G df: `variance` is the first (the mode alone),
 /// and the cross terms of all pairs are RideOutputAtSpeed::cross_term_variance, so the shares
-/// and the cross term add up to σ² exactly.
+/// and the cross term add up to σ² exactly. Where part of H belongs to no oscillatory mode (the
+/// track's own displacement in a track element's deflection or force, rigid-body coordinates),
+/// that part and its cross terms are in cross_term_variance too: it is σ² − Σ_j variance.
 struct ModalContribution {
   int mode = 0;             ///< index into RideResult::modes
   double variance = 0.0;    ///< unit² of the output
@@ -145,7 +153,7 @@ struct RideOutputAtSpeed {
   /// estimate, labelled so in every report.
   std::optional<double> p95_estimate;
   std::vector<ModalContribution> modes;  ///< largest first; empty when unbounded
-  double cross_term_variance = 0.0;      ///< see ModalContribution
+  double cross_term_variance = 0.0;      ///< σ² − Σ modes' variance (see ModalContribution)
   Eigen::VectorXd psd;  ///< one-sided, unit²/Hz on RideResult::frequencies (keep_spectra)
 };
 
