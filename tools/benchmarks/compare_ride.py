@@ -37,12 +37,14 @@ Timing, three ways (medians; wall and processor time):
     against `python3 compare_ride.py --baseline MODEL.json` (start Python, import numpy, read
     the model, solve, print), each started by subprocess and timed from outside.
 
-It also prints the reference table the validation test ride_validation_test.cpp pins
+--quarter-car prints the quarter-car of the same test on ORE level by adaptive quadrature, the
+check of the test's exact (Lyapunov) solution. It also prints the reference table the validation test ride_validation_test.cpp pins
 (100, 150, 200 km/h): computed here on its own fine grid (2·10⁵ log-spaced points over each
 speed's band ∩ 0.1 … 80 Hz, Simpson's rule), independent of railmodal's grid.
 
     /usr/bin/python3 tools/benchmarks/compare_ride.py [--repeats 11] [--driver PATH]
     /usr/bin/python3 tools/benchmarks/compare_ride.py --table [--driver PATH]
+    /usr/bin/python3 tools/benchmarks/compare_ride.py --quarter-car
 
 Needs Debian's python3-numpy (and python3-scipy for Simpson's rule in --table) and a build with
 benchmarks (the target ride_timing).
@@ -193,6 +195,32 @@ def reference_table(m, speeds_kmh, points=200001):
     return rows
 
 
+def quarter_car_quadrature():
+    """The quarter-car of ride_validation_test.cpp on ORE B176 low level (band 0 … ∞), RMS of the
+    sprung acceleration, its Wb-weighted RMS and the suspension deflection, by adaptive
+    quadrature of |H|²G (scipy.integrate.quad, pieces split at the resonances): the check of the
+    test's exact stationary-covariance solution."""
+    from scipy.integrate import quad
+    m1, m2, k1, k2, c2 = 1307.5, 8000.0, 2.44e6, 4.3e5, 2.0e4
+
+    def responses(f):
+        s = 2j * np.pi * f
+        D = m1 * m2 * s**4 + c2 * (m1 + m2) * s**3 + (k1 * m2 + k2 * m1 + k2 * m2) * s**2 + c2 * k1 * s + k1 * k2
+        z2, z1 = k1 * (c2 * s + k2) / D, k1 * (m2 * s**2 + c2 * s + k2) / D
+        return s * s * z2, z2 - z1
+
+    pieces = [0.0, 0.01, 0.1, 0.5, 1, 2, 5, 7.5, 10, 20, 100, np.inf]
+    integral = lambda g: sum(quad(g, a, b, limit=500, epsabs=0, epsrel=1e-11)[0] for a, b in zip(pieces, pieces[1:]))
+    for kmh in (100.0, 200.0):
+        V = kmh / 3.6
+        G = lambda f: ORE_A * ORE_OC**2 * 2 * np.pi / V / (((2 * np.pi * f / V)**2 + ORE_OR**2) * ((2 * np.pi * f / V)**2 + ORE_OC**2))
+        a = np.sqrt(integral(lambda f: abs(responses(f)[0])**2 * G(f)))
+        w = np.sqrt(integral(lambda f: abs(responses(f)[0])**2 * G(f) * wb_squared(f)))
+        d = np.sqrt(integral(lambda f: abs(responses(f)[1])**2 * G(f)))
+        print(f"  {kmh:5.0f} km/h  sprung acceleration RMS {a:.10g} m/s², Wb-weighted {w:.10g} m/s², "
+              f"suspension deflection {d:.10g} m")
+
+
 def median_seconds(f, repeats):
     wall, cpu, result = [], [], None
     for _ in range(repeats):
@@ -231,10 +259,15 @@ def main():
     parser.add_argument("--repeats", type=int, default=11)
     parser.add_argument("--driver", default=os.path.join(ROOT, "build", "tools", "benchmarks", "ride_timing"))
     parser.add_argument("--table", action="store_true", help="print only the reference table (no railmodal solve)")
+    parser.add_argument("--quarter-car", action="store_true",
+                        help="print only the quarter-car on ORE level by quadrature (no railmodal)")
     parser.add_argument("--baseline", metavar="MODEL.json", help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.baseline:
         return baseline(args.baseline)
+    if args.quarter_car:
+        print("quarter-car (ride_validation_test.cpp) on ORE B176 low vertical level, 0 … ∞, by quadrature:")
+        return quarter_car_quadrature()
     if not os.access(args.driver, os.X_OK):
         sys.exit(f"compare_ride.py: error: {args.driver} is missing; build the target ride_timing")
     with tempfile.TemporaryDirectory() as tmp:
