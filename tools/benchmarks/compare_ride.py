@@ -16,31 +16,35 @@ computation is vectorised, no Python loop over frequencies or speeds.
     stack of all 10⁴ dynamic stiffness matrices (a batched LAPACK gesv gufunc) with the 4 axle
     load vectors as right-hand sides (the two axleboxes of an axle see the same vertical level
     and are summed first: 4 columns, not 8).
-  * The 20 speeds' delays are applied by broadcasting one (speeds × frequencies × axles) array
-    of phase factors; |H|² is taken in real arithmetic (re² + im²), and the band-limited
-    trapezoid rule is one matrix product per index over all speeds and outputs at once.
+  * The 20 speeds' delays are applied by broadcasting one (frequencies × axles × speeds) array
+    of phase factors, built from np.cos and np.sin (numpy's complex exp is not vectorised:
+    4x slower measured), by one batched matrix product; |H|² is taken in real arithmetic
+    (re² + im²), and the band-limited trapezoid rule is one einsum per index over all speeds
+    and outputs at once.
   * A second, faster variant replaces the 10⁴ solves by one eigen-decomposition of the
     first-order system (D(ω)⁻¹ = V (iω − Λ)⁻¹ W, O(n) per frequency instead of O(n³)): exact for
     this diagonalisable system, and what a user who knows modal methods would write. Both are
     timed and the faster is the one railmodal is held against.
-The same work in both: the same grid (railmodal's, read from its JSON: the log base with the
+The same work on both sides: the same grid (railmodal's, read from its JSON: the log base with the
 band edges of every speed inserted), the same band and the same integration rule (trapezoid
 over the intervals inside each speed's band), so the figures agree to round-off; the EN 12299
 Wb weighting and the ORE B176 spectrum are written here again from their published definitions
 (EN 12299:2009 / ISO 2631-1 Annex A; ORE B176 via the constants cited in docs/ride.md), not read
 from railmodal.
 
-Timing, three ways (medians; wall and processor time):
+Timing, two ways (medians; wall and processor time: on a shared, loaded machine the processor
+time is the fair figure):
   * in process: solve_ride inside ride_timing against the numpy computation inside this
     script, each from assembled matrices in memory to the indices;
   * whole processes: `ride_timing --once` (read the vehicle file, assemble, solve, print)
     against `python3 compare_ride.py --baseline MODEL.json` (start Python, import numpy, read
     the model, solve, print), each started by subprocess and timed from outside.
 
---quarter-car prints the quarter-car of the same test on ORE level by adaptive quadrature, the
-check of the test's exact (Lyapunov) solution. It also prints the reference table the validation test ride_validation_test.cpp pins
-(100, 150, 200 km/h): computed here on its own fine grid (2·10⁵ log-spaced points over each
-speed's band ∩ 0.1 … 80 Hz, Simpson's rule), independent of railmodal's grid.
+--table prints the reference table the validation test ride_validation_test.cpp pins (100, 150,
+200 km/h), computed on this script's own fine grid (2·10⁵ log-spaced points over each speed's
+band ∩ 0.1 … 80 Hz, Simpson's rule), independent of railmodal's grid. --quarter-car prints the
+test's quarter-car on ORE level by adaptive quadrature, the check of its exact (Lyapunov)
+solution. Neither runs railmodal's solver.
 
     /usr/bin/python3 tools/benchmarks/compare_ride.py [--repeats 11] [--driver PATH]
     /usr/bin/python3 tools/benchmarks/compare_ride.py --table [--driver PATH]
