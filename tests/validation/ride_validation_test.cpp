@@ -135,7 +135,8 @@ Eigen::MatrixXd stationary_covariance(const Eigen::MatrixXd& A, const Eigen::Vec
   const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
   Eigen::MatrixXd L(n * n, n * n);
   for (Eigen::Index i = 0; i < n; ++i)
-    for (Eigen::Index j = 0; j < n; ++j) L.block(i * n, j * n, n, n) = A(i, j) * I + (i == j ? A : Eigen::MatrixXd::Zero(n, n));
+    for (Eigen::Index j = 0; j < n; ++j)
+      L.block(i * n, j * n, n, n) = A(i, j) * I + (i == j ? A : Eigen::MatrixXd::Zero(n, n));
   // Column-major vec: vec(A P) = (I ⊗ A) vec P, vec(P Aᵀ) = (A ⊗ I) vec P; the loop above built
   // (A ⊗ I) + (I ⊗ A).
   const Eigen::MatrixXd Q = -q * B * B.transpose();
@@ -186,7 +187,8 @@ Chain quarter_car_chain_white_velocity() {
 TEST(RideValidation, StationaryCovarianceReproducesTheWhiteInputClosedForm) {
   const double Gv = 1.0;
   Chain c = quarter_car_chain_white_velocity();
-  EXPECT_NEAR(c.variance(Gv / 2) / (Gv * (kC2 * kC2 * kK1 + kK2 * kK2 * (kM1 + kM2)) / (4 * kC2 * kM2 * kM2)), 1.0, 1e-10);
+  EXPECT_NEAR(c.variance(Gv / 2) / (Gv * (kC2 * kC2 * kK1 + kK2 * kK2 * (kM1 + kM2)) / (4 * kC2 * kM2 * kM2)), 1.0,
+              1e-10);
   c.C = Eigen::RowVector4d(-1.0, 1.0, 0.0, 0.0);
   EXPECT_NEAR(c.variance(Gv / 2) / (Gv * (kM1 + kM2) / (4 * kC2)), 1.0, 1e-10);
 }
@@ -200,9 +202,9 @@ void append_wb(Chain& c) {
   const double w1 = 2 * kPi * 0.4, w2 = 2 * kPi * 100, w3 = 2 * kPi * 16, w4 = 2 * kPi * 16;
   const double w5 = 2 * kPi * 2.5, w6 = 2 * kPi * 4.0, q1 = 1 / std::sqrt(2.0), q4 = 0.63, q5 = 0.8, q6 = 0.8;
   const double K = 0.4;
-  c.append(1.0, 0.0, 0.0, w1 / q1, w1 * w1);                      // s²/(s² + sω1/Q1 + ω1²)
-  c.append(0.0, 0.0, w2 * w2, w2 / q1, w2 * w2);                  // ω2²/(s² + sω2/Q2 + ω2²)
-  c.append(0.0, w4 * w4 / w3, w4 * w4, w4 / q4, w4 * w4);         // (1 + s/ω3)/(1 + s/(Q4ω4) + s²/ω4²)
+  c.append(1.0, 0.0, 0.0, w1 / q1, w1 * w1);               // s²/(s² + sω1/Q1 + ω1²)
+  c.append(0.0, 0.0, w2 * w2, w2 / q1, w2 * w2);           // ω2²/(s² + sω2/Q2 + ω2²)
+  c.append(0.0, w4 * w4 / w3, w4 * w4, w4 / q4, w4 * w4);  // (1 + s/ω3)/(1 + s/(Q4ω4) + s²/ω4²)
   c.append(K * w6 * w6 / (w5 * w5), K * w6 * w6 / (q5 * w5), K * w6 * w6, w6 / q6, w6 * w6);  // the step
 }
 
@@ -353,7 +355,8 @@ void expect_filter(const FilterCase& c, int dof, bool pitch) {
       const double f = c.ride.frequencies(k), G = track.temporal_density(f, at.speed);
       const double bogies = pitch ? std::sin(kPi * f * 2 * L / at.speed) : std::cos(kPi * f * 2 * L / at.speed);
       const double axles = std::cos(kPi * f * 2 * a / at.speed);
-      const double expected = 16 * std::norm(one_axle_response(c.system, L + a, dof, f)) * bogies * bogies * axles * axles;
+      const double expected =
+          16 * std::norm(one_axle_response(c.system, L + a, dof, f)) * bogies * bogies * axles * axles;
       const double got = at.outputs[0].psd(k) / G;
       largest = std::max(largest, expected);
       worst = std::max(worst, std::abs(got - expected));
@@ -398,11 +401,10 @@ constexpr CoachFigure kCoachReference[] = {
 };
 
 TEST(RideValidation, ManchesterCoachOnOreLowTrackMatchesNumpy) {
-  const LinearSystem system =
-      assemble(load_vehicle(data_file("manchester_benchmark_coach.toml")), DofSet::vertical);
+  const LinearSystem system = assemble(load_vehicle(data_file("manchester_benchmark_coach.toml")), DofSet::vertical);
   TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level,
-                                                 {2 * kPi / 100, 2 * kPi / 3});
+  track.vertical_level =
+      TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {2 * kPi / 100, 2 * kPi / 3});
   std::vector<RideOutput> outputs;
   for (double x : {9.5, 0.0, -9.5}) {
     RideOutput o;
@@ -423,7 +425,8 @@ TEST(RideValidation, ManchesterCoachOnOreLowTrackMatchesNumpy) {
       // cautious estimate of it, 4.2e-4, is checked below) against a reference converged to
       // 1e-7 and printed to 7 digits; a wrong delay sign swaps the front and rear figures (35 %
       // apart at 100 km/h), a weighting constant moves the weighted ones by percent.
-      EXPECT_NEAR(out.rms / kCoachReference[s].rms[o], 1.0, 5e-4) << kCoachReference[s].kmh << " km/h, " << outputs[o].name;
+      EXPECT_NEAR(out.rms / kCoachReference[s].rms[o], 1.0, 5e-4)
+          << kCoachReference[s].kmh << " km/h, " << outputs[o].name;
       EXPECT_NEAR(*out.weighted_rms / kCoachReference[s].weighted[o], 1.0, 5e-4)
           << kCoachReference[s].kmh << " km/h, " << outputs[o].name;
     }

@@ -57,8 +57,8 @@ Setup setup() {
   s.track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level,
                                                    {2 * kPi / kLongestWavelength, 2 * kPi / kShortestWavelength});
   const std::vector<Body>& bodies = s.system.vehicle.bodies;
-  const Body& car = *std::max_element(bodies.begin(), bodies.end(),
-                                      [](const Body& a, const Body& b) { return a.mass < b.mass; });
+  const Body& car =
+      *std::max_element(bodies.begin(), bodies.end(), [](const Body& a, const Body& b) { return a.mass < b.mass; });
   const double floor = car.reference_point.z();
   std::vector<double> xs;
   for (const Body& b : bodies)
