@@ -21,8 +21,9 @@
 //   }
 //
 // Conventions (docs/ride.md, "Realisations"): a synthesised profile is periodic with period
-// `length`; its Fourier coefficients are complex Gaussian (independent normal real and
-// imaginary parts, variance S(Ω_k)ΔΩ/2 each), not fixed amplitudes with random phases, so that a
+// `length`, z(x) = Σ_k Re(c_k e^{iΩ_k x}) over Ω_k = 2πk/length inside the band; its Fourier
+// coefficients c_k are complex Gaussian (independent normal real and imaginary parts, variance
+// S(Ω_k)ΔΩ each, so E z² = Σ S(Ω_k)ΔΩ), not fixed amplitudes with random phases, so that a
 // realisation's periodogram scatters as chi-square with 2 degrees of freedom about the target.
 #pragma once
 
@@ -77,6 +78,10 @@ struct RideSimulationOptions {
   /// Vehicle effects the scene names (SimulationSpec::effects); nothing else is simulated.
   NonlinearEffects effects;
   double window = 5.0;  ///< s: EN 12299's averaging time of the weighted RMS values
+  /// b, half the distance between the contact points, m, for a cross-level Δz to become the
+  /// roll angle Δz/(2b) (as RideOptions::contact_half_spacing); 0: the wheelsets'
+  /// contact_half_spacing where the vehicle has wheelsets, else 0.75 m.
+  double contact_half_spacing = 0.0;
   bool is_valid(std::string* why) const;
 };
 
@@ -110,6 +115,10 @@ struct RideFftChecks {
 
 struct RideSimulationResult {
   std::vector<RideOutput> outputs;
+  /// s: the step used, time_step rounded down to Δx/(mV) for a whole m so that the track's
+  /// samples meet every wheel on a fixed phase of the step grid (what makes the linear path
+  /// exact for the linearly interpolated track).
+  double time_step = 0.0;
   Eigen::VectorXd time;  ///< s, after settle_time
   std::vector<RideHistory> histories;  ///< in `outputs` order
   std::vector<RideComfortAtPoint> comfort;  ///< N_MV from the P95 of the histories
