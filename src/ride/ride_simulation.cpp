@@ -96,7 +96,7 @@ Eigen::VectorXd periodic_start(ride::RideMarch* march, long period, int states, 
   const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(states, states);
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(I - march->transition_power(period));
   constexpr double kSingular = 1e-10;  // reciprocal condition below which the fixed point is not trusted
-  if (lu.rcond() < kSingular) {
+  if (!lu.isInvertible() || !(lu.rcond() >= kSingular)) {  // rcond is NaN for an exactly zero pivot
     notes->push_back("started from rest: the vehicle has an (almost) undamped motion, so no periodic steady state");
     return Eigen::VectorXd::Zero(states);
   }

@@ -1,9 +1,10 @@
-// Hard cases of the time-domain ride: an undamped vehicle on periodic track (no periodic
-// steady state), a stiff wheel mode far above the sampling rate, a single spike in a measured
+// Hard cases of the time-domain ride: an undamped vehicle on periodic track, a floating one
+// (no periodic steady state), a stiff wheel mode far above the sampling rate, a single spike in a measured
 // record, and a synthesis at the very edges of the band the sampling holds.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 
 #include "railmodal/ride_simulation.hpp"
 #include "ride/ride_test_systems.hpp"
@@ -29,8 +30,26 @@ TrackGeometry cosine_track(int samples, double step, bool periodic) {
   return g;
 }
 
-TEST(RideRealisationHardCases, UndampedVehicleOnPeriodicTrackStartsFromRestAndSaysSo) {
+TEST(RideRealisationHardCases, UndampedVehicleOffResonanceHasItsPeriodicOrbit) {
+  // 1.59 Hz undamped under a 0.3 Hz track line: I − Φ^{Nm} is regular, the run starts on the
+  // forced periodic motion, amplitude k/(k − ω²m) times the interpolated line
   const LinearSystem system = bouncing_mass(1000.0, 1e5, 0.0, {0.0});
+  RideSimulationOptions o;
+  o.speed = 20.0;
+  o.time_step = 0.5 / 20.0;
+  const RideSimulationResult r = simulate_ride(system, cosine_track(400, 0.5, true), {displacement()}, o);
+  const Eigen::VectorXd& x = r.histories[0].values;
+  std::complex<double> sum = 0.0;
+  for (Eigen::Index n = 0; n < x.size(); ++n) sum += x(n) * std::polar(1.0, -2 * kPi * 3.0 * n / x.size());
+  const double w = 2 * kPi * 0.3, gain = std::pow(std::sin(kPi * 3 / 400.0) / (kPi * 3 / 400.0), 2);
+  // the line's images at 400 ± 3 cycles reach the mass at 60 Hz attenuated by (1.59/60)² and
+  // sinc²: below 1e-6
+  EXPECT_NEAR(2.0 * std::abs(sum) / x.size() / (0.001 * gain * 1e5 / (1e5 - w * w * 1000.0)), 1.0, 1e-6);
+}
+
+TEST(RideRealisationHardCases, AFloatingBodyHasNoPeriodicOrbitAndStartsFromRest) {
+  // on a damper alone the body's position is free (Φ has the eigenvalue 1): no fixed point
+  const LinearSystem system = bouncing_mass(1000.0, 0.0, 1e4, {0.0});
   RideSimulationOptions o;
   o.speed = 20.0;
   o.time_step = 0.5 / 20.0;
