@@ -12,7 +12,7 @@
 
 #include "railmodal/ride_simulation.hpp"
 #include "require_valid.hpp"
-#include "ride/ride_indices.hpp"
+#include "ride/window_indices.hpp"
 #include "ride/ride_march.hpp"
 #include "ride/ride_state_space.hpp"
 #include "ride/time_weighting.hpp"

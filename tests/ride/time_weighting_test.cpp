@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "railmodal/comfort_weighting.hpp"
-#include "ride/ride_indices.hpp"
+#include "ride/window_indices.hpp"
 #include "ride/time_weighting.hpp"
 #include "test_support.hpp"
 

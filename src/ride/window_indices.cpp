@@ -1,4 +1,4 @@
-#include "ride/ride_indices.hpp"
+#include "ride/window_indices.hpp"
 
 #include <algorithm>
 #include <cmath>
