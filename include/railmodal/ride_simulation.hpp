@@ -76,6 +76,7 @@ struct RideSimulationOptions {
   /// s, ≥ 0: simulated but not evaluated, so the start-up transient is left out.
   double settle_time = 0.0;
   /// Vehicle effects the scene names (SimulationSpec::effects); nothing else is simulated.
+  /// Not built in the time domain yet: simulate_ride refuses any effect by name.
   NonlinearEffects effects;
   double window = 5.0;  ///< s: EN 12299's averaging time of the weighted RMS values
   /// b, half the distance between the contact points, m, for a cross-level Δz to become the
@@ -127,13 +128,19 @@ struct RideSimulationResult {
 };
 
 /// Runs `system` over `geometry` at options.speed, each wheel meeting the track x_i/V after the
-/// leading one. Throws std::invalid_argument for invalid options, a geometry too short for the
-/// run, an output naming nothing in the system.
+/// leading one, exactly for the linearly interpolated track (docs/ride.md, "Realisations"); a
+/// periodic geometry over one period from its periodic steady state, a measured one from rest.
+/// Throws std::invalid_argument for invalid options, a geometry too short for the run, an
+/// output naming nothing in the system, and for what the time domain does not build yet
+/// (nonlinear effects, element and wheel–rail forces, series dampers, massless DOFs).
 RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeometry& geometry,
                                    const std::vector<RideOutput>& outputs, const RideSimulationOptions& options);
 
 /// The FFT checks of a simulated realisation against the frequency-domain ride of the same
-/// system, spectra and outputs at the same speed.
+/// system, spectra and outputs at the same speed: (a) when the geometry is periodic, (b) for
+/// each component with both a spectrum and a profile, (c) by solve_ride over the band the
+/// spectra cover (rms_difference empty when an output is unbounded there). Throws as
+/// simulate_ride and solve_ride do.
 RideFftChecks check_ride_realisation(const LinearSystem& system, const TrackIrregularitySpectra& track,
                                      const TrackGeometry& geometry, const RideSimulationResult& simulated,
                                      const RideSimulationOptions& options);
