@@ -21,8 +21,9 @@
 //   }
 //
 // Conventions (docs/ride.md, "Realisations"): a synthesised profile is periodic with period
-// `length`; its Fourier coefficients are complex Gaussian (independent normal real and
-// imaginary parts, variance S(Ω_k)ΔΩ/2 each), not fixed amplitudes with random phases, so that a
+// `length`, z(x) = Σ_k Re(c_k e^{iΩ_k x}) over Ω_k = 2πk/length inside the band; its Fourier
+// coefficients c_k are complex Gaussian (independent normal real and imaginary parts, variance
+// S(Ω_k)ΔΩ each, so E z² = Σ S(Ω_k)ΔΩ), not fixed amplitudes with random phases, so that a
 // realisation's periodogram scatters as chi-square with 2 degrees of freedom about the target.
 #pragma once
 
@@ -75,8 +76,13 @@ struct RideSimulationOptions {
   /// s, ≥ 0: simulated but not evaluated, so the start-up transient is left out.
   double settle_time = 0.0;
   /// Vehicle effects the scene names (SimulationSpec::effects); nothing else is simulated.
+  /// Not built in the time domain yet: simulate_ride refuses any effect by name.
   NonlinearEffects effects;
   double window = 5.0;  ///< s: EN 12299's averaging time of the weighted RMS values
+  /// b, half the distance between the contact points, m, for a cross-level Δz to become the
+  /// roll angle Δz/(2b) (as RideOptions::contact_half_spacing); 0: the wheelsets'
+  /// contact_half_spacing where the vehicle has wheelsets, else 0.75 m.
+  double contact_half_spacing = 0.0;
   bool is_valid(std::string* why) const;
 };
 
@@ -110,6 +116,10 @@ struct RideFftChecks {
 
 struct RideSimulationResult {
   std::vector<RideOutput> outputs;
+  /// s: the step used, time_step rounded down to Δx/(mV) for a whole m so that the track's
+  /// samples meet every wheel on a fixed phase of the step grid (what makes the linear path
+  /// exact for the linearly interpolated track).
+  double time_step = 0.0;
   Eigen::VectorXd time;  ///< s, after settle_time
   std::vector<RideHistory> histories;  ///< in `outputs` order
   std::vector<RideComfortAtPoint> comfort;  ///< N_MV from the P95 of the histories
@@ -118,13 +128,19 @@ struct RideSimulationResult {
 };
 
 /// Runs `system` over `geometry` at options.speed, each wheel meeting the track x_i/V after the
-/// leading one. Throws std::invalid_argument for invalid options, a geometry too short for the
-/// run, an output naming nothing in the system.
+/// leading one, exactly for the linearly interpolated track (docs/ride.md, "Realisations"); a
+/// periodic geometry over one period from its periodic steady state, a measured one from rest.
+/// Throws std::invalid_argument for invalid options, a geometry too short for the run, an
+/// output naming nothing in the system, and for what the time domain does not build yet
+/// (nonlinear effects, element and wheel–rail forces, series dampers, massless DOFs).
 RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeometry& geometry,
                                    const std::vector<RideOutput>& outputs, const RideSimulationOptions& options);
 
 /// The FFT checks of a simulated realisation against the frequency-domain ride of the same
-/// system, spectra and outputs at the same speed.
+/// system, spectra and outputs at the same speed: (a) when the geometry is periodic, (b) for
+/// each component with both a spectrum and a profile, (c) by solve_ride over the band the
+/// spectra cover (rms_difference empty when an output is unbounded there). Throws as
+/// simulate_ride and solve_ride do.
 RideFftChecks check_ride_realisation(const LinearSystem& system, const TrackIrregularitySpectra& track,
                                      const TrackGeometry& geometry, const RideSimulationResult& simulated,
                                      const RideSimulationOptions& options);

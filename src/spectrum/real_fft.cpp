@@ -49,4 +49,34 @@ RealFft::~RealFft() {
 
 void RealFft::execute() { fftw_execute(plan_); }
 
+InverseRealFft::InverseRealFft(Eigen::Index length) : length_(length) {
+  if (length < 1 || length > INT_MAX)
+    throw std::invalid_argument("transform length must be in [1, " + std::to_string(INT_MAX) + "], got " +
+                                std::to_string(length));
+  const auto n = static_cast<size_t>(length);
+  input_ = reinterpret_cast<std::complex<double>*>(fftw_alloc_complex(n / 2 + 1));
+  output_ = fftw_alloc_real(n);
+  if (input_ && output_) {
+    std::lock_guard<std::mutex> guard(planner_lock());
+    plan_ = fftw_plan_dft_c2r_1d(static_cast<int>(length), reinterpret_cast<fftw_complex*>(input_), output_,
+                                 FFTW_ESTIMATE);
+  }
+  if (!plan_) {
+    fftw_free(input_);
+    fftw_free(output_);
+    throw std::bad_alloc();
+  }
+}
+
+InverseRealFft::~InverseRealFft() {
+  {
+    std::lock_guard<std::mutex> guard(planner_lock());
+    fftw_destroy_plan(plan_);
+  }
+  fftw_free(input_);
+  fftw_free(output_);
+}
+
+void InverseRealFft::execute() { fftw_execute(plan_); }
+
 }  // namespace railmodal::spectrum

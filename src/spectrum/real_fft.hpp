@@ -1,4 +1,4 @@
-// The FFTW back-end: a real-to-complex transform of one length, planned once.
+// The FFTW back-end: real-to-complex and complex-to-real transforms of one length, planned once.
 #pragma once
 
 #include <Eigen/Core>
@@ -30,6 +30,31 @@ class RealFft {
   Eigen::Index length_;
   double* input_ = nullptr;
   std::complex<double>* output_ = nullptr;
+  fftw_plan_s* plan_ = nullptr;
+};
+
+/// The inverse: a complex-to-real transform of one length, planned once (FFTW_ESTIMATE, for
+/// the same reason). FFTW's c2r overwrites its input, so the spectrum is to be filled before
+/// every execute().
+class InverseRealFft {
+ public:
+  explicit InverseRealFft(Eigen::Index length);
+  ~InverseRealFft();
+  InverseRealFft(const InverseRealFft&) = delete;
+  InverseRealFft& operator=(const InverseRealFft&) = delete;
+
+  Eigen::Index length() const { return length_; }
+  /// Y[k] for k = 0 … length/2 (the other half is the conjugate mirror), to be filled before
+  /// execute(); the imaginary parts of Y[0] and, for an even length, Y[length/2] are ignored.
+  Eigen::Map<Eigen::VectorXcd> input() { return {input_, length_ / 2 + 1}; }
+  /// y[n] = Σ_{k=0}^{length−1} Y[k] e^{+2πikn/length} (unnormalised), valid after execute().
+  Eigen::Map<const Eigen::VectorXd> output() const { return {output_, length_}; }
+  void execute();
+
+ private:
+  Eigen::Index length_;
+  std::complex<double>* input_ = nullptr;
+  double* output_ = nullptr;
   fftw_plan_s* plan_ = nullptr;
 };
 

@@ -1,0 +1,242 @@
+// simulate_ride: the linear vehicle over a sampled track, exact for the linearly interpolated
+// track (ride_march.hpp), and the EN 12299 and Sperling indices of its histories. Method and
+// conventions: docs/ride.md, "Realisations" and "Ride indices in time".
+#include <Eigen/Dense>
+#include <cmath>
+#include <array>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+#include "railmodal/ride_simulation.hpp"
+#include "require_valid.hpp"
+#include "ride/window_indices.hpp"
+#include "ride/ride_march.hpp"
+#include "ride/ride_state_space.hpp"
+#include "ride/time_weighting.hpp"
+#include "ride/track_under_wheels.hpp"
+#include "summary/stage_clock.hpp"
+
+namespace railmodal {
+namespace {
+
+// EN 12299: a zone of five minutes holds 60 five-second windows.
+constexpr Eigen::Index kWindowsPerZone = 60;
+
+bool finite_at_least(double value, double least) { return std::isfinite(value) && value >= least; }
+
+Eigen::Index geometry_samples(const TrackGeometry& geometry) {
+  if (!(std::isfinite(geometry.step) && geometry.step > 0.0))
+    throw std::invalid_argument("simulate_ride: the geometry's step must be positive and finite");
+  Eigen::Index n = 0;
+  for (const Eigen::VectorXd* profile : {&geometry.vertical_level, &geometry.alignment, &geometry.cross_level}) {
+    if (profile->size() == 0) continue;
+    if (n != 0 && profile->size() != n)
+      throw std::invalid_argument("simulate_ride: the geometry's components have different sample counts");
+    if (!profile->allFinite()) throw std::invalid_argument("simulate_ride: the geometry has a non-finite sample");
+    n = profile->size();
+  }
+  if (n < 2) throw std::invalid_argument("simulate_ride: the geometry has no component of at least two samples");
+  return n;
+}
+
+// The run: `settle` steps, then `evaluated` samples; a periodic geometry is evaluated over
+// exactly one period (N·m steps), so its samples' DFT has the track's bins (the FFT checks).
+struct RunPlan {
+  double step = 0.0;
+  long settle = 0, evaluated = 0;
+};
+
+RunPlan plan_run(const TrackGeometry& geometry, Eigen::Index samples, const ride::TrackUnderWheels& track,
+                 const RideSimulationOptions& options, std::vector<std::string>* notes) {
+  const double sample_time = geometry.step / options.speed;
+  if (options.time_step > sample_time * (1.0 + 1e-12)) {
+    std::ostringstream why;
+    why << "simulate_ride: time_step " << options.time_step << " s is longer than the geometry's step over the speed, "
+        << sample_time << " s";
+    throw std::invalid_argument(why.str());
+  }
+  RunPlan plan;
+  const long m = std::max(1L, static_cast<long>(std::ceil(sample_time / options.time_step - 1e-9)));
+  plan.step = sample_time / static_cast<double>(m);
+  if (plan.step < options.time_step * (1.0 - 1e-12)) {
+    std::ostringstream note;
+    note << "time step " << plan.step << " s: the geometry's step over the speed divided by " << m
+         << ", so that the track samples meet every wheel on a fixed phase of the steps";
+    notes->push_back(note.str());
+  }
+  plan.settle = std::lround(options.settle_time / plan.step);
+  if (geometry.periodic) {
+    plan.evaluated = static_cast<long>(samples) * m;
+  } else {
+    const double travel = track.end() - track.span();
+    const long steps = travel > 0.0 ? static_cast<long>(std::floor(travel / (options.speed * plan.step) + 1e-9)) : -1;
+    plan.evaluated = steps + 1 - plan.settle;
+    if (plan.evaluated < 2) {
+      std::ostringstream why;
+      why << "simulate_ride: the geometry (" << track.end() << " m) is too short for the run: the wheels span "
+          << track.span() << " m and settle_time takes " << options.speed * options.settle_time << " m";
+      throw std::invalid_argument(why.str());
+    }
+  }
+  if (static_cast<double>(plan.settle + plan.evaluated) > 1e9)
+    throw std::invalid_argument("simulate_ride: more than 1e9 steps; take a longer time step or a shorter record");
+  return plan;
+}
+
+// The periodic steady state: from rest, one period of N·m steps gives s_P; the state then
+// obeys s_{k+Nm} = Φ^{Nm} s_k + s_P, whose fixed point s* = (I − Φ^{Nm})⁻¹ s_P starts the run
+// on its periodic orbit (no start-up transient at all). An undamped mode makes I − Φ^{Nm}
+// singular: then the run starts from rest and settle_time is all there is.
+Eigen::VectorXd periodic_start(ride::RideMarch* march, long period, int states, std::vector<std::string>* notes) {
+  Eigen::VectorXd s = Eigen::VectorXd::Zero(states);
+  for (long k = 0; k < period; ++k) march->advance(k, &s);
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(states, states);
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(I - march->transition_power(period));
+  constexpr double kSingular = 1e-10;  // reciprocal condition below which the fixed point is not trusted
+  if (!lu.isInvertible() || !(lu.rcond() >= kSingular)) {  // rcond is NaN for an exactly zero pivot
+    notes->push_back("started from rest: the vehicle has an (almost) undamped motion, so no periodic steady state");
+    return Eigen::VectorXd::Zero(states);
+  }
+  notes->push_back("started in the periodic steady state of the periodic track (no start-up transient)");
+  return lu.solve(s);
+}
+
+// The samples of every output over the run, one column each.
+Eigen::MatrixXd march_outputs(ride::RideMarch* march, const ride::TrackUnderWheels& track,
+                              const std::vector<ride::OutputRow>& rows, Eigen::VectorXd s, long count, double speed) {
+  Eigen::MatrixXd y(count, static_cast<Eigen::Index>(rows.size()));
+  Eigen::VectorXd w, dw;
+  for (long k = 0; k < count; ++k) {
+    track.displacement(march->leading(k), &w);
+    track.slope(march->leading(k), &dw);
+    dw *= speed;  // ẇ = V ∂w/∂ξ
+    for (size_t j = 0; j < rows.size(); ++j)
+      y(k, static_cast<Eigen::Index>(j)) = rows[j].Ls.dot(s) + rows[j].Lw.dot(w) + rows[j].Ld.dot(dw);
+    if (k + 1 < count) march->advance(k, &s);
+  }
+  return y;
+}
+
+// A weighting run over the evaluated samples: a periodic history is filtered over two
+// periods and the second kept (the filter then in its own periodic steady state); another
+// over the whole run, settling included, and the evaluated tail kept.
+Eigen::VectorXd weighted(const ride::DigitalFilter& filter, const Eigen::VectorXd& run, long evaluated, bool periodic) {
+  if (!periodic) return filter.apply(run).tail(evaluated);
+  Eigen::VectorXd twice(2 * evaluated);
+  twice << run.tail(evaluated), run.tail(evaluated);
+  return filter.apply(twice).tail(evaluated);
+}
+
+double rms(const Eigen::VectorXd& values) { return std::sqrt(values.squaredNorm() / static_cast<double>(values.size())); }
+
+RideHistory history(const RideOutput& output, const Eigen::VectorXd& run, const RunPlan& plan, bool periodic,
+                    const RideSimulationOptions& options, std::vector<std::string>* notes) {
+  RideHistory h;
+  h.values = run.tail(plan.evaluated);
+  h.rms = rms(h.values);
+  if (output.kind != RideOutput::Kind::point || output.quantity != ResponseQuantity::acceleration) return h;
+  const FrequencyWeighting weighting = output.axis == RideAxis::vertical ? en12299_wb() : en12299_wd();
+  h.weighted = weighted(ride::digital_weighting(weighting, plan.step), run, plan.evaluated, periodic);
+  h.weighted_rms = rms(h.weighted);
+  if (output.axis != RideAxis::longitudinal) {
+    const SperlingDirection direction =
+        output.axis == RideAxis::vertical ? SperlingDirection::vertical : SperlingDirection::lateral;
+    h.sperling_wz = sperling_wz_from_weighted_rms(
+        rms(weighted(ride::digital_sperling(direction, plan.step), run, plan.evaluated, periodic)));
+  }
+  const Eigen::Index window = std::max<Eigen::Index>(1, std::lround(options.window / plan.step));
+  h.window_rms = ride::window_rms(h.weighted, window);
+  h.continuous_comfort = ride::running_rms(h.weighted, window);
+  if (h.window_rms.size() == 0) {
+    notes->push_back(output.name + ": the run is shorter than one window; no P95");
+    return h;
+  }
+  std::string note;
+  h.p95 = ride::zone_p95(h.window_rms, kWindowsPerZone, &note);
+  notes->push_back(output.name + ": " + note);
+  return h;
+}
+
+// N_MV per floor point from the P95 of its acceleration outputs (an axis without one counts 0).
+std::vector<RideComfortAtPoint> comfort(const std::vector<RideOutput>& outputs, const std::vector<RideHistory>& histories) {
+  std::map<std::tuple<std::string, double, double, double>, std::array<std::optional<double>, 3>> points;
+  std::vector<std::tuple<std::string, double, double, double>> order;
+  for (size_t j = 0; j < outputs.size(); ++j) {
+    const RideOutput& o = outputs[j];
+    if (o.kind != RideOutput::Kind::point || o.quantity != ResponseQuantity::acceleration || !histories[j].p95) continue;
+    const auto key = std::make_tuple(o.body, o.point.x(), o.point.y(), o.point.z());
+    if (!points.count(key)) order.push_back(key);
+    points[key][static_cast<int>(o.axis)] = histories[j].p95;
+  }
+  std::vector<RideComfortAtPoint> out;
+  for (const auto& key : order) {
+    RideComfortAtPoint c;
+    c.body = std::get<0>(key);
+    c.point = {std::get<1>(key), std::get<2>(key), std::get<3>(key)};
+    const auto& p95 = points[key];
+    for (RideAxis axis : {RideAxis::longitudinal, RideAxis::lateral, RideAxis::vertical})
+      if (!p95[static_cast<int>(axis)]) c.missing_axes.push_back(axis);
+    c.nmv_estimate = en12299_nmv(p95[0].value_or(0.0), p95[1].value_or(0.0), p95[2].value_or(0.0));
+    out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace
+
+bool RideSimulationOptions::is_valid(std::string* why) const {
+  if (!(std::isfinite(speed) && speed > 0.0)) return invalid(why, "speed must be positive and finite");
+  if (!(std::isfinite(time_step) && time_step > 0.0)) return invalid(why, "time_step must be positive and finite");
+  if (!finite_at_least(settle_time, 0.0)) return invalid(why, "settle_time must be finite and >= 0");
+  if (!(std::isfinite(window) && window > 0.0)) return invalid(why, "window must be positive and finite");
+  if (!finite_at_least(contact_half_spacing, 0.0)) return invalid(why, "contact_half_spacing must be finite and >= 0");
+  return true;
+}
+
+RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeometry& geometry,
+                                   const std::vector<RideOutput>& outputs, const RideSimulationOptions& options) {
+  require_valid(options, "RideSimulationOptions: ");
+  if (options.effects.any() || options.effects.constant_friction)
+    throw std::invalid_argument(
+        "simulate_ride: nonlinear effects (leaf friction, progressive springs) are not built in the time-domain ride "
+        "yet; run without them (the linear vehicle) or use solve_ride's statistical linearisation");
+  const Eigen::Index samples = geometry_samples(geometry);
+  if (system.track_inputs.empty()) throw std::invalid_argument("simulate_ride: the system has no track inputs");
+  if (outputs.empty()) throw std::invalid_argument("simulate_ride: no outputs requested");
+  RideSimulationResult result;
+  StageClock clock(&result.summary);
+  const ride::RideStateSpace model = ride::ride_state_space(system);
+  const std::vector<ride::OutputRow> rows = ride::output_rows(system, model, outputs);
+  const ride::TrackUnderWheels track(system, geometry, ride::contact_half_spacing(system, options.contact_half_spacing));
+  const RunPlan plan = plan_run(geometry, samples, track, options, &result.notes);
+  ride::RideMarch march(model, track, options.speed, plan.step, track.span());
+  clock.lap("state transition");
+
+  const Eigen::VectorXd start = geometry.periodic ? periodic_start(&march, plan.evaluated, 2 * model.n, &result.notes)
+                                                  : Eigen::VectorXd::Zero(2 * model.n);
+  const Eigen::MatrixXd y = march_outputs(&march, track, rows, start, plan.settle + plan.evaluated, options.speed);
+  clock.lap("march");
+
+  result.outputs = outputs;
+  result.time_step = plan.step;
+  result.time = Eigen::VectorXd::LinSpaced(plan.evaluated, static_cast<double>(plan.settle) * plan.step,
+                                           static_cast<double>(plan.settle + plan.evaluated - 1) * plan.step);
+  for (size_t j = 0; j < outputs.size(); ++j)
+    result.histories.push_back(
+        history(outputs[j], y.col(static_cast<Eigen::Index>(j)), plan, geometry.periodic, options, &result.notes));
+  result.comfort = comfort(outputs, result.histories);
+  clock.lap("indices");
+
+  result.summary.analysis = "ride on a track realisation (time domain)";
+  result.summary.method =
+      "exact state transition with a first-order hold on each wheel's linearly interpolated track (Van Loan), "
+      "step = track step / (m·speed); EN 12299 Wb/Wd and Sperling B by the prewarped bilinear transform";
+  const double non_finite = static_cast<double>((!y.array().isFinite()).count());
+  result.summary.checks.push_back({"non-finite output samples", non_finite, 0.0, non_finite == 0.0});
+  return result;
+}
+
+}  // namespace railmodal

@@ -1,0 +1,107 @@
+#include "ride/ride_state_space.hpp"
+
+#include <Eigen/Dense>
+#include <stdexcept>
+
+#include "model/analysis_limits.hpp"
+#include "model/point_motion.hpp"
+#include "railmodal/errors.hpp"
+
+namespace railmodal::ride {
+
+RideStateSpace ride_state_space(const LinearSystem& system) {
+  model::refuse_series_dampers(system, "ride simulation");
+  const int n = system.size();
+  if (n == 0) throw std::invalid_argument("ride simulation: the system has no degrees of freedom");
+  for (int i = 0; i < n; ++i)
+    if (system.mass.row(i).cwiseAbs().maxCoeff() == 0.0)
+      throw std::invalid_argument("ride simulation: degree of freedom '" + system.dofs[i].label +
+                                  "' is massless; the time-domain ride needs inertia on every degree of freedom");
+  const Eigen::LLT<Eigen::MatrixXd> llt(system.mass);
+  if (llt.info() != Eigen::Success) throw NumericalError("ride simulation: the mass matrix is not positive definite");
+  RideStateSpace s;
+  s.n = n;
+  s.mass_inverse = llt.solve(Eigen::MatrixXd::Identity(n, n));
+  const int m = 3 * static_cast<int>(system.track_inputs.size());
+  s.Bd = Eigen::MatrixXd::Zero(n, m);
+  s.Bv = Eigen::MatrixXd::Zero(n, m);
+  for (size_t i = 0; i < system.track_inputs.size(); ++i) {
+    s.Bd.middleCols(3 * i, 3) = system.track_inputs[i].load_per_displacement;
+    s.Bv.middleCols(3 * i, 3) = system.track_inputs[i].load_per_velocity;
+  }
+  const Eigen::MatrixXd MinvBv = s.mass_inverse * s.Bv;
+  s.A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  s.A.topRightCorner(n, n).setIdentity();
+  s.A.bottomLeftCorner(n, n) = -s.mass_inverse * system.stiffness;
+  s.A.bottomRightCorner(n, n) = -s.mass_inverse * system.damping;
+  s.B.resize(2 * n, m);
+  s.B.topRows(n) = MinvBv;
+  s.B.bottomRows(n) = s.mass_inverse * (s.Bd - system.damping * MinvBv);
+  return s;
+}
+
+namespace {
+
+int body_index(const LinearSystem& system, const RideOutput& output) {
+  for (size_t b = 0; b < system.vehicle.bodies.size(); ++b)
+    if (system.vehicle.bodies[b].name == output.body) return static_cast<int>(b);
+  throw std::invalid_argument("ride simulation: output '" + output.name + "' names no body '" + output.body + "'");
+}
+
+int element_index(const LinearSystem& system, const RideOutput& output) {
+  for (size_t e = 0; e < system.vehicle.elements.size(); ++e)
+    if (system.vehicle.elements[e].name == output.element) return static_cast<int>(e);
+  throw std::invalid_argument("ride simulation: output '" + output.name + "' names no element '" + output.element + "'");
+}
+
+// r·q as a row on (s, w, ẇ) for r·q, r·q̇ or r·q̈ (see ride_state_space.hpp):
+//   q̇ = v + M⁻¹Bv w;   q̈ = −M⁻¹K q − M⁻¹C v + M⁻¹(Bd − C M⁻¹Bv) w + M⁻¹Bv ẇ.
+OutputRow motion_row(const LinearSystem& system, const RideStateSpace& model, const Eigen::RowVectorXd& r,
+                     ResponseQuantity quantity) {
+  const int n = model.n;
+  OutputRow row{Eigen::RowVectorXd::Zero(2 * n), Eigen::RowVectorXd::Zero(model.B.cols()),
+                Eigen::RowVectorXd::Zero(model.B.cols())};
+  const Eigen::RowVectorXd rMinv = r * model.mass_inverse;
+  switch (quantity) {
+    case ResponseQuantity::displacement:
+      row.Ls.head(n) = r;
+      break;
+    case ResponseQuantity::velocity:
+      row.Ls.tail(n) = r;
+      row.Lw = rMinv * model.Bv;
+      break;
+    case ResponseQuantity::acceleration:
+      row.Ls.head(n) = -rMinv * system.stiffness;
+      row.Ls.tail(n) = -rMinv * system.damping;
+      row.Lw = rMinv * (model.Bd - system.damping * model.mass_inverse * model.Bv);
+      row.Ld = rMinv * model.Bv;
+      break;
+  }
+  return row;
+}
+
+}  // namespace
+
+std::vector<OutputRow> output_rows(const LinearSystem& system, const RideStateSpace& model,
+                                   const std::vector<RideOutput>& outputs) {
+  std::vector<OutputRow> rows;
+  for (const RideOutput& output : outputs) {
+    if (output.kind == RideOutput::Kind::point) {
+      const Eigen::MatrixXd map = model::point_displacement_map(system, body_index(system, output), output.point);
+      rows.push_back(motion_row(system, model, map.row(static_cast<int>(output.axis)), output.quantity));
+    } else if (output.kind == RideOutput::Kind::element_deflection && output.axis == RideAxis::vertical) {
+      const int e = element_index(system, output);
+      OutputRow row = motion_row(system, model, system.element_vertical_map.row(e), ResponseQuantity::displacement);
+      for (size_t i = 0; i < system.track_inputs.size(); ++i)
+        if (system.track_inputs[i].element == e) row.Lw(3 * static_cast<int>(i) + 2) -= 1.0;  // the track's own
+      rows.push_back(row);
+    } else {
+      throw std::invalid_argument("ride simulation: output '" + output.name + "': " + to_string(output.kind) + " " +
+                                  to_string(output.axis) +
+                                  " is not built in the time domain yet (points, and vertical element deflections)");
+    }
+  }
+  return rows;
+}
+
+}  // namespace railmodal::ride

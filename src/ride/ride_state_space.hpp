@@ -1,0 +1,41 @@
+// The vehicle on moving track as a first-order system without input derivatives, and the
+// ride outputs as rows on it. With the track displacements w (TrackUnderWheels) the loads are
+// Bd·w + Bv·ẇ (LinearSystem::TrackInput); with the state s = (q, v), v = q̇ − M⁻¹Bv·w,
+//   q̇ = v + M⁻¹Bv w,   v̇ = −M⁻¹K q − M⁻¹C v + M⁻¹(Bd − C M⁻¹Bv) w,
+// so ṡ = A s + B w has no ẇ: a piecewise-linear track gives a piecewise-linear input, which
+// the first-order hold integrates exactly (ride_march.hpp). (v is a velocity, so A's blocks
+// are of the vehicle's ω² and ω: the matrix exponential sees a well-scaled matrix, where the
+// momentum M q̇ − Bv w would mix N·s with m and lose digits of the small blocks.)
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "railmodal/linear_system.hpp"
+#include "railmodal/ride.hpp"
+
+namespace railmodal::ride {
+
+struct RideStateSpace {
+  int n = 0;                // degrees of freedom; the state has 2n
+  Eigen::MatrixXd A, B;     // 2n × 2n, 2n × 3·inputs
+  Eigen::MatrixXd mass_inverse, Bd, Bv;  // M⁻¹ and the inputs' loads, n × 3·inputs
+};
+
+/// Throws std::invalid_argument for series dampers or massless degrees of freedom (the
+/// time-domain ride integrates M⁻¹), and NumericalError for a mass matrix that is not
+/// positive definite.
+RideStateSpace ride_state_space(const LinearSystem& system);
+
+/// An output as y = Ls·s + Lw·w + Ld·ẇ.
+struct OutputRow {
+  Eigen::RowVectorXd Ls, Lw, Ld;
+};
+
+/// The rows of `outputs`. Throws std::invalid_argument for an output naming no body or
+/// element of the system, and for the kinds the time domain does not build yet (element
+/// forces, wheel–rail forces, deflections other than vertical).
+std::vector<OutputRow> output_rows(const LinearSystem& system, const RideStateSpace& model,
+                                   const std::vector<RideOutput>& outputs);
+
+}  // namespace railmodal::ride

@@ -1,0 +1,111 @@
+// Digital comfort weightings by the bilinear transform: derivation, choice of prewarping and
+// the measured error against the analog definitions in docs/ride.md, "Ride indices in time".
+#include "ride/time_weighting.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace railmodal::ride {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::vector<double> multiply(const std::vector<double>& p, const std::vector<double>& q) {
+  std::vector<double> out(p.size() + q.size() - 1, 0.0);
+  for (size_t i = 0; i < p.size(); ++i)
+    for (size_t j = 0; j < q.size(); ++j) out[i + j] += p[i] * q[j];
+  return out;
+}
+
+// Σ_k c_k s^k with s = c(1 − z⁻¹)/(1 + z⁻¹), times (1 + z⁻¹)^order: a polynomial in z⁻¹.
+std::vector<double> mapped(const std::vector<double>& coefficients, double c, size_t order) {
+  std::vector<double> out(order + 1, 0.0);
+  for (size_t k = 0; k < coefficients.size(); ++k) {
+    std::vector<double> term{std::pow(c, static_cast<double>(k)) * coefficients[k]};
+    for (size_t i = 0; i < k; ++i) term = multiply(term, {1.0, -1.0});
+    for (size_t i = k; i < order; ++i) term = multiply(term, {1.0, 1.0});
+    for (size_t i = 0; i < term.size(); ++i) out[i] += term[i];
+  }
+  return out;
+}
+
+}  // namespace
+
+DigitalFilter::Section bilinear(const std::vector<double>& numerator, const std::vector<double>& denominator,
+                                double time_step, double prewarp_hz) {
+  const double wp = 2.0 * kPi * prewarp_hz;
+  if (prewarp_hz > 0.0 && !(wp * time_step / 2.0 < kPi / 2.0))
+    throw std::invalid_argument("bilinear transform: the prewarping frequency must be below the Nyquist frequency");
+  const double c = prewarp_hz > 0.0 ? wp / std::tan(wp * time_step / 2.0) : 2.0 / time_step;
+  const size_t order = std::max(numerator.size(), denominator.size()) - 1;
+  DigitalFilter::Section section{mapped(numerator, c, order), mapped(denominator, c, order)};
+  const double a0 = section.a[0];
+  for (double& b : section.b) b /= a0;
+  for (double& a : section.a) a /= a0;
+  return section;
+}
+
+Eigen::VectorXd DigitalFilter::apply(const Eigen::VectorXd& input) const {
+  Eigen::VectorXd signal = input;
+  for (const Section& s : sections_) {
+    const size_t order = s.a.size() - 1;
+    std::vector<double> state(order + 1, 0.0);  // transposed direct form II: state[order] stays 0
+    for (Eigen::Index n = 0; n < signal.size(); ++n) {
+      const double x = signal(n);
+      const double y = s.b[0] * x + state[0];
+      for (size_t k = 0; k < order; ++k) state[k] = s.b[k + 1] * x - s.a[k + 1] * y + state[k + 1];
+      signal(n) = y;
+    }
+  }
+  return signal;
+}
+
+std::complex<double> DigitalFilter::response(double frequency, double time_step) const {
+  const std::complex<double> zinv = std::polar(1.0, -2.0 * kPi * frequency * time_step);
+  std::complex<double> h = 1.0;
+  for (const Section& s : sections_) {
+    std::complex<double> num = 0.0, den = 0.0, power = 1.0;
+    for (size_t k = 0; k < s.a.size(); ++k, power *= zinv) {
+      num += s.b[k] * power;
+      den += s.a[k] * power;
+    }
+    h *= num / den;
+  }
+  return h;
+}
+
+// The four factors of W (comfort_weighting.hpp), each a section prewarped at its own corner,
+// so the band limits, the a–v transition and the step sit at their analog frequencies. The
+// low-pass band limit (f2 = 100 Hz) is prewarped at the lower of f2 and 0.45/Δt, below the
+// Nyquist frequency: at the ride's usual rates its corner is at or above Nyquist, where the
+// analog filter is near 1 over the band that matters, and the mapped section keeps that.
+DigitalFilter digital_weighting(const FrequencyWeighting& w, double time_step) {
+  const double w1 = 2.0 * kPi * w.f1, w2 = 2.0 * kPi * w.f2, w3 = 2.0 * kPi * w.f3, w4 = 2.0 * kPi * w.f4;
+  const double nyquist_margin = 0.45 / time_step;
+  std::vector<DigitalFilter::Section> sections;
+  sections.push_back(bilinear({0.0, 0.0, 1.0}, {w1 * w1, w1 / w.q1, 1.0}, time_step, w.f1));
+  sections.push_back(bilinear({w2 * w2}, {w2 * w2, w2 / w.q2, 1.0}, time_step, std::min(w.f2, nyquist_margin)));
+  sections.push_back(
+      bilinear({w.gain, w.gain / w3}, {1.0, 1.0 / (w.q4 * w4), 1.0 / (w4 * w4)}, time_step, std::min(w.f4, nyquist_margin)));
+  if (w.has_upward_step) {
+    const double w5 = 2.0 * kPi * w.f5, w6 = 2.0 * kPi * w.f6;
+    sections.push_back(bilinear({1.0, 1.0 / (w.q5 * w5), 1.0 / (w5 * w5)}, {1.0, 1.0 / (w.q6 * w6), 1.0 / (w6 * w6)},
+                                time_step, std::min(std::sqrt(w.f5 * w.f6), nyquist_margin)));
+  }
+  return DigitalFilter(std::move(sections));
+}
+
+// B_v(f) = 0.588 |N(jf)/D(jf)| with N(p) = √1.911 p + 0.25 p², D(p) = 1 + 1.563 p + 0.277 p² +
+// 0.0368 p³ (p = s/2π, f in Hz): |N(jf)|² = 1.911 f² + (0.25 f²)² and D(jf) = (1 − 0.277 f²) +
+// j(1.563 f − 0.0368 f³), the magnitude Sperling's formula gives (comfort_weighting.cpp), and D
+// is Hurwitz (all coefficients positive, 0.277·1.563 > 0.0368·1), so the filter is stable.
+// Prewarped at 5 Hz, near the top of B.
+DigitalFilter digital_sperling(SperlingDirection direction, double time_step) {
+  const double gain = 0.588 * (direction == SperlingDirection::vertical ? 1.0 : 1.25);
+  const double p = 1.0 / (2.0 * kPi);  // p = s/(2π)
+  const std::vector<double> numerator{0.0, gain * std::sqrt(1.911) * p, gain * 0.25 * p * p};
+  const std::vector<double> denominator{1.0, 1.563 * p, 0.277 * p * p, 0.0368 * p * p * p};
+  return DigitalFilter({bilinear(numerator, denominator, time_step, std::min(5.0, 0.45 / time_step))});
+}
+
+}  // namespace railmodal::ride

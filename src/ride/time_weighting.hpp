@@ -1,0 +1,41 @@
+// The comfort weightings of comfort_weighting.hpp as digital filters for sampled histories:
+// each analog factor mapped by the bilinear transform, prewarped at the factor's own corner
+// so that the corner lands where the analog one is (docs/ride.md, "Ride indices in time").
+#pragma once
+
+#include <Eigen/Core>
+#include <complex>
+#include <vector>
+
+#include "railmodal/comfort_weighting.hpp"
+
+namespace railmodal::ride {
+
+/// A cascade of sections b(z⁻¹)/a(z⁻¹), a[0] = 1, run in transposed direct form II.
+class DigitalFilter {
+ public:
+  struct Section {
+    std::vector<double> b, a;  // coefficients of z⁰, z⁻¹, …; a[0] = 1
+  };
+  explicit DigitalFilter(std::vector<Section> sections) : sections_(std::move(sections)) {}
+  /// The filtered samples, starting from rest.
+  Eigen::VectorXd apply(const Eigen::VectorXd& input) const;
+  /// H(e^{iωΔt}) at `frequency` Hz for the sample step `time_step` s.
+  std::complex<double> response(double frequency, double time_step) const;
+
+ private:
+  std::vector<Section> sections_;
+};
+
+/// One analog section N(s)/D(s) (coefficients of s⁰, s¹, …, order ≤ 3) mapped by
+/// s = c(1 − z⁻¹)/(1 + z⁻¹), c = ω_p / tan(ω_p Δt/2) (prewarped at ω_p = 2π·prewarp_hz, which
+/// must be below the Nyquist frequency), or c = 2/Δt for prewarp_hz = 0.
+DigitalFilter::Section bilinear(const std::vector<double>& numerator, const std::vector<double>& denominator,
+                                double time_step, double prewarp_hz);
+
+/// W of EN 12299 / ISO 2631 (Wb, Wd) as four sections at step `time_step` s.
+DigitalFilter digital_weighting(const FrequencyWeighting& weighting, double time_step);
+/// Sperling's B(f) (comfort_weighting.hpp) as one third-order section.
+DigitalFilter digital_sperling(SperlingDirection direction, double time_step);
+
+}  // namespace railmodal::ride

@@ -1,0 +1,63 @@
+#include "ride/window_indices.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace railmodal::ride {
+
+Eigen::VectorXd window_rms(const Eigen::VectorXd& values, Eigen::Index samples) {
+  if (samples < 1) throw std::invalid_argument("window_rms: a window holds at least one sample");
+  const Eigen::Index count = values.size() / samples;
+  Eigen::VectorXd out(count);
+  for (Eigen::Index w = 0; w < count; ++w)
+    out(w) = std::sqrt(values.segment(w * samples, samples).squaredNorm() / static_cast<double>(samples));
+  return out;
+}
+
+double percentile95(const Eigen::VectorXd& values) {
+  if (values.size() == 0) throw std::invalid_argument("percentile95: no values");
+  std::vector<double> sorted(values.data(), values.data() + values.size());
+  std::sort(sorted.begin(), sorted.end());
+  const double rank = 0.95 * static_cast<double>(sorted.size() - 1);
+  const auto below = static_cast<size_t>(std::floor(rank));
+  if (below + 1 >= sorted.size()) return sorted.back();
+  return sorted[below] + (rank - static_cast<double>(below)) * (sorted[below + 1] - sorted[below]);
+}
+
+double zone_p95(const Eigen::VectorXd& window_values, Eigen::Index zone, std::string* note) {
+  const Eigen::Index zones = window_values.size() / zone;
+  if (zones == 0) {
+    if (note)
+      *note = "P95 over the " + std::to_string(window_values.size()) + " complete windows of the run, fewer than the " +
+              std::to_string(zone) + " of an EN 12299 zone";
+    return percentile95(window_values);
+  }
+  double largest = 0.0;
+  for (Eigen::Index z = 0; z < zones; ++z)
+    largest = std::max(largest, percentile95(window_values.segment(z * zone, zone)));
+  if (note)
+    *note = "P95: the largest of " + std::to_string(zones) + " complete zone(s) of " + std::to_string(zone) +
+            " windows";
+  return largest;
+}
+
+Eigen::VectorXd running_rms(const Eigen::VectorXd& values, Eigen::Index samples) {
+  Eigen::VectorXd out(values.size());
+  // A running sum of squares, recomputed every `samples` steps so its rounding cannot build up.
+  double sum = 0.0;
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    const Eigen::Index first = std::max<Eigen::Index>(0, i + 1 - samples);
+    if (i % samples == 0) {
+      sum = values.segment(first, i + 1 - first).squaredNorm();
+    } else {
+      sum += values(i) * values(i);
+      if (i >= samples) sum -= values(i - samples) * values(i - samples);
+    }
+    out(i) = std::sqrt(std::max(0.0, sum) / static_cast<double>(i + 1 - first));
+  }
+  return out;
+}
+
+}  // namespace railmodal::ride
