@@ -33,6 +33,7 @@ const std::map<std::string, UnitDefinition>& unit_table() {
       {"ms", {1.0e-3, dim(0, 0, 1)}},
       {"min", {60.0, dim(0, 0, 1)}},
       {"h", {3600.0, dim(0, 0, 1)}},
+      {"Hz", {1.0, dim(0, 0, -1)}},  // cycles per second: a frequency, not an angular speed
       {"kg", {1.0, dim(1, 0, 0)}},
       {"t", {1000.0, dim(1, 0, 0)}},
       {"N", {1.0, dim(1, 1, -2)}},
@@ -147,6 +148,7 @@ Dimension dimension_of(Quantity q) {
     case Quantity::angular_speed: return dim(0, 0, -1, 1);
     case Quantity::moment: return dim(1, 2, -2);
     case Quantity::force_area: return dim(1, 3, -2);
+    case Quantity::frequency: return dim(0, 0, -1);
   }
   return dim(0, 0, 0);
 }
@@ -170,6 +172,7 @@ const char* name_of(Quantity q) {
     case Quantity::angular_speed: return "an angular speed";
     case Quantity::moment: return "a moment (force·length)";
     case Quantity::force_area: return "a force·length²";
+    case Quantity::frequency: return "a frequency";
   }
   return "a quantity";
 }
@@ -193,6 +196,7 @@ const char* example_of(Quantity q) {
     case Quantity::angular_speed: return "\"0.1 rad/s\" or 0.1 (rad/s)";
     case Quantity::moment: return "\"2.1 kN*m\" or 2100 (N·m)";
     case Quantity::force_area: return "\"120 N*m^2\" or 120 (N·m²)";
+    case Quantity::frequency: return "\"80 Hz\" or 80 (Hz)";
   }
   return "";
 }
@@ -210,6 +214,7 @@ std::string describe(const Dimension& d) {
       {dim(0, 1, 0, 0), "length"},       {dim(-1, 1, 0), "length/mass"},
       {dim(1, 1, 0), "mass·length"},     {dim(1, 2, -2), "force·length (moment)"},
       {dim(1, 2, -2, -1), "moment/angle"}, {dim(1, 3, -2), "force·length²"},
+      {dim(0, 0, -1), "frequency"},
   };
   for (const auto& [dimension, name] : names)
     if (dimension == d) return name;

@@ -19,7 +19,8 @@ enum class Quantity {
   length, mass, force, stiffness, flexibility, inertia, angle, acceleration,
   damping, modulus, speed, rotational_stiffness, dimensionless, time, angular_speed,
   moment,       ///< force·length, N·m (a creep coefficient f23)
-  force_area    ///< force·length², N·m² (the spin creep coefficient f33)
+  force_area,   ///< force·length², N·m² (the spin creep coefficient f33)
+  frequency     ///< cycles per time, Hz (the ride's frequency grid)
 };
 Dimension dimension_of(Quantity quantity);
 const char* name_of(Quantity quantity);     ///< "stiffness (force/length)"
