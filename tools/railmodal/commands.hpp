@@ -21,6 +21,8 @@ std::function<int()> add_fft_check_command(CLI::App& app);
 std::function<int()> add_compare_command(CLI::App& app);
 /// Registers `stability`.
 std::function<int()> add_stability_command(CLI::App& app);
+/// Registers `ride`.
+std::function<int()> add_ride_command(CLI::App& app);
 
 /// Notes on stderr that `old_spelling` still works but is deprecated for `new_spelling`.
 void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling);
