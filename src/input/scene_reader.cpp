@@ -298,10 +298,6 @@ bool is_ride_scene(TableReader& root) {
 // scene.irregularity (its measured geometry file into *geometry).
 void read_sources(TableReader& root, Scene& scene, std::string* geometry) {
   for (auto& t : root.tables("source")) {
-    const size_t index = scene.sources.size() + (scene.irregularity ? 1 : 0);
-    // The keys ExcitationSource::misfit (and check_scene_fits) may blame, once the vehicle is known.
-    for (const char* key : {"kind", "body", "phases"})
-      scene.name_places["source[" + std::to_string(index) + "]." + key] = t.place(key);
     if (t.has("kind") && t.raw("kind").is_string() && t.raw("kind").as_string().str == "irregularity") {
       (void)t.string("kind");
       if (scene.irregularity)
@@ -313,6 +309,10 @@ void read_sources(TableReader& root, Scene& scene, std::string* geometry) {
       scene.name_places["irregularity"] = t.place("kind");
       scene.name_places["irregularity.geometry"] = t.place("geometry");
     } else {
+      // The keys ExcitationSource::misfit (and check_scene_fits) may blame, once the vehicle is
+      // known, by the source's index in scene.sources (the irregularity source is not there).
+      for (const char* key : {"kind", "body", "phases"})
+        scene.name_places["source[" + std::to_string(scene.sources.size()) + "]." + key] = t.place(key);
       scene.sources.push_back(source(t));
     }
     t.finish();

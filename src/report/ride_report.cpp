@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
@@ -51,7 +52,16 @@ std::string psd_key_suffix(const RideOutput& o) {
 }
 
 std::string kmh(double speed) { return fixed(speed * kKmh, 1) + " km/h"; }
-std::string value_text(double v) { return significant(v, 4); }
+// Four significant digits with their trailing zeros ("0.1500", not "0.15"), so that a column
+// reads at one precision; from 1000 on, whole units.
+std::string value_text(double v) {
+  if (std::abs(v) >= 1000.0) return fixed(v, 0);
+  char text[32];
+  std::snprintf(text, sizeof text, "%#.4g", v);
+  std::string t = text;
+  if (!t.empty() && t.back() == '.') t.pop_back();
+  return t;
+}
 std::string optional_text(const std::optional<double>& v) { return v ? value_text(*v) : "–"; }
 
 std::string point_text(const RideComfortAtPoint& c) {
@@ -59,18 +69,22 @@ std::string point_text(const RideComfortAtPoint& c) {
          significant(c.point.z(), 4) + ") m";
 }
 
+// Modes are numbered from 1 in every report (the table, the marks on the spectra).
+std::string mode_number(size_t index) { return std::to_string(index + 1); }
+
 std::string mode_name(const RideResult& r, int mode) {
   return mode >= 0 && static_cast<size_t>(mode) < r.modes.size()
              ? r.modes[mode].name + " (" + fixed(r.modes[mode].frequency_hz, 2) + " Hz)"
-             : "mode " + std::to_string(mode);
+             : "mode " + mode_number(static_cast<size_t>(mode));
 }
 
-// "body bounce (1.02 Hz) 71 %, body pitch (1.31 Hz) 18 %": the largest shares of the variance.
+// "body bounce (1.02 Hz) 71 %; body pitch (1.31 Hz) 18 %": the largest shares of the variance
+// (semicolons: mode names have commas).
 std::string dominant_modes(const RideResult& r, const RideOutputAtSpeed& o) {
   std::string text;
   for (size_t k = 0; k < o.modes.size() && k < kDominantModes; ++k) {
     if (k > 0 && o.modes[k].share < kSmallestShownShare) break;
-    text += (text.empty() ? "" : ", ") + mode_name(r, o.modes[k].mode) + " " + fixed(100.0 * o.modes[k].share, 0) + " %";
+    text += (text.empty() ? "" : "; ") + mode_name(r, o.modes[k].mode) + " " + fixed(100.0 * o.modes[k].share, 0) + " %";
   }
   return text.empty() ? "–" : text;
 }
@@ -115,7 +129,7 @@ Table modes_table(const RideResult& r) {
   t.headers = {"mode", "name", "frequency [Hz]"};
   t.numeric = {true, false, true};
   for (size_t k = 0; k < r.modes.size(); ++k)
-    t.rows.push_back({std::to_string(k), r.modes[k].name, fixed(r.modes[k].frequency_hz, 3)});
+    t.rows.push_back({mode_number(k), r.modes[k].name, fixed(r.modes[k].frequency_hz, 3)});
   return t;
 }
 
@@ -208,7 +222,7 @@ std::vector<report::ReferenceLine> mode_lines(const RideResult& r) {
   for (size_t k = 0; k < r.modes.size(); ++k)
     if (r.frequencies.size() && r.modes[k].frequency_hz >= r.frequencies[0] &&
         r.modes[k].frequency_hz <= r.frequencies[r.frequencies.size() - 1])
-      lines.push_back({std::to_string(k), r.modes[k].frequency_hz, true, r.modes[k].name});
+      lines.push_back({mode_number(k), r.modes[k].frequency_hz, true, r.modes[k].name});
   return lines;
 }
 
@@ -226,13 +240,23 @@ report::Chart input_chart(const RideResult& r, size_t speed) {
   return c;
 }
 
+// The unit of a PSD of values in `unit`: "m²/Hz", "(m/s²)²/Hz", "N²/Hz".
+std::string psd_unit(const std::string& unit) {
+  return (unit.find('/') == std::string::npos ? unit + "²" : "(" + unit + ")²") + "/Hz";
+}
+
+// What outputs in `unit` are, for a chart's title.
+std::string quantity_word(const std::string& unit) {
+  return unit == "m/s²" ? "Acceleration" : unit == "m/s" ? "Velocity" : unit == "N" ? "Force" : "Displacement";
+}
+
 // The output PSDs of the outputs of one unit (accelerations, displacements, forces) at one speed.
 report::Chart output_chart(const RideResult& r, size_t speed, const std::string& unit, int id) {
   report::Chart c;
   c.id = "output-psd-" + std::to_string(id);
-  c.title = "Output spectra at " + kmh(r.speeds[speed].speed);
+  c.title = quantity_word(unit) + " spectra at " + kmh(r.speeds[speed].speed);
   c.x_label = "frequency (Hz)";
-  c.y_label = "PSD ((" + unit + ")²/Hz)";
+  c.y_label = "PSD (" + psd_unit(unit) + ")";
   c.log_x = c.log_y = true;
   const auto f = to_vector(r.frequencies);
   for (size_t i = 0; i < r.outputs.size(); ++i) {
@@ -245,10 +269,11 @@ report::Chart output_chart(const RideResult& r, size_t speed, const std::string&
 }
 
 // An index against speed, one series per output that has it.
-report::Chart index_chart(const RideResult& r, const std::string& id, const std::string& y_label,
-                          std::optional<double> (*index)(const RideOutputAtSpeed&)) {
+report::Chart index_chart(const RideResult& r, const std::string& id, const std::string& title,
+                          const std::string& y_label, std::optional<double> (*index)(const RideOutputAtSpeed&)) {
   report::Chart c;
   c.id = id;
+  c.title = title;
   c.x_label = "speed (km/h)";
   c.y_label = y_label;
   for (size_t i = 0; i < r.outputs.size(); ++i) {
@@ -272,6 +297,7 @@ std::optional<double> wz_of(const RideOutputAtSpeed& o) { return o.sperling_wz; 
 report::Chart nmv_chart(const RideResult& r) {
   report::Chart c;
   c.id = "nmv";
+  c.title = "EN 12299 mean comfort N_MV per floor point, from the P95 estimates";
   c.x_label = "speed (km/h)";
   c.y_label = "N_MV (estimate)";
   if (r.speeds.empty()) return c;
@@ -289,7 +315,7 @@ report::Chart nmv_chart(const RideResult& r) {
 report::Chart history_chart(const RideSimulationResult& s, size_t i, double window) {
   report::Chart c;
   c.id = "history-" + std::to_string(i);
-  c.title = s.outputs[i].name;
+  c.title = "Weighted acceleration: " + s.outputs[i].name;
   c.x_label = "time (s)";
   c.y_label = "weighted acceleration (m/s²)";
   const RideHistory& h = s.histories[i];
@@ -306,7 +332,7 @@ report::Chart history_chart(const RideSimulationResult& s, size_t i, double wind
     windows.x.push_back(t0 + (w + 1) * window), windows.y.push_back(h.window_rms[w]);
   }
   c.series.push_back(windows);
-  if (h.p95) c.lines.push_back({"P95", *h.p95, false, "the 95th percentile of the window RMS values"});
+  if (h.p95) c.lines.push_back({"P95", *h.p95, false, "95th percentile of the window RMS values"});
   return c;
 }
 
@@ -367,8 +393,9 @@ void write_html(std::ostream& out, const Page& p) {
   for (const std::string& n : r.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
   if (!r.speeds.empty()) {
     out << "<h2>Indices against speed</h2>\n";
-    out << report::svg_chart(index_chart(r, "weighted-rms", "weighted RMS (m/s²)", weighted_of));
-    out << report::svg_chart(index_chart(r, "wz", "Sperling Wz", wz_of));
+    out << report::svg_chart(index_chart(r, "weighted-rms", "EN 12299 weighted RMS acceleration (Wb vertical, Wd lateral)",
+                                         "weighted RMS (m/s²)", weighted_of));
+    out << report::svg_chart(index_chart(r, "wz", "Sperling's ride index Wz", "Wz", wz_of));
     if (!r.speeds.front().comfort.empty()) out << report::svg_chart(nmv_chart(r));
     // The spectra at the highest speed: the one a ride is signed off at.
     const size_t top = r.speeds.size() - 1;

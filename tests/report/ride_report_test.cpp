@@ -43,7 +43,7 @@ RideResult hand_built() {
     a.psd = Eigen::VectorXd::Constant(5, 1e-3);
     RideOutputAtSpeed f;
     f.unbounded = speed > 30;
-    f.rms = f.unbounded ? 0.0 : 1234.5;
+    f.rms = f.unbounded ? 0.0 : 1234.4;
     f.psd = Eigen::VectorXd::Constant(5, 100.0);
     at.outputs = {a, f};
     RideComfortAtPoint c;
@@ -73,7 +73,7 @@ TEST(RideReport, TableSaysEveryIndexAndTheUnbounded) {
   EXPECT_TRUE(has(t, "At 100.0 km/h")) << t;
   EXPECT_TRUE(has(t, "At 200.0 km/h")) << t;
   EXPECT_TRUE(has(t, "P95 estimate [m/s²]")) << t;
-  EXPECT_TRUE(has(t, "body bounce (1.10 Hz) 80 %, body pitch (1.40 Hz) 15 %")) << t;
+  EXPECT_TRUE(has(t, "body bounce (1.10 Hz) 80 %; body pitch (1.40 Hz) 15 %")) << t;
   EXPECT_TRUE(has(t, "unbounded")) << t;
   EXPECT_TRUE(has(t, "1234")) << t;  // the force, bounded at 100 km/h
   EXPECT_TRUE(has(t, "longitudinal, lateral (taken as 0)")) << t;
@@ -112,7 +112,7 @@ TEST(RideReport, JsonKeysCarryUnitsAndNullsForWhatIsNot) {
   EXPECT_NEAR(first["outputs"][0]["rms_m_s2"].get<double>(), 0.25 * 100 / 3.6 / 50, 1e-12);
   EXPECT_TRUE(first["outputs"][0].contains("p95_estimate_m_s2"));
   EXPECT_TRUE(first["outputs"][1]["weighted_rms_m_s2"].is_null());  // a force has no comfort index
-  EXPECT_NEAR(first["outputs"][1]["rms_n"].get<double>(), 1234.5, 1e-9);
+  EXPECT_NEAR(first["outputs"][1]["rms_n"].get<double>(), 1234.4, 1e-9);
   EXPECT_EQ(first["outputs"][0]["psd_m2_s4_per_hz"].size(), 5u);
   EXPECT_TRUE(j["speeds"][1]["outputs"][1]["unbounded"].get<bool>());
   EXPECT_FALSE(j["speeds"][1]["outputs"][1].contains("rms_n"));
@@ -134,6 +134,7 @@ TEST(RideReport, MarkdownAndHtmlHaveTheTablesAndTheCharts) {
   EXPECT_EQ(charts, 6u);
   EXPECT_TRUE(has(html, "PSD (m²/Hz)")) << "input chart";
   EXPECT_TRUE(has(html, "PSD ((m/s²)²/Hz)")) << "output chart";
+  EXPECT_TRUE(has(html, "PSD (N²/Hz)")) << "force chart";
   EXPECT_TRUE(has(html, "body bounce")) << "natural frequencies marked";
   EXPECT_FALSE(has(html, "nan")) << html;
 }
