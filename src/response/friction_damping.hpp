@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <vector>
 
 #include "railmodal/linear_system.hpp"
 
@@ -27,5 +28,16 @@ double leaf_hold_stretch(const LinearSystem& system, std::size_t element);
 /// cluster driven out of phase): Σ R·|δ(ψ)| with δ(ψ) complex, each stage sliding over the
 /// amplitude |δ| of its own stretch. Equal to the real version for ψ = φ·e^{iθ}.
 double modal_friction_work(const LinearSystem& system, const Eigen::VectorXcd& shape);
+
+/// Σ R·s over the friction stages of element `element` (R = φ × load, s the stage's share of the
+/// element's stretch): a Coulomb force level seen across the element. 0 without friction.
+/// The random ride's statistical linearisation takes its friction from here
+/// (src/ride/ride_friction.cpp), so both linearisations share one friction model.
+double friction_force_share(const LinearSystem& system, std::size_t element);
+
+/// The system with a viscous damper damping[k] (N·s/m; 0, or beyond the vector: none) across
+/// each element k's vertical stretch: C gains c·rowᵀrow (row = element_vertical_map.row(k)), and a
+/// track element's input the damper's load per track velocity.
+LinearSystem with_element_vertical_dampers(const LinearSystem& system, const std::vector<double>& damping);
 
 }  // namespace railmodal::response

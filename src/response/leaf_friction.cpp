@@ -112,10 +112,22 @@ double response::leaf_hold_stretch(const LinearSystem& system, std::size_t eleme
 LinearSystem with_equivalent_friction_damping(const LinearSystem& system, double omega,
                                               const std::vector<double>& stretch_per_element) {
   if (!(omega > 0.0)) throw std::invalid_argument("equivalent friction damping needs a positive frequency");
+  std::vector<double> damping(system.vehicle.elements.size(), 0.0);
+  for (size_t k = 0; k < damping.size() && k < stretch_per_element.size(); ++k)
+    damping[k] = response::equivalent_friction_damping(system, k, omega, stretch_per_element[k]);
+  return response::with_element_vertical_dampers(system, damping);
+}
+
+double response::friction_force_share(const LinearSystem& system, std::size_t element) {
+  double sum = 0.0;
+  for_each_friction_stage_of(system, element, [&](double friction, double share, double) { sum += friction * share; });
+  return sum;
+}
+
+LinearSystem response::with_element_vertical_dampers(const LinearSystem& system, const std::vector<double>& damping) {
   LinearSystem out = system;
-  const Vehicle& v = system.vehicle;
-  for (size_t k = 0; k < v.elements.size() && k < stretch_per_element.size(); ++k) {
-    const double c = response::equivalent_friction_damping(system, k, omega, stretch_per_element[k]);
+  for (size_t k = 0; k < system.vehicle.elements.size() && k < damping.size(); ++k) {
+    const double c = damping[k];
     if (c == 0.0) continue;
     const Eigen::RowVectorXd row = system.element_vertical_map.row(k);
     out.damping += c * row.transpose() * row;

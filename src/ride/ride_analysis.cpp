@@ -1,21 +1,389 @@
-// Placeholder of the frequency-domain ride (helper "ride-core" replaces this file).
-#include <stdexcept>
+// The frequency-domain ride (ride.hpp, solve_ride): modes, grid, receptances once, then each
+// speed by its delays and densities, with leaf friction linearised statistically per speed.
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <thread>
 
+#include "railmodal/modal.hpp"
+#include "railmodal/response.hpp"
 #include "railmodal/ride.hpp"
+#include "require_valid.hpp"
+#include "response/friction_damping.hpp"
+#include "response/modal_checks.hpp"
+#include "ride/ride_friction.hpp"
+#include "ride/ride_grid.hpp"
+#include "ride/ride_indices.hpp"
+#include "ride/ride_speed.hpp"
+#include "ride/ride_transfer.hpp"
+#include "shortest_text.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
-const char* to_string(RideAxis) { throw std::logic_error("ride: not built yet"); }
-std::optional<RideAxis> ride_axis_from_string(const std::string&) { throw std::logic_error("ride: not built yet"); }
-const char* to_string(RideOutput::Kind) { throw std::logic_error("ride: not built yet"); }
-std::optional<RideOutput::Kind> ride_output_kind_from_string(const std::string&) {
-  throw std::logic_error("ride: not built yet");
+namespace {
+
+constexpr double kTwoPi = 6.28318530717958647692;
+using Complex = std::complex<double>;
+
+// What every speed shares: the request's components and modes, the grid and the weightings.
+struct Problem {
+  const LinearSystem* system = nullptr;
+  const std::vector<RideOutput>* outputs = nullptr;
+  const RideOptions* options = nullptr;
+  std::vector<ride::Component> components;
+  ModalResult modes;
+  std::vector<const Mode*> oscillatory;  // RideResult::modes, in order
+  ride::ModalBasis contributions;        // the oscillatory modes the outputs are split over
+  Eigen::MatrixXd truncation;            // n × N when options.modes > 0
+  Eigen::VectorXd grid;
+  Eigen::VectorXd wb2, wd2, sperling_v2, sperling_l2;  // |W|² on the grid
+  std::vector<ride::FrictionElement> friction;
+  // Without friction the system is the same at every speed: its output maps and receptances
+  // are computed once and every speed reuses them.
+  std::vector<ride::OutputMap> maps;
+  ride::Receptances shared;
+};
+
+// A mode no damper acts on (the series dampers included).
+bool undamped(const LinearSystem& system, const Mode& mode) {
+  if (!response::undamped(system, mode)) return false;
+  for (const SeriesDamperRow& s : system.series_dampers)
+    if (response::moves(s.stretch, mode.shape)) return false;
+  return true;
 }
-std::vector<RideOutput> default_ride_outputs(const LinearSystem&) { throw std::logic_error("ride: not built yet"); }
-bool RideOptions::is_valid(std::string*) const { throw std::logic_error("ride: not built yet"); }
-RideResult solve_ride(const LinearSystem&, const TrackIrregularitySpectra&, const std::vector<RideOutput>&,
-                      const RideOptions&) {
-  throw std::logic_error("ride: not built yet");
+
+double modal_damping_ratio(const LinearSystem& system, const Mode& mode) {
+  return mode.shape.dot(system.damping * mode.shape) / (2.0 * mode.omega_rad_s);
+}
+
+// The outputs an undamped mode in the band drives at this speed (an answer, not a number):
+// its modal force from component c, Σ_i φᵀQ_{c,i}(ω_j)·e^{−iω_jτ_i}, beyond round-off of the
+// inputs' loads (response::kLoadRoundOff), with G_c(f_j) > 0, and the output moving with it.
+std::vector<bool> unbounded_outputs(const Problem& p, const LinearSystem& system,
+                                    const std::vector<ride::OutputMap>& maps, double speed,
+                                    std::vector<std::string>* driven) {
+  std::vector<bool> out(maps.size(), false);
+  double front = system.track_inputs.front().point.x();
+  for (const TrackInput& t : system.track_inputs) front = std::max(front, t.point.x());
+  for (const Mode* mode : p.oscillatory) {
+    if (mode->frequency_hz < p.grid(0) || mode->frequency_hz > p.grid(p.grid.size() - 1)) continue;
+    if (!undamped(system, *mode)) continue;
+    const double omega = mode->omega_rad_s;
+    bool drives = false;
+    for (const ride::Component& c : p.components) {
+      if (!(c.spectrum.temporal_density(mode->frequency_hz, speed) > 0.0)) continue;
+      Complex force = 0.0;
+      double load_norm2 = 0.0;
+      for (size_t i = 0; i < system.track_inputs.size(); ++i) {
+        const TrackInput& t = system.track_inputs[i];
+        const Eigen::VectorXcd q = (t.load_per_displacement.cast<Complex>() +
+                                    Complex(0.0, omega) * t.load_per_velocity.cast<Complex>()) *
+                                   c.displacement[i].cast<Complex>();
+        load_norm2 += q.squaredNorm();
+        force += mode->shape.cast<Complex>().dot(q) * std::exp(Complex(0.0, -omega * (front - t.point.x()) / speed));
+      }
+      drives = drives || std::abs(force) > response::kLoadRoundOff * mode->shape.norm() * std::sqrt(load_norm2);
+    }
+    if (!drives) continue;
+    driven->push_back(mode->name + " (" + shortest_text(mode->frequency_hz, 4) + " Hz)");
+    for (size_t o = 0; o < maps.size(); ++o) {
+      const Eigen::RowVectorXcd row = maps[o].row(omega);
+      const double scale = mode->shape.cwiseAbs().maxCoeff() * row.cwiseAbs().sum();
+      if (std::abs((row * mode->shape.cast<Complex>())(0)) > 1e-9 * scale) out[o] = true;
+    }
+  }
+  return out;
+}
+
+ride::Receptances receptances_of(const Problem& p, const LinearSystem& system, const std::vector<ride::OutputMap>& maps) {
+  return ride::receptances(system, p.components, maps, p.grid, p.truncation.size() ? &p.truncation : nullptr,
+                           p.contributions.shapes.cols() ? &p.contributions : nullptr);
+}
+
+struct SpeedOutcome {
+  RideAtSpeed at;
+  std::vector<std::string> notes;
+  double grid_error = 0.0;
+  ride::FrictionLinearisation friction;
+};
+
+RideOutputAtSpeed output_at_speed(const Problem& p, const RideOutput& o, const ride::ComponentPower& power,
+                                  const Eigen::VectorXd& psd, const std::vector<double>& modal,
+                                  const std::vector<ride::BandWeights>& bands, double* grid_error) {
+  RideOutputAtSpeed r;
+  const double variance = ride::integral(power, bands, Eigen::VectorXd());
+  r.rms = std::sqrt(std::max(variance, 0.0));
+  if (variance > 0.0) {
+    const double coarse = std::sqrt(std::max(ride::integral(power, bands, Eigen::VectorXd(), true), 0.0));
+    *grid_error = std::max(*grid_error, std::abs(coarse - r.rms) / r.rms);
+  }
+  if (o.kind == RideOutput::Kind::point && o.quantity == ResponseQuantity::acceleration) {
+    const Eigen::VectorXd& w = o.axis == RideAxis::vertical ? p.wb2 : p.wd2;
+    const double weighted = ride::integral(power, bands, w);
+    r.weighted_rms = std::sqrt(std::max(weighted, 0.0));
+    r.p95_estimate = ride::rms_quantile(weighted, ride::integral_of_square(power, bands, p.grid, w),
+                                        p.options->percentile_window, 0.95);
+    if (o.axis != RideAxis::longitudinal)
+      r.sperling_wz = sperling_wz_from_weighted_rms(std::sqrt(std::max(
+          ride::integral(power, bands, o.axis == RideAxis::vertical ? p.sperling_v2 : p.sperling_l2), 0.0)));
+  }
+  double modal_sum = 0.0;
+  for (size_t j = 0; j < modal.size(); ++j) {
+    if (!(modal[j] > 0.0)) continue;
+    r.modes.push_back({static_cast<int>(j), modal[j], variance > 0.0 ? modal[j] / variance : 0.0});
+    modal_sum += modal[j];
+  }
+  std::sort(r.modes.begin(), r.modes.end(),
+            [](const ModalContribution& a, const ModalContribution& b) { return a.variance > b.variance; });
+  r.cross_term_variance = variance - modal_sum;
+  if (p.options->keep_spectra) r.psd = psd;
+  return r;
+}
+
+// N_MV at each distinct floor point with acceleration outputs (en12299_nmv of the P95s).
+std::vector<RideComfortAtPoint> comfort(const std::vector<RideOutput>& outputs,
+                                        const std::vector<RideOutputAtSpeed>& at, std::vector<std::string>* notes) {
+  std::vector<RideComfortAtPoint> out;
+  std::vector<bool> done(outputs.size(), false);
+  for (size_t o = 0; o < outputs.size(); ++o) {
+    const RideOutput& first = outputs[o];
+    if (done[o] || first.kind != RideOutput::Kind::point || first.quantity != ResponseQuantity::acceleration) continue;
+    std::map<RideAxis, std::optional<double>> p95;
+    bool unbounded = false;
+    for (size_t q = o; q < outputs.size(); ++q) {
+      const RideOutput& other = outputs[q];
+      if (other.kind != RideOutput::Kind::point || other.quantity != ResponseQuantity::acceleration ||
+          other.body != first.body || (other.point - first.point).norm() > 1e-9)
+        continue;
+      done[q] = true;
+      unbounded = unbounded || at[q].unbounded;
+      if (!p95.count(other.axis)) p95[other.axis] = at[q].p95_estimate;
+    }
+    if (unbounded) {
+      notes->push_back("no N_MV at '" + first.name + "': an axis there is unbounded");
+      continue;
+    }
+    RideComfortAtPoint c;
+    c.body = first.body;
+    c.point = first.point;
+    double axis_p95[3] = {0.0, 0.0, 0.0};
+    for (RideAxis axis : {RideAxis::longitudinal, RideAxis::lateral, RideAxis::vertical}) {
+      if (p95.count(axis) && p95[axis]) axis_p95[static_cast<int>(axis)] = *p95[axis];
+      else c.missing_axes.push_back(axis);
+    }
+    c.nmv_estimate = en12299_nmv(axis_p95[0], axis_p95[1], axis_p95[2]);
+    out.push_back(c);
+  }
+  return out;
+}
+
+SpeedOutcome solve_speed(const Problem& p, double speed) {
+  SpeedOutcome s;
+  const LinearSystem& base = *p.system;
+  const std::vector<ride::BandWeights> bands = ride::speed_bands(p.components, p.grid, speed);
+  std::vector<double> friction_damping;
+  if (!p.friction.empty()) {
+    // σ_v of every friction element for given dampers: its stretch rate as an extra output.
+    auto velocity_rms = [&](const std::vector<double>& damping) {
+      const LinearSystem system = response::with_element_vertical_dampers(base, damping);
+      std::vector<ride::OutputMap> maps;
+      for (const ride::FrictionElement& f : p.friction) maps.push_back(ride::stretch_rate_map(system, f.element));
+      const ride::Receptances r = ride::receptances(system, p.components, maps, p.grid,
+                                                    p.truncation.size() ? &p.truncation : nullptr, nullptr);
+      const ride::SpeedSpectra sp = ride::speed_spectra(system, r, p.components, p.grid, speed, bands);
+      std::vector<double> sigma;
+      for (const ride::ComponentPower& power : sp.outputs)
+        sigma.push_back(std::sqrt(std::max(ride::integral(power, bands, Eigen::VectorXd()), 0.0)));
+      return sigma;
+    };
+    s.friction = ride::linearise_friction(base, p.friction, p.options->friction_tolerance,
+                                          p.options->friction_iterations, velocity_rms);
+    friction_damping = s.friction.damping;
+  }
+  const LinearSystem system =
+      friction_damping.empty() ? base : response::with_element_vertical_dampers(base, friction_damping);
+  const std::vector<ride::OutputMap> maps =
+      friction_damping.empty() ? p.maps : ride::output_maps(system, *p.outputs, friction_damping);
+  const ride::Receptances own = friction_damping.empty() ? ride::Receptances{} : receptances_of(p, system, maps);
+  const ride::SpeedSpectra sp =
+      ride::speed_spectra(system, friction_damping.empty() ? p.shared : own, p.components, p.grid, speed, bands);
+  std::vector<std::string> driven;
+  const std::vector<bool> unbounded = unbounded_outputs(p, system, maps, speed, &driven);
+  s.at.speed = speed;
+  for (size_t o = 0; o < maps.size(); ++o) {
+    if (unbounded[o]) {
+      RideOutputAtSpeed r;
+      r.unbounded = true;
+      s.at.outputs.push_back(r);
+      continue;
+    }
+    s.at.outputs.push_back(output_at_speed(p, (*p.outputs)[o], sp.outputs[o], sp.psd[o], sp.modal_variance[o], bands,
+                                           &s.grid_error));
+  }
+  for (const std::string& d : driven)
+    s.notes.push_back("at " + shortest_text(speed * 3.6, 6) + " km/h the track excites the undamped mode " + d +
+                      ": the outputs it moves have an unbounded RMS");
+  s.at.comfort = comfort(*p.outputs, s.at.outputs, &s.notes);
+  if (p.options->keep_spectra) s.at.input_psd = sp.input_psd;
+  return s;
+}
+
+Problem prepare(const LinearSystem& system, const TrackIrregularitySpectra& track,
+                const std::vector<RideOutput>& outputs, const RideOptions& options, RideResult* result) {
+  Problem p;
+  p.system = &system;
+  p.outputs = &outputs;
+  p.options = &options;
+  p.components = ride::track_components(system, track, options.contact_half_spacing);
+  p.maps = ride::output_maps(system, outputs, {});  // every output names something of the system, or throws
+  ModalOptions modal;
+  modal.solver = ModalSolver::dense;
+  p.modes = solve_modes(system, modal);
+  for (const Mode& m : p.modes.modes)
+    if (m.kind == ModeKind::oscillatory) {
+      p.oscillatory.push_back(&m);
+      result->modes.push_back({m.name, m.frequency_hz});
+    }
+  const int n = system.size();
+  const int truncated = std::min<int>(options.modes, static_cast<int>(p.modes.modes.size()));
+  if (options.modes > 0) {
+    p.truncation.resize(n, truncated);
+    for (int j = 0; j < truncated; ++j) p.truncation.col(j) = p.modes.modes[j].shape;
+  }
+  // The modal terms: every oscillatory mode of the basis H is computed in.
+  std::vector<const Mode*> split;
+  for (const Mode* m : p.oscillatory)
+    if (options.modes == 0 || m->index <= truncated) split.push_back(m);
+  Eigen::MatrixXd shapes(n, static_cast<Eigen::Index>(split.size()));
+  for (size_t j = 0; j < split.size(); ++j) shapes.col(j) = split[j]->shape;
+  p.contributions.shapes = shapes;
+  p.contributions.left = shapes.transpose() * system.mass;
+  p.friction = ride::friction_elements(system);
+  return p;
+}
+
+void build_grid(Problem* p, const RideOptions& options) {
+  const LinearSystem& system = *p->system;
+  std::vector<ride::GridMode> grid_modes;
+  std::vector<double> avoid, extra;
+  for (const Mode* m : p->oscillatory) {
+    grid_modes.push_back({m->frequency_hz, modal_damping_ratio(system, *m)});
+    if (undamped(system, *m)) avoid.push_back(m->frequency_hz);
+  }
+  for (double v : options.speeds)
+    for (const ride::Component& c : p->components) {
+      extra.push_back(v * c.spectrum.band().low / kTwoPi);
+      extra.push_back(v * c.spectrum.band().high / kTwoPi);
+    }
+  p->grid = ride::frequency_grid(options, grid_modes, extra, avoid);
+  const Eigen::Index K = p->grid.size();
+  p->wb2.resize(K);
+  p->wd2.resize(K);
+  p->sperling_v2.resize(K);
+  p->sperling_l2.resize(K);
+  const FrequencyWeighting wb = en12299_wb(), wd = en12299_wd();
+  for (Eigen::Index k = 0; k < K; ++k) {
+    const double f = p->grid(k);
+    p->wb2(k) = std::norm(wb.response(f));
+    p->wd2(k) = std::norm(wd.response(f));
+    p->sperling_v2(k) = std::pow(sperling_weighting(f, SperlingDirection::vertical), 2);
+    p->sperling_l2(k) = std::pow(sperling_weighting(f, SperlingDirection::lateral), 2);
+  }
+}
+
+// Each speed on its own; `threads` workers take every threads-th speed.
+std::vector<SpeedOutcome> solve_speeds(const Problem& p, const RideOptions& options) {
+  const size_t count = options.speeds.size();
+  std::vector<SpeedOutcome> out(count);
+  std::vector<std::exception_ptr> errors(count);
+  auto work = [&](size_t first, size_t step) {
+    for (size_t v = first; v < count; v += step) try {
+        out[v] = solve_speed(p, options.speeds[v]);
+      } catch (...) {
+        errors[v] = std::current_exception();
+      }
+  };
+  const size_t threads = std::min<size_t>(static_cast<size_t>(options.threads), count);
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, t, threads);
+  work(0, std::max<size_t>(threads, 1));
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return out;
+}
+
+std::string friction_text(const std::vector<SpeedOutcome>& speeds, const RideOptions& options) {
+  int passes = 0;
+  double change = 0.0;
+  bool converged = true;
+  for (const SpeedOutcome& s : speeds) {
+    passes = std::max(passes, s.friction.passes);
+    change = std::max(change, s.friction.change);
+    converged = converged && s.friction.converged;
+  }
+  std::string text =
+      "statistical linearisation: each leaf an equivalent viscous damper F·√(2/π)/σ_v from the RMS stretch "
+      "rate σ_v across it (Gaussian), iterated to consistency per speed; ";
+  if (converged) return text + "converged in " + std::to_string(passes) + " passes at most";
+  return text + "NOT converged in " + std::to_string(options.friction_iterations) + " passes (last relative change " +
+         shortest_text(change, 3) + ")";
+}
+
+}  // namespace
+
+RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
+                      const std::vector<RideOutput>& outputs, const RideOptions& options) {
+  require_valid(options, "RideOptions: ");
+  RideResult result;
+  result.summary.analysis = "ride on random track";
+  StageClock clock(&result.summary);
+  result.outputs = outputs;
+  Problem p = prepare(system, track, outputs, options, &result);
+  clock.lap("modes");
+  build_grid(&p, options);
+  result.frequencies = p.grid;
+  clock.lap("grid");
+  if (p.friction.empty()) {
+    p.shared = receptances_of(p, system, p.maps);
+    clock.lap("receptances");
+  }
+  const std::vector<SpeedOutcome> speeds = solve_speeds(p, options);
+  clock.lap("speeds");
+
+  result.summary.method =
+      (options.modes > 0 ? "modal superposition over the " + std::to_string(p.truncation.cols()) + " lowest modes"
+                         : std::string("direct solve of K − ω²M + iωC")) +
+      " at each of " + std::to_string(p.grid.size()) + " grid frequencies for all " +
+      std::to_string(system.track_inputs.size()) + " track inputs at once; per speed the inputs' delays x/V";
+  for (const SpeedOutcome& s : speeds) {
+    result.speeds.push_back(s.at);
+    result.grid_error_estimate = std::max(result.grid_error_estimate, s.grid_error);
+    for (const std::string& note : s.notes)
+      if (std::find(result.notes.begin(), result.notes.end(), note) == result.notes.end()) result.notes.push_back(note);
+  }
+  result.summary.checks.push_back({"grid error estimate (largest relative RMS change on halving the grid)",
+                                   result.grid_error_estimate, std::numeric_limits<double>::infinity(), true});
+  if (p.friction.empty()) {
+    result.friction_treatment = "none in the vehicle";
+  } else {
+    result.friction_treatment = friction_text(speeds, options);
+    double change = 0.0;
+    for (const SpeedOutcome& s : speeds) change = std::max(change, s.friction.change);
+    result.summary.checks.push_back({"friction linearisation: last relative change of σ_v", change,
+                                     options.friction_tolerance, change <= options.friction_tolerance});
+    if (change > options.friction_tolerance) result.notes.push_back("the friction linearisation did not converge");
+  }
+  if (options.modes > 0)
+    result.notes.push_back("H(f) by modal superposition over the " + std::to_string(p.truncation.cols()) +
+                           " lowest modes: the response misses the higher modes' share (docs/accuracy.md, "
+                           "\"Ride: modal truncation\")");
+  result.notes.push_back("P95 and N_MV are estimates for a stationary Gaussian process (chi-square with ν = "
+                         "2T(∫S)²/∫S², T = " + shortest_text(options.percentile_window) + " s), not the statistic of "
+                         "measured 5-s windows");
+  return result;
 }
 
 }  // namespace railmodal

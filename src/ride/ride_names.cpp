@@ -1,0 +1,67 @@
+// The ride's enum names and the rule of its options (one place for both, so the CLI, the
+// scene reader and the analysis agree on every word and bound).
+#include <cmath>
+#include <string>
+
+#include "railmodal/ride.hpp"
+#include "require_valid.hpp"
+#include "shortest_text.hpp"
+
+namespace railmodal {
+
+const char* to_string(RideAxis axis) {
+  switch (axis) {
+    case RideAxis::longitudinal: return "longitudinal";
+    case RideAxis::lateral: return "lateral";
+    case RideAxis::vertical: return "vertical";
+  }
+  return "?";
+}
+
+std::optional<RideAxis> ride_axis_from_string(const std::string& word) {
+  for (RideAxis a : {RideAxis::longitudinal, RideAxis::lateral, RideAxis::vertical})
+    if (word == to_string(a)) return a;
+  return std::nullopt;
+}
+
+const char* to_string(RideOutput::Kind kind) {
+  switch (kind) {
+    case RideOutput::Kind::point: return "point";
+    case RideOutput::Kind::element_deflection: return "element-deflection";
+    case RideOutput::Kind::element_force: return "element-force";
+    case RideOutput::Kind::wheel_rail_force: return "wheel-rail-force";
+  }
+  return "?";
+}
+
+std::optional<RideOutput::Kind> ride_output_kind_from_string(const std::string& word) {
+  for (RideOutput::Kind k : {RideOutput::Kind::point, RideOutput::Kind::element_deflection,
+                             RideOutput::Kind::element_force, RideOutput::Kind::wheel_rail_force})
+    if (word == to_string(k)) return k;
+  return std::nullopt;
+}
+
+bool RideOptions::is_valid(std::string* why) const {
+  if (speeds.empty()) return invalid(why, "speeds: at least one speed is needed");
+  for (double v : speeds)
+    if (!(v > 0.0) || !std::isfinite(v))
+      return invalid(why, "speeds: each speed must be positive and finite (got " + shortest_text(v) + " m/s)");
+  if (!(min_frequency > 0.0) || !std::isfinite(min_frequency))
+    return invalid(why, "min_frequency must be positive and finite");
+  if (!(max_frequency > min_frequency) || !std::isfinite(max_frequency))
+    return invalid(why, "max_frequency must be finite and above min_frequency");
+  if (points_per_decade < 10) return invalid(why, "points_per_decade must be at least 10");
+  if (points_per_bandwidth < 1) return invalid(why, "points_per_bandwidth must be at least 1");
+  if (modes < 0) return invalid(why, "modes must not be negative (0: direct solve)");
+  if (!(contact_half_spacing >= 0.0) || !std::isfinite(contact_half_spacing))
+    return invalid(why, "contact_half_spacing must be finite and not negative (0: from the wheelsets)");
+  if (!(percentile_window > 0.0) || !std::isfinite(percentile_window))
+    return invalid(why, "percentile_window must be positive and finite");
+  if (!(friction_tolerance > 0.0) || !(friction_tolerance < 1.0))
+    return invalid(why, "friction_tolerance must lie in (0, 1)");
+  if (friction_iterations < 1) return invalid(why, "friction_iterations must be at least 1");
+  if (threads < 1) return invalid(why, "threads must be at least 1");
+  return true;
+}
+
+}  // namespace railmodal

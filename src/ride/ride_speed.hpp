@@ -1,0 +1,30 @@
+// One speed of the ride: the speed-independent receptances combined with the delays x_i/V of
+// the track inputs and the track's temporal densities G_c(f) = (2π/V)S_c(2πf/V).
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "ride/ride_grid.hpp"
+#include "ride/ride_indices.hpp"
+#include "ride/ride_transfer.hpp"
+
+namespace railmodal::ride {
+
+/// A component's band in Hz at `speed` and its weights on the grid.
+std::vector<BandWeights> speed_bands(const std::vector<Component>& components, const Eigen::VectorXd& grid,
+                                     double speed);
+
+struct SpeedSpectra {
+  std::vector<ComponentPower> outputs;  ///< per output: |H_c|²·G_c inside each band
+  std::vector<Eigen::VectorXd> psd;     ///< per output: Σ_c |H_c|²G_c (G zero outside its band), unit²/Hz
+  std::vector<std::vector<double>> modal_variance;  ///< [output][mode]: ∫|H_j|²G df (with a basis)
+  std::vector<Eigen::VectorXd> input_psd;           ///< per component: G_c on the grid, m²/Hz
+};
+
+/// H_c(f) = Σ_i h_{c,i}(f)·e^{−iωτ_i}, τ_i = (x_front − x_i)/V (the front input first, x
+/// forward), and what the indices need of it (the modal variances when `r` holds modal terms).
+SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, const std::vector<Component>& components,
+                           const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands);
+
+}  // namespace railmodal::ride

@@ -1,0 +1,360 @@
+// The ride's linear maps: track components onto the track inputs, outputs onto the degrees of
+// freedom, and the receptances that join them (one solve per frequency for all inputs).
+#include "ride/ride_transfer.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "model/analysis_limits.hpp"
+#include "model/point_motion.hpp"
+#include "model/wheelset_dofs.hpp"
+#include "model/element_stiffness.hpp"
+#include "railmodal/errors.hpp"
+#include "shortest_text.hpp"
+
+namespace railmodal::ride {
+
+namespace {
+
+constexpr double kTwoPi = 6.28318530717958647692;
+using Complex = std::complex<double>;
+
+int body_index(const LinearSystem& system, const std::string& name) {
+  const auto& bodies = system.vehicle.bodies;
+  for (size_t b = 0; b < bodies.size(); ++b)
+    if (bodies[b].name == name) return static_cast<int>(b);
+  return -1;
+}
+
+int element_index(const LinearSystem& system, const std::string& name) {
+  const auto& elements = system.vehicle.elements;
+  for (size_t k = 0; k < elements.size(); ++k)
+    if (elements[k].name == name) return static_cast<int>(k);
+  return -1;
+}
+
+int input_of(const LinearSystem& system, int element) {
+  for (size_t i = 0; i < system.track_inputs.size(); ++i)
+    if (system.track_inputs[i].element == element) return static_cast<int>(i);
+  return -1;
+}
+
+int axis_index(RideAxis axis) { return axis == RideAxis::longitudinal ? 0 : axis == RideAxis::lateral ? 1 : 2; }
+
+bool has_lateral_dofs(const LinearSystem& system) {
+  for (const Dof& d : system.dofs)
+    if (d.motion == Motion::lateral || d.motion == Motion::roll || d.motion == Motion::yaw) return true;
+  return false;
+}
+
+// b for the track input standing on `element`: the option, else its wheelset's l0 (the first
+// wheelset's for an element on none), else standard gauge's 0.75 m.
+double half_spacing(const LinearSystem& system, int element, double option) {
+  if (option > 0.0) return option;
+  const Vehicle& v = system.vehicle;
+  if (v.wheelsets.empty()) return 0.75;
+  const Element& e = v.elements[element];
+  for (const Wheelset& w : v.wheelsets)
+    if (w.body == e.lower && w.contact.contact_half_spacing > 0.0) return w.contact.contact_half_spacing;
+  return v.wheelsets.front().contact.contact_half_spacing > 0.0 ? v.wheelsets.front().contact.contact_half_spacing
+                                                                  : 0.75;
+}
+
+Component component(const LinearSystem& system, TrackIrregularity slot, const TrackSpectrum& spectrum,
+                    double contact_half_spacing) {
+  if (spectrum.irregularity() != slot)
+    throw std::invalid_argument(std::string("ride: the ") + to_string(slot) + " slot holds a " +
+                                to_string(spectrum.irregularity()) + " spectrum (" + spectrum.name() + ")");
+  const bool wheelsets = !system.vehicle.wheelsets.empty();
+  if (wheelsets && (slot == TrackIrregularity::alignment ||
+                    (slot == TrackIrregularity::cross_level && has_lateral_dofs(system))))
+    throw std::invalid_argument(std::string("ride: ") + to_string(slot) +
+                                " on a vehicle with wheelsets moves them laterally through the wheel–rail contact "
+                                "(creep), which the ride does not model yet; leave it out, or give the vertical "
+                                "degrees of freedom only (cross-level)");
+  Component c{slot, spectrum, {}};
+  for (const TrackInput& t : system.track_inputs) {
+    Eigen::Vector3d u = Eigen::Vector3d::Zero();
+    if (slot == TrackIrregularity::vertical_level) u(2) = 1.0;
+    if (slot == TrackIrregularity::alignment) u(1) = 1.0;
+    if (slot == TrackIrregularity::cross_level) {
+      const double two_b = 2.0 * half_spacing(system, t.element, contact_half_spacing);
+      u(1) = -t.point.z() / two_b;
+      u(2) = t.point.y() / two_b;
+    }
+    c.displacement.push_back(u);
+  }
+  return c;
+}
+
+// The element's stretch along `axis` (upper relative to lower) per unit of each DOF; the
+// vertical one is the assembly's own row (LinearSystem::element_vertical_map).
+Eigen::RowVectorXd stretch_row(const LinearSystem& system, int k, int axis) {
+  if (axis == 2) return system.element_vertical_map.row(k);
+  const Element& e = system.vehicle.elements[k];
+  Eigen::RowVectorXd row = model::point_displacement_map(system, body_index(system, e.upper), e.point).row(axis);
+  const int lower = body_index(system, e.lower);
+  if (lower >= 0) row -= model::point_displacement_map(system, lower, e.point).row(axis);
+  return row;
+}
+
+// Whether the track's displacement along `axis` reaches element k's lower end directly: a track
+// element, or (longitudinal and vertical) one standing on a wheelset, whose held motions follow
+// the rail; the rail's lateral motion reaches a wheelset through the contact only.
+bool track_moves_lower_end(const LinearSystem& system, int k, int axis) {
+  const Element& e = system.vehicle.elements[k];
+  if (model::stands_on_wheelset(system.vehicle, e)) return axis != 1;
+  return e.lower.empty();
+}
+
+void add_track_term(OutputMap* map, int input, const Eigen::Vector3d& t0, const Eigen::Vector3d& t1,
+                    const Eigen::Vector3d& t2) {
+  map->inputs.push_back(input);
+  map->t0.push_back(t0);
+  map->t1.push_back(t1);
+  map->t2.push_back(t2);
+}
+
+OutputMap deflection_map(const LinearSystem& system, int k, int axis) {
+  const int n = system.size();
+  OutputMap m;
+  m.a0 = stretch_row(system, k, axis);
+  m.a1 = Eigen::RowVectorXd::Zero(n);
+  const int input = input_of(system, k);
+  if (input >= 0 && track_moves_lower_end(system, k, axis))
+    add_track_term(&m, input, -Eigen::Vector3d::Unit(axis), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  return m;
+}
+
+// The force element k exerts on its upper body along `axis`: −(k + iωc)·stretch, and the
+// Maxwell force −k_s(ω)·s of its series dampers in that direction.
+OutputMap force_map(const LinearSystem& system, int k, int axis, double friction_damping) {
+  const Element& e = system.vehicle.elements[k];
+  const double load = k < static_cast<int>(system.element_loads.size()) ? system.element_loads[k] : 0.0;
+  const double stiffness = axis == 0   ? series_stiffness(e.longitudinal_stages)
+                           : axis == 1 ? model::lateral_stiffness(e, load)
+                                       : series_stiffness(e.vertical_stages);
+  const double damping = axis == 0   ? e.longitudinal_damping
+                         : axis == 1 ? e.lateral_damping
+                                     : e.vertical_damping + friction_damping;
+  OutputMap m = deflection_map(system, k, axis);  // stretch, and −u of the track where it enters
+  m.a1 = -damping * m.a0;
+  m.a0 *= -stiffness;
+  for (size_t t = 0; t < m.inputs.size(); ++t) {
+    m.t1[t] = -damping * m.t0[t];
+    m.t0[t] *= -stiffness;
+  }
+  const Motion direction = axis == 0 ? Motion::longitudinal : axis == 1 ? Motion::lateral : Motion::bounce;
+  for (const SeriesDamperRow& row : system.series_dampers)
+    if (row.element == k && row.direction == direction) m.series.push_back(row);
+  return m;
+}
+
+void add(OutputMap* sum, const OutputMap& part) {
+  sum->a0 += part.a0;
+  sum->a1 += part.a1;
+  sum->series.insert(sum->series.end(), part.series.begin(), part.series.end());
+  for (size_t t = 0; t < part.inputs.size(); ++t) add_track_term(sum, part.inputs[t], part.t0[t], part.t1[t], part.t2[t]);
+}
+
+// The vertical force of the rails on a wheelset (both wheels), its dynamic part: what the
+// elements standing on it push down with, plus the wheelset's mass times its vertical
+// acceleration, which is the rails' (its bounce is held), the mean of its inputs' vertical
+// track displacement (the rails' roll turns it about its centre).
+OutputMap wheel_rail_map(const LinearSystem& system, const RideOutput& o, const std::vector<double>& friction) {
+  const Vehicle& v = system.vehicle;
+  const int body = body_index(system, o.element);
+  if (body < 0 || !model::wheelset_of(v, o.element))
+    throw std::invalid_argument("ride: output '" + o.name + "': no wheelset '" + o.element + "'");
+  if (o.axis != RideAxis::vertical)
+    throw std::invalid_argument("ride: output '" + o.name + "': the " + to_string(o.axis) +
+                                " wheel–rail force acts through the contact (creep), which the ride does not model "
+                                "yet; only the vertical one is given");
+  const int n = system.size();
+  OutputMap m;
+  m.a0 = Eigen::RowVectorXd::Zero(n);
+  m.a1 = Eigen::RowVectorXd::Zero(n);
+  std::vector<int> inputs;
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    if (v.elements[k].lower != o.element) continue;
+    add(&m, force_map(system, static_cast<int>(k), 2, k < friction.size() ? friction[k] : 0.0));
+    const int input = input_of(system, static_cast<int>(k));
+    if (input >= 0) inputs.push_back(input);
+  }
+  for (int input : inputs)
+    add_track_term(&m, input, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                   Eigen::Vector3d::UnitZ() * v.bodies[body].mass / static_cast<double>(inputs.size()));
+  return m;
+}
+
+OutputMap output_map(const LinearSystem& system, const RideOutput& o, const std::vector<double>& friction) {
+  const int axis = axis_index(o.axis);
+  switch (o.kind) {
+    case RideOutput::Kind::point: {
+      const int body = body_index(system, o.body);
+      if (body < 0) throw std::invalid_argument("ride: output '" + o.name + "': no body '" + o.body + "'");
+      OutputMap m;
+      m.order = o.quantity == ResponseQuantity::displacement ? 0 : o.quantity == ResponseQuantity::velocity ? 1 : 2;
+      m.a0 = model::point_displacement_map(system, body, o.point).row(axis);
+      m.a1 = Eigen::RowVectorXd::Zero(system.size());
+      return m;
+    }
+    case RideOutput::Kind::element_deflection:
+    case RideOutput::Kind::element_force: {
+      const int k = element_index(system, o.element);
+      if (k < 0) throw std::invalid_argument("ride: output '" + o.name + "': no element '" + o.element + "'");
+      if (o.kind == RideOutput::Kind::element_deflection) return deflection_map(system, k, axis);
+      return force_map(system, k, axis, k < static_cast<int>(friction.size()) ? friction[k] : 0.0);
+    }
+    case RideOutput::Kind::wheel_rail_force:
+      return wheel_rail_map(system, o, friction);
+  }
+  throw std::invalid_argument("ride: output '" + o.name + "': unknown kind");
+}
+
+Complex power_of_i_omega(int order, double omega) {
+  Complex p = 1.0;
+  for (int k = 0; k < order; ++k) p *= Complex(0.0, omega);
+  return p;
+}
+
+}  // namespace
+
+std::complex<double> maxwell_stiffness(double stiffness, double damping, double omega) {
+  const Complex ic(0.0, omega * damping);
+  return ic * stiffness / (stiffness + ic);
+}
+
+Eigen::RowVectorXcd OutputMap::row(double omega) const {
+  Eigen::RowVectorXcd r = a0.cast<Complex>() + Complex(0.0, omega) * a1.cast<Complex>();
+  for (const SeriesDamperRow& s : series)
+    r -= maxwell_stiffness(s.stiffness, s.damping, omega) * s.stretch.cast<Complex>();
+  return power_of_i_omega(order, omega) * r;
+}
+
+std::complex<double> OutputMap::track(std::size_t term, const Eigen::Vector3d& u, double omega) const {
+  const Complex s(0.0, omega);
+  return power_of_i_omega(order, omega) * (t0[term].dot(u) + s * t1[term].dot(u) + s * s * t2[term].dot(u));
+}
+
+std::vector<Component> track_components(const LinearSystem& system, const TrackIrregularitySpectra& track,
+                                        double contact_half_spacing) {
+  if (system.track_inputs.empty())
+    throw std::invalid_argument("ride: the vehicle has no element standing on the track (no track input)");
+  std::vector<Component> out;
+  if (track.vertical_level)
+    out.push_back(component(system, TrackIrregularity::vertical_level, *track.vertical_level, contact_half_spacing));
+  if (track.alignment)
+    out.push_back(component(system, TrackIrregularity::alignment, *track.alignment, contact_half_spacing));
+  if (track.cross_level)
+    out.push_back(component(system, TrackIrregularity::cross_level, *track.cross_level, contact_half_spacing));
+  if (out.empty()) throw std::invalid_argument("ride: the track has no irregularity component");
+  for (const SeriesDamperRow& row : system.series_dampers)
+    if (input_of(system, row.element) >= 0)
+      throw std::invalid_argument("ride: element '" + system.vehicle.elements[row.element].name +
+                                  "' stands on the track with a series damper, whose track input the ride does "
+                                  "not model yet");
+  return out;
+}
+
+std::vector<OutputMap> output_maps(const LinearSystem& system, const std::vector<RideOutput>& outputs,
+                                   const std::vector<double>& friction_damping) {
+  if (outputs.empty()) throw std::invalid_argument("ride: no outputs requested");
+  std::set<std::string> names;
+  std::vector<OutputMap> maps;
+  for (const RideOutput& o : outputs) {
+    if (o.name.empty()) throw std::invalid_argument("ride: an output has no name");
+    if (!names.insert(o.name).second) throw std::invalid_argument("ride: output name '" + o.name + "' is repeated");
+    maps.push_back(output_map(system, o, friction_damping));
+  }
+  return maps;
+}
+
+OutputMap stretch_rate_map(const LinearSystem& system, int element) {
+  OutputMap m = deflection_map(system, element, 2);
+  m.order = 1;
+  return m;
+}
+
+Receptances receptances(const LinearSystem& system, const std::vector<Component>& components,
+                        const std::vector<OutputMap>& maps, const Eigen::VectorXd& grid,
+                        const Eigen::MatrixXd* basis, const ModalBasis* split) {
+  const int n = system.size();
+  const int m = static_cast<int>(system.track_inputs.size());
+  const int C = static_cast<int>(components.size());
+  const int O = static_cast<int>(maps.size());
+  const Eigen::Index K = grid.size();
+  // K, M, C and each series damper's stretchᵀ·stretch as complex matrices once; in the basis Φ
+  // (modal truncation) ΦᵀKΦ and the rest.
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(n, n);
+  const Eigen::MatrixXd& Phi = basis ? *basis : I;
+  auto reduced = [&](const Eigen::MatrixXd& A) -> Eigen::MatrixXcd {
+    return basis ? Eigen::MatrixXcd((Phi.transpose() * A * Phi).cast<Complex>()) : Eigen::MatrixXcd(A.cast<Complex>());
+  };
+  const Eigen::MatrixXcd stiffness = reduced(system.stiffness), mass = reduced(system.mass),
+                         damping = reduced(system.damping);
+  std::vector<Eigen::MatrixXcd> series;
+  for (const SeriesDamperRow& sd : system.series_dampers) series.push_back(reduced(sd.stretch.transpose() * sd.stretch));
+  const Eigen::MatrixXcd basis_c = Phi.cast<Complex>();
+  Eigen::MatrixXcd D(stiffness.rows(), stiffness.cols());
+  const int J = split ? static_cast<int>(split->shapes.cols()) : 0;
+  Receptances r;
+  r.outputs = O;
+  r.components = C;
+  r.inputs = m;
+  r.modes = J;
+  r.response.resize(static_cast<Eigen::Index>(O) * C * m, K);
+  r.modal.resize(static_cast<Eigen::Index>(J) * C * m, K);
+  r.modal_rows.resize(static_cast<Eigen::Index>(O) * J, K);
+  Eigen::MatrixXcd Q(n, C * m), X(n, C * m), A(O, n), h(O, C * m), q(J, C * m), seen(O, J);
+  const Eigen::MatrixXcd left_c = split ? Eigen::MatrixXcd(split->left.cast<Complex>()) : Eigen::MatrixXcd();
+  const Eigen::MatrixXcd shapes_c = split ? Eigen::MatrixXcd(split->shapes.cast<Complex>()) : Eigen::MatrixXcd();
+  // Q_{c,i} = (P_i + iωV_i)u_{c,i}: its two real parts once.
+  Eigen::MatrixXd stiff_load(n, C * m), damper_load(n, C * m);
+  for (int i = 0; i < m; ++i)
+    for (int c = 0; c < C; ++c) {
+      const TrackInput& t = system.track_inputs[i];
+      stiff_load.col(c * m + i) = t.load_per_displacement * components[c].displacement[i];
+      damper_load.col(c * m + i) = t.load_per_velocity * components[c].displacement[i];
+    }
+  for (Eigen::Index k = 0; k < K; ++k) {
+    const double omega = kTwoPi * grid(k);
+    const Complex iw(0.0, omega);
+    for (int j = 0; j < C * m; ++j) Q.col(j) = stiff_load.col(j).cast<Complex>() + iw * damper_load.col(j).cast<Complex>();
+    D.noalias() = stiffness - omega * omega * mass;
+    D.noalias() += iw * damping;
+    for (size_t d = 0; d < series.size(); ++d)
+      D.noalias() += maxwell_stiffness(system.series_dampers[d].stiffness, system.series_dampers[d].damping, omega) *
+                     series[d];
+    const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(D);
+    if (!(lu.rcond() > 1e-14))
+      throw NumericalError("ride: the dynamic stiffness K − ω²M + iωC is singular at " + shortest_text(grid(k), 8) +
+                           " Hz (reciprocal condition " + shortest_text(lu.rcond(), 3) +
+                           "), which is not an undamped mode's frequency");
+    if (basis) X.noalias() = basis_c * lu.solve(basis_c.transpose() * Q);
+    else X.noalias() = lu.solve(Q);
+    h.setZero();
+    for (int o = 0; o < O; ++o) {
+      A.row(o) = maps[o].row(omega);
+      for (size_t t = 0; t < maps[o].inputs.size(); ++t)
+        for (int c = 0; c < C; ++c) {
+          const int i = maps[o].inputs[t];
+          h(o, c * m + i) += maps[o].track(t, components[c].displacement[i], omega);
+        }
+    }
+    h.noalias() += A * X;
+    // Column k, row (o·C + c)·m + i = h(o, c·m + i): the output's index runs slowest.
+    for (int o = 0; o < O; ++o) r.response.col(k).segment(static_cast<Eigen::Index>(o) * C * m, C * m) = h.row(o).transpose();
+    if (!split) continue;
+    q.noalias() = left_c * X;  // J × C·m
+    for (int j = 0; j < J; ++j) r.modal.col(k).segment(static_cast<Eigen::Index>(j) * C * m, C * m) = q.row(j).transpose();
+    seen.noalias() = A * shapes_c;  // O × J
+    for (int o = 0; o < O; ++o) r.modal_rows.col(k).segment(static_cast<Eigen::Index>(o) * J, J) = seen.row(o).transpose();
+  }
+  return r;
+}
+
+}  // namespace railmodal::ride

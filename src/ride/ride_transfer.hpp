@@ -1,0 +1,86 @@
+// From the track to the outputs, per frequency: how each irregularity component displaces the
+// track inputs, the linear map of each requested output, and the DOF receptances to every
+// input (docs/ride.md, "The response to random track").
+#pragma once
+
+#include <Eigen/Core>
+#include <complex>
+#include <vector>
+
+#include "railmodal/ride.hpp"
+
+namespace railmodal::ride {
+
+/// One irregularity component of the request.
+struct Component {
+  TrackIrregularity kind = TrackIrregularity::vertical_level;
+  TrackSpectrum spectrum;
+  /// Per track input: the displacement (longitudinal, lateral, vertical; m) of the track under
+  /// it per metre of the component. Level (0, 0, 1); alignment (0, 1, 0); cross-level Δz rolls
+  /// the rails by θ = Δz/(2b) about the x-axis of the vehicle frame: (0, −θz, θy) per unit Δz.
+  std::vector<Eigen::Vector3d> displacement;
+};
+
+/// The components of `track` in the order vertical level, alignment, cross-level. Throws
+/// std::invalid_argument for none, a spectrum in the wrong slot, no track input, and a lateral
+/// input (alignment; cross-level among lateral DOFs) on a vehicle with wheelsets, whose
+/// lateral track input acts through the wheel–rail contact that the ride does not model yet.
+std::vector<Component> track_components(const LinearSystem& system, const TrackIrregularitySpectra& track,
+                                        double contact_half_spacing);
+
+/// One output as a linear map of the DOF response X and the track displacements u_i:
+///   y(ω) = (iω)^order · [a(ω)·X + Σ_terms t(ω)·u_input],
+///   a(ω) = a0 + iω·a1 − Σ_series k_s(ω)·stretch,  t(ω) = t0 + iω·t1 + (iω)²·t2.
+struct OutputMap {
+  int order = 0;  ///< 0 displacement (or force), 1 velocity, 2 acceleration
+  Eigen::RowVectorXd a0, a1;
+  std::vector<SeriesDamperRow> series;  ///< Maxwell elements whose force the output carries
+  std::vector<int> inputs;              ///< track inputs with a direct term
+  std::vector<Eigen::Vector3d> t0, t1, t2;
+  /// (iω)^order · a(ω).
+  Eigen::RowVectorXcd row(double omega) const;
+  /// (iω)^order · t(ω)·u of direct term `term`.
+  std::complex<double> track(std::size_t term, const Eigen::Vector3d& u, double omega) const;
+};
+
+/// The map of each output. `friction_damping` (per element, N·s/m; may be empty) adds the
+/// linearised leaf friction to an element's vertical damping in its force. Throws
+/// std::invalid_argument naming an output whose name is empty or repeated, or whose body,
+/// element or wheelset the system does not have.
+std::vector<OutputMap> output_maps(const LinearSystem& system, const std::vector<RideOutput>& outputs,
+                                   const std::vector<double>& friction_damping);
+
+/// The map of element k's vertical stretch rate (upper relative to lower, track subtracted), m/s.
+OutputMap stretch_rate_map(const LinearSystem& system, int element);
+
+/// k_s(ω) = iωck/(k + iωc): a damper c with a spring k in series, as one complex stiffness.
+std::complex<double> maxwell_stiffness(double stiffness, double damping, double omega);
+
+/// The modal basis an output's modal terms are taken in: X = Σ_j φ_j q_j, q_j = φ_jᵀM X.
+struct ModalBasis {
+  Eigen::MatrixXd shapes;  ///< n × J, mass-normalised
+  Eigen::MatrixXd left;    ///< J × n: ΦᵀM
+};
+
+/// What does not depend on speed, one column per grid frequency (C components, m inputs, O
+/// outputs, J modes of the split):
+struct Receptances {
+  int outputs = 0, components = 0, inputs = 0, modes = 0;
+  /// Row (o·C + c)·m + i: h_{o,c,i}(f), output o's response to component c entering at input i
+  /// alone: a_o(ω)·X_{c,i} + t_{o,i}(ω)·u_{c,i}, with X_{c,i} = D⁻¹(P_i + iωV_i)u_{c,i}.
+  Eigen::MatrixXcd response;
+  /// Row (j·C + c)·m + i: φ_jᵀM X_{c,i}, mode j's coordinate (with a split basis).
+  Eigen::MatrixXcd modal;
+  /// Row o·J + j: a_o(ω)·φ_j, how much of mode j output o sees.
+  Eigen::MatrixXcd modal_rows;
+};
+
+/// Solves the dynamic stiffness K − ω²M + iωC (+ the series dampers' k_s(ω)) once per grid
+/// frequency for every input at once; with a basis Φ (n × J, not null) in the reduced
+/// coordinates X = Φq, (ΦᵀDΦ)q = ΦᵀQ (modal truncation). Throws railmodal::NumericalError naming
+/// the frequency where the matrix is singular. With `split` (not null) the modal terms too.
+Receptances receptances(const LinearSystem& system, const std::vector<Component>& components,
+                        const std::vector<OutputMap>& maps, const Eigen::VectorXd& grid,
+                        const Eigen::MatrixXd* basis, const ModalBasis* split);
+
+}  // namespace railmodal::ride
