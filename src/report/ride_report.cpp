@@ -8,6 +8,7 @@
 #include "railmodal/ride_report.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -193,9 +194,11 @@ std::string method_text(const RideResult& r) {
 }
 
 constexpr const char* kEstimateNote =
-    "P95 estimate: the 95th percentile of the 5 s weighted RMS for a stationary Gaussian process with the output's "
-    "spectrum (chi-square with ν ≈ 2T(∫S)²/∫S²), an estimate, not a measured percentile. N_MV = 6·√(P95x² + P95y² + "
-    "P95z²) (EN 12299, from the estimates). Wz: Sperling's index from the B-weighted RMS (filter form).";
+    "P95 estimate: the 95th percentile of the 5 s weighted RMS values estimated from the spectrum, not measured. "
+    "N_MV = 6·√(P95x² + P95y² + P95z²) (EN 12299) from those estimates. Wz: Sperling's index from the B-weighted "
+    "RMS (filter form). Dominant modes: each mode's share is the variance of its term alone over the output's "
+    "variance; the cross terms between modes make up the rest and may be negative, so a share can exceed 100 % "
+    "(a suspension force, which also follows the track directly, shows this most).";
 
 // Markdown and HTML write the same sections; `kind` says how a table is written.
 enum class Document { markdown, html };
@@ -222,7 +225,7 @@ std::vector<report::ReferenceLine> mode_lines(const RideResult& r) {
   for (size_t k = 0; k < r.modes.size(); ++k)
     if (r.frequencies.size() && r.modes[k].frequency_hz >= r.frequencies[0] &&
         r.modes[k].frequency_hz <= r.frequencies[r.frequencies.size() - 1])
-      lines.push_back({mode_number(k), r.modes[k].frequency_hz, true, r.modes[k].name});
+      lines.push_back({mode_number(k), r.modes[k].frequency_hz, true, ""});  // the modes table names them
   return lines;
 }
 
@@ -247,21 +250,43 @@ std::string psd_unit(const std::string& unit) {
 
 // What outputs in `unit` are, for a chart's title.
 std::string quantity_word(const std::string& unit) {
-  return unit == "m/s²" ? "Acceleration" : unit == "m/s" ? "Velocity" : unit == "N" ? "Force" : "Displacement";
+  return unit == "m/s²" ? "acceleration" : unit == "m/s" ? "velocity" : unit == "N" ? "force" : "displacement";
 }
 
-// The output PSDs of the outputs of one unit (accelerations, displacements, forces) at one speed.
-report::Chart output_chart(const RideResult& r, size_t speed, const std::string& unit, int id) {
+// The outputs charted together: one unit along one axis ("vertical acceleration").
+struct Group {
+  std::string unit;
+  RideAxis axis;
+};
+
+std::vector<Group> groups_of(const RideResult& r) {
+  std::vector<Group> groups;
+  for (const RideOutput& o : r.outputs)
+    if (std::none_of(groups.begin(), groups.end(),
+                     [&](const Group& g) { return g.unit == unit_of(o) && g.axis == o.axis; }))
+      groups.push_back({unit_of(o), o.axis});
+  return groups;
+}
+
+std::string capitalised(std::string word) {
+  if (!word.empty()) word[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(word[0])));
+  return word;
+}
+
+// The output PSDs of one group at one speed.
+report::Chart output_chart(const RideResult& r, size_t speed, const Group& g, int id) {
   report::Chart c;
   c.id = "output-psd-" + std::to_string(id);
-  c.title = quantity_word(unit) + " spectra at " + kmh(r.speeds[speed].speed);
+  c.title = capitalised(to_string(g.axis)) + " " + quantity_word(g.unit) + " spectra at " + kmh(r.speeds[speed].speed);
   c.x_label = "frequency (Hz)";
-  c.y_label = "PSD (" + psd_unit(unit) + ")";
+  c.y_label = "PSD (" + psd_unit(g.unit) + ")";
   c.log_x = c.log_y = true;
   const auto f = to_vector(r.frequencies);
   for (size_t i = 0; i < r.outputs.size(); ++i) {
     const RideOutputAtSpeed& o = r.speeds[speed].outputs[i];
-    if (unit_of(r.outputs[i]) != unit || o.unbounded || o.psd.size() != r.frequencies.size()) continue;
+    if (unit_of(r.outputs[i]) != g.unit || r.outputs[i].axis != g.axis || o.unbounded ||
+        o.psd.size() != r.frequencies.size())
+      continue;
     c.series.push_back(series(r.outputs[i].name, f, to_vector(o.psd)));
   }
   c.lines = mode_lines(r);
@@ -269,14 +294,15 @@ report::Chart output_chart(const RideResult& r, size_t speed, const std::string&
 }
 
 // An index against speed, one series per output that has it.
-report::Chart index_chart(const RideResult& r, const std::string& id, const std::string& title,
+report::Chart index_chart(const RideResult& r, RideAxis axis, const std::string& id, const std::string& title,
                           const std::string& y_label, std::optional<double> (*index)(const RideOutputAtSpeed&)) {
   report::Chart c;
-  c.id = id;
+  c.id = id + "-" + to_string(axis);
   c.title = title;
   c.x_label = "speed (km/h)";
   c.y_label = y_label;
   for (size_t i = 0; i < r.outputs.size(); ++i) {
+    if (r.outputs[i].axis != axis) continue;
     report::ChartSeries s;
     s.label = r.outputs[i].name;
     bool any = false;
@@ -393,19 +419,26 @@ void write_html(std::ostream& out, const Page& p) {
   for (const std::string& n : r.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
   if (!r.speeds.empty()) {
     out << "<h2>Indices against speed</h2>\n";
-    out << report::svg_chart(index_chart(r, "weighted-rms", "EN 12299 weighted RMS acceleration (Wb vertical, Wd lateral)",
-                                         "weighted RMS (m/s²)", weighted_of));
-    out << report::svg_chart(index_chart(r, "wz", "Sperling's ride index Wz", "Wz", wz_of));
+    // One chart per axis, so that each holds a few floor points.
+    for (RideAxis axis : {RideAxis::vertical, RideAxis::lateral, RideAxis::longitudinal}) {
+      const std::string along = to_string(axis);
+      const report::Chart weighted =
+          index_chart(r, axis, "weighted-rms", "EN 12299 weighted RMS, " + along + " (W" +
+                                                   (axis == RideAxis::vertical ? "b" : "d") + ")",
+                      "weighted RMS (m/s²)", weighted_of);
+      if (weighted.series.empty()) continue;
+      out << report::svg_chart(weighted);
+      const report::Chart wz = index_chart(r, axis, "wz", "Sperling's ride index Wz, " + along, "Wz", wz_of);
+      if (!wz.series.empty()) out << report::svg_chart(wz);
+    }
     if (!r.speeds.front().comfort.empty()) out << report::svg_chart(nmv_chart(r));
     // The spectra at the highest speed: the one a ride is signed off at.
     const size_t top = r.speeds.size() - 1;
     out << "<h2>Spectra at " << html_escape(kmh(r.speeds[top].speed)) << "</h2>\n";
     if (!r.speeds[top].input_psd.empty()) out << report::svg_chart(input_chart(r, top));
-    std::vector<std::string> units;
-    for (const RideOutput& o : r.outputs)
-      if (std::find(units.begin(), units.end(), unit_of(o)) == units.end()) units.push_back(unit_of(o));
-    for (size_t u = 0; u < units.size(); ++u) {
-      const report::Chart c = output_chart(r, top, units[u], static_cast<int>(u));
+    const std::vector<Group> groups = groups_of(r);
+    for (size_t g = 0; g < groups.size(); ++g) {
+      const report::Chart c = output_chart(r, top, groups[g], static_cast<int>(g));
       if (!c.series.empty()) out << report::svg_chart(c);
     }
     out << "<p class=note>Dotted vertical lines: the natural frequencies of the modes (numbered as in the table "

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include "test_support.hpp"
 
@@ -98,6 +100,13 @@ TEST(RideScene, SpeedsAsAList) {
 // A user table per cycle/m against wavelength in mm²: the same variance whichever way it is
 // written (per rad/m against wavenumber in m², two-sided halves); the table's variance is
 // integrated exactly, so the three agree to round-off.
+// A number as TOML reads it back exactly (17 significant digits).
+std::string exact(double v) {
+  std::ostringstream s;
+  s << std::setprecision(17) << v;
+  return s.str();
+}
+
 TEST(RideScene, UserTableConventions) {
   auto variance_of = [](const std::string& table) {
     std::string text = kRideScene;
@@ -114,14 +123,14 @@ TEST(RideScene, UserTableConventions) {
   // The same as S(Ω) = S_n/2π against Ω = 2π/λ, in m²/(rad/m).
   const double per_rad = variance_of(
       "abscissa = \"wavenumber\"\nabscissa_unit = \"rad/m\"\ndensity_unit = \"m^2/(rad/m)\"\npoints = [[" +
-      std::to_string(2 * kPi / 50) + ", " + std::to_string(2e-6 / (2 * kPi)) + "], [" + std::to_string(2 * kPi / 2) +
-      ", " + std::to_string(1e-8 / (2 * kPi)) + "]]\n");
+      exact(2 * kPi / 50) + ", " + exact(2e-6 / (2 * kPi)) + "], [" + exact(2 * kPi / 2) + ", " +
+      exact(1e-8 / (2 * kPi)) + "]]\n");
   // Two-sided per cycle/m against spatial frequency: half the one-sided density.
   const double two_sided = variance_of(
       "abscissa = \"spatial-frequency\"\nabscissa_unit = \"cycle/m\"\ndensity_unit = \"m^2/(cycle/m)\"\nsides = 2\n"
       "points = [[0.02, 1e-6], [0.5, 0.5e-8]]\n");
-  // std::to_string keeps six decimals: the wavenumber form agrees to that rounding.
-  EXPECT_NEAR(per_rad / per_cycle, 1.0, 1e-4);
+  // The same numbers through different unit conversions: equal to round-off.
+  EXPECT_NEAR(per_rad / per_cycle, 1.0, 1e-12);
   EXPECT_NEAR(two_sided / per_cycle, 1.0, 1e-12);
   // The variance itself: on log–log the density is S_n = 2e-6 (n/0.02)^β with β = ln(0.005)/ln(25);
   // ∫ from 0.02 to 0.5 cycle/m.

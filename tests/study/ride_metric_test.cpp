@@ -80,7 +80,7 @@ TEST(RideMetric, RanksTheSmoothestFirst) {
 }
 
 TEST(RideMetric, ShardsCarryTheRide) {
-  const Study s = load_study(write_study(example3_wagon(), "[ranking]\nminimise = \"lowest_critical_speed\"\n"));
+  const Study s = load_study(write_study(example3_wagon(), "[ranking]\nmax_lowest_critical_speed = \"900 km/h\"\n"));
   std::ostringstream shard;
   write_shard(shard, s, {}, {ridden(0, "base", 0.31, 2.4, 1.9)});
   const std::vector<VariantResult> back = read_shard(write_temp("ride_shard.json", shard.str()), s);
