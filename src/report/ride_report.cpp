@@ -485,28 +485,40 @@ void write_text(std::ostream& out, const Page& p) {
 std::string csv_value(double v) { return std::isfinite(v) ? significant(v, 10) : ""; }
 std::string csv_optional(const std::optional<double>& v) { return v ? csv_value(*v) : ""; }
 
-// One row per speed: for each output its RMS, weighted RMS, P95 estimate and Wz, each column
-// headed with its unit; then N_MV per floor point. An unbounded RMS is the word.
+// Whether an output has the comfort indices (weighted RMS, P95, Wz): a point's acceleration.
+bool has_comfort_indices(const RideOutput& o) {
+  return o.kind == RideOutput::Kind::point && o.quantity == ResponseQuantity::acceleration;
+}
+
+// One row per speed: for each output its RMS and, for a floor acceleration, its weighted RMS,
+// P95 estimate and Wz, each column headed with its unit; then N_MV per floor point. An unbounded
+// RMS is the word, its other columns blank.
 void write_csv(std::ostream& out, const RideResult& r) {
   using report::csv_field;
   using report::csv_heading;
   out << csv_heading("speed", "km/h");
-  for (const RideOutput& o : r.outputs)
-    out << "," << csv_field(csv_heading(o.name + " rms", unit_of(o))) << ","
-        << csv_field(csv_heading(o.name + " weighted rms", "m/s²")) << ","
-        << csv_field(csv_heading(o.name + " p95 estimate", "m/s²")) << "," << csv_field(o.name + " sperling wz");
+  for (const RideOutput& o : r.outputs) {
+    out << "," << csv_field(csv_heading(o.name + " rms", unit_of(o)));
+    if (has_comfort_indices(o))
+      out << "," << csv_field(csv_heading(o.name + " weighted rms", "m/s²")) << ","
+          << csv_field(csv_heading(o.name + " p95 estimate", "m/s²")) << "," << csv_field(o.name + " sperling wz");
+  }
   if (!r.speeds.empty())
     for (const RideComfortAtPoint& c : r.speeds.front().comfort) out << "," << csv_field("nmv estimate " + point_text(c));
   out << "\n";
   for (const RideAtSpeed& at : r.speeds) {
     out << csv_value(at.speed * kKmh);
-    for (const RideOutputAtSpeed& o : at.outputs) {
+    for (size_t i = 0; i < r.outputs.size() && i < at.outputs.size(); ++i) {
+      const RideOutputAtSpeed& o = at.outputs[i];
+      const bool comfort = has_comfort_indices(r.outputs[i]);
       if (o.unbounded) {
-        out << ",unbounded,,,";
+        out << (comfort ? ",unbounded,,," : ",unbounded");
         continue;
       }
-      out << "," << csv_value(o.rms) << "," << csv_optional(o.weighted_rms) << "," << csv_optional(o.p95_estimate)
-          << "," << csv_optional(o.sperling_wz);
+      out << "," << csv_value(o.rms);
+      if (comfort)
+        out << "," << csv_optional(o.weighted_rms) << "," << csv_optional(o.p95_estimate) << ","
+            << csv_optional(o.sperling_wz);
     }
     for (const RideComfortAtPoint& c : at.comfort) out << "," << csv_value(c.nmv_estimate);
     out << "\n";
@@ -607,25 +619,30 @@ nlohmann::json simulated_json(const RideSimulationResult& s, const RideFftChecks
   return j;
 }
 
+// One member a line, and each speed on a line of its own (its spectra are most of the document):
+// readable and diffable without one number a line.
 void write_json(std::ostream& out, const Page& p) {
+  using nlohmann::json;
   const RideResult& r = p.r;
-  nlohmann::json modes = nlohmann::json::array();
+  auto member = [&](const char* key, const json& value, bool first = false) {
+    out << (first ? "{\n  " : ",\n  ") << json(key).dump() << ": " << value.dump();
+  };
+  json modes = json::array();
   for (const RideMode& m : r.modes) modes.push_back({{"name", m.name}, {"frequency_hz", m.frequency_hz}});
-  nlohmann::json outputs = nlohmann::json::array();
+  json outputs = json::array();
   for (const RideOutput& o : r.outputs) outputs.push_back(output_json(o));
-  nlohmann::json speeds = nlohmann::json::array();
-  for (const RideAtSpeed& at : r.speeds) speeds.push_back(at_speed_json(r, at));
-  nlohmann::json j = {{"title", p.title},
-                      {"friction_treatment", r.friction_treatment},
-                      {"grid_error_estimate", r.grid_error_estimate},
-                      {"notes", r.notes},
-                      {"summary", summary_json(r.summary)},
-                      {"modes", modes},
-                      {"outputs", outputs},
-                      {"frequencies_hz", vector_json(r.frequencies)},
-                      {"speeds", speeds},
-                      {"time_domain", p.simulated ? simulated_json(*p.simulated, p.checks) : nlohmann::json(nullptr)}};
-  out << j.dump(2) << "\n";
+  member("title", p.title, true);
+  member("friction_treatment", r.friction_treatment);
+  member("grid_error_estimate", r.grid_error_estimate);
+  member("notes", r.notes);
+  member("summary", summary_json(r.summary));
+  member("modes", modes);
+  member("outputs", outputs);
+  member("time_domain", p.simulated ? simulated_json(*p.simulated, p.checks) : json(nullptr));
+  member("frequencies_hz", vector_json(r.frequencies));
+  out << ",\n  \"speeds\": [";
+  for (size_t k = 0; k < r.speeds.size(); ++k) out << (k ? ",\n    " : "\n    ") << at_speed_json(r, r.speeds[k]).dump();
+  out << (r.speeds.empty() ? "]" : "\n  ]") << "\n}\n";
 }
 
 }  // namespace
