@@ -234,7 +234,7 @@ report::Chart input_chart(const RideResult& r, size_t speed) {
   c.id = "input-psd";
   c.title = "Track input at " + kmh(r.speeds[speed].speed);
   c.x_label = "frequency (Hz)";
-  c.y_label = "PSD (m²/Hz)";
+  c.y_label = "PSD [m²/Hz]";  // brackets: a unit with parentheses in it reads as one
   c.log_x = c.log_y = true;
   const auto f = to_vector(r.frequencies);
   for (size_t k = 0; k < r.speeds[speed].input_psd.size(); ++k)
@@ -279,7 +279,7 @@ report::Chart output_chart(const RideResult& r, size_t speed, const Group& g, in
   c.id = "output-psd-" + std::to_string(id);
   c.title = capitalised(to_string(g.axis)) + " " + quantity_word(g.unit) + " spectra at " + kmh(r.speeds[speed].speed);
   c.x_label = "frequency (Hz)";
-  c.y_label = "PSD (" + psd_unit(g.unit) + ")";
+  c.y_label = "PSD [" + psd_unit(g.unit) + "]";
   c.log_x = c.log_y = true;
   const auto f = to_vector(r.frequencies);
   for (size_t i = 0; i < r.outputs.size(); ++i) {
@@ -325,7 +325,7 @@ report::Chart nmv_chart(const RideResult& r) {
   c.id = "nmv";
   c.title = "EN 12299 mean comfort N_MV per floor point, from the P95 estimates";
   c.x_label = "speed (km/h)";
-  c.y_label = "N_MV (estimate)";
+  c.y_label = "N_MV estimate (–)";
   if (r.speeds.empty()) return c;
   for (size_t p = 0; p < r.speeds.front().comfort.size(); ++p) {
     report::ChartSeries s;
@@ -428,7 +428,7 @@ void write_html(std::ostream& out, const Page& p) {
                       "weighted RMS (m/s²)", weighted_of);
       if (weighted.series.empty()) continue;
       out << report::svg_chart(weighted);
-      const report::Chart wz = index_chart(r, axis, "wz", "Sperling's ride index Wz, " + along, "Wz", wz_of);
+      const report::Chart wz = index_chart(r, axis, "wz", "Sperling's ride index Wz, " + along, "Wz (–)", wz_of);
       if (!wz.series.empty()) out << report::svg_chart(wz);
     }
     if (!r.speeds.front().comfort.empty()) out << report::svg_chart(nmv_chart(r));

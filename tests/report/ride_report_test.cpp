@@ -134,9 +134,9 @@ TEST(RideReport, MarkdownAndHtmlHaveTheTablesAndTheCharts) {
   size_t charts = 0;
   for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++charts;
   EXPECT_EQ(charts, 6u);
-  EXPECT_TRUE(has(html, "PSD (m²/Hz)")) << "input chart";
-  EXPECT_TRUE(has(html, "PSD ((m/s²)²/Hz)")) << "output chart";
-  EXPECT_TRUE(has(html, "PSD (N²/Hz)")) << "force chart";
+  EXPECT_TRUE(has(html, "PSD [m²/Hz]")) << "input chart";
+  EXPECT_TRUE(has(html, "PSD [(m/s²)²/Hz]")) << "output chart";
+  EXPECT_TRUE(has(html, "PSD [N²/Hz]")) << "force chart";
   EXPECT_TRUE(has(html, "body bounce")) << "natural frequencies marked";
   EXPECT_TRUE(has(html, "Vertical acceleration spectra at 200.0 km/h"));
   EXPECT_FALSE(std::regex_search(html, std::regex("\\b(nan|inf|NaN)\\b"))) << html;
