@@ -14,6 +14,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "railmodal/vehicle.hpp"
 
@@ -28,5 +29,13 @@ Vehicle load_vehicle(const std::string& path);
 /// (m/s), in m/s. For programs that take speeds on their command line (railmodal stability
 /// --speeds). Throws std::invalid_argument saying what was expected and what was found.
 double parse_speed(const std::string& text);
+
+/// Speeds written as a list, "100 km/h, 160 km/h, 200 km/h", or as a range "MIN:MAX:STEP":
+/// from MIN to MAX, both included, evenly spaced at most STEP apart ("100 km/h:200 km/h:20 km/h"
+/// is 100, 120, … 200 km/h); "MIN:MAX" alone is 11 speeds. Each speed as parse_speed reads it,
+/// above zero; at most 10 000 speeds; returned in m/s, in the order written (a range
+/// increasing). For the ride's speeds (railmodal ride --speeds, a scene's [ride] speeds).
+/// Throws std::invalid_argument saying what is wrong.
+std::vector<double> parse_speeds(const std::string& text);
 
 }  // namespace railmodal

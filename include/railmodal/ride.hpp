@@ -84,6 +84,9 @@ struct RideOutput {
 const char* to_string(RideOutput::Kind kind);  ///< "point", "element-deflection", "element-force", "wheel-rail-force"
 /// Inverse of to_string; std::nullopt for an unknown word.
 std::optional<RideOutput::Kind> ride_output_kind_from_string(const std::string& word);
+/// The SI unit of an output's values: "m", "m/s", "m/s²" (a point's displacement, velocity,
+/// acceleration; an element's deflection in m) or "N" (forces).
+std::string unit_of(const RideOutput& output);
 
 /// The floor points a ride report looks at when none are named: on the car body (the body with
 /// the largest mass), at floor height (the body's reference point height), above each bogie
@@ -193,6 +196,9 @@ struct RideResult {
   double grid_error_estimate = 0.0;
   std::vector<std::string> notes;  ///< what a reader must know (undamped modes, truncation, …)
   AnalysisSummary summary;
+  /// The track spectra's names (TrackSpectrum::name()) in RideAtSpeed::input_psd order, for
+  /// the report's legend; empty: the report says "input 1", "input 2", …
+  std::vector<std::string> inputs;
 };
 
 /// The ride of `system` on `track` at every speed of `options`.

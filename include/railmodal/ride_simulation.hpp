@@ -123,6 +123,7 @@ struct RideSimulationResult {
   Eigen::VectorXd time;  ///< s, after settle_time
   std::vector<RideHistory> histories;  ///< in `outputs` order
   std::vector<RideComfortAtPoint> comfort;  ///< N_MV from the P95 of the histories
+  double window = 5.0;  ///< s: the averaging time of RideHistory::window_rms (RideSimulationOptions::window)
   std::vector<std::string> notes;
   AnalysisSummary summary;
 };

@@ -205,6 +205,19 @@ struct VariantResult {
   /// (so that maximising it ranks such a design last). None when the study does not ask for the
   /// metric "hunting_speed", or when the vehicle has no wheelsets.
   std::optional<double> hunting_speed;
+  /// The ride on the scene's random track (a scene with a `[[source]] kind = "irregularity"`
+  /// and a [ride] table: solve_ride of the variant over the ride's speeds and outputs).
+  struct RideSummary {
+    std::string output;  ///< RideOutput::name
+    std::string unit;    ///< of max_rms: "m", "m/s", "m/s^2", "N"
+    double max_rms = 0.0;           ///< the largest RMS over the speeds (0 when unbounded)
+    std::optional<double> max_wz;   ///< the largest Sperling Wz over the speeds, when it has one
+    bool unbounded = false;         ///< an undamped mode the track excites: no finite RMS
+  };
+  bool ride_evaluated = false;      ///< the scene has a ride, and it was computed
+  std::vector<RideSummary> ride;    ///< in the ride's output order
+  /// The largest N_MV estimate over the floor points and speeds; none without comfort points.
+  std::optional<double> max_nmv;
   bool deflections_checked = false;  ///< the study names a deflection rule
   std::vector<DeflectionCheck> deflections;  ///< every element or stage the rule limits
   /// The checks (modes, critical speeds, deflections kept) and the stage times of the

@@ -5,6 +5,8 @@
 #include <filesystem>
 
 #include "input/document_readers.hpp"
+#include "input/irregularity_reader.hpp"
+#include "input/ride_reader.hpp"
 #include "input/table_reader.hpp"
 #include "input/value_place.hpp"
 #include "railmodal/scene.hpp"
@@ -147,7 +149,8 @@ std::shared_ptr<const ExcitationSource> source(TableReader& t) {
     if (kind == "wheel_flat") return flat(t);
     if (kind == "hunting") return hunting(t);
     if (kind == "unbalance") return unbalance(t);
-    t.fail("kind", "unknown source '" + kind + "' (rail_joints, wheel_eccentricity, wheel_flat, hunting, unbalance)");
+    t.fail("kind", "unknown source '" + kind +
+                       "' (rail_joints, wheel_eccentricity, wheel_flat, hunting, unbalance, irregularity)");
   } catch (const std::invalid_argument& e) {
     t.fail("kind", e.what());
   }
@@ -275,6 +278,47 @@ void read_friction(TableReader t, Scene& scene) {
   t.finish();
 }
 
+// Whether the scene is read for the ride: it has [ride] or an irregularity source, and then
+// needs no [speed] range (its speeds are the ride's).
+bool is_ride_scene(TableReader& root) {
+  if (root.has("ride")) return true;
+  if (!root.has("source")) return false;
+  const toml::value& sources = root.raw("source");
+  auto irregular = [](const toml::value& t) {
+    return t.is_table() && t.contains("kind") && t.at("kind").is_string() && t.at("kind").as_string().str == "irregularity";
+  };
+  if (sources.is_table()) return irregular(sources);
+  if (sources.is_array())
+    for (const toml::value& t : sources.as_array())
+      if (irregular(t)) return true;
+  return false;
+}
+
+// [[source]] tables: the periodic sources into scene.sources, the one irregularity source into
+// scene.irregularity (its measured geometry file into *geometry).
+void read_sources(TableReader& root, Scene& scene, std::string* geometry) {
+  for (auto& t : root.tables("source")) {
+    if (t.has("kind") && t.raw("kind").is_string() && t.raw("kind").as_string().str == "irregularity") {
+      (void)t.string("kind");
+      if (scene.irregularity)
+        t.fail("kind", "a scene has one irregularity source (its components are [source.vertical_level], "
+                       "[source.alignment] and [source.cross_level] of that one table)");
+      IrregularitySource irregularity = read_irregularity(t);
+      scene.irregularity = irregularity.spectra;
+      *geometry = irregularity.geometry_file;
+      scene.name_places["irregularity"] = t.place("kind");
+      scene.name_places["irregularity.geometry"] = t.place("geometry");
+    } else {
+      // The keys ExcitationSource::misfit (and check_scene_fits) may blame, once the vehicle is
+      // known, by the source's index in scene.sources (the irregularity source is not there).
+      for (const char* key : {"kind", "body", "phases"})
+        scene.name_places["source[" + std::to_string(scene.sources.size()) + "]." + key] = t.place(key);
+      scene.sources.push_back(source(t));
+    }
+    t.finish();
+  }
+}
+
 }  // namespace
 
 Scene read_scene(const toml::value& document, const std::string& path) {
@@ -282,23 +326,36 @@ Scene read_scene(const toml::value& document, const std::string& path) {
   Scene scene;
   scene.source = path;
   read_scene_table(root, path, scene);
+  const bool ride = is_ride_scene(root);
   if (root.has("simulation"))
     scene.simulation = read_simulation(root.table("simulation"), root.has("source"), &scene.name_places);
-  if (root.has("speed") || !scene.simulation) read_speed_range(root.table("speed"), scene);
-  if (root.has("source") || !scene.simulation)
-    for (auto& t : root.tables("source")) {
-      // The keys ExcitationSource::misfit (and check_scene_fits) may blame, once the vehicle is known.
-      for (const char* key : {"kind", "body", "phases"})
-        scene.name_places["source[" + std::to_string(scene.sources.size()) + "]." + key] = t.place(key);
-      scene.sources.push_back(source(t));
-      t.finish();
-    }
+  if (root.has("speed") || (!scene.simulation && !ride)) read_speed_range(root.table("speed"), scene);
+  std::string geometry;
+  if (root.has("source") || !scene.simulation) read_sources(root, scene, &geometry);
   if (root.has("output"))
     for (auto& t : root.tables("output")) {
       scene.name_places["output[" + std::to_string(scene.outputs.size()) + "].dof"] = t.place("dof");
       scene.outputs.push_back(read_output(t));
     }
   if (root.has("friction")) read_friction(root.table("friction"), scene);
+  if (root.has("ride")) scene.ride = read_ride(root.table("ride"), &scene.name_places);
+  if (!geometry.empty()) {
+    if (!scene.ride || !scene.ride->simulation) {
+      const KeyPlace at = scene.name_places["irregularity.geometry"];
+      throw InputError(path, at.line, at.column,
+                       "key 'source.geometry': measured geometry is run in the time domain, and the scene has no "
+                       "[ride.simulation] table (its speed, time_step, settle_time)");
+    }
+    scene.ride->geometry_file = geometry;
+  }
+  if (scene.ride && scene.ride->simulation && !scene.ride->realisation && scene.ride->geometry_file.empty())
+    root.table("ride").fail("simulation", "a time-domain run needs a track: [ride.realisation] (synthesised from the "
+                                          "spectra) or geometry = \"FILE.csv\" in the irregularity source (measured)");
+  if (scene.ride && scene.ride->realisation && !scene.ride->geometry_file.empty())
+    root.table("ride").fail("realisation", "the irregularity source gives measured geometry: the run is on it, so a "
+                                           "realisation has nothing to do; give one or the other");
+  if (scene.ride && !scene.irregularity)
+    root.table("ride").fail("speeds", "the ride needs a track: a [[source]] with kind = \"irregularity\"");
   root.finish();
   return scene;
 }

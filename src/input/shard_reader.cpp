@@ -40,6 +40,19 @@ VariantResult result_from_json(const json& j) {
     r.hunting_speed =
         h.is_string() && h.get<std::string>() == "none" ? std::numeric_limits<double>::infinity() : h.get<double>();
   }
+  if (j.contains("ride")) {
+    r.ride_evaluated = true;
+    for (const auto& o : j.at("ride")) {
+      VariantResult::RideSummary summary;
+      summary.output = o.at("output").get<std::string>();
+      summary.unit = o.at("unit").get<std::string>();
+      summary.max_rms = o.at("max_rms").get<double>();
+      if (!o.at("max_sperling_wz").is_null()) summary.max_wz = o.at("max_sperling_wz").get<double>();
+      summary.unbounded = o.at("unbounded").get<bool>();
+      r.ride.push_back(summary);
+    }
+    if (!j.at("max_nmv").is_null()) r.max_nmv = j.at("max_nmv").get<double>();
+  }
   if (j.contains("dynamic_deflections")) {
     r.deflections_checked = true;
     for (const auto& c : j.at("dynamic_deflections")) {

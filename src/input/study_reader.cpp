@@ -254,7 +254,7 @@ void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
       r.fail(key, "unknown metric '" + metric +
                       "' (lowest_critical_speed, critical_speed:<mode name>, bounce_critical_speed, period:<mode name>, bounce_period, static_deflection[:<body>], "
                       "metacentric_height, hunting_speed, peak:<dof>:<displacement|velocity|acceleration>, dynamic_deflection_ratio, "
-                      "dynamic_deflection_ratio:<element>)");
+                      "dynamic_deflection_ratio:<element>, max_wz, max_nmv, rms_acceleration:<ride output name>)");
     if (!deflections_checked && canonical_metric(metric).rfind("dynamic_deflection", 0) == 0)
       r.fail(key, "metric '" + metric + "' needs a [permissible_dynamic_deflection] table naming the rule");
   };

@@ -217,6 +217,7 @@ std::string describe(const Dimension& d) {
       {dim(0, 1, 0, 0), "length"},       {dim(-1, 1, 0), "length/mass"},
       {dim(1, 1, 0), "mass·length"},     {dim(1, 2, -2), "force·length (moment)"},
       {dim(1, 2, -2, -1), "moment/angle"}, {dim(1, 3, -2), "force·length²"},
+      {dim(0, 0, -1), "frequency"},
   };
   for (const auto& [dimension, name] : names)
     if (dimension == d) return name;

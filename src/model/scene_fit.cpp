@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "model/analysis_limits.hpp"
+#include "model/scene_fit.hpp"
 
 namespace railmodal {
 namespace {
@@ -28,7 +29,46 @@ void check_dof(const Scene& scene, const LinearSystem& system, const std::string
               known + ")");
 }
 
+// Checks that a ride output's body, element or wheelset is one of the vehicle's.
+void check_ride_output(const Scene& scene, const LinearSystem& system, const RideOutput& o, size_t k) {
+  const Vehicle& v = system.vehicle;
+  const std::string at = "ride.output[" + std::to_string(k) + "].";
+  auto list = [](const auto& items, auto name) {
+    std::string known;
+    for (const auto& item : items) known += (known.empty() ? "" : ", ") + name(item);
+    return known.empty() ? std::string("none") : known;
+  };
+  if (o.kind == RideOutput::Kind::point) {
+    for (const Body& b : v.bodies)
+      if (b.name == o.body) return;
+    fail_at(scene, at + "body", at + "body",
+            "the vehicle has no body '" + o.body + "' (" + list(v.bodies, [](const Body& b) { return b.name; }) + ")");
+  }
+  if (o.kind == RideOutput::Kind::wheel_rail_force) {
+    for (const Wheelset& w : v.wheelsets)
+      if (w.body == o.element) return;
+    fail_at(scene, at + "element", at + "wheelset",
+            "the vehicle has no wheelset on a body '" + o.element + "' (wheelsets: " +
+                list(v.wheelsets, [](const Wheelset& w) { return w.body; }) + ")");
+  }
+  for (const Element& e : v.elements)
+    if (e.name == o.element) return;
+  fail_at(scene, at + "element", at + "element", "the vehicle has no element '" + o.element + "'");
+}
+
 }  // namespace
+
+namespace model {
+
+void refuse_ride_only_scene(const Scene& scene, const std::string& analysis) {
+  if (!scene.irregularity || !scene.sources.empty()) return;
+  fail_at(scene, "irregularity", "source.kind",
+          "the scene's only source is a random track irregularity, which " + analysis +
+              " do not take (they are for periodic sources: rail joints, wheel flats, …); its ride on random "
+              "track is 'railmodal ride " + scene.source + "'");
+}
+
+}  // namespace model
 
 void check_scene_fits(const Scene& scene, const LinearSystem& system) {
   for (size_t i = 0; i < scene.outputs.size(); ++i) {
@@ -59,6 +99,8 @@ void check_scene_fits(const Scene& scene, const LinearSystem& system) {
         fail_at(scene, key, key, e.what());
       }
   }
+  if (scene.ride)
+    for (size_t k = 0; k < scene.ride->outputs.size(); ++k) check_ride_output(scene, system, scene.ride->outputs[k], k);
   // The scene's analyses (critical speeds, simulation) stand on M, C and K, which a series
   // damper is not in: the scene's vehicle is refused where the scene names it.
   try {

@@ -67,6 +67,14 @@ json result_json(const VariantResult& r) {
   // Only when the study asks for it (a study without it writes what it always wrote); +∞, stable
   // over the whole range, is "none".
   if (r.hunting_speed) j["hunting_speed_m_s"] = std::isinf(*r.hunting_speed) ? json("none") : json(*r.hunting_speed);
+  // Only for a scene with a ride (a study without one writes what it always wrote).
+  if (r.ride_evaluated) {
+    j["ride"] = json::array();
+    for (const auto& o : r.ride)
+      j["ride"].push_back({{"output", o.output}, {"unit", o.unit}, {"max_rms", o.max_rms},
+                           {"max_sperling_wz", optional_number(o.max_wz)}, {"unbounded", o.unbounded}});
+    j["max_nmv"] = optional_number(r.max_nmv);
+  }
   if (r.deflections_checked) {
     j["dynamic_deflections"] = json::array();
     for (const auto& c : r.deflections)

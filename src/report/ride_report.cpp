@@ -1,16 +1,679 @@
-// Placeholder of the ride report (helper "ride-cli" replaces this file).
+// The ride report: per output and speed the RMS, the EN 12299 weighted RMS and its estimated
+// 95th percentile, Sperling's Wz and the dominant modes, N_MV per floor point; as a text table,
+// CSV (one row per speed, units in the column heads), JSON (unit-suffixed keys), Markdown, or
+// HTML with SVG plots (input and output PSDs log–log with the natural frequencies marked, the
+// indices against speed, and for a time-domain run the weighted acceleration with its 5 s
+// windows and the FFT checks). Figures a result does not have (an unbounded RMS, an index of a
+// force) are words or blank or null, never inf or NaN.
 #include "railmodal/ride_report.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 
-namespace railmodal {
+#include "report/document_table.hpp"
+#include "report/svg_chart.hpp"
+#include "report/text_format.hpp"
+#include "report/unwritten_format.hpp"
 
-void write_ride(std::ostream&, const RideResult&, OutputFormat, const RideSimulationResult*, const RideFftChecks*) {
-  throw std::logic_error("ride report: not built yet");
+namespace railmodal {
+namespace {
+
+using report::fixed;
+using report::significant;
+using report::Table;
+
+constexpr double kKmh = 3.6;  // m/s → km/h
+// Modes named per output: the largest shares, down to this one.
+constexpr size_t kDominantModes = 3;
+constexpr double kSmallestShownShare = 0.05;
+
+struct Page {
+  const RideResult& r;
+  std::string title;
+  const Provenance& provenance;
+  const RideSimulationResult* simulated;
+  const RideFftChecks* checks;
+};
+
+// ---- units and words ----
+
+// The unit as a JSON key's suffix: "m_s2" for m/s².
+std::string key_suffix(const RideOutput& o) {
+  const std::string u = unit_of(o);
+  return u == "m" ? "m" : u == "m/s" ? "m_s" : u == "N" ? "n" : "m_s2";
 }
-void write_ride(std::ostream&, const RideResult&, OutputFormat, const std::string&, const Provenance&,
-                const RideSimulationResult*, const RideFftChecks*) {
-  throw std::logic_error("ride report: not built yet");
+// The unit of the output's PSD as a JSON key's suffix: "m2_s4_per_hz" for (m/s²)²/Hz.
+std::string psd_key_suffix(const RideOutput& o) {
+  const std::string u = unit_of(o);
+  return u == "m" ? "m2_per_hz" : u == "m/s" ? "m2_s2_per_hz" : u == "N" ? "n2_per_hz" : "m2_s4_per_hz";
+}
+
+std::string kmh(double speed) { return fixed(speed * kKmh, 1) + " km/h"; }
+// Four significant digits with their trailing zeros ("0.1500", not "0.15"), so that a column
+// reads at one precision; from 1000 on, whole units.
+std::string value_text(double v) {
+  if (std::abs(v) >= 1000.0) return fixed(v, 0);
+  char text[32];
+  std::snprintf(text, sizeof text, "%#.4g", v);
+  std::string t = text;
+  if (!t.empty() && t.back() == '.') t.pop_back();
+  return t;
+}
+std::string optional_text(const std::optional<double>& v) { return v ? value_text(*v) : "–"; }
+
+std::string point_text(const RideComfortAtPoint& c) {
+  return c.body + " (" + significant(c.point.x(), 4) + ", " + significant(c.point.y(), 4) + ", " +
+         significant(c.point.z(), 4) + ") m";
+}
+
+// Modes are numbered from 1 in every report (the table, the marks on the spectra).
+std::string mode_number(size_t index) { return std::to_string(index + 1); }
+
+std::string mode_name(const RideResult& r, int mode) {
+  return mode >= 0 && static_cast<size_t>(mode) < r.modes.size()
+             ? r.modes[mode].name + " (" + fixed(r.modes[mode].frequency_hz, 2) + " Hz)"
+             : "mode " + mode_number(static_cast<size_t>(mode));
+}
+
+// "body bounce (1.02 Hz) 71 %; body pitch (1.31 Hz) 18 %": the largest shares of the variance
+// (semicolons: mode names have commas).
+std::string dominant_modes(const RideResult& r, const RideOutputAtSpeed& o) {
+  std::string text;
+  for (size_t k = 0; k < o.modes.size() && k < kDominantModes; ++k) {
+    if (k > 0 && o.modes[k].share < kSmallestShownShare) break;
+    text += (text.empty() ? "" : "; ") + mode_name(r, o.modes[k].mode) + " " + fixed(100.0 * o.modes[k].share, 0) + " %";
+  }
+  return text.empty() ? "–" : text;
+}
+
+std::string input_name(const RideResult& r, size_t k) {
+  return k < r.inputs.size() ? r.inputs[k] : "input " + std::to_string(k + 1);
+}
+
+// ---- the tables (text, Markdown, HTML) ----
+
+Table indices_table(const RideResult& r, const RideAtSpeed& at) {
+  Table t;
+  t.headers = {"output", "unit", "RMS", "weighted RMS [m/s²]", "P95 estimate [m/s²]", "Wz", "dominant modes"};
+  t.numeric = {false, false, true, true, true, true, false};
+  for (size_t i = 0; i < r.outputs.size() && i < at.outputs.size(); ++i) {
+    const RideOutputAtSpeed& o = at.outputs[i];
+    if (o.unbounded) {
+      t.rows.push_back({r.outputs[i].name, unit_of(r.outputs[i]), "unbounded", "–", "–", "–", "an undamped mode"});
+      continue;
+    }
+    t.rows.push_back({r.outputs[i].name, unit_of(r.outputs[i]), value_text(o.rms), optional_text(o.weighted_rms),
+                      optional_text(o.p95_estimate), o.sperling_wz ? fixed(*o.sperling_wz, 2) : "–",
+                      dominant_modes(r, o)});
+  }
+  return t;
+}
+
+Table comfort_table(const std::vector<RideComfortAtPoint>& comfort, const std::string& heading) {
+  Table t;
+  t.headers = {"floor point", heading, "axes without an output"};
+  t.numeric = {false, true, false};
+  for (const RideComfortAtPoint& c : comfort) {
+    std::string missing;
+    for (RideAxis a : c.missing_axes) missing += (missing.empty() ? "" : ", ") + std::string(to_string(a));
+    t.rows.push_back({point_text(c), fixed(c.nmv_estimate, 2), missing.empty() ? "–" : missing + " (taken as 0)"});
+  }
+  return t;
+}
+
+Table modes_table(const RideResult& r) {
+  Table t;
+  t.headers = {"mode", "name", "frequency [Hz]"};
+  t.numeric = {true, false, true};
+  for (size_t k = 0; k < r.modes.size(); ++k)
+    t.rows.push_back({mode_number(k), r.modes[k].name, fixed(r.modes[k].frequency_hz, 3)});
+  return t;
+}
+
+Table simulated_table(const RideSimulationResult& s) {
+  Table t;
+  t.headers = {"output", "unit", "RMS", "weighted RMS [m/s²]", "P95 of the windows [m/s²]", "Wz", "windows"};
+  t.numeric = {false, false, true, true, true, true, true};
+  for (size_t i = 0; i < s.outputs.size() && i < s.histories.size(); ++i) {
+    const RideHistory& h = s.histories[i];
+    t.rows.push_back({s.outputs[i].name, unit_of(s.outputs[i]), value_text(h.rms), optional_text(h.weighted_rms),
+                      optional_text(h.p95), h.sperling_wz ? fixed(*h.sperling_wz, 2) : "–",
+                      std::to_string(h.window_rms.size())});
+  }
+  return t;
+}
+
+Table checks_table(const RideFftChecks& c, const RideSimulationResult& s) {
+  Table t;
+  t.headers = {"check", "value"};
+  t.numeric = {false, true};
+  t.rows.push_back({"(a) exact: largest bin error of the steady state against H·X",
+                    c.exact_bin_error ? significant(*c.exact_bin_error, 3) : "not run (not periodic, or not linear)"});
+  t.rows.push_back({"(b) Welch PSD bins of the realisation outside the 95 % band (expected about 5 %)",
+                    fixed(100.0 * c.fraction_outside_band, 1) + " %"});
+  for (size_t i = 0; i < c.rms_difference.size() && i < s.outputs.size(); ++i)
+    t.rows.push_back({"(c) RMS, simulated against spectral: " + s.outputs[i].name,
+                      fixed(100.0 * c.rms_difference[i], 2) + " %"});
+  return t;
+}
+
+// The text table: columns padded to their widest cell.
+void write_text_table(std::ostream& out, const Table& t) {
+  std::vector<size_t> width(t.headers.size());
+  auto length = [](const std::string& s) {
+    return static_cast<size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+  };
+  for (size_t c = 0; c < t.headers.size(); ++c) width[c] = length(t.headers[c]);
+  for (const auto& row : t.rows)
+    for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], length(row[c]));
+  auto write_row = [&](const std::vector<std::string>& row) {
+    std::string line;
+    for (size_t c = 0; c < row.size(); ++c) {
+      const size_t pad = width[c] - length(row[c]);
+      line += t.numeric[c] ? std::string(pad, ' ') + row[c] : row[c] + std::string(pad, ' ');
+      line += c + 1 < row.size() ? "  " : "";
+    }
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    out << "  " << line << "\n";
+  };
+  write_row(t.headers);
+  for (const auto& row : t.rows) write_row(row);
+}
+
+std::string method_text(const RideResult& r) {
+  return "S_out(f) = Σ_c |H_c(f)|² G_c(f) over " + std::to_string(r.frequencies.size()) + " frequencies from " +
+         (r.frequencies.size() ? significant(r.frequencies[0], 3) + " to " +
+                                     significant(r.frequencies[r.frequencies.size() - 1], 3) + " Hz"
+                               : std::string("–")) +
+         "; grid error estimate " + significant(100.0 * r.grid_error_estimate, 2) + " % of an RMS; friction: " +
+         (r.friction_treatment.empty() ? std::string("none in the vehicle") : r.friction_treatment);
+}
+
+constexpr const char* kEstimateNote =
+    "P95 estimate: the 95th percentile of the 5 s weighted RMS values estimated from the spectrum, not measured. "
+    "N_MV = 6·√(P95x² + P95y² + P95z²) (EN 12299) from those estimates. Wz: Sperling's index from the B-weighted "
+    "RMS (filter form). Dominant modes: each mode's share is the variance of its term alone over the output's "
+    "variance; the cross terms between modes make up the rest and may be negative, so a share can exceed 100 % "
+    "(a suspension force, which also follows the track directly, shows this most).";
+
+// Markdown and HTML write the same sections; `kind` says how a table is written.
+enum class Document { markdown, html };
+
+void write_table(std::ostream& out, const Table& t, Document d) {
+  if (d == Document::markdown) report::write_markdown_table(out, t);
+  else report::write_html_table(out, t);
+}
+
+// ---- the charts (HTML) ----
+
+std::vector<double> to_vector(const Eigen::VectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
+
+report::ChartSeries series(const std::string& label, std::vector<double> x, std::vector<double> y) {
+  report::ChartSeries s;
+  s.label = label;
+  s.x = std::move(x);
+  s.y = std::move(y);
+  return s;
+}
+
+std::vector<report::ReferenceLine> mode_lines(const RideResult& r) {
+  std::vector<report::ReferenceLine> lines;
+  for (size_t k = 0; k < r.modes.size(); ++k)
+    if (r.frequencies.size() && r.modes[k].frequency_hz >= r.frequencies[0] &&
+        r.modes[k].frequency_hz <= r.frequencies[r.frequencies.size() - 1])
+      lines.push_back({mode_number(k), r.modes[k].frequency_hz, true, ""});  // the modes table names them
+  return lines;
+}
+
+report::Chart input_chart(const RideResult& r, size_t speed) {
+  report::Chart c;
+  c.id = "input-psd";
+  c.title = "Track input at " + kmh(r.speeds[speed].speed);
+  c.x_label = "frequency (Hz)";
+  c.y_label = "PSD [m²/Hz]";  // brackets: a unit with parentheses in it reads as one
+  c.log_x = c.log_y = true;
+  const auto f = to_vector(r.frequencies);
+  for (size_t k = 0; k < r.speeds[speed].input_psd.size(); ++k)
+    c.series.push_back(series(input_name(r, k), f, to_vector(r.speeds[speed].input_psd[k])));
+  c.lines = mode_lines(r);
+  return c;
+}
+
+// The unit of a PSD of values in `unit`: "m²/Hz", "(m/s²)²/Hz", "N²/Hz".
+std::string psd_unit(const std::string& unit) {
+  return (unit.find('/') == std::string::npos ? unit + "²" : "(" + unit + ")²") + "/Hz";
+}
+
+// What outputs in `unit` are, for a chart's title.
+std::string quantity_word(const std::string& unit) {
+  return unit == "m/s²" ? "acceleration" : unit == "m/s" ? "velocity" : unit == "N" ? "force" : "displacement";
+}
+
+// The outputs charted together: one unit along one axis ("vertical acceleration").
+struct Group {
+  std::string unit;
+  RideAxis axis;
+};
+
+std::vector<Group> groups_of(const RideResult& r) {
+  std::vector<Group> groups;
+  for (const RideOutput& o : r.outputs)
+    if (std::none_of(groups.begin(), groups.end(),
+                     [&](const Group& g) { return g.unit == unit_of(o) && g.axis == o.axis; }))
+      groups.push_back({unit_of(o), o.axis});
+  return groups;
+}
+
+std::string capitalised(std::string word) {
+  if (!word.empty()) word[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(word[0])));
+  return word;
+}
+
+// The output PSDs of one group at one speed.
+report::Chart output_chart(const RideResult& r, size_t speed, const Group& g, int id) {
+  report::Chart c;
+  c.id = "output-psd-" + std::to_string(id);
+  c.title = capitalised(to_string(g.axis)) + " " + quantity_word(g.unit) + " spectra at " + kmh(r.speeds[speed].speed);
+  c.x_label = "frequency (Hz)";
+  c.y_label = "PSD [" + psd_unit(g.unit) + "]";
+  c.log_x = c.log_y = true;
+  const auto f = to_vector(r.frequencies);
+  for (size_t i = 0; i < r.outputs.size(); ++i) {
+    const RideOutputAtSpeed& o = r.speeds[speed].outputs[i];
+    if (unit_of(r.outputs[i]) != g.unit || r.outputs[i].axis != g.axis || o.unbounded ||
+        o.psd.size() != r.frequencies.size())
+      continue;
+    c.series.push_back(series(r.outputs[i].name, f, to_vector(o.psd)));
+  }
+  c.lines = mode_lines(r);
+  return c;
+}
+
+// An index against speed, one series per output that has it.
+report::Chart index_chart(const RideResult& r, RideAxis axis, const std::string& id, const std::string& title,
+                          const std::string& y_label, std::optional<double> (*index)(const RideOutputAtSpeed&)) {
+  report::Chart c;
+  c.id = id + "-" + to_string(axis);
+  c.title = title;
+  c.x_label = "speed (km/h)";
+  c.y_label = y_label;
+  for (size_t i = 0; i < r.outputs.size(); ++i) {
+    if (r.outputs[i].axis != axis) continue;
+    report::ChartSeries s;
+    s.label = r.outputs[i].name;
+    bool any = false;
+    for (const RideAtSpeed& at : r.speeds) {
+      const auto v = at.outputs[i].unbounded ? std::nullopt : index(at.outputs[i]);
+      s.x.push_back(at.speed * kKmh);
+      s.y.push_back(v ? *v : std::nan(""));
+      any = any || v.has_value();
+    }
+    if (any) c.series.push_back(s);
+  }
+  return c;
+}
+
+std::optional<double> weighted_of(const RideOutputAtSpeed& o) { return o.weighted_rms; }
+std::optional<double> wz_of(const RideOutputAtSpeed& o) { return o.sperling_wz; }
+
+report::Chart nmv_chart(const RideResult& r) {
+  report::Chart c;
+  c.id = "nmv";
+  c.title = "EN 12299 mean comfort N_MV per floor point, from the P95 estimates";
+  c.x_label = "speed (km/h)";
+  c.y_label = "N_MV estimate (–)";
+  if (r.speeds.empty()) return c;
+  for (size_t p = 0; p < r.speeds.front().comfort.size(); ++p) {
+    report::ChartSeries s;
+    s.label = point_text(r.speeds.front().comfort[p]);
+    for (const RideAtSpeed& at : r.speeds)
+      if (p < at.comfort.size()) s.x.push_back(at.speed * kKmh), s.y.push_back(at.comfort[p].nmv_estimate);
+    c.series.push_back(s);
+  }
+  return c;
+}
+
+// The weighted acceleration of a time-domain run and its window RMS values as steps.
+report::Chart history_chart(const RideSimulationResult& s, size_t i, double window) {
+  report::Chart c;
+  c.id = "history-" + std::to_string(i);
+  c.title = "Weighted acceleration: " + s.outputs[i].name;
+  c.x_label = "time (s)";
+  c.y_label = "weighted acceleration (m/s²)";
+  const RideHistory& h = s.histories[i];
+  report::ChartSeries trace = series("weighted acceleration", {}, {});
+  // At most some 4000 points drawn: every k-th sample (the page stays small; the CSV has all).
+  const size_t n = std::min<size_t>(h.weighted.size(), s.time.size());
+  const size_t every = std::max<size_t>(1, n / 4000);
+  for (size_t k = 0; k < n; k += every) trace.x.push_back(s.time[k]), trace.y.push_back(h.weighted[k]);
+  c.series.push_back(trace);
+  report::ChartSeries windows = series("RMS of each " + significant(window, 3) + " s window", {}, {});
+  const double t0 = s.time.size() ? s.time[0] : 0.0;
+  for (Eigen::Index w = 0; w < h.window_rms.size(); ++w) {
+    windows.x.push_back(t0 + w * window), windows.y.push_back(h.window_rms[w]);
+    windows.x.push_back(t0 + (w + 1) * window), windows.y.push_back(h.window_rms[w]);
+  }
+  c.series.push_back(windows);
+  if (h.p95) c.lines.push_back({"P95", *h.p95, false, "95th percentile of the window RMS values"});
+  return c;
+}
+
+// ---- the documents ----
+
+void write_speed_sections(std::ostream& out, const Page& p, Document d) {
+  const RideResult& r = p.r;
+  const bool md = d == Document::markdown;
+  for (size_t s = 0; s < r.speeds.size(); ++s) {
+    const RideAtSpeed& at = r.speeds[s];
+    out << (md ? "\n## " : "<h2>") << "At " << kmh(at.speed) << (md ? "\n\n" : "</h2>\n");
+    write_table(out, indices_table(r, at), d);
+    if (!at.comfort.empty()) {
+      out << (md ? "\n" : "");
+      write_table(out, comfort_table(at.comfort, "N_MV (estimate)"), d);
+    }
+  }
+}
+
+void write_time_domain(std::ostream& out, const Page& p, Document d) {
+  if (!p.simulated) return;
+  const bool md = d == Document::markdown;
+  const RideSimulationResult& s = *p.simulated;
+  out << (md ? "\n## Time-domain run\n\n" : "<h2>Time-domain run</h2>\n");
+  write_table(out, simulated_table(s), d);
+  if (!s.comfort.empty()) {
+    out << (md ? "\n" : "");
+    write_table(out, comfort_table(s.comfort, "N_MV"), d);
+  }
+  if (d == Document::html)
+    for (size_t i = 0; i < s.outputs.size() && i < s.histories.size(); ++i)
+      if (s.histories[i].weighted.size() > 0) out << report::svg_chart(history_chart(s, i, s.window));
+  if (p.checks) {
+    out << (md ? "\n### FFT checks\n\n" : "<h3>FFT checks</h3>\n");
+    write_table(out, checks_table(*p.checks, s), d);
+  }
+  for (const std::string& n : s.notes) out << (md ? "\n- " : "<p class=note>") << n << (md ? "\n" : "</p>\n");
+}
+
+void write_markdown(std::ostream& out, const Page& p) {
+  const RideResult& r = p.r;
+  out << "# Ride: " << p.title << "\n\n" << method_text(r) << ".\n";
+  if (!r.modes.empty()) {
+    out << "\n## Modes\n\n";
+    report::write_markdown_table(out, modes_table(r));
+  }
+  write_speed_sections(out, p, Document::markdown);
+  out << "\n" << kEstimateNote << "\n";
+  for (const std::string& n : r.notes) out << "\n- " << n << "\n";
+  write_time_domain(out, p, Document::markdown);
+}
+
+void write_html(std::ostream& out, const Page& p) {
+  const RideResult& r = p.r;
+  using report::html_escape;
+  report::write_html_head(out, "Ride: " + p.title);
+  out << "<h1>Ride: " << html_escape(p.title) << "</h1>\n<p>" << html_escape(method_text(r)) << ".</p>\n";
+  for (const std::string& n : r.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
+  if (!r.speeds.empty()) {
+    out << "<h2>Indices against speed</h2>\n";
+    // One chart per axis, so that each holds a few floor points.
+    for (RideAxis axis : {RideAxis::vertical, RideAxis::lateral, RideAxis::longitudinal}) {
+      const std::string along = to_string(axis);
+      const report::Chart weighted =
+          index_chart(r, axis, "weighted-rms", "EN 12299 weighted RMS, " + along + " (W" +
+                                                   (axis == RideAxis::vertical ? "b" : "d") + ")",
+                      "weighted RMS (m/s²)", weighted_of);
+      if (weighted.series.empty()) continue;
+      out << report::svg_chart(weighted);
+      const report::Chart wz = index_chart(r, axis, "wz", "Sperling's ride index Wz, " + along, "Wz (–)", wz_of);
+      if (!wz.series.empty()) out << report::svg_chart(wz);
+    }
+    if (!r.speeds.front().comfort.empty()) out << report::svg_chart(nmv_chart(r));
+    // The spectra at the highest speed: the one a ride is signed off at.
+    const size_t top = r.speeds.size() - 1;
+    out << "<h2>Spectra at " << html_escape(kmh(r.speeds[top].speed)) << "</h2>\n";
+    if (!r.speeds[top].input_psd.empty()) out << report::svg_chart(input_chart(r, top));
+    const std::vector<Group> groups = groups_of(r);
+    for (size_t g = 0; g < groups.size(); ++g) {
+      const report::Chart c = output_chart(r, top, groups[g], static_cast<int>(g));
+      if (!c.series.empty()) out << report::svg_chart(c);
+    }
+    out << "<p class=note>Dotted vertical lines: the natural frequencies of the modes (numbered as in the table "
+           "below).</p>\n";
+  }
+  if (!r.modes.empty()) {
+    out << "<h2>Modes</h2>\n";
+    report::write_html_table(out, modes_table(r));
+  }
+  write_speed_sections(out, p, Document::html);
+  out << "<p class=note>" << html_escape(kEstimateNote) << "</p>\n";
+  write_time_domain(out, p, Document::html);
+  report::write_html_footer(out, "ride", p.provenance);
+}
+
+void write_text(std::ostream& out, const Page& p) {
+  const RideResult& r = p.r;
+  out << "Ride: " << p.title << "\n" << method_text(r) << "\n";
+  if (!r.modes.empty()) {
+    out << "\nModes:\n";
+    write_text_table(out, modes_table(r));
+  }
+  for (const RideAtSpeed& at : r.speeds) {
+    out << "\nAt " << kmh(at.speed) << ":\n";
+    write_text_table(out, indices_table(r, at));
+    if (!at.comfort.empty()) write_text_table(out, comfort_table(at.comfort, "N_MV (estimate)"));
+  }
+  out << "\n" << kEstimateNote << "\n";
+  for (const std::string& n : r.notes) out << "Note: " << n << "\n";
+  if (p.simulated) {
+    out << "\nTime-domain run:\n";
+    write_text_table(out, simulated_table(*p.simulated));
+    if (!p.simulated->comfort.empty()) write_text_table(out, comfort_table(p.simulated->comfort, "N_MV"));
+    if (p.checks) {
+      out << "FFT checks:\n";
+      write_text_table(out, checks_table(*p.checks, *p.simulated));
+    }
+    for (const std::string& n : p.simulated->notes) out << "Note: " << n << "\n";
+  }
+}
+
+// ---- CSV and JSON ----
+
+std::string csv_value(double v) { return std::isfinite(v) ? significant(v, 10) : ""; }
+std::string csv_optional(const std::optional<double>& v) { return v ? csv_value(*v) : ""; }
+
+// Whether an output has the comfort indices (weighted RMS, P95, Wz): a point's acceleration.
+bool has_comfort_indices(const RideOutput& o) {
+  return o.kind == RideOutput::Kind::point && o.quantity == ResponseQuantity::acceleration;
+}
+
+// One row per speed: for each output its RMS and, for a floor acceleration, its weighted RMS,
+// P95 estimate and Wz, each column headed with its unit; then N_MV per floor point. An unbounded
+// RMS is the word, its other columns blank.
+void write_csv(std::ostream& out, const RideResult& r) {
+  using report::csv_field;
+  using report::csv_heading;
+  out << csv_heading("speed", "km/h");
+  for (const RideOutput& o : r.outputs) {
+    out << "," << csv_field(csv_heading(o.name + " rms", unit_of(o)));
+    if (has_comfort_indices(o))
+      out << "," << csv_field(csv_heading(o.name + " weighted rms", "m/s²")) << ","
+          << csv_field(csv_heading(o.name + " p95 estimate", "m/s²")) << "," << csv_field(o.name + " sperling wz");
+  }
+  if (!r.speeds.empty())
+    for (const RideComfortAtPoint& c : r.speeds.front().comfort) out << "," << csv_field("nmv estimate " + point_text(c));
+  out << "\n";
+  for (const RideAtSpeed& at : r.speeds) {
+    out << csv_value(at.speed * kKmh);
+    for (size_t i = 0; i < r.outputs.size() && i < at.outputs.size(); ++i) {
+      const RideOutputAtSpeed& o = at.outputs[i];
+      const bool comfort = has_comfort_indices(r.outputs[i]);
+      if (o.unbounded) {
+        out << (comfort ? ",unbounded,,," : ",unbounded");
+        continue;
+      }
+      out << "," << csv_value(o.rms);
+      if (comfort)
+        out << "," << csv_optional(o.weighted_rms) << "," << csv_optional(o.p95_estimate) << ","
+            << csv_optional(o.sperling_wz);
+    }
+    for (const RideComfortAtPoint& c : at.comfort) out << "," << csv_value(c.nmv_estimate);
+    out << "\n";
+  }
+}
+
+nlohmann::json optional_json(const std::optional<double>& v) {
+  return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+nlohmann::json vector_json(const Eigen::VectorXd& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (Eigen::Index k = 0; k < v.size(); ++k) a.push_back(std::isfinite(v[k]) ? nlohmann::json(v[k]) : nullptr);
+  return a;
+}
+
+nlohmann::json output_json(const RideOutput& o) {
+  nlohmann::json j = {{"name", o.name}, {"kind", to_string(o.kind)}, {"axis", to_string(o.axis)}, {"unit", unit_of(o)}};
+  if (o.kind == RideOutput::Kind::point) {
+    j["body"] = o.body;
+    j["point_m"] = {o.point.x(), o.point.y(), o.point.z()};
+    j["quantity"] = to_string(o.quantity);
+  } else {
+    j["element"] = o.element;
+  }
+  return j;
+}
+
+nlohmann::json comfort_json(const std::vector<RideComfortAtPoint>& comfort, const char* key) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const RideComfortAtPoint& c : comfort) {
+    nlohmann::json missing = nlohmann::json::array();
+    for (RideAxis x : c.missing_axes) missing.push_back(to_string(x));
+    a.push_back({{"body", c.body},
+                 {"point_m", {c.point.x(), c.point.y(), c.point.z()}},
+                 {key, c.nmv_estimate},
+                 {"missing_axes", missing}});
+  }
+  return a;
+}
+
+nlohmann::json at_speed_json(const RideResult& r, const RideAtSpeed& at) {
+  nlohmann::json outputs = nlohmann::json::array();
+  for (size_t i = 0; i < r.outputs.size() && i < at.outputs.size(); ++i) {
+    const RideOutputAtSpeed& o = at.outputs[i];
+    nlohmann::json j = {{"name", r.outputs[i].name}, {"unbounded", o.unbounded}};
+    if (!o.unbounded) {
+      j["rms_" + key_suffix(r.outputs[i])] = o.rms;
+      j["weighted_rms_m_s2"] = optional_json(o.weighted_rms);
+      j["p95_estimate_m_s2"] = optional_json(o.p95_estimate);
+      j["sperling_wz"] = optional_json(o.sperling_wz);
+      nlohmann::json modes = nlohmann::json::array();
+      for (const ModalContribution& m : o.modes)
+        modes.push_back({{"mode", m.mode}, {"variance", m.variance}, {"share", m.share}});
+      j["modes"] = modes;
+      j["cross_term_variance"] = o.cross_term_variance;
+      if (o.psd.size() > 0) j["psd_" + psd_key_suffix(r.outputs[i])] = vector_json(o.psd);
+    }
+    outputs.push_back(j);
+  }
+  nlohmann::json inputs = nlohmann::json::array();
+  for (size_t k = 0; k < at.input_psd.size(); ++k)
+    inputs.push_back({{"name", input_name(r, k)}, {"psd_m2_per_hz", vector_json(at.input_psd[k])}});
+  return {{"speed_m_s", at.speed},
+          {"speed_kmh", at.speed * kKmh},
+          {"outputs", outputs},
+          {"comfort", comfort_json(at.comfort, "nmv_estimate")},
+          {"inputs", inputs}};
+}
+
+nlohmann::json summary_json(const AnalysisSummary& s) {
+  nlohmann::json checks = nlohmann::json::array();
+  for (const Check& c : s.checks)
+    checks.push_back({{"name", c.name},
+                      {"value", std::isfinite(c.value) ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
+                      {"limit", std::isfinite(c.limit) ? nlohmann::json(c.limit) : nlohmann::json(nullptr)},
+                      {"passed", c.passed}});
+  return {{"analysis", s.analysis}, {"method", s.method}, {"checks", checks}};
+}
+
+nlohmann::json simulated_json(const RideSimulationResult& s, const RideFftChecks* c) {
+  nlohmann::json outputs = nlohmann::json::array();
+  for (size_t i = 0; i < s.outputs.size() && i < s.histories.size(); ++i) {
+    const RideHistory& h = s.histories[i];
+    outputs.push_back({{"name", s.outputs[i].name},
+                       {"rms_" + key_suffix(s.outputs[i]), h.rms},
+                       {"weighted_rms_m_s2", optional_json(h.weighted_rms)},
+                       {"p95_m_s2", optional_json(h.p95)},
+                       {"sperling_wz", optional_json(h.sperling_wz)},
+                       {"window_rms_m_s2", vector_json(h.window_rms)}});
+  }
+  nlohmann::json j = {{"outputs", outputs}, {"comfort", comfort_json(s.comfort, "nmv")}, {"notes", s.notes},
+                      {"duration_s", s.time.size() > 1 ? s.time[s.time.size() - 1] - s.time[0] : 0.0}};
+  if (c)
+    j["fft_checks"] = {{"exact_bin_error", optional_json(c->exact_bin_error)},
+                       {"fraction_outside_band", c->fraction_outside_band},
+                       {"rms_difference", c->rms_difference},
+                       {"summary", summary_json(c->summary)}};
+  return j;
+}
+
+// One member a line, and each speed on a line of its own (its spectra are most of the document):
+// readable and diffable without one number a line.
+void write_json(std::ostream& out, const Page& p) {
+  using nlohmann::json;
+  const RideResult& r = p.r;
+  auto member = [&](const char* key, const json& value, bool first = false) {
+    out << (first ? "{\n  " : ",\n  ") << json(key).dump() << ": " << value.dump();
+  };
+  json modes = json::array();
+  for (const RideMode& m : r.modes) modes.push_back({{"name", m.name}, {"frequency_hz", m.frequency_hz}});
+  json outputs = json::array();
+  for (const RideOutput& o : r.outputs) outputs.push_back(output_json(o));
+  member("title", p.title, true);
+  member("friction_treatment", r.friction_treatment);
+  member("grid_error_estimate", r.grid_error_estimate);
+  member("notes", r.notes);
+  member("summary", summary_json(r.summary));
+  member("modes", modes);
+  member("outputs", outputs);
+  member("time_domain", p.simulated ? simulated_json(*p.simulated, p.checks) : json(nullptr));
+  member("frequencies_hz", vector_json(r.frequencies));
+  out << ",\n  \"speeds\": [";
+  for (size_t k = 0; k < r.speeds.size(); ++k) out << (k ? ",\n    " : "\n    ") << at_speed_json(r, r.speeds[k]).dump();
+  out << (r.speeds.empty() ? "]" : "\n  ]") << "\n}\n";
+}
+
+}  // namespace
+
+void write_ride(std::ostream& out, const RideResult& result, OutputFormat format, const RideSimulationResult* simulated,
+                const RideFftChecks* checks) {
+  write_ride(out, result, format, "", Provenance{}, simulated, checks);
+}
+
+void write_ride(std::ostream& out, const RideResult& result, OutputFormat format, const std::string& title,
+                const Provenance& provenance, const RideSimulationResult* simulated, const RideFftChecks* checks) {
+  const Page page{result, title.empty() ? std::string("vehicle") : title, provenance, simulated, checks};
+  switch (format) {
+    case OutputFormat::table:
+      write_text(out, page);
+      break;
+    case OutputFormat::csv:
+      write_csv(out, result);
+      break;
+    case OutputFormat::json:
+      write_json(out, page);
+      break;
+    case OutputFormat::markdown:
+      write_markdown(out, page);
+      break;
+    case OutputFormat::html:
+      write_html(out, page);
+      break;
+    default:
+      throw std::invalid_argument(report::unwritten_format("write_ride", "table, csv, json, markdown or html", format));
+  }
 }
 
 }  // namespace railmodal

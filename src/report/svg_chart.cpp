@@ -79,7 +79,15 @@ std::pair<double, double> x_range(const Chart& chart) {
   if (x1 > x0) return {x0, x1};
   x0 = std::numeric_limits<double>::infinity(), x1 = -x0;
   for (const auto& s : chart.series)
-    for (double x : s.x) x0 = std::min(x0, x), x1 = std::max(x1, x);
+    for (double x : s.x)
+      if (!chart.log_x || x > 0.0) x0 = std::min(x0, x), x1 = std::max(x1, x);
+  if (chart.log_x) {
+    if (!std::isfinite(x0)) return {1.0, 10.0};
+    x0 = std::pow(10.0, std::floor(std::log10(x0) + 1e-9));
+    x1 = std::pow(10.0, std::ceil(std::log10(x1) - 1e-9));
+    if (!(x1 > x0)) x1 = 10.0 * x0;
+    return {x0, x1};
+  }
   if (!(x1 > x0)) x0 -= 1.0, x1 += 1.0;
   return {x0, x1};
 }
@@ -164,11 +172,11 @@ struct Plot {
   double left = 78, right = 20, top = 34, bottom = 48;
   double width, height;  // of the plot area
   double x0, x1, y0, y1;
-  bool log_y;
+  bool log_y, log_x;
   std::vector<LegendEntry> legend;
   std::vector<std::vector<size_t>> legend_rows;
 
-  explicit Plot(const Chart& chart) : log_y(chart.log_y), legend(legend_entries(chart)) {
+  explicit Plot(const Chart& chart) : log_y(chart.log_y), log_x(chart.log_x), legend(legend_entries(chart)) {
     for (const auto& l : chart.lines) {
       if (!l.label.empty() && l.vertical) top = 50;  // room for the labels above the plot
       if (!l.label.empty() && !l.vertical) right = std::max(right, 20 + text_width(l.label, 11));
@@ -183,7 +191,10 @@ struct Plot {
   }
   double legend_top() const { return top + height + bottom; }
   double legend_height() const { return legend_rows.empty() ? 0.0 : kLegendRow * legend_rows.size() + 8; }
-  double X(double x) const { return left + (x - x0) / (x1 - x0) * width; }
+  double X(double x) const {
+    if (log_x) return left + (std::log10(std::max(x, x0)) - std::log10(x0)) / (std::log10(x1) - std::log10(x0)) * width;
+    return left + (x - x0) / (x1 - x0) * width;
+  }
   double Y(double y) const {
     if (log_y) {
       const double v = std::log10(std::max(y, y0));
@@ -195,7 +206,13 @@ struct Plot {
 
 // Ticks and grid, and the axis labels.
 void write_axes(std::ostream& s, const Chart& chart, const Plot& p) {
-  for (double t : linear_ticks(p.x0, p.x1)) {
+  std::vector<double> xticks;
+  if (chart.log_x) {
+    for (double d = std::log10(p.x0); d <= std::log10(p.x1) + 1e-9; d += 1.0) xticks.push_back(std::pow(10.0, d));
+  } else {
+    xticks = linear_ticks(p.x0, p.x1);
+  }
+  for (double t : xticks) {
     s << "<line x1=\"" << p.X(t) << "\" y1=\"" << p.top << "\" x2=\"" << p.X(t) << "\" y2=\"" << p.top + p.height
       << "\" stroke=\"#e4e4e4\"/><text x=\"" << p.X(t) << "\" y=\"" << p.top + p.height + 16
       << "\" text-anchor=\"middle\">" << number(t) << "</text>\n";
@@ -256,7 +273,7 @@ void write_series(std::ostream& s, const Chart& chart, size_t k, const Plot& p) 
     points.clear();
   };
   for (size_t i = 0; i < series.x.size(); ++i) {
-    if (!std::isfinite(series.y[i]) || (chart.log_y && !(series.y[i] > 0.0))) {
+    if (!std::isfinite(series.y[i]) || (chart.log_y && !(series.y[i] > 0.0)) || (chart.log_x && !(series.x[i] > 0.0))) {
       flush();
       continue;
     }

@@ -40,6 +40,9 @@ struct Chart {
   /// "speed from 10 km/h (dark) to 500 km/h (light)". "": no scale in the legend.
   std::string shade_key;
   bool log_y = false;
+  /// A logarithmic x axis (spectra against frequency): whole decades from the data's positive
+  /// x unless x_min and x_max are given; points at x ≤ 0 are left out.
+  bool log_x = false;
   double x_min = 0.0, x_max = 0.0;  ///< equal: from the data
   double y_min = 0.0, y_max = 0.0;  ///< equal: from the data
   int width = 1000, height = 400;   ///< of the viewBox, without the legend (which adds its rows)

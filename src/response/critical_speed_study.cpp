@@ -9,6 +9,7 @@
 
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
+#include "model/scene_fit.hpp"
 #include "shortest_text.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -145,6 +146,7 @@ void summarise(CriticalSpeedStudy* study, double sweep_seconds, double peak_seco
 
 CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle,
                                          const std::function<void(double)>& progress) {
+  model::refuse_ride_only_scene(scene, "critical speeds");
   CriticalSpeedStudy study;
   StageClock clock(&study.summary);
   study.scene = scene;

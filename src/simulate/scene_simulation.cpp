@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "model/scene_fit.hpp"
 #include "simulate/history_summary.hpp"
 #include "simulate/record_memory.hpp"
 #include "simulate/record_spectrum.hpp"
@@ -150,6 +151,7 @@ TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle) {
 
 TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle, const std::vector<HistorySink*>& sinks) {
   if (!scene.simulation) throw std::invalid_argument("the scene has no [simulation] table");
+  model::refuse_ride_only_scene(scene, "simulations of [simulation]");
   const SimulationSpec& spec = *scene.simulation;
   const LinearSystem system = scene_system(scene, vehicle);
   check_scene_fits(scene, system);

@@ -7,6 +7,8 @@
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/hunting.hpp"
+#include "railmodal/ride.hpp"
+#include "railmodal/scene.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/study.hpp"
 #include "response/golden_section.hpp"
@@ -235,6 +237,47 @@ void hunting_speed(const Vehicle& vehicle, const HuntingOptions& options, Varian
   }
 }
 
+// The ride on the scene's random track, when the scene has one: per output the largest RMS and
+// Sperling Wz over the ride's speeds, and the largest N_MV estimate (the spectra are not kept).
+void ride_summary(const StudyVariant& variant, VariantResult* r) {
+  const Scene& scene = variant.scene;
+  if (!scene.irregularity || !scene.ride) return;
+  const LinearSystem system = assemble(variant.vehicle, scene.dofs);
+  check_scene_fits(scene, system);
+  RideOptions options = scene.ride->options;
+  options.keep_spectra = false;  // the metrics need the indices only
+  options.threads = 1;           // the variants are spread over the threads
+  const std::vector<RideOutput> outputs =
+      scene.ride->outputs.empty() ? default_ride_outputs(system) : scene.ride->outputs;
+  const RideResult ride = solve_ride(system, *scene.irregularity, outputs, options);
+  r->ride_evaluated = true;
+  for (size_t i = 0; i < ride.outputs.size(); ++i) {
+    VariantResult::RideSummary o;
+    o.output = ride.outputs[i].name;
+    o.unit = unit_of(ride.outputs[i]);
+    for (const RideAtSpeed& at : ride.speeds) {
+      const RideOutputAtSpeed& a = at.outputs[i];
+      o.unbounded = o.unbounded || a.unbounded;
+      if (a.unbounded) continue;
+      o.max_rms = std::max(o.max_rms, a.rms);
+      if (a.sperling_wz) o.max_wz = std::max(o.max_wz.value_or(*a.sperling_wz), *a.sperling_wz);
+    }
+    if (o.unbounded) o.max_rms = 0.0, o.max_wz.reset();
+    r->ride.push_back(o);
+  }
+  for (const RideAtSpeed& at : ride.speeds)
+    for (const RideComfortAtPoint& c : at.comfort) r->max_nmv = std::max(r->max_nmv.value_or(c.nmv_estimate), c.nmv_estimate);
+}
+
+// The modes and statics of a variant whose scene has no periodic source (a ride scene): no
+// critical-speed study to take them from.
+void summarise_without_sources(const StudyVariant& variant, VariantResult* r) {
+  const LinearSystem system = assemble(variant.vehicle, variant.scene.dofs);
+  summarise_modes(solve_modes(system), r);
+  static_deflections(variant.vehicle, system, r);
+  metacentric_height(variant.vehicle, r);
+}
+
 // The analysis, method and checks of an evaluation (its stages are timed already).
 void summarise_evaluation(VariantResult* r) {
   AnalysisSummary& s = r->summary;
@@ -245,6 +288,7 @@ void summarise_evaluation(VariantResult* r) {
   s.checks.push_back({"modes", static_cast<double>(r->modes.size()), kNoLimit, true});
   s.checks.push_back({"critical speeds", static_cast<double>(r->critical_speeds.size()), kNoLimit, true});
   if (r->hunting_speed) s.checks.push_back({"hunting speed evaluated", 1.0, kNoLimit, true});
+  if (r->ride_evaluated) s.checks.push_back({"ride outputs", static_cast<double>(r->ride.size()), kNoLimit, true});
   if (r->deflections_checked) {
     const double kept = static_cast<double>(std::count_if(r->deflections.begin(), r->deflections.end(),
                                                           [](const VariantResult::DeflectionCheck& c) { return c.kept(); }));
@@ -280,6 +324,17 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
   r.parameters = variant.parameters;
   StageClock clock(&r.summary);
   try {
+    if (variant.scene.sources.empty() && variant.scene.irregularity) {
+      // A ride scene: no periodic source, so no critical speeds, peaks or dynamic deflections.
+      summarise_without_sources(variant, &r);
+      clock.lap("modes");
+      ride_summary(variant, &r);
+      clock.lap("ride");
+      if (hunting) hunting_speed(variant.vehicle, *hunting, &r);
+      clock.lap("hunting stability");
+      summarise_evaluation(&r);
+      return r;
+    }
     // One assembly and one modal solve serve everything: the study's own.
     CriticalSpeedStudy study;
     try {
@@ -300,6 +355,8 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
     clock.lap("deflection checks");
     if (hunting) hunting_speed(variant.vehicle, *hunting, &r);
     clock.lap("hunting stability");
+    ride_summary(variant, &r);
+    clock.lap("ride");
   } catch (const NumericalError& e) {
     if (r.failure.empty()) r.failure = std::string("numerical failure: ") + e.what();
   } catch (const InputError& e) {

@@ -24,6 +24,33 @@ bool split_peak(const std::string& metric, std::string* dof, std::string* quanti
   return !dof->empty() && (*quantity == "displacement" || *quantity == "velocity" || *quantity == "acceleration");
 }
 
+constexpr const char* kRmsAcceleration = "rms_acceleration:";
+constexpr size_t kRmsAccelerationLength = 17;
+
+// The ride's metrics: the largest Wz or N_MV over outputs (points) and speeds, or the largest RMS
+// of a named output; +∞ where the ride is unbounded; none without a ride.
+std::optional<double> ride_metric(const VariantResult& r, const std::string& metric) {
+  if (!r.ride_evaluated) return std::nullopt;
+  constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+  if (metric == "max_nmv") return r.max_nmv;
+  if (metric == "max_wz") {
+    std::optional<double> largest;
+    for (const auto& o : r.ride)
+      if (o.unbounded) largest = kUnbounded;
+      else if (o.max_wz) largest = std::max(largest.value_or(*o.max_wz), *o.max_wz);
+    return largest;
+  }
+  const std::string output = metric.substr(kRmsAccelerationLength);
+  for (const auto& o : r.ride)
+    if (o.output == output) return o.unbounded ? kUnbounded : o.max_rms;
+  return std::nullopt;
+}
+
+bool is_ride_metric(const std::string& metric) {
+  return metric == "max_wz" || metric == "max_nmv" ||
+         (starts_with(metric, kRmsAcceleration) && metric.size() > kRmsAccelerationLength);
+}
+
 bool is_rotation(const std::string& dof) {
   for (const char* m : {".roll", ".pitch", ".yaw"})
     if (dof.size() > std::string(m).size() && dof.compare(dof.size() - std::string(m).size(), std::string::npos, m) == 0)
@@ -49,7 +76,8 @@ bool is_metric(const std::string& name) {
          (starts_with(metric, "dynamic_deflection_ratio:") && metric.size() > 25) ||
          (starts_with(metric, "period:") && metric.size() > 7) ||
          (starts_with(metric, "critical_speed:") && metric.size() > 15) ||
-         (starts_with(metric, "static_deflection:") && metric.size() > 18) || split_peak(metric, &dof, &quantity);
+         (starts_with(metric, "static_deflection:") && metric.size() > 18) || split_peak(metric, &dof, &quantity) ||
+         is_ride_metric(metric);
 }
 
 std::optional<double> metric_value(const VariantResult& r, const std::string& name) {
@@ -76,6 +104,7 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
   }
   if (metric == "metacentric_height") return r.metacentric_height;
   if (metric == "hunting_speed") return r.hunting_speed;
+  if (is_ride_metric(metric)) return ride_metric(r, metric);
   if (metric == "dynamic_deflection_ratio" || starts_with(metric, "dynamic_deflection_ratio:")) {
     // The worst check (of the named element); +∞ for an unbounded resonance. No value when
     // nothing was checked.
@@ -106,7 +135,8 @@ const char* metric_unit(const std::string& name) {
   if (metric == "lowest_critical_speed" || metric == "hunting_speed" || starts_with(metric, "critical_speed:"))
     return "m/s";
   if (starts_with(metric, "period:")) return "s";
-  if (starts_with(metric, "dynamic_deflection_ratio")) return "";
+  if (starts_with(metric, "dynamic_deflection_ratio") || metric == "max_wz" || metric == "max_nmv") return "";
+  if (starts_with(metric, kRmsAcceleration)) return "m/s^2";
   std::string dof, quantity;
   if (split_peak(metric, &dof, &quantity)) {
     const bool rotation = is_rotation(dof);
@@ -129,7 +159,7 @@ DisplayUnit display_unit(const std::string& metric) {
 
 bool infinite_is_unbounded(const std::string& metric) {
   const std::string m = canonical_metric(metric);
-  return starts_with(m, "peak:") || starts_with(m, "dynamic_deflection");
+  return starts_with(m, "peak:") || starts_with(m, "dynamic_deflection") || is_ride_metric(m);
 }
 
 std::string title(const std::string& metric) {
@@ -145,6 +175,9 @@ std::string title(const std::string& metric) {
   if (starts_with(m, "static_deflection:")) return "static deflection of " + m.substr(18);
   if (starts_with(m, "dynamic_deflection_ratio:")) return "dynamic deflection of " + m.substr(25) + " / permissible";
   if (split_peak(m, &dof, &quantity)) return "peak " + quantity + " of " + dof;
+  if (m == "max_wz") return "largest Sperling Wz of the ride";
+  if (m == "max_nmv") return "largest N_MV (estimate) of the ride";
+  if (starts_with(m, kRmsAcceleration)) return "largest RMS acceleration at " + m.substr(kRmsAccelerationLength);
   return metric;
 }
 

@@ -47,6 +47,12 @@ int run(CriticalSpeedCommandOptions o) {
     OutputFiles outputs;
     std::ostream& out = outputs.open(o.output);
     Scene scene = load_scene(o.scene);
+    if (scene.irregularity && scene.sources.empty()) {
+      std::cerr << o.scene << ": error: the scene's only source is a random track irregularity, which critical speeds "
+                << "do not take (they are for periodic sources): its ride on random track is 'railmodal ride "
+                << o.scene << "'\n";
+      return kInput;
+    }
     if (scene.sources.empty() || scene.max_speed <= 0.0) {
       std::cerr << o.scene << ": error: the scene has no [speed] range and [[source]]: nothing to sweep"
                 << (scene.simulation ? " (it is a simulation scene: use 'railmodal simulate' or 'railmodal fft-check')" : "")

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -15,6 +16,20 @@
 #include "commands.hpp"
 
 namespace railmodal::cli {
+
+OutputFormat report_format(const std::string& word, const std::string& output) {
+  if (!word.empty()) return *output_format_from_string(word);
+  const size_t dot = output.rfind('.'), slash = output.find_last_of("/\\");
+  if (output == "-" || dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return OutputFormat::table;
+  std::string ext = output.substr(dot + 1);
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == "html" || ext == "htm") return OutputFormat::html;
+  if (ext == "csv") return OutputFormat::csv;
+  if (ext == "json") return OutputFormat::json;
+  if (ext == "md" || ext == "markdown") return OutputFormat::markdown;
+  return OutputFormat::table;
+}
 namespace {
 
 namespace fs = std::filesystem;

@@ -7,7 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "railmodal/output_format.hpp"
+
 namespace railmodal::cli {
+
+/// A report's format: `word` (--format, checked by CLI11) when given; without it, what the
+/// output file's extension says (".html" writes HTML, not the text table into an .html file;
+/// .csv, .json, .md), else the text table.
+OutputFormat report_format(const std::string& word, const std::string& output);
 
 /// An output that cannot be written (exit code kOutput) or that the command line names wrongly,
 /// such as an input of the run (kUsage). main() prints the message and exits with the code.

@@ -30,7 +30,10 @@ int load(const SimulateOptions& o, Scene* scene, Vehicle* vehicle) {
     return kUsage;
   }
   if (!scene->simulation) {
-    std::cerr << o.scene << ": error: the scene has no [simulation] table\n";
+    std::cerr << o.scene << ": error: the scene has no [simulation] table"
+              << (scene->ride ? " (it is a ride scene: 'railmodal ride " + o.scene + "' runs its [ride.simulation])"
+                              : std::string())
+              << "\n";
     return kInput;
   }
   *vehicle = load_vehicle(scene->vehicle_file);

@@ -114,24 +114,8 @@ HuntingOptions hunting_options(const StabilityOptions& o) {
   return h;
 }
 
-// The format: --format's word (CLI11 checked it); without it, what the output file's extension
-// says (".html" writes HTML, not the text table into an .html file), else the text table.
-OutputFormat format_of(const StabilityOptions& o) {
-  if (!o.format.empty()) return *output_format_from_string(o.format);
-  const size_t dot = o.output.rfind('.'), slash = o.output.find_last_of("/\\");
-  if (o.output == "-" || dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return OutputFormat::table;
-  std::string ext = o.output.substr(dot + 1);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == "html" || ext == "htm") return OutputFormat::html;
-  if (ext == "csv") return OutputFormat::csv;
-  if (ext == "json") return OutputFormat::json;
-  if (ext == "md" || ext == "markdown") return OutputFormat::markdown;
-  return OutputFormat::table;
-}
-
 int run(const StabilityOptions& o) {
-  const OutputFormat format = format_of(o);
+  const OutputFormat format = report_format(o.format, o.output);
   HuntingOptions options;
   try {
     options = hunting_options(o);

@@ -1,0 +1,184 @@
+// The ride report on results built by hand: every format says each index with its unit, an
+// unbounded output as a word (never inf or NaN), the P95 from a spectrum as an estimate, and
+// the time-domain run with its FFT checks when there is one.
+#include "railmodal/ride_report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace railmodal {
+namespace {
+
+// Two outputs (a floor acceleration, a spring force) at two speeds; the force unbounded at the
+// first speed; one floor point with its lateral axis missing.
+RideResult hand_built() {
+  RideResult r;
+  RideOutput floor;
+  floor.name = "floor over bogie 1, vertical";
+  floor.body = "body";
+  floor.point = Eigen::Vector3d(9.5, 0.0, 1.2);
+  RideOutput force;
+  force.name = "secondary spring force";
+  force.kind = RideOutput::Kind::element_force;
+  force.element = "secondary 1";
+  r.outputs = {floor, force};
+  r.frequencies = Eigen::VectorXd::LinSpaced(5, 0.5, 20.0);
+  r.modes = {{"body bounce", 1.1}, {"body pitch", 1.4}};
+  r.friction_treatment = "none in the vehicle";
+  r.grid_error_estimate = 2e-4;
+  r.inputs = {"ORE B176 low, vertical level"};
+  for (double speed : {100 / 3.6, 200 / 3.6}) {
+    RideAtSpeed at;
+    at.speed = speed;
+    RideOutputAtSpeed a;
+    a.rms = 0.25 * speed / 50;
+    a.weighted_rms = 0.2 * speed / 50;
+    a.sperling_wz = 2.1;
+    a.p95_estimate = 0.23 * speed / 50;
+    a.modes = {{0, 0.8, 0.8}, {1, 0.15, 0.15}};
+    a.cross_term_variance = 0.05;
+    a.psd = Eigen::VectorXd::Constant(5, 1e-3);
+    RideOutputAtSpeed f;
+    f.unbounded = speed < 30;
+    f.rms = f.unbounded ? 0.0 : 1234.4;
+    f.psd = Eigen::VectorXd::Constant(5, 100.0);
+    at.outputs = {a, f};
+    RideComfortAtPoint c;
+    c.body = "body";
+    c.point = floor.point;
+    c.nmv_estimate = 6 * *a.p95_estimate;
+    c.missing_axes = {RideAxis::longitudinal, RideAxis::lateral};
+    at.comfort = {c};
+    at.input_psd = {Eigen::VectorXd::Constant(5, 1e-6)};
+    r.speeds.push_back(at);
+  }
+  return r;
+}
+
+std::string written(const RideResult& r, OutputFormat format, const RideSimulationResult* s = nullptr,
+                    const RideFftChecks* c = nullptr) {
+  std::ostringstream out;
+  write_ride(out, r, format, "hand-built coach", Provenance{}, s, c);
+  return out.str();
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(RideReport, TableSaysEveryIndexAndTheUnbounded) {
+  const std::string t = written(hand_built(), OutputFormat::table);
+  EXPECT_TRUE(has(t, "Ride: hand-built coach")) << t;
+  EXPECT_TRUE(has(t, "At 100.0 km/h")) << t;
+  EXPECT_TRUE(has(t, "At 200.0 km/h")) << t;
+  EXPECT_TRUE(has(t, "P95 estimate [m/s²]")) << t;
+  EXPECT_TRUE(has(t, "body bounce (1.10 Hz) 80 %; body pitch (1.40 Hz) 15 %")) << t;
+  EXPECT_TRUE(has(t, "unbounded")) << t;
+  EXPECT_TRUE(has(t, "1234")) << t;  // the force, bounded at 200 km/h
+  EXPECT_TRUE(has(t, "longitudinal, lateral (taken as 0)")) << t;
+  EXPECT_FALSE(std::regex_search(t, std::regex("\\b(nan|inf|NaN)\\b"))) << t;
+}
+
+TEST(RideReport, CsvHasUnitsInItsHeadsAndOneRowPerSpeed) {
+  const std::string csv = written(hand_built(), OutputFormat::csv);
+  std::istringstream in(csv);
+  std::string head, row1, row2, extra;
+  std::getline(in, head), std::getline(in, row1), std::getline(in, row2);
+  EXPECT_FALSE(std::getline(in, extra));
+  EXPECT_EQ(head.rfind("speed [km/h],", 0), 0u) << head;
+  EXPECT_TRUE(has(head, "\"floor over bogie 1, vertical rms [m/s²]\"")) << head;
+  EXPECT_TRUE(has(head, "secondary spring force rms [N]")) << head;
+  EXPECT_TRUE(has(head, "p95 estimate [m/s²]")) << head;
+  EXPECT_TRUE(has(head, "nmv estimate body (9.5, 0, 1.2) m")) << head;
+  EXPECT_EQ(row1.rfind("100,", 0), 0u) << row1;
+  EXPECT_TRUE(has(row1, ",unbounded,")) << row1;
+  // As many fields in every row as in the head (quoted commas counted once).
+  auto fields = [](const std::string& line) {
+    int n = 1;
+    bool quoted = false;
+    for (char c : line) quoted = c == '"' ? !quoted : quoted, n += !quoted && c == ',';
+    return n;
+  };
+  EXPECT_EQ(fields(row1), fields(head));
+  EXPECT_EQ(fields(row2), fields(head));
+}
+
+TEST(RideReport, JsonKeysCarryUnitsAndNullsForWhatIsNot) {
+  const nlohmann::json j = nlohmann::json::parse(written(hand_built(), OutputFormat::json));
+  ASSERT_EQ(j["speeds"].size(), 2u);
+  const auto& first = j["speeds"][0];
+  EXPECT_NEAR(first["speed_kmh"].get<double>(), 100.0, 1e-9);
+  EXPECT_NEAR(first["outputs"][0]["rms_m_s2"].get<double>(), 0.25 * 100 / 3.6 / 50, 1e-12);
+  EXPECT_TRUE(first["outputs"][0].contains("p95_estimate_m_s2"));
+  const auto& second = j["speeds"][1];
+  EXPECT_TRUE(second["outputs"][1]["weighted_rms_m_s2"].is_null());  // a force has no comfort index
+  EXPECT_NEAR(second["outputs"][1]["rms_n"].get<double>(), 1234.4, 1e-9);
+  EXPECT_EQ(first["outputs"][0]["psd_m2_s4_per_hz"].size(), 5u);
+  EXPECT_TRUE(first["outputs"][1]["unbounded"].get<bool>());
+  EXPECT_FALSE(first["outputs"][1].contains("rms_n"));
+  EXPECT_EQ(first["inputs"][0]["name"], "ORE B176 low, vertical level");
+  EXPECT_EQ(j["outputs"][1]["kind"], "element-force");
+  EXPECT_TRUE(j["time_domain"].is_null());
+}
+
+TEST(RideReport, MarkdownAndHtmlHaveTheTablesAndTheCharts) {
+  const std::string md = written(hand_built(), OutputFormat::markdown);
+  EXPECT_TRUE(has(md, "# Ride: hand-built coach")) << md;
+  EXPECT_TRUE(has(md, "| output |")) << md;
+  EXPECT_TRUE(has(md, "P95 estimate")) << md;
+  const std::string html = written(hand_built(), OutputFormat::html);
+  EXPECT_TRUE(has(html, "<!DOCTYPE html>")) << html.substr(0, 200);
+  // Three index charts (weighted RMS, Wz, N_MV), the input PSD and two output PSDs (m/s², N).
+  size_t charts = 0;
+  for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) ++charts;
+  EXPECT_EQ(charts, 6u);
+  EXPECT_TRUE(has(html, "PSD [m²/Hz]")) << "input chart";
+  EXPECT_TRUE(has(html, "PSD [(m/s²)²/Hz]")) << "output chart";
+  EXPECT_TRUE(has(html, "PSD [N²/Hz]")) << "force chart";
+  EXPECT_TRUE(has(html, "body bounce")) << "natural frequencies marked";
+  EXPECT_TRUE(has(html, "Vertical acceleration spectra at 200.0 km/h"));
+  EXPECT_FALSE(std::regex_search(html, std::regex("\\b(nan|inf|NaN)\\b"))) << html;
+}
+
+TEST(RideReport, TimeDomainRunAndItsChecks) {
+  const RideResult r = hand_built();
+  RideSimulationResult s;
+  s.outputs = {r.outputs[0]};
+  s.time = Eigen::VectorXd::LinSpaced(1001, 0.0, 10.0);
+  RideHistory h;
+  h.values = Eigen::VectorXd::Zero(1001);
+  h.weighted = (s.time.array() * 6.0).sin().matrix();
+  h.window_rms = Eigen::Vector2d(0.70, 0.71);
+  h.rms = 0.7;
+  h.weighted_rms = 0.705;
+  h.p95 = 0.7095;
+  h.sperling_wz = 2.3;
+  s.histories = {h};
+  s.notes = {"2 windows: the P95 is over these, not over a 5-minute zone"};
+  RideFftChecks c;
+  c.exact_bin_error = 3e-12;
+  c.fraction_outside_band = 0.052;
+  c.rms_difference = {0.004};
+  const std::string t = written(r, OutputFormat::table, &s, &c);
+  EXPECT_TRUE(has(t, "Time-domain run")) << t;
+  EXPECT_TRUE(has(t, "P95 of the windows")) << t;
+  EXPECT_TRUE(has(t, "5.2 %")) << t;
+  EXPECT_TRUE(has(t, "0.40 %")) << t;
+  EXPECT_TRUE(has(t, "3e-12")) << t;
+  const std::string html = written(r, OutputFormat::html, &s, &c);
+  EXPECT_TRUE(has(html, "RMS of each 5 s window")) << "window steps drawn";
+  EXPECT_TRUE(has(html, "FFT checks"));
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json, &s, &c));
+  EXPECT_NEAR(j["time_domain"]["fft_checks"]["fraction_outside_band"].get<double>(), 0.052, 1e-15);
+  EXPECT_EQ(j["time_domain"]["outputs"][0]["window_rms_m_s2"].size(), 2u);
+}
+
+TEST(RideReport, RefusesAFormatItDoesNotWrite) {
+  std::ostringstream out;
+  EXPECT_THROW(write_ride(out, hand_built(), static_cast<OutputFormat>(42)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace railmodal

@@ -1,0 +1,103 @@
+// The study metrics of the ride (issue 21, item 6): max_wz, max_nmv and
+// rms_acceleration:<output>, read from results built by hand: their units, their values (+∞ for
+// an unbounded ride, none without a ride), their ranking and their round trip through a shard.
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "railmodal/railmodal.hpp"
+#include "study/study_files.hpp"
+#include "test_support.hpp"
+
+namespace railmodal::test {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A variant whose ride has a floor acceleration (its Wz and RMS as given) and a force output.
+VariantResult ridden(int index, const std::string& name, double floor_rms, double wz, double nmv,
+                     bool unbounded = false) {
+  VariantResult r;
+  r.index = index;
+  r.name = name;
+  r.ride_evaluated = true;
+  VariantResult::RideSummary floor{"floor over bogie 1", "m/s²", floor_rms, wz, unbounded};
+  if (unbounded) floor.max_rms = 0.0, floor.max_wz.reset();
+  r.ride = {floor, {"spring force", "N", 1500.0, std::nullopt, false}};
+  r.max_nmv = nmv;
+  return r;
+}
+
+TEST(RideMetric, NamesUnitsAndTitles) {
+  EXPECT_TRUE(is_metric("max_wz"));
+  EXPECT_TRUE(is_metric("max_nmv"));
+  EXPECT_TRUE(is_metric("rms_acceleration:floor over bogie 1"));
+  EXPECT_FALSE(is_metric("rms_acceleration:"));
+  EXPECT_FALSE(is_metric("max_wz:floor"));
+  EXPECT_STREQ(metric_unit("max_wz"), "");
+  EXPECT_STREQ(metric_unit("max_nmv"), "");
+  EXPECT_STREQ(metric_unit("rms_acceleration:floor over bogie 1"), "m/s^2");
+}
+
+TEST(RideMetric, Values) {
+  const VariantResult r = ridden(0, "a", 0.31, 2.4, 1.9);
+  EXPECT_DOUBLE_EQ(*metric_value(r, "max_wz"), 2.4);  // the force has no Wz and does not count
+  EXPECT_DOUBLE_EQ(*metric_value(r, "max_nmv"), 1.9);
+  EXPECT_DOUBLE_EQ(*metric_value(r, "rms_acceleration:floor over bogie 1"), 0.31);
+  EXPECT_FALSE(metric_value(r, "rms_acceleration:no such output"));
+  // Unbounded: +∞, not a number the ranking could prefer.
+  const VariantResult u = ridden(1, "undamped", 0.0, 0.0, 1.0, true);
+  EXPECT_TRUE(std::isinf(*metric_value(u, "max_wz")));
+  EXPECT_TRUE(std::isinf(*metric_value(u, "rms_acceleration:floor over bogie 1")));
+  // No ride: no value.
+  VariantResult none;
+  EXPECT_FALSE(metric_value(none, "max_wz"));
+  EXPECT_FALSE(metric_value(none, "max_nmv"));
+}
+
+// Minimised Wz: the smoothest design first, the unbounded one last; a max constraint on N_MV
+// makes a rough design infeasible, and people read the metric by its title.
+TEST(RideMetric, RanksTheSmoothestFirst) {
+  Study s;
+  s.name = "hand";
+  for (const char* n : {"rough", "smooth", "undamped", "middle"}) s.variants.push_back({n, {}, {}, {}});
+  s.ranking.objective.push_back({"max_wz", false, 1.0, {}});
+  const std::vector<VariantResult> results{ridden(0, "rough", 0.6, 3.1, 3.2), ridden(1, "smooth", 0.2, 2.0, 1.1),
+                                           ridden(2, "undamped", 0, 0, 5, true), ridden(3, "middle", 0.4, 2.5, 2.0)};
+  Comparison c = rank_variants(s, results);
+  std::vector<std::string> order;
+  for (const auto& v : c.variants) order.push_back(v.result.name);
+  EXPECT_EQ(order, (std::vector<std::string>{"smooth", "middle", "rough", "undamped"}));
+  s.ranking.constraints.push_back({"max_nmv", std::nullopt, 2.5, {}});
+  c = rank_variants(s, results);
+  ASSERT_EQ(c.variants.size(), 4u);
+  EXPECT_TRUE(c.variants[0].feasible);
+  EXPECT_FALSE(c.variants[2].feasible);
+  std::ostringstream table;
+  write_comparison(table, c, OutputFormat::table);
+  EXPECT_NE(table.str().find("largest Sperling Wz of the ride"), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("unbounded"), std::string::npos) << table.str();
+}
+
+TEST(RideMetric, ShardsCarryTheRide) {
+  const Study s = load_study(write_study(example3_wagon(), "[ranking]\nmax_lowest_critical_speed = \"900 km/h\"\n"));
+  std::ostringstream shard;
+  write_shard(shard, s, {}, {ridden(0, "base", 0.31, 2.4, 1.9)});
+  const std::vector<VariantResult> back = read_shard(write_temp("ride_shard.json", shard.str()), s);
+  ASSERT_EQ(back.size(), 1u);
+  ASSERT_TRUE(back[0].ride_evaluated);
+  ASSERT_EQ(back[0].ride.size(), 2u);
+  EXPECT_EQ(back[0].ride[0].output, "floor over bogie 1");
+  EXPECT_EQ(back[0].ride[0].max_rms, 0.31);  // exact: the shard writes round-trip numbers
+  EXPECT_EQ(*back[0].ride[0].max_wz, 2.4);
+  EXPECT_FALSE(back[0].ride[1].max_wz);
+  EXPECT_EQ(*back[0].max_nmv, 1.9);
+  VariantResult plain;
+  plain.name = "base";
+  std::ostringstream without;
+  write_shard(without, s, {}, {plain});
+  EXPECT_EQ(without.str().find("\"ride\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace railmodal::test

@@ -1,0 +1,164 @@
+// railmodal ride SCENE [--vehicle VEHICLE] [--speeds "100 km/h:200 km/h:20 km/h"] [--threads N]
+//                      [--format table|csv|json|markdown|html] [-o OUT]
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "output_file.hpp"
+#include "railmodal/railmodal.hpp"
+
+namespace railmodal::cli {
+namespace {
+
+struct RideCommandOptions {
+  std::string scene;
+  std::string vehicle;  // "": the scene's
+  std::string speeds;   // "": the scene's [ride] speeds
+  int threads = 1;
+  std::string format;  // "": from the output file's extension, else table
+  std::string output = "-";
+};
+
+// Thrown for an option the command line gives wrongly: a usage error (exit 2).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// --speeds, read before any file (a usage error, exit 2); empty: not given.
+std::vector<double> command_line_speeds(const RideCommandOptions& o) {
+  if (o.speeds.empty()) return {};
+  try {
+    return parse_speeds(o.speeds);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--speeds: ") + e.what());
+  }
+}
+
+// The scene's [ride] options (or the defaults) with the command line's speeds and threads.
+RideOptions ride_options(const Scene& scene, const std::vector<double>& speeds, int threads) {
+  RideOptions options = scene.ride ? scene.ride->options : RideOptions{};
+  if (!speeds.empty()) options.speeds = speeds;
+  if (options.speeds.empty())
+    throw InputError(scene.source, 0, 0,
+                     "no speeds: give them in [ride] (speeds = \"100 km/h:200 km/h:20 km/h\") or as --speeds");
+  options.threads = threads;
+  return options;
+}
+
+// The time-domain run the scene asks for, on a synthesised realisation or measured geometry.
+struct TimeDomain {
+  RideSimulationResult simulated;
+  std::optional<RideFftChecks> checks;
+};
+
+std::optional<TimeDomain> run_time_domain(const Scene& scene, const LinearSystem& system,
+                                          const std::vector<RideOutput>& outputs) {
+  if (!scene.ride || !scene.ride->simulation) return std::nullopt;
+  const RideSpec& spec = *scene.ride;
+  const TrackGeometry geometry = spec.realisation ? synthesise_track(*scene.irregularity, *spec.realisation)
+                                                  : load_track_geometry(spec.geometry_file);
+  TimeDomain run;
+  run.simulated = simulate_ride(system, geometry, outputs, *spec.simulation);
+  // The checks compare with the spectra the realisation was drawn from: none for measured track.
+  if (spec.realisation)
+    run.checks = check_ride_realisation(system, *scene.irregularity, geometry, run.simulated, *spec.simulation);
+  return run;
+}
+
+bool has_spectra(const TrackIrregularitySpectra& t) { return t.vertical_level || t.alignment || t.cross_level; }
+
+int run(const RideCommandOptions& o) {
+  const OutputFormat format = report_format(o.format, o.output);
+  std::string current = o.scene;  // the file an error without a location belongs to
+  std::vector<double> speeds;
+  try {
+    speeds = command_line_speeds(o);
+  } catch (const UsageError& e) {
+    std::cerr << "railmodal: error: " << e.what() << "\nRun 'railmodal ride --help' for usage.\n";
+    return kUsage;
+  }
+  try {
+    OutputFiles files;
+    std::ostream& out = files.open(o.output);
+    Scene scene = load_scene(o.scene);
+    if (!scene.irregularity) {
+      std::cerr << o.scene << ": error: the scene has no [[source]] with kind = \"irregularity\": the ride is the "
+                << "response to random track (docs/scenes.md, \"Ride scenes\")\n";
+      return kInput;
+    }
+    if (!o.vehicle.empty()) scene.vehicle_file = o.vehicle;  // the command line wins over the scene
+    if (scene.vehicle_file.empty()) {
+      std::cerr << "railmodal: error: no vehicle: give --vehicle VEHICLE.toml or a 'vehicle' key in " << o.scene << "\n";
+      return kUsage;
+    }
+    const RideOptions options = ride_options(scene, speeds, o.threads);
+    const std::vector<std::string> inputs{o.scene, scene.vehicle_file,
+                                          scene.ride ? scene.ride->geometry_file : std::string()};
+    files.refuse_inputs(inputs);
+    current = scene.vehicle_file;
+    const LinearSystem system = assemble(load_vehicle(scene.vehicle_file), scene.dofs);
+    current = o.scene;
+    check_scene_fits(scene, system);
+    const std::vector<RideOutput> outputs =
+        scene.ride && !scene.ride->outputs.empty() ? scene.ride->outputs : default_ride_outputs(system);
+    RideResult result;
+    result.outputs = outputs;
+    std::optional<TimeDomain> time_domain;
+    try {
+      // Measured geometry alone has no spectra: only its time-domain run is reported.
+      if (has_spectra(*scene.irregularity)) result = solve_ride(system, *scene.irregularity, outputs, options);
+      // The legend of the input spectra: solve_ride gives them in this order, the components present.
+      if (result.inputs.empty())
+        for (const auto* s : {&scene.irregularity->vertical_level, &scene.irregularity->alignment,
+                              &scene.irregularity->cross_level})
+          if (*s) result.inputs.push_back((*s)->name());
+      time_domain = run_time_domain(scene, system, outputs);
+    } catch (const std::invalid_argument& e) {
+      // The reader checked every key it could; what is left is a value only the vehicle and the
+      // spectra together can refuse (a band the realisation cannot sample): the scene's error.
+      throw InputError(o.scene, 0, 0, e.what());
+    }
+    std::vector<std::string> provenance_files{o.scene, scene.vehicle_file};
+    if (scene.ride && !scene.ride->geometry_file.empty()) provenance_files.push_back(scene.ride->geometry_file);
+    write_ride(out, result, format, scene.name, provenance_of(provenance_files),
+               time_domain ? &time_domain->simulated : nullptr,
+               time_domain && time_domain->checks ? &*time_domain->checks : nullptr);
+    files.commit();
+    return kSuccess;
+  } catch (const InputError& e) {
+    std::cerr << e.what() << "\n";
+    return kInput;
+  } catch (const NumericalError& e) {
+    std::cerr << current << ": error: numerical failure: " << e.what() << "\n";
+    return kNumerical;
+  }
+}
+
+}  // namespace
+
+std::function<int()> add_ride_command(CLI::App& app) {
+  auto options = std::make_shared<RideCommandOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "ride",
+      "Ride on random track: the response spectra of a scene's vehicle to its track irregularity, the RMS, EN 12299 "
+      "weighted RMS and P95, Sperling's Wz and N_MV per floor point, with the dominant modes (docs/ride.md)");
+  cmd->add_option("scene", options->scene,
+                  "Scene file (TOML) with a [[source]] of kind = \"irregularity\" and a [ride] table, e.g. "
+                  "data/scenes/manchester_coach_ore_low.toml")
+      ->required();
+  cmd->add_option("--vehicle", options->vehicle, "Vehicle file (TOML), in place of the scene's");
+  cmd->add_option("--speeds", options->speeds,
+                  "Speeds, in place of the scene's: a list \"100 km/h, 160 km/h\" or a range MIN:MAX:STEP such as "
+                  "\"100 km/h:200 km/h:20 km/h\" (MIN:MAX alone: 11 speeds)");
+  cmd->add_option("--threads", options->threads, "Threads over speeds (default 1)")->check(CLI::Range(1, 1024));
+  cmd->add_option("--format", options->format,
+                  "Output format: table, csv (one row per output and speed), json, markdown, html (with the input and "
+                  "output spectra and the indices against speed); default: from the -o file's extension "
+                  "(.html, .csv, .json, .md), else table")
+      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
+  cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
+      ->capture_default_str();
+  return [options] { return run(*options); };
+}
+
+}  // namespace railmodal::cli
