@@ -89,10 +89,14 @@ std::optional<RideOutput::Kind> ride_output_kind_from_string(const std::string& 
 std::string unit_of(const RideOutput& output);
 
 /// The floor points a ride report looks at when none are named: on the car body (the body with
-/// the largest mass), at floor height (the body's reference point height), above each bogie
-/// centre (or axle, for a two-axle wagon), at mid-car, and 1 m in from each end of the body
-/// (the body's end is taken at the outermost element attached to it plus the overhang the
-/// vehicle gives, else at the outermost element), vertical and lateral acceleration.
+/// the largest mass), above each bogie centre (or axle, for a two-axle wagon), at mid-car, and
+/// 1 m in from each end of the body, vertical and (when the body moves sideways) lateral
+/// acceleration. The body's ends are those of its bending beam (Body::bending) when it has one;
+/// otherwise the vehicle does not give them, and the last two points lie 1 m inboard of the
+/// outermost elements on the body and are named so ("floor 1 m inboard of front support").
+/// Height: the body's reference point (for the templates the plane of the secondary springs,
+/// below a real floor): a lateral acceleration higher up is larger by the roll's share; name
+/// the points in the scene (`[[ride.output]]`) for a given floor height.
 std::vector<RideOutput> default_ride_outputs(const LinearSystem& system);
 
 struct RideOptions {

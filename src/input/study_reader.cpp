@@ -405,7 +405,10 @@ StudyFile read_study_file(const std::string& path, size_t max_variants) {
 
   file.scene_document = parse_toml_file(file.scene_file);
   file.base_scene = read_scene(file.scene_document, file.scene_file);
-  if (!(file.base_scene.max_speed > 0.0))
+  // A ride scene whose only source is random track is ridden at its [ride] speeds and has no
+  // critical speeds to sweep (docs/studies.md); any other scene needs the range.
+  const bool ride_only = file.base_scene.ride && file.base_scene.irregularity && file.base_scene.sources.empty();
+  if (!(file.base_scene.max_speed > 0.0) && !ride_only)
     throw InputError(file.scene_file, 0, 0, "the scene has no [speed] range: a study sweeps the speeds for critical speeds");
   return file;
 }

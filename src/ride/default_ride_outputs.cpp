@@ -67,12 +67,22 @@ std::vector<RideOutput> default_ride_outputs(const LinearSystem& system) {
     return e.upper == body.name && !e.lower.empty() &&
            std::none_of(v.wheelsets.begin(), v.wheelsets.end(), [&](const Wheelset& w) { return w.body == e.lower; });
   });
+  // The body's ends: a bending beam gives them (its length is the body's); otherwise the
+  // vehicle does not say where the body ends, and the points are named after what they are
+  // measured from, the outermost element on the body, rather than passing for the ends.
+  bool ends_known = false;
+  if (body.bending) {
+    const double centre = body.bending->centre.value_or(body.centre_of_gravity.x());
+    front = centre + 0.5 * body.bending->length;
+    rear = centre - 0.5 * body.bending->length;
+    ends_known = true;
+  }
   std::vector<std::pair<std::string, double>> points;
   for (size_t i = 0; i < supports.size(); ++i) points.push_back({support_name(supports, i, two_axle), supports[i]});
   points.push_back({"floor at mid-car", 0.5 * (front + rear)});
   if (front - rear > 2.0) {
-    points.push_back({"floor 1 m from front end", front - 1.0});
-    points.push_back({"floor 1 m from rear end", rear + 1.0});
+    points.push_back({ends_known ? "floor 1 m from front end" : "floor 1 m inboard of front support", front - 1.0});
+    points.push_back({ends_known ? "floor 1 m from rear end" : "floor 1 m inboard of rear support", rear + 1.0});
   }
   const bool lateral = body_moves_laterally(system, b);
   std::vector<RideOutput> out;

@@ -152,7 +152,7 @@ std::function<int()> add_ride_command(CLI::App& app) {
                   "\"100 km/h:200 km/h:20 km/h\" (MIN:MAX alone: 11 speeds)");
   cmd->add_option("--threads", options->threads, "Threads over speeds (default 1)")->check(CLI::Range(1, 1024));
   cmd->add_option("--format", options->format,
-                  "Output format: table, csv (one row per output and speed), json, markdown, html (with the input and "
+                  "Output format: table, csv (one row per speed), json, markdown, html (with the input and "
                   "output spectra and the indices against speed); default: from the -o file's extension "
                   "(.html, .csv, .json, .md), else table")
       ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
