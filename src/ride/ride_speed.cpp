@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <utility>
 
 namespace railmodal::ride {
 
@@ -68,9 +69,27 @@ SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, con
         needed[k] = 1;
     }
   }
-  // The delays τ_g of the input groups (the front one's is zero: no trigonometry).
+  // The delays τ_g of the input groups (the front one's is zero: no trigonometry). A delay that
+  // is the sum of two earlier ones (the rear axle of a bogie coach: bogie pitch plus axle
+  // spacing) takes the product of their phasors, one complex product for a sincos. Its phase
+  // differs from the direct ωτ by at most 1e-14·ωτ (the test below; a symmetric layout gives a
+  // few ulps): under 4e-11 rad at the largest phase of the benchmark (80 Hz, 19.5 m at
+  // 10 km/h, ωτ ≈ 3500 rad), whose direct evaluation already carries 4e-13 rad of round-off.
   std::vector<double> delays(m);
   for (int g = 0; g < m; ++g) delays[g] = (front - r.x[g]) / speed;
+  // In increasing delay, so that the two parts (each shorter) are settled as direct ones first.
+  std::vector<int> order(m);
+  for (int g = 0; g < m; ++g) order[g] = g;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return delays[a] < delays[b]; });
+  std::vector<std::pair<int, int>> sum_of(m, {-1, -1});
+  for (int g : order)
+    for (int a = 0; a < m && sum_of[g].first < 0; ++a)
+      for (int b = a; b < m; ++b)
+        if (a != g && b != g && delays[a] > 0.0 && delays[b] > 0.0 && sum_of[a].first < 0 && sum_of[b].first < 0 &&
+            std::abs(delays[a] + delays[b] - delays[g]) <= 1e-14 * delays[g]) {
+          sum_of[g] = {a, b};
+          break;
+        }
   // Σ_g h_g·e^{−iωτ_g} in real arithmetic: std::complex's operator* checks for NaN and infinity
   // (C99 Annex G) and costs a call where this inner loop is the whole of a speed's work.
   std::vector<double> pr(m), pi(m);
@@ -91,13 +110,19 @@ SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, con
       if (delays[g] == 0.0) {
         pr[g] = 1.0;
         pi[g] = 0.0;
-        continue;
+      } else if (sum_of[g].first < 0) {
+        double sine, cosine;
+        ::sincos(omega * delays[g], &sine, &cosine);  // one call for both (glibc)
+        pr[g] = cosine;
+        pi[g] = -sine;
       }
-      double sine, cosine;
-      ::sincos(omega * delays[g], &sine, &cosine);  // one call for both (glibc)
-      pr[g] = cosine;
-      pi[g] = -sine;
     }
+    for (int g = 0; g < m; ++g)
+      if (sum_of[g].first >= 0) {
+        const int a = sum_of[g].first, b = sum_of[g].second;
+        pr[g] = pr[a] * pr[b] - pi[a] * pi[b];
+        pi[g] = pr[a] * pi[b] + pi[a] * pr[b];
+      }
     const std::complex<double>* column = r.response.col(k).data();
     for (int o = 0; o < O; ++o)
       for (int c = 0; c < C; ++c) {
@@ -116,10 +141,10 @@ SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, con
     const std::complex<double>* modal = r.modal.col(k).data();
     for (int j = 0; j < J; ++j)
       for (int c = 0; c < C; ++c) combine(modal + (static_cast<size_t>(j) * C + c) * m, &qr[j * C + c], &qi[j * C + c]);
-    const std::complex<double>* seen = r.modal_rows.col(k).data();
+    const double* seen = r.modal_rows.col(k).data();
     for (int o = 0; o < O; ++o)
       for (int j = 0; j < J; ++j) {
-        const double seen2 = std::norm(seen[o * J + j]);
+        const double seen2 = seen[o * J + j];
         for (int c = 0; c < C; ++c)
           s.modal_variance[o][j] += bands[c].weights(k) * seen2 * (qr[j * C + c] * qr[j * C + c] + qi[j * C + c] * qi[j * C + c]) *
                                     inside_density(c, k);

@@ -395,7 +395,15 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
     else X = Y;
     h.setZero();
     for (int o = 0; o < O; ++o) {
-      A.row(o) = maps[o].row(omega);
+      // maps[o].row(omega) written in place (no temporaries at every frequency), the same operations.
+      const OutputMap& map = maps[o];
+      for (int j = 0; j < n; ++j) A(o, j) = Complex(map.a0(j), omega * map.a1(j));
+      for (const SeriesDamperRow& sd : map.series) {
+        const Complex ks = maxwell_stiffness(sd.stiffness, sd.damping, omega);
+        for (int j = 0; j < n; ++j) A(o, j) -= ks * sd.stretch(j);
+      }
+      const Complex power = power_of_i_omega(map.order, omega);
+      for (int j = 0; j < n; ++j) A(o, j) *= power;
       for (size_t t = 0; t < maps[o].inputs.size(); ++t)
         for (int c = 0; c < C; ++c) {
           const int i = maps[o].inputs[t];
@@ -409,7 +417,8 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
     q.noalias() = left_c * X;  // J × C·m
     for (int j = 0; j < J; ++j) r.modal.col(k).segment(static_cast<Eigen::Index>(j) * C * m, C * m) = q.row(j).transpose();
     seen.noalias() = A * shapes_c;  // O × J
-    for (int o = 0; o < O; ++o) r.modal_rows.col(k).segment(static_cast<Eigen::Index>(o) * J, J) = seen.row(o).transpose();
+    for (int o = 0; o < O; ++o)
+      for (int j = 0; j < J; ++j) r.modal_rows(static_cast<Eigen::Index>(o) * J + j, k) = std::norm(seen(o, j));
   }
   return r;
 }

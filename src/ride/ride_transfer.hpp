@@ -81,8 +81,8 @@ struct Receptances {
   Eigen::MatrixXcd response;
   /// Row (j·C + c)·m + g: φ_jᵀM X_{c,g}, mode j's coordinate (with a split basis).
   Eigen::MatrixXcd modal;
-  /// Row o·J + j: a_o(ω)·φ_j, how much of mode j output o sees.
-  Eigen::MatrixXcd modal_rows;
+  /// Row o·J + j: |a_o(ω)·φ_j|², how much of mode j output o sees (squared: all a speed needs).
+  Eigen::MatrixXd modal_rows;
 };
 
 /// Solves the dynamic stiffness K − ω²M + iωC (+ the series dampers' k_s(ω)) once per grid
