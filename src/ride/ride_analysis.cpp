@@ -342,6 +342,7 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
   StageClock clock(&result.summary);
   result.outputs = outputs;
   Problem p = prepare(system, track, outputs, options, &result);
+  for (const ride::Component& c : p.components) result.inputs.push_back(c.spectrum.name());  // input_psd's order
   clock.lap("modes");
   build_grid(&p, options);
   result.frequencies = p.grid;

@@ -22,8 +22,10 @@ struct SpeedSpectra {
   std::vector<Eigen::VectorXd> input_psd;           ///< per component: G_c on the grid, m²/Hz
 };
 
-/// H_c(f) = Σ_i h_{c,i}(f)·e^{−iωτ_i}, τ_i = (x_front − x_i)/V (the front input first, x
-/// forward), and what the indices need of it (the modal variances when `r` holds modal terms).
+/// H_c(f) = Σ_g h_{c,g}(f)·e^{−iωτ_g} over the input groups, τ_g = (x_front − x_g)/V with x_g
+/// from Receptances::x (x forward; `system` is not read), and what the indices need of it (the
+/// modal variances when `r` holds modal terms), at the grid points the speed's bands need: the
+/// power and PSD elsewhere are left zero, where every index weighs them by zero.
 SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, const std::vector<Component>& components,
                            const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands);
 

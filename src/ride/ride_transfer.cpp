@@ -2,8 +2,8 @@
 // freedom, and the receptances that join them (one solve per frequency for all inputs).
 #include "ride/ride_transfer.hpp"
 
-#include <Eigen/LU>
 #include <cmath>
+#include <complex>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -223,6 +223,47 @@ Complex power_of_i_omega(int order, double omega) {
 
 }  // namespace
 
+// Eigen's blocked LU and triangular solves cost more in their dispatch than in arithmetic at
+// this size, and divide by each pivot in complex arithmetic (libgcc's __divdc3, a call per
+// element): here each pivot is inverted once, 1/p = p̄/|p|², and rows are scaled by products.
+Eigen::VectorXd solve_in_place(Eigen::MatrixXcd* D, Eigen::MatrixXcd* B) {
+  const Eigen::Index n = D->rows(), r = B->cols();
+  Eigen::MatrixXcd& a = *D;
+  Eigen::MatrixXcd& b = *B;
+  Eigen::VectorXd pivots = Eigen::VectorXd::Zero(n);
+  std::vector<Complex> inverse(static_cast<size_t>(n));
+  for (Eigen::Index p = 0; p < n; ++p) {
+    Eigen::Index best = p;
+    double largest = std::norm(a(p, p));
+    for (Eigen::Index i = p + 1; i < n; ++i)
+      if (std::norm(a(i, p)) > largest) {
+        largest = std::norm(a(i, p));
+        best = i;
+      }
+    pivots(p) = std::sqrt(largest);
+    if (!(largest > 0.0)) return pivots;  // singular: the caller throws
+    if (best != p) {
+      a.row(p).swap(a.row(best));
+      b.row(p).swap(b.row(best));
+    }
+    const Complex pivot = a(p, p);
+    inverse[p] = std::conj(pivot) / largest;  // a complex by a real: no __divdc3
+    for (Eigen::Index i = p + 1; i < n; ++i) {
+      const Complex l = a(i, p) * inverse[p];
+      if (l == 0.0) continue;
+      for (Eigen::Index q = p + 1; q < n; ++q) a(i, q) -= l * a(p, q);
+      for (Eigen::Index q = 0; q < r; ++q) b(i, q) -= l * b(p, q);
+    }
+  }
+  for (Eigen::Index p = n - 1; p >= 0; --p)
+    for (Eigen::Index q = 0; q < r; ++q) {
+      Complex sum = b(p, q);
+      for (Eigen::Index j = p + 1; j < n; ++j) sum -= a(p, j) * b(j, q);
+      b(p, q) = sum * inverse[p];
+    }
+  return pivots;
+}
+
 std::complex<double> maxwell_stiffness(double stiffness, double damping, double omega) {
   const Complex ic(0.0, omega * damping);
   return ic * stiffness / (stiffness + ic);
@@ -283,7 +324,16 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
                         const std::vector<OutputMap>& maps, const Eigen::VectorXd& grid,
                         const Eigen::MatrixXd* basis, const ModalBasis* split) {
   const int n = system.size();
-  const int m = static_cast<int>(system.track_inputs.size());
+  // The input groups: the inputs at one x (within round-off) share their delay at every speed.
+  std::vector<double> xs;
+  std::vector<int> group_of;
+  for (const TrackInput& t : system.track_inputs) {
+    size_t g = 0;
+    while (g < xs.size() && std::abs(xs[g] - t.point.x()) > 1e-12 * (1.0 + std::abs(t.point.x()))) ++g;
+    if (g == xs.size()) xs.push_back(t.point.x());
+    group_of.push_back(static_cast<int>(g));
+  }
+  const int m = static_cast<int>(xs.size());
   const int C = static_cast<int>(components.size());
   const int O = static_cast<int>(maps.size());
   const Eigen::Index K = grid.size();
@@ -305,6 +355,7 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
   r.outputs = O;
   r.components = C;
   r.inputs = m;
+  r.x = xs;
   r.modes = J;
   r.response.resize(static_cast<Eigen::Index>(O) * C * m, K);
   r.modal.resize(static_cast<Eigen::Index>(J) * C * m, K);
@@ -312,14 +363,15 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
   Eigen::MatrixXcd Q(n, C * m), X(n, C * m), A(O, n), h(O, C * m), q(J, C * m), seen(O, J);
   const Eigen::MatrixXcd left_c = split ? Eigen::MatrixXcd(split->left.cast<Complex>()) : Eigen::MatrixXcd();
   const Eigen::MatrixXcd shapes_c = split ? Eigen::MatrixXcd(split->shapes.cast<Complex>()) : Eigen::MatrixXcd();
-  // Q_{c,i} = (P_i + iωV_i)u_{c,i}: its two real parts once.
-  Eigen::MatrixXd stiff_load(n, C * m), damper_load(n, C * m);
-  for (int i = 0; i < m; ++i)
+  // Q_{c,g} = Σ_{i∈g}(P_i + iωV_i)u_{c,i}: its two real parts once.
+  Eigen::MatrixXd stiff_load = Eigen::MatrixXd::Zero(n, C * m), damper_load = Eigen::MatrixXd::Zero(n, C * m);
+  for (size_t i = 0; i < system.track_inputs.size(); ++i)
     for (int c = 0; c < C; ++c) {
       const TrackInput& t = system.track_inputs[i];
-      stiff_load.col(c * m + i) = t.load_per_displacement * components[c].displacement[i];
-      damper_load.col(c * m + i) = t.load_per_velocity * components[c].displacement[i];
+      stiff_load.col(c * m + group_of[i]) += t.load_per_displacement * components[c].displacement[i];
+      damper_load.col(c * m + group_of[i]) += t.load_per_velocity * components[c].displacement[i];
     }
+  Eigen::MatrixXcd Y;  // the solve's right-hand sides, then its solution
   for (Eigen::Index k = 0; k < K; ++k) {
     const double omega = kTwoPi * grid(k);
     const Complex iw(0.0, omega);
@@ -329,34 +381,44 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
     for (size_t d = 0; d < series.size(); ++d)
       D.noalias() += maxwell_stiffness(system.series_dampers[d].stiffness, system.series_dampers[d].damping, omega) *
                      series[d];
-    const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(D);
+    if (basis) Y.noalias() = basis_c.transpose() * Q;
+    else Y = Q;
     // Singular: a pivot of U at round-off of the largest (with partial pivoting the pivots'
-    // spread bounds the condition from below; Eigen's rcond estimate costs more solves than the
+    // spread bounds the condition from below; a condition estimate costs more solves than the
     // solve itself on these small systems, and would be paid at every frequency).
-    const Eigen::VectorXd pivots = lu.matrixLU().diagonal().cwiseAbs();
+    const Eigen::VectorXd pivots = solve_in_place(&D, &Y);
     if (!(pivots.minCoeff() > 1e-14 * pivots.maxCoeff()))
       throw NumericalError("ride: the dynamic stiffness K − ω²M + iωC is singular at " + shortest_text(grid(k), 8) +
                            " Hz (smallest pivot " + shortest_text(pivots.minCoeff() / pivots.maxCoeff(), 3) +
                            " of the largest), which is not an undamped mode's frequency");
-    if (basis) X.noalias() = basis_c * lu.solve(basis_c.transpose() * Q);
-    else X.noalias() = lu.solve(Q);
+    if (basis) X.noalias() = basis_c * Y;
+    else X = Y;
     h.setZero();
     for (int o = 0; o < O; ++o) {
-      A.row(o) = maps[o].row(omega);
+      // maps[o].row(omega) written in place (no temporaries at every frequency), the same operations.
+      const OutputMap& map = maps[o];
+      for (int j = 0; j < n; ++j) A(o, j) = Complex(map.a0(j), omega * map.a1(j));
+      for (const SeriesDamperRow& sd : map.series) {
+        const Complex ks = maxwell_stiffness(sd.stiffness, sd.damping, omega);
+        for (int j = 0; j < n; ++j) A(o, j) -= ks * sd.stretch(j);
+      }
+      const Complex power = power_of_i_omega(map.order, omega);
+      for (int j = 0; j < n; ++j) A(o, j) *= power;
       for (size_t t = 0; t < maps[o].inputs.size(); ++t)
         for (int c = 0; c < C; ++c) {
           const int i = maps[o].inputs[t];
-          h(o, c * m + i) += maps[o].track(t, components[c].displacement[i], omega);
+          h(o, c * m + group_of[i]) += maps[o].track(t, components[c].displacement[i], omega);
         }
     }
     h.noalias() += A * X;
-    // Column k, row (o·C + c)·m + i = h(o, c·m + i): the output's index runs slowest.
+    // Column k, row (o·C + c)·m + g = h(o, c·m + g): the output's index runs slowest.
     for (int o = 0; o < O; ++o) r.response.col(k).segment(static_cast<Eigen::Index>(o) * C * m, C * m) = h.row(o).transpose();
     if (!split) continue;
     q.noalias() = left_c * X;  // J × C·m
     for (int j = 0; j < J; ++j) r.modal.col(k).segment(static_cast<Eigen::Index>(j) * C * m, C * m) = q.row(j).transpose();
     seen.noalias() = A * shapes_c;  // O × J
-    for (int o = 0; o < O; ++o) r.modal_rows.col(k).segment(static_cast<Eigen::Index>(o) * J, J) = seen.row(o).transpose();
+    for (int o = 0; o < O; ++o)
+      for (int j = 0; j < J; ++j) r.modal_rows(static_cast<Eigen::Index>(o) * J + j, k) = std::norm(seen(o, j));
   }
   return r;
 }

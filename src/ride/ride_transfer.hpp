@@ -56,27 +56,37 @@ OutputMap stretch_rate_map(const LinearSystem& system, int element);
 /// k_s(ω) = iωck/(k + iωc): a damper c with a spring k in series, as one complex stiffness.
 std::complex<double> maxwell_stiffness(double stiffness, double damping, double omega);
 
+/// Solves D·Y = B in place (B becomes Y, D its LU factors) by Gaussian elimination with
+/// partial pivoting (the row of the largest modulus in the column, as LAPACK's zgetrf) and
+/// returns the moduli of U's pivots. A zero pivot stops the elimination there (the pivots after
+/// it stay zero and B is left unfinished): the caller refuses the singular matrix, and no NaN
+/// or infinity is formed. For the ride's small systems, solved at every grid frequency.
+Eigen::VectorXd solve_in_place(Eigen::MatrixXcd* D, Eigen::MatrixXcd* B);
+
 /// The modal basis an output's modal terms are taken in: X = Σ_j φ_j q_j, q_j = φ_jᵀM X.
 struct ModalBasis {
   Eigen::MatrixXd shapes;  ///< n × J, mass-normalised
   Eigen::MatrixXd left;    ///< J × n: ΦᵀM
 };
 
-/// What does not depend on speed, one column per grid frequency (C components, m inputs, O
-/// outputs, J modes of the split):
+/// What does not depend on speed, one column per grid frequency (C components, m input groups,
+/// O outputs, J modes of the split). An input group is the track inputs at one x (the two
+/// wheels of an axle): at every speed they share their delay, so their loads are summed
+/// before the solve and each speed combines m groups, not every input.
 struct Receptances {
   int outputs = 0, components = 0, inputs = 0, modes = 0;
-  /// Row (o·C + c)·m + i: h_{o,c,i}(f), output o's response to component c entering at input i
-  /// alone: a_o(ω)·X_{c,i} + t_{o,i}(ω)·u_{c,i}, with X_{c,i} = D⁻¹(P_i + iωV_i)u_{c,i}.
+  std::vector<double> x;  ///< per input group: its position along the vehicle, m (x forward)
+  /// Row (o·C + c)·m + g: h_{o,c,g}(f), output o's response to component c entering at group g's
+  /// inputs alone: a_o(ω)·X_{c,g} + Σ_{i∈g} t_{o,i}(ω)·u_{c,i}, X_{c,g} = D⁻¹Σ_{i∈g}(P_i + iωV_i)u_{c,i}.
   Eigen::MatrixXcd response;
-  /// Row (j·C + c)·m + i: φ_jᵀM X_{c,i}, mode j's coordinate (with a split basis).
+  /// Row (j·C + c)·m + g: φ_jᵀM X_{c,g}, mode j's coordinate (with a split basis).
   Eigen::MatrixXcd modal;
-  /// Row o·J + j: a_o(ω)·φ_j, how much of mode j output o sees.
-  Eigen::MatrixXcd modal_rows;
+  /// Row o·J + j: |a_o(ω)·φ_j|², how much of mode j output o sees (squared: all a speed needs).
+  Eigen::MatrixXd modal_rows;
 };
 
 /// Solves the dynamic stiffness K − ω²M + iωC (+ the series dampers' k_s(ω)) once per grid
-/// frequency for every input at once; with a basis Φ (n × J, not null) in the reduced
+/// frequency for every input group at once; with a basis Φ (n × J, not null) in the reduced
 /// coordinates X = Φq, (ΦᵀDΦ)q = ΦᵀQ (modal truncation). Throws railmodal::NumericalError naming
 /// the frequency where the matrix is singular. With `split` (not null) the modal terms too.
 Receptances receptances(const LinearSystem& system, const std::vector<Component>& components,

@@ -1,0 +1,127 @@
+// The frequency-domain ride's fast paths (issue 21 item 9): the small dense solve, the inputs
+// that share an x summed before the solve, the grid points a speed does not need skipped, and
+// the input spectra's names in the result.
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
+#include <cmath>
+#include <complex>
+#include <random>
+
+#include "railmodal/railmodal.hpp"
+#include "ride/ride_transfer.hpp"
+#include "ride_test_systems.hpp"
+
+namespace railmodal {
+namespace {
+
+using Complex = std::complex<double>;
+constexpr double kPi = 3.14159265358979323846;
+
+RideOutput bounce_output() {
+  RideOutput o;
+  o.name = "bounce";
+  o.kind = RideOutput::Kind::point;
+  o.body = "body";
+  o.point = Eigen::Vector3d::Zero();
+  o.axis = RideAxis::vertical;
+  o.quantity = ResponseQuantity::displacement;
+  return o;
+}
+
+TrackIrregularitySpectra white_level(double low, double high) {
+  TrackIrregularitySpectra track;
+  track.vertical_level = TrackSpectrum::table(TrackIrregularity::vertical_level, SpectrumAbscissa::wavenumber,
+                                              {low, high}, {1e-6, 1e-6});
+  return track;
+}
+
+// Against Eigen's LU on a random complex system that needs row swaps (a zero leading entry).
+TEST(RideSpeed, SmallSolveMatchesEigensLu) {
+  std::mt19937 random(21);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int n = 7, r = 3;
+  Eigen::MatrixXcd D(n, n), B(n, r);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) D(i, j) = Complex(u(random), u(random)) + (i == j ? Complex(3.0, 1.0) : 0.0);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < r; ++j) B(i, j) = Complex(u(random), u(random));
+  D(0, 0) = 0.0;
+  const Eigen::MatrixXcd expected = Eigen::PartialPivLU<Eigen::MatrixXcd>(D).solve(B);
+  Eigen::MatrixXcd a = D, y = B;
+  const Eigen::VectorXd pivots = ride::solve_in_place(&a, &y);
+  // 1e-13: a diagonally dominated matrix (condition ~10), two eliminations of n = 7 in double
+  // precision differ by a few ulps times the condition.
+  EXPECT_LT((y - expected).norm(), 1e-13 * expected.norm());
+  EXPECT_LT((D * y - B).norm(), 1e-13 * B.norm());
+  EXPECT_GT(pivots.minCoeff(), 0.0);
+}
+
+// A singular matrix: a zero pivot, reported and never a NaN.
+TEST(RideSpeed, SmallSolveReportsAZeroPivotWithoutNaN) {
+  Eigen::MatrixXcd D(3, 3), B(3, 1);
+  D << 1.0, 2.0, 3.0, 2.0, 4.0, 6.0, 1.0, 0.0, 1.0;  // row 2 = 2 × row 1
+  B << 1.0, 1.0, 1.0;
+  const Eigen::VectorXd pivots = ride::solve_in_place(&D, &B);
+  EXPECT_EQ(pivots.minCoeff(), 0.0);
+  EXPECT_TRUE(pivots.allFinite());
+  EXPECT_GT(pivots.maxCoeff(), 0.0);
+}
+
+// The same vehicle with its wheels doubled at each x (two wheels of an axle, summed into one
+// group before the solve) and with one wheel of twice the spring and damper per x: one answer.
+TEST(RideSpeed, WheelsAtOneXAreOneInput) {
+  const double m = 30000.0, k = 1.2e6, c = 4e4;
+  RideOptions options;
+  options.speeds = {20.0, 40.0};
+  const TrackIrregularitySpectra track = white_level(2 * kPi / 50.0, 2 * kPi / 2.0);
+  const RideResult pairs = solve_ride(test::bouncing_mass(m, k, c, {4.0, 4.0, -4.0, -4.0}), track, {bounce_output()}, options);
+  const RideResult single = solve_ride(test::bouncing_mass(m, 2 * k, 2 * c, {4.0, -4.0}), track, {bounce_output()}, options);
+  for (size_t v = 0; v < options.speeds.size(); ++v) {
+    // 1e-13: the same sums in another order (round-off of a few ulps over 10³ points).
+    EXPECT_NEAR(pairs.speeds[v].outputs[0].rms, single.speeds[v].outputs[0].rms, 1e-13 * single.speeds[v].outputs[0].rms);
+    EXPECT_GT(single.speeds[v].outputs[0].rms, 0.0);
+  }
+}
+
+// Wheels at one x and wheels a millimetre apart (not grouped: their delays differ) against the
+// closed form on the grid, and the PSD exactly zero where the track has no density (the points
+// a speed skips).
+TEST(RideSpeed, PsdMatchesTheClosedFormAndIsZeroOutsideTheBand) {
+  const double m = 30000.0, k = 1.2e6, c = 4e4, V = 30.0;
+  const std::vector<double> wheels = {5.0, 5.0, 4.999, -5.0};
+  RideOptions options;
+  options.speeds = {V};
+  const double low = 2 * kPi / 50.0, high = 2 * kPi / 1.0;
+  const RideResult r = solve_ride(test::bouncing_mass(m, k, c, wheels), white_level(low, high), {bounce_output()}, options);
+  const RideAtSpeed& at = r.speeds[0];
+  int inside = 0, outside = 0;
+  for (Eigen::Index i = 0; i < r.frequencies.size(); ++i) {
+    const double f = r.frequencies(i), g = at.input_psd[0](i);
+    if (g == 0.0) {
+      EXPECT_EQ(at.outputs[0].psd(i), 0.0) << f;
+      ++outside;
+      continue;
+    }
+    ++inside;
+    const double expected = std::norm(test::bouncing_mass_response(m, k, c, wheels, f, V)) * g;
+    // 1e-10: the closed form and the solve differ by round-off amplified by the resonance's
+    // 1/ζ and the phases ωτ of up to ~10² rad.
+    EXPECT_NEAR(at.outputs[0].psd(i), expected, 1e-10 * expected + 1e-30) << f;
+  }
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(outside, 100);
+}
+
+TEST(RideSpeed, ResultNamesTheInputSpectraInInputPsdOrder) {
+  RideOptions options;
+  options.speeds = {20.0};
+  const TrackIrregularitySpectra track = white_level(2 * kPi / 50.0, 2 * kPi / 2.0);
+  const RideResult r = solve_ride(test::bouncing_mass(3e4, 1e6, 3e4, {3.0, -3.0}), track, {bounce_output()}, options);
+  ASSERT_EQ(r.inputs.size(), 1u);
+  EXPECT_EQ(r.inputs[0], track.vertical_level->name());
+  EXPECT_EQ(r.speeds[0].input_psd.size(), r.inputs.size());
+}
+
+}  // namespace
+}  // namespace railmodal
