@@ -126,5 +126,26 @@ TEST(RideFrictionInTime, WagonOnFraClass4SticksSlipsAndIsReportedAgainstTheLinea
   std::cout << "[ friction ] time: nonlinear " << friction_seconds << " s, linear march " << linear_seconds << " s\n";
 }
 
+TEST(RideFrictionInTime, APeriodicTrackStartsFromRestAndSaysSo) {
+  const LinearSystem system = assemble(friction_wagon(0.075), DofSet::vertical);
+  TrackSynthesisOptions synthesis;
+  synthesis.length = 320.0;
+  synthesis.step = 0.25;
+  const TrackGeometry track = synthesise_track(friction_fra4_level(), synthesis);  // periodic
+  RideSimulationOptions o;
+  o.speed = 20.0;
+  o.time_step = 0.25 / 20.0;
+  o.settle_time = 2.0;
+  o.effects.leaf_friction = true;
+  const RideSimulationResult r =
+      simulate_ride(system, track, {friction_floor_point(ResponseQuantity::acceleration, 0.0)}, o);
+  EXPECT_EQ(r.time.size(), 1280);  // one period, as the linear path evaluates it
+  EXPECT_TRUE(r.summary.passed());
+  EXPECT_TRUE(r.histories[0].values.allFinite());
+  bool noted = false;
+  for (const std::string& note : r.notes) noted = noted || note.find("started from rest") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
+
 }  // namespace
 }  // namespace railmodal::test
