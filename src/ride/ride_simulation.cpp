@@ -13,6 +13,7 @@
 #include "railmodal/ride_simulation.hpp"
 #include "require_valid.hpp"
 #include "ride/window_indices.hpp"
+#include "ride/ride_friction_march.hpp"
 #include "ride/ride_march.hpp"
 #include "ride/ride_state_space.hpp"
 #include "ride/time_weighting.hpp"
@@ -199,10 +200,6 @@ bool RideSimulationOptions::is_valid(std::string* why) const {
 RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeometry& geometry,
                                    const std::vector<RideOutput>& outputs, const RideSimulationOptions& options) {
   require_valid(options, "RideSimulationOptions: ");
-  if (options.effects.any() || options.effects.constant_friction)
-    throw std::invalid_argument(
-        "simulate_ride: nonlinear effects (leaf friction, progressive springs) are not built in the time-domain ride "
-        "yet; run without them (the linear vehicle) or use solve_ride's statistical linearisation");
   const Eigen::Index samples = geometry_samples(geometry);
   if (system.track_inputs.empty()) throw std::invalid_argument("simulate_ride: the system has no track inputs");
   if (outputs.empty()) throw std::invalid_argument("simulate_ride: no outputs requested");
@@ -212,13 +209,30 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
   const std::vector<ride::OutputRow> rows = ride::output_rows(system, model, outputs);
   const ride::TrackUnderWheels track(system, geometry, ride::contact_half_spacing(system, options.contact_half_spacing));
   const RunPlan plan = plan_run(geometry, samples, track, options, &result.notes);
-  ride::RideMarch march(model, track, options.speed, plan.step, track.span());
-  clock.lap("state transition");
-
-  const Eigen::VectorXd start = geometry.periodic ? periodic_start(&march, plan.evaluated, 2 * model.n, &result.notes)
-                                                  : Eigen::VectorXd::Zero(2 * model.n);
-  const Eigen::MatrixXd y = march_outputs(&march, track, rows, start, plan.settle + plan.evaluated, options.speed);
-  clock.lap("march");
+  Eigen::MatrixXd y;
+  if (options.effects.any()) {
+    // The nonlinear effects simulated, not linearised (docs/ride.md, "Friction in time"): from
+    // rest, also on a periodic track (a nonlinear orbit has no closed-form start).
+    if (geometry.periodic)
+      result.notes.push_back("nonlinear effects: started from rest (settle_time is all the settling there is)");
+    ride::FrictionMarch march = ride::march_with_effects(system, model, track, rows, plan.settle + plan.evaluated,
+                                                         plan.step, options.speed, options.effects);
+    y = std::move(march.y);
+    int sticks = 0, slips = 0;
+    for (const SimulationEvent& e : march.history.events)
+      sticks += e.kind == SimulationEvent::Kind::stick, slips += e.kind == SimulationEvent::Kind::slip;
+    result.summary.checks.push_back({"integrator steps", static_cast<double>(march.history.steps_taken), INFINITY, true});
+    result.summary.checks.push_back({"stick events", static_cast<double>(sticks), INFINITY, true});
+    result.summary.checks.push_back({"slip events", static_cast<double>(slips), INFINITY, true});
+    clock.lap("nonlinear march");
+  } else {
+    ride::RideMarch march(model, track, options.speed, plan.step, track.span());
+    clock.lap("state transition");
+    const Eigen::VectorXd start = geometry.periodic ? periodic_start(&march, plan.evaluated, 2 * model.n, &result.notes)
+                                                    : Eigen::VectorXd::Zero(2 * model.n);
+    y = march_outputs(&march, track, rows, start, plan.settle + plan.evaluated, options.speed);
+    clock.lap("march");
+  }
 
   result.outputs = outputs;
   result.time_step = plan.step;
@@ -230,10 +244,14 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
   result.comfort = comfort(outputs, result.histories);
   clock.lap("indices");
 
-  result.summary.analysis = "ride on a track realisation (time domain)";
+  result.summary.analysis = options.effects.any() ? "ride on a track realisation (time domain, nonlinear effects)"
+                                                   : "ride on a track realisation (time domain)";
   result.summary.method =
-      "exact state transition with a first-order hold on each wheel's linearly interpolated track (Van Loan), "
-      "step = track step / (m·speed); EN 12299 Wb/Wd and Sperling B by the prewarped bilinear transform";
+      options.effects.any()
+          ? "adaptive Dormand–Prince 5(4) with stick/slip events, steps ending where a wheel passes a track sample "
+            "(simulate/sampled_track.hpp); EN 12299 Wb/Wd and Sperling B by the prewarped bilinear transform"
+          : "exact state transition with a first-order hold on each wheel's linearly interpolated track (Van Loan), "
+            "step = track step / (m·speed); EN 12299 Wb/Wd and Sperling B by the prewarped bilinear transform";
   const double non_finite = static_cast<double>((!y.array().isFinite()).count());
   result.summary.checks.push_back({"non-finite output samples", non_finite, 0.0, non_finite == 0.0});
   return result;

@@ -60,7 +60,7 @@ OutputRow motion_row(const LinearSystem& system, const RideStateSpace& model, co
                      ResponseQuantity quantity) {
   const int n = model.n;
   OutputRow row{Eigen::RowVectorXd::Zero(2 * n), Eigen::RowVectorXd::Zero(model.B.cols()),
-                Eigen::RowVectorXd::Zero(model.B.cols())};
+                Eigen::RowVectorXd::Zero(model.B.cols()), Eigen::RowVectorXd()};
   const Eigen::RowVectorXd rMinv = r * model.mass_inverse;
   switch (quantity) {
     case ResponseQuantity::displacement:
@@ -75,6 +75,7 @@ OutputRow motion_row(const LinearSystem& system, const RideStateSpace& model, co
       row.Ls.tail(n) = -rMinv * system.damping;
       row.Lw = rMinv * (model.Bd - system.damping * model.mass_inverse * model.Bv);
       row.Ld = rMinv * model.Bv;
+      row.La = r;
       break;
   }
   return row;

@@ -30,6 +30,9 @@ RideStateSpace ride_state_space(const LinearSystem& system);
 /// An output as y = Ls·s + Lw·w + Ld·ẇ.
 struct OutputRow {
   Eigen::RowVectorXd Ls, Lw, Ld;
+  /// An acceleration's r (y = r·q̈), for the nonlinear path to add r·(q̈ − q̈_linear); empty
+  /// for other quantities.
+  Eigen::RowVectorXd La;
 };
 
 /// The rows of `outputs`. Throws std::invalid_argument for an output naming no body or

@@ -60,6 +60,40 @@ double TrackUnderWheels::sample_slope(const Eigen::VectorXd& profile, double pos
   return (sample(profile, left + h) - sample(profile, left)) / h;
 }
 
+// The segment [i, i+1] that holds `anchor`, extended to `position` (i from the anchor, so all
+// evaluations of one step use one straight piece, also a hair beyond its ends).
+void TrackUnderWheels::segment(const Eigen::VectorXd& profile, double position, double anchor, double* value,
+                               double* slope) const {
+  *value = *slope = 0.0;
+  if (profile.size() == 0) return;
+  const Eigen::Index n = profile.size();
+  Eigen::Index i = static_cast<Eigen::Index>(std::floor(anchor / geometry_.step));
+  // a measured record's ends extend its first and last segments (as `sample` reads it)
+  if (!geometry_.periodic) i = std::clamp<Eigen::Index>(i, 0, n - 2);
+  const double f = position / geometry_.step - static_cast<double>(i);
+  if (geometry_.periodic) {
+    i %= n;
+    if (i < 0) i += n;
+  }
+  const double a = profile(i), b = profile((i + 1) % n);
+  *value = a + f * (b - a);
+  *slope = (b - a) / geometry_.step;
+}
+
+void TrackUnderWheels::on_segment(int input, double leading, double anchor, Eigen::Vector3d* u,
+                                  Eigen::Vector3d* slope) const {
+  const double x = leading - lags_[input], xa = anchor - lags_[input];
+  double level, level_slope, align, align_slope, cross, cross_slope;
+  segment(geometry_.vertical_level, x, xa, &level, &level_slope);
+  segment(geometry_.alignment, x, xa, &align, &align_slope);
+  segment(geometry_.cross_level, x, xa, &cross, &cross_slope);
+  const double y = lateral_positions_[input] / (2.0 * half_spacing_);
+  *u << 0.0, align, level + cross * y;
+  *slope << 0.0, align_slope, level_slope + cross_slope * y;
+}
+
+double TrackUnderWheels::step() const { return geometry_.step; }
+
 Eigen::Vector3d TrackUnderWheels::displacement_of(int input, double leading) const {
   const double x = leading - lags_[input];
   const double roll = sample(geometry_.cross_level, x) / (2.0 * half_spacing_);

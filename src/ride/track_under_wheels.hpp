@@ -40,10 +40,17 @@ class TrackUnderWheels {
   double half_spacing() const { return half_spacing_; }
   /// u_i alone (3 values) for wheel i when the leading wheel is at `leading`.
   Eigen::Vector3d displacement_of(int input, double leading) const;
+  /// u_i and ∂u_i/∂ξ for wheel i at `leading`, on the segment of the interpolation under the
+  /// wheel when the leading one is at `anchor` (extended linearly to `leading`): the smooth
+  /// piece a nonlinear integrator's step stays on (simulate/sampled_track.hpp).
+  void on_segment(int input, double leading, double anchor, Eigen::Vector3d* u, Eigen::Vector3d* slope) const;
+  /// The geometry's step, m: the length of every segment.
+  double step() const;
 
  private:
   double sample(const Eigen::VectorXd& profile, double position) const;
   double sample_slope(const Eigen::VectorXd& profile, double position) const;
+  void segment(const Eigen::VectorXd& profile, double position, double anchor, double* value, double* slope) const;
 
   const TrackGeometry& geometry_;
   std::vector<double> lags_, lateral_positions_;

@@ -24,6 +24,7 @@
 #include "simulate/dormand_prince.hpp"
 #include "simulate/history_summary.hpp"
 #include "simulate/nonlinear_elements.hpp"
+#include "simulate/sampled_track.hpp"
 #include "simulate/sample_count.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -101,14 +102,70 @@ class Model {
   const std::vector<NonlinearElement>& elements() const { return elements_; }
   int state(int i) const { return state_[i]; }
 
+  // A sampled track (simulate_nonlinear_sampled): its loads Bd·w + Bv·ẇ join the forces and
+  // each element standing on it follows its track input's vertical motion.
+  void use_sampled_track(const LinearSystem& s, const simulate::SampledTrack* track) {
+    sampled_ = track;
+    const Eigen::Index m = 3 * static_cast<Eigen::Index>(s.track_inputs.size());
+    Bd_ = Eigen::MatrixXd::Zero(n_, m);
+    Bv_ = Eigen::MatrixXd::Zero(n_, m);
+    for (size_t i = 0; i < s.track_inputs.size(); ++i) {
+      Bd_.middleCols(3 * static_cast<Eigen::Index>(i), 3) = s.track_inputs[i].load_per_displacement;
+      Bv_.middleCols(3 * static_cast<Eigen::Index>(i), 3) = s.track_inputs[i].load_per_velocity;
+    }
+    track_input_.assign(elements_.size(), -1);
+    for (size_t e = 0; e < elements_.size(); ++e)
+      for (size_t i = 0; i < s.track_inputs.size(); ++i)
+        if (s.track_inputs[i].element == elements_[e].element) track_input_[e] = static_cast<int>(i);
+  }
+  // The time whose smooth piece of the sampled track the next evaluations use.
+  void set_piece(double piece) const { piece_ = piece; }
+
+  // Track displacement, velocity and acceleration under element i.
+  void track_motion(int i, double t, double* u, double* du, double* ddu) const {
+    if (!sampled_ || track_input_[i] < 0) {
+      elements_[i].track_motion(t, u, du, ddu);
+      return;
+    }
+    sampled_->motion(t, piece_, &w_, &dw_, &ddw_);
+    const Eigen::Index k = 3 * track_input_[i] + 2;
+    *u = w_(k), *du = dw_(k), *ddu = ddw_(k);
+  }
+
+  // A breakpoint of the sampled track at t: a leaf standing on the track whose velocity jumps
+  // there slides the way the jump drives it (a stuck one slips: its upper end keeps its
+  // velocity, as no finite force changes it at once; a sliding one turns if it must).
+  std::vector<SimulationEvent> cross_break(double t, const Eigen::VectorXd& y, double before, double after) {
+    std::vector<SimulationEvent> events;
+    const auto v = y.tail(n_);
+    for (size_t e = 0; e < elements_.size(); ++e) {
+      const int i = static_cast<int>(e);
+      if (!(elements_[e].friction > 0.0) || elements_[e].in_series() || track_input_[e] < 0) continue;
+      double u, du_before, du_after, ddu;
+      set_piece(before);
+      track_motion(i, t, &u, &du_before, &ddu);
+      set_piece(after);
+      track_motion(i, t, &u, &du_after, &ddu);
+      if (du_after == du_before) continue;  // no kink under this wheel here
+      const double rate = compression_rate(i, t, v);
+      const int direction = rate > 0.0 ? 1 : rate < 0.0 ? -1 : 0;
+      if (direction == 0 || direction == state_[e]) continue;
+      events.push_back(event(t, elements_[e].element,
+                             state_[e] == 0 ? SimulationEvent::Kind::slip : SimulationEvent::Kind::reversal));
+      state_[e] = direction;
+    }
+    set_stuck();
+    return events;
+  }
+
   double compression(int i, double t, const Eigen::VectorXd& x) const {
     double u, du, ddu;
-    elements_[i].track_motion(t, &u, &du, &ddu);
+    track_motion(i, t, &u, &du, &ddu);
     return -(elements_[i].stretch.dot(x) - u);
   }
   double compression_rate(int i, double t, const Eigen::VectorXd& v) const {
     double u, du, ddu;
-    elements_[i].track_motion(t, &u, &du, &ddu);
+    track_motion(i, t, &u, &du, &ddu);
     return -(elements_[i].stretch.dot(v) - du);
   }
   // φ·R_el, the friction force a sliding element feels and a stuck one can hold.
@@ -140,6 +197,10 @@ class Model {
         *f += (scale * (h.parts.stiffness_part + std::complex<double>(0.0, w) * h.parts.damping_part) * phase).real();
       }
     }
+    if (sampled_) {
+      sampled_->motion(t, piece_, &w_, &dw_, &ddw_);
+      f->noalias() += Bd_ * w_ + Bv_ * dw_;
+    }
     for (size_t i = 0; i < elements_.size(); ++i) {
       const NonlinearElement& e = elements_[i];
       const double delta = compression(static_cast<int>(i), t, x);
@@ -165,7 +226,7 @@ class Model {
     for (Eigen::Index r = 0; r < k; ++r) {
       G.row(r) = elements_[set[r]].stretch;
       double u, du, ddu;
-      elements_[set[r]].track_motion(t, &u, &du, &ddu);
+      track_motion(set[r], t, &u, &du, &ddu);
       target(r) = ddu;
     }
     const Eigen::MatrixXd MinvGt = Minv_ * G.transpose();
@@ -185,7 +246,7 @@ class Model {
     Eigen::VectorXd target(stuck_.size());
     for (size_t r = 0; r < stuck_.size(); ++r) {
       double u, du, ddu;
-      elements_[stuck_[r]].track_motion(t, &u, &du, &ddu);
+      track_motion(stuck_[r], t, &u, &du, &ddu);
       target(r) = ddu;
     }
     const Eigen::VectorXd lambda = W_.solve(target - G_ * (Minv_ * f));
@@ -291,7 +352,7 @@ class Model {
       Eigen::VectorXd mismatch(stuck_.size());
       for (size_t r = 0; r < stuck_.size(); ++r) {
         double u, du, ddu;
-        elements_[stuck_[r]].track_motion(t, &u, &du, &ddu);
+        track_motion(stuck_[r], t, &u, &du, &ddu);
         mismatch(r) = G_.row(r).dot(v) - du;
       }
       y->tail(n_) -= Minv_ * G_.transpose() * W_.solve(mismatch);
@@ -327,7 +388,7 @@ class Model {
       state_[i] = before[i];
       if (!elements_[i].in_series()) continue;
       double u, du, ddu;
-      elements_[i].track_motion(0.0, &u, &du, &ddu);
+      track_motion(static_cast<int>(i), 0.0, &u, &du, &ddu);
       const double rate = compression_rate(static_cast<int>(i), 0.0, v),
                    acceleration = -elements_[i].stretch.dot(a) + ddu;
       const bool released =
@@ -386,6 +447,11 @@ class Model {
   std::vector<int> stuck_;
   Eigen::MatrixXd G_;
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> W_;
+  const simulate::SampledTrack* sampled_ = nullptr;  // none: the harmonics are the track
+  Eigen::MatrixXd Bd_, Bv_;                          // the sampled track's loads, n × 3·inputs
+  std::vector<int> track_input_;                     // per element: its track input, or −1
+  mutable double piece_ = 0.0;
+  mutable Eigen::VectorXd w_, dw_, ddw_;
 };
 
 double error_norm(const Eigen::VectorXd& error, const Eigen::VectorXd& y0, const Eigen::VectorXd& y1, double tol) {
@@ -469,6 +535,39 @@ class Integration {
     stamp(0);
   }
 
+  // A sampled track: steps end on its breakpoints up to and including `target`, and at each
+  // the leaves standing on the track take the regime the jump of its velocity gives them.
+  void use_sampled_track(const simulate::SampledTrack* track) {
+    track_ = track;
+    nudge_ = 1e-6 * track->shortest_piece();
+    model_.set_piece(t_ + nudge_);
+  }
+  void cross_breaks_to(double target) {
+    if (!track_) return;
+    for (double b = track_->next_break(t_); b <= target; b = track_->next_break(t_)) {
+      advance_to(b);
+      t_ = b;
+      const size_t first_event = out_.events.size();
+      for (const auto& e : model_.cross_break(t_, y_, t_ - nudge_, t_ + nudge_)) out_.events.push_back(e);
+      stamp(first_event);
+      model_.set_piece(t_ + nudge_);
+      just_fired_.clear();
+    }
+  }
+  // The sample at t to `receive`, with the acceleration (on a breakpoint, the mean of both
+  // sides: what the Fourier series of the interpolated track converges to); returns whether
+  // it is finite.
+  bool record(double t, const simulate::SampleReceiver& receive) {
+    Eigen::VectorXd before(2 * n_), after(2 * n_);
+    model_.set_piece(t - nudge_);
+    model_.rhs(t, y_, &before);
+    model_.set_piece(t + nudge_);
+    model_.rhs(t, y_, &after);
+    const Eigen::VectorXd acceleration = 0.5 * (before.tail(n_) + after.tail(n_));
+    receive(t, y_, acceleration);
+    return y_.allFinite() && acceleration.allFinite();
+  }
+
   // Gives the sample at t to the sink; returns whether it is finite.
   bool record(double t, HistorySink& sink) {
     time_(0) = t;
@@ -510,6 +609,7 @@ class Integration {
 
  private:
   simulate::DormandPrinceStep step_from_here(double length) const {
+    if (track_) model_.set_piece(t_ + 0.5 * length);  // the step lies on one smooth piece
     const auto rhs = [this](double t, const Eigen::VectorXd& state, Eigen::VectorXd* dy) { model_.rhs(t, state, dy); };
     return simulate::dormand_prince_step(rhs, t_, y_, length);
   }
@@ -631,6 +731,8 @@ class Integration {
   Eigen::VectorXd y_;
   double t_ = 0.0;
   double h_;
+  const simulate::SampledTrack* track_ = nullptr;  // none: harmonic sources
+  double nudge_ = 0.0;  // s: t ± this picks the sampled track's piece on either side of t
   std::vector<bool> just_fired_;  // slots that fired at the start of this step: their zero is behind us
   int events_here_ = 0;           // events in a row without time moving on
   TimeHistory& out_;
@@ -702,4 +804,62 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
   return out;
 }
 
+namespace simulate {
+
+TimeHistory simulate_nonlinear_sampled(const LinearSystem& system, const SampledTrack& track,
+                                       const SimulationOptions& options, const NonlinearEffects& effects,
+                                       const SampleReceiver& receive) {
+  const int n = system.size();
+  model::refuse_series_dampers(system, "simulation");
+  if (n == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
+  require_valid(options, "simulation: ");
+  if (options.duration / options.time_step > 1e8)
+    throw std::invalid_argument("simulation: more than 1e8 output steps; take a longer time step");
+  if (!(options.speed > 0.0)) throw std::invalid_argument("simulation: the speed must be positive");
+  if (options.final_speed > 0.0) throw std::invalid_argument("simulation: a sampled track runs at one speed");
+  for (int i = 0; i < n; ++i)
+    if (system.mass.row(i).cwiseAbs().maxCoeff() == 0.0)
+      throw std::invalid_argument("simulation: '" + system.dofs[i].label +
+                                  "' is massless; the nonlinear path needs inertia at every degree of freedom");
+
+  AnalysisSummary summary;
+  StageClock clock(&summary);
+  SimulationOptions used = options;
+  if (used.event_tolerance < resolvable_event_tolerance(options.duration)) {
+    used.event_tolerance = resolvable_event_tolerance(options.duration);
+    summary.checks.push_back({"event tolerance raised to the resolution of time over the run (ε·duration), s",
+                              used.event_tolerance, std::numeric_limits<double>::infinity(), true});
+  }
+  SpeedProfile profile;
+  profile.initial = options.speed;
+  Model model(system, {}, nonlinear_elements(system, {}, effects, {}, profile), profile);
+  model.use_sampled_track(system, &track);
+  const int outputs = static_cast<int>(sample_count(options.duration, options.time_step) - 1);
+  clock.lap("model");
+  TimeHistory out;
+  for (const auto& d : system.dofs) out.labels.push_back(d.label);
+  Integration integration(model, used, initial_state(system, options), out);
+  integration.use_sampled_track(&track);
+  integration.start_at_rest();
+  bool finite = integration.record(0.0, receive);
+  for (int i = 1; i <= outputs; ++i) {
+    const double target = i * options.time_step;
+    integration.cross_breaks_to(target);
+    integration.advance_to(target);
+    finite = integration.record(target, receive) && finite;
+  }
+  clock.lap("integrate");
+  summary.checks.push_back({"integrator steps", static_cast<double>(out.steps_taken),
+                            std::numeric_limits<double>::infinity(), true});
+  summary.checks.push_back({"events", static_cast<double>(out.events.size()), std::numeric_limits<double>::infinity(),
+                            true});
+  summary.checks.push_back({"non-finite samples", finite ? 0.0 : 1.0, 0.0, finite});
+  summary.analysis = "time history, nonlinear, sampled track";
+  summary.method = "adaptive Dormand–Prince 5(4), steps ending on the track's breakpoints, events located by Illinois "
+                   "false position";
+  out.summary = std::move(summary);
+  return out;
+}
+
+}  // namespace simulate
 }  // namespace railmodal
