@@ -205,12 +205,12 @@ struct RideResult {
   std::vector<std::string> inputs;
 };
 
-/// The ride of `system` on `track` at every speed of `options`.
-/// Throws std::invalid_argument for invalid options, an output that names no body, element or
-/// wheelset of the system (naming it), a spectrum whose kind does not match its slot, or no
-/// component at all; railmodal::NumericalError naming the frequency where the dynamic
-/// stiffness is singular off an undamped mode. An undamped excited mode is an answer
-/// (RideOutputAtSpeed::unbounded), not an exception.
+/// The ride of `system` on `track` at every speed of `options`. Throws std::invalid_argument for invalid options, an
+/// output that names no body, element or wheelset of the system (naming it), a spectrum whose kind does not match its
+/// slot, no component at all, an element on the track through a series damper, and what the ride does not model yet
+/// on wheelsets, the lateral wheel–rail contact (creep): alignment, cross-level with lateral degrees of freedom, and a
+/// lateral or longitudinal wheel-rail-force output. Throws railmodal::NumericalError naming the frequency where the
+/// dynamic stiffness is singular off an undamped mode. An undamped excited mode is an answer (`unbounded`), no throw.
 RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
                       const std::vector<RideOutput>& outputs, const RideOptions& options = {});
 

@@ -72,7 +72,7 @@ TrackGeometry load_track_geometry(const std::string& path);
 
 struct RideSimulationOptions {
   double speed = 0.0;      ///< m/s, > 0
-  double time_step = 0.0;  ///< s, > 0; 0 < step ≤ the geometry's step / speed
+  double time_step = 0.0;  ///< s, 0 ≤ step ≤ the geometry's step / speed; 0: 1 ms or that if less (docs/ride.md)
   /// s, ≥ 0: simulated but not evaluated, so the start-up transient is left out.
   double settle_time = 0.0;
   /// Vehicle effects the scene names (SimulationSpec::effects); nothing else is simulated.

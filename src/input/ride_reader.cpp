@@ -115,12 +115,17 @@ TrackSynthesisOptions read_realisation(TableReader t) {
 }
 
 // [ride.simulation]: the run's speed, step, settling time, window and the effects it simulates.
-RideSimulationOptions read_simulation(TableReader t) {
+// What [ride] says of the track and the indices holds for the run too (`ride`): the contact
+// half spacing that turns cross-level into roll, and the averaging window unless the run
+// gives its own.
+RideSimulationOptions read_simulation(TableReader t, const RideOptions& ride) {
   RideSimulationOptions s;
   s.speed = t.positive("speed", Quantity::speed);
-  s.time_step = t.positive("time_step", Quantity::time);
+  // Without it, simulate_ride's default (1 ms, or the track's step over the speed if shorter).
+  s.time_step = t.optional_positive("time_step", Quantity::time).value_or(0.0);
   s.settle_time = t.optional_positive("settle_time", Quantity::time, true).value_or(0.0);
-  s.window = t.optional_positive("window", Quantity::time).value_or(s.window);
+  s.window = t.optional_positive("window", Quantity::time).value_or(ride.percentile_window);
+  s.contact_half_spacing = ride.contact_half_spacing;
   if (t.has("effects"))
     for (const std::string& effect : t.strings("effects")) {
       if (effect == "leaf_friction") s.effects.leaf_friction = true;
@@ -144,7 +149,7 @@ RideSpec read_ride(TableReader t, std::map<std::string, KeyPlace>* places) {
   if (t.has("output"))
     for (auto& o : t.tables("output")) ride.outputs.push_back(read_output(o, ride.outputs.size(), &names, places));
   if (t.has("realisation")) ride.realisation = read_realisation(t.table("realisation"));
-  if (t.has("simulation")) ride.simulation = read_simulation(t.table("simulation"));
+  if (t.has("simulation")) ride.simulation = read_simulation(t.table("simulation"), ride.options);
   if (ride.realisation && !ride.simulation)
     t.fail("realisation", "a realisation is run through [ride.simulation], which is missing");
   t.finish();

@@ -94,6 +94,11 @@ std::string input_name(const RideResult& r, size_t k) {
   return k < r.inputs.size() ? r.inputs[k] : "input " + std::to_string(k + 1);
 }
 
+std::string capitalised(std::string word) {
+  if (!word.empty()) word[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(word[0])));
+  return word;
+}
+
 // ---- the tables (text, Markdown, HTML) ----
 
 Table indices_table(const RideResult& r, const RideAtSpeed& at) {
@@ -185,6 +190,9 @@ void write_text_table(std::ostream& out, const Table& t) {
 }
 
 std::string method_text(const RideResult& r) {
+  if (r.frequencies.size() == 0)
+    return "No frequency-domain ride: the track is a geometry file, which has no spectrum; the time-domain run below "
+           "is the result";
   return "S_out(f) = Σ_c |H_c(f)|² G_c(f) over " + std::to_string(r.frequencies.size()) + " frequencies from " +
          (r.frequencies.size() ? significant(r.frequencies[0], 3) + " to " +
                                      significant(r.frequencies[r.frequencies.size() - 1], 3) + " Hz"
@@ -199,6 +207,32 @@ constexpr const char* kEstimateNote =
     "RMS (filter form). Dominant modes: each mode's share is the variance of its term alone over the output's "
     "variance; the cross terms between modes make up the rest and may be negative, so a share can exceed 100 % "
     "(a suspension force, which also follows the track directly, shows this most).";
+
+// The time-domain notes with those that differ only in the output they begin with ("floor at
+// mid-car, vertical: P95 over the 36 complete windows …") written once, naming how many.
+std::vector<std::string> run_notes(const RideSimulationResult& s) {
+  std::vector<std::string> notes;
+  std::vector<std::pair<std::string, size_t>> shared;  // text after the output's name, outputs
+  for (const std::string& n : s.notes) {
+    const auto named = std::find_if(s.outputs.begin(), s.outputs.end(),
+                                    [&](const RideOutput& o) { return n.rfind(o.name + ": ", 0) == 0; });
+    if (named == s.outputs.end()) {
+      notes.push_back(n);
+      continue;
+    }
+    const std::string text = n.substr(named->name.size() + 2);
+    const auto seen = std::find_if(shared.begin(), shared.end(), [&](const auto& t) { return t.first == text; });
+    if (seen == shared.end()) shared.push_back({text, 1});
+    else ++seen->second;
+  }
+  for (const auto& [text, count] : shared)
+    notes.push_back(count == 1 ? text : capitalised(text) + " (" + std::to_string(count) + " outputs)");
+  return notes;
+}
+
+constexpr const char* kCheckNote =
+    "(c) is read against the scatter of a realisation's RMS, a few per cent for minutes of track (docs/ride.md, "
+    "\"The FFT checks\"), not as pass or fail; (a) is exact to round-off for a linear vehicle.";
 
 // Markdown and HTML write the same sections; `kind` says how a table is written.
 enum class Document { markdown, html };
@@ -266,11 +300,6 @@ std::vector<Group> groups_of(const RideResult& r) {
                      [&](const Group& g) { return g.unit == unit_of(o) && g.axis == o.axis; }))
       groups.push_back({unit_of(o), o.axis});
   return groups;
-}
-
-std::string capitalised(std::string word) {
-  if (!word.empty()) word[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(word[0])));
-  return word;
 }
 
 // The output PSDs of one group at one speed.
@@ -341,12 +370,15 @@ report::Chart nmv_chart(const RideResult& r) {
 report::Chart history_chart(const RideSimulationResult& s, size_t i, double window) {
   report::Chart c;
   c.id = "history-" + std::to_string(i);
-  c.title = "Weighted acceleration: " + s.outputs[i].name;
+  // EN 12299 weights vertical acceleration by Wb, lateral and longitudinal by Wd.
+  c.title = std::string(s.outputs[i].axis == RideAxis::vertical ? "Wb" : "Wd") +
+            "-weighted acceleration and its " + significant(window, 3) + " s RMS values: " + s.outputs[i].name;
   c.x_label = "time (s)";
   c.y_label = "weighted acceleration (m/s²)";
   const RideHistory& h = s.histories[i];
   report::ChartSeries trace = series("weighted acceleration", {}, {});
-  // At most some 4000 points drawn: every k-th sample (the page stays small; the CSV has all).
+  // At most some 4000 points drawn: every k-th sample (the page stays small; the JSON has the
+  // window values).
   const size_t n = std::min<size_t>(h.weighted.size(), s.time.size());
   const size_t every = std::max<size_t>(1, n / 4000);
   for (size_t k = 0; k < n; k += every) trace.x.push_back(s.time[k]), trace.y.push_back(h.weighted[k]);
@@ -358,7 +390,7 @@ report::Chart history_chart(const RideSimulationResult& s, size_t i, double wind
     windows.x.push_back(t0 + (w + 1) * window), windows.y.push_back(h.window_rms[w]);
   }
   c.series.push_back(windows);
-  if (h.p95) c.lines.push_back({"P95", *h.p95, false, "95th percentile of the window RMS values"});
+  if (h.p95) c.lines.push_back({"P95", *h.p95, false, "the 95th percentile of the window RMS values"});
   return c;
 }
 
@@ -383,6 +415,10 @@ void write_time_domain(std::ostream& out, const Page& p, Document d) {
   const bool md = d == Document::markdown;
   const RideSimulationResult& s = *p.simulated;
   out << (md ? "\n## Time-domain run\n\n" : "<h2>Time-domain run</h2>\n");
+  // What was run and how (track, speed, duration, step) comes before the figures.
+  for (const std::string& n : run_notes(s))
+    out << (md ? "- " : "<p class=note>") << (md ? n : report::html_escape(n)) << (md ? "\n" : "</p>\n");
+  out << (md ? "\n" : "");
   write_table(out, simulated_table(s), d);
   if (!s.comfort.empty()) {
     out << (md ? "\n" : "");
@@ -394,8 +430,9 @@ void write_time_domain(std::ostream& out, const Page& p, Document d) {
   if (p.checks) {
     out << (md ? "\n### FFT checks\n\n" : "<h3>FFT checks</h3>\n");
     write_table(out, checks_table(*p.checks, s), d);
+    out << (md ? "\n" : "<p class=note>") << (md ? kCheckNote : report::html_escape(kCheckNote))
+        << (md ? "\n" : "</p>\n");
   }
-  for (const std::string& n : s.notes) out << (md ? "\n- " : "<p class=note>") << n << (md ? "\n" : "</p>\n");
 }
 
 void write_markdown(std::ostream& out, const Page& p) {
@@ -406,7 +443,7 @@ void write_markdown(std::ostream& out, const Page& p) {
     report::write_markdown_table(out, modes_table(r));
   }
   write_speed_sections(out, p, Document::markdown);
-  out << "\n" << kEstimateNote << "\n";
+  if (!r.speeds.empty()) out << "\n" << kEstimateNote << "\n";
   for (const std::string& n : r.notes) out << "\n- " << n << "\n";
   write_time_domain(out, p, Document::markdown);
 }
@@ -417,7 +454,8 @@ void write_html(std::ostream& out, const Page& p) {
   report::write_html_head(out, "Ride: " + p.title);
   out << "<h1>Ride: " << html_escape(p.title) << "</h1>\n<p>" << html_escape(method_text(r)) << ".</p>\n";
   for (const std::string& n : r.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
-  if (!r.speeds.empty()) {
+  // Against speed only when there are speeds to draw a line through; one speed is its table.
+  if (r.speeds.size() > 1) {
     out << "<h2>Indices against speed</h2>\n";
     // One chart per axis, so that each holds a few floor points.
     for (RideAxis axis : {RideAxis::vertical, RideAxis::lateral, RideAxis::longitudinal}) {
@@ -432,6 +470,8 @@ void write_html(std::ostream& out, const Page& p) {
       if (!wz.series.empty()) out << report::svg_chart(wz);
     }
     if (!r.speeds.front().comfort.empty()) out << report::svg_chart(nmv_chart(r));
+  }
+  if (!r.speeds.empty()) {
     // The spectra at the highest speed: the one a ride is signed off at.
     const size_t top = r.speeds.size() - 1;
     out << "<h2>Spectra at " << html_escape(kmh(r.speeds[top].speed)) << "</h2>\n";
@@ -449,7 +489,7 @@ void write_html(std::ostream& out, const Page& p) {
     report::write_html_table(out, modes_table(r));
   }
   write_speed_sections(out, p, Document::html);
-  out << "<p class=note>" << html_escape(kEstimateNote) << "</p>\n";
+  if (!r.speeds.empty()) out << "<p class=note>" << html_escape(kEstimateNote) << "</p>\n";
   write_time_domain(out, p, Document::html);
   report::write_html_footer(out, "ride", p.provenance);
 }
@@ -466,17 +506,18 @@ void write_text(std::ostream& out, const Page& p) {
     write_text_table(out, indices_table(r, at));
     if (!at.comfort.empty()) write_text_table(out, comfort_table(at.comfort, "N_MV (estimate)"));
   }
-  out << "\n" << kEstimateNote << "\n";
+  if (!r.speeds.empty()) out << "\n" << kEstimateNote << "\n";
   for (const std::string& n : r.notes) out << "Note: " << n << "\n";
   if (p.simulated) {
     out << "\nTime-domain run:\n";
+    for (const std::string& n : run_notes(*p.simulated)) out << "  " << n << "\n";
     write_text_table(out, simulated_table(*p.simulated));
     if (!p.simulated->comfort.empty()) write_text_table(out, comfort_table(p.simulated->comfort, "N_MV"));
     if (p.checks) {
       out << "FFT checks:\n";
       write_text_table(out, checks_table(*p.checks, *p.simulated));
+      out << "  " << kCheckNote << "\n";
     }
-    for (const std::string& n : p.simulated->notes) out << "Note: " << n << "\n";
   }
 }
 

@@ -184,6 +184,37 @@ effects = ["leaf_friction"]
   EXPECT_FALSE(s.ride->simulation->effects.progressive_springs);
 }
 
+// What [ride] says of the track and the indices holds for the time-domain run too: the contact
+// half spacing (cross-level to roll) and the averaging window, unless the run gives its own;
+// without a time_step the run takes simulate_ride's default (0).
+TEST(RideScene, TheRunTakesTheRideTablesContactHalfSpacingAndWindow) {
+  std::string text = kRideScene + R"(contact_half_spacing = "0.8 m"
+percentile_window = "4 s"
+[ride.realisation]
+length = "4096 m"
+step = "0.25 m"
+[ride.simulation]
+speed = "160 km/h"
+)";
+  const Scene s = load_scene(write_ride_scene(text));
+  ASSERT_TRUE(s.ride && s.ride->simulation);
+  EXPECT_DOUBLE_EQ(s.ride->options.contact_half_spacing, 0.8);
+  EXPECT_DOUBLE_EQ(s.ride->simulation->contact_half_spacing, 0.8);
+  EXPECT_DOUBLE_EQ(s.ride->simulation->window, 4.0);
+  EXPECT_EQ(s.ride->simulation->time_step, 0.0);
+  text += "window = \"5 s\"\n";
+  EXPECT_DOUBLE_EQ(load_scene(write_ride_scene(text)).ride->simulation->window, 5.0);
+  // without them in [ride], the defaults of both: from the wheelsets (0) and EN 12299's 5 s
+  const Scene plain = load_scene(write_ride_scene(kRideScene + R"([ride.realisation]
+length = "4096 m"
+step = "0.25 m"
+[ride.simulation]
+speed = "160 km/h"
+)"));
+  EXPECT_EQ(plain.ride->simulation->contact_half_spacing, 0.0);
+  EXPECT_DOUBLE_EQ(plain.ride->simulation->window, 5.0);
+}
+
 TEST(RideScene, MeasuredGeometryResolvedAgainstTheScene) {
   write_temp("ride_track.csv", "distance [m],vertical level [mm]\n0,0\n0.25,1\n");
   const Scene s = load_scene(write_ride_scene(std::string(kRideScene).replace(

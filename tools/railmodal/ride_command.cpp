@@ -34,10 +34,12 @@ std::vector<double> command_line_speeds(const RideCommandOptions& o) {
   }
 }
 
-// The scene's [ride] options (or the defaults) with the command line's speeds and threads.
+// The scene's [ride] options (or the defaults) with the command line's speeds and threads;
+// without speeds in either, the time-domain run's speed (the one its FFT check (c) compares at).
 RideOptions ride_options(const Scene& scene, const std::vector<double>& speeds, int threads) {
   RideOptions options = scene.ride ? scene.ride->options : RideOptions{};
   if (!speeds.empty()) options.speeds = speeds;
+  if (options.speeds.empty() && scene.ride && scene.ride->simulation) options.speeds = {scene.ride->simulation->speed};
   if (options.speeds.empty())
     throw InputError(scene.source, 0, 0,
                      "no speeds: give them in [ride] (speeds = \"100 km/h:200 km/h:20 km/h\") or as --speeds");
@@ -51,12 +53,20 @@ struct TimeDomain {
   std::optional<RideFftChecks> checks;
 };
 
-std::optional<TimeDomain> run_time_domain(const Scene& scene, const LinearSystem& system,
-                                          const std::vector<RideOutput>& outputs) {
+// The track of the time-domain run, synthesised or measured; read before any analysis, so that
+// a bad geometry file is reported at once.
+std::optional<TrackGeometry> run_track(const Scene& scene) {
   if (!scene.ride || !scene.ride->simulation) return std::nullopt;
+  return scene.ride->realisation ? synthesise_track(*scene.irregularity, *scene.ride->realisation)
+                                 : load_track_geometry(scene.ride->geometry_file);
+}
+
+std::optional<TimeDomain> run_time_domain(const Scene& scene, const LinearSystem& system,
+                                          const std::vector<RideOutput>& outputs,
+                                          const std::optional<TrackGeometry>& track) {
+  if (!track) return std::nullopt;
   const RideSpec& spec = *scene.ride;
-  const TrackGeometry geometry = spec.realisation ? synthesise_track(*scene.irregularity, *spec.realisation)
-                                                  : load_track_geometry(spec.geometry_file);
+  const TrackGeometry& geometry = *track;
   TimeDomain run;
   run.simulated = simulate_ride(system, geometry, outputs, *spec.simulation);
   // The checks compare with the spectra the realisation was drawn from: none for measured track.
@@ -105,6 +115,7 @@ int run(const RideCommandOptions& o) {
     result.outputs = outputs;
     std::optional<TimeDomain> time_domain;
     try {
+      const std::optional<TrackGeometry> track = run_track(scene);
       // Measured geometry alone has no spectra: only its time-domain run is reported.
       if (has_spectra(*scene.irregularity)) result = solve_ride(system, *scene.irregularity, outputs, options);
       // The legend of the input spectra: solve_ride gives them in this order, the components present.
@@ -112,7 +123,7 @@ int run(const RideCommandOptions& o) {
         for (const auto* s : {&scene.irregularity->vertical_level, &scene.irregularity->alignment,
                               &scene.irregularity->cross_level})
           if (*s) result.inputs.push_back((*s)->name());
-      time_domain = run_time_domain(scene, system, outputs);
+      time_domain = run_time_domain(scene, system, outputs, track);
     } catch (const std::invalid_argument& e) {
       // The reader checked every key it could; what is left is a value only the vehicle and the
       // spectra together can refuse (a band the realisation cannot sample): the scene's error.
