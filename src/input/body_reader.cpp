@@ -66,14 +66,19 @@ std::optional<BodyBending> read_bending(TableReader& parent) {
                   "not both"
                 : "missing: give the beam, bending_stiffness = \"2.5e9 N*m^2\" and mass_per_length = \"1.3 t/m\", "
                   "or the mode, frequency = \"9 Hz\" and modal_mass = \"8 t\"");
+  // Filled as plain structs and then assigned: clang decides std::optional<Beam>::emplace() is
+  // not viable (it judges the nested struct's default constructor while BodyBending is still
+  // incomplete), so emplace() builds with g++ only.
   if (beam) {
-    b.beam.emplace();
-    b.beam->bending_stiffness = t.positive("bending_stiffness", Quantity::force_area);
-    b.beam->mass_per_length = t.positive("mass_per_length", Quantity::mass_per_length);
+    BodyBending::Beam given;
+    given.bending_stiffness = t.positive("bending_stiffness", Quantity::force_area);
+    given.mass_per_length = t.positive("mass_per_length", Quantity::mass_per_length);
+    b.beam = given;
   } else {
-    b.mode.emplace();
-    b.mode->frequency = t.positive("frequency", Quantity::frequency);
-    b.mode->modal_mass = t.positive("modal_mass", Quantity::mass);
+    BodyBending::Mode given;
+    given.frequency = t.positive("frequency", Quantity::frequency);
+    given.modal_mass = t.positive("modal_mass", Quantity::mass);
+    b.mode = given;
   }
   // Required: an undamped bending mode has an unbounded resonance, and no default is right.
   b.damping_ratio = t.positive("damping_ratio", Quantity::dimensionless, true);
