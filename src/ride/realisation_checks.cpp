@@ -39,7 +39,7 @@ class ComponentResponse {
  public:
   ComponentResponse(const RideStateSpace& model, const std::vector<OutputRow>& rows, const TrackUnderWheels& track,
                     TrackIrregularity component, double speed)
-      : rows_(rows), track_(track), component_(component), speed_(speed) {
+      : track_(track), component_(component), speed_(speed) {
     const Eigen::EigenSolver<Eigen::MatrixXd> eigen(model.A);
     if (eigen.info() != Eigen::Success) throw std::runtime_error("exact bin check: the state matrix has no eigenvectors");
     poles_ = eigen.eigenvalues();
@@ -71,7 +71,6 @@ class ComponentResponse {
   }
 
  private:
-  const std::vector<OutputRow>& rows_;
   const TrackUnderWheels& track_;
   TrackIrregularity component_;
   double speed_;
