@@ -118,11 +118,6 @@ int run(const RideCommandOptions& o) {
       const std::optional<TrackGeometry> track = run_track(scene);
       // Measured geometry alone has no spectra: only its time-domain run is reported.
       if (has_spectra(*scene.irregularity)) result = solve_ride(system, *scene.irregularity, outputs, options);
-      // The legend of the input spectra: solve_ride gives them in this order, the components present.
-      if (result.inputs.empty())
-        for (const auto* s : {&scene.irregularity->vertical_level, &scene.irregularity->alignment,
-                              &scene.irregularity->cross_level})
-          if (*s) result.inputs.push_back((*s)->name());
       time_domain = run_time_domain(scene, system, outputs, track);
     } catch (const std::invalid_argument& e) {
       // The reader checked every key it could; what is left is a value only the vehicle and the
