@@ -3,7 +3,8 @@
 # already there: apt is only consulted for what is missing.
 set -euo pipefail
 packages=(cmake g++ make pkg-config libeigen3-dev libtoml11-dev nlohmann-json3-dev libcli11-dev
-          libfftw3-dev libarpack2-dev libgtest-dev libbenchmark-dev libopenmpi-dev openmpi-bin)
+          libfftw3-dev libarpack2-dev libgtest-dev libbenchmark-dev libopenmpi-dev openmpi-bin
+          python3-dev pybind11-dev python3-numpy python3-scipy python3-pandas python3-pytest)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -16,14 +16,14 @@ jobs="$(nproc)"
 # -O1: the sanitised build is for finding errors, and compiles in about 40 % of the time at -O2 -g.
 # The test files compile in batches (RAILMODAL_UNITY_TESTS; docs/architecture.md, "Build").
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" \
-  -DRAILMODAL_SANITIZE=ON -DRAILMODAL_BUILD_BENCHMARKS=OFF -DRAILMODAL_UNITY_TESTS=ON >/dev/null
+  -DRAILMODAL_SANITIZE=ON -DRAILMODAL_BUILD_BENCHMARKS=OFF -DRAILMODAL_PYTHON=OFF -DRAILMODAL_UNITY_TESTS=ON >/dev/null
 cmake --build build-asan -j"$jobs"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-asan --output-on-failure --no-tests=error -j"$jobs" -E package_consumer
 
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" \
   -DRAILMODAL_BUILD_FUZZERS=ON \
-  -DRAILMODAL_BUILD_TESTS=OFF -DRAILMODAL_BUILD_BENCHMARKS=OFF >/dev/null
+  -DRAILMODAL_BUILD_TESTS=OFF -DRAILMODAL_BUILD_BENCHMARKS=OFF -DRAILMODAL_PYTHON=OFF >/dev/null
 cmake --build build-fuzz -j"$jobs" --target fuzz_inputs
 # Seed corpus: every bundled and malformed input, each under the parser its extension names.
 corpus=build-fuzz/corpus

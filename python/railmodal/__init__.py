@@ -1,0 +1,7 @@
+"""railmodal: modal and frequency-response analysis of railway vehicles, from Python.
+
+The compiled extension ``railmodal._railmodal`` wraps the C++ library; this package re-exports
+it. docs/python.md is the guide.
+"""
+from ._railmodal import *  # noqa: F401,F403
+from ._railmodal import __version__  # noqa: F401

@@ -1,0 +1,8 @@
+// Placeholder: the response bindings are not written yet (docs/python.md).
+#include "bindings.hpp"
+
+namespace railmodal::python {
+
+void bind_response(pybind11::module_&) {}
+
+}  // namespace railmodal::python

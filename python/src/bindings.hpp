@@ -1,0 +1,19 @@
+// The Python module's parts: one function per area of the library, each in its own file,
+// registering that area's functions and types on the module (module.cpp calls them in order).
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace railmodal::python {
+
+void bind_errors(pybind11::module_& m);      // InputError, NumericalError → Python exceptions
+void bind_model(pybind11::module_& m);       // vehicles (file, dict), assemble, Matrix Market
+void bind_modes(pybind11::module_& m);       // undamped and damped modes
+void bind_response(pybind11::module_& m);    // harmonic response, FRFs, critical speeds
+void bind_simulation(pybind11::module_& m);  // scenes, simulate, spectra, fft-check
+void bind_study(pybind11::module_& m);       // design studies (compare)
+void bind_stability(pybind11::module_& m);   // hunting stability
+void bind_ride(pybind11::module_& m);        // ride on random track
+void bind_balance(pybind11::module_& m);     // driving gear and balancing
+
+}  // namespace railmodal::python
