@@ -254,9 +254,9 @@ void bind_frequency_response(py::module_& m) {
   m.def(
       "harmonic_response",
       [](const LinearSystem& system, const ModalResult& modes, const Eigen::VectorXcd& load,
-         const std::vector<double>& frequencies_hz, const std::string& method, int mode_count) {
+         const DoubleArray& frequencies_hz, const std::string& method, int mode_count) {
         if (method != "direct" && method != "modal") throw py::value_error("method is '" + method + "'; expected direct or modal");
-        return sweep(system, modes, load, frequencies_hz, all_dofs(system), ResponseQuantity::displacement,
+        return sweep(system, modes, load, to_vector(frequencies_hz, "frequencies_hz"), all_dofs(system), ResponseQuantity::displacement,
                      method == "modal", mode_count);
       },
       py::arg("system"), py::arg("modes"), py::arg("load"), py::arg("frequencies_hz"), py::arg("method") = "direct",
@@ -266,7 +266,7 @@ void bind_frequency_response(py::module_& m) {
 
   m.def(
       "frf",
-      [](const LinearSystem& system, const ModalResult& modes, py::handle input, const std::vector<double>& frequencies_hz,
+      [](const LinearSystem& system, const ModalResult& modes, py::handle input, const DoubleArray& frequencies_hz,
          py::object outputs, const std::string& quantity, const std::string& method, int mode_count) {
         if (method != "direct" && method != "modal") throw py::value_error("method is '" + method + "'; expected direct or modal");
         Eigen::VectorXcd load = Eigen::VectorXcd::Zero(system.size());
@@ -277,7 +277,8 @@ void bind_frequency_response(py::module_& m) {
         } else {
           for (py::handle o : outputs) dofs.push_back(dof_index(system, o));
         }
-        return sweep(system, modes, load, frequencies_hz, dofs, quantity_of(quantity), method == "modal", mode_count);
+        return sweep(system, modes, load, to_vector(frequencies_hz, "frequencies_hz"), dofs, quantity_of(quantity),
+                     method == "modal", mode_count);
       },
       py::arg("system"), py::arg("modes"), py::arg("input"), py::arg("frequencies_hz"), py::arg("outputs") = py::none(),
       py::arg("quantity") = "displacement", py::arg("method") = "direct", py::arg("mode_count") = 0,
@@ -367,10 +368,11 @@ void bind_critical_speeds(py::module_& m) {
   m.def(
       "amplitude_curves",
       [](const LinearSystem& system, const ModalResult& modes, std::shared_ptr<ExcitationSource> source,
-         const py::iterable& outputs, std::vector<double> speeds, int source_index, double friction_reference_amplitude) {
+         const py::iterable& outputs, const DoubleArray& speeds, int source_index, double friction_reference_amplitude) {
         const std::vector<OutputRequest> requests = output_requests(system, outputs);
+        SpeedGrid grid(to_vector(speeds, "speeds"));
         py::gil_scoped_release release;
-        return amplitude_curves(system, modes, *source, source_index, requests, SpeedGrid(std::move(speeds)),
+        return amplitude_curves(system, modes, *source, source_index, requests, grid,
                                 friction_reference_amplitude);
       },
       py::arg("system"), py::arg("modes"), py::arg("source"), py::arg("outputs"), py::arg("speeds"),
