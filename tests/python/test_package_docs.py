@@ -22,3 +22,16 @@ def test_every_snippet_of_the_guide_runs(capsys):
         os.chdir(here)
     printed = capsys.readouterr().out
     assert "body.cg_height" in printed and "body.mass None" in printed  # the error examples ran their except
+
+
+def test_the_readmes_python_example_runs():
+    text = (SOURCE / "README.md").read_text()
+    blocks = re.findall(r"^```python\n(.*?)^```", text, flags=re.S | re.M)
+    assert blocks
+    here = os.getcwd()
+    os.chdir(SOURCE)
+    try:
+        for block in blocks:
+            exec(compile(block, "README.md", "exec"), {"__name__": "readme"})
+    finally:
+        os.chdir(here)
