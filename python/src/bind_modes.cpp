@@ -29,6 +29,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 ModalOptions read_modal_options(py::dict options, const std::string& what) {
+  if (options.empty()) return {};  // the common call: no reader, no allocations
   OptionReader reader(std::move(options), what);
   ModalOptions o;
   reader.read("zero_tolerance", &o.zero_tolerance);

@@ -5,7 +5,7 @@ The C++ program python_call_timing times the library calls the bindings make, on
 inputs; this script times the same calls through `railmodal` in Python. Both sides are run in
 alternation, ROUNDS times, in one run of this script (the machine is shared and noisy), and
 each figure is the median over the rounds of a median over 5 batches, with the spread (min to
-max over the rounds). The overhead is the difference per call; the ratio says how much of a
+max over the rounds), all in CPU time of the calling thread. The overhead is the difference per call; the ratio says how much of a
 call that is. It also times reading M of a 2000-DOF system (a view, no copy) against copying it.
 
   PYTHONPATH=build/python python3 tools/benchmarks/python_overhead.py build [ROUNDS] [REPEATS]
@@ -25,13 +25,15 @@ DATA = ROOT / "data"
 
 
 def per_call(repeats, call):
-    """Seconds per call: the median over 5 batches of `repeats` calls, as the C++ side does."""
+    """Seconds per call: the median over 5 batches of `repeats` calls, as the C++ side does, in
+    CPU time of the calling thread (the machine is shared: wall time would count the time other
+    processes hold the core)."""
     batches = []
     for _ in range(5):
-        start = time.perf_counter()
+        start = time.thread_time()
         for _ in range(repeats):
             call()
-        batches.append((time.perf_counter() - start) / repeats)
+        batches.append((time.thread_time() - start) / repeats)
     return statistics.median(batches)
 
 
