@@ -406,9 +406,9 @@ void bind_critical_speeds(py::module_& m) {
 
   m.def(
       "study_critical_speeds",
-      [](const Scene& scene, std::optional<Vehicle> vehicle) {
+      [](const Scene& scene, const Vehicle* vehicle) {  // a pointer: the vehicle is not copied
         py::gil_scoped_release release;
-        return study_critical_speeds(scene, vehicle ? *vehicle : load_vehicle(scene.vehicle_file));
+        return vehicle ? study_critical_speeds(scene, *vehicle) : study_critical_speeds(scene, load_vehicle(scene.vehicle_file));
       },
       py::arg("scene"), py::arg("vehicle") = py::none(),
       "The critical-speed study of a scene (its own vehicle unless one is given), as `railmodal critical-speed`.");
