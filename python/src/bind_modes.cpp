@@ -17,6 +17,7 @@
 #include "dofs.hpp"
 #include "options.hpp"
 #include "railmodal/damped_modal.hpp"
+#include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"
 #include "railmodal/summary.hpp"
 
@@ -315,6 +316,22 @@ void bind_modes(py::module_& m) {
       },
       py::arg("system"),
       "Damped modes. Keywords as DampedModalOptions: undamped={ModalOptions keywords}, critical_gap.");
+
+  m.def(
+      "modes_of_vehicles",
+      [](const std::vector<const Vehicle*>& vehicles, const std::string& dofs, py::kwargs options) {
+        const std::optional<DofSet> set = dof_set_from_string(dofs);
+        if (!set) throw py::value_error("dofs is '" + dofs + "'; expected one of vertical, lateral, all");
+        const ModalOptions o = read_modal_options(options, "modes_of_vehicles()");
+        std::vector<ModalResult> results;
+        results.reserve(vehicles.size());
+        py::gil_scoped_release release;
+        for (const Vehicle* vehicle : vehicles) results.push_back(solve_modes(assemble(*vehicle, *set), o));
+        return results;
+      },
+      py::arg("vehicles"), py::arg("dofs") = "all",
+      "Assembles and solves each vehicle of a list (design variants) in C++ without the GIL: a list of "
+      "ModalResult. Keywords as modes().");
 
   m.def(
       "modes_batch",

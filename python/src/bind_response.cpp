@@ -33,30 +33,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-ResponseQuantity quantity_of(const std::string& word) {
-  const std::optional<ResponseQuantity> q = response_quantity_from_string(word);
-  if (!q) throw py::value_error("quantity is '" + word + "'; expected one of displacement, velocity, acceleration");
-  return *q;
-}
-
-// Outputs given as labels, indices, or (label, quantity) pairs.
-std::vector<OutputRequest> output_requests(const LinearSystem& system, const py::iterable& outputs) {
-  std::vector<OutputRequest> requests;
-  for (py::handle item : outputs) {
-    OutputRequest r;
-    if (py::isinstance<py::tuple>(item) || py::isinstance<py::list>(item)) {
-      const py::sequence pair = py::reinterpret_borrow<py::sequence>(item);
-      if (pair.size() != 2) throw py::value_error("an output is a label, an index or a (label, quantity) pair");
-      r.dof = dof_index(system, pair[0]);
-      r.quantity = quantity_of(pair[1].cast<std::string>());
-    } else {
-      r.dof = dof_index(system, item);
-    }
-    requests.push_back(r);
-  }
-  return requests;
-}
-
 // The steady response at each of several frequencies, for some outputs.
 struct FrequencyResponse {
   std::vector<double> frequencies_hz;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "railmodal/linear_system.hpp"
+#include "railmodal/response.hpp"
 
 namespace railmodal::python {
 
@@ -36,6 +37,31 @@ inline int dof_index(const LinearSystem& system, pybind11::handle dof) {
     throw pybind11::value_error("degree of freedom " + std::to_string(dof.cast<int>()) + " out of range (" +
                                 std::to_string(system.size()) + " of them)");
   return i;
+}
+
+/// "displacement", "velocity" or "acceleration"; ValueError for another word.
+inline ResponseQuantity quantity_of(const std::string& word) {
+  const std::optional<ResponseQuantity> q = response_quantity_from_string(word);
+  if (!q) throw pybind11::value_error("quantity is '" + word + "'; expected one of displacement, velocity, acceleration");
+  return *q;
+}
+
+/// Outputs given as labels, indices, or (label, quantity) pairs (docs/python.md, "Conventions").
+inline std::vector<OutputRequest> output_requests(const LinearSystem& system, const pybind11::iterable& outputs) {
+  std::vector<OutputRequest> requests;
+  for (pybind11::handle item : outputs) {
+    OutputRequest r;
+    if (pybind11::isinstance<pybind11::tuple>(item) || pybind11::isinstance<pybind11::list>(item)) {
+      const pybind11::sequence pair = pybind11::reinterpret_borrow<pybind11::sequence>(item);
+      if (pair.size() != 2) throw pybind11::value_error("an output is a label, an index or a (label, quantity) pair");
+      r.dof = dof_index(system, pair[0]);
+      r.quantity = quantity_of(pair[1].cast<std::string>());
+    } else {
+      r.dof = dof_index(system, item);
+    }
+    requests.push_back(r);
+  }
+  return requests;
 }
 
 /// A LinearSystem from dense M, K (and C), DOFs labelled dof1, dof2, ... unless `labels` name

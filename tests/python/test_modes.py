@@ -144,3 +144,19 @@ def test_summary_mode_objects_and_energy_shares():
     with pytest.raises(IndexError):
         result[len(result)]
     assert result.max_residual <= 1e-8 and result.orthonormality_error < 1e-10
+
+
+def test_modes_of_vehicles_equals_assembling_and_solving_each():
+    car = railmodal.load_vehicle(RESORT)
+    heavier = car.copy()
+    bodies = heavier.bodies
+    bodies[0].mass *= 1.5
+    heavier.bodies = bodies
+    results = railmodal.modes_of_vehicles([car, heavier], dofs="vertical", mode_count=2)
+    for vehicle, result in zip([car, heavier], results):
+        # The same two library calls in the same order: the same numbers.
+        expected = railmodal.modes(railmodal.assemble(vehicle, "vertical"), mode_count=2)
+        np.testing.assert_array_equal(result.frequencies_hz, expected.frequencies_hz)
+    assert results[1].frequencies_hz[0] < results[0].frequencies_hz[0]  # a heavier body bounces slower
+    with pytest.raises(ValueError, match="expected one of vertical"):
+        railmodal.modes_of_vehicles([car], dofs="up")
