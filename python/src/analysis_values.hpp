@@ -1,0 +1,116 @@
+// What the analysis bindings (simulation, studies, stability, ride, balance) share: reading a
+// vehicle or a path argument, converting a summary, building records, and choosing an enum by
+// its word. Header-only, used by those five files only (the model, modes and response bindings
+// have their own).
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstddef>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "railmodal/errors.hpp"
+#include "railmodal/input.hpp"
+#include "railmodal/linear_system.hpp"
+#include "railmodal/summary.hpp"
+#include "railmodal/vehicle.hpp"
+
+namespace railmodal::python {
+
+namespace py = pybind11;
+
+/// A path given as str or os.PathLike, as text.
+inline std::string path_argument(const py::handle& path) {
+  return py::str(py::module_::import("os").attr("fspath")(path)).cast<std::string>();
+}
+
+inline bool is_path(const py::handle& value) {
+  return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
+}
+
+/// A vehicle argument: a file (str or os.PathLike, read by load_vehicle) or a Vehicle object.
+/// Anything else is a TypeError (pybind11's cast_error).
+inline Vehicle vehicle_argument(const py::handle& vehicle) {
+  if (is_path(vehicle)) {
+    const std::string path = path_argument(vehicle);
+    py::gil_scoped_release release;
+    return load_vehicle(path);
+  }
+  return vehicle.cast<Vehicle>();
+}
+
+/// A system argument of the analyses that take one assembly (hunting stability, ride): a
+/// LinearSystem as given, or a vehicle (file or Vehicle) assembled in `set`.
+inline LinearSystem system_argument(const py::handle& system, DofSet set) {
+  if (!is_path(system) && !py::isinstance<Vehicle>(system)) return system.cast<LinearSystem>();
+  const Vehicle vehicle = vehicle_argument(system);
+  py::gil_scoped_release release;
+  return assemble(vehicle, set);
+}
+
+/// An enum chosen by its word (the C++ <name>_from_string), or ValueError naming the argument
+/// and the words there are.
+template <class Enum>
+Enum enum_argument(const std::string& word, std::optional<Enum> (*from_string)(const std::string&),
+                   const char* argument, const char* words) {
+  if (const std::optional<Enum> value = from_string(word)) return *value;
+  throw py::value_error(std::string(argument) + ": '" + word + "' is not one of " + words);
+}
+
+/// An optional double as None or a float.
+inline py::object optional_value(const std::optional<double>& value) {
+  return value ? py::object(py::float_(*value)) : py::object(py::none());
+}
+
+/// AnalysisSummary as a dict: analysis, method, passed, checks (records of name, value, limit,
+/// passed) and stages (records of stage, seconds).
+inline py::dict summary_dict(const AnalysisSummary& summary) {
+  py::list checks, stages;
+  for (const Check& c : summary.checks)
+    checks.append(py::dict(py::arg("name") = c.name, py::arg("value") = c.value, py::arg("limit") = c.limit,
+                           py::arg("passed") = c.passed));
+  for (const StageTiming& s : summary.stages)
+    stages.append(py::dict(py::arg("stage") = s.stage, py::arg("seconds") = s.seconds));
+  return py::dict(py::arg("analysis") = summary.analysis, py::arg("method") = summary.method,
+                  py::arg("passed") = summary.passed(), py::arg("checks") = checks, py::arg("stages") = stages);
+}
+
+/// A numpy array of `rows` × `cols` doubles filled by value(row, col): the tables the results
+/// keep as vectors of structs (speed × branch, crank angle × cylinder) are copied into one.
+template <class Value>
+py::array_t<double> table(std::size_t rows, std::size_t cols, const Value& value) {
+  py::array_t<double> out({rows, cols});
+  auto view = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < rows; ++i)
+    for (std::size_t j = 0; j < cols; ++j) view(i, j) = value(i, j);
+  return out;
+}
+
+/// A numpy vector of `size` doubles filled by value(i).
+template <class Value>
+py::array_t<double> column(std::size_t size, const Value& value) {
+  py::array_t<double> out(size);
+  auto view = out.mutable_unchecked<1>();
+  for (std::size_t i = 0; i < size; ++i) view(i) = value(i);
+  return out;
+}
+
+/// Converts what the analyses of a file throw for a bad argument of that file's content into
+/// the CLI's InputError on the file ("FILE: error: ..."), so that Python sees the message the
+/// command line prints.
+template <class Work>
+auto as_input_error(const std::string& file, const Work& work) -> decltype(work()) {
+  try {
+    return work();
+  } catch (const std::invalid_argument& e) {
+    throw InputError(file, 0, 0, e.what());
+  }
+}
+
+}  // namespace railmodal::python
