@@ -1,5 +1,5 @@
 // What the analysis bindings (simulation, studies, stability, ride, balance) share: reading a
-// vehicle or a path argument, converting a summary, building records, and choosing an enum by
+// vehicle or a path argument, building arrays, and choosing an enum by
 // its word. Header-only, used by those five files only (the model, modes and response bindings
 // have their own).
 #pragma once
@@ -18,7 +18,6 @@
 #include "railmodal/errors.hpp"
 #include "railmodal/input.hpp"
 #include "railmodal/linear_system.hpp"
-#include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
 
 namespace railmodal::python {
@@ -66,19 +65,6 @@ Enum enum_argument(const std::string& word, std::optional<Enum> (*from_string)(c
 /// An optional double as None or a float.
 inline py::object optional_value(const std::optional<double>& value) {
   return value ? py::object(py::float_(*value)) : py::object(py::none());
-}
-
-/// AnalysisSummary as a dict: analysis, method, passed, checks (records of name, value, limit,
-/// passed) and stages (records of stage, seconds).
-inline py::dict summary_dict(const AnalysisSummary& summary) {
-  py::list checks, stages;
-  for (const Check& c : summary.checks)
-    checks.append(py::dict(py::arg("name") = c.name, py::arg("value") = c.value, py::arg("limit") = c.limit,
-                           py::arg("passed") = c.passed));
-  for (const StageTiming& s : summary.stages)
-    stages.append(py::dict(py::arg("stage") = s.stage, py::arg("seconds") = s.seconds));
-  return py::dict(py::arg("analysis") = summary.analysis, py::arg("method") = summary.method,
-                  py::arg("passed") = summary.passed(), py::arg("checks") = checks, py::arg("stages") = stages);
 }
 
 /// A numpy array of `rows` × `cols` doubles filled by value(row, col): the tables the results

@@ -108,7 +108,7 @@ void bind_history(py::module_& m) {
       .def_property_readonly("events", [](const TimeHistory& h) { return event_records(h.events); },
                              "records of the nonlinear path's regime changes: time_s, element, kind")
       .def_readonly("steps_taken", &TimeHistory::steps_taken)
-      .def_property_readonly("summary", [](const TimeHistory& h) { return summary_dict(h.summary); })
+      .def_readonly("summary", &TimeHistory::summary)
       .def(
           "column",
           [](py::object self, const std::string& label) {
@@ -148,7 +148,7 @@ void bind_spectrum(py::module_& m) {
       .def_readonly("bin_spacing_hz", &Spectrum::bin_spacing, "fs/M")
       .def_property_readonly("window", [](const Spectrum& s) { return std::string(to_string(s.window)); })
       .def_readonly("coherent_gain", &Spectrum::coherent_gain)
-      .def_property_readonly("summary", [](const Spectrum& s) { return summary_dict(s.summary); })
+      .def_readonly("summary", &Spectrum::summary)
       .def(
           "peaks",
           [](const Spectrum& s, double threshold, double min_dip) {
@@ -248,7 +248,7 @@ void bind_fft_check(py::module_& m) {
       .def_readonly("checked", &FftCheckResult::checked)
       .def_readonly("failed", &FftCheckResult::failed)
       .def_readonly("passed", &FftCheckResult::passed)
-      .def_property_readonly("summary", [](const FftCheckResult& r) { return summary_dict(r.summary); });
+      .def_readonly("summary", &FftCheckResult::summary);
 
   m.def(
       "fft_check",
