@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "arrays.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/input.hpp"
 #include "railmodal/linear_system.hpp"
@@ -67,23 +68,32 @@ inline py::object optional_value(const std::optional<double>& value) {
   return value ? py::object(py::float_(*value)) : py::object(py::none());
 }
 
-/// A numpy array of `rows` × `cols` doubles filled by value(row, col): the tables the results
-/// keep as vectors of structs (speed × branch, crank angle × cylinder) are copied into one.
+/// A rows × cols array (row-major) filled by value(row, col): the tables the results keep as
+/// vectors of structs (speed × branch, crank angle × cylinder) gathered into one new array.
 template <class Value>
-py::array_t<double> table(std::size_t rows, std::size_t cols, const Value& value) {
-  py::array_t<double> out({rows, cols});
-  auto view = out.mutable_unchecked<2>();
+py::array table(std::size_t rows, std::size_t cols, const Value& value) {
+  std::vector<double> out(rows * cols);
   for (std::size_t i = 0; i < rows; ++i)
-    for (std::size_t j = 0; j < cols; ++j) view(i, j) = value(i, j);
-  return out;
+    for (std::size_t j = 0; j < cols; ++j) out[i * cols + j] = value(i, j);
+  return take(std::move(out), rows, cols);
 }
 
-/// A numpy vector of `size` doubles filled by value(i).
+/// A new vector of `size` doubles filled by value(i).
 template <class Value>
-py::array_t<double> column(std::size_t size, const Value& value) {
-  py::array_t<double> out(size);
-  auto view = out.mutable_unchecked<1>();
-  for (std::size_t i = 0; i < size; ++i) view(i) = value(i);
+py::array column(std::size_t size, const Value& value) {
+  std::vector<double> out(size);
+  for (std::size_t i = 0; i < size; ++i) out[i] = value(i);
+  return take(std::move(out));
+}
+
+/// f applied to every element of `x` (any shape; a Python float is a 0-d array), into a new array
+/// of the same shape: the spectra and weightings evaluated over numpy arrays of frequencies.
+template <class Result = double, class F>
+py::array_t<Result> elementwise(const py::array_t<double, py::array::c_style | py::array::forcecast>& x, const F& f) {
+  py::array_t<Result> out(std::vector<py::ssize_t>(x.shape(), x.shape() + x.ndim()));
+  const double* in = x.data();
+  Result* values = out.mutable_data();
+  for (py::ssize_t i = 0; i < x.size(); ++i) values[i] = f(in[i]);
   return out;
 }
 

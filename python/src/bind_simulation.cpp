@@ -115,8 +115,8 @@ void bind_history(py::module_& m) {
             const TimeHistory& h = self.cast<const TimeHistory&>();
             for (size_t j = 0; j < h.labels.size(); ++j)
               if (h.labels[j] == label)
-                return py::array_t<double>({h.displacement.rows()}, {sizeof(double)},
-                                           h.displacement.col(static_cast<Eigen::Index>(j)).data(), self);
+                return vector_view(h.displacement.col(static_cast<Eigen::Index>(j)).data(),
+                                   static_cast<size_t>(h.displacement.rows()), self);
             throw py::key_error("no DOF '" + label + "' in the history; it has: " + py::str(py::cast(h.labels)).cast<std::string>());
           },
           py::arg("label"), "The displacement of one DOF by its label (a view)")
@@ -125,10 +125,10 @@ void bind_history(py::module_& m) {
           [](py::object self) {
             const TimeHistory& h = self.cast<const TimeHistory&>();
             py::dict out;
-            out["time_s"] = py::array_t<double>({h.time.size()}, {sizeof(double)}, h.time.data(), self);
+            out["time_s"] = vector_view(h.time, self);
             for (size_t j = 0; j < h.labels.size(); ++j)
-              out[py::str(h.labels[j])] = py::array_t<double>({h.displacement.rows()}, {sizeof(double)},
-                                                              h.displacement.col(static_cast<Eigen::Index>(j)).data(), self);
+              out[py::str(h.labels[j])] = vector_view(h.displacement.col(static_cast<Eigen::Index>(j)).data(),
+                                                      static_cast<size_t>(h.displacement.rows()), self);
             return out;
           },
           "time_s and each DOF's displacement by label, as views: pandas.DataFrame(h.columns())");

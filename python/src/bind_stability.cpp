@@ -24,7 +24,7 @@ py::object critical_dict(const std::optional<HuntingCriticalSpeed>& c) {
 
 // The root locus as one array per quantity, speeds × branches (the branches in HuntingResult order).
 template <class Value>
-py::array_t<double> locus(const HuntingResult& r, const Value& value) {
+py::array locus(const HuntingResult& r, const Value& value) {
   return table(r.speeds.size(), r.branches.size(), [&](size_t i, size_t j) { return value(r.branches[j], i); });
 }
 
@@ -77,8 +77,9 @@ void bind_hunting(py::module_& m) {
   py::class_<HuntingResult>(m, "HuntingResult",
                             "The root locus against speed (arrays speeds × branches), the critical speed, the "
                             "unstable intervals and the critical speed against conicity")
-      .def_property_readonly("speeds_m_s", [](const HuntingResult& r) { return column(r.speeds.size(), [&](size_t i) { return r.speeds[i]; }); },
-                             "the speed grid, m/s (a new array)")
+      .def_property_readonly(
+          "speeds_m_s", [](py::object self) { return vector_view(self.cast<const HuntingResult&>().speeds, self); },
+          "the speed grid, m/s (a view)")
       .def_readonly("dofs", &HuntingResult::dofs)
       .def_property_readonly("branches",
                              [](const HuntingResult& r) {
