@@ -9,7 +9,6 @@
 
 #include "analysis_values.hpp"
 #include "bindings.hpp"
-#include "railmodal/input.hpp"
 #include "railmodal/scene.hpp"
 #include "railmodal/scene_simulation.hpp"
 #include "railmodal/simulation.hpp"
@@ -41,48 +40,12 @@ py::dict simulation_spec(const SimulationSpec& s) {
                   py::arg("initial") = initial, py::arg("outputs") = s.outputs);
 }
 
-void bind_scene(py::module_& m) {
-  py::class_<Scene>(m, "Scene", "A vehicle on a track at a range of speeds, with its excitation sources (load_scene)")
-      .def_readonly("name", &Scene::name)
-      .def_readonly("source", &Scene::source, "the scene file")
-      .def_readwrite("vehicle_file", &Scene::vehicle_file, "the vehicle file the scene names (resolved); '' if none")
-      .def_property_readonly("dofs", [](const Scene& s) { return std::string(to_string(s.dofs)); })
-      .def_readonly("min_speed_m_s", &Scene::min_speed)
-      .def_readonly("max_speed_m_s", &Scene::max_speed)
-      .def_readonly("speed_step_m_s", &Scene::speed_step)
-      .def_readonly("friction_reference_amplitude", &Scene::friction_reference_amplitude)
-      .def_property_readonly("sources",
-                             [](const Scene& s) {
-                               std::vector<std::string> out;
-                               for (const auto& source : s.sources) out.push_back(source->description());
-                               return out;
-                             },
-                             "one line per excitation source, with its parameters")
-      .def_property_readonly("outputs",
-                             [](const Scene& s) {
-                               py::list out;
-                               for (const SceneOutput& o : s.outputs)
-                                 out.append(py::dict(py::arg("dof") = o.dof,
-                                                     py::arg("quantity") = std::string(to_string(o.quantity))));
-                               return out;
-                             },
-                             "records of the [[output]] tables: dof, quantity")
-      .def_property_readonly(
-          "simulation",
-          [](const Scene& s) { return s.simulation ? py::object(simulation_spec(*s.simulation)) : py::none(); },
-          "the [simulation] table as a dict (SI, units in the keys), or None")
-      .def_property_readonly("has_irregularity", [](const Scene& s) { return s.irregularity.has_value(); })
-      .def_property_readonly("has_ride", [](const Scene& s) { return s.ride.has_value(); })
-      .def("__repr__", [](const Scene& s) { return "<railmodal.Scene '" + s.name + "' from " + s.source + ">"; });
-
+// What the analyses of this file read of a scene (py-core's bind_response binds Scene itself).
+void bind_scene_simulation(py::module_& m) {
   m.def(
-      "load_scene",
-      [](const py::object& path) {
-        const std::string file = path_argument(path);
-        py::gil_scoped_release release;
-        return load_scene(file);
-      },
-      py::arg("path"), "Reads a scene file (TOML); InputError with file, line, column and key.");
+      "simulation_spec",
+      [](const Scene& s) { return s.simulation ? py::object(simulation_spec(*s.simulation)) : py::none(); },
+      py::arg("scene"), "The scene's [simulation] table as a dict (SI, units in the keys), or None");
 }
 
 py::list event_records(const std::vector<SimulationEvent>& events) {
@@ -304,7 +267,7 @@ void bind_simulate(py::module_& m) {
 }  // namespace
 
 void bind_simulation(py::module_& m) {
-  bind_scene(m);
+  bind_scene_simulation(m);
   bind_history(m);
   bind_spectrum(m);
   bind_fft_check(m);
