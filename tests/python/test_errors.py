@@ -1,0 +1,90 @@
+"""Errors arrive as Python exceptions with the command line's text (docs/python.md, "Errors")."""
+import numpy as np
+import pytest
+
+import railmodal
+from railmodal_paths import SOURCE, cli, data
+
+
+def test_input_error_from_a_file_carries_the_clis_text_and_its_place():
+    bad = "tests/cli/bad/wrong_unit.toml"
+    code, _, stderr = cli("modes", bad, check=False)
+    assert code == 3
+    with pytest.raises(railmodal.InputError) as caught:
+        railmodal.load_vehicle(bad)  # the tests run in the source tree (ctest's working directory)
+    e = caught.value
+    assert str(e) == stderr.strip()
+    assert (e.file, e.line, e.column, e.key) == (bad, 9, 13, "body.cg_height")
+    assert e.message.startswith("key 'body.cg_height': expected a length")
+    assert isinstance(e, ValueError)
+
+
+def test_input_error_without_a_place_has_none():
+    with pytest.raises(railmodal.InputError) as caught:
+        railmodal.load_vehicle(str(SOURCE / "no_such_vehicle.toml"))
+    assert caught.value.line is None and caught.value.column is None and caught.value.key is None
+
+
+def test_matrix_market_error_names_the_line():
+    path = "tests/corpus/bad_inputs/matrix_nan_entry.mtx"
+    # The corpus file's second line: "% expect modes-mtx: <the message>".
+    expected = open(SOURCE / path).read().splitlines()[1].split("modes-mtx:", 1)[1].strip()
+    with pytest.raises(railmodal.InputError) as caught:
+        railmodal.read_matrix_market(path)
+    assert caught.value.file == path and caught.value.line is not None
+    assert expected in str(caught.value)
+
+
+def test_input_error_from_a_dict_carries_the_key_path():
+    with pytest.raises(railmodal.InputError) as caught:
+        railmodal.vehicle_from_dict({"vehicle": {"name": "x", "template": "two-axle"},
+                                     "body": {"mass": "20 kgf/cm"}})
+    e = caught.value
+    assert e.file == "<dict>" and e.line is None and e.column is None
+    assert e.key == "body.mass"
+    assert str(e).startswith("<dict>: error: key 'body.mass': expected a mass")
+
+
+def test_numerical_error_names_the_degree_of_freedom():
+    # dof2 has neither mass nor stiffness: condensing it statically is impossible.
+    system = railmodal.LinearSystem(np.diag([1.0, 0.0]), np.diag([4.0, 0.0]))
+    with pytest.raises(railmodal.NumericalError) as caught:
+        railmodal.modes(system)
+    assert "dof2" in str(caught.value)
+    assert isinstance(caught.value, RuntimeError)
+
+
+def test_invalid_options_are_value_errors_with_the_options_message():
+    system = railmodal.LinearSystem(np.eye(1), np.eye(1))
+    with pytest.raises(ValueError, match="ModalOptions: max_residual"):
+        railmodal.modes(system, max_residual=-1.0)
+
+
+def test_unknown_option_is_a_type_error_naming_it():
+    system = railmodal.LinearSystem(np.eye(1), np.eye(1))
+    with pytest.raises(TypeError, match="unknown option 'mode_cout'"):
+        railmodal.modes(system, mode_cout=3)
+    with pytest.raises(TypeError, match="unknown option 'shfit'"):
+        railmodal.modes(system, arpack={"shfit": 1.0})
+
+
+def test_unknown_enum_word_lists_the_words():
+    system = railmodal.LinearSystem(np.eye(1), np.eye(1))
+    with pytest.raises(ValueError, match="expected one of dense, arpack, auto"):
+        railmodal.modes(system, solver="lapack")
+    with pytest.raises(ValueError, match="expected one of vertical, lateral, all"):
+        railmodal.assemble(railmodal.load_vehicle(data("vehicles", "resort_car.toml")), "sideways")
+
+
+def test_invalid_argument_of_the_library_is_a_value_error():
+    vehicle = railmodal.load_vehicle(data("vehicles", "resort_car.toml"))
+    vehicle.bodies = vehicle.bodies + [vehicle.bodies[0]]  # a duplicate body name
+    with pytest.raises(ValueError, match="body"):
+        railmodal.assemble(vehicle)
+
+
+def test_unknown_dof_label_lists_the_labels():
+    system = railmodal.assemble(railmodal.load_vehicle(data("vehicles", "resort_car.toml")))
+    modes = railmodal.modes(system)
+    with pytest.raises(ValueError, match=r"no degree of freedom 'body.bonce' \(there are: body.lateral, "):
+        railmodal.frf(system, modes, "body.bonce", [1.0])

@@ -1,0 +1,99 @@
+"""Vehicles, assembled matrices, systems from numpy and Matrix Market (docs/python.md)."""
+import tomllib
+
+import numpy as np
+import pytest
+import scipy.sparse
+
+import railmodal
+from railmodal_paths import cli_json, data
+
+RESORT = data("vehicles", "resort_car.toml")
+
+
+def test_vehicle_fields_are_the_files_in_si():
+    v = railmodal.load_vehicle(RESORT)
+    assert v.name.startswith("Resort-type passenger car")
+    assert [b.name for b in v.bodies] == ["body", "bogie1", "bogie2"]
+    # weight = "34000 kgf" with gravity = "981 cm/s^2": m = 34000 · 9.80665 / 9.81 kg.
+    assert v.bodies[0].mass == pytest.approx(34000 * 9.80665 / 9.81, rel=1e-14)  # a few ulp of unit arithmetic
+    assert v.gravity == pytest.approx(9.81, rel=1e-15)
+    assert len(v.elements) == 12
+    leaf = v.elements[0].vertical_stages[0]
+    assert leaf.kind == "leaf" and leaf.stiffness == pytest.approx(700 * 9.80665 * 100, rel=1e-14)  # kgf/cm → N/m
+
+
+def test_assemble_gives_the_clis_dofs_and_views_without_copies():
+    system = railmodal.assemble(railmodal.load_vehicle(RESORT), dofs="all")
+    assert system.dof_labels == cli_json("modes", RESORT)["dofs"]
+    n = len(system)
+    for matrix in (system.M, system.C, system.K, system.K_gravity):
+        assert matrix.shape == (n, n) and matrix.dtype == np.float64
+        assert not matrix.flags.writeable  # a view of the system's memory
+        assert matrix.base is not None
+    assert np.shares_memory(system.M, system.M)  # two reads, one buffer: no copy was made
+    assert np.array_equal(system.M, system.M.T) and np.array_equal(system.K, system.K.T)
+    vertical = railmodal.assemble(railmodal.load_vehicle(RESORT), "vertical")
+    assert all(label.endswith(("bounce", "pitch")) for label in vertical.dof_labels)
+
+
+def test_a_view_keeps_its_system_alive():
+    mass = railmodal.assemble(railmodal.load_vehicle(RESORT)).M  # the system is dropped at once
+    again = railmodal.assemble(railmodal.load_vehicle(RESORT)).M
+    assert np.array_equal(mass, again)
+
+
+def test_vehicle_from_dict_is_the_file_read_through_the_same_reader():
+    with open(RESORT, "rb") as f:
+        document = tomllib.load(f)  # the file's tables as dicts, units still strings
+    from_dict = railmodal.assemble(railmodal.vehicle_from_dict(document))
+    from_file = railmodal.assemble(railmodal.load_vehicle(RESORT))
+    # One reader, one unit conversion, one assembly: bit for bit the same matrices.
+    for a, b in ((from_dict.M, from_file.M), (from_dict.C, from_file.C), (from_dict.K, from_file.K)):
+        assert np.array_equal(a, b)
+
+
+def test_linear_system_from_numpy():
+    M = np.diag([2.0, 1.0])
+    K = np.array([[6.0, -2.0], [-2.0, 4.0]])
+    C = 0.01 * K
+    system = railmodal.LinearSystem(M, K, C, dof_labels=["a", "b"])
+    assert system.dof_labels == ["a", "b"]
+    assert np.array_equal(system.M, M) and np.array_equal(system.K, K) and np.array_equal(system.C, C)
+    assert np.array_equal(railmodal.LinearSystem(M, K).C, np.zeros((2, 2)))
+    assert railmodal.LinearSystem(M, K).dof_labels == ["dof1", "dof2"]
+    with pytest.raises(ValueError, match="K is 3 x 3; expected 2 x 2"):
+        railmodal.LinearSystem(M, np.eye(3))
+    with pytest.raises(ValueError, match="not a finite number"):
+        railmodal.LinearSystem(M, np.full((2, 2), np.nan))
+
+
+def test_matrix_market_model_gives_the_clis_modes():
+    mass, stiffness = data("matrices", "resort_car_vertical_M.mtx"), data("matrices", "resort_car_vertical_K.mtx")
+    expected = cli_json("modes", "--mass", mass, "--stiffness", stiffness)
+    system = railmodal.load_matrix_model(mass, stiffness)
+    result = railmodal.modes(system)
+    assert system.dof_labels == expected["dofs"]
+    # The JSON writes round-trip digits of the same computation: equal to rounding of the last digit.
+    np.testing.assert_allclose(result.frequencies_hz, [m["frequency_hz"] for m in expected["modes"]], rtol=1e-14)
+    sparse = railmodal.load_matrix_model(mass, stiffness, sparse=True)
+    assert isinstance(sparse, railmodal.SparseSystem)
+    assert np.array_equal(sparse.M.toarray(), system.M)
+
+
+def test_matrix_market_round_trip(tmp_path):
+    matrix, labels = railmodal.read_matrix_market(data("matrices", "resort_car_vertical_K.mtx"))
+    assert scipy.sparse.issparse(matrix)
+    path = str(tmp_path / "K.mtx")
+    railmodal.write_matrix_market(path, matrix, symmetric=True, dof_labels=labels)
+    again, labels_again = railmodal.read_matrix_market(path, require_symmetric=True)
+    assert labels_again == labels
+    assert np.array_equal(again.toarray(), matrix.toarray())  # 17 digits: exact
+
+
+def test_sparse_train_as_scipy_sparse():
+    train = railmodal.wagon_train(10)
+    assert len(train) == 50 and train.dof_labels[0] == "wagon1.body.longitudinal"
+    assert scipy.sparse.issparse(train.K) and train.K.shape == (50, 50)
+    dense = train.to_dense()
+    assert np.array_equal(dense.K, train.K.toarray()) and np.array_equal(dense.M, train.M.toarray())

@@ -1,0 +1,105 @@
+"""Harmonic response, FRFs, critical speeds and amplitude curves (docs/python.md)."""
+import numpy as np
+import pandas
+import pytest
+
+import railmodal
+from railmodal_paths import cli_json, data
+
+SCENE = data("scenes", "resort_car_10m_rails.toml")
+
+
+def two_dof(damping=0.02):
+    M = np.diag([2.0, 1.0])
+    K = np.array([[3000.0, -1000.0], [-1000.0, 1000.0]])
+    return railmodal.LinearSystem(M, K, damping * K)
+
+
+def test_harmonic_response_solves_the_dynamic_stiffness_at_every_frequency():
+    system = two_dof()
+    modes = railmodal.modes(system)
+    f = np.linspace(0.0, 12.0, 97)
+    load = np.array([1.0, 0.5j])
+    sweep = railmodal.harmonic_response(system, modes, load, f)
+    assert sweep.values.shape == (len(f), 2) and sweep.outputs == ["dof1", "dof2"]
+    w = 2 * np.pi * f
+    expected = np.array([np.linalg.solve(system.K - wi**2 * system.M + 1j * wi * system.C, load) for wi in w])
+    # Both LU-solve a 2 x 2 system of condition number below 1e3: agreement to ~1e-13.
+    np.testing.assert_allclose(sweep.values, expected, rtol=1e-11)
+    assert not sweep.unbounded.any()
+    assert sweep.values.base is not None and not sweep.values.flags.writeable
+
+
+def test_frf_quantities_and_modal_method():
+    system = two_dof()
+    modes = railmodal.modes(system)
+    f = np.array([0.5, 3.0, 7.0])
+    receptance = railmodal.frf(system, modes, "dof1", f, outputs=["dof2"])
+    mobility = railmodal.frf(system, modes, 0, f, outputs=[1], quantity="velocity")
+    accelerance = railmodal.frf(system, modes, 0, f, outputs=[-1], quantity="acceleration")
+    iw = 2j * np.pi * f[:, None]
+    np.testing.assert_allclose(mobility.values, iw * receptance.values, rtol=1e-14)
+    np.testing.assert_allclose(accelerance.values, iw**2 * receptance.values, rtol=1e-14)
+    # C = 0.02·K is proportional: modal superposition is exact, to rounding of the two paths.
+    modal = railmodal.frf(system, modes, "dof1", f, outputs=["dof2"], method="modal")
+    np.testing.assert_allclose(modal.values, receptance.values, rtol=1e-10)
+    frame = pandas.DataFrame(receptance.as_dict())
+    assert list(frame.columns) == ["frequency_hz", "dof2 amplitude", "dof2 phase_deg", "dof2 unbounded"]
+    np.testing.assert_allclose(frame["dof2 amplitude"], np.abs(receptance.values[:, 0]), rtol=1e-15)
+
+
+def test_undamped_resonance_is_unbounded_not_infinite():
+    system = railmodal.LinearSystem(np.eye(1), np.array([[4.0 * np.pi**2]]))  # f = 1 Hz
+    modes = railmodal.modes(system)
+    response = railmodal.frf(system, modes, 0, [0.5, 1.0, 2.0])
+    assert list(response.unbounded[:, 0]) == [False, True, False]
+    assert response.values[1, 0] == 0 and np.all(np.isfinite(response.values))
+    # Away from resonance: 1/(k − ω²m) exactly as a closed form.
+    np.testing.assert_allclose(response.values[0, 0].real, 1 / (4 * np.pi**2 * (1 - 0.25)), rtol=1e-14)
+
+
+def test_critical_speed_study_equals_the_clis():
+    expected = cli_json("critical-speed", SCENE)
+    study = railmodal.study_critical_speeds(railmodal.load_scene(SCENE))
+    rows = study.critical_speeds.records()
+    assert [r["mode_name"] for r in rows] == [c["mode_name"] for c in expected["critical_speeds"]]
+    # One library computation written with round-trip digits.
+    np.testing.assert_allclose([r["speed_km_h"] for r in rows], [c["speed_kmh"] for c in expected["critical_speeds"]],
+                               rtol=1e-14)
+    assert len(study.curves) == len(expected["curves"])
+    # The JSON writes null where the curve is unbounded; the arrays hold 0 there and flag it.
+    written = np.array([np.nan if a is None else a for a in expected["curves"][0]["amplitudes"]])
+    np.testing.assert_array_equal(study.curves[0].unbounded, np.isnan(written))
+    np.testing.assert_allclose(study.curves[0].amplitudes, np.nan_to_num(written, nan=0.0), rtol=1e-14)
+    frame = pandas.DataFrame(rows)
+    assert frame.shape == (len(rows), 15)
+
+
+def test_find_critical_speeds_and_curves_on_a_numpy_speed_array():
+    scene = railmodal.load_scene(SCENE)
+    study = railmodal.study_critical_speeds(scene)
+    system, modes = study.system, study.modes
+    found = railmodal.find_critical_speeds(system, modes, scene.sources, scene.min_speed_m_s, scene.max_speed_m_s,
+                                           outputs=[("body.bounce", "acceleration")])
+    np.testing.assert_array_equal(found.speeds_m_s, study.critical_speeds.speeds_m_s)
+    assert len(found.output_records()) == len(found)
+    speeds = study.curves[0].speeds_m_s.copy()
+    curves = railmodal.amplitude_curves(system, modes, scene.sources[0], ["body.bounce"], speeds)
+    # The study computes its curves by this same call on this grid.
+    np.testing.assert_array_equal(curves[0].amplitudes, study.curves[0].amplitudes)
+    c = curves[0]
+    assert c.amplitudes.base is not None and np.shares_memory(c.speeds_m_s, c.speeds_m_s)
+    assert pandas.DataFrame(c.as_dict()).shape == (len(speeds), 4)
+
+
+def test_a_source_made_in_python():
+    system = railmodal.assemble(railmodal.load_vehicle(data("vehicles", "resort_car.toml")))
+    modes = railmodal.modes(system)
+    joints = railmodal.rail_joints(rail_length=12.5, dip_depth=0.005)
+    assert joints.kind == "rail_joints" and joints.wavelength_m == 12.5
+    rows = railmodal.find_critical_speeds(system, modes, joints, 1.0, 40.0).records()
+    bounce = [r for r in rows if r["mode_name"] == "body bounce"][0]
+    # V = Λ·f: the bounce mode's frequency times the rail length.
+    assert bounce["speed_m_s"] == pytest.approx(12.5 * bounce["frequency_hz"], rel=1e-14)
+    with pytest.raises(TypeError, match="unknown option 'length'"):
+        railmodal.rail_joints(length=12.5)
