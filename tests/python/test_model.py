@@ -97,3 +97,26 @@ def test_sparse_train_as_scipy_sparse():
     assert scipy.sparse.issparse(train.K) and train.K.shape == (50, 50)
     dense = train.to_dense()
     assert np.array_equal(dense.K, train.K.toarray()) and np.array_equal(dense.M, train.M.toarray())
+
+
+def test_vehicle_fields_can_be_changed_for_a_variant():
+    car = railmodal.load_vehicle(RESORT)
+    variant = car.copy()
+    bodies = variant.bodies
+    bodies[0].mass *= 2.0  # a list of copies: assigned back whole
+    variant.bodies = bodies
+    assert car.bodies[0].mass * 2.0 == variant.bodies[0].mass
+    body = railmodal.assemble(variant).M[1, 1]  # body.bounce
+    assert body == pytest.approx(2.0 * railmodal.assemble(car).M[1, 1], rel=1e-15)
+    assert variant.bodies[0].held == car.bodies[0].held
+    e = car.elements[0]
+    # The axlebox: a leaf spring in series with two coils (1/k = 1/k_leaf + 1/(2 k_coil)).
+    k_leaf, k_coil = e.vertical_stages[0].stiffness, e.vertical_stages[1].stiffness
+    assert e.vertical_stiffness == pytest.approx(1.0 / (1.0 / k_leaf + 1.0 / (2.0 * k_coil)), rel=1e-14)
+
+
+def test_large_matrices_are_views_not_copies():
+    big = railmodal.wagon_train(400).to_dense()  # 2000 DOFs: 32 MB per matrix
+    first, second = big.M, big.K
+    assert np.shares_memory(first, big.M) and np.shares_memory(second, big.K)
+    assert first.nbytes == 2000 * 2000 * 8

@@ -127,3 +127,20 @@ def test_modes_from_several_threads_equal_the_serial_ones():
         t.join()
     for a, b in zip(serial, parallel):
         np.testing.assert_array_equal(a, b)
+
+
+def test_summary_mode_objects_and_energy_shares():
+    system = railmodal.assemble(railmodal.load_vehicle(RESORT))
+    result = railmodal.modes(system)
+    summary = result.solver
+    assert summary.passed and summary.solver == "dense" and summary.analysis == "undamped modes"
+    assert [c["passed"] for c in summary.checks] == [True] * len(summary.checks)
+    assert {s["stage"] for s in summary.stages} >= {"eigensolve"}
+    shares = result.kinetic_energy_shares
+    np.testing.assert_allclose(shares.sum(axis=0), 1.0, rtol=1e-12)  # each mode's shares sum to 1
+    mode = result[2]
+    assert mode.name == "body bounce" and mode.to_dict() == result.records()[2]
+    assert result[-1].index == len(result)
+    with pytest.raises(IndexError):
+        result[len(result)]
+    assert result.max_residual <= 1e-8 and result.orthonormality_error < 1e-10
