@@ -34,21 +34,33 @@ inline bool is_path(const py::handle& value) {
   return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
 }
 
+/// `value` as a T, or a TypeError naming what was expected and what came.
+template <class T>
+T typed_argument(const py::handle& value, const char* expected) {
+  try {
+    return value.cast<T>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(std::string("expected ") + expected + ", got " +
+                         py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+  }
+}
+
 /// A vehicle argument: a file (str or os.PathLike, read by load_vehicle) or a Vehicle object.
-/// Anything else is a TypeError (pybind11's cast_error).
+/// Anything else is a TypeError.
 inline Vehicle vehicle_argument(const py::handle& vehicle) {
   if (is_path(vehicle)) {
     const std::string path = path_argument(vehicle);
     py::gil_scoped_release release;
     return load_vehicle(path);
   }
-  return vehicle.cast<Vehicle>();
+  return typed_argument<Vehicle>(vehicle, "a vehicle file or a Vehicle");
 }
 
 /// A system argument of the analyses that take one assembly (hunting stability, ride): a
 /// LinearSystem as given, or a vehicle (file or Vehicle) assembled in `set`.
 inline LinearSystem system_argument(const py::handle& system, DofSet set) {
-  if (!is_path(system) && !py::isinstance<Vehicle>(system)) return system.cast<LinearSystem>();
+  if (!is_path(system) && !py::isinstance<Vehicle>(system))
+    return typed_argument<LinearSystem>(system, "a LinearSystem, a vehicle file or a Vehicle");
   const Vehicle vehicle = vehicle_argument(system);
   py::gil_scoped_release release;
   return assemble(vehicle, set);

@@ -105,7 +105,8 @@ const TrackIrregularitySpectra& scene_track(const Scene& scene) {
 }
 
 TrackIrregularitySpectra track_argument(const py::handle& track) {
-  if (!py::isinstance<py::dict>(track)) return scene_track(track.cast<const Scene&>());
+  if (!py::isinstance<py::dict>(track))
+    return scene_track(typed_argument<Scene>(track, "a dict of TrackSpectrum by component or a Scene"));
   TrackIrregularitySpectra out;
   for (const auto& item : track.cast<py::dict>()) {
     const std::string key = py::str(item.first);
@@ -115,7 +116,7 @@ TrackIrregularitySpectra track_argument(const py::handle& track) {
                                                                  : nullptr;
     if (!slot)
       throw py::value_error("track: '" + key + "' is not one of 'vertical_level', 'alignment', 'cross_level'");
-    if (!item.second.is_none()) *slot = item.second.cast<TrackSpectrum>();
+    if (!item.second.is_none()) *slot = typed_argument<TrackSpectrum>(item.second, "a TrackSpectrum");
   }
   return out;
 }
