@@ -187,3 +187,13 @@ def test_comfort_weightings_print_their_headers_example():
     assert railmodal.sperling_weighting(np.array([5.0]), "lateral")[0] == pytest.approx(1.25 * b, rel=1e-15)
     with pytest.raises(ValueError, match="weighting: 'wk' is not one of"):
         railmodal.comfort_weighting("wk", np.array([1.0]))
+
+
+def test_spectrum_forms_and_the_fra_classes():
+    s = railmodal.TrackSpectrum.fra_class(4, "vertical-level")
+    # The FRA range of wavelengths 1.524 … 304.8 m (5 … 1000 ft) by default.
+    assert s.band_rad_m == pytest.approx((2 * np.pi / 304.8, 2 * np.pi / 1.524), rel=1e-12)
+    n = np.array([0.01, 0.1])
+    np.testing.assert_allclose(s.density_per_cycle(n), 2 * np.pi * s.density(2 * np.pi * n), rtol=1e-15)
+    # A better class is a smoother track.
+    assert railmodal.TrackSpectrum.fra_class(6, "vertical-level").rms() < s.rms()

@@ -125,3 +125,35 @@ def test_study_errors(tmp_path):
         railmodal.evaluate_variants(scene, [resort], deflection_rule="din")
     with pytest.raises(ValueError, match="is not a metric"):
         railmodal.evaluate_variants(scene, [resort]).metric("comfort")
+
+
+def test_the_hunting_speed_of_a_variant_is_the_hunting_stabilitys():
+    # evaluate_variant runs solve_hunting_stability of the lateral assembly with HuntingOptions'
+    # defaults on one thread: the same call as hunting_stability(vehicle, threads=1).
+    coach = railmodal.load_vehicle(data("vehicles", "manchester_benchmark_coach_wheelsets.toml"))
+    vertical = railmodal.load_scene(data("scenes", "resort_car_10m_rails.toml"))
+    (row,) = railmodal.evaluate_variants(vertical, [coach], hunting_speed=True).records()
+    assert row["ok"] and row["hunting_speed_m_s"] == railmodal.hunting_stability(coach, threads=1).critical["speed_m_s"]
+    without = railmodal.evaluate_variants(vertical, [coach]).records()[0]
+    assert without["hunting_speed_m_s"] is None  # not asked: not computed
+
+
+def test_a_variant_that_cannot_be_evaluated_is_a_row_with_its_failure():
+    coach = railmodal.load_vehicle(data("vehicles", "manchester_benchmark_coach_wheelsets.toml"))
+    hunting = railmodal.load_scene(data("scenes", "manchester_coach_hunting.toml"))  # lateral track inputs
+    (row,) = railmodal.evaluate_variants(hunting, [coach]).records()
+    assert not row["ok"] and "wheel–rail contact" in row["failure"] and row["lowest_critical_speed_m_s"] is None
+
+
+def test_a_ride_study_tables_its_ride():
+    study = railmodal.load_study(data("studies", "two_axle_wagon_ride_springs.toml"))
+    # The study file, its scene and the vehicle files it reads, each once.
+    assert [f.split("/")[-1] for f in study.files] == [
+        "two_axle_wagon_ride_springs.toml", "two_axle_wagon_fra_class4.toml", "two_axle_freight_wagon.toml"]
+    names = [v["name"] for v in study.variants()]
+    expected = cli_json("compare", data("studies", "two_axle_wagon_ride_springs.toml"), "-q")
+    comparison = railmodal.compare(study)
+    assert [r["name"] for r in comparison.results.records()] == [v["name"] for v in expected["variants"]]
+    ride = pandas.DataFrame(railmodal.evaluate_study(study).ride())
+    assert set(ride["variant"]) == set(names) and (ride["max_rms"] > 0).all()
+    assert ride["max_wz"].notna().any()
