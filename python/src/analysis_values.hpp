@@ -56,15 +56,28 @@ inline Vehicle vehicle_argument(const py::handle& vehicle) {
   return typed_argument<Vehicle>(vehicle, "a vehicle file or a Vehicle");
 }
 
-/// A system argument of the analyses that take one assembly (hunting stability, ride): a
-/// LinearSystem as given, or a vehicle (file or Vehicle) assembled in `set`.
-inline LinearSystem system_argument(const py::handle& system, DofSet set) {
-  if (!is_path(system) && !py::isinstance<Vehicle>(system))
-    return typed_argument<LinearSystem>(system, "a LinearSystem, a vehicle file or a Vehicle");
-  const Vehicle vehicle = vehicle_argument(system);
-  py::gil_scoped_release release;
-  return assemble(vehicle, set);
-}
+/// A system argument of the analyses that take one assembly (hunting stability): a LinearSystem
+/// as given (referred to, not copied), or a vehicle (file or Vehicle) assembled in `set`.
+class SystemArgument {
+ public:
+  SystemArgument(const py::handle& system, DofSet set) {
+    if (!is_path(system) && !py::isinstance<Vehicle>(system)) {
+      system_ = &typed_argument<const LinearSystem&>(system, "a LinearSystem, a vehicle file or a Vehicle");
+      return;
+    }
+    const Vehicle vehicle = vehicle_argument(system);
+    py::gil_scoped_release release;
+    assembled_ = assemble(vehicle, set);
+    system_ = &assembled_;
+  }
+  SystemArgument(const SystemArgument&) = delete;
+  SystemArgument& operator=(const SystemArgument&) = delete;
+  const LinearSystem& operator*() const { return *system_; }
+
+ private:
+  LinearSystem assembled_;
+  const LinearSystem* system_ = nullptr;  // the caller's object (kept alive by the call) or assembled_
+};
 
 /// An enum chosen by its word (the C++ <name>_from_string), or ValueError naming the argument
 /// and the words there are.

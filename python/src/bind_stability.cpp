@@ -181,9 +181,9 @@ void bind_hunting(py::module_& m) {
         options.threads = threads;
         // As `railmodal stability`: the lateral motions, where the hunting lives (the vertical
         // decouples in the linear model of a vehicle symmetric about its centre line).
-        const LinearSystem s = system_argument(system, DofSet::lateral);
+        const SystemArgument s(system, DofSet::lateral);
         py::gil_scoped_release release;
-        return solve_hunting_stability(s, options);
+        return solve_hunting_stability(*s, options);
       },
       py::arg("system"), py::kw_only(), py::arg("min_speed_m_s") = HuntingOptions{}.min_speed,
       py::arg("max_speed_m_s") = HuntingOptions{}.max_speed, py::arg("speed_count") = HuntingOptions{}.speed_count,
@@ -266,9 +266,9 @@ void bind_nonlinear_hunting(py::module_& m) {
         o.tolerance = tolerance;
         o.hold_periods = hold_periods;
         o.hold_margin = hold_margin;
-        const LinearSystem s = system_argument(system, DofSet::lateral);
+        const SystemArgument s(system, DofSet::lateral);
         py::gil_scoped_release release;
-        return solve_nonlinear_hunting(s, o);
+        return solve_nonlinear_hunting(*s, o);
       },
       py::arg("system"), py::kw_only(),
       py::arg("effects") = std::vector<std::string>{"creep_saturation", "flange_contact"},
