@@ -202,6 +202,8 @@ void bind_fft_check(py::module_& m) {
       .def_readonly("history", &FftCheckResult::history)
       .def_property_readonly("checks", [](const FftCheckResult& r) { return fft_check_records(r.checks); },
                              "records, one per mode")
+      .def("records", [](const FftCheckResult& r) { return fft_check_records(r.checks); },
+           "The checks, one row per mode (the same as `checks`)")
       .def_property_readonly("spectra", [](const FftCheckResult& r) { return spectra_by_dof(r.spectrum_dofs, r.spectra); },
                              "Spectrum by DOF label")
       .def_property_readonly("swings",

@@ -99,7 +99,8 @@ def test_fft_check_equals_the_command_line():
         assert (got["mode_name"], got["dof"], got["outcome"]) == (want["mode_name"], want["dof"], want["outcome"])
         assert got["modal_hz"] == pytest.approx(want["modal_hz"], rel=1e-12)
         assert got["peak_hz"] == pytest.approx(want["peak_hz"], rel=1e-12)
-    frame = pandas.DataFrame(result.checks)
+    frame = pandas.DataFrame(result.records())
+    assert frame.to_dict("records") == result.checks
     assert frame["excited"].all() and result.summary.passed
     # Spectra of the DOFs the checks looked at (each mode's most energetic one).
     assert set(result.spectra) == {c["dof"] for c in result.checks} <= set(result.history.labels)
