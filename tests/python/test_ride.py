@@ -1,0 +1,199 @@
+"""Ride on random track (docs/python.md, "Ride"): track spectra, the frequency-domain ride, track
+realisations and the time-domain ride with its FFT checks, the comfort weightings, against
+`railmodal ride` and the headers' printed examples.
+
+Tolerances: against the command line, the same library call on the same files, so the numbers
+agree to the digits the JSON writer prints; rtol=1e-12 holds any writer that prints 13
+significant digits or more. Against a header's printed example, half a unit of its last digit.
+"""
+import numpy as np
+import pandas
+import pytest
+
+import railmodal
+from railmodal_paths import SOURCE, cli, cli_json, data
+
+COACH = data("scenes", "manchester_coach_ore_low.toml")
+COACH_TIME = data("scenes", "manchester_coach_ore_low_time_domain.toml")
+REL = 1e-12
+SAME = dict(rtol=REL, atol=0)
+
+
+@pytest.fixture(scope="module")
+def coach():
+    return railmodal.ride_scene(railmodal.load_scene(COACH))
+
+
+def test_ride_scene_equals_the_command_line(coach):
+    expected = cli_json("ride", COACH)
+    np.testing.assert_allclose(coach.frequencies_hz, expected["frequencies_hz"], **SAME)
+    np.testing.assert_allclose(coach.speeds_m_s, [s["speed_m_s"] for s in expected["speeds"]], **SAME)
+    assert coach.output_names == [o["name"] for o in expected["outputs"]]
+    assert [m["name"] for m in coach.modes] == [m["name"] for m in expected["modes"]]
+    assert coach.psd.shape == (len(coach.speeds_m_s), len(coach.outputs), len(coach.frequencies_hz))
+    rows = iter(coach.records())
+    for s, at in enumerate(expected["speeds"]):
+        for i, want in enumerate(at["outputs"]):
+            got = next(rows)
+            assert got["output"] == want["name"] and got["unbounded"] == want["unbounded"]
+            rms_key = next(k for k in want if k.startswith("rms_"))
+            assert got["rms"] == pytest.approx(want[rms_key], rel=REL)
+            psd_key = next(k for k in want if k.startswith("psd_"))
+            np.testing.assert_allclose(coach.psd[s, i], want[psd_key], **SAME)
+            for key in ("weighted_rms", "p95_estimate"):
+                json_key = next((k for k in want if k.startswith(key)), None)
+                assert (got[key] is None) == (json_key is None or want[json_key] is None)
+                if got[key] is not None:
+                    assert got[key] == pytest.approx(want[json_key], rel=REL)
+    comfort = [c for at in expected["speeds"] for c in at["comfort"]]
+    assert [c["nmv_estimate"] for c in coach.comfort()] == pytest.approx([c["nmv_estimate"] for c in comfort], rel=REL)
+
+
+def test_ride_tables_for_pandas(coach):
+    frame = pandas.DataFrame(coach.records())
+    assert len(frame) == len(coach.speeds_m_s) * len(coach.outputs)
+    # The RMS is the square root of the PSD's area over the grid: the trapezoid rule on the grid
+    # the result gives reproduces it within the grid's own error estimate (what halving the
+    # grid changes, which bounds the difference between two rules on it).
+    area = np.trapz(coach.psd[0, 0], coach.frequencies_hz)
+    assert abs(np.sqrt(area) / frame["rms"][0] - 1) < coach.grid_error_estimate
+    shares = pandas.DataFrame(coach.contributions())
+    first = shares[(shares.speed_m_s == coach.speeds_m_s[0]) & (shares.output == coach.output_names[0])]
+    # The modes' shares and the cross terms add up to the variance exactly (ride.hpp).
+    variance = frame["rms"][0] ** 2
+    assert first["variance"].sum() + frame["cross_term_variance"][0] == pytest.approx(variance, rel=1e-9)
+    assert coach.input_psd.shape == (len(coach.speeds_m_s), 3, len(coach.frequencies_hz))
+    assert coach.frequencies_hz.base is not None and not coach.frequencies_hz.flags.writeable
+
+
+def test_ride_of_a_system_with_the_scenes_track_and_outputs(coach):
+    scene = railmodal.load_scene(COACH)
+    system = railmodal.assemble(railmodal.load_vehicle(scene.vehicle_file), scene.dofs)
+    outputs = railmodal.default_ride_outputs(system)
+    assert [o.name for o in outputs] == coach.output_names
+    speed = coach.speeds_m_s[0]
+    by_scene = railmodal.ride(system, scene, speeds_m_s=[speed])
+    spectra = {"vertical_level": None}
+    for name in ("vertical_level", "alignment", "cross_level"):
+        band = (2 * np.pi / 100, 2 * np.pi / 1)  # the scene's wavelengths 1 … 100 m
+        spectra[name] = railmodal.TrackSpectrum.ore_b176("low", name.replace("_", "-"), band)
+    by_dict = railmodal.ride(system, spectra, outputs, speeds_m_s=[speed])
+    np.testing.assert_array_equal(by_scene.psd, by_dict.psd)
+    # The grid is refined for the speeds asked, so one speed alone has another grid than the
+    # scene's five: the RMS agree within the grids' error estimate.
+    rms = [r["rms"] for r in by_dict.records()]
+    assert rms == pytest.approx([r["rms"] for r in coach.records()][: len(rms)], rel=coach.grid_error_estimate)
+    # One output built in Python: the same as the default output it copies.
+    o = outputs[0]
+    mine = railmodal.RideOutput("mine", body=o.body, point_m=o.point_m, axis=o.axis, quantity=o.quantity)
+    one = railmodal.ride(system, spectra, [mine], speeds_m_s=[speed])
+    np.testing.assert_array_equal(one.psd[0, 0], by_dict.psd[0, 0])
+    assert mine.unit == o.unit and mine.kind == "point"
+
+
+def test_ride_errors():
+    flat = railmodal.load_scene(data("scenes", "resort_car_10m_rails.toml"))
+    code, _, stderr = cli("ride", data("scenes", "resort_car_10m_rails.toml"), check=False)
+    with pytest.raises(railmodal.InputError) as error:
+        railmodal.ride_scene(flat)
+    assert code == 3 and 'kind = "irregularity"' in str(error.value) and 'kind = "irregularity"' in stderr
+    scene = railmodal.load_scene(COACH)
+    system = railmodal.assemble(railmodal.load_vehicle(scene.vehicle_file), scene.dofs)
+    with pytest.raises(ValueError, match="track: 'level' is not one of"):
+        railmodal.ride(system, {"level": None}, speeds_m_s=[30.0])
+    with pytest.raises(ValueError):  # RideOptions::is_valid: no speed
+        railmodal.ride(system, scene, speeds_m_s=[])
+    with pytest.raises(ValueError, match="nobody"):  # an output naming no body of the system
+        railmodal.ride(system, scene, [railmodal.RideOutput("x", body="nobody")], speeds_m_s=[30.0])
+    with pytest.raises(ValueError, match="axis: 'up' is not one of"):
+        railmodal.RideOutput("x", axis="up")
+    with pytest.raises(TypeError, match="expected a dict of TrackSpectrum"):
+        railmodal.ride(system, 3, speeds_m_s=[30.0])
+
+
+def test_track_spectrum_prints_its_headers_example():
+    band = (2 * np.pi / 70, 2 * np.pi / 3)
+    s = railmodal.TrackSpectrum.ore_b176("low", "vertical-level", band)
+    # track_spectrum.hpp prints: RMS 1.92189 mm; S(0.1 rad/m) = 3.8118e-05; at 50 m/s, 2 Hz: 7.29062e-07.
+    assert 1000 * s.rms() == pytest.approx(1.92189, abs=5e-6)
+    assert s.density(0.1) == pytest.approx(3.8118e-05, abs=5e-10)
+    assert s.temporal_density(2.0, 50.0) == pytest.approx(7.29062e-07, abs=5e-12)
+    assert s.name == "ORE B176 low, vertical level" and s.band_rad_m == band
+    omega = np.array([[0.05, 0.1], [0.5, 5.0]])
+    assert s.density(omega).shape == (2, 2) and s.density(omega)[1, 1] == 0.0  # outside the band
+    assert s.variance() == pytest.approx(s.rms() ** 2, rel=1e-15)
+    table = railmodal.TrackSpectrum.table("alignment", "wavenumber", [0.1, 1.0], [1e-5, 1e-7])
+    assert table.band_rad_m == (0.1, 1.0) and table.density(np.sqrt(0.1)) == pytest.approx(1e-6, rel=1e-12)
+    with pytest.raises(ValueError, match="level: 'medium' is not one of"):
+        railmodal.TrackSpectrum.ore_b176("medium", "alignment", band)
+    with pytest.raises(ValueError):  # FRA classes are 1 … 6
+        railmodal.TrackSpectrum.fra_class(7, "alignment")
+
+
+def test_synthesised_track_equals_the_bundled_realisation():
+    # data/track/ore_low_synthesised.csv was written by synthesise_track: ORE B176 low level,
+    # 1 … 100 m, 1200 m every 0.25 m, seed 11, in mm to 3 decimals.
+    band = (2 * np.pi / 100, 2 * np.pi / 1)
+    spectra = {name: railmodal.TrackSpectrum.ore_b176("low", name.replace("_", "-"), band)
+               for name in ("vertical_level", "alignment", "cross_level")}
+    g = railmodal.synthesise_track(spectra, length_m=1200, step_m=0.25, seed=11)
+    measured = railmodal.load_track_geometry(SOURCE / "data" / "track" / "ore_low_synthesised.csv")
+    assert g.periodic and not measured.periodic and g.step_m == measured.step_m == 0.25
+    for name in ("vertical_level", "alignment", "cross_level"):
+        np.testing.assert_allclose(getattr(g, name), getattr(measured, name), rtol=0, atol=0.5e-6)  # 0.0005 mm
+    again = railmodal.synthesise_track(spectra, length_m=1200, step_m=0.25, seed=11)
+    np.testing.assert_array_equal(again.vertical_level, g.vertical_level)
+    assert g.distance_m[-1] == pytest.approx(1200 - 0.25) and g.length_m == pytest.approx(1200)
+
+
+def test_time_domain_ride_equals_the_command_line():
+    simulated, checks = railmodal.ride_scene_simulation(railmodal.load_scene(COACH_TIME))
+    expected = cli_json("ride", COACH_TIME)["time_domain"]
+    assert [c["nmv"] for c in simulated.comfort()] == pytest.approx([c["nmv"] for c in expected["comfort"]], rel=REL)
+    assert checks.exact_bin_error == pytest.approx(expected["fft_checks"]["exact_bin_error"], rel=REL)
+    assert checks.rms_difference == pytest.approx(expected["fft_checks"]["rms_difference"], rel=REL)
+    assert checks.fraction_outside_band == pytest.approx(expected["fft_checks"]["fraction_outside_band"], rel=REL)
+    first = simulated.outputs[0].name
+    h = simulated.history(first)
+    assert h["values"].shape == simulated.time_s.shape and h["values"].base is not None
+    # The weighted RMS of the record is the RMS of its weighted samples.
+    record = pandas.DataFrame(simulated.records()).set_index("output")
+    assert np.sqrt(np.mean(h["weighted"] ** 2)) == pytest.approx(record.loc[first, "weighted_rms"], rel=1e-9)
+
+
+def test_simulate_ride_over_a_realisation():
+    scene = railmodal.load_scene(COACH_TIME)
+    system = railmodal.assemble(railmodal.load_vehicle(scene.vehicle_file), scene.dofs)
+    outputs = railmodal.default_ride_outputs(system)[:1]
+    g = railmodal.synthesise_track(scene, length_m=2000, step_m=0.25, seed=3)
+    run = railmodal.simulate_ride(system, g, outputs, speed_m_s=40.0)
+    checks = railmodal.check_ride_realisation(system, scene, g, run, speed_m_s=40.0)
+    # A periodic realisation through a linear system: the simulated bins are H·X_track (the
+    # check's own limit is 1e-6; the exact path reaches round-off).
+    assert checks.exact_bin_error < 1e-6
+    with pytest.raises(ValueError):  # RideSimulationOptions::is_valid: the speed must be positive
+        railmodal.simulate_ride(system, g, outputs, speed_m_s=-40.0)
+
+
+def test_comfort_weightings_print_their_headers_example():
+    w = railmodal.comfort_weighting("wb", np.array([5.0]))[0]
+    # comfort_weighting.hpp prints: |W| = 0.957033, phase 0.373371 rad; Wz 2.60698; N_MV 1.62904.
+    assert abs(w) == pytest.approx(0.957033, abs=5e-7) and np.angle(w) == pytest.approx(0.373371, abs=5e-7)
+    aw = abs(w) * 0.3 / np.sqrt(2)
+    assert railmodal.en12299_nmv(0.1, 0.15, aw) == pytest.approx(1.62904, abs=5e-6)
+    # Sperling's Wz of one sine, by its weighted RMS: (b·B(f))^0.3 with b in cm/s².
+    b = railmodal.sperling_weighting(np.array([5.0]))[0]
+    assert railmodal.sperling_wz_from_weighted_rms(b * 0.3 / np.sqrt(2)) == pytest.approx(2.60698, abs=5e-6)
+    assert railmodal.sperling_weighting(np.array([5.0]), "lateral")[0] == pytest.approx(1.25 * b, rel=1e-15)
+    with pytest.raises(ValueError, match="weighting: 'wk' is not one of"):
+        railmodal.comfort_weighting("wk", np.array([1.0]))
+
+
+def test_spectrum_forms_and_the_fra_classes():
+    s = railmodal.TrackSpectrum.fra_class(4, "vertical-level")
+    # The FRA range of wavelengths 1.524 … 304.8 m (5 … 1000 ft) by default.
+    assert s.band_rad_m == pytest.approx((2 * np.pi / 304.8, 2 * np.pi / 1.524), rel=1e-12)
+    n = np.array([0.01, 0.1])
+    np.testing.assert_allclose(s.density_per_cycle(n), 2 * np.pi * s.density(2 * np.pi * n), rtol=1e-15)
+    # A better class is a smoother track.
+    assert railmodal.TrackSpectrum.fra_class(6, "vertical-level").rms() < s.rms()
