@@ -14,6 +14,7 @@
 #include <complex>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 #include "model/analysis_limits.hpp"
@@ -394,28 +395,69 @@ RootLoads root_loads(const response::StateSpaceModes& cm, const std::vector<Sepa
   return loads;
 }
 
-// The complex modes' expansion of harmonic k's response at one DOF and ω, for the check.
-std::complex<double> expanded_response(const response::StateSpaceModes& cm, const RootLoads& loads, int k, int dof,
-                                       double omega, double scale) {
+// The undamped modes (Cφ = 0) of a damped system, as a modal basis whose terms stand in for the
+// complex modes' roots on the imaginary axis: each such pair ±iω_j contributes exactly
+// φ_jφ_jᵀQ/(λ_j − ω²), and as a modal term it gets the modal path's rules — a load at
+// round-off drives nothing, and a driven resonance is flagged unbounded as the direct solve
+// flags it. Nothing when the roots on the axis are not exactly the pairs of these modes (a
+// root so lightly damped that it passes for undamped without Cφ = 0): the caller then solves
+// directly.
+std::optional<ModalBasis> undamped_basis(const LinearSystem& system, const ModalResult& modes,
+                                         const response::StateSpaceModes& cm) {
+  ModalBasis b;
+  for (const Mode& m : modes.modes)
+    if (m.kind == ModeKind::oscillatory && response::undamped(system, m)) b.modes.push_back(&m);
+  b.damping.assign(b.modes.size(), 0.0);
+  std::vector<bool> matched(cm.roots.size(), false);
+  for (const Mode* m : b.modes)
+    for (int side = 0; side < 2; ++side) {  // the pair ±i√λ
+      Eigen::Index best = -1;
+      for (Eigen::Index r = 0; r < cm.roots.size(); ++r)
+        if (cm.undamped[r] && !matched[r] && (cm.roots(r).imag() > 0.0) == (side == 0) &&
+            std::abs(std::norm(cm.roots(r)) - m->eigenvalue) <= 1e-6 * m->eigenvalue)
+          best = r;
+      if (best < 0) return std::nullopt;
+      matched[best] = true;
+    }
+  for (Eigen::Index r = 0; r < cm.roots.size(); ++r)
+    if (cm.undamped[r] != matched[r]) return std::nullopt;
+  return b;
+}
+
+// The complex modes' expansion of harmonic k's response at one DOF and ω, for the check: the
+// strictly damped roots, and the undamped modes' terms in place of their roots.
+std::complex<double> expanded_response(const response::StateSpaceModes& cm, const RootLoads& loads,
+                                       const ModalBasis& undamped, const std::vector<SeparableLoad>& parts, int k,
+                                       int dof, double omega, double scale) {
   std::complex<double> x = 0.0;
   const std::complex<double> iw(0.0, omega);
   for (Eigen::Index r = 0; r < cm.roots.size(); ++r)
-    x += cm.shapes(dof, r) * (loads.stiffness[k - 1](r) + iw * loads.damping[k - 1](r)) / (iw - cm.roots(r));
+    if (!cm.undamped[r])
+      x += cm.shapes(dof, r) * (loads.stiffness[k - 1](r) + iw * loads.damping[k - 1](r)) / (iw - cm.roots(r));
+  for (const response::ModalTerm& t : modal_terms(undamped, parts[k - 1], part_norms(parts), dof).terms)
+    x += std::complex<double>(t.ar - omega * t.bi, t.ai + omega * t.br) / (t.lambda - omega * omega);
   return scale * x;
 }
 
-// The same expansion as a kernel: (a_r + iωb_r)/(iω − λ_r) per root, every root strictly
-// damped, so no division by 0.
-Kernel root_kernel(const response::StateSpaceModes& cm, const RootLoads& loads, int k, int dof) {
+// The same expansion as a kernel: (a_r + iωb_r)/(iω − λ_r) per strictly damped root (no
+// division by 0), and the undamped modes' terms with their resonance flags.
+Kernel root_kernel(const response::StateSpaceModes& cm, const RootLoads& loads, const ModalBasis& undamped,
+                   const std::vector<SeparableLoad>& parts, int k, int dof) {
   std::vector<response::RootTerm> terms;
   for (Eigen::Index r = 0; r < cm.roots.size(); ++r) {
+    if (cm.undamped[r]) continue;
     const std::complex<double> a = cm.shapes(dof, r) * loads.stiffness[k - 1](r);
     const std::complex<double> b = cm.shapes(dof, r) * loads.damping[k - 1](r);
     terms.push_back({a.real(), a.imag(), b.real(), b.imag(), -cm.roots(r).real(), cm.roots(r).imag()});
   }
-  return [terms = std::move(terms)](const response::SweepBlock& b, double*, bool) {
+  const PartNorms source = part_norms(parts);
+  ModalTerms modal = modal_terms(undamped, parts[k - 1], source, dof);
+  return [terms = std::move(terms), modal = std::move(modal), q_norm_k = source.stiffness,
+          q_norm_c = source.damping](const response::SweepBlock& b, double* resonant, bool ascending) {
     response::add_root_terms(terms.data(), terms.size(), b);
-    return false;  // every root damped: bounded everywhere
+    if (modal.terms.empty()) return false;  // every root damped: bounded everywhere
+    response::add_modal_terms(modal.terms.data(), modal.terms.size(), b);
+    return flag_resonances(modal.resonances, q_norm_k, q_norm_c, b, resonant, ascending);
   };
 }
 
@@ -532,16 +574,22 @@ std::vector<AmplitudeCurve> sweep_curves(const LinearSystem& system, const Modal
   // where they are trustworthy and agree with the direct solve at sample speeds; otherwise
   // (and for friction as equivalent viscous damping) one direct solve per speed.
   if (!equivalent_friction && speeds.size() > kDirectUpTo) {
-    if (const auto complex_modes = response::state_space_modes(system)) {
+    const auto complex_modes = response::state_space_modes(system, /*allow_undamped=*/true);
+    const auto undamped = complex_modes ? undamped_basis(system, modes, *complex_modes) : std::nullopt;
+    if (undamped) {
       const response::StateSpaceModes& cm = *complex_modes;
       const RootLoads loads = root_loads(cm, sweep.parts);
       auto at_speed = [&](int k, int dof, double omega, double scale) {
-        return expanded_response(cm, loads, k, dof, omega, scale);
+        return expanded_response(cm, loads, *undamped, sweep.parts, k, dof, omega, scale);
       };
       if (agrees_with_direct(sweep, at_speed)) {
-        *method = "complex modes of the first-order form, checked against direct solves at 9 speeds";
-        return sweep_in_blocks(sweep, std::move(curves),
-                               [&](int k, int dof) { return root_kernel(cm, loads, k, dof); });
+        *method = undamped->modes.empty()
+                      ? "complex modes of the first-order form, checked against direct solves at 9 speeds"
+                      : "complex modes of the first-order form and modal terms of its undamped modes, checked "
+                        "against direct solves at 9 speeds";
+        return sweep_in_blocks(sweep, std::move(curves), [&](int k, int dof) {
+          return root_kernel(cm, loads, *undamped, sweep.parts, k, dof);
+        });
       }
     }
   }

@@ -39,10 +39,11 @@ std::vector<std::vector<int>> blocks(const LinearSystem& s) {
 
 }  // namespace
 
-std::optional<StateSpaceModes> state_space_modes(const LinearSystem& system) {
+std::optional<StateSpaceModes> state_space_modes(const LinearSystem& system, bool allow_undamped) {
   const int n = system.size();
   if (n == 0) return std::nullopt;
   StateSpaceModes out;
+  out.undamped.assign(2 * n, false);
   out.roots = Eigen::VectorXcd::Zero(2 * n);
   out.shapes = Eigen::MatrixXcd::Zero(n, 2 * n);
   out.projection = Eigen::MatrixXcd::Zero(2 * n, n);
@@ -66,8 +67,12 @@ std::optional<StateSpaceModes> state_space_modes(const LinearSystem& system) {
     const Eigen::EigenSolver<Eigen::MatrixXd> solver(A);
     if (solver.info() != Eigen::Success) return std::nullopt;
     const Eigen::VectorXcd roots = solver.eigenvalues();
-    for (Eigen::Index r = 0; r < roots.size(); ++r)
-      if (!(roots(r).real() < -1e-9 * std::abs(roots(r)))) return std::nullopt;  // undamped, rigid-body or unstable
+    for (Eigen::Index r = 0; r < roots.size(); ++r) {
+      if (roots(r).real() < -1e-9 * std::abs(roots(r))) continue;  // strictly damped
+      if (!allow_undamped || !(std::abs(roots(r).real()) <= 1e-9 * std::abs(roots(r))) || roots(r) == 0.0)
+        return std::nullopt;  // rigid-body or unstable, or undamped where not allowed
+      out.undamped[column + r] = true;
+    }
     const Eigen::MatrixXcd V = solver.eigenvectors();
     const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(V);
     if (!(lu.rcond() >= 1e-10)) return std::nullopt;

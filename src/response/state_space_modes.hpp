@@ -18,13 +18,19 @@ struct StateSpaceModes {
   Eigen::VectorXcd roots;       ///< λ_r, 2n of them
   Eigen::MatrixXcd shapes;      ///< the displacement rows of V (n × 2n)
   Eigen::MatrixXcd projection;  ///< the last n columns of V⁻¹ times M⁻¹ (2n × n): Q ↦ participations
+  /// Root r is on the imaginary axis (|Re λ_r| ≤ 1e-9|λ_r|, λ_r ≠ 0): one of the pair of an
+  /// undamped mode, only with `allow_undamped`. Its share of the expansion is the undamped
+  /// mode's modal term φφᵀQ/(λ − ω²) in exact arithmetic, which the sweep adds instead, with
+  /// the modal path's resonance flags and round-off rules.
+  std::vector<bool> undamped;
 };
 
 /// The expansion, or nothing where it would not be trustworthy: a massless or otherwise
-/// singular mass matrix, a root that is not strictly damped (an undamped, rigid-body or
-/// unstable mode: its resonance is unbounded, which the direct solve reports), or an
-/// eigenvector matrix so ill-conditioned (near-critical damping: a nearly defective pair) that
-/// V⁻¹ would amplify round-off (reciprocal condition below 1e-10).
-std::optional<StateSpaceModes> state_space_modes(const LinearSystem& system);
+/// singular mass matrix, a root that is not strictly damped (a rigid-body or unstable mode, or
+/// an undamped one unless `allow_undamped`: its resonance is unbounded, which the direct solve
+/// or the caller's modal term reports), or an eigenvector matrix so ill-conditioned
+/// (near-critical damping: a nearly defective pair) that V⁻¹ would amplify round-off
+/// (reciprocal condition below 1e-10).
+std::optional<StateSpaceModes> state_space_modes(const LinearSystem& system, bool allow_undamped = false);
 
 }  // namespace railmodal::response

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "railmodal/matrix_market.hpp"
+#include "response/modal_checks.hpp"
 #include "response/state_space_modes.hpp"
 #include "test_support.hpp"
 
@@ -390,9 +391,65 @@ TEST(AmplitudeCurves, ComplexModesRefusedWhereUntrustworthy) {
   };
   EXPECT_TRUE(response::state_space_modes(one_dof(1.0, 1.0, 0.2)));     // ζ = 0.1
   EXPECT_FALSE(response::state_space_modes(one_dof(1.0, 1.0, 0.0)));    // undamped
+  const auto pair = response::state_space_modes(one_dof(1.0, 1.0, 0.0), true);  // unless allowed
+  ASSERT_TRUE(pair);
+  EXPECT_TRUE(pair->undamped[0] && pair->undamped[1]);
+  EXPECT_FALSE(response::state_space_modes(one_dof(1.0, 0.0, 1.0), true));  // rigid body, even so
   EXPECT_FALSE(response::state_space_modes(one_dof(1.0, 1.0, 2.0)));    // ζ = 1: defective
   EXPECT_FALSE(response::state_space_modes(one_dof(0.0, 1.0, 1.0)));    // massless
   EXPECT_FALSE(response::state_space_modes(one_dof(1.0, 0.0, 1.0)));    // rigid body: λ = 0
+}
+
+// A damped vehicle with an undamped mode (issue 19, item 4): the steam-locomotive frame, whose
+// dampers leave one mode with Cφ = 0. The sweep takes the complex modes for the damped roots
+// and the undamped mode's modal term in place of its pair on the imaginary axis, not a direct
+// solve per speed. Against the direct solve at every speed and harmonic, all DOFs: 1e-10 of
+// the largest (both are exact; round-off is ~1e-14 here), with speeds placed exactly at the
+// undamped mode's resonance for each harmonic, where both must flag the same outputs
+// unbounded (or, where the load does not drive the mode, give the same finite response).
+TEST(AmplitudeCurves, DampedVehicleWithAnUndampedModeSweepsLikeTheDirectSolve) {
+  const Scene scene = load_scene(std::string(RAILMODAL_DATA_DIR) + "/scenes/steam_locomotive_unbalance.toml");
+  const LinearSystem sys = assemble(load_vehicle(scene.vehicle_file), scene.dofs);
+  const ModalResult modes = solve_modes(sys);
+  const Mode* undamped = nullptr;
+  for (const Mode& m : modes.modes)
+    if (m.kind == ModeKind::oscillatory && response::undamped(sys, m)) undamped = &m;
+  ASSERT_NE(undamped, nullptr);                            // the case under test
+  ASSERT_FALSE(response::state_space_modes(sys));          // the old rule refused it
+  ASSERT_TRUE(response::state_space_modes(sys, true));     // the new one takes it
+  const ExcitationSource& source = *scene.sources.front();
+  std::vector<double> speeds;
+  for (double v = 2.0; v <= 30.0; v += 0.37) speeds.push_back(v);
+  const double f0 = std::sqrt(undamped->eigenvalue) / (2.0 * 3.14159265358979323846);
+  for (int k = 1; k <= source.harmonic_count(); ++k) speeds.push_back(source.speed_for(f0, k));
+  std::sort(speeds.begin(), speeds.end());
+  std::vector<OutputRequest> outputs;
+  for (int d = 0; d < sys.size(); ++d) outputs.push_back({d, ResponseQuantity::displacement});
+  AnalysisSummary summary;
+  const auto curves = amplitude_curves(sys, modes, source, 0, outputs, speeds, 0.0, &summary);
+  EXPECT_NE(summary.method.find("undamped modes"), std::string::npos) << summary.method;
+  int flagged = 0;
+  for (size_t v = 0; v < speeds.size(); ++v) {
+    std::vector<double> direct(sys.size(), 0.0);
+    std::vector<bool> unbounded(sys.size(), false);
+    for (int k = 1; k <= source.harmonic_count(); ++k) {
+      const HarmonicLoad load = source.load(sys, speeds[v], k);
+      const auto r = harmonic_response(sys, modes, generalized_load(sys, load), load.frequency_hz);
+      for (int d = 0; d < sys.size(); ++d) {
+        unbounded[d] = unbounded[d] || unbounded_at(r, modes, d);
+        direct[d] += response_amplitude(r, d, ResponseQuantity::displacement);
+      }
+    }
+    const double scale = *std::max_element(direct.begin(), direct.end());
+    for (int d = 0; d < sys.size(); ++d) {
+      EXPECT_EQ(curves[d].unbounded[v], unbounded[d]) << sys.dofs[d].label << " at " << speeds[v] << " m/s";
+      flagged += unbounded[d];
+      if (!unbounded[d]) {
+        EXPECT_NEAR(curves[d].amplitudes[v], direct[d], 1e-10 * scale) << sys.dofs[d].label;
+      }
+    }
+  }
+  EXPECT_GT(flagged, 0);  // the unbalance drives the undamped mode: its resonances are in the grid
 }
 
 // Exactly at an undamped natural frequency the response is reported unbounded, never inf/NaN.

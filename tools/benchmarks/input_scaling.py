@@ -4,8 +4,15 @@ line on a small input and on one 10x larger, and prints both times, the peak mem
 ratio. A ratio near 10 is linear; near 100, quadratic; near 1, refused up front.
 
 Not a ctest (timings depend on the machine): run it by hand after changing the readers.
+There is no numpy side: the comparison is railmodal with itself at two sizes. The two sizes run
+interleaved (small, large, small, large, ...) --repeats times, and the ratio is the median of
+the per-pair ratios with its range, so that a change of load on the shared machine between
+the two runs does not pass for a change of complexity.
 
     python3 tools/benchmarks/input_scaling.py [--railmodal build/railmodal] [--only toml|mtx|study]
+        [--repeats 3] [--quick]
+
+--quick: one repeat of the toml cases only (a smoke run).
 
 Cases:
   toml   item 3: TOML lines at the 8192-byte limit (the densest values, empty strings), 100 and
@@ -129,22 +136,30 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--railmodal", default="build/railmodal")
     parser.add_argument("--only", choices=["toml", "mtx", "study"])
+    parser.add_argument("--repeats", type=int, default=3, help="interleaved small/large pairs (median reported)")
+    parser.add_argument("--quick", action="store_true")
     args = parser.parse_args()
+    if args.quick:
+        args.only, args.repeats = "toml", 1
     railmodal = os.path.abspath(args.railmodal)
     with tempfile.TemporaryDirectory(prefix="railmodal_scaling_") as directory:
         for group, group_cases in cases(railmodal, directory).items():
             if args.only and group != args.only:
                 continue
             for title, make, (small, large), command in group_cases:
-                results = []
-                for size in (small, large):
-                    path = make(directory, size)
-                    results.append(run(command(path)))
+                paths = [make(directory, size) for size in (small, large)]
+                pairs = [[run(command(path)) for path in paths] for _ in range(args.repeats)]
+                for path in paths:
                     os.remove(path)
-                (t1, u1, m1, c1), (t2, u2, m2, c2) = results
+                median = lambda xs: sorted(xs)[len(xs) // 2]
+                (t1, u1, m1, c1), (t2, u2, m2, c2) = ([median([p[i][k] for p in pairs]) for k in range(4)]
+                                                      for i in range(2))
+                wall = [b[0] / a[0] for a, b in pairs]
+                cpu = [b[1] / a[1] for a, b in pairs if a[1] >= 0.05]
                 print("%-6s %-52s %7.3f s (cpu %6.2f s) %5.0f MB exit %d | %7.3f s (cpu %6.2f s) %5.0f MB exit %d"
-                      " | ratio %5.1f (cpu %s)" % (group, title, t1, u1, m1, c1, t2, u2, m2, c2, t2 / t1,
-                                                   "%.1f" % (u2 / u1) if u1 >= 0.05 else "-"))
+                      " | ratio %5.1f [%.1f-%.1f] (cpu %s)"
+                      % (group, title, t1, u1, m1, c1, t2, u2, m2, c2, median(wall), min(wall), max(wall),
+                         "%.1f [%.1f-%.1f]" % (median(cpu), min(cpu), max(cpu)) if cpu else "-"))
                 sys.stdout.flush()
 
 

@@ -7,6 +7,8 @@
 #   tools/benchmarks/simulate_memory.sh [build/railmodal]
 #
 # Prints one line per run: the output, the duration, the samples and the peak RSS (GNU time -v).
+# One run each: the peak RSS is set by the allocations, not by the load on the machine (repeat
+# runs differ by a few hundred kB), and no time or ratio is reported. There is no numpy side.
 set -euo pipefail
 exe=${1:-build/railmodal}
 here=$(cd "$(dirname "$0")/../.." && pwd)
