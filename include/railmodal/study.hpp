@@ -245,13 +245,21 @@ struct EvaluationOptions {
   int shard = 1;        ///< this process evaluates the variants with index % shards == shard − 1
   int shards = 1;
   std::function<void(double)> progress;  ///< fraction done, called from one thread at a time
+  /// true: a variant load_study did not read (StudyVariant::read false) is read by the thread
+  /// that evaluates it (read_variant: its overrides written into the study's parsed files, no
+  /// text parsed again) and dropped once evaluated, so that reading runs on every thread and
+  /// holds one vehicle per thread rather than one per variant. A variant that cannot be read
+  /// (a bad override) stops the evaluation: its InputError, the lowest-index one whatever the
+  /// thread count, is thrown once the threads have stopped, as load_study would have thrown it.
+  /// false: every variant of the shard must have been read.
+  bool read_in_workers = false;
   /// Returns false and explains in *why when an option is out of range.
   bool is_valid(std::string* why) const;
 };
 
 /// The variants of this shard, in index order; the same whatever the thread count. Each must
-/// have been read (load_study with this shard, or all); std::invalid_argument otherwise, and
-/// for invalid options. `summary`, if given, receives the threads, the variants evaluated and
+/// have been read (load_study with this shard, or all) unless options.read_in_workers;
+/// std::invalid_argument otherwise, and for invalid options. `summary`, if given, receives the threads, the variants evaluated and
 /// failed, and the stage time.
 std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options,
                                           AnalysisSummary* summary = nullptr);

@@ -1,13 +1,18 @@
 // The variants of a shard on several threads. Each result depends only on its variant and
-// lands in its own slot, so the output is the same whatever the number of threads.
+// lands in its own slot, so the output is the same whatever the number of threads. With
+// read_in_workers each thread also reads the variants it evaluates from the study's parsed
+// files (issue 19, item 2): reading is spread over the threads, and a read vehicle lives only
+// while it is evaluated.
 #include <algorithm>
 #include <atomic>
+#include <exception>
 #include <limits>
 #include <mutex>
 #include <stdexcept>
 #include <string>
 #include <thread>
 
+#include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 #include "require_valid.hpp"
 #include "summary/stage_clock.hpp"
@@ -41,7 +46,7 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
   std::vector<int> indices;
   for (int i = 0; i < static_cast<int>(study.variants.size()); ++i)
     if (in_shard(i, options.shard, options.shards)) {
-      if (!study.variants[i].read)
+      if (!study.variants[i].read && !(options.read_in_workers && study.plan))
         throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
                                     "') was not read: load the study with this shard");
       indices.push_back(i);
@@ -54,14 +59,37 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
   std::atomic<size_t> next{0};
   std::mutex progress_mutex;
   size_t done = 0;
+  // The first variant that could not be read (read_in_workers): once one is found no thread
+  // takes another, and every index below the largest taken was taken and finished, so the
+  // lowest one recorded is the study's first bad variant whatever the thread count.
+  std::mutex error_mutex;
+  std::atomic<bool> stop{false};
+  size_t error_at = indices.size();
+  std::exception_ptr error;
   auto work = [&] {
-    for (size_t k = next++; k < indices.size(); k = next++) {
+    while (!stop) {
+      const size_t k = next++;  // a taken index is always finished: see error_at
+      if (k >= indices.size()) break;
+      const int index = indices[k];
+      const StudyVariant* variant = &study.variants[index];
+      StudyVariant read;  // this thread's copy of an unread variant, dropped once evaluated
+      if (!variant->read) {
+        try {
+          read = read_variant(study, index);
+          variant = &read;
+        } catch (const InputError&) {
+          const std::lock_guard<std::mutex> lock(error_mutex);
+          if (k < error_at) error_at = k, error = std::current_exception();
+          stop = true;
+          continue;
+        }
+      }
       try {
-        results[k] = evaluate_variant(study.variants[indices[k]], indices[k], study.deflection_rule, hunting);
+        results[k] = evaluate_variant(*variant, index, study.deflection_rule, hunting);
       } catch (const std::exception& e) {  // evaluate_variant keeps design failures; this is a bug
-        results[k].index = indices[k];
-        results[k].name = study.variants[indices[k]].name;
-        results[k].parameters = study.variants[indices[k]].parameters;
+        results[k].index = index;
+        results[k].name = variant->name;
+        results[k].parameters = variant->parameters;
         results[k].failure = std::string("internal error: ") + e.what();
       }
       if (options.progress) {
@@ -74,6 +102,7 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
   for (int t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
   for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
   clock.lap("evaluate variants");
   if (summary) {
     summary->analysis = "design study, shard " + std::to_string(options.shard) + " of " + std::to_string(options.shards);

@@ -395,6 +395,83 @@ parameters = [{ key = "suspension.spring[0].static_deflection", from = "40 mm", 
   EXPECT_EQ(back[1].static_deflections, part[1].static_deflections);
 }
 
+// `railmodal compare` reads no variant in load_study: each is read by the thread that evaluates
+// it (issue 19, item 2). The results are those of variants read beforehand, to the last bit,
+// on any number of threads and in any shard.
+TEST(Evaluation, VariantsReadInTheWorkersGiveTheResultsOfVariantsReadBeforehand) {
+  const std::string path = study_file(R"(
+[[variant]]
+name = "soft"
+overrides = { "suspension.spring[0].static_deflection" = "80 mm" }
+
+[[sweep]]
+parameters = [{ key = "suspension.spring[0].static_deflection", from = "40 mm", to = "70 mm", step = "10 mm" }]
+)");
+  const Study read_first = load_study(path);
+  const Study unread = load_study(path, [](int) { return false; });
+  ASSERT_EQ(unread.variants.size(), 6u);
+  ASSERT_FALSE(unread.variants[1].read);
+  EvaluationOptions before;
+  before.threads = 1;
+  const auto json = [](const Study& s, const std::vector<VariantResult>& results) {
+    std::ostringstream out;
+    write_comparison(out, rank_variants(s, results), OutputFormat::json);
+    return out.str();
+  };
+  const std::string expected = json(read_first, evaluate_study(read_first, before));
+  for (int threads : {1, 2, 3}) {
+    EvaluationOptions workers;
+    workers.threads = threads;
+    workers.read_in_workers = true;
+    EXPECT_EQ(json(unread, evaluate_study(unread, workers)), expected) << threads << " threads";
+  }
+  // A shard reads its own variants only: 2/3 holds indices 1 (soft) and 4.
+  EvaluationOptions shard;
+  shard.threads = 2;
+  shard.shard = 2;
+  shard.shards = 3;
+  shard.read_in_workers = true;
+  const auto part = evaluate_study(unread, shard);
+  ASSERT_EQ(part.size(), 2u);
+  EXPECT_EQ(part[0].name, "soft");
+  shard.read_in_workers = false;
+  const auto part_read_first = evaluate_study(read_first, shard);
+  EXPECT_EQ(part[0].modes.front().period_s, part_read_first[0].modes.front().period_s);
+  EXPECT_EQ(part[1].critical_speeds.front().speed, part_read_first[1].critical_speeds.front().speed);
+}
+
+// A bad override met by a thread stops the evaluation with the error load_study gives for the
+// whole study: its first bad variant's, whatever the thread count.
+TEST(Evaluation, ABadVariantReadInTheWorkersIsTheErrorLoadStudyGives) {
+  std::string body;
+  for (int i = 0; i < 12; ++i)  // variants 1-12; 5 and 9 are bad (wheelbase -1 m)
+    body += "\n[[variant]]\nname = \"v" + std::to_string(i + 1) + "\"\noverrides = { \"suspension." +
+            (i == 4 || i == 8 ? std::string("wheelbase\" = \"-1 m\"") : std::string("spring[0].static_deflection\" = \"") +
+                                                                              std::to_string(40 + i) + " mm\"") +
+            " }\n";
+  const std::string path = study_file(body);
+  std::string expected;
+  try {
+    load_study(path);
+    FAIL() << "load_study took the bad variants";
+  } catch (const InputError& e) {
+    expected = e.what();
+  }
+  EXPECT_NE(expected.find("variant 'v5': key 'suspension.wheelbase'"), std::string::npos) << expected;
+  const Study unread = load_study(path, [](int) { return false; });
+  for (int threads : {1, 2, 4}) {
+    EvaluationOptions workers;
+    workers.threads = threads;
+    workers.read_in_workers = true;
+    try {
+      evaluate_study(unread, workers);
+      ADD_FAILURE() << "no error on " << threads << " threads";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), expected) << threads << " threads";
+    }
+  }
+}
+
 // A shard records the digest of the study file it was evaluated from: merged against a study
 // file edited since, its results are of other variants, and it is refused naming the shard.
 TEST(Evaluation, ShardOfAnotherVersionOfTheStudyFileIsRefused) {

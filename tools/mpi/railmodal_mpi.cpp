@@ -86,19 +86,21 @@ ShardText guarded(const Step& step) {
   }
 }
 
-/// The study with this rank's variants read; rank 0's report reads the others it draws.
-railmodal::Study load_own_variants(const Options& o, int rank, int size) {
-  return railmodal::load_study(o.study, [&](int index) { return railmodal::in_shard(index, rank + 1, size); });
+/// The study with its variants named, none read: the threads that evaluate this rank's variants
+/// read them (EvaluationOptions::read_in_workers, as railmodal compare does); rank 0's report
+/// reads the others it draws.
+railmodal::Study load_named_variants(const Options& o) {
+  return railmodal::load_study(o.study, [](int) { return false; });
 }
 
 /// Rank 0, before any rank evaluates: its output opened, its study read, and the output refused
 /// if it is one of the study's files (as railmodal compare does), so that these fail first.
-ShardText prepare_output(const Options& o, int size, OutputFiles& outputs, std::ostream** out,
+ShardText prepare_output(const Options& o, OutputFiles& outputs, std::ostream** out,
                          std::optional<railmodal::Study>& study) {
   return guarded([&] {
     *out = &outputs.open(o.output);
     outputs.refuse_inputs({o.study});
-    study = load_own_variants(o, 0, size);
+    study = load_named_variants(o);
     outputs.refuse_inputs(railmodal::study_files(*study));
     return std::string();
   });
@@ -106,11 +108,12 @@ ShardText prepare_output(const Options& o, int size, OutputFiles& outputs, std::
 
 ShardText evaluate_shard(const Options& o, int rank, int size, int threads, std::optional<railmodal::Study>& study) {
   return guarded([&] {
-    if (!study) study = load_own_variants(o, rank, size);
+    if (!study) study = load_named_variants(o);
     railmodal::EvaluationOptions evaluation;
     evaluation.shard = rank + 1;
     evaluation.shards = size;
     evaluation.threads = threads;
+    evaluation.read_in_workers = true;
     std::ostringstream out;
     railmodal::write_shard(out, *study, evaluation, railmodal::evaluate_study(*study, evaluation));
     return out.str();
@@ -174,7 +177,7 @@ int run(const Options& o, int rank, int size) {
   OutputFiles outputs;  // rank 0's
   std::ostream* out = nullptr;
   // Rank 0's output and study are checked before any rank evaluates: a bad output fails alone.
-  int code = first_failure(rank == 0 ? prepare_output(o, size, outputs, &out, study) : ShardText{}, rank, size);
+  int code = first_failure(rank == 0 ? prepare_output(o, outputs, &out, study) : ShardText{}, rank, size);
   if (code != kSuccess) return code;
   ShardText shard = evaluate_shard(o, rank, size, threads, study);
   code = first_failure(shard, rank, size);

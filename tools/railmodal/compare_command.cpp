@@ -94,12 +94,12 @@ int run(const CompareOptions& o) {
     std::ostream& out = outputs.open(o.output);
     outputs.refuse_inputs({o.study});
     outputs.refuse_inputs(o.merge);
-    // A shard reads its own variants only; a merge reads none but those its report draws
-    // (read_variant); a whole run reads and checks every variant before evaluating any.
-    const int shard = evaluation.shard, shards = evaluation.shards;
+    // load_study lists and names every variant and reads none: the threads that evaluate a
+    // variant read it (read_in_workers), a shard its own only; a merge reads none but those its
+    // report draws (read_variant). A bad override stops the run at the first such variant.
     const bool merging = !o.merge.empty();
-    const Study study =
-        load_study(o.study, [&](int index) { return !merging && in_shard(index, shard, shards); });
+    const Study study = load_study(o.study, [](int) { return false; });
+    evaluation.read_in_workers = true;
     outputs.refuse_inputs(study_files(study));
     if (!merging && !o.quiet) evaluation.progress = terminal_progress("compare");
     if (!o.shard.empty())
