@@ -23,11 +23,13 @@
 
 namespace railmodal {
 
-/// Writes `study` in any OutputFormat: table (aligned text), csv (one section after another, each
-/// headed by a "# title" line, blank line between), json, markdown, html (the tables and plots of
-/// the wheel loads and of surging and nosing against crank angle). Forces in kN, moments in kN·m,
-/// masses in kg on the crank radius, angles in degrees ahead of the wheel's crank. `inputs`: the
-/// files read, for the HTML footer ({}: not recorded).
+/// Writes `study` in any OutputFormat: table (aligned text), markdown and html (the tables, and in
+/// html the plots of the wheel loads and of surging and nosing against crank angle), in kN, kN·m,
+/// kg on the crank radius and degrees ahead of the wheel's crank; csv (one long table, a row per
+/// number with its section, rule, item, quantity and SI unit) and json (a tree whose keys carry
+/// their SI units), both at full precision with harmonics as amplitude and phase
+/// (docs/driving_gear.md, "The report"). `inputs`: the files read, for the HTML footer ({}: not
+/// recorded).
 void write_balance(std::ostream& out, const BalanceStudy& study, OutputFormat format, const Provenance& inputs = {});
 
 }  // namespace railmodal

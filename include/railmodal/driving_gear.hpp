@@ -43,6 +43,7 @@
 //   }
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -51,10 +52,12 @@
 
 namespace railmodal {
 
+class ExcitationSource;  // excitation.hpp
+
 /// Which way the wheels turn. Every force is a function of the mechanism's configuration
 /// (steady rotation: the accelerations go with ω²), so the tables against crank angle, α,
 /// surging and nosing are the same either way; the direction only sets how the crank angle
-/// runs in time, φ(t) = φ₀ ± ωt, which the excitation (a later slice) uses.
+/// runs in time, φ(t) = φ₀ ± ωt, which the excitation (GearExcitation) uses.
 enum class GearRotation { forward, backward };
 const char* to_string(GearRotation rotation);  ///< "forward", "backward"
 /// Inverse of to_string; std::nullopt for an unknown word.
@@ -241,5 +244,33 @@ DrivingGear load_driving_gear(const std::string& path);
 /// The speed at which an overload coefficient `alpha` found at `speed` reaches `limit`: every
 /// force grows as V², so V·√(limit/α) (+∞ for α = 0).
 double speed_at_alpha(double alpha, double speed, double limit);
+
+/// The driving gear as the unbalance excitation of a vehicle (scene kind "driving_gear";
+/// docs/driving_gear.md, "As an excitation"): harmonic k of the exact forces above at k times
+/// the wheels' turning frequency V/(πD), growing as V². Vertical forces of an axle (its rods'
+/// Y at the crank pins, its wheels' masses) act on the body named for that axle (a wheelset or
+/// other unsprung body) or else on `body`; horizontal forces (X, the masses') and the guide-bar
+/// force Z act on `body`, the frame that carries axleboxes and guides, so surging moves it
+/// through its longitudinal degree of freedom where it frees one (Body::longitudinal_free).
+/// Points in the vehicle frame (x forward, y left, z up from the axle plane): an axle's forces
+/// at (x, ∓(lateral), 0) of its crank pins and wheels, Z at the middle of the crosshead's stroke,
+/// L ahead of the axle. The more numerous `Unbalance` of excitation.hpp stays the simple form.
+struct GearExcitation {
+  DrivingGear gear;
+  std::string body = "body";  ///< the frame
+  struct AxlePlace {
+    double x = 0.0;    ///< m, the axle's position along the vehicle frame
+    std::string body;  ///< the body its vertical forces act on; "" = `body`
+  };
+  /// Per DrivingGear::axles, in order; empty: x = GearAxle::position, every force on `body`.
+  std::vector<AxlePlace> axles;
+  /// φ₀, rad: the reference crank's angle at t = 0 (Zhdanov's, docs/driving_gear.md); the
+  /// crank angle runs as φ(t) = φ₀ + ωt forward, φ₀ − ωt backward (DrivingGear::rotation).
+  double crank_angle = 0.0;
+  int harmonics = 2;  ///< orders 1 … harmonics (2: the second is what counterweights cannot balance)
+};
+/// Throws std::invalid_argument for an invalid gear, harmonics < 1, or axles not matching the
+/// gear's. The bodies are looked up when loads are made (ExcitationSource::misfit).
+std::unique_ptr<ExcitationSource> make_source(const GearExcitation& excitation);
 
 }  // namespace railmodal

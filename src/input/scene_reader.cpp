@@ -9,6 +9,8 @@
 #include "input/ride_reader.hpp"
 #include "input/table_reader.hpp"
 #include "input/value_place.hpp"
+#include "railmodal/balance.hpp"
+#include "railmodal/driving_gear.hpp"
 #include "railmodal/scene.hpp"
 
 namespace railmodal {
@@ -141,16 +143,64 @@ std::shared_ptr<const ExcitationSource> unbalance(TableReader& t) {
   return make_source(p);
 }
 
-std::shared_ptr<const ExcitationSource> source(TableReader& t) {
+// kind = "driving_gear" (docs/driving_gear.md, "As an excitation"): the [driving_gear] table
+// of the file `gear` names (default: the scene's vehicle file), optionally balanced at its
+// design speed, placed on the vehicle by [[source.axle]] tables.
+std::shared_ptr<const ExcitationSource> driving_gear(TableReader& t, const std::string& vehicle_file) {
+  GearExcitation p;
+  if (t.has("gear")) p.gear = load_driving_gear(t.existing_file("gear"));
+  else if (!vehicle_file.empty()) p.gear = load_driving_gear(vehicle_file);
+  else t.fail("gear", "missing: name the file with the [driving_gear] table (the scene has no vehicle file)");
+  p.body = t.optional_string("body").value_or("body");
+  p.crank_angle = read_start_angle(t, "crank_angle");
+  p.harmonics = t.optional_count("harmonics", 1).value_or(2);
+  if (p.harmonics > 60) t.fail("harmonics", "must be at most 60");
+  if (t.has("balance")) {
+    const std::string word = t.string("balance");
+    BalanceOptions options;
+    if (const auto rule = vertical_rule_from_string(word)) options.rule = *rule;
+    else t.fail("balance", "unknown rule '" + word + "' (least_squares, minimax, book)");
+    options.allowed_alpha = t.optional_positive("balance_alpha", Quantity::dimensionless).value_or(0.0);
+    options.trade_off_fractions.clear();
+    if (!(p.gear.design_speed > 0.0))
+      t.fail("balance", "balancing needs the gear's design_speed, which its [driving_gear] table does not give");
+    p.gear = balance_driving_gear(p.gear, p.gear.design_speed, options).balanced;
+  } else if (t.has("balance_alpha")) {
+    t.fail("balance_alpha", "applies only with balance = \"least_squares\", \"minimax\" or \"book\"");
+  }
+  for (const GearAxle& axle : p.gear.axles) p.axles.push_back({axle.position, ""});
+  if (t.has("axle")) {
+    std::vector<bool> placed(p.gear.axles.size(), false);
+    for (auto& a : t.tables("axle")) {
+      const std::string name = a.string("name");
+      size_t i = 0;
+      while (i < p.gear.axles.size() && p.gear.axles[i].name != name) ++i;
+      if (i == p.gear.axles.size()) {
+        std::string names;
+        for (const GearAxle& axle : p.gear.axles) names += (names.empty() ? "'" : ", '") + axle.name + "'";
+        a.fail("name", "the driving gear has no axle '" + name + "' (" + names + ")");
+      }
+      if (placed[i]) a.fail("name", "places axle '" + name + "' twice");
+      placed[i] = true;
+      if (a.has("x")) p.axles[i].x = a.quantity("x", Quantity::length);
+      p.axles[i].body = a.optional_string("body").value_or("");
+      a.finish();
+    }
+  }
+  return make_source(p);
+}
+
+std::shared_ptr<const ExcitationSource> source(TableReader& t, const std::string& vehicle_file) {
   const std::string kind = t.string("kind");
   try {
+    if (kind == "driving_gear") return driving_gear(t, vehicle_file);
     if (kind == "rail_joints") return rail_joints(t);
     if (kind == "wheel_eccentricity") return eccentricity(t);
     if (kind == "wheel_flat") return flat(t);
     if (kind == "hunting") return hunting(t);
     if (kind == "unbalance") return unbalance(t);
     t.fail("kind", "unknown source '" + kind +
-                       "' (rail_joints, wheel_eccentricity, wheel_flat, hunting, unbalance, irregularity)");
+                       "' (rail_joints, wheel_eccentricity, wheel_flat, hunting, unbalance, driving_gear, irregularity)");
   } catch (const std::invalid_argument& e) {
     t.fail("kind", e.what());
   }
@@ -311,9 +361,9 @@ void read_sources(TableReader& root, Scene& scene, std::string* geometry) {
     } else {
       // The keys ExcitationSource::misfit (and check_scene_fits) may blame, once the vehicle is
       // known, by the source's index in scene.sources (the irregularity source is not there).
-      for (const char* key : {"kind", "body", "phases"})
+      for (const char* key : {"kind", "body", "phases", "axle"})
         scene.name_places["source[" + std::to_string(scene.sources.size()) + "]." + key] = t.place(key);
-      scene.sources.push_back(source(t));
+      scene.sources.push_back(source(t, scene.vehicle_file));
     }
     t.finish();
   }

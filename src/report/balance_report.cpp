@@ -9,6 +9,7 @@
 #include "report/document_table.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
@@ -184,45 +185,284 @@ void write_text(std::ostream& out, const std::vector<Section>& sections) {
   }
 }
 
-void write_csv(std::ostream& out, const std::vector<Section>& sections) {
-  bool first = true;
-  for (const Section& s : sections) {
-    if (!first) out << "\n";
-    first = false;
-    out << "# " << s.title << "\n";
-    for (std::size_t c = 0; c < s.table.headers.size(); ++c) out << (c ? "," : "") << report::csv_field(s.table.headers[c]);
-    out << "\n";
-    for (const auto& row : s.table.rows) {
-      for (std::size_t c = 0; c < row.size(); ++c) out << (c ? "," : "") << report::csv_field(row[c]);
-      out << "\n";
+// ---- Machine-readable outputs: every number at full precision (the shortest text that reads
+// back as the same double), in SI units named in the keys or in a unit column; harmonics with
+// amplitude and phase, q(φ) = Σ_k A_k cos(kφ − ψ_k), φ the reference (right) crank's angle.
+
+// The states every 15° of the reference crank (the book's tables), as the text tables, with
+// their angle in whole degrees (the state's own angle in radians is 2π·i/steps, which need not
+// convert back to a whole number of degrees exactly).
+// Keys in the order written (nlohmann::json would sort them).
+using Json = nlohmann::ordered_json;
+
+std::vector<std::pair<int, const GearState*>> tabled_states(const GearResult& r) {
+  std::vector<std::pair<int, const GearState*>> out;
+  const int steps = static_cast<int>(r.states.size());
+  for (int degree = 0; degree < 360; degree += 15)
+    if ((degree * steps) % 360 == 0) out.push_back({degree, &r.states[static_cast<std::size_t>(degree * steps / 360)]});
+  return out;
+}
+
+double phase_of(const GearHarmonic& h) { return std::atan2(h.sine, h.cosine); }
+
+Json harmonics_json(const std::vector<GearHarmonic>& hs) {
+  Json out = Json::array();
+  for (const GearHarmonic& h : hs)
+    out.push_back({{"order", h.order}, {"amplitude", h.order == 0 ? std::abs(h.cosine) : h.amplitude()},
+                   {"phase_deg", phase_of(h) / kDegree}});
+  return out;
+}
+
+// JSON has no infinity: a speed that is never reached is null.
+Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+
+Json states_json(const GearResult& r, const std::vector<std::string>& cylinders,
+                           const std::vector<std::string>& wheels, bool rods) {
+  Json out = Json::array();
+  for (const auto& [degree, st] : tabled_states(r)) {
+    Json j = {{"crank_angle_deg", degree}};
+    if (rods) {
+      Json cyl = Json::array();
+      for (std::size_t c = 0; c < st->cylinders.size(); ++c)
+        cyl.push_back({{"cylinder", cylinders[c]}, {"X_N", st->cylinders[c].horizontal},
+                       {"Y_N", st->cylinders[c].vertical}, {"Z_N", st->cylinders[c].guide}});
+      j["cylinders"] = cyl;
     }
+    Json loads = Json::array();
+    for (std::size_t w = 0; w < st->wheel_loads.size(); ++w)
+      loads.push_back({{"wheel", wheels[w]}, {"dP_N", st->wheel_loads[w]}});
+    j["wheel_loads"] = loads;
+    j["surging_N"] = st->surging;
+    j["nosing_N_m"] = st->nosing;
+    out.push_back(j);
   }
+  return out;
 }
 
-nlohmann::json cell_json(const std::string& text, bool numeric) {
-  if (!numeric || text.empty() || text == "never") return text.empty() ? nlohmann::json(nullptr) : nlohmann::json(text);
-  return nlohmann::json(std::stod(text));
+Json gear_json(const GearResult& r, const std::vector<std::string>& cylinders,
+                         const std::vector<std::string>& wheels) {
+  Json h_cyl = Json::array();
+  for (std::size_t c = 0; c < cylinders.size(); ++c)
+    h_cyl.push_back({{"cylinder", cylinders[c]}, {"X_N", harmonics_json(r.horizontal_harmonics[c])},
+                     {"Y_N", harmonics_json(r.vertical_harmonics[c])}, {"Z_N", harmonics_json(r.guide_harmonics[c])}});
+  Json w_json = Json::array();
+  for (std::size_t w = 0; w < r.wheels.size(); ++w) {
+    const GearWheelLoad& x = r.wheels[w];
+    w_json.push_back({{"wheel", wheels[w]}, {"static_load_N", x.static_load}, {"max_dP_N", x.max_dynamic_load},
+                      {"min_dP_N", x.min_dynamic_load}, {"least_load_N", x.static_load + x.min_dynamic_load},
+                      {"alpha", x.alpha}, {"alpha_89a", x.alpha_89a}, {"wheel_lift", x.wheel_lift},
+                      {"dP_harmonics_N", harmonics_json(x.harmonics)}});
+  }
+  return {{"states_every_15_deg", states_json(r, cylinders, wheels, true)},
+          {"harmonics", {{"cylinders", h_cyl}, {"surging_N", harmonics_json(r.surging_harmonics)},
+                         {"nosing_N_m", harmonics_json(r.nosing_harmonics)}}},
+          {"wheels", w_json},
+          {"max_surging_N", r.max_surging},
+          {"max_nosing_N_m", r.max_nosing}};
 }
 
-void write_json(std::ostream& out, const BalanceStudy& study, const std::vector<Section>& sections) {
-  nlohmann::json j;
+double largest_alpha(const BalanceResult& b) {
+  double alpha = 0.0;
+  for (const WheelBalance& w : b.wheels) alpha = std::max(alpha, w.alpha);
+  return alpha;
+}
+
+Json rule_json(const BalanceStudy& study, const BalanceResult& b, const std::vector<std::string>& cylinders,
+                         const std::vector<std::string>& wheels) {
+  Json ws = Json::array();
+  for (std::size_t w = 0; w < b.wheels.size(); ++w) {
+    const WheelBalance& x = b.wheels[w];
+    ws.push_back({{"wheel", wheels[w]},
+                  {"rotating_mass_kg", x.rotating_mass}, {"rotating_angle_deg", x.rotating_angle / kDegree},
+                  {"vertical_mass_kg", x.vertical_mass}, {"vertical_angle_deg", x.vertical_angle / kDegree},
+                  {"overbalance_mass_kg", x.overbalance_mass}, {"overbalance_angle_deg", x.overbalance_angle / kDegree},
+                  {"total_mass_kg", x.total_mass}, {"total_angle_deg", x.total_angle / kDegree},
+                  {"max_hammer_blow_N", x.max_hammer_blow},
+                  {"least_load_N", b.after.wheels[w].static_load + b.after.wheels[w].min_dynamic_load},
+                  {"alpha", x.alpha}, {"alpha_89a", x.alpha_89a}, {"wheel_lift", x.alpha >= 1.0},
+                  {"dP_harmonics_N", harmonics_json(b.after.wheels[w].harmonics)}});
+  }
+  const double alpha = largest_alpha(b);
+  Json speeds = Json::array();
+  for (double limit : kAlphaLimits)
+    speeds.push_back({{"alpha", limit}, {"speed_km_per_h", finite_or_null(speed_at_alpha(alpha, b.speed, limit) * 3.6)}});
+  Json j = {{"rule", to_string(b.rule)},
+                      {"wheels", ws},
+                      {"max_surging_N", b.after.max_surging},
+                      {"unbalanced_surging_percent", b.percent_unbalanced_surging},
+                      {"max_nosing_N_m", b.after.max_nosing},
+                      {"unbalanced_nosing_percent", b.percent_unbalanced_nosing},
+                      {"max_alpha", alpha},
+                      {"speed_at_alpha", speeds},
+                      {"surging_harmonics_N", harmonics_json(b.after.surging_harmonics)},
+                      {"nosing_harmonics_N_m", harmonics_json(b.after.nosing_harmonics)}};
+  if (b.rule == study.options.rule) j["states_every_15_deg"] = states_json(b.after, cylinders, wheels, false);
+  if (!b.trade_off.empty()) {
+    Json t = Json::array();
+    for (const BalanceTradeOff& x : b.trade_off)
+      t.push_back({{"balanced_fraction", x.fraction}, {"max_alpha", x.max_alpha}, {"max_surging_N", x.max_surging},
+                   {"max_nosing_N_m", x.max_nosing}});
+    j["trade_off"] = t;
+  }
+  return j;
+}
+
+std::vector<std::string> alpha_notes(const BalanceStudy& study);
+
+void write_json(std::ostream& out, const BalanceStudy& study, const std::vector<std::string>& cylinders,
+                const std::vector<std::string>& wheels) {
+  Json j;
   j["engine"] = study.name;
-  j["speed_kmh"] = study.gear.speed * 3.6;
-  j["omega_per_s"] = study.gear.omega;
+  j["speed_m_per_s"] = study.gear.speed;
+  j["speed_km_per_h"] = study.gear.speed * 3.6;
+  j["omega_rad_per_s"] = study.gear.omega;
   j["frequency_hz"] = study.gear.frequency_hz;
-  j["allowed_alpha"] = study.options.allowed_alpha;
-  j["reciprocating_fraction"] = study.options.reciprocating_fraction;
-  j["sections"] = nlohmann::json::array();
-  for (const Section& s : sections) {
-    nlohmann::json rows = nlohmann::json::array();
-    for (const auto& row : s.table.rows) {
-      nlohmann::json r = nlohmann::json::array();
-      for (std::size_t c = 0; c < row.size(); ++c) r.push_back(cell_json(row[c], s.table.numeric[c]));
-      rows.push_back(r);
-    }
-    j["sections"].push_back({{"title", s.title}, {"columns", s.table.headers}, {"rows", rows}});
-  }
+  j["options"] = {{"rule", to_string(study.options.rule)},
+                  {"allowed_alpha", study.options.allowed_alpha},
+                  {"reciprocating_fraction", study.options.reciprocating_fraction},
+                  {"overbalance_driving_axles", study.options.overbalance_driving_axles}};
+  j["conventions"] = {
+      {"crank_angle", "phi: the right (reference) crank's angle from its rear dead centre, in the direction of "
+                      "rotation running forward (Zhdanov; docs/driving_gear.md)"},
+      {"harmonics", "q(phi) = sum over k of amplitude_k cos(k phi - phase_k), k = 0 the mean"},
+      {"signs", "X + forward, Y and Z + up, dP + pressing the rail, surging + forward, nosing + turning the engine "
+                "to the right"},
+      {"masses", "counterweights in kg on the crank radius, angles in degrees ahead of the wheel's crank"}};
+  j["cylinders"] = cylinders;
+  j["wheels"] = wheels;
+  j["notes"] = alpha_notes(study);
+  j["gear"] = gear_json(study.gear, cylinders, wheels);
+  j["by_rule"] = Json::array();
+  for (const BalanceResult& b : study.by_rule) j["by_rule"].push_back(rule_json(study, b, cylinders, wheels));
   out << j.dump(2) << "\n";
+}
+
+// One long ("tidy") table that any CSV reader loads: a row per number, with the section it
+// belongs to, the rule ("" for the gear as given), the cylinder, wheel or "engine", the quantity
+// and its unit, and the crank angle, harmonic order or balanced fraction it is taken at.
+class CsvRows {
+ public:
+  explicit CsvRows(std::ostream& out) : out_(out) {
+    out_ << "section,rule,item,quantity,unit,crank_angle_deg,order,balanced_fraction,value\n";
+  }
+  struct At {
+    std::string angle, order, fraction;
+  };
+  void row(const std::string& section, const std::string& rule, const std::string& item, const std::string& quantity,
+           const std::string& unit, const At& at, double value) {
+    out_ << section << ',' << rule << ',' << report::csv_field(item) << ',' << report::csv_field(quantity) << ','
+         << report::csv_field(unit) << ',' << at.angle << ',' << at.order << ',' << at.fraction << ','
+         << shortest_text(value) << '\n';
+  }
+
+ private:
+  std::ostream& out_;
+};
+
+void csv_states(CsvRows& csv, const std::string& rule, const GearResult& r, const std::vector<std::string>& cylinders,
+                const std::vector<std::string>& wheels, bool rods) {
+  for (const auto& [degree, st] : tabled_states(r)) {
+    const CsvRows::At at{std::to_string(degree), "", ""};
+    if (rods)
+      for (std::size_t c = 0; c < st->cylinders.size(); ++c) {
+        csv.row("state", rule, cylinders[c], "X", "N", at, st->cylinders[c].horizontal);
+        csv.row("state", rule, cylinders[c], "Y", "N", at, st->cylinders[c].vertical);
+        csv.row("state", rule, cylinders[c], "Z", "N", at, st->cylinders[c].guide);
+      }
+    for (std::size_t w = 0; w < st->wheel_loads.size(); ++w) csv.row("state", rule, wheels[w], "dP", "N", at, st->wheel_loads[w]);
+    csv.row("state", rule, "engine", "surging", "N", at, st->surging);
+    csv.row("state", rule, "engine", "nosing", "N m", at, st->nosing);
+  }
+}
+
+void csv_harmonics(CsvRows& csv, const std::string& rule, const std::string& item, const std::string& quantity,
+                   const std::string& unit, const std::vector<GearHarmonic>& hs) {
+  for (const GearHarmonic& h : hs) {
+    const CsvRows::At at{"", std::to_string(h.order), ""};
+    csv.row("harmonic", rule, item, quantity + " amplitude", unit, at, h.order == 0 ? std::abs(h.cosine) : h.amplitude());
+    csv.row("harmonic", rule, item, quantity + " phase", "deg", at, phase_of(h) / kDegree);
+  }
+}
+
+void write_csv(std::ostream& out, const BalanceStudy& study, const std::vector<std::string>& cylinders,
+               const std::vector<std::string>& wheels) {
+  CsvRows csv(out);
+  const GearResult& g = study.gear;
+  csv_states(csv, "", g, cylinders, wheels, true);
+  for (std::size_t c = 0; c < cylinders.size(); ++c) {
+    csv_harmonics(csv, "", cylinders[c], "X", "N", g.horizontal_harmonics[c]);
+    csv_harmonics(csv, "", cylinders[c], "Y", "N", g.vertical_harmonics[c]);
+    csv_harmonics(csv, "", cylinders[c], "Z", "N", g.guide_harmonics[c]);
+  }
+  for (std::size_t w = 0; w < wheels.size(); ++w) csv_harmonics(csv, "", wheels[w], "dP", "N", g.wheels[w].harmonics);
+  csv_harmonics(csv, "", "engine", "surging", "N", g.surging_harmonics);
+  csv_harmonics(csv, "", "engine", "nosing", "N m", g.nosing_harmonics);
+  const CsvRows::At none{"", "", ""};
+  for (const BalanceResult& b : study.by_rule) {
+    const std::string rule = to_string(b.rule);
+    for (std::size_t w = 0; w < b.wheels.size(); ++w) {
+      const WheelBalance& x = b.wheels[w];
+      const auto put = [&](const char* q, const char* unit, double v) { csv.row("counterweight", rule, wheels[w], q, unit, none, v); };
+      put("rotating mass", "kg", x.rotating_mass);
+      put("rotating angle", "deg", x.rotating_angle / kDegree);
+      put("vertical mass", "kg", x.vertical_mass);
+      put("vertical angle", "deg", x.vertical_angle / kDegree);
+      put("overbalance mass", "kg", x.overbalance_mass);
+      put("overbalance angle", "deg", x.overbalance_angle / kDegree);
+      put("total mass", "kg", x.total_mass);
+      put("total angle", "deg", x.total_angle / kDegree);
+      put("max dP", "N", x.max_hammer_blow);
+      put("least load", "N", b.after.wheels[w].static_load + b.after.wheels[w].min_dynamic_load);
+      put("alpha", "1", x.alpha);
+      put("alpha (89a)", "1", x.alpha_89a);
+      put("wheel lift", "bool", x.alpha >= 1.0 ? 1.0 : 0.0);
+    }
+    const auto put = [&](const std::string& q, const char* unit, double v) { csv.row("after", rule, "engine", q, unit, none, v); };
+    put("max surging", "N", b.after.max_surging);
+    put("unbalanced surging", "%", b.percent_unbalanced_surging);
+    put("max nosing", "N m", b.after.max_nosing);
+    put("unbalanced nosing", "%", b.percent_unbalanced_nosing);
+    const double alpha = largest_alpha(b);
+    put("max alpha", "1", alpha);
+    for (double limit : kAlphaLimits)  // inf: never reached ("inf" reads back as a number)
+      put("speed at alpha " + shortest_text(limit), "km/h", speed_at_alpha(alpha, b.speed, limit) * 3.6);
+    if (b.rule == study.options.rule) csv_states(csv, rule, b.after, cylinders, wheels, false);
+    for (std::size_t w = 0; w < wheels.size(); ++w) csv_harmonics(csv, rule, wheels[w], "dP", "N", b.after.wheels[w].harmonics);
+    for (const BalanceTradeOff& t : b.trade_off) {
+      const CsvRows::At at{"", "", shortest_text(t.fraction)};
+      csv.row("trade_off", rule, "engine", "max alpha", "1", at, t.max_alpha);
+      csv.row("trade_off", rule, "engine", "max surging", "N", at, t.max_surging);
+      csv.row("trade_off", rule, "engine", "max nosing", "N m", at, t.max_nosing);
+    }
+  }
+}
+
+// Why a wheel's α after balancing can exceed the allowed α that --alpha gives: the allowed α
+// sizes the overbalance of the coupled wheels; a driving wheel keeps the residual its vertical
+// counterweight leaves, which each rule sizes differently.
+std::vector<std::string> alpha_notes(const BalanceStudy& study) {
+  std::vector<std::string> notes;
+  const double allowed = study.options.allowed_alpha;
+  if (!(allowed > 0)) return notes;
+  for (const BalanceResult& b : study.by_rule) {
+    std::size_t worst = 0;
+    for (std::size_t w = 0; w < b.wheels.size(); ++w)
+      if (b.wheels[w].alpha > b.wheels[worst].alpha) worst = w;
+    if (b.wheels.empty() || !(b.wheels[worst].alpha > allowed * (1 + 1e-9))) continue;
+    const WheelBalance& w = b.wheels[worst];
+    notes.push_back(
+        "The " + std::string(to_string(b.rule)) + " rule leaves alpha = " + report::fixed(w.alpha, 3) + " at wheel " +
+        study.axle_names[static_cast<std::size_t>(w.axle)] + (w.right ? " R" : " L") + ", above the allowed " +
+        report::fixed(allowed, 3) + ": --alpha sizes the overbalance of the coupled wheels so that their alpha is " +
+        report::fixed(allowed, 3) + "; a driving wheel" +
+        (study.options.overbalance_driving_axles ? "" : ", not overbalanced,") +
+        " keeps what its vertical counterweight leaves of the rods' Y: the second harmonic, which no "
+        "counterweight cancels, plus what the rule leaves of the first (the book's rule sizes the counterweight "
+        "from |Y| at 90 degrees of the wheel's crank, not from the first harmonic). Right and left differ because the "
+        "left crank lags by 90 degrees: the left wheel's first harmonic is turned by -90 degrees and its second by "
+        "-180, so what is left of the first adds to the second at another phase and peaks higher on one side.");
+  }
+  return notes;
 }
 
 std::string heading(const BalanceStudy& study) {
@@ -256,17 +496,38 @@ void write_html(std::ostream& out, const BalanceStudy& study, const std::vector<
   report::write_html_head(out, heading(study));
   out << "<h1>" << report::html_escape(heading(study)) << "</h1>\n<p>" << report::html_escape(overbalance_line(study))
       << "</p>\n";
+  for (const std::string& note : alpha_notes(study)) out << "<p>" << report::html_escape(note) << "</p>\n";
   const BalanceResult& b = chosen(study);
   report::Chart loads = angle_chart("wheel-loads", "Dynamic wheel loads after balancing (" + rule_of(b) + " rule)",
                                     "dP (kN)");
+  // A colour per axle, its left wheel dashed. Wheels whose curves coincide (balanced coupled
+  // wheels often do: coupled 1 and coupled 3 of the Су with --alpha) are one series whose label
+  // names them all, since one line drawn over another would hide it.
+  double largest = 0.0;
+  for (const GearState& st : b.after.states)
+    for (double p : st.wheel_loads) largest = std::max(largest, std::abs(p));
+  std::vector<std::size_t> drawn;  // the wheel each series is drawn for
   for (std::size_t w = 0; w < wheels.size(); ++w) {
+    const auto same = [&](std::size_t v) {
+      for (const GearState& st : b.after.states)
+        if (std::abs(st.wheel_loads[w] - st.wheel_loads[v]) > 1e-6 * largest) return false;  // far below a pixel, far above round-off
+      return true;
+    };
+    const auto twin = std::find_if(drawn.begin(), drawn.end(), same);
+    if (twin != drawn.end()) {
+      loads.series[static_cast<std::size_t>(twin - drawn.begin())].label += " = " + wheels[w];
+      continue;
+    }
     report::ChartSeries s;
     s.label = wheels[w];
+    s.colour = static_cast<int>(w / 2);
+    s.dashed = w % 2 == 1;
     for (const GearState& st : b.after.states) {
       s.x.push_back(st.crank_angle / kDegree);
       s.y.push_back(st.wheel_loads[w] / 1000.0);
     }
     loads.series.push_back(s);
+    drawn.push_back(w);
   }
   // One chart each: an axis carries one unit.
   report::Chart surging = angle_chart("surging", "Surging after balancing", "sum X (kN)");
@@ -288,17 +549,19 @@ void write_html(std::ostream& out, const BalanceStudy& study, const std::vector<
     trade.id = "trade-off";
     trade.title = "Largest alpha against the reciprocating mass balanced (" + rule_of(b) + " rule)";
     trade.x_label = "reciprocating mass balanced (%)";
-    trade.y_label = "largest alpha (% of the static wheel load)";
+    // α itself on the axis (max|dP| over the static wheel load), so that the limit lines' labels
+    // read in the axis' unit.
+    trade.y_label = "largest alpha (max|dP| / static load)";
     report::ChartSeries alpha;
     alpha.label = "largest alpha of any wheel";
     for (const BalanceTradeOff& t : b.trade_off) {
       alpha.x.push_back(100 * t.fraction);
-      alpha.y.push_back(100 * t.max_alpha);
+      alpha.y.push_back(t.max_alpha);
     }
     trade.series = {alpha};
     for (double limit : {0.3, 1.0})
       trade.lines.push_back(
-          {report::fixed(limit, 1), 100 * limit, false, limit < 1 ? "the passenger-engine limit" : "wheel lift"});
+          {report::fixed(limit, 1), limit, false, limit < 1 ? "the passenger-engine limit" : "wheel lift"});
     out << report::svg_chart(trade) << "\n";
   }
   for (const Section& s : sections) {
@@ -321,16 +584,18 @@ void write_balance(std::ostream& out, const BalanceStudy& study, OutputFormat fo
   switch (format) {
     case OutputFormat::table:
       out << heading(study) << "\n" << overbalance_line(study) << "\n";
+      for (const std::string& note : alpha_notes(study)) out << note << "\n";
       write_text(out, sections);
       return;
     case OutputFormat::csv:
-      write_csv(out, sections);
+      write_csv(out, study, cylinders, wheels);
       return;
     case OutputFormat::json:
-      write_json(out, study, sections);
+      write_json(out, study, cylinders, wheels);
       return;
     case OutputFormat::markdown:
       out << "# " << heading(study) << "\n\n" << overbalance_line(study) << "\n";
+      for (const std::string& note : alpha_notes(study)) out << "\n" << note << "\n";
       for (const Section& s : sections) {
         out << "\n## " << s.title << "\n\n";
         report::write_markdown_table(out, s.table);

@@ -1,0 +1,95 @@
+// The balance report's machine-readable outputs (issue 22 review): numbers at full precision,
+// keys and columns with units, harmonics with amplitude and phase; and the note on α.
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "test_support.hpp"
+
+namespace railmodal {
+namespace {
+
+BalanceStudy su_study(double allowed_alpha) {
+  const DrivingGear gear = load_driving_gear(std::string(RAILMODAL_DATA_DIR) + "/locomotives/su.toml");
+  BalanceOptions options;
+  options.allowed_alpha = allowed_alpha;
+  return study_balance(gear, gear.design_speed, options);
+}
+
+std::string written(const BalanceStudy& study, OutputFormat format) {
+  std::ostringstream out;
+  write_balance(out, study, format);
+  return out.str();
+}
+
+TEST(BalanceReport, JsonCarriesEveryNumberExactlyWithUnitsAndPhases) {
+  const BalanceStudy study = su_study(0.3);
+  const auto j = nlohmann::json::parse(written(study, OutputFormat::json));
+  EXPECT_EQ(j.at("speed_m_per_s").get<double>(), study.gear.speed);
+  // The state at 90° (the 7th of the 15° grid): exactly the solver's doubles, not rounded.
+  const auto& state = j.at("gear").at("states_every_15_deg").at(6);
+  EXPECT_EQ(state.at("crank_angle_deg").get<double>(), 90.0);
+  EXPECT_EQ(state.at("cylinders").at(0).at("Y_N").get<double>(), study.gear.states[90].cylinders[0].vertical);
+  EXPECT_EQ(state.at("nosing_N_m").get<double>(), study.gear.states[90].nosing);
+  // Harmonics with amplitude and phase: Σ A_k cos(kφ − ψ_k) at 90° gives Y back. Orders 0 … 6
+  // leave the λ⁷ tail (λ = 0.149: 2e-6 of the amplitude) and round-off.
+  double y = 0.0;
+  for (const auto& h : j.at("gear").at("harmonics").at("cylinders").at(0).at("Y_N")) {
+    const double k = h.at("order").get<double>();
+    const double a = h.at("amplitude").get<double>(), psi = h.at("phase_deg").get<double>() * M_PI / 180;
+    y += a * std::cos(k * M_PI / 2 - psi);
+  }
+  EXPECT_NEAR(y, study.gear.states[90].cylinders[0].vertical, 1e-5 * std::abs(study.gear.states[90].cylinders[0].vertical));
+  // Counterweights per rule, keyed with units.
+  const auto& book = j.at("by_rule").at(2);
+  EXPECT_EQ(book.at("rule").get<std::string>(), "book");
+  EXPECT_EQ(book.at("wheels").at(0).at("total_mass_kg").get<double>(), study.by_rule[2].wheels[0].total_mass);
+  EXPECT_TRUE(book.contains("trade_off"));
+}
+
+TEST(BalanceReport, CsvIsOneTableOfNumbersAtFullPrecision) {
+  const BalanceStudy study = su_study(0.3);
+  std::istringstream in(written(study, OutputFormat::csv));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "section,rule,item,quantity,unit,crank_angle_deg,order,balanced_fraction,value");
+  int rows = 0, phases = 0;
+  bool found_y90 = false;
+  while (std::getline(in, line)) {
+    ++rows;
+    // No field here holds a comma (names are plain), so splitting on commas is exact.
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) f.push_back(cell);
+    if (line.back() == ',') f.push_back("");
+    ASSERT_EQ(f.size(), 9u) << line;
+    const double value = std::stod(f[8]);  // every value is a number (inf for a speed never reached)
+    if (f[3].find("phase") != std::string::npos) ++phases;
+    if (f[0] == "state" && f[1].empty() && f[2] == "right" && f[3] == "Y" && f[5] == "90") {
+      EXPECT_EQ(value, study.gear.states[90].cylinders[0].vertical);
+      found_y90 = true;
+    }
+  }
+  EXPECT_TRUE(found_y90);
+  EXPECT_GT(phases, 50);
+  EXPECT_GT(rows, 500);
+}
+
+// --alpha 0.3 holds the coupled wheels at 0.3; the book's rule leaves a driving wheel above it,
+// and the report says why, in every format a person reads, and in the JSON's notes.
+TEST(BalanceReport, ExplainsAnAlphaAboveTheAllowedOne) {
+  const BalanceStudy study = su_study(0.3);
+  double book_alpha = 0.0;
+  for (const WheelBalance& w : study.by_rule[2].wheels) book_alpha = std::max(book_alpha, w.alpha);
+  ASSERT_GT(book_alpha, 0.3);
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html})
+    EXPECT_NE(written(study, f).find("above the allowed 0.300: --alpha sizes the overbalance"), std::string::npos)
+        << to_string(f);
+  const auto j = nlohmann::json::parse(written(study, OutputFormat::json));
+  EXPECT_FALSE(j.at("notes").empty());
+  // Without --alpha there is nothing to explain.
+  EXPECT_TRUE(nlohmann::json::parse(written(su_study(0.0), OutputFormat::json)).at("notes").empty());
+}
+
+}  // namespace
+}  // namespace railmodal
