@@ -105,9 +105,13 @@ std::string convergence_text(const Page& p) {
   std::string text = std::string(to_string(r.convergence)) + ": ";
   switch (r.convergence) {
     case NonlinearConvergence::converged:
+      if (p.o.hold_periods == 0)
+        return text + "halving the ramp rate moved the critical speed by less than " + fixed(p.o.tolerance, 3) +
+               " m/s (no holds asked for: the ramp's answer is the result).";
       return text + "the held critical speed is bracketed to within " + fixed(p.o.tolerance, 3) +
-             " m/s and a hold twice as long keeps its cycle" +
-             (p.o.hold_periods == 0 ? " (no holds asked for: halving the ramp rate moved it less than that)" : "") +
+             " m/s and a hold twice as long keeps its cycle; halving the ramp rate moved the ramp's answer by " +
+             fixed(r.convergence_difference, 3) + " m/s" +
+             (r.convergence_difference <= p.o.tolerance ? "" : ", more than that: the ramp lags, the holds do not") +
              ".";
     case NonlinearConvergence::not_converged:
       return text + "the two ramp rates disagree, or the holds did not bracket or confirm the answer: read the "
@@ -161,7 +165,7 @@ Table convergence_table(const Page& p) {
   const bool both = std::isfinite(r.convergence_difference);
   t.rows.push_back({"critical speed moved by halving the ramp rate (km/h)",
                     both ? fixed(r.convergence_difference * kKmh, 3) : "none (a rate has no critical speed)",
-                    p.o.hold_periods == 0 ? fixed(p.o.tolerance * kKmh, 3) : "reported"});
+                    fixed(p.o.tolerance * kKmh, 3)});
   t.rows.push_back({"ramps extrapolated to a zero rate, Richardson (km/h)",
                     r.richardson_critical_speed ? fixed(*r.richardson_critical_speed * kKmh, 2) : "none", "reported"});
   const HeldCriticalSpeed& h = r.hold;
