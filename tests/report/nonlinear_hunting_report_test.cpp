@@ -14,7 +14,7 @@ namespace railmodal {
 namespace {
 
 // A ramp that lost its cycle at 65 m/s with 7.9 mm, after three half cycles above it.
-RampDown lost_ramp(double rate, double speed) {
+RampDown hand_built_lost_ramp(double rate, double speed) {
   RampDown d;
   d.ramp_rate = rate;
   d.verdict = NonlinearHuntingVerdict::limit_cycle_dies_out;
@@ -25,10 +25,10 @@ RampDown lost_ramp(double rate, double speed) {
   return d;
 }
 
-NonlinearHuntingResult converged_result() {
+NonlinearHuntingResult hand_built_converged_result() {
   NonlinearHuntingResult r;
-  r.stated_rate = lost_ramp(0.5, 66.021);
-  r.halved_rate = lost_ramp(0.25, 66.032);
+  r.stated_rate = hand_built_lost_ramp(0.5, 66.021);
+  r.halved_rate = hand_built_lost_ramp(0.25, 66.032);
   r.verdict = r.stated_rate.verdict;
   r.critical_speed = 66.052;
   r.amplitude = r.stated_rate.amplitude;
@@ -46,57 +46,57 @@ NonlinearHuntingResult converged_result() {
   return r;
 }
 
-NonlinearHuntingOptions both_effects() {
+NonlinearHuntingOptions hand_built_both_effects() {
   NonlinearHuntingOptions o;
   o.start_speed = 75.0;
   o.end_speed = 50.0;
   return o;
 }
 
-std::string written(const NonlinearHuntingResult& r, const NonlinearHuntingOptions& o, OutputFormat f,
+std::string nonlinear_report_text(const NonlinearHuntingResult& r, const NonlinearHuntingOptions& o, OutputFormat f,
                     std::optional<double> linear = 66.318144) {
   std::ostringstream out;
   write_nonlinear_hunting(out, r, o, f, "hand-built wheelset", Provenance{}, linear);
   return out.str();
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool nonlinear_report_has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 TEST(NonlinearHuntingReport, TableGivesTheSpeedsTheAmplitudeAndTheEffects) {
-  const std::string t = written(converged_result(), both_effects(), OutputFormat::table);
-  EXPECT_TRUE(contains(t, "railmodal hunting: hand-built wheelset")) << t;
-  EXPECT_TRUE(contains(t, "237.79 km/h (66.052 m/s)")) << t;  // the held critical speed
-  EXPECT_TRUE(contains(t, "7.90 mm")) << t;
-  EXPECT_TRUE(contains(t, "238.75 km/h (66.318 m/s)")) << t;  // the linear one beside it
-  EXPECT_TRUE(contains(t, "creep_saturation (Shen–Hedrick–Elkins, μ = 0.4")) << t;
-  EXPECT_TRUE(contains(t, "flange_contact (clearance 8.00 mm, stiffness 10 MN/m)")) << t;
-  EXPECT_TRUE(contains(t, "converged")) << t;
-  EXPECT_TRUE(contains(t, "continuation")) << t;  // what the ramp-down cannot show
+  const std::string t = nonlinear_report_text(hand_built_converged_result(), hand_built_both_effects(), OutputFormat::table);
+  EXPECT_TRUE(nonlinear_report_has(t, "railmodal hunting: hand-built wheelset")) << t;
+  EXPECT_TRUE(nonlinear_report_has(t, "237.79 km/h (66.052 m/s)")) << t;  // the held critical speed
+  EXPECT_TRUE(nonlinear_report_has(t, "7.90 mm")) << t;
+  EXPECT_TRUE(nonlinear_report_has(t, "238.75 km/h (66.318 m/s)")) << t;  // the linear one beside it
+  EXPECT_TRUE(nonlinear_report_has(t, "creep_saturation (Shen–Hedrick–Elkins, μ = 0.4")) << t;
+  EXPECT_TRUE(nonlinear_report_has(t, "flange_contact (clearance 8.00 mm, stiffness 10 MN/m)")) << t;
+  EXPECT_TRUE(nonlinear_report_has(t, "converged")) << t;
+  EXPECT_TRUE(nonlinear_report_has(t, "continuation")) << t;  // what the ramp-down cannot show
   // The convergence check: halving the rate moved it by 0.011 m/s = 0.040 km/h.
-  EXPECT_TRUE(contains(t, "0.040")) << t;
+  EXPECT_TRUE(nonlinear_report_has(t, "0.040")) << t;
 }
 
 TEST(NonlinearHuntingReport, WithoutEffectsTheLawIsSaidToBeLinear) {
-  NonlinearHuntingOptions o = both_effects();
+  NonlinearHuntingOptions o = hand_built_both_effects();
   o.effects.clear();
-  const std::string t = written(converged_result(), o, OutputFormat::markdown);
-  EXPECT_TRUE(contains(t, "none: Kalker's linear creep law and no flange")) << t;
-  EXPECT_FALSE(contains(t, "Shen")) << t;
+  const std::string t = nonlinear_report_text(hand_built_converged_result(), o, OutputFormat::markdown);
+  EXPECT_TRUE(nonlinear_report_has(t, "none: Kalker's linear creep law and no flange")) << t;
+  EXPECT_FALSE(nonlinear_report_has(t, "Shen")) << t;
 }
 
 TEST(NonlinearHuntingReport, CsvHoldsEveryHalfCycleOfBothRamps) {
-  const std::string csv = written(converged_result(), both_effects(), OutputFormat::csv);
+  const std::string csv = nonlinear_report_text(hand_built_converged_result(), hand_built_both_effects(), OutputFormat::csv);
   EXPECT_EQ(csv.rfind("ramp,ramp_rate [m/s^2],half_cycle,speed [km/h],amplitude [mm]\n", 0), 0u) << csv;
-  EXPECT_TRUE(contains(csv, "stated,0.5,1,270,10.5\n")) << csv;
-  EXPECT_TRUE(contains(csv, "halved,0.25,5,223.2,0.1\n")) << csv;
+  EXPECT_TRUE(nonlinear_report_has(csv, "stated,0.5,1,270,10.5\n")) << csv;
+  EXPECT_TRUE(nonlinear_report_has(csv, "halved,0.25,5,223.2,0.1\n")) << csv;
   size_t rows = 0;
   for (char c : csv) rows += c == '\n';
   EXPECT_EQ(rows, 1u + 5u + 5u);
 }
 
 TEST(NonlinearHuntingReport, JsonHasNullNeverInfOrNaN) {
-  NonlinearHuntingResult r = converged_result();
-  const nlohmann::json j = nlohmann::json::parse(written(r, both_effects(), OutputFormat::json));
+  NonlinearHuntingResult r = hand_built_converged_result();
+  const nlohmann::json j = nlohmann::json::parse(nonlinear_report_text(r, hand_built_both_effects(), OutputFormat::json));
   EXPECT_DOUBLE_EQ(j["critical_speed_m_s"].get<double>(), 66.052);
   EXPECT_DOUBLE_EQ(j["linear_critical_speed_m_s"].get<double>(), 66.318144);
   EXPECT_EQ(j["ramps"][0]["curve"]["speed_m_s"].size(), 5u);
@@ -109,26 +109,26 @@ TEST(NonlinearHuntingReport, JsonHasNullNeverInfOrNaN) {
   s.verdict = s.stated_rate.verdict = s.halved_rate.verdict = NonlinearHuntingVerdict::survives_to_end_speed;
   s.convergence_difference = std::numeric_limits<double>::infinity();
   s.convergence = NonlinearConvergence::not_applicable;
-  const std::string text = written(s, both_effects(), OutputFormat::json, std::nullopt);
-  EXPECT_FALSE(contains(text, "inf")) << text;
-  EXPECT_FALSE(contains(text, "NaN")) << text;
+  const std::string text = nonlinear_report_text(s, hand_built_both_effects(), OutputFormat::json, std::nullopt);
+  EXPECT_FALSE(nonlinear_report_has(text, "inf")) << text;
+  EXPECT_FALSE(nonlinear_report_has(text, "NaN")) << text;
   const nlohmann::json k = nlohmann::json::parse(text);
   EXPECT_TRUE(k["critical_speed_m_s"].is_null());
   EXPECT_TRUE(k["convergence_difference_m_s"].is_null());
   EXPECT_TRUE(k["linear_critical_speed_m_s"].is_null());
   EXPECT_TRUE(k["amplitude_m"].is_null());
-  const std::string table = written(s, both_effects(), OutputFormat::table, std::nullopt);
-  EXPECT_TRUE(contains(table, "survives_to_end_speed: the limit cycle still lives at the end speed")) << table;
+  const std::string table = nonlinear_report_text(s, hand_built_both_effects(), OutputFormat::table, std::nullopt);
+  EXPECT_TRUE(nonlinear_report_has(table, "survives_to_end_speed: the limit cycle still lives at the end speed")) << table;
 }
 
 TEST(NonlinearHuntingReport, HtmlHasTheBifurcationPlot) {
-  const std::string html = written(converged_result(), both_effects(), OutputFormat::html);
-  EXPECT_TRUE(contains(html, "<h2>Bifurcation plot</h2>")) << html;
-  EXPECT_TRUE(contains(html, "<svg")) << html;
-  EXPECT_TRUE(contains(html, "Limit-cycle amplitude against speed")) << html;
-  EXPECT_TRUE(contains(html, "critical speed (Hopf point)")) << html;
-  EXPECT_TRUE(contains(html, "clearance")) << html;
-  EXPECT_TRUE(contains(html, "</html>")) << html;
+  const std::string html = nonlinear_report_text(hand_built_converged_result(), hand_built_both_effects(), OutputFormat::html);
+  EXPECT_TRUE(nonlinear_report_has(html, "<h2>Bifurcation plot</h2>")) << html;
+  EXPECT_TRUE(nonlinear_report_has(html, "<svg")) << html;
+  EXPECT_TRUE(nonlinear_report_has(html, "Limit-cycle amplitude against speed")) << html;
+  EXPECT_TRUE(nonlinear_report_has(html, "critical speed (Hopf point)")) << html;
+  EXPECT_TRUE(nonlinear_report_has(html, "clearance")) << html;
+  EXPECT_TRUE(nonlinear_report_has(html, "</html>")) << html;
 }
 
 }  // namespace
