@@ -30,6 +30,7 @@
 #include "railmodal/matrix_market.hpp"
 #include "railmodal/modal.hpp"
 #include "railmodal/nonlinear_hunting.hpp"
+#include "railmodal/nonlinear_hunting_report.hpp"
 #include "railmodal/output_format.hpp"
 #include "railmodal/provenance.hpp"
 #include "railmodal/report.hpp"

@@ -20,6 +20,7 @@
 #include "railmodal/errors.hpp"
 #include "railmodal/excitation.hpp"
 #include "railmodal/linear_system.hpp"
+#include "railmodal/nonlinear_hunting.hpp"
 #include "railmodal/response.hpp"
 #include "railmodal/ride.hpp"
 #include "railmodal/ride_simulation.hpp"
@@ -83,6 +84,11 @@ struct Scene {
   /// not in `sources`; read by `railmodal ride` only.
   std::optional<TrackIrregularitySpectra> irregularity;
   std::optional<RideSpec> ride;  ///< the [ride] table
+  /// The [nonlinear_hunting] table: what `railmodal hunting` runs (the ramp-down of
+  /// solve_nonlinear_hunting). Its effects are the sub-tables the file names
+  /// ([nonlinear_hunting.creep_saturation], [nonlinear_hunting.flange_contact]); only those are
+  /// simulated (docs/stability.md, "The nonlinear critical speed").
+  std::optional<NonlinearHuntingOptions> nonlinear_hunting;
   /// Where the file writes the names that only the assembled vehicle can check, by key path:
   /// "output[0].dof", "simulation.outputs[1]", "simulation.initial[0].dof", and the keys of
   /// sources ExcitationSource::misfit names ("source[2].body", "source[2].phases"; a key left

@@ -6,6 +6,7 @@
 
 #include "input/document_readers.hpp"
 #include "input/irregularity_reader.hpp"
+#include "input/nonlinear_hunting_reader.hpp"
 #include "input/ride_reader.hpp"
 #include "input/table_reader.hpp"
 #include "input/value_place.hpp"
@@ -377,11 +378,14 @@ Scene read_scene(const toml::value& document, const std::string& path) {
   scene.source = path;
   read_scene_table(root, path, scene);
   const bool ride = is_ride_scene(root);
+  // A scene for `railmodal hunting` needs neither a [speed] range nor sources: its speeds are
+  // the ramp's, and the hunting is self-excited.
+  const bool hunting = root.has("nonlinear_hunting");
   if (root.has("simulation"))
     scene.simulation = read_simulation(root.table("simulation"), root.has("source"), &scene.name_places);
-  if (root.has("speed") || (!scene.simulation && !ride)) read_speed_range(root.table("speed"), scene);
+  if (root.has("speed") || (!scene.simulation && !ride && !hunting)) read_speed_range(root.table("speed"), scene);
   std::string geometry;
-  if (root.has("source") || !scene.simulation) read_sources(root, scene, &geometry);
+  if (root.has("source") || (!scene.simulation && !hunting)) read_sources(root, scene, &geometry);
   if (root.has("output"))
     for (auto& t : root.tables("output")) {
       scene.name_places["output[" + std::to_string(scene.outputs.size()) + "].dof"] = t.place("dof");
@@ -389,6 +393,7 @@ Scene read_scene(const toml::value& document, const std::string& path) {
     }
   if (root.has("friction")) read_friction(root.table("friction"), scene);
   if (root.has("ride")) scene.ride = read_ride(root.table("ride"), &scene.name_places);
+  if (hunting) scene.nonlinear_hunting = read_nonlinear_hunting(root.table("nonlinear_hunting"));
   if (!geometry.empty()) {
     if (!scene.ride || !scene.ride->simulation) {
       const KeyPlace at = scene.name_places["irregularity.geometry"];

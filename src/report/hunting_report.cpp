@@ -176,7 +176,7 @@ const char* const kLinearNote =
     "Linear analysis: eigenvalues of the vehicle linearised about running straight and centred on its track, "
     "with linear (unsaturated) creep forces and no flange contact. Its critical speed is where small motions "
     "start to grow; the nonlinear critical speed, the lowest speed at which a limit cycle survives, may be lower: "
-    "the library computes it (solve_nonlinear_hunting, docs/stability.md) but no command runs it yet.";
+    "'railmodal hunting SCENE' computes it from a scene naming the effects (docs/stability.md).";
 
 const char* const kBranchNote =
     "ζ = −Re λ/|λ|, f = Im λ/2π. Branches are followed from speed to speed by eigenvector continuity (MAC); "

@@ -29,6 +29,12 @@ golden_cases() {
       for f in csv json; do echo "simulate/$name.$f simulate $s --format $f"; done
       echo "simulate/$name.spectra.csv simulate $s --spectra @OUT@ -o -"
       for f in table csv json html; do echo "fft-check/$name.$f fft-check $s --format $f"; done
+    elif grep -q '^\[nonlinear_hunting[].]' "$s"; then
+      # The nonlinear critical speed (issue 20 item 5), in every format.
+      for f in table csv json markdown html; do
+        local ext=$f; [ "$f" = markdown ] && ext=md
+        echo "hunting/$name.$ext hunting $s --format $f"
+      done
     elif grep -q '^\[ride[].]' "$s"; then
       # Ride on random track (issue 21), in every format.
       for f in table csv json markdown html; do

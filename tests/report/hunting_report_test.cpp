@@ -278,14 +278,14 @@ TEST(HuntingReport, ALowSpeedIsNotPrintedAsZero) {
 }
 
 // The reports say what the CSV and JSON hold (each branch's root with Im λ > 0; the real roots
-// are left out: "every eigenvalue" was not true), and that the nonlinear critical speed has a
-// library function but no command.
+// are left out: "every eigenvalue" was not true), and which command gives the nonlinear critical
+// speed (railmodal hunting, since issue 20 item 5).
 TEST(HuntingReport, NotesSayWhatTheFilesHoldAndWhatIsNotACommand) {
   const std::string markdown = written(test::stable_result(), OutputFormat::markdown);
   EXPECT_FALSE(has(markdown, "every eigenvalue")) << markdown;
   EXPECT_TRUE(has(markdown, "the real roots, which do not oscillate, are left out")) << markdown;
-  EXPECT_TRUE(has(markdown, "solve_nonlinear_hunting")) << markdown;
-  EXPECT_TRUE(has(markdown, "no command runs it yet")) << markdown;
+  EXPECT_TRUE(has(markdown, "'railmodal hunting SCENE' computes it")) << markdown;
+  EXPECT_FALSE(has(markdown, "no command runs it yet")) << markdown;
 }
 
 // A strongly damped 40 Hz branch sets the full locus' scale (Re λ near −80 1/s) and the hunting

@@ -59,21 +59,23 @@ Element element(const std::string& name, const std::string& lower, const std::st
 }
 
 // Dimensions and masses after the Manchester benchmark coach (Iwnicki, The Manchester
-// Benchmarks for Rail Vehicle Simulation, 1999): bogie centres ±9.5 m, wheelbase 2.56 m.
+// Benchmarks for Rail Vehicle Simulation, 1999): bogie centres ±9.5 m, wheelbase 2.56 m. Heights
+// from the axle plane (a wheelset's centre must lie in it, wheelset_dofs.cpp): the rail-top
+// heights less the rolling radius, so that every lever is what it was.
 Vehicle bogie_vehicle() {
   Vehicle v;
   v.name = "bogie vehicle with four wheelsets";
-  v.bodies.push_back(body("body", 32000.0, {56800.0, 1.97e6, 1.97e6}, {0.0, 0.0, 1.8}));
+  v.bodies.push_back(body("body", 32000.0, {56800.0, 1.97e6, 1.97e6}, {0.0, 0.0, 1.8 - kRollingRadius}));
   int wheelset = 0;
   for (int g = 0; g < 2; ++g) {
     const double xg = g == 0 ? 9.5 : -9.5;
     const std::string bogie = "bogie" + std::to_string(g + 1);
-    v.bodies.push_back(body(bogie, 2615.0, {1722.0, 1476.0, 3067.0}, {xg, 0.0, 0.6}));
-    v.elements.push_back(element("secondary", bogie, "body", {xg, 1.0, 0.8}, 4.3e5, 1.6e5, 1.6e5, 3.3e4));
-    v.elements.push_back(element("secondary", bogie, "body", {xg, -1.0, 0.8}, 4.3e5, 1.6e5, 1.6e5, 0.0));
+    v.bodies.push_back(body(bogie, 2615.0, {1722.0, 1476.0, 3067.0}, {xg, 0.0, 0.6 - kRollingRadius}));
+    v.elements.push_back(element("secondary", bogie, "body", {xg, 1.0, 0.8 - kRollingRadius}, 4.3e5, 1.6e5, 1.6e5, 3.3e4));
+    v.elements.push_back(element("secondary", bogie, "body", {xg, -1.0, 0.8 - kRollingRadius}, 4.3e5, 1.6e5, 1.6e5, 0.0));
     for (double dx : {1.28, -1.28}) {
       const std::string name = "wheelset" + std::to_string(++wheelset);
-      Body w = body(name, kWheelsetMass, {1120.0, 112.0, 1120.0}, {xg + dx, 0.0, kRollingRadius});
+      Body w = body(name, kWheelsetMass, {1120.0, 112.0, 1120.0}, {xg + dx, 0.0, 0.0});
       w.held = {Motion::bounce, Motion::roll, Motion::pitch};
       v.bodies.push_back(w);
       Wheelset ws;
@@ -85,7 +87,7 @@ Vehicle bogie_vehicle() {
       ws.contact.creep = CreepCoefficients{kCreep, kCreep, 0.0, 0.0};
       v.wheelsets.push_back(ws);
       for (double y : {1.0, -1.0})
-        v.elements.push_back(element("primary", name, bogie, {xg + dx, y, kRollingRadius}, 1.22e6, 4.0e6, 4.0e6, 0.0));
+        v.elements.push_back(element("primary", name, bogie, {xg + dx, y, 0.0}, 1.22e6, 4.0e6, 4.0e6, 0.0));
     }
   }
   return v;

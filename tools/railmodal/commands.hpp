@@ -21,6 +21,8 @@ std::function<int()> add_fft_check_command(CLI::App& app);
 std::function<int()> add_compare_command(CLI::App& app);
 /// Registers `stability`.
 std::function<int()> add_stability_command(CLI::App& app);
+/// Registers `hunting` (the nonlinear critical speed of a scene).
+std::function<int()> add_hunting_command(CLI::App& app);
 /// Registers `ride`.
 std::function<int()> add_ride_command(CLI::App& app);
 

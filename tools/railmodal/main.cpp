@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
   // One convention for every subcommand (README.md, "Commands").
   app.footer(
       "Every command takes the file it analyses as its argument: modes VEHICLE, critical-speed SCENE, "
-      "simulate SCENE, fft-check SCENE, compare STUDY, stability VEHICLE, balance LOCOMOTIVE, ride SCENE. A scene names its vehicle; --vehicle VEHICLE "
+      "simulate SCENE, fft-check SCENE, compare STUDY, stability VEHICLE, hunting SCENE, balance LOCOMOTIVE, ride SCENE. A scene names its vehicle; --vehicle VEHICLE "
       "replaces it.");
   auto run_modes = add_modes_command(app);
   auto run_critical_speed = add_critical_speed_command(app);
@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
   auto run_fft_check = add_fft_check_command(app);
   auto run_compare = add_compare_command(app);
   auto run_stability = add_stability_command(app);
+  auto run_hunting = add_hunting_command(app);
   auto run_balance = add_balance_command(app);
   auto run_ride = add_ride_command(app);
   try {
@@ -77,6 +78,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("fft-check")) return run_fft_check();
     if (app.got_subcommand("compare")) return run_compare();
     if (app.got_subcommand("stability")) return run_stability();
+    if (app.got_subcommand("hunting")) return run_hunting();
     if (app.got_subcommand("balance")) return run_balance();
     if (app.got_subcommand("ride")) return run_ride();
   } catch (const OutputError& e) {

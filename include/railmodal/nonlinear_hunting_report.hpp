@@ -1,0 +1,40 @@
+// railmodal — the nonlinear-hunting report: the nonlinear critical speed (the lowest speed at
+// which a hunting limit cycle survives) and its amplitude, the ramps at the stated and the halved
+// rate with their convergence check, the confirmation by holding the speed, and the bifurcation
+// plot (limit-cycle amplitude against speed) with the linear critical speed marked.
+//
+//   #include <railmodal/railmodal.hpp>
+//   #include <iostream>
+//
+//   int main() {
+//     railmodal::Scene scene = railmodal::load_scene("data/scenes/wheelset_on_springs_nonlinear_hunting.toml");
+//     railmodal::Vehicle vehicle = railmodal::load_vehicle(scene.vehicle_file);
+//     railmodal::LinearSystem system = railmodal::assemble(vehicle, railmodal::DofSet::lateral);
+//     railmodal::NonlinearHuntingResult result = railmodal::solve_nonlinear_hunting(system, *scene.nonlinear_hunting);
+//     railmodal::write_nonlinear_hunting(std::cout, result, *scene.nonlinear_hunting, railmodal::OutputFormat::table,
+//                                        vehicle.name, railmodal::provenance_of({scene.source}));
+//   }
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+
+#include "railmodal/nonlinear_hunting.hpp"
+#include "railmodal/output_format.hpp"
+#include "railmodal/provenance.hpp"
+
+namespace railmodal {
+
+/// Writes `result` of solve_nonlinear_hunting run with `options` as a table (text), CSV (one row
+/// per half cycle of each ramp: the bifurcation data), JSON (SI, km/h beside; a quantity the
+/// result does not have is null), Markdown or HTML (with the bifurcation plot). `vehicle` names
+/// the vehicle ("" writes "vehicle"); `provenance` lists the input files for the footer of the
+/// Markdown and HTML pages; `linear_critical_speed` (m/s, from solve_hunting_stability), when
+/// given, is printed beside the nonlinear one and marked on the plot at zero amplitude (the Hopf
+/// point). Throws std::invalid_argument for a format it does not write.
+void write_nonlinear_hunting(std::ostream& out, const NonlinearHuntingResult& result,
+                             const NonlinearHuntingOptions& options, OutputFormat format, const std::string& vehicle,
+                             const Provenance& provenance, std::optional<double> linear_critical_speed = std::nullopt);
+
+}  // namespace railmodal

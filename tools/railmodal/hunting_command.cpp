@@ -1,0 +1,118 @@
+// railmodal hunting SCENE [--vehicle VEHICLE] [--format table|csv|json|markdown|html] [-o OUT]
+//
+// The nonlinear critical speed of a scene's vehicle (its [nonlinear_hunting] table): a command of
+// its own, not a mode of `stability`, because every other command takes one kind of file and
+// `stability` takes a vehicle, while the ramp-down needs what only a scene states (the effects
+// simulated and their laws, the disturbance, the ramp), as `simulate` and `ride` do.
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "commands.hpp"
+#include "output_file.hpp"
+#include "railmodal/railmodal.hpp"
+
+namespace railmodal::cli {
+namespace {
+
+struct HuntingCommandOptions {
+  std::string scene;
+  std::string vehicle;  // "": the scene's
+  std::string format;   // "": from the output file's extension, else table
+  std::string output = "-";
+};
+
+// The linear critical speed over the ramp's speeds, for the plot's Hopf point: none when the
+// centred running is stable over the whole ramp or already unstable at its end speed.
+std::optional<double> linear_critical_speed(const LinearSystem& system, const NonlinearHuntingOptions& o) {
+  HuntingOptions h;
+  h.min_speed = o.end_speed;
+  h.max_speed = o.start_speed;
+  h.threads = 1;
+  const HuntingResult linear = solve_hunting_stability(system, h);
+  if (linear.critical) return linear.critical->speed;
+  return std::nullopt;
+}
+
+int run(const HuntingCommandOptions& o) {
+  const OutputFormat format = report_format(o.format, o.output);
+  std::string current = o.scene;  // the file an error without a location belongs to
+  try {
+    OutputFiles files;
+    std::ostream& out = files.open(o.output);
+    Scene scene = load_scene(o.scene);
+    if (!scene.nonlinear_hunting) {
+      std::cerr << o.scene << ": error: the scene has no [nonlinear_hunting] table: it states the ramp and the "
+                << "effects simulated (docs/stability.md, \"The nonlinear critical speed\"); for the linear "
+                << "critical speed run 'railmodal stability VEHICLE'\n";
+      return kInput;
+    }
+    if (!o.vehicle.empty()) scene.vehicle_file = o.vehicle;  // the command line wins over the scene
+    if (scene.vehicle_file.empty()) {
+      std::cerr << "railmodal: error: no vehicle: give --vehicle VEHICLE.toml or a 'vehicle' key in " << o.scene << "\n";
+      return kUsage;
+    }
+    files.refuse_inputs({o.scene, scene.vehicle_file});
+    current = scene.vehicle_file;
+    const Vehicle vehicle = load_vehicle(scene.vehicle_file);
+    if (vehicle.wheelsets.empty()) {
+      const std::string why = "the vehicle has no [wheelset] data: hunting needs wheelsets on rails (docs/stability.md)";
+      // Blame the scene's `vehicle` key, where the file was chosen; a --vehicle file itself.
+      if (!o.vehicle.empty()) throw InputError(scene.vehicle_file, 0, 0, why);
+      const KeyPlace at = scene.name_places["scene.vehicle"];
+      throw InputError(o.scene, at.line, at.column, "key 'scene.vehicle': " + why);
+    }
+    const NonlinearHuntingOptions& options = *scene.nonlinear_hunting;
+    NonlinearHuntingResult result;
+    std::optional<double> linear;
+    try {
+      // The lateral motions, as `stability` assembles them.
+      const LinearSystem system = assemble(vehicle, DofSet::lateral);
+      linear = linear_critical_speed(system, options);
+      result = solve_nonlinear_hunting(system, options);
+    } catch (const std::invalid_argument& e) {
+      // The scene's options were checked by its reader; what is left is a wheelset or contact
+      // value of the vehicle file the contact model cannot take (it names the wheelset).
+      throw InputError(scene.vehicle_file, 0, 0, e.what());
+    }
+    write_nonlinear_hunting(out, result, options, format, vehicle.name, provenance_of({o.scene, scene.vehicle_file}),
+                            linear);
+    files.commit();
+    if (result.convergence == NonlinearConvergence::not_converged)
+      std::cerr << o.scene << ": warning: the nonlinear critical speed is not converged (see the report's "
+                << "convergence section)\n";
+    return kSuccess;
+  } catch (const InputError& e) {
+    std::cerr << e.what() << "\n";
+    return kInput;
+  } catch (const NumericalError& e) {
+    std::cerr << current << ": error: numerical failure: " << e.what() << "\n";
+    return kNumerical;
+  }
+}
+
+}  // namespace
+
+std::function<int()> add_hunting_command(CLI::App& app) {
+  auto options = std::make_shared<HuntingCommandOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "hunting",
+      "Nonlinear critical speed of a scene's vehicle on its wheelsets: the speed ramped down from a disturbed start "
+      "with the effects the scene names (creep saturation, flange contact), the lowest speed at which a hunting "
+      "limit cycle survives and its amplitude, the convergence check, and the bifurcation plot (docs/stability.md)");
+  cmd->add_option("scene", options->scene,
+                  "Scene file (TOML) with a [nonlinear_hunting] table, e.g. "
+                  "data/scenes/wheelset_on_springs_nonlinear_hunting.toml")
+      ->required();
+  cmd->add_option("--vehicle", options->vehicle, "Vehicle file (TOML) with [wheelset] data, in place of the scene's");
+  cmd->add_option("--format", options->format,
+                  "Output format: table, csv (every half cycle of both ramps: the bifurcation data), json, markdown, "
+                  "html (with the bifurcation plot); default: from the -o file's extension (.html, .csv, .json, "
+                  ".md), else table")
+      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
+  cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
+      ->capture_default_str();
+  return [options] { return run(*options); };
+}
+
+}  // namespace railmodal::cli
