@@ -26,8 +26,8 @@
 namespace railmodal {
 
 /// Writes csv or json (std::invalid_argument for table, markdown and html) of the DOFs the
-/// scene's simulation outputs (output_columns), numbers to ten significant digits. csv:
-/// "time [s]" and one column per DOF ("body.bounce [m]", "body.pitch [rad]"), one row per
+/// scene's simulation outputs (output_columns), numbers in the shortest text that reads back as
+/// the same double. csv: "time [s]" and one column per DOF ("body.bounce [m]", "body.pitch [rad]"), one row per
 /// sample; json: {"scene", "time_s", "displacement": {label: [...]}}, and for a nonlinear
 /// scene "events": [{"time_s", "element", "kind"}] and "integration_steps". `vehicle` names the
 /// events' elements. The history may be an OutputRecord's (its output columns only). The text
@@ -51,7 +51,8 @@ class CsvHistoryWriter final : public HistorySink {
 };
 
 /// Writes csv (std::invalid_argument for every other format): "frequency [Hz]" and one column
-/// per DOF ("body.bounce [m]"), one row per bin up to the Nyquist frequency, amplitudes to ten significant digits.
+/// per DOF ("body.bounce [m]"), one row per bin up to the Nyquist frequency, each number in the
+/// shortest text that reads back as the same double.
 void write_spectra(std::ostream& out, const OutputSpectra& spectra, OutputFormat format);
 
 }  // namespace railmodal

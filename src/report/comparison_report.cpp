@@ -4,13 +4,14 @@
 // reads it back).
 #include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"
+#include "report/json_writer.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
 #include "shortest_text.hpp"
@@ -19,13 +20,9 @@
 namespace railmodal {
 namespace {
 
-using nlohmann::json;
+using report::JsonWriter;
 
 constexpr double kKmh = 3.6;  // km/h per m/s
-
-json optional_number(const std::optional<double>& x) {
-  return x && std::isfinite(*x) ? json(*x) : json(nullptr);
-}
 
 std::vector<double> periods(const VariantResult& r) {
   std::vector<double> out;
@@ -40,106 +37,165 @@ std::vector<double> critical_speeds_kmh(const VariantResult& r) {
   return out;
 }
 
-json result_json(const VariantResult& r) {
-  json j;
-  j["index"] = r.index;
-  j["name"] = r.name;
-  j["parameters"] = json::array();
-  for (const auto& [key, value] : r.parameters) j["parameters"].push_back({{"key", key}, {"value", value}});
-  j["failure"] = r.ok() ? json(nullptr) : json(r.failure);
-  j["modes"] = json::array();
-  for (const auto& m : r.modes)
-    j["modes"].push_back({{"name", m.name}, {"kind", m.kind}, {"frequency_hz", m.frequency_hz}, {"period_s", m.period_s},
-                          {"divergence_rate_per_s", m.divergence_rate}});
-  j["static_deflections"] = json::array();
-  for (const auto& [body, deflection] : r.static_deflections)
-    j["static_deflections"].push_back({{"body", body}, {"deflection_m", deflection}});
-  j["metacentric_height_m"] = optional_number(r.metacentric_height);
-  j["critical_speeds"] = json::array();
-  for (const auto& c : r.critical_speeds)
-    j["critical_speeds"].push_back({{"speed_m_s", c.speed}, {"speed_kmh", c.speed * kKmh}, {"source", c.source},
-                                    {"source_kind", c.source_kind}, {"harmonic", c.harmonic}, {"mode_name", c.mode_name},
-                                    {"friction_stops", c.friction_stops}});
-  j["peaks"] = json::array();
-  for (const auto& p : r.peaks)
-    j["peaks"].push_back({{"source", p.source}, {"output", p.output}, {"quantity", p.quantity}, {"amplitude", p.amplitude},
-                          {"speed_m_s", p.speed}, {"unbounded", p.unbounded}});
-  // Only when the study asks for it (a study without it writes what it always wrote); +∞, stable
-  // over the whole range, is "none".
-  if (r.hunting_speed) j["hunting_speed_m_s"] = std::isinf(*r.hunting_speed) ? json("none") : json(*r.hunting_speed);
-  // Only for a scene with a ride (a study without one writes what it always wrote).
-  if (r.ride_evaluated) {
-    j["ride"] = json::array();
-    for (const auto& o : r.ride)
-      j["ride"].push_back({{"output", o.output}, {"unit", o.unit}, {"max_rms", o.max_rms},
-                           {"max_sperling_wz", optional_number(o.max_wz)}, {"unbounded", o.unbounded}});
-    j["max_nmv"] = optional_number(r.max_nmv);
-  }
-  if (r.deflections_checked) {
-    j["dynamic_deflections"] = json::array();
-    for (const auto& c : r.deflections)
-      j["dynamic_deflections"].push_back({{"element", c.element}, {"stage", c.stage}, {"basis", c.basis},
-                                          {"permissible_m", c.permissible}, {"deflection_m", c.deflection},
-                                          {"speed_m_s", c.speed}, {"source", c.source}, {"unbounded", c.unbounded},
-                                          {"kept", c.kept()}});
-  }
-  return j;
-}
-
-json ranking_json(const Ranking& ranking) {
-  json j;
-  j["method"] = ranking.weighted ? "weighted" : "lexicographic";
-  j["constraints"] = json::array();
-  for (const auto& c : ranking.constraints)
-    j["constraints"].push_back({{"metric", c.metric}, {"min", optional_number(c.min)}, {"max", optional_number(c.max)}});
-  j["objective"] = json::array();
-  for (const auto& c : ranking.objective)
-    j["objective"].push_back({{"metric", c.metric}, {"goal", c.maximise ? "max" : "min"}, {"weight", c.weight}});
-  return j;
-}
-
 // A ranking value: a number; +∞ the word the tables print for it ("none": no critical speed in the
 // range, a design stable throughout; "unbounded": an undamped peak), as hunting_speed_m_s and
 // dynamic_deflection_ratio write it; null only for no value (a failed variant, a vehicle without
 // wheelsets for hunting_speed), so that the two never read alike.
-json ranking_value(const std::optional<double>& x, bool peak) {
-  if (x && std::isinf(*x) && *x > 0) return peak ? "unbounded" : "none";
-  return optional_number(x);
+void ranking_value(JsonWriter& j, const std::optional<double>& x, bool peak) {
+  if (x && std::isinf(*x) && *x > 0)
+    j.value(peak ? "unbounded" : "none");
+  else
+    j.value(x);  // null for none, and for NaN or −∞
+}
+
+void write_modes(JsonWriter& j, const VariantResult& r) {
+  j.key("modes").begin_array();
+  for (const auto& m : r.modes) {
+    j.begin_object().member("divergence_rate_per_s", m.divergence_rate).member("frequency_hz", m.frequency_hz);
+    j.member("kind", m.kind).member("name", m.name).member("period_s", m.period_s).end_object();
+  }
+  j.end_array();
+}
+
+void write_critical_speeds(JsonWriter& j, const VariantResult& r) {
+  j.key("critical_speeds").begin_array();
+  for (const auto& c : r.critical_speeds) {
+    j.begin_object().member("friction_stops", c.friction_stops).member("harmonic", c.harmonic);
+    j.member("mode_name", c.mode_name).member("source", c.source).member("source_kind", c.source_kind);
+    j.member("speed_kmh", c.speed * kKmh).member("speed_m_s", c.speed).end_object();
+  }
+  j.end_array();
+}
+
+void write_deflections(JsonWriter& j, const VariantResult& r) {
+  j.key("dynamic_deflections").begin_array();
+  for (const auto& c : r.deflections) {
+    j.begin_object().member("basis", c.basis).member("deflection_m", c.deflection).member("element", c.element);
+    j.member("kept", c.kept()).member("permissible_m", c.permissible).member("source", c.source);
+    j.member("speed_m_s", c.speed).member("stage", c.stage).member("unbounded", c.unbounded).end_object();
+  }
+  j.end_array();
+}
+
+void write_peaks(JsonWriter& j, const VariantResult& r) {
+  j.key("peaks").begin_array();
+  for (const auto& p : r.peaks) {
+    j.begin_object().member("amplitude", p.amplitude).member("output", p.output).member("quantity", p.quantity);
+    j.member("source", p.source).member("speed_m_s", p.speed).member("unbounded", p.unbounded).end_object();
+  }
+  j.end_array();
+}
+
+void write_ride(JsonWriter& j, const VariantResult& r) {
+  j.key("ride").begin_array();
+  for (const auto& o : r.ride) {
+    j.begin_object().member("max_rms", o.max_rms).member("max_sperling_wz", o.max_wz).member("output", o.output);
+    j.member("unbounded", o.unbounded).member("unit", o.unit).end_object();
+  }
+  j.end_array();
+}
+
+// Whether objective criterion k's +∞ is an unbounded peak (or "none", no critical speed).
+bool is_peak(const Comparison& c, size_t k) {
+  return k < c.ranking.objective.size() && study::infinite_is_unbounded(c.ranking.objective[k].metric);
+}
+
+// The objective is +∞ through its criteria: it takes the word of the first that is.
+bool objective_is_peak(const Comparison& c, const RankedVariant& v) {
+  for (size_t k = 0; k < v.criteria.size(); ++k)
+    if (v.criteria[k] && std::isinf(*v.criteria[k])) return is_peak(c, k);
+  return false;
+}
+
+// What a comparison adds to a variant's results: its place in the ranking.
+struct RankingMembers {
+  const Comparison& comparison;
+  const RankedVariant& variant;
+};
+
+// One variant's results, and with `ranked` its ranking, as one object whose members come in
+// alphabetical order, as the files had them (json_writer.hpp). Optional members are written only
+// when the study asks for them, so that a study without them writes what it always wrote.
+void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* ranked) {
+  std::optional<double> ratio;
+  if (ranked && r.deflections_checked) ratio = metric_value(r, "dynamic_deflection_ratio");
+  j.begin_object();
+  if (ranked) {
+    const RankedVariant& v = ranked->variant;
+    j.key("criteria").begin_array();
+    for (size_t k = 0; k < v.criteria.size(); ++k) ranking_value(j, v.criteria[k], is_peak(ranked->comparison, k));
+    j.end_array();
+    write_critical_speeds(j, r);
+    j.member("critical_speeds_kmh", critical_speeds_kmh(r));
+    if (r.deflections_checked) {
+      j.key("dynamic_deflection_ratio");
+      ratio && std::isinf(*ratio) ? j.value("unbounded") : j.value(ratio);
+    }
+  } else {
+    write_critical_speeds(j, r);
+  }
+  if (r.deflections_checked) write_deflections(j, r);
+  j.key("failure");
+  r.ok() ? j.value(nullptr) : j.value(r.failure);
+  if (ranked) j.member("feasible", ranked->variant.feasible);
+  if (r.hunting_speed) {  // +∞, stable over the whole range, is "none"
+    j.key("hunting_speed_m_s");
+    std::isinf(*r.hunting_speed) ? j.value("none") : j.value(*r.hunting_speed);
+  }
+  j.member("index", r.index);
+  if (ranked && r.deflections_checked) {
+    j.key("keeps_permissible_deflections");
+    ratio ? j.value(*ratio <= 1.0) : j.value(nullptr);
+  }
+  if (r.ride_evaluated) j.member("max_nmv", r.max_nmv);
+  j.member("metacentric_height_m", r.metacentric_height);
+  write_modes(j, r);
+  j.member("name", r.name);
+  if (ranked) {
+    j.key("objective");
+    ranking_value(j, ranked->variant.objective, objective_is_peak(ranked->comparison, ranked->variant));
+  }
+  j.key("parameters").begin_array();
+  for (const auto& [key, value] : r.parameters) j.begin_object().member("key", key).member("value", value).end_object();
+  j.end_array();
+  write_peaks(j, r);
+  if (ranked) j.member("periods_s", periods(r)).member("rank", ranked->variant.rank);
+  if (r.ride_evaluated) write_ride(j, r);
+  j.key("static_deflections").begin_array();
+  for (const auto& [body, deflection] : r.static_deflections)
+    j.begin_object().member("body", body).member("deflection_m", deflection).end_object();
+  j.end_array();
+  if (ranked) j.member("violations", ranked->variant.violations);
+  j.end_object();
 }
 
 void write_json(std::ostream& out, const Comparison& c) {
-  json j;
-  j["study"] = c.study;
-  j["ranking"] = ranking_json(c.ranking);
-  if (c.deflection_rule.active())
-    j["permissible_dynamic_deflection"] = {{"rule", to_string(c.deflection_rule.book)},
-                                           {"service", to_string(c.deflection_rule.service)}};
-  j["variants"] = json::array();
-  for (const RankedVariant& v : c.variants) {
-    json row = result_json(v.result);
-    row["rank"] = v.rank;
-    row["feasible"] = v.feasible;
-    row["violations"] = v.violations;
-    // The objective is +∞ through its criteria: it takes the word of the first that is.
-    bool peak = false, infinite_seen = false;
-    row["criteria"] = json::array();
-    for (size_t k = 0; k < v.criteria.size(); ++k) {
-      const bool unbounded =
-          k < c.ranking.objective.size() && study::infinite_is_unbounded(c.ranking.objective[k].metric);
-      if (!infinite_seen && v.criteria[k] && std::isinf(*v.criteria[k])) peak = unbounded, infinite_seen = true;
-      row["criteria"].push_back(ranking_value(v.criteria[k], unbounded));
-    }
-    row["objective"] = ranking_value(v.objective, peak);
-    row["periods_s"] = periods(v.result);
-    row["critical_speeds_kmh"] = critical_speeds_kmh(v.result);
-    if (v.result.deflections_checked) {
-      const auto ratio = metric_value(v.result, "dynamic_deflection_ratio");
-      row["dynamic_deflection_ratio"] = ratio && std::isinf(*ratio) ? json("unbounded") : optional_number(ratio);
-      row["keeps_permissible_deflections"] = ratio ? json(*ratio <= 1.0) : json(nullptr);
-    }
-    j["variants"].push_back(row);
+  JsonWriter j(out);
+  j.begin_object();
+  if (c.deflection_rule.active()) {
+    j.key("permissible_dynamic_deflection").begin_object();
+    j.member("rule", to_string(c.deflection_rule.book)).member("service", to_string(c.deflection_rule.service));
+    j.end_object();
   }
-  out << j.dump(2) << "\n";
+  j.key("ranking").begin_object();
+  j.key("constraints").begin_array();
+  for (const auto& k : c.ranking.constraints)
+    j.begin_object().member("max", k.max).member("metric", k.metric).member("min", k.min).end_object();
+  j.end_array();
+  j.member("method", c.ranking.weighted ? "weighted" : "lexicographic");
+  j.key("objective").begin_array();
+  for (const auto& k : c.ranking.objective)
+    j.begin_object().member("goal", k.maximise ? "max" : "min").member("metric", k.metric).member("weight", k.weight).end_object();
+  j.end_array();
+  j.end_object();
+  j.member("study", c.study);
+  j.key("variants").begin_array();
+  for (const RankedVariant& v : c.variants) {
+    const RankingMembers ranked{c, v};
+    write_result(j, v.result, &ranked);
+  }
+  j.end_array();
+  j.end_object();
 }
 
 std::string number(double x, const char* format = "%.4f") {
@@ -332,20 +388,21 @@ void write_comparison(std::ostream& out, const Comparison& comparison, OutputFor
 
 void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
                  const std::vector<VariantResult>& results, const Provenance& inputs) {
-  json j;
-  j["format"] = "railmodal-compare-shard";
-  j["study"] = study.name;
-  j["variant_count"] = study.variants.size();
-  j["shard"] = options.shard;
-  j["shards"] = options.shards;
-  j["permissible_dynamic_deflection"] = to_string(study.deflection_rule);
+  JsonWriter j(out, 1);  // one space a level, as the shard files had it
+  j.begin_object();
+  j.member("format", "railmodal-compare-shard");
   if (!inputs.files.empty()) {
-    j["inputs"] = json::array();
-    for (const InputFile& f : inputs.files) j["inputs"].push_back({{"path", f.path}, {"digest", f.digest}});
+    j.key("inputs").begin_array();
+    for (const InputFile& f : inputs.files) j.begin_object().member("digest", f.digest).member("path", f.path).end_object();
+    j.end_array();
   }
-  j["results"] = json::array();
-  for (const auto& r : results) j["results"].push_back(result_json(r));
-  out << j.dump(1) << "\n";
+  j.member("permissible_dynamic_deflection", to_string(study.deflection_rule));
+  j.key("results").begin_array();
+  for (const auto& r : results) write_result(j, r, nullptr);
+  j.end_array();
+  j.member("shard", options.shard).member("shards", options.shards).member("study", study.name);
+  j.member("variant_count", study.variants.size());
+  j.end_object();
 }
 
 }  // namespace railmodal

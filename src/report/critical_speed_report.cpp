@@ -1,13 +1,15 @@
 // The critical-speed report: Markdown, self-contained HTML with inline SVG, CSV, JSON.
 #include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "model/element_stiffness.hpp"
 #include "railmodal/critical_speed_report.hpp"
+#include "report/csv_writer.hpp"
 #include "report/document_table.hpp"
+#include "report/json_writer.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
@@ -435,84 +437,107 @@ std::string output_columns(const CriticalSpeedStudy& st) {
 void write_csv(std::ostream& out, const CriticalSpeedStudy& st) {
   // The amplitudes are of each row's output: m, or rad for a roll, pitch or yaw.
   using report::csv_heading;
-  for (const std::string& note : st.modes.notes) out << "# note: " << note << "\n";  // as `modes` writes them
-  out << csv_heading("speed", "km/h") << ",source,source_index,harmonic,mode,mode_name,"
-      << csv_heading("frequency", "Hz") << ",output," << csv_heading("amplitude", "m or rad") << ",unbounded,"
-      << csv_heading("growth_per_half_period", "m or rad") << ","
-      << csv_heading("friction_decrement_per_half_period", "m or rad") << ",friction_stops,friction_threshold_scale"
-      << output_columns(st) << "\n";
-  out << std::setprecision(10);
+  report::CsvWriter csv(out);
+  for (const std::string& note : st.modes.notes) csv.line("# note: " + note);  // as `modes` writes them
+  csv.line(csv_heading("speed", "km/h") + ",source,source_index,harmonic,mode,mode_name," +
+           csv_heading("frequency", "Hz") + ",output," + csv_heading("amplitude", "m or rad") + ",unbounded," +
+           csv_heading("growth_per_half_period", "m or rad") + "," +
+           csv_heading("friction_decrement_per_half_period", "m or rad") + ",friction_stops,friction_threshold_scale" +
+           output_columns(st));
+  // An unbounded amplitude is a blank field.
+  const auto amplitude = [&csv](double value, bool unbounded) -> report::CsvWriter& {
+    return unbounded ? csv.blank() : csv.field(value);
+  };
   for (const auto& r : st.critical_speeds) {
-    out << r.speed * kKmh << "," << r.source_kind << "," << r.source + 1 << "," << r.harmonic << "," << r.mode << ","
-        << report::csv_field(r.mode_name) << "," << r.frequency_hz << "," << r.output << ","
-        << (r.unbounded ? "" : significant(r.amplitude, 10)) << "," << (r.unbounded ? "true" : "false") << ","
-        << r.growth_per_half_period << "," << r.friction_decrement_per_half_period << ","
-        << (r.friction_stops ? "true" : "false") << "," << r.friction_threshold_scale;
+    csv.field(r.speed * kKmh).field(r.source_kind).field(r.source + 1).field(r.harmonic).field(r.mode);
+    csv.field(r.mode_name).field(r.frequency_hz).field(r.output);
+    amplitude(r.amplitude, r.unbounded).field(r.unbounded).field(r.growth_per_half_period);
+    csv.field(r.friction_decrement_per_half_period).field(r.friction_stops).field(r.friction_threshold_scale);
     // Each output: its amplitude (blank where unbounded) and its growth per half period.
-    for (const ResonanceAtOutput& o : r.outputs)
-      out << "," << (o.unbounded ? "" : significant(o.amplitude, 10)) << "," << o.growth_per_half_period;
-    out << "\n";
+    for (const ResonanceAtOutput& o : r.outputs) amplitude(o.amplitude, o.unbounded).field(o.growth_per_half_period);
+    csv.end_row();
   }
 }
 
+// Members in alphabetical order, as the files had them (json_writer.hpp).
+void write_json_critical_speed(report::JsonWriter& j, const CriticalSpeed& r) {
+  const std::optional<double> none;
+  j.begin_object();
+  j.member("amplitude", r.unbounded ? none : std::optional<double>(r.amplitude));
+  j.member("frequency_hz", r.frequency_hz);
+  j.member("friction_decrement_per_half_period", r.friction_decrement_per_half_period);
+  j.member("friction_stops", r.friction_stops);
+  j.member("friction_threshold_scale", r.friction_threshold_scale);  // null when infinite
+  j.member("growth_per_half_period", r.growth_per_half_period);
+  j.member("harmonic", r.harmonic).member("mode", r.mode).member("mode_name", r.mode_name);
+  j.member("output", r.output);
+  j.key("outputs").begin_array();
+  for (const ResonanceAtOutput& o : r.outputs) {
+    j.begin_object();
+    j.member("amplitude", o.unbounded ? none : std::optional<double>(o.amplitude));
+    j.member("growth_per_half_period", o.growth_per_half_period);
+    j.member("output", o.output).member("quantity", to_string(o.quantity)).member("unbounded", o.unbounded);
+    j.end_object();
+  }
+  j.end_array();
+  j.member("source", r.source_kind).member("source_index", r.source + 1);
+  j.member("speed_kmh", r.speed * kKmh).member("unbounded", r.unbounded);
+  j.end_object();
+}
+
+void write_json_curve(report::JsonWriter& j, const CriticalSpeedStudy& st, const AmplitudeCurve& c) {
+  const std::optional<double> none;
+  j.begin_object();
+  j.key("amplitudes").begin_array();
+  for (size_t i = 0; i < c.speeds.size(); ++i) j.value(c.unbounded[i] ? none : std::optional<double>(c.amplitudes[i]));
+  j.end_array();
+  j.member("output", c.output);
+  j.key("phases_deg").begin_array();
+  for (size_t i = 0; i < c.speeds.size(); ++i)
+    j.value(c.unbounded[i] || c.phases_deg.empty() ? none : std::optional<double>(c.phases_deg[i]));
+  j.end_array();
+  j.member("quantity", to_string(c.quantity)).member("source_index", c.source + 1);
+  j.key("speeds_kmh").begin_array();
+  for (double v : c.speeds) j.value(v * kKmh);
+  j.end_array();
+  j.member("transfer_function", transfer_function(st, c));
+  j.member("unit", is_rotation(st.system, c.output) ? "rad-based SI" : "SI (m, m/s, m/s²)");
+  j.end_object();
+}
+
 void write_json(std::ostream& out, const CriticalSpeedStudy& st) {
-  using nlohmann::json;
-  json j;
-  j["vehicle"] = st.system.vehicle.name;
-  j["scene"] = st.scene.name;
-  if (!st.modes.notes.empty()) j["notes"] = st.modes.notes;  // absent for the book's wagons: their files stay
-  j["dofs"] = json::array();
-  for (const auto& d : st.system.dofs) j["dofs"].push_back(d.label);
-  j["sources"] = json::array();
+  report::JsonWriter j(out);
+  j.begin_object();
+  j.key("critical_speeds").begin_array();
+  for (const auto& r : st.critical_speeds) write_json_critical_speed(j, r);
+  j.end_array();
+  j.key("curves").begin_array();
+  for (const auto& c : st.curves) write_json_curve(j, st, c);
+  j.end_array();
+  j.key("dofs").begin_array();
+  for (const auto& d : st.system.dofs) j.value(d.label);
+  j.end_array();
+  j.key("modes").begin_array();
+  for (const Mode& m : st.modes.modes) {
+    j.begin_object();
+    j.member("frequency_hz", m.kind == ModeKind::oscillatory ? std::optional<double>(m.frequency_hz) : std::nullopt);
+    j.member("index", m.index).member("kind", to_string(m.kind)).member("name", m.name);
+    j.end_object();
+  }
+  j.end_array();
+  if (!st.modes.notes.empty()) j.member("notes", st.modes.notes);  // absent for the book's wagons: their files stay
+  j.member("scene", st.scene.name);
+  j.key("sources").begin_array();
   for (size_t s = 0; s < st.scene.sources.size(); ++s) {
     const auto& src = *st.scene.sources[s];
-    j["sources"].push_back({{"index", s + 1}, {"kind", src.kind()}, {"description", src.description()},
-                            {"wavelength_m", src.wavelength()}, {"harmonics", src.harmonic_count()}});
+    j.begin_object();
+    j.member("description", src.description()).member("harmonics", src.harmonic_count());
+    j.member("index", s + 1).member("kind", src.kind()).member("wavelength_m", src.wavelength());
+    j.end_object();
   }
-  j["modes"] = json::array();
-  for (const Mode& m : st.modes.modes)
-    j["modes"].push_back({{"index", m.index}, {"name", m.name}, {"kind", to_string(m.kind)},
-                          {"frequency_hz", m.kind == ModeKind::oscillatory ? json(m.frequency_hz) : json(nullptr)}});
-  j["critical_speeds"] = json::array();
-  for (const auto& r : st.critical_speeds) {
-    json row = {{"speed_kmh", r.speed * kKmh},
-                {"source", r.source_kind},
-                {"source_index", r.source + 1},
-                {"harmonic", r.harmonic},
-                {"mode", r.mode},
-                {"mode_name", r.mode_name},
-                {"frequency_hz", r.frequency_hz},
-                {"output", r.output},
-                {"amplitude", r.unbounded ? json(nullptr) : json(r.amplitude)},
-                {"unbounded", r.unbounded},
-                {"growth_per_half_period", r.growth_per_half_period},
-                {"friction_decrement_per_half_period", r.friction_decrement_per_half_period},
-                {"friction_stops", r.friction_stops}};
-    row["friction_threshold_scale"] =
-        std::isfinite(r.friction_threshold_scale) ? json(r.friction_threshold_scale) : json(nullptr);
-    row["outputs"] = json::array();
-    for (const ResonanceAtOutput& o : r.outputs)
-      row["outputs"].push_back({{"output", o.output},
-                                {"quantity", to_string(o.quantity)},
-                                {"unbounded", o.unbounded},
-                                {"amplitude", o.unbounded ? json(nullptr) : json(o.amplitude)},
-                                {"growth_per_half_period", o.growth_per_half_period}});
-    j["critical_speeds"].push_back(row);
-  }
-  j["curves"] = json::array();
-  for (const auto& c : st.curves) {
-    json amplitudes = json::array(), speeds = json::array(), phases = json::array();
-    for (size_t i = 0; i < c.speeds.size(); ++i) {
-      speeds.push_back(c.speeds[i] * kKmh);
-      amplitudes.push_back(c.unbounded[i] ? json(nullptr) : json(c.amplitudes[i]));
-      phases.push_back(c.unbounded[i] || c.phases_deg.empty() ? json(nullptr) : json(c.phases_deg[i]));
-    }
-    j["curves"].push_back({{"source_index", c.source + 1}, {"output", c.output}, {"quantity", to_string(c.quantity)},
-                           {"unit", is_rotation(st.system, c.output) ? "rad-based SI" : "SI (m, m/s, m/s²)"},
-                           {"transfer_function", transfer_function(st, c)}, {"speeds_kmh", speeds},
-                           {"amplitudes", amplitudes}, {"phases_deg", phases}});
-  }
-  out << j.dump(2) << "\n";
+  j.end_array();
+  j.member("vehicle", st.system.vehicle.name);
+  j.end_object();
 }
 
 }  // namespace

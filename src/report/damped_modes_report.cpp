@@ -1,25 +1,17 @@
 // Damped modes for people (table) and programs (CSV, JSON). Quantities a mode does not have
 // (no damped frequency when overdamped, no ζ when divergent) are blank or null, never NaN.
 #include <iomanip>
-#include <nlohmann/json.hpp>
-#include <sstream>
+#include <optional>
 #include <stdexcept>
 
 #include "railmodal/report.hpp"
+#include "report/csv_writer.hpp"
+#include "report/json_writer.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
 
 namespace railmodal {
 namespace {
-
-using report::csv_field;
-
-std::string optional_number(const std::optional<double>& value, int precision) {
-  if (!value) return "";
-  std::ostringstream s;
-  s << std::setprecision(precision) << *value;
-  return s.str();
-}
 
 // The undamped mode's frequency, when it oscillates.
 std::optional<double> undamped_frequency(const DampedModalResult& r, const DampedMode& m) {
@@ -88,66 +80,73 @@ void write_table(std::ostream& out, const LinearSystem& system, const DampedModa
 
 void write_csv(std::ostream& out, const DampedModalResult& r) {
   using report::csv_heading;
-  for (const auto& note : r.undamped.notes) out << "# note: " << note << "\n";
-  out << "index,name,kind,stable," << csv_heading("damped_frequency", "Hz") << ",damping_ratio,"
-      << csv_heading("natural_frequency", "Hz") << ",undamped_mode," << csv_heading("undamped_frequency", "Hz") << ","
-      << csv_heading("decay_rate", "1/s");
+  report::CsvWriter csv(out);
+  for (const auto& note : r.undamped.notes) csv.line("# note: " + note);
+  csv.field("index").field("name").field("kind").field("stable").field(csv_heading("damped_frequency", "Hz"));
+  csv.field("damping_ratio").field(csv_heading("natural_frequency", "Hz")).field("undamped_mode");
+  csv.field(csv_heading("undamped_frequency", "Hz")).field(csv_heading("decay_rate", "1/s"));
   for (const char* part : {"eigenvalue1_re", "eigenvalue1_im", "eigenvalue2_re", "eigenvalue2_im"})
-    out << "," << csv_heading(part, "1/s");  // λ = −σ ± iω_d
-  out << ",residual\n";
+    csv.field(csv_heading(part, "1/s"));  // λ = −σ ± iω_d
+  csv.field("residual").end_row();
+  // A quantity the mode does not have is a blank field.
+  const auto optional = [&csv](const std::optional<double>& value) -> report::CsvWriter& {
+    return value ? csv.field(*value) : csv.blank();
+  };
   for (const auto& m : r.modes) {
-    out << m.index << "," << csv_field(m.name) << "," << to_string(m.kind) << "," << (m.stable ? "true" : "false")
-        << "," << optional_number(m.damped_frequency_hz, 10) << "," << optional_number(m.damping_ratio, 10) << ","
-        << optional_number(m.natural_frequency_hz, 10) << ","
-        << (m.undamped_mode > 0 ? std::to_string(m.undamped_mode) : "") << ","
-        << optional_number(undamped_frequency(r, m), 10) << "," << optional_number(m.decay_rate, 10);
+    csv.field(m.index).field(m.name).field(to_string(m.kind)).field(m.stable);
+    optional(m.damped_frequency_hz);
+    optional(m.damping_ratio);
+    optional(m.natural_frequency_hz);
+    m.undamped_mode > 0 ? csv.field(m.undamped_mode) : csv.blank();
+    optional(undamped_frequency(r, m));
+    csv.field(m.decay_rate);
     for (size_t k = 0; k < 2; ++k) {
       if (k < m.eigenvalues.size())
-        out << "," << optional_number(m.eigenvalues[k].real(), 12) << "," << optional_number(m.eigenvalues[k].imag(), 12);
+        csv.field(m.eigenvalues[k].real()).field(m.eigenvalues[k].imag());
       else
-        out << ",,";
+        csv.blank().blank();
     }
-    out << "," << optional_number(m.residual, 3) << "\n";
+    csv.field(m.residual).end_row();
   }
 }
 
-void write_json(std::ostream& out, const LinearSystem& system, const DampedModalResult& r) {
-  using nlohmann::json;
-  auto or_null = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
-  json doc;
-  doc["vehicle"] = system.vehicle.name;
-  doc["dofs"] = json::array();
-  for (const auto& d : r.dofs) doc["dofs"].push_back(d.label);
-  doc["modes"] = json::array();
-  for (const auto& m : r.modes) {
-    json j;
-    j["index"] = m.index;
-    j["name"] = m.name;
-    j["kind"] = to_string(m.kind);
-    j["stable"] = m.stable;
-    j["eigenvalues"] = json::array();
-    for (const auto& l : m.eigenvalues) j["eigenvalues"].push_back({l.real(), l.imag()});
-    j["damped_frequency_hz"] = or_null(m.damped_frequency_hz);
-    j["damping_ratio"] = or_null(m.damping_ratio);
-    j["natural_frequency_hz"] = or_null(m.natural_frequency_hz);
-    j["undamped_mode"] = m.undamped_mode > 0 ? json(m.undamped_mode) : json(nullptr);
-    j["undamped_frequency_hz"] = or_null(undamped_frequency(r, m));
-    j["decay_rate_per_s"] = m.decay_rate;
-    j["residual"] = m.residual;
-    json shape = json::object();
-    for (size_t i = 0; i < r.dofs.size(); ++i) {
-      const auto v = m.shape(static_cast<int>(i));
-      shape[r.dofs[i].label] = {v.real(), v.imag()};
-    }
-    j["shape"] = shape;
-    doc["modes"].push_back(j);
+// Members in alphabetical order, as the files had them (json_writer.hpp).
+void write_mode(report::JsonWriter& j, const DampedModalResult& r, const DampedMode& m,
+                const std::vector<size_t>& order) {
+  j.begin_object();
+  j.member("damped_frequency_hz", m.damped_frequency_hz).member("damping_ratio", m.damping_ratio);
+  j.member("decay_rate_per_s", m.decay_rate);
+  j.key("eigenvalues").begin_array();
+  for (const auto& l : m.eigenvalues) j.begin_array().value(l.real()).value(l.imag()).end_array();
+  j.end_array();
+  j.member("index", m.index).member("kind", to_string(m.kind)).member("name", m.name);
+  j.member("natural_frequency_hz", m.natural_frequency_hz).member("residual", m.residual);
+  j.key("shape").begin_object();
+  for (size_t i : order) {
+    const auto v = m.shape(static_cast<int>(i));
+    j.key(r.dofs[i].label).begin_array().value(v.real()).value(v.imag()).end_array();
   }
-  doc["condensed"] = r.condensed;
-  doc["first_order"] = r.first_order;
-  doc["stable"] = r.stable;
-  doc["max_residual"] = r.max_residual;
-  if (!r.undamped.notes.empty()) doc["notes"] = r.undamped.notes;  // absent for the book's wagons
-  out << doc.dump(2) << "\n";
+  j.end_object();
+  j.member("stable", m.stable).member("undamped_frequency_hz", undamped_frequency(r, m));
+  j.key("undamped_mode");
+  m.undamped_mode > 0 ? j.value(m.undamped_mode) : j.value(nullptr);
+  j.end_object();
+}
+
+void write_json(std::ostream& out, const LinearSystem& system, const DampedModalResult& r) {
+  report::JsonWriter j(out);
+  std::vector<std::string> labels;
+  for (const auto& d : r.dofs) labels.push_back(d.label);
+  const std::vector<size_t> order = report::member_order(labels);  // the shapes' members
+  j.begin_object();
+  j.member("condensed", r.condensed).member("dofs", labels).member("first_order", r.first_order);
+  j.member("max_residual", r.max_residual);
+  j.key("modes").begin_array();
+  for (const auto& m : r.modes) write_mode(j, r, m, order);
+  j.end_array();
+  if (!r.undamped.notes.empty()) j.member("notes", r.undamped.notes);  // absent for the book's wagons
+  j.member("stable", r.stable).member("vehicle", system.vehicle.name);
+  j.end_object();
 }
 
 }  // namespace

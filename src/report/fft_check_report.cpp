@@ -5,12 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "report/document_table.hpp"
+#include "report/json_writer.hpp"
+#include "report/number_text.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
@@ -18,7 +19,6 @@
 namespace railmodal {
 
 using report::html_escape;
-using report::significant;
 
 namespace {
 
@@ -257,61 +257,60 @@ void swings_table(std::ostream& out, const FftCheckResult& r) {
   }
 }
 
+// Members in alphabetical order, as the files had them (json_writer.hpp).
+void write_json_check(report::JsonWriter& j, const FftCheck& c) {
+  const std::optional<double> none;
+  j.begin_object();
+  j.member("checked", c.checked()).member("dof", c.dof).member("excited", c.excited);
+  j.member("modal_amplitude_ratio", c.modal_amplitude_ratio).member("modal_hz", c.modal_hz);
+  j.member("mode", c.mode).member("mode_name", c.mode_name).member("outcome", outcome_word(c.outcome));
+  j.member("passed", c.outcome == FftCheck::Outcome::passed);
+  j.member("peak_hz", c.peak_hz ? std::optional<double>(*c.peak_hz) : none);
+  j.member("rel_error", c.peak_hz ? std::optional<double>(c.rel_error) : none);
+  j.member("resolution_hz", c.resolution_hz).member("tolerance", c.tolerance);
+  j.member("within_resolution", c.within_resolution);
+  j.end_object();
+}
+
 void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene) {
-  nlohmann::json j;
-  j["scene"] = scene.name;
-  j["checks"] = nlohmann::json::array();
-  for (const auto& c : r.checks)
-    j["checks"].push_back({{"mode", c.mode},
-                           {"mode_name", c.mode_name},
-                           {"dof", c.dof},
-                           {"modal_hz", c.modal_hz},
-                           {"peak_hz", c.peak_hz ? nlohmann::json(*c.peak_hz) : nlohmann::json(nullptr)},
-                           {"rel_error", c.peak_hz ? nlohmann::json(c.rel_error) : nlohmann::json(nullptr)},
-                           {"resolution_hz", c.resolution_hz},
-                           {"within_resolution", c.within_resolution},
-                           {"excited", c.excited},
-                           {"modal_amplitude_ratio", c.modal_amplitude_ratio},
-                           {"tolerance", c.tolerance},
-                           {"outcome", outcome_word(c.outcome)},
-                           {"checked", c.checked()},
-                           {"passed", c.outcome == FftCheck::Outcome::passed}});
-  j["nonlinear"] = r.nonlinear;
-  j["compared"] = compared_text(r);
-  j["checked"] = r.checked > 0;
-  j["checks_made"] = r.checked;
-  j["checks_failed"] = r.failed;
-  j["passed"] = r.passed;
-  j["verdict"] = verdict_word(r);
-  j["verdict_text"] = fft_check_verdict(r);
+  report::JsonWriter j(out);
+  j.begin_object();
+  j.member("checked", r.checked > 0);
+  j.key("checks").begin_array();
+  for (const auto& c : r.checks) write_json_check(j, c);
+  j.end_array();
+  j.member("checks_failed", r.failed).member("checks_made", r.checked).member("compared", compared_text(r));
   if (r.swings) {
     const Swings& w = *r.swings;
-    nlohmann::json turns = nlohmann::json::array();
+    j.key("half_periods").begin_object();
+    j.member("between_crossings_s", w.half_periods_between_crossings());
+    j.member("between_turning_points_s", w.half_periods_between_turns());
+    j.member("comes_to_rest", w.comes_to_rest).member("dof", w.dof);
+    j.member("linear_half_period_s", r.linear_half_period_s);
+    j.key("turning_points").begin_array();
     for (size_t i = 0; i < w.turning_times.size(); ++i)
-      turns.push_back({{"time_s", w.turning_times[i]}, {"displacement", w.turning_values[i]}});
-    j["half_periods"] = {{"dof", w.dof},
-                         {"linear_half_period_s", r.linear_half_period_s},
-                         {"between_turning_points_s", w.half_periods_between_turns()},
-                         {"between_crossings_s", w.half_periods_between_crossings()},
-                         {"turning_points", turns},
-                         {"comes_to_rest", w.comes_to_rest}};
+      j.begin_object().member("displacement", w.turning_values[i]).member("time_s", w.turning_times[i]).end_object();
+    j.end_array();
+    j.end_object();
   }
-  out << j.dump(2) << "\n";
+  j.member("nonlinear", r.nonlinear).member("passed", r.passed).member("scene", scene.name);
+  j.member("verdict", verdict_word(r)).member("verdict_text", fft_check_verdict(r));
+  j.end_object();
 }
 
 void write_csv(std::ostream& out, const FftCheckResult& r) {
   using report::csv_heading;
+  using report::number_text;
   out << "mode,mode_name,dof," << csv_heading("modal", "Hz") << "," << csv_heading("peak", "Hz") << ",rel_error,"
       << csv_heading("resolution", "Hz")
-      << ",within_resolution,excited,modal_amplitude_ratio,tolerance,outcome,checked,passed,verdict\n"
-      << std::setprecision(10);
+      << ",within_resolution,excited,modal_amplitude_ratio,tolerance,outcome,checked,passed,verdict\n";
   for (const auto& c : r.checks)
-    out << c.mode << ",\"" << c.mode_name << "\"," << c.dof << "," << c.modal_hz << ","
-        << (c.peak_hz ? significant(*c.peak_hz, 10) : "") << "," << (c.peak_hz ? significant(c.rel_error, 10) : "")
-        << "," << c.resolution_hz << "," << (c.within_resolution ? "true" : "false") << ","
-        << (c.excited ? "true" : "false") << "," << c.modal_amplitude_ratio << "," << c.tolerance << ","
-        << outcome_word(c.outcome) << "," << (c.checked() ? "true" : "false") << ","
-        << (c.outcome == FftCheck::Outcome::passed ? "true" : "false") << "," << verdict_word(r) << "\n";
+    out << c.mode << ",\"" << c.mode_name << "\"," << c.dof << "," << number_text(c.modal_hz) << ","
+        << (c.peak_hz ? number_text(*c.peak_hz) : "") << "," << (c.peak_hz ? number_text(c.rel_error) : "") << ","
+        << number_text(c.resolution_hz) << "," << (c.within_resolution ? "true" : "false") << ","
+        << (c.excited ? "true" : "false") << "," << number_text(c.modal_amplitude_ratio) << ","
+        << number_text(c.tolerance) << "," << outcome_word(c.outcome) << "," << (c.checked() ? "true" : "false")
+        << "," << (c.outcome == FftCheck::Outcome::passed ? "true" : "false") << "," << verdict_word(r) << "\n";
 }
 
 // Nonlinear scenes, in the table: the turning points of the swinging DOF and the half periods

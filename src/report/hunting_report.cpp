@@ -6,14 +6,14 @@
 #include "railmodal/hunting_report.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <limits>
-#include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
 
 #include "report/document_table.hpp"
+#include "report/json_writer.hpp"
+#include "report/number_text.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
@@ -23,6 +23,7 @@ namespace railmodal {
 namespace {
 
 using report::fixed;
+using report::JsonWriter;
 using report::significant;
 using report::Table;
 using report::write_markdown_table;
@@ -659,15 +660,14 @@ void write_html(std::ostream& out, const Page& p) {
 
 // ---- CSV and JSON ----
 
-// A CSV number to 10 significant digits, or blank when it is not finite. std::to_chars (Ryu): the
-// stream's setprecision(10) took 56 ms for a 1000-speed, 20-branch locus (20 000 rows), printf's
-// %.10g 30 ms.
+// A CSV number, the shortest text that reads back as the same double, or blank when it is not
+// finite. std::to_chars (Ryu): the stream's setprecision(10) took 56 ms for a 1000-speed,
+// 20-branch locus (20 000 rows), printf's %.10g 30 ms.
 void csv_number(std::string* row, double value) {
   *row += ',';
   if (!std::isfinite(value)) return;
-  char text[32];
-  const std::to_chars_result end = std::to_chars(text, text + sizeof text, value, std::chars_format::general, 10);
-  row->append(text, end.ptr);
+  char text[report::kNumberTextMax];
+  row->append(text, report::write_number(text, value, report::NumberStyle::csv));
 }
 
 void write_csv(std::ostream& out, const HuntingResult& r) {
@@ -693,117 +693,123 @@ void write_csv(std::ostream& out, const HuntingResult& r) {
   }
 }
 
-// A finite number, or null (never inf or NaN in JSON).
-nlohmann::json number_or_null(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+// Every object's members in alphabetical order, as the files had them (json_writer.hpp); a
+// number that is not finite is null (never inf or NaN in JSON).
+void write_critical(JsonWriter& j, const std::optional<HuntingCriticalSpeed>& c) {
+  if (!c) {
+    j.value(nullptr);
+    return;
+  }
+  j.begin_object().member("branch", c->branch).member("evaluations", c->evaluations);
+  j.member("frequency_hz", c->frequency_hz).member("klingel_frequency_hz", c->klingel_frequency_hz);
+  j.member("motion", c->motion).member("speed_kmh", c->speed * kKmh).member("speed_m_s", c->speed).end_object();
 }
 
-nlohmann::json critical_json(const std::optional<HuntingCriticalSpeed>& c) {
-  if (!c) return nullptr;
-  return {{"speed_m_s", c->speed},
-          {"speed_kmh", c->speed * kKmh},
-          {"branch", c->branch},
-          {"motion", c->motion},
-          {"frequency_hz", c->frequency_hz},
-          {"klingel_frequency_hz", c->klingel_frequency_hz},
-          {"evaluations", c->evaluations}};
-}
-
-nlohmann::json contact_json(const ResolvedContact& c) {
-  nlohmann::json j = {{"body", c.body},
-                      {"axle_load_n", c.axle_load},
-                      {"conicity", c.conicity},
-                      {"contact_angle_parameter", c.contact_angle_parameter},
-                      {"roll_parameter", c.roll_parameter},
-                      {"rolling_radius_m", c.rolling_radius},
-                      {"contact_half_spacing_m", c.contact_half_spacing},
-                      {"f11_n", c.creep.f11},
-                      {"f22_n", c.creep.f22},
-                      {"f23_n_m", c.creep.f23},
-                      {"f33_n_m2", c.creep.f33},
-                      {"klingel_wavelength_m", number_or_null(c.klingel_wavelength)}};
-  j["ellipse"] = c.ellipse ? nlohmann::json{{"a_m", c.ellipse->a},
-                                            {"b_m", c.ellipse->b},
-                                            {"max_pressure_pa", c.ellipse->max_pressure},
-                                            {"approach_m", c.ellipse->approach}}
-                           : nlohmann::json(nullptr);
-  return j;
+void write_contact(JsonWriter& j, const ResolvedContact& c) {
+  j.begin_object().member("axle_load_n", c.axle_load).member("body", c.body).member("conicity", c.conicity);
+  j.member("contact_angle_parameter", c.contact_angle_parameter);
+  j.member("contact_half_spacing_m", c.contact_half_spacing);
+  j.key("ellipse");
+  if (c.ellipse)
+    j.begin_object().member("a_m", c.ellipse->a).member("approach_m", c.ellipse->approach).member("b_m", c.ellipse->b)
+        .member("max_pressure_pa", c.ellipse->max_pressure).end_object();
+  else
+    j.value(nullptr);
+  j.member("f11_n", c.creep.f11).member("f22_n", c.creep.f22).member("f23_n_m", c.creep.f23);
+  j.member("f33_n_m2", c.creep.f33).member("klingel_wavelength_m", c.klingel_wavelength);
+  j.member("roll_parameter", c.roll_parameter).member("rolling_radius_m", c.rolling_radius).end_object();
 }
 
 // The analysis' checks, without the stage times (they vary from run to run); a limit of +∞
 // (reported, not bounded) is null.
-nlohmann::json summary_json(const AnalysisSummary& s) {
-  nlohmann::json checks = nlohmann::json::array();
+void write_summary(JsonWriter& j, const AnalysisSummary& s) {
+  j.begin_object().member("analysis", s.analysis).key("checks").begin_array();
   for (const Check& c : s.checks)
-    checks.push_back({{"name", c.name},
-                      {"value", number_or_null(c.value)},
-                      {"limit", number_or_null(c.limit)},
-                      {"passed", c.passed}});
-  return {{"analysis", s.analysis}, {"method", s.method}, {"checks", checks}};
+    j.begin_object().member("limit", c.limit).member("name", c.name).member("passed", c.passed).member("value", c.value).end_object();
+  j.end_array().member("method", s.method).end_object();
 }
 
-// Streamed: the head as one object's members, then each branch dumped on its own (the eigenvalues
-// of a 1000-speed locus are most of the document), in the order written here.
+void write_branch(JsonWriter& j, const HuntingBranch& b) {
+  j.begin_object().member("continuity", b.continuity).member("damping_ratio", b.damping_ratio);
+  j.key("eigenvalue_im").begin_array();
+  for (const auto& l : b.eigenvalues) j.value(l.imag());
+  j.end_array().key("eigenvalue_re").begin_array();
+  for (const auto& l : b.eigenvalues) j.value(l.real());
+  j.end_array().member("frequency_hz", b.frequency_hz).member("name", b.name).member("veers", b.veers).end_object();
+}
+
+// The head's members one a line, in the order written here, each value compact on its line; then
+// each branch on a line of its own (the eigenvalues of a 1000-speed locus are most of the document).
+template <typename WriteValue>
+void write_member(std::ostream& out, const char* key, WriteValue write_value, bool first = false) {
+  std::string name;
+  report::append_json_string(name, key);
+  out << (first ? "{\n  " : ",\n  ") << name << ": ";
+  JsonWriter j(out, -1);
+  write_value(j);
+}
+
 void write_json(std::ostream& out, const Page& p) {
-  using nlohmann::json;
   const HuntingResult& r = p.r;
-  auto member = [&](const char* key, const json& value, bool first = false) {
-    out << (first ? "{\n  " : ",\n  ") << json(key).dump() << ": " << value.dump();
-  };
-  member("vehicle", p.vehicle, true);
-  member("analysis", "linear");
-  member("verdict", to_string(r.verdict));
-  member("critical", critical_json(r.critical));
-  member("summary", summary_json(r.summary));
-  json intervals = json::array();
-  for (const UnstableInterval& u : r.unstable_intervals)
-    intervals.push_back({{"from_m_s", u.from},
-                         {"from_kmh", u.from * kKmh},
-                         {"to_m_s", u.to},
-                         {"to_kmh", u.to * kKmh},
-                         {"from_lowest_speed", u.from_lowest_speed},
-                         {"to_highest_speed", u.to_highest_speed},
-                         {"branch", u.branch}});
-  member("unstable_intervals", intervals);
-  member("damping_threshold", r.damping_threshold ? json(*r.damping_threshold) : json(nullptr));
-  member("threshold_speed_m_s", r.threshold_speed ? json(*r.threshold_speed) : json(nullptr));
-  member("threshold_speed_kmh", r.threshold_speed ? json(*r.threshold_speed * kKmh) : json(nullptr));
-  member("threshold_branch", r.threshold_speed ? json(r.threshold_branch) : json(nullptr));
-  json below = json::array();
-  for (const std::string& name : r.below_threshold_at_lowest_speed) {
-    json zeta = nullptr;
-    for (const HuntingBranch& b : r.branches)
-      if (b.name == name && !b.damping_ratio.empty()) zeta = b.damping_ratio.front();
-    below.push_back({{"branch", name}, {"damping_ratio", zeta}});
-  }
-  member("below_threshold_at_lowest_speed", below);
-  json curve = json::array();
-  for (const ConicityPoint& c : r.conicity_curve)
-    curve.push_back(
-        {{"conicity", c.conicity}, {"verdict", to_string(c.verdict)}, {"critical", critical_json(c.critical)}});
-  member("conicity_curve", curve);
-  json contacts = json::array();
-  for (const ResolvedContact& c : r.contacts) contacts.push_back(contact_json(c));
-  member("contacts", contacts);
-  member("dofs", r.dofs);
-  member("speeds_m_s", r.speeds);
-  json speeds = json::array();
-  for (double v : r.speeds) speeds.push_back(v * kKmh);
-  member("speeds_kmh", speeds);
+  const std::optional<double> none;
+  write_member(out, "vehicle", [&](JsonWriter& j) { j.value(p.vehicle); }, true);
+  write_member(out, "analysis", [&](JsonWriter& j) { j.value("linear"); });
+  write_member(out, "verdict", [&](JsonWriter& j) { j.value(to_string(r.verdict)); });
+  write_member(out, "critical", [&](JsonWriter& j) { write_critical(j, r.critical); });
+  write_member(out, "summary", [&](JsonWriter& j) { write_summary(j, r.summary); });
+  write_member(out, "unstable_intervals", [&](JsonWriter& j) {
+    j.begin_array();
+    for (const UnstableInterval& u : r.unstable_intervals)
+      j.begin_object().member("branch", u.branch).member("from_kmh", u.from * kKmh)
+          .member("from_lowest_speed", u.from_lowest_speed).member("from_m_s", u.from)
+          .member("to_highest_speed", u.to_highest_speed).member("to_kmh", u.to * kKmh).member("to_m_s", u.to)
+          .end_object();
+    j.end_array();
+  });
+  write_member(out, "damping_threshold", [&](JsonWriter& j) { j.value(r.damping_threshold); });
+  write_member(out, "threshold_speed_m_s", [&](JsonWriter& j) { j.value(r.threshold_speed); });
+  write_member(out, "threshold_speed_kmh", [&](JsonWriter& j) {
+    j.value(r.threshold_speed ? std::optional<double>(*r.threshold_speed * kKmh) : none);
+  });
+  write_member(out, "threshold_branch", [&](JsonWriter& j) {
+    r.threshold_speed ? j.value(r.threshold_branch) : j.value(nullptr);
+  });
+  write_member(out, "below_threshold_at_lowest_speed", [&](JsonWriter& j) {
+    j.begin_array();
+    for (const std::string& name : r.below_threshold_at_lowest_speed) {
+      std::optional<double> zeta;
+      for (const HuntingBranch& b : r.branches)
+        if (b.name == name && !b.damping_ratio.empty()) zeta = b.damping_ratio.front();
+      j.begin_object().member("branch", name).member("damping_ratio", zeta).end_object();
+    }
+    j.end_array();
+  });
+  write_member(out, "conicity_curve", [&](JsonWriter& j) {
+    j.begin_array();
+    for (const ConicityPoint& c : r.conicity_curve) {
+      j.begin_object().member("conicity", c.conicity).key("critical");
+      write_critical(j, c.critical);
+      j.member("verdict", to_string(c.verdict)).end_object();
+    }
+    j.end_array();
+  });
+  write_member(out, "contacts", [&](JsonWriter& j) {
+    j.begin_array();
+    for (const ResolvedContact& c : r.contacts) write_contact(j, c);
+    j.end_array();
+  });
+  write_member(out, "dofs", [&](JsonWriter& j) { j.value(r.dofs); });
+  write_member(out, "speeds_m_s", [&](JsonWriter& j) { j.value(r.speeds); });
+  write_member(out, "speeds_kmh", [&](JsonWriter& j) {
+    j.begin_array();
+    for (double v : r.speeds) j.value(v * kKmh);
+    j.end_array();
+  });
   out << ",\n  \"branches\": [";
   for (size_t k = 0; k < r.branches.size(); ++k) {
-    const HuntingBranch& b = r.branches[k];
-    json re = json::array(), im = json::array(), zeta = json::array(), f = json::array(), mac = json::array();
-    for (size_t i = 0; i < b.eigenvalues.size(); ++i) {
-      re.push_back(number_or_null(b.eigenvalues[i].real()));
-      im.push_back(number_or_null(b.eigenvalues[i].imag()));
-    }
-    for (double z : b.damping_ratio) zeta.push_back(number_or_null(z));
-    for (double x : b.frequency_hz) f.push_back(number_or_null(x));
-    for (double x : b.continuity) mac.push_back(number_or_null(x));
-    const json branch = {{"name", b.name},    {"veers", b.veers},      {"eigenvalue_re", re}, {"eigenvalue_im", im},
-                         {"frequency_hz", f}, {"damping_ratio", zeta}, {"continuity", mac}};
-    out << (k ? ",\n    " : "\n    ") << branch.dump();
+    out << (k ? ",\n    " : "\n    ");
+    JsonWriter j(out, -1);
+    write_branch(j, r.branches[k]);
   }
   out << (r.branches.empty() ? "]" : "\n  ]") << "\n}\n";
 }

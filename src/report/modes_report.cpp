@@ -1,12 +1,14 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
-#include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "railmodal/report.hpp"
+#include "report/csv_writer.hpp"
+#include "report/json_writer.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
 
@@ -26,16 +28,6 @@ std::string centre_text(const Mode& mode) {
   return s.str();
 }
 
-// Quantities that do not exist for a mode are written as blanks (CSV, table) or null
-// (JSON), never as inf or NaN.
-std::string number(double value, int precision, bool present) {
-  if (!present) return "";
-  std::ostringstream s;
-  s << std::setprecision(precision) << value;
-  return s.str();
-}
-
-using report::csv_field;
 using report::csv_heading;
 
 // The unit of a mass-normalised shape's entry (φᵀMφ = 1): the modal coordinate is in √kg·m, so
@@ -86,7 +78,7 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
           << report::right_cell(report::fixed(m.period_s, 4), 11)
           << report::right_cell(report::fixed(m.omega_rad_s, 3), 12);
     } else if (m.kind == ModeKind::unstable) {
-      out << std::setw(34) << ("diverges, σ = " + number(m.divergence_rate, 4, true) + " 1/s");
+      out << std::setw(34) << ("diverges, σ = " + report::significant(m.divergence_rate, 4) + " 1/s");
     } else {
       out << std::setw(34) << "rigid-body (λ = 0)";
     }
@@ -132,76 +124,93 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
 }
 
 void write_csv(std::ostream& out, const ModalResult& r) {
-  for (const auto& note : r.notes) out << "# note: " << note << "\n";  // absent for the book's wagons
-  out << "index,name,kind," << csv_heading("frequency", "Hz") << "," << csv_heading("period", "s") << ","
-      << csv_heading("omega", "rad/s") << "," << csv_heading("divergence_rate", "1/s") << ",centre_of_oscillation";
-  for (const auto& d : r.dofs) out << "," << csv_field(csv_heading(d.label, shape_unit(d)));
-  out << "\n";
+  report::CsvWriter csv(out);
+  for (const auto& note : r.notes) csv.line("# note: " + note);  // absent for the book's wagons
+  csv.field("index").field("name").field("kind").field(csv_heading("frequency", "Hz"))
+      .field(csv_heading("period", "s")).field(csv_heading("omega", "rad/s"))
+      .field(csv_heading("divergence_rate", "1/s")).field("centre_of_oscillation");
+  for (const auto& d : r.dofs) csv.field(csv_heading(d.label, shape_unit(d)));
+  csv.end_row();
+  // A quantity a mode does not have is a blank field.
+  const auto optional = [&csv](double value, bool present) -> report::CsvWriter& {
+    return present ? csv.field(value) : csv.blank();
+  };
   for (const auto& m : r.modes) {
     const bool osc = m.kind == ModeKind::oscillatory;
-    out << m.index << "," << csv_field(m.name) << "," << to_string(m.kind) << ","
-        << number(m.frequency_hz, 10, osc) << "," << number(m.period_s, 10, osc) << ","
-        << number(m.omega_rad_s, 10, osc) << ","
-        << number(m.divergence_rate, 10, m.kind == ModeKind::unstable) << ","
-        << csv_field(centre_text(m));
-    for (int i = 0; i < m.shape.size(); ++i) out << "," << number(m.shape(i), 10, true);
-    out << "\n";
+    csv.field(m.index).field(m.name).field(to_string(m.kind));
+    optional(m.frequency_hz, osc);
+    optional(m.period_s, osc);
+    optional(m.omega_rad_s, osc);
+    optional(m.divergence_rate, m.kind == ModeKind::unstable);
+    csv.field(centre_text(m));
+    for (int i = 0; i < m.shape.size(); ++i) csv.field(m.shape(i));
+    csv.end_row();
   }
 }
 
+std::vector<std::string> dof_labels(const std::vector<Dof>& dofs) {
+  std::vector<std::string> labels;
+  for (const Dof& d : dofs) labels.push_back(d.label);
+  return labels;
+}
+
+// Members in alphabetical order, as the files had them (json_writer.hpp).
+void write_mode(report::JsonWriter& j, const ModalResult& r, const Mode& m, const std::vector<size_t>& order) {
+  const bool osc = m.kind == ModeKind::oscillatory;
+  const std::optional<double> none;
+  j.begin_object();
+  j.key("centre_of_oscillation");
+  if (m.centre) {
+    j.begin_object();
+    j.member("about", m.centre->about).member("body", m.centre->body);
+    j.key(m.centre->about == "roll" ? "z_m" : "x_m");
+    j.value(m.centre->at_infinity ? none : std::optional<double>(m.centre->position));
+    j.end_object();
+  } else {
+    j.value(nullptr);
+  }
+  j.member("divergence_rate_per_s", m.kind == ModeKind::unstable ? std::optional<double>(m.divergence_rate) : none);
+  j.member("eigenvalue", m.eigenvalue);
+  j.member("frequency_hz", osc ? std::optional<double>(m.frequency_hz) : none);
+  j.member("index", m.index).member("kind", to_string(m.kind)).member("name", m.name);
+  j.member("omega_rad_s", osc ? std::optional<double>(m.omega_rad_s) : none);
+  j.member("period_s", osc ? std::optional<double>(m.period_s) : none);
+  j.member("repeated", m.repeated).member("residual", m.residual);
+  j.key("shape").begin_object();
+  for (size_t i : order) j.member(r.dofs[i].label, m.shape(static_cast<int>(i)));
+  j.end_object();
+  j.member("stable", m.kind != ModeKind::unstable);
+  j.end_object();
+}
+
 void write_json(std::ostream& out, const std::string& title, const ModalResult& r) {
-  using nlohmann::json;
-  json doc;
-  doc["vehicle"] = title;
-  doc["dofs"] = json::array();
-  for (const auto& d : r.dofs) doc["dofs"].push_back(d.label);
-  doc["modes"] = json::array();
-  for (const auto& m : r.modes) {
-    const bool osc = m.kind == ModeKind::oscillatory;
-    json j;
-    j["index"] = m.index;
-    j["name"] = m.name;
-    j["kind"] = to_string(m.kind);
-    j["repeated"] = m.repeated;
-    j["stable"] = m.kind != ModeKind::unstable;
-    j["eigenvalue"] = m.eigenvalue;
-    j["frequency_hz"] = osc ? json(m.frequency_hz) : json(nullptr);
-    j["period_s"] = osc ? json(m.period_s) : json(nullptr);
-    j["omega_rad_s"] = osc ? json(m.omega_rad_s) : json(nullptr);
-    j["divergence_rate_per_s"] = m.kind == ModeKind::unstable ? json(m.divergence_rate) : json(nullptr);
-    if (m.centre) {
-      json c;
-      c["body"] = m.centre->body;
-      c["about"] = m.centre->about;
-      c[m.centre->about == "roll" ? "z_m" : "x_m"] = m.centre->at_infinity ? json(nullptr) : json(m.centre->position);
-      j["centre_of_oscillation"] = c;
-    } else {
-      j["centre_of_oscillation"] = nullptr;
-    }
-    j["residual"] = m.residual;
-    json shape = json::object();
-    for (size_t i = 0; i < r.dofs.size(); ++i) shape[r.dofs[i].label] = m.shape(static_cast<int>(i));
-    j["shape"] = shape;
-    doc["modes"].push_back(j);
+  report::JsonWriter j(out);
+  j.begin_object();
+  j.member("condensed", r.condensed);
+  j.key("dofs").begin_array();
+  for (const auto& d : r.dofs) j.value(d.label);
+  j.end_array();
+  j.member("max_residual", r.max_residual);
+  const std::vector<size_t> order = report::member_order(dof_labels(r.dofs));  // the shapes' members
+  j.key("modes").begin_array();
+  for (const auto& m : r.modes) write_mode(j, r, m, order);
+  j.end_array();
+  if (!r.notes.empty()) j.member("notes", r.notes);  // absent for the book's wagons: their files stay as they were
+  j.member("orthonormality_error", r.orthonormality_error);
+  j.key("solver").begin_object();
+  const SolverSummary& s = r.solver;
+  if (s.solver == ModalSolver::arpack) {
+    j.member("count_checked", s.count_checked).member("factorisation", s.factorisation);
+    j.member("name", to_string(s.solver));
+    j.member("operator_applications", s.operator_applications).member("requested", s.requested);
+    j.member("restarts", s.restarts).member("runs", s.runs).member("shift", s.shift);
+    j.member("subspace_size", s.subspace_size);
+  } else {
+    j.member("name", to_string(s.solver));
   }
-  doc["condensed"] = r.condensed;
-  doc["max_residual"] = r.max_residual;
-  doc["orthonormality_error"] = r.orthonormality_error;
-  json solver;
-  solver["name"] = to_string(r.solver.solver);
-  if (r.solver.solver == ModalSolver::arpack) {
-    solver["shift"] = r.solver.shift;
-    solver["factorisation"] = r.solver.factorisation;
-    solver["requested"] = r.solver.requested;
-    solver["subspace_size"] = r.solver.subspace_size;
-    solver["restarts"] = r.solver.restarts;
-    solver["operator_applications"] = r.solver.operator_applications;
-    solver["runs"] = r.solver.runs;
-    solver["count_checked"] = r.solver.count_checked;
-  }
-  doc["solver"] = solver;
-  if (!r.notes.empty()) doc["notes"] = r.notes;  // absent for the book's wagons: their files stay as they were
-  out << doc.dump(2) << "\n";
+  j.end_object();
+  j.member("vehicle", title);
+  j.end_object();
 }
 
 }  // namespace

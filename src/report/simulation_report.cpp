@@ -3,57 +3,77 @@
 // simulation runs (CsvHistoryWriter), a JSON one from its record a bounded chunk at a time.
 #include "railmodal/simulation_report.hpp"
 
-#include <iomanip>
+#include <cmath>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "report/json_writer.hpp"
+#include "report/number_text.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
 
 namespace railmodal {
 namespace {
 
-// Numbers as nlohmann::json writes them (the shortest text that reads back the same double;
-// null for NaN and infinities), without a document of them all: a chunk at a time.
+// A JSON array of numbers, compact, as number_text writes them (null for NaN and infinities, as
+// nlohmann::json wrote them), a bounded chunk of text at a time.
 void write_numbers(std::ostream& out, const Eigen::Ref<const Eigen::VectorXd>& values) {
-  constexpr Eigen::Index kChunk = 4096;
-  out << '[';
-  for (Eigen::Index first = 0; first < values.size(); first += kChunk) {
-    const Eigen::Index count = std::min(kChunk, values.size() - first);
-    const std::string text =
-        nlohmann::json(std::vector<double>(values.data() + first, values.data() + first + count)).dump();
-    if (first > 0) out << ',';
-    out.write(text.data() + 1, static_cast<std::streamsize>(text.size() - 2));  // without its brackets
+  std::string text = "[";
+  char number[report::kNumberTextMax];
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    if (i > 0) text += ',';
+    if (std::isfinite(values(i)))
+      text.append(number, report::write_number(number, values(i), report::NumberStyle::json));
+    else
+      text += "null";
+    if (text.size() > (1 << 16)) out.write(text.data(), static_cast<std::streamsize>(text.size())), text.clear();
   }
-  out << ']';
+  text += ']';
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+}
+
+std::string json_string(const std::string& text) {
+  std::string quoted;
+  report::append_json_string(quoted, text);
+  return quoted;
 }
 
 // {"displacement", "events", "integration_steps", "scene", "time_s"}: the keys in the order a
-// nlohmann::json object (a std::map) writes them, so the text is the one its dump() gave.
+// nlohmann::json object (a std::map) wrote them, so the text kept the layout its dump() gave.
 void write_history_json(std::ostream& out, const TimeHistory& h, const Scene& scene, const Vehicle& vehicle) {
-  using nlohmann::json;
   std::map<std::string, int> columns;  // by label, as the object orders its keys
   for (int c : output_columns(h, scene)) columns.emplace(h.labels[c], c);
   out << "{\"displacement\":{";
   for (auto at = columns.begin(); at != columns.end(); ++at) {
-    out << (at == columns.begin() ? "" : ",") << json(at->first).dump() << ':';
+    out << (at == columns.begin() ? "" : ",") << json_string(at->first) << ':';
     write_numbers(out, h.displacement.col(at->second));
   }
   out << '}';
   if (scene_effects(scene).any()) {  // the nonlinear path: its stick/slip/kink events
     out << ",\"events\":[";
     for (size_t e = 0; e < h.events.size(); ++e)
-      out << (e == 0 ? "" : ",")
-          << json({{"time_s", h.events[e].time},
-                   {"element", vehicle.elements.at(h.events[e].element).name},
-                   {"kind", to_string(h.events[e].kind)}})
-                 .dump();
-    out << "],\"integration_steps\":" << json(h.steps_taken).dump();
+      out << (e == 0 ? "" : ",") << "{\"element\":" << json_string(vehicle.elements.at(h.events[e].element).name)
+          << ",\"kind\":" << json_string(to_string(h.events[e].kind)) << ",\"time_s\":"
+          << (std::isfinite(h.events[e].time) ? report::number_text(h.events[e].time, report::NumberStyle::json)
+                                              : "null")
+          << '}';
+    out << "],\"integration_steps\":" << h.steps_taken;
   }
-  out << ",\"scene\":" << json(scene.name).dump() << ",\"time_s\":";
+  out << ",\"scene\":" << json_string(scene.name) << ",\"time_s\":";
   write_numbers(out, h.time);
   out << "}\n";
+}
+
+// One CSV row of numbers, as number_text writes them (inf and nan as iostreams wrote them).
+void append_row(std::string& text, double first, const Eigen::Ref<const Eigen::MatrixXd>& values, Eigen::Index row,
+                const std::vector<int>& columns) {
+  char number[report::kNumberTextMax];
+  text.append(number, report::write_number(number, first, report::NumberStyle::csv));
+  for (int c : columns) {
+    text += ',';
+    text.append(number, report::write_number(number, values(row, c), report::NumberStyle::csv));
+  }
+  text += '\n';
 }
 
 }  // namespace
@@ -62,7 +82,7 @@ CsvHistoryWriter::CsvHistoryWriter(std::ostream& out, const Scene& scene) : out_
 
 void CsvHistoryWriter::begin(const std::vector<std::string>& labels, Eigen::Index) {
   columns_ = output_columns(labels, scene_);
-  out_ << std::setprecision(10) << report::csv_heading("time", "s");
+  out_ << report::csv_heading("time", "s");
   for (int c : columns_)
     out_ << "," << report::csv_field(report::csv_heading(labels[c], report::displacement_unit(labels[c])));
   out_ << "\n";
@@ -71,11 +91,12 @@ void CsvHistoryWriter::begin(const std::vector<std::string>& labels, Eigen::Inde
 void CsvHistoryWriter::write(const Eigen::Ref<const Eigen::VectorXd>& time,
                              const Eigen::Ref<const Eigen::MatrixXd>& displacement,
                              const Eigen::Ref<const Eigen::MatrixXd>&) {
+  std::string text;
   for (Eigen::Index i = 0; i < time.size(); ++i) {
-    out_ << time(i);
-    for (int c : columns_) out_ << "," << displacement(i, c);
-    out_ << "\n";
+    append_row(text, time(i), displacement, i, columns_);
+    if (text.size() > (1 << 16)) out_.write(text.data(), static_cast<std::streamsize>(text.size())), text.clear();
   }
+  out_.write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
 void write_time_history(std::ostream& out, const TimeHistory& history, const Scene& scene, const Vehicle& vehicle,
@@ -95,16 +116,23 @@ void write_time_history(std::ostream& out, const TimeHistory& history, const Sce
 void write_spectra(std::ostream& out, const OutputSpectra& spectra, OutputFormat format) {
   if (format != OutputFormat::csv)
     throw std::invalid_argument(report::unwritten_format("write_spectra", "csv", format));
-  out << std::setprecision(10) << report::csv_heading("frequency", "Hz");  // spectra of displacements
+  out << report::csv_heading("frequency", "Hz");  // spectra of displacements
   for (const std::string& dof : spectra.dofs)
     out << "," << report::csv_field(report::csv_heading(dof, report::displacement_unit(dof)));
   out << "\n";
   const std::vector<Spectrum>& s = spectra.spectra;
+  std::string text;
+  char number[report::kNumberTextMax];
   for (Eigen::Index b = 0; !s.empty() && b < s.front().amplitude.size(); ++b) {
-    out << s.front().frequency(b);
-    for (const Spectrum& spectrum : s) out << "," << spectrum.amplitude(b);
-    out << "\n";
+    text.append(number, report::write_number(number, s.front().frequency(b), report::NumberStyle::csv));
+    for (const Spectrum& spectrum : s) {
+      text += ',';
+      text.append(number, report::write_number(number, spectrum.amplitude(b), report::NumberStyle::csv));
+    }
+    text += '\n';
+    if (text.size() > (1 << 16)) out.write(text.data(), static_cast<std::streamsize>(text.size())), text.clear();
   }
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
 }
 
 }  // namespace railmodal
