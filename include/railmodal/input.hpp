@@ -33,7 +33,8 @@ double parse_speed(const std::string& text);
 /// Speeds written as a list, "100 km/h, 160 km/h, 200 km/h", or as a range "MIN:MAX:STEP":
 /// from MIN to MAX, both included, evenly spaced at most STEP apart ("100 km/h:200 km/h:20 km/h"
 /// is 100, 120, … 200 km/h); "MIN:MAX" alone is 11 speeds. Each speed as parse_speed reads it,
-/// above zero; at most 10 000 speeds; returned in m/s, in the order written (a range
+/// above zero, and with its unit (a bare number is refused: it would be m/s, and no unit
+/// carries from one speed of a list to the next); at most 10 000 speeds; returned in m/s, in the order written (a range
 /// increasing). For the ride's speeds (railmodal ride --speeds, a scene's [ride] speeds).
 /// Throws std::invalid_argument saying what is wrong.
 std::vector<double> parse_speeds(const std::string& text);

@@ -116,6 +116,11 @@ struct RideOptions {
   /// Δz to become the roll angle Δz/(2b); 0: the wheelsets' contact_half_spacing where the
   /// vehicle has wheelsets, else 0.75 m (standard gauge, 1.5 m between contact points).
   double contact_half_spacing = 0.0;
+  /// r0, m: the rail top lies r0 below the axle plane (the vehicle frame's z = 0), and the
+  /// cross-level rolls the rails about it, so a track input at height z moves sideways by
+  /// −θ·(z + r0) (docs/ride.md, "The track"); 0: the rolling_radius of the wheelset the input's
+  /// element stands on (else the first wheelset's), and without wheelsets 0 with a note.
+  double rolling_radius = 0.0;
   /// T, s: the averaging time of the weighted RMS whose 95th percentile is estimated (EN 12299:
   /// 5 s).
   double percentile_window = 5.0;
@@ -161,6 +166,12 @@ struct RideOutputAtSpeed {
   std::optional<double> p95_estimate;
   std::vector<ModalContribution> modes;  ///< largest first; empty when unbounded
   double cross_term_variance = 0.0;      ///< σ² − Σ modes' variance (see ModalContribution)
+  /// The variance of the output's direct track term alone, ∫|D|²G df, unit² (0 without one):
+  /// the part no mode carries, −k·u in the force of an element standing on the track. It is
+  /// inside cross_term_variance with its cross terms; where it and the modes cancel (a spring
+  /// force at low frequency) σ² is small and a mode's share can read far above 100 %, so the
+  /// reports show this term beside the shares.
+  double direct_variance = 0.0;
   Eigen::VectorXd psd;  ///< one-sided, unit²/Hz on RideResult::frequencies (keep_spectra)
 };
 
@@ -203,11 +214,16 @@ struct RideResult {
   /// The track spectra's names (TrackSpectrum::name()) in RideAtSpeed::input_psd order, for
   /// the report's legend; empty: the report says "input 1", "input 2", …
   std::vector<std::string> inputs;
+  /// The RMS of each track component over its own band (TrackSpectrum::rms()), in `inputs`
+  /// order: m (cross-level: the height difference Δz).
+  std::vector<double> input_rms;
 };
 
 /// The ride of `system` on `track` at every speed of `options`. Throws std::invalid_argument for invalid options, an
-/// output that names no body, element or wheelset of the system (naming it), a spectrum whose kind does not match its
-/// slot, no component at all, an element on the track through a series damper, and what the ride does not model yet
+/// output that names no body, element or wheelset of the system (naming it and the valid names), an output the system
+/// cannot move (a lateral output on vertical degrees of freedom), a spectrum whose kind does not match its slot, a
+/// component that reaches no degree of freedom (alignment on a vertical model), a component whose temporal band lies
+/// wholly outside the grid at a speed, no component at all, an element on the track through a series damper, and what the ride does not model yet
 /// on wheelsets, the lateral wheel–rail contact (creep): alignment, cross-level with lateral degrees of freedom, and a
 /// lateral or longitudinal wheel-rail-force output. Throws railmodal::NumericalError naming the frequency where the
 /// dynamic stiffness is singular off an undamped mode. An undamped excited mode is an answer (`unbounded`), no throw.

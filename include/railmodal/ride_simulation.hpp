@@ -76,13 +76,17 @@ struct RideSimulationOptions {
   /// s, ≥ 0: simulated but not evaluated, so the start-up transient is left out.
   double settle_time = 0.0;
   /// Vehicle effects the scene names (SimulationSpec::effects); nothing else is simulated.
-  /// Not built in the time domain yet: simulate_ride refuses any effect by name.
+  /// They run through the nonlinear simulation on the sampled track, simulated and not
+  /// linearised (docs/ride.md, "Friction in time").
   NonlinearEffects effects;
   double window = 5.0;  ///< s: EN 12299's averaging time of the weighted RMS values
   /// b, half the distance between the contact points, m, for a cross-level Δz to become the
   /// roll angle Δz/(2b) (as RideOptions::contact_half_spacing); 0: the wheelsets'
   /// contact_half_spacing where the vehicle has wheelsets, else 0.75 m.
   double contact_half_spacing = 0.0;
+  /// r0, m: the rail top below the axle plane, about which cross-level rolls the rails (as
+  /// RideOptions::rolling_radius); 0: the wheelsets' rolling_radius, else 0.
+  double rolling_radius = 0.0;
   bool is_valid(std::string* why) const;
 };
 
@@ -133,7 +137,7 @@ struct RideSimulationResult {
 /// periodic geometry over one period from its periodic steady state, a measured one from rest.
 /// Throws std::invalid_argument for invalid options, a geometry too short for the run, an
 /// output naming nothing in the system, and for what the time domain does not build yet
-/// (nonlinear effects, element and wheel–rail forces, series dampers, massless DOFs).
+/// (element and wheel–rail forces, series dampers, massless DOFs).
 RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeometry& geometry,
                                    const std::vector<RideOutput>& outputs, const RideSimulationOptions& options);
 

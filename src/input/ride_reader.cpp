@@ -41,6 +41,7 @@ void read_options(TableReader& t, RideOptions& o) {
   o.modes = t.optional_count("modes", 0).value_or(o.modes);
   o.contact_half_spacing =
       t.optional_positive("contact_half_spacing", Quantity::length).value_or(o.contact_half_spacing);
+  o.rolling_radius = t.optional_positive("rolling_radius", Quantity::length).value_or(o.rolling_radius);
   o.percentile_window = t.optional_positive("percentile_window", Quantity::time).value_or(o.percentile_window);
   o.friction_tolerance = t.optional_positive("friction_tolerance", Quantity::dimensionless).value_or(o.friction_tolerance);
   if (!(o.friction_tolerance < 0.1)) t.fail("friction_tolerance", "is a relative tolerance, below 0.1 (default 1e-6)");
@@ -126,6 +127,7 @@ RideSimulationOptions read_simulation(TableReader t, const RideOptions& ride) {
   s.settle_time = t.optional_positive("settle_time", Quantity::time, true).value_or(0.0);
   s.window = t.optional_positive("window", Quantity::time).value_or(ride.percentile_window);
   s.contact_half_spacing = ride.contact_half_spacing;
+  s.rolling_radius = ride.rolling_radius;
   if (t.has("effects"))
     for (const std::string& effect : t.strings("effects")) {
       if (effect == "leaf_friction") s.effects.leaf_friction = true;

@@ -1,6 +1,7 @@
 // Speeds as the files write them, for command lines and [ride] tables: one reading of units
 // for files and options.
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "input/units.hpp"
@@ -20,7 +21,19 @@ std::string trimmed(const std::string& text) {
   return first == std::string::npos ? "" : text.substr(first, last - first + 1);
 }
 
+// A bare number is refused in a list or range of speeds: "100" would be 100 m/s (360 km/h), and
+// a unit written on one speed of a list does not carry to the others.
+bool bare_number(const std::string& text) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  return end == text.c_str() + text.size();
+}
+
 double positive_speed(const std::string& text) {
+  if (bare_number(trimmed(text)))
+    throw std::invalid_argument("give every speed its unit, such as \"" + trimmed(text) + " km/h\" or \"" +
+                                trimmed(text) + " m/s\": got the bare number '" + trimmed(text) + "'");
   const double v = parse_speed(trimmed(text));
   if (!(v > 0.0) || !std::isfinite(v)) throw std::invalid_argument("a speed must be above zero, got '" + trimmed(text) + "'");
   return v;

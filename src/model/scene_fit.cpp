@@ -53,7 +53,9 @@ void check_ride_output(const Scene& scene, const LinearSystem& system, const Rid
   }
   for (const Element& e : v.elements)
     if (e.name == o.element) return;
-  fail_at(scene, at + "element", at + "element", "the vehicle has no element '" + o.element + "'");
+  fail_at(scene, at + "element", at + "element",
+          "the vehicle has no element '" + o.element + "' (" +
+              list(v.elements, [](const Element& e) { return e.name; }) + ")");
 }
 
 }  // namespace

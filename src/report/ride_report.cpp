@@ -52,6 +52,12 @@ std::string psd_key_suffix(const RideOutput& o) {
   return u == "m" ? "m2_per_hz" : u == "m/s" ? "m2_s2_per_hz" : u == "N" ? "n2_per_hz" : "m2_s4_per_hz";
 }
 
+// The unit of a variance of the output: "m2", "m2_s2", "n2", "m2_s4" (its PSD's per hertz).
+std::string variance_key_suffix(const RideOutput& o) {
+  const std::string psd = psd_key_suffix(o);
+  return psd.substr(0, psd.size() - std::string("_per_hz").size());
+}
+
 std::string kmh(double speed) { return fixed(speed * kKmh, 1) + " km/h"; }
 // Four significant digits with their trailing zeros ("0.1500", not "0.15"), so that a column
 // reads at one precision; from 1000 on, whole units.
@@ -82,7 +88,12 @@ std::string mode_name(const RideResult& r, int mode) {
 // "body bounce (1.02 Hz) 71 %; body pitch (1.31 Hz) 18 %": the largest shares of the variance
 // (semicolons: mode names have commas).
 std::string dominant_modes(const RideResult& r, const RideOutputAtSpeed& o) {
+  // The direct track term first, where there is one: its share beside the modes' says when they
+  // cancel (a mode's share above 100 %).
   std::string text;
+  const double variance = o.rms * o.rms;
+  if (o.direct_variance > 0.0 && variance > 0.0)
+    text = "direct track term " + fixed(100.0 * o.direct_variance / variance, 0) + " %";
   for (size_t k = 0; k < o.modes.size() && k < kDominantModes; ++k) {
     if (k > 0 && o.modes[k].share < kSmallestShownShare) break;
     text += (text.empty() ? "" : "; ") + mode_name(r, o.modes[k].mode) + " " + fixed(100.0 * o.modes[k].share, 0) + " %";
@@ -189,6 +200,15 @@ void write_text_table(std::ostream& out, const Table& t) {
   for (const auto& row : t.rows) write_row(row);
 }
 
+// "; track RMS over each band: ORE B176 low, vertical level 2.36 mm, …" (RideResult::input_rms).
+std::string track_rms_text(const RideResult& r) {
+  std::string text;
+  for (size_t k = 0; k < r.input_rms.size() && k < r.inputs.size(); ++k)
+    text += (k ? ", " : "; track RMS over each band: ") + r.inputs[k] + " " + significant(1000.0 * r.input_rms[k], 3) +
+            " mm";
+  return text;
+}
+
 std::string method_text(const RideResult& r) {
   if (r.frequencies.size() == 0)
     return "No frequency-domain ride: the track is a geometry file, which has no spectrum; the time-domain run below "
@@ -198,7 +218,7 @@ std::string method_text(const RideResult& r) {
                                      significant(r.frequencies[r.frequencies.size() - 1], 3) + " Hz"
                                : std::string("–")) +
          "; grid error estimate " + significant(100.0 * r.grid_error_estimate, 2) + " % of an RMS; friction: " +
-         (r.friction_treatment.empty() ? std::string("none in the vehicle") : r.friction_treatment);
+         (r.friction_treatment.empty() ? std::string("none in the vehicle") : r.friction_treatment) + track_rms_text(r);
 }
 
 constexpr const char* kEstimateNote =
@@ -206,7 +226,8 @@ constexpr const char* kEstimateNote =
     "N_MV = 6·√(P95x² + P95y² + P95z²) (EN 12299) from those estimates. Wz: Sperling's index from the B-weighted "
     "RMS (filter form). Dominant modes: each mode's share is the variance of its term alone over the output's "
     "variance; the cross terms between modes make up the rest and may be negative, so a share can exceed 100 % "
-    "(a suspension force, which also follows the track directly, shows this most).";
+    "(a suspension force, which also follows the track directly, shows this most: the share of its direct track "
+    "term alone comes first).";
 
 // The time-domain notes with those that differ only in the output they begin with ("floor at
 // mid-car, vertical: P95 over the 36 complete windows …") written once, naming how many.
@@ -612,9 +633,13 @@ nlohmann::json at_speed_json(const RideResult& r, const RideAtSpeed& at) {
       j["sperling_wz"] = optional_json(o.sperling_wz);
       nlohmann::json modes = nlohmann::json::array();
       for (const ModalContribution& m : o.modes)
-        modes.push_back({{"mode", m.mode}, {"variance", m.variance}, {"share", m.share}});
+        // 1-based, as the reports' tables number the modes
+        modes.push_back({{"mode", m.mode + 1},
+                         {"variance_" + variance_key_suffix(r.outputs[i]), m.variance},
+                         {"share", m.share}});
       j["modes"] = modes;
-      j["cross_term_variance"] = o.cross_term_variance;
+      j["cross_term_variance_" + variance_key_suffix(r.outputs[i])] = o.cross_term_variance;
+      j["direct_variance_" + variance_key_suffix(r.outputs[i])] = o.direct_variance;
       if (o.psd.size() > 0) j["psd_" + psd_key_suffix(r.outputs[i])] = vector_json(o.psd);
     }
     outputs.push_back(j);
@@ -635,7 +660,8 @@ nlohmann::json summary_json(const AnalysisSummary& s) {
     checks.push_back({{"name", c.name},
                       {"value", std::isfinite(c.value) ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
                       {"limit", std::isfinite(c.limit) ? nlohmann::json(c.limit) : nlohmann::json(nullptr)},
-                      {"passed", c.passed}});
+                      // a figure reported without a bound neither passes nor fails
+                      {"passed", std::isfinite(c.limit) ? nlohmann::json(c.passed) : nlohmann::json(nullptr)}});
   return {{"analysis", s.analysis}, {"method", s.method}, {"checks", checks}};
 }
 
@@ -676,6 +702,10 @@ void write_json(std::ostream& out, const Page& p) {
   member("friction_treatment", r.friction_treatment);
   member("grid_error_estimate", r.grid_error_estimate);
   member("notes", r.notes);
+  json track = json::array();
+  for (size_t k = 0; k < r.input_rms.size() && k < r.inputs.size(); ++k)
+    track.push_back({{"name", r.inputs[k]}, {"rms_m", r.input_rms[k]}});
+  member("track_rms", track);
   member("summary", summary_json(r.summary));
   member("modes", modes);
   member("outputs", outputs);

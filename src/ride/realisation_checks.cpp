@@ -57,8 +57,7 @@ class ComponentResponse {
       const Complex lag = std::polar(1.0, -omega * track_.lag(i) / speed_);
       if (component_ == TrackIrregularity::alignment) w(3 * i + 1) = lag;
       if (component_ == TrackIrregularity::vertical_level) w(3 * i + 2) = lag;
-      if (component_ == TrackIrregularity::cross_level)
-        w(3 * i + 2) = lag * track_.lateral_position(i) / (2.0 * track_.half_spacing());
+      if (component_ == TrackIrregularity::cross_level) w.segment<3>(3 * i) = lag * track_.cross_level(i).cast<Complex>();
     }
     return w;
   }
@@ -98,7 +97,8 @@ double exact_bin_error(const LinearSystem& system, const TrackGeometry& geometry
                        const RideSimulationResult& simulated, const RideSimulationOptions& options) {
   const RideStateSpace model = ride_state_space(system);
   const std::vector<OutputRow> rows = output_rows(system, model, simulated.outputs);
-  const TrackUnderWheels track(system, geometry, contact_half_spacing(system, options.contact_half_spacing));
+  const TrackUnderWheels track(system, geometry,
+                               cross_level_directions(system, options.contact_half_spacing, options.rolling_radius));
   const Eigen::Index n = static_cast<Eigen::Index>(std::llround(track.end() / geometry.step)) + 1;
   const Eigen::Index ne = simulated.time.size();
   if (!geometry.periodic || ne % n != 0)
@@ -211,7 +211,8 @@ RideFftChecks check_ride_realisation(const LinearSystem& system, const TrackIrre
   RideOptions ride_options;
   ride_options.speeds = {options.speed};
   std::tie(ride_options.min_frequency, ride_options.max_frequency) = temporal_band(track, options.speed);
-  ride_options.contact_half_spacing = ride::contact_half_spacing(system, options.contact_half_spacing);
+  ride_options.contact_half_spacing = options.contact_half_spacing;  // one convention (cross_level_directions)
+  ride_options.rolling_radius = options.rolling_radius;
   const RideResult ride = solve_ride(system, track, simulated.outputs, ride_options);
   bool bounded = true;
   for (size_t o = 0; o < simulated.outputs.size(); ++o) {

@@ -55,6 +55,8 @@ bool RideOptions::is_valid(std::string* why) const {
   if (modes < 0) return invalid(why, "modes must not be negative (0: direct solve)");
   if (!(contact_half_spacing >= 0.0) || !std::isfinite(contact_half_spacing))
     return invalid(why, "contact_half_spacing must be finite and not negative (0: from the wheelsets)");
+  if (!(rolling_radius >= 0.0) || !std::isfinite(rolling_radius))
+    return invalid(why, "rolling_radius must be finite and not negative (0: from the wheelsets)");
   if (!(percentile_window > 0.0) || !std::isfinite(percentile_window))
     return invalid(why, "percentile_window must be positive and finite");
   if (!(friction_tolerance > 0.0) || !(friction_tolerance < 1.0))

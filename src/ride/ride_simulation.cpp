@@ -191,26 +191,29 @@ RideHistory history(const RideOutput& output, const Eigen::VectorXd& run, const 
   return h;
 }
 
-// N_MV per floor point from the P95 of its acceleration outputs (an axis without one counts 0).
+// N_MV per floor point: EN 12299 combines the three axes' P95 of the same 5-minute zone, and
+// the point's figure is the largest over the zones (not the axes' worst zones combined).
 std::vector<RideComfortAtPoint> comfort(const std::vector<RideOutput>& outputs, const std::vector<RideHistory>& histories) {
-  std::map<std::tuple<std::string, double, double, double>, std::array<std::optional<double>, 3>> points;
-  std::vector<std::tuple<std::string, double, double, double>> order;
+  using Key = std::tuple<std::string, double, double, double>;
+  std::map<Key, std::array<std::optional<Eigen::VectorXd>, 3>> points;  // per axis: its zones' P95
+  std::vector<Key> order;
   for (size_t j = 0; j < outputs.size(); ++j) {
     const RideOutput& o = outputs[j];
     if (o.kind != RideOutput::Kind::point || o.quantity != ResponseQuantity::acceleration || !histories[j].p95) continue;
-    const auto key = std::make_tuple(o.body, o.point.x(), o.point.y(), o.point.z());
+    const Key key = std::make_tuple(o.body, o.point.x(), o.point.y(), o.point.z());
     if (!points.count(key)) order.push_back(key);
-    points[key][static_cast<int>(o.axis)] = histories[j].p95;
+    points[key][static_cast<int>(o.axis)] = ride::zone_p95s(histories[j].window_rms, kWindowsPerZone);
   }
   std::vector<RideComfortAtPoint> out;
-  for (const auto& key : order) {
+  for (const Key& key : order) {
     RideComfortAtPoint c;
     c.body = std::get<0>(key);
     c.point = {std::get<1>(key), std::get<2>(key), std::get<3>(key)};
     const auto& p95 = points[key];
     for (RideAxis axis : {RideAxis::longitudinal, RideAxis::lateral, RideAxis::vertical})
       if (!p95[static_cast<int>(axis)]) c.missing_axes.push_back(axis);
-    c.nmv_estimate = en12299_nmv(p95[0].value_or(0.0), p95[1].value_or(0.0), p95[2].value_or(0.0));
+    auto axis = [&](int k) { return p95[k] ? &*p95[k] : nullptr; };
+    c.nmv_estimate = ride::zone_nmv(axis(0), axis(1), axis(2));
     out.push_back(c);
   }
   return out;
@@ -224,6 +227,7 @@ bool RideSimulationOptions::is_valid(std::string* why) const {
   if (!finite_at_least(settle_time, 0.0)) return invalid(why, "settle_time must be finite and >= 0");
   if (!(std::isfinite(window) && window > 0.0)) return invalid(why, "window must be positive and finite");
   if (!finite_at_least(contact_half_spacing, 0.0)) return invalid(why, "contact_half_spacing must be finite and >= 0");
+  if (!finite_at_least(rolling_radius, 0.0)) return invalid(why, "rolling_radius must be finite and >= 0");
   return true;
 }
 
@@ -237,7 +241,8 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
   StageClock clock(&result.summary);
   const ride::RideStateSpace model = ride::ride_state_space(system);
   const std::vector<ride::OutputRow> rows = ride::output_rows(system, model, outputs);
-  const ride::TrackUnderWheels track(system, geometry, ride::contact_half_spacing(system, options.contact_half_spacing));
+  const ride::TrackUnderWheels track(
+      system, geometry, ride::cross_level_directions(system, options.contact_half_spacing, options.rolling_radius));
   const RunPlan plan = plan_run(geometry, samples, track, options, &result.notes);
   Eigen::MatrixXd y;
   if (options.effects.any()) {

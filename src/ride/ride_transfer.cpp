@@ -13,6 +13,7 @@
 #include "model/point_motion.hpp"
 #include "model/wheelset_dofs.hpp"
 #include "railmodal/errors.hpp"
+#include "ride/track_under_wheels.hpp"
 #include "shortest_text.hpp"
 
 namespace railmodal::ride {
@@ -36,6 +37,22 @@ int element_index(const LinearSystem& system, const std::string& name) {
   return -1;
 }
 
+// "valid: 'a', 'b'": the names an output may give, for its error.
+template <typename Items, typename Name>
+std::string valid_names(const Items& items, Name name) {
+  std::string out;
+  for (const auto& item : items) out += (out.empty() ? "'" : ", '") + name(item) + "'";
+  return " (valid: " + (out.empty() ? std::string("none") : out) + ")";
+}
+
+std::string body_names(const LinearSystem& s) { return valid_names(s.vehicle.bodies, [](const Body& b) { return b.name; }); }
+std::string element_names(const LinearSystem& s) {
+  return valid_names(s.vehicle.elements, [](const Element& e) { return e.name; });
+}
+std::string wheelset_names(const LinearSystem& s) {
+  return valid_names(s.vehicle.wheelsets, [](const Wheelset& w) { return w.body; });
+}
+
 int input_of(const LinearSystem& system, int element) {
   for (size_t i = 0; i < system.track_inputs.size(); ++i)
     if (system.track_inputs[i].element == element) return static_cast<int>(i);
@@ -50,21 +67,19 @@ bool has_lateral_dofs(const LinearSystem& system) {
   return false;
 }
 
-// b for the track input standing on `element`: the option, else its wheelset's l0 (the first
-// wheelset's for an element on none), else standard gauge's 0.75 m.
-double half_spacing(const LinearSystem& system, int element, double option) {
-  if (option > 0.0) return option;
-  const Vehicle& v = system.vehicle;
-  if (v.wheelsets.empty()) return 0.75;
-  const Element& e = v.elements[element];
-  for (const Wheelset& w : v.wheelsets)
-    if (w.body == e.lower && w.contact.contact_half_spacing > 0.0) return w.contact.contact_half_spacing;
-  return v.wheelsets.front().contact.contact_half_spacing > 0.0 ? v.wheelsets.front().contact.contact_half_spacing
-                                                                  : 0.75;
+// Whether the component moves any input in a direction the DOFs feel (a load, stiff or viscous).
+bool reaches_dofs(const LinearSystem& system, const Component& c) {
+  for (size_t i = 0; i < system.track_inputs.size(); ++i) {
+    const TrackInput& t = system.track_inputs[i];
+    if ((t.load_per_displacement * c.displacement[i]).cwiseAbs().maxCoeff() > 0.0 ||
+        (t.load_per_velocity * c.displacement[i]).cwiseAbs().maxCoeff() > 0.0)
+      return true;
+  }
+  return false;
 }
 
 Component component(const LinearSystem& system, TrackIrregularity slot, const TrackSpectrum& spectrum,
-                    double contact_half_spacing) {
+                    double contact_half_spacing, double rolling_radius) {
   if (spectrum.irregularity() != slot)
     throw std::invalid_argument(std::string("ride: the ") + to_string(slot) + " slot holds a " +
                                 to_string(spectrum.irregularity()) + " spectrum (" + spectrum.name() + ")");
@@ -76,17 +91,18 @@ Component component(const LinearSystem& system, TrackIrregularity slot, const Tr
                                 "(creep), which the ride does not model yet; leave it out, or give the vertical "
                                 "degrees of freedom only (cross-level)");
   Component c{slot, spectrum, {}};
-  for (const TrackInput& t : system.track_inputs) {
-    Eigen::Vector3d u = Eigen::Vector3d::Zero();
-    if (slot == TrackIrregularity::vertical_level) u(2) = 1.0;
-    if (slot == TrackIrregularity::alignment) u(1) = 1.0;
-    if (slot == TrackIrregularity::cross_level) {
-      const double two_b = 2.0 * half_spacing(system, t.element, contact_half_spacing);
-      u(1) = -t.point.z() / two_b;
-      u(2) = t.point.y() / two_b;
-    }
-    c.displacement.push_back(u);
-  }
+  if (slot == TrackIrregularity::cross_level)
+    c.displacement = cross_level_directions(system, contact_half_spacing, rolling_radius);
+  else
+    c.displacement.assign(system.track_inputs.size(), slot == TrackIrregularity::vertical_level
+                                                          ? Eigen::Vector3d::UnitZ()
+                                                          : Eigen::Vector3d::UnitY());
+  if (!reaches_dofs(system, c))
+    throw std::invalid_argument(std::string("ride: the ") + to_string(slot) + " component (" + spectrum.name() +
+                                ") moves no degree of freedom of this model (" +
+                                (slot == TrackIrregularity::vertical_level ? "no vertical" : "no lateral or roll") +
+                                " motion reaches the track inputs); its answer would be zero: leave it out, or give "
+                                "the degrees of freedom it acts on (dofs = \"all\")");
   return c;
 }
 
@@ -168,7 +184,8 @@ OutputMap wheel_rail_map(const LinearSystem& system, const RideOutput& o, const 
   const Vehicle& v = system.vehicle;
   const int body = body_index(system, o.element);
   if (body < 0 || !model::wheelset_of(v, o.element))
-    throw std::invalid_argument("ride: output '" + o.name + "': no wheelset '" + o.element + "'");
+    throw std::invalid_argument("ride: output '" + o.name + "': no wheelset '" + o.element + "'" +
+                                wheelset_names(system));
   if (o.axis != RideAxis::vertical)
     throw std::invalid_argument("ride: output '" + o.name + "': the " + to_string(o.axis) +
                                 " wheel–rail force acts through the contact (creep), which the ride does not model "
@@ -195,7 +212,8 @@ OutputMap output_map(const LinearSystem& system, const RideOutput& o, const std:
   switch (o.kind) {
     case RideOutput::Kind::point: {
       const int body = body_index(system, o.body);
-      if (body < 0) throw std::invalid_argument("ride: output '" + o.name + "': no body '" + o.body + "'");
+      if (body < 0)
+        throw std::invalid_argument("ride: output '" + o.name + "': no body '" + o.body + "'" + body_names(system));
       OutputMap m;
       m.order = o.quantity == ResponseQuantity::displacement ? 0 : o.quantity == ResponseQuantity::velocity ? 1 : 2;
       m.a0 = model::point_displacement_map(system, body, o.point).row(axis);
@@ -205,7 +223,9 @@ OutputMap output_map(const LinearSystem& system, const RideOutput& o, const std:
     case RideOutput::Kind::element_deflection:
     case RideOutput::Kind::element_force: {
       const int k = element_index(system, o.element);
-      if (k < 0) throw std::invalid_argument("ride: output '" + o.name + "': no element '" + o.element + "'");
+      if (k < 0)
+        throw std::invalid_argument("ride: output '" + o.name + "': no element '" + o.element + "'" +
+                                    element_names(system));
       if (o.kind == RideOutput::Kind::element_deflection) return deflection_map(system, k, axis);
       return force_map(system, k, axis, k < static_cast<int>(friction.size()) ? friction[k] : 0.0);
     }
@@ -282,16 +302,16 @@ std::complex<double> OutputMap::track(std::size_t term, const Eigen::Vector3d& u
 }
 
 std::vector<Component> track_components(const LinearSystem& system, const TrackIrregularitySpectra& track,
-                                        double contact_half_spacing) {
+                                        double contact_half_spacing, double rolling_radius) {
   if (system.track_inputs.empty())
     throw std::invalid_argument("ride: the vehicle has no element standing on the track (no track input)");
   std::vector<Component> out;
   if (track.vertical_level)
-    out.push_back(component(system, TrackIrregularity::vertical_level, *track.vertical_level, contact_half_spacing));
+    out.push_back(component(system, TrackIrregularity::vertical_level, *track.vertical_level, contact_half_spacing, rolling_radius));
   if (track.alignment)
-    out.push_back(component(system, TrackIrregularity::alignment, *track.alignment, contact_half_spacing));
+    out.push_back(component(system, TrackIrregularity::alignment, *track.alignment, contact_half_spacing, rolling_radius));
   if (track.cross_level)
-    out.push_back(component(system, TrackIrregularity::cross_level, *track.cross_level, contact_half_spacing));
+    out.push_back(component(system, TrackIrregularity::cross_level, *track.cross_level, contact_half_spacing, rolling_radius));
   if (out.empty()) throw std::invalid_argument("ride: the track has no irregularity component");
   for (const SeriesDamperRow& row : system.series_dampers)
     if (input_of(system, row.element) >= 0)
@@ -310,6 +330,11 @@ std::vector<OutputMap> output_maps(const LinearSystem& system, const std::vector
     if (o.name.empty()) throw std::invalid_argument("ride: an output has no name");
     if (!names.insert(o.name).second) throw std::invalid_argument("ride: output name '" + o.name + "' is repeated");
     maps.push_back(output_map(system, o, friction_damping));
+    const OutputMap& m = maps.back();
+    if (m.a0.cwiseAbs().maxCoeff() == 0.0 && m.a1.cwiseAbs().maxCoeff() == 0.0 && m.series.empty() && m.inputs.empty())
+      throw std::invalid_argument("ride: output '" + o.name + "': no degree of freedom of this model moves it (the " +
+                                  to_string(o.axis) + " axis is not among the model's motions); its answer would be "
+                                  "zero: leave it out, or give the degrees of freedom it needs (dofs = \"all\")");
   }
   return maps;
 }

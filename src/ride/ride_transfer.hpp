@@ -17,16 +17,19 @@ struct Component {
   TrackSpectrum spectrum;
   /// Per track input: the displacement (longitudinal, lateral, vertical; m) of the track under
   /// it per metre of the component. Level (0, 0, 1); alignment (0, 1, 0); cross-level Δz rolls
-  /// the rails by θ = Δz/(2b) about the x-axis of the vehicle frame: (0, −θz, θy) per unit Δz.
+  /// the rails by θ = Δz/(2b) about the rail top, r0 below the axle plane: (0, −θ(z + r0), θy)
+  /// per unit Δz (cross_level_directions, the time domain's too).
   std::vector<Eigen::Vector3d> displacement;
 };
 
 /// The components of `track` in the order vertical level, alignment, cross-level. Throws
 /// std::invalid_argument for none, a spectrum in the wrong slot, no track input, and a lateral
 /// input (alignment; cross-level among lateral DOFs) on a vehicle with wheelsets, whose
-/// lateral track input acts through the wheel–rail contact that the ride does not model yet.
+/// lateral track input acts through the wheel–rail contact that the ride does not model yet,
+/// and for a component that loads no degree of freedom (alignment on a vertical model: its
+/// answer would be a silent zero).
 std::vector<Component> track_components(const LinearSystem& system, const TrackIrregularitySpectra& track,
-                                        double contact_half_spacing);
+                                        double contact_half_spacing, double rolling_radius);
 
 /// One output as a linear map of the DOF response X and the track displacements u_i:
 ///   y(ω) = (iω)^order · [a(ω)·X + Σ_terms t(ω)·u_input],

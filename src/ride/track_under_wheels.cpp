@@ -2,24 +2,50 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace railmodal::ride {
 
-double contact_half_spacing(const LinearSystem& system, double option) {
-  constexpr double kStandardHalfSpacing = 0.75;
-  if (option > 0.0) return option;
-  for (const Wheelset& wheelset : system.vehicle.wheelsets)
-    if (wheelset.contact.contact_half_spacing > 0.0) return wheelset.contact.contact_half_spacing;
-  return kStandardHalfSpacing;
+namespace {
+
+// The wheelset an element stands on (its lower body), else the first one; null without wheelsets.
+const Wheelset* wheelset_under(const LinearSystem& system, int element) {
+  const Vehicle& v = system.vehicle;
+  for (const Wheelset& w : v.wheelsets)
+    if (w.body == v.elements[element].lower) return &w;
+  return v.wheelsets.empty() ? nullptr : &v.wheelsets.front();
 }
 
-TrackUnderWheels::TrackUnderWheels(const LinearSystem& system, const TrackGeometry& geometry, double half_spacing)
-    : geometry_(geometry), half_spacing_(half_spacing) {
+}  // namespace
+
+std::vector<Eigen::Vector3d> cross_level_directions(const LinearSystem& system, double contact_half_spacing,
+                                                    double rolling_radius) {
+  constexpr double kStandardHalfSpacing = 0.75;
+  std::vector<Eigen::Vector3d> out;
+  for (const TrackInput& t : system.track_inputs) {
+    const Wheelset* w = wheelset_under(system, t.element);
+    double b = contact_half_spacing, r0 = rolling_radius;
+    if (!(b > 0.0)) b = w && w->contact.contact_half_spacing > 0.0 ? w->contact.contact_half_spacing : kStandardHalfSpacing;
+    if (!(r0 > 0.0)) r0 = w ? w->contact.rolling_radius : 0.0;
+    out.emplace_back(0.0, -(t.point.z() + r0) / (2.0 * b), t.point.y() / (2.0 * b));
+  }
+  return out;
+}
+
+bool knows_rolling_radius(const LinearSystem& system, double rolling_radius) {
+  if (rolling_radius > 0.0) return true;
+  for (const Wheelset& w : system.vehicle.wheelsets)
+    if (w.contact.rolling_radius > 0.0) return true;
+  return false;
+}
+
+TrackUnderWheels::TrackUnderWheels(const LinearSystem& system, const TrackGeometry& geometry,
+                                   std::vector<Eigen::Vector3d> cross_level)
+    : geometry_(geometry), cross_level_(std::move(cross_level)) {
   double lead = -INFINITY;
   for (const TrackInput& input : system.track_inputs) lead = std::max(lead, input.point.x());
   for (const TrackInput& input : system.track_inputs) {
     lags_.push_back(lead - input.point.x());
-    lateral_positions_.push_back(input.point.y());
     span_ = std::max(span_, lags_.back());
   }
 }
@@ -87,17 +113,16 @@ void TrackUnderWheels::on_segment(int input, double leading, double anchor, Eige
   segment(geometry_.vertical_level, x, xa, &level, &level_slope);
   segment(geometry_.alignment, x, xa, &align, &align_slope);
   segment(geometry_.cross_level, x, xa, &cross, &cross_slope);
-  const double y = lateral_positions_[input] / (2.0 * half_spacing_);
-  *u << 0.0, align, level + cross * y;
-  *slope << 0.0, align_slope, level_slope + cross_slope * y;
+  *u = Eigen::Vector3d(0.0, align, level) + cross * cross_level_[input];
+  *slope = Eigen::Vector3d(0.0, align_slope, level_slope) + cross_slope * cross_level_[input];
 }
 
 double TrackUnderWheels::step() const { return geometry_.step; }
 
 Eigen::Vector3d TrackUnderWheels::displacement_of(int input, double leading) const {
   const double x = leading - lags_[input];
-  const double roll = sample(geometry_.cross_level, x) / (2.0 * half_spacing_);
-  return {0.0, sample(geometry_.alignment, x), sample(geometry_.vertical_level, x) + roll * lateral_positions_[input]};
+  return Eigen::Vector3d(0.0, sample(geometry_.alignment, x), sample(geometry_.vertical_level, x)) +
+         sample(geometry_.cross_level, x) * cross_level_[input];
 }
 
 void TrackUnderWheels::displacement(double leading, Eigen::VectorXd* w) const {
@@ -109,9 +134,9 @@ void TrackUnderWheels::slope(double leading, Eigen::VectorXd* dw) const {
   dw->resize(3 * inputs());
   for (int i = 0; i < inputs(); ++i) {
     const double x = leading - lags_[i];
-    const double roll = sample_slope(geometry_.cross_level, x) / (2.0 * half_spacing_);
-    dw->segment<3>(3 * i) << 0.0, sample_slope(geometry_.alignment, x),
-        sample_slope(geometry_.vertical_level, x) + roll * lateral_positions_[i];
+    dw->segment<3>(3 * i) =
+        Eigen::Vector3d(0.0, sample_slope(geometry_.alignment, x), sample_slope(geometry_.vertical_level, x)) +
+        sample_slope(geometry_.cross_level, x) * cross_level_[i];
   }
 }
 

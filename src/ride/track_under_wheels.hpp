@@ -14,15 +14,24 @@ namespace railmodal::ride {
 /// (longitudinal, lateral, vertical) in m as LinearSystem::TrackInput takes it. Wheel i sits
 /// lag_i = x_lead − x_i behind the leading one, so when the leading wheel is at track distance
 /// ξ wheel i is at ξ − lag_i (it meets each point lag_i/V later).
-/// b for the cross-level: `option` when positive, else the first wheelset's
-/// contact_half_spacing, else 0.75 m (standard gauge: 1.5 m between the contact points).
-double contact_half_spacing(const LinearSystem& system, double option);
+/// The displacement of every track input per metre of cross-level Δz = z_left − z_right, the
+/// one convention of both domains (docs/ride.md, "The track"): the rails roll by θ = Δz/(2b)
+/// about the rail top, r0 below the axle plane (z = 0), so an input at (y, z) moves by
+/// (0, −θ·(z + r0), θ·y). b: `contact_half_spacing` when positive, else the contact_half_spacing
+/// of the wheelset the input's element stands on, else the first wheelset's, else 0.75 m
+/// (standard gauge); r0 likewise from `rolling_radius` and the wheelsets' rolling_radius, else 0.
+std::vector<Eigen::Vector3d> cross_level_directions(const LinearSystem& system, double contact_half_spacing,
+                                                    double rolling_radius);
+
+/// Whether cross_level_directions had a rolling radius to use (the option or a wheelset's).
+bool knows_rolling_radius(const LinearSystem& system, double rolling_radius);
 
 class TrackUnderWheels {
  public:
-  /// `half_spacing` b turns the cross-level Δz into the roll θ = Δz/(2b), which moves a wheel
-  /// at lateral position y (left positive) by θ·y vertically.
-  TrackUnderWheels(const LinearSystem& system, const TrackGeometry& geometry, double half_spacing);
+  /// `cross_level` (cross_level_directions) turns the cross-level Δz at each input into its
+  /// displacement.
+  TrackUnderWheels(const LinearSystem& system, const TrackGeometry& geometry,
+                   std::vector<Eigen::Vector3d> cross_level);
 
   int inputs() const { return static_cast<int>(lags_.size()); }
   double lag(int input) const { return lags_[input]; }
@@ -35,9 +44,8 @@ class TrackUnderWheels {
   /// ∂w/∂ξ for the leading wheel at `leading` m: the slope of the segment under each wheel,
   /// the mean of the two segments on a sample (where the interpolated track has a kink).
   void slope(double leading, Eigen::VectorXd* dw) const;
-  /// The lateral position of wheel i, m (left positive), and b.
-  double lateral_position(int input) const { return lateral_positions_[input]; }
-  double half_spacing() const { return half_spacing_; }
+  /// Wheel i's displacement per metre of cross-level (cross_level_directions).
+  const Eigen::Vector3d& cross_level(int input) const { return cross_level_[input]; }
   /// u_i alone (3 values) for wheel i when the leading wheel is at `leading`.
   Eigen::Vector3d displacement_of(int input, double leading) const;
   /// u_i and ∂u_i/∂ξ for wheel i at `leading`, on the segment of the interpolation under the
@@ -53,8 +61,9 @@ class TrackUnderWheels {
   void segment(const Eigen::VectorXd& profile, double position, double anchor, double* value, double* slope) const;
 
   const TrackGeometry& geometry_;
-  std::vector<double> lags_, lateral_positions_;
-  double half_spacing_ = 0.0, span_ = 0.0;
+  std::vector<double> lags_;
+  std::vector<Eigen::Vector3d> cross_level_;
+  double span_ = 0.0;
 };
 
 }  // namespace railmodal::ride

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "railmodal/comfort_weighting.hpp"
+
 namespace railmodal::ride {
 
 Eigen::VectorXd window_rms(const Eigen::VectorXd& values, Eigen::Index samples) {
@@ -34,12 +36,35 @@ double zone_p95(const Eigen::VectorXd& window_values, Eigen::Index zone, std::st
               std::to_string(zone) + " of an EN 12299 zone";
     return percentile95(window_values);
   }
-  double largest = 0.0;
-  for (Eigen::Index z = 0; z < zones; ++z)
-    largest = std::max(largest, percentile95(window_values.segment(z * zone, zone)));
+  const double largest = zone_p95s(window_values, zone).maxCoeff();
   if (note)
     *note = "P95: the largest of " + std::to_string(zones) + " complete zone(s) of " + std::to_string(zone) +
             " windows";
+  return largest;
+}
+
+Eigen::VectorXd zone_p95s(const Eigen::VectorXd& window_values, Eigen::Index zone) {
+  const Eigen::Index zones = window_values.size() / zone;
+  if (zones == 0) return Eigen::VectorXd::Constant(1, percentile95(window_values));
+  Eigen::VectorXd out(zones);
+  for (Eigen::Index z = 0; z < zones; ++z) out(z) = percentile95(window_values.segment(z * zone, zone));
+  return out;
+}
+
+double zone_nmv(const Eigen::VectorXd* longitudinal, const Eigen::VectorXd* lateral, const Eigen::VectorXd* vertical) {
+  const Eigen::VectorXd* axes[3] = {longitudinal, lateral, vertical};
+  Eigen::Index zones = 0;
+  for (const Eigen::VectorXd* a : axes)
+    if (a) {
+      if (zones && a->size() != zones) throw std::invalid_argument("zone_nmv: the axes have different zone counts");
+      zones = a->size();
+    }
+  double largest = 0.0;
+  for (Eigen::Index z = 0; z < zones; ++z) {
+    double p95[3];
+    for (int k = 0; k < 3; ++k) p95[k] = axes[k] ? (*axes[k])(z) : 0.0;
+    largest = std::max(largest, en12299_nmv(p95[0], p95[1], p95[2]));
+  }
   return largest;
 }
 

@@ -19,6 +19,15 @@ double percentile95(const Eigen::VectorXd& values);
 /// or over all windows when there are fewer than a zone (then *note says so).
 double zone_p95(const Eigen::VectorXd& window_values, Eigen::Index zone, std::string* note);
 
+/// The P95 of each complete zone in order (zone_p95 is their largest); one value, over all
+/// windows, when there are fewer than a zone. What N_MV combines zone by zone.
+Eigen::VectorXd zone_p95s(const Eigen::VectorXd& window_values, Eigen::Index zone);
+
+/// N_MV of one floor point from its axes' zone P95s (zone_p95s of one run, so of equal length;
+/// null: the axis has no output and counts as zero): EN 12299 combines the axes' P95 of the
+/// same zone, en12299_nmv, and the point's figure is the largest over the zones.
+double zone_nmv(const Eigen::VectorXd* longitudinal, const Eigen::VectorXd* lateral, const Eigen::VectorXd* vertical);
+
 /// Cc(t) = √((1/T)∫_{t−T}^{t} a_w² dτ) at every sample, T = `samples` samples; over the
 /// samples so far while t < T.
 Eigen::VectorXd running_rms(const Eigen::VectorXd& values, Eigen::Index samples);

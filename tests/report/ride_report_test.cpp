@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -121,6 +122,27 @@ TEST(RideReport, JsonKeysCarryUnitsAndNullsForWhatIsNot) {
   EXPECT_EQ(first["inputs"][0]["name"], "ORE B176 low, vertical level");
   EXPECT_EQ(j["outputs"][1]["kind"], "element-force");
   EXPECT_TRUE(j["time_domain"].is_null());
+}
+
+// The review's JSON items: modes numbered from 1 as the tables number them, variances with their
+// unit, the track's RMS per component, and a figure without a bound neither passed nor failed.
+TEST(RideReport, JsonModesFromOneVariancesWithUnitsAndUnboundedChecksNotPassed) {
+  RideResult r = hand_built();
+  r.input_rms = {0.0021};
+  r.summary.checks.push_back({"grid error estimate", 2e-4, std::numeric_limits<double>::infinity(), true});
+  r.summary.checks.push_back({"friction linearisation", 0.3, 1e-6, false});
+  const std::string text = written(r, OutputFormat::json);
+  const nlohmann::json j = nlohmann::json::parse(text);
+  const auto& modes = j["speeds"][0]["outputs"][0]["modes"];
+  ASSERT_EQ(modes.size(), 2u);
+  EXPECT_EQ(modes[0]["mode"].get<int>(), 1);  // ModalContribution::mode 0, "body bounce", mode 1 in the tables
+  EXPECT_NEAR(modes[0]["variance_m2_s4"].get<double>(), 0.8, 1e-15);
+  EXPECT_NEAR(j["speeds"][0]["outputs"][0]["cross_term_variance_m2_s4"].get<double>(), 0.05, 1e-15);
+  EXPECT_TRUE(j["summary"]["checks"][0]["passed"].is_null());
+  EXPECT_FALSE(j["summary"]["checks"][1]["passed"].get<bool>());
+  EXPECT_EQ(j["track_rms"][0]["name"], "ORE B176 low, vertical level");
+  EXPECT_NEAR(j["track_rms"][0]["rms_m"].get<double>(), 0.0021, 1e-15);
+  EXPECT_TRUE(has(written(r, OutputFormat::table), "track RMS over each band: ORE B176 low, vertical level 2.1 mm"));
 }
 
 TEST(RideReport, MarkdownAndHtmlHaveTheTablesAndTheCharts) {

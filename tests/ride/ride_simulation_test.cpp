@@ -137,8 +137,8 @@ TEST(RideSimulation, CrossLevelRollsTheTrackUnderEachWheelByItsLateralPosition) 
   TrackGeometry g;
   g.step = 1.0;
   g.cross_level = Eigen::VectorXd::Constant(4, 0.01);  // left rail 10 mm above the right
-  const ride::TrackUnderWheels track(system, g, ride::contact_half_spacing(system, 0.0));
-  EXPECT_DOUBLE_EQ(track.half_spacing(), 0.75);
+  const ride::TrackUnderWheels track(system, g, ride::cross_level_directions(system, 0.0, 0.0));
+  EXPECT_DOUBLE_EQ(track.cross_level(0).z(), 0.75 / 1.5);  // b: standard gauge's 0.75 m
   EXPECT_DOUBLE_EQ(track.displacement_of(0, 1.5).z(), 0.005);
   EXPECT_DOUBLE_EQ(track.displacement_of(1, 1.5).z(), -0.005);
 }

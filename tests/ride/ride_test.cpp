@@ -11,6 +11,7 @@
 #include "ride/ride_friction.hpp"
 #include "ride/ride_indices.hpp"
 #include "ride/ride_transfer.hpp"
+#include "ride/track_under_wheels.hpp"
 #include "test_support.hpp"
 
 namespace railmodal {
@@ -307,22 +308,114 @@ TEST(Ride, UndampedExcitedModeIsUnboundedNotANumber) {
   EXPECT_TRUE(named);
 }
 
-// Cross-level Δz = z_left − z_right rolls the rails by θ = Δz/(2b): an input on the left rail
-// (y > 0) rises by θy; laterally the roll about the frame's x-axis moves a point at height z by
-// −θz. b: the option, else the wheelsets' l0, else 0.75 m.
+// Cross-level Δz = z_left − z_right rolls the rails by θ = Δz/(2b) about the rail top, r0 below
+// the axle plane: an input on the left rail (y > 0) rises by θy, and one at height z moves
+// sideways by −θ(z + r0). b: the option, else the wheelsets' l0, else 0.75 m; r0: the option,
+// else the wheelsets' rolling radius, else 0.
 TEST(Ride, CrossLevelSignAndScaling) {
   Vehicle v = body_on_track(12000.0, 60000.0, {{3.0, 1.0}, {3.0, -1.0}, {-3.0, 1.0}, {-3.0, -1.0}}, 5e5, 8e3);
   v.elements[0].point.z() = 0.4;
   const LinearSystem s = assemble(v, DofSet::all);
   TrackIrregularitySpectra track;
   track.cross_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::cross_level, {0.06, 2.0});
-  const std::vector<ride::Component> standard = ride::track_components(s, track, 0.0);
+  const std::vector<ride::Component> standard = ride::track_components(s, track, 0.0, 0.0);
   ASSERT_EQ(standard.size(), 1u);
   EXPECT_NEAR(standard[0].displacement[0].z(), 1.0 / 1.5, 1e-15);   // left rail up by Δz·y/(2b)
   EXPECT_NEAR(standard[0].displacement[1].z(), -1.0 / 1.5, 1e-15);  // right rail down
-  EXPECT_NEAR(standard[0].displacement[0].y(), -0.4 / 1.5, 1e-15);  // −θz
-  const std::vector<ride::Component> given = ride::track_components(s, track, 0.8);
+  EXPECT_NEAR(standard[0].displacement[0].y(), -0.4 / 1.5, 1e-15);  // −θz: no wheel radius known
+  const std::vector<ride::Component> given = ride::track_components(s, track, 0.8, 0.46);
   EXPECT_NEAR(given[0].displacement[0].z(), 1.0 / 1.6, 1e-15);
+  EXPECT_NEAR(given[0].displacement[0].y(), -(0.4 + 0.46) / 1.6, 1e-15);  // about the rail top
+}
+
+// One convention in both domains: the time domain's track under each wheel moves it by the
+// frequency domain's cross-level direction (the same function, so equal to the last bit).
+TEST(Ride, CrossLevelIsTheSameInTimeAndFrequency) {
+  Vehicle v = body_on_track(12000.0, 60000.0, {{3.0, 0.8}, {3.0, -0.8}, {-3.0, 0.8}, {-3.0, -0.8}}, 5e5, 8e3);
+  for (Element& e : v.elements) e.point.z() = 0.3;
+  const LinearSystem s = assemble(v, DofSet::all);
+  TrackIrregularitySpectra track;
+  track.cross_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::cross_level, {0.06, 2.0});
+  const std::vector<ride::Component> c = ride::track_components(s, track, 0.0, 0.5);
+  TrackGeometry g;
+  g.step = 1.0;
+  g.cross_level = Eigen::VectorXd::Constant(16, 0.01);
+  const ride::TrackUnderWheels wheels(s, g, ride::cross_level_directions(s, 0.0, 0.5));
+  for (int i = 0; i < wheels.inputs(); ++i) {
+    const Eigen::Vector3d u = wheels.displacement_of(i, 8.0);
+    EXPECT_EQ(u, Eigen::Vector3d(0.01 * c[0].displacement[i])) << i;
+    EXPECT_NEAR(u.y(), -0.01 * (0.3 + 0.5) / 1.5, 1e-16) << i;  // −θ(z + r0), θ = 0.01/1.5
+  }
+}
+
+// The direct track term of a track spring's force, F = −(k + iωc)(z − u): D = (k + iωc) per unit
+// u, so on white G0 over [f1, f2] its variance is G0[k²(f2 − f1) + (2πc)²(f2³ − f1³)/3]. One
+// spring under a mass (no delays). The trapezoid rule on the log grid (about 2.3 % steps) is
+// within 1e-4 of a quadratic's integral; 1e-3 allows it. The shares of the mode's term and of the
+// direct term, 0.5484 and 0.4558 of σ² (their cross term −0.4 %: they cancel at low frequency),
+// come from an independent numpy trapezoid of the closed-form terms on 2·10⁵ points; 2e-3 allows
+// the grid error.
+TEST(Ride, DirectTrackTermOfASpringForceIsReportedApart) {
+  constexpr double m = 1000.0, k = 4e5, c = 2e3, V = 20.0, S0 = 1e-6;
+  const Vehicle v = body_on_track(m, 1.0, {{0.0, 0.0}}, k, c, {Motion::pitch, Motion::roll});
+  const LinearSystem s = assemble(v, DofSet::vertical);
+  TrackIrregularitySpectra track;
+  track.vertical_level = white(TrackIrregularity::vertical_level, S0, 0.1, 10.0);
+  RideOutput force;
+  force.name = "spring force";
+  force.kind = RideOutput::Kind::element_force;
+  force.element = "spring1";
+  RideOptions options;
+  options.speeds = {V};
+  options.max_frequency = 40.0;
+  const RideResult r = solve_ride(s, track, {force}, options);
+  const RideOutputAtSpeed& out = r.speeds[0].outputs[0];
+  const double f1 = V * 0.1 / (2 * M_PI), f2 = V * 10.0 / (2 * M_PI), G0 = 2 * M_PI * S0 / V;
+  const double expected = G0 * (k * k * (f2 - f1) + std::pow(2 * M_PI * c, 2) * (f2 * f2 * f2 - f1 * f1 * f1) / 3.0);
+  EXPECT_NEAR(out.direct_variance / expected, 1.0, 1e-3);
+  ASSERT_EQ(out.modes.size(), 1u);
+  EXPECT_NEAR(out.modes[0].share, 0.5484, 2e-3);
+  EXPECT_NEAR(out.direct_variance / (out.rms * out.rms), 0.4558, 2e-3);
+}
+
+// What would be a silent zero is an error naming what is wrong: a component no DOF feels, an
+// output no DOF moves, a band wholly outside the grid.
+TEST(Ride, RefusesWhatWouldBeASilentZero) {
+  const Vehicle v = body_on_track(12000.0, 60000.0, {{3.0, 0.8}, {3.0, -0.8}, {-3.0, 0.8}, {-3.0, -0.8}}, 5e5, 8e3);
+  const LinearSystem vertical = assemble(v, DofSet::vertical);
+  RideOptions options;
+  options.speeds = {30.0};
+  const RideOutput floor =
+      point_output("floor", Eigen::Vector3d(0, 0, 0), RideAxis::vertical, ResponseQuantity::acceleration);
+  auto message = [&](const TrackIrregularitySpectra& t, const std::vector<RideOutput>& o, const RideOptions& opt) {
+    try {
+      solve_ride(vertical, t, o, opt);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  TrackIrregularitySpectra alignment;
+  alignment.alignment = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::alignment, {0.06, 2.0});
+  EXPECT_NE(message(alignment, {floor}, options).find("alignment component"), std::string::npos);
+  TrackIrregularitySpectra level;
+  level.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  const RideOutput sideways =
+      point_output("sideways", Eigen::Vector3d(0, 0, 0), RideAxis::lateral, ResponseQuantity::acceleration);
+  EXPECT_NE(message(level, {floor, sideways}, options).find("output 'sideways': no degree of freedom"),
+            std::string::npos);
+  RideOptions high = options;
+  high.min_frequency = 20.0;  // 30 m/s × 2 rad/m / 2π = 9.5 Hz, the band's top
+  EXPECT_NE(message(level, {floor}, high).find("wholly outside the grid"), std::string::npos);
+  // partly outside: an answer over the grid's part, with a note
+  RideOptions partly = options;
+  partly.min_frequency = 1.0;  // the band starts at 30 × 0.06 / 2π = 0.29 Hz
+  const RideResult r = solve_ride(vertical, level, {floor}, partly);
+  bool noted = false;
+  for (const std::string& n : r.notes) noted = noted || n.find("beyond the grid") != std::string::npos;
+  EXPECT_TRUE(noted);
+  ASSERT_EQ(r.input_rms.size(), 1u);
+  EXPECT_DOUBLE_EQ(r.input_rms[0], level.vertical_level->rms());
 }
 
 // Quasi-static: on very stiff springs the body follows the rails' roll, so a point 1 m to the

@@ -85,5 +85,24 @@ TEST(RideIndices, WindowsPercentileAndRunningRms) {
   EXPECT_DOUBLE_EQ(running(6), std::sqrt((4 + 9) / 2.0));
 }
 
+// EN 12299 combines the axes' P95 of the same 5-minute zone, then takes the largest zone's N_MV.
+// Two zones whose worst axes differ: longitudinal worst in zone 2, vertical in zone 1. Zone by
+// zone both give 6√(0.1² + 0.3²) = 1.897; the axes' worst zones combined would read
+// 6√(0.3² + 0.3²) = 2.546, a third high.
+TEST(RideSimulation, ComfortCombinesTheAxesZoneByZone) {
+  const Eigen::VectorXd x = (Eigen::VectorXd(2) << 0.1, 0.3).finished();
+  const Eigen::VectorXd z = (Eigen::VectorXd(2) << 0.3, 0.1).finished();
+  EXPECT_DOUBLE_EQ(ride::zone_nmv(&x, nullptr, &z), en12299_nmv(0.1, 0.0, 0.3));
+  EXPECT_NEAR(ride::zone_nmv(&x, nullptr, &z), 6.0 * std::sqrt(0.1), 1e-14);
+  EXPECT_DOUBLE_EQ(ride::zone_nmv(nullptr, nullptr, &z), en12299_nmv(0.0, 0.0, 0.3));  // one axis: its worst zone
+  // 120 windows of a run are two zones: zone_p95s gives each zone's P95
+  Eigen::VectorXd windows(120);
+  windows << Eigen::VectorXd::LinSpaced(60, 1.0, 60.0), Eigen::VectorXd::LinSpaced(60, 2.0, 120.0);
+  const Eigen::VectorXd zones = ride::zone_p95s(windows, 60);
+  ASSERT_EQ(zones.size(), 2);
+  EXPECT_DOUBLE_EQ(zones(0), 57.05);
+  EXPECT_DOUBLE_EQ(zones(1), 114.1);
+}
+
 }  // namespace
 }  // namespace railmodal::test

@@ -66,18 +66,21 @@ void expect_finite(const RideResult& r) {
   EXPECT_TRUE(std::isfinite(r.grid_error_estimate));
 }
 
-// The track's band maps above the grid at this speed: every figure is zero, none NaN (P95 of a
-// zero process is zero, not 0/0).
-TEST(RideHardCases, SpectrumOutsideTheGridGivesZeros) {
+// The track's band maps above the grid at this speed: every figure would be a silent zero, so
+// it is refused, naming the speed, the band and the grid (issue 21 review).
+TEST(RideHardCases, SpectrumOutsideTheGridIsRefused) {
   const LinearSystem s = assemble(wagon(4e5, 1e4), DofSet::vertical);
   TrackIrregularitySpectra track;
   track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {10.0, 20.0});
   RideOptions options;
   options.speeds = {100.0};  // 10 rad/m at 100 m/s is 159 Hz, above the 80-Hz grid
-  const RideResult r = solve_ride(s, track, {floor_acc()}, options);
-  expect_finite(r);
-  EXPECT_EQ(r.speeds[0].outputs[0].rms, 0.0);
-  EXPECT_EQ(*r.speeds[0].outputs[0].p95_estimate, 0.0);
+  try {
+    solve_ride(s, track, {floor_acc()}, options);
+    ADD_FAILURE() << "a band wholly outside the grid was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("at 360 km/h the vertical-level band"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("wholly outside the grid 0.1 … 80 Hz"), std::string::npos) << e.what();
+  }
 }
 
 // ζ = 1e-7, far below the grid's refinement floor (1e-4): still finite and bounded (damped),

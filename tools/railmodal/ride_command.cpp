@@ -77,6 +77,26 @@ std::optional<TimeDomain> run_time_domain(const Scene& scene, const LinearSystem
 
 bool has_spectra(const TrackIrregularitySpectra& t) { return t.vertical_level || t.alignment || t.cross_level; }
 
+// What the ride leaves out of a scene, said in the report rather than dropped silently: its
+// periodic sources (rail joints, wheel defects, …), which `simulate` and `critical-speed` take.
+void note_ignored_sources(const Scene& scene, RideResult* result) {
+  for (const auto& source : scene.sources)
+    result->notes.push_back("the scene's periodic source " + source->description() +
+                            " is not part of the ride on random track (railmodal simulate or critical-speed take it)");
+}
+
+// A ride whose own checks failed (the friction linearisation not converged) is written, then
+// exits 6 with the failed checks on stderr: its figures are not answers to sign off on.
+int ride_exit(const std::string& scene_file, const RideResult& result) {
+  int failed = 0;
+  for (const Check& c : result.summary.checks)
+    if (!c.passed) {
+      std::cerr << scene_file << ": ride check FAILED: " << c.name << " = " << c.value << " above " << c.limit << "\n";
+      ++failed;
+    }
+  return failed ? kCheckFailed : kSuccess;
+}
+
 int run(const RideCommandOptions& o) {
   const OutputFormat format = report_format(o.format, o.output);
   std::string current = o.scene;  // the file an error without a location belongs to
@@ -124,13 +144,17 @@ int run(const RideCommandOptions& o) {
       // spectra together can refuse (a band the realisation cannot sample): the scene's error.
       throw InputError(o.scene, 0, 0, e.what());
     }
+    note_ignored_sources(scene, &result);
     std::vector<std::string> provenance_files{o.scene, scene.vehicle_file};
     if (scene.ride && !scene.ride->geometry_file.empty()) provenance_files.push_back(scene.ride->geometry_file);
-    write_ride(out, result, format, scene.name, provenance_of(provenance_files),
+    // The report names the vehicle it ran (--vehicle may replace the scene's).
+    const std::string title = scene.name + " — vehicle: " + (system.vehicle.name.empty() ? scene.vehicle_file
+                                                                                         : system.vehicle.name);
+    write_ride(out, result, format, title, provenance_of(provenance_files),
                time_domain ? &time_domain->simulated : nullptr,
                time_domain && time_domain->checks ? &*time_domain->checks : nullptr);
     files.commit();
-    return kSuccess;
+    return ride_exit(o.scene, result);
   } catch (const InputError& e) {
     std::cerr << e.what() << "\n";
     return kInput;
