@@ -74,7 +74,12 @@ TEST(GearSource, GeneralizedLoadEqualsTheGearsForces) {
     // The moments are forces of the same size times metres: the same round-off, times 10 m.
     EXPECT_LT(std::abs(q(dof(system, "frame.pitch")) - pitch), 10 * scale) << k;
     EXPECT_LT(std::abs(q(dof(system, "frame.roll")) - roll), 10 * scale) << k;
-    EXPECT_GT(std::abs(pitch), 1e2) << k;  // a check of something: Z pitches the frame (every k)
+    // A check of something: Z pitches the frame in harmonics 1 and 3; the second cancels
+    // between cranks at 90° (both guides at the same x), as in bounce.
+    if (k != 2) {
+      EXPECT_GT(std::abs(pitch), 1e2) << k;
+    }
+    EXPECT_GT(std::abs(roll), 1e2) << k;
   }
   // The second harmonic is there, and its surging cancels between cranks at 90°; the third's
   // wheel loads do not (the default harmonics = 3 keeps them).
