@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "input/driving_gear_reader.hpp"
 #include "input/table_reader.hpp"
 #include "railmodal/driving_gear.hpp"
 #include "railmodal/errors.hpp"
@@ -96,7 +97,7 @@ GearCylinder read_cylinder(TableReader& t, const std::map<std::string, int>& axl
   return c;
 }
 
-DrivingGear read_driving_gear(const toml::value& document, const std::string& path) {
+DrivingGear read_driving_gear(const toml::value& document, const std::string& path, std::vector<bool>* positioned) {
   TableReader root(document, path, "");
   TableReader head = root.table("driving_gear");
   DrivingGear g;
@@ -112,6 +113,7 @@ DrivingGear read_driving_gear(const toml::value& document, const std::string& pa
   const double left_offset = left_crank_angle(head);
   std::map<std::string, int> axles;
   for (TableReader& t : head.tables("axle")) {
+    if (positioned) positioned->push_back(t.has("position"));
     g.axles.push_back(read_axle(t, left_offset));
     if (!axles.emplace(g.axles.back().name, static_cast<int>(g.axles.size()) - 1).second)
       t.fail("name", "an axle named '" + g.axles.back().name + "' already exists");
@@ -129,10 +131,14 @@ DrivingGear read_driving_gear(const toml::value& document, const std::string& pa
 }
 
 }  // namespace
+
+DrivingGear load_driving_gear(const std::string& path, std::vector<bool>* positioned) {
+  if (positioned) positioned->clear();
+  return read_driving_gear(parse_toml_file(path), path, positioned);
+}
+
 }  // namespace input
 
-DrivingGear load_driving_gear(const std::string& path) {
-  return input::read_driving_gear(input::parse_toml_file(path), path);
-}
+DrivingGear load_driving_gear(const std::string& path) { return input::load_driving_gear(path, nullptr); }
 
 }  // namespace railmodal

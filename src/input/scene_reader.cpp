@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "input/document_readers.hpp"
+#include "input/driving_gear_reader.hpp"
 #include "input/irregularity_reader.hpp"
 #include "input/nonlinear_hunting_reader.hpp"
 #include "input/ride_reader.hpp"
@@ -149,12 +150,15 @@ std::shared_ptr<const ExcitationSource> unbalance(TableReader& t) {
 // design speed, placed on the vehicle by [[source.axle]] tables.
 std::shared_ptr<const ExcitationSource> driving_gear(TableReader& t, const std::string& vehicle_file) {
   GearExcitation p;
-  if (t.has("gear")) p.gear = load_driving_gear(t.existing_file("gear"));
-  else if (!vehicle_file.empty()) p.gear = load_driving_gear(vehicle_file);
+  std::vector<bool> positioned;  // per axle: the gear file gives its `position`
+  if (t.has("gear")) p.gear = railmodal::input::load_driving_gear(t.existing_file("gear"), &positioned);
+  else if (!vehicle_file.empty()) p.gear = railmodal::input::load_driving_gear(vehicle_file, &positioned);
   else t.fail("gear", "missing: name the file with the [driving_gear] table (the scene has no vehicle file)");
   p.body = t.optional_string("body").value_or("body");
   p.crank_angle = read_start_angle(t, "crank_angle");
-  p.harmonics = t.optional_count("harmonics", 1).value_or(2);
+  // Three harmonics by default: the third of the rods' Y and Z (about 1.5 kN each for the Су at
+  // 100 km/h) does not cancel between cranks at 90°, as the second does in surge and bounce.
+  p.harmonics = t.optional_count("harmonics", 1).value_or(3);
   if (p.harmonics > 60) t.fail("harmonics", "must be at most 60");
   if (t.has("balance")) {
     const std::string word = t.string("balance");
@@ -162,12 +166,22 @@ std::shared_ptr<const ExcitationSource> driving_gear(TableReader& t, const std::
     if (const auto rule = vertical_rule_from_string(word)) options.rule = *rule;
     else t.fail("balance", "unknown rule '" + word + "' (least_squares, minimax, book)");
     options.allowed_alpha = t.optional_positive("balance_alpha", Quantity::dimensionless).value_or(0.0);
+    // balance_fraction: as `railmodal balance --fraction`, the share of each cylinder's
+    // reciprocating mass balanced by overbalance (BalanceOptions::reciprocating_fraction).
+    if (t.has("balance_fraction")) {
+      if (t.has("balance_alpha")) t.fail("balance_fraction", "give balance_alpha or balance_fraction, not both");
+      options.reciprocating_fraction = t.quantity("balance_fraction", Quantity::dimensionless);
+      if (!(options.reciprocating_fraction >= 0.0 && options.reciprocating_fraction <= 1.0))
+        t.fail("balance_fraction", "must lie in 0 … 1 (the share of the reciprocating masses balanced)");
+    }
     options.trade_off_fractions.clear();
     if (!(p.gear.design_speed > 0.0))
       t.fail("balance", "balancing needs the gear's design_speed, which its [driving_gear] table does not give");
     p.gear = balance_driving_gear(p.gear, p.gear.design_speed, options).balanced;
   } else if (t.has("balance_alpha")) {
     t.fail("balance_alpha", "applies only with balance = \"least_squares\", \"minimax\" or \"book\"");
+  } else if (t.has("balance_fraction")) {
+    t.fail("balance_fraction", "applies only with balance = \"least_squares\", \"minimax\" or \"book\"");
   }
   for (const GearAxle& axle : p.gear.axles) p.axles.push_back({axle.position, ""});
   if (t.has("axle")) {
@@ -184,9 +198,20 @@ std::shared_ptr<const ExcitationSource> driving_gear(TableReader& t, const std::
       if (placed[i]) a.fail("name", "places axle '" + name + "' twice");
       placed[i] = true;
       if (a.has("x")) p.axles[i].x = a.quantity("x", Quantity::length);
+      else if (!positioned[i])
+        a.fail("x", "missing: the gear file gives axle '" + name + "' no position; place it along the vehicle");
       p.axles[i].body = a.optional_string("body").value_or("");
       a.finish();
     }
+    for (size_t i = 0; i < placed.size(); ++i)
+      if (!placed[i] && !positioned[i])
+        t.fail("axle", "missing for axle '" + p.gear.axles[i].name +
+                           "': the gear file gives it no position; add a [[source.axle]] with its x");
+  } else {
+    for (size_t i = 0; i < positioned.size(); ++i)
+      if (!positioned[i])
+        t.fail("axle", "missing: the gear file gives axle '" + p.gear.axles[i].name +
+                           "' no position; place each axle with a [[source.axle]] table and its x");
   }
   return make_source(p);
 }

@@ -33,8 +33,12 @@ TEST(GearSource, GeneralizedLoadEqualsTheGearsForces) {
   EXPECT_EQ(source.kind(), "driving_gear");
   const LinearSystem system = assemble(load_vehicle(scene.vehicle_file), scene.dofs);
   const double speed = 100 / 3.6;
-  const GearResult gear = solve_driving_gear(load_driving_gear(std::string(RAILMODAL_DATA_DIR) + "/locomotives/su.toml"), speed);
-  for (int k = 1; k <= 2; ++k) {
+  const DrivingGear description = load_driving_gear(std::string(RAILMODAL_DATA_DIR) + "/locomotives/su.toml");
+  GearOptions options;
+  options.harmonics = 3;
+  const GearResult gear = solve_driving_gear(description, speed, options);
+  ASSERT_EQ(source.harmonic_count(), 3);
+  for (int k = 1; k <= 3; ++k) {
     const Eigen::VectorXcd q = generalized_load(system, source.load(system, speed, k));
     // Forces of 10³–10⁵ N summed over a dozen points: 1e-9 relative is round-off, far below
     // any error of placement (a misplaced force changes a term by its whole size).
@@ -56,11 +60,106 @@ TEST(GearSource, GeneralizedLoadEqualsTheGearsForces) {
     std::complex<double> guides = 0.0;
     for (const auto& z : gear.guide_harmonics) guides += phasor(z[k]);
     EXPECT_LT(std::abs(q(dof(system, "frame.bounce")) - guides), scale) << k;
+    // Z acts at (x_axle + L, −lateral, 0), on the frame's reference point's plane z = 0 (where X
+    // and the masses' horizontal pulls act too, so they add no pitch): its moment about the
+    // reference point is r × (0, 0, Z) = (y·Z, −x·Z, 0), so frame pitch −Σ Z·(x_axle + L) and
+    // frame roll Σ (−lateral)·Z. The scene places the axles where su.toml does.
+    std::complex<double> pitch = 0.0, roll = 0.0;
+    for (size_t c = 0; c < description.cylinders.size(); ++c) {
+      const GearCylinder& cyl = description.cylinders[c];
+      const double x = description.axles[cyl.axle].position + cyl.rod_length;
+      pitch -= phasor(gear.guide_harmonics[c][k]) * x;
+      roll -= phasor(gear.guide_harmonics[c][k]) * cyl.lateral;
+    }
+    // The moments are forces of the same size times metres: the same round-off, times 10 m.
+    EXPECT_LT(std::abs(q(dof(system, "frame.pitch")) - pitch), 10 * scale) << k;
+    EXPECT_LT(std::abs(q(dof(system, "frame.roll")) - roll), 10 * scale) << k;
+    // A check of something: Z pitches the frame in harmonics 1 and 3; the second cancels
+    // between cranks at 90° (both guides at the same x), as in bounce.
+    if (k != 2) {
+      EXPECT_GT(std::abs(pitch), 1e2) << k;
+    }
+    EXPECT_GT(std::abs(roll), 1e2) << k;
   }
-  // The second harmonic is there, and its surging cancels between cranks at 90°.
+  // The second harmonic is there, and its surging cancels between cranks at 90°; the third's
+  // wheel loads do not (the default harmonics = 3 keeps them).
   const Eigen::VectorXcd q2 = generalized_load(system, source.load(system, speed, 2));
   EXPECT_GT(std::abs(q2(dof(system, "axle2.roll"))), 1e3);
   EXPECT_LT(std::abs(q2(dof(system, "frame.longitudinal"))), 1e-9 * std::abs(phasor(gear.surging_harmonics[1])));
+  const Eigen::VectorXcd q3 = generalized_load(system, source.load(system, speed, 3));
+  EXPECT_GT(std::abs(q3(dof(system, "axle2.bounce"))), 1e3);
+}
+
+std::string gear_scene(const std::string& source_keys) {
+  return test::write_temp("gear_scene.toml", "[scene]\nvehicle = \"" + std::string(RAILMODAL_DATA_DIR) +
+                                                 "/vehicles/su_locomotive.toml\"\ndofs = \"all\"\n"
+                                                 "[speed]\nmin = \"10 km/h\"\nmax = \"20 km/h\"\nstep = \"10 km/h\"\n"
+                                                 "[[source]]\nkind = \"driving_gear\"\ngear = \"" +
+                                                 std::string(RAILMODAL_DATA_DIR) + "/locomotives/su.toml\"\n"
+                                                 "body = \"frame\"\n" + source_keys);
+}
+
+// Without `harmonics` the source takes three: the third does not cancel (docs/scenes.md).
+TEST(GearSource, DefaultsToThreeHarmonics) {
+  const Scene scene = load_scene(gear_scene(""));
+  ASSERT_EQ(scene.sources.size(), 1u);
+  EXPECT_EQ(scene.sources[0]->harmonic_count(), 3);
+}
+
+// balance_fraction balances that share of the reciprocating masses, as `balance --fraction`:
+// the scene's load equals the gear balanced by balance_driving_gear with the same options, and
+// differs from the unbalanced and from the fraction-0 balance.
+TEST(GearSource, BalanceFractionBalancesThatShare) {
+  const DrivingGear description = load_driving_gear(std::string(RAILMODAL_DATA_DIR) + "/locomotives/su.toml");
+  BalanceOptions options;
+  options.rule = VerticalRule::book;
+  options.reciprocating_fraction = 0.5;
+  options.trade_off_fractions.clear();
+  GearExcitation p;
+  p.gear = balance_driving_gear(description, description.design_speed, options).balanced;
+  p.body = "frame";
+  p.harmonics = 3;
+  const auto expected = make_source(p);
+  const Scene half = load_scene(gear_scene("balance = \"book\"\nbalance_fraction = 0.5\n"));
+  const Scene none = load_scene(gear_scene("balance = \"book\"\nbalance_fraction = 0\n"));
+  const LinearSystem system = assemble(load_vehicle(half.vehicle_file), half.dofs);
+  const int surge = dof(system, "frame.longitudinal");
+  const auto qe = generalized_load(system, expected->load(system, 25.0, 1))(surge);
+  const auto qh = generalized_load(system, half.sources[0]->load(system, 25.0, 1))(surge);
+  const auto q0 = generalized_load(system, none.sources[0]->load(system, 25.0, 1))(surge);
+  // The same numbers through both paths: round-off only.
+  EXPECT_LT(std::abs(qh - qe), 1e-9 * std::abs(qe));
+  // Balancing half the reciprocating masses takes a sizeable share off the surging.
+  EXPECT_LT(std::abs(qh), 0.9 * std::abs(q0));
+}
+
+// An axle the gear file does not place needs an x in the scene: no silent x = 0.
+TEST(GearSource, AxleWithoutPositionNeedsX) {
+  const std::string gear = test::write_temp("unplaced_gear.toml", R"toml(
+[driving_gear]
+wheel_diameter = "1850 mm"
+wheel_plane_spacing = "1590 mm"
+[[driving_gear.axle]]
+name = "driving"
+crank_radius = "350 mm"
+static_wheel_load = "9000 kgf"
+)toml");
+  const auto scene = [&](const std::string& axle_tables) {
+    return test::write_temp("unplaced_scene.toml", "[scene]\nvehicle = \"" + std::string(RAILMODAL_DATA_DIR) +
+                                                       "/vehicles/su_locomotive.toml\"\n[speed]\nmin = \"10 km/h\"\n"
+                                                       "max = \"20 km/h\"\n[[source]]\nkind = \"driving_gear\"\ngear = \"" +
+                                                       gear + "\"\nbody = \"frame\"\n" + axle_tables);
+  };
+  EXPECT_THROW(load_scene(scene("")), InputError);
+  EXPECT_THROW(load_scene(scene("[[source.axle]]\nname = \"driving\"\nbody = \"axle2\"\n")), InputError);
+  EXPECT_NO_THROW(load_scene(scene("[[source.axle]]\nname = \"driving\"\nx = \"0 m\"\nbody = \"axle2\"\n")));
+}
+
+TEST(GearSource, BalanceFractionOutsideZeroToOneIsRefused) {
+  EXPECT_THROW(load_scene(gear_scene("balance = \"book\"\nbalance_fraction = 1.5\n")), InputError);
+  EXPECT_THROW(load_scene(gear_scene("balance_fraction = 0.5\n")), InputError);
+  EXPECT_THROW(load_scene(gear_scene("balance = \"book\"\nbalance_fraction = 0.5\nbalance_alpha = 0.3\n")),
+               InputError);
 }
 
 // The crank angle at t = 0 turns harmonic k by k·φ₀ (the scene's phase convention); running
