@@ -116,9 +116,13 @@ TEST(RideLateral, WheelsetFollowsTheRailAtLowFrequency) {
   TrackIrregularitySpectra track;
   track.alignment = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::alignment, {2 * kPi / 1000, 2 * kPi / 3});
   const RideResult r = solve_ride(s, track, {lateral_displacement("axle", 0.0)}, options);
-  // At the grid's first point (0.01 Hz) |H|² is 1 within the same ~1e-3 (the frequency is small
-  // against the wheelset's kinematic ~2 Hz, its creep-to-mass rates of kHz).
-  EXPECT_NEAR(r.speeds[0].outputs[0].psd(0) / r.speeds[0].input_psd[0](0), 1.0, 2e-3);
+  // At the first grid point inside the band (V/1000 m, some 0.03 Hz) |H|² is 1 within 1e-2: the
+  // frequency is ~1 % of the wheelset's kinematic ~2.5 Hz, and the departure from 1 goes as its
+  // square times the modes' amplification, well under 1e-2.
+  Eigen::Index k = 0;
+  while (!(r.speeds[0].input_psd[0](k) > 0.0)) ++k;
+  ASSERT_LT(r.frequencies(k), 0.1);
+  EXPECT_NEAR(r.speeds[0].outputs[0].psd(k) / r.speeds[0].input_psd[0](k), 1.0, 1e-2) << r.frequencies(k);
 }
 
 // Above the linear critical speed a free motion grows: there is no stationary response, every
