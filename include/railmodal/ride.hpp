@@ -224,8 +224,11 @@ struct RideResult {
 /// cannot move (a lateral output on vertical degrees of freedom), a spectrum whose kind does not match its slot, a
 /// component that reaches no degree of freedom (alignment on a vertical model), a component whose temporal band lies
 /// wholly outside the grid at a speed, no component at all, an element on the track through a series damper, and what the ride does not model yet
-/// on wheelsets, the lateral wheel–rail contact (creep): alignment, cross-level with lateral degrees of freedom, and a
-/// lateral or longitudinal wheel-rail-force output. Throws railmodal::NumericalError naming the frequency where the
+/// on wheelsets: cross-level with lateral degrees of freedom (the rails' roll through the contact), and a
+/// lateral or longitudinal wheel-rail-force output. Where the system holds wheelsets' lateral motion the linear
+/// creep contact (contact_matrices) is assembled at each speed and alignment acts through it (docs/ride.md, "Lateral
+/// ride through the creep forces"); above the linear critical speed every output is `unbounded`. Throws
+/// railmodal::NumericalError naming the frequency where the
 /// dynamic stiffness is singular off an undamped mode. An undamped excited mode is an answer (`unbounded`), no throw.
 RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
                       const std::vector<RideOutput>& outputs, const RideOptions& options = {});

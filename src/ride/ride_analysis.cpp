@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <complex>
 #include <map>
+#include <optional>
 #include <thread>
 
 #include "railmodal/modal.hpp"
@@ -12,6 +14,7 @@
 #include "require_valid.hpp"
 #include "response/friction_damping.hpp"
 #include "response/modal_checks.hpp"
+#include "ride/ride_contact.hpp"
 #include "ride/ride_friction.hpp"
 #include "ride/ride_grid.hpp"
 #include "ride/ride_indices.hpp"
@@ -46,6 +49,9 @@ struct Problem {
   // are computed once and every speed reuses them.
   std::vector<ride::OutputMap> maps;
   ride::Receptances shared;
+  // With wheelsets moving laterally: the creep contact, whose terms depend on speed (so does
+  // every speed's own receptances).
+  std::optional<ride::CreepContact> contact;
 };
 
 // A mode no damper acts on (the series dampers included).
@@ -238,7 +244,7 @@ void set_round_off_apart(const std::vector<RideOutput>& outputs, const std::vect
 
 SpeedOutcome solve_speed(const Problem& p, double speed) {
   SpeedOutcome s;
-  const LinearSystem& base = *p.system;
+  const LinearSystem base = p.contact ? ride::with_creep(*p.system, *p.contact, speed) : *p.system;
   const std::vector<ride::BandWeights> bands = ride::speed_bands(p.components, p.grid, speed);
   std::vector<double> friction_damping;
   if (!p.friction.empty()) {
@@ -263,11 +269,17 @@ SpeedOutcome solve_speed(const Problem& p, double speed) {
       friction_damping.empty() ? base : response::with_element_vertical_dampers(base, friction_damping);
   const std::vector<ride::OutputMap> maps =
       friction_damping.empty() ? p.maps : ride::output_maps(system, *p.outputs, friction_damping);
-  const ride::Receptances own = friction_damping.empty() ? ride::Receptances{} : receptances_of(p, system, maps);
-  const ride::SpeedSpectra sp =
-      ride::speed_spectra(system, friction_damping.empty() ? p.shared : own, p.components, p.grid, speed, bands);
+  const bool shared = friction_damping.empty() && !p.contact;
+  const ride::Receptances own = shared ? ride::Receptances{} : receptances_of(p, system, maps);
+  const ride::SpeedSpectra sp = ride::speed_spectra(system, shared ? p.shared : own, p.components, p.grid, speed, bands);
   std::vector<std::string> driven;
-  const std::vector<bool> unbounded = unbounded_outputs(p, system, maps, speed, &driven);
+  std::vector<bool> unbounded = unbounded_outputs(p, system, maps, speed, &driven);
+  if (p.contact && !ride::decays(ride::first_order_roots(system))) {
+    // Above the linear critical speed a free motion grows: no stationary response exists.
+    unbounded.assign(maps.size(), true);
+    s.notes.push_back("at " + shortest_text(speed * 3.6, 6) + " km/h the vehicle on its wheelsets is above its linear "
+                      "critical speed (a free motion grows): every output is unbounded");
+  }
   s.at.speed = speed;
   std::vector<double> grid_error(maps.size(), 0.0);
   for (size_t o = 0; o < maps.size(); ++o) {
@@ -296,7 +308,10 @@ Problem prepare(const LinearSystem& system, const TrackIrregularitySpectra& trac
   p.system = &system;
   p.outputs = &outputs;
   p.options = &options;
-  p.components = ride::track_components(system, track, options.contact_half_spacing, options.rolling_radius);
+  if (ride::acts_through_contact(system)) p.contact = ride::creep_contact(system);
+  // With the contact, the wheelsets' own track inputs follow the elements' (with_creep).
+  p.components = ride::track_components(p.contact ? ride::with_creep(system, *p.contact, options.speeds.front()) : system,
+                                        track, options.contact_half_spacing, options.rolling_radius);
   p.maps = ride::output_maps(system, outputs, {});  // every output names something of the system, or throws
   ModalOptions modal;
   modal.solver = ModalSolver::dense;
@@ -313,9 +328,11 @@ Problem prepare(const LinearSystem& system, const TrackIrregularitySpectra& trac
     for (int j = 0; j < truncated; ++j) p.truncation.col(j) = p.modes.modes[j].shape;
   }
   // The modal terms: every oscillatory mode of the basis H is computed in.
+  // With the contact the modes change with speed (and are complex): the shares over the modes
+  // without it would name motions the vehicle does not have, so none are given.
   std::vector<const Mode*> split;
   for (const Mode* m : p.oscillatory)
-    if (options.modes == 0 || m->index <= truncated) split.push_back(m);
+    if ((options.modes == 0 || m->index <= truncated) && !p.contact) split.push_back(m);
   Eigen::MatrixXd shapes(n, static_cast<Eigen::Index>(split.size()));
   for (size_t j = 0; j < split.size(); ++j) shapes.col(j) = split[j]->shape;
   p.contributions.shapes = shapes;
@@ -354,6 +371,12 @@ void build_grid(Problem* p, const RideOptions& options) {
     grid_modes.push_back({m->frequency_hz, modal_damping_ratio(system, *m)});
     if (undamped(system, *m)) avoid.push_back(m->frequency_hz);
   }
+  if (p->contact)  // the modes with the creep terms at each speed: their peaks are the response's
+    for (double v : options.speeds) {
+      const Eigen::VectorXcd roots = ride::first_order_roots(ride::with_creep(system, *p->contact, v));
+      for (const std::complex<double>& r : roots)
+        if (r.imag() > 0.0 && r.real() < 0.0) grid_modes.push_back({std::abs(r) / kTwoPi, -r.real() / std::abs(r)});
+    }
   for (double v : options.speeds)
     for (const ride::Component& c : p->components) {
       extra.push_back(v * c.spectrum.band().low / kTwoPi);
@@ -447,7 +470,7 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
   result.frequencies = p.grid;
   result.notes = p.notes;
   clock.lap("grid");
-  if (p.friction.empty()) {
+  if (p.friction.empty() && !p.contact) {
     p.shared = receptances_of(p, system, p.maps);
     clock.lap("receptances");
   }
@@ -458,7 +481,8 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
       (options.modes > 0 ? "modal superposition over the " + std::to_string(p.truncation.cols()) + " lowest modes"
                          : std::string("direct solve of K − ω²M + iωC")) +
       " at each of " + std::to_string(p.grid.size()) + " grid frequencies for all " +
-      std::to_string(system.track_inputs.size()) + " track inputs at once; per speed the inputs' delays x/V";
+      std::to_string(system.track_inputs.size()) + " track inputs at once; per speed the inputs' delays x/V" +
+      (p.contact ? "; with the wheel–rail creep contact (linear, Kalker) assembled at each speed" : "");
   for (const SpeedOutcome& s : speeds) {
     result.speeds.push_back(s.at);
     result.grid_error_estimate = std::max(result.grid_error_estimate, s.grid_error);
@@ -480,6 +504,10 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
   if (track.cross_level && !ride::knows_rolling_radius(system, options.rolling_radius) && reaches_laterally(p))
     result.notes.push_back("cross-level rolls the rails about the axle plane: the vehicle has no wheelset to give "
                            "the rail top's depth r0 below it; give it as [ride] rolling_radius");
+  if (p.contact)
+    result.notes.push_back("the wheelsets run on the linear creep contact at each speed (alignment acts through it, "
+                           "docs/ride.md \"Lateral ride through the creep forces\"): no modal shares, since the modes "
+                           "with the contact change with speed");
   if (options.modes > 0)
     result.notes.push_back("H(f) by modal superposition over the " + std::to_string(p.truncation.cols()) +
                            " lowest modes: the response misses the higher modes' share (docs/accuracy.md, "

@@ -625,19 +625,21 @@ TEST(Ride, BadOptionsAndOutputsThrowNamingThem) {
   EXPECT_NE(message(swapped, {good}, ok).find("vertical-level slot holds a alignment"), std::string::npos);
 }
 
-TEST(Ride, AlignmentOnWheelsetsIsRefusedNamingTheContact) {
+// Alignment on wheelsets acts through the creep contact (tests/ride/ride_lateral_test.cpp checks
+// its receptance); the coach at 30 m/s, far below its ~350 km/h critical speed, answers bounded.
+TEST(Ride, AlignmentOnWheelsetsActsThroughTheCreepContact) {
   const LinearSystem s =
       assemble(load_vehicle(test::data_file("manchester_benchmark_coach_wheelsets.toml")), DofSet::all);
   TrackIrregularitySpectra track;
   track.alignment = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::alignment, {0.06, 2.0});
   RideOptions options;
   options.speeds = {30.0};
-  try {
-    solve_ride(s, track, default_ride_outputs(s), options);
-    ADD_FAILURE() << "no exception";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("wheel–rail contact"), std::string::npos) << e.what();
+  const RideResult r = solve_ride(s, track, default_ride_outputs(s), options);
+  for (const RideOutputAtSpeed& o : r.speeds[0].outputs) {
+    EXPECT_FALSE(o.unbounded);
+    EXPECT_TRUE(std::isfinite(o.rms));
   }
+  EXPECT_NE(r.summary.method.find("creep contact"), std::string::npos) << r.summary.method;
 }
 
 // Element outputs: a track spring's deflection is body minus track, its force −(k + iωc) times
