@@ -1,0 +1,36 @@
+// What the analyses' reports share (report_page.hpp).
+#include "report/report_page.hpp"
+
+#include <cmath>
+
+#include "report/text_format.hpp"
+
+namespace railmodal::report {
+
+std::string check_value(double value) {
+  if (value == std::floor(value) && std::abs(value) < 1e9) return fixed(value, 0);
+  return significant(value, 2);
+}
+
+std::string checks_text(const AnalysisSummary& summary) {
+  std::string text;
+  for (const Check& c : summary.checks) {
+    text += (text.empty() ? "" : "; ") + c.name + " " + check_value(c.value);
+    if (std::isfinite(c.limit)) text += " (limit " + check_value(c.limit) + (c.passed ? ")" : ", FAILED)");
+  }
+  return text.empty() ? "none recorded" : text;
+}
+
+std::vector<std::string> failed_checks(const AnalysisSummary& summary) {
+  std::vector<std::string> failed;
+  for (const Check& c : summary.checks)
+    if (!c.passed)
+      failed.push_back(c.name + " " + check_value(c.value) + ", limit " + check_value(c.limit) + " (docs/accuracy.md)");
+  return failed;
+}
+
+std::string method_text(const AnalysisSummary& summary) {
+  return summary.method.empty() ? "not recorded" : summary.method;
+}
+
+}  // namespace railmodal::report
