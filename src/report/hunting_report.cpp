@@ -26,6 +26,8 @@ using report::fixed;
 using report::JsonWriter;
 using report::significant;
 using report::Table;
+using report::width_of;
+using report::wrapped;
 using report::write_markdown_table;
 
 constexpr double kKmh = 3.6;  // m/s → km/h
@@ -262,25 +264,9 @@ const char* const kContactsNote =
 
 // ---- table (text) ----
 
-// Column widths in characters (UTF-8 continuation bytes take none).
-size_t width_of(const std::string& text) {
-  return static_cast<size_t>(std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
-}
-
 std::string pad(const std::string& text, size_t width, bool right) {
   const std::string fill(width > width_of(text) ? width - width_of(text) : 0, ' ');
   return right ? fill + text : text + fill;
-}
-
-// `text` broken into lines of at most 100 characters at spaces, for the plain-text report.
-std::string wrapped(const std::string& text) {
-  std::string out, line;
-  std::istringstream words(text);
-  for (std::string word; words >> word;) {
-    if (!line.empty() && width_of(line) + 1 + width_of(word) > 100) out += line + "\n", line.clear();
-    line += (line.empty() ? "" : " ") + word;
-  }
-  return out + line;
 }
 
 void write_text_table(std::ostream& out, const Table& t) {

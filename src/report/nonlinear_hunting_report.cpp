@@ -24,6 +24,8 @@ using report::fixed;
 using report::JsonWriter;
 using report::significant;
 using report::Table;
+using report::width_of;
+using report::wrapped;
 
 constexpr double kKmh = 3.6;  // m/s → km/h
 constexpr double kMm = 1e3;   // m → mm
@@ -199,20 +201,6 @@ Table curve_table(const NonlinearHuntingResult& r) {
 }
 
 // ---- table (text) ----
-
-size_t width_of(const std::string& text) {
-  return static_cast<size_t>(std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
-}
-
-std::string wrapped(const std::string& text) {
-  std::string out, line;
-  std::istringstream words(text);
-  for (std::string word; words >> word;) {
-    if (!line.empty() && width_of(line) + 1 + width_of(word) > 100) out += line + "\n", line.clear();
-    line += (line.empty() ? "" : " ") + word;
-  }
-  return out + line;
-}
 
 void write_text_table(std::ostream& out, const Table& t) {
   std::vector<size_t> width(t.headers.size());

@@ -1,7 +1,9 @@
 // What the analyses' reports share (report_page.hpp).
 #include "report/report_page.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "report/text_format.hpp"
 
@@ -31,6 +33,20 @@ std::vector<std::string> failed_checks(const AnalysisSummary& summary) {
 
 std::string method_text(const AnalysisSummary& summary) {
   return summary.method.empty() ? "not recorded" : summary.method;
+}
+
+size_t width_of(const std::string& text) {
+  return static_cast<size_t>(std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+}
+
+std::string wrapped(const std::string& text) {
+  std::string out, line;
+  std::istringstream words(text);
+  for (std::string word; words >> word;) {
+    if (!line.empty() && width_of(line) + 1 + width_of(word) > 100) out += line + "\n", line.clear();
+    line += (line.empty() ? "" : " ") + word;
+  }
+  return out + line;
 }
 
 }  // namespace railmodal::report

@@ -1,6 +1,6 @@
 // What the analyses' reports share beside the page's head and foot (document_table.hpp): the
 // dispatch on the output format, and the checks paragraph that says the analysis' own checks in
-// words (ride, linear and nonlinear hunting, balance).
+// words, and the plain-text page's widths and wrapping (ride, linear and nonlinear hunting, balance).
 //
 //   report::write_in_format(format, "write_ride", [&] { write_text(out, page); }, [&] { write_csv(out, r); },
 //                           [&] { write_json(out, page); }, [&] { write_markdown(out, page); },
@@ -8,6 +8,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -57,5 +58,11 @@ std::vector<std::string> failed_checks(const AnalysisSummary& summary);
 
 /// The summary's method, "not recorded" when it is empty.
 std::string method_text(const AnalysisSummary& summary);
+
+/// Characters in UTF-8 `text` (continuation bytes take none): a text table's column width.
+size_t width_of(const std::string& text);
+
+/// `text` broken into lines of at most 100 characters at spaces, for a plain-text report.
+std::string wrapped(const std::string& text);
 
 }  // namespace railmodal::report
