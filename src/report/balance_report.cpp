@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
 
+#include "report/csv_writer.hpp"
 #include "report/document_table.hpp"
+#include "report/json_writer.hpp"
+#include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
 #include "shortest_text.hpp"
@@ -14,6 +16,8 @@
 namespace railmodal {
 
 namespace {
+
+using report::JsonWriter;
 
 constexpr double kDegree = M_PI / 180.0;
 // The overload-coefficient limits of Zhdanov §III.3 (eq. (89a,b), citing ИТС «Паровоз» p. 236):
@@ -188,13 +192,12 @@ void write_text(std::ostream& out, const std::vector<Section>& sections) {
 // ---- Machine-readable outputs: every number at full precision (the shortest text that reads
 // back as the same double), in SI units named in the keys or in a unit column; harmonics with
 // amplitude and phase, q(φ) = Σ_k A_k cos(kφ − ψ_k), φ the reference (right) crank's angle.
+// JSON members in the order written (the file had nlohmann::ordered_json's, the insertion order),
+// streamed by JsonWriter with no document tree.
 
 // The states every 15° of the reference crank (the book's tables), as the text tables, with
 // their angle in whole degrees (the state's own angle in radians is 2π·i/steps, which need not
 // convert back to a whole number of degrees exactly).
-// Keys in the order written (nlohmann::json would sort them).
-using Json = nlohmann::ordered_json;
-
 std::vector<std::pair<int, const GearState*>> tabled_states(const GearResult& r) {
   std::vector<std::pair<int, const GearState*>> out;
   const int steps = static_cast<int>(r.states.size());
@@ -205,60 +208,63 @@ std::vector<std::pair<int, const GearState*>> tabled_states(const GearResult& r)
 
 double phase_of(const GearHarmonic& h) { return std::atan2(h.sine, h.cosine); }
 
-Json harmonics_json(const std::vector<GearHarmonic>& hs) {
-  Json out = Json::array();
+void write_harmonics(JsonWriter& j, const std::vector<GearHarmonic>& hs) {
+  j.begin_array();
   for (const GearHarmonic& h : hs)
-    out.push_back({{"order", h.order}, {"amplitude", h.order == 0 ? std::abs(h.cosine) : h.amplitude()},
-                   {"phase_deg", phase_of(h) / kDegree}});
-  return out;
+    j.begin_object().member("order", h.order).member("amplitude", h.order == 0 ? std::abs(h.cosine) : h.amplitude())
+        .member("phase_deg", phase_of(h) / kDegree).end_object();
+  j.end_array();
 }
 
-// JSON has no infinity: a speed that is never reached is null.
-Json finite_or_null(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
-
-Json states_json(const GearResult& r, const std::vector<std::string>& cylinders,
-                           const std::vector<std::string>& wheels, bool rods) {
-  Json out = Json::array();
+void write_states(JsonWriter& j, const GearResult& r, const std::vector<std::string>& cylinders,
+                  const std::vector<std::string>& wheels, bool rods) {
+  j.begin_array();
   for (const auto& [degree, st] : tabled_states(r)) {
-    Json j = {{"crank_angle_deg", degree}};
+    j.begin_object().member("crank_angle_deg", degree);
     if (rods) {
-      Json cyl = Json::array();
+      j.key("cylinders").begin_array();
       for (std::size_t c = 0; c < st->cylinders.size(); ++c)
-        cyl.push_back({{"cylinder", cylinders[c]}, {"X_N", st->cylinders[c].horizontal},
-                       {"Y_N", st->cylinders[c].vertical}, {"Z_N", st->cylinders[c].guide}});
-      j["cylinders"] = cyl;
+        j.begin_object().member("cylinder", cylinders[c]).member("X_N", st->cylinders[c].horizontal)
+            .member("Y_N", st->cylinders[c].vertical).member("Z_N", st->cylinders[c].guide).end_object();
+      j.end_array();
     }
-    Json loads = Json::array();
+    j.key("wheel_loads").begin_array();
     for (std::size_t w = 0; w < st->wheel_loads.size(); ++w)
-      loads.push_back({{"wheel", wheels[w]}, {"dP_N", st->wheel_loads[w]}});
-    j["wheel_loads"] = loads;
-    j["surging_N"] = st->surging;
-    j["nosing_N_m"] = st->nosing;
-    out.push_back(j);
+      j.begin_object().member("wheel", wheels[w]).member("dP_N", st->wheel_loads[w]).end_object();
+    j.end_array().member("surging_N", st->surging).member("nosing_N_m", st->nosing).end_object();
   }
-  return out;
+  j.end_array();
 }
 
-Json gear_json(const GearResult& r, const std::vector<std::string>& cylinders,
-                         const std::vector<std::string>& wheels) {
-  Json h_cyl = Json::array();
-  for (std::size_t c = 0; c < cylinders.size(); ++c)
-    h_cyl.push_back({{"cylinder", cylinders[c]}, {"X_N", harmonics_json(r.horizontal_harmonics[c])},
-                     {"Y_N", harmonics_json(r.vertical_harmonics[c])}, {"Z_N", harmonics_json(r.guide_harmonics[c])}});
-  Json w_json = Json::array();
+void write_gear(JsonWriter& j, const GearResult& r, const std::vector<std::string>& cylinders,
+                const std::vector<std::string>& wheels) {
+  j.begin_object().key("states_every_15_deg");
+  write_states(j, r, cylinders, wheels, true);
+  j.key("harmonics").begin_object().key("cylinders").begin_array();
+  for (std::size_t c = 0; c < cylinders.size(); ++c) {
+    j.begin_object().member("cylinder", cylinders[c]).key("X_N");
+    write_harmonics(j, r.horizontal_harmonics[c]);
+    j.key("Y_N");
+    write_harmonics(j, r.vertical_harmonics[c]);
+    j.key("Z_N");
+    write_harmonics(j, r.guide_harmonics[c]);
+    j.end_object();
+  }
+  j.end_array().key("surging_N");
+  write_harmonics(j, r.surging_harmonics);
+  j.key("nosing_N_m");
+  write_harmonics(j, r.nosing_harmonics);
+  j.end_object().key("wheels").begin_array();
   for (std::size_t w = 0; w < r.wheels.size(); ++w) {
     const GearWheelLoad& x = r.wheels[w];
-    w_json.push_back({{"wheel", wheels[w]}, {"static_load_N", x.static_load}, {"max_dP_N", x.max_dynamic_load},
-                      {"min_dP_N", x.min_dynamic_load}, {"least_load_N", x.static_load + x.min_dynamic_load},
-                      {"alpha", x.alpha}, {"alpha_89a", x.alpha_89a}, {"wheel_lift", x.wheel_lift},
-                      {"dP_harmonics_N", harmonics_json(x.harmonics)}});
+    j.begin_object().member("wheel", wheels[w]).member("static_load_N", x.static_load);
+    j.member("max_dP_N", x.max_dynamic_load).member("min_dP_N", x.min_dynamic_load);
+    j.member("least_load_N", x.static_load + x.min_dynamic_load).member("alpha", x.alpha);
+    j.member("alpha_89a", x.alpha_89a).member("wheel_lift", x.wheel_lift).key("dP_harmonics_N");
+    write_harmonics(j, x.harmonics);
+    j.end_object();
   }
-  return {{"states_every_15_deg", states_json(r, cylinders, wheels, true)},
-          {"harmonics", {{"cylinders", h_cyl}, {"surging_N", harmonics_json(r.surging_harmonics)},
-                         {"nosing_N_m", harmonics_json(r.nosing_harmonics)}}},
-          {"wheels", w_json},
-          {"max_surging_N", r.max_surging},
-          {"max_nosing_N_m", r.max_nosing}};
+  j.end_array().member("max_surging_N", r.max_surging).member("max_nosing_N_m", r.max_nosing).end_object();
 }
 
 double largest_alpha(const BalanceResult& b) {
@@ -267,74 +273,76 @@ double largest_alpha(const BalanceResult& b) {
   return alpha;
 }
 
-Json rule_json(const BalanceStudy& study, const BalanceResult& b, const std::vector<std::string>& cylinders,
-                         const std::vector<std::string>& wheels) {
-  Json ws = Json::array();
+void write_rule(JsonWriter& j, const BalanceStudy& study, const BalanceResult& b,
+                const std::vector<std::string>& cylinders, const std::vector<std::string>& wheels) {
+  j.begin_object().member("rule", to_string(b.rule)).key("wheels").begin_array();
   for (std::size_t w = 0; w < b.wheels.size(); ++w) {
     const WheelBalance& x = b.wheels[w];
-    ws.push_back({{"wheel", wheels[w]},
-                  {"rotating_mass_kg", x.rotating_mass}, {"rotating_angle_deg", x.rotating_angle / kDegree},
-                  {"vertical_mass_kg", x.vertical_mass}, {"vertical_angle_deg", x.vertical_angle / kDegree},
-                  {"overbalance_mass_kg", x.overbalance_mass}, {"overbalance_angle_deg", x.overbalance_angle / kDegree},
-                  {"total_mass_kg", x.total_mass}, {"total_angle_deg", x.total_angle / kDegree},
-                  {"max_hammer_blow_N", x.max_hammer_blow},
-                  {"least_load_N", b.after.wheels[w].static_load + b.after.wheels[w].min_dynamic_load},
-                  {"alpha", x.alpha}, {"alpha_89a", x.alpha_89a}, {"wheel_lift", x.alpha >= 1.0},
-                  {"dP_harmonics_N", harmonics_json(b.after.wheels[w].harmonics)}});
+    j.begin_object().member("wheel", wheels[w]);
+    j.member("rotating_mass_kg", x.rotating_mass).member("rotating_angle_deg", x.rotating_angle / kDegree);
+    j.member("vertical_mass_kg", x.vertical_mass).member("vertical_angle_deg", x.vertical_angle / kDegree);
+    j.member("overbalance_mass_kg", x.overbalance_mass).member("overbalance_angle_deg", x.overbalance_angle / kDegree);
+    j.member("total_mass_kg", x.total_mass).member("total_angle_deg", x.total_angle / kDegree);
+    j.member("max_hammer_blow_N", x.max_hammer_blow);
+    j.member("least_load_N", b.after.wheels[w].static_load + b.after.wheels[w].min_dynamic_load);
+    j.member("alpha", x.alpha).member("alpha_89a", x.alpha_89a).member("wheel_lift", x.alpha >= 1.0);
+    j.key("dP_harmonics_N");
+    write_harmonics(j, b.after.wheels[w].harmonics);
+    j.end_object();
   }
   const double alpha = largest_alpha(b);
-  Json speeds = Json::array();
+  j.end_array().member("max_surging_N", b.after.max_surging);
+  j.member("unbalanced_surging_percent", b.percent_unbalanced_surging).member("max_nosing_N_m", b.after.max_nosing);
+  j.member("unbalanced_nosing_percent", b.percent_unbalanced_nosing).member("max_alpha", alpha);
+  j.key("speed_at_alpha").begin_array();
+  // JSON has no infinity: a speed that is never reached is null (JsonWriter).
   for (double limit : kAlphaLimits)
-    speeds.push_back({{"alpha", limit}, {"speed_km_per_h", finite_or_null(speed_at_alpha(alpha, b.speed, limit) * 3.6)}});
-  Json j = {{"rule", to_string(b.rule)},
-                      {"wheels", ws},
-                      {"max_surging_N", b.after.max_surging},
-                      {"unbalanced_surging_percent", b.percent_unbalanced_surging},
-                      {"max_nosing_N_m", b.after.max_nosing},
-                      {"unbalanced_nosing_percent", b.percent_unbalanced_nosing},
-                      {"max_alpha", alpha},
-                      {"speed_at_alpha", speeds},
-                      {"surging_harmonics_N", harmonics_json(b.after.surging_harmonics)},
-                      {"nosing_harmonics_N_m", harmonics_json(b.after.nosing_harmonics)}};
-  if (b.rule == study.options.rule) j["states_every_15_deg"] = states_json(b.after, cylinders, wheels, false);
-  if (!b.trade_off.empty()) {
-    Json t = Json::array();
-    for (const BalanceTradeOff& x : b.trade_off)
-      t.push_back({{"balanced_fraction", x.fraction}, {"max_alpha", x.max_alpha}, {"max_surging_N", x.max_surging},
-                   {"max_nosing_N_m", x.max_nosing}});
-    j["trade_off"] = t;
+    j.begin_object().member("alpha", limit).member("speed_km_per_h", speed_at_alpha(alpha, b.speed, limit) * 3.6)
+        .end_object();
+  j.end_array().key("surging_harmonics_N");
+  write_harmonics(j, b.after.surging_harmonics);
+  j.key("nosing_harmonics_N_m");
+  write_harmonics(j, b.after.nosing_harmonics);
+  if (b.rule == study.options.rule) {
+    j.key("states_every_15_deg");
+    write_states(j, b.after, cylinders, wheels, false);
   }
-  return j;
+  if (!b.trade_off.empty()) {
+    j.key("trade_off").begin_array();
+    for (const BalanceTradeOff& x : b.trade_off)
+      j.begin_object().member("balanced_fraction", x.fraction).member("max_alpha", x.max_alpha)
+          .member("max_surging_N", x.max_surging).member("max_nosing_N_m", x.max_nosing).end_object();
+    j.end_array();
+  }
+  j.end_object();
 }
 
 std::vector<std::string> alpha_notes(const BalanceStudy& study);
 
 void write_json(std::ostream& out, const BalanceStudy& study, const std::vector<std::string>& cylinders,
                 const std::vector<std::string>& wheels) {
-  Json j;
-  j["engine"] = study.name;
-  j["speed_m_per_s"] = study.gear.speed;
-  j["speed_km_per_h"] = study.gear.speed * 3.6;
-  j["omega_rad_per_s"] = study.gear.omega;
-  j["frequency_hz"] = study.gear.frequency_hz;
-  j["options"] = {{"rule", to_string(study.options.rule)},
-                  {"allowed_alpha", study.options.allowed_alpha},
-                  {"reciprocating_fraction", study.options.reciprocating_fraction},
-                  {"overbalance_driving_axles", study.options.overbalance_driving_axles}};
-  j["conventions"] = {
-      {"crank_angle", "phi: the right (reference) crank's angle from its rear dead centre, in the direction of "
-                      "rotation running forward (Zhdanov; docs/driving_gear.md)"},
-      {"harmonics", "q(phi) = sum over k of amplitude_k cos(k phi - phase_k), k = 0 the mean"},
-      {"signs", "X + forward, Y and Z + up, dP + pressing the rail, surging + forward, nosing + turning the engine "
-                "to the right"},
-      {"masses", "counterweights in kg on the crank radius, angles in degrees ahead of the wheel's crank"}};
-  j["cylinders"] = cylinders;
-  j["wheels"] = wheels;
-  j["notes"] = alpha_notes(study);
-  j["gear"] = gear_json(study.gear, cylinders, wheels);
-  j["by_rule"] = Json::array();
-  for (const BalanceResult& b : study.by_rule) j["by_rule"].push_back(rule_json(study, b, cylinders, wheels));
-  out << j.dump(2) << "\n";
+  JsonWriter j(out);
+  j.begin_object().member("engine", study.name).member("speed_m_per_s", study.gear.speed);
+  j.member("speed_km_per_h", study.gear.speed * 3.6).member("omega_rad_per_s", study.gear.omega);
+  j.member("frequency_hz", study.gear.frequency_hz).key("options").begin_object();
+  j.member("rule", to_string(study.options.rule)).member("allowed_alpha", study.options.allowed_alpha);
+  j.member("reciprocating_fraction", study.options.reciprocating_fraction);
+  j.member("overbalance_driving_axles", study.options.overbalance_driving_axles).end_object();
+  j.key("conventions").begin_object();
+  j.member("crank_angle",
+           "phi: the right (reference) crank's angle from its rear dead centre, in the direction of rotation running "
+           "forward (Zhdanov; docs/driving_gear.md)");
+  j.member("harmonics", "q(phi) = sum over k of amplitude_k cos(k phi - phase_k), k = 0 the mean");
+  j.member("signs",
+           "X + forward, Y and Z + up, dP + pressing the rail, surging + forward, nosing + turning the engine to the "
+           "right");
+  j.member("masses", "counterweights in kg on the crank radius, angles in degrees ahead of the wheel's crank");
+  j.end_object().member("cylinders", cylinders).member("wheels", wheels).member("notes", alpha_notes(study));
+  j.key("gear");
+  write_gear(j, study.gear, cylinders, wheels);
+  j.key("by_rule").begin_array();
+  for (const BalanceResult& b : study.by_rule) write_rule(j, study, b, cylinders, wheels);
+  j.end_array().end_object();
 }
 
 // One long ("tidy") table that any CSV reader loads: a row per number, with the section it
@@ -342,21 +350,20 @@ void write_json(std::ostream& out, const BalanceStudy& study, const std::vector<
 // and its unit, and the crank angle, harmonic order or balanced fraction it is taken at.
 class CsvRows {
  public:
-  explicit CsvRows(std::ostream& out) : out_(out) {
-    out_ << "section,rule,item,quantity,unit,crank_angle_deg,order,balanced_fraction,value\n";
+  explicit CsvRows(std::ostream& out) : csv_(out) {
+    csv_.line("section,rule,item,quantity,unit,crank_angle_deg,order,balanced_fraction,value");
   }
   struct At {
     std::string angle, order, fraction;
   };
   void row(const std::string& section, const std::string& rule, const std::string& item, const std::string& quantity,
            const std::string& unit, const At& at, double value) {
-    out_ << section << ',' << rule << ',' << report::csv_field(item) << ',' << report::csv_field(quantity) << ','
-         << report::csv_field(unit) << ',' << at.angle << ',' << at.order << ',' << at.fraction << ','
-         << shortest_text(value) << '\n';
+    csv_.field(section).field(rule).field(item).field(quantity).field(unit).field(at.angle).field(at.order);
+    csv_.field(at.fraction).field(value).end_row();
   }
 
  private:
-  std::ostream& out_;
+  report::CsvWriter csv_;
 };
 
 void csv_states(CsvRows& csv, const std::string& rule, const GearResult& r, const std::vector<std::string>& cylinders,
@@ -581,30 +588,23 @@ void write_balance(std::ostream& out, const BalanceStudy& study, OutputFormat fo
   }
   const std::vector<std::string>& cylinders = study.cylinder_names;
   const std::vector<Section> sections = sections_of(study, cylinders, wheels);
-  switch (format) {
-    case OutputFormat::table:
-      out << heading(study) << "\n" << overbalance_line(study) << "\n";
-      for (const std::string& note : alpha_notes(study)) out << note << "\n";
-      write_text(out, sections);
-      return;
-    case OutputFormat::csv:
-      write_csv(out, study, cylinders, wheels);
-      return;
-    case OutputFormat::json:
-      write_json(out, study, cylinders, wheels);
-      return;
-    case OutputFormat::markdown:
-      out << "# " << heading(study) << "\n\n" << overbalance_line(study) << "\n";
-      for (const std::string& note : alpha_notes(study)) out << "\n" << note << "\n";
-      for (const Section& s : sections) {
-        out << "\n## " << s.title << "\n\n";
-        report::write_markdown_table(out, s.table);
-      }
-      return;
-    case OutputFormat::html:
-      write_html(out, study, sections, wheels, inputs);
-      return;
-  }
+  const auto write_table = [&] {
+    out << heading(study) << "\n" << overbalance_line(study) << "\n";
+    for (const std::string& note : alpha_notes(study)) out << note << "\n";
+    write_text(out, sections);
+  };
+  const auto write_markdown = [&] {
+    out << "# " << heading(study) << "\n\n" << overbalance_line(study) << "\n";
+    for (const std::string& note : alpha_notes(study)) out << "\n" << note << "\n";
+    for (const Section& s : sections) {
+      out << "\n## " << s.title << "\n\n";
+      report::write_markdown_table(out, s.table);
+    }
+  };
+  report::write_in_format(
+      format, "write_balance", write_table, [&] { write_csv(out, study, cylinders, wheels); },
+      [&] { write_json(out, study, cylinders, wheels); }, write_markdown,
+      [&] { write_html(out, study, sections, wheels, inputs); });
 }
 
 }  // namespace railmodal

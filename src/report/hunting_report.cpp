@@ -9,14 +9,14 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
-#include <stdexcept>
 
 #include "report/document_table.hpp"
+#include "report/json_lines.hpp"
 #include "report/json_writer.hpp"
 #include "report/number_text.hpp"
+#include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
-#include "report/unwritten_format.hpp"
 
 namespace railmodal {
 
@@ -26,6 +26,8 @@ using report::fixed;
 using report::JsonWriter;
 using report::significant;
 using report::Table;
+using report::width_of;
+using report::wrapped;
 using report::write_markdown_table;
 
 constexpr double kKmh = 3.6;  // m/s → km/h
@@ -145,34 +147,6 @@ std::string threshold_text(const HuntingResult& r) {
   return text;
 }
 
-// A check's value: counts as integers, the rest to 2 significant digits (as `modes` prints its
-// residual: enough to judge, and the same bytes from run to run).
-std::string check_value(double value) {
-  if (value == std::floor(value) && std::abs(value) < 1e9) return fixed(value, 0);
-  return significant(value, 2);
-}
-
-// The analysis' own checks (HuntingResult::summary), values and limits; never the stage times,
-// which vary from run to run (docs/architecture.md: outputs are byte for byte reproducible).
-std::string checks_text(const HuntingResult& r) {
-  std::string text;
-  for (const Check& c : r.summary.checks) {
-    text += (text.empty() ? "" : "; ") + c.name + " " + check_value(c.value);
-    if (std::isfinite(c.limit)) text += " (limit " + check_value(c.limit) + (c.passed ? ")" : ", FAILED)");
-  }
-  return text.empty() ? "none recorded" : text;
-}
-
-std::vector<std::string> failed_checks(const HuntingResult& r) {
-  std::vector<std::string> failed;
-  for (const Check& c : r.summary.checks)
-    if (!c.passed)
-      failed.push_back(c.name + " " + check_value(c.value) + ", limit " + check_value(c.limit) + " (docs/accuracy.md)");
-  return failed;
-}
-
-std::string method_text(const HuntingResult& r) { return r.summary.method.empty() ? "not recorded" : r.summary.method; }
-
 const char* const kLinearNote =
     "Linear analysis: eigenvalues of the vehicle linearised about running straight and centred on its track, "
     "with linear (unsaturated) creep forces and no flange contact. Its critical speed is where small motions "
@@ -290,25 +264,9 @@ const char* const kContactsNote =
 
 // ---- table (text) ----
 
-// Column widths in characters (UTF-8 continuation bytes take none).
-size_t width_of(const std::string& text) {
-  return static_cast<size_t>(std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
-}
-
 std::string pad(const std::string& text, size_t width, bool right) {
   const std::string fill(width > width_of(text) ? width - width_of(text) : 0, ' ');
   return right ? fill + text : text + fill;
-}
-
-// `text` broken into lines of at most 100 characters at spaces, for the plain-text report.
-std::string wrapped(const std::string& text) {
-  std::string out, line;
-  std::istringstream words(text);
-  for (std::string word; words >> word;) {
-    if (!line.empty() && width_of(line) + 1 + width_of(word) > 100) out += line + "\n", line.clear();
-    line += (line.empty() ? "" : " ") + word;
-  }
-  return out + line;
 }
 
 void write_text_table(std::ostream& out, const Table& t) {
@@ -348,8 +306,9 @@ void write_table(std::ostream& out, const Page& p) {
   out << "\ncontacts:\n";
   write_text_table(out, contacts_table(r));
   out << wrapped(kContactsNote) << "\n\n" << wrapped(kLinearNote) << "\n";
-  out << "\n" << wrapped("checks: " + checks_text(r)) << "\n" << wrapped("method: " + method_text(r)) << "\n";
-  for (const std::string& f : failed_checks(r)) out << wrapped("warning: check failed: " + f) << "\n";
+  out << "\n" << wrapped("checks: " + report::checks_text(r.summary)) << "\n"
+      << wrapped("method: " + report::method_text(r.summary)) << "\n";
+  for (const std::string& f : report::failed_checks(r.summary)) out << wrapped("warning: check failed: " + f) << "\n";
 }
 
 // ---- Markdown ----
@@ -378,8 +337,9 @@ void write_markdown(std::ostream& out, const Page& p) {
   out << "## Contacts\n\n";
   write_markdown_table(out, contacts_table(r));
   out << kContactsNote << "\n\n" << kLinearNote << "\n\n";
-  out << "## Checks\n\n" << checks_text(r) << ".\n\nMethod: " << method_text(r) << ".\n\n";
-  for (const std::string& f : failed_checks(r)) out << "**Warning: check failed:** " << f << "\n\n";
+  out << "## Checks\n\n" << report::checks_text(r.summary) << ".\n\nMethod: " << report::method_text(r.summary)
+      << ".\n\n";
+  for (const std::string& f : report::failed_checks(r.summary)) out << "**Warning: check failed:** " << f << "\n\n";
   out << "---\n\nWritten by " << report::provenance_line("stability", p.provenance) << "\n";
 }
 
@@ -651,9 +611,9 @@ void write_html(std::ostream& out, const Page& p) {
   report::write_html_table(out, contacts_table(r));
   out << "<p class=note>" << html_escape(kContactsNote) << "</p>\n<p class=note>" << html_escape(kLinearNote)
       << "</p>\n";
-  out << "<h2>Checks</h2>\n<p>" << html_escape(checks_text(r))
-      << ".</p>\n<p class=note>Method: " << html_escape(method_text(r)) << ".</p>\n";
-  for (const std::string& f : failed_checks(r))
+  out << "<h2>Checks</h2>\n<p>" << html_escape(report::checks_text(r.summary))
+      << ".</p>\n<p class=note>Method: " << html_escape(report::method_text(r.summary)) << ".</p>\n";
+  for (const std::string& f : report::failed_checks(r.summary))
     out << "<p class=bad><b>Warning: check failed:</b> " << html_escape(f) << "</p>\n";
   report::write_html_footer(out, "stability", p.provenance);
 }
@@ -739,25 +699,18 @@ void write_branch(JsonWriter& j, const HuntingBranch& b) {
 }
 
 // The head's members one a line, in the order written here, each value compact on its line; then
-// each branch on a line of its own (the eigenvalues of a 1000-speed locus are most of the document).
-template <typename WriteValue>
-void write_member(std::ostream& out, const char* key, WriteValue write_value, bool first = false) {
-  std::string name;
-  report::append_json_string(name, key);
-  out << (first ? "{\n  " : ",\n  ") << name << ": ";
-  JsonWriter j(out, -1);
-  write_value(j);
-}
-
+// each branch on a line of its own (the eigenvalues of a 1000-speed locus are most of the document;
+// json_lines.hpp).
 void write_json(std::ostream& out, const Page& p) {
+  using report::write_line_member;
   const HuntingResult& r = p.r;
   const std::optional<double> none;
-  write_member(out, "vehicle", [&](JsonWriter& j) { j.value(p.vehicle); }, true);
-  write_member(out, "analysis", [&](JsonWriter& j) { j.value("linear"); });
-  write_member(out, "verdict", [&](JsonWriter& j) { j.value(to_string(r.verdict)); });
-  write_member(out, "critical", [&](JsonWriter& j) { write_critical(j, r.critical); });
-  write_member(out, "summary", [&](JsonWriter& j) { write_summary(j, r.summary); });
-  write_member(out, "unstable_intervals", [&](JsonWriter& j) {
+  write_line_member(out, "vehicle", [&](JsonWriter& j) { j.value(p.vehicle); }, true);
+  write_line_member(out, "analysis", [&](JsonWriter& j) { j.value("linear"); });
+  write_line_member(out, "verdict", [&](JsonWriter& j) { j.value(to_string(r.verdict)); });
+  write_line_member(out, "critical", [&](JsonWriter& j) { write_critical(j, r.critical); });
+  write_line_member(out, "summary", [&](JsonWriter& j) { write_summary(j, r.summary); });
+  write_line_member(out, "unstable_intervals", [&](JsonWriter& j) {
     j.begin_array();
     for (const UnstableInterval& u : r.unstable_intervals)
       j.begin_object().member("branch", u.branch).member("from_kmh", u.from * kKmh)
@@ -766,15 +719,15 @@ void write_json(std::ostream& out, const Page& p) {
           .end_object();
     j.end_array();
   });
-  write_member(out, "damping_threshold", [&](JsonWriter& j) { j.value(r.damping_threshold); });
-  write_member(out, "threshold_speed_m_s", [&](JsonWriter& j) { j.value(r.threshold_speed); });
-  write_member(out, "threshold_speed_kmh", [&](JsonWriter& j) {
+  write_line_member(out, "damping_threshold", [&](JsonWriter& j) { j.value(r.damping_threshold); });
+  write_line_member(out, "threshold_speed_m_s", [&](JsonWriter& j) { j.value(r.threshold_speed); });
+  write_line_member(out, "threshold_speed_kmh", [&](JsonWriter& j) {
     j.value(r.threshold_speed ? std::optional<double>(*r.threshold_speed * kKmh) : none);
   });
-  write_member(out, "threshold_branch", [&](JsonWriter& j) {
+  write_line_member(out, "threshold_branch", [&](JsonWriter& j) {
     r.threshold_speed ? j.value(r.threshold_branch) : j.value(nullptr);
   });
-  write_member(out, "below_threshold_at_lowest_speed", [&](JsonWriter& j) {
+  write_line_member(out, "below_threshold_at_lowest_speed", [&](JsonWriter& j) {
     j.begin_array();
     for (const std::string& name : r.below_threshold_at_lowest_speed) {
       std::optional<double> zeta;
@@ -784,7 +737,7 @@ void write_json(std::ostream& out, const Page& p) {
     }
     j.end_array();
   });
-  write_member(out, "conicity_curve", [&](JsonWriter& j) {
+  write_line_member(out, "conicity_curve", [&](JsonWriter& j) {
     j.begin_array();
     for (const ConicityPoint& c : r.conicity_curve) {
       j.begin_object().member("conicity", c.conicity).key("critical");
@@ -793,25 +746,19 @@ void write_json(std::ostream& out, const Page& p) {
     }
     j.end_array();
   });
-  write_member(out, "contacts", [&](JsonWriter& j) {
+  write_line_member(out, "contacts", [&](JsonWriter& j) {
     j.begin_array();
     for (const ResolvedContact& c : r.contacts) write_contact(j, c);
     j.end_array();
   });
-  write_member(out, "dofs", [&](JsonWriter& j) { j.value(r.dofs); });
-  write_member(out, "speeds_m_s", [&](JsonWriter& j) { j.value(r.speeds); });
-  write_member(out, "speeds_kmh", [&](JsonWriter& j) {
+  write_line_member(out, "dofs", [&](JsonWriter& j) { j.value(r.dofs); });
+  write_line_member(out, "speeds_m_s", [&](JsonWriter& j) { j.value(r.speeds); });
+  write_line_member(out, "speeds_kmh", [&](JsonWriter& j) {
     j.begin_array();
     for (double v : r.speeds) j.value(v * kKmh);
     j.end_array();
   });
-  out << ",\n  \"branches\": [";
-  for (size_t k = 0; k < r.branches.size(); ++k) {
-    out << (k ? ",\n    " : "\n    ");
-    JsonWriter j(out, -1);
-    write_branch(j, r.branches[k]);
-  }
-  out << (r.branches.empty() ? "]" : "\n  ]") << "\n}\n";
+  report::write_last_line_array(out, "branches", r.branches, write_branch);
 }
 
 }  // namespace
@@ -823,26 +770,9 @@ void write_hunting_stability(std::ostream& out, const HuntingResult& result, Out
 void write_hunting_stability(std::ostream& out, const HuntingResult& result, OutputFormat format,
                              const std::string& vehicle, const Provenance& provenance) {
   const Page page{result, vehicle.empty() ? std::string("vehicle") : vehicle, provenance};
-  switch (format) {
-    case OutputFormat::table:
-      write_table(out, page);
-      break;
-    case OutputFormat::csv:
-      write_csv(out, result);
-      break;
-    case OutputFormat::json:
-      write_json(out, page);
-      break;
-    case OutputFormat::markdown:
-      write_markdown(out, page);
-      break;
-    case OutputFormat::html:
-      write_html(out, page);
-      break;
-    default:
-      throw std::invalid_argument(
-          report::unwritten_format("write_hunting_stability", "table, csv, json, markdown or html", format));
-  }
+  report::write_in_format(
+      format, "write_hunting_stability", [&] { write_table(out, page); }, [&] { write_csv(out, result); },
+      [&] { write_json(out, page); }, [&] { write_markdown(out, page); }, [&] { write_html(out, page); });
 }
 
 }  // namespace railmodal

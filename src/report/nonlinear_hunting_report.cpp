@@ -7,22 +7,25 @@
 
 #include <algorithm>
 #include <cmath>
-#include <nlohmann/json.hpp>
 #include <sstream>
-#include <stdexcept>
 
+#include "report/csv_writer.hpp"
 #include "report/document_table.hpp"
+#include "report/json_writer.hpp"
+#include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
-#include "report/unwritten_format.hpp"
 
 namespace railmodal {
 
 namespace {
 
 using report::fixed;
+using report::JsonWriter;
 using report::significant;
 using report::Table;
+using report::width_of;
+using report::wrapped;
 
 constexpr double kKmh = 3.6;  // m/s → km/h
 constexpr double kMm = 1e3;   // m → mm
@@ -85,20 +88,6 @@ std::string verdict_text(const NonlinearHuntingResult& r) {
 }
 
 std::string optional_speed(const std::optional<double>& v) { return v ? speed_text(*v) : "none"; }
-
-std::string check_value(double value) {
-  if (value == std::floor(value) && std::abs(value) < 1e9) return fixed(value, 0);
-  return significant(value, 2);
-}
-
-std::string checks_text(const NonlinearHuntingResult& r) {
-  std::string text;
-  for (const Check& c : r.summary.checks) {
-    text += (text.empty() ? "" : "; ") + c.name + " " + check_value(c.value);
-    if (std::isfinite(c.limit)) text += " (limit " + check_value(c.limit) + (c.passed ? ")" : ", FAILED)");
-  }
-  return text.empty() ? "none recorded" : text;
-}
 
 std::string convergence_text(const Page& p) {
   const NonlinearHuntingResult& r = p.r;
@@ -213,20 +202,6 @@ Table curve_table(const NonlinearHuntingResult& r) {
 
 // ---- table (text) ----
 
-size_t width_of(const std::string& text) {
-  return static_cast<size_t>(std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
-}
-
-std::string wrapped(const std::string& text) {
-  std::string out, line;
-  std::istringstream words(text);
-  for (std::string word; words >> word;) {
-    if (!line.empty() && width_of(line) + 1 + width_of(word) > 100) out += line + "\n", line.clear();
-    line += (line.empty() ? "" : " ") + word;
-  }
-  return out + line;
-}
-
 void write_text_table(std::ostream& out, const Table& t) {
   std::vector<size_t> width(t.headers.size());
   for (size_t c = 0; c < t.headers.size(); ++c) width[c] = width_of(t.headers[c]);
@@ -262,7 +237,8 @@ void write_table(std::ostream& out, const Page& p) {
   out << "\nlimit cycle on the way down (stated rate; every half cycle in csv and json):\n";
   write_text_table(out, curve_table(r));
   out << "\n" << wrapped(kCannotShow) << "\n";
-  out << "\n" << wrapped("checks: " + checks_text(r)) << "\n" << wrapped("method: " + r.summary.method) << "\n";
+  out << "\n" << wrapped("checks: " + report::checks_text(r.summary)) << "\n" << wrapped("method: " + r.summary.method)
+      << "\n";
 }
 
 // ---- Markdown ----
@@ -285,8 +261,8 @@ void write_markdown(std::ostream& out, const Page& p) {
   }
   out << "## Limit cycle on the way down\n\n";
   report::write_markdown_table(out, curve_table(r));
-  out << "\n" << kCannotShow << "\n\n## Checks\n\n" << checks_text(r) << ".\n\nMethod: " << r.summary.method
-      << ".\n\n";
+  out << "\n" << kCannotShow << "\n\n## Checks\n\n" << report::checks_text(r.summary)
+      << ".\n\nMethod: " << r.summary.method << ".\n\n";
   out << report::provenance_line("hunting", p.provenance) << "\n";
 }
 
@@ -345,7 +321,7 @@ void write_html(std::ostream& out, const Page& p) {
     report::write_html_table(out, holds_table(r));
   }
   out << "<p class=note>" << html_escape(kCannotShow) << "</p>\n";
-  out << "<h2>Checks</h2>\n<p>" << html_escape(checks_text(r)) << ".</p>\n<p class=note>Method: "
+  out << "<h2>Checks</h2>\n<p>" << html_escape(report::checks_text(r.summary)) << ".</p>\n<p class=note>Method: "
       << html_escape(r.summary.method) << ".</p>\n";
   report::write_html_footer(out, "hunting", p.provenance);
 }
@@ -355,100 +331,81 @@ void write_html(std::ostream& out, const Page& p) {
 // The bifurcation data: every half cycle of both ramps.
 void write_csv(std::ostream& out, const NonlinearHuntingResult& r) {
   using report::csv_heading;
-  out << "ramp," << csv_heading("ramp_rate", "m/s^2") << ",half_cycle," << csv_heading("speed", "km/h") << ","
-      << csv_heading("amplitude", "mm") << "\n";
+  report::CsvWriter csv(out);
+  csv.field("ramp").field(csv_heading("ramp_rate", "m/s^2")).field("half_cycle").field(csv_heading("speed", "km/h"));
+  csv.field(csv_heading("amplitude", "mm")).end_row();
   for (const RampDown* d : {&r.stated_rate, &r.halved_rate})
     for (size_t i = 0; i < d->curve.size(); ++i)
-      out << (d == &r.stated_rate ? "stated," : "halved,") << significant(d->ramp_rate, 10) << "," << i + 1 << ","
-          << significant(d->curve[i].speed * kKmh, 10) << "," << significant(d->curve[i].amplitude * kMm, 10) << "\n";
+      csv.field(d == &r.stated_rate ? "stated" : "halved").field(d->ramp_rate).field(i + 1)
+          .field(d->curve[i].speed * kKmh).field(d->curve[i].amplitude * kMm).end_row();
 }
 
-nlohmann::json number_or_null(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+// Every object's members in the alphabetical order nlohmann::json's std::map gave them (the file
+// is the same from run to run); a number that is not finite, or a speed not found, is null.
+std::optional<double> kmh(const std::optional<double>& v) { return v ? std::optional<double>(*v * kKmh) : v; }
+std::optional<double> if_found(const std::optional<double>& speed, double x) {
+  return speed ? std::optional<double>(x) : std::nullopt;
 }
 
-nlohmann::json speed_json(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
-nlohmann::json kmh_json(const std::optional<double>& v) {
-  return v ? nlohmann::json(*v * kKmh) : nlohmann::json(nullptr);
+void write_ramp(JsonWriter& j, const RampDown& d) {
+  j.begin_object().member("amplitude_m", if_found(d.critical_speed, d.amplitude));
+  j.member("critical_speed_kmh", kmh(d.critical_speed)).member("critical_speed_m_s", d.critical_speed);
+  j.key("curve").begin_object().key("amplitude_m").begin_array();
+  for (const LimitCyclePoint& q : d.curve) j.value(q.amplitude);
+  j.end_array().key("speed_m_s").begin_array();
+  for (const LimitCyclePoint& q : d.curve) j.value(q.speed);
+  j.end_array().end_object();
+  j.member("ramp_rate_m_s2", d.ramp_rate).member("steps", d.steps).member("verdict", to_string(d.verdict));
+  j.member("watched_wheelset", d.watched_wheelset).end_object();
 }
 
-nlohmann::json ramp_json(const RampDown& d) {
-  nlohmann::json speeds = nlohmann::json::array(), amplitudes = nlohmann::json::array();
-  for (const LimitCyclePoint& q : d.curve) {
-    speeds.push_back(q.speed);
-    amplitudes.push_back(q.amplitude);
-  }
-  return {{"ramp_rate_m_s2", d.ramp_rate},
-          {"verdict", to_string(d.verdict)},
-          {"critical_speed_m_s", speed_json(d.critical_speed)},
-          {"critical_speed_kmh", kmh_json(d.critical_speed)},
-          {"amplitude_m", d.critical_speed ? nlohmann::json(d.amplitude) : nlohmann::json(nullptr)},
-          {"steps", d.steps},
-          {"watched_wheelset", d.watched_wheelset},
-          {"curve", {{"speed_m_s", speeds}, {"amplitude_m", amplitudes}}}};
-}
-
-nlohmann::json options_json(const NonlinearHuntingOptions& o) {
-  nlohmann::json effects = nlohmann::json::array();
-  for (NonlinearEffect e : o.effects) effects.push_back(to_string(e));
-  nlohmann::json j = {{"effects", effects},
-                      {"start_speed_m_s", o.start_speed},
-                      {"end_speed_m_s", o.end_speed},
-                      {"ramp_rate_m_s2", o.ramp_rate},
-                      {"disturbance_m", o.disturbance},
-                      {"tolerance_m_s", o.tolerance},
-                      {"hold_periods", o.hold_periods},
-                      {"hold_margin_m_s", o.hold_margin},
-                      {"extinction_amplitude_m", o.extinction_amplitude},
-                      {"amplitude_bound_m", o.amplitude_bound}};
-  j["creep_saturation"] = has_effect(o, NonlinearEffect::creep_saturation)
-                              ? nlohmann::json{{"law", "shen_hedrick_elkins"},
-                                               {"friction_coefficient", o.friction_coefficient},
-                                               {"wheel_load_n", speed_json(o.wheel_load)},
-                                               {"contact_angle_rad", o.contact_angle}}
-                              : nlohmann::json(nullptr);
-  j["flange_contact"] = has_effect(o, NonlinearEffect::flange_contact)
-                            ? nlohmann::json{{"clearance_m", o.flange_clearance}, {"stiffness_n_m", o.flange_stiffness}}
-                            : nlohmann::json(nullptr);
-  return j;
+void write_options(JsonWriter& j, const NonlinearHuntingOptions& o) {
+  j.begin_object().member("amplitude_bound_m", o.amplitude_bound).key("creep_saturation");
+  if (has_effect(o, NonlinearEffect::creep_saturation))
+    j.begin_object().member("contact_angle_rad", o.contact_angle).member("friction_coefficient", o.friction_coefficient)
+        .member("law", "shen_hedrick_elkins").member("wheel_load_n", o.wheel_load).end_object();
+  else
+    j.value(nullptr);
+  j.member("disturbance_m", o.disturbance).key("effects").begin_array();
+  for (NonlinearEffect e : o.effects) j.value(to_string(e));
+  j.end_array().member("end_speed_m_s", o.end_speed).member("extinction_amplitude_m", o.extinction_amplitude);
+  j.key("flange_contact");
+  if (has_effect(o, NonlinearEffect::flange_contact))
+    j.begin_object().member("clearance_m", o.flange_clearance).member("stiffness_n_m", o.flange_stiffness).end_object();
+  else
+    j.value(nullptr);
+  j.member("hold_margin_m_s", o.hold_margin).member("hold_periods", o.hold_periods);
+  j.member("ramp_rate_m_s2", o.ramp_rate).member("start_speed_m_s", o.start_speed).member("tolerance_m_s", o.tolerance);
+  j.end_object();
 }
 
 void write_json(std::ostream& out, const Page& p) {
-  using nlohmann::json;
   const NonlinearHuntingResult& r = p.r;
-  json holds = json::array();
+  JsonWriter j(out);
+  j.begin_object().member("amplitude_m", if_found(r.critical_speed, r.amplitude)).member("analysis", "nonlinear");
+  j.member("converged", r.converged).member("convergence", to_string(r.convergence));
+  j.member("convergence_difference_m_s", r.convergence_difference);
+  j.member("critical_speed_kmh", kmh(r.critical_speed)).member("critical_speed_m_s", r.critical_speed);
+  j.key("hold").begin_object().member("doubled_hold_survives", r.hold.doubled_hold_survives);
+  j.member("highest_dying_m_s", r.hold.highest_dying).key("holds").begin_array();
   for (const SpeedHold& h : r.hold.holds)
-    holds.push_back({{"speed_m_s", h.speed},
-                     {"survives", h.survives},
-                     {"start_amplitude_m", h.start_amplitude},
-                     {"end_amplitude_m", h.end_amplitude},
-                     {"periods", h.periods},
-                     {"steps", h.steps}});
-  json checks = json::array();
+    j.begin_object().member("end_amplitude_m", h.end_amplitude).member("periods", h.periods)
+        .member("speed_m_s", h.speed).member("start_amplitude_m", h.start_amplitude).member("steps", h.steps)
+        .member("survives", h.survives).end_object();
+  j.end_array().member("lowest_surviving_m_s", r.hold.lowest_surviving).end_object();
+  j.member("linear_critical_speed_kmh", kmh(p.linear)).member("linear_critical_speed_m_s", p.linear);
+  j.key("options");
+  write_options(j, p.o);
+  j.key("ramps").begin_array();
+  write_ramp(j, r.stated_rate);
+  write_ramp(j, r.halved_rate);
+  j.end_array().member("richardson_critical_speed_m_s", r.richardson_critical_speed);
+  j.key("summary").begin_object().member("analysis", r.summary.analysis).key("checks").begin_array();
   for (const Check& c : r.summary.checks)
-    checks.push_back(
-        {{"name", c.name}, {"value", number_or_null(c.value)}, {"limit", number_or_null(c.limit)}, {"passed", c.passed}});
-  json j;  // nlohmann's object keeps its keys sorted: the file is the same from run to run
-  j["vehicle"] = p.vehicle;
-  j["analysis"] = "nonlinear";
-  j["options"] = options_json(p.o);
-  j["verdict"] = to_string(r.verdict);
-  j["critical_speed_m_s"] = speed_json(r.critical_speed);
-  j["critical_speed_kmh"] = kmh_json(r.critical_speed);
-  j["amplitude_m"] = r.critical_speed ? json(r.amplitude) : json(nullptr);
-  j["linear_critical_speed_m_s"] = speed_json(p.linear);
-  j["linear_critical_speed_kmh"] = kmh_json(p.linear);
-  j["convergence"] = to_string(r.convergence);
-  j["converged"] = r.converged;
-  j["convergence_difference_m_s"] = number_or_null(r.convergence_difference);
-  j["richardson_critical_speed_m_s"] = speed_json(r.richardson_critical_speed);
-  j["ramps"] = {ramp_json(r.stated_rate), ramp_json(r.halved_rate)};
-  j["hold"] = {{"lowest_surviving_m_s", speed_json(r.hold.lowest_surviving)},
-               {"highest_dying_m_s", speed_json(r.hold.highest_dying)},
-               {"doubled_hold_survives", r.hold.doubled_hold_survives},
-               {"holds", holds}};
-  j["summary"] = {{"analysis", r.summary.analysis}, {"method", r.summary.method}, {"checks", checks}};
-  out << j.dump(2) << "\n";
+    j.begin_object().member("limit", c.limit).member("name", c.name).member("passed", c.passed)
+        .member("value", c.value).end_object();
+  j.end_array().member("method", r.summary.method).end_object();
+  j.member("vehicle", p.vehicle).member("verdict", to_string(r.verdict)).end_object();
 }
 
 }  // namespace
@@ -458,26 +415,9 @@ void write_nonlinear_hunting(std::ostream& out, const NonlinearHuntingResult& re
                              const Provenance& provenance, std::optional<double> linear_critical_speed) {
   const Page page{result, options, vehicle.empty() ? std::string("vehicle") : vehicle, provenance,
                   linear_critical_speed};
-  switch (format) {
-    case OutputFormat::table:
-      write_table(out, page);
-      break;
-    case OutputFormat::csv:
-      write_csv(out, result);
-      break;
-    case OutputFormat::json:
-      write_json(out, page);
-      break;
-    case OutputFormat::markdown:
-      write_markdown(out, page);
-      break;
-    case OutputFormat::html:
-      write_html(out, page);
-      break;
-    default:
-      throw std::invalid_argument(
-          report::unwritten_format("write_nonlinear_hunting", "table, csv, json, markdown or html", format));
-  }
+  report::write_in_format(
+      format, "write_nonlinear_hunting", [&] { write_table(out, page); }, [&] { write_csv(out, result); },
+      [&] { write_json(out, page); }, [&] { write_markdown(out, page); }, [&] { write_html(out, page); });
 }
 
 }  // namespace railmodal

@@ -11,18 +11,20 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <nlohmann/json.hpp>
-#include <stdexcept>
 
+#include "report/csv_writer.hpp"
 #include "report/document_table.hpp"
+#include "report/json_lines.hpp"
+#include "report/json_writer.hpp"
+#include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
-#include "report/unwritten_format.hpp"
 
 namespace railmodal {
 namespace {
 
 using report::fixed;
+using report::JsonWriter;
 using report::significant;
 using report::Table;
 
@@ -544,8 +546,11 @@ void write_text(std::ostream& out, const Page& p) {
 
 // ---- CSV and JSON ----
 
-std::string csv_value(double v) { return std::isfinite(v) ? significant(v, 10) : ""; }
-std::string csv_optional(const std::optional<double>& v) { return v ? csv_value(*v) : ""; }
+// A number that is not finite is a blank field.
+void finite_field(report::CsvWriter& csv, double v) { std::isfinite(v) ? void(csv.field(v)) : void(csv.blank()); }
+void optional_field(report::CsvWriter& csv, const std::optional<double>& v) {
+  v ? finite_field(csv, *v) : void(csv.blank());
+}
 
 // Whether an output has the comfort indices (weighted RMS, P95, Wz): a point's acceleration.
 bool has_comfort_indices(const RideOutput& o) {
@@ -556,164 +561,181 @@ bool has_comfort_indices(const RideOutput& o) {
 // P95 estimate and Wz, each column headed with its unit; then N_MV per floor point. An unbounded
 // RMS is the word, its other columns blank.
 void write_csv(std::ostream& out, const RideResult& r) {
-  using report::csv_field;
   using report::csv_heading;
-  out << csv_heading("speed", "km/h");
+  report::CsvWriter csv(out);
+  csv.field(csv_heading("speed", "km/h"));
   for (const RideOutput& o : r.outputs) {
-    out << "," << csv_field(csv_heading(o.name + " rms", unit_of(o)));
+    csv.field(csv_heading(o.name + " rms", unit_of(o)));
     if (has_comfort_indices(o))
-      out << "," << csv_field(csv_heading(o.name + " weighted rms", "m/s²")) << ","
-          << csv_field(csv_heading(o.name + " p95 estimate", "m/s²")) << "," << csv_field(o.name + " sperling wz");
+      csv.field(csv_heading(o.name + " weighted rms", "m/s²"))
+          .field(csv_heading(o.name + " p95 estimate", "m/s²"))
+          .field(o.name + " sperling wz");
   }
   if (!r.speeds.empty())
-    for (const RideComfortAtPoint& c : r.speeds.front().comfort) out << "," << csv_field("nmv estimate " + point_text(c));
-  out << "\n";
+    for (const RideComfortAtPoint& c : r.speeds.front().comfort) csv.field("nmv estimate " + point_text(c));
+  csv.end_row();
   for (const RideAtSpeed& at : r.speeds) {
-    out << csv_value(at.speed * kKmh);
+    finite_field(csv, at.speed * kKmh);
     for (size_t i = 0; i < r.outputs.size() && i < at.outputs.size(); ++i) {
       const RideOutputAtSpeed& o = at.outputs[i];
       const bool comfort = has_comfort_indices(r.outputs[i]);
       if (o.unbounded) {
-        out << (comfort ? ",unbounded,,," : ",unbounded");
+        csv.field("unbounded");
+        if (comfort) csv.blank().blank().blank();
         continue;
       }
-      out << "," << csv_value(o.rms);
-      if (comfort)
-        out << "," << csv_optional(o.weighted_rms) << "," << csv_optional(o.p95_estimate) << ","
-            << csv_optional(o.sperling_wz);
+      finite_field(csv, o.rms);
+      if (comfort) {
+        optional_field(csv, o.weighted_rms);
+        optional_field(csv, o.p95_estimate);
+        optional_field(csv, o.sperling_wz);
+      }
     }
-    for (const RideComfortAtPoint& c : at.comfort) out << "," << csv_value(c.nmv_estimate);
-    out << "\n";
+    for (const RideComfortAtPoint& c : at.comfort) finite_field(csv, c.nmv_estimate);
+    csv.end_row();
   }
 }
 
-nlohmann::json optional_json(const std::optional<double>& v) {
-  return v && std::isfinite(*v) ? nlohmann::json(*v) : nlohmann::json(nullptr);
-}
-nlohmann::json vector_json(const Eigen::VectorXd& v) {
-  nlohmann::json a = nlohmann::json::array();
-  for (Eigen::Index k = 0; k < v.size(); ++k) a.push_back(std::isfinite(v[k]) ? nlohmann::json(v[k]) : nullptr);
-  return a;
+// Every inner object's members in the alphabetical order nlohmann::json's std::map gave them
+// (the names' prefixes fix the order whatever the unit suffix); a number that is not finite is
+// null (JsonWriter).
+void write_values(JsonWriter& j, const Eigen::VectorXd& v) {
+  j.begin_array();
+  for (Eigen::Index k = 0; k < v.size(); ++k) j.value(v[k]);
+  j.end_array();
 }
 
-nlohmann::json output_json(const RideOutput& o) {
-  nlohmann::json j = {{"name", o.name}, {"kind", to_string(o.kind)}, {"axis", to_string(o.axis)}, {"unit", unit_of(o)}};
+void write_point(JsonWriter& j, const Eigen::Vector3d& p) {
+  j.key("point_m").begin_array().value(p.x()).value(p.y()).value(p.z()).end_array();
+}
+
+void write_output(JsonWriter& j, const RideOutput& o) {
+  j.begin_object().member("axis", to_string(o.axis));
   if (o.kind == RideOutput::Kind::point) {
-    j["body"] = o.body;
-    j["point_m"] = {o.point.x(), o.point.y(), o.point.z()};
-    j["quantity"] = to_string(o.quantity);
+    j.member("body", o.body).member("kind", to_string(o.kind)).member("name", o.name);
+    write_point(j, o.point);
+    j.member("quantity", to_string(o.quantity));
   } else {
-    j["element"] = o.element;
+    j.member("element", o.element).member("kind", to_string(o.kind)).member("name", o.name);
   }
-  return j;
+  j.member("unit", unit_of(o)).end_object();
 }
 
-nlohmann::json comfort_json(const std::vector<RideComfortAtPoint>& comfort, const char* key) {
-  nlohmann::json a = nlohmann::json::array();
+void write_comfort(JsonWriter& j, const std::vector<RideComfortAtPoint>& comfort, const char* key) {
+  j.begin_array();
   for (const RideComfortAtPoint& c : comfort) {
-    nlohmann::json missing = nlohmann::json::array();
-    for (RideAxis x : c.missing_axes) missing.push_back(to_string(x));
-    a.push_back({{"body", c.body},
-                 {"point_m", {c.point.x(), c.point.y(), c.point.z()}},
-                 {key, c.nmv_estimate},
-                 {"missing_axes", missing}});
+    j.begin_object().member("body", c.body).key("missing_axes").begin_array();
+    for (RideAxis x : c.missing_axes) j.value(to_string(x));
+    j.end_array().member(key, c.nmv_estimate);
+    write_point(j, c.point);
+    j.end_object();
   }
-  return a;
+  j.end_array();
 }
 
-nlohmann::json at_speed_json(const RideResult& r, const RideAtSpeed& at) {
-  nlohmann::json outputs = nlohmann::json::array();
+void write_at_speed(JsonWriter& j, const RideResult& r, const RideAtSpeed& at) {
+  j.begin_object().key("comfort");
+  write_comfort(j, at.comfort, "nmv_estimate");
+  j.key("inputs").begin_array();
+  for (size_t k = 0; k < at.input_psd.size(); ++k) {
+    j.begin_object().member("name", input_name(r, k)).key("psd_m2_per_hz");
+    write_values(j, at.input_psd[k]);
+    j.end_object();
+  }
+  j.end_array().key("outputs").begin_array();
   for (size_t i = 0; i < r.outputs.size() && i < at.outputs.size(); ++i) {
     const RideOutputAtSpeed& o = at.outputs[i];
-    nlohmann::json j = {{"name", r.outputs[i].name}, {"unbounded", o.unbounded}};
-    if (!o.unbounded) {
-      j["rms_" + key_suffix(r.outputs[i])] = o.rms;
-      j["weighted_rms_m_s2"] = optional_json(o.weighted_rms);
-      j["p95_estimate_m_s2"] = optional_json(o.p95_estimate);
-      j["sperling_wz"] = optional_json(o.sperling_wz);
-      nlohmann::json modes = nlohmann::json::array();
-      for (const ModalContribution& m : o.modes)
-        // 1-based, as the reports' tables number the modes
-        modes.push_back({{"mode", m.mode + 1},
-                         {"variance_" + variance_key_suffix(r.outputs[i]), m.variance},
-                         {"share", m.share}});
-      j["modes"] = modes;
-      j["cross_term_variance_" + variance_key_suffix(r.outputs[i])] = o.cross_term_variance;
-      j["direct_variance_" + variance_key_suffix(r.outputs[i])] = o.direct_variance;
-      if (o.psd.size() > 0) j["psd_" + psd_key_suffix(r.outputs[i])] = vector_json(o.psd);
+    const RideOutput& out = r.outputs[i];
+    j.begin_object();
+    if (o.unbounded) {
+      j.member("name", out.name).member("unbounded", true).end_object();
+      continue;
     }
-    outputs.push_back(j);
+    const std::string variance = variance_key_suffix(out);
+    j.member("cross_term_variance_" + variance, o.cross_term_variance);
+    j.member("direct_variance_" + variance, o.direct_variance).key("modes").begin_array();
+    for (const ModalContribution& m : o.modes)
+      // 1-based, as the reports' tables number the modes
+      j.begin_object().member("mode", m.mode + 1).member("share", m.share).member("variance_" + variance, m.variance)
+          .end_object();
+    j.end_array().member("name", out.name).member("p95_estimate_m_s2", o.p95_estimate);
+    if (o.psd.size() > 0) {
+      j.key("psd_" + psd_key_suffix(out));
+      write_values(j, o.psd);
+    }
+    j.member("rms_" + key_suffix(out), o.rms).member("sperling_wz", o.sperling_wz).member("unbounded", false);
+    j.member("weighted_rms_m_s2", o.weighted_rms).end_object();
   }
-  nlohmann::json inputs = nlohmann::json::array();
-  for (size_t k = 0; k < at.input_psd.size(); ++k)
-    inputs.push_back({{"name", input_name(r, k)}, {"psd_m2_per_hz", vector_json(at.input_psd[k])}});
-  return {{"speed_m_s", at.speed},
-          {"speed_kmh", at.speed * kKmh},
-          {"outputs", outputs},
-          {"comfort", comfort_json(at.comfort, "nmv_estimate")},
-          {"inputs", inputs}};
+  j.end_array().member("speed_kmh", at.speed * kKmh).member("speed_m_s", at.speed).end_object();
 }
 
-nlohmann::json summary_json(const AnalysisSummary& s) {
-  nlohmann::json checks = nlohmann::json::array();
-  for (const Check& c : s.checks)
-    checks.push_back({{"name", c.name},
-                      {"value", std::isfinite(c.value) ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
-                      {"limit", std::isfinite(c.limit) ? nlohmann::json(c.limit) : nlohmann::json(nullptr)},
-                      // a figure reported without a bound neither passes nor fails
-                      {"passed", std::isfinite(c.limit) ? nlohmann::json(c.passed) : nlohmann::json(nullptr)}});
-  return {{"analysis", s.analysis}, {"method", s.method}, {"checks", checks}};
+void write_summary(JsonWriter& j, const AnalysisSummary& s) {
+  j.begin_object().member("analysis", s.analysis).key("checks").begin_array();
+  for (const Check& c : s.checks) {
+    j.begin_object().member("limit", c.limit).member("name", c.name).key("passed");
+    // a figure reported without a bound neither passes nor fails
+    std::isfinite(c.limit) ? j.value(c.passed) : j.value(nullptr);
+    j.member("value", c.value).end_object();
+  }
+  j.end_array().member("method", s.method).end_object();
 }
 
-nlohmann::json simulated_json(const RideSimulationResult& s, const RideFftChecks* c) {
-  nlohmann::json outputs = nlohmann::json::array();
+void write_simulated(JsonWriter& j, const RideSimulationResult& s, const RideFftChecks* c) {
+  j.begin_object().key("comfort");
+  write_comfort(j, s.comfort, "nmv");
+  j.member("duration_s", s.time.size() > 1 ? s.time[s.time.size() - 1] - s.time[0] : 0.0);
+  if (c) {
+    j.key("fft_checks").begin_object().member("exact_bin_error", c->exact_bin_error);
+    j.member("fraction_outside_band", c->fraction_outside_band).member("rms_difference", c->rms_difference);
+    j.key("summary");
+    write_summary(j, c->summary);
+    j.end_object();
+  }
+  j.member("notes", s.notes).key("outputs").begin_array();
   for (size_t i = 0; i < s.outputs.size() && i < s.histories.size(); ++i) {
     const RideHistory& h = s.histories[i];
-    outputs.push_back({{"name", s.outputs[i].name},
-                       {"rms_" + key_suffix(s.outputs[i]), h.rms},
-                       {"weighted_rms_m_s2", optional_json(h.weighted_rms)},
-                       {"p95_m_s2", optional_json(h.p95)},
-                       {"sperling_wz", optional_json(h.sperling_wz)},
-                       {"window_rms_m_s2", vector_json(h.window_rms)}});
+    j.begin_object().member("name", s.outputs[i].name).member("p95_m_s2", h.p95);
+    j.member("rms_" + key_suffix(s.outputs[i]), h.rms).member("sperling_wz", h.sperling_wz);
+    j.member("weighted_rms_m_s2", h.weighted_rms).key("window_rms_m_s2");
+    write_values(j, h.window_rms);
+    j.end_object();
   }
-  nlohmann::json j = {{"outputs", outputs}, {"comfort", comfort_json(s.comfort, "nmv")}, {"notes", s.notes},
-                      {"duration_s", s.time.size() > 1 ? s.time[s.time.size() - 1] - s.time[0] : 0.0}};
-  if (c)
-    j["fft_checks"] = {{"exact_bin_error", optional_json(c->exact_bin_error)},
-                       {"fraction_outside_band", c->fraction_outside_band},
-                       {"rms_difference", c->rms_difference},
-                       {"summary", summary_json(c->summary)}};
-  return j;
+  j.end_array().end_object();
 }
 
 // One member a line, and each speed on a line of its own (its spectra are most of the document):
-// readable and diffable without one number a line.
+// readable and diffable without one number a line (json_lines.hpp).
 void write_json(std::ostream& out, const Page& p) {
-  using nlohmann::json;
+  using report::write_line_member;
   const RideResult& r = p.r;
-  auto member = [&](const char* key, const json& value, bool first = false) {
-    out << (first ? "{\n  " : ",\n  ") << json(key).dump() << ": " << value.dump();
-  };
-  json modes = json::array();
-  for (const RideMode& m : r.modes) modes.push_back({{"name", m.name}, {"frequency_hz", m.frequency_hz}});
-  json outputs = json::array();
-  for (const RideOutput& o : r.outputs) outputs.push_back(output_json(o));
-  member("title", p.title, true);
-  member("friction_treatment", r.friction_treatment);
-  member("grid_error_estimate", r.grid_error_estimate);
-  member("notes", r.notes);
-  json track = json::array();
-  for (size_t k = 0; k < r.input_rms.size() && k < r.inputs.size(); ++k)
-    track.push_back({{"name", r.inputs[k]}, {"rms_m", r.input_rms[k]}});
-  member("track_rms", track);
-  member("summary", summary_json(r.summary));
-  member("modes", modes);
-  member("outputs", outputs);
-  member("time_domain", p.simulated ? simulated_json(*p.simulated, p.checks) : json(nullptr));
-  member("frequencies_hz", vector_json(r.frequencies));
-  out << ",\n  \"speeds\": [";
-  for (size_t k = 0; k < r.speeds.size(); ++k) out << (k ? ",\n    " : "\n    ") << at_speed_json(r, r.speeds[k]).dump();
-  out << (r.speeds.empty() ? "]" : "\n  ]") << "\n}\n";
+  write_line_member(out, "title", [&](JsonWriter& j) { j.value(p.title); }, true);
+  write_line_member(out, "friction_treatment", [&](JsonWriter& j) { j.value(r.friction_treatment); });
+  write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(r.grid_error_estimate); });
+  write_line_member(out, "notes", [&](JsonWriter& j) { j.value(r.notes); });
+  write_line_member(out, "track_rms", [&](JsonWriter& j) {
+    j.begin_array();
+    for (size_t k = 0; k < r.input_rms.size() && k < r.inputs.size(); ++k)
+      j.begin_object().member("name", r.inputs[k]).member("rms_m", r.input_rms[k]).end_object();
+    j.end_array();
+  });
+  write_line_member(out, "summary", [&](JsonWriter& j) { write_summary(j, r.summary); });
+  write_line_member(out, "modes", [&](JsonWriter& j) {
+    j.begin_array();
+    for (const RideMode& m : r.modes)
+      j.begin_object().member("frequency_hz", m.frequency_hz).member("name", m.name).end_object();
+    j.end_array();
+  });
+  write_line_member(out, "outputs", [&](JsonWriter& j) {
+    j.begin_array();
+    for (const RideOutput& o : r.outputs) write_output(j, o);
+    j.end_array();
+  });
+  write_line_member(out, "time_domain", [&](JsonWriter& j) {
+    p.simulated ? write_simulated(j, *p.simulated, p.checks) : void(j.value(nullptr));
+  });
+  write_line_member(out, "frequencies_hz", [&](JsonWriter& j) { write_values(j, r.frequencies); });
+  report::write_last_line_array(out, "speeds", r.speeds,
+                                [&](JsonWriter& j, const RideAtSpeed& at) { write_at_speed(j, r, at); });
 }
 
 }  // namespace
@@ -726,25 +748,9 @@ void write_ride(std::ostream& out, const RideResult& result, OutputFormat format
 void write_ride(std::ostream& out, const RideResult& result, OutputFormat format, const std::string& title,
                 const Provenance& provenance, const RideSimulationResult* simulated, const RideFftChecks* checks) {
   const Page page{result, title.empty() ? std::string("vehicle") : title, provenance, simulated, checks};
-  switch (format) {
-    case OutputFormat::table:
-      write_text(out, page);
-      break;
-    case OutputFormat::csv:
-      write_csv(out, result);
-      break;
-    case OutputFormat::json:
-      write_json(out, page);
-      break;
-    case OutputFormat::markdown:
-      write_markdown(out, page);
-      break;
-    case OutputFormat::html:
-      write_html(out, page);
-      break;
-    default:
-      throw std::invalid_argument(report::unwritten_format("write_ride", "table, csv, json, markdown or html", format));
-  }
+  report::write_in_format(
+      format, "write_ride", [&] { write_text(out, page); }, [&] { write_csv(out, result); },
+      [&] { write_json(out, page); }, [&] { write_markdown(out, page); }, [&] { write_html(out, page); });
 }
 
 }  // namespace railmodal

@@ -740,6 +740,42 @@ class Integration {
   Eigen::MatrixXd x_, v_;
 };
 
+// What both entry points (sources, sampled track) require before they build the model, in this
+// order; check_speed says what each requires of the speed (a sampled track runs at one speed).
+template <typename CheckSpeed>
+void require_simulable(const LinearSystem& system, const SimulationOptions& options, CheckSpeed check_speed) {
+  model::refuse_series_dampers(system, "simulation");
+  if (system.size() == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
+  require_valid(options, "simulation: ");
+  if (options.duration / options.time_step > 1e8)
+    throw std::invalid_argument("simulation: more than 1e8 output steps; take a longer time step");
+  check_speed();
+  for (int i = 0; i < system.size(); ++i)
+    if (system.mass.row(i).cwiseAbs().maxCoeff() == 0.0)
+      throw std::invalid_argument("simulation: '" + system.dofs[i].label +
+                                  "' is massless; the nonlinear path needs inertia at every degree of freedom");
+}
+
+// The options the integration uses: the event tolerance raised to the resolution of time over
+// the run where it was finer, which the summary's checks say.
+SimulationOptions with_resolvable_events(const SimulationOptions& options, AnalysisSummary* summary) {
+  SimulationOptions used = options;
+  if (used.event_tolerance < resolvable_event_tolerance(options.duration)) {
+    used.event_tolerance = resolvable_event_tolerance(options.duration);
+    summary->checks.push_back({"event tolerance raised to the resolution of time over the run (ε·duration), s",
+                               used.event_tolerance, std::numeric_limits<double>::infinity(), true});
+  }
+  return used;
+}
+
+// The integration's counts, reported without a bound.
+void add_step_counts(const TimeHistory& out, AnalysisSummary* summary) {
+  summary->checks.push_back({"integrator steps", static_cast<double>(out.steps_taken),
+                             std::numeric_limits<double>::infinity(), true});
+  summary->checks.push_back({"events", static_cast<double>(out.events.size()),
+                             std::numeric_limits<double>::infinity(), true});
+}
+
 }  // namespace
 
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
@@ -750,28 +786,16 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
 
 TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<const ExcitationSource*>& sources,
                                const SimulationOptions& options, const NonlinearEffects& effects, HistorySink& sink) {
-  const int n = system.size();
-  model::refuse_series_dampers(system, "simulation");
-  if (n == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
-  require_valid(options, "simulation: ");
-  if (options.duration / options.time_step > 1e8)
-    throw std::invalid_argument("simulation: more than 1e8 output steps; take a longer time step");
-  if (!sources.empty() && !(options.speed > 0.0)) throw std::invalid_argument("simulation: the speed must be positive");
-  if (options.final_speed > 0.0 && sources.empty())
-    throw std::invalid_argument("simulation: a final speed must be positive, and needs sources to run over");
-  for (int i = 0; i < n; ++i)
-    if (system.mass.row(i).cwiseAbs().maxCoeff() == 0.0)
-      throw std::invalid_argument("simulation: '" + system.dofs[i].label +
-                                  "' is massless; the nonlinear path needs inertia at every degree of freedom");
+  require_simulable(system, options, [&] {
+    if (!sources.empty() && !(options.speed > 0.0))
+      throw std::invalid_argument("simulation: the speed must be positive");
+    if (options.final_speed > 0.0 && sources.empty())
+      throw std::invalid_argument("simulation: a final speed must be positive, and needs sources to run over");
+  });
 
   AnalysisSummary summary;
   StageClock clock(&summary);
-  SimulationOptions used = options;
-  if (used.event_tolerance < resolvable_event_tolerance(options.duration)) {
-    used.event_tolerance = resolvable_event_tolerance(options.duration);
-    summary.checks.push_back({"event tolerance raised to the resolution of time over the run (ε·duration), s",
-                              used.event_tolerance, std::numeric_limits<double>::infinity(), true});
-  }
+  const SimulationOptions used = with_resolvable_events(options, &summary);
   simulate::SpeedProfile profile;
   profile.initial = options.speed;
   if (options.final_speed > 0.0) profile.acceleration = (options.final_speed - options.speed) / options.duration;
@@ -795,10 +819,7 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
     finite = integration.record(target, sink) && finite;
   }
   clock.lap("integrate");
-  summary.checks.push_back({"integrator steps", static_cast<double>(out.steps_taken),
-                            std::numeric_limits<double>::infinity(), true});
-  summary.checks.push_back({"events", static_cast<double>(out.events.size()), std::numeric_limits<double>::infinity(),
-                            true});
+  add_step_counts(out, &summary);
   simulate::summarise_history(&out, outputs + 1, finite, std::move(summary), "time history, nonlinear",
                               "adaptive Dormand–Prince 5(4), events located by Illinois false position");
   return out;
@@ -809,27 +830,14 @@ namespace simulate {
 TimeHistory simulate_nonlinear_sampled(const LinearSystem& system, const SampledTrack& track,
                                        const SimulationOptions& options, const NonlinearEffects& effects,
                                        const SampleReceiver& receive) {
-  const int n = system.size();
-  model::refuse_series_dampers(system, "simulation");
-  if (n == 0) throw std::invalid_argument("simulation: the system has no degrees of freedom");
-  require_valid(options, "simulation: ");
-  if (options.duration / options.time_step > 1e8)
-    throw std::invalid_argument("simulation: more than 1e8 output steps; take a longer time step");
-  if (!(options.speed > 0.0)) throw std::invalid_argument("simulation: the speed must be positive");
-  if (options.final_speed > 0.0) throw std::invalid_argument("simulation: a sampled track runs at one speed");
-  for (int i = 0; i < n; ++i)
-    if (system.mass.row(i).cwiseAbs().maxCoeff() == 0.0)
-      throw std::invalid_argument("simulation: '" + system.dofs[i].label +
-                                  "' is massless; the nonlinear path needs inertia at every degree of freedom");
+  require_simulable(system, options, [&] {
+    if (!(options.speed > 0.0)) throw std::invalid_argument("simulation: the speed must be positive");
+    if (options.final_speed > 0.0) throw std::invalid_argument("simulation: a sampled track runs at one speed");
+  });
 
   AnalysisSummary summary;
   StageClock clock(&summary);
-  SimulationOptions used = options;
-  if (used.event_tolerance < resolvable_event_tolerance(options.duration)) {
-    used.event_tolerance = resolvable_event_tolerance(options.duration);
-    summary.checks.push_back({"event tolerance raised to the resolution of time over the run (ε·duration), s",
-                              used.event_tolerance, std::numeric_limits<double>::infinity(), true});
-  }
+  const SimulationOptions used = with_resolvable_events(options, &summary);
   SpeedProfile profile;
   profile.initial = options.speed;
   Model model(system, {}, nonlinear_elements(system, {}, effects, {}, profile), profile);
@@ -849,10 +857,7 @@ TimeHistory simulate_nonlinear_sampled(const LinearSystem& system, const Sampled
     finite = integration.record(target, receive) && finite;
   }
   clock.lap("integrate");
-  summary.checks.push_back({"integrator steps", static_cast<double>(out.steps_taken),
-                            std::numeric_limits<double>::infinity(), true});
-  summary.checks.push_back({"events", static_cast<double>(out.events.size()), std::numeric_limits<double>::infinity(),
-                            true});
+  add_step_counts(out, &summary);
   summary.checks.push_back({"non-finite samples", finite ? 0.0 : 1.0, 0.0, finite});
   summary.analysis = "time history, nonlinear, sampled track";
   summary.method = "adaptive Dormand–Prince 5(4), steps ending on the track's breakpoints, events located by Illinois "

@@ -22,31 +22,26 @@
 //
 // Everything goes through the public API; nothing here computes a response itself.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "model_json.hpp"
 #include "railmodal/railmodal.hpp"
+#include "ride_coach.hpp"
 
 using namespace railmodal;
-using benchmarks::matrix;
+using benchmarks::kPi;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kLongestWavelength = 100.0, kShortestWavelength = 1.0;  // m
 constexpr double kSpeed = 50.0;                                          // m/s: 180 km/h
 constexpr double kStep = 0.05;                                           // m: 1 ms at 180 km/h
 constexpr int kSamples = 1 << 20;
 constexpr std::uint64_t kSeed = 2021;
-
-const char* const kVehicle = RAILMODAL_DATA_DIR "/vehicles/manchester_benchmark_coach.toml";
 
 TrackSpectrum ore_low(TrackIrregularity component) {
   return TrackSpectrum::ore_b176(OreLevel::low, component, {2 * kPi / kLongestWavelength, 2 * kPi / kShortestWavelength});
@@ -60,59 +55,22 @@ struct Setup {
   std::vector<RideOutput> outputs;
 };
 
-// The floor over each bogie centre and at mid-car, vertical acceleration (as ride_timing.cpp).
+// The floor over each bogie centre and at mid-car, vertical acceleration (ride_coach.hpp).
 Setup setup() {
   Setup s;
-  s.system = assemble(load_vehicle(kVehicle), DofSet::vertical);
+  s.system = assemble(load_vehicle(benchmarks::kCoach), DofSet::vertical);
   s.track.vertical_level = ore_low(TrackIrregularity::vertical_level);
   s.synthesis.length = kSamples * kStep;
   s.synthesis.step = kStep;
   s.synthesis.seed = kSeed;
   s.run.speed = kSpeed;
   s.run.time_step = kStep / kSpeed;
-  const std::vector<Body>& bodies = s.system.vehicle.bodies;
-  const Body& car =
-      *std::max_element(bodies.begin(), bodies.end(), [](const Body& a, const Body& b) { return a.mass < b.mass; });
-  std::vector<double> xs;
-  for (const Body& b : bodies)
-    if (b.name.rfind("bogie", 0) == 0) xs.push_back(b.reference_point.x());
-  std::sort(xs.begin(), xs.end(), std::greater<double>());
-  xs.insert(xs.begin() + 1, car.centre_of_gravity.x());
-  const char* names[] = {"floor over front bogie", "floor at mid-car", "floor over rear bogie"};
-  for (std::size_t i = 0; i < xs.size() && i < 3; ++i) {
-    RideOutput o;
-    o.name = std::string(names[i]) + ", vertical";
-    o.body = car.name;
-    o.point = {xs[i], 0.0, car.reference_point.z()};
-    o.quantity = ResponseQuantity::acceleration;
-    s.outputs.push_back(o);
-  }
+  s.outputs = benchmarks::coach_floor_outputs(s.system);
   return s;
 }
 
-double median(std::vector<double> t) {
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
-
 nlohmann::json model_json(const Setup& s, const RideSimulationResult& r) {
-  nlohmann::json j;
-  j["mass"] = matrix(s.system.mass);
-  j["damping"] = matrix(s.system.damping);
-  j["stiffness"] = matrix(s.system.stiffness);
-  for (const Dof& d : s.system.dofs)
-    j["dofs"].push_back({{"label", d.label}, {"body", s.system.vehicle.bodies[d.body].name}});
-  for (const Body& b : s.system.vehicle.bodies)
-    j["reference_points"][b.name] = {b.reference_point.x(), b.reference_point.y(), b.reference_point.z()};
-  for (const TrackInput& in : s.system.track_inputs) {
-    const Eigen::VectorXd d = in.load_per_displacement.col(2), v = in.load_per_velocity.col(2);
-    j["inputs"].push_back({{"x", in.point.x()},
-                           {"load_per_displacement", std::vector<double>(d.data(), d.data() + d.size())},
-                           {"load_per_velocity", std::vector<double>(v.data(), v.data() + v.size())}});
-  }
-  for (const RideOutput& o : s.outputs)
-    j["outputs"].push_back({{"name", o.name}, {"body", o.body}, {"point", {o.point.x(), o.point.y(), o.point.z()}}});
-  j["band"] = {2 * kPi / kLongestWavelength, 2 * kPi / kShortestWavelength};
+  nlohmann::json j = benchmarks::coach_model_json(s.system, s.outputs, kLongestWavelength, kShortestWavelength);
   j["speed"] = kSpeed;
   j["step"] = kStep;
   j["time_step"] = r.time_step;
@@ -178,21 +136,14 @@ int main(int argc, char** argv) {
   const Setup s = setup();
   TrackGeometry track;
   RideSimulationResult r;
-  std::vector<double> synth_wall, synth_cpu, sim_wall, sim_cpu;
+  benchmarks::Stopwatch synthesis, simulation;
   for (int k = 0; k < repeats; ++k) {
-    std::clock_t c0 = std::clock();
-    auto t0 = std::chrono::steady_clock::now();
-    track = synthesise_track(s.track, s.synthesis);
-    synth_wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    synth_cpu.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
-    c0 = std::clock();
-    t0 = std::chrono::steady_clock::now();
-    r = simulate_ride(s.system, track, s.outputs, s.run);
-    sim_wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    sim_cpu.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
+    synthesis.time([&] { track = synthesise_track(s.track, s.synthesis); });
+    simulation.time([&] { r = simulate_ride(s.system, track, s.outputs, s.run); });
   }
-  std::cout << "realisation_s " << median(synth_wall) << "\nrealisation_cpu_s " << median(synth_cpu)
-            << "\nsimulation_s " << median(sim_wall) << "\nsimulation_cpu_s " << median(sim_cpu) << "\n";
+  std::cout << "realisation_s " << synthesis.median_wall() << "\nrealisation_cpu_s " << synthesis.median_cpu()
+            << "\nsimulation_s " << simulation.median_wall() << "\nsimulation_cpu_s " << simulation.median_cpu()
+            << "\n";
   std::cerr << "ride_realisation_timing: " << s.system.size() << " DOFs, " << s.system.track_inputs.size()
             << " track inputs, " << track.vertical_level.size() << " samples, " << r.time.size() << " steps of "
             << r.time_step << " s\n";

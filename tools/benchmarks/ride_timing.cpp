@@ -18,30 +18,25 @@
 //
 // Everything goes through the public API; nothing here computes a response itself.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <ctime>
 #include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "model_json.hpp"
 #include "railmodal/railmodal.hpp"
+#include "ride_coach.hpp"
 
 using namespace railmodal;
-using benchmarks::matrix;
+using benchmarks::kPi;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // ORE B176 low level over wavelengths 3 … 100 m: the band the script uses too.
 constexpr double kLongestWavelength = 100.0, kShortestWavelength = 3.0;
 // 3444 log-spaced points a decade over 0.1 … 80 Hz (log10 800 = 2.903 decades) make 10⁴
 // points; solve_ride adds the band edges of every speed (40) and the modes' frequencies.
 constexpr int kPointsPerDecade = 3444;
-
-const char* const kVehicle = RAILMODAL_DATA_DIR "/vehicles/manchester_benchmark_coach.toml";
 
 struct Setup {
   LinearSystem system;
@@ -50,31 +45,13 @@ struct Setup {
   RideOptions options;
 };
 
-// The car body is the heaviest body; the bogies are the bodies named "bogie…".
+// The floor over each bogie centre and at mid-car (ride_coach.hpp).
 Setup setup() {
   Setup s;
-  s.system = assemble(load_vehicle(kVehicle), DofSet::vertical);
+  s.system = assemble(load_vehicle(benchmarks::kCoach), DofSet::vertical);
   s.track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level,
                                                    {2 * kPi / kLongestWavelength, 2 * kPi / kShortestWavelength});
-  const std::vector<Body>& bodies = s.system.vehicle.bodies;
-  const Body& car =
-      *std::max_element(bodies.begin(), bodies.end(), [](const Body& a, const Body& b) { return a.mass < b.mass; });
-  const double floor = car.reference_point.z();
-  std::vector<double> xs;
-  for (const Body& b : bodies)
-    if (b.name.rfind("bogie", 0) == 0) xs.push_back(b.reference_point.x());
-  std::sort(xs.begin(), xs.end(), std::greater<double>());  // front first
-  xs.insert(xs.begin() + 1, car.centre_of_gravity.x());     // front bogie, mid-car, rear bogie
-  const char* names[] = {"floor over front bogie", "floor at mid-car", "floor over rear bogie"};
-  for (std::size_t i = 0; i < xs.size() && i < 3; ++i) {
-    RideOutput o;
-    o.name = std::string(names[i]) + ", vertical";
-    o.body = car.name;
-    o.point = {xs[i], 0.0, floor};
-    o.axis = RideAxis::vertical;
-    o.quantity = ResponseQuantity::acceleration;
-    s.outputs.push_back(o);
-  }
+  s.outputs = benchmarks::coach_floor_outputs(s.system);
   for (int k = 1; k <= 20; ++k) s.options.speeds.push_back(10.0 * k / 3.6);
   s.options.min_frequency = 0.1;
   s.options.max_frequency = 80.0;
@@ -84,30 +61,8 @@ Setup setup() {
   return s;
 }
 
-double median(std::vector<double> t) {
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
-
 nlohmann::json model_json(const Setup& s) {
-  nlohmann::json j;
-  j["mass"] = matrix(s.system.mass);
-  j["damping"] = matrix(s.system.damping);
-  j["stiffness"] = matrix(s.system.stiffness);
-  for (const Dof& d : s.system.dofs)
-    j["dofs"].push_back({{"label", d.label}, {"body", s.system.vehicle.bodies[d.body].name}});
-  for (const Body& b : s.system.vehicle.bodies)
-    j["reference_points"][b.name] = {b.reference_point.x(), b.reference_point.y(), b.reference_point.z()};
-  for (const TrackInput& in : s.system.track_inputs) {
-    const Eigen::VectorXd d = in.load_per_displacement.col(2), v = in.load_per_velocity.col(2);
-    j["inputs"].push_back({{"x", in.point.x()},
-                           {"load_per_displacement", std::vector<double>(d.data(), d.data() + d.size())},
-                           {"load_per_velocity", std::vector<double>(v.data(), v.data() + v.size())}});
-  }
-  for (const RideOutput& o : s.outputs)
-    j["outputs"].push_back({{"name", o.name}, {"body", o.body}, {"point", {o.point.x(), o.point.y(), o.point.z()}}});
-  j["band"] = {2 * kPi / kLongestWavelength, 2 * kPi / kShortestWavelength};
-  return j;
+  return benchmarks::coach_model_json(s.system, s.outputs, kLongestWavelength, kShortestWavelength);
 }
 
 int once() {
@@ -139,15 +94,9 @@ int main(int argc, char** argv) {
   const int repeats = std::max(1, std::atoi(argv[2]));
   const Setup s = setup();
   RideResult r;
-  std::vector<double> wall, cpu;
-  for (int k = 0; k < repeats; ++k) {
-    const std::clock_t c0 = std::clock();
-    const auto t0 = std::chrono::steady_clock::now();
-    r = solve_ride(s.system, s.track, s.outputs, s.options);
-    wall.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-    cpu.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
-  }
-  std::cout << "ride_s " << median(wall) << "\nride_cpu_s " << median(cpu) << "\n";
+  benchmarks::Stopwatch ride;
+  for (int k = 0; k < repeats; ++k) ride.time([&] { r = solve_ride(s.system, s.track, s.outputs, s.options); });
+  std::cout << "ride_s " << ride.median_wall() << "\nride_cpu_s " << ride.median_cpu() << "\n";
   std::cerr << "ride_timing: " << s.system.size() << " DOFs, " << s.system.track_inputs.size() << " track inputs, "
             << r.frequencies.size() << " frequencies, " << r.speeds.size() << " speeds, " << r.outputs.size()
             << " outputs; grid error estimate " << r.grid_error_estimate << "\n";
