@@ -130,3 +130,25 @@ def test_balance_errors(gear):
 
 def test_speed_at_alpha_scales_as_the_square():
     assert railmodal.speed_at_alpha(0.2, 20.0, 0.8) == pytest.approx(40.0, rel=1e-15)
+
+
+def test_the_gear_as_an_excitation_is_the_scenes_source(gear):
+    # data/scenes/su_driving_gear.toml names the gear, the frame, the axles' places and bodies:
+    # the same GearExcitation made in Python drives the engine exactly as the scene's source.
+    scene = railmodal.load_scene(data("scenes", "su_driving_gear.toml"))
+    study = railmodal.study_critical_speeds(scene)
+    mine = railmodal.gear_excitation(gear, body="frame", axles=[(1.85, "axle1"), (0.0, "axle2"), (-1.85, "axle3")],
+                                     crank_angle_rad=0.0, harmonics=2)
+    v = np.linspace(5 / 3.6, 110 / 3.6, 50)
+    outputs = ["frame.yaw", "frame.roll", "axle2.roll"]
+    want = railmodal.amplitude_curves(study.system, study.modes, scene.sources[0], outputs, v)
+    got = railmodal.amplitude_curves(study.system, study.modes, mine, outputs, v)
+    for g, w in zip(got, want):
+        np.testing.assert_array_equal(g.amplitudes, w.amplitudes)
+        assert np.nanmax(g.amplitudes) > 0.0
+    # One harmonic only: a different excitation (the second harmonic is what counterweights leave).
+    first = railmodal.amplitude_curves(study.system, study.modes,
+                                       railmodal.gear_excitation(gear, body="frame", harmonics=1), outputs, v)
+    assert not np.array_equal(first[0].amplitudes, want[0].amplitudes)
+    with pytest.raises(ValueError):
+        railmodal.gear_excitation(gear, body="frame", harmonics=0)

@@ -5,6 +5,8 @@ Tolerances: the binding and the command line run the same library call on the sa
 they agree to the digits the JSON writer prints; rtol=1e-12 holds any writer that prints 13
 significant digits or more.
 """
+import json
+
 import numpy as np
 import pandas
 import pytest
@@ -137,3 +139,19 @@ def test_lateral_stability_equals_the_studys_metacentric_height():
     assert s.nolltein_measure(1.0) == pytest.approx(s.metacentric_height_m / s.cg_height_m, rel=1e-15)
     with pytest.raises(ValueError):
         railmodal.lateral_stability(resort, "no such body")
+
+
+def test_a_scenes_nonlinear_hunting_equals_the_command_line():
+    scene_file = data("scenes", "wheelset_on_springs_nonlinear_hunting.toml")
+    scene = railmodal.load_scene(scene_file)
+    result = railmodal.hunting_scene(scene)
+    expected = cli_json("hunting", scene_file)
+    # The same library calls on the same file: the same double, printed to round trip.
+    assert result.critical_speed_m_s == pytest.approx(expected["critical_speed_m_s"], rel=1e-12)
+    assert result.convergence == expected["convergence"]
+    # hunting_report is the command's own report text.
+    assert json.loads(railmodal.hunting_report(scene, format="json")) == expected
+    with pytest.raises(railmodal.InputError, match="no \\[nonlinear_hunting\\] table"):
+        railmodal.hunting_scene(railmodal.load_scene(data("scenes", "resort_car_10m_rails.toml")))
+    with pytest.raises(ValueError, match="format is 'pdf'"):
+        railmodal.hunting_report(scene, format="pdf")
