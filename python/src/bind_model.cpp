@@ -144,8 +144,9 @@ void bind_model(py::module_& m) {
       .def_property("reference_point", vector3_copy(&Body::reference_point), vector3_setter(&Body::reference_point),
                     "m (a read-only copy: assign all three)")
       .def_property(
-          "held", [](const Body& b) { return motion_words(b.held); },
-          [](Body& b, const std::vector<std::string>& words) { b.held = motions_of(words); })
+          "held", [](const Body& b) { return py::tuple(py::cast(motion_words(b.held))); },
+          [](Body& b, const std::vector<std::string>& words) { b.held = motions_of(words); },
+          "the motions held, a tuple (b.held.append would change a copy): assign a new list to change them")
       .def_readwrite("longitudinal_free", &Body::longitudinal_free)
       .def_property_readonly("has_bending", [](const Body& b) { return b.bending.has_value(); })
       .def("__repr__", [](const Body& b) { return "Body('" + b.name + "', mass=" + std::to_string(b.mass) + " kg)"; });
@@ -197,7 +198,7 @@ void bind_model(py::module_& m) {
                              [](const Vehicle& v) {
                                std::vector<std::string> bodies;
                                for (const Wheelset& w : v.wheelsets) bodies.push_back(w.body);
-                               return bodies;
+                               return py::tuple(py::cast(bodies));  // read-only: a tuple, not a list
                              },
                              "the names of the bodies that are wheelsets on the rails")
       .def("copy", [](const Vehicle& v) { return Vehicle(v); })

@@ -137,6 +137,10 @@ def test_changing_an_item_of_a_vehicle_list_changes_the_vehicle():
     with pytest.raises(ValueError):
         car.bodies[0].inertia[0] *= 2.0
     car.bodies[0].inertia = 2.0 * car.bodies[0].inertia
+    with pytest.raises(AttributeError):  # a tuple: appending to a copy would change nothing
+        car.bodies[0].held.append("roll")
+    car.bodies[0].held = [*car.bodies[0].held, "roll"]
+    assert "roll" in car.bodies[0].held
     assert car.bodies[0].inertia[1] == 2.0 * reference.bodies[0].inertia[1]
 
 

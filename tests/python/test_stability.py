@@ -144,13 +144,12 @@ def test_lateral_stability_equals_the_studys_metacentric_height():
 def test_a_scenes_nonlinear_hunting_equals_the_command_line():
     scene_file = data("scenes", "wheelset_on_springs_nonlinear_hunting.toml")
     scene = railmodal.load_scene(scene_file)
-    result = railmodal.hunting_scene(scene)
     expected = cli_json("hunting", scene_file)
-    # The same library calls on the same file: the same double, printed to round trip.
-    assert result.critical_speed_m_s == pytest.approx(expected["critical_speed_m_s"], rel=1e-12)
-    assert result.convergence == expected["convergence"]
-    # hunting_report is the command's own report text.
-    assert json.loads(railmodal.hunting_report(scene, format="json")) == expected
+    # hunting_report runs hunting_scene's ramp (the same function, python/src/bind_stability.cpp)
+    # and writes the command's own report: every key and number equal (one run of each, ~1.3 s,
+    # so hunting_scene's result is not run a third time here).
+    report = json.loads(railmodal.hunting_report(scene, format="json"))
+    assert report == expected and report["convergence"] == "converged"
     with pytest.raises(railmodal.InputError, match="no \\[nonlinear_hunting\\] table"):
         railmodal.hunting_scene(railmodal.load_scene(data("scenes", "resort_car_10m_rails.toml")))
     with pytest.raises(ValueError, match="format is 'pdf'"):
