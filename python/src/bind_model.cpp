@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis_values.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "dofs.hpp"
@@ -236,13 +237,19 @@ void bind_model(py::module_& m) {
       });
 
   m.def(
-      "assemble", [](const Vehicle& vehicle, const std::string& dofs) {
+      "assemble", [](const py::object& vehicle, const std::string& dofs) {
         const DofSet set = dof_set(dofs);
+        if (py::isinstance<Vehicle>(vehicle)) {  // referred to, not copied
+          const Vehicle& v = vehicle.cast<const Vehicle&>();
+          py::gil_scoped_release release;
+          return assemble(v, set);
+        }
+        const Vehicle v = vehicle_argument(vehicle);  // a file, as the other analyses take one
         py::gil_scoped_release release;
-        return assemble(vehicle, set);
+        return assemble(v, set);
       },
       py::arg("vehicle"), py::arg("dofs") = "all",
-      "M, C, K of a vehicle for the motions 'vertical', 'lateral' or 'all'.");
+      "M, C, K of a vehicle (a Vehicle or a vehicle file) for the motions 'vertical', 'lateral' or 'all'.");
 
   py::class_<SparseSystem>(m, "SparseSystem",
                            "M q'' + C q' + K q = f with sparse matrices; M, C, K as scipy.sparse.csc_matrix (copies).")

@@ -173,3 +173,11 @@ def test_a_vehicle_list_changes_length_only_while_no_item_is_held():
         car.elements[0].vertical_stages = stiffer[:1]
     with pytest.raises(IndexError):
         car.bodies[len(car.bodies)]
+
+
+def test_assemble_takes_a_vehicle_file_as_the_other_analyses_do():
+    by_file = railmodal.assemble(RESORT, "vertical")
+    by_object = railmodal.assemble(railmodal.load_vehicle(RESORT), "vertical")
+    assert np.array_equal(by_file.K, by_object.K) and by_file.dof_labels == by_object.dof_labels
+    with pytest.raises(TypeError, match="expected a vehicle file or a Vehicle, got int"):
+        railmodal.assemble(3)
