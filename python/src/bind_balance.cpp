@@ -1,12 +1,17 @@
 // The steam locomotive's driving gear and its balancing: forces against crank angle as arrays,
 // their harmonics and the counterweights as records (docs/python.md, "Balancing").
+#include <pybind11/stl.h>
+
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "analysis_values.hpp"
 #include "bindings.hpp"
 #include "railmodal/balance.hpp"
 #include "railmodal/driving_gear.hpp"
+#include "railmodal/excitation.hpp"
 
 namespace railmodal::python {
 namespace {
@@ -254,12 +259,37 @@ void bind_balance_result(py::module_& m) {
       "only `rule`'s result has a trade-off).");
 }
 
+// The gear as an excitation source (GearExcitation, make_source): for find_critical_speeds and
+// amplitude_curves, like rail_joints(). `axles` are (x_m, body) pairs in the gear's axle order.
+void bind_gear_excitation(py::module_& m) {
+  m.def(
+      "gear_excitation",
+      [](const DrivingGear& gear, const std::string& body, const std::vector<std::pair<double, std::string>>& axles,
+         double crank_angle, int harmonics) {
+        GearExcitation e;
+        e.gear = gear;
+        e.body = body;
+        for (const auto& [x, on] : axles) e.axles.push_back({x, on});
+        e.crank_angle = crank_angle;
+        e.harmonics = harmonics;
+        return std::shared_ptr<ExcitationSource>(make_source(e));
+      },
+      py::arg("gear"), py::kw_only(), py::arg("body") = GearExcitation{}.body,
+      py::arg("axles") = std::vector<std::pair<double, std::string>>{},
+      py::arg("crank_angle_rad") = GearExcitation{}.crank_angle, py::arg("harmonics") = GearExcitation{}.harmonics,
+      "The driving gear as the unbalance excitation (GearExcitation, make_source; scene kind 'driving_gear'): "
+      "harmonics 1..harmonics of its exact forces at k times the wheels' turning frequency, on `body` (the "
+      "frame); `axles`, one (x_m, body) per gear axle, places each axle and names the body its vertical forces "
+      "act on ('' for `body`); empty: the gear's own axle positions. ValueError for an invalid gear.");
+}
+
 }  // namespace
 
 void bind_balance(py::module_& m) {
   bind_gear(m);
   bind_gear_result(m);
   bind_balance_result(m);
+  bind_gear_excitation(m);
 }
 
 }  // namespace railmodal::python

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis_values.hpp"
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "dofs.hpp"
@@ -93,8 +94,36 @@ LinearSystem system_from_arrays(const Eigen::MatrixXd& mass, const Eigen::Matrix
   return system;
 }
 
+// A read-only copy of a 3-vector of a body or element: a view would point into a list's
+// storage (vehicle_lists.hpp), and a writeable copy would make `b.inertia[0] *= 2` change
+// nothing; assign the whole vector instead (`b.inertia = [...]`).
+template <typename Owner>
+auto vector3_copy(Eigen::Vector3d Owner::*field) {
+  return [field](const Owner& o) {
+    py::array_t<double> a(3);
+    for (py::ssize_t i = 0; i < 3; ++i) a.mutable_at(i) = (o.*field)(i);
+    return read_only(a);
+  };
+}
+template <typename Owner>
+auto vector3_setter(Eigen::Vector3d Owner::*field) {
+  return [field](Owner& o, const Eigen::Vector3d& v) { o.*field = v; };
+}
+
+// The setter of a list field: same length in place, else only while no item is held.
+template <typename Owner, typename T>
+auto list_setter(std::vector<T> Owner::*field, const char* what) {
+  return [field, what](Owner& o, const py::object& values) { assign_list(o.*field, values, what); };
+}
+template <typename Owner, typename T>
+auto list_getter(std::vector<T> Owner::*field) {
+  return [field](Owner& o) -> std::vector<T>& { return o.*field; };
+}
+
 void bind_model(py::module_& m) {
   py::class_<SpringStage>(m, "SpringStage", "One stage of identical springs in parallel (SI).")
+      .def(py::init<>())
+      .def("copy", [](const SpringStage& s) { return SpringStage(s); })
       .def_readwrite("kind", &SpringStage::kind)
       .def_readwrite("stiffness", &SpringStage::stiffness, "N/m, of one spring")
       .def_readwrite("count", &SpringStage::count)
@@ -105,27 +134,44 @@ void bind_model(py::module_& m) {
       });
 
   py::class_<Body>(m, "Body", "A rigid body (SI: kg, kg·m², m).")
+      .def(py::init<>())
+      .def("copy", [](const Body& b) { return Body(b); })
       .def_readwrite("name", &Body::name)
       .def_readwrite("mass", &Body::mass, "kg")
-      .def_readwrite("inertia", &Body::inertia, "roll, pitch, yaw about the CG, kg·m²")
-      .def_readwrite("centre_of_gravity", &Body::centre_of_gravity, "m")
-      .def_readwrite("reference_point", &Body::reference_point, "m")
+      .def_property("inertia", vector3_copy(&Body::inertia), vector3_setter(&Body::inertia),
+                    "roll, pitch, yaw about the CG, kg·m² (a read-only copy: assign all three)")
+      .def_property("centre_of_gravity", vector3_copy(&Body::centre_of_gravity),
+                    vector3_setter(&Body::centre_of_gravity), "m (a read-only copy: assign all three)")
+      .def_property("reference_point", vector3_copy(&Body::reference_point), vector3_setter(&Body::reference_point),
+                    "m (a read-only copy: assign all three)")
       .def_property(
-          "held", [](const Body& b) { return motion_words(b.held); },
-          [](Body& b, const std::vector<std::string>& words) { b.held = motions_of(words); })
+          "held", [](const Body& b) { return py::tuple(py::cast(motion_words(b.held))); },
+          [](Body& b, const std::vector<std::string>& words) { b.held = motions_of(words); },
+          "the motions held, a tuple (b.held.append would change a copy): assign a new list to change them")
       .def_readwrite("longitudinal_free", &Body::longitudinal_free)
       .def_property_readonly("has_bending", [](const Body& b) { return b.bending.has_value(); })
       .def("__repr__", [](const Body& b) { return "Body('" + b.name + "', mass=" + std::to_string(b.mass) + " kg)"; });
 
   py::class_<Element>(m, "Element", "A suspension element between two bodies or a body and the track (SI).")
+      .def(py::init<>())
+      .def("copy", [](const Element& e) { return Element(e); })
       .def_readwrite("name", &Element::name)
       .def_readwrite("lower", &Element::lower, "body name, '' for the track")
       .def_readwrite("upper", &Element::upper)
-      .def_readwrite("point", &Element::point, "m")
-      .def_readwrite("vertical_stages", &Element::vertical_stages)
-      .def_readwrite("lateral_stages", &Element::lateral_stages)
-      .def_readwrite("longitudinal_stages", &Element::longitudinal_stages)
-      .def_readwrite("rotational_stiffness", &Element::rotational_stiffness, "roll, pitch, yaw, N·m/rad")
+      .def_property("point", vector3_copy(&Element::point), vector3_setter(&Element::point),
+                    "m (a read-only copy: assign all three)")
+      .def_property("vertical_stages", list_getter(&Element::vertical_stages),
+                    list_setter(&Element::vertical_stages, "the element's vertical_stages"),
+                    py::return_value_policy::reference_internal, "in series; items by reference")
+      .def_property("lateral_stages", list_getter(&Element::lateral_stages),
+                    list_setter(&Element::lateral_stages, "the element's lateral_stages"),
+                    py::return_value_policy::reference_internal, "in series; items by reference")
+      .def_property("longitudinal_stages", list_getter(&Element::longitudinal_stages),
+                    list_setter(&Element::longitudinal_stages, "the element's longitudinal_stages"),
+                    py::return_value_policy::reference_internal, "in series; items by reference")
+      .def_property("rotational_stiffness", vector3_copy(&Element::rotational_stiffness),
+                    vector3_setter(&Element::rotational_stiffness),
+                    "roll, pitch, yaw, N·m/rad (a read-only copy: assign all three)")
       .def_readwrite("vertical_damping", &Element::vertical_damping, "N·s/m")
       .def_readwrite("lateral_damping", &Element::lateral_damping, "N·s/m")
       .def_readwrite("longitudinal_damping", &Element::longitudinal_damping, "N·s/m")
@@ -137,17 +183,23 @@ void bind_model(py::module_& m) {
         return "Element('" + e.name + "', " + (e.lower.empty() ? "track" : e.lower) + " -> " + e.upper + ")";
       });
 
+  bind_vehicle_lists(m);
+
   py::class_<Vehicle>(m, "Vehicle", "Rigid bodies joined by suspension elements (SI). load_vehicle, vehicle_from_dict.")
       .def_readwrite("name", &Vehicle::name)
       .def_readwrite("source", &Vehicle::source, "the file it was read from")
       .def_readwrite("gravity", &Vehicle::gravity, "m/s²")
-      .def_readwrite("bodies", &Vehicle::bodies, "a copy: assign the whole list to change it")
-      .def_readwrite("elements", &Vehicle::elements, "a copy: assign the whole list to change it")
+      .def_property("bodies", list_getter(&Vehicle::bodies), list_setter(&Vehicle::bodies, "vehicle.bodies"),
+                    py::return_value_policy::reference_internal,
+                    "the vehicle's own bodies: car.bodies[0].mass *= 2 changes the car")
+      .def_property("elements", list_getter(&Vehicle::elements), list_setter(&Vehicle::elements, "vehicle.elements"),
+                    py::return_value_policy::reference_internal,
+                    "the vehicle's own elements: car.elements[i].vertical_damping = ... changes the car")
       .def_property_readonly("wheelsets",
                              [](const Vehicle& v) {
                                std::vector<std::string> bodies;
                                for (const Wheelset& w : v.wheelsets) bodies.push_back(w.body);
-                               return bodies;
+                               return py::tuple(py::cast(bodies));  // read-only: a tuple, not a list
                              },
                              "the names of the bodies that are wheelsets on the rails")
       .def("copy", [](const Vehicle& v) { return Vehicle(v); })
@@ -185,13 +237,19 @@ void bind_model(py::module_& m) {
       });
 
   m.def(
-      "assemble", [](const Vehicle& vehicle, const std::string& dofs) {
+      "assemble", [](const py::object& vehicle, const std::string& dofs) {
         const DofSet set = dof_set(dofs);
+        if (py::isinstance<Vehicle>(vehicle)) {  // referred to, not copied
+          const Vehicle& v = vehicle.cast<const Vehicle&>();
+          py::gil_scoped_release release;
+          return assemble(v, set);
+        }
+        const Vehicle v = vehicle_argument(vehicle);  // a file, as the other analyses take one
         py::gil_scoped_release release;
-        return assemble(vehicle, set);
+        return assemble(v, set);
       },
       py::arg("vehicle"), py::arg("dofs") = "all",
-      "M, C, K of a vehicle for the motions 'vertical', 'lateral' or 'all'.");
+      "M, C, K of a vehicle (a Vehicle or a vehicle file) for the motions 'vertical', 'lateral' or 'all'.");
 
   py::class_<SparseSystem>(m, "SparseSystem",
                            "M q'' + C q' + K q = f with sparse matrices; M, C, K as scipy.sparse.csc_matrix (copies).")

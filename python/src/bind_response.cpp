@@ -156,6 +156,39 @@ void bind_sources_and_scenes(py::module_& m) {
         return std::shared_ptr<ExcitationSource>(make_source(j));
       },
       "Rail joints as a source; keywords as the fields of RailJoints (SI: m, N/m, kg).");
+  m.def(
+      "wheel_eccentricity",
+      [](py::kwargs options) {
+        OptionReader reader(options, "wheel_eccentricity()");
+        WheelEccentricity w;
+        reader.read("wheel_diameter", &w.wheel_diameter);
+        reader.read("eccentricity", &w.eccentricity);
+        reader.read("phases", &w.phases);
+        reader.read("lobes", &w.lobes);
+        reader.finish();
+        if (!(w.wheel_diameter > 0.0) || !(w.eccentricity >= 0.0) || w.lobes < 1)
+          throw py::value_error("wheel_eccentricity(): wheel_diameter > 0, eccentricity >= 0 and lobes >= 1 are required");
+        return std::shared_ptr<ExcitationSource>(make_source(w));
+      },
+      "Eccentric (lobes=1) or out-of-round wheels as a source; keywords as the fields of WheelEccentricity (SI: m, "
+      "rad).");
+  m.def(
+      "wheel_flat",
+      [](py::kwargs options) {
+        OptionReader reader(options, "wheel_flat()");
+        WheelFlat f;
+        reader.read("wheel_diameter", &f.wheel_diameter);
+        reader.read("depth", &f.depth);
+        reader.read("length", &f.length);
+        reader.read_enum("shape", &f.shape, dip_shape_from_string, "cosine, triangular, parabolic");
+        reader.read("harmonics", &f.harmonics);
+        reader.read("flat_angle", &f.flat_angle);
+        reader.finish();
+        if (!(f.wheel_diameter > 0.0) || !(f.depth >= 0.0) || !(f.length > 0.0) || f.harmonics < 1)
+          throw py::value_error("wheel_flat(): wheel_diameter > 0, depth >= 0, length > 0 and harmonics >= 1 are required");
+        return std::shared_ptr<ExcitationSource>(make_source(f));
+      },
+      "A wheel flat as a source; keywords as the fields of WheelFlat (SI: m, rad).");
 
   py::class_<Scene>(m, "Scene", "A vehicle on a track at a range of speeds, with its sources and outputs.")
       .def_readonly("name", &Scene::name)

@@ -167,7 +167,8 @@ py::list ride_records(const RideResult& r) {
                           py::arg("weighted_rms") = optional_value(o.weighted_rms),
                           py::arg("sperling_wz") = optional_value(o.sperling_wz),
                           py::arg("p95_estimate") = optional_value(o.p95_estimate),
-                          py::arg("cross_term_variance") = o.cross_term_variance));
+                          py::arg("cross_term_variance") = o.cross_term_variance,
+                          py::arg("direct_variance") = o.direct_variance));
     }
   return out;
 }
@@ -228,6 +229,9 @@ void bind_ride_result(py::module_& m) {
           "output PSDs, unit²/Hz, speeds × outputs × frequencies (a new array; NaN where unbounded)")
       .def_readonly("inputs", &RideResult::inputs, "the track spectra's names, the input_psd order")
       .def_property_readonly(
+          "input_rms", [](py::object self) { return vector_view(self.cast<const RideResult&>().input_rms, self); },
+          "the RMS of each track component over its own band, m, in `inputs` order (a view)")
+      .def_property_readonly(
           "input_psd",
           [](const RideResult& r) {
             const size_t inputs = r.speeds.empty() ? 0 : r.speeds.front().input_psd.size();
@@ -244,7 +248,7 @@ void bind_ride_result(py::module_& m) {
                              "records of the undamped modes: name, frequency_hz")
       .def("records", &ride_records,
            "One row per speed and output: speed_m_s, output, unit, unbounded, rms, weighted_rms, sperling_wz, "
-           "p95_estimate, cross_term_variance")
+           "p95_estimate, cross_term_variance, direct_variance (unit², the direct track term alone)")
       .def(
           "comfort",
           [](const RideResult& r) {
@@ -274,7 +278,8 @@ void bind_ride_result(py::module_& m) {
 
 RideOptions ride_options(std::vector<double> speeds, double min_frequency, double max_frequency, int points_per_decade,
                          int points_per_bandwidth, int modes, double contact_half_spacing, double percentile_window,
-                         double friction_tolerance, int friction_iterations, int threads, bool keep_spectra) {
+                         double friction_tolerance, int friction_iterations, int threads, bool keep_spectra,
+                         double rolling_radius) {
   RideOptions o;
   o.speeds = std::move(speeds);
   o.min_frequency = min_frequency;
@@ -288,6 +293,7 @@ RideOptions ride_options(std::vector<double> speeds, double min_frequency, doubl
   o.friction_iterations = friction_iterations;
   o.threads = threads;
   o.keep_spectra = keep_spectra;
+  o.rolling_radius = rolling_radius;
   return o;
 }
 
@@ -320,11 +326,12 @@ void bind_ride_functions(py::module_& m) {
       [](const LinearSystem& system, const py::object& track, const std::optional<std::vector<RideOutput>>& outputs,
          const std::vector<double>& speeds, double min_frequency, double max_frequency, int points_per_decade,
          int points_per_bandwidth, int modes, double contact_half_spacing, double percentile_window,
-         double friction_tolerance, int friction_iterations, int threads, bool keep_spectra) {
+         double friction_tolerance, int friction_iterations, int threads, bool keep_spectra, double rolling_radius) {
         const TrackIrregularitySpectra t = track_argument(track);
         const RideOptions o = ride_options(speeds, min_frequency, max_frequency, points_per_decade,
                                            points_per_bandwidth, modes, contact_half_spacing, percentile_window,
-                                           friction_tolerance, friction_iterations, threads, keep_spectra);
+                                           friction_tolerance, friction_iterations, threads, keep_spectra,
+                                           rolling_radius);
         py::gil_scoped_release release;
         return solve_ride(system, t, outputs ? *outputs : default_ride_outputs(system), o);
       },
@@ -334,7 +341,7 @@ void bind_ride_functions(py::module_& m) {
       py::arg("modes") = d.modes, py::arg("contact_half_spacing_m") = d.contact_half_spacing,
       py::arg("percentile_window_s") = d.percentile_window, py::arg("friction_tolerance") = d.friction_tolerance,
       py::arg("friction_iterations") = d.friction_iterations, py::arg("threads") = d.threads,
-      py::arg("keep_spectra") = d.keep_spectra,
+      py::arg("keep_spectra") = d.keep_spectra, py::arg("rolling_radius_m") = d.rolling_radius,
       "The ride of `system` on `track` (a dict of TrackSpectrum by component, or a Scene) at every speed "
       "(solve_ride); outputs default to default_ride_outputs(system).");
   m.def(
@@ -407,13 +414,14 @@ py::dict history_dict(const RideHistory& h, py::handle owner) {
 }
 
 RideSimulationOptions simulation_options(double speed, double time_step, double settle_time, double window,
-                                         double contact_half_spacing) {
+                                         double contact_half_spacing, double rolling_radius) {
   RideSimulationOptions o;
   o.speed = speed;
   o.time_step = time_step;
   o.settle_time = settle_time;
   o.window = window;
   o.contact_half_spacing = contact_half_spacing;
+  o.rolling_radius = rolling_radius;
   return o;
 }
 
@@ -483,28 +491,32 @@ void bind_ride_simulation(py::module_& m) {
   m.def(
       "simulate_ride",
       [](const LinearSystem& system, const TrackGeometry& geometry, const std::vector<RideOutput>& outputs,
-         double speed, double time_step, double settle_time, double window, double contact_half_spacing) {
-        const RideSimulationOptions o = simulation_options(speed, time_step, settle_time, window, contact_half_spacing);
+         double speed, double time_step, double settle_time, double window, double contact_half_spacing,
+         double rolling_radius) {
+        const RideSimulationOptions o =
+            simulation_options(speed, time_step, settle_time, window, contact_half_spacing, rolling_radius);
         py::gil_scoped_release release;
         return simulate_ride(system, geometry, outputs, o);
       },
       py::arg("system"), py::arg("geometry"), py::arg("outputs"), py::kw_only(), py::arg("speed_m_s"),
       py::arg("time_step_s") = d.time_step, py::arg("settle_time_s") = d.settle_time, py::arg("window_s") = d.window,
-      py::arg("contact_half_spacing_m") = d.contact_half_spacing,
+      py::arg("contact_half_spacing_m") = d.contact_half_spacing, py::arg("rolling_radius_m") = d.rolling_radius,
       "The time-domain ride of `system` over `geometry` at one speed (simulate_ride).");
   m.def(
       "check_ride_realisation",
       [](const LinearSystem& system, const py::object& track, const TrackGeometry& geometry,
          const RideSimulationResult& simulated, double speed, double time_step, double settle_time, double window,
-         double contact_half_spacing) {
+         double contact_half_spacing, double rolling_radius) {
         const TrackIrregularitySpectra t = track_argument(track);
-        const RideSimulationOptions o = simulation_options(speed, time_step, settle_time, window, contact_half_spacing);
+        const RideSimulationOptions o =
+            simulation_options(speed, time_step, settle_time, window, contact_half_spacing, rolling_radius);
         py::gil_scoped_release release;
         return check_ride_realisation(system, t, geometry, simulated, o);
       },
       py::arg("system"), py::arg("track"), py::arg("geometry"), py::arg("simulated"), py::kw_only(),
       py::arg("speed_m_s"), py::arg("time_step_s") = d.time_step, py::arg("settle_time_s") = d.settle_time,
       py::arg("window_s") = d.window, py::arg("contact_half_spacing_m") = d.contact_half_spacing,
+      py::arg("rolling_radius_m") = d.rolling_radius,
       "The FFT checks of a simulated realisation (the options simulate_ride was given).");
   m.def("ride_scene_simulation", &scene_ride_simulation, py::arg("scene"), py::arg("vehicle") = py::none(),
         "The scene's time-domain ride ('railmodal ride' with [ride.simulation]): (RideSimulationResult, "

@@ -3,6 +3,7 @@
 // (docs/python.md, "Hunting stability").
 #include <complex>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,10 @@
 #include "bindings.hpp"
 #include "railmodal/hunting.hpp"
 #include "railmodal/nonlinear_hunting.hpp"
+#include "railmodal/nonlinear_hunting_report.hpp"
+#include "railmodal/output_format.hpp"
+#include "railmodal/provenance.hpp"
+#include "railmodal/scene.hpp"
 #include "railmodal/stability.hpp"
 
 namespace railmodal::python {
@@ -290,6 +295,64 @@ void bind_nonlinear_hunting(py::module_& m) {
       "fails.");
 }
 
+// A scene's [nonlinear_hunting] run as `railmodal hunting` runs it: the vehicle (the scene's, or
+// `vehicle`) in its lateral motions, the linear critical speed over the ramp for the report's
+// Hopf point, and the ramp-down.
+struct SceneHunting {
+  Vehicle vehicle;
+  NonlinearHuntingResult result;
+  std::optional<double> linear;
+};
+SceneHunting scene_hunting(const Scene& scene, const py::object& vehicle) {
+  if (!scene.nonlinear_hunting)
+    throw InputError(scene.source, 0, 0, "the scene has no [nonlinear_hunting] table (docs/stability.md)");
+  SceneHunting out;
+  if (!vehicle.is_none()) {
+    out.vehicle = vehicle_argument(vehicle);
+  } else if (scene.vehicle_file.empty()) {
+    throw py::value_error("no vehicle: give vehicle=... or a 'vehicle' key in " + scene.source);
+  } else {
+    out.vehicle = vehicle_argument(py::str(scene.vehicle_file));
+  }
+  if (out.vehicle.wheelsets.empty())
+    throw py::value_error("the vehicle has no [wheelset] data: hunting needs wheelsets on rails (docs/stability.md)");
+  const NonlinearHuntingOptions& o = *scene.nonlinear_hunting;
+  py::gil_scoped_release release;
+  const LinearSystem system = assemble(out.vehicle, DofSet::lateral);
+  HuntingOptions h;  // as the command: the ramp's speeds, one thread
+  h.min_speed = o.end_speed;
+  h.max_speed = o.start_speed;
+  h.threads = 1;
+  const HuntingResult linear = solve_hunting_stability(system, h);
+  if (linear.critical) out.linear = linear.critical->speed;
+  out.result = solve_nonlinear_hunting(system, o);
+  return out;
+}
+
+void bind_scene_hunting(py::module_& m) {
+  m.def(
+      "hunting_scene",
+      [](const Scene& scene, const py::object& vehicle) { return scene_hunting(scene, vehicle).result; },
+      py::arg("scene"), py::arg("vehicle") = py::none(),
+      "The scene's [nonlinear_hunting] ramp-down ('railmodal hunting'): a NonlinearHuntingResult. `vehicle` (a file "
+      "or Vehicle) replaces the scene's. InputError without the table; ValueError without wheelsets.");
+  m.def(
+      "hunting_report",
+      [](const Scene& scene, const py::object& vehicle, const std::string& format) {
+        const std::optional<OutputFormat> f = output_format_from_string(format);
+        if (!f) throw py::value_error("format is '" + format + "'; expected one of table, csv, json, markdown, html");
+        const SceneHunting run = scene_hunting(scene, vehicle);
+        std::vector<std::string> files{scene.source};
+        if (!run.vehicle.source.empty()) files.push_back(run.vehicle.source);  // the file it was read from
+        std::ostringstream out;
+        write_nonlinear_hunting(out, run.result, *scene.nonlinear_hunting, *f, run.vehicle.name, provenance_of(files),
+                                run.linear);
+        return out.str();
+      },
+      py::arg("scene"), py::arg("vehicle") = py::none(), py::arg("format") = "json",
+      "The report 'railmodal hunting SCENE --format FORMAT' writes (write_nonlinear_hunting), as a string.");
+}
+
 void bind_lateral_stability(py::module_& m) {
   py::class_<LateralStability>(m, "LateralStability", "Static lateral stability of a body on its springs (eq. (235b))")
       .def_readonly("body", &LateralStability::body)
@@ -316,6 +379,7 @@ void bind_lateral_stability(py::module_& m) {
 void bind_stability(py::module_& m) {
   bind_hunting(m);
   bind_nonlinear_hunting(m);
+  bind_scene_hunting(m);
   bind_lateral_stability(m);
 }
 

@@ -214,34 +214,42 @@ void bind_study_file(py::module_& m) {
 
   m.def(
       "load_study",
-      [](const py::object& path) {
+      [](const py::object& path, bool read_variants) {
         const std::string file = path_argument(path);
         py::gil_scoped_release release;
-        return std::make_shared<Study>(load_study(file));
+        if (read_variants) return std::make_shared<Study>(load_study(file));
+        return std::make_shared<Study>(load_study(file, [](int) { return false; }));
       },
-      py::arg("path"), "Reads a study file and every variant; InputError naming the study file, line, variant and key.");
+      py::arg("path"), py::kw_only(), py::arg("read_variants") = true,
+      "Reads a study file and every variant; InputError naming the study file, line, variant and key. "
+      "read_variants=False names the variants without reading them: evaluate or compare them with "
+      "read_in_workers=True, which reads each on the thread that evaluates it (a large study in little memory).");
   m.def(
       "evaluate_study",
-      [](const Study& study, int threads) {
+      [](const Study& study, int threads, bool read_in_workers) {
         EvaluationOptions options;
         options.threads = threads;
+        options.read_in_workers = read_in_workers;
         py::gil_scoped_release release;
         VariantResults out;
         out.results = evaluate_study(study, options, &out.summary);
         return out;
       },
       py::arg("study"), py::kw_only(), py::arg("threads") = EvaluationOptions{}.threads,
+      py::arg("read_in_workers") = EvaluationOptions{}.read_in_workers,
       "Evaluates every variant on `threads` threads (0: every core); a variant that cannot be evaluated is a row "
-      "with its failure.");
+      "with its failure. read_in_workers: see load_study(read_variants=False).");
   m.def(
       "compare",
-      [](const Study& study, int threads) {
+      [](const Study& study, int threads, bool read_in_workers) {
         EvaluationOptions options;
         options.threads = threads;
+        options.read_in_workers = read_in_workers;
         py::gil_scoped_release release;
         return rank_variants(study, evaluate_study(study, options));
       },
       py::arg("study"), py::kw_only(), py::arg("threads") = EvaluationOptions{}.threads,
+      py::arg("read_in_workers") = EvaluationOptions{}.read_in_workers,
       "Evaluates and ranks the study's variants ('railmodal compare').");
 }
 

@@ -4,6 +4,8 @@
 
 #include <pybind11/pybind11.h>
 
+#include "vehicle_lists.hpp"  // the vehicle's lists are opaque types: seen by every file
+
 namespace railmodal::python {
 
 void bind_errors(pybind11::module_& m);      // InputError, NumericalError → Python exceptions

@@ -1,9 +1,11 @@
 """The driving gear's forces and its balancing (docs/python.md, "Balancing"), against
 `railmodal balance` and Zhdanov's exact crank-pin force.
 
-Tolerances: `railmodal balance --format json` writes its tables as the text report rounds them
-(kN to 2 decimals, kg and degrees to 1, α to 3): the binding's unrounded values must lie within
-half a unit of that last digit (plus 1e-9 for the decimal representation of the half).
+Tolerances: `railmodal balance --format json` writes every number with its unit in the key and
+enough digits to read the double back (the shortest round trip); the binding runs the same
+library calls, so the values agree to the last bit. rel=1e-12 (and an absolute 1e-6 N, kg for
+values that are round-off around zero, ~1e-11 N here) leaves room only for a writer that prints
+15 significant digits instead of 17, never for a different computation.
 """
 import numpy as np
 import pandas
@@ -13,15 +15,12 @@ import railmodal
 from railmodal_paths import cli, cli_json, data
 
 SU = data("locomotives", "su.toml")
-
-
-def half_unit(decimals):
-    return 0.5 * 10.0 ** -decimals + 1e-9
+REL, ABS = 1e-12, 1e-6
 
 
 @pytest.fixture(scope="module")
 def report():
-    return {s["title"].split(" (")[0].split(":")[0]: s for s in cli_json("balance", SU)["sections"]}
+    return cli_json("balance", SU)
 
 
 @pytest.fixture(scope="module")
@@ -29,23 +28,28 @@ def gear():
     return railmodal.load_driving_gear(SU)
 
 
-def section(report, start):
-    return next(s for title, s in report.items() if title.startswith(start))
+def close(got, expected):
+    np.testing.assert_allclose(got, expected, rtol=REL, atol=ABS)
 
 
 def test_forces_every_15_degrees_equal_the_command_line(gear, report):
     forces = railmodal.driving_gear_forces(gear, gear.design_speed_m_s)
-    table = section(report, "Forces every 15 degrees")
-    rows = np.array(table["rows"])
-    every15 = slice(0, 360, 15)  # 360 steps a revolution: 1° apart
-    np.testing.assert_allclose(np.degrees(forces.crank_angle_rad[every15]), rows[:, 0], atol=1e-9)
-    per_cylinder = np.stack([forces.horizontal_n, forces.vertical_n, forces.guide_n], axis=2)  # angle, cylinder, X/Y/Z
-    got = per_cylinder[every15].reshape(24, -1) / 1000  # X, Y, Z of the right, then of the left: the report's order
-    np.testing.assert_allclose(got, rows[:, 1:7], rtol=0, atol=half_unit(2))
-    np.testing.assert_allclose(forces.wheel_loads_n[every15] / 1000, rows[:, 7:13], rtol=0, atol=half_unit(2))
-    np.testing.assert_allclose(forces.surging_n[every15] / 1000, rows[:, 13], rtol=0, atol=half_unit(2))
-    np.testing.assert_allclose(forces.nosing_n_m[every15] / 1000, rows[:, 14], rtol=0, atol=half_unit(2))
-    assert forces.speed_m_s == gear.design_speed_m_s and forces.summary.passed
+    assert forces.speed_m_s == pytest.approx(report["speed_m_per_s"], rel=REL) and forces.summary.passed
+    states = report["gear"]["states_every_15_deg"]
+    assert [s["crank_angle_deg"] for s in states] == list(range(0, 360, 15))
+    for state in states:
+        i = state["crank_angle_deg"]  # 360 steps a revolution: 1° apart
+        assert np.degrees(forces.crank_angle_rad[i]) == pytest.approx(i, abs=1e-9)
+        for c, cylinder in enumerate(state["cylinders"]):
+            assert cylinder["cylinder"] == gear.cylinders[c]["name"]
+            close([forces.horizontal_n[i, c], forces.vertical_n[i, c], forces.guide_n[i, c]],
+                  [cylinder["X_N"], cylinder["Y_N"], cylinder["Z_N"]])
+        close(forces.wheel_loads_n[i], [w["dP_N"] for w in state["wheel_loads"]])
+        close([forces.surging_n[i], forces.nosing_n_m[i]], [state["surging_N"], state["nosing_N_m"]])
+    close([forces.max_surging_n, forces.max_nosing_n_m], [report["gear"]["max_surging_N"], report["gear"]["max_nosing_N_m"]])
+    wheels = pandas.DataFrame(forces.wheels)
+    close(wheels["alpha"], [w["alpha"] for w in report["gear"]["wheels"]])
+    assert list(wheels["wheel_lift"]) == [w["wheel_lift"] for w in report["gear"]["wheels"]]
 
 
 def test_the_crank_pin_force_is_zhdanovs_exact_solution(gear):
@@ -72,23 +76,28 @@ def test_harmonics_rebuild_the_forces(gear):
 
 def test_counterweights_equal_the_command_line(gear, report):
     study = railmodal.balance_study(gear)
-    table = section(report, "Counterweights by rule")
-    rows = iter(table["rows"])
-    for rule in ("least_squares", "minimax", "book"):
-        result = study.by_rule[rule]
-        assert result.rule == rule
-        for wheel in result.records():
-            row = next(rows)
-            assert row[0] == rule
-            masses = [wheel[k] for k in ("rotating_mass_kg", "vertical_mass_kg", "overbalance_mass_kg", "total_mass_kg")]
-            np.testing.assert_allclose(masses, [row[2], row[4], row[6], row[8]], rtol=0, atol=half_unit(1))
-            assert wheel["max_hammer_blow_n"] / 1000 == pytest.approx(row[10], abs=half_unit(2))
-            assert wheel["alpha"] == pytest.approx(row[12], abs=half_unit(3))
+    assert [r["rule"] for r in report["by_rule"]] == ["least_squares", "minimax", "book"]
+    for expected in report["by_rule"]:
+        result = study.by_rule[expected["rule"]]
+        assert result.rule == expected["rule"]
+        got = pandas.DataFrame(result.records())
+        want = pandas.DataFrame(expected["wheels"])
+        assert len(got) == len(want)
+        for mine, theirs in (("rotating_mass_kg", "rotating_mass_kg"), ("vertical_mass_kg", "vertical_mass_kg"),
+                             ("overbalance_mass_kg", "overbalance_mass_kg"), ("total_mass_kg", "total_mass_kg"),
+                             ("max_hammer_blow_n", "max_hammer_blow_N"), ("alpha", "alpha"), ("alpha_89a", "alpha_89a")):
+            close(got[mine], want[theirs])
+        # Angles: the report's degrees are the binding's radians, within a turn (a mass of zero
+        # has angle 0 in both).
+        close(np.degrees(got["total_angle_rad"]), want["total_angle_deg"])
+        close([result.percent_unbalanced_surging, result.percent_unbalanced_nosing],
+              [expected["unbalanced_surging_percent"], expected["unbalanced_nosing_percent"]])
     trade = pandas.DataFrame(study.by_rule["book"].trade_off())
-    expected = np.array(section(report, "Trade-off")["rows"])
-    np.testing.assert_allclose(100 * trade["fraction"], expected[:, 0], atol=1e-9)
-    np.testing.assert_allclose(trade["max_alpha"], expected[:, 1], rtol=0, atol=half_unit(3))
-    np.testing.assert_allclose(trade["max_surging_n"] / 1000, expected[:, 2], rtol=0, atol=half_unit(2))
+    expected = pandas.DataFrame(report["by_rule"][2]["trade_off"])
+    close(trade["fraction"], expected["balanced_fraction"])
+    close(trade["max_alpha"], expected["max_alpha"])
+    close(trade["max_surging_n"], expected["max_surging_N"])
+    close(trade["max_nosing_n_m"], expected["max_nosing_N_m"])
     assert study.by_rule["minimax"].trade_off() == []  # only the rule asked for has one
     assert study.axle_names == gear.axle_names
 
@@ -121,3 +130,25 @@ def test_balance_errors(gear):
 
 def test_speed_at_alpha_scales_as_the_square():
     assert railmodal.speed_at_alpha(0.2, 20.0, 0.8) == pytest.approx(40.0, rel=1e-15)
+
+
+def test_the_gear_as_an_excitation_is_the_scenes_source(gear):
+    # data/scenes/su_driving_gear.toml names the gear, the frame, the axles' places and bodies:
+    # the same GearExcitation made in Python drives the engine exactly as the scene's source.
+    scene = railmodal.load_scene(data("scenes", "su_driving_gear.toml"))
+    study = railmodal.study_critical_speeds(scene)
+    mine = railmodal.gear_excitation(gear, body="frame", axles=[(1.85, "axle1"), (0.0, "axle2"), (-1.85, "axle3")],
+                                     crank_angle_rad=0.0, harmonics=2)
+    v = np.linspace(5 / 3.6, 110 / 3.6, 50)
+    outputs = ["frame.yaw", "frame.roll", "axle2.roll"]
+    want = railmodal.amplitude_curves(study.system, study.modes, scene.sources[0], outputs, v)
+    got = railmodal.amplitude_curves(study.system, study.modes, mine, outputs, v)
+    for g, w in zip(got, want):
+        np.testing.assert_array_equal(g.amplitudes, w.amplitudes)
+        assert np.nanmax(g.amplitudes) > 0.0
+    # One harmonic only: a different excitation (the second harmonic is what counterweights leave).
+    first = railmodal.amplitude_curves(study.system, study.modes,
+                                       railmodal.gear_excitation(gear, body="frame", harmonics=1), outputs, v)
+    assert not np.array_equal(first[0].amplitudes, want[0].amplitudes)
+    with pytest.raises(ValueError):
+        railmodal.gear_excitation(gear, body="frame", harmonics=0)

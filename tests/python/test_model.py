@@ -102,9 +102,7 @@ def test_sparse_train_as_scipy_sparse():
 def test_vehicle_fields_can_be_changed_for_a_variant():
     car = railmodal.load_vehicle(RESORT)
     variant = car.copy()
-    bodies = variant.bodies
-    bodies[0].mass *= 2.0  # a list of copies: assigned back whole
-    variant.bodies = bodies
+    variant.bodies[0].mass *= 2.0  # the list's items are the vehicle's own bodies
     assert car.bodies[0].mass * 2.0 == variant.bodies[0].mass
     body = railmodal.assemble(variant).M[1, 1]  # body.bounce
     assert body == pytest.approx(2.0 * railmodal.assemble(car).M[1, 1], rel=1e-15)
@@ -120,3 +118,66 @@ def test_large_matrices_are_views_not_copies():
     first, second = big.M, big.K
     assert np.shares_memory(first, big.M) and np.shares_memory(second, big.K)
     assert first.nbytes == 2000 * 2000 * 8
+
+
+def test_changing_an_item_of_a_vehicle_list_changes_the_vehicle():
+    # The obvious notebook edit, which changed a copy (and nothing else) while the lists were
+    # converted to Python lists: now items are references into the vehicle.
+    car = railmodal.load_vehicle(RESORT)
+    before = railmodal.modes(railmodal.assemble(car, "vertical")).frequencies_hz
+    car.bodies[0].mass *= 2.0
+    for stage in car.elements[0].vertical_stages:
+        stage.stiffness *= 3.0
+    after = railmodal.modes(railmodal.assemble(car, "vertical")).frequencies_hz
+    reference = railmodal.load_vehicle(RESORT)
+    assert car.bodies[0].mass == 2.0 * reference.bodies[0].mass
+    assert car.elements[0].vertical_stages[1].stiffness == 3.0 * reference.elements[0].vertical_stages[1].stiffness
+    assert not np.array_equal(before, after)
+    # The 3-vectors are read-only copies: an in-place edit raises instead of doing nothing.
+    with pytest.raises(ValueError):
+        car.bodies[0].inertia[0] *= 2.0
+    car.bodies[0].inertia = 2.0 * car.bodies[0].inertia
+    with pytest.raises(AttributeError):  # a tuple: appending to a copy would change nothing
+        car.bodies[0].held.append("roll")
+    car.bodies[0].held = [*car.bodies[0].held, "roll"]
+    assert "roll" in car.bodies[0].held
+    assert car.bodies[0].inertia[1] == 2.0 * reference.bodies[0].inertia[1]
+
+
+def test_a_vehicle_list_changes_length_only_while_no_item_is_held():
+    car = railmodal.load_vehicle(RESORT)
+    n = len(car.elements)
+    damper = railmodal.Element()
+    damper.name, damper.lower, damper.upper = "extra damper", "", "body"
+    damper.point = [0.0, 0.0, 0.0]
+    damper.vertical_damping = 1e4
+    car.elements.append(damper)  # no item held: the list grows
+    assert len(car.elements) == n + 1 and car.elements[-1].name == "extra damper"
+    assert railmodal.assemble(car).C[1, 1] == pytest.approx(railmodal.assemble(railmodal.load_vehicle(RESORT)).C[1, 1] + 1e4)
+    held = car.elements[0]  # a reference into the list's storage, which a longer list would move
+    with pytest.raises(RuntimeError, match="cannot change length"):
+        car.elements.append(damper)
+    with pytest.raises(RuntimeError, match="cannot change length"):
+        car.elements = list(car.elements)[:-1]
+    kept = held.copy()
+    del held
+    car.elements = [e.copy() for e in car.elements][:-1]  # nothing held now
+    assert len(car.elements) == n and kept.name == car.elements[0].name
+    # Same length: assigned in place, and an item held sees the new values.
+    stage = car.elements[0].vertical_stages[0]
+    stiffer = [s.copy() for s in car.elements[0].vertical_stages]
+    stiffer[0].stiffness *= 2.0
+    car.elements[0].vertical_stages = stiffer
+    assert stage.stiffness == stiffer[0].stiffness
+    with pytest.raises(RuntimeError, match="cannot change length"):
+        car.elements[0].vertical_stages = stiffer[:1]
+    with pytest.raises(IndexError):
+        car.bodies[len(car.bodies)]
+
+
+def test_assemble_takes_a_vehicle_file_as_the_other_analyses_do():
+    by_file = railmodal.assemble(RESORT, "vertical")
+    by_object = railmodal.assemble(railmodal.load_vehicle(RESORT), "vertical")
+    assert np.array_equal(by_file.K, by_object.K) and by_file.dof_labels == by_object.dof_labels
+    with pytest.raises(TypeError, match="expected a vehicle file or a Vehicle, got int"):
+        railmodal.assemble(3)

@@ -129,3 +129,17 @@ def test_damped_peaks_are_refined_above_their_grid_points():
         # Golden-section search maximises within a bracket around a grid maximum: the refined
         # amplitude is not below the grid's there (1e-12: rounding of the two evaluations).
         assert peak["amplitude"] >= curve.amplitudes[nearest] * (1 - 1e-12)
+
+
+def test_wheel_sources_run_at_the_wheels_turning_frequency():
+    # A wheel of diameter D turns V/(πD) times a second: an oval (two lobes) excites twice that,
+    # a flat once a revolution (excitation.hpp; bogie-wagons-forced digest §2.10).
+    oval = railmodal.wheel_eccentricity(wheel_diameter=0.95, eccentricity=0.5e-3, lobes=2)
+    flat = railmodal.wheel_flat(wheel_diameter=0.95, depth=1e-3, length=0.06, harmonics=4)
+    turning = 30.0 / (np.pi * 0.95)
+    assert oval.frequency_hz(30.0) == pytest.approx(2 * turning, rel=1e-14)
+    assert flat.frequency_hz(30.0) == pytest.approx(turning, rel=1e-14) and flat.harmonic_count == 4
+    with pytest.raises(TypeError, match="wheel_flat\\(\\): unknown option 'lenght'"):
+        railmodal.wheel_flat(wheel_diameter=0.95, depth=1e-3, lenght=0.06)
+    with pytest.raises(ValueError):
+        railmodal.wheel_eccentricity(wheel_diameter=0.0, eccentricity=1e-3)

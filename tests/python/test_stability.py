@@ -5,6 +5,8 @@ Tolerances: the binding and the command line run the same library call on the sa
 they agree to the digits the JSON writer prints; rtol=1e-12 holds any writer that prints 13
 significant digits or more.
 """
+import json
+
 import numpy as np
 import pandas
 import pytest
@@ -137,3 +139,18 @@ def test_lateral_stability_equals_the_studys_metacentric_height():
     assert s.nolltein_measure(1.0) == pytest.approx(s.metacentric_height_m / s.cg_height_m, rel=1e-15)
     with pytest.raises(ValueError):
         railmodal.lateral_stability(resort, "no such body")
+
+
+def test_a_scenes_nonlinear_hunting_equals_the_command_line():
+    scene_file = data("scenes", "wheelset_on_springs_nonlinear_hunting.toml")
+    scene = railmodal.load_scene(scene_file)
+    expected = cli_json("hunting", scene_file)
+    # hunting_report runs hunting_scene's ramp (the same function, python/src/bind_stability.cpp)
+    # and writes the command's own report: every key and number equal (one run of each, ~1.3 s,
+    # so hunting_scene's result is not run a third time here).
+    report = json.loads(railmodal.hunting_report(scene, format="json"))
+    assert report == expected and report["convergence"] == "converged"
+    with pytest.raises(railmodal.InputError, match="no \\[nonlinear_hunting\\] table"):
+        railmodal.hunting_scene(railmodal.load_scene(data("scenes", "resort_car_10m_rails.toml")))
+    with pytest.raises(ValueError, match="format is 'pdf'"):
+        railmodal.hunting_report(scene, format="pdf")

@@ -157,3 +157,13 @@ def test_a_ride_study_tables_its_ride():
     ride = pandas.DataFrame(railmodal.evaluate_study(study).ride())
     assert set(ride["variant"]) == set(names) and (ride["max_rms"] > 0).all()
     assert ride["max_wz"].notna().any()
+
+
+def test_variants_read_in_the_workers_give_the_same_results():
+    path = data("studies", "resort_against_fette.toml")
+    read = railmodal.evaluate_study(railmodal.load_study(path), threads=2)
+    named = railmodal.load_study(path, read_variants=False)  # names only: each read by its worker
+    in_workers = railmodal.evaluate_study(named, threads=2, read_in_workers=True)
+    assert pandas.DataFrame(in_workers.records()).equals(pandas.DataFrame(read.records()))
+    with pytest.raises(ValueError):  # EvaluationOptions: a variant not read needs read_in_workers
+        railmodal.evaluate_study(named, threads=2)
