@@ -137,8 +137,8 @@ def test_the_gear_as_an_excitation_is_the_scenes_source(gear):
     # the same GearExcitation made in Python drives the engine exactly as the scene's source.
     scene = railmodal.load_scene(data("scenes", "su_driving_gear.toml"))
     study = railmodal.study_critical_speeds(scene)
-    mine = railmodal.gear_excitation(gear, body="frame", axles=[(1.85, "axle1"), (0.0, "axle2"), (-1.85, "axle3")],
-                                     crank_angle_rad=0.0, harmonics=2)
+    mine = railmodal.gear_excitation(gear, body="frame", axles=[(2.05, "axle1"), (0.0, "axle2"), (-2.05, "axle3")],
+                                     crank_angle_rad=0.0, harmonics=3)
     v = np.linspace(5 / 3.6, 110 / 3.6, 50)
     outputs = ["frame.yaw", "frame.roll", "axle2.roll"]
     want = railmodal.amplitude_curves(study.system, study.modes, scene.sources[0], outputs, v)
