@@ -4,6 +4,7 @@
 // docs/stability.md, "Creep coefficients: Hertz and Kalker", cites every source.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -279,6 +280,68 @@ TEST(CreepCoefficientsValidation, KalkersScaling) {
   // a/b = 1.5 is b/a = 2/3 on the second branch: between its rows 0.6 and 0.7.
   EXPECT_GT(c.c11, 4.54);
   EXPECT_LT(c.c11, 4.78);
+}
+
+// A printed ellipse from a third party's program: E.A.H. Vollebregt's CONTACT (open-source
+// release, Vtech CMCC, Apache-2.0) ships example inputs with the output it prints for them
+// (examples/*.inp, *.ref_out). Its Hertz routine (m_hertz.f90, hzcalc3d) solves the elliptic-
+// integral equations to 1e-9, and the a/b iteration (elliptic_to_curv) to 1e-8, so every printed
+// digit is Hertz's own; CONTACT's A1, B1 are our A, B (the half-sums of the curvatures, its user
+// guide, eq. "a1_b1"). The material of both cases: G = 82 000 N/mm², ν = 0.28, i.e. E = 2G(1 + ν).
+// No textbook worked example of a wheel–rail ellipse could be read here (docs/stability.md,
+// "Published examples"); this is the closest printed case, and independent of our code.
+//
+// The tolerance is the printed digits, carried through: the inputs we take from the printout are
+// rounded to 4 digits, so the semi-axes are computed at the corners of that rounding box, and the
+// printed value must lie within their range widened by half a unit of its own last digit.
+struct PrintedEllipseCase {
+  double along, across;          // A, B (1/m) as fed to hertz_contact
+  double along_half, across_half;  // half a unit of the printed digit (0 where the input is exact)
+  double load;                   // N
+  double a_printed, b_printed;   // m
+  int a_digits, b_digits;
+};
+
+void expect_printed_ellipse(const PrintedEllipseCase& c) {
+  const double G = 82e9, nu = 0.28;
+  double a_lo = 1e300, a_hi = -1e300, b_lo = 1e300, b_hi = -1e300;
+  for (int corner = 0; corner < 4; ++corner) {
+    const double A = c.along + ((corner & 1) ? c.along_half : -c.along_half);
+    const double B = c.across + ((corner & 2) ? c.across_half : -c.across_half);
+    HertzContactInput in;
+    in.wheel_load = c.load;
+    in.rail_head_radius = 0.5 / B;  // a conical tread: the rail head alone curves across
+    in.youngs_modulus = 2.0 * G * (1.0 + nu);
+    in.poisson_ratio = nu;
+    const HertzContact h = hertz_contact(in, 0.5 / A);  // the wheel alone curves along
+    a_lo = std::min(a_lo, h.a);
+    a_hi = std::max(a_hi, h.a);
+    b_lo = std::min(b_lo, h.b);
+    b_hi = std::max(b_hi, h.b);
+  }
+  const double ha = half_last_digit(c.a_printed, c.a_digits), hb = half_last_digit(c.b_printed, c.b_digits);
+  EXPECT_GE(c.a_printed, a_lo - ha);
+  EXPECT_LE(c.a_printed, a_hi + ha);
+  EXPECT_GE(c.b_printed, b_lo - hb);
+  EXPECT_LE(c.b_printed, b_hi + hb);
+}
+
+// examples/fastsim.inp: semi-axes AA = 8 mm, BB = 4 mm prescribed with FN = 82 kN; CONTACT prints
+// the curvatures they need, "THE CURVATURES A1,B1 ARE: 0.8464E-03 0.2406E-02" (1/mm,
+// fastsim.ref_out). Fed those curvatures, hertz_contact must return the 8 mm by 4 mm ellipse,
+// long along the track.
+TEST(HertzContactValidation, ContactProgramPrintedEllipseAlongTheTrack) {
+  expect_printed_ellipse({0.8464, 2.406, 0.00005, 0.0005, 82e3, 8.000e-3, 4.000e-3, 4, 4});
+}
+
+// examples/tractcurv.inp: the Eurosprinter wheel of O. Polach (Wear 258, 2005, "Creep forces
+// in simulations of traction vehicles running on adhesion limit"): radius 625 mm, so A1 = 0.0008
+// 1/mm exactly, 106.7 kN on the wheel, a/b = 0.5 prescribed. CONTACT prints "THE CURVATURES
+// A1,B1 ARE: 0.8000E-03 0.2814E-03" and "BASIC SEMIAXES AA,BB, RATIO 6.304 12.61 0.5000"
+// (tractcurv.ref_out): an ellipse turned across the rail (b > a), which checks that `a` stays
+// the semi-axis along the track whichever is longer.
+TEST(HertzContactValidation, ContactProgramPrintedEllipseAcrossTheRail) {
+  expect_printed_ellipse({0.8, 0.2814, 0.0, 0.00005, 106.7e3, 6.304e-3, 12.61e-3, 4, 4});
 }
 
 }  // namespace
