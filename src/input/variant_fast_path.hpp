@@ -1,7 +1,7 @@
 // A study's variants built from the base vehicle read once: a key of the vehicle file that the
 // probes show sets some of the vehicle's numbers to its own value (read as one quantity) and
 // changes nothing else is written straight into a copy of the base vehicle, with no TOML tree
-// copied and no reader run (docs/studies.md, "How variants are read"). Any other key, value
+// copied and no reader run (docs/performance.md, "Studies"). Any other key, value
 // or vehicle file takes the general path (the readers on the overridden TOML), whose errors
 // are the study's errors.
 #pragma once
