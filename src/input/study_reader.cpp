@@ -416,8 +416,6 @@ void check_variants(const std::vector<study::VariantSpec>& variants, StudyFile* 
     if (!file->vehicle_documents.count(spec.vehicle_file))
       file->vehicle_documents[spec.vehicle_file] = parse_toml_file(spec.vehicle_file);
   }
-  if (!file->vehicle_documents.count(file->plan.vehicle_file))  // base = false, every variant on another file
-    file->vehicle_documents[file->plan.vehicle_file] = parse_toml_file(file->plan.vehicle_file);
   file->fast = resolve_fast_path(*file);
 }
 

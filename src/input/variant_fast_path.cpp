@@ -127,6 +127,9 @@ std::map<std::string, KeyProbes> probe_values(const StudyFile& file) {
 }  // namespace
 
 std::optional<FastPath> resolve_fast_path(const StudyFile& file) {
+  // No variant on the base vehicle (base = false, every [[variant]] on a file of its own): the
+  // base file is not read at all, as before.
+  if (!file.vehicle_documents.count(file.plan.vehicle_file)) return std::nullopt;
   FastPath fast;
   try {
     fast.base = read_vehicle(file.vehicle_documents.at(file.plan.vehicle_file), file.plan.vehicle_file);
