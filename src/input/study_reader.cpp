@@ -69,11 +69,6 @@ study::WrittenNumber number_with_unit(TableReader& t, const std::string& key) {
   return out;
 }
 
-toml::value make_value(const study::WrittenNumber& x) {
-  if (!x.unit.empty()) return toml::value(shortest_text(x.number) + " " + x.unit);
-  if (x.integer) return toml::value(static_cast<toml::integer>(std::llround(x.number)));
-  return toml::value(x.number);
-}
 
 // Keeps a value as the study writes it, for the variants that use it.
 study::WrittenValue keep(const toml::value& v, StudyFile* file) {
@@ -102,7 +97,7 @@ void read_values(TableReader& t, study::SweepParameter* p, StudyFile* file) {
   value.integer = from.integer && to.integer && step.integer;
   for (int i = 0; i < static_cast<int>(count); ++i) {
     value.number = from.number + i * step.number;
-    p->values.push_back(keep(make_value(value), file));
+    p->values.push_back(keep(drawn_value(value), file));
   }
 }
 
@@ -337,7 +332,7 @@ Result read_with_assignments(const toml::value& base, const std::string& file,
   std::vector<std::string> reader_paths;
   for (const study::Assignment* a : assignments) {
     try {
-      reader_paths.push_back(set_at_path(document, a->key, a->written >= 0 ? study.written[a->written] : make_value(a->drawn)));
+      reader_paths.push_back(set_at_path(document, a->key, assignment_value(study, *a)));
     } catch (const std::invalid_argument& e) {
       throw InputError(study.path, a->place.line, a->place.column, "variant '" + spec.name + "': key '" + a->key + "': " + e.what());
     }
@@ -421,6 +416,23 @@ void check_variants(const std::vector<study::VariantSpec>& variants, StudyFile* 
     if (!file->vehicle_documents.count(spec.vehicle_file))
       file->vehicle_documents[spec.vehicle_file] = parse_toml_file(spec.vehicle_file);
   }
+  file->fast = resolve_fast_path(*file);
+}
+
+toml::value drawn_value(const study::WrittenNumber& x) {
+  if (!x.unit.empty()) return toml::value(shortest_text(x.number) + " " + x.unit);
+  if (x.integer) return toml::value(static_cast<toml::integer>(std::llround(x.number)));
+  return toml::value(x.number);
+}
+
+toml::value assignment_value(const StudyFile& file, const study::Assignment& a) {
+  return a.written >= 0 ? file.written[a.written] : drawn_value(a.drawn);
+}
+
+Vehicle read_overridden_vehicle(const StudyFile& file, const study::VariantSpec& spec,
+                                const std::vector<const study::Assignment*>& on_vehicle) {
+  return read_with_assignments<Vehicle>(file.vehicle_documents.at(spec.vehicle_file), spec.vehicle_file, on_vehicle,
+                                        file, spec, read_vehicle);
 }
 
 StudyVariant read_variant(const StudyFile& file, const study::VariantSpec& spec, std::map<std::string, Vehicle>* plain) {
@@ -436,8 +448,10 @@ StudyVariant read_variant(const StudyFile& file, const study::VariantSpec& spec,
     variant.vehicle = cached->second;
   } else if (on_vehicle.empty()) {
     variant.vehicle = read_vehicle(vehicle_document, spec.vehicle_file);
+  } else if (std::optional<Vehicle> fast = fast_vehicle(file, spec, on_vehicle)) {
+    variant.vehicle = std::move(*fast);
   } else {
-    variant.vehicle = read_with_assignments<Vehicle>(vehicle_document, spec.vehicle_file, on_vehicle, file, spec, read_vehicle);
+    variant.vehicle = read_overridden_vehicle(file, spec, on_vehicle);
   }
   variant.scene = on_scene.empty()
                       ? file.base_scene

@@ -10,6 +10,7 @@
 #include <toml.hpp>
 #include <vector>
 
+#include "input/variant_fast_path.hpp"
 #include "railmodal/study.hpp"
 #include "study/study_plan.hpp"
 
@@ -30,6 +31,7 @@ struct StudyFile {
   Scene base_scene;
   std::map<std::string, toml::value> vehicle_documents;  ///< by file, filled by check_variants
   study::Place rule_place, elements_place;  ///< [permissible_dynamic_deflection] and its elements
+  std::optional<FastPath> fast;  ///< filled by check_variants; none: every variant by the readers
 };
 
 /// Reads the study file and its scene. Throws InputError at the [[variant]] or [[sweep]] that
@@ -37,11 +39,25 @@ struct StudyFile {
 StudyFile read_study_file(const std::string& path, size_t max_variants);
 
 /// Checks that the variants have names of their own and parses their vehicle files, in
-/// study order.
+/// study order; then probes the keys the fast path can set (resolve_fast_path).
 void check_variants(const std::vector<study::VariantSpec>& variants, StudyFile* file);
 
 /// One variant with its vehicle and scene; `plain` (optional) caches vehicles read without
 /// changes.
 StudyVariant read_variant(const StudyFile& file, const study::VariantSpec& spec, std::map<std::string, Vehicle>* plain);
+
+/// A number written as the study writes it: "40 mm", 40 or 40.0 (a swept range's values, a
+/// sample's draws).
+toml::value drawn_value(const study::WrittenNumber& x);
+
+/// The value an assignment writes into its file: the study's written value, or the drawn
+/// number written as the sample's `from` is.
+toml::value assignment_value(const StudyFile& file, const study::Assignment& assignment);
+
+/// The vehicle of a variant by the general path: its base file with the variant's values
+/// written into it, read by read_vehicle; errors sent back to the study line that wrote the
+/// value.
+Vehicle read_overridden_vehicle(const StudyFile& file, const study::VariantSpec& spec,
+                                const std::vector<const study::Assignment*>& on_vehicle);
 
 }  // namespace railmodal::input

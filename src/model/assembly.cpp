@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "model/analysis_limits.hpp"
+#include "model/assembly.hpp"
 #include "model/body_bending.hpp"
 #include "model/element_stiffness.hpp"
 #include "model/rigid_body.hpp"
@@ -210,14 +211,16 @@ ElementMap element_map(const Vehicle& v, const Layout& layout, const std::map<st
   ElementMap m;
   m.upper = index.at(e.upper);
   m.up = model::point_map(v.bodies[m.upper], e.point);
-  const std::string what = "element '" + e.name + "' on body '";
+  // The message names the element only for a body that bends (no string built per element
+  // of a rigid vehicle: a study assembles one per variant).
+  auto what = [&e](const std::string& body) { return "element '" + e.name + "' on body '" + body + "'"; };
   if (layout.bending[m.upper] >= 0)
-    m.up_bending = layout.modes[layout.bending[m.upper] - layout.rigid()].shape_at(e.point.x(), what + e.upper + "'");
+    m.up_bending = layout.modes[layout.bending[m.upper] - layout.rigid()].shape_at(e.point.x(), what(e.upper));
   if (!e.lower.empty()) {
     m.lower = index.at(e.lower);
     m.low = model::point_map(v.bodies[m.lower], e.point);
     if (layout.bending[m.lower] >= 0)
-      m.low_bending = layout.modes[layout.bending[m.lower] - layout.rigid()].shape_at(e.point.x(), what + e.lower + "'");
+      m.low_bending = layout.modes[layout.bending[m.lower] - layout.rigid()].shape_at(e.point.x(), what(e.lower));
   }
   return m;
 }
@@ -370,9 +373,12 @@ struct FullModel {
   std::vector<ElementMap> maps;  // one per element
 };
 
-FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string, int>& index, const Layout& layout) {
+// Without `damping`, C is left empty (the stiffness alone: M and K as with it).
+FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string, int>& index, const Layout& layout,
+                             bool damping) {
   const int N = layout.size();
-  FullModel f{Eigen::MatrixXd::Zero(N, N), Eigen::MatrixXd::Zero(N, N), Eigen::MatrixXd::Zero(N, N), {}};
+  FullModel f{Eigen::MatrixXd::Zero(N, N), damping ? Eigen::MatrixXd::Zero(N, N) : Eigen::MatrixXd(),
+              Eigen::MatrixXd::Zero(N, N), {}};
   for (int b = 0; b < layout.bodies; ++b)
     f.M.block(b * kMotionsPerBody, b * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) =
         model::body_mass(vehicle.bodies[b]);
@@ -384,7 +390,7 @@ FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string,
     const int q = layout.rigid() + static_cast<int>(j);
     f.M(q, q) = mode.modal_mass;
     f.K_springs(q, q) = mode.omega * mode.omega * mode.modal_mass;
-    f.C(q, q) = 2.0 * mode.damping_ratio * mode.omega * mode.modal_mass;
+    if (damping) f.C(q, q) = 2.0 * mode.damping_ratio * mode.omega * mode.modal_mass;
   }
   for (const Element& e : vehicle.elements) {
     f.maps.push_back(element_map(vehicle, layout, index, e));
@@ -394,9 +400,9 @@ FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string,
                 {series_stiffness(e.longitudinal_stages), lateral, series_stiffness(e.vertical_stages)},
                 &f.K_springs);
     add_rotational(f.maps.back(), e.rotational_stiffness, &f.K_springs);
-    add_element(f.maps.back(), {e.longitudinal_damping, e.lateral_damping, e.vertical_damping}, &f.C);
+    if (damping) add_element(f.maps.back(), {e.longitudinal_damping, e.lateral_damping, e.vertical_damping}, &f.C);
     add_bending_coupling(layout, f.maps.back(), series_stiffness(e.vertical_stages), &f.K_springs);
-    add_bending_coupling(layout, f.maps.back(), e.vertical_damping, &f.C);
+    if (damping) add_bending_coupling(layout, f.maps.back(), e.vertical_damping, &f.C);
   }
   return f;
 }
@@ -405,8 +411,8 @@ FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string,
 // coordinate gets none: its second-order terms (the slope φ' turning a load's lever, the
 // drop of a point off the neutral axis) are left out, as the rotation of the beam's sections
 // is (docs/ride.md, "Car-body bending").
-Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const std::map<std::string, int>& index,
-                                  const Layout& layout, const std::vector<double>& loads) {
+Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const Layout& layout, const std::vector<ElementMap>& maps,
+                                  const std::vector<double>& loads) {
   Eigen::MatrixXd K_gravity = Eigen::MatrixXd::Zero(layout.size(), layout.size());
   auto block = [&](int body) {
     return K_gravity.block(body * kMotionsPerBody, body * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody);
@@ -419,10 +425,10 @@ Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const std::map<std::st
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
     const Eigen::Vector3d on_upper(0.0, 0.0, loads[k]);
-    const int up = index.at(e.upper);
+    const int up = maps[k].upper;  // the bodies element_map looked up by name
     block(up) += model::dead_load_stiffness(vehicle.bodies[up], e.point, on_upper);
-    if (!e.lower.empty()) {
-      const int low = index.at(e.lower);
+    if (maps[k].lower >= 0) {
+      const int low = maps[k].lower;
       block(low) += model::dead_load_stiffness(vehicle.bodies[low], e.point, -on_upper);
     }
   }
@@ -533,35 +539,69 @@ std::vector<SeriesDamperRow> series_damper_rows(const Vehicle& vehicle, const La
   return rows;
 }
 
-}  // namespace
+// The matrices in full coordinates, every static load known: K holds the springs, the
+// hangers' lateral stiffness and the dead loads (K_gravity).
+struct FullAssembly {
+  Layout layout;
+  FullModel full;
+  std::vector<double> loads;
+  Eigen::MatrixXd K, K_gravity;
+};
 
-LinearSystem assemble(const Vehicle& vehicle, DofSet set) {
+FullAssembly assemble_full(const Vehicle& vehicle, bool damping) {
   std::map<std::string, int> index;
   check_vehicle(vehicle, &index);
-  const Layout layout(vehicle);
-
-  const FullModel full = springs_and_masses(vehicle, index, layout);
-  const std::vector<double> loads = static_loads(vehicle, layout, full.maps, full.K_springs);
-  Eigen::MatrixXd K = full.K_springs;
+  FullAssembly a{Layout(vehicle), {}, {}, {}, {}};
+  a.full = springs_and_masses(vehicle, index, a.layout, damping);
+  a.loads = static_loads(vehicle, a.layout, a.full.maps, a.full.K_springs);
+  a.K = a.full.K_springs;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
-    if (e.hanger) add_element(full.maps[k], {0.0, model::lateral_stiffness(e, loads[k]), 0.0}, &K);
+    if (e.hanger) add_element(a.full.maps[k], {0.0, model::lateral_stiffness(e, a.loads[k]), 0.0}, &a.K);
   }
-  const Eigen::MatrixXd K_gravity = gravity_stiffness(vehicle, index, layout, loads);
-  K += K_gravity;
+  a.K_gravity = gravity_stiffness(vehicle, a.layout, a.full.maps, a.loads);
+  a.K += a.K_gravity;
+  return a;
+}
 
+}  // namespace
+
+namespace {
+
+LinearSystem system_of(const Vehicle& vehicle, const FullAssembly& a, DofSet set) {
   LinearSystem system;
-  const std::vector<int> keep = kept_coordinates(vehicle, layout, set, &system.dofs);
-  system.mass = pick(full.M, keep);
-  system.damping = pick(full.C, keep);
-  system.stiffness = pick(K, keep);
-  system.gravity_stiffness = pick(K_gravity, keep);
+  const std::vector<int> keep = kept_coordinates(vehicle, a.layout, set, &system.dofs);
+  system.mass = pick(a.full.M, keep);
+  system.damping = pick(a.full.C, keep);
+  system.stiffness = pick(a.K, keep);
+  system.gravity_stiffness = pick(a.K_gravity, keep);
   system.vehicle = vehicle;
-  system.element_loads = loads;
-  system.element_vertical_map = element_vertical_map(layout, full.maps, keep);
-  system.track_inputs = track_inputs(vehicle, layout, full.maps, loads, keep);
-  system.series_dampers = series_damper_rows(vehicle, layout, full.maps, keep);
+  system.element_loads = a.loads;
+  system.element_vertical_map = element_vertical_map(a.layout, a.full.maps, keep);
+  system.track_inputs = track_inputs(vehicle, a.layout, a.full.maps, a.loads, keep);
+  system.series_dampers = series_damper_rows(vehicle, a.layout, a.full.maps, keep);
   return system;
+}
+
+LinearSystem stiffness_of(const Vehicle& vehicle, const FullAssembly& a, DofSet set) {
+  LinearSystem system;
+  const std::vector<int> keep = kept_coordinates(vehicle, a.layout, set, &system.dofs);
+  system.stiffness = pick(a.K, keep);
+  system.gravity_stiffness = pick(a.K_gravity, keep);
+  return system;
+}
+
+}  // namespace
+
+LinearSystem assemble(const Vehicle& vehicle, DofSet set) { return system_of(vehicle, assemble_full(vehicle, true), set); }
+
+LinearSystem model::assemble_stiffness(const Vehicle& vehicle, DofSet set) {
+  return stiffness_of(vehicle, assemble_full(vehicle, false), set);
+}
+
+model::SystemAndStiffness model::assemble_with_stiffness(const Vehicle& vehicle, DofSet set, DofSet stiffness_set) {
+  const FullAssembly a = assemble_full(vehicle, true);
+  return {system_of(vehicle, a, set), stiffness_of(vehicle, a, stiffness_set)};
 }
 
 }  // namespace railmodal

@@ -10,6 +10,7 @@
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
 #include "model/scene_fit.hpp"
+#include "response/critical_speed_study.hpp"
 #include "shortest_text.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -51,9 +52,8 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
   return peaks;
 }
 
-// Assembles and solves the vehicle; a vehicle with an unstable mode has no steady response.
-void solve_stable_modes(const Scene& scene, const Vehicle& vehicle, CriticalSpeedStudy* study) {
-  study->system = assemble(vehicle, scene.dofs);
+// Solves the assembled vehicle; a vehicle with an unstable mode has no steady response.
+void solve_stable_modes(const Scene& scene, CriticalSpeedStudy* study) {
   if (study->system.size() == 0) throw std::invalid_argument("no free degrees of freedom in the chosen set");
   check_scene_fits(scene, study->system);
   study->modes = solve_modes(study->system);
@@ -146,11 +146,17 @@ void summarise(CriticalSpeedStudy* study, double sweep_seconds, double peak_seco
 
 CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle,
                                          const std::function<void(double)>& progress) {
+  return response::study_critical_speeds_of(scene, [&] { return assemble(vehicle, scene.dofs); }, progress);
+}
+
+CriticalSpeedStudy response::study_critical_speeds_of(const Scene& scene, const std::function<LinearSystem()>& assembled,
+                                                      const std::function<void(double)>& progress) {
   model::refuse_ride_only_scene(scene, "critical speeds");
   CriticalSpeedStudy study;
   StageClock clock(&study.summary);
   study.scene = scene;
-  solve_stable_modes(scene, vehicle, &study);
+  study.system = assembled();
+  solve_stable_modes(scene, &study);
   clock.lap("assembly and modes");
 
   std::vector<const ExcitationSource*> sources;

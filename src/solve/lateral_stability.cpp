@@ -3,8 +3,10 @@
 #include <Eigen/Dense>
 #include <stdexcept>
 
+#include "model/assembly.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/stability.hpp"
+#include "solve/lateral_stability.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -12,8 +14,18 @@ namespace railmodal {
 LateralStability lateral_stability(const Vehicle& vehicle, const std::string& body_name) {
   LateralStability out;
   StageClock clock(&out.summary);
-  const LinearSystem s = assemble(vehicle, DofSet::lateral);
+  // The stiffness alone: the damping, track inputs and vehicle copy of a full assembly would
+  // cost as much again.
+  const LinearSystem s = model::assemble_stiffness(vehicle, DofSet::lateral);
   clock.lap("assemble");
+  solve::condense_roll(vehicle, s, body_name, &out);
+  clock.lap("condense");
+  return out;
+}
+
+void solve::condense_roll(const Vehicle& vehicle, const LinearSystem& s, const std::string& body_name,
+                          LateralStability* result) {
+  LateralStability& out = *result;
   const Eigen::MatrixXd K = s.stiffness - s.gravity_stiffness;  // springs only
   const int roll = s.index_of(body_name + ".roll");
   if (roll < 0) throw std::invalid_argument("body '" + body_name + "' has no free roll motion");
@@ -41,11 +53,9 @@ LateralStability lateral_stability(const Vehicle& vehicle, const std::string& bo
   out.metacentric_height = k / (body->mass * vehicle.gravity);
   out.cg_height = body->centre_of_gravity.z() - body->reference_point.z();
   out.margin = out.metacentric_height - out.cg_height;
-  clock.lap("condense");
   out.summary.analysis = "static lateral stability";
   out.summary.method = "roll stiffness of the elastic springs by static condensation, h = k/W (eq. (235b))";
   out.summary.checks.push_back({"d0 − h, m (≤ 0: the body returns, §2.6)", -out.margin, 0.0, out.margin >= 0.0});
-  return out;
 }
 
 }  // namespace railmodal

@@ -11,8 +11,11 @@
 #include "railmodal/scene.hpp"
 #include "railmodal/stability.hpp"
 #include "railmodal/study.hpp"
+#include "model/assembly.hpp"
+#include "response/critical_speed_study.hpp"
 #include "response/golden_section.hpp"
 #include "response/modal_checks.hpp"
+#include "solve/lateral_stability.hpp"
 #include "study/permissible_deflection.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -43,11 +46,19 @@ void static_deflections(const Vehicle& vehicle, const LinearSystem& any, Variant
     if (s.dofs[i].motion == Motion::bounce) r->static_deflections.push_back({vehicle.bodies[s.dofs[i].body].name, q(i)});
 }
 
-void metacentric_height(const Vehicle& vehicle, VariantResult* r) {
+// The metacentric height of the body named "body", from the lateral set's stiffness (`lateral`,
+// as model::assemble_stiffness gives it) when the caller has it, else assembled here.
+void metacentric_height(const Vehicle& vehicle, const LinearSystem* lateral, VariantResult* r) {
   for (const Body& b : vehicle.bodies)
     if (b.name == "body" && std::find(b.held.begin(), b.held.end(), Motion::roll) == b.held.end()) {
       try {
-        r->metacentric_height = lateral_stability(vehicle, "body").metacentric_height;
+        if (lateral) {
+          LateralStability out;
+          solve::condense_roll(vehicle, *lateral, "body", &out);
+          r->metacentric_height = out.metacentric_height;
+        } else {
+          r->metacentric_height = lateral_stability(vehicle, "body").metacentric_height;
+        }
       } catch (const std::invalid_argument&) {
         // no free roll in the lateral set: nothing to report
       }
@@ -275,7 +286,7 @@ void summarise_without_sources(const StudyVariant& variant, VariantResult* r) {
   const LinearSystem system = assemble(variant.vehicle, variant.scene.dofs);
   summarise_modes(solve_modes(system), r);
   static_deflections(variant.vehicle, system, r);
-  metacentric_height(variant.vehicle, r);
+  metacentric_height(variant.vehicle, nullptr, r);
 }
 
 // The analysis, method and checks of an evaluation (its stages are timed already).
@@ -304,7 +315,7 @@ void describe_failure(const StudyVariant& variant, const std::string& why, Varia
   const ModalResult modes = solve_modes(system);
   summarise_modes(modes, r);
   static_deflections(variant.vehicle, system, r);
-  metacentric_height(variant.vehicle, r);
+  metacentric_height(variant.vehicle, nullptr, r);
   for (const Mode& m : modes.modes)
     if (m.kind == ModeKind::unstable) {
       char rate[32];
@@ -335,10 +346,16 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
       summarise_evaluation(&r);
       return r;
     }
-    // One assembly and one modal solve serve everything: the study's own.
+    // One assembly and one modal solve serve everything: the study's own, which assembles the
+    // lateral stiffness of the metacentric height with its system.
     CriticalSpeedStudy study;
+    LinearSystem lateral;
     try {
-      study = study_critical_speeds(variant.scene, variant.vehicle);
+      study = response::study_critical_speeds_of(variant.scene, [&] {
+        model::SystemAndStiffness both = model::assemble_with_stiffness(variant.vehicle, variant.scene.dofs, DofSet::lateral);
+        lateral = std::move(both.stiffness);
+        return std::move(both.system);
+      });
     } catch (const NumericalError& e) {
       describe_failure(variant, e.what(), &r);
       clock.lap("failure");
@@ -348,7 +365,7 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
     clock.lap("critical-speed study");
     summarise_modes(study.modes, &r);
     static_deflections(variant.vehicle, study.system, &r);
-    metacentric_height(variant.vehicle, &r);
+    metacentric_height(variant.vehicle, &lateral, &r);
     summarise_response(study, &r);
     clock.lap("summaries");
     if (rule.active()) check_deflections(rule, study, &r);

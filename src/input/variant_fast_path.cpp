@@ -1,0 +1,199 @@
+// The study's fast path (variant_fast_path.hpp): which keys set only numbers, by probing them
+// through the general path, and the vehicles of variants built from those keys alone.
+#include "input/variant_fast_path.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+
+#include "input/document_readers.hpp"
+#include "input/key_path.hpp"
+#include "input/study_reader.hpp"
+#include "input/table_reader.hpp"
+#include "input/vehicle_numbers.hpp"
+
+namespace railmodal::input {
+namespace {
+
+// Probes of a key beyond this many (a long grid) are not worth their reads: the key takes the
+// general path.
+constexpr size_t kMaxProbes = 256;
+
+// The value as the reader reads it for a quantity of `kind` (TableReader::quantity, the
+// readers' own conversion and checks); nothing when it refuses it.
+std::optional<double> read_as(const toml::value& value, Quantity kind) {
+  const toml::value table(toml::table{{"v", value}});
+  try {
+    return TableReader(table, "", "").quantity("v", kind);
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+std::vector<double> numbers_of(Vehicle vehicle) {
+  std::vector<double> out;
+  for (double* x : vehicle_numbers(&vehicle)) out.push_back(*x);
+  return out;
+}
+
+// One probe: a value of the key, the vehicle the general path reads with it (none: refused,
+// or of another shape than the base) and the numbers that differ from the base's.
+struct Probe {
+  toml::value value;
+  int written = -1;  // WrittenValue::index, -1 for a sample's probe
+  std::optional<std::vector<double>> numbers;
+  std::vector<size_t> changed;
+};
+
+Probe probe(const StudyFile& file, const std::string& base_shape,
+            const std::vector<double>& base, const std::string& key, const toml::value& value, int written) {
+  Probe p{value, written, std::nullopt, {}};
+  toml::value document = file.vehicle_documents.at(file.plan.vehicle_file);
+  Vehicle vehicle;
+  try {
+    set_at_path(document, key, value);
+    vehicle = read_vehicle(document, file.plan.vehicle_file);
+  } catch (const std::exception&) {
+    return p;  // refused: the general path says why
+  }
+  if (vehicle_shape(vehicle) != base_shape) return p;
+  p.numbers = numbers_of(std::move(vehicle));
+  for (size_t i = 0; i < base.size(); ++i)
+    if (!same_bits((*p.numbers)[i], base[i])) p.changed.push_back(i);
+  return p;
+}
+
+// Whether the probe's vehicle is the base with exactly `numbers` set to the value read as `kind`.
+bool sets_only(const Probe& p, const std::vector<size_t>& numbers, Quantity kind) {
+  if (!p.numbers) return false;
+  const std::optional<double> si = read_as(p.value, kind);
+  if (!si) return false;
+  for (size_t i : p.changed)
+    if (!std::binary_search(numbers.begin(), numbers.end(), i)) return false;
+  for (size_t i : numbers)
+    if (!same_bits((*p.numbers)[i], *si)) return false;
+  return true;
+}
+
+// The key's numbers and the quantity its value is read as, from its probes; nothing when no
+// probe changes a number or no quantity reads the values as the reader did.
+std::optional<FastKey> resolve_key(const std::vector<Probe>& probes) {
+  FastKey key;
+  for (const Probe& p : probes) key.numbers.insert(key.numbers.end(), p.changed.begin(), p.changed.end());
+  std::sort(key.numbers.begin(), key.numbers.end());
+  key.numbers.erase(std::unique(key.numbers.begin(), key.numbers.end()), key.numbers.end());
+  if (key.numbers.empty()) return std::nullopt;
+  for (int q = 0; q <= static_cast<int>(Quantity::frequency); ++q) {
+    const auto kind = static_cast<Quantity>(q);
+    if (std::any_of(probes.begin(), probes.end(), [&](const Probe& p) { return !p.changed.empty() && sets_only(p, key.numbers, kind); })) {
+      key.kind = kind;
+      return key;
+    }
+  }
+  return std::nullopt;
+}
+
+// The values each vehicle key of the study is probed with: every written value (grids and
+// [[variant]] overrides of the base vehicle) and each sample's interval, by its ends and middle.
+struct KeyProbes {
+  std::vector<std::pair<toml::value, int>> written;
+  std::vector<std::array<study::WrittenNumber, 3>> samples;
+};
+
+std::map<std::string, KeyProbes> probe_values(const StudyFile& file) {
+  std::map<std::string, KeyProbes> keys;
+  for (const study::Sweep& sweep : file.plan.sweeps)
+    for (const study::SweepParameter& p : sweep.parameters) {
+      if (p.scene) continue;
+      KeyProbes& k = keys[p.key];
+      if (sweep.samples > 0) {
+        study::WrittenNumber middle = p.from;
+        middle.number = p.from.number + (p.to.number - p.from.number) / 2.0;
+        middle.integer = false;
+        k.samples.push_back({p.from, p.to, middle});
+      } else {
+        for (const study::WrittenValue& v : p.values) k.written.push_back({file.written[v.index], v.index});
+      }
+    }
+  for (const study::VariantSpec& spec : file.plan.variants)
+    if (spec.vehicle_file == file.plan.vehicle_file)
+      for (const study::Assignment& a : spec.assignments)
+        if (!a.scene && a.written >= 0) keys[a.key].written.push_back({file.written[a.written], a.written});
+  return keys;
+}
+
+}  // namespace
+
+std::optional<FastPath> resolve_fast_path(const StudyFile& file) {
+  // No variant on the base vehicle (base = false, every [[variant]] on a file of its own): the
+  // base file is not read at all, as before.
+  if (!file.vehicle_documents.count(file.plan.vehicle_file)) return std::nullopt;
+  FastPath fast;
+  try {
+    fast.base = read_vehicle(file.vehicle_documents.at(file.plan.vehicle_file), file.plan.vehicle_file);
+  } catch (const std::exception&) {
+    return std::nullopt;  // every variant on the base then fails by the general path, saying why
+  }
+  const std::string base_shape = vehicle_shape(fast.base);
+  const std::vector<double> base = numbers_of(fast.base);
+  for (const auto& [key, values] : probe_values(file)) {
+    if (values.written.size() + 3 * values.samples.size() > kMaxProbes) continue;
+    std::vector<Probe> written, drawn;
+    for (const auto& [value, index] : values.written)
+      written.push_back(probe(file, base_shape, base, key, value, index));
+    for (const auto& sample : values.samples)
+      for (const study::WrittenNumber& x : sample) drawn.push_back(probe(file, base_shape, base, key, drawn_value(x), -1));
+    std::vector<Probe> all = written;
+    all.insert(all.end(), drawn.begin(), drawn.end());
+    std::optional<FastKey> k = resolve_key(all);
+    if (!k) continue;
+    for (const Probe& p : written)
+      if (sets_only(p, k->numbers, k->kind)) k->written.insert(p.written);
+    for (size_t s = 0; s < values.samples.size(); ++s) {
+      const bool all_three = std::all_of(drawn.begin() + 3 * s, drawn.begin() + 3 * s + 3,
+                                         [&](const Probe& p) { return sets_only(p, k->numbers, k->kind); });
+      if (!all_three) continue;
+      const double from = *read_as(drawn[3 * s].value, k->kind), to = *read_as(drawn[3 * s + 1].value, k->kind);
+      k->drawn.push_back({std::min(from, to), std::max(from, to)});
+    }
+    if (!k->written.empty() || !k->drawn.empty()) fast.keys[key] = std::move(*k);
+  }
+  // Two keys that set a number in common: which wins depends on the readers' order, so both
+  // take the general path.
+  std::map<size_t, int> setters;
+  for (const auto& [key, k] : fast.keys)
+    for (size_t i : k.numbers) ++setters[i];
+  for (auto it = fast.keys.begin(); it != fast.keys.end();)
+    if (std::any_of(it->second.numbers.begin(), it->second.numbers.end(), [&](size_t i) { return setters[i] > 1; }))
+      it = fast.keys.erase(it);
+    else
+      ++it;
+  return fast;
+}
+
+std::optional<Vehicle> fast_vehicle(const StudyFile& file, const study::VariantSpec& spec,
+                                    const std::vector<const study::Assignment*>& on_vehicle) {
+  if (!file.fast || spec.vehicle_file != file.plan.vehicle_file) return std::nullopt;
+  std::vector<std::pair<const FastKey*, double>> sets;
+  for (const study::Assignment* a : on_vehicle) {
+    const auto found = file.fast->keys.find(a->key);
+    if (found == file.fast->keys.end()) return std::nullopt;
+    const FastKey& key = found->second;
+    if (a->written >= 0 && !key.written.count(a->written)) return std::nullopt;
+    const std::optional<double> si = read_as(assignment_value(file, *a), key.kind);
+    if (!si) return std::nullopt;
+    if (a->written < 0 && std::none_of(key.drawn.begin(), key.drawn.end(),
+                                       [&](const std::pair<double, double>& d) { return d.first <= *si && *si <= d.second; }))
+      return std::nullopt;
+    sets.push_back({&key, *si});
+  }
+  Vehicle vehicle = file.fast->base;
+  const std::vector<double*> numbers = vehicle_numbers(&vehicle);
+  for (const auto& [key, si] : sets)
+    for (size_t i : key->numbers) *numbers[i] = si;
+  return vehicle;
+}
+
+}  // namespace railmodal::input

@@ -1,0 +1,52 @@
+// A study's variants built from the base vehicle read once: a key of the vehicle file that the
+// probes show sets some of the vehicle's numbers to its own value (read as one quantity) and
+// changes nothing else is written straight into a copy of the base vehicle, with no TOML tree
+// copied and no reader run (docs/performance.md, "Studies"). Any other key, value
+// or vehicle file takes the general path (the readers on the overridden TOML), whose errors
+// are the study's errors.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "input/units.hpp"
+#include "railmodal/vehicle.hpp"
+#include "study/study_plan.hpp"
+
+namespace railmodal::input {
+
+struct StudyFile;
+
+/// A key of the base vehicle file that sets numbers of the vehicle to its value and nothing
+/// else, for the values probed.
+struct FastKey {
+  Quantity kind = Quantity::dimensionless;  ///< what the reader reads its value as
+  std::vector<size_t> numbers;              ///< the numbers it sets (vehicle_numbers order)
+  std::set<int> written;                    ///< the written values probed (WrittenValue::index)
+  /// The intervals of samples that draw it, SI, ends and middle probed: a drawn value inside
+  /// reads as its ends do (the readers' checks of one number accept an interval).
+  std::vector<std::pair<double, double>> drawn;
+};
+
+/// The base vehicle read once, and the keys the fast path sets.
+struct FastPath {
+  Vehicle base;
+  std::map<std::string, FastKey> keys;
+};
+
+/// Probes every vehicle key of the study's sweeps and [[variant]] overrides on the base
+/// vehicle: each written value, and each sample's ends and middle, read by the general path
+/// and compared number by number with the base vehicle. Nothing when the base cannot be read
+/// or no variant is on it (check_variants parsed no document for it).
+std::optional<FastPath> resolve_fast_path(const StudyFile& file);
+
+/// The variant's vehicle by the fast path, or nothing when one of its keys or values is not
+/// one the fast path knows (the caller then reads it by the general path).
+std::optional<Vehicle> fast_vehicle(const StudyFile& file, const study::VariantSpec& spec,
+                                    const std::vector<const study::Assignment*>& on_vehicle);
+
+}  // namespace railmodal::input

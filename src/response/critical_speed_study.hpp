@@ -1,0 +1,17 @@
+// The critical-speed study of a system assembled by the caller (a study's variant assembles its
+// vertical system and the lateral stiffness of its metacentric height together).
+#pragma once
+
+#include <functional>
+
+#include "railmodal/critical_speed.hpp"
+
+namespace railmodal::response {
+
+/// study_critical_speeds(scene, vehicle, progress) with the vehicle's system in the scene's
+/// dofs given by `assembled` (called where study_critical_speeds assembles, so that errors
+/// come in the same order); the results are the same bit for bit.
+CriticalSpeedStudy study_critical_speeds_of(const Scene& scene, const std::function<LinearSystem()>& assembled,
+                                            const std::function<void(double)>& progress = {});
+
+}  // namespace railmodal::response
