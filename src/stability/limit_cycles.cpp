@@ -190,12 +190,13 @@ LimitCycleBranch continue_limit_cycles(const LinearSystem& system, const Nonline
   else if (departure <= kNeutral * *b.hopf_speed)
     b.kind = LimitCycleBranchKind::neutral;
   else
-    b.kind = b.points[1].speed < *b.hopf_speed ? LimitCycleBranchKind::subcritical : LimitCycleBranchKind::supercritical;
+    b.kind = b.points[1].speed < *b.hopf_speed ? LimitCycleBranchKind::subcritical
+                                                : LimitCycleBranchKind::supercritical;
   if (b.kind == LimitCycleBranchKind::subcritical && !b.folds.empty()) b.fold = b.folds.front();
   double largest = 0.0;
   for (const LimitCycleBranchPoint& p : b.points) largest = std::max(largest, p.residual);
-  b.summary.checks.push_back(
-      {"largest Newton residual of the branch", largest, options.newton_tolerance, largest <= options.newton_tolerance});
+  b.summary.checks.push_back({"largest Newton residual of the branch", largest, options.newton_tolerance,
+                              largest <= options.newton_tolerance});
   b.summary.checks.push_back({"corrector failures ending the branch (count)",
                               b.end == ContinuationEnd::newton_failed ? 1.0 : 0.0, 0.0,
                               b.end != ContinuationEnd::newton_failed});

@@ -162,7 +162,14 @@ OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hop
   const double imaginary_part = problem.phase.dot(hopf.vector.imag());
   const double theta = std::atan2(real_part, imaginary_part);
   Eigen::VectorXd shape = (hopf.vector * std::complex<double>(std::cos(theta), std::sin(theta))).real();
-  shape /= problem.amplitude.dot(shape);
+  const double watched = problem.amplitude.dot(shape);
+  if (!(std::abs(watched) > 1e-12 * shape.cwiseAbs().maxCoeff())) {
+    // The watched coordinate does not move in the Hopf mode: no amplitude to continue in.
+    branch.end = BranchEnd::newton_failed;
+    branch.failure = "the watched coordinate does not move in the Hopf mode";
+    return branch;
+  }
+  shape /= watched;
   Orbit guess;
   guess.start = s.start_amplitude * shape;
   guess.period = 2.0 * kPi / hopf.frequency;

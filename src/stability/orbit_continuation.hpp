@@ -50,6 +50,7 @@ struct OrbitBranch {
 /// min_step the branch ends with newton_failed (never a point that did not converge). A change of
 /// sign of the parameter's increment is a fold: refined by golden-section search for the extremum of p against
 /// amplitude·x0 with fixed-amplitude solves.
-OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hopf, const ContinuationSettings& settings);
+OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hopf,
+                               const ContinuationSettings& settings);
 
 }  // namespace railmodal::stability

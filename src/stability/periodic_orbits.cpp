@@ -29,9 +29,12 @@ struct Unknowns {
 
 class Shooting {
  public:
-  Shooting(const OrbitProblem& p, const OrbitCondition& c, long* flows) : p_(p), c_(c), flows_(flows) {
+  // `size`: the orbit's amplitude, so that the closure and the phase are measured relative to it
+  // (an absolute tolerance would accept the linear guess of a 0.1 mm orbit as it stands).
+  Shooting(const OrbitProblem& p, const OrbitCondition& c, double size, long* flows) : p_(p), c_(c), flows_(flows) {
     n_ = static_cast<int>(p.scale.size());
-    phase_norm_ = (p.phase.cwiseAbs().transpose().cwiseProduct(p.scale)).sum();
+    phase_norm_ = (p.phase.cwiseAbs().transpose().cwiseProduct(p.scale)).sum() * size;
+    size_ = size;
   }
   int size() const { return n_ + 2; }
   Eigen::VectorXd state(const Unknowns& u) const { return u.xi.cwiseProduct(p_.scale); }
@@ -42,7 +45,7 @@ class Shooting {
     const Eigen::VectorXd x1 = orbit_flow(p_, x0, u.period, u.parameter, peak);
     ++*flows_;
     Eigen::VectorXd r(size());
-    r.head(n_) = (x1 - x0).cwiseQuotient(p_.scale);
+    r.head(n_) = (x1 - x0).cwiseQuotient(p_.scale) / size_;
     r[n_] = p_.phase.dot(x0) / phase_norm_;
     const double value = p_.amplitude.dot(x0);
     if (c_.fixed_amplitude) {
@@ -56,12 +59,11 @@ class Shooting {
 
   Eigen::MatrixXd jacobian(const Unknowns& u, const Eigen::VectorXd& r0) const {
     Eigen::MatrixXd j(size(), size());
-    const double size_of_orbit = std::max(std::abs(p_.amplitude.dot(state(u))), 1e-3 * p_.amplitude_scale);
     for (int k = 0; k < size(); ++k) {
       Unknowns v = u;
       double h;
       if (k < n_) {
-        h = kDifferenceStep * size_of_orbit;
+        h = kDifferenceStep * size_;
         v.xi[k] += h;
       } else if (k == n_) {
         h = kDifferenceStep * u.period;
@@ -82,14 +84,15 @@ class Shooting {
   const OrbitCondition& c_;
   long* flows_;
   double phase_norm_ = 1.0;
+  double size_ = 1.0;
 };
 
 bool finite(const Eigen::VectorXd& v) { return v.allFinite(); }
 
 // The multipliers of the scaled monodromy S⁻¹MS (similar to M: the same eigenvalues); the trivial
 // one of an autonomous orbit, nearest 1, is set aside for the stability.
-void floquet(const Eigen::MatrixXd& jacobian, int n, Orbit* orbit) {
-  const Eigen::MatrixXd monodromy = jacobian.topLeftCorner(n, n) + Eigen::MatrixXd::Identity(n, n);
+void floquet(const Eigen::MatrixXd& jacobian, int n, double size, Orbit* orbit) {
+  const Eigen::MatrixXd monodromy = size * jacobian.topLeftCorner(n, n) + Eigen::MatrixXd::Identity(n, n);
   Eigen::EigenSolver<Eigen::MatrixXd> eigen(monodromy, false);
   orbit->multipliers = eigen.eigenvalues();
   Eigen::Index trivial = 0;
@@ -121,7 +124,8 @@ Eigen::VectorXd orbit_flow(const OrbitProblem& problem, const Eigen::VectorXd& x
 }
 
 Orbit solve_orbit(const OrbitProblem& problem, const Orbit& guess, const OrbitCondition& condition, long* flows) {
-  Shooting shooting(problem, condition, flows);
+  const double size = std::max(std::abs(problem.amplitude.dot(guess.start)), 1e-3 * problem.amplitude_scale);
+  Shooting shooting(problem, condition, size, flows);
   Unknowns u{guess.start.cwiseQuotient(problem.scale), guess.period, guess.parameter};
   Orbit orbit = guess;
   orbit.converged = false;
@@ -160,7 +164,7 @@ Orbit solve_orbit(const OrbitProblem& problem, const Orbit& guess, const OrbitCo
   orbit.residual = norm;
   orbit.iterations = iteration;
   orbit.converged = std::isfinite(norm) && norm <= problem.newton_tolerance;
-  if (orbit.converged) floquet(shooting.jacobian(u, r), shooting.n_, &orbit);
+  if (orbit.converged) floquet(shooting.jacobian(u, r), shooting.n_, size, &orbit);
   return orbit;
 }
 

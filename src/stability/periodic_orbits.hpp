@@ -32,7 +32,10 @@ struct OrbitProblem {
   /// T and p wherever f is smooth (an adaptive step would make it jump), so its finite
   /// differences are derivatives.
   int steps_per_period = 1000;
-  double newton_tolerance = 1e-9;  ///< ‖residual‖∞ in scaled units that counts as converged
+  /// ‖residual‖∞ that counts as converged: the closure φ − x0 of each state over its scale and
+  /// over the orbit's amplitude (the guess's |amplitude·x0|, at least a thousandth of
+  /// amplitude_scale), the phase alike, the condition in units of amplitude_scale.
+  double newton_tolerance = 1e-9;
   int newton_iterations = 10;      ///< at most this many corrections
 };
 
