@@ -73,7 +73,9 @@ TEST(LimitCycleContinuation, SubcriticalNormalFormBranchAndFold) {
     const double multiplier = std::exp(period * (2.0 * rho - 4.0 * rho * rho));
     // Forward differences of step 1e-7 relative: the multiplier to ~1e-6.
     EXPECT_NEAR(o.largest_multiplier, multiplier, 1e-5) << "r = " << r;
-    if (std::abs(rho - 0.5) > 0.02) EXPECT_EQ(o.stable, rho > 0.5) << "r = " << r;
+    if (std::abs(rho - 0.5) > 0.02) {
+      EXPECT_EQ(o.stable, rho > 0.5) << "r = " << r;
+    }
   }
   // The branch leaves the Hopf point towards lower μ (subcritical), turns once, and ends stable.
   EXPECT_LT(b.orbits[1].parameter, 0.0);
@@ -169,8 +171,12 @@ TEST(LimitCycleContinuation, HuntingFoldIsTheHeldCriticalSpeed) {
   EXPECT_LT(b.fold->speed, *b.hopf_speed);
   // Unstable below the fold's amplitude, stable above it.
   for (const LimitCycleBranchPoint& p : b.points) {
-    if (p.amplitude < 0.8 * b.fold->amplitude) EXPECT_FALSE(p.stable) << p.speed;
-    if (p.amplitude > 1.2 * b.fold->amplitude) EXPECT_TRUE(p.stable) << p.speed;
+    if (p.amplitude < 0.8 * b.fold->amplitude) {
+      EXPECT_FALSE(p.stable) << p.speed;
+    }
+    if (p.amplitude > 1.2 * b.fold->amplitude) {
+      EXPECT_TRUE(p.stable) << p.speed;
+    }
   }
 }
 
