@@ -26,15 +26,22 @@
 
 namespace railmodal {
 
+struct LimitCycleBranch;  // railmodal/limit_cycles.hpp
+
 /// Writes `result` of solve_nonlinear_hunting run with `options` as a table (text), CSV (one row
 /// per half cycle of each ramp: the bifurcation data), JSON (SI, km/h beside; a quantity the
 /// result does not have is null), Markdown or HTML (with the bifurcation plot). `vehicle` names
 /// the vehicle ("" writes "vehicle"); `provenance` lists the input files for the footer of the
 /// Markdown and HTML pages; `linear_critical_speed` (m/s, from solve_hunting_stability), when
 /// given, is printed beside the nonlinear one and marked on the plot at zero amplitude (the Hopf
-/// point). Throws std::invalid_argument for a format it does not write.
+/// point). `continuation`, when given (continue_limit_cycles, `railmodal hunting --continuation`),
+/// adds the branch of limit cycles: a section with its points and fold in the formats for people,
+/// the branch on the bifurcation plot (stable solid, unstable dashed), its points as rows of the
+/// CSV (ramp "continuation", with four more columns) and a "continuation" object in the JSON;
+/// without it the output is what it was. Throws std::invalid_argument for a format it does not write.
 void write_nonlinear_hunting(std::ostream& out, const NonlinearHuntingResult& result,
                              const NonlinearHuntingOptions& options, OutputFormat format, const std::string& vehicle,
-                             const Provenance& provenance, std::optional<double> linear_critical_speed = std::nullopt);
+                             const Provenance& provenance, std::optional<double> linear_critical_speed = std::nullopt,
+                             const LimitCycleBranch* continuation = nullptr);
 
 }  // namespace railmodal

@@ -26,6 +26,7 @@
 #include "railmodal/hunting.hpp"
 #include "railmodal/hunting_report.hpp"
 #include "railmodal/input.hpp"
+#include "railmodal/limit_cycles.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/matrix_market.hpp"
 #include "railmodal/modal.hpp"

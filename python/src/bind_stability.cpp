@@ -10,6 +10,7 @@
 #include "analysis_values.hpp"
 #include "bindings.hpp"
 #include "railmodal/hunting.hpp"
+#include "railmodal/limit_cycles.hpp"
 #include "railmodal/nonlinear_hunting.hpp"
 #include "railmodal/nonlinear_hunting_report.hpp"
 #include "railmodal/output_format.hpp"
@@ -353,6 +354,65 @@ void bind_scene_hunting(py::module_& m) {
       "The report 'railmodal hunting SCENE --format FORMAT' writes (write_nonlinear_hunting), as a string.");
 }
 
+py::dict branch_point_dict(const LimitCycleBranchPoint& q) {
+  return py::dict(py::arg("speed_m_s") = q.speed, py::arg("amplitude_m") = q.amplitude, py::arg("period_s") = q.period,
+                  py::arg("stable") = q.stable, py::arg("largest_multiplier") = q.largest_multiplier,
+                  py::arg("newton_residual") = q.residual);
+}
+
+// The branch as a dict: its points as columns (lists), the fold a dict or None.
+py::dict branch_dict(const LimitCycleBranch& b) {
+  const auto& p = b.points;
+  py::dict points(py::arg("speed_m_s") = column(p.size(), [&](size_t i) { return p[i].speed; }),
+                  py::arg("amplitude_m") = column(p.size(), [&](size_t i) { return p[i].amplitude; }),
+                  py::arg("period_s") = column(p.size(), [&](size_t i) { return p[i].period; }),
+                  py::arg("largest_multiplier") = column(p.size(), [&](size_t i) { return p[i].largest_multiplier; }),
+                  py::arg("newton_residual") = column(p.size(), [&](size_t i) { return p[i].residual; }));
+  py::list stable;
+  for (const LimitCycleBranchPoint& q : p) stable.append(q.stable);
+  points["stable"] = stable;
+  py::list folds;
+  for (const LimitCycleBranchPoint& q : b.folds) folds.append(branch_point_dict(q));
+  return py::dict(py::arg("kind") = std::string(to_string(b.kind)),
+                  py::arg("hopf_speed_m_s") = optional_value(b.hopf_speed),
+                  py::arg("hopf_frequency_hz") = b.hopf_frequency, py::arg("watched_wheelset") = b.watched_wheelset,
+                  py::arg("points") = points, py::arg("folds") = folds,
+                  py::arg("fold") = b.fold ? py::object(branch_point_dict(*b.fold)) : py::object(py::none()),
+                  py::arg("end") = std::string(to_string(b.end)), py::arg("failure") = b.failure,
+                  py::arg("one_period_integrations") = b.flows);
+}
+
+void bind_limit_cycles(py::module_& m) {
+  m.def(
+      "limit_cycles_scene",
+      [](const Scene& scene, const py::object& vehicle, double start_amplitude, double max_amplitude,
+         int steps_per_period, double newton_tolerance) {
+        if (!scene.nonlinear_hunting)
+          throw InputError(scene.source, 0, 0, "the scene has no [nonlinear_hunting] table (docs/stability.md)");
+        const Vehicle v = vehicle.is_none() ? vehicle_argument(py::str(scene.vehicle_file)) : vehicle_argument(vehicle);
+        LimitCycleOptions o;
+        o.start_amplitude = start_amplitude;
+        o.max_amplitude = max_amplitude;
+        o.steps_per_period = steps_per_period;
+        o.newton_tolerance = newton_tolerance;
+        LimitCycleBranch b;
+        {
+          py::gil_scoped_release release;
+          b = continue_limit_cycles(assemble(v, DofSet::lateral), *scene.nonlinear_hunting, o);
+        }
+        return branch_dict(b);
+      },
+      py::arg("scene"), py::arg("vehicle") = py::none(), py::kw_only(),
+      py::arg("start_amplitude_m") = LimitCycleOptions{}.start_amplitude,
+      py::arg("max_amplitude_m") = LimitCycleOptions{}.max_amplitude,
+      py::arg("steps_per_period") = LimitCycleOptions{}.steps_per_period,
+      py::arg("newton_tolerance") = LimitCycleOptions{}.newton_tolerance,
+      "The branch of hunting limit cycles of the scene's [nonlinear_hunting] model by continuation from the Hopf "
+      "point (continue_limit_cycles; 'railmodal hunting --continuation'), as a dict: kind, hopf_speed_m_s, "
+      "hopf_frequency_hz, points (columns), fold (the nonlinear critical speed of a subcritical branch), folds, end, "
+      "failure. ValueError for bad options or a vehicle without wheelsets.");
+}
+
 void bind_lateral_stability(py::module_& m) {
   py::class_<LateralStability>(m, "LateralStability", "Static lateral stability of a body on its springs (eq. (235b))")
       .def_readonly("body", &LateralStability::body)
@@ -380,6 +440,7 @@ void bind_stability(py::module_& m) {
   bind_hunting(m);
   bind_nonlinear_hunting(m);
   bind_scene_hunting(m);
+  bind_limit_cycles(m);
   bind_lateral_stability(m);
 }
 

@@ -5,6 +5,8 @@
 // bifurcation plot. Quantities the result does not have are words or null, never inf or NaN.
 #include "railmodal/nonlinear_hunting_report.hpp"
 
+#include "railmodal/limit_cycles.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -38,6 +40,7 @@ struct Page {
   std::string vehicle;
   const Provenance& provenance;
   std::optional<double> linear;  // m/s
+  const LimitCycleBranch* branch;  // the continuation, when asked for
 };
 
 bool has_effect(const NonlinearHuntingOptions& o, NonlinearEffect e) {
@@ -118,6 +121,16 @@ const char* const kCannotShow =
     "centre and hunting), which no simulation converges onto and which needs numerical continuation of periodic "
     "orbits; it is not offered. The answer depends on the disturbance, and the watched wheelset is the one that "
     "moves most (docs/stability.md, \"What the ramp-down can and cannot show\").";
+// The same, when the continuation was asked for and follows below.
+const char* const kCannotShowButContinued =
+    "What the ramp-down shows: the stable hunting limit cycle the disturbance falls onto, followed down in speed to "
+    "where it stops existing (a fold of the branch, or the Hopf point when the branch is supercritical). What it "
+    "cannot show: the unstable limit cycle of a subcritical branch (the threshold amplitude between decay to the "
+    "centre and hunting), which no simulation converges onto: the continuation below follows it. The answer depends "
+    "on the disturbance, and the watched wheelset is the one that moves most (docs/stability.md, \"What the "
+    "ramp-down can and cannot show\").";
+
+const char* cannot_show(const Page& p) { return p.branch ? kCannotShowButContinued : kCannotShow; }
 
 // ---- tables shared by the formats for people ----
 
@@ -200,6 +213,57 @@ Table curve_table(const NonlinearHuntingResult& r) {
   return t;
 }
 
+// ---- the continuation (only with --continuation) ----
+
+std::string branch_text(const LimitCycleBranch& b) {
+  switch (b.kind) {
+    case LimitCycleBranchKind::subcritical:
+      return std::string("subcritical: the branch leaves the Hopf point towards lower speeds with unstable limit "
+                         "cycles (the threshold between decay and hunting)") +
+             (b.fold ? "; it turns at the fold, " + speed_text(b.fold->speed) + " at " + mm(b.fold->amplitude) +
+                           ", into the stable hunting cycle: below the fold no limit cycle exists (the nonlinear "
+                           "critical speed)."
+                     : "; it ended before turning: no fold found.");
+    case LimitCycleBranchKind::supercritical:
+      return "supercritical: the branch leaves the Hopf point towards higher speeds with stable limit cycles; no "
+             "fold below it: the nonlinear critical speed is the linear one.";
+    case LimitCycleBranchKind::no_hopf_point:
+      return "no Hopf point: the centred running does not lose stability between the end and the start speed; no "
+             "branch to continue.";
+    case LimitCycleBranchKind::undetermined:
+      return "undetermined: the corrector failed before the branch's direction was seen (" + b.failure + ").";
+    case LimitCycleBranchKind::neutral:
+      return "neutral: orbits of every amplitude sit at the Hopf speed (a linear law): no limit cycle bounds the "
+             "hunting above it, none exists below it.";
+  }
+  return "";
+}
+
+Table branch_summary_table(const LimitCycleBranch& b) {
+  Table t{{"quantity", "value"}, {false, false}, {}};
+  t.rows.push_back({"branch", to_string(b.kind)});
+  t.rows.push_back({"Hopf point", b.hopf_speed ? speed_text(*b.hopf_speed) + ", " + fixed(b.hopf_frequency, 3) + " Hz"
+                                               : std::string("none")});
+  t.rows.push_back({"fold (nonlinear critical speed)",
+                    b.fold ? speed_text(b.fold->speed) + ", " + mm(b.fold->amplitude) : std::string("none")});
+  t.rows.push_back({"watched wheelset", "wheelset " + std::to_string(b.watched_wheelset + 1)});
+  t.rows.push_back({"continuation ended", std::string(to_string(b.end)) + (b.failure.empty() ? "" : ": " + b.failure)});
+  t.rows.push_back(
+      {"orbits, one-period integrations", std::to_string(b.points.size()) + ", " + std::to_string(b.flows)});
+  return t;
+}
+
+Table branch_table(const LimitCycleBranch& b) {
+  Table t{{"speed (km/h)", "amplitude (mm)", "period (s)", "stability", "largest |multiplier|", "residual"},
+          {true, true, true, false, true, true},
+          {}};
+  for (const LimitCycleBranchPoint& q : b.points)
+    t.rows.push_back({fixed(q.speed * kKmh, 3), fixed(q.amplitude * kMm, 3), fixed(q.period, 4),
+                      q.stable ? "stable" : "unstable", significant(q.largest_multiplier, 6),
+                      significant(q.residual, 2)});
+  return t;
+}
+
 // ---- table (text) ----
 
 void write_text_table(std::ostream& out, const Table& t) {
@@ -236,7 +300,15 @@ void write_table(std::ostream& out, const Page& p) {
   }
   out << "\nlimit cycle on the way down (stated rate; every half cycle in csv and json):\n";
   write_text_table(out, curve_table(r));
-  out << "\n" << wrapped(kCannotShow) << "\n";
+  out << "\n" << wrapped(cannot_show(p)) << "\n";
+  if (p.branch) {
+    out << "\ncontinuation of the limit cycles (shooting, pseudo-arclength in speed from the Hopf point):\n";
+    out << wrapped(branch_text(*p.branch)) << "\n\n";
+    write_text_table(out, branch_summary_table(*p.branch));
+    out << "\n";
+    write_text_table(out, branch_table(*p.branch));
+    out << wrapped("continuation checks: " + report::checks_text(p.branch->summary)) << "\n";
+  }
   out << "\n" << wrapped("checks: " + report::checks_text(r.summary)) << "\n" << wrapped("method: " + r.summary.method)
       << "\n";
 }
@@ -261,12 +333,50 @@ void write_markdown(std::ostream& out, const Page& p) {
   }
   out << "## Limit cycle on the way down\n\n";
   report::write_markdown_table(out, curve_table(r));
-  out << "\n" << kCannotShow << "\n\n## Checks\n\n" << report::checks_text(r.summary)
+  out << "\n" << cannot_show(p) << "\n\n";
+  if (p.branch) {
+    out << "## Continuation of the limit cycles\n\n" << branch_text(*p.branch) << "\n\n";
+    report::write_markdown_table(out, branch_summary_table(*p.branch));
+    out << "\n";
+    report::write_markdown_table(out, branch_table(*p.branch));
+    out << "\nContinuation checks: " << report::checks_text(p.branch->summary) << ".\n\n";
+  }
+  out << "## Checks\n\n" << report::checks_text(r.summary)
       << ".\n\nMethod: " << r.summary.method << ".\n\n";
   out << report::provenance_line("hunting", p.provenance) << "\n";
 }
 
 // ---- HTML ----
+
+// The branch as two series, stable solid and unstable dashed, broken by NaN where the other
+// holds; where the stability changes both pass through the fold between (or, without one, the
+// later point), so the curve is unbroken.
+void add_branch(report::Chart& chart, const LimitCycleBranch& b) {
+  report::ChartSeries stable, unstable;
+  stable.label = "continuation: stable limit cycles";
+  unstable.label = "continuation: unstable limit cycles";
+  unstable.dashed = true;
+  const auto add = [&](const LimitCycleBranchPoint& q, bool in_stable, bool in_unstable) {
+    const double nan = std::nan("");
+    stable.x.push_back(q.speed * kKmh);
+    stable.y.push_back(in_stable ? q.amplitude * kMm : nan);
+    unstable.x.push_back(q.speed * kKmh);
+    unstable.y.push_back(in_unstable ? q.amplitude * kMm : nan);
+  };
+  for (std::size_t i = 0; i < b.points.size(); ++i) {
+    const LimitCycleBranchPoint& q = b.points[i];
+    if (i > 0 && b.points[i - 1].stable != q.stable) {
+      const LimitCycleBranchPoint* junction = &q;
+      for (const LimitCycleBranchPoint& f : b.folds)
+        if ((f.amplitude - b.points[i - 1].amplitude) * (f.amplitude - q.amplitude) <= 0.0) junction = &f;
+      add(*junction, true, true);
+      if (junction == &q) continue;
+    }
+    add(q, q.stable, !q.stable);
+  }
+  chart.series.push_back(std::move(stable));
+  chart.series.push_back(std::move(unstable));
+}
 
 report::Chart bifurcation_chart(const Page& p) {
   const NonlinearHuntingResult& r = p.r;
@@ -285,6 +395,7 @@ report::Chart bifurcation_chart(const Page& p) {
     }
     chart.series.push_back(std::move(s));
   }
+  if (p.branch) add_branch(chart, *p.branch);
   if (r.critical_speed)
     chart.lines.push_back({"nonlinear", *r.critical_speed * kKmh, true, "critical speed (held)"});
   if (p.linear) chart.lines.push_back({"linear", *p.linear * kKmh, true, "critical speed (Hopf point)"});
@@ -320,7 +431,13 @@ void write_html(std::ostream& out, const Page& p) {
     out << "<h2>Holds of the speed</h2>\n";
     report::write_html_table(out, holds_table(r));
   }
-  out << "<p class=note>" << html_escape(kCannotShow) << "</p>\n";
+  out << "<p class=note>" << html_escape(cannot_show(p)) << "</p>\n";
+  if (p.branch) {
+    out << "<h2>Continuation of the limit cycles</h2>\n<p>" << html_escape(branch_text(*p.branch)) << "</p>\n";
+    report::write_html_table(out, branch_summary_table(*p.branch));
+    report::write_html_table(out, branch_table(*p.branch));
+    out << "<p class=note>Continuation checks: " << html_escape(report::checks_text(p.branch->summary)) << ".</p>\n";
+  }
   out << "<h2>Checks</h2>\n<p>" << html_escape(report::checks_text(r.summary)) << ".</p>\n<p class=note>Method: "
       << html_escape(r.summary.method) << ".</p>\n";
   report::write_html_footer(out, "hunting", p.provenance);
@@ -329,15 +446,29 @@ void write_html(std::ostream& out, const Page& p) {
 // ---- CSV and JSON ----
 
 // The bifurcation data: every half cycle of both ramps.
-void write_csv(std::ostream& out, const NonlinearHuntingResult& r) {
+// With the continuation, its orbits follow as rows of ramp "continuation" (no rate; half_cycle
+// is the orbit's number along the branch) with four more columns, empty for the ramps' rows.
+void write_csv(std::ostream& out, const NonlinearHuntingResult& r, const LimitCycleBranch* branch) {
   using report::csv_heading;
   report::CsvWriter csv(out);
   csv.field("ramp").field(csv_heading("ramp_rate", "m/s^2")).field("half_cycle").field(csv_heading("speed", "km/h"));
-  csv.field(csv_heading("amplitude", "mm")).end_row();
+  csv.field(csv_heading("amplitude", "mm"));
+  if (branch)
+    csv.field("stable").field(csv_heading("period", "s")).field("largest_multiplier").field("newton_residual");
+  csv.end_row();
   for (const RampDown* d : {&r.stated_rate, &r.halved_rate})
-    for (size_t i = 0; i < d->curve.size(); ++i)
+    for (size_t i = 0; i < d->curve.size(); ++i) {
       csv.field(d == &r.stated_rate ? "stated" : "halved").field(d->ramp_rate).field(i + 1)
-          .field(d->curve[i].speed * kKmh).field(d->curve[i].amplitude * kMm).end_row();
+          .field(d->curve[i].speed * kKmh).field(d->curve[i].amplitude * kMm);
+      if (branch) csv.field("").field("").field("").field("");
+      csv.end_row();
+    }
+  if (!branch) return;
+  for (size_t i = 0; i < branch->points.size(); ++i) {
+    const LimitCycleBranchPoint& q = branch->points[i];
+    csv.field("continuation").field("").field(i + 1).field(q.speed * kKmh).field(q.amplitude * kMm).field(q.stable)
+        .field(q.period).field(q.largest_multiplier).field(q.residual).end_row();
+  }
 }
 
 // Every object's members in the alphabetical order nlohmann::json's std::map gave them (the file
@@ -379,10 +510,35 @@ void write_options(JsonWriter& j, const NonlinearHuntingOptions& o) {
   j.end_object();
 }
 
+void write_branch_point(JsonWriter& j, const LimitCycleBranchPoint& q) {
+  j.begin_object().member("amplitude_m", q.amplitude).member("largest_multiplier", q.largest_multiplier);
+  j.member("newton_residual", q.residual).member("period_s", q.period).member("speed_kmh", q.speed * kKmh);
+  j.member("speed_m_s", q.speed).member("stable", q.stable).end_object();
+}
+
+void write_branch(JsonWriter& j, const LimitCycleBranch& b) {
+  j.begin_object().member("end", to_string(b.end)).member("failure", b.failure).key("fold");
+  if (b.fold)
+    write_branch_point(j, *b.fold);
+  else
+    j.value(nullptr);
+  j.key("folds").begin_array();
+  for (const LimitCycleBranchPoint& q : b.folds) write_branch_point(j, q);
+  j.end_array().member("hopf_frequency_hz", if_found(b.hopf_speed, b.hopf_frequency));
+  j.member("hopf_speed_kmh", kmh(b.hopf_speed)).member("hopf_speed_m_s", b.hopf_speed);
+  j.member("kind", to_string(b.kind)).member("one_period_integrations", b.flows).key("points").begin_array();
+  for (const LimitCycleBranchPoint& q : b.points) write_branch_point(j, q);
+  j.end_array().member("watched_wheelset", b.watched_wheelset).end_object();
+}
+
 void write_json(std::ostream& out, const Page& p) {
   const NonlinearHuntingResult& r = p.r;
   JsonWriter j(out);
   j.begin_object().member("amplitude_m", if_found(r.critical_speed, r.amplitude)).member("analysis", "nonlinear");
+  if (p.branch) {
+    j.key("continuation");
+    write_branch(j, *p.branch);
+  }
   j.member("converged", r.converged).member("convergence", to_string(r.convergence));
   j.member("convergence_difference_m_s", r.convergence_difference);
   j.member("critical_speed_kmh", kmh(r.critical_speed)).member("critical_speed_m_s", r.critical_speed);
@@ -412,11 +568,12 @@ void write_json(std::ostream& out, const Page& p) {
 
 void write_nonlinear_hunting(std::ostream& out, const NonlinearHuntingResult& result,
                              const NonlinearHuntingOptions& options, OutputFormat format, const std::string& vehicle,
-                             const Provenance& provenance, std::optional<double> linear_critical_speed) {
+                             const Provenance& provenance, std::optional<double> linear_critical_speed,
+                             const LimitCycleBranch* continuation) {
   const Page page{result, options, vehicle.empty() ? std::string("vehicle") : vehicle, provenance,
-                  linear_critical_speed};
+                  linear_critical_speed, continuation};
   report::write_in_format(
-      format, "write_nonlinear_hunting", [&] { write_table(out, page); }, [&] { write_csv(out, result); },
+      format, "write_nonlinear_hunting", [&] { write_table(out, page); }, [&] { write_csv(out, result, continuation); },
       [&] { write_json(out, page); }, [&] { write_markdown(out, page); }, [&] { write_html(out, page); });
 }
 

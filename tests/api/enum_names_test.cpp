@@ -112,5 +112,18 @@ TEST(EnumNames, DeflectionRuleService) {
   expect_round_trip({Service::passenger, Service::freight}, deflection_service_from_string);
 }
 
+TEST(EnumNames, LimitCycleBranchKind) {
+  expect_round_trip({LimitCycleBranchKind::subcritical, LimitCycleBranchKind::supercritical,
+                     LimitCycleBranchKind::no_hopf_point, LimitCycleBranchKind::undetermined,
+                     LimitCycleBranchKind::neutral},
+                    limit_cycle_branch_kind_from_string);
+}
+
+TEST(EnumNames, ContinuationEnd) {
+  expect_round_trip({ContinuationEnd::amplitude_reached, ContinuationEnd::speed_range_left,
+                     ContinuationEnd::point_limit, ContinuationEnd::newton_failed, ContinuationEnd::no_hopf_point},
+                    continuation_end_from_string);
+}
+
 }  // namespace
 }  // namespace railmodal

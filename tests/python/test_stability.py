@@ -154,3 +154,21 @@ def test_a_scenes_nonlinear_hunting_equals_the_command_line():
         railmodal.hunting_scene(railmodal.load_scene(data("scenes", "resort_car_10m_rails.toml")))
     with pytest.raises(ValueError, match="format is 'pdf'"):
         railmodal.hunting_report(scene, format="pdf")
+
+
+def test_limit_cycles_scene_is_the_commands_continuation():
+    # limit_cycles_scene runs continue_limit_cycles on the scene's model, as
+    # 'railmodal hunting --continuation' does: the same branch, to the last digit the JSON keeps.
+    scene_file = data("scenes", "wheelset_on_springs_nonlinear_hunting.toml")
+    branch = railmodal.limit_cycles_scene(railmodal.load_scene(scene_file))
+    expected = cli_json("hunting", scene_file, "--continuation")["continuation"]
+    assert branch["kind"] == expected["kind"] == "subcritical"
+    assert branch["fold"]["speed_m_s"] == expected["fold"]["speed_m_s"]
+    assert branch["hopf_speed_m_s"] == expected["hopf_speed_m_s"]
+    assert list(branch["points"]["amplitude_m"]) == [p["amplitude_m"] for p in expected["points"]]
+    assert branch["points"]["stable"] == [p["stable"] for p in expected["points"]]
+    # The fold lies below the Hopf point (subcritical); unstable orbits come first.
+    assert branch["fold"]["speed_m_s"] < branch["hopf_speed_m_s"]
+    assert not branch["points"]["stable"][0]
+    with pytest.raises(ValueError, match="newton_tolerance"):
+        railmodal.limit_cycles_scene(railmodal.load_scene(scene_file), newton_tolerance=0.0)

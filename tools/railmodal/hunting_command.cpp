@@ -1,4 +1,4 @@
-// railmodal hunting SCENE [--vehicle VEHICLE] [--format table|csv|json|markdown|html] [-o OUT]
+// railmodal hunting SCENE [--vehicle VEHICLE] [--continuation] [--format table|csv|json|markdown|html] [-o OUT]
 //
 // The nonlinear critical speed of a scene's vehicle (its [nonlinear_hunting] table): a command of
 // its own, not a mode of `stability`, because every other command takes one kind of file and
@@ -20,6 +20,7 @@ struct HuntingCommandOptions {
   std::string vehicle;  // "": the scene's
   std::string format;   // "": from the output file's extension, else table
   std::string output = "-";
+  bool continuation = false;  // also the branch of limit cycles by continuation from the Hopf point
 };
 
 // The linear critical speed over the ramp's speeds, for the plot's Hopf point: none when the
@@ -65,19 +66,24 @@ int run(const HuntingCommandOptions& o) {
     const NonlinearHuntingOptions& options = *scene.nonlinear_hunting;
     NonlinearHuntingResult result;
     std::optional<double> linear;
+    std::optional<LimitCycleBranch> branch;
     try {
       // The lateral motions, as `stability` assembles them.
       const LinearSystem system = assemble(vehicle, DofSet::lateral);
       linear = linear_critical_speed(system, options);
       result = solve_nonlinear_hunting(system, options);
+      if (o.continuation) branch = continue_limit_cycles(system, options);
     } catch (const std::invalid_argument& e) {
       // The scene's options were checked by its reader; what is left is a wheelset or contact
       // value of the vehicle file the contact model cannot take (it names the wheelset).
       throw InputError(scene.vehicle_file, 0, 0, e.what());
     }
     write_nonlinear_hunting(out, result, options, format, vehicle.name, provenance_of({o.scene, scene.vehicle_file}),
-                            linear);
+                            linear, branch ? &*branch : nullptr);
     files.commit();
+    if (branch && branch->end == ContinuationEnd::newton_failed)
+      std::cerr << o.scene << ": warning: the continuation of the limit cycles stopped where its corrector failed: "
+                << branch->failure << "\n";
     if (result.convergence == NonlinearConvergence::not_converged)
       std::cerr << o.scene << ": warning: the nonlinear critical speed is not converged (see the report's "
                 << "convergence section)\n";
@@ -105,6 +111,10 @@ std::function<int()> add_hunting_command(CLI::App& app) {
                   "data/scenes/wheelset_on_springs_nonlinear_hunting.toml")
       ->required();
   cmd->add_option("--vehicle", options->vehicle, "Vehicle file (TOML) with [wheelset] data, in place of the scene's");
+  cmd->add_flag("--continuation", options->continuation,
+                "Also follow the branch of limit cycles from the Hopf point by shooting and pseudo-arclength "
+                "continuation in speed: the unstable cycles of a subcritical branch and its fold (docs/stability.md, "
+                "\"Continuation of the limit cycles\")");
   cmd->add_option("--format", options->format,
                   "Output format: table, csv (every half cycle of both ramps: the bifurcation data), json, markdown, "
                   "html (with the bifurcation plot); default: from the -o file's extension (.html, .csv, .json, "

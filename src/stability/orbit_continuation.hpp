@@ -1,0 +1,56 @@
+// The branch of periodic orbits born at a Hopf point of the equilibrium x = 0, followed by
+// pseudo-arclength continuation in the parameter, its folds located and refined
+// (docs/stability.md, "Continuation of the limit cycles"). Generic: any OrbitProblem.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "stability/periodic_orbits.hpp"
+
+namespace railmodal::stability {
+
+struct HopfPoint {
+  double parameter = 0.0;
+  double frequency = 0.0;  ///< ω, rad/s: the imaginary part of the crossing eigenvalue
+  Eigen::VectorXcd vector;  ///< its eigenvector
+};
+
+/// The first parameter in [low, high], scanning upward on `scan_points` points and bisecting to
+/// 1e-12 relative, where the rightmost eigenvalue of the Jacobian of `field` at x = 0 (central
+/// differences, step 1e-10 in every state) crosses into the right half-plane with a nonzero
+/// imaginary part. None when it does not cross there.
+std::optional<HopfPoint> find_hopf(const VectorField& field, int states, double low, double high,
+                                   int scan_points = 60);
+
+struct ContinuationSettings {
+  double start_amplitude = 1e-4;  ///< amplitude·x0 of the first orbit (the second has twice it)
+  double max_amplitude = 0.02;    ///< stop once amplitude·x0 passes this
+  double parameter_low = 0.0, parameter_high = 0.0;  ///< stop once the parameter leaves this range
+  int max_points = 200;
+  /// Pseudo-arclength steps, in the norm of (amplitude/amplitude_scale, parameter/parameter_scale).
+  double initial_step = 0.1, min_step = 1e-4, max_step = 1.0;
+};
+
+enum class BranchEnd { amplitude_reached, parameter_range_left, point_limit, newton_failed };
+
+struct OrbitBranch {
+  std::vector<Orbit> orbits;  ///< in the order continued, from the Hopf point
+  std::vector<Orbit> folds;   ///< refined turning points of the parameter, in branch order
+  BranchEnd end = BranchEnd::point_limit;
+  std::string failure;  ///< with newton_failed: where and how far it got
+  long flows = 0;       ///< one-period integrations spent
+};
+
+/// From the Hopf point: the orbit x0 = Re(v·e^{iθ}) at amplitude·x0 = start_amplitude (θ from the
+/// phase condition), period 2π/ω, then at twice it (both natural-parameter solves in the
+/// amplitude), then pseudo-arclength along the secant. A step whose Newton fails is halved; below
+/// min_step the branch ends with newton_failed (never a point that did not converge). A change of
+/// sign of the parameter's increment is a fold: refined by golden-section search for the extremum of p against
+/// amplitude·x0 with fixed-amplitude solves.
+OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hopf,
+                               const ContinuationSettings& settings);
+
+}  // namespace railmodal::stability

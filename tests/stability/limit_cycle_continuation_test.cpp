@@ -1,0 +1,253 @@
+// Continuation of periodic orbits: the generic shooting and pseudo-arclength engine on Hopf
+// normal forms whose branches are known in closed form, and the hunting limit cycles of the
+// bundled nonlinear scene against the linear critical speed (the Hopf point), the ramp-down's held
+// critical speed (the fold) and long simulations at fixed speed (the stable branch)
+// (docs/stability.md, "Continuation of the limit cycles").
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "railmodal/railmodal.hpp"
+#include "stability/lateral_equations.hpp"
+#include "stability/orbit_continuation.hpp"
+#include "stability/ramp_down.hpp"
+
+namespace railmodal {
+namespace {
+
+constexpr double kTwoPi = 6.28318530717958647692;
+
+// The Hopf normal form in Cartesian coordinates, ṙ = r·g(μ, r²), θ̇ = ω: ẋ = g·x − ω·y,
+// ẏ = ω·x + g·y. Its periodic orbits are the circles r with g(μ, r²) = 0, period 2π/ω; the
+// nontrivial Floquet multiplier is exp(T·r·∂g/∂r) (the radial equation linearised on the circle).
+stability::OrbitProblem normal_form(double omega, std::function<double(double, double)> g) {
+  stability::OrbitProblem p;
+  p.field = [omega, g](double mu, const Eigen::VectorXd& x, Eigen::VectorXd* dx) {
+    const double rate = g(mu, x.squaredNorm());
+    (*dx)[0] = rate * x[0] - omega * x[1];
+    (*dx)[1] = omega * x[0] + rate * x[1];
+  };
+  p.phase = Eigen::RowVector2d(0.0, 1.0);      // y(0) = 0: t = 0 at a peak of x
+  p.amplitude = Eigen::RowVector2d(1.0, 0.0);  // x is watched
+  p.scale = Eigen::Vector2d(1.0, 1.0);
+  p.amplitude_scale = 0.1;
+  p.parameter_scale = 0.1;
+  return p;
+}
+
+stability::ContinuationSettings normal_form_settings(double max_amplitude) {
+  stability::ContinuationSettings s;
+  s.start_amplitude = 1e-3;
+  s.max_amplitude = max_amplitude;
+  s.parameter_low = -1.0;
+  s.parameter_high = 1.0;
+  s.max_step = 0.5;
+  return s;
+}
+
+// ṙ = r(μ + r² − r⁴): a subcritical Hopf point at μ = 0; the orbits r satisfy μ = r⁴ − r², so
+// the unstable branch runs back to the fold at r² = 1/2, μ = −1/4, and turns into the stable
+// branch; the multiplier is exp(T·(2r² − 4r⁴)).
+TEST(LimitCycleContinuation, SubcriticalNormalFormBranchAndFold) {
+  const double omega = 2.0;
+  const stability::OrbitProblem p =
+      normal_form(omega, [](double mu, double rho) { return mu + rho - rho * rho; });
+  const auto hopf = stability::find_hopf(p.field, 2, -1.0, 1.0);
+  ASSERT_TRUE(hopf.has_value());
+  // The bisection stops at 1e-12; the Jacobian's central differences are exact for the linear part.
+  EXPECT_NEAR(hopf->parameter, 0.0, 1e-10);
+  EXPECT_NEAR(hopf->frequency, omega, 1e-9);
+  const stability::OrbitBranch b = stability::continue_from_hopf(p, *hopf, normal_form_settings(1.1));
+  EXPECT_EQ(b.end, stability::BranchEnd::amplitude_reached);
+  ASSERT_GT(b.orbits.size(), 10u);
+  const double period = kTwoPi / omega;
+  for (const stability::Orbit& o : b.orbits) {
+    ASSERT_TRUE(o.converged);
+    const double r = o.start_value, rho = r * r;
+    // 1000 fifth-order steps of ωh = 0.0126 on the circle: the flow is good to ~1e-12, so the
+    // closure residual (1e-9) bounds the error of μ(r) and T.
+    EXPECT_NEAR(o.parameter, rho * rho - rho, 1e-7) << "r = " << r;
+    EXPECT_NEAR(o.period, period, 1e-7) << "r = " << r;
+    EXPECT_NEAR(o.amplitude, r, 1e-5 * r);  // the largest sampled |x|: cos(π/1000) of the peak
+    const double multiplier = std::exp(period * (2.0 * rho - 4.0 * rho * rho));
+    // Forward differences of step 1e-7 relative: the multiplier to ~1e-6.
+    EXPECT_NEAR(o.largest_multiplier, multiplier, 1e-5) << "r = " << r;
+    if (std::abs(rho - 0.5) > 0.02) {
+      EXPECT_EQ(o.stable, rho > 0.5) << "r = " << r;
+    }
+  }
+  // The branch leaves the Hopf point towards lower μ (subcritical), turns once, and ends stable.
+  EXPECT_LT(b.orbits[1].parameter, 0.0);
+  EXPECT_TRUE(b.orbits.back().stable);
+  ASSERT_EQ(b.folds.size(), 1u);
+  // The fold's refinement stops when the vertex moves by 1e-5 in r; μ is flat there, so its
+  // error is second order: far below 1e-8.
+  EXPECT_NEAR(b.folds[0].parameter, -0.25, 1e-8);
+  EXPECT_NEAR(b.folds[0].start_value, std::sqrt(0.5), 2e-4);
+}
+
+// ṙ = r(μ − r²): supercritical; the orbits r = √μ are all stable, the branch goes up in μ and
+// never turns: no fold.
+TEST(LimitCycleContinuation, SupercriticalNormalFormHasNoFold) {
+  const stability::OrbitProblem p = normal_form(1.0, [](double mu, double rho) { return mu - rho; });
+  const auto hopf = stability::find_hopf(p.field, 2, -1.0, 1.0);
+  ASSERT_TRUE(hopf.has_value());
+  const stability::OrbitBranch b = stability::continue_from_hopf(p, *hopf, normal_form_settings(0.8));
+  EXPECT_EQ(b.end, stability::BranchEnd::amplitude_reached);
+  EXPECT_TRUE(b.folds.empty());
+  for (const stability::Orbit& o : b.orbits) {
+    EXPECT_NEAR(o.parameter, o.start_value * o.start_value, 1e-7);
+    EXPECT_TRUE(o.stable);
+  }
+}
+
+// The equilibrium stays stable over the range: no Hopf point, and nothing invented.
+TEST(LimitCycleContinuation, StableThroughoutHasNoHopfPoint) {
+  const stability::OrbitProblem p = normal_form(1.0, [](double mu, double rho) { return mu - 2.0 - rho; });
+  EXPECT_FALSE(stability::find_hopf(p.field, 2, -1.0, 1.0).has_value());
+}
+
+struct BundledScene {
+  LinearSystem system;
+  NonlinearHuntingOptions options;
+};
+
+BundledScene bundled_scene() {
+  const Scene scene = load_scene(RAILMODAL_DATA_DIR "/scenes/wheelset_on_springs_nonlinear_hunting.toml");
+  return {assemble(load_vehicle(scene.vehicle_file), DofSet::lateral), *scene.nonlinear_hunting};
+}
+
+// One continuation of the bundled scene shared by the tests below (it costs a few seconds).
+const LimitCycleBranch& bundled_branch() {
+  static const LimitCycleBranch b = [] {
+    const BundledScene s = bundled_scene();
+    return continue_limit_cycles(s.system, s.options);
+  }();
+  return b;
+}
+
+// (a) The branch leaves the Hopf point at the linear critical speed of solve_hunting_stability
+// (contact_angle 0: the nonlinear equations' linearisation is the linear model) with the Hopf
+// frequency, the amplitude going to zero.
+TEST(LimitCycleContinuation, HuntingBranchLeavesTheLinearCriticalSpeed) {
+  const BundledScene s = bundled_scene();
+  HuntingOptions h;
+  h.min_speed = s.options.end_speed;
+  h.max_speed = s.options.start_speed;
+  const HuntingResult linear = solve_hunting_stability(s.system, h);
+  ASSERT_TRUE(linear.critical.has_value());
+  const LimitCycleBranch& b = bundled_branch();
+  ASSERT_TRUE(b.hopf_speed.has_value());
+  RecordProperty("hopf_speed", std::to_string(*b.hopf_speed));
+  // solve_hunting_stability refines its bracket to 1e-6 of the speed (its default).
+  EXPECT_NEAR(*b.hopf_speed, linear.critical->speed, 1e-4);
+  EXPECT_NEAR(b.hopf_frequency, linear.critical->frequency_hz, 1e-4 * linear.critical->frequency_hz);
+  ASSERT_GE(b.points.size(), 2u);
+  // The first orbits, 0.1 and 0.2 mm: the saturation's correction is linear in the amplitude
+  // (|F|/μN), so the speed departs linearly; extrapolated to zero amplitude it is the Hopf speed.
+  const LimitCyclePoint a{b.points[0].speed, b.points[0].amplitude}, c{b.points[1].speed, b.points[1].amplitude};
+  const double at_zero = a.speed - a.amplitude * (c.speed - a.speed) / (c.amplitude - a.amplitude);
+  EXPECT_NEAR(at_zero, *b.hopf_speed, 2e-3);  // the quadratic term over 0.1 mm
+  EXPECT_NEAR(1.0 / b.points[0].period, b.hopf_frequency, 1e-3 * b.hopf_frequency);
+  EXPECT_FALSE(b.points[0].stable);
+}
+
+// (b) The bundled scene is subcritical; its fold is the ramp-down's held critical speed, within
+// the held bracket's tolerance (0.05 m/s) and the hold's own resolution near a fold.
+TEST(LimitCycleContinuation, HuntingFoldIsTheHeldCriticalSpeed) {
+  const LimitCycleBranch& b = bundled_branch();
+  EXPECT_EQ(b.kind, LimitCycleBranchKind::subcritical);
+  ASSERT_TRUE(b.fold.has_value());
+  const BundledScene s = bundled_scene();
+  const NonlinearHuntingResult held = solve_nonlinear_hunting(s.system, s.options);
+  ASSERT_TRUE(held.critical_speed && held.hold.highest_dying);
+  RecordProperty("fold_speed", std::to_string(b.fold->speed));
+  RecordProperty("held_critical_speed", std::to_string(*held.critical_speed));
+  // The true lowest surviving speed lies in (highest_dying, lowest_surviving]; a fold just below
+  // the dying end is also consistent: a hold started off the branch dies when slow to settle.
+  EXPECT_LE(b.fold->speed, *held.critical_speed + 1e-9);
+  EXPECT_GE(b.fold->speed, *held.hold.highest_dying - s.options.tolerance);
+  EXPECT_LT(b.fold->speed, *b.hopf_speed);
+  // Unstable below the fold's amplitude, stable above it.
+  for (const LimitCycleBranchPoint& p : b.points) {
+    if (p.amplitude < 0.8 * b.fold->amplitude) {
+      EXPECT_FALSE(p.stable) << p.speed;
+    }
+    if (p.amplitude > 1.2 * b.fold->amplitude) {
+      EXPECT_TRUE(p.stable) << p.speed;
+    }
+  }
+}
+
+// (c) The stable branch at a few speeds against a long direct simulation at that speed (the
+// hold of the ramp-down's code) started from the orbit's own state scaled up by 5%.
+TEST(LimitCycleContinuation, StableBranchMatchesLongSimulations) {
+  const LimitCycleBranch& b = bundled_branch();
+  ASSERT_TRUE(b.fold.has_value());
+  const BundledScene s = bundled_scene();
+  const stability::LateralEquations e(s.system, s.options);
+  int checked = 0;
+  for (const double above : {0.5, 2.0, 6.0}) {
+    // The stable orbit nearest fold + above.
+    const LimitCycleBranchPoint* p = nullptr;
+    for (const LimitCycleBranchPoint& q : b.points)
+      if (q.stable && (!p || std::abs(q.speed - b.fold->speed - above) < std::abs(p->speed - b.fold->speed - above)))
+        p = &q;
+    ASSERT_NE(p, nullptr);
+    Eigen::VectorXd start = Eigen::VectorXd::Zero(e.size());
+    start[e.wheelsets()[0].lateral] = 1.05 * p->amplitude;
+    const SpeedHold hold = stability::hold_speed(e, s.options, p->speed, start, 0, 400);
+    // 400 periods from 5% off: the approach to a stable cycle with largest multiplier m leaves
+    // 5%·m^400 of the offset; the sampled peak is low by < 5e-4 (ramp_down's sampling).
+    EXPECT_NEAR(hold.end_amplitude, p->amplitude, 2e-3 * p->amplitude) << p->speed;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
+}
+
+// The law without saturation or flange is linear: its orbits are the neutral mode at the Hopf
+// speed at any amplitude (a vertical branch): neutral, no fold, never a NaN.
+TEST(LimitCycleContinuation, LinearLawHasNoBranch) {
+  BundledScene s = bundled_scene();
+  s.options.effects.clear();
+  const LimitCycleBranch b = continue_limit_cycles(s.system, s.options);
+  ASSERT_TRUE(b.hopf_speed.has_value());
+  EXPECT_EQ(b.kind, LimitCycleBranchKind::neutral);
+  EXPECT_EQ(b.end, ContinuationEnd::amplitude_reached);
+  EXPECT_FALSE(b.fold.has_value());
+  ASSERT_GT(b.points.size(), 3u);
+  for (const LimitCycleBranchPoint& p : b.points) {
+    EXPECT_TRUE(std::isfinite(p.speed) && std::isfinite(p.amplitude));
+    EXPECT_NEAR(p.speed, *b.hopf_speed, 1e-8 * *b.hopf_speed);
+    EXPECT_LE(p.residual, LimitCycleOptions{}.newton_tolerance);
+  }
+}
+
+TEST(LimitCycleContinuation, NoHopfPointInTheRange) {
+  BundledScene s = bundled_scene();
+  s.options.start_speed = 40.0;
+  s.options.end_speed = 20.0;
+  const LimitCycleBranch b = continue_limit_cycles(s.system, s.options);
+  EXPECT_EQ(b.kind, LimitCycleBranchKind::no_hopf_point);
+  EXPECT_EQ(b.end, ContinuationEnd::no_hopf_point);
+  EXPECT_TRUE(b.points.empty());
+}
+
+TEST(LimitCycleContinuation, OptionsAreValidated) {
+  const BundledScene s = bundled_scene();
+  LimitCycleOptions o;
+  o.start_amplitude = 0.05;
+  EXPECT_THROW(continue_limit_cycles(s.system, s.options, o), std::invalid_argument);
+  o = {};
+  o.steps_per_period = 10;
+  EXPECT_THROW(continue_limit_cycles(s.system, s.options, o), std::invalid_argument);
+  o = {};
+  o.newton_tolerance = 0.0;
+  std::string why;
+  EXPECT_FALSE(o.is_valid(&why));
+  EXPECT_NE(why.find("newton_tolerance"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace railmodal
