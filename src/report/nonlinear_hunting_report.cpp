@@ -119,7 +119,7 @@ const char* const kCannotShow =
     "where it stops existing (a fold of the branch, or the Hopf point when the branch is supercritical). What it "
     "cannot show: the unstable limit cycle of a subcritical branch (the threshold amplitude between decay to the "
     "centre and hunting), which no simulation converges onto and which needs numerical continuation of periodic "
-    "orbits; it is not offered. The answer depends on the disturbance, and the watched wheelset is the one that "
+    "orbits: railmodal hunting --continuation follows it. The answer depends on the disturbance, and the watched wheelset is the one that "
     "moves most (docs/stability.md, \"What the ramp-down can and cannot show\").";
 // The same, when the continuation was asked for and follows below.
 const char* const kCannotShowButContinued =
