@@ -17,6 +17,7 @@
 #include "ride/window_indices.hpp"
 #include "ride/ride_friction_march.hpp"
 #include "ride/ride_march.hpp"
+#include "ride/ride_modal_march.hpp"
 #include "ride/ride_state_space.hpp"
 #include "ride/time_weighting.hpp"
 #include "ride/track_under_wheels.hpp"
@@ -117,6 +118,11 @@ std::string run_text(const TrackGeometry& geometry, const RideSimulationOptions&
   return text.str();
 }
 
+std::string periodic_start_note(bool steady) {
+  return steady ? "started in the periodic steady state of the periodic track (no start-up transient)"
+                : "started from rest: the vehicle has an (almost) undamped motion, so no periodic steady state";
+}
+
 // The periodic steady state: from rest, one period of N·m steps gives s_P; the state then
 // obeys s_{k+Nm} = Φ^{Nm} s_k + s_P, whose fixed point s* = (I − Φ^{Nm})⁻¹ s_P starts the run
 // on its periodic orbit (no start-up transient at all). An undamped mode makes I − Φ^{Nm}
@@ -127,12 +133,9 @@ Eigen::VectorXd periodic_start(ride::RideMarch* march, long period, int states, 
   const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(states, states);
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(I - march->transition_power(period));
   constexpr double kSingular = 1e-10;  // reciprocal condition below which the fixed point is not trusted
-  if (!lu.isInvertible() || !(lu.rcond() >= kSingular)) {  // rcond is NaN for an exactly zero pivot
-    notes->push_back("started from rest: the vehicle has an (almost) undamped motion, so no periodic steady state");
-    return Eigen::VectorXd::Zero(states);
-  }
-  notes->push_back("started in the periodic steady state of the periodic track (no start-up transient)");
-  return lu.solve(s);
+  const bool steady = lu.isInvertible() && lu.rcond() >= kSingular;  // rcond is NaN for an exactly zero pivot
+  notes->push_back(periodic_start_note(steady));
+  return steady ? Eigen::VectorXd(lu.solve(s)) : Eigen::VectorXd::Zero(states);
 }
 
 // The samples of every output over the run, one column each.
@@ -151,14 +154,36 @@ Eigen::MatrixXd march_outputs(ride::RideMarch* march, const ride::TrackUnderWhee
   return y;
 }
 
+// The linear vehicle's outputs over the run: in modal coordinates when A's eigenvectors are
+// well conditioned (ride_modal_march.hpp), else by the dense march; the same discretisation,
+// so the same histories to round-off (tests/ride/ride_modal_march_test.cpp).
+Eigen::MatrixXd linear_march(const ride::RideStateSpace& model, const ride::TrackUnderWheels& track,
+                             const std::vector<ride::OutputRow>& rows, bool periodic, const RunPlan& plan, double speed,
+                             std::vector<std::string>* notes, StageClock* clock) {
+  const long count = plan.settle + plan.evaluated;
+  if (const auto modal = ride::ModalRideMarch::make(model, track, rows, speed, plan.step, track.span())) {
+    clock->lap("state transition");
+    ride::ModalRideMarch::State start = modal->rest();
+    if (periodic) notes->push_back(periodic_start_note(modal->periodic_start(plan.evaluated, &start)));
+    Eigen::MatrixXd y = modal->outputs(std::move(start), count);
+    clock->lap("march");
+    return y;
+  }
+  ride::RideMarch march(model, track, speed, plan.step, track.span());
+  clock->lap("state transition");
+  const Eigen::VectorXd start =
+      periodic ? periodic_start(&march, plan.evaluated, 2 * model.n, notes) : Eigen::VectorXd::Zero(2 * model.n);
+  Eigen::MatrixXd y = march_outputs(&march, track, rows, start, count, speed);
+  clock->lap("march");
+  return y;
+}
+
 // A weighting run over the evaluated samples: a periodic history is filtered over two
 // periods and the second kept (the filter then in its own periodic steady state); another
 // over the whole run, settling included, and the evaluated tail kept.
 Eigen::VectorXd weighted(const ride::DigitalFilter& filter, const Eigen::VectorXd& run, long evaluated, bool periodic) {
   if (!periodic) return filter.apply(run).tail(evaluated);
-  Eigen::VectorXd twice(2 * evaluated);
-  twice << run.tail(evaluated), run.tail(evaluated);
-  return filter.apply(twice).tail(evaluated);
+  return filter.apply_second_pass(run.tail(evaluated));
 }
 
 double rms(const Eigen::VectorXd& values) { return std::sqrt(values.squaredNorm() / static_cast<double>(values.size())); }
@@ -261,12 +286,7 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
     result.summary.checks.push_back({"slip events", static_cast<double>(slips), INFINITY, true});
     clock.lap("nonlinear march");
   } else {
-    ride::RideMarch march(model, track, options.speed, plan.step, track.span());
-    clock.lap("state transition");
-    const Eigen::VectorXd start = geometry.periodic ? periodic_start(&march, plan.evaluated, 2 * model.n, &result.notes)
-                                                    : Eigen::VectorXd::Zero(2 * model.n);
-    y = march_outputs(&march, track, rows, start, plan.settle + plan.evaluated, options.speed);
-    clock.lap("march");
+    y = linear_march(model, track, rows, geometry.periodic, plan, options.speed, &result.notes, &clock);
   }
 
   result.outputs = outputs;

@@ -45,8 +45,60 @@ DigitalFilter::Section bilinear(const std::vector<double>& numerator, const std:
   return section;
 }
 
+namespace {
+
+// The cascade in one pass over the samples, every section of order ≤ 3 padded with zero
+// coefficients: each sample goes through all sections while their states are in registers,
+// and the sections' recursions overlap (section j at sample n beside section j + 1 at sample
+// n − 1) where one pass a section waits on each sample's recursion in turn. The same
+// operations in the same order as the generic loop below (a padded state is 0·x − 0·y + 0,
+// exactly +0, and adding it changes nothing), so the same samples bit for bit.
+constexpr size_t kFusedOrder = 3;
+
+struct PaddedSection {
+  double b[kFusedOrder + 1] = {}, a[kFusedOrder + 1] = {};
+};
+
+void apply_fused(const std::vector<PaddedSection>& sections, Eigen::VectorXd* signal, std::vector<double>* state) {
+  const size_t count = sections.size();
+  state->resize(kFusedOrder * count, 0.0);
+  for (Eigen::Index n = 0; n < signal->size(); ++n) {
+    double x = (*signal)(n);
+    for (size_t j = 0; j < count; ++j) {
+      const PaddedSection& s = sections[j];
+      double* z = &(*state)[kFusedOrder * j];
+      const double y = s.b[0] * x + z[0];
+      z[0] = s.b[1] * x - s.a[1] * y + z[1];
+      z[1] = s.b[2] * x - s.a[2] * y + z[2];
+      z[2] = s.b[3] * x - s.a[3] * y + 0.0;
+      x = y;
+    }
+    (*signal)(n) = x;
+  }
+}
+
+// The sections padded for apply_fused; fewer than the filter's when one is of higher order.
+std::vector<PaddedSection> padded(const std::vector<DigitalFilter::Section>& sections) {
+  std::vector<PaddedSection> out;
+  for (const DigitalFilter::Section& s : sections) {
+    if (s.a.size() > kFusedOrder + 1 || s.b.size() > s.a.size()) break;
+    out.emplace_back();
+    for (size_t k = 0; k < s.a.size(); ++k) out.back().a[k] = s.a[k];
+    for (size_t k = 0; k < s.b.size(); ++k) out.back().b[k] = s.b[k];
+  }
+  return out;
+}
+
+}  // namespace
+
 Eigen::VectorXd DigitalFilter::apply(const Eigen::VectorXd& input) const {
   Eigen::VectorXd signal = input;
+  const std::vector<PaddedSection> fused = padded(sections_);
+  if (fused.size() == sections_.size()) {
+    std::vector<double> state;
+    apply_fused(fused, &signal, &state);
+    return signal;
+  }
   for (const Section& s : sections_) {
     const size_t order = s.a.size() - 1;
     std::vector<double> state(order + 1, 0.0);  // transposed direct form II: state[order] stays 0
@@ -57,6 +109,21 @@ Eigen::VectorXd DigitalFilter::apply(const Eigen::VectorXd& input) const {
       signal(n) = y;
     }
   }
+  return signal;
+}
+
+Eigen::VectorXd DigitalFilter::apply_second_pass(const Eigen::VectorXd& period) const {
+  const std::vector<PaddedSection> fused = padded(sections_);
+  if (fused.size() != sections_.size()) {
+    Eigen::VectorXd twice(2 * period.size());
+    twice << period, period;
+    return apply(twice).tail(period.size());
+  }
+  Eigen::VectorXd signal = period;
+  std::vector<double> state;
+  apply_fused(fused, &signal, &state);  // the first pass: only its final state is kept
+  signal = period;
+  apply_fused(fused, &signal, &state);
   return signal;
 }
 

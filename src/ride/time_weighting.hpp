@@ -20,6 +20,10 @@ class DigitalFilter {
   explicit DigitalFilter(std::vector<Section> sections) : sections_(std::move(sections)) {}
   /// The filtered samples, starting from rest.
   Eigen::VectorXd apply(const Eigen::VectorXd& input) const;
+  /// The samples of the second of two passes over `period` (the input repeated once, run from
+  /// rest): apply(period, period)'s second half, bit for bit, without forming the doubled
+  /// input when every section is of order 3 or less.
+  Eigen::VectorXd apply_second_pass(const Eigen::VectorXd& period) const;
   /// H(e^{iωΔt}) at `frequency` Hz for the sample step `time_step` s.
   std::complex<double> response(double frequency, double time_step) const;
 

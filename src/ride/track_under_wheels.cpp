@@ -66,7 +66,12 @@ double TrackUnderWheels::sample(const Eigen::VectorXd& profile, double position)
   Eigen::Index i = static_cast<Eigen::Index>(std::floor(s));
   if (!geometry_.periodic) i = std::clamp<Eigen::Index>(i, 0, n - 2);
   const double f = s - static_cast<double>(i);
-  const double a = profile(i % n), b = profile((i + 1) % n);
+  // i is in [0, n] here (s wrapped into [0, n], or clamped): the indices i mod n and
+  // (i + 1) mod n without an integer division
+  Eigen::Index next = i + 1;
+  if (next >= n) next -= n;
+  if (i >= n) i -= n;
+  const double a = profile(i), b = profile(next);
   return a + f * (b - a);
 }
 
@@ -118,6 +123,16 @@ void TrackUnderWheels::on_segment(int input, double leading, double anchor, Eige
 }
 
 double TrackUnderWheels::step() const { return geometry_.step; }
+
+const Eigen::VectorXd& TrackUnderWheels::profile(int p) const {
+  return p == 0 ? geometry_.alignment : p == 1 ? geometry_.vertical_level : geometry_.cross_level;
+}
+
+bool TrackUnderWheels::periodic() const { return geometry_.periodic; }
+
+Eigen::Vector3d TrackUnderWheels::direction(int input, int profile) const {
+  return profile == 0 ? Eigen::Vector3d::UnitY() : profile == 1 ? Eigen::Vector3d::UnitZ() : cross_level_[input];
+}
 
 Eigen::Vector3d TrackUnderWheels::displacement_of(int input, double leading) const {
   const double x = leading - lags_[input];

@@ -55,6 +55,16 @@ class TrackUnderWheels {
   /// The geometry's step, m: the length of every segment.
   double step() const;
 
+  /// The track's profiles one at a time, for a march that sums the inputs standing at one
+  /// track position and reads the samples itself (ride_modal_march.hpp): profile 0 is the
+  /// alignment, 1 the vertical level, 2 the cross-level (empty when the geometry has none);
+  /// u_i = Σ_p direction(i, p)·(profile p interpolated at x_i).
+  static constexpr int kProfiles = 3;
+  const Eigen::VectorXd& profile(int p) const;
+  bool periodic() const;
+  /// ∂u_i/∂(profile p): (0, 1, 0) for the alignment, (0, 0, 1) for the level, cross_level(i).
+  Eigen::Vector3d direction(int input, int profile) const;
+
  private:
   double sample(const Eigen::VectorXd& profile, double position) const;
   double sample_slope(const Eigen::VectorXd& profile, double position) const;

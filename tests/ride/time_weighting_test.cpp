@@ -104,5 +104,47 @@ TEST(RideSimulation, ComfortCombinesTheAxesZoneByZone) {
   EXPECT_DOUBLE_EQ(zones(1), 114.1);
 }
 
+
+// The cascade section by section in transposed direct form II, as DigitalFilter::apply ran
+// it before its sections were fused into one pass: the reference for bit-for-bit equality.
+Eigen::VectorXd section_by_section(const std::vector<ride::DigitalFilter::Section>& sections, Eigen::VectorXd signal) {
+  for (const ride::DigitalFilter::Section& s : sections) {
+    const size_t order = s.a.size() - 1;
+    std::vector<double> state(order + 1, 0.0);
+    for (Eigen::Index n = 0; n < signal.size(); ++n) {
+      const double x = signal(n);
+      const double y = s.b[0] * x + state[0];
+      for (size_t k = 0; k < order; ++k) state[k] = s.b[k + 1] * x - s.a[k + 1] * y + state[k + 1];
+      signal(n) = y;
+    }
+  }
+  return signal;
+}
+
+TEST(TimeWeighting, FusedCascadeAndSecondPassAreTheSectionBySectionSamplesBitForBit) {
+  // Wb's four second-order sections and Sperling's third-order one run fused; a fourth-order
+  // section sends a filter to the section-by-section loop. Every path: the same doubles.
+  Eigen::VectorXd input(3000);
+  for (Eigen::Index n = 0; n < input.size(); ++n)
+    input(n) = std::sin(0.013 * static_cast<double>(n * n % 977)) + 0.1 * std::cos(0.7 * static_cast<double>(n));
+  const FrequencyWeighting wb = en12299_wb();
+  const double w1 = 2.0 * kPi * wb.f1;
+  const ride::DigitalFilter::Section high_pass =
+      ride::bilinear({0.0, 0.0, 1.0}, {w1 * w1, w1 / wb.q1, 1.0}, kStep, wb.f1);  // Wb's first
+  const std::vector<std::vector<ride::DigitalFilter::Section>> cases{
+      {high_pass},
+      {ride::bilinear({0.0, 1.0}, {w1, 1.0}, kStep, wb.f1), high_pass},                             // first order
+      {ride::bilinear({0.0, 0.1, 0.2, 0.01}, {1.0, 0.3, 0.05, 0.002}, kStep, 5.0), high_pass},      // third
+      {high_pass, ride::bilinear({1.0, 0.0, 0.0, 0.0, 1e-4}, {1.0, 0.5, 0.1, 0.01, 1e-3}, kStep, 0.0)}};  // fourth
+  for (const auto& sections : cases) {
+    const ride::DigitalFilter filter(sections);
+    const Eigen::VectorXd expected = section_by_section(sections, input);
+    EXPECT_EQ(filter.apply(input), expected);
+    Eigen::VectorXd twice(2 * input.size());
+    twice << input, input;
+    EXPECT_EQ(filter.apply_second_pass(input), section_by_section(sections, twice).tail(input.size()));
+  }
+}
+
 }  // namespace
 }  // namespace railmodal::test

@@ -1,0 +1,368 @@
+#include "ride/ride_modal_march.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+namespace railmodal::ride {
+namespace {
+
+using Complex = std::complex<double>;
+
+// φ1(x) = (e^x − 1)/x and φ2(x) = (e^x − 1 − x)/x², the first-order hold's integrals of one
+// mode: over a span τ with the input linear from u0 to u1, ζ(τ) = e^{λτ}ζ(0) + τφ1(λτ)β u0 +
+// τφ2(λτ)β (u1 − u0) — Van Loan's G0 and G1 (ride_march.cpp) for a 1 × 1 A. Below |x| = 1
+// the direct forms lose digits to cancellation, so there their Taylor series Σ x^k/(k+1)! and
+// Σ x^k/(k+2)! (30 terms: the remainder is below 1/31! ≈ 1e-34).
+void phi(Complex x, Complex* phi1, Complex* phi2) {
+  if (std::abs(x) < 1.0) {
+    Complex t1 = 1.0, t2 = 0.5;
+    *phi1 = *phi2 = 0.0;
+    for (int k = 0; k < 30; ++k) {
+      *phi1 += t1;
+      *phi2 += t2;
+      t1 *= x / static_cast<double>(k + 2);
+      t2 *= x / static_cast<double>(k + 3);
+    }
+    return;
+  }
+  const Complex e = std::exp(x);
+  *phi1 = (e - 1.0) / x;
+  *phi2 = (e - 1.0 - x) / (x * x);
+}
+
+// The three taps of one mode for an input whose kinks fall δ into each step (ride_march.cpp's
+// chained holds, per mode): the factors of u(t), u(t + δ), u(t + h).
+void taps(Complex lambda, double h, double delta, Complex out[3]) {
+  Complex p1, p2;
+  if (delta == 0.0) {
+    phi(lambda * h, &p1, &p2);
+    out[0] = h * (p1 - p2);
+    out[1] = 0.0;
+    out[2] = h * p2;
+    return;
+  }
+  const double rest = h - delta;
+  Complex r1, r2;
+  phi(lambda * delta, &p1, &p2);
+  phi(lambda * rest, &r1, &r2);
+  const Complex carry = std::exp(lambda * rest);  // Φ(h − δ)
+  out[0] = carry * delta * (p1 - p2);
+  out[1] = carry * delta * p2 + rest * (r1 - r2);
+  out[2] = rest * r2;
+}
+
+// Diagonal scaling by powers of 2 that brings each row and column of A to comparable size
+// (Parlett and Reinsch, "Balancing a matrix for calculation of eigenvalues and eigenvectors",
+// Numer. Math. 13, 1969; LAPACK's dgebal without the permutations): A = D Â D⁻¹ exactly, and
+// the eigenvectors of Â are better conditioned where the states' scales differ (positions
+// against velocities, ω times larger). Returns the diagonal of D.
+Eigen::VectorXd balance(Eigen::MatrixXd* A) {
+  const Eigen::Index r = A->rows();
+  Eigen::VectorXd d = Eigen::VectorXd::Ones(r);
+  for (bool done = false; !done;) {
+    done = true;
+    for (Eigen::Index i = 0; i < r; ++i) {
+      double c = A->col(i).cwiseAbs().sum() - std::abs((*A)(i, i));
+      double row = A->row(i).cwiseAbs().sum() - std::abs((*A)(i, i));
+      if (c == 0.0 || row == 0.0) continue;
+      const double s = c + row;
+      double f = 1.0;
+      while (c < row / 2.0) f *= 2.0, c *= 4.0;
+      while (c > row * 2.0) f /= 2.0, c /= 4.0;
+      if ((c + row) / f < 0.95 * s) {
+        done = false;
+        d(i) *= f;
+        A->row(i) /= f;
+        A->col(i) *= f;
+      }
+    }
+  }
+  return d;
+}
+
+}  // namespace
+
+std::unique_ptr<ModalRideMarch> ModalRideMarch::make(const RideStateSpace& model, const TrackUnderWheels& track,
+                                                     const std::vector<OutputRow>& rows, double speed, double step,
+                                                     double start) {
+  // A = D Â D⁻¹ = (D V̂) Λ (D V̂)⁻¹: the test is on V̂, the basis the arithmetic uses.
+  Eigen::MatrixXd balanced = model.A;
+  const Eigen::VectorXd D = balance(&balanced);
+  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(balanced);
+  if (eigen.info() != Eigen::Success) return nullptr;
+  const Eigen::MatrixXcd& Vb = eigen.eigenvectors();  // unit columns
+  const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXcd>(Vb).singularValues();
+  const double condition = sigma(sigma.size() - 1) > 0.0 ? sigma(0) / sigma(sigma.size() - 1) : INFINITY;
+  if (!(condition <= kModalConditionLimit)) return nullptr;
+  const Eigen::MatrixXcd V = D.cast<Complex>().asDiagonal() * Vb;
+  const Eigen::MatrixXcd W = Vb.partialPivLu().inverse() * D.cwiseInverse().cast<Complex>().asDiagonal();
+
+  std::unique_ptr<ModalRideMarch> m(new ModalRideMarch());
+  m->speed_ = speed;
+  m->h_ = step;
+  m->condition_ = condition;
+  // One of each conjugate pair (Im λ > 0, counted twice in the real state) and every real mode
+  // (EigenSolver gives those an exactly zero imaginary part and a real eigenvector).
+  std::vector<int> marched;
+  std::vector<double> weight;
+  for (int k = 0; k < static_cast<int>(V.cols()); ++k) {
+    const double im = eigen.eigenvalues()(k).imag();
+    if (im < 0.0) continue;
+    marched.push_back(k);
+    weight.push_back(im > 0.0 ? 2.0 : 1.0);
+  }
+  m->modes_ = static_cast<int>(marched.size());
+  for (int k : marched) {
+    const Complex mu = std::exp(eigen.eigenvalues()(k) * step);
+    m->lambda_.push_back(eigen.eigenvalues()(k));
+    m->mu_re_.push_back(mu.real());
+    m->mu_im_.push_back(mu.imag());
+  }
+
+  // Step k stands k/m samples on: m = Δx/(V h), whole (simulate_ride rounds h so); else the
+  // dense march, which takes any step.
+  m->step_ = track.step();
+  m->periodic_ = track.periodic();
+  m->per_sample_ = std::lround(m->step_ / (speed * step));
+  if (m->per_sample_ < 1 ||
+      std::abs(static_cast<double>(m->per_sample_) * speed * step - m->step_) > 1e-9 * m->step_)
+    return nullptr;
+  // The inputs at one track position (exactly the same lag) summed, per profile the track has.
+  std::vector<double> lags;
+  for (int i = 0; i < track.inputs(); ++i)
+    if (std::find(lags.begin(), lags.end(), track.lag(i)) == lags.end()) lags.push_back(track.lag(i));
+  m->outputs_ = static_cast<int>(rows.size());
+  std::vector<double> lw, ld;
+  for (double lag : lags) {
+    // As RideMarch: a sample meets this position when start + V t − lag is a multiple of Δx.
+    double delta = std::fmod((lag - start) / speed, step);
+    if (delta < 0.0) delta += step;
+    if (delta < 1e-9 * step || delta > (1.0 - 1e-9) * step) delta = 0.0;
+    // Where it stands at step 0, in samples: a whole part and a fraction, within the same
+    // 1e-9 of a sample as δ taken as on it.
+    const double at = (start - lag) / m->step_;
+    Eigen::Index base = static_cast<Eigen::Index>(std::floor(at));
+    double phase = at - static_cast<double>(base);
+    if (phase < 1e-9) phase = 0.0;
+    if (phase > 1.0 - 1e-9) phase = 0.0, ++base;
+    for (int p = 0; p < TrackUnderWheels::kProfiles; ++p) {
+      const Eigen::VectorXd& profile = track.profile(p);
+      if (profile.size() == 0) continue;
+      Eigen::VectorXd load = Eigen::VectorXd::Zero(model.A.rows());
+      Eigen::VectorXd lw_p = Eigen::VectorXd::Zero(m->outputs_), ld_p = Eigen::VectorXd::Zero(m->outputs_);
+      for (int i = 0; i < track.inputs(); ++i) {
+        if (track.lag(i) != lag) continue;
+        const Eigen::Vector3d d = track.direction(i, p);
+        load += model.B.middleCols(3 * i, 3) * d;
+        for (int j = 0; j < m->outputs_; ++j) {
+          lw_p(j) += rows[j].Lw.segment(3 * i, 3).dot(d);
+          ld_p(j) += rows[j].Ld.segment(3 * i, 3).dot(d);
+        }
+      }
+      Eigen::Index wrapped = base;
+      if (m->periodic_) wrapped = (base % profile.size() + profile.size()) % profile.size();
+      m->inputs_.push_back({&profile, wrapped, phase, delta, delta * speed / m->step_});
+      for (int j = 0; j < m->outputs_; ++j) lw.push_back(lw_p(j)), ld.push_back(ld_p(j));
+      const Eigen::VectorXcd beta = W * load.cast<Complex>();
+      for (int tap = 0; tap < 3; ++tap)
+        for (int k = 0; k < m->modes_; ++k) {
+          Complex t[3];
+          taps(m->lambda_[k], step, delta, t);
+          const Complex q = t[tap] * beta(marched[k]);
+          m->q_re_.push_back(q.real());
+          m->q_im_.push_back(q.imag());
+        }
+    }
+  }
+  // lw_, ld_ stored output-major: lw_[j·inputs + i]
+  const int n_in = static_cast<int>(m->inputs_.size());
+  m->lw_.resize(lw.size());
+  m->ld_.resize(ld.size());
+  for (int i = 0; i < n_in; ++i)
+    for (int j = 0; j < m->outputs_; ++j) {
+      m->lw_[j * n_in + i] = lw[i * m->outputs_ + j];
+      m->ld_[j * n_in + i] = ld[i * m->outputs_ + j];
+    }
+  // Ls·s = Σ over marched modes of weight · Re((Ls·v_k) z_k)
+  for (int j = 0; j < m->outputs_; ++j)
+    for (int k = 0; k < m->modes_; ++k) {
+      const Complex c = weight[k] * (rows[j].Ls.cast<Complex>() * V.col(marched[k])).value();
+      m->c_re_.push_back(c.real());
+      m->c_im_.push_back(c.imag());
+    }
+  return m;
+}
+
+ModalRideMarch::State ModalRideMarch::rest() const {
+  return {std::vector<double>(modes_, 0.0), std::vector<double>(modes_, 0.0)};
+}
+
+// Each input's segment at the current step, counted in whole samples and steps (no position
+// is ever formed as a double, so a wheel on a sample reads that sample exactly).
+class ModalRideMarch::Cursor {
+ public:
+  explicit Cursor(const ModalRideMarch& march) : march_(march) {
+    for (const Input& in : march.inputs_) segment_.push_back(in.base);
+  }
+  void next() {
+    if (++r_ < march_.per_sample_) {
+      offset_ = static_cast<double>(r_) / static_cast<double>(march_.per_sample_);
+      return;
+    }
+    r_ = 0;
+    offset_ = 0.0;
+    for (size_t i = 0; i < segment_.size(); ++i)
+      if (++segment_[i] == march_.inputs_[i].profile->size() && march_.periodic_) segment_[i] = 0;
+  }
+
+  struct Place {
+    Eigen::Index j, next;  // the segment [j, next] whose straight line is read (a record's end
+                           // segments extended past its ends)
+    double f;              // the fraction along it
+    Eigen::Index at;       // the sample the input stands on (to 1e-9 of a sample), else −1
+  };
+  Place place(int i) const {
+    const Input& in = march_.inputs_[i];
+    const Eigen::Index n = in.profile->size();
+    double f = in.phase + offset_;
+    Eigen::Index j = segment_[i];
+    if (f >= 1.0) {
+      f -= 1.0;
+      if (++j == n && march_.periodic_) j = 0;
+    }
+    constexpr double kOnSample = 1e-9;  // as TrackUnderWheels::slope
+    const Eigen::Index at = f < kOnSample ? j : f > 1.0 - kOnSample ? j + 1 : -1;
+    if (!march_.periodic_ && j > n - 2) f += static_cast<double>(j - (n - 2)), j = n - 2;
+    if (!march_.periodic_ && j < 0) f += static_cast<double>(j), j = 0;
+    Eigen::Index next = j + 1;
+    if (next == n) next = 0;
+    return {j, next, f, at};
+  }
+
+ private:
+  const ModalRideMarch& march_;
+  std::vector<Eigen::Index> segment_;
+  long r_ = 0;  // the step within the sample, 0 … m − 1
+  double offset_ = 0.0;  // r/m
+};
+
+void ModalRideMarch::read(const Cursor& cursor, std::vector<double>* now, std::vector<double>* mid,
+                          std::vector<double>* slope) const {
+  for (size_t i = 0; i < inputs_.size(); ++i) {
+    const Input& in = inputs_[i];
+    const Eigen::VectorXd& p = *in.profile;
+    const Cursor::Place at = cursor.place(static_cast<int>(i));
+    const double a = p(at.j), b = p(at.next);
+    (*now)[i] = a + at.f * (b - a);
+    (*mid)[i] = in.delta == 0.0 ? 0.0 : a + (at.f + in.reach) * (b - a);
+    if (!slope) continue;
+    // as TrackUnderWheels::slope: on a sample the mean of its two segments; a record's first
+    // and last samples take their one segment (the extended line beyond them)
+    if (at.at < 0) {
+      (*slope)[i] = (b - a) / step_;
+      continue;
+    }
+    const Eigen::Index n = p.size();
+    Eigen::Index before = at.at - 1, after = at.at + 1;
+    if (periodic_) {
+      if (before < 0) before += n;
+      if (before >= n) before -= n;
+      if (after >= n) after -= n;
+      (*slope)[i] = (p(after) - p(before)) / (2.0 * step_);
+    } else if (before < 0) {
+      (*slope)[i] = (p(1) - p(0)) / step_;
+    } else if (after > n - 1) {
+      (*slope)[i] = (p(n - 1) - p(n - 2)) / step_;
+    } else {
+      (*slope)[i] = (p(after) - p(before)) / (2.0 * step_);
+    }
+  }
+}
+
+void ModalRideMarch::advance(State* z, const std::vector<double>& now, const std::vector<double>& mid,
+                             const std::vector<double>& next) const {
+  double* zr = z->re.data();
+  double* zi = z->im.data();
+  for (int m = 0; m < modes_; ++m) {
+    const double r = mu_re_[m] * zr[m] - mu_im_[m] * zi[m];
+    zi[m] = mu_re_[m] * zi[m] + mu_im_[m] * zr[m];
+    zr[m] = r;
+  }
+  const double* qr = q_re_.data();
+  const double* qi = q_im_.data();
+  for (size_t i = 0; i < inputs_.size(); ++i) {
+    const double u[3] = {now[i], mid[i], next[i]};
+    for (int tap = 0; tap < 3; ++tap, qr += modes_, qi += modes_) {
+      if (tap == 1 && inputs_[i].delta == 0.0) continue;  // no kink inside the step: no middle tap
+      for (int m = 0; m < modes_; ++m) {
+        zr[m] += qr[m] * u[tap];
+        zi[m] += qi[m] * u[tap];
+      }
+    }
+  }
+}
+
+bool ModalRideMarch::periodic_start(long period, State* start) {
+  const size_t n_in = inputs_.size();
+  std::vector<double> now(n_in), mid(n_in), next(n_in), next_mid(n_in);
+  Cursor cursor(*this);
+  read(cursor, &now, &mid, nullptr);
+  State z = rest();
+  for (long k = 0; k < period; ++k) {
+    cursor.next();
+    read(cursor, &next, &next_mid, nullptr);
+    advance(&z, now, mid, next);
+    now.swap(next);
+    mid.swap(next_mid);
+  }
+  std::vector<Complex> gain(modes_);
+  double least = INFINITY, most = 0.0;
+  for (int m = 0; m < modes_; ++m) {
+    gain[m] = 1.0 - std::exp(lambda_[m] * (h_ * static_cast<double>(period)));
+    least = std::min(least, std::abs(gain[m]));
+    most = std::max(most, std::abs(gain[m]));
+  }
+  constexpr double kSingular = 1e-10;  // as the dense path's reciprocal condition of I − Φ^period
+  if (!(least >= kSingular * most)) {
+    *start = rest();
+    return false;
+  }
+  for (int m = 0; m < modes_; ++m) {
+    const Complex s = Complex(z.re[m], z.im[m]) / gain[m];
+    z.re[m] = s.real();
+    z.im[m] = s.imag();
+  }
+  *start = std::move(z);
+  return true;
+}
+
+Eigen::MatrixXd ModalRideMarch::outputs(State z, long count) {
+  const size_t n_in = inputs_.size();
+  Eigen::MatrixXd y(count, outputs_);
+  std::vector<double> now(n_in), mid(n_in), slope(n_in), next(n_in), next_mid(n_in), next_slope(n_in);
+  Cursor cursor(*this);
+  read(cursor, &now, &mid, &slope);
+  for (long k = 0; k < count; ++k) {
+    for (int j = 0; j < outputs_; ++j) {
+      double sum = 0.0;
+      const double* cr = c_re_.data() + j * modes_;
+      const double* ci = c_im_.data() + j * modes_;
+      for (int m = 0; m < modes_; ++m) sum += cr[m] * z.re[m] - ci[m] * z.im[m];
+      const double* lw = lw_.data() + j * n_in;
+      const double* ld = ld_.data() + j * n_in;
+      for (size_t i = 0; i < n_in; ++i) sum += lw[i] * now[i] + speed_ * ld[i] * slope[i];
+      y(k, j) = sum;
+    }
+    if (k + 1 == count) break;
+    cursor.next();
+    read(cursor, &next, &next_mid, &next_slope);
+    advance(&z, now, mid, next);
+    now.swap(next);
+    mid.swap(next_mid);
+    slope.swap(next_slope);
+  }
+  return y;
+}
+
+}  // namespace railmodal::ride
