@@ -161,9 +161,7 @@ std::shared_ptr<const ExcitationSource> driving_gear(TableReader& t, const std::
   else t.fail("gear", "missing: name the file with the [driving_gear] table (the scene has no vehicle file)");
   p.body = t.optional_string("body").value_or("body");
   p.crank_angle = read_start_angle(t, "crank_angle");
-  // Three harmonics by default: the third of the rods' Y and Z (about 1.5 kN each for the Су at
-  // 100 km/h) does not cancel between cranks at 90°, as the second does in surge and bounce.
-  p.harmonics = t.optional_count("harmonics", 1).value_or(3);
+  p.harmonics = t.optional_count("harmonics", 1).value_or(p.harmonics);  // GearExcitation's default, 3
   if (p.harmonics > 60) t.fail("harmonics", "must be at most 60");
   if (t.has("balance")) {
     const std::string word = t.string("balance");
