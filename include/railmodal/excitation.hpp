@@ -160,6 +160,11 @@ struct RailJoints {
   /// staggered) lies this far ahead of the leading wheelset at t = 0, m, in [0, L). 0: the
   /// leading wheelset stands on a joint; the joint reaches it at t = first_joint_at/V.
   double first_joint_at = 0.0;
+  /// The rules make_source checks: L positive and finite, 2a finite and ≥ 0, the dip length
+  /// from 0 to L, at least one harmonic, K and m both given (> 0) or neither, first_joint_at in
+  /// [0, L). *why names the first field that breaks its rule and begins with the field's name
+  /// (the scene file's key), as "dip_length cannot exceed the rail length".
+  bool is_valid(std::string* why) const;
 };
 
 /// Wheelset eccentricity e: each wheelset's axle rises and falls e·sin(2πs/πD + ψᵢ)
@@ -171,6 +176,9 @@ struct WheelEccentricity {
   double eccentricity = 0.0;    ///< e, m
   std::vector<double> phases;   ///< ψᵢ per wheelset from the front, rad (empty: all 0)
   int lobes = 1;                ///< n: 1 an eccentric wheel, 2 an oval, 3 a triangular one, …
+  /// The rules make_source checks: D positive and finite, e finite and ≥ 0, finite phases, at
+  /// least one lobe; *why begins with the name of the first field that breaks its rule.
+  bool is_valid(std::string* why) const;
 };
 
 /// Wheel flats (or out-of-round) of depth a₁ and length l on every wheel, in phase, repeating
@@ -185,6 +193,10 @@ struct WheelFlat {
   /// meets the rail, rad, in [0, 2π); the flat arrives at t = flat_angle·D/(2V). 0: every flat
   /// on the rail at t = 0.
   double flat_angle = 0.0;
+  /// The rules make_source checks: D positive and finite, a₁ finite and ≥ 0, l positive and at
+  /// most πD, at least one harmonic, flat_angle in [0, 2π); *why begins with the name of the
+  /// first field that breaks its rule.
+  bool is_valid(std::string* why) const;
 };
 
 /// Kinematic hunting of conical treads: each wheelset moves laterally y₀ sin(2πs/λ), with
@@ -252,6 +264,8 @@ struct Unbalance {
 /// A₂ ≈ λ + λ³/4 + 15λ⁵/128 (Kvasnikov's series), A₄ ≈ −(λ³/4 + 3λ⁵/16), odd n > 1 zero.
 double reciprocating_coefficient(double rod_ratio, int order);
 
+/// The track and wheel sources; each throws std::invalid_argument ("rail joints: " + why, and so
+/// on) when its description breaks the rules of its is_valid.
 std::unique_ptr<ExcitationSource> make_source(const RailJoints& joints);
 std::unique_ptr<ExcitationSource> make_source(const WheelEccentricity& eccentricity);
 std::unique_ptr<ExcitationSource> make_source(const WheelFlat& flat);

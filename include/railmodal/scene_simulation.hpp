@@ -125,6 +125,11 @@ struct FftCheck {
   /// and a line further away is not the mode's.
   static constexpr double kNonlinearTolerance = 0.05;
 };
+/// The words the fft-check reports write: "passed", "failed", "not excited", "not resolved",
+/// "no line".
+const char* to_string(FftCheck::Outcome outcome);
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<FftCheck::Outcome> fft_check_outcome_from_string(const std::string& word);
 
 /// Where one degree of freedom turns and where it passes its static position, read from a
 /// sampled history by cubic Hermite interpolation of displacement and velocity (error O(Δt⁴)).

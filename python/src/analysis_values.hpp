@@ -30,6 +30,17 @@ inline std::string path_argument(const py::handle& path) {
   return py::str(py::module_::import("os").attr("fspath")(path)).cast<std::string>();
 }
 
+/// A reader of one file as the function Python calls: the path as str or os.PathLike, read
+/// without the GIL (other Python threads run meanwhile).
+template <class Read>
+auto path_reader(Read read) {
+  return [read](const py::object& path) {
+    const std::string file = path_argument(path);
+    py::gil_scoped_release release;
+    return read(file);
+  };
+}
+
 inline bool is_path(const py::handle& value) {
   return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
 }

@@ -62,13 +62,7 @@ void bind_gear(py::module_& m) {
       .def("__repr__", [](const DrivingGear& g) { return "<railmodal.DrivingGear '" + g.name + "'>"; });
 
   m.def(
-      "load_driving_gear",
-      [](const py::object& path) {
-        const std::string file = path_argument(path);
-        py::gil_scoped_release release;
-        return load_driving_gear(file);
-      },
-      py::arg("path"), "The [driving_gear] table of a TOML file, in SI; InputError with file, line, column and key.");
+      "load_driving_gear", path_reader([](const std::string& file) { return load_driving_gear(file); }), py::arg("path"), "The [driving_gear] table of a TOML file, in SI; InputError with file, line, column and key.");
 }
 
 // The cylinders' forces of one kind, crank angles × cylinders.
@@ -227,34 +221,30 @@ void bind_balance_result(py::module_& m) {
     o.trade_off_fractions = fractions;
     return o;
   };
-  m.def(
+  // `balance` and `balance_study` take the same arguments (BalanceOptions' fields and the speed)
+  // and differ in what they run with them: solve(gear, speed, options).
+  const auto def_balance = [&m, &d, options](const char* name, auto solve, const char* doc) {
+    m.def(
+        name,
+        [options, solve](const DrivingGear& gear, std::optional<double> speed, const std::string& rule,
+                         double fraction, double alpha, bool driving, int steps, const std::vector<double>& fractions) {
+          const BalanceOptions o = options(rule, fraction, alpha, driving, steps, fractions);
+          const double v = balance_speed(gear, speed);
+          py::gil_scoped_release release;
+          return solve(gear, v, o);
+        },
+        py::arg("gear"), py::arg("speed_m_s") = py::none(), py::kw_only(), py::arg("rule") = to_string(d.rule),
+        py::arg("reciprocating_fraction") = d.reciprocating_fraction, py::arg("allowed_alpha") = d.allowed_alpha,
+        py::arg("overbalance_driving_axles") = d.overbalance_driving_axles, py::arg("steps") = d.steps,
+        py::arg("trade_off_fractions") = d.trade_off_fractions, doc);
+  };
+  def_balance(
       "balance",
-      [options](const DrivingGear& gear, std::optional<double> speed, const std::string& rule, double fraction,
-                double alpha, bool driving, int steps, const std::vector<double>& fractions) {
-        const BalanceOptions o = options(rule, fraction, alpha, driving, steps, fractions);
-        const double v = balance_speed(gear, speed);
-        py::gil_scoped_release release;
-        return balance_driving_gear(gear, v, o);
-      },
-      py::arg("gear"), py::arg("speed_m_s") = py::none(), py::kw_only(), py::arg("rule") = to_string(d.rule),
-      py::arg("reciprocating_fraction") = d.reciprocating_fraction, py::arg("allowed_alpha") = d.allowed_alpha,
-      py::arg("overbalance_driving_axles") = d.overbalance_driving_axles, py::arg("steps") = d.steps,
-      py::arg("trade_off_fractions") = d.trade_off_fractions,
+      [](const DrivingGear& gear, double speed, const BalanceOptions& o) { return balance_driving_gear(gear, speed, o); },
       "The counterweights of `gear` at speed_m_s (default: its design speed) by one vertical rule "
       "(balance_driving_gear).");
-  m.def(
-      "balance_study",
-      [options](const DrivingGear& gear, std::optional<double> speed, const std::string& rule, double fraction,
-                double alpha, bool driving, int steps, const std::vector<double>& fractions) {
-        const BalanceOptions o = options(rule, fraction, alpha, driving, steps, fractions);
-        const double v = balance_speed(gear, speed);
-        py::gil_scoped_release release;
-        return study_balance(gear, v, o);
-      },
-      py::arg("gear"), py::arg("speed_m_s") = py::none(), py::kw_only(), py::arg("rule") = to_string(d.rule),
-      py::arg("reciprocating_fraction") = d.reciprocating_fraction, py::arg("allowed_alpha") = d.allowed_alpha,
-      py::arg("overbalance_driving_axles") = d.overbalance_driving_axles, py::arg("steps") = d.steps,
-      py::arg("trade_off_fractions") = d.trade_off_fractions,
+  def_balance(
+      "balance_study", [](const DrivingGear& gear, double speed, const BalanceOptions& o) { return study_balance(gear, speed, o); },
       "The gear's forces and its balancing by each of the three vertical rules (what 'railmodal balance' prints; "
       "only `rule`'s result has a trade-off).");
 }

@@ -65,6 +65,15 @@ py::array per_mode(const Modes& modes, Field field) {
   return take(std::move(values));
 }
 
+// One word per mode (its name, its kind): a list of str in Python.
+template <typename Modes, typename Field>
+std::vector<std::string> words_per_mode(const Modes& modes, Field field) {
+  std::vector<std::string> words;
+  words.reserve(modes.size());
+  for (const auto& mode : modes) words.emplace_back(field(mode));
+  return words;
+}
+
 template <typename Scalar, typename Modes, typename Field>
 py::array columns(const Modes& modes, std::size_t dofs, Field field) {
   Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic> out(dofs, modes.size());
@@ -173,16 +182,8 @@ void bind_modal_result(py::module_& m) {
       .def_property_readonly("periods_s", [](const ModalResult& r) { return per_mode(r.modes, [](const Mode& x) { return x.period_s; }); })
       .def_property_readonly("omega_rad_s", [](const ModalResult& r) { return per_mode(r.modes, [](const Mode& x) { return x.omega_rad_s; }); })
       .def_property_readonly("eigenvalues", [](const ModalResult& r) { return per_mode(r.modes, [](const Mode& x) { return x.eigenvalue; }); })
-      .def_property_readonly("names", [](const ModalResult& r) {
-        std::vector<std::string> names;
-        for (const Mode& x : r.modes) names.push_back(x.name);
-        return names;
-      })
-      .def_property_readonly("kinds", [](const ModalResult& r) {
-        std::vector<std::string> kinds;
-        for (const Mode& x : r.modes) kinds.emplace_back(to_string(x.kind));
-        return kinds;
-      })
+      .def_property_readonly("names", [](const ModalResult& r) { return words_per_mode(r.modes, [](const Mode& x) { return x.name; }); })
+      .def_property_readonly("kinds", [](const ModalResult& r) { return words_per_mode(r.modes, [](const Mode& x) { return to_string(x.kind); }); })
       .def_property_readonly("shapes", [](const ModalResult& r) {
         return columns<double>(r.modes, r.dofs.size(), [](const Mode& x) -> const Eigen::VectorXd& { return x.shape; });
       }, "(n_dofs, n_modes), mass-normalised: shapes.T @ M @ shapes = I")
@@ -250,16 +251,8 @@ void bind_damped_result(py::module_& m) {
       .def_property_readonly("decay_rates_per_s", [](const DampedModalResult& r) {
         return per_mode(r.modes, [](const DampedMode& x) { return x.decay_rate; });
       })
-      .def_property_readonly("names", [](const DampedModalResult& r) {
-        std::vector<std::string> names;
-        for (const DampedMode& x : r.modes) names.push_back(x.name);
-        return names;
-      })
-      .def_property_readonly("kinds", [](const DampedModalResult& r) {
-        std::vector<std::string> kinds;
-        for (const DampedMode& x : r.modes) kinds.emplace_back(to_string(x.kind));
-        return kinds;
-      })
+      .def_property_readonly("names", [](const DampedModalResult& r) { return words_per_mode(r.modes, [](const DampedMode& x) { return x.name; }); })
+      .def_property_readonly("kinds", [](const DampedModalResult& r) { return words_per_mode(r.modes, [](const DampedMode& x) { return to_string(x.kind); }); })
       .def_property_readonly("shapes", [](const DampedModalResult& r) {
         return columns<std::complex<double>>(r.modes, r.dofs.size(), [](const DampedMode& x) -> const Eigen::VectorXcd& { return x.shape; });
       }, "(n_dofs, n_modes) complex, φᴴMφ = 1")

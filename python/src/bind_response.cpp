@@ -151,8 +151,6 @@ void bind_sources_and_scenes(py::module_& m) {
         reader.read("half_wheelset_mass", &j.half_wheelset_mass);
         reader.read("first_joint_at", &j.first_joint_at);
         reader.finish();
-        if (!(j.rail_length > 0.0) || !(j.dip_depth >= 0.0) || j.harmonics < 1)
-          throw py::value_error("rail_joints(): rail_length > 0, dip_depth >= 0 and harmonics >= 1 are required");
         return std::shared_ptr<ExcitationSource>(make_source(j));
       },
       "Rail joints as a source; keywords as the fields of RailJoints (SI: m, N/m, kg).");
@@ -166,8 +164,6 @@ void bind_sources_and_scenes(py::module_& m) {
         reader.read("phases", &w.phases);
         reader.read("lobes", &w.lobes);
         reader.finish();
-        if (!(w.wheel_diameter > 0.0) || !(w.eccentricity >= 0.0) || w.lobes < 1)
-          throw py::value_error("wheel_eccentricity(): wheel_diameter > 0, eccentricity >= 0 and lobes >= 1 are required");
         return std::shared_ptr<ExcitationSource>(make_source(w));
       },
       "Eccentric (lobes=1) or out-of-round wheels as a source; keywords as the fields of WheelEccentricity (SI: m, "
@@ -184,8 +180,6 @@ void bind_sources_and_scenes(py::module_& m) {
         reader.read("harmonics", &f.harmonics);
         reader.read("flat_angle", &f.flat_angle);
         reader.finish();
-        if (!(f.wheel_diameter > 0.0) || !(f.depth >= 0.0) || !(f.length > 0.0) || f.harmonics < 1)
-          throw py::value_error("wheel_flat(): wheel_diameter > 0, depth >= 0, length > 0 and harmonics >= 1 are required");
         return std::shared_ptr<ExcitationSource>(make_source(f));
       },
       "A wheel flat as a source; keywords as the fields of WheelFlat (SI: m, rad).");

@@ -398,12 +398,7 @@ void bind_geometry(py::module_& m) {
       "A realisation of the track (a dict of TrackSpectrum or a Scene) by inverse real FFT; the same seed gives "
       "the same profile on every machine.");
   m.def(
-      "load_track_geometry",
-      [](const py::object& path) {
-        const std::string file = path_argument(path);
-        py::gil_scoped_release release;
-        return load_track_geometry(file);
-      },
+      "load_track_geometry", path_reader([](const std::string& file) { return load_track_geometry(file); }),
       py::arg("path"), "Measured track geometry from a CSV file; InputError with file, line and column.");
 }
 

@@ -168,8 +168,6 @@ void bind_spectrum(py::module_& m) {
 }
 
 py::list fft_check_records(const std::vector<FftCheck>& checks) {
-  // the words the CLI writes (fft_check_report.cpp)
-  static const char* const kOutcome[] = {"passed", "failed", "not excited", "not resolved", "no line"};
   py::list out;
   for (const FftCheck& c : checks)
     out.append(py::dict(py::arg("mode") = c.mode, py::arg("mode_name") = c.mode_name, py::arg("dof") = c.dof,
@@ -178,7 +176,7 @@ py::list fft_check_records(const std::vector<FftCheck>& checks) {
                         py::arg("within_resolution") = c.within_resolution,
                         py::arg("modal_amplitude_ratio") = c.modal_amplitude_ratio, py::arg("excited") = c.excited,
                         py::arg("tolerance") = c.tolerance,
-                        py::arg("outcome") = kOutcome[static_cast<int>(c.outcome)],
+                        py::arg("outcome") = to_string(c.outcome),  // the reports' words
                         py::arg("needed_duration_s") = c.needed_duration_s));
   return out;
 }

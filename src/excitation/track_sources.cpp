@@ -7,6 +7,7 @@
 
 #include "excitation/wheelsets.hpp"
 #include "railmodal/excitation.hpp"
+#include "require_valid.hpp"
 #include "shortest_text.hpp"
 
 namespace railmodal {
@@ -41,17 +42,7 @@ double delay(const std::vector<excitation::Wheelset>& sets, double x, double spe
 
 class RailJointSource final : public ExcitationSource {
  public:
-  explicit RailJointSource(const RailJoints& p) : p_(p) {
-    require(p.rail_length > 0.0, "rail joints: rail_length must be positive");
-    require(p.dip_depth >= 0.0, "rail joints: dip_depth must not be negative");
-    require(p.dip_length >= 0.0 && p.dip_length <= p.rail_length,
-            "rail joints: dip_length must lie between 0 and the rail length");
-    require(p.harmonics >= 1, "rail joints: at least one harmonic");
-    require((p.track_stiffness > 0.0) == (p.half_wheelset_mass > 0.0),
-            "rail joints: give both track_stiffness and half_wheelset_mass, or neither");
-    require(p.first_joint_at >= 0.0 && p.first_joint_at < p.rail_length,
-            "rail joints: first_joint_at must lie in [0, rail_length)");
-  }
+  explicit RailJointSource(const RailJoints& p) : p_(p) {}
   std::string kind() const override { return "rail_joints"; }
   std::string description() const override {
     std::ostringstream out;
@@ -113,11 +104,7 @@ class RailJointSource final : public ExcitationSource {
 
 class EccentricitySource final : public ExcitationSource {
  public:
-  explicit EccentricitySource(const WheelEccentricity& p) : p_(p) {
-    require(p.wheel_diameter > 0.0, "wheel eccentricity: wheel_diameter must be positive");
-    require(p.eccentricity >= 0.0, "wheel eccentricity: eccentricity must not be negative");
-    require(p.lobes >= 1, "wheel eccentricity: lobes must be at least 1");
-  }
+  explicit EccentricitySource(const WheelEccentricity& p) : p_(p) {}
   std::string kind() const override { return "wheel_eccentricity"; }
   std::string description() const override {
     std::ostringstream out;
@@ -158,14 +145,7 @@ class EccentricitySource final : public ExcitationSource {
 
 class FlatSource final : public ExcitationSource {
  public:
-  explicit FlatSource(const WheelFlat& p) : p_(p) {
-    require(p.wheel_diameter > 0.0, "wheel flat: wheel_diameter must be positive");
-    require(p.depth >= 0.0, "wheel flat: depth must not be negative");
-    require(p.length > 0.0 && p.length <= kPi * p.wheel_diameter * (1.0 + 1e-9),
-            "wheel flat: length must be positive and at most the circumference πD");
-    require(p.harmonics >= 1, "wheel flat: at least one harmonic");
-    require(p.flat_angle >= 0.0 && p.flat_angle < 2.0 * kPi, "wheel flat: flat_angle must lie in [0, 2π)");
-  }
+  explicit FlatSource(const WheelFlat& p) : p_(p) {}
   std::string kind() const override { return "wheel_flat"; }
   std::string description() const override {
     std::ostringstream out;
@@ -295,13 +275,61 @@ double meineke_hunting_speed_kmh(double wheelbase, double diagonal, double clear
   return (1.33 * wheelbase / diagonal + 0.67) * wheelbase * k / (clearance * std::sqrt(wheels));  // (267)
 }
 
+// The rules of the track and wheel sources. Each `why` begins with the field's name, which is
+// also the scene file's key: the scene reader fails at that key with the rest of the text.
+bool RailJoints::is_valid(std::string* why) const {
+  if (!(rail_length > 0.0) || !std::isfinite(rail_length))
+    return invalid(why, "rail_length must be positive and finite");
+  if (!(dip_depth >= 0.0) || !std::isfinite(dip_depth)) return invalid(why, "dip_depth must be finite and not negative");
+  if (!(dip_length >= 0.0)) return invalid(why, "dip_length must not be negative (0: the whole rail)");
+  if (dip_length > rail_length) return invalid(why, "dip_length cannot exceed the rail length");
+  if (harmonics < 1) return invalid(why, "harmonics must be at least 1");
+  if (!(track_stiffness >= 0.0) || !std::isfinite(track_stiffness))
+    return invalid(why, "track_stiffness must be finite and not negative (0: a rigid track)");
+  if (!(half_wheelset_mass >= 0.0) || !std::isfinite(half_wheelset_mass))
+    return invalid(why, "half_wheelset_mass must be finite and not negative (0: a rigid track)");
+  if ((track_stiffness > 0.0) != (half_wheelset_mass > 0.0))
+    return invalid(why, std::string(track_stiffness > 0.0 ? "half_wheelset_mass" : "track_stiffness") +
+                            " missing: the track's dynamics need both track_stiffness and half_wheelset_mass");
+  if (!(first_joint_at >= 0.0)) return invalid(why, "first_joint_at must not be negative");
+  if (!(first_joint_at < rail_length))
+    return invalid(why, "first_joint_at must be shorter than the rail length (the next joint is the first)");
+  return true;
+}
+
+bool WheelEccentricity::is_valid(std::string* why) const {
+  if (!(wheel_diameter > 0.0) || !std::isfinite(wheel_diameter))
+    return invalid(why, "wheel_diameter must be positive and finite");
+  if (!(eccentricity >= 0.0) || !std::isfinite(eccentricity))
+    return invalid(why, "eccentricity must be finite and not negative");
+  for (double phase : phases)
+    if (!std::isfinite(phase)) return invalid(why, "phases must be finite angles");
+  if (lobes < 1) return invalid(why, "lobes must be at least 1");
+  return true;
+}
+
+bool WheelFlat::is_valid(std::string* why) const {
+  if (!(wheel_diameter > 0.0) || !std::isfinite(wheel_diameter))
+    return invalid(why, "wheel_diameter must be positive and finite");
+  if (!(depth >= 0.0) || !std::isfinite(depth)) return invalid(why, "depth must be finite and not negative");
+  if (!(length > 0.0)) return invalid(why, "length must be positive");
+  // A relative 1e-9 lets a length written as πD to a file's precision be the whole revolution.
+  if (length > kPi * wheel_diameter * (1.0 + 1e-9)) return invalid(why, "length cannot exceed the wheel circumference πD");
+  if (harmonics < 1) return invalid(why, "harmonics must be at least 1");
+  if (!(flat_angle >= 0.0 && flat_angle < 2.0 * kPi)) return invalid(why, "flat_angle must lie in [0, 2π)");
+  return true;
+}
+
 std::unique_ptr<ExcitationSource> make_source(const RailJoints& joints) {
+  require_valid(joints, "rail joints: ");
   return std::make_unique<RailJointSource>(joints);
 }
 std::unique_ptr<ExcitationSource> make_source(const WheelEccentricity& eccentricity) {
+  require_valid(eccentricity, "wheel eccentricity: ");
   return std::make_unique<EccentricitySource>(eccentricity);
 }
 std::unique_ptr<ExcitationSource> make_source(const WheelFlat& flat) {
+  require_valid(flat, "wheel flat: ");
   return std::make_unique<FlatSource>(flat);
 }
 std::unique_ptr<ExcitationSource> make_source(const Hunting& hunting) {

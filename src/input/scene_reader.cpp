@@ -30,6 +30,16 @@ double read_start_angle(TableReader& t, const std::string& key) {
   return angle;
 }
 
+// A source's own rule (its is_valid), failed at the key of the field that breaks it: the
+// field's name, with which `why` begins, is the key's.
+template <class Source>
+void check_rules(TableReader& t, const Source& source) {
+  std::string why;
+  if (source.is_valid(&why)) return;
+  const size_t space = why.find(' ');
+  t.fail(why.substr(0, space), why.substr(space + 1));
+}
+
 DipShape read_shape(TableReader& t, const std::string& key) {
   const std::string word = t.optional_string(key).value_or("cosine");
   if (const auto shape = dip_shape_from_string(word)) return *shape;
@@ -46,16 +56,11 @@ std::shared_ptr<const ExcitationSource> rail_joints(TableReader& t) {
   p.dip_depth = t.positive("dip_depth", Quantity::length);
   p.shape = read_shape(t, "dip_shape");
   p.dip_length = t.optional_positive("dip_length", Quantity::length).value_or(0.0);
-  if (p.dip_length > p.rail_length) t.fail("dip_length", "cannot exceed the rail length");
   p.harmonics = t.optional_count("harmonics", 1).value_or(1);
-  if (t.has("track_stiffness") != t.has("half_wheelset_mass"))
-    t.fail(t.has("track_stiffness") ? "half_wheelset_mass" : "track_stiffness",
-           "missing: the track's dynamics need both track_stiffness and half_wheelset_mass");
   p.track_stiffness = t.optional_positive("track_stiffness", Quantity::stiffness).value_or(0.0);
   p.half_wheelset_mass = t.optional_positive("half_wheelset_mass", Quantity::mass).value_or(0.0);
   p.first_joint_at = t.optional_positive("first_joint_at", Quantity::length, true).value_or(0.0);
-  if (!(p.first_joint_at < p.rail_length))
-    t.fail("first_joint_at", "must be shorter than the rail length (the next joint is the first)");
+  check_rules(t, p);  // the dip within the rail, K and m together, the first joint on the first rail
   return make_source(p);
 }
 
@@ -65,6 +70,7 @@ std::shared_ptr<const ExcitationSource> eccentricity(TableReader& t) {
   p.eccentricity = t.positive("eccentricity", Quantity::length);
   if (t.has("phases")) p.phases = t.quantities("phases", Quantity::angle);
   p.lobes = t.optional_count("lobes", 1).value_or(1);
+  check_rules(t, p);
   return make_source(p);
 }
 
@@ -73,11 +79,10 @@ std::shared_ptr<const ExcitationSource> flat(TableReader& t) {
   p.wheel_diameter = t.positive("wheel_diameter", Quantity::length);
   p.depth = t.positive("depth", Quantity::length);
   p.length = t.optional_positive("length", Quantity::length).value_or(kPi * p.wheel_diameter);
-  if (p.length > kPi * p.wheel_diameter * (1.0 + 1e-9))
-    t.fail("length", "cannot exceed the wheel circumference πD");
   p.shape = read_shape(t, "shape");
   p.harmonics = t.optional_count("harmonics", 1).value_or(1);
   p.flat_angle = read_start_angle(t, "flat_angle");
+  check_rules(t, p);  // the flat within the wheel's circumference
   return make_source(p);
 }
 
@@ -156,9 +161,7 @@ std::shared_ptr<const ExcitationSource> driving_gear(TableReader& t, const std::
   else t.fail("gear", "missing: name the file with the [driving_gear] table (the scene has no vehicle file)");
   p.body = t.optional_string("body").value_or("body");
   p.crank_angle = read_start_angle(t, "crank_angle");
-  // Three harmonics by default: the third of the rods' Y and Z (about 1.5 kN each for the Су at
-  // 100 km/h) does not cancel between cranks at 90°, as the second does in surge and bounce.
-  p.harmonics = t.optional_count("harmonics", 1).value_or(3);
+  p.harmonics = t.optional_count("harmonics", 1).value_or(p.harmonics);  // GearExcitation's default, 3
   if (p.harmonics > 60) t.fail("harmonics", "must be at most 60");
   if (t.has("balance")) {
     const std::string word = t.string("balance");

@@ -1,7 +1,10 @@
 // Tables, units and page style shared by the report writers.
 #include "report/document_table.hpp"
 
+#include <algorithm>
+
 #include "railmodal/version.hpp"
+#include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 
 namespace railmodal::report {
@@ -30,6 +33,24 @@ void write_html_table(std::ostream& out, const Table& t) {
     out << "</tr>\n";
   }
   out << "</table>\n";
+}
+
+void write_text_table(std::ostream& out, const Table& t) {
+  std::vector<size_t> width(t.headers.size());
+  for (size_t c = 0; c < t.headers.size(); ++c) width[c] = width_of(t.headers[c]);
+  for (const auto& row : t.rows)
+    for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], width_of(row[c]));
+  const auto line = [&](const std::vector<std::string>& cells) {
+    std::string text;
+    for (size_t c = 0; c < cells.size(); ++c) {
+      const std::string fill(width[c] - width_of(cells[c]), ' ');  // ≥ 0: the column is as wide as its widest cell
+      text += "  " + (t.numeric[c] ? fill + cells[c] : cells[c] + fill);
+    }
+    while (!text.empty() && text.back() == ' ') text.pop_back();
+    out << text << "\n";
+  };
+  line(t.headers);
+  for (const auto& row : t.rows) line(row);
 }
 
 bool is_rotation(const LinearSystem& system, const std::string& label) {

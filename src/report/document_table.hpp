@@ -20,6 +20,10 @@ struct Table {
 
 void write_markdown_table(std::ostream& out, const Table& table);
 void write_html_table(std::ostream& out, const Table& table);
+/// The plain-text table of the text reports (linear and nonlinear hunting): each column as
+/// wide as its widest cell in characters (report::width_of), two spaces before every cell,
+/// numbers right-aligned, no trailing spaces.
+void write_text_table(std::ostream& out, const Table& table);
 
 /// Engineering units for one output: mm and mrad for displacements, m/s² for accelerations.
 struct Unit {

@@ -198,23 +198,6 @@ std::string verdict_word(const FftCheckResult& r) {
   return r.failed > 0 ? "FAILED" : r.checked == 0 ? "not checked" : "passed";
 }
 
-std::string outcome_word(FftCheck::Outcome o) {
-  using Outcome = FftCheck::Outcome;
-  switch (o) {
-    case Outcome::passed:
-      return "passed";
-    case Outcome::failed:
-      return "failed";
-    case Outcome::not_excited:
-      return "not excited";
-    case Outcome::not_resolved:
-      return "not resolved";
-    case Outcome::no_line:
-      return "no line";
-  }
-  return "";
-}
-
 void checks_table(std::ostream& out, const FftCheckResult& r) {
   out << "<table><tr><th>#</th><th>mode</th><th>dof</th><th>modal [Hz]</th><th>peak [Hz]</th><th>rel. error</th>"
          "<th>resolution [Hz]</th><th>check</th></tr>\n";
@@ -263,7 +246,7 @@ void write_json_check(report::JsonWriter& j, const FftCheck& c) {
   j.begin_object();
   j.member("checked", c.checked()).member("dof", c.dof).member("excited", c.excited);
   j.member("modal_amplitude_ratio", c.modal_amplitude_ratio).member("modal_hz", c.modal_hz);
-  j.member("mode", c.mode).member("mode_name", c.mode_name).member("outcome", outcome_word(c.outcome));
+  j.member("mode", c.mode).member("mode_name", c.mode_name).member("outcome", to_string(c.outcome));
   j.member("passed", c.outcome == FftCheck::Outcome::passed);
   j.member("peak_hz", c.peak_hz ? std::optional<double>(*c.peak_hz) : none);
   j.member("rel_error", c.peak_hz ? std::optional<double>(c.rel_error) : none);
@@ -309,7 +292,7 @@ void write_csv(std::ostream& out, const FftCheckResult& r) {
         << (c.peak_hz ? number_text(*c.peak_hz) : "") << "," << (c.peak_hz ? number_text(c.rel_error) : "") << ","
         << number_text(c.resolution_hz) << "," << (c.within_resolution ? "true" : "false") << ","
         << (c.excited ? "true" : "false") << "," << number_text(c.modal_amplitude_ratio) << ","
-        << number_text(c.tolerance) << "," << outcome_word(c.outcome) << "," << (c.checked() ? "true" : "false")
+        << number_text(c.tolerance) << "," << to_string(c.outcome) << "," << (c.checked() ? "true" : "false")
         << "," << (c.outcome == FftCheck::Outcome::passed ? "true" : "false") << "," << verdict_word(r) << "\n";
 }
 

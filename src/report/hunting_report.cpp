@@ -26,9 +26,9 @@ using report::fixed;
 using report::JsonWriter;
 using report::significant;
 using report::Table;
-using report::width_of;
 using report::wrapped;
 using report::write_markdown_table;
+using report::write_text_table;
 
 constexpr double kKmh = 3.6;  // m/s → km/h
 
@@ -263,26 +263,6 @@ const char* const kContactsNote =
     "contact ellipse when the coefficients were computed (\"given\": written in the vehicle file).";
 
 // ---- table (text) ----
-
-std::string pad(const std::string& text, size_t width, bool right) {
-  const std::string fill(width > width_of(text) ? width - width_of(text) : 0, ' ');
-  return right ? fill + text : text + fill;
-}
-
-void write_text_table(std::ostream& out, const Table& t) {
-  std::vector<size_t> width(t.headers.size());
-  for (size_t c = 0; c < t.headers.size(); ++c) width[c] = width_of(t.headers[c]);
-  for (const auto& row : t.rows)
-    for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], width_of(row[c]));
-  auto line = [&](const std::vector<std::string>& cells) {
-    std::string text;
-    for (size_t c = 0; c < cells.size(); ++c) text += "  " + pad(cells[c], width[c], t.numeric[c]);
-    while (!text.empty() && text.back() == ' ') text.pop_back();
-    out << text << "\n";
-  };
-  line(t.headers);
-  for (const auto& row : t.rows) line(row);
-}
 
 void write_table(std::ostream& out, const Page& p) {
   const HuntingResult& r = p.r;

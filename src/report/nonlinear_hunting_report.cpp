@@ -26,8 +26,8 @@ using report::fixed;
 using report::JsonWriter;
 using report::significant;
 using report::Table;
-using report::width_of;
 using report::wrapped;
+using report::write_text_table;
 
 constexpr double kKmh = 3.6;  // m/s → km/h
 constexpr double kMm = 1e3;   // m → mm
@@ -265,23 +265,6 @@ Table branch_table(const LimitCycleBranch& b) {
 }
 
 // ---- table (text) ----
-
-void write_text_table(std::ostream& out, const Table& t) {
-  std::vector<size_t> width(t.headers.size());
-  for (size_t c = 0; c < t.headers.size(); ++c) width[c] = width_of(t.headers[c]);
-  for (const auto& row : t.rows)
-    for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], width_of(row[c]));
-  for (size_t k = 0; k <= t.rows.size(); ++k) {
-    const auto& cells = k == 0 ? t.headers : t.rows[k - 1];
-    std::string text;
-    for (size_t c = 0; c < cells.size(); ++c) {
-      const std::string fill(width[c] - width_of(cells[c]), ' ');
-      text += "  " + (t.numeric[c] ? fill + cells[c] : cells[c] + fill);
-    }
-    while (!text.empty() && text.back() == ' ') text.pop_back();
-    out << text << "\n";
-  }
-}
 
 void write_table(std::ostream& out, const Page& p) {
   const NonlinearHuntingResult& r = p.r;

@@ -27,6 +27,7 @@ using report::fixed;
 using report::JsonWriter;
 using report::significant;
 using report::Table;
+using report::write_text_table;
 
 constexpr double kKmh = 3.6;  // m/s → km/h
 // Modes named per output: the largest shares, down to this one.
@@ -177,29 +178,6 @@ Table checks_table(const RideFftChecks& c, const RideSimulationResult& s) {
     t.rows.push_back({"(c) RMS, simulated against spectral: " + s.outputs[i].name,
                       fixed(100.0 * c.rms_difference[i], 2) + " %"});
   return t;
-}
-
-// The text table: columns padded to their widest cell.
-void write_text_table(std::ostream& out, const Table& t) {
-  std::vector<size_t> width(t.headers.size());
-  auto length = [](const std::string& s) {
-    return static_cast<size_t>(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
-  };
-  for (size_t c = 0; c < t.headers.size(); ++c) width[c] = length(t.headers[c]);
-  for (const auto& row : t.rows)
-    for (size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], length(row[c]));
-  auto write_row = [&](const std::vector<std::string>& row) {
-    std::string line;
-    for (size_t c = 0; c < row.size(); ++c) {
-      const size_t pad = width[c] - length(row[c]);
-      line += t.numeric[c] ? std::string(pad, ' ') + row[c] : row[c] + std::string(pad, ' ');
-      line += c + 1 < row.size() ? "  " : "";
-    }
-    while (!line.empty() && line.back() == ' ') line.pop_back();
-    out << "  " << line << "\n";
-  };
-  write_row(t.headers);
-  for (const auto& row : t.rows) write_row(row);
 }
 
 // "; track RMS over each band: ORE B176 low, vertical level 2.36 mm, …" (RideResult::input_rms).

@@ -16,6 +16,25 @@
 
 namespace railmodal {
 
+const char* to_string(FftCheck::Outcome outcome) {
+  using Outcome = FftCheck::Outcome;
+  switch (outcome) {
+    case Outcome::passed: return "passed";
+    case Outcome::failed: return "failed";
+    case Outcome::not_excited: return "not excited";
+    case Outcome::not_resolved: return "not resolved";
+    case Outcome::no_line: return "no line";
+  }
+  return "?";
+}
+
+std::optional<FftCheck::Outcome> fft_check_outcome_from_string(const std::string& word) {
+  using Outcome = FftCheck::Outcome;
+  for (Outcome o : {Outcome::passed, Outcome::failed, Outcome::not_excited, Outcome::not_resolved, Outcome::no_line})
+    if (word == to_string(o)) return o;
+  return std::nullopt;
+}
+
 namespace {
 
 bool names(const Scene& scene, const char* effect) {

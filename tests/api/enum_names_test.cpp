@@ -94,6 +94,12 @@ TEST(EnumNames, SimulationEventKind) {
   expect_round_trip({Kind::stick, Kind::slip, Kind::reversal, Kind::kink}, simulation_event_kind_from_string);
 }
 
+TEST(EnumNames, FftCheckOutcome) {
+  using Outcome = FftCheck::Outcome;
+  expect_round_trip({Outcome::passed, Outcome::failed, Outcome::not_excited, Outcome::not_resolved, Outcome::no_line},
+                    fft_check_outcome_from_string);
+}
+
 TEST(EnumNames, Window) {
   expect_round_trip({Window::rectangular, Window::hann, Window::flat_top}, window_from_string);
 }

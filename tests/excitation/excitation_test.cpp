@@ -230,5 +230,59 @@ TEST(Sources, RejectNonPhysicalParameters) {
   EXPECT_THROW(make_source(h), std::invalid_argument);  // no conicity
 }
 
+// The message of make_source, or "" when it makes the source.
+template <class Source>
+std::string refusal(const Source& source) {
+  try {
+    make_source(source);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// Each rule of RailJoints::is_valid and its twins, broken alone from a valid description: the
+// check names the field (the scene key the reader fails at), and make_source throws its words.
+TEST(Sources, IsValidNamesTheFieldItsRuleIsOn) {
+  RailJoints joints;
+  joints.rail_length = 12.5;
+  joints.dip_depth = 0.005;
+  std::string why;
+  EXPECT_TRUE(joints.is_valid(&why)) << why;
+  const auto joints_refusal = [&](auto change) {
+    RailJoints j = joints;
+    change(j);
+    EXPECT_FALSE(j.is_valid(nullptr));  // a null `why` is allowed
+    return refusal(j);
+  };
+  EXPECT_EQ(joints_refusal([](RailJoints& j) { j.rail_length = INFINITY; }),
+            "rail joints: rail_length must be positive and finite");
+  EXPECT_EQ(joints_refusal([](RailJoints& j) { j.dip_depth = -1e-3; }),
+            "rail joints: dip_depth must be finite and not negative");
+  EXPECT_EQ(joints_refusal([](RailJoints& j) { j.dip_length = 13.0; }),
+            "rail joints: dip_length cannot exceed the rail length");
+  EXPECT_EQ(joints_refusal([](RailJoints& j) { j.harmonics = 0; }), "rail joints: harmonics must be at least 1");
+  EXPECT_EQ(joints_refusal([](RailJoints& j) { j.half_wheelset_mass = 600.0; }),
+            "rail joints: track_stiffness missing: the track's dynamics need both track_stiffness and "
+            "half_wheelset_mass");
+  EXPECT_EQ(joints_refusal([](RailJoints& j) { j.first_joint_at = 12.5; }),
+            "rail joints: first_joint_at must be shorter than the rail length (the next joint is the first)");
+
+  WheelEccentricity eccentric;
+  eccentric.wheel_diameter = 0.95;
+  eccentric.eccentricity = 1e-3;
+  EXPECT_TRUE(eccentric.is_valid(&why)) << why;
+  eccentric.phases = {0.0, NAN};
+  EXPECT_EQ(refusal(eccentric), "wheel eccentricity: phases must be finite angles");
+
+  WheelFlat flat;
+  flat.wheel_diameter = 0.95;
+  flat.depth = 1e-3;
+  flat.length = 3.14159265358979323846 * 0.95;  // the whole revolution, as the reader's default
+  EXPECT_TRUE(flat.is_valid(&why)) << why;
+  flat.flat_angle = 2.0 * 3.14159265358979323846;
+  EXPECT_EQ(refusal(flat), "wheel flat: flat_angle must lie in [0, 2π)");
+}
+
 }  // namespace
 }  // namespace railmodal::test

@@ -99,11 +99,15 @@ std::string gear_scene(const std::string& source_keys) {
                                                  "body = \"frame\"\n" + source_keys);
 }
 
-// Without `harmonics` the source takes three: the third does not cancel (docs/scenes.md).
+// Without `harmonics` the source takes three: the third does not cancel (docs/scenes.md); a
+// GearExcitation built in code takes the same default as the scene.
 TEST(GearSource, DefaultsToThreeHarmonics) {
   const Scene scene = load_scene(gear_scene(""));
   ASSERT_EQ(scene.sources.size(), 1u);
   EXPECT_EQ(scene.sources[0]->harmonic_count(), 3);
+  GearExcitation in_code;
+  in_code.gear = load_driving_gear(std::string(RAILMODAL_DATA_DIR) + "/locomotives/su.toml");
+  EXPECT_EQ(make_source(in_code)->harmonic_count(), 3);
 }
 
 // balance_fraction balances that share of the reciprocating masses, as `balance --fraction`:

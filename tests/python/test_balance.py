@@ -152,3 +152,5 @@ def test_the_gear_as_an_excitation_is_the_scenes_source(gear):
     assert not np.array_equal(first[0].amplitudes, want[0].amplitudes)
     with pytest.raises(ValueError):
         railmodal.gear_excitation(gear, body="frame", harmonics=0)
+    # Without `harmonics`, the binding takes GearExcitation's default, three, as a scene does.
+    assert railmodal.gear_excitation(gear, body="frame").harmonic_count == 3

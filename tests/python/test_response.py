@@ -141,5 +141,11 @@ def test_wheel_sources_run_at_the_wheels_turning_frequency():
     assert flat.frequency_hz(30.0) == pytest.approx(turning, rel=1e-14) and flat.harmonic_count == 4
     with pytest.raises(TypeError, match="wheel_flat\\(\\): unknown option 'lenght'"):
         railmodal.wheel_flat(wheel_diameter=0.95, depth=1e-3, lenght=0.06)
-    with pytest.raises(ValueError):
+    # The library's own rules (WheelEccentricity::is_valid and its twins), as the scene reader
+    # and a C++ user meet them.
+    with pytest.raises(ValueError, match="^wheel eccentricity: wheel_diameter must be positive and finite$"):
         railmodal.wheel_eccentricity(wheel_diameter=0.0, eccentricity=1e-3)
+    with pytest.raises(ValueError, match="^wheel flat: length cannot exceed the wheel circumference πD$"):
+        railmodal.wheel_flat(wheel_diameter=0.95, depth=1e-3, length=3.0)
+    with pytest.raises(ValueError, match="^rail joints: half_wheelset_mass missing: the track's dynamics need both"):
+        railmodal.rail_joints(rail_length=12.5, dip_depth=0.005, track_stiffness=5e7)

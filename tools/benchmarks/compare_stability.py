@@ -21,7 +21,14 @@ matrices A(V) and does the same work as a competent numpy/scipy user would:
 It checks that both sides agree (the least-damped ζ at every speed and the critical speed) and
 prints the times and ratios.
 
-    /usr/bin/python3 tools/benchmarks/compare_stability.py [--repeats 5] [--driver PATH]
+TIMING. Interleaved rounds (side_by_side.py): in each round the C++ driver runs once (reporting
+the median of its own --inner repeats) and each numpy/scipy contender is timed as the median of
+--inner calls, the order of the two sides alternating from round to round; the ratios are formed
+within each round. Reported: the medians over the rounds with their spread (IQR and range), in
+processor time (what a shared, loaded machine still measures fairly) and in wall time, with the
+load average.
+
+    /usr/bin/python3 tools/benchmarks/compare_stability.py [--rounds 7] [--inner 5] [--driver PATH]
 
 Needs Debian's python3-numpy and python3-scipy (for /usr/bin/python3) and a build with
 benchmarks.
@@ -34,6 +41,10 @@ import sys
 import tempfile
 import time
 
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from side_by_side import Rounds  # noqa: E402
+
 try:
     import numpy as np
     import scipy.linalg
@@ -45,8 +56,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 
 
 def median_seconds(f, repeats):
-    """Medians of the wall time and of the processor time (all threads; what a shared, loaded
-    machine still measures fairly), and the result."""
+    """Medians of the wall time and of the processor time (all threads) of `repeats` calls of f,
+    and the result."""
     wall, cpu = [], []
     result = None
     for _ in range(repeats):
@@ -151,43 +162,82 @@ def critical_scipy(model, bracket, rtol):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--repeats", type=int, default=5)
+    parser.add_argument("--rounds", type=int, default=7)
+    parser.add_argument("--inner", type=int, default=5, help="repeats per side within a round (median)")
     parser.add_argument("--driver", default=os.path.join(ROOT, "build", "tools", "benchmarks", "stability_timing"))
     args = parser.parse_args()
     if not os.access(args.driver, os.X_OK):
         sys.exit(f"compare_stability.py: error: {args.driver} is missing; build with benchmarks (bash tools/test.sh)")
-    with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, "stability.json")
-        run = subprocess.run([args.driver, path, str(max(args.repeats, 11))], check=True, capture_output=True, text=True)
-        times = dict(line.split() for line in run.stdout.splitlines())
-        with open(path) as f:
-            j = json.load(f)
+    tmp = tempfile.TemporaryDirectory()
+    path = os.path.join(tmp.name, "stability.json")
+    ours = {}
+
+    def run_driver():
+        run = subprocess.run([args.driver, path, str(args.inner)], check=True, capture_output=True, text=True)
+        ours.update({k: float(v) for k, v in (line.split() for line in run.stdout.splitlines())})
+
+    run_driver()  # the matrices and railmodal's results, for the numpy side and the check
+    with open(path) as f:
+        j = json.load(f)
     model = Model(j)
     V = np.array(j["speeds"])
-    scipy_s, zeta_scipy = median_seconds(lambda: locus_scipy(model, V), args.repeats)
-    batched_s, zeta_batched = median_seconds(lambda: locus_numpy_batched(model, V), args.repeats)
-    critical_s, critical = median_seconds(lambda: critical_scipy(model, j["critical_bracket"], j["relative_tolerance"]),
-                                          args.repeats)
-    ours = np.array(j["least_damped_zeta"])
-    t = {k: float(v) for k, v in times.items()}
-    print(f"root locus: {V.size} speeds, {model.n} DOFs + {model.m} series dampers = {model.size} states")
-    print("                                          wall (ms)   CPU (ms)   ratio to railmodal, 2 threads (wall / CPU)")
-    print(f"  railmodal, 1 thread                   {t['locus_1_thread_s'] * 1e3:9.1f}  {t['locus_1_thread_cpu_s'] * 1e3:9.1f}")
-    print(f"  railmodal, 2 threads                  {t['locus_2_threads_s'] * 1e3:9.1f}  {t['locus_2_threads_cpu_s'] * 1e3:9.1f}")
-    for label, (wall, cpu), zeta in (("scipy.linalg.eig per speed + tracking", scipy_s, zeta_scipy),
-                                     ("numpy.linalg.eig batched + tracking  ", batched_s, zeta_batched)):
-        print(f"  {label} {wall * 1e3:9.1f}  {cpu * 1e3:9.1f}   {wall / t['locus_2_threads_s']:5.1f}x / "
-              f"{cpu / t['locus_2_threads_cpu_s']:5.1f}x   max |Δζ| {np.max(np.abs(zeta - ours)):.1e}")
-    print(f"critical speed to a relative {j['relative_tolerance']:g} (coarse grid of 10 speeds + Brent):")
-    print(f"  railmodal                             {t['critical_speed_s'] * 1e3:9.2f}  {t['critical_speed_cpu_s'] * 1e3:9.2f}"
-          f"   {j['critical_speed'] * 3.6:.9f} km/h")
-    print(f"  scipy brentq on eigvals               {critical_s[0] * 1e3:9.2f}  {critical_s[1] * 1e3:9.2f}"
-          f"   {critical * 3.6:.9f} km/h   {critical_s[0] / t['critical_speed_s']:5.1f}x / "
-          f"{critical_s[1] / t['critical_speed_cpu_s']:5.1f}x   relative difference {abs(critical / j['critical_speed'] - 1):.1e}")
+    results = {}
+
+    def numpy_side(name, f):
+        (wall, cpu), results[name] = median_seconds(f, args.inner)
+        return wall, cpu
+
+    # Each contender gives (wall, cpu) for one round; railmodal's three come from one process.
+    theirs = {
+        "scipy.linalg.eig per speed + tracking": lambda: numpy_side("scipy", lambda: locus_scipy(model, V)),
+        "numpy.linalg.eig batched + tracking": lambda: numpy_side("batched", lambda: locus_numpy_batched(model, V)),
+        "critical speed, scipy brentq on eigvals": lambda: numpy_side(
+            "critical", lambda: critical_scipy(model, j["critical_bracket"], j["relative_tolerance"])),
+    }
+    mine = {"railmodal, 1 thread": "locus_1_thread", "railmodal, 2 threads": "locus_2_threads",
+            "critical speed, railmodal": "critical_speed"}
+    names = list(mine) + list(theirs)
+    cpu, wall = Rounds({n: None for n in names}), Rounds({n: None for n in names})
+    load_before = os.getloadavg()[0]
+    for r in range(args.rounds):
+        for side in (("mine", "theirs") if r % 2 == 0 else ("theirs", "mine")):
+            if side == "mine":
+                run_driver()
+                for name, key in mine.items():
+                    wall.times[name].append(ours[key + "_s"])
+                    cpu.times[name].append(ours[key + "_cpu_s"])
+            else:
+                for name, f in theirs.items():
+                    w, c = f()
+                    wall.times[name].append(w)
+                    cpu.times[name].append(c)
+    tmp.cleanup()
+    ours_zeta = np.array(j["least_damped_zeta"])
+    print(f"root locus: {V.size} speeds, {model.n} DOFs + {model.m} series dampers = {model.size} states; "
+          f"{args.rounds} interleaved rounds, each side the median of {args.inner} runs; load average "
+          f"{load_before:.1f} before and {os.getloadavg()[0]:.1f} after, on {os.cpu_count()} cores")
+    print("processor time, median (IQR, range):")
+    for name in names:
+        print(f"  {name:40s} {cpu.describe_time(name)}")
+    print("wall time, median (IQR, range):")
+    for name in names:
+        print(f"  {name:40s} {wall.describe_time(name)}")
+    print("ratios of processor time within each round:")
+    for slower, faster in (("scipy.linalg.eig per speed + tracking", "railmodal, 2 threads"),
+                           ("numpy.linalg.eig batched + tracking", "railmodal, 2 threads"),
+                           ("scipy.linalg.eig per speed + tracking", "railmodal, 1 thread"),
+                           ("numpy.linalg.eig batched + tracking", "railmodal, 1 thread"),
+                           ("critical speed, scipy brentq on eigvals", "critical speed, railmodal")):
+        print(f"  {slower} / {faster}: {cpu.describe_ratio(slower, faster)}")
+    critical = results["critical"]
+    print(f"agreement: max |Δζ| {np.max(np.abs(results['scipy'] - ours_zeta)):.1e} (scipy loop), "
+          f"{np.max(np.abs(results['batched'] - ours_zeta)):.1e} (batched); critical speed railmodal "
+          f"{j['critical_speed'] * 3.6:.9f} km/h, scipy {critical * 3.6:.9f} km/h, relative difference "
+          f"{abs(critical / j['critical_speed'] - 1):.1e}")
     # Agreement: ζ from Eigen's and LAPACK's QR of the same matrices agrees to round-off (1e-9
     # leaves room for the condition of the least-damped root); the critical speeds to twice the
     # tolerance each side was refined to.
-    if np.max(np.abs(zeta_scipy - ours)) > 1e-9 or abs(critical / j["critical_speed"] - 1) > 2e-8:
+    if np.max(np.abs(results["scipy"] - ours_zeta)) > 1e-9 or abs(critical / j["critical_speed"] - 1) > 2e-8:
         sys.exit("compare_stability.py: error: railmodal and scipy disagree")
 
 

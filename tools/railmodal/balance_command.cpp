@@ -21,10 +21,6 @@ struct BalanceCommandOptions {
   std::string output = "-";
 };
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 // A number in [0, 1], as 0.3 or 30%.
 double read_share(const std::string& text, const std::string& option) {
   const bool percent = !text.empty() && text.back() == '%';
@@ -77,8 +73,7 @@ int run(const BalanceCommandOptions& o) {
       if (!(speed > 0.0) || !std::isfinite(speed)) throw UsageError("--speed must be above zero, got '" + o.speed + "'");
     }
   } catch (const UsageError& e) {
-    std::cerr << "railmodal: error: " << e.what() << "\nRun 'railmodal balance --help' for usage.\n";
-    return kUsage;
+    return usage_error("balance", e.what());
   }
   try {
     OutputFiles outputs;
@@ -94,9 +89,8 @@ int run(const BalanceCommandOptions& o) {
     write_balance(out, study, format, provenance_of({o.locomotive}));
     outputs.commit();
     return kSuccess;
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return kInput;
+  } catch (...) {
+    return exit_of_error("balance", o.locomotive);
   }
 }
 

@@ -3,12 +3,30 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <stdexcept>
+#include <string>
 
 namespace railmodal::cli {
 
 /// Exit codes (docs/product: 0 success, 2 usage, 3 input, 4 numerical, 5 output, 1 internal).
 // kCheckFailed: the run and its report are complete, and the check they report failed (fft-check).
 enum ExitCode { kSuccess = 0, kInternal = 1, kUsage = 2, kInput = 3, kNumerical = 4, kOutput = 5, kCheckFailed = 6 };
+
+/// An option the command line gives wrongly, found by the command rather than by CLI11 (exit kUsage).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// Prints `message` as a usage error of `command` ("railmodal: error: ...", then where its help
+/// is) and returns kUsage.
+int usage_error(const std::string& command, const std::string& message);
+
+/// The exit of a command's run that ended in an exception, called in its `catch (...)`: rethrows
+/// the exception being handled, prints what it says and returns its code. An InputError prints
+/// its own message, which names file, line, column and key (kInput); a NumericalError is blamed
+/// on `blamed`, the file being analysed when it was thrown (kNumerical); a UsageError is one of
+/// `command` (kUsage). Anything else (an OutputError, an internal error) goes on to main().
+int exit_of_error(const std::string& command, const std::string& blamed);
 
 /// Registers `modes` on the app; the returned function runs it after parsing.
 std::function<int()> add_modes_command(CLI::App& app);

@@ -108,9 +108,8 @@ int run(const CompareOptions& o) {
       write_ranked(out, study, merging ? merged_results(study, o.merge) : evaluate_study(study, evaluation), format);
     outputs.commit();
     return kSuccess;
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return kInput;
+  } catch (...) {
+    return exit_of_error("compare", o.study);
   }
 }
 

@@ -38,8 +38,7 @@ std::string read_spelling(CriticalSpeedCommandOptions* o) {
 
 int run(CriticalSpeedCommandOptions o) {
   if (const std::string problem = read_spelling(&o); !problem.empty()) {
-    std::cerr << "railmodal: error: " << problem << "\nRun 'railmodal critical-speed --help' for usage.\n";
-    return kUsage;
+    return usage_error("critical-speed", problem);
   }
   const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   std::string current = o.scene;  // the file an error without a location belongs to
@@ -82,12 +81,8 @@ int run(CriticalSpeedCommandOptions o) {
     write_critical_speed_report(out, study, format, provenance_of({o.scene, scene.vehicle_file}));
     outputs.commit();
     return kSuccess;
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return kInput;
-  } catch (const NumericalError& e) {
-    std::cerr << current << ": error: numerical failure: " << e.what() << "\n";
-    return kNumerical;
+  } catch (...) {
+    return exit_of_error("critical-speed", current);
   }
 }
 

@@ -88,12 +88,8 @@ int run(const HuntingCommandOptions& o) {
       std::cerr << o.scene << ": warning: the nonlinear critical speed is not converged (see the report's "
                 << "convergence section)\n";
     return kSuccess;
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return kInput;
-  } catch (const NumericalError& e) {
-    std::cerr << current << ": error: numerical failure: " << e.what() << "\n";
-    return kNumerical;
+  } catch (...) {
+    return exit_of_error("hunting", current);
   }
 }
 

@@ -30,11 +30,6 @@ struct ModesOptions {
   double shift = std::numeric_limits<double>::quiet_NaN();  // ARPACK's σ, 1/s²; NaN: automatic
 };
 
-int usage_error(const std::string& message) {
-  std::cerr << "railmodal: error: " << message << "\nRun 'railmodal modes --help' for usage.\n";
-  return kUsage;
-}
-
 // What the command was given is either a vehicle or matrices; "" if that is fine.
 std::string input_problem(const ModesOptions& o) {
   const bool matrices = !o.mass.empty() || !o.stiffness.empty() || !o.damping.empty();
@@ -114,9 +109,9 @@ int run_damped(const ModesOptions& o, bool matrices, OutputFormat format, std::o
 }
 
 int run(const ModesOptions& o) {
-  if (const std::string problem = input_problem(o); !problem.empty()) return usage_error(problem);
+  if (const std::string problem = input_problem(o); !problem.empty()) return usage_error("modes", problem);
   if (o.damped && (o.solver == "arpack" || o.modes > 0 || !std::isnan(o.shift)))
-    return usage_error(
+    return usage_error("modes",
         "--damped solves every mode densely; --solver arpack, --modes and --shift apply to undamped modes");
   const bool matrices = o.file.empty();
   const std::string source = matrices ? o.mass + ", " + o.stiffness : o.file;  // for numerical errors
@@ -148,14 +143,10 @@ int run(const ModesOptions& o) {
     write_modes(out, title, result, format);
     outputs.commit();
     return kSuccess;
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return kInput;
-  } catch (const NumericalError& e) {
-    std::cerr << source << ": error: numerical failure: " << e.what() << "\n";
-    return kNumerical;
   } catch (const std::invalid_argument& e) {  // --modes beyond what ARPACK can give, --shift for dense
-    return usage_error(e.what());
+    return usage_error("modes", e.what());
+  } catch (...) {
+    return exit_of_error("modes", source);
   }
 }
 

@@ -19,11 +19,6 @@ struct RideCommandOptions {
   std::string output = "-";
 };
 
-// Thrown for an option the command line gives wrongly: a usage error (exit 2).
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 // --speeds, read before any file (a usage error, exit 2); empty: not given.
 std::vector<double> command_line_speeds(const RideCommandOptions& o) {
   if (o.speeds.empty()) return {};
@@ -104,8 +99,7 @@ int run(const RideCommandOptions& o) {
   try {
     speeds = command_line_speeds(o);
   } catch (const UsageError& e) {
-    std::cerr << "railmodal: error: " << e.what() << "\nRun 'railmodal ride --help' for usage.\n";
-    return kUsage;
+    return usage_error("ride", e.what());
   }
   try {
     OutputFiles files;
@@ -155,12 +149,8 @@ int run(const RideCommandOptions& o) {
                time_domain && time_domain->checks ? &*time_domain->checks : nullptr);
     files.commit();
     return ride_exit(o.scene, result);
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return kInput;
-  } catch (const NumericalError& e) {
-    std::cerr << current << ": error: numerical failure: " << e.what() << "\n";
-    return kNumerical;
+  } catch (...) {
+    return exit_of_error("ride", current);
   }
 }
 

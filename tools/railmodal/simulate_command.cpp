@@ -103,12 +103,8 @@ int run(const SimulateOptions& o, bool check) {
     const std::optional<FftCheckResult> result = write_run(o, check, scene, vehicle, text, spectra);
     outputs.commit();
     return result ? check_exit(o.scene, *result) : kSuccess;
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return kInput;
-  } catch (const NumericalError& e) {
-    std::cerr << o.scene << ": error: numerical failure: " << e.what() << "\n";
-    return kNumerical;
+  } catch (...) {
+    return exit_of_error(check ? "fft-check" : "simulate", o.scene);
   }
 }
 

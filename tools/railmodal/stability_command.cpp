@@ -30,11 +30,6 @@ struct StabilityOptions {
   std::string output = "-";
 };
 
-// Thrown for an option the command line gives wrongly: main prints it as a usage error.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 // `why` says what the value must be above zero for.
 double speed_of(const std::string& text, const std::string& option, const std::string& why) {
   double speed = 0.0;
@@ -120,8 +115,7 @@ int run(const StabilityOptions& o) {
   try {
     options = hunting_options(o);
   } catch (const UsageError& e) {
-    std::cerr << "railmodal: error: " << e.what() << "\nRun 'railmodal stability --help' for usage.\n";
-    return kUsage;
+    return usage_error("stability", e.what());
   }
   try {
     OutputFiles outputs;
@@ -148,12 +142,8 @@ int run(const StabilityOptions& o) {
     write_hunting_stability(out, result, format, vehicle.name, provenance_of({o.vehicle}));
     outputs.commit();
     return kSuccess;
-  } catch (const InputError& e) {
-    std::cerr << e.what() << "\n";
-    return kInput;
-  } catch (const NumericalError& e) {
-    std::cerr << o.vehicle << ": error: numerical failure: " << e.what() << "\n";
-    return kNumerical;
+  } catch (...) {
+    return exit_of_error("stability", o.vehicle);
   }
 }
 
