@@ -70,7 +70,8 @@ struct RideOutput {
     element_force,
     /// a wheelset's wheel–rail force along `axis`, N, the sum of both wheels, up on the
     /// wheelset: the forces of the elements standing on it plus its mass times the rail's
-    /// acceleration. Vertical only for now (the lateral one needs the creep forces).
+    /// acceleration (vertical); laterally the creep contact's force (with the wheelsets' lateral
+    /// motion free; frequency domain only); longitudinally refused (zero in the linear contact).
     wheel_rail_force,
   };
   std::string name;  ///< for reports: "floor over front bogie, vertical"; unique within a request

@@ -84,6 +84,12 @@ RideOutput read_output(TableReader& t, size_t k, std::set<std::string>* names,
   } else {
     // A wheel–rail force names its wheelset's body; the element outputs an element.
     const char* key = out.kind == RideOutput::Kind::wheel_rail_force ? "wheelset" : "element";
+    // The linear contact's two longitudinal creep forces are equal and opposite: their sum on the
+    // wheelset, the output, would be a silent zero (docs/ride.md, "The wheel–rail force across
+    // the track").
+    if (out.kind == RideOutput::Kind::wheel_rail_force && out.axis == RideAxis::longitudinal)
+      t.fail("axis", "a longitudinal wheel-rail force is zero in the linear contact (the two wheels' longitudinal "
+                     "creep forces are equal and opposite); give lateral or vertical");
     out.element = t.string(key);
     (*places)[at + "element"] = t.place(key);
   }

@@ -45,8 +45,18 @@ void check_ride_output(const Scene& scene, const LinearSystem& system, const Rid
             "the vehicle has no body '" + o.body + "' (" + list(v.bodies, [](const Body& b) { return b.name; }) + ")");
   }
   if (o.kind == RideOutput::Kind::wheel_rail_force) {
-    for (const Wheelset& w : v.wheelsets)
-      if (w.body == o.element) return;
+    for (const Wheelset& w : v.wheelsets) {
+      if (w.body != o.element) continue;
+      if (o.axis != RideAxis::lateral) return;
+      // The lateral one is the creep contact's, which the ride assembles with the wheelset's
+      // lateral motion free (docs/ride.md, "The wheel–rail force across the track").
+      for (const Dof& d : system.dofs)
+        if (d.motion == Motion::lateral && v.bodies[d.body].name == w.body) return;
+      fail_at(scene, at + "element", at + "wheelset",
+              "the lateral wheel-rail force of wheelset '" + w.body + "' is the creep contact's, which needs the "
+              "wheelsets' lateral and yaw motions: give scene.dofs = \"all\" or \"lateral\" (this scene's: '" +
+                  to_string(scene.dofs) + "')");
+    }
     fail_at(scene, at + "element", at + "wheelset",
             "the vehicle has no wheelset on a body '" + o.element + "' (wheelsets: " +
                 list(v.wheelsets, [](const Wheelset& w) { return w.body; }) + ")");

@@ -52,7 +52,22 @@ struct Problem {
   // With wheelsets moving laterally: the creep contact, whose terms depend on speed (so does
   // every speed's own receptances).
   std::optional<ride::CreepContact> contact;
+  bool contact_forces = false;  // a lateral wheel–rail force among the outputs (its map depends on speed)
+  std::string track_inputs;     // "12 track inputs (…)" for summary.method
 };
+
+// How many track inputs the solve takes, and of which kind when the contact adds its own (the
+// wheelsets' alignment and the rails' roll, ride_contact.hpp).
+std::string input_count_text(const LinearSystem& system) {
+  int elements = 0, alignment = 0, roll = 0;
+  for (const TrackInput& t : system.track_inputs)
+    (t.element >= 0 ? elements : t.element == ride::kAlignmentInput ? alignment : roll) += 1;
+  const std::string all = std::to_string(system.track_inputs.size()) + " track inputs";
+  if (alignment + roll == 0) return all;
+  return all + " (" + std::to_string(elements) + " under the elements, " + std::to_string(alignment) +
+         " wheelsets' alignment through the contact" +
+         (roll ? ", " + std::to_string(roll) + " wheelsets' roll with the rails through the contact" : std::string()) + ")";
+}
 
 // A mode no damper acts on (the series dampers included).
 bool undamped(const LinearSystem& system, const Mode& mode) {
@@ -119,12 +134,13 @@ struct SpeedOutcome {
 
 // ∫|D_c|²G_c df summed over the components: D_c(ω) = Σ_terms (iω)^q t(ω)·u_{c,i}·e^{−iωτ_i}, the
 // output's direct track terms with the inputs' delays (RideOutputAtSpeed::direct_variance).
-double direct_variance(const Problem& p, const ride::OutputMap& map, const ride::SpeedSpectra& sp,
-                       const std::vector<ride::BandWeights>& bands, double speed) {
+// `system` is the speed's (with the contact's own inputs after the elements', at their axles).
+double direct_variance(const Problem& p, const LinearSystem& system, const ride::OutputMap& map,
+                       const ride::SpeedSpectra& sp, const std::vector<ride::BandWeights>& bands, double speed) {
   if (map.inputs.empty()) return 0.0;
-  const std::vector<TrackInput>& inputs = p.system->track_inputs;
-  double front = inputs.front().point.x();
-  for (const TrackInput& t : inputs) front = std::max(front, t.point.x());
+  const std::vector<TrackInput>& inputs = system.track_inputs;
+  double front = p.system->track_inputs.front().point.x();
+  for (const TrackInput& t : p.system->track_inputs) front = std::max(front, t.point.x());
   double sum = 0.0;
   for (size_t c = 0; c < p.components.size(); ++c)
     for (Eigen::Index k = 0; k < p.grid.size(); ++k) {
@@ -267,8 +283,11 @@ SpeedOutcome solve_speed(const Problem& p, double speed) {
   }
   const LinearSystem system =
       friction_damping.empty() ? base : response::with_element_vertical_dampers(base, friction_damping);
-  const std::vector<ride::OutputMap> maps =
-      friction_damping.empty() ? p.maps : ride::output_maps(system, *p.outputs, friction_damping);
+  // The contact's wheel–rail forces depend on speed (C_c/V, V·G): their maps are rebuilt here.
+  const ride::CreepContact* contact = p.contact ? &*p.contact : nullptr;
+  const std::vector<ride::OutputMap> maps = friction_damping.empty() && !p.contact_forces
+                                                ? p.maps
+                                                : ride::output_maps(system, *p.outputs, friction_damping, contact, speed);
   const bool shared = friction_damping.empty() && !p.contact;
   const ride::Receptances own = shared ? ride::Receptances{} : receptances_of(p, system, maps);
   const ride::SpeedSpectra sp = ride::speed_spectra(system, shared ? p.shared : own, p.components, p.grid, speed, bands);
@@ -291,7 +310,7 @@ SpeedOutcome solve_speed(const Problem& p, double speed) {
     }
     s.at.outputs.push_back(output_at_speed(p, (*p.outputs)[o], sp.outputs[o], sp.psd[o], sp.modal_variance[o], bands,
                                            &grid_error[o]));
-    s.at.outputs.back().direct_variance = direct_variance(p, maps[o], sp, bands, speed);
+    s.at.outputs.back().direct_variance = direct_variance(p, system, maps[o], sp, bands, speed);
   }
   set_round_off_apart(*p.outputs, grid_error, &s);
   for (const std::string& d : driven)
@@ -308,11 +327,17 @@ Problem prepare(const LinearSystem& system, const TrackIrregularitySpectra& trac
   p.system = &system;
   p.outputs = &outputs;
   p.options = &options;
-  if (ride::acts_through_contact(system)) p.contact = ride::creep_contact(system);
+  if (ride::acts_through_contact(system))
+    p.contact = ride::creep_contact(system, options.contact_half_spacing, track.cross_level.has_value());
   // With the contact, the wheelsets' own track inputs follow the elements' (with_creep).
-  p.components = ride::track_components(p.contact ? ride::with_creep(system, *p.contact, options.speeds.front()) : system,
-                                        track, options.contact_half_spacing, options.rolling_radius);
-  p.maps = ride::output_maps(system, outputs, {});  // every output names something of the system, or throws
+  const LinearSystem first = p.contact ? ride::with_creep(system, *p.contact, options.speeds.front()) : LinearSystem();
+  const LinearSystem& at_first = p.contact ? first : system;
+  p.components = ride::track_components(at_first, track, options.contact_half_spacing, options.rolling_radius);
+  // Every output names something of the system, or throws.
+  p.maps = ride::output_maps(at_first, outputs, {}, p.contact ? &*p.contact : nullptr, options.speeds.front());
+  for (const RideOutput& o : outputs)
+    p.contact_forces = p.contact_forces || (o.kind == RideOutput::Kind::wheel_rail_force && o.axis == RideAxis::lateral);
+  p.track_inputs = input_count_text(at_first);
   ModalOptions modal;
   modal.solver = ModalSolver::dense;
   p.modes = solve_modes(system, modal);
@@ -481,7 +506,7 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
       (options.modes > 0 ? "modal superposition over the " + std::to_string(p.truncation.cols()) + " lowest modes"
                          : std::string("direct solve of K − ω²M + iωC")) +
       " at each of " + std::to_string(p.grid.size()) + " grid frequencies for all " +
-      std::to_string(system.track_inputs.size()) + " track inputs at once; per speed the inputs' delays x/V" +
+      p.track_inputs + " at once; per speed the inputs' delays x/V" +
       (p.contact ? "; with the wheel–rail creep contact (linear, Kalker) assembled at each speed" : "");
   for (const SpeedOutcome& s : speeds) {
     result.speeds.push_back(s.at);
@@ -504,10 +529,21 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
   if (track.cross_level && !ride::knows_rolling_radius(system, options.rolling_radius) && reaches_laterally(p))
     result.notes.push_back("cross-level rolls the rails about the axle plane: the vehicle has no wheelset to give "
                            "the rail top's depth r0 below it; give it as [ride] rolling_radius");
-  if (p.contact)
+  if (p.contact && !p.contact->cross_level)
     result.notes.push_back("the wheelsets run on the linear creep contact at each speed (alignment acts through it, "
                            "docs/ride.md \"Lateral ride through the creep forces\"): no modal shares, since the modes "
                            "with the contact change with speed");
+  if (p.contact && p.contact->cross_level)
+    result.notes.push_back("the wheelsets run on the linear creep contact at each speed (alignment and cross-level act "
+                           "through it, docs/ride.md \"Lateral ride through the creep forces\" and \"Cross-level through "
+                           "the contact\"): no modal shares, since the modes with the contact change with speed");
+  for (const RideOutput& o : outputs)
+    if (o.kind == RideOutput::Kind::wheel_rail_force && o.axis == RideAxis::lateral) {
+      result.notes.push_back("lateral wheel–rail forces are the rails' on the wheelset in the inertial frame (creep, "
+                             "gravitational stiffness, the normal loads leaning with the rails' roll θ); across the "
+                             "rolled track plane add W·θ (docs/ride.md, \"The wheel–rail force across the track\")");
+      break;
+    }
   if (options.modes > 0)
     result.notes.push_back("H(f) by modal superposition over the " + std::to_string(p.truncation.cols()) +
                            " lowest modes: the response misses the higher modes' share (docs/accuracy.md, "

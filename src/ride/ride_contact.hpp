@@ -4,9 +4,12 @@
 // measured from the rail (docs/ride.md, "Lateral ride through the creep forces").
 #pragma once
 
+#include <cstddef>
+#include <string>
 #include <vector>
 
 #include "railmodal/linear_system.hpp"
+#include "railmodal/ride.hpp"
 #include "railmodal/wheel_rail.hpp"
 
 namespace railmodal::ride {
@@ -21,6 +24,15 @@ struct CreepContact {
   std::vector<int> lateral;
   std::vector<double> x;
   std::vector<double> relative_share;
+  /// With cross-level (creep_contact's `cross_level`): per wheelset, its yaw DOF, r0, W, the
+  /// spin term I_y/r0, the rails' roll per metre of cross-level 1/(2b), and the generalised
+  /// forces of the elements that hold it per radian of its roll with the rails (stiff, viscous):
+  /// an element attached at height h above the axle plane moves there sideways by −θ·h.
+  bool cross_level = false;
+  std::vector<int> yaw;
+  std::vector<double> lever;  ///< x_axle − x_ref (wheelset_dofs)
+  std::vector<double> rolling_radius, axle_load, spin_term, roll_per_cross_level;
+  std::vector<Eigen::VectorXd> suspension_roll_stiff, suspension_roll_viscous;
 };
 
 /// Whether the vehicle's wheelsets move laterally in `system` (wheelsets, and their lateral DOF
@@ -28,14 +40,38 @@ struct CreepContact {
 /// stand on their suspension alone.
 bool acts_through_contact(const LinearSystem& system);
 
-/// The contact of `system`'s wheelsets (contact_matrices; its errors name the wheelset).
-CreepContact creep_contact(const LinearSystem& system);
+/// The contact of `system`'s wheelsets (contact_matrices; its errors name the wheelset). With
+/// `cross_level`, also what the rails' roll θ = Δz/(2b) does through it (b: `contact_half_spacing`
+/// when positive, else the wheelset's l0, the convention of cross_level_directions).
+CreepContact creep_contact(const LinearSystem& system, double contact_half_spacing = 0.0, bool cross_level = false);
 
 /// `system` at speed V with the contact: damping + C_c/V + V·G, stiffness + K_c, and one track
 /// input per wheelset appended after the elements' (element = −1, at its axle), whose lateral
 /// column carries the alignment's generalised force: K_c·e_y per metre of y_t, and
-/// (ρ·C_c/V + V·G)·e_y per m/s of ẏ_t (e_y the wheelset's lateral DOF).
+/// (ρ·C_c/V + V·G)·e_y per m/s of ẏ_t (e_y the wheelset's lateral DOF). With
+/// `contact.cross_level`, one more input per wheelset after those (element = kRailRollInput, at
+/// its axle) whose first column carries the generalised force per metre of cross-level Δz
+/// (rail_roll_load; the track's displacement of this input is (Δz, 0, 0): contact_direction).
 LinearSystem with_creep(const LinearSystem& system, const CreepContact& contact, double speed);
+
+/// TrackInput::element of the contact's inputs: the alignment's (lateral column) and the rails'
+/// roll (first column, per metre of cross-level).
+constexpr int kAlignmentInput = -1;
+constexpr int kRailRollInput = -2;
+
+/// The track displacement of a contact input (element kAlignmentInput or kRailRollInput) per
+/// unit of a component: the alignment input takes the alignment, (0, 1, 0); the roll input
+/// takes the cross-level, (1, 0, 0) (its column is per metre of Δz); nothing else reaches them
+/// (the level lifts both rails, which the wheelset follows).
+Eigen::Vector3d contact_direction(int element, TrackIrregularity kind);
+
+/// The generalised force of the rails' roll on the DOFs per metre of cross-level at speed V,
+/// stiff and viscous parts (docs/ride.md, "Cross-level through the contact"), for wheelset i;
+/// `contact_only` leaves out the elements holding the wheelset (the wheel–rail force output).
+struct RollLoad {
+  Eigen::VectorXd stiff, viscous;
+};
+RollLoad rail_roll_load(const CreepContact& contact, std::size_t i, double speed, bool contact_only);
 
 /// The eigenvalues of `system`'s first-order form, x = (q, q̇, F) with the series dampers'
 /// forces F (with its contact terms when it is with_creep's), 1/s.

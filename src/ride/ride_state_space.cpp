@@ -96,6 +96,13 @@ std::vector<OutputRow> output_rows(const LinearSystem& system, const RideStateSp
       for (size_t i = 0; i < system.track_inputs.size(); ++i)
         if (system.track_inputs[i].element == e) row.Lw(3 * static_cast<int>(i) + 2) -= 1.0;  // the track's own
       rows.push_back(row);
+    } else if (output.kind == RideOutput::Kind::wheel_rail_force && output.axis != RideAxis::vertical) {
+      // The frequency domain has it from the creep contact (docs/ride.md, "The wheel–rail force
+      // across the track"); the march's system is the vehicle's M, C, K without the contact.
+      throw std::invalid_argument("ride simulation: output '" + output.name + "': the " + to_string(output.axis) +
+                                  " wheel–rail force is the creep contact's, which the time-domain march does not "
+                                  "carry; the frequency-domain ride (without [ride.simulation]) gives the "
+                                  "lateral one");
     } else {
       throw std::invalid_argument("ride simulation: output '" + output.name + "': " + to_string(output.kind) + " " +
                                   to_string(output.axis) +

@@ -13,6 +13,7 @@
 #include "model/point_motion.hpp"
 #include "model/wheelset_dofs.hpp"
 #include "railmodal/errors.hpp"
+#include "ride/ride_contact.hpp"
 #include "ride/track_under_wheels.hpp"
 #include "shortest_text.hpp"
 
@@ -84,14 +85,17 @@ Component component(const LinearSystem& system, TrackIrregularity slot, const Tr
     throw std::invalid_argument(std::string("ride: the ") + to_string(slot) + " slot holds a " +
                                 to_string(spectrum.irregularity()) + " spectrum (" + spectrum.name() + ")");
   // Alignment reaches the wheelsets through the creep forces (the contact's track inputs,
-  // ride_contact.hpp). Cross-level would too (the rails' roll tilts the normal loads: −W·θ
-  // sideways on each wheelset, and rolls it, driving the gyroscopic moment), which is not
-  // modelled yet: refused rather than answered without it.
+  // ride_contact.hpp), cross-level too (the rails' roll input, kRailRollInput). Without the
+  // contact (wheelsets whose lateral motion is not free, among other lateral DOFs) cross-level
+  // would reach the lateral motions only partly: refused rather than answered without it.
   const bool wheelsets = !system.vehicle.wheelsets.empty();
-  if (wheelsets && slot == TrackIrregularity::cross_level && has_lateral_dofs(system))
+  bool rail_roll = false;
+  for (const TrackInput& t : system.track_inputs) rail_roll = rail_roll || t.element == kRailRollInput;
+  if (wheelsets && slot == TrackIrregularity::cross_level && has_lateral_dofs(system) && !rail_roll)
     throw std::invalid_argument("ride: cross-level on a vehicle with wheelsets moves them laterally through the "
-                                "wheel–rail contact (the rails' roll tilts the normal loads), which the ride does not "
-                                "model yet; leave it out, or give the vertical degrees of freedom only");
+                                "wheel–rail contact (the rails' roll tilts the normal loads), which the ride models "
+                                "only when the wheelsets' lateral and yaw motions are free (dofs = \"all\"); leave it "
+                                "out, free them, or give the vertical degrees of freedom only");
   Component c{slot, spectrum, {}};
   if (slot == TrackIrregularity::cross_level)
     c.displacement = cross_level_directions(system, contact_half_spacing, rolling_radius);
@@ -99,6 +103,9 @@ Component component(const LinearSystem& system, TrackIrregularity slot, const Tr
     c.displacement.assign(system.track_inputs.size(), slot == TrackIrregularity::vertical_level
                                                           ? Eigen::Vector3d::UnitZ()
                                                           : Eigen::Vector3d::UnitY());
+  // The contact's own inputs take what reaches the wheelset through the contact only.
+  for (size_t i = 0; i < system.track_inputs.size(); ++i)
+    if (system.track_inputs[i].element < 0) c.displacement[i] = contact_direction(system.track_inputs[i].element, slot);
   if (!reaches_dofs(system, c))
     throw std::invalid_argument(std::string("ride: the ") + to_string(slot) + " component (" + spectrum.name() +
                                 ") moves no degree of freedom of this model (" +
@@ -178,20 +185,56 @@ void add(OutputMap* sum, const OutputMap& part) {
   for (size_t t = 0; t < part.inputs.size(); ++t) add_track_term(sum, part.inputs[t], part.t0[t], part.t1[t], part.t2[t]);
 }
 
+// The lateral force of the rails on wheelset i (both wheels, in the inertial frame): the contact
+// row of its lateral DOF, which is the axle's (T = [1 lever; 0 1] leaves the lateral row of
+// Tᵀ·F the axle's lateral force): −K_c·q − (C_c/V + V·G)·q̇ and the contact's own inputs' loads
+// on that row (the alignment's; the rails' roll, contact part only: creep, the leaning normal
+// loads −W·θ), docs/ride.md "The wheel–rail force across the track".
+OutputMap lateral_contact_map(const LinearSystem& system, const CreepContact& contact, std::size_t i, double speed) {
+  const ContactMatrices& c = contact.matrices;
+  const int j = contact.lateral[i];
+  OutputMap m;
+  m.a0 = -c.stiffness.row(j);
+  m.a1 = -(c.creep_damping.row(j) / speed + speed * c.gyroscopic.row(j));
+  std::size_t alignment = 0, roll = 0;
+  for (size_t t = 0; t < system.track_inputs.size(); ++t) {
+    const TrackInput& input = system.track_inputs[t];
+    if (input.element == kAlignmentInput && alignment++ == i)
+      add_track_term(&m, static_cast<int>(t), input.load_per_displacement.row(j).transpose(),
+                     input.load_per_velocity.row(j).transpose(), Eigen::Vector3d::Zero());
+    if (input.element == kRailRollInput && roll++ == i) {
+      const RollLoad load = rail_roll_load(contact, i, speed, true);
+      add_track_term(&m, static_cast<int>(t), Eigen::Vector3d(load.stiff(j), 0.0, 0.0),
+                     Eigen::Vector3d(load.viscous(j), 0.0, 0.0), Eigen::Vector3d::Zero());
+    }
+  }
+  return m;
+}
+
 // The vertical force of the rails on a wheelset (both wheels), its dynamic part: what the
 // elements standing on it push down with, plus the wheelset's mass times its vertical
 // acceleration, which is the rails' (its bounce is held), the mean of its inputs' vertical
-// track displacement (the rails' roll turns it about its centre).
-OutputMap wheel_rail_map(const LinearSystem& system, const RideOutput& o, const std::vector<double>& friction) {
+// track displacement (the rails' roll turns it about its centre). The lateral one is the
+// contact's (lateral_contact_map); the longitudinal one is zero in the linear contact.
+OutputMap wheel_rail_map(const LinearSystem& system, const RideOutput& o, const std::vector<double>& friction,
+                         const CreepContact* contact, double speed) {
   const Vehicle& v = system.vehicle;
   const int body = body_index(system, o.element);
   if (body < 0 || !model::wheelset_of(v, o.element))
     throw std::invalid_argument("ride: output '" + o.name + "': no wheelset '" + o.element + "'" +
                                 wheelset_names(system));
-  if (o.axis != RideAxis::vertical)
-    throw std::invalid_argument("ride: output '" + o.name + "': the " + to_string(o.axis) +
-                                " wheel–rail force acts through the contact (creep), which the ride does not model "
-                                "yet; only the vertical one is given");
+  if (o.axis == RideAxis::longitudinal)
+    throw std::invalid_argument("ride: output '" + o.name + "': the longitudinal wheel–rail force of the linear "
+                                "contact is zero on the wheelset: its two wheels' longitudinal creep forces are equal "
+                                "and opposite (they make its yaw moment); only the lateral and vertical ones are given");
+  if (o.axis == RideAxis::lateral) {
+    if (!contact)
+      throw std::invalid_argument("ride: output '" + o.name + "': the lateral wheel–rail force is the creep contact's, "
+                                  "which the ride assembles only when the wheelsets' lateral and yaw motions are free "
+                                  "(dofs = \"all\")");
+    for (size_t i = 0; i < v.wheelsets.size(); ++i)
+      if (v.wheelsets[i].body == o.element) return lateral_contact_map(system, *contact, i, speed);
+  }
   const int n = system.size();
   OutputMap m;
   m.a0 = Eigen::RowVectorXd::Zero(n);
@@ -209,7 +252,8 @@ OutputMap wheel_rail_map(const LinearSystem& system, const RideOutput& o, const 
   return m;
 }
 
-OutputMap output_map(const LinearSystem& system, const RideOutput& o, const std::vector<double>& friction) {
+OutputMap output_map(const LinearSystem& system, const RideOutput& o, const std::vector<double>& friction,
+                     const CreepContact* contact, double speed) {
   const int axis = axis_index(o.axis);
   switch (o.kind) {
     case RideOutput::Kind::point: {
@@ -232,7 +276,7 @@ OutputMap output_map(const LinearSystem& system, const RideOutput& o, const std:
       return force_map(system, k, axis, k < static_cast<int>(friction.size()) ? friction[k] : 0.0);
     }
     case RideOutput::Kind::wheel_rail_force:
-      return wheel_rail_map(system, o, friction);
+      return wheel_rail_map(system, o, friction, contact, speed);
   }
   throw std::invalid_argument("ride: output '" + o.name + "': unknown kind");
 }
@@ -324,14 +368,15 @@ std::vector<Component> track_components(const LinearSystem& system, const TrackI
 }
 
 std::vector<OutputMap> output_maps(const LinearSystem& system, const std::vector<RideOutput>& outputs,
-                                   const std::vector<double>& friction_damping) {
+                                   const std::vector<double>& friction_damping, const CreepContact* contact,
+                                   double speed) {
   if (outputs.empty()) throw std::invalid_argument("ride: no outputs requested");
   std::set<std::string> names;
   std::vector<OutputMap> maps;
   for (const RideOutput& o : outputs) {
     if (o.name.empty()) throw std::invalid_argument("ride: an output has no name");
     if (!names.insert(o.name).second) throw std::invalid_argument("ride: output name '" + o.name + "' is repeated");
-    maps.push_back(output_map(system, o, friction_damping));
+    maps.push_back(output_map(system, o, friction_damping, contact, speed));
     const OutputMap& m = maps.back();
     if (m.a0.cwiseAbs().maxCoeff() == 0.0 && m.a1.cwiseAbs().maxCoeff() == 0.0 && m.series.empty() && m.inputs.empty())
       throw std::invalid_argument("ride: output '" + o.name + "': no degree of freedom of this model moves it (the " +

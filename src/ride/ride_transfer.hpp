@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "railmodal/ride.hpp"
+#include "ride/ride_contact.hpp"
 
 namespace railmodal::ride {
 
@@ -47,11 +48,14 @@ struct OutputMap {
 };
 
 /// The map of each output. `friction_damping` (per element, N·s/m; may be empty) adds the
-/// linearised leaf friction to an element's vertical damping in its force. Throws
-/// std::invalid_argument naming an output whose name is empty or repeated, or whose body,
-/// element or wheelset the system does not have.
+/// linearised leaf friction to an element's vertical damping in its force. With `contact` (and
+/// `system` its with_creep at `speed`) a wheelset's lateral wheel–rail force is the contact's.
+/// Throws std::invalid_argument naming an output whose name is empty or repeated, or whose body,
+/// element or wheelset the system does not have, a lateral wheel–rail force without the
+/// contact, and a longitudinal one (zero in the linear contact).
 std::vector<OutputMap> output_maps(const LinearSystem& system, const std::vector<RideOutput>& outputs,
-                                   const std::vector<double>& friction_damping);
+                                   const std::vector<double>& friction_damping, const CreepContact* contact = nullptr,
+                                   double speed = 0.0);
 
 /// The map of element k's vertical stretch rate (upper relative to lower, track subtracted), m/s.
 OutputMap stretch_rate_map(const LinearSystem& system, int element);

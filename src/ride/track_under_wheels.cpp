@@ -9,8 +9,11 @@ namespace railmodal::ride {
 namespace {
 
 // The wheelset an element stands on (its lower body), else the first one; null without wheelsets.
+// A contact input of the ride (element < 0, ride_contact.hpp) is no element: the first one (its
+// direction is the contact's own, contact_direction).
 const Wheelset* wheelset_under(const LinearSystem& system, int element) {
   const Vehicle& v = system.vehicle;
+  if (element < 0) return v.wheelsets.empty() ? nullptr : &v.wheelsets.front();
   for (const Wheelset& w : v.wheelsets)
     if (w.body == v.elements[element].lower) return &w;
   return v.wheelsets.empty() ? nullptr : &v.wheelsets.front();
