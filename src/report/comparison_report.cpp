@@ -558,7 +558,7 @@ void write_shard(std::ostream& out, const Study& study, const EvaluationOptions&
   for (const auto& r : results) write_result(j, r, nullptr);
   j.end_array();
   j.member("shard", options.shard).member("shards", options.shards).member("study", study.name);
-  j.member("variant_count", study.variants.size());
+  j.member("variant_count", variant_count(study));
   j.end_object();
 }
 

@@ -44,10 +44,12 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
                          const std::function<void(size_t, VariantResult&&)>& sink) {
   require_valid(options, "");
   std::vector<int> indices;
-  for (int i = 0; i < static_cast<int>(study.variants.size()); ++i)
+  const bool opened = study.variants.empty() && study.plan;  // open_study: no variant listed, none read
+  const int count = variant_count(study);
+  for (int i = 0; i < count; ++i)
     if (in_shard(i, options.shard, options.shards)) {
-      if (!study.variants[i].read && !(options.read_in_workers && study.plan))
-        throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
+      if ((opened || !study.variants[i].read) && !(options.read_in_workers && study.plan))
+        throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + variant_name(study, i) +
                                     "') was not read: load the study with this shard");
       indices.push_back(i);
     }
@@ -71,9 +73,9 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
       const size_t k = next++;  // a taken index is always finished: see error_at
       if (k >= indices.size()) break;
       const int index = indices[k];
-      const StudyVariant* variant = &study.variants[index];
+      const StudyVariant* variant = opened ? nullptr : &study.variants[index];
       StudyVariant read;  // this thread's copy of an unread variant, dropped once evaluated
-      if (!variant->read) {
+      if (!variant || !variant->read) {
         try {
           read = read_variant(study, index);
           variant = &read;

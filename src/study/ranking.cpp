@@ -125,15 +125,15 @@ std::vector<double> study::rank_entry(const VariantResult& r, const Ranking& ran
 }
 
 Comparison rank_variants(const Study& study, std::vector<VariantResult> results) {
-  if (results.size() != study.variants.size())
+  if (results.size() != static_cast<size_t>(variant_count(study)))
     throw std::invalid_argument("results for " + std::to_string(results.size()) + " variants, the study has " +
-                                std::to_string(study.variants.size()));
+                                std::to_string(variant_count(study)));
   Comparison out;
   StageClock clock(&out.summary);
   std::sort(results.begin(), results.end(), [](const VariantResult& a, const VariantResult& b) { return a.index < b.index; });
   for (size_t i = 0; i < results.size(); ++i)
-    if (results[i].index != static_cast<int>(i) || results[i].name != study.variants[i].name)
-      throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
+    if (results[i].index != static_cast<int>(i) || results[i].name != variant_name(study, static_cast<int>(i)))
+      throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + variant_name(study, static_cast<int>(i)) +
                                   "') is missing or appears twice");
   bool evaluated = false;
   const std::set<std::string> names = mode_names(results, &evaluated);

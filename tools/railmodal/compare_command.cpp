@@ -65,10 +65,10 @@ std::vector<VariantResult> merged_results(const Study& study, const std::vector<
         throw InputError(file, 0, 0, "variant '" + r.name + "' is also in an earlier shard");
       results.push_back(std::move(r));
     }
-  for (size_t i = 0; i < study.variants.size(); ++i)
-    if (!seen.count(static_cast<int>(i)))
+  for (int i = 0; i < variant_count(study); ++i)
+    if (!seen.count(i))
       throw InputError(files.front(), 0, 0,
-                       "no shard holds variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
+                       "no shard holds variant " + std::to_string(i + 1) + " ('" + variant_name(study, i) +
                            "'): give every shard of the study");
   return results;
 }
@@ -102,11 +102,11 @@ int run(const CompareOptions& o) {
     std::ostream& out = outputs.open(o.output);
     outputs.refuse_inputs({o.study});
     outputs.refuse_inputs(o.merge);
-    // load_study lists and names every variant and reads none: the threads that evaluate a
-    // variant read it (read_in_workers), a shard its own only; a merge reads none but those its
-    // report draws (read_variant). A bad override stops the run at the first such variant.
+    // open_study lists no variant and reads none: the threads that evaluate a variant make and
+    // read it (read_in_workers), a shard its own only; a merge reads none but those its report
+    // draws (read_variant). A bad override stops the run at the first such variant.
     const bool merging = !o.merge.empty();
-    const Study study = load_study(o.study, [](int) { return false; });
+    const Study study = open_study(o.study);
     evaluation.read_in_workers = true;
     outputs.refuse_inputs(study_files(study));
     if (!merging && !o.quiet) evaluation.progress = terminal_progress("compare");
