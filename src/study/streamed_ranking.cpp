@@ -4,8 +4,12 @@
 // thread count.
 #include "study/streamed_ranking.hpp"
 
+#include <stdlib.h>  // mkstemp
+#include <unistd.h>  // unlink
+
 #include <algorithm>
 #include <atomic>
+#include <cstdlib>
 #include <iterator>
 #include <map>
 #include <mutex>
@@ -50,6 +54,24 @@ class BestKept {
   std::multimap<Key, std::string> best_;  // keys are unique (their positions are)
 };
 
+// The directory for the texts: TMPDIR, as other programs use it, or /tmp.
+std::string temporary_directory() {
+  const char* dir = std::getenv("TMPDIR");
+  return dir && *dir ? dir : "/tmp";
+}
+
+// A file in `directory` that no other process sees and that goes when it is closed (or the
+// process ends): unlinked as soon as it is open.
+std::FILE* anonymous_file(const std::string& directory) {
+  std::string path = directory + "/railmodal-ranking-XXXXXX";
+  const int fd = mkstemp(path.data());
+  if (fd < 0) return nullptr;
+  unlink(path.c_str());
+  std::FILE* file = fdopen(fd, "w+b");
+  if (!file) close(fd);
+  return file;
+}
+
 }  // namespace
 
 StreamedRanking::StreamedRanking(const Study& study, const EvaluationOptions& options, size_t top, const Render& render) {
@@ -67,8 +89,10 @@ StreamedRanking::StreamedRanking(const Study& study, const EvaluationOptions& op
   unsigned long long spilled = 0;
   bool spill_failed = false;  // a full disk, say: thrown once the threads have stopped
   if (top == 0) {
-    spill_.reset(std::tmpfile());
-    if (!spill_) throw std::runtime_error("a streamed ranking could not open a temporary file");
+    spill_.reset(anonymous_file(temporary_directory()));
+    if (!spill_)
+      throw std::runtime_error("a streamed ranking could not open a temporary file in " + temporary_directory() +
+                               " (set TMPDIR to a writable directory)");
   }
   study::evaluate_each(
       study, options,
