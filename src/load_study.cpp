@@ -4,12 +4,14 @@
 #include "load_study.hpp"
 
 #include <map>
+#include <optional>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "input/study_reader.hpp"
+#include "railmodal/errors.hpp"
 #include "study/metrics.hpp"
 #include "study/planned_variants.hpp"
 
@@ -20,26 +22,41 @@ namespace detail {
 // What read_variant needs to read any variant later: the study file read and its variants.
 struct StudySource {
   input::StudyFile file;
-  std::vector<study::VariantSpec> variants;
+  study::PlannedVariants variants;  // made from their index when asked for
 };
 
 }  // namespace detail
 
-Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants) {
-  auto source = std::make_shared<detail::StudySource>();
-  source->file = input::read_study_file(path, max_variants);
-  source->variants = study::planned_variants(source->file.plan);
-  input::check_variants(source->variants, &source->file);
+namespace {
+
+// The study file read and checked, its variants not listed (open_study).
+Study opened_study(const std::string& path, size_t max_variants) {
+  input::StudyFile file = input::read_study_file(path, max_variants);
+  study::PlannedVariants planned(file.plan);
+  if (const std::optional<size_t> repeated = planned.first_repeated_name()) {
+    const study::VariantSpec spec = planned.at(*repeated);
+    throw InputError(file.path, spec.place.line, spec.place.column, "variant '" + spec.name + "': another variant has this name");
+  }
+  input::check_variants(&file);
   Study study;
-  study.name = source->file.plan.name;
+  study.name = file.plan.name;
   study.source = path;
-  study.ranking = source->file.plan.ranking;
-  study.deflection_rule = source->file.plan.deflection_rule;
+  study.ranking = file.plan.ranking;
+  study.deflection_rule = file.plan.deflection_rule;
+  study.plan = std::make_shared<detail::StudySource>(detail::StudySource{std::move(file), std::move(planned)});
+  return study;
+}
+
+}  // namespace
+
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants) {
+  Study study = opened_study(path, max_variants);
+  const detail::StudySource& source = *study.plan;
   std::map<std::string, Vehicle> plain_vehicles;  // files without changes, read once
-  for (int i = 0; i < static_cast<int>(source->variants.size()); ++i) {
-    const study::VariantSpec& spec = source->variants[i];
+  for (int i = 0; i < static_cast<int>(source.variants.size()); ++i) {
+    const study::VariantSpec spec = source.variants.at(static_cast<size_t>(i));
     if (!read_only || read_only(i)) {
-      study.variants.push_back(input::read_variant(source->file, spec, &plain_vehicles));
+      study.variants.push_back(input::read_variant(source.file, spec, &plain_vehicles));
     } else {
       StudyVariant named;
       named.name = spec.name;
@@ -48,7 +65,6 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
       study.variants.push_back(std::move(named));
     }
   }
-  study.plan = std::move(source);
   return study;
 }
 
@@ -56,9 +72,30 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
   return load_study(path, read_only, kMaxStudyVariants);
 }
 
+Study open_study(const std::string& path) { return opened_study(path, kMaxStudyVariants); }
+
+namespace {
+
+// Whether the study was opened (open_study): its variants are listed by the plan alone.
+bool opened(const Study& study) { return study.variants.empty() && study.plan; }
+
+}  // namespace
+
+int variant_count(const Study& study) {
+  return static_cast<int>(opened(study) ? study.plan->variants.size() : study.variants.size());
+}
+
+std::string variant_name(const Study& study, int index) {
+  if (index < 0 || index >= variant_count(study))
+    throw std::out_of_range("variant_name: the study has no variant " + std::to_string(index + 1));
+  return opened(study) ? study.plan->variants.name(static_cast<size_t>(index)) : study.variants[index].name;
+}
+
 StudyVariant read_variant(const Study& study, int index) {
-  if (index < 0 || index >= static_cast<int>(study.variants.size()))
+  if (index < 0 || index >= variant_count(study))
     throw std::out_of_range("read_variant: the study has no variant " + std::to_string(index + 1));
+  if (opened(study))
+    return input::read_variant(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), nullptr);
   if (study.variants[index].read) return study.variants[index];
   if (!study.plan) throw std::invalid_argument("read_variant: variant '" + study.variants[index].name + "' was never read");
   return input::read_variant(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), nullptr);

@@ -27,6 +27,17 @@ namespace railmodal {
 /// (write_comparison_report); here they throw std::invalid_argument.
 void write_comparison(std::ostream& out, const Comparison& comparison, OutputFormat format);
 
+/// Evaluates the whole study (options.shards must be 1) and writes its ranking in table, csv or
+/// json: the bytes write_comparison(out, rank_variants(study, evaluate_study(study, options)),
+/// format) writes, whatever the thread count, holding in memory per variant only its ranking
+/// keys (tens of bytes): each variant's row waits in a temporary file until the ranking is
+/// known. With `top` > 0 only the best `top` variants are written (the table's head still
+/// counts them all), and only their rows are held. Throws as evaluate_study and rank_variants,
+/// and std::invalid_argument for markdown and html (documents: write_comparison_report) and
+/// for a negative `top`.
+void compare_study(std::ostream& out, const Study& study, const EvaluationOptions& options, OutputFormat format,
+                   int top = 0);
+
 /// The report of a study in any format; markdown and html are documents to hand in: why the
 /// winner wins (its criteria against the base and the runner-up, what the others violate),
 /// the ranked table (first kReportRows variants), each swept parameter against the periods

@@ -115,7 +115,9 @@ std::string to_string(const DeflectionRule& rule);
 struct Study {
   std::string name;
   std::string source;  ///< the study file
-  std::vector<StudyVariant> variants;  ///< base (unless base = false), variants, sweep points
+  /// Base (unless base = false), variants, sweep points; empty for a study open_study opened
+  /// (variant_count and variant_name give them).
+  std::vector<StudyVariant> variants;
   Ranking ranking;
   DeflectionRule deflection_rule;  ///< [permissible_dynamic_deflection]; none: not checked
   std::shared_ptr<const detail::StudySource> plan;  ///< for read_variant; shared by copies
@@ -141,6 +143,19 @@ inline bool in_shard(int index, int shard, int shards) { return index % shards =
 /// a read variant), and a bad override in another shard's variant is that shard's error.
 /// Names, sweeps and ranking are checked for the whole study either way.
 Study load_study(const std::string& path, const std::function<bool(int index)>& read_only = {});
+
+/// Reads a study file and checks it as load_study does (names, sweeps, ranking, the vehicle
+/// files), but lists none of its variants: Study::variants stays empty and each variant is
+/// made from its index when asked for (variant_count, variant_name, read_variant). A study of
+/// 10^6 variants opens in a few megabytes; evaluate_study reads each variant in the worker that
+/// evaluates it (EvaluationOptions::read_in_workers), compare_study keeps only its keys.
+Study open_study(const std::string& path);
+
+/// The number of variants of the study: Study::variants', or, for an opened study, its plan's.
+int variant_count(const Study& study);
+/// The name of variant `index` (0 <= index < variant_count), as Study::variants[index].name
+/// (std::out_of_range otherwise).
+std::string variant_name(const Study& study, int index);
 
 /// Variant `index` with its vehicle and scene: a copy of the one load_study read, or read now
 /// from the study's files (throwing InputError as load_study would).

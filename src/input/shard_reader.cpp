@@ -109,10 +109,10 @@ std::vector<VariantResult> read_shard(std::istream& in, const std::string& file,
   try {
     if (j.value("format", "") != "railmodal-compare-shard")
       throw InputError(file, 0, 0, "not a shard written by railmodal compare --shard");
-    if (j.at("study").get<std::string>() != study.name || j.at("variant_count").get<size_t>() != study.variants.size())
+    if (j.at("study").get<std::string>() != study.name || j.at("variant_count").get<size_t>() != static_cast<size_t>(variant_count(study)))
       throw InputError(file, 0, 0, "a shard of another study ('" + j.at("study").get<std::string>() + "', " +
                                        std::to_string(j.at("variant_count").get<size_t>()) + " variants), not of '" +
-                                       study.name + "' (" + std::to_string(study.variants.size()) + " variants)");
+                                       study.name + "' (" + std::to_string(variant_count(study)) + " variants)");
     // A shard evaluated under another deflection rule would merge into a ranking it was not
     // checked for.
     if (!j.contains("permissible_dynamic_deflection"))
@@ -130,7 +130,7 @@ std::vector<VariantResult> read_shard(std::istream& in, const std::string& file,
     throw InputError(file, 0, 0, std::string("a shard with missing or mistyped fields: ") + e.what());
   }
   for (const auto& r : results)
-    if (r.index < 0 || r.index >= static_cast<int>(study.variants.size()) || study.variants[r.index].name != r.name)
+    if (r.index < 0 || r.index >= variant_count(study) || variant_name(study, r.index) != r.name)
       throw InputError(file, 0, 0, "variant '" + r.name + "' is not at index " + std::to_string(r.index) + " of the study");
   return results;
 }

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <set>
 
 #include "input/document_readers.hpp"
 #include "input/key_path.hpp"
@@ -408,14 +407,12 @@ StudyFile read_study_file(const std::string& path, size_t max_variants) {
   return file;
 }
 
-void check_variants(const std::vector<study::VariantSpec>& variants, StudyFile* file) {
-  std::set<std::string> names;
-  for (const study::VariantSpec& spec : variants) {
-    if (!names.insert(spec.name).second)
-      throw InputError(file->path, spec.place.line, spec.place.column, "variant '" + spec.name + "': another variant has this name");
-    if (!file->vehicle_documents.count(spec.vehicle_file))
-      file->vehicle_documents[spec.vehicle_file] = parse_toml_file(spec.vehicle_file);
-  }
+void check_variants(StudyFile* file) {
+  std::vector<std::string> vehicle_files;
+  for (const study::VariantSpec& spec : file->plan.variants) vehicle_files.push_back(spec.vehicle_file);
+  if (!file->plan.sweeps.empty()) vehicle_files.push_back(file->plan.vehicle_file);
+  for (const std::string& vehicle_file : vehicle_files)
+    if (!file->vehicle_documents.count(vehicle_file)) file->vehicle_documents[vehicle_file] = parse_toml_file(vehicle_file);
   file->fast = resolve_fast_path(*file);
 }
 

@@ -38,9 +38,11 @@ struct StudyFile {
 /// takes the study over `max_variants` variants, or for anything else wrong in the file.
 StudyFile read_study_file(const std::string& path, size_t max_variants);
 
-/// Checks that the variants have names of their own and parses their vehicle files, in
-/// study order; then probes the keys the fast path can set (resolve_fast_path).
-void check_variants(const std::vector<study::VariantSpec>& variants, StudyFile* file);
+/// Parses the vehicle files of the plan's written variants and, when it has sweeps, its base
+/// vehicle file (which every sweep point varies), in study order. (That the variants have names
+/// of their own is checked where they are listed: study::PlannedVariants::first_repeated_name.) Then probes
+/// the keys the fast path can set (resolve_fast_path).
+void check_variants(StudyFile* file);
 
 /// One variant with its vehicle and scene; `plain` (optional) caches vehicles read without
 /// changes.

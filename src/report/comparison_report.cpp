@@ -4,6 +4,7 @@
 // reads it back).
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -12,6 +13,7 @@
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"
 #include "report/json_writer.hpp"
+#include "report/streamed_comparison.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
 #include "shortest_text.hpp"
@@ -257,47 +259,47 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
 
 }  // namespace
 
-std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& c, bool for_csv) {
-  std::vector<std::vector<std::string>> rows;
-  const std::vector<std::string> head = comparison_head(c, for_csv);
-  const bool deflections = c.deflection_rule.active();
-  rows.push_back(head);
-  for (const RankedVariant& v : c.variants) {
-    const VariantResult& r = v.result;
-    std::vector<std::string> row{std::to_string(v.rank), r.name, status(v)};
-    if (for_csv) row.push_back(v.objective ? exact(*v.objective) : "");
-    for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
-      const auto& x = v.criteria.size() > k ? v.criteria[k] : std::nullopt;
-      const double scale = study::display_unit(c.ranking.objective[k].metric).per_si;
-      const bool peak = study::infinite_is_unbounded(c.ranking.objective[k].metric);
-      if (!x) row.push_back(for_csv ? "" : "-");
-      else if (for_csv) row.push_back(exact(*x * scale));
-      else if (std::isinf(*x) && *x > 0) row.push_back(peak ? "unbounded" : "none");  // no critical speed in range
-      else row.push_back(number(*x * scale, "%.4g"));
-    }
-    const auto lowest = r.ok() ? metric_value(r, "lowest_critical_speed") : std::nullopt;
-    row.push_back(!lowest ? (for_csv ? "" : "-") : for_csv ? exact(*lowest * kKmh) : number(*lowest * kKmh, "%.1f"));
-    const auto deflection = body_deflection(r);
-    row.push_back(!deflection ? (for_csv ? "" : "-") : for_csv ? exact(*deflection * 1000.0) : number(*deflection * 1000.0, "%.1f"));
-    if (deflections) {
-      const auto ratio = r.ok() ? metric_value(r, "dynamic_deflection_ratio") : std::nullopt;
-      if (!ratio) row.push_back(for_csv ? "" : "-");
-      else if (for_csv) row.push_back(std::isinf(*ratio) ? "unbounded" : exact(*ratio));
-      else row.push_back(deflection_verdict(*ratio));
-    }
-    std::string list;
-    for (double p : periods(r)) list += (list.empty() ? "" : " ") + (for_csv ? exact(p) : number(p, "%.3f"));
-    row.push_back(list);
-    if (for_csv) {
-      std::string speeds, violations;
-      for (double s : critical_speeds_kmh(r)) speeds += (speeds.empty() ? "" : " ") + exact(s);
-      for (const auto& w : v.violations) violations += (violations.empty() ? "" : "; ") + w;
-      row.push_back(speeds);
-      row.push_back(r.failure);
-      row.push_back(violations);
-    }
-    rows.push_back(row);
+std::vector<std::string> report::comparison_row(const Ranking& ranking, const DeflectionRule& rule,
+                                                const RankedVariant& v, bool for_csv) {
+  const VariantResult& r = v.result;
+  std::vector<std::string> row{std::to_string(v.rank), r.name, status(v)};
+  if (for_csv) row.push_back(v.objective ? exact(*v.objective) : "");
+  for (size_t k = 0; k < ranking.objective.size(); ++k) {
+    const auto& x = v.criteria.size() > k ? v.criteria[k] : std::nullopt;
+    const double scale = study::display_unit(ranking.objective[k].metric).per_si;
+    const bool peak = study::infinite_is_unbounded(ranking.objective[k].metric);
+    if (!x) row.push_back(for_csv ? "" : "-");
+    else if (for_csv) row.push_back(exact(*x * scale));
+    else if (std::isinf(*x) && *x > 0) row.push_back(peak ? "unbounded" : "none");  // no critical speed in range
+    else row.push_back(number(*x * scale, "%.4g"));
   }
+  const auto lowest = r.ok() ? metric_value(r, "lowest_critical_speed") : std::nullopt;
+  row.push_back(!lowest ? (for_csv ? "" : "-") : for_csv ? exact(*lowest * kKmh) : number(*lowest * kKmh, "%.1f"));
+  const auto deflection = body_deflection(r);
+  row.push_back(!deflection ? (for_csv ? "" : "-") : for_csv ? exact(*deflection * 1000.0) : number(*deflection * 1000.0, "%.1f"));
+  if (rule.active()) {
+    const auto ratio = r.ok() ? metric_value(r, "dynamic_deflection_ratio") : std::nullopt;
+    if (!ratio) row.push_back(for_csv ? "" : "-");
+    else if (for_csv) row.push_back(std::isinf(*ratio) ? "unbounded" : exact(*ratio));
+    else row.push_back(deflection_verdict(*ratio));
+  }
+  std::string list;
+  for (double p : periods(r)) list += (list.empty() ? "" : " ") + (for_csv ? exact(p) : number(p, "%.3f"));
+  row.push_back(list);
+  if (for_csv) {
+    std::string speeds, violations;
+    for (double s : critical_speeds_kmh(r)) speeds += (speeds.empty() ? "" : " ") + exact(s);
+    for (const auto& w : v.violations) violations += (violations.empty() ? "" : "; ") + w;
+    row.push_back(speeds);
+    row.push_back(r.failure);
+    row.push_back(violations);
+  }
+  return row;
+}
+
+std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& c, bool for_csv) {
+  std::vector<std::vector<std::string>> rows{comparison_head(c, for_csv)};
+  for (const RankedVariant& v : c.variants) rows.push_back(comparison_row(c.ranking, c.deflection_rule, v, for_csv));
   return rows;
 }
 
@@ -315,10 +317,9 @@ size_t width(const std::string& s) {
   return static_cast<size_t>(std::count_if(s.begin(), s.end(), [](char ch) { return (static_cast<unsigned char>(ch) & 0xC0) != 0x80; }));
 }
 
-void write_table(std::ostream& out, const Comparison& c) {
-  size_t feasible = 0;
-  for (const auto& v : c.variants) feasible += v.feasible;
-  out << "railmodal compare: " << c.study << "\n" << c.variants.size() << " variants, " << feasible << " feasible";
+// The table's head: the study, the variants and how they are ranked.
+void write_table_head(std::ostream& out, const Comparison& c, size_t count, size_t feasible) {
+  out << "railmodal compare: " << c.study << "\n" << count << " variants, " << feasible << " feasible";
   if (!c.ranking.objective.empty()) {
     out << "; objective: ";
     for (size_t k = 0; k < c.ranking.objective.size(); ++k) {
@@ -337,11 +338,21 @@ void write_table(std::ostream& out, const Comparison& c) {
     out << "\n";
   }
   out << "\n";
-  const auto rows = report::comparison_rows(c, false);
-  std::vector<size_t> widths(rows.front().size(), 0);
-  for (const auto& row : rows)
+}
+
+// The table's rows, `rows` of them (0 the heading, then the variants in rank order), each
+// asked for twice (for the column widths, then to write it), then the note of each variant
+// that has one ("" for none): why it failed, or what it violates.
+void write_table_rows(std::ostream& out, size_t rows, const std::function<std::vector<std::string>(size_t)>& row_at,
+                      const std::function<std::string(size_t)>& note_at) {
+  std::vector<size_t> widths;
+  for (size_t n = 0; n < rows; ++n) {
+    const std::vector<std::string> row = row_at(n);
+    widths.resize(std::max(widths.size(), row.size()), 0);
     for (size_t i = 0; i < row.size(); ++i) widths[i] = std::max(widths[i], width(row[i]));
-  for (const auto& row : rows) {
+  }
+  for (size_t n = 0; n < rows; ++n) {
+    const std::vector<std::string> row = row_at(n);
     std::string line;
     for (size_t i = 0; i < row.size(); ++i) {
       const bool last = i + 1 == row.size();
@@ -353,19 +364,41 @@ void write_table(std::ostream& out, const Comparison& c) {
     out << line << "\n";
   }
   bool notes = false;
-  for (const auto& v : c.variants) {
-    if (v.result.ok() && v.violations.empty()) continue;
+  for (size_t n = 1; n < rows; ++n) {
+    const std::string note = note_at(n);
+    if (note.empty()) continue;
     if (!notes) out << "\n";
     notes = true;
-    out << v.result.name << ": ";
-    if (!v.result.ok()) {
-      out << "failed: " << v.result.failure << "\n";
-    } else {
-      const auto words = study::violations(v.result, c.ranking, true);
-      for (size_t k = 0; k < words.size(); ++k) out << (k ? "; " : "") << words[k];
-      out << "\n";
-    }
+    out << note << "\n";
   }
+}
+
+// A variant's note under the table: why it failed, or the constraints it violates, for people;
+// "" when it has none.
+std::string table_note(const Ranking& ranking, const RankedVariant& v) {
+  if (v.result.ok() && v.violations.empty()) return "";
+  std::string note = v.result.name + ": ";
+  if (!v.result.ok()) return note + "failed: " + v.result.failure;
+  const auto words = study::violations(v.result, ranking, true);
+  for (size_t k = 0; k < words.size(); ++k) note += (k ? "; " : "") + words[k];
+  return note;
+}
+
+void write_table(std::ostream& out, const Comparison& c) {
+  size_t feasible = 0;
+  for (const auto& v : c.variants) feasible += v.feasible;
+  write_table_head(out, c, c.variants.size(), feasible);
+  write_table_rows(
+      out, c.variants.size() + 1,
+      [&](size_t n) {
+        return n == 0 ? comparison_head(c, false)
+                      : report::comparison_row(c.ranking, c.deflection_rule, c.variants[n - 1], false);
+      },
+      [&](size_t n) { return table_note(c.ranking, c.variants[n - 1]); });
+}
+
+void write_csv_row(std::ostream& out, const std::vector<std::string>& row, size_t from = 0) {
+  for (size_t i = from; i < row.size(); ++i) out << (i > from ? "," : "") << csv_field(row[i]);
 }
 
 }  // namespace
@@ -374,8 +407,10 @@ void write_comparison(std::ostream& out, const Comparison& comparison, OutputFor
   switch (format) {
     case OutputFormat::table: write_table(out, comparison); break;
     case OutputFormat::csv:
-      for (const auto& row : report::comparison_rows(comparison, true)) {
-        for (size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << csv_field(row[i]);
+      write_csv_row(out, comparison_head(comparison, true));
+      out << "\n";
+      for (const RankedVariant& v : comparison.variants) {
+        write_csv_row(out, report::comparison_row(comparison.ranking, comparison.deflection_rule, v, true));
         out << "\n";
       }
       break;
@@ -383,6 +418,128 @@ void write_comparison(std::ostream& out, const Comparison& comparison, OutputFor
     default:
       throw std::invalid_argument(report::unwritten_format("write_comparison", "table, csv or json", format) +
                                   " (the markdown and html reports need the study: write_comparison_report)");
+  }
+}
+
+namespace {
+
+// Cells kept as one text, each as its length, ':' and its bytes (a name may hold any character).
+std::string packed(const std::vector<std::string>& cells, size_t from) {
+  std::string text;
+  for (size_t i = from; i < cells.size(); ++i) text += std::to_string(cells[i].size()) + ":" + cells[i];
+  return text;
+}
+
+std::vector<std::string> unpacked(const std::string& text) {
+  std::vector<std::string> cells;
+  for (size_t at = 0; at < text.size();) {
+    const size_t colon = text.find(':', at);
+    const size_t length = std::stoul(text.substr(at, colon - at));
+    cells.push_back(text.substr(colon + 1, length));
+    at = colon + 1 + length;
+  }
+  return cells;
+}
+
+// A variant's JSON object as it stands in the comparison's "variants" array, with its rank
+// left out: "<where the rank goes>:<text>".
+std::string json_object(const Comparison& head, const RankedVariant& v) {
+  std::ostringstream document;
+  {
+    JsonWriter j(document);
+    j.begin_object().key("variants").begin_array();
+    const RankingMembers ranked{head, v};
+    write_result(j, v.result, &ranked);
+    j.end_array().end_object();
+  }
+  const std::string text = document.str();
+  const std::string open = "{\n  \"variants\": [\n", close = "\n  ]\n}\n";
+  std::string object = text.substr(open.size(), text.size() - open.size() - close.size());
+  // One member a line: the rank member is the only line of the object that reads so.
+  const std::string rank = "\n      \"rank\": 0";
+  const size_t at = object.find(rank) + rank.size() - 1;
+  object.erase(at, 1);
+  return std::to_string(at) + ":" + object;
+}
+
+void write_streamed_json(std::ostream& out, const Comparison& head, const study::StreamedRanking& ranked) {
+  std::ostringstream document;
+  write_json(document, head);
+  const std::string text = document.str();
+  const std::string empty = "\"variants\": []";
+  const size_t at = text.find(empty) + empty.size() - 1;  // before the closing bracket
+  if (ranked.shown() == 0) {
+    out << text;
+    return;
+  }
+  out << text.substr(0, at);
+  for (size_t rank = 1; rank <= ranked.shown(); ++rank) {
+    const std::string kept = ranked.text(rank);
+    const size_t colon = kept.find(':');
+    const size_t split = std::stoul(kept.substr(0, colon));
+    out << (rank == 1 ? "\n" : ",\n");
+    out.write(kept.data() + colon + 1, static_cast<std::streamsize>(split));
+    out << rank;
+    out.write(kept.data() + colon + 1 + split, static_cast<std::streamsize>(kept.size() - colon - 1 - split));
+  }
+  out << "\n  " << text.substr(at);
+}
+
+}  // namespace
+
+study::StreamedRanking::Render report::streamed_row(const Ranking& ranking, const DeflectionRule& rule,
+                                                   OutputFormat format) {
+  switch (format) {
+    case OutputFormat::table:
+      return [ranking, rule](const RankedVariant& v) {
+        return packed(comparison_row(ranking, rule, v, false), 1) + packed({table_note(ranking, v)}, 0);
+      };
+    case OutputFormat::csv:
+      return [ranking, rule](const RankedVariant& v) {
+        std::ostringstream row;
+        write_csv_row(row, comparison_row(ranking, rule, v, true), 1);
+        return row.str();
+      };
+    case OutputFormat::json:
+      return [head = std::make_shared<Comparison>(Comparison{"", "", ranking, rule, {}, {}})](const RankedVariant& v) {
+        return json_object(*head, v);
+      };
+    default:
+      throw std::invalid_argument(report::unwritten_format("streamed_row", "table, csv or json", format));
+  }
+}
+
+void report::write_streamed_comparison(std::ostream& out, const Comparison& head, const study::StreamedRanking& ranked,
+                                       OutputFormat format) {
+  switch (format) {
+    case OutputFormat::table: {
+      write_table_head(out, head, ranked.size(), ranked.feasible());
+      // A kept row: its cells after the rank, then its note.
+      const auto cells_and_note = [&](size_t rank, std::string* note) {
+        std::vector<std::string> row{std::to_string(rank)};
+        for (std::string& cell : unpacked(ranked.text(rank))) row.push_back(std::move(cell));
+        if (note) *note = std::move(row.back());
+        row.pop_back();
+        return row;
+      };
+      write_table_rows(
+          out, ranked.shown() + 1,
+          [&](size_t n) { return n == 0 ? comparison_head(head, false) : cells_and_note(n, nullptr); },
+          [&](size_t n) {
+            std::string note;
+            cells_and_note(n, &note);
+            return note;
+          });
+      break;
+    }
+    case OutputFormat::csv:
+      write_csv_row(out, comparison_head(head, true));
+      out << "\n";
+      for (size_t rank = 1; rank <= ranked.shown(); ++rank) out << rank << "," << ranked.text(rank) << "\n";
+      break;
+    case OutputFormat::json: write_streamed_json(out, head, ranked); break;
+    default:
+      throw std::invalid_argument(report::unwritten_format("write_streamed_comparison", "table, csv or json", format));
   }
 }
 
@@ -401,7 +558,7 @@ void write_shard(std::ostream& out, const Study& study, const EvaluationOptions&
   for (const auto& r : results) write_result(j, r, nullptr);
   j.end_array();
   j.member("shard", options.shard).member("shards", options.shards).member("study", study.name);
-  j.member("variant_count", study.variants.size());
+  j.member("variant_count", variant_count(study));
   j.end_object();
 }
 

@@ -12,5 +12,8 @@ namespace railmodal::report {
 /// lowest critical speed, static deflection, periods (for_csv: exact numbers and the extra
 /// columns objective, critical speeds, failure and violations).
 std::vector<std::vector<std::string>> comparison_rows(const Comparison& comparison, bool for_csv);
+/// One variant's row of comparison_rows (its rank is v.rank).
+std::vector<std::string> comparison_row(const Ranking& ranking, const DeflectionRule& rule, const RankedVariant& v,
+                                        bool for_csv);
 
 }  // namespace railmodal::report

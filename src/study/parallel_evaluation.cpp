@@ -15,6 +15,7 @@
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 #include "require_valid.hpp"
+#include "study/parallel_evaluation.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -38,20 +39,21 @@ std::optional<HuntingOptions> hunting_options_of(const Study& study) {
   return options;
 }
 
-std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options,
-                                          AnalysisSummary* summary) {
+int study::evaluate_each(const Study& study, const EvaluationOptions& options,
+                         const std::function<void(size_t)>& prepare,
+                         const std::function<void(size_t, VariantResult&&)>& sink) {
   require_valid(options, "");
-  if (summary) *summary = AnalysisSummary{};
-  StageClock clock(summary);  // no clock, no strings without a summary
   std::vector<int> indices;
-  for (int i = 0; i < static_cast<int>(study.variants.size()); ++i)
+  const bool opened = study.variants.empty() && study.plan;  // open_study: no variant listed, none read
+  const int count = variant_count(study);
+  for (int i = 0; i < count; ++i)
     if (in_shard(i, options.shard, options.shards)) {
-      if (!study.variants[i].read && !(options.read_in_workers && study.plan))
-        throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
+      if ((opened || !study.variants[i].read) && !(options.read_in_workers && study.plan))
+        throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + variant_name(study, i) +
                                     "') was not read: load the study with this shard");
       indices.push_back(i);
     }
-  std::vector<VariantResult> results(indices.size());
+  prepare(indices.size());
   const std::optional<HuntingOptions> hunting = hunting_options_of(study);
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min(threads, static_cast<int>(indices.size())));
@@ -71,9 +73,9 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
       const size_t k = next++;  // a taken index is always finished: see error_at
       if (k >= indices.size()) break;
       const int index = indices[k];
-      const StudyVariant* variant = &study.variants[index];
+      const StudyVariant* variant = opened ? nullptr : &study.variants[index];
       StudyVariant read;  // this thread's copy of an unread variant, dropped once evaluated
-      if (!variant->read) {
+      if (!variant || !variant->read) {
         try {
           read = read_variant(study, index);
           variant = &read;
@@ -84,14 +86,17 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
           continue;
         }
       }
+      VariantResult result;
       try {
-        results[k] = evaluate_variant(*variant, index, study.deflection_rule, hunting);
+        result = evaluate_variant(*variant, index, study.deflection_rule, hunting);
       } catch (const std::exception& e) {  // evaluate_variant keeps design failures; this is a bug
-        results[k].index = index;
-        results[k].name = variant->name;
-        results[k].parameters = variant->parameters;
-        results[k].failure = std::string("internal error: ") + e.what();
+        result = VariantResult{};
+        result.index = index;
+        result.name = variant->name;
+        result.parameters = variant->parameters;
+        result.failure = std::string("internal error: ") + e.what();
       }
+      sink(k, std::move(result));
       if (options.progress) {
         const std::lock_guard<std::mutex> lock(progress_mutex);
         options.progress(static_cast<double>(++done) / static_cast<double>(indices.size()));
@@ -103,6 +108,18 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
   work();
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+  return threads;
+}
+
+std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options,
+                                          AnalysisSummary* summary) {
+  require_valid(options, "");
+  if (summary) *summary = AnalysisSummary{};
+  StageClock clock(summary);  // no clock, no strings without a summary
+  std::vector<VariantResult> results;
+  const int threads = study::evaluate_each(
+      study, options, [&](size_t count) { results.resize(count); },
+      [&](size_t k, VariantResult&& r) { results[k] = std::move(r); });  // one slot each: no lock
   clock.lap("evaluate variants");
   if (summary) {
     summary->analysis = "design study, shard " + std::to_string(options.shard) + " of " + std::to_string(options.shards);

@@ -1,11 +1,13 @@
 // A study plan's variants: the ones it writes, then each sweep's grid or seeded sample
-// (docs/studies.md, "Sweeps and samples").
+// (docs/studies.md, "Sweeps and samples"), each made from its index.
 #include "study/planned_variants.hpp"
 #include "shortest_text.hpp"
 
+#include <algorithm>
 #include <cmath>
-
-#include "study/sampling.hpp"
+#include <cstdint>
+#include <functional>
+#include <utility>
 
 namespace railmodal::study {
 namespace {
@@ -21,43 +23,32 @@ VariantSpec sweep_point(const StudyPlan& plan, const Sweep& sweep, std::string n
   return spec;
 }
 
-// Seeded uniform points of the parameters' intervals, named "<sweep> #1", "#2", ...
-void add_sample(const StudyPlan& plan, const Sweep& sweep, std::vector<VariantSpec>* specs) {
-  Xoshiro256 generator(sweep.seed);
-  for (int i = 0; i < sweep.samples; ++i) {
-    std::vector<Assignment> assignments;
-    for (const SweepParameter& p : sweep.parameters) {
-      const double u = generator.uniform();
-      WrittenNumber drawn{p.from.number + u * (p.to.number - p.from.number), p.from.unit, p.from.integer};
-      assignments.push_back({p.key, p.scene, p.place, drawn.text(), -1, drawn});
-    }
-    specs->push_back(sweep_point(plan, sweep, sweep.name + " #" + std::to_string(i + 1), std::move(assignments)));
-  }
+size_t grid_size(const Sweep& sweep) {
+  size_t total = 1;  // the reader has checked that the grid fits in size_t
+  for (const SweepParameter& p : sweep.parameters) total *= p.values.size();
+  return total;
 }
 
-// Full grid, the first parameter varying slowest (nested loops in the order written); named
-// "<sweep>: <label> = <value>, ...". The reader has checked that the grid fits in size_t.
-void add_grid(const StudyPlan& plan, const Sweep& sweep, std::vector<VariantSpec>* specs) {
+// Point n of the full grid, the first parameter varying slowest (nested loops in the order
+// written): the value of each parameter.
+std::vector<const WrittenValue*> grid_values(const Sweep& sweep, size_t n) {
   const std::vector<SweepParameter>& parameters = sweep.parameters;
-  size_t total = 1;
-  for (const SweepParameter& p : parameters) total *= p.values.size();
-  for (size_t n = 0; n < total; ++n) {
-    std::vector<const WrittenValue*> values(parameters.size());
-    size_t rest = n;
-    for (size_t j = parameters.size(); j-- > 0;) {
-      values[j] = &parameters[j].values[rest % parameters[j].values.size()];
-      rest /= parameters[j].values.size();
-    }
-    std::string label;
-    std::vector<Assignment> assignments;
-    for (size_t j = 0; j < parameters.size(); ++j) {
-      const SweepParameter& p = parameters[j];
-      label += (j ? ", " : ": ") + p.label + " = " + values[j]->text;
-      assignments.push_back({p.key, p.scene, p.place, values[j]->text, values[j]->index, {}});
-    }
-    specs->push_back(sweep_point(plan, sweep, sweep.name + label, std::move(assignments)));
+  std::vector<const WrittenValue*> values(parameters.size());
+  for (size_t j = parameters.size(); j-- > 0;) {
+    values[j] = &parameters[j].values[n % parameters[j].values.size()];
+    n /= parameters[j].values.size();
   }
+  return values;
 }
+
+// "<sweep>: <label> = <value>, ..."
+std::string grid_name(const Sweep& sweep, const std::vector<const WrittenValue*>& values) {
+  std::string name = sweep.name;
+  for (size_t j = 0; j < values.size(); ++j) name += (j ? ", " : ": ") + sweep.parameters[j].label + " = " + values[j]->text;
+  return name;
+}
+
+std::string sample_name(const Sweep& sweep, size_t n) { return sweep.name + " #" + std::to_string(n + 1); }
 
 }  // namespace
 
@@ -67,10 +58,85 @@ std::string WrittenNumber::text() const {
   return shortest_text(number);
 }
 
-std::vector<VariantSpec> planned_variants(const StudyPlan& plan) {
-  std::vector<VariantSpec> specs = plan.variants;
-  for (const Sweep& sweep : plan.sweeps) (sweep.samples > 0 ? add_sample : add_grid)(plan, sweep, &specs);
-  return specs;
+PlannedVariants::PlannedVariants(StudyPlan plan) : plan_(std::move(plan)), size_(plan_.variants.size()) {
+  for (size_t k = 0; k < plan_.sweeps.size(); ++k) {
+    const Sweep& sweep = plan_.sweeps[k];
+    Points points;
+    points.sweep = k;
+    points.first = size_;
+    if (sweep.samples > 0) {
+      // Point n draws the uniforms n·P ... n·P + P − 1 of the sweep's sequence (P parameters).
+      points.count = static_cast<size_t>(sweep.samples);
+      Xoshiro256 generator(sweep.seed);
+      for (size_t n = 0; n < points.count; ++n) {
+        if (n % kCheckpoint == 0) points.checkpoints.push_back(generator);
+        for (size_t j = 0; j < sweep.parameters.size(); ++j) generator.next();
+      }
+    } else {
+      points.count = grid_size(sweep);
+    }
+    size_ += points.count;
+    points_.push_back(std::move(points));
+  }
+}
+
+const PlannedVariants::Points& PlannedVariants::points_of(size_t index) const {
+  const auto after = std::upper_bound(points_.begin(), points_.end(), index,
+                                      [](size_t i, const Points& p) { return i < p.first; });
+  return *std::prev(after);
+}
+
+VariantSpec PlannedVariants::at(size_t index) const {
+  if (index < plan_.variants.size()) return plan_.variants[index];
+  const Points& points = points_of(index);
+  const Sweep& sweep = plan_.sweeps[points.sweep];
+  const size_t n = index - points.first;
+  std::vector<Assignment> assignments;
+  if (sweep.samples > 0) {
+    Xoshiro256 generator = points.checkpoints[n / kCheckpoint];
+    for (size_t skip = (n % kCheckpoint) * sweep.parameters.size(); skip > 0; --skip) generator.next();
+    for (const SweepParameter& p : sweep.parameters) {
+      const double u = generator.uniform();
+      WrittenNumber drawn{p.from.number + u * (p.to.number - p.from.number), p.from.unit, p.from.integer};
+      assignments.push_back({p.key, p.scene, p.place, drawn.text(), -1, drawn});
+    }
+    return sweep_point(plan_, sweep, sample_name(sweep, n), std::move(assignments));
+  }
+  const std::vector<const WrittenValue*> values = grid_values(sweep, n);
+  for (size_t j = 0; j < values.size(); ++j) {
+    const SweepParameter& p = sweep.parameters[j];
+    assignments.push_back({p.key, p.scene, p.place, values[j]->text, values[j]->index, {}});
+  }
+  return sweep_point(plan_, sweep, grid_name(sweep, values), std::move(assignments));
+}
+
+std::string PlannedVariants::name(size_t index) const {
+  if (index < plan_.variants.size()) return plan_.variants[index].name;
+  const Points& points = points_of(index);
+  const Sweep& sweep = plan_.sweeps[points.sweep];
+  const size_t n = index - points.first;
+  return sweep.samples > 0 ? sample_name(sweep, n) : grid_name(sweep, grid_values(sweep, n));
+}
+
+std::optional<size_t> PlannedVariants::first_repeated_name() const {
+  // The names' hashes sorted, 16 bytes a variant rather than a set of 10^6 names; names are
+  // compared only where hashes are equal.
+  std::vector<std::pair<uint64_t, size_t>> hashes(size_);
+  for (size_t i = 0; i < size_; ++i) hashes[i] = {std::hash<std::string>{}(name(i)), i};
+  std::sort(hashes.begin(), hashes.end());
+  std::optional<size_t> first;
+  for (size_t a = 0; a < size_;) {
+    size_t b = a + 1;
+    while (b < size_ && hashes[b].first == hashes[a].first) ++b;
+    for (size_t j = a + 1; j < b; ++j)  // indices ascend within a run: an earlier one with the same name
+      for (size_t i = a; i < j; ++i)
+        if ((!first || hashes[j].second < *first) && name(hashes[i].second) == name(hashes[j].second)) {
+          first = hashes[j].second;
+          break;
+        }
+    a = b;
+  }
+  return first;
 }
 
 }  // namespace railmodal::study

@@ -7,6 +7,7 @@
 
 #include "railmodal/study.hpp"
 #include "study/metrics.hpp"
+#include "study/ranking.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -39,52 +40,16 @@ std::string mode_named(const std::string& metric) {
   return "";
 }
 
-// A metric naming a mode that no evaluated variant has is a mistake in the study (a name
-// misspelt, or an old name: "bogies pitch, in phase" became "bogies pitch (repeated)"), not a
-// violation of every variant: an error at the study's key, with the names there are. Nothing to
-// check when no variant was evaluated.
-void check_mode_names(const Study& study, const std::vector<VariantResult>& results) {
+// The mode names of the evaluated results, and whether any was evaluated.
+std::set<std::string> mode_names(const std::vector<VariantResult>& results, bool* evaluated) {
   std::set<std::string> names;
-  bool evaluated = false;
+  *evaluated = false;
   for (const VariantResult& r : results)
     if (r.ok()) {
-      evaluated = true;
+      *evaluated = true;
       for (const auto& m : r.modes) names.insert(m.name);
     }
-  if (!evaluated) return;
-  auto check = [&](const std::string& metric, const MetricPlace& written) {
-    const std::string mode = mode_named(metric);
-    if (mode.empty() || names.count(mode)) return;
-    std::string list;
-    for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
-    throw InputError(study.source, written.place.line, written.place.column,
-                     "key '" + written.key + "': no variant has a mode named '" + mode + "'; the modes are " + list +
-                         " (README, \"Mode names\")");
-  };
-  for (const RankingConstraint& c : study.ranking.constraints) check(c.metric, c.written);
-  for (const RankingCriterion& c : study.ranking.objective) check(c.metric, c.written);
-}
-
-// The variant's sort key: feasible, then infeasible, then failed; within a group the objective
-// (the weighted sum, or the criteria in order); then the study order. Sets v->objective.
-std::vector<double> rank_key(const VariantResult& r, const Ranking& ranking, RankedVariant* v) {
-  std::vector<double> key{r.ok() ? (v->feasible ? 0.0 : 1.0) : 2.0};
-  if (r.ok() && !ranking.objective.empty()) {
-    if (ranking.weighted) {
-      double sum = 0.0;
-      for (size_t k = 0; k < ranking.objective.size(); ++k)
-        sum += ranking.objective[k].weight * sort_value(v->criteria[k], ranking.objective[k].maximise);
-      // The sum is minimised; reported with the sign it has (maximised criteria negative).
-      if (std::isfinite(sum)) v->objective = sum;
-      key.push_back(std::isnan(sum) ? kWorst : sum);
-    } else {
-      v->objective = v->criteria.front();
-      for (size_t k = 0; k < ranking.objective.size(); ++k)
-        key.push_back(sort_value(v->criteria[k], ranking.objective[k].maximise));
-    }
-  }
-  key.push_back(r.index);
-  return key;
+  return names;
 }
 
 // The variants sorted by their keys, numbered from 1.
@@ -119,18 +84,60 @@ void summarise(Comparison* c) {
 
 }  // namespace
 
+// A metric naming a mode that no evaluated variant has is a mistake in the study (a name
+// misspelt, or an old name: "bogies pitch, in phase" became "bogies pitch (repeated)"), not a
+// violation of every variant: an error at the study's key, with the names there are.
+void study::check_mode_names(const Study& study, const std::set<std::string>& names, bool evaluated) {
+  if (!evaluated) return;
+  auto check = [&](const std::string& metric, const MetricPlace& written) {
+    const std::string mode = mode_named(metric);
+    if (mode.empty() || names.count(mode)) return;
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
+    throw InputError(study.source, written.place.line, written.place.column,
+                     "key '" + written.key + "': no variant has a mode named '" + mode + "'; the modes are " + list +
+                         " (README, \"Mode names\")");
+  };
+  for (const RankingConstraint& c : study.ranking.constraints) check(c.metric, c.written);
+  for (const RankingCriterion& c : study.ranking.objective) check(c.metric, c.written);
+}
+
+// The variant's sort key: feasible, then infeasible, then failed; within a group the objective
+// (the weighted sum, or the criteria in order); rank_variants appends the study order.
+std::vector<double> study::rank_entry(const VariantResult& r, const Ranking& ranking, RankedVariant* v) {
+  if (r.ok()) check_constraints(r, ranking, v);
+  std::vector<double> key{r.ok() ? (v->feasible ? 0.0 : 1.0) : 2.0};
+  if (r.ok() && !ranking.objective.empty()) {
+    if (ranking.weighted) {
+      double sum = 0.0;
+      for (size_t k = 0; k < ranking.objective.size(); ++k)
+        sum += ranking.objective[k].weight * sort_value(v->criteria[k], ranking.objective[k].maximise);
+      // The sum is minimised; reported with the sign it has (maximised criteria negative).
+      if (std::isfinite(sum)) v->objective = sum;
+      key.push_back(std::isnan(sum) ? kWorst : sum);
+    } else {
+      v->objective = v->criteria.front();
+      for (size_t k = 0; k < ranking.objective.size(); ++k)
+        key.push_back(sort_value(v->criteria[k], ranking.objective[k].maximise));
+    }
+  }
+  return key;
+}
+
 Comparison rank_variants(const Study& study, std::vector<VariantResult> results) {
-  if (results.size() != study.variants.size())
+  if (results.size() != static_cast<size_t>(variant_count(study)))
     throw std::invalid_argument("results for " + std::to_string(results.size()) + " variants, the study has " +
-                                std::to_string(study.variants.size()));
+                                std::to_string(variant_count(study)));
   Comparison out;
   StageClock clock(&out.summary);
   std::sort(results.begin(), results.end(), [](const VariantResult& a, const VariantResult& b) { return a.index < b.index; });
   for (size_t i = 0; i < results.size(); ++i)
-    if (results[i].index != static_cast<int>(i) || results[i].name != study.variants[i].name)
-      throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
+    if (results[i].index != static_cast<int>(i) || results[i].name != variant_name(study, static_cast<int>(i)))
+      throw std::invalid_argument("variant " + std::to_string(i + 1) + " ('" + variant_name(study, static_cast<int>(i)) +
                                   "') is missing or appears twice");
-  check_mode_names(study, results);
+  bool evaluated = false;
+  const std::set<std::string> names = mode_names(results, &evaluated);
+  study::check_mode_names(study, names, evaluated);
   out.study = study.name;
   out.source = study.source;
   out.ranking = study.ranking;
@@ -138,8 +145,8 @@ Comparison rank_variants(const Study& study, std::vector<VariantResult> results)
   std::vector<std::vector<double>> keys;  // group, criteria (or weighted sum), index
   for (VariantResult& r : results) {
     RankedVariant v;
-    if (r.ok()) check_constraints(r, out.ranking, &v);
-    keys.push_back(rank_key(r, out.ranking, &v));
+    keys.push_back(study::rank_entry(r, out.ranking, &v));
+    keys.back().push_back(r.index);
     v.result = std::move(r);
     out.variants.push_back(std::move(v));
   }

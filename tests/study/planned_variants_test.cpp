@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,32 @@ SweepParameter grid_parameter(const std::string& key, const std::string& label, 
   return p;
 }
 
+// Every variant of the plan, in study order.
+std::vector<VariantSpec> all(const StudyPlan& plan) {
+  const PlannedVariants planned(plan);
+  std::vector<VariantSpec> specs;
+  for (size_t i = 0; i < planned.size(); ++i) {
+    specs.push_back(planned.at(i));
+    EXPECT_EQ(planned.name(i), specs.back().name);
+  }
+  return specs;
+}
+
+Sweep sample_sweep(const std::string& name, int count, uint64_t seed) {
+  Sweep sample;
+  sample.name = name;
+  sample.samples = count;
+  sample.seed = seed;
+  for (const char* key : {"spring.f", "body.weight"}) {
+    SweepParameter p;
+    p.key = key;
+    p.from = {40.0, "mm", false};
+    p.to = {80.0, "mm", false};
+    sample.parameters.push_back(p);
+  }
+  return sample;
+}
+
 TEST(PlannedVariants, WrittenVariantsComeFirstThenTheGridFirstParameterSlowest) {
   StudyPlan plan;
   plan.vehicle_file = "wagon.toml";
@@ -29,7 +56,7 @@ TEST(PlannedVariants, WrittenVariantsComeFirstThenTheGridFirstParameterSlowest) 
                      grid_parameter("spring.f", "f", {"40 mm", "50 mm", "60 mm"})};
   grid.parameters[1].scene = true;
   plan.sweeps.push_back(grid);
-  const std::vector<VariantSpec> specs = planned_variants(plan);
+  const std::vector<VariantSpec> specs = all(plan);
   ASSERT_EQ(specs.size(), 7u);
   EXPECT_EQ(specs[0].name, "base");
   EXPECT_EQ(specs[1].name, "grid: W = 30 t, f = 40 mm");
@@ -56,7 +83,7 @@ TEST(PlannedVariants, SampleDrawsWrittenLikeTheLowerEnd) {
   p.to = {80.0, "mm", false};
   sample.parameters.push_back(p);
   plan.sweeps.push_back(sample);
-  const std::vector<VariantSpec> specs = planned_variants(plan);
+  const std::vector<VariantSpec> specs = all(plan);
   ASSERT_EQ(specs.size(), 3u);
   // The first uniforms of xoshiro256** seeded by splitmix64(42) (tests/study/study_test.cpp).
   const double u[] = {0.08386297105988216, 0.3789802506626686, 0.6800434110281394};
@@ -69,6 +96,38 @@ TEST(PlannedVariants, SampleDrawsWrittenLikeTheLowerEnd) {
     EXPECT_EQ(a.text, a.drawn.text());
     EXPECT_EQ(specs[i].parameters.at(0).second, a.text);
   }
+}
+
+// A sample point is drawn from the generator's checkpoint before it: the same numbers as
+// drawing every point in turn, on both sides of the checkpoints (every 256 points), in any order.
+TEST(PlannedVariants, ASamplePointAskedForAloneIsThePointOfTheSequence) {
+  StudyPlan plan;
+  plan.variants.push_back({"base", {3, 0}, "wagon.toml", {}, {}});
+  plan.sweeps.push_back(sample_sweep("box", 1000, 7));
+  const PlannedVariants planned(plan);
+  ASSERT_EQ(planned.size(), 1001u);
+  Xoshiro256 generator(7);
+  std::vector<double> drawn;
+  for (int i = 0; i < 2000; ++i) drawn.push_back(40.0 + generator.uniform() * (80.0 - 40.0));
+  for (size_t n : {999u, 0u, 255u, 256u, 257u, 511u, 512u, 700u}) {
+    const VariantSpec spec = planned.at(1 + n);
+    EXPECT_EQ(spec.name, "box #" + std::to_string(n + 1));
+    ASSERT_EQ(spec.assignments.size(), 2u);
+    EXPECT_EQ(spec.assignments[0].drawn.number, drawn[2 * n]) << n;
+    EXPECT_EQ(spec.assignments[1].drawn.number, drawn[2 * n + 1]) << n;
+  }
+}
+
+TEST(PlannedVariants, TheFirstRepeatedNameIsTheLaterOfTheFirstPair) {
+  StudyPlan plan;
+  plan.variants.push_back({"box #3", {3, 0}, "wagon.toml", {}, {}});
+  plan.sweeps.push_back(sample_sweep("box", 5, 1));
+  plan.sweeps.push_back(sample_sweep("other", 300, 1));
+  EXPECT_EQ(PlannedVariants(plan).first_repeated_name(), std::optional<size_t>(3));  // "box #3", 1 + 2
+  plan.variants.front().name = "base";
+  EXPECT_EQ(PlannedVariants(plan).first_repeated_name(), std::nullopt);
+  plan.sweeps.push_back(sample_sweep("box", 2, 1));
+  EXPECT_EQ(PlannedVariants(plan).first_repeated_name(), std::optional<size_t>(306));  // the second "box #1"
 }
 
 TEST(PlannedVariants, WrittenNumberReadsBack) {

@@ -1,5 +1,5 @@
 // railmodal compare STUDY [--format table|csv|json|markdown|html] [-o OUT] [--threads N] [--shard K/N]
-//                         [--merge SHARD.json ...]
+//                         [--merge SHARD.json ...] [--top K]
 #include <iostream>
 #include <memory>
 #include <regex>
@@ -22,6 +22,7 @@ struct CompareOptions {
   std::string shard;
   std::vector<std::string> merge;
   bool quiet = false;
+  int top = 0;
 };
 
 // As many shards as a study may hold variants give each at most one.
@@ -64,10 +65,10 @@ std::vector<VariantResult> merged_results(const Study& study, const std::vector<
         throw InputError(file, 0, 0, "variant '" + r.name + "' is also in an earlier shard");
       results.push_back(std::move(r));
     }
-  for (size_t i = 0; i < study.variants.size(); ++i)
-    if (!seen.count(static_cast<int>(i)))
+  for (int i = 0; i < variant_count(study); ++i)
+    if (!seen.count(i))
       throw InputError(files.front(), 0, 0,
-                       "no shard holds variant " + std::to_string(i + 1) + " ('" + study.variants[i].name +
+                       "no shard holds variant " + std::to_string(i + 1) + " ('" + variant_name(study, i) +
                            "'): give every shard of the study");
   return results;
 }
@@ -89,21 +90,31 @@ int run(const CompareOptions& o) {
   EvaluationOptions evaluation;
   evaluation.threads = o.threads;
   if (!read_shard_option(o, &evaluation)) return kUsage;
+  if (o.top > 0 && (!o.shard.empty() || !o.merge.empty() || format == OutputFormat::markdown ||
+                    format == OutputFormat::html)) {
+    std::cerr << "railmodal: error: --top applies to the ranking of a whole study (table, csv, json), not to "
+              << (!o.shard.empty() ? "a shard" : !o.merge.empty() ? "a merge" : "the " + o.format + " report")
+              << "\n";
+    return kUsage;
+  }
   try {
     OutputFiles outputs;
     std::ostream& out = outputs.open(o.output);
     outputs.refuse_inputs({o.study});
     outputs.refuse_inputs(o.merge);
-    // load_study lists and names every variant and reads none: the threads that evaluate a
-    // variant read it (read_in_workers), a shard its own only; a merge reads none but those its
-    // report draws (read_variant). A bad override stops the run at the first such variant.
+    // open_study lists no variant and reads none: the threads that evaluate a variant make and
+    // read it (read_in_workers), a shard its own only; a merge reads none but those its report
+    // draws (read_variant). A bad override stops the run at the first such variant.
     const bool merging = !o.merge.empty();
-    const Study study = load_study(o.study, [](int) { return false; });
+    const Study study = open_study(o.study);
     evaluation.read_in_workers = true;
     outputs.refuse_inputs(study_files(study));
     if (!merging && !o.quiet) evaluation.progress = terminal_progress("compare");
+    const bool document = format == OutputFormat::markdown || format == OutputFormat::html;
     if (!o.shard.empty())
       write_shard(out, study, evaluation, evaluate_study(study, evaluation), provenance_of(study_files(study)));
+    else if (!merging && !document)  // the ranking alone: results streamed, only their keys held
+      compare_study(out, study, evaluation, format, o.top);
     else
       write_ranked(out, study, merging ? merged_results(study, o.merge) : evaluate_study(study, evaluation), format);
     outputs.commit();
@@ -132,6 +143,10 @@ std::function<int()> add_compare_command(CLI::App& app) {
                   "Evaluate only share K of N (variants whose index mod N is K-1) and write its results as JSON");
   cmd->add_option("--merge", options->merge, "Rank the results of these shard files instead of evaluating")
       ->expected(1, -1);
+  cmd->add_option("--top", options->top,
+                  "Write only the best K variants of the ranking (table, csv, json); 0: every variant")
+      ->check(CLI::Range(0, static_cast<int>(kMaxStudyVariants)))
+      ->capture_default_str();
   cmd->add_flag("-q,--quiet", options->quiet, "No progress on stderr (shown on a terminal for runs over a second)");
   return [options] { return run(*options); };
 }
