@@ -33,17 +33,27 @@ constexpr double kPeakTolerance = 1e-6;  // relative, in speed: far below any gr
 // Local maxima of a curve, refined between their grid neighbours; a maximum beside an
 // unbounded (undamped) point has no finite peak to refine and is left out, but the other
 // peaks of the same curve are not.
+// The largest bounded amplitude of a curve (0 if none): a function of its own, so that the
+// running maximum stays in a register rather than in the caller's frame.
+double largest_bounded(const AmplitudeCurve& curve) {
+  const auto& a = curve.amplitudes;
+  double largest = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (!curve.unbounded[i]) largest = std::max(largest, a[i]);
+  return largest;
+}
+
 std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const ExcitationSource& source,
                                const OutputRequest& output, const AmplitudeCurve& curve) {
   std::vector<Peak> peaks;
   const auto& a = curve.amplitudes;
   if (a.size() < 3) return peaks;
-  double largest = 0.0;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (!curve.unbounded[i]) largest = std::max(largest, a[i]);
+  const double largest = largest_bounded(curve);
   for (size_t i = 1; i + 1 < a.size(); ++i) {
+    // The amplitudes first: few points are maxima, and the flags are bits, slow to read.
+    if (!(a[i] >= a[i - 1] && a[i] > a[i + 1])) continue;
     if (curve.unbounded[i - 1] || curve.unbounded[i] || curve.unbounded[i + 1]) continue;
-    if (a[i] >= a[i - 1] && a[i] > a[i + 1] && a[i] >= 0.01 * largest) {
+    if (a[i] >= 0.01 * largest) {
       const Peak p = refine_peak(study.system, study.modes, source, output, curve.speeds[i - 1], curve.speeds[i + 1],
                                  kPeakTolerance, study.scene.friction_reference_amplitude);
       if (!p.unbounded) peaks.push_back(p);
