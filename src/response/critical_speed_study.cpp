@@ -19,11 +19,17 @@ namespace railmodal {
 namespace {
 
 std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpeed>& rows) {
-  std::vector<double> speeds;
+  // The grid comes out ascending (min(v₀ + i·Δv, v_max) never decreases), so only the few
+  // critical speeds are sorted and merged in: the sorted union, as sorting all would give.
+  std::vector<double> grid;
   const int steps = static_cast<int>(std::ceil((scene.max_speed - scene.min_speed) / scene.speed_step - 1e-9));
-  for (int i = 0; i <= steps; ++i) speeds.push_back(std::min(scene.min_speed + i * scene.speed_step, scene.max_speed));
-  for (const auto& r : rows) speeds.push_back(r.speed);
-  std::sort(speeds.begin(), speeds.end());
+  for (int i = 0; i <= steps; ++i) grid.push_back(std::min(scene.min_speed + i * scene.speed_step, scene.max_speed));
+  if (!std::is_sorted(grid.begin(), grid.end())) std::sort(grid.begin(), grid.end());  // a scene made in code
+  std::vector<double> critical;
+  for (const auto& r : rows) critical.push_back(r.speed);
+  std::sort(critical.begin(), critical.end());
+  std::vector<double> speeds(grid.size() + critical.size());
+  std::merge(grid.begin(), grid.end(), critical.begin(), critical.end(), speeds.begin());
   speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
   return speeds;
 }
