@@ -19,11 +19,17 @@ namespace railmodal {
 namespace {
 
 std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpeed>& rows) {
-  std::vector<double> speeds;
+  // The grid comes out ascending (min(v₀ + i·Δv, v_max) never decreases), so only the few
+  // critical speeds are sorted and merged in: the sorted union, as sorting all would give.
+  std::vector<double> grid;
   const int steps = static_cast<int>(std::ceil((scene.max_speed - scene.min_speed) / scene.speed_step - 1e-9));
-  for (int i = 0; i <= steps; ++i) speeds.push_back(std::min(scene.min_speed + i * scene.speed_step, scene.max_speed));
-  for (const auto& r : rows) speeds.push_back(r.speed);
-  std::sort(speeds.begin(), speeds.end());
+  for (int i = 0; i <= steps; ++i) grid.push_back(std::min(scene.min_speed + i * scene.speed_step, scene.max_speed));
+  if (!std::is_sorted(grid.begin(), grid.end())) std::sort(grid.begin(), grid.end());  // a scene made in code
+  std::vector<double> critical;
+  for (const auto& r : rows) critical.push_back(r.speed);
+  std::sort(critical.begin(), critical.end());
+  std::vector<double> speeds(grid.size() + critical.size());
+  std::merge(grid.begin(), grid.end(), critical.begin(), critical.end(), speeds.begin());
   speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
   return speeds;
 }
@@ -33,17 +39,27 @@ constexpr double kPeakTolerance = 1e-6;  // relative, in speed: far below any gr
 // Local maxima of a curve, refined between their grid neighbours; a maximum beside an
 // unbounded (undamped) point has no finite peak to refine and is left out, but the other
 // peaks of the same curve are not.
+// The largest bounded amplitude of a curve (0 if none): a function of its own, so that the
+// running maximum stays in a register rather than in the caller's frame.
+double largest_bounded(const AmplitudeCurve& curve) {
+  const auto& a = curve.amplitudes;
+  double largest = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (!curve.unbounded[i]) largest = std::max(largest, a[i]);
+  return largest;
+}
+
 std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const ExcitationSource& source,
                                const OutputRequest& output, const AmplitudeCurve& curve) {
   std::vector<Peak> peaks;
   const auto& a = curve.amplitudes;
   if (a.size() < 3) return peaks;
-  double largest = 0.0;
-  for (size_t i = 0; i < a.size(); ++i)
-    if (!curve.unbounded[i]) largest = std::max(largest, a[i]);
+  const double largest = largest_bounded(curve);
   for (size_t i = 1; i + 1 < a.size(); ++i) {
+    // The amplitudes first: few points are maxima, and the flags are bits, slow to read.
+    if (!(a[i] >= a[i - 1] && a[i] > a[i + 1])) continue;
     if (curve.unbounded[i - 1] || curve.unbounded[i] || curve.unbounded[i + 1]) continue;
-    if (a[i] >= a[i - 1] && a[i] > a[i + 1] && a[i] >= 0.01 * largest) {
+    if (a[i] >= 0.01 * largest) {
       const Peak p = refine_peak(study.system, study.modes, source, output, curve.speeds[i - 1], curve.speeds[i + 1],
                                  kPeakTolerance, study.scene.friction_reference_amplitude);
       if (!p.unbounded) peaks.push_back(p);

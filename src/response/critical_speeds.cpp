@@ -36,12 +36,14 @@ struct Evaluation {
   const LinearSystem& system(const LinearSystem& base) const { return damped ? *damped : base; }
 };
 
-Evaluation respond(const LinearSystem& system, const ModalResult& modes, const HarmonicLoad& load, double source_load,
-                   double friction_reference_amplitude) {
+// `Q` is generalized_load(system, load), the undamped system's load, reused where no friction
+// damping changes the system.
+Evaluation respond(const LinearSystem& system, const ModalResult& modes, const HarmonicLoad& load,
+                   const Eigen::VectorXcd& Q, double source_load, double friction_reference_amplitude) {
   Evaluation e;
   if (friction_reference_amplitude > 0.0 && load.frequency_hz > 0.0 && has_leaf_friction(system))
     e.damped = with_equivalent_friction_damping(system, 2.0 * kPi * load.frequency_hz, friction_reference_amplitude);
-  e.load = generalized_load(e.system(system), load);
+  e.load = e.damped ? generalized_load(*e.damped, load) : Q;
   e.response = harmonic_response(e.system(system), modes, e.load, load.frequency_hz, source_load);
   return e;
 }
@@ -189,18 +191,40 @@ std::vector<ResonanceAtOutput> at_outputs(const LinearSystem& system, const Moda
   return at;
 }
 
+// Every harmonic's load of a source at one speed, on the DOFs, and their total norm: harmonic k
+// drives the resonance and all of them give the norm its round-off rule is relative to. Built
+// once for both (the loads, their order and sums are response::source_load_norm's).
+struct SourceLoads {
+  std::vector<HarmonicLoad> harmonics;      // [k − 1]
+  std::vector<Eigen::VectorXcd> generalized;  // [k − 1], generalized_load of each
+  double norm = 0.0;                        // √(Σ_k ‖Q_k‖²)
+};
+
+SourceLoads source_loads(const LinearSystem& system, const ExcitationSource& source, double speed) {
+  SourceLoads loads;
+  double squared = 0.0;
+  for (int k = 1; k <= source.harmonic_count(); ++k) {
+    loads.harmonics.push_back(source.load(system, speed, k));
+    loads.generalized.push_back(generalized_load(system, loads.harmonics.back()));
+    squared += loads.generalized.back().squaredNorm();
+  }
+  loads.norm = std::sqrt(squared);
+  return loads;
+}
+
 // The critical speed where harmonic k of source s meets the eigenspace, if the load drives it.
 std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalResult& modes,
                                        const ExcitationSource& source, int s, int k, double speed,
                                        const Eigenspace& group, const CriticalSpeedOptions& options) {
   const Mode& first = *group.front();
-  const HarmonicLoad load = source.load(system, speed, k);
-  const Eigen::VectorXcd Q = generalized_load(system, load);
+  const SourceLoads loads = source_loads(system, source, speed);
+  const HarmonicLoad& load = loads.harmonics[k - 1];
+  const Eigen::VectorXcd& Q = loads.generalized[k - 1];
   const DrivenMode d = driven_mode(unweighted(group), Q);
   // Driven unless the modal force is round-off of the source's total load (one rule for
   // every part of the response: response::kLoadRoundOff): symmetry zeros (roll under square
   // joints), and harmonics that are round-off themselves (the 3rd of a full-length cosine dip).
-  const double source_load = response::source_load_norm(system, source, speed);
+  const double source_load = loads.norm;
   if (!(d.F0 > response::kLoadRoundOff * first.shape.norm() * source_load)) return std::nullopt;
   // A complex modal-force vector (inputs out of phase) gives a rotating combination;
   // its magnitude per DOF is what the output sees.
@@ -224,7 +248,7 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   row.output = system.dofs[out].label;
   add_growth_and_friction(system, first.eigenvalue, cluster, cluster_magnitude(out), &row);
   const HarmonicResponse response =
-      respond(system, modes, load, source_load, options.friction_reference_amplitude).response;
+      respond(system, modes, load, Q, source_load, options.friction_reference_amplitude).response;
   row.unbounded = unbounded_at(response, modes, out);
   row.amplitude = row.unbounded ? 0.0 : std::abs(response.displacement(out));
   row.outputs = at_outputs(system, modes, options.outputs, response, growth_at(first.eigenvalue, cluster, 1.0),

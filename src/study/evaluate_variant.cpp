@@ -32,9 +32,13 @@ void summarise_modes(const ModalResult& modes, VariantResult* r) {
 // the generalised weight, moments of off-centre CGs included); gravity stiffness is left
 // out because the deflection is measured from the unloaded springs, as the book's f_st.
 void static_deflections(const Vehicle& vehicle, const LinearSystem& any, VariantResult* r) {
-  const LinearSystem s = any.size() > 0 && std::all_of(any.dofs.begin(), any.dofs.end(), [](const Dof& d) {
+  // The given system where it is the vertical one (no copy: a system holds its vehicle).
+  LinearSystem vertical;
+  const bool is_vertical = any.size() > 0 && std::all_of(any.dofs.begin(), any.dofs.end(), [](const Dof& d) {
     return d.motion == Motion::bounce || d.motion == Motion::pitch || d.motion == Motion::longitudinal;
-  }) ? any : assemble(vehicle, DofSet::vertical);
+  });
+  if (!is_vertical) vertical = assemble(vehicle, DofSet::vertical);
+  const LinearSystem& s = is_vertical ? any : vertical;
   if (s.size() == 0) return;
   Eigen::VectorXd up = Eigen::VectorXd::Zero(s.size());
   for (int i = 0; i < s.size(); ++i)
