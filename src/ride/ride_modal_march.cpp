@@ -164,15 +164,24 @@ std::unique_ptr<ModalRideMarch> ModalRideMarch::make(const RideStateSpace& model
       if (m->periodic_) wrapped = (base % profile.size() + profile.size()) % profile.size();
       m->inputs_.push_back({&profile, wrapped, phase, delta, delta * speed / m->step_});
       for (int j = 0; j < m->outputs_; ++j) lw.push_back(lw_p(j)), ld.push_back(ld_p(j));
+      // The march carries w = z − Q₂u(t) (Q₂ the end-of-step tap), so that a step reads the
+      // inputs once: w(t + h) = μw(t) + (Q₀ + μQ₂)u(t) + Q₁u(t + δ), and z = w + Q₂u(t) goes
+      // into the outputs' direct terms (below) and the conversions at the start and end.
       const Eigen::VectorXcd beta = W * load.cast<Complex>();
-      for (int tap = 0; tap < 3; ++tap)
-        for (int k = 0; k < m->modes_; ++k) {
-          Complex t[3];
-          taps(m->lambda_[k], step, delta, t);
-          const Complex q = t[tap] * beta(marched[k]);
-          m->q_re_.push_back(q.real());
-          m->q_im_.push_back(q.imag());
-        }
+      std::vector<Complex> q0(m->modes_), q1(m->modes_);
+      for (int k = 0; k < m->modes_; ++k) {
+        Complex t[3];
+        taps(m->lambda_[k], step, delta, t);
+        const Complex mu(m->mu_re_[k], m->mu_im_[k]);
+        q0[k] = (t[0] + mu * t[2]) * beta(marched[k]);
+        q1[k] = t[1] * beta(marched[k]);
+        const Complex q2 = t[2] * beta(marched[k]);
+        m->end_re_.push_back(q2.real());
+        m->end_im_.push_back(q2.imag());
+      }
+      for (int k = 0; k < m->modes_; ++k) m->q_re_.push_back(q0[k].real()), m->q_im_.push_back(q0[k].imag());
+      if (delta != 0.0)  // no kink inside the step: no middle tap
+        for (int k = 0; k < m->modes_; ++k) m->q_re_.push_back(q1[k].real()), m->q_im_.push_back(q1[k].imag());
     }
   }
   // lw_, ld_ stored output-major: lw_[j·inputs + i]
@@ -191,6 +200,12 @@ std::unique_ptr<ModalRideMarch> ModalRideMarch::make(const RideStateSpace& model
       m->c_re_.push_back(c.real());
       m->c_im_.push_back(c.imag());
     }
+  // z = w + Q₂u: the Q₂u part of Ls·s is a direct term of each input, Σ_k Re(c_k Q₂_k)
+  for (int j = 0; j < m->outputs_; ++j)
+    for (int i = 0; i < n_in; ++i)
+      for (int k = 0; k < m->modes_; ++k)
+        m->lw_[j * n_in + i] += m->c_re_[j * m->modes_ + k] * m->end_re_[i * m->modes_ + k] -
+                                m->c_im_[j * m->modes_ + k] * m->end_im_[i * m->modes_ + k];
   return m;
 }
 
@@ -280,41 +295,54 @@ void ModalRideMarch::read(const Cursor& cursor, std::vector<double>* now, std::v
   }
 }
 
-void ModalRideMarch::advance(State* z, const std::vector<double>& now, const std::vector<double>& mid,
-                             const std::vector<double>& next) const {
-  double* zr = z->re.data();
-  double* zi = z->im.data();
+void ModalRideMarch::advance(State* w, const std::vector<double>& now, const std::vector<double>& mid) const {
+  double* wr = w->re.data();
+  double* wi = w->im.data();
   for (int m = 0; m < modes_; ++m) {
-    const double r = mu_re_[m] * zr[m] - mu_im_[m] * zi[m];
-    zi[m] = mu_re_[m] * zi[m] + mu_im_[m] * zr[m];
-    zr[m] = r;
+    const double r = mu_re_[m] * wr[m] - mu_im_[m] * wi[m];
+    wi[m] = mu_re_[m] * wi[m] + mu_im_[m] * wr[m];
+    wr[m] = r;
   }
   const double* qr = q_re_.data();
   const double* qi = q_im_.data();
   for (size_t i = 0; i < inputs_.size(); ++i) {
-    const double u[3] = {now[i], mid[i], next[i]};
-    for (int tap = 0; tap < 3; ++tap, qr += modes_, qi += modes_) {
-      if (tap == 1 && inputs_[i].delta == 0.0) continue;  // no kink inside the step: no middle tap
-      for (int m = 0; m < modes_; ++m) {
-        zr[m] += qr[m] * u[tap];
-        zi[m] += qi[m] * u[tap];
-      }
+    const double u = now[i];
+    for (int m = 0; m < modes_; ++m) {
+      wr[m] += qr[m] * u;
+      wi[m] += qi[m] * u;
     }
+    qr += modes_, qi += modes_;
+    if (inputs_[i].delta == 0.0) continue;  // no kink inside the step: no middle tap
+    const double v = mid[i];
+    for (int m = 0; m < modes_; ++m) {
+      wr[m] += qr[m] * v;
+      wi[m] += qi[m] * v;
+    }
+    qr += modes_, qi += modes_;
   }
+}
+
+void ModalRideMarch::shift(State* s, const std::vector<double>& now, double sign) const {
+  for (size_t i = 0; i < inputs_.size(); ++i)
+    for (int m = 0; m < modes_; ++m) {
+      s->re[m] += sign * end_re_[i * modes_ + m] * now[i];
+      s->im[m] += sign * end_im_[i * modes_ + m] * now[i];
+    }
 }
 
 bool ModalRideMarch::periodic_start(long period, State* start) {
   const size_t n_in = inputs_.size();
-  std::vector<double> now(n_in), mid(n_in), next(n_in), next_mid(n_in);
+  std::vector<double> now(n_in), mid(n_in), first(n_in);
   Cursor cursor(*this);
-  read(cursor, &now, &mid, nullptr);
+  read(cursor, &first, &mid, nullptr);
+  // w from rest over one period: its orbit's start is w_P / (1 − μ^period) as z's (the same
+  // recurrence, the same periodic inputs), and z* = w* + Q₂u(0).
   State z = rest();
+  now = first;
   for (long k = 0; k < period; ++k) {
+    advance(&z, now, mid);
     cursor.next();
-    read(cursor, &next, &next_mid, nullptr);
-    advance(&z, now, mid, next);
-    now.swap(next);
-    mid.swap(next_mid);
+    read(cursor, &now, &mid, nullptr);
   }
   std::vector<Complex> gain(modes_);
   double least = INFINITY, most = 0.0;
@@ -333,6 +361,7 @@ bool ModalRideMarch::periodic_start(long period, State* start) {
     z.re[m] = s.real();
     z.im[m] = s.imag();
   }
+  shift(&z, first, 1.0);
   *start = std::move(z);
   return true;
 }
@@ -340,9 +369,10 @@ bool ModalRideMarch::periodic_start(long period, State* start) {
 Eigen::MatrixXd ModalRideMarch::outputs(State z, long count) {
   const size_t n_in = inputs_.size();
   Eigen::MatrixXd y(count, outputs_);
-  std::vector<double> now(n_in), mid(n_in), slope(n_in), next(n_in), next_mid(n_in), next_slope(n_in);
+  std::vector<double> now(n_in), mid(n_in), slope(n_in);
   Cursor cursor(*this);
   read(cursor, &now, &mid, &slope);
+  shift(&z, now, -1.0);  // w = z − Q₂u(0)
   for (long k = 0; k < count; ++k) {
     for (int j = 0; j < outputs_; ++j) {
       double sum = 0.0;
@@ -355,12 +385,9 @@ Eigen::MatrixXd ModalRideMarch::outputs(State z, long count) {
       y(k, j) = sum;
     }
     if (k + 1 == count) break;
+    advance(&z, now, mid);
     cursor.next();
-    read(cursor, &next, &next_mid, &next_slope);
-    advance(&z, now, mid, next);
-    now.swap(next);
-    mid.swap(next_mid);
-    slope.swap(next_slope);
+    read(cursor, &now, &mid, &slope);
   }
   return y;
 }

@@ -56,9 +56,11 @@ class ModalRideMarch {
   // The inputs' values at the cursor's step, at t + δ, and (when asked) their slopes.
   void read(const Cursor& cursor, std::vector<double>* now, std::vector<double>* mid,
             std::vector<double>* slope) const;
-  // One step: z ← μ∘z + Q·u, u the taps of the step (the values at t, t + δ and t + h).
-  void advance(State* z, const std::vector<double>& now, const std::vector<double>& mid,
-               const std::vector<double>& next) const;
+  // One step of the shifted state w = z − Q₂u(t): w ← μ∘w + (Q₀ + μQ₂)u(t) + Q₁u(t + δ), the
+  // end-of-step tap folded in (one read of the inputs a step instead of two).
+  void advance(State* w, const std::vector<double>& now, const std::vector<double>& mid) const;
+  // s ← s + sign·Q₂u: between z and w.
+  void shift(State* s, const std::vector<double>& now, double sign) const;
 
   double speed_ = 0.0, h_ = 0.0;
   double condition_ = 0.0;
@@ -78,9 +80,12 @@ class ModalRideMarch {
   long per_sample_ = 1;  // m
   double step_ = 0.0;    // Δx
   bool periodic_ = false;
-  // Q: per input, 3 taps (u(t), u(t + δ), u(t + h)), each `modes_` coefficients, re and im
+  // per input, the taps of w's step: Q₀ + μQ₂ on u(t), then (only where δ ≠ 0) Q₁ on
+  // u(t + δ), each `modes_` coefficients, re and im
   std::vector<double> q_re_, q_im_;
-  // outputs: y_j = Σ_k (cr·Re z − ci·Im z) + Σ_inputs (lw·u + V·ld·u')
+  // Q₂, the end-of-step tap, per input `modes_` coefficients (z = w + Q₂u)
+  std::vector<double> end_re_, end_im_;
+  // outputs: y_j = Σ_k (cr·Re w − ci·Im w) + Σ_inputs (lw·u + V·ld·u'), lw including Q₂'s part
   int outputs_ = 0;
   std::vector<double> c_re_, c_im_, lw_, ld_;
 };

@@ -2,7 +2,10 @@
 // the measured error against the analog definitions in docs/ride.md, "Ride indices in time".
 #include "ride/time_weighting.hpp"
 
+#include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace railmodal::ride {
@@ -112,6 +115,23 @@ Eigen::VectorXd DigitalFilter::apply(const Eigen::VectorXd& input) const {
   return signal;
 }
 
+long DigitalFilter::lead_in() const {
+  // The slowest pole: the largest root modulus of z^order + a₁z^(order−1) + … + a_order over
+  // the sections (their companion matrices' eigenvalues).
+  double slowest = 0.0;
+  for (const Section& s : sections_) {
+    const Eigen::Index order = static_cast<Eigen::Index>(s.a.size()) - 1;
+    if (order < 1) continue;
+    Eigen::MatrixXd companion = Eigen::MatrixXd::Zero(order, order);
+    for (Eigen::Index k = 0; k < order; ++k) companion(0, k) = -s.a[static_cast<size_t>(k + 1)];
+    for (Eigen::Index k = 1; k < order; ++k) companion(k, k - 1) = 1.0;
+    slowest = std::max(slowest, companion.eigenvalues().cwiseAbs().maxCoeff());
+  }
+  if (!(slowest < 1.0)) return std::numeric_limits<long>::max();  // never decays: no lead-in is enough
+  if (slowest == 0.0) return 0;
+  return static_cast<long>(std::ceil(std::log(kLeadInDecay) / std::log(slowest)));
+}
+
 Eigen::VectorXd DigitalFilter::apply_second_pass(const Eigen::VectorXd& period) const {
   const std::vector<PaddedSection> fused = padded(sections_);
   if (fused.size() != sections_.size()) {
@@ -119,7 +139,11 @@ Eigen::VectorXd DigitalFilter::apply_second_pass(const Eigen::VectorXd& period) 
     twice << period, period;
     return apply(twice).tail(period.size());
   }
-  Eigen::VectorXd signal = period;
+  // The first pass over the period's last lead_in() samples only when that is shorter than the
+  // period: the state it leaves differs from the whole pass's by the response to the earlier
+  // samples, decayed by the slowest pole's |p|^lead_in ≤ kLeadInDecay (bound: time_weighting.hpp).
+  const Eigen::Index lead = std::min<Eigen::Index>(period.size(), std::min<long>(lead_in(), period.size()));
+  Eigen::VectorXd signal = period.tail(lead);
   std::vector<double> state;
   apply_fused(fused, &signal, &state);  // the first pass: only its final state is kept
   signal = period;
