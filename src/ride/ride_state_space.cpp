@@ -8,9 +8,28 @@
 #include "railmodal/errors.hpp"
 
 namespace railmodal::ride {
+namespace {
+
+// M, C and K hold no wheel–rail contact: the creep forces and the gravitational stiffness that
+// steer a wheelset on the rails are added by the frequency-domain ride (ride_contact.hpp), not by
+// the march. A wheelset free to move laterally or yaw would stand on its suspension alone: a
+// wrong answer given silently, so it is refused.
+void refuse_wheelsets_without_contact(const LinearSystem& system) {
+  for (const Wheelset& w : system.vehicle.wheelsets)
+    for (const Dof& d : system.dofs)
+      if (d.body >= 0 && system.vehicle.bodies[static_cast<size_t>(d.body)].name == w.body &&
+          (d.motion == Motion::lateral || d.motion == Motion::yaw))
+        throw std::invalid_argument("ride simulation: wheelset '" + w.body + "' moves " + to_string(d.motion) +
+                                    " (" + d.label + "), and the time-domain ride does not model the wheel–rail "
+                                    "creep contact that guides it on the rails; run the ride in the frequency "
+                                    "domain, or give the vertical degrees of freedom only");
+}
+
+}  // namespace
 
 RideStateSpace ride_state_space(const LinearSystem& system) {
   model::refuse_series_dampers(system, "ride simulation");
+  refuse_wheelsets_without_contact(system);
   const int n = system.size();
   if (n == 0) throw std::invalid_argument("ride simulation: the system has no degrees of freedom");
   for (int i = 0; i < n; ++i)

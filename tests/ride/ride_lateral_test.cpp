@@ -323,5 +323,31 @@ TEST(RideLateral, MethodCountsTheContactInputs) {
       << r.summary.method;
 }
 
+// The time-domain ride holds no wheel–rail contact: a wheelset free to move laterally would
+// stand on its suspension alone, a wrong answer without a word. Refused, naming the wheelset.
+TEST(RideLateral, TimeDomainRefusesAWheelsetWithoutItsContact) {
+  const test::WheelsetData d;
+  TrackGeometry geometry;
+  geometry.step = 0.25;
+  geometry.alignment = Eigen::VectorXd::Zero(4096);
+  geometry.periodic = true;
+  RideSimulationOptions options;
+  options.speed = 20.0;
+  RideOutput y;
+  y.name = "wheelset lateral";
+  y.kind = RideOutput::Kind::point;
+  y.body = "wheelset";
+  y.axis = RideAxis::lateral;
+  y.quantity = ResponseQuantity::displacement;
+  try {
+    simulate_ride(assemble(wheelset_on_springs(d), DofSet::lateral), geometry, {y}, options);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("wheelset 'wheelset' moves lateral"), std::string::npos) << what;
+    EXPECT_NE(what.find("frequency domain"), std::string::npos) << what;
+  }
+}
+
 }  // namespace
 }  // namespace railmodal
