@@ -124,6 +124,72 @@ std::map<std::string, KeyProbes> probe_values(const StudyFile& file) {
   return keys;
 }
 
+// One end of the values a fast key takes in the study: the value to write and its number as
+// read.
+struct End {
+  toml::value value;
+  double si = 0.0;
+};
+
+// The least and largest values each fast key takes (written values probed, drawn intervals'
+// ends), in the keys' order.
+std::vector<std::pair<End, End>> key_ranges(const std::map<std::string, KeyProbes>& probes, const FastPath& fast) {
+  std::vector<std::pair<End, End>> ranges;
+  for (const auto& [key, k] : fast.keys) {
+    std::vector<End> ends;
+    const KeyProbes& values = probes.at(key);
+    for (const auto& [value, index] : values.written)
+      if (k.written.count(index)) ends.push_back({value, *read_as(value, k.kind)});
+    for (const auto& sample : values.samples)
+      for (const study::WrittenNumber& x : {sample[0], sample[1]})
+        if (const std::optional<double> si = read_as(drawn_value(x), k.kind))
+          if (std::any_of(k.drawn.begin(), k.drawn.end(), [&](const auto& d) { return d.first <= *si && *si <= d.second; }))
+            ends.push_back({drawn_value(x), *si});
+    const auto [low, high] =
+        std::minmax_element(ends.begin(), ends.end(), [](const End& a, const End& b) { return a.si < b.si; });
+    ranges.push_back({*low, *high});
+  }
+  return ranges;
+}
+
+// More fast keys than this: the 2^n corners are not worth reading; the readers read every
+// variant.
+constexpr size_t kMaxJointKeys = 8;
+
+// Each key was probed alone on the base; the readers also check numbers against each other
+// (a bending beam's length and centre against where the elements attach). So every corner of
+// the box the keys' ranges span is read by the general path too, and must be the base with
+// exactly those numbers set: a check that compares numbers linearly and refuses a point inside
+// the box refuses a corner. (A check that refuses only points inside, never a corner, is not
+// caught: none of the readers' checks is of that kind.)
+bool corners_read_as_set(const StudyFile& file, const std::map<std::string, KeyProbes>& probes, const FastPath& fast,
+                         const std::string& base_shape, const std::vector<double>& base) {
+  if (fast.keys.size() < 2) return true;
+  if (fast.keys.size() > kMaxJointKeys) return false;
+  const std::vector<std::pair<End, End>> ranges = key_ranges(probes, fast);
+  for (unsigned corner = 0; corner < (1u << fast.keys.size()); ++corner) {
+    toml::value document = file.vehicle_documents.at(file.plan.vehicle_file);
+    std::vector<double> expected = base;
+    size_t i = 0;
+    for (const auto& [key, k] : fast.keys) {
+      const End& end = (corner >> i & 1u) ? ranges[i].second : ranges[i].first;
+      set_at_path(document, key, end.value);
+      for (size_t n : k.numbers) expected[n] = end.si;
+      ++i;
+    }
+    try {
+      Vehicle vehicle = read_vehicle(document, file.plan.vehicle_file);
+      if (vehicle_shape(vehicle) != base_shape) return false;
+      const std::vector<double> numbers = numbers_of(std::move(vehicle));
+      for (size_t n = 0; n < numbers.size(); ++n)
+        if (!same_bits(numbers[n], expected[n])) return false;
+    } catch (const std::exception&) {
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 std::optional<FastPath> resolve_fast_path(const StudyFile& file) {
@@ -138,7 +204,8 @@ std::optional<FastPath> resolve_fast_path(const StudyFile& file) {
   }
   const std::string base_shape = vehicle_shape(fast.base);
   const std::vector<double> base = numbers_of(fast.base);
-  for (const auto& [key, values] : probe_values(file)) {
+  const std::map<std::string, KeyProbes> probes = probe_values(file);
+  for (const auto& [key, values] : probes) {
     if (values.written.size() + 3 * values.samples.size() > kMaxProbes) continue;
     std::vector<Probe> written, drawn;
     for (const auto& [value, index] : values.written)
@@ -170,6 +237,7 @@ std::optional<FastPath> resolve_fast_path(const StudyFile& file) {
       it = fast.keys.erase(it);
     else
       ++it;
+  if (!corners_read_as_set(file, probes, fast, base_shape, base)) return std::nullopt;
   return fast;
 }
 

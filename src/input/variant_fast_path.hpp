@@ -40,8 +40,11 @@ struct FastPath {
 
 /// Probes every vehicle key of the study's sweeps and [[variant]] overrides on the base
 /// vehicle: each written value, and each sample's ends and middle, read by the general path
-/// and compared number by number with the base vehicle. Nothing when the base cannot be read
-/// or no variant is on it (check_variants parsed no document for it).
+/// and compared number by number with the base vehicle; then, with two fast keys or more, every
+/// corner of the box their values span read together (the readers check some numbers against
+/// each other). Nothing when the base cannot be read, no variant is on it (check_variants parsed
+/// no document for it), or a corner is refused or reads as anything but the base with exactly
+/// those numbers set.
 std::optional<FastPath> resolve_fast_path(const StudyFile& file);
 
 /// The variant's vehicle by the fast path, or nothing when one of its keys or values is not

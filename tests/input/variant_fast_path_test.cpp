@@ -145,6 +145,42 @@ TEST(VariantFastPath, ABadValueOfAFastKeyIsTheReadersError) {
   }
 }
 
+// Two keys each fine alone on the base, refused together by a reader's check that compares
+// them (the bending beam must reach every element on the body): the joint probe of the keys'
+// corners sees it, so the readers read the variants and the one that sets both is refused at
+// its study line, as without the fast path.
+TEST(VariantFastPath, KeysTheReadersCheckAgainstEachOtherAreProbedTogether) {
+  const std::string data = RAILMODAL_DATA_DIR;
+  // The flexible coach with the beam's centre written, so that both keys set a number each.
+  const std::string coach = write_temp(
+      "joint_coach.toml", std::regex_replace(slurp(data + "/vehicles/manchester_benchmark_coach_flexible.toml"),
+                                             std::regex(R"(bending = \{ length = "24 m",)"),
+                                             R"(bending = { length = "24 m", centre = "0 m",)"));
+  const std::string path =
+      write_temp("joint.toml", "[study]\nvehicle = \"" + coach + "\"\n"
+                 "scene = \"" + data + "/scenes/fette_car_10m_rails.toml\"\n"
+                 "[[variant]]\nname = \"short beam\"\noverrides = { \"body.bending.length\" = \"19.5 m\" }\n"
+                 "[[variant]]\nname = \"moved centre\"\noverrides = { \"body.bending.centre\" = \"0.3 m\" }\n"
+                 "[[variant]]\nname = \"both\"\n"
+                 "overrides = { \"body.bending.length\" = \"19.5 m\", \"body.bending.centre\" = \"0.3 m\" }\n");
+  input::StudyFile file = input::read_study_file(path, kMaxStudyVariants);
+  input::check_variants(&file);
+  std::string fast_keys;
+  if (file.fast)
+    for (const auto& [key, k] : file.fast->keys) fast_keys += key + " ";
+  EXPECT_FALSE(file.fast) << "the two keys' corner (19.5 m, 0.3 m) is refused by the readers; fast: " << fast_keys;
+  const std::vector<study::VariantSpec> specs = all_variants(file.plan);
+  ASSERT_EQ(specs.size(), 4u);  // the base, then the three written
+  for (size_t i : {0, 1, 2}) EXPECT_NO_THROW(input::read_variant(file, specs[i], nullptr)) << specs[i].name;
+  try {
+    input::read_variant(file, specs[3], nullptr);
+    FAIL() << "the beam that no longer reaches the cradles was read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 12) << e.what();  // the third [[variant]]'s overrides
+    EXPECT_NE(std::string(e.what()).find("beyond the ends of the bending beam"), std::string::npos) << e.what();
+  }
+}
+
 // A field added to the vehicle's structs must be walked by vehicle_numbers and vehicle_shape,
 // or the fast path would not see what a key changes there: the structs' sizes (x86-64,
 // libstdc++) say when one was added. Update input/vehicle_numbers.cpp, then these sizes.
