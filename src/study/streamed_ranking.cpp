@@ -8,6 +8,7 @@
 #include <unistd.h>  // unlink
 
 #include <algorithm>
+#include <cerrno>
 #include <atomic>
 #include <cstdlib>
 #include <iterator>
@@ -15,6 +16,7 @@
 #include <mutex>
 #include <set>
 #include <stdexcept>
+#include <system_error>
 #include <utility>
 
 #include "study/parallel_evaluation.hpp"
@@ -91,8 +93,10 @@ StreamedRanking::StreamedRanking(const Study& study, const EvaluationOptions& op
   if (top == 0) {
     spill_.reset(anonymous_file(temporary_directory()));
     if (!spill_)
-      throw std::runtime_error("a streamed ranking could not open a temporary file in " + temporary_directory() +
-                               " (set TMPDIR to a writable directory)");
+      throw std::system_error(errno, std::generic_category(),
+                              "the ranking of a whole study keeps its rows in a temporary file, and none could be "
+                              "opened in " + temporary_directory() +
+                              " (set TMPDIR to a writable directory, or keep the best K only with --top K)");
   }
   study::evaluate_each(
       study, options,
@@ -119,7 +123,12 @@ StreamedRanking::StreamedRanking(const Study& study, const EvaluationOptions& op
         lengths_[k] = static_cast<unsigned>(text.size());
         spilled += text.size();
       });
-  if (spill_failed) throw std::runtime_error("a streamed ranking could not write its temporary file");
+  // A full disk shows at the write or only at the flush: both before a byte of the output.
+  if (!spill_failed && top == 0) spill_failed = std::fflush(spill_.get()) != 0 || std::ferror(spill_.get()) != 0;
+  if (spill_failed)
+    throw std::system_error(errno ? errno : EIO, std::generic_category(),
+                            "the ranking of a whole study could not write its temporary file in " +
+                                temporary_directory() + " (free space there, set TMPDIR, or use --top K)");
   check_mode_names(study, modes, evaluated);
   feasible_ = feasible;
   if (top > 0) {
@@ -127,7 +136,6 @@ StreamedRanking::StreamedRanking(const Study& study, const EvaluationOptions& op
     for (size_t i = 0; i < kept_.size(); ++i) order_.push_back(i);
     return;
   }
-  std::fflush(spill_.get());
   order_.resize(size_);
   for (size_t i = 0; i < size_; ++i) order_[i] = i;
   const auto key_of = [&](size_t k) { return keys.begin() + static_cast<std::ptrdiff_t>(k * stride); };
@@ -145,7 +153,8 @@ std::string StreamedRanking::text(size_t rank) const {
   std::string text(lengths_[k], '\0');
   if (fseeko(spill_.get(), static_cast<off_t>(offsets_[k]), SEEK_SET) != 0 ||
       std::fread(text.data(), 1, text.size(), spill_.get()) != text.size())
-    throw std::runtime_error("a streamed ranking could not read its temporary file");
+    throw std::system_error(errno ? errno : EIO, std::generic_category(),
+                            "the ranking of a whole study could not read back its temporary file");
   return text;
 }
 

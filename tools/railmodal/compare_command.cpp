@@ -4,6 +4,7 @@
 #include <memory>
 #include <regex>
 #include <set>
+#include <system_error>
 
 #include "commands.hpp"
 #include "output_file.hpp"
@@ -119,6 +120,8 @@ int run(const CompareOptions& o) {
       write_ranked(out, study, merging ? merged_results(study, o.merge) : evaluate_study(study, evaluation), format);
     outputs.commit();
     return kSuccess;
+  } catch (const std::system_error& e) {  // the streamed ranking's temporary file
+    throw OutputError(kOutput, std::string("railmodal: error: ") + e.what());
   } catch (...) {
     return exit_of_error("compare", o.study);
   }
