@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <stdexcept>
 
 #include "model/element_stiffness.hpp"
 #include "model/point_motion.hpp"
@@ -40,6 +41,18 @@ void add_suspension_roll(const LinearSystem& system, const std::string& wheelset
   for (std::size_t k = 0; k < v.elements.size(); ++k) {
     const Element& e = v.elements[k];
     if (e.upper != wheelset && e.lower != wheelset) continue;
+    // The rails' roll also twists an element's roll stiffness and stretches a lateral series
+    // damper; neither is in the terms below, so such an element is refused, not left out.
+    const bool lateral_series = std::any_of(e.series_dampers.begin(), e.series_dampers.end(),
+                                            [](const SeriesDamper& s) { return s.direction == Motion::lateral; });
+    if (e.rotational_stiffness.x() != 0.0 || lateral_series)
+      throw std::invalid_argument("ride: cross-level through the contact: element '" + e.name + "' on wheelset '" +
+                                  wheelset + "' has " + (lateral_series ? "a lateral series damper" : "a roll stiffness") +
+                                  ", which the rails' roll would load and the ride does not model; leave the "
+                                  "cross-level out, or move the element off the wheelset");
+    if (k >= system.element_loads.size())
+      throw std::invalid_argument("ride: cross-level through the contact: element '" + e.name +
+                                  "' has no static load in the assembled system (assemble the vehicle first)");
     const double h = e.point.z();
     const double d = (e.upper == wheelset ? -h : 0.0) - (e.lower == wheelset ? -h : 0.0);
     if (d == 0.0) continue;
@@ -47,8 +60,7 @@ void add_suspension_roll(const LinearSystem& system, const std::string& wheelset
     Eigen::RowVectorXd a = Eigen::RowVectorXd::Zero(n);
     if (upper >= 0) a += model::point_displacement_map(system, upper, e.point).row(1);
     if (lower >= 0) a -= model::point_displacement_map(system, lower, e.point).row(1);
-    const double load = k < system.element_loads.size() ? system.element_loads[k] : 0.0;
-    stiff -= model::lateral_stiffness(e, load) * d * a.transpose();
+    stiff -= model::lateral_stiffness(e, system.element_loads[k]) * d * a.transpose();
     viscous -= e.lateral_damping * d * a.transpose();
   }
   c->suspension_roll_stiff.push_back(stiff);

@@ -349,5 +349,29 @@ TEST(RideLateral, TimeDomainRefusesAWheelsetWithoutItsContact) {
   }
 }
 
+// The rails' roll twists a roll stiffness on the wheelset and stretches a lateral series damper,
+// neither of which the cross-level's contact inputs carry: refused, naming the element, rather
+// than answered without them.
+TEST(RideLateral, CrossLevelRefusesWhatTheRailsRollWouldLoadUnmodelled) {
+  const test::WheelsetData d;
+  RideOptions options;
+  options.speeds = {20.0};
+  Vehicle roll_stiff = wheelset_on_raised_springs(d);
+  roll_stiff.elements.front().rotational_stiffness.x() = 1e5;
+  Vehicle series = wheelset_on_raised_springs(d);
+  series.elements.front().series_dampers.push_back({Motion::lateral, 1e4, 1e6});
+  for (const Vehicle& v : {roll_stiff, series}) {
+    try {
+      solve_ride(assemble(v, DofSet::lateral), ore_cross_level(), {lateral_displacement("axle", 0.0)}, options);
+      ADD_FAILURE() << "no exception";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("element 'right' on wheelset"), std::string::npos) << e.what();
+    }
+  }
+  // Without either, the same model runs (the hand receptance test above checks its answer).
+  EXPECT_NO_THROW(solve_ride(assemble(wheelset_on_raised_springs(d), DofSet::lateral), ore_cross_level(),
+                             {lateral_displacement("axle", 0.0)}, options));
+}
+
 }  // namespace
 }  // namespace railmodal
