@@ -144,7 +144,12 @@ std::optional<HopfPoint> find_hopf(const VectorField& field, int n, double low, 
       HopfPoint h;
       h.parameter = 0.5 * (a + b);
       Eigen::EigenSolver<Eigen::MatrixXd> eigen(equilibrium_jacobian(field, n, h.parameter), true);
-      const Rightmost r = rightmost(eigen);
+      Rightmost r = rightmost(eigen);
+      if (r.index < 0) {  // the pair turned real at the midpoint: b, where it grows, has it
+        h.parameter = b;
+        eigen.compute(equilibrium_jacobian(field, n, b), true);
+        r = rightmost(eigen);
+      }
       h.frequency = eigen.eigenvalues()[r.index].imag();
       h.vector = eigen.eigenvectors().col(r.index);
       return h;
