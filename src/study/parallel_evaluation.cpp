@@ -96,7 +96,14 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
         result.parameters = variant->parameters;
         result.failure = std::string("internal error: ") + e.what();
       }
-      sink(k, std::move(result));
+      try {
+        sink(k, std::move(result));
+      } catch (...) {  // the sink's own failure (a full disk, no memory): every thread stops, then it is rethrown
+        const std::lock_guard<std::mutex> lock(error_mutex);
+        if (k < error_at) error_at = k, error = std::current_exception();
+        stop = true;
+        continue;
+      }
       if (options.progress) {
         const std::lock_guard<std::mutex> lock(progress_mutex);
         options.progress(static_cast<double>(++done) / static_cast<double>(indices.size()));

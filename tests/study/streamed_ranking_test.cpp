@@ -6,6 +6,7 @@
 #include <string>
 
 #include "railmodal/railmodal.hpp"
+#include "study/parallel_evaluation.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
@@ -81,6 +82,22 @@ TEST(CompareStudy, RefusesDocumentsShardsAndANegativeTop) {
   shard.shards = 2;
   std::ostringstream out;
   EXPECT_THROW(compare_study(out, study, shard, OutputFormat::csv), std::invalid_argument);
+}
+
+// A sink that fails (a full disk under a streamed ranking) stops every thread and its exception
+// reaches the caller once they have joined, instead of ending the process from a worker.
+TEST(EvaluateEach, ASinksFailureReachesTheCaller) {
+  const Study study = open_study(bundled_study("resort_against_fette"));
+  for (int threads : {1, 2}) {
+    EvaluationOptions options;
+    options.threads = threads;
+    options.read_in_workers = true;
+    EXPECT_THROW(study::evaluate_each(
+                     study, options, [](size_t) {},
+                     [](size_t, VariantResult&&) { throw std::runtime_error("the sink's disk is full"); }),
+                 std::runtime_error)
+        << threads << " threads";
+  }
 }
 
 }  // namespace
