@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "model/point_motion.hpp"
 #include "railmodal/driving_gear.hpp"
 #include "railmodal/excitation.hpp"
 
@@ -74,9 +75,9 @@ class GearSource final : public ExcitationSource {
     for (int i = 0; i < count; ++i) out[i] = (omega[i] / reference_omega) * (omega[i] / reference_omega);
   }
   std::optional<Misfit> misfit(const LinearSystem& system) const override {
-    if (body_index(system, p_.body) < 0) return Misfit{"body", "the vehicle has no body '" + p_.body + "'"};
+    if (model::body_index(system, p_.body) < 0) return Misfit{"body", "the vehicle has no body '" + p_.body + "'"};
     for (const auto& a : p_.axles)
-      if (!a.body.empty() && body_index(system, a.body) < 0)
+      if (!a.body.empty() && model::body_index(system, a.body) < 0)
         return Misfit{"axle", "the vehicle has no body '" + a.body + "'"};
     return std::nullopt;
   }
@@ -86,14 +87,14 @@ class GearSource final : public ExcitationSource {
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
     const double omega = 2.0 * speed / p_.gear.wheel_diameter;
-    const int frame = body_index(system, p_.body);
+    const int frame = model::body_index(system, p_.body);
     for (const GearForce& f : forces_) {
       const GearHarmonic& h = f.harmonics[harmonic];
       if (h.cosine == 0.0 && h.sine == 0.0) continue;
       PointForce pf;
       pf.body = frame;
       if (f.axle_body && !p_.axles.empty() && !p_.axles[f.axle].body.empty())
-        pf.body = body_index(system, p_.axles[f.axle].body);
+        pf.body = model::body_index(system, p_.axles[f.axle].body);
       pf.point = f.point;
       pf.amplitude(f.direction) = omega * omega * phasor(h, harmonic);
       out.forces.push_back(pf);
@@ -156,13 +157,6 @@ class GearSource final : public ExcitationSource {
         }
       }
     }
-  }
-
-  static int body_index(const LinearSystem& system, const std::string& name) {
-    const auto& bodies = system.vehicle.bodies;
-    for (size_t b = 0; b < bodies.size(); ++b)
-      if (bodies[b].name == name) return static_cast<int>(b);
-    return -1;
   }
 
   GearExcitation p_;

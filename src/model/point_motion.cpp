@@ -26,4 +26,11 @@ Eigen::MatrixXd point_displacement_map(const LinearSystem& system, int body, con
   return map;
 }
 
+int body_index(const LinearSystem& system, const std::string& name) {
+  const auto& bodies = system.vehicle.bodies;
+  for (size_t b = 0; b < bodies.size(); ++b)
+    if (bodies[b].name == name) return static_cast<int>(b);
+  return -1;
+}
+
 }  // namespace railmodal::model

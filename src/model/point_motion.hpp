@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
 
 #include "railmodal/linear_system.hpp"
 
@@ -16,5 +17,9 @@ namespace railmodal::model {
 /// std::invalid_argument for a body index out of range, or a point beyond the ends of the
 /// body's bending beam.
 Eigen::MatrixXd point_displacement_map(const LinearSystem& system, int body, const Eigen::Vector3d& point);
+
+/// The index in system.vehicle.bodies of the body named `name`; −1 when there is none (the
+/// track, an element's empty lower end).
+int body_index(const LinearSystem& system, const std::string& name);
 
 }  // namespace railmodal::model

@@ -33,11 +33,6 @@ void add_suspension_roll(const LinearSystem& system, const std::string& wheelset
   const Vehicle& v = system.vehicle;
   const int n = system.size();
   Eigen::VectorXd stiff = Eigen::VectorXd::Zero(n), viscous = Eigen::VectorXd::Zero(n);
-  auto body_index = [&](const std::string& name) {
-    for (std::size_t b = 0; b < v.bodies.size(); ++b)
-      if (v.bodies[b].name == name) return static_cast<int>(b);
-    return -1;
-  };
   for (std::size_t k = 0; k < v.elements.size(); ++k) {
     const Element& e = v.elements[k];
     if (e.upper != wheelset && e.lower != wheelset) continue;
@@ -56,7 +51,7 @@ void add_suspension_roll(const LinearSystem& system, const std::string& wheelset
     const double h = e.point.z();
     const double d = (e.upper == wheelset ? -h : 0.0) - (e.lower == wheelset ? -h : 0.0);
     if (d == 0.0) continue;
-    const int upper = body_index(e.upper), lower = body_index(e.lower);
+    const int upper = model::body_index(system, e.upper), lower = model::body_index(system, e.lower);
     Eigen::RowVectorXd a = Eigen::RowVectorXd::Zero(n);
     if (upper >= 0) a += model::point_displacement_map(system, upper, e.point).row(1);
     if (lower >= 0) a -= model::point_displacement_map(system, lower, e.point).row(1);

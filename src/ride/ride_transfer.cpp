@@ -24,12 +24,7 @@ namespace {
 constexpr double kTwoPi = 6.28318530717958647692;
 using Complex = std::complex<double>;
 
-int body_index(const LinearSystem& system, const std::string& name) {
-  const auto& bodies = system.vehicle.bodies;
-  for (size_t b = 0; b < bodies.size(); ++b)
-    if (bodies[b].name == name) return static_cast<int>(b);
-  return -1;
-}
+using model::body_index;
 
 int element_index(const LinearSystem& system, const std::string& name) {
   const auto& elements = system.vehicle.elements;
