@@ -289,7 +289,7 @@ std::vector<ModalRideMarch::Cursor> ModalRideMarch::cursors() const {
 // state lives in registers (march_steps, the mode count a template argument), then the outputs
 // of the block are summed step-wise across the block. Each step's arithmetic is the same
 // operations in the same order as a step at a time, so the histories are the same bit for bit
-// (tests/ride/ride_modal_march_test.cpp, ModalRideMarch.BlocksGiveTheStepByStepHistoryBitForBit).
+// (ModalRideMarch.BlocksOfStepsChangeNoBit; the golden time-domain reports unchanged).
 struct ModalRideMarch::Block {
   static constexpr long kSteps = 256;
   // input-major, [i · kSteps + b]: u(t), u(t + δ) (0 where δ = 0) and ∂u/∂ξ at step b
