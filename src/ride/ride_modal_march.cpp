@@ -2,6 +2,8 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
+#include <utility>
 #include <cmath>
 
 namespace railmodal::ride {
@@ -179,9 +181,15 @@ std::unique_ptr<ModalRideMarch> ModalRideMarch::make(const RideStateSpace& model
         m->end_re_.push_back(q2.real());
         m->end_im_.push_back(q2.imag());
       }
+      const int input = static_cast<int>(m->inputs_.size()) - 1;
       for (int k = 0; k < m->modes_; ++k) m->q_re_.push_back(q0[k].real()), m->q_im_.push_back(q0[k].imag());
-      if (delta != 0.0)  // no kink inside the step: no middle tap
+      m->tap_input_.push_back(input);
+      m->tap_mid_.push_back(0);
+      if (delta != 0.0) {  // no kink inside the step: no middle tap
         for (int k = 0; k < m->modes_; ++k) m->q_re_.push_back(q1[k].real()), m->q_im_.push_back(q1[k].imag());
+        m->tap_input_.push_back(input);
+        m->tap_mid_.push_back(1);
+      }
     }
   }
   // lw_, ld_ stored output-major: lw_[j·inputs + i]
@@ -213,13 +221,12 @@ ModalRideMarch::State ModalRideMarch::rest() const {
   return {std::vector<double>(modes_, 0.0), std::vector<double>(modes_, 0.0)};
 }
 
-// Each input's segment at the current step, counted in whole samples and steps (no position
-// is ever formed as a double, so a wheel on a sample reads that sample exactly).
+// One input's segment at the current step, counted in whole samples and steps (no position is
+// ever formed as a double, so a wheel on a sample reads that sample exactly).
 class ModalRideMarch::Cursor {
  public:
-  explicit Cursor(const ModalRideMarch& march) : march_(march) {
-    for (const Input& in : march.inputs_) segment_.push_back(in.base);
-  }
+  Cursor(const ModalRideMarch& march, int input)
+      : march_(march), in_(march.inputs_[input]), n_(in_.profile->size()), segment_(in_.base) {}
   void next() {
     if (++r_ < march_.per_sample_) {
       offset_ = static_cast<double>(r_) / static_cast<double>(march_.per_sample_);
@@ -227,9 +234,18 @@ class ModalRideMarch::Cursor {
     }
     r_ = 0;
     offset_ = 0.0;
-    for (size_t i = 0; i < segment_.size(); ++i)
-      if (++segment_[i] == march_.inputs_[i].profile->size() && march_.periodic_) segment_[i] = 0;
+    if (++segment_ == n_ && march_.periodic_) segment_ = 0;
   }
+  // With one step a sample (m = 1) the input stands at the same fraction `phase` of each
+  // segment, so the next steps read segments j, j + 1, … in a straight line: how many of the
+  // next `limit` steps do so with a sample before and after each (no wrap, no record end),
+  // and `skip` moves past them.
+  long straight_run(long limit) const {
+    if (march_.per_sample_ != 1 || segment_ < 1) return 0;
+    return std::max<long>(0, std::min<long>(limit, n_ - 1 - segment_));
+  }
+  void skip(long steps) { segment_ += steps; }
+  Eigen::Index segment() const { return segment_; }
 
   struct Place {
     Eigen::Index j, next;  // the segment [j, next] whose straight line is read (a record's end
@@ -237,89 +253,164 @@ class ModalRideMarch::Cursor {
     double f;              // the fraction along it
     Eigen::Index at;       // the sample the input stands on (to 1e-9 of a sample), else −1
   };
-  Place place(int i) const {
-    const Input& in = march_.inputs_[i];
-    const Eigen::Index n = in.profile->size();
-    double f = in.phase + offset_;
-    Eigen::Index j = segment_[i];
+  Place place() const {
+    double f = in_.phase + offset_;
+    Eigen::Index j = segment_;
     if (f >= 1.0) {
       f -= 1.0;
-      if (++j == n && march_.periodic_) j = 0;
+      if (++j == n_ && march_.periodic_) j = 0;
     }
     constexpr double kOnSample = 1e-9;  // as TrackUnderWheels::slope
     const Eigen::Index at = f < kOnSample ? j : f > 1.0 - kOnSample ? j + 1 : -1;
-    if (!march_.periodic_ && j > n - 2) f += static_cast<double>(j - (n - 2)), j = n - 2;
+    if (!march_.periodic_ && j > n_ - 2) f += static_cast<double>(j - (n_ - 2)), j = n_ - 2;
     if (!march_.periodic_ && j < 0) f += static_cast<double>(j), j = 0;
     Eigen::Index next = j + 1;
-    if (next == n) next = 0;
+    if (next == n_) next = 0;
     return {j, next, f, at};
   }
 
  private:
   const ModalRideMarch& march_;
-  std::vector<Eigen::Index> segment_;
-  long r_ = 0;  // the step within the sample, 0 … m − 1
+  const Input& in_;
+  Eigen::Index n_;
+  Eigen::Index segment_;
+  long r_ = 0;           // the step within the sample, 0 … m − 1
   double offset_ = 0.0;  // r/m
 };
 
-void ModalRideMarch::read(const Cursor& cursor, std::vector<double>* now, std::vector<double>* mid,
-                          std::vector<double>* slope) const {
+std::vector<ModalRideMarch::Cursor> ModalRideMarch::cursors() const {
+  std::vector<Cursor> out;
+  for (size_t i = 0; i < inputs_.size(); ++i) out.emplace_back(*this, static_cast<int>(i));
+  return out;
+}
+
+// Blocks. The march goes over blocks of kSteps steps: every input of the block is read first
+// (the reads do not depend on the state), then w is advanced step by step by a kernel whose
+// state lives in registers (march_steps, the mode count a template argument), then the outputs
+// of the block are summed step-wise across the block. Each step's arithmetic is the same
+// operations in the same order as a step at a time, so the histories are the same bit for bit
+// (ModalRideMarch.BlocksOfStepsChangeNoBit; the golden time-domain reports unchanged).
+struct ModalRideMarch::Block {
+  static constexpr long kSteps = 256;
+  // input-major, [i · kSteps + b]: u(t), u(t + δ) (0 where δ = 0) and ∂u/∂ξ at step b
+  std::vector<double> now, mid, slope;
+  // mode-major, [m · kSteps + b]: w at step b, before that step's advance
+  std::vector<double> w_re, w_im;
+  Block(size_t inputs, int modes)
+      : now(inputs * kSteps), mid(inputs * kSteps), slope(inputs * kSteps), w_re(modes * kSteps), w_im(modes * kSteps) {}
+};
+
+void ModalRideMarch::read_block(std::vector<Cursor>* cursors, long steps, Block* block, bool slopes) const {
+  const long B = Block::kSteps;
   for (size_t i = 0; i < inputs_.size(); ++i) {
     const Input& in = inputs_[i];
     const Eigen::VectorXd& p = *in.profile;
-    const Cursor::Place at = cursor.place(static_cast<int>(i));
-    const double a = p(at.j), b = p(at.next);
-    (*now)[i] = a + at.f * (b - a);
-    (*mid)[i] = in.delta == 0.0 ? 0.0 : a + (at.f + in.reach) * (b - a);
-    if (!slope) continue;
-    // as TrackUnderWheels::slope: on a sample the mean of its two segments; a record's first
-    // and last samples take their one segment (the extended line beyond them)
-    if (at.at < 0) {
-      (*slope)[i] = (b - a) / step_;
-      continue;
-    }
     const Eigen::Index n = p.size();
-    Eigen::Index before = at.at - 1, after = at.at + 1;
-    if (periodic_) {
-      if (before < 0) before += n;
-      if (before >= n) before -= n;
-      if (after >= n) after -= n;
-      (*slope)[i] = (p(after) - p(before)) / (2.0 * step_);
-    } else if (before < 0) {
-      (*slope)[i] = (p(1) - p(0)) / step_;
-    } else if (after > n - 1) {
-      (*slope)[i] = (p(n - 1) - p(n - 2)) / step_;
-    } else {
-      (*slope)[i] = (p(after) - p(before)) / (2.0 * step_);
+    Cursor& cursor = (*cursors)[i];
+    double* now = block->now.data() + i * B;
+    double* mid = block->mid.data() + i * B;
+    double* slope = block->slope.data() + i * B;
+    for (long b = 0; b < steps; ++b, cursor.next()) {
+      if (const long run = cursor.straight_run(steps - b)) {
+        // the same formulas as the step below, on a straight run (f = phase, on a sample iff 0)
+        const double* q = p.data() + cursor.segment();
+        const double f = in.phase, g = in.phase + in.reach;
+        for (long t = 0; t < run; ++t) now[b + t] = q[t] + f * (q[t + 1] - q[t]);
+        for (long t = 0; t < run; ++t) mid[b + t] = in.delta == 0.0 ? 0.0 : q[t] + g * (q[t + 1] - q[t]);
+        if (slopes && f == 0.0)
+          for (long t = 0; t < run; ++t) slope[b + t] = (q[t + 1] - q[t - 1]) / (2.0 * step_);
+        else if (slopes)
+          for (long t = 0; t < run; ++t) slope[b + t] = (q[t + 1] - q[t]) / step_;
+        cursor.skip(run - 1);  // and the loop's next()
+        b += run - 1;
+        continue;
+      }
+      const Cursor::Place at = cursor.place();
+      const double u0 = p(at.j), u1 = p(at.next);
+      now[b] = u0 + at.f * (u1 - u0);
+      mid[b] = in.delta == 0.0 ? 0.0 : u0 + (at.f + in.reach) * (u1 - u0);
+      if (!slopes) continue;
+      // as TrackUnderWheels::slope: on a sample the mean of its two segments; a record's first
+      // and last samples take their one segment (the extended line beyond them)
+      if (at.at < 0) {
+        slope[b] = (u1 - u0) / step_;
+        continue;
+      }
+      Eigen::Index before = at.at - 1, after = at.at + 1;
+      if (periodic_) {
+        if (before < 0) before += n;
+        if (before >= n) before -= n;
+        if (after >= n) after -= n;
+        slope[b] = (p(after) - p(before)) / (2.0 * step_);
+      } else if (before < 0) {
+        slope[b] = (p(1) - p(0)) / step_;
+      } else if (after > n - 1) {
+        slope[b] = (p(n - 1) - p(n - 2)) / step_;
+      } else {
+        slope[b] = (p(after) - p(before)) / (2.0 * step_);
+      }
     }
   }
 }
 
-void ModalRideMarch::advance(State* w, const std::vector<double>& now, const std::vector<double>& mid) const {
-  double* wr = w->re.data();
-  double* wi = w->im.data();
-  for (int m = 0; m < modes_; ++m) {
-    const double r = mu_re_[m] * wr[m] - mu_im_[m] * wi[m];
-    wi[m] = mu_re_[m] * wi[m] + mu_im_[m] * wr[m];
-    wr[m] = r;
-  }
-  const double* qr = q_re_.data();
-  const double* qi = q_im_.data();
-  for (size_t i = 0; i < inputs_.size(); ++i) {
-    const double u = now[i];
-    for (int m = 0; m < modes_; ++m) {
-      wr[m] += qr[m] * u;
-      wi[m] += qi[m] * u;
+namespace {
+
+// One block of w ← μ∘w + Σ_taps q·v, `steps` steps; w before each step kept in kept_re/kept_im
+// (mode-major, `stride` apart) when they are given. kModes > 0: the mode count fixed, so that
+// w is a local array the compiler keeps in registers; 0: any count, w in memory.
+template <int kModes>
+void march_steps(int modes, const double* mu_re, const double* mu_im, const double* q_re, const double* q_im,
+                 const std::vector<const double*>& taps, long steps, double* state_re, double* state_im,
+                 double* kept_re, double* kept_im, long stride) {
+  constexpr bool fixed = kModes > 0;
+  const int M = fixed ? kModes : modes;
+  double local_re[fixed ? kModes : 1], local_im[fixed ? kModes : 1];
+  double* wr = fixed ? local_re : state_re;
+  double* wi = fixed ? local_im : state_im;
+  if (fixed)
+    for (int m = 0; m < M; ++m) wr[m] = state_re[m], wi[m] = state_im[m];
+  const size_t count = taps.size();
+  for (long b = 0; b < steps; ++b) {
+    if (kept_re)
+      for (int m = 0; m < M; ++m) kept_re[m * stride + b] = wr[m], kept_im[m * stride + b] = wi[m];
+    for (int m = 0; m < M; ++m) {
+      const double r = mu_re[m] * wr[m] - mu_im[m] * wi[m];
+      wi[m] = mu_re[m] * wi[m] + mu_im[m] * wr[m];
+      wr[m] = r;
     }
-    qr += modes_, qi += modes_;
-    if (inputs_[i].delta == 0.0) continue;  // no kink inside the step: no middle tap
-    const double v = mid[i];
-    for (int m = 0; m < modes_; ++m) {
-      wr[m] += qr[m] * v;
-      wi[m] += qi[m] * v;
+    for (size_t t = 0; t < count; ++t) {
+      const double v = taps[t][b];
+      const double* qr = q_re + t * M;
+      const double* qi = q_im + t * M;
+      for (int m = 0; m < M; ++m) {
+        wr[m] += qr[m] * v;
+        wi[m] += qi[m] * v;
+      }
     }
-    qr += modes_, qi += modes_;
   }
+  if (fixed)
+    for (int m = 0; m < M; ++m) state_re[m] = wr[m], state_im[m] = wi[m];
+}
+
+using MarchKernel = void (*)(int, const double*, const double*, const double*, const double*,
+                             const std::vector<const double*>&, long, double*, double*, double*, double*, long);
+// march_steps<0> (any count), then march_steps<1> … march_steps<16>: up to 16 marched modes
+// (a 16-DOF vehicle's conjugate pairs) the state stays in registers.
+template <int... M>
+constexpr std::array<MarchKernel, sizeof...(M) + 1> march_kernels(std::integer_sequence<int, M...>) {
+  return {&march_steps<0>, &march_steps<M + 1>...};
+}
+constexpr auto kMarchKernels = march_kernels(std::make_integer_sequence<int, 16>{});
+
+}  // namespace
+
+void ModalRideMarch::advance_block(Block* block, long steps, State* w, bool keep) const {
+  std::vector<const double*> taps(tap_input_.size());
+  for (size_t t = 0; t < taps.size(); ++t)
+    taps[t] = (tap_mid_[t] ? block->mid.data() : block->now.data()) + tap_input_[t] * Block::kSteps;
+  const MarchKernel kernel = modes_ < static_cast<int>(kMarchKernels.size()) ? kMarchKernels[modes_] : kMarchKernels[0];
+  kernel(modes_, mu_re_.data(), mu_im_.data(), q_re_.data(), q_im_.data(), taps, steps, w->re.data(), w->im.data(),
+         keep ? block->w_re.data() : nullptr, keep ? block->w_im.data() : nullptr, Block::kSteps);
 }
 
 void ModalRideMarch::shift(State* s, const std::vector<double>& now, double sign) const {
@@ -332,17 +423,22 @@ void ModalRideMarch::shift(State* s, const std::vector<double>& now, double sign
 
 bool ModalRideMarch::periodic_start(long period, State* start) {
   const size_t n_in = inputs_.size();
-  std::vector<double> now(n_in), mid(n_in), first(n_in);
-  Cursor cursor(*this);
-  read(cursor, &first, &mid, nullptr);
+  Block block(n_in, modes_);
+  std::vector<double> first(n_in);
+  std::vector<Cursor> cursor = cursors();
   // w from rest over one period: its orbit's start is w_P / (1 − μ^period) as z's (the same
   // recurrence, the same periodic inputs), and z* = w* + Q₂u(0).
   State z = rest();
-  now = first;
-  for (long k = 0; k < period; ++k) {
-    advance(&z, now, mid);
-    cursor.next();
-    read(cursor, &now, &mid, nullptr);
+  for (long k = 0; k < period; k += Block::kSteps) {
+    const long steps = std::min(Block::kSteps, period - k);
+    read_block(&cursor, steps, &block, false);
+    if (k == 0)
+      for (size_t i = 0; i < n_in; ++i) first[i] = block.now[i * Block::kSteps];
+    advance_block(&block, steps, &z, false);
+  }
+  if (period <= 0) {
+    read_block(&cursor, 1, &block, false);
+    for (size_t i = 0; i < n_in; ++i) first[i] = block.now[i * Block::kSteps];
   }
   std::vector<Complex> gain(modes_);
   double least = INFINITY, most = 0.0;
@@ -368,26 +464,37 @@ bool ModalRideMarch::periodic_start(long period, State* start) {
 
 Eigen::MatrixXd ModalRideMarch::outputs(State z, long count) {
   const size_t n_in = inputs_.size();
+  const long B = Block::kSteps;
   Eigen::MatrixXd y(count, outputs_);
-  std::vector<double> now(n_in), mid(n_in), slope(n_in);
-  Cursor cursor(*this);
-  read(cursor, &now, &mid, &slope);
-  shift(&z, now, -1.0);  // w = z − Q₂u(0)
-  for (long k = 0; k < count; ++k) {
-    for (int j = 0; j < outputs_; ++j) {
-      double sum = 0.0;
-      const double* cr = c_re_.data() + j * modes_;
-      const double* ci = c_im_.data() + j * modes_;
-      for (int m = 0; m < modes_; ++m) sum += cr[m] * z.re[m] - ci[m] * z.im[m];
-      const double* lw = lw_.data() + j * n_in;
-      const double* ld = ld_.data() + j * n_in;
-      for (size_t i = 0; i < n_in; ++i) sum += lw[i] * now[i] + speed_ * ld[i] * slope[i];
-      y(k, j) = sum;
+  Block block(n_in, modes_);
+  std::vector<Cursor> cursor = cursors();
+  std::vector<double> sum(B);
+  for (long k0 = 0; k0 < count; k0 += B) {
+    const long steps = std::min(B, count - k0);
+    read_block(&cursor, steps, &block, true);
+    if (k0 == 0) {  // w = z − Q₂u(0)
+      std::vector<double> first(n_in);
+      for (size_t i = 0; i < n_in; ++i) first[i] = block.now[i * B];
+      shift(&z, first, -1.0);
     }
-    if (k + 1 == count) break;
-    advance(&z, now, mid);
-    cursor.next();
-    read(cursor, &now, &mid, &slope);
+    // (the advance after the last step is not used)
+    advance_block(&block, steps, &z, true);
+    for (int j = 0; j < outputs_; ++j) {
+      std::fill(sum.begin(), sum.begin() + steps, 0.0);
+      for (int m = 0; m < modes_; ++m) {
+        const double cr = c_re_[j * modes_ + m], ci = c_im_[j * modes_ + m];
+        const double* wr = block.w_re.data() + m * B;
+        const double* wi = block.w_im.data() + m * B;
+        for (long b = 0; b < steps; ++b) sum[b] += cr * wr[b] - ci * wi[b];
+      }
+      for (size_t i = 0; i < n_in; ++i) {
+        const double lw = lw_[j * n_in + i], vld = speed_ * ld_[j * n_in + i];
+        const double* now = block.now.data() + i * B;
+        const double* slope = block.slope.data() + i * B;
+        for (long b = 0; b < steps; ++b) sum[b] += lw * now[b] + vld * slope[b];
+      }
+      std::copy(sum.begin(), sum.begin() + steps, &y(k0, j));
+    }
   }
   return y;
 }

@@ -52,15 +52,15 @@ class ModalRideMarch {
 
  private:
   ModalRideMarch() = default;
-  class Cursor;  // where each input stands, step by step
-  // The inputs' values at the cursor's step, at t + δ, and (when asked) their slopes.
-  void read(const Cursor& cursor, std::vector<double>* now, std::vector<double>* mid,
-            std::vector<double>* slope) const;
-  // One step of the shifted state w = z − Q₂u(t): w ← μ∘w + (Q₀ + μQ₂)u(t) + Q₁u(t + δ), the
-  // end-of-step tap folded in (one read of the inputs a step instead of two).
-  void advance(State* w, const std::vector<double>& now, const std::vector<double>& mid) const;
+  class Cursor;  // where one input stands, step by step
+  std::vector<Cursor> cursors() const;  // one an input, at step 0
   // s ← s + sign·Q₂u: between z and w.
   void shift(State* s, const std::vector<double>& now, double sign) const;
+  // The march over a block of steps (ride_modal_march.cpp, "Blocks"): the inputs of each step
+  // read first into `block`, then w advanced step by step, each step's w kept when asked.
+  struct Block;
+  void read_block(std::vector<Cursor>* cursors, long steps, Block* block, bool slopes) const;
+  void advance_block(Block* block, long steps, State* w, bool keep) const;
 
   double speed_ = 0.0, h_ = 0.0;
   double condition_ = 0.0;
@@ -88,6 +88,10 @@ class ModalRideMarch {
   // outputs: y_j = Σ_k (cr·Re w − ci·Im w) + Σ_inputs (lw·u + V·ld·u'), lw including Q₂'s part
   int outputs_ = 0;
   std::vector<double> c_re_, c_im_, lw_, ld_;
+  // The taps in the order advance() applies them (per input u(t), then u(t + δ) where δ ≠ 0):
+  // which input each reads, and whether at t + δ.
+  std::vector<int> tap_input_;
+  std::vector<char> tap_mid_;
 };
 
 }  // namespace railmodal::ride

@@ -186,6 +186,15 @@ Eigen::VectorXd weighted(const ride::DigitalFilter& filter, const Eigen::VectorX
   return filter.apply_second_pass(run.tail(evaluated));
 }
 
+// Two weightings of the same run side by side (DigitalFilter's pair: the same samples as
+// weighted() of each, bit for bit).
+std::pair<Eigen::VectorXd, Eigen::VectorXd> weighted(const ride::DigitalFilter& first, const ride::DigitalFilter& second,
+                                                     const Eigen::VectorXd& run, long evaluated, bool periodic) {
+  if (periodic) return ride::DigitalFilter::apply_second_pass(first, second, run.tail(evaluated));
+  auto both = ride::DigitalFilter::apply(first, second, run);
+  return {both.first.tail(evaluated), both.second.tail(evaluated)};
+}
+
 double rms(const Eigen::VectorXd& values) { return std::sqrt(values.squaredNorm() / static_cast<double>(values.size())); }
 
 RideHistory history(const RideOutput& output, const Eigen::VectorXd& run, const RunPlan& plan, bool periodic,
@@ -195,14 +204,17 @@ RideHistory history(const RideOutput& output, const Eigen::VectorXd& run, const 
   h.rms = rms(h.values);
   if (output.kind != RideOutput::Kind::point || output.quantity != ResponseQuantity::acceleration) return h;
   const FrequencyWeighting weighting = output.axis == RideAxis::vertical ? en12299_wb() : en12299_wd();
-  h.weighted = weighted(ride::digital_weighting(weighting, plan.step), run, plan.evaluated, periodic);
-  h.weighted_rms = rms(h.weighted);
-  if (output.axis != RideAxis::longitudinal) {
+  const ride::DigitalFilter comfort = ride::digital_weighting(weighting, plan.step);
+  if (output.axis == RideAxis::longitudinal) {
+    h.weighted = weighted(comfort, run, plan.evaluated, periodic);
+  } else {  // Sperling's B beside W
     const SperlingDirection direction =
         output.axis == RideAxis::vertical ? SperlingDirection::vertical : SperlingDirection::lateral;
-    h.sperling_wz = sperling_wz_from_weighted_rms(
-        rms(weighted(ride::digital_sperling(direction, plan.step), run, plan.evaluated, periodic)));
+    auto both = weighted(comfort, ride::digital_sperling(direction, plan.step), run, plan.evaluated, periodic);
+    h.weighted = std::move(both.first);
+    h.sperling_wz = sperling_wz_from_weighted_rms(rms(both.second));
   }
+  h.weighted_rms = rms(h.weighted);
   const Eigen::Index window = std::max<Eigen::Index>(1, std::lround(options.window / plan.step));
   h.window_rms = ride::window_rms(h.weighted, window);
   h.continuous_comfort = ride::running_rms(h.weighted, window);

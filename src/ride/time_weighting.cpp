@@ -92,7 +92,115 @@ std::vector<PaddedSection> padded(const std::vector<DigitalFilter::Section>& sec
   return out;
 }
 
+// Two padded cascades side by side, lane 0 and lane 1 of a two-double vector, each lane the
+// same operations in the same order as apply_fused on its own (the vector operations are
+// lane-wise IEEE operations). The shorter cascade is padded with identity sections
+// (b = 1, 0, 0, 0; a = 1, 0, 0, 0), which pass each sample through unchanged: y = 1·x + 0 with
+// a state that stays exactly 0. kSections > 0 fixes the section count, so that the states are
+// locals the compiler keeps in registers; 0: any count.
+#if defined(__GNUC__) || defined(__clang__)
+typedef double Lanes __attribute__((vector_size(2 * sizeof(double))));
+#else
+struct Lanes {
+  double v[2];
+  double operator[](int l) const { return v[l]; }
+};
+inline Lanes operator*(Lanes p, Lanes q) { return {{p.v[0] * q.v[0], p.v[1] * q.v[1]}}; }
+inline Lanes operator+(Lanes p, Lanes q) { return {{p.v[0] + q.v[0], p.v[1] + q.v[1]}}; }
+inline Lanes operator-(Lanes p, Lanes q) { return {{p.v[0] - q.v[0], p.v[1] - q.v[1]}}; }
+#endif
+
+struct SectionPair {
+  Lanes b[kFusedOrder + 1], a[kFusedOrder + 1];
+};
+
+template <int kSections>
+void apply_fused_pair(const std::vector<SectionPair>& sections, const double* in0, const double* in1, Eigen::Index n,
+                      double* out0, double* out1, std::vector<Lanes>* state) {
+  constexpr bool fixed = kSections > 0;
+  const int count = fixed ? kSections : static_cast<int>(sections.size());
+  state->resize(kFusedOrder * sections.size(), Lanes{0.0, 0.0});
+  Lanes local[fixed ? kFusedOrder * kSections : 1];
+  Lanes* z = fixed ? local : state->data();
+  if (fixed) std::copy(state->begin(), state->end(), local);
+  const SectionPair* s = sections.data();
+  const Lanes zero{0.0, 0.0};
+  for (Eigen::Index i = 0; i < n; ++i) {
+    Lanes x{in0[i], in1[i]};
+    for (int j = 0; j < count; ++j) {
+      Lanes* zj = z + kFusedOrder * j;
+      const Lanes y = s[j].b[0] * x + zj[0];
+      zj[0] = s[j].b[1] * x - s[j].a[1] * y + zj[1];
+      zj[1] = s[j].b[2] * x - s[j].a[2] * y + zj[2];
+      zj[2] = s[j].b[3] * x - s[j].a[3] * y + zero;
+      x = y;
+    }
+    out0[i] = x[0];
+    out1[i] = x[1];
+  }
+  if (fixed) std::copy(local, local + kFusedOrder * kSections, state->begin());
+}
+
+// The two cascades as lanes; empty when either has a section of order above kFusedOrder.
+std::vector<SectionPair> paired(const std::vector<DigitalFilter::Section>& first,
+                                const std::vector<DigitalFilter::Section>& second) {
+  const std::vector<PaddedSection> p0 = padded(first), p1 = padded(second);
+  if (p0.size() != first.size() || p1.size() != second.size()) return {};
+  PaddedSection identity;
+  identity.b[0] = identity.a[0] = 1.0;
+  std::vector<SectionPair> out(std::max(p0.size(), p1.size()));
+  for (size_t j = 0; j < out.size(); ++j) {
+    const PaddedSection& s0 = j < p0.size() ? p0[j] : identity;
+    const PaddedSection& s1 = j < p1.size() ? p1[j] : identity;
+    for (size_t k = 0; k <= kFusedOrder; ++k) out[j].b[k] = Lanes{s0.b[k], s1.b[k]}, out[j].a[k] = Lanes{s0.a[k], s1.a[k]};
+  }
+  return out;
+}
+
+void run_pair(const std::vector<SectionPair>& sections, const double* in0, const double* in1, Eigen::Index n,
+              double* out0, double* out1, std::vector<Lanes>* state) {
+  switch (sections.size()) {
+    case 1: return apply_fused_pair<1>(sections, in0, in1, n, out0, out1, state);
+    case 2: return apply_fused_pair<2>(sections, in0, in1, n, out0, out1, state);
+    case 3: return apply_fused_pair<3>(sections, in0, in1, n, out0, out1, state);
+    case 4: return apply_fused_pair<4>(sections, in0, in1, n, out0, out1, state);
+    default: return apply_fused_pair<0>(sections, in0, in1, n, out0, out1, state);
+  }
+}
+
 }  // namespace
+
+std::pair<Eigen::VectorXd, Eigen::VectorXd> DigitalFilter::apply(const DigitalFilter& first,
+                                                                 const DigitalFilter& second,
+                                                                 const Eigen::VectorXd& input) {
+  const std::vector<SectionPair> sections = paired(first.sections_, second.sections_);
+  if (sections.empty()) return {first.apply(input), second.apply(input)};
+  std::pair<Eigen::VectorXd, Eigen::VectorXd> out{Eigen::VectorXd(input.size()), Eigen::VectorXd(input.size())};
+  std::vector<Lanes> state;
+  run_pair(sections, input.data(), input.data(), input.size(), out.first.data(), out.second.data(), &state);
+  return out;
+}
+
+std::pair<Eigen::VectorXd, Eigen::VectorXd> DigitalFilter::apply_second_pass(const DigitalFilter& first,
+                                                                             const DigitalFilter& second,
+                                                                             const Eigen::VectorXd& period) {
+  const std::vector<SectionPair> sections = paired(first.sections_, second.sections_);
+  if (sections.empty()) return {first.apply_second_pass(period), second.apply_second_pass(period)};
+  // Each lane's first pass over its own lead-in (as apply_second_pass); the shorter lead-in
+  // preceded by zeros, through which a cascade at rest stays exactly at rest.
+  const Eigen::Index n = period.size();
+  const Eigen::Index lead0 = std::min<Eigen::Index>(n, std::min<long>(first.lead_in(), n));
+  const Eigen::Index lead1 = std::min<Eigen::Index>(n, std::min<long>(second.lead_in(), n));
+  const Eigen::Index lead = std::max(lead0, lead1);
+  Eigen::VectorXd in0 = period.tail(lead), in1 = period.tail(lead);
+  in0.head(lead - lead0).setZero();
+  in1.head(lead - lead1).setZero();
+  std::pair<Eigen::VectorXd, Eigen::VectorXd> out{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+  std::vector<Lanes> state;
+  run_pair(sections, in0.data(), in1.data(), lead, out.first.data(), out.second.data(), &state);  // first pass
+  run_pair(sections, period.data(), period.data(), n, out.first.data(), out.second.data(), &state);
+  return out;
+}
 
 Eigen::VectorXd DigitalFilter::apply(const Eigen::VectorXd& input) const {
   Eigen::VectorXd signal = input;

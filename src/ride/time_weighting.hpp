@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <complex>
+#include <utility>
 #include <vector>
 
 #include "railmodal/comfort_weighting.hpp"
@@ -33,6 +34,15 @@ class DigitalFilter {
   /// 1e-20: a margin of 1e4 over the 1e-16 stated for the tail, for the residues and the
   /// cascade's near-coincident poles (a double pole's tail goes as L·|p|^L).
   static constexpr double kLeadInDecay = 1e-20;
+  /// Two cascades over the same samples side by side (each sample through both while their
+  /// states are in registers): {first.apply(input), second.apply(input)}, bit for bit.
+  static std::pair<Eigen::VectorXd, Eigen::VectorXd> apply(const DigitalFilter& first, const DigitalFilter& second,
+                                                           const Eigen::VectorXd& input);
+  /// {first.apply_second_pass(period), second.apply_second_pass(period)}, bit for bit, side by
+  /// side as apply's pair.
+  static std::pair<Eigen::VectorXd, Eigen::VectorXd> apply_second_pass(const DigitalFilter& first,
+                                                                       const DigitalFilter& second,
+                                                                       const Eigen::VectorXd& period);
   /// H(e^{iωΔt}) at `frequency` Hz for the sample step `time_step` s.
   std::complex<double> response(double frequency, double time_step) const;
 

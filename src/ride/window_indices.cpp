@@ -69,19 +69,23 @@ double zone_nmv(const Eigen::VectorXd* longitudinal, const Eigen::VectorXd* late
 }
 
 Eigen::VectorXd running_rms(const Eigen::VectorXd& values, Eigen::Index samples) {
-  Eigen::VectorXd out(values.size());
-  // A running sum of squares, recomputed every `samples` steps so its rounding cannot build up.
-  double sum = 0.0;
-  for (Eigen::Index i = 0; i < values.size(); ++i) {
-    const Eigen::Index first = std::max<Eigen::Index>(0, i + 1 - samples);
-    if (i % samples == 0) {
-      sum = values.segment(first, i + 1 - first).squaredNorm();
-    } else {
+  const Eigen::Index n = values.size();
+  Eigen::VectorXd out(n);
+  // A running sum of squares, recomputed every `samples` steps so its rounding cannot build up;
+  // the sums first (a recursion), then the square roots over all of them in one loop.
+  for (Eigen::Index start = 0; start < n; start += samples) {
+    const Eigen::Index first = std::max<Eigen::Index>(0, start + 1 - samples);
+    double sum = values.segment(first, start + 1 - first).squaredNorm();
+    out(start) = sum;
+    const Eigen::Index end = std::min(n, start + samples);
+    for (Eigen::Index i = start + 1; i < end; ++i) {
       sum += values(i) * values(i);
       if (i >= samples) sum -= values(i - samples) * values(i - samples);
+      out(i) = sum;
     }
-    out(i) = std::sqrt(std::max(0.0, sum) / static_cast<double>(i + 1 - first));
   }
+  for (Eigen::Index i = 0; i < n; ++i)
+    out(i) = std::sqrt(std::max(0.0, out(i)) / static_cast<double>(std::min<Eigen::Index>(i + 1, samples)));
   return out;
 }
 

@@ -72,12 +72,13 @@ struct Case {
 
 // Both marches over one track, periodic (from the orbit) and measured (from rest); the step
 // a third of a sample's time, and a speed that puts the axles' kinks at different phases.
-void expect_same_histories(const Case& c, const TrackGeometry& geometry, double speed, double tolerance) {
+void expect_same_histories(const Case& c, const TrackGeometry& geometry, double speed, double tolerance,
+                           long steps_a_sample = 3) {
   const ride::RideStateSpace model = ride::ride_state_space(c.system);
   const std::vector<ride::OutputRow> rows = ride::output_rows(c.system, model, c.outputs);
   const ride::TrackUnderWheels track(c.system, geometry, ride::cross_level_directions(c.system, 0.0, 0.0));
-  const double step = geometry.step / speed / 3.0;
-  const long count = 3 * geometry.vertical_level.size();
+  const double step = geometry.step / speed / static_cast<double>(steps_a_sample);
+  const long count = steps_a_sample * geometry.vertical_level.size();
   const auto modal = ride::ModalRideMarch::make(model, track, rows, speed, step, track.span());
   ASSERT_TRUE(modal);
   for (bool periodic : {true, false}) {
@@ -103,6 +104,46 @@ TEST(ModalRideMarch, GivesTheDenseMarchsHistoriesOnTheVerticalCoach) {
   // exponentials over 6000 steps, amplified by at most the condition of the eigenvectors
   // (kModalConditionLimit): 1e-10 of the largest value.
   expect_same_histories(c, ore_track(500.0, 0.25, false), 37.0, 1e-10);
+}
+
+TEST(ModalRideMarch, OneStepASampleGivesTheDenseMarchsHistories) {
+  // One step a sample: the march reads the track along straight runs of samples (the inputs'
+  // fractions fixed), falling back to the step-by-step read at the period's wrap and the
+  // record's ends. The axles at 17.5 m: at 0.25 m a sample the wheels are on samples; at
+  // 0.3 m they are not (the fraction and the slope of a segment). Tolerance as above.
+  // The front bogie's acceleration too: its primary dampers feed the track's velocity (the
+  // slope read) straight into it.
+  Case c;
+  c.system = assemble(load_vehicle(data_file("manchester_benchmark_coach.toml")), DofSet::vertical);
+  c.outputs = default_ride_outputs(c.system);
+  RideOutput bogie;
+  bogie.name = "front bogie";
+  bogie.body = "bogie1";
+  c.outputs.push_back(bogie);
+  expect_same_histories(c, ore_track(500.0, 0.25, false), 37.0, 1e-10, 1);
+  expect_same_histories(c, ore_track(501.0, 0.3, false), 37.0, 1e-10, 1);
+}
+
+TEST(ModalRideMarch, BlocksOfStepsChangeNoBit) {
+  // The march goes in blocks of steps; a history cut at another step (so its last block is
+  // partial elsewhere) is the same doubles as the first rows of a longer one.
+  Case c;
+  c.system = assemble(load_vehicle(data_file("manchester_benchmark_coach.toml")), DofSet::vertical);
+  c.outputs = default_ride_outputs(c.system);
+  const TrackGeometry geometry = ore_track(500.0, 0.25, false);
+  const ride::RideStateSpace model = ride::ride_state_space(c.system);
+  const std::vector<ride::OutputRow> rows = ride::output_rows(c.system, model, c.outputs);
+  const ride::TrackUnderWheels track(c.system, geometry, ride::cross_level_directions(c.system, 0.0, 0.0));
+  for (long steps_a_sample : {1L, 3L}) {
+    const double step = geometry.step / 37.0 / static_cast<double>(steps_a_sample);
+    const auto modal = ride::ModalRideMarch::make(model, track, rows, 37.0, step, track.span());
+    ASSERT_TRUE(modal);
+    ride::ModalRideMarch::State start = modal->rest();
+    ASSERT_TRUE(modal->periodic_start(steps_a_sample * geometry.vertical_level.size(), &start));
+    const Eigen::MatrixXd longer = modal->outputs(start, 1000);
+    for (long count : {1L, 255L, 257L, 700L})
+      EXPECT_EQ(modal->outputs(start, count), longer.topRows(count)) << count << " steps, m = " << steps_a_sample;
+  }
 }
 
 TEST(ModalRideMarch, GivesTheDenseMarchsHistoriesWithAllThreeProfiles) {

@@ -147,6 +147,33 @@ TEST(TimeWeighting, FusedCascadeAndSecondPassAreTheSectionBySectionSamplesBitFor
   }
 }
 
+TEST(TimeWeighting, PairedCascadesAreEachCascadeAloneBitForBit) {
+  // simulate_ride runs W and Sperling's B side by side: each lane the same doubles as the
+  // cascade alone, from rest and in the periodic second pass, where the shorter cascade is
+  // padded with identity sections and the shorter lead-in with zeros (30000 samples: both
+  // lead-ins, 25914 and 10127, shorter than the period; 3000: both the whole period), and a
+  // fourth-order section (no pair: each alone).
+  Eigen::VectorXd input(30000);
+  for (Eigen::Index n = 0; n < input.size(); ++n)
+    input(n) = std::sin(0.013 * static_cast<double>(n * n % 977)) + 0.1 * std::cos(0.7 * static_cast<double>(n));
+  const ride::DigitalFilter wb = ride::digital_weighting(en12299_wb(), kStep);
+  const ride::DigitalFilter wd = ride::digital_weighting(en12299_wd(), kStep);
+  const ride::DigitalFilter b = ride::digital_sperling(SperlingDirection::vertical, kStep);
+  const ride::DigitalFilter fourth({ride::bilinear({1.0, 0.0, 0.0, 0.0, 1e-4}, {1.0, 0.5, 0.1, 0.01, 1e-3}, kStep, 0.0)});
+  const std::vector<std::pair<const ride::DigitalFilter*, const ride::DigitalFilter*>> pairs{
+      {&wb, &b}, {&b, &wd}, {&wd, &wb}, {&wb, &fourth}};
+  for (const auto& [first, second] : pairs)
+    for (Eigen::Index n : {Eigen::Index{30000}, Eigen::Index{3000}}) {
+      const Eigen::VectorXd x = input.head(n);
+      const auto both = ride::DigitalFilter::apply(*first, *second, x);
+      EXPECT_EQ(both.first, first->apply(x));
+      EXPECT_EQ(both.second, second->apply(x));
+      const auto periodic = ride::DigitalFilter::apply_second_pass(*first, *second, x);
+      EXPECT_EQ(periodic.first, first->apply_second_pass(x));
+      EXPECT_EQ(periodic.second, second->apply_second_pass(x));
+    }
+}
+
 TEST(TimeWeighting, LeadInLeavesLessThanTheStatedTailOfTheImpulseResponse) {
   // apply_second_pass's bound (time_weighting.hpp): the impulse response beyond lead_in() sums
   // to below 1e-16 of the whole (its ℓ1 norm, the filter's largest gain on a bounded input), for
