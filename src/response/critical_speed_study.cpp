@@ -23,9 +23,11 @@ std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpe
   // critical speeds are sorted and merged in: the sorted union, as sorting all would give.
   std::vector<double> grid;
   const int steps = static_cast<int>(std::ceil((scene.max_speed - scene.min_speed) / scene.speed_step - 1e-9));
+  grid.reserve(static_cast<size_t>(steps) + 1);  // one allocation, not a doubling per few points
   for (int i = 0; i <= steps; ++i) grid.push_back(std::min(scene.min_speed + i * scene.speed_step, scene.max_speed));
   if (!std::is_sorted(grid.begin(), grid.end())) std::sort(grid.begin(), grid.end());  // a scene made in code
   std::vector<double> critical;
+  critical.reserve(rows.size());
   for (const auto& r : rows) critical.push_back(r.speed);
   std::sort(critical.begin(), critical.end());
   std::vector<double> speeds(grid.size() + critical.size());
