@@ -127,7 +127,12 @@ std::vector<AmplitudeCurve> source_curves(const CriticalSpeedStudy& study, const
   constexpr size_t kChunk = 4096;
   std::vector<AmplitudeCurve> curves;
   for (size_t first = 0; first < speeds.size(); first += kChunk) {
-    const std::vector<double> chunk(speeds.begin() + first, speeds.begin() + std::min(speeds.size(), first + kChunk));
+    // A grid of one chunk (every bundled scene's) is swept as it is, not copied per variant.
+    const bool whole = first == 0 && speeds.size() <= kChunk;
+    const std::vector<double> part_of_grid =
+        whole ? std::vector<double>()
+              : std::vector<double>(speeds.begin() + first, speeds.begin() + std::min(speeds.size(), first + kChunk));
+    const std::vector<double>& chunk = whole ? speeds : part_of_grid;
     auto part = amplitude_curves(study.system, study.modes, source, source_index, outputs, chunk,
                                  study.scene.friction_reference_amplitude);
     if (curves.empty()) {
