@@ -73,6 +73,7 @@ class RailJointSource final : public ExcitationSource {
     // Staggered: the right rail's joints lie half a rail on, a factor e^{−iπk} = (−1)^k.
     const double right = p_.staggered && harmonic % 2 == 1 ? -1.0 : 1.0;
     const auto sets = excitation::wheelsets(system);
+    out.wheels.reserve(system.track_inputs.size());  // every input is a wheel: one allocation
     for (const auto& set : sets)
       for (int index : set.inputs) {
         const int side = excitation::rail_side(system.track_inputs[index]);

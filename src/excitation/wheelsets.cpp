@@ -8,6 +8,7 @@ namespace railmodal::excitation {
 std::vector<Wheelset> wheelsets(const LinearSystem& system) {
   constexpr double kSameAxle = 1e-3;  // m: springs of one axle share its x to well within this
   std::vector<Wheelset> sets;
+  sets.reserve(system.track_inputs.size());  // at most one set per input (a source asks per load)
   for (int i = 0; i < static_cast<int>(system.track_inputs.size()); ++i) {
     const double x = system.track_inputs[i].point.x();
     auto it = std::find_if(sets.begin(), sets.end(),

@@ -68,10 +68,12 @@ class TableReader {
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
   std::string key_path(const std::string& key) const;
   const std::string& file() const { return file_; }
+  /// The value `v` as quantity() reads it for `key` (the same conversion and checks), for a
+  /// caller that holds a value outside any table (a study's fast path reads each variant's).
+  double to_quantity(const toml::value& v, const std::string& key, Quantity kind) const;
 
  private:
   const toml::value& at(const std::string& key);
-  double to_quantity(const toml::value& v, const std::string& key, Quantity kind) const;
 
   const toml::value& table_;
   std::string file_;

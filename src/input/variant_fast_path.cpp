@@ -21,10 +21,12 @@ constexpr size_t kMaxProbes = 256;
 
 // The value as the reader reads it for a quantity of `kind` (TableReader::quantity, the
 // readers' own conversion and checks); nothing when it refuses it.
+// The value is read as it stands, not copied into a table of its own: a study reads each
+// variant's values here, and the table's hash map cost more than the conversion.
 std::optional<double> read_as(const toml::value& value, Quantity kind) {
-  const toml::value table(toml::table{{"v", value}});
+  static const toml::value kNoTable{toml::table{}};
   try {
-    return TableReader(table, "", "").quantity("v", kind);
+    return TableReader(kNoTable, "", "").to_quantity(value, "v", kind);
   } catch (const InputError&) {
     return std::nullopt;
   }
@@ -204,6 +206,7 @@ std::optional<FastPath> resolve_fast_path(const StudyFile& file) {
   }
   const std::string base_shape = vehicle_shape(fast.base);
   const std::vector<double> base = numbers_of(fast.base);
+  fast.number_count = base.size();
   const std::map<std::string, KeyProbes> probes = probe_values(file);
   for (const auto& [key, values] : probes) {
     if (values.written.size() + 3 * values.samples.size() > kMaxProbes) continue;
@@ -258,7 +261,7 @@ std::optional<Vehicle> fast_vehicle(const StudyFile& file, const study::VariantS
     sets.push_back({&key, *si});
   }
   Vehicle vehicle = file.fast->base;
-  const std::vector<double*> numbers = vehicle_numbers(&vehicle);
+  const std::vector<double*> numbers = vehicle_numbers(&vehicle, file.fast->number_count);
   for (const auto& [key, si] : sets)
     for (size_t i : key->numbers) *numbers[i] = si;
   return vehicle;

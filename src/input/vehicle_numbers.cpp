@@ -131,8 +131,9 @@ struct Walk {
 
 }  // namespace
 
-std::vector<double*> vehicle_numbers(Vehicle* vehicle) {
+std::vector<double*> vehicle_numbers(Vehicle* vehicle, size_t capacity) {
   std::vector<double*> numbers;
+  numbers.reserve(capacity);
   Walk{&numbers, nullptr}.vehicle(*vehicle);
   return numbers;
 }

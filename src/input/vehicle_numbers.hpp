@@ -12,7 +12,8 @@ namespace railmodal::input {
 /// The vehicle's numbers (every double, vectors' and optional members' included), in a fixed
 /// order that depends only on its shape. A field added to the vehicle's structs must be added
 /// here (test VehicleNumbers.CoverEveryField counts the fields by the structs' sizes).
-std::vector<double*> vehicle_numbers(Vehicle* vehicle);
+/// `capacity`: room reserved for the list (a caller that knows the count, one allocation).
+std::vector<double*> vehicle_numbers(Vehicle* vehicle, size_t capacity = 0);
 
 /// Everything of the vehicle but its numbers, as text: names, kinds, counts, held motions,
 /// flags, which optional parts are present and how long each list is. Two vehicles of the

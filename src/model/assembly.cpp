@@ -319,8 +319,8 @@ std::vector<int> free_coordinates(const Vehicle& v, const Layout& layout) {
 // coordinate takes no load from the body's weight, taken as spread uniformly along the beam
 // (∫ m' φ ds = 0), and its stiffness ω²m_b: the springs bend the body (it sags between
 // supports), which moves load between supports only where they are more than statics fixes.
-std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const std::vector<ElementMap>& maps,
-                                 const Eigen::MatrixXd& K_springs) {
+std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const std::vector<int>& free,
+                                 const std::vector<ElementMap>& maps, const Eigen::MatrixXd& K_springs) {
   Eigen::VectorXd Q = Eigen::VectorXd::Zero(layout.size());
   for (int b = 0; b < layout.bodies; ++b) {
     const Body& body = v.bodies[b];
@@ -328,7 +328,6 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
     Q.segment(b * kMotionsPerBody, kMotionsPerBody) =
         model::point_map(body, body.centre_of_gravity).transpose() * weight;
   }
-  const std::vector<int> free = free_coordinates(v, layout);
   const int n = static_cast<int>(free.size());
   Eigen::MatrixXd Kf(n, n);
   Eigen::VectorXd Qf(n);
@@ -435,10 +434,11 @@ Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const Layout& layout, 
   return K_gravity;
 }
 
-// The motions of the requested set that are not held, and their DOFs.
-std::vector<int> kept_coordinates(const Vehicle& vehicle, const Layout& layout, DofSet set, std::vector<Dof>* dofs) {
+// The motions of the requested set among the free coordinates (`free`), and their DOFs.
+std::vector<int> kept_coordinates(const Vehicle& vehicle, const Layout& layout, const std::vector<int>& free, DofSet set,
+                                  std::vector<Dof>* dofs) {
   std::vector<int> keep;
-  for (int c : free_coordinates(vehicle, layout)) {
+  for (int c : free) {
     const Motion motion = layout.motion_of(c);
     if (!in_set(motion, set)) continue;
     const int b = layout.body_of(c);
@@ -543,6 +543,7 @@ std::vector<SeriesDamperRow> series_damper_rows(const Vehicle& vehicle, const La
 // hangers' lateral stiffness and the dead loads (K_gravity).
 struct FullAssembly {
   Layout layout;
+  std::vector<int> free;  // free_coordinates, found once for the statics and every set kept
   FullModel full;
   std::vector<double> loads;
   Eigen::MatrixXd K, K_gravity;
@@ -551,9 +552,10 @@ struct FullAssembly {
 FullAssembly assemble_full(const Vehicle& vehicle, bool damping) {
   std::map<std::string, int> index;
   check_vehicle(vehicle, &index);
-  FullAssembly a{Layout(vehicle), {}, {}, {}, {}};
+  FullAssembly a{Layout(vehicle), {}, {}, {}, {}, {}};
+  a.free = free_coordinates(vehicle, a.layout);
   a.full = springs_and_masses(vehicle, index, a.layout, damping);
-  a.loads = static_loads(vehicle, a.layout, a.full.maps, a.full.K_springs);
+  a.loads = static_loads(vehicle, a.layout, a.free, a.full.maps, a.full.K_springs);
   a.K = a.full.K_springs;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
@@ -570,7 +572,7 @@ namespace {
 
 LinearSystem system_of(const Vehicle& vehicle, const FullAssembly& a, DofSet set) {
   LinearSystem system;
-  const std::vector<int> keep = kept_coordinates(vehicle, a.layout, set, &system.dofs);
+  const std::vector<int> keep = kept_coordinates(vehicle, a.layout, a.free, set, &system.dofs);
   system.mass = pick(a.full.M, keep);
   system.damping = pick(a.full.C, keep);
   system.stiffness = pick(a.K, keep);
@@ -585,7 +587,7 @@ LinearSystem system_of(const Vehicle& vehicle, const FullAssembly& a, DofSet set
 
 LinearSystem stiffness_of(const Vehicle& vehicle, const FullAssembly& a, DofSet set) {
   LinearSystem system;
-  const std::vector<int> keep = kept_coordinates(vehicle, a.layout, set, &system.dofs);
+  const std::vector<int> keep = kept_coordinates(vehicle, a.layout, a.free, set, &system.dofs);
   system.stiffness = pick(a.K, keep);
   system.gravity_stiffness = pick(a.K_gravity, keep);
   return system;

@@ -23,9 +23,11 @@ std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpe
   // critical speeds are sorted and merged in: the sorted union, as sorting all would give.
   std::vector<double> grid;
   const int steps = static_cast<int>(std::ceil((scene.max_speed - scene.min_speed) / scene.speed_step - 1e-9));
+  grid.reserve(static_cast<size_t>(steps) + 1);  // one allocation, not a doubling per few points
   for (int i = 0; i <= steps; ++i) grid.push_back(std::min(scene.min_speed + i * scene.speed_step, scene.max_speed));
   if (!std::is_sorted(grid.begin(), grid.end())) std::sort(grid.begin(), grid.end());  // a scene made in code
   std::vector<double> critical;
+  critical.reserve(rows.size());
   for (const auto& r : rows) critical.push_back(r.speed);
   std::sort(critical.begin(), critical.end());
   std::vector<double> speeds(grid.size() + critical.size());
@@ -125,7 +127,12 @@ std::vector<AmplitudeCurve> source_curves(const CriticalSpeedStudy& study, const
   constexpr size_t kChunk = 4096;
   std::vector<AmplitudeCurve> curves;
   for (size_t first = 0; first < speeds.size(); first += kChunk) {
-    const std::vector<double> chunk(speeds.begin() + first, speeds.begin() + std::min(speeds.size(), first + kChunk));
+    // A grid of one chunk (every bundled scene's) is swept as it is, not copied per variant.
+    const bool whole = first == 0 && speeds.size() <= kChunk;
+    const std::vector<double> part_of_grid =
+        whole ? std::vector<double>()
+              : std::vector<double>(speeds.begin() + first, speeds.begin() + std::min(speeds.size(), first + kChunk));
+    const std::vector<double>& chunk = whole ? speeds : part_of_grid;
     auto part = amplitude_curves(study.system, study.modes, source, source_index, outputs, chunk,
                                  study.scene.friction_reference_amplitude);
     if (curves.empty()) {

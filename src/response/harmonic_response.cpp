@@ -98,7 +98,9 @@ HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult
   const int r = static_cast<int>(at.size());
   // D bordered by Mφ of the undamped modes at ω: the rest x ⟂_M φ solves
   // D x = Q − Σ Mφ (φᵀQ); without such modes it is plain D x = Q.
-  Eigen::MatrixXcd A = Eigen::MatrixXcd::Zero(n + r, n + r);
+  // Every block but the border's corner is written below: only that corner is zeroed.
+  Eigen::MatrixXcd A(n + r, n + r);
+  A.bottomRightCorner(r, r).setZero();
   A.topLeftCorner(n, n) = (system.stiffness - omega * omega * system.mass).cast<std::complex<double>>() +
                           i * omega * system.damping.cast<std::complex<double>>();
   Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(n + r);
