@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -253,6 +254,25 @@ TEST(LimitCycleContinuation, StableBranchMatchesLongSimulations) {
     ++checked;
   }
   EXPECT_EQ(checked, 3);
+}
+
+// The largest Newton residual is a figure, not a check: the branch holds only converged orbits,
+// so a bound at newton_tolerance could never fail. Reported unbounded (limit +∞, passed), its
+// value the largest residual of the points.
+TEST(LimitCycleContinuation, NewtonResidualIsReportedNotChecked) {
+  const LimitCycleBranch& b = bundled_branch();
+  ASSERT_FALSE(b.points.empty());
+  double largest = 0.0;
+  for (const LimitCycleBranchPoint& p : b.points) largest = std::max(largest, p.residual);
+  const Check* residual = nullptr;
+  for (const Check& c : b.summary.checks)
+    if (c.name == "largest Newton residual of the branch") residual = &c;
+  ASSERT_NE(residual, nullptr);
+  EXPECT_EQ(residual->value, largest);
+  EXPECT_TRUE(std::isinf(residual->limit));
+  EXPECT_TRUE(residual->passed);
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LE(largest, LimitCycleOptions{}.newton_tolerance);
 }
 
 // The law without saturation or flange is linear: its orbits are the neutral mode at the Hopf
