@@ -4,13 +4,13 @@
 #include "railmodal/nonlinear_hunting.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "stability/lateral_equations.hpp"
 #include "stability/ramp_down.hpp"
+#include "summary/stage_clock.hpp"
 
 namespace railmodal {
 
@@ -150,25 +150,19 @@ HeldCriticalSpeed confirm_by_holding(const stability::LateralEquations& e, const
 NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const NonlinearHuntingOptions& options) {
   std::string why;
   if (!options.is_valid(&why)) throw std::invalid_argument("solve_nonlinear_hunting: " + why);
-  using clock = std::chrono::steady_clock;
   NonlinearHuntingResult r;
   r.summary.analysis = "nonlinear critical speed";
   r.summary.method =
       "ramp-down of the speed, Dormand-Prince 5(4) with adaptive steps, twice (rate and half rate); confirmed by "
       "holding the speed, bisected";
-  auto start = clock::now();
-  const auto stage = [&](const std::string& name) {
-    const auto now = clock::now();
-    r.summary.stages.push_back({name, std::chrono::duration<double>(now - start).count()});
-    start = now;
-  };
+  StageClock clock(&r.summary);
   const stability::LateralEquations equations(system, options);
-  stage("equations");
+  clock.lap("equations");
   stability::BranchStates branch;
   r.stated_rate = stability::ramp_down(equations, options, options.ramp_rate, &branch);
-  stage("ramp at the stated rate");
+  clock.lap("ramp at the stated rate");
   r.halved_rate = stability::ramp_down(equations, options, options.ramp_rate / 2.0);
-  stage("ramp at half the rate");
+  clock.lap("ramp at half the rate");
 
   r.verdict = r.stated_rate.verdict;
   r.critical_speed = r.stated_rate.critical_speed;
@@ -191,7 +185,7 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
                                                                                   : NonlinearConvergence::not_converged;
   } else {
     r.hold = confirm_by_holding(equations, options, r.stated_rate, branch);
-    stage("holds of the speed");
+    clock.lap("holds of the speed");
     const HeldCriticalSpeed& h = r.hold;
     if (h.lowest_surviving) r.critical_speed = h.lowest_surviving;
     const double bracket = h.lowest_surviving && h.highest_dying ? *h.lowest_surviving - *h.highest_dying

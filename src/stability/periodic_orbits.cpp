@@ -5,6 +5,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
 
@@ -89,22 +90,20 @@ class Shooting {
 
 bool finite(const Eigen::VectorXd& v) { return v.allFinite(); }
 
-// The multipliers of the scaled monodromy S⁻¹MS (similar to M: the same eigenvalues); the trivial
-// one of an autonomous orbit, nearest 1, is set aside for the stability.
-void floquet(const Eigen::MatrixXd& jacobian, int n, double size, Orbit* orbit) {
-  const Eigen::MatrixXd monodromy = size * jacobian.topLeftCorner(n, n) + Eigen::MatrixXd::Identity(n, n);
-  Eigen::EigenSolver<Eigen::MatrixXd> eigen(monodromy, false);
-  orbit->multipliers = eigen.eigenvalues();
-  Eigen::Index trivial = 0;
-  (orbit->multipliers.array() - 1.0).abs().minCoeff(&trivial);
-  double largest = 0.0;
-  for (Eigen::Index i = 0; i < orbit->multipliers.size(); ++i)
-    if (i != trivial) largest = std::max(largest, std::abs(orbit->multipliers[i]));
-  orbit->largest_multiplier = largest;
-  orbit->stable = largest < 1.0;
-}
-
 }  // namespace
+
+void set_floquet(const Eigen::MatrixXd& monodromy, const Eigen::VectorXd& flow, Orbit* orbit) {
+  const Eigen::Index n = monodromy.rows();
+  // An orthonormal basis whose first vector is ±f/|f| (a Householder reflection).
+  const Eigen::MatrixXd q = Eigen::HouseholderQR<Eigen::MatrixXd>(flow).householderQ() * Eigen::MatrixXd::Identity(n, n);
+  const Eigen::MatrixXd rotated = q.transpose() * monodromy * q;
+  Eigen::EigenSolver<Eigen::MatrixXd> eigen(rotated.bottomRightCorner(n - 1, n - 1), false);
+  orbit->multipliers.resize(n);
+  orbit->multipliers[0] = rotated(0, 0);
+  orbit->multipliers.tail(n - 1) = eigen.eigenvalues();
+  orbit->largest_multiplier = orbit->multipliers.tail(n - 1).cwiseAbs().maxCoeff();
+  orbit->stable = orbit->largest_multiplier < 1.0;
+}
 
 Eigen::VectorXd orbit_flow(const OrbitProblem& problem, const Eigen::VectorXd& x0, double period, double parameter,
                            double* peak) {
@@ -164,7 +163,16 @@ Orbit solve_orbit(const OrbitProblem& problem, const Orbit& guess, const OrbitCo
   orbit.residual = norm;
   orbit.iterations = iteration;
   orbit.converged = std::isfinite(norm) && norm <= problem.newton_tolerance;
-  if (orbit.converged) floquet(shooting.jacobian(u, r), shooting.n_, size, &orbit);
+  if (orbit.converged) {
+    // The monodromy of the scaled state ξ = S⁻¹x, S⁻¹MS (similar to M: the same multipliers), from
+    // the x0 block of the Jacobian; the flow direction in the same coordinates, S⁻¹f(x0).
+    const int n = shooting.n_;
+    const Eigen::MatrixXd jacobian = shooting.jacobian(u, r);
+    const Eigen::MatrixXd monodromy = size * jacobian.topLeftCorner(n, n) + Eigen::MatrixXd::Identity(n, n);
+    Eigen::VectorXd flow(n);
+    problem.field(u.parameter, orbit.start, &flow);
+    set_floquet(monodromy, flow.cwiseQuotient(problem.scale), &orbit);
+  }
   return orbit;
 }
 

@@ -46,8 +46,10 @@ struct Orbit {
   double parameter = 0.0;     ///< p
   double amplitude = 0.0;     ///< the largest |amplitude·x| over the fixed steps of one period
   double start_value = 0.0;   ///< amplitude·x0: the arclength coordinate
-  Eigen::VectorXcd multipliers;  ///< Floquet multipliers: the eigenvalues of the monodromy matrix
-  double largest_multiplier = 0.0;  ///< the largest |μ| once the trivial multiplier (nearest 1) is set aside
+  /// Floquet multipliers: the trivial one (along the flow) first, then the others (set_floquet).
+  Eigen::VectorXcd multipliers;
+  /// The largest |μ| once the trivial multiplier (along the flow f(x0)) is deflated (set_floquet).
+  double largest_multiplier = 0.0;
   bool stable = false;              ///< largest_multiplier < 1
   double residual = 0.0;            ///< ‖residual‖∞ (scaled) at the returned point
   int iterations = 0;
@@ -69,6 +71,18 @@ struct OrbitCondition {
 /// over the steps in *peak when given.
 Eigen::VectorXd orbit_flow(const OrbitProblem& problem, const Eigen::VectorXd& x0, double period, double parameter,
                            double* peak = nullptr);
+
+/// The Floquet multipliers of `monodromy` with the trivial one set aside by deflating the flow
+/// direction `flow` (the field at x0 in the monodromy's coordinates; M·f(x0) = f(x0): a shift along
+/// an autonomous orbit comes back shifted). In an orthonormal basis whose first vector is f, M's
+/// first column is (1, 0, …): the trivial multiplier, and the others are the eigenvalues of the
+/// block that remains once that row and column are dropped (the monodromy of the motions across
+/// the orbit). orbit->multipliers: the trivial one first (1 to the differences' accuracy), then
+/// those; largest_multiplier the largest |μ| of those; stable its < 1. Not the multiplier nearest
+/// 1 set aside from M's eigenvalues: near a fold a second multiplier nears 1, and where the period
+/// changes along the branch the two form a near-Jordan block, which splits the differences' error
+/// ε into a pair 1 ± √ε; dropping the coupling keeps the error ε.
+void set_floquet(const Eigen::MatrixXd& monodromy, const Eigen::VectorXd& flow, Orbit* orbit);
 
 /// Newton from `guess` (its start, period and parameter): closure, phase and `condition`. Counts
 /// the flows integrated in *flows. Never throws for a failure to converge: `converged` is false

@@ -5,6 +5,8 @@
 // (docs/stability.md, "Continuation of the limit cycles").
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -102,6 +104,54 @@ TEST(LimitCycleContinuation, SupercriticalNormalFormHasNoFold) {
   }
 }
 
+// The trivial multiplier is deflated along the flow, not taken as the one nearest 1: a designed
+// monodromy whose flow-direction multiplier carries a difference error of 1e-6 while a stable one
+// sits at 1 − 1e-8, nearer 1 (setting that one aside would call the orbit unstable, 1 + 1e-6).
+TEST(LimitCycleContinuation, TrivialMultiplierIsTheFlowDirections) {
+  Eigen::Matrix3d vectors;  // columns: the flow, a stable direction at 53° to it, a strongly damped one
+  vectors << 1.0, 0.6, 0.0, 0.0, 0.8, 0.0, 0.0, 0.0, 1.0;
+  const Eigen::Vector3d multipliers(1.0 + 1e-6, 1.0 - 1e-8, 0.5);
+  const Eigen::Matrix3d monodromy = vectors * multipliers.asDiagonal() * vectors.inverse();
+  stability::Orbit o;
+  stability::set_floquet(monodromy, Eigen::Vector3d(2.0, 0.0, 0.0), &o);
+  ASSERT_EQ(o.multipliers.size(), 3);
+  // Rounding of a 3×3 eigenproblem of entries O(1): ~1e-15.
+  EXPECT_NEAR(o.multipliers[0].real(), 1.0 + 1e-6, 1e-13);
+  EXPECT_NEAR(o.largest_multiplier, 1.0 - 1e-8, 1e-13);
+  EXPECT_TRUE(o.stable);
+}
+
+// Near the fold of a normal form whose frequency grows with the amplitude, θ̇ = ω + k·r² (the
+// period changes along the branch, as hunting's does): there the trivial and the radial
+// multipliers form a near-Jordan block, whose eigenvalues split the differences' error ε (~1e-7)
+// into 1 ± √ε. Deflating the flow keeps the error of the radial multiplier exp(T·(2r² − 4r⁴)) at
+// the forward differences' bias (1.6e-6 measured here); the nearest-to-1 rule missed it by 2e-5 to
+// 5e-4 at these orbits, 1e-5 to 3e-4 from the fold in r².
+TEST(LimitCycleContinuation, MultiplierNearTheFoldWithShear) {
+  const double omega = 2.0, shear = 3.0;
+  stability::OrbitProblem p = normal_form(omega, [](double mu, double rho) { return mu + rho - rho * rho; });
+  p.field = [omega, shear](double mu, const Eigen::VectorXd& x, Eigen::VectorXd* dx) {
+    const double rho = x.squaredNorm(), rate = mu + rho - rho * rho, w = omega + shear * rho;
+    (*dx)[0] = rate * x[0] - w * x[1];
+    (*dx)[1] = w * x[0] + rate * x[1];
+  };
+  for (const double from_fold : {-3e-4, -1e-4, -3e-5, -1e-5, 1e-5, 3e-5, 1e-4, 3e-4}) {
+    const double rho = 0.5 + from_fold, r = std::sqrt(rho);
+    stability::Orbit guess;
+    guess.start = Eigen::Vector2d(r, 0.0);
+    guess.period = kTwoPi / (omega + shear * rho);
+    guess.parameter = rho * rho - rho;
+    stability::OrbitCondition at;
+    at.target = r;
+    long flows = 0;
+    const stability::Orbit o = stability::solve_orbit(p, guess, at, &flows);
+    ASSERT_TRUE(o.converged) << from_fold;
+    const double exact = std::exp(o.period * (2.0 * rho - 4.0 * rho * rho));
+    EXPECT_NEAR(o.largest_multiplier, exact, 1e-5) << from_fold;  // six times the bias
+    EXPECT_EQ(o.stable, from_fold > 0.0) << from_fold;  // |exact − 1| ≥ 3.5e-5 > the bias
+  }
+}
+
 // The equilibrium stays stable over the range: no Hopf point, and nothing invented.
 TEST(LimitCycleContinuation, StableThroughoutHasNoHopfPoint) {
   const stability::OrbitProblem p = normal_form(1.0, [](double mu, double rho) { return mu - 2.0 - rho; });
@@ -140,7 +190,8 @@ TEST(LimitCycleContinuation, HuntingBranchLeavesTheLinearCriticalSpeed) {
   const LimitCycleBranch& b = bundled_branch();
   ASSERT_TRUE(b.hopf_speed.has_value());
   RecordProperty("hopf_speed", std::to_string(*b.hopf_speed));
-  // solve_hunting_stability refines its bracket to 1e-6 of the speed (its default).
+  // solve_hunting_stability refines its crossing to 1e-8 of the speed (HuntingOptions'
+  // relative_tolerance default), find_hopf to 1e-12: 1e-4 m/s is a loose bound on both.
   EXPECT_NEAR(*b.hopf_speed, linear.critical->speed, 1e-4);
   EXPECT_NEAR(b.hopf_frequency, linear.critical->frequency_hz, 1e-4 * linear.critical->frequency_hz);
   ASSERT_GE(b.points.size(), 2u);
@@ -204,6 +255,25 @@ TEST(LimitCycleContinuation, StableBranchMatchesLongSimulations) {
     ++checked;
   }
   EXPECT_EQ(checked, 3);
+}
+
+// The largest Newton residual is a figure, not a check: the branch holds only converged orbits,
+// so a bound at newton_tolerance could never fail. Reported unbounded (limit +∞, passed), its
+// value the largest residual of the points.
+TEST(LimitCycleContinuation, NewtonResidualIsReportedNotChecked) {
+  const LimitCycleBranch& b = bundled_branch();
+  ASSERT_FALSE(b.points.empty());
+  double largest = 0.0;
+  for (const LimitCycleBranchPoint& p : b.points) largest = std::max(largest, p.residual);
+  const Check* residual = nullptr;
+  for (const Check& c : b.summary.checks)
+    if (c.name == "largest Newton residual of the branch") residual = &c;
+  ASSERT_NE(residual, nullptr);
+  EXPECT_EQ(residual->value, largest);
+  EXPECT_TRUE(std::isinf(residual->limit));
+  EXPECT_TRUE(residual->passed);
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LE(largest, LimitCycleOptions{}.newton_tolerance);
 }
 
 // The law without saturation or flange is linear: its orbits are the neutral mode at the Hopf
