@@ -113,14 +113,14 @@ int run(const CompareOptions& o) {
     if (!merging && !o.quiet) evaluation.progress = terminal_progress("compare");
     const bool document = format == OutputFormat::markdown || format == OutputFormat::html;
     if (!o.shard.empty())
-      write_shard(out, study, evaluation, evaluate_study(study, evaluation), provenance_of(study_files(study)));
-    else if (!merging && !document)  // the ranking alone: results streamed, only their keys held
-      compare_study(out, study, evaluation, format, o.top);
+      compare_shard(out, study, evaluation, provenance_of(study_files(study)));  // results streamed
+    else if (!merging)  // results streamed: only their keys held (and a report's best few)
+      compare_study(out, study, evaluation, format, o.top, document ? provenance_of(study_files(study)) : Provenance{});
     else
       write_ranked(out, study, merging ? merged_results(study, o.merge) : evaluate_study(study, evaluation), format);
     outputs.commit();
     return kSuccess;
-  } catch (const std::system_error& e) {  // the streamed ranking's temporary file
+  } catch (const std::system_error& e) {  // the streamed ranking's (or shard's) temporary file
     throw OutputError(kOutput, std::string("railmodal: error: ") + e.what());
   } catch (...) {
     return exit_of_error("compare", o.study);
