@@ -42,6 +42,15 @@ void write_comparison(std::ostream& out, const Comparison& comparison, OutputFor
 void compare_study(std::ostream& out, const Study& study, const EvaluationOptions& options, OutputFormat format,
                    int top = 0, const Provenance& provenance = {});
 
+/// Ranks the results of `shard_files` (each written by compare_shard or write_shard; together
+/// every variant of the study once) and writes them as compare_study does: the bytes
+/// write_comparison_report writes of rank_variants(study, <the shards' results>) (the documents
+/// with comparison_curves, which reads the variants it draws), holding one result at a time (each
+/// file is read twice: checked, then ranked). Throws InputError naming the file for a shard of
+/// another study or version, a variant in two shards or in none; otherwise as compare_study.
+void compare_merged(std::ostream& out, const Study& study, const std::vector<std::string>& shard_files,
+                    OutputFormat format, int top = 0, const Provenance& provenance = {});
+
 /// The report of a study in any format; markdown and html are documents to hand in: why the
 /// winner wins (its criteria against the base and the runner-up, what the others violate),
 /// the ranked table (first kReportRows variants), each swept parameter against the periods

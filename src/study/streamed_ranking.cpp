@@ -13,7 +13,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "study/parallel_evaluation.hpp"
 #include "study/ranking.hpp"
 
 namespace railmodal::study {
@@ -52,21 +51,7 @@ class BestKept {
   std::multimap<Key, T> best_;  // keys are unique (their positions are)
 };
 
-// The results of the whole study, evaluated on its threads.
-StreamedRanking::Source whole_study(const Study& study, const EvaluationOptions& options) {
-  if (options.shards != 1)
-    throw std::invalid_argument("a streamed ranking ranks the whole study: shards must be 1, not " +
-                                std::to_string(options.shards));
-  return [&study, options](const std::function<void(size_t)>& prepare, const StreamedRanking::Sink& sink) {
-    study::evaluate_each(study, options, prepare, sink);
-  };
-}
-
 }  // namespace
-
-StreamedRanking::StreamedRanking(const Study& study, const EvaluationOptions& options, size_t top, const Render& render,
-                                 size_t keep)
-    : StreamedRanking(study, whole_study(study, options), top, render, keep) {}
 
 StreamedRanking::StreamedRanking(const Study& study, const Source& source, size_t top, const Render& render,
                                  size_t keep) {
@@ -81,7 +66,7 @@ StreamedRanking::StreamedRanking(const Study& study, const Source& source, size_
   std::atomic<size_t> feasible{0};
   if (top == 0)
     spill_ = std::make_unique<SpilledTexts>("the ranking of a whole study keeps its rows",
-                                            ", or keep the best K only with --top K");
+                                            keep > 0 ? "" : ", or keep the best K only with --top K");
   source(
       [&](size_t count) {
         size_ = count;

@@ -27,16 +27,12 @@ class StreamedRanking {
   using Sink = std::function<void(size_t position, VariantResult&& result)>;
   using Source = std::function<void(const std::function<void(size_t count)>& prepare, const Sink& sink)>;
 
-  /// Evaluates the whole study (options.shards must be 1) and ranks it as
-  /// rank_variants(study, evaluate_study(study, options)) would: the same order whatever the
-  /// thread count. `render` is called from the worker threads, concurrently, once per variant.
-  /// With `top` > 0 only the texts of the best `top` variants are kept. With `keep` > 0 the
-  /// best `keep` variants are kept whole (best()), and the base design (base()). Throws as
-  /// evaluate_study, and as rank_variants for a metric naming a mode no variant has.
-  StreamedRanking(const Study& study, const EvaluationOptions& options, size_t top, const Render& render,
-                  size_t keep = 0);
-  /// The same for the results `source` gives (shard files, say), ranked as rank_variants ranks
-  /// them; throws what the source throws.
+  /// Ranks the results `source` gives (the study evaluated on its threads, or shard files) as
+  /// rank_variants ranks them: the same order whatever order they come in. `render` is called
+  /// as the source hands each on (concurrently, from its threads), once per variant. With `top`
+  /// > 0 only the texts of the best `top` variants are kept. With `keep` > 0 the best `keep`
+  /// variants are kept whole (best()), and the base design (base()). Throws what the source
+  /// throws, and as rank_variants for a metric naming a mode no variant has.
   StreamedRanking(const Study& study, const Source& source, size_t top, const Render& render, size_t keep = 0);
 
   size_t size() const { return size_; }          ///< variants ranked
