@@ -221,7 +221,9 @@ TEST(SweepPoint, ReadsBackAsWritten) {
     const report::SweepPoint back = report::sweep_point_from_bytes(report::to_bytes(point));
     EXPECT_EQ(back.feasible, point.feasible);
     ASSERT_EQ(back.ranked.has_value(), ranked);
-    if (ranked) EXPECT_TRUE(std::signbit(*back.ranked));
+    if (ranked) {
+      EXPECT_TRUE(std::signbit(*back.ranked));
+    }
     EXPECT_EQ(back.parameters, point.parameters);
     EXPECT_EQ(back.periods, point.periods);
   }
