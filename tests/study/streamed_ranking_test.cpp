@@ -200,6 +200,14 @@ TEST(CompareMerged, WritesWhatTheWholeStudyWritesInEveryFormat) {
       compare_merged(merged, study, files, format, 0, inputs);
       EXPECT_EQ(merged.str(), streamed_document(study, format, 2)) << name << ", " << to_string(format);
     }
+    // The best two of merged shards are the best two of the study.
+    std::ostringstream best, whole;
+    compare_merged(best, study, files, OutputFormat::csv, 2);
+    EvaluationOptions options;
+    options.read_in_workers = true;
+    compare_study(whole, study, options, OutputFormat::csv, 2);
+    EXPECT_EQ(best.str(), whole.str()) << name;
+    EXPECT_EQ(lines(best.str()).size(), 3u) << name;  // the heading and two variants
     // A shard left out, or given twice: named errors, nothing written.
     std::ostringstream out;
     EXPECT_THROW(compare_merged(out, study, {files[0], files[1]}, OutputFormat::csv), InputError);

@@ -60,11 +60,9 @@ int run(const CompareOptions& o) {
   EvaluationOptions evaluation;
   evaluation.threads = o.threads;
   if (!read_shard_option(o, &evaluation)) return kUsage;
-  if (o.top > 0 && (!o.shard.empty() || !o.merge.empty() || format == OutputFormat::markdown ||
-                    format == OutputFormat::html)) {
+  if (o.top > 0 && (!o.shard.empty() || format == OutputFormat::markdown || format == OutputFormat::html)) {
     std::cerr << "railmodal: error: --top applies to the ranking of a whole study (table, csv, json), not to "
-              << (!o.shard.empty() ? "a shard" : !o.merge.empty() ? "a merge" : "the " + o.format + " report")
-              << "\n";
+              << (!o.shard.empty() ? "a shard" : "the " + o.format + " report") << "\n";
     return kUsage;
   }
   try {
