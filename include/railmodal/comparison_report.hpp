@@ -32,11 +32,24 @@ void write_comparison(std::ostream& out, const Comparison& comparison, OutputFor
 /// format) writes, whatever the thread count, holding in memory per variant only its ranking
 /// keys (tens of bytes): each variant's row waits in a temporary file until the ranking is
 /// known. With `top` > 0 only the best `top` variants are written (the table's head still
-/// counts them all), and only their rows are held. Throws as evaluate_study and rank_variants,
-/// and std::invalid_argument for markdown and html (documents: write_comparison_report) and
-/// for a negative `top`.
+/// counts them all), and only their rows are held. markdown and html write the bytes
+/// write_comparison_report writes of that comparison with comparison_curves(study, ...,
+/// kReportBest) and `provenance`, holding the best kReportRows variants and the base whole and
+/// each other's sweep point (its parameters, periods and ranked value) in the temporary file.
+/// Throws as evaluate_study and rank_variants, std::system_error when the temporary file
+/// cannot be made or written (TMPDIR), and std::invalid_argument for a negative `top` or a
+/// `top` with markdown or html.
 void compare_study(std::ostream& out, const Study& study, const EvaluationOptions& options, OutputFormat format,
-                   int top = 0);
+                   int top = 0, const Provenance& provenance = {});
+
+/// Ranks the results of `shard_files` (each written by compare_shard or write_shard; together
+/// every variant of the study once) and writes them as compare_study does: the bytes
+/// write_comparison_report writes of rank_variants(study, <the shards' results>) (the documents
+/// with comparison_curves, which reads the variants it draws), holding one result at a time (each
+/// file is read twice: checked, then ranked). Throws InputError naming the file for a shard of
+/// another study or version, a variant in two shards or in none; otherwise as compare_study.
+void compare_merged(std::ostream& out, const Study& study, const std::vector<std::string>& shard_files,
+                    OutputFormat format, int top = 0, const Provenance& provenance = {});
 
 /// The report of a study in any format; markdown and html are documents to hand in: why the
 /// winner wins (its criteria against the base and the runner-up, what the others violate),
@@ -58,5 +71,12 @@ void write_comparison_report(std::ostream& out, const Study& study, const Compar
 /// read_shard refuses a shard of another version of the study file; none: not checked).
 void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
                  const std::vector<VariantResult>& results, const Provenance& inputs = {});
+
+/// Evaluates options' shard and writes the bytes write_shard(out, study, options,
+/// evaluate_study(study, options), inputs) writes, whatever the thread count, holding in
+/// memory per variant only where its result's JSON lies in a temporary file (TMPDIR). Throws
+/// as evaluate_study, and std::system_error when the temporary file cannot be made or written.
+void compare_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
+                   const Provenance& inputs = {});
 
 }  // namespace railmodal

@@ -123,10 +123,12 @@ struct Study {
   std::shared_ptr<const detail::StudySource> plan;  ///< for read_variant; shared by copies
 };
 
-/// The most variants a study may hold: the base, [[variant]] tables and sweep points, listed in
-/// memory in every shard, each at about 2.5 kB (10^6: 2.5 GB and 7.6 s on the development
-/// machine; docs/studies.md). load_study refuses a study over it, at the table that goes over.
-/// It bounds the number of shards too: that many give each at most one variant.
+/// The most variants a study may hold: the base, [[variant]] tables and sweep points.
+/// load_study and open_study refuse a study over it, at the table that goes over. Only
+/// load_study lists the variants in memory (about 2.5 kB each, 10^6: 2.5 GB and 7.6 s on the
+/// development machine; docs/studies.md); open_study lists none, and railmodal compare ranks
+/// 10^6 in tens of megabytes (docs/performance.md, "Memory"). It bounds the number of shards
+/// too: that many give each at most one variant.
 inline constexpr std::size_t kMaxStudyVariants = 1000000;
 
 /// Whether variant `index` is in shard `shard` of `shards` (1 <= shard <= shards): index mod

@@ -2,11 +2,13 @@
 // and checked against the study: the same study, the same deflection rule, each variant at
 // its index.
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "input/input_file.hpp"
+#include "input/shard_reader.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/provenance.hpp"
 #include "railmodal/study.hpp"
@@ -71,10 +73,6 @@ VariantResult result_from_json(const json& j) {
   return r;
 }
 
-}  // namespace
-
-namespace {
-
 // A shard that records its study file's digest (write_shard's inputs, the study file first) is of
 // the study file as it is now, or its results are of variants the study no longer defines. The
 // study file is hashed as it is read now (provenance_of); one that is not a regular file, and a
@@ -91,21 +89,47 @@ void check_study_digest(const json& shard, const std::string& file, const Study&
                          " is now FNV-1a 64 " + now + ": evaluate the shard again");
 }
 
-}  // namespace
-
-std::vector<VariantResult> read_shard(const std::string& file, const Study& study) {
-  std::ifstream in = input::open_input(file);
-  return read_shard(in, file, study);
-}
-
-std::vector<VariantResult> read_shard(std::istream& in, const std::string& file, const Study& study) {
+// Parses a shard and checks it, handing each result to `each` as it is read: the results are
+// converted one at a time and dropped from the document, so that only one is in memory at once.
+// The errors are read_shard's, in its order: the JSON, the head (format, study, deflection rule,
+// study digest), then the first result with missing or mistyped fields, then the first result
+// at the wrong index; a result after an error is not handed on.
+void parse_shard(std::istream& in, const std::string& file, const Study& study,
+                 const std::function<void(VariantResult&&)>& each) {
+  std::string key;          // the last key of the outermost object
+  bool in_results = false;  // inside its "results" array
+  bool deflections = false;  // a result holds dynamic deflections
+  std::string field_error, index_error;
+  const auto read_result = [&](const json& element) {
+    deflections = deflections || (element.is_object() && element.contains("dynamic_deflections"));
+    if (!field_error.empty()) return;
+    VariantResult r;
+    try {
+      r = result_from_json(element);
+    } catch (const json::exception& e) {
+      field_error = std::string("a shard with missing or mistyped fields: ") + e.what();
+      return;
+    }
+    if (index_error.empty() &&
+        (r.index < 0 || r.index >= variant_count(study) || variant_name(study, r.index) != r.name))
+      index_error = "variant '" + r.name + "' is not at index " + std::to_string(r.index) + " of the study";
+    if (index_error.empty()) each(std::move(r));
+  };
   json j;
   try {
-    j = json::parse(in);
+    j = json::parse(in, [&](int depth, json::parse_event_t event, json& parsed) {
+      if (depth == 1 && event == json::parse_event_t::key) key = parsed.get<std::string>();
+      if (depth == 1 && event == json::parse_event_t::array_start) in_results = key == "results";
+      if (depth == 1 && event == json::parse_event_t::array_end) in_results = false;
+      if (!in_results || depth != 2 || (event != json::parse_event_t::object_end && event != json::parse_event_t::value &&
+                                        event != json::parse_event_t::array_end))
+        return true;
+      read_result(parsed);
+      return false;  // read: not kept in the document
+    });
   } catch (const json::parse_error& e) {
     throw InputError(file, 0, 0, std::string("not a shard of railmodal compare (JSON: ") + e.what() + ")");
   }
-  std::vector<VariantResult> results;
   try {
     if (j.value("format", "") != "railmodal-compare-shard")
       throw InputError(file, 0, 0, "not a shard written by railmodal compare --shard");
@@ -115,24 +139,42 @@ std::vector<VariantResult> read_shard(std::istream& in, const std::string& file,
                                        study.name + "' (" + std::to_string(variant_count(study)) + " variants)");
     // A shard evaluated under another deflection rule would merge into a ranking it was not
     // checked for.
-    if (!j.contains("permissible_dynamic_deflection"))
-      for (const auto& r : j.at("results"))
-        if (r.contains("dynamic_deflections"))
-          throw InputError(file, 0, 0, "a shard from an older railmodal that does not record its deflection rule: "
-                                       "evaluate it again");
+    static_cast<void>(j.at("results"));  // a shard without results is missing a field
+    if (!j.contains("permissible_dynamic_deflection") && deflections)
+      throw InputError(file, 0, 0, "a shard from an older railmodal that does not record its deflection rule: "
+                                   "evaluate it again");
     const std::string rule = j.value("permissible_dynamic_deflection", "none");
     if (rule != to_string(study.deflection_rule))
       throw InputError(file, 0, 0, "a shard checked for permissible dynamic deflections by '" + rule +
                                        "', the study asks for '" + to_string(study.deflection_rule) + "'");
     check_study_digest(j, file, study);
-    for (const auto& r : j.at("results")) results.push_back(result_from_json(r));
+    if (!j.at("results").is_array()) throw InputError(file, 0, 0, "a shard whose results are not an array");
   } catch (const json::exception& e) {
     throw InputError(file, 0, 0, std::string("a shard with missing or mistyped fields: ") + e.what());
   }
-  for (const auto& r : results)
-    if (r.index < 0 || r.index >= variant_count(study) || variant_name(study, r.index) != r.name)
-      throw InputError(file, 0, 0, "variant '" + r.name + "' is not at index " + std::to_string(r.index) + " of the study");
+  if (!field_error.empty()) throw InputError(file, 0, 0, field_error);
+  if (!index_error.empty()) throw InputError(file, 0, 0, index_error);
+}
+
+}  // namespace
+
+std::vector<VariantResult> read_shard(const std::string& file, const Study& study) {
+  std::ifstream in = input::open_input(file);
+  return read_shard(in, file, study);
+}
+
+std::vector<VariantResult> read_shard(std::istream& in, const std::string& file, const Study& study) {
+  std::vector<VariantResult> results;
+  parse_shard(in, file, study, [&](VariantResult&& r) { results.push_back(std::move(r)); });
   return results;
+}
+
+void input::read_shard_each(const std::string& file, const Study& study,
+                            const std::function<void(VariantResult&&)>& sink) {
+  for (const bool check : {true, false}) {
+    std::ifstream in = input::open_input(file);
+    parse_shard(in, file, study, check ? std::function<void(VariantResult&&)>([](VariantResult&&) {}) : sink);
+  }
 }
 
 }  // namespace railmodal

@@ -5,6 +5,7 @@
 // against the base.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <map>
 #include <set>
@@ -14,6 +15,7 @@
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
+#include "report/comparison_document.hpp"
 #include "report/comparison_rows.hpp"
 #include "report/document_table.hpp"
 #include "report/svg_chart.hpp"
@@ -96,11 +98,12 @@ std::string against_base(const Comparison& c, const Writer& w, const RankedVaria
 }
 
 // Who ranks first and why, and how it compares with the base design.
-void add_winner(const Comparison& c, const Writer& w, size_t feasible, std::vector<std::string>* out) {
+void add_winner(const Comparison& c, const Writer& w, const report::DocumentTally& tally,
+                std::vector<std::string>* out) {
   const RankedVariant* base = comparison_base(c);
   const RankedVariant& winner = c.variants.front();
-  std::string s = w.bold(winner.result.name) + w.text(" ranks first of " + std::to_string(c.variants.size()) +
-                                                    " variants (" + std::to_string(feasible) + " feasible).");
+  std::string s = w.bold(winner.result.name) + w.text(" ranks first of " + std::to_string(tally.variants) +
+                                                    " variants (" + std::to_string(tally.feasible) + " feasible).");
   const RankedVariant* runner = c.variants.size() > 1 && c.variants[1].feasible ? &c.variants[1] : nullptr;
   if (runner && !c.ranking.objective.empty()) s += against_runner_up(c, w, winner, *runner);
   out->push_back(s);
@@ -110,18 +113,19 @@ void add_winner(const Comparison& c, const Writer& w, size_t feasible, std::vect
     out->push_back(against_base(c, w, winner, *base));
 }
 
-std::string constraint_sentence(const Comparison& c, const Writer& w, const RankingConstraint& k, size_t failed) {
-  size_t violating = 0;
-  for (const RankedVariant& v : c.variants) {
-    if (!v.result.ok()) continue;
-    const auto x = metric_value(v.result, k.metric);
-    violating += !x || (k.min && *x < *k.min) || (k.max && *x > *k.max);
-  }
+// Whether an evaluated variant's value of the constraint's metric lies outside it.
+bool violates(const VariantResult& r, const RankingConstraint& k) {
+  const auto x = metric_value(r, k.metric);
+  return !x || (k.min && *x < *k.min) || (k.max && *x > *k.max);
+}
+
+std::string constraint_sentence(const Writer& w, const RankingConstraint& k, size_t violating,
+                                const report::DocumentTally& tally) {
   std::string bound;
   if (k.min) bound += " ≥ " + metric_text(k.metric, *k.min);
   if (k.max) bound += std::string(k.min ? " and" : "") + " ≤ " + metric_text(k.metric, *k.max);
   return w.text("Constraint " + study::title(k.metric) + bound + ": " + std::to_string(violating) + " of " +
-                std::to_string(c.variants.size() - failed) + " evaluated variants violate it.");
+                std::to_string(tally.variants - tally.failed) + " evaluated variants violate it.");
 }
 
 // Whether the winner keeps the book's permissible dynamic deflections, and how closely.
@@ -142,26 +146,21 @@ std::string deflection_sentence(const VariantResult& r, const Writer& w) {
                 worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h.");
 }
 
-std::vector<std::string> verdict(const Comparison& c, const Writer& w) {
+std::vector<std::string> verdict(const Comparison& c, const Writer& w, const report::DocumentTally& tally) {
   std::vector<std::string> out;
-  size_t feasible = 0, failed = 0;
-  for (const RankedVariant& v : c.variants) feasible += v.feasible, failed += !v.result.ok();
+  const size_t feasible = tally.feasible, failed = tally.failed;
   if (feasible == 0)
     out.push_back(w.text("No variant meets every constraint: the table ranks them all as infeasible."));
   else
-    add_winner(c, w, feasible, &out);
-  for (const RankingConstraint& k : c.ranking.constraints) out.push_back(constraint_sentence(c, w, k, failed));
+    add_winner(c, w, tally, &out);
+  for (size_t k = 0; k < c.ranking.constraints.size(); ++k)
+    out.push_back(constraint_sentence(w, c.ranking.constraints[k], tally.violating.at(k), tally));
   if (c.deflection_rule.active() && feasible > 0 && c.variants.front().result.ok())
     out.push_back(deflection_sentence(c.variants.front().result, w));
-  if (failed > 0) {
-    for (const RankedVariant& v : c.variants)
-      if (!v.result.ok()) {
-        out.push_back(w.text(std::to_string(failed) + " variant" + (failed > 1 ? "s" : "") +
-                             " could not be evaluated (first: ") +
-                      w.bold(v.result.name) + w.text(", " + v.result.failure + ")."));
-        break;
-      }
-  }
+  if (failed > 0 && tally.failed_index)
+    out.push_back(w.text(std::to_string(failed) + " variant" + (failed > 1 ? "s" : "") +
+                         " could not be evaluated (first: ") +
+                  w.bold(tally.failed_name) + w.text(", " + tally.failure + ")."));
   return out;
 }
 
@@ -176,9 +175,9 @@ Table ranked_table(const Comparison& c) {
   return t;
 }
 
-std::string table_note(const Comparison& c) {
-  if (c.variants.size() <= static_cast<size_t>(kReportRows)) return "";
-  return "The first " + std::to_string(kReportRows) + " of " + std::to_string(c.variants.size()) +
+std::string table_note(const report::DocumentTally& tally) {
+  if (tally.variants <= static_cast<size_t>(kReportRows)) return "";
+  return "The first " + std::to_string(kReportRows) + " of " + std::to_string(tally.variants) +
          " variants; every variant is in --format csv and json.";
 }
 
@@ -198,39 +197,57 @@ std::optional<std::pair<double, std::string>> numeric(const std::string& text) {
   return std::make_pair(x, unit);
 }
 
+// A key the study sweeps, as the evaluated variants give it (first pass over their sweep points).
 struct SweptParameter {
   std::string key, unit;
-  std::string label;                                            ///< as the study names it (parameter_label)
-  std::vector<std::pair<const RankedVariant*, double>> points;  ///< in study order
+  std::string label;  ///< as the study names it (parameter_label)
+  size_t points = 0;  ///< variants with a value of it (in `unit`)
+  std::set<double> distinct;  ///< its distinct values, kept until there are more than kListedValues
+  double lo = NAN, hi = NAN;  ///< the least and greatest value (the first written of equal ones)
 };
 
-// Keys that take at least two numeric values in one unit across the evaluated variants.
-std::vector<SweptParameter> swept_parameters(const Study& study, const Comparison& c) {
-  std::vector<const RankedVariant*> in_order;
-  for (const RankedVariant& v : c.variants) in_order.push_back(&v);
-  std::sort(in_order.begin(), in_order.end(), [](auto* a, auto* b) { return a->result.index < b->result.index; });
+constexpr size_t kListedValues = 12;  // more distinct values than this are binned (sweep_table)
+
+// Keys that take at least two numeric values in one unit across the evaluated variants, in the
+// order the variants first name them.
+std::vector<SweptParameter> swept_parameters(const Study& study, const report::SweepPoints& points) {
   std::vector<SweptParameter> out;
   std::map<std::string, size_t> position;
   std::set<std::string> mixed;  // keys with other units or non-numeric values
-  for (const RankedVariant* v : in_order) {
-    if (!v->result.ok()) continue;
-    for (const auto& [key, text] : v->result.parameters) {
+  points([&](const report::SweepPoint& v) {
+    for (const auto& [key, text] : v.parameters) {
       const auto value = numeric(text);
-      if (!position.count(key))
-        position[key] = out.size(),
-        out.push_back({key, value ? value->second : "", study::parameter_label(study, key), {}});
+      if (!position.count(key)) {
+        position[key] = out.size();
+        SweptParameter p;
+        p.key = key, p.unit = value ? value->second : "", p.label = study::parameter_label(study, key);
+        out.push_back(std::move(p));
+      }
       SweptParameter& p = out[position[key]];
-      if (!value || value->second != p.unit) mixed.insert(key);
-      else p.points.push_back({v, value->first});
+      if (!value || value->second != p.unit) {
+        mixed.insert(key);
+        continue;
+      }
+      const double x = value->first;
+      if (p.points++ == 0) p.lo = p.hi = x;
+      if (x < p.lo) p.lo = x;
+      if (x > p.hi) p.hi = x;
+      if (p.distinct.size() <= kListedValues) p.distinct.insert(x);
     }
-  }
+  });
   std::vector<SweptParameter> swept;
-  for (SweptParameter& p : out) {
-    std::set<double> distinct;
-    for (const auto& pt : p.points) distinct.insert(pt.second);
-    if (!mixed.count(p.key) && distinct.size() >= 2) swept.push_back(std::move(p));
-  }
+  for (SweptParameter& p : out)
+    if (!mixed.count(p.key) && p.distinct.size() >= 2) swept.push_back(std::move(p));
   return swept;
+}
+
+// Calls visit(parameter, value) for each point a variant gives the swept parameters, in the
+// order of its parameters.
+template <typename Visit>
+void for_each_swept(const report::SweepPoint& v, const std::vector<SweptParameter>& swept, const Visit& visit) {
+  for (const auto& [key, text] : v.parameters)
+    for (size_t k = 0; k < swept.size(); ++k)
+      if (swept[k].key == key) visit(k, numeric(text)->first);
 }
 
 // A name with its unit: "f [mm]" in a table heading (as the text tables and CSV write it), "f
@@ -258,9 +275,9 @@ std::vector<std::string> period_modes(const VariantResult& reference) {
   return names;
 }
 
-std::optional<double> period_of(const VariantResult& r, const std::string& mode) {
-  for (const auto& m : r.modes)
-    if (m.name == mode && m.kind == "oscillatory") return m.period_s;
+std::optional<double> period_of(const report::SweepPoint& v, const std::string& mode) {
+  for (const auto& [name, period] : v.periods)
+    if (name == mode) return period;
   return std::nullopt;
 }
 
@@ -305,106 +322,147 @@ void frame_points(report::Chart* chart) {
   if (!(chart->y_min < chart->y_max)) chart->y_min = chart->y_max = 0.0;  // all zero: automatic
 }
 
+// One swept parameter's charts: the periods, and the value ranked first (feasible and not).
+struct SweepCharts {
+  report::Chart periods, objective;
+  std::vector<report::ChartSeries> modes;  ///< one per plotted mode
+  report::ChartSeries feasible, infeasible;
+  size_t stride = 1, seen = 0;  ///< every stride-th point is plotted; points met so far
+};
+
 void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vector<SweptParameter>& swept,
-                        const VariantResult& reference) {
+                        const VariantResult& reference, const report::SweepPoints& points) {
   const std::vector<std::string> modes = period_modes(reference);
+  std::vector<SweepCharts> charts(swept.size());
   for (size_t k = 0; k < swept.size(); ++k) {
     const SweptParameter& p = swept[k];
-    const size_t stride = (p.points.size() + kChartPoints - 1) / kChartPoints;
-    report::Chart periods;
-    periods.id = "sweep-periods-" + std::to_string(k + 1);
-    periods.title = "Periods against " + p.label;
-    periods.x_label = axis_label(p, false);
-    periods.y_label = "period (s)";
+    SweepCharts& chart = charts[k];
+    chart.stride = (p.points + kChartPoints - 1) / kChartPoints;
+    chart.periods.id = "sweep-periods-" + std::to_string(k + 1);
+    chart.periods.title = "Periods against " + p.label;
+    chart.periods.x_label = axis_label(p, false);
+    chart.periods.y_label = "period (s)";
     for (const std::string& mode : modes) {
-      report::ChartSeries s;
-      s.label = mode;
-      s.markers_only = true;
-      for (size_t i = 0; i < p.points.size(); i += stride)
-        if (const auto T = period_of(p.points[i].first->result, mode)) s.x.push_back(p.points[i].second), s.y.push_back(*T);
-      if (!s.x.empty()) periods.series.push_back(s);
+      report::ChartSeries series;
+      series.label = mode;
+      series.markers_only = true;
+      chart.modes.push_back(series);
     }
-    frame_points(&periods);
-    out << "<h3>" << parameter_heading(p, Writer{true}) << "</h3>\n" << report::svg_chart(periods);
+    chart.objective.id = "sweep-objective-" + std::to_string(k + 1);
+    chart.objective.title = c.ranking.weighted ? "Weighted objective against " + p.label
+                            : c.ranking.objective.empty()
+                                ? ""
+                                : "Objective against " + p.label + ": " + goal(c.ranking.objective.front());
+    chart.objective.x_label = axis_label(p, false);
+    chart.objective.y_label = ranked_label(c.ranking, false);
+    chart.feasible.label = "feasible", chart.infeasible.label = "infeasible";
+    chart.feasible.markers_only = chart.infeasible.markers_only = true;
+  }
+  points([&](const report::SweepPoint& v) {
+    for_each_swept(v, swept, [&](size_t k, double x) {
+      SweepCharts& chart = charts[k];
+      if (chart.seen++ % chart.stride != 0) return;
+      for (size_t m = 0; m < modes.size(); ++m)
+        if (const auto T = period_of(v, modes[m])) chart.modes[m].x.push_back(x), chart.modes[m].y.push_back(*T);
+      const auto& y = v.ranked;
+      if (c.ranking.objective.empty() || !y || !std::isfinite(*y)) return;
+      report::ChartSeries& s = v.feasible ? chart.feasible : chart.infeasible;
+      s.x.push_back(x);
+      s.y.push_back(*y * ranked_scale(c.ranking));
+    });
+  });
+  for (size_t k = 0; k < swept.size(); ++k) {
+    SweepCharts& chart = charts[k];
+    for (report::ChartSeries& s : chart.modes)
+      if (!s.x.empty()) chart.periods.series.push_back(std::move(s));
+    frame_points(&chart.periods);
+    out << "<h3>" << parameter_heading(swept[k], Writer{true}) << "</h3>\n" << report::svg_chart(chart.periods);
     if (!c.ranking.objective.empty()) {
-      report::Chart objective;
-      objective.id = "sweep-objective-" + std::to_string(k + 1);
-      objective.title = c.ranking.weighted ? "Weighted objective against " + p.label
-                                           : "Objective against " + p.label + ": " + goal(c.ranking.objective.front());
-      objective.x_label = axis_label(p, false);
-      objective.y_label = ranked_label(c.ranking, false);
-      report::ChartSeries feasible, infeasible;
-      feasible.label = "feasible", infeasible.label = "infeasible";
-      feasible.markers_only = infeasible.markers_only = true;
-      for (size_t i = 0; i < p.points.size(); i += stride) {
-        const auto y = ranked_value(*p.points[i].first, c.ranking);
-        if (!y || !std::isfinite(*y)) continue;
-        report::ChartSeries& s = p.points[i].first->feasible ? feasible : infeasible;
-        s.x.push_back(p.points[i].second);
-        s.y.push_back(*y * ranked_scale(c.ranking));
-      }
-      for (const auto* s : {&feasible, &infeasible})
-        if (!s->x.empty()) objective.series.push_back(*s);
-      frame_points(&objective);
-      if (!objective.series.empty()) out << report::svg_chart(objective);
+      for (auto* s : {&chart.feasible, &chart.infeasible})
+        if (!s->x.empty()) chart.objective.series.push_back(std::move(*s));
+      frame_points(&chart.objective);
+      if (!chart.objective.series.empty()) out << report::svg_chart(chart.objective);
     }
-    if (stride > 1)
-      out << "<p class=note>Every " << stride << "th of " << p.points.size() << " variants is plotted.</p>\n";
+    if (chart.stride > 1)
+      out << "<p class=note>Every " << chart.stride << "th of " << swept[k].points << " variants is plotted.</p>\n";
   }
 }
 
 // Markdown cannot draw: the same as a table over the parameter's values (each value, or ten
 // equal bins when a sample spreads them out).
-Table sweep_table(const Comparison& c, const SweptParameter& p, const VariantResult& reference) {
-  std::vector<std::string> modes = period_modes(reference);
-  if (modes.size() > 3) modes.resize(3);
-  std::set<double> distinct;
-  for (const auto& pt : p.points) distinct.insert(pt.second);
-  const bool binned = distinct.size() > 12;
-  const double lo = *distinct.begin(), hi = *distinct.rbegin();
-  const int bins = binned ? 10 : static_cast<int>(distinct.size());
-  const std::vector<double> values(distinct.begin(), distinct.end());
-  auto bin_of = [&](double x) {
+struct Range {
+  double min = INFINITY, max = -INFINITY;
+  void add(double x) { min = std::min(min, x), max = std::max(max, x); }
+  std::string text(int digits) const {
+    if (!(min <= max)) return "–";
+    return min == max ? significant(min, digits) : significant(min, digits) + "–" + significant(max, digits);
+  }
+};
+
+struct SweepRow {
+  int variants = 0, feasible = 0;
+  Range objective;
+  std::vector<Range> periods;
+};
+
+// A swept parameter's table being filled: its bins (or values) and their rows.
+struct SweepTable {
+  bool binned = false;
+  double lo = 0.0, hi = 0.0;
+  int bins = 0;
+  std::vector<double> values;  ///< the distinct values, unbinned
+  std::vector<SweepRow> rows;
+  int bin_of(double x) const {
     if (!binned) return static_cast<int>(std::lower_bound(values.begin(), values.end(), x) - values.begin());
     return std::min(bins - 1, static_cast<int>((x - lo) / (hi - lo) * bins));
-  };
-  struct Range {
-    double min = INFINITY, max = -INFINITY;
-    void add(double x) { min = std::min(min, x), max = std::max(max, x); }
-    std::string text(int digits) const {
-      if (!(min <= max)) return "–";
-      return min == max ? significant(min, digits) : significant(min, digits) + "–" + significant(max, digits);
+  }
+};
+
+std::vector<Table> sweep_tables(const Comparison& c, const std::vector<SweptParameter>& swept,
+                                const VariantResult& reference, const report::SweepPoints& points) {
+  std::vector<std::string> modes = period_modes(reference);
+  if (modes.size() > 3) modes.resize(3);
+  std::vector<SweepTable> tables(swept.size());
+  for (size_t k = 0; k < swept.size(); ++k) {
+    const SweptParameter& p = swept[k];
+    SweepTable& t = tables[k];
+    t.binned = p.distinct.size() > kListedValues;
+    t.lo = p.lo, t.hi = p.hi;
+    t.bins = t.binned ? 10 : static_cast<int>(p.distinct.size());
+    t.values.assign(p.distinct.begin(), p.distinct.end());
+    t.rows.assign(t.bins, SweepRow{0, 0, {}, std::vector<Range>(modes.size())});
+  }
+  points([&](const report::SweepPoint& v) {
+    for_each_swept(v, swept, [&](size_t k, double x) {
+      SweepRow& row = tables[k].rows[tables[k].bin_of(x)];
+      ++row.variants;
+      row.feasible += v.feasible;
+      if (const auto& y = v.ranked; y && std::isfinite(*y)) row.objective.add(*y * ranked_scale(c.ranking));
+      for (size_t m = 0; m < modes.size(); ++m)
+        if (const auto T = period_of(v, modes[m])) row.periods[m].add(*T);
+    });
+  });
+  std::vector<Table> out;
+  for (size_t k = 0; k < swept.size(); ++k) {
+    const SweepTable& s = tables[k];
+    Table t;
+    t.headers = {axis_label(swept[k], true), "variants", "feasible"};
+    if (!c.ranking.objective.empty()) t.headers.push_back(ranked_label(c.ranking, true));
+    for (const auto& m : modes) t.headers.push_back("T " + m + " [s]");
+    t.numeric.assign(t.headers.size(), true);
+    for (int b = 0; b < s.bins; ++b) {
+      if (s.rows[b].variants == 0) continue;
+      const std::string value = s.binned ? significant(s.lo + (s.hi - s.lo) * b / s.bins, 4) + "–" +
+                                               significant(s.lo + (s.hi - s.lo) * (b + 1) / s.bins, 4)
+                                         : significant(s.values[b], 6);
+      std::vector<std::string> cells{value, std::to_string(s.rows[b].variants), std::to_string(s.rows[b].feasible)};
+      if (!c.ranking.objective.empty()) cells.push_back(s.rows[b].objective.text(4));
+      for (const Range& r : s.rows[b].periods) cells.push_back(r.text(4));
+      t.rows.push_back(cells);
     }
-  };
-  struct Row {
-    int variants = 0, feasible = 0;
-    Range objective;
-    std::vector<Range> periods;
-  };
-  std::vector<Row> rows(bins, Row{0, 0, {}, std::vector<Range>(modes.size())});
-  for (const auto& [v, x] : p.points) {
-    Row& row = rows[bin_of(x)];
-    ++row.variants;
-    row.feasible += v->feasible;
-    if (const auto y = ranked_value(*v, c.ranking); y && std::isfinite(*y)) row.objective.add(*y * ranked_scale(c.ranking));
-    for (size_t m = 0; m < modes.size(); ++m)
-      if (const auto T = period_of(v->result, modes[m])) row.periods[m].add(*T);
+    out.push_back(std::move(t));
   }
-  Table t;
-  t.headers = {axis_label(p, true), "variants", "feasible"};
-  if (!c.ranking.objective.empty()) t.headers.push_back(ranked_label(c.ranking, true));
-  for (const auto& m : modes) t.headers.push_back("T " + m + " [s]");
-  t.numeric.assign(t.headers.size(), true);
-  for (int b = 0; b < bins; ++b) {
-    if (rows[b].variants == 0) continue;
-    const std::string value = binned ? significant(lo + (hi - lo) * b / bins, 4) + "–" + significant(lo + (hi - lo) * (b + 1) / bins, 4)
-                                     : significant(values[b], 6);
-    std::vector<std::string> cells{value, std::to_string(rows[b].variants), std::to_string(rows[b].feasible)};
-    if (!c.ranking.objective.empty()) cells.push_back(rows[b].objective.text(4));
-    for (const Range& r : rows[b].periods) cells.push_back(r.text(4));
-    t.rows.push_back(cells);
-  }
-  return t;
+  return out;
 }
 
 // ---- response curves of the best designs ------------------------------------------------------
@@ -579,23 +637,24 @@ const VariantResult* reference_result(const Comparison& c) {
   return nullptr;
 }
 
-void write_markdown(std::ostream& out, const Study& study, const Comparison& c, const ComparisonCurves& curves,
-                    const Provenance& provenance) {
+void write_markdown(std::ostream& out, const Study& study, const Comparison& c, const report::DocumentTally& tally,
+                    const report::SweepPoints& points, const ComparisonCurves& curves, const Provenance& provenance) {
   const Writer w{false};
-  out << "# Design comparison: " << c.study << "\n\nStudy `" << study.source << "`, " << c.variants.size()
+  out << "# Design comparison: " << c.study << "\n\nStudy `" << study.source << "`, " << tally.variants
       << " variants. " << ranking_text(c) << "\n\n## Why the winner wins\n\n";
-  for (const std::string& s : verdict(c, w)) out << "- " << s << "\n";
+  for (const std::string& s : verdict(c, w, tally)) out << "- " << s << "\n";
   out << "\n## Ranked variants\n\n";
   report::write_markdown_table(out, ranked_table(c));
-  if (const std::string note = table_note(c); !note.empty()) out << note << "\n\n";
-  const std::vector<SweptParameter> swept = swept_parameters(study, c);
+  if (const std::string note = table_note(tally); !note.empty()) out << note << "\n\n";
+  const std::vector<SweptParameter> swept = swept_parameters(study, points);
   const VariantResult* reference = reference_result(c);
   if (!swept.empty() && reference) {
     out << "## Swept parameters\n\nRanges over the variants at each value: the periods of the lowest modes and "
            "the value ranked first. The plots are in the HTML report (`--format html`).\n\n";
-    for (const SweptParameter& p : swept) {
-      out << "### " << parameter_heading(p, w) << "\n\n";
-      report::write_markdown_table(out, sweep_table(c, p, *reference));
+    const std::vector<Table> tables = sweep_tables(c, swept, *reference, points);
+    for (size_t k = 0; k < swept.size(); ++k) {
+      out << "### " << parameter_heading(swept[k], w) << "\n\n";
+      report::write_markdown_table(out, tables[k]);
     }
   }
   const std::vector<DesignCurves>& sets = curves.designs;
@@ -612,24 +671,24 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c, 
   out << "---\n\nWritten by " << report::provenance_line("compare", provenance) << "\n";
 }
 
-void write_html(std::ostream& out, const Study& study, const Comparison& c, const ComparisonCurves& curves,
-                const Provenance& provenance) {
+void write_html(std::ostream& out, const Study& study, const Comparison& c, const report::DocumentTally& tally,
+                const report::SweepPoints& points, const ComparisonCurves& curves, const Provenance& provenance) {
   const Writer w{true};
   report::write_html_head(out, "Design comparison: " + c.study);
   out << "<h1>Design comparison: " << html_escape(c.study) << "</h1>\n<p>Study <code>" << html_escape(study.source)
-      << "</code>, " << c.variants.size() << " variants. " << html_escape(ranking_text(c)) << "</p>\n";
+      << "</code>, " << tally.variants << " variants. " << html_escape(ranking_text(c)) << "</p>\n";
   out << "<h2>Why the winner wins</h2>\n<ul>\n";
-  for (const std::string& s : verdict(c, w)) out << "<li>" << s << "</li>\n";
+  for (const std::string& s : verdict(c, w, tally)) out << "<li>" << s << "</li>\n";
   out << "</ul>\n<h2>Ranked variants</h2>\n";
   report::write_html_table(out, ranked_table(c));
-  if (const std::string note = table_note(c); !note.empty()) out << "<p class=note>" << html_escape(note) << "</p>\n";
-  const std::vector<SweptParameter> swept = swept_parameters(study, c);
+  if (const std::string note = table_note(tally); !note.empty()) out << "<p class=note>" << html_escape(note) << "</p>\n";
+  const std::vector<SweptParameter> swept = swept_parameters(study, points);
   const VariantResult* reference = reference_result(c);
   if (!swept.empty() && reference) {
     out << "<h2>Swept parameters</h2>\n<p class=note>Each evaluated variant is a point: the periods of the "
            "lowest modes and the value ranked first against each parameter the study varies (points at one value "
            "differ in the other parameters).</p>\n";
-    write_sweep_charts(out, c, swept, *reference);
+    write_sweep_charts(out, c, swept, *reference, points);
   }
   const std::vector<DesignCurves>& sets = curves.designs;
   if (!sets.empty()) {
@@ -653,13 +712,123 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
 
 }  // namespace
 
+report::SweepPoint report::sweep_point(const RankedVariant& v, const Ranking& ranking) {
+  SweepPoint point;
+  point.feasible = v.feasible;
+  point.ranked = ranked_value(v, ranking);
+  point.parameters = v.result.parameters;
+  for (const auto& m : v.result.modes)
+    if (m.kind == "oscillatory") point.periods.emplace_back(m.name, m.period_s);
+  return point;
+}
+
+namespace {
+
+// The bytes of a sweep point: sizes and numbers in this machine's representation (the file
+// they go to is read back by the same process), strings as their size and bytes.
+void put(std::string* bytes, const void* data, size_t size) { bytes->append(static_cast<const char*>(data), size); }
+void put_size(std::string* bytes, size_t n) { put(bytes, &n, sizeof n); }
+void put_double(std::string* bytes, double x) { put(bytes, &x, sizeof x); }
+void put_text(std::string* bytes, const std::string& s) { put_size(bytes, s.size()), bytes->append(s); }
+
+// Reads what put wrote, in order; std::invalid_argument past the end.
+struct Reader {
+  const std::string& bytes;
+  size_t at = 0;
+  void get(void* data, size_t size) {
+    if (size > bytes.size() - at) throw std::invalid_argument("a sweep point's bytes end early");
+    std::memcpy(data, bytes.data() + at, size);
+    at += size;
+  }
+  size_t size() {
+    size_t n = 0;
+    get(&n, sizeof n);
+    return n;
+  }
+  double number() {
+    double x = 0.0;
+    get(&x, sizeof x);
+    return x;
+  }
+  std::string text() {
+    std::string s(size(), '\0');
+    get(s.data(), s.size());
+    return s;
+  }
+};
+
+}  // namespace
+
+std::string report::to_bytes(const SweepPoint& point) {
+  std::string bytes;
+  put_size(&bytes, point.feasible ? 1 : 0);
+  put_size(&bytes, point.ranked ? 1 : 0);
+  put_double(&bytes, point.ranked.value_or(0.0));
+  put_size(&bytes, point.parameters.size());
+  for (const auto& [key, value] : point.parameters) put_text(&bytes, key), put_text(&bytes, value);
+  put_size(&bytes, point.periods.size());
+  for (const auto& [name, period] : point.periods) put_text(&bytes, name), put_double(&bytes, period);
+  return bytes;
+}
+
+report::SweepPoint report::sweep_point_from_bytes(const std::string& bytes) {
+  Reader in{bytes};
+  SweepPoint point;
+  point.feasible = in.size() != 0;
+  const bool ranked = in.size() != 0;
+  const double value = in.number();
+  if (ranked) point.ranked = value;
+  for (size_t n = in.size(), i = 0; i < n; ++i) {
+    std::string key = in.text();
+    point.parameters.emplace_back(std::move(key), in.text());
+  }
+  for (size_t n = in.size(), i = 0; i < n; ++i) {
+    std::string name = in.text();
+    point.periods.emplace_back(std::move(name), in.number());
+  }
+  return point;
+}
+
+void report::DocumentTally::add(const RankedVariant& v, const Ranking& ranking) {
+  ++variants;
+  feasible += v.feasible;
+  violating.resize(ranking.constraints.size(), 0);
+  if (!v.result.ok()) {
+    ++failed;
+    if (!failed_index || v.result.index < *failed_index)
+      failed_index = v.result.index, failed_name = v.result.name, failure = v.result.failure;
+    return;
+  }
+  for (size_t k = 0; k < ranking.constraints.size(); ++k) violating[k] += violates(v.result, ranking.constraints[k]);
+}
+
+void report::write_comparison_document(std::ostream& out, const Study& study, const Comparison& best,
+                                       const DocumentTally& tally, const SweepPoints& points,
+                                       const ComparisonCurves& curves, OutputFormat format,
+                                       const Provenance& provenance) {
+  DocumentTally counted = tally;
+  counted.violating.resize(best.ranking.constraints.size(), 0);  // a study of no variant counts none
+  switch (format) {
+    case OutputFormat::markdown: write_markdown(out, study, best, counted, points, curves, provenance); break;
+    case OutputFormat::html: write_html(out, study, best, counted, points, curves, provenance); break;
+    default: throw std::invalid_argument("a comparison document is markdown or html, not " + std::string(to_string(format)));
+  }
+}
+
 void write_comparison_report(std::ostream& out, const Study& study, const Comparison& comparison,
                              const ComparisonCurves& curves, OutputFormat format, const Provenance& provenance) {
-  switch (format) {
-    case OutputFormat::markdown: write_markdown(out, study, comparison, curves, provenance); break;
-    case OutputFormat::html: write_html(out, study, comparison, curves, provenance); break;
-    default: write_comparison(out, comparison, format); break;
-  }
+  if (format != OutputFormat::markdown && format != OutputFormat::html)
+    return write_comparison(out, comparison, format);
+  report::DocumentTally tally;
+  for (const RankedVariant& v : comparison.variants) tally.add(v, comparison.ranking);
+  std::vector<const RankedVariant*> in_order;  // the evaluated variants in study order
+  for (const RankedVariant& v : comparison.variants)
+    if (v.result.ok()) in_order.push_back(&v);
+  std::sort(in_order.begin(), in_order.end(), [](auto* a, auto* b) { return a->result.index < b->result.index; });
+  const auto points = [&](const std::function<void(const report::SweepPoint&)>& visit) {
+    for (const RankedVariant* v : in_order) visit(report::sweep_point(*v, comparison.ranking));
+  };
+  report::write_comparison_document(out, study, comparison, tally, points, curves, format, provenance);
 }
 
 }  // namespace railmodal

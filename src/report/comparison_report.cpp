@@ -543,6 +543,36 @@ void report::write_streamed_comparison(std::ostream& out, const Comparison& head
   }
 }
 
+std::string report::shard_result_json(const VariantResult& r) {
+  std::ostringstream document;
+  {
+    JsonWriter j(document, 1);
+    j.begin_object().key("results").begin_array();
+    write_result(j, r, nullptr);
+    j.end_array().end_object();
+  }
+  const std::string text = document.str();
+  const std::string open = "{\n \"results\": [\n", close = "\n ]\n}\n";
+  return text.substr(open.size(), text.size() - open.size() - close.size());
+}
+
+void report::write_streamed_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
+                                  size_t count, const std::function<std::string(size_t)>& result_at,
+                                  const Provenance& inputs) {
+  std::ostringstream document;
+  write_shard(document, study, options, {}, inputs);
+  const std::string text = document.str();
+  const std::string empty = "\"results\": []";
+  const size_t at = text.find(empty) + empty.size() - 1;  // before the closing bracket
+  if (count == 0) {
+    out << text;
+    return;
+  }
+  out << text.substr(0, at);
+  for (size_t k = 0; k < count; ++k) out << (k == 0 ? "\n" : ",\n") << result_at(k);
+  out << "\n " << text.substr(at);
+}
+
 void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
                  const std::vector<VariantResult>& results, const Provenance& inputs) {
   JsonWriter j(out, 1);  // one space a level, as the shard files had it

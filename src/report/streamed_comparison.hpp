@@ -1,10 +1,15 @@
 // The ranked comparison written from a streamed ranking (study/streamed_ranking.hpp): the same
-// bytes write_comparison writes of the whole comparison, from each variant's row kept as text.
+// bytes write_comparison writes of the whole comparison, from each variant's row kept as text;
+// and a shard's file (write_shard) from each result's JSON kept as text.
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <ostream>
+#include <string>
 
 #include "railmodal/output_format.hpp"
+#include "railmodal/provenance.hpp"
 #include "railmodal/study.hpp"
 #include "study/streamed_ranking.hpp"
 
@@ -19,5 +24,13 @@ study::StreamedRanking::Render streamed_row(const Ranking& ranking, const Deflec
 /// that holds them; with a ranking of the best k, those k, under a head that counts them all.
 void write_streamed_comparison(std::ostream& out, const Comparison& head, const study::StreamedRanking& ranked,
                                OutputFormat format);
+
+/// A result's JSON object as it stands in a shard's "results" array (write_shard).
+std::string shard_result_json(const VariantResult& r);
+
+/// Writes the bytes write_shard writes of the shard's `count` results, from the text
+/// shard_result_json made of each (result_at(0), result_at(1), ... in index order).
+void write_streamed_shard(std::ostream& out, const Study& study, const EvaluationOptions& options, size_t count,
+                          const std::function<std::string(size_t)>& result_at, const Provenance& inputs);
 
 }  // namespace railmodal::report

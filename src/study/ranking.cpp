@@ -156,15 +156,11 @@ Comparison rank_variants(const Study& study, std::vector<VariantResult> results)
   return out;
 }
 
-namespace {
-
-bool is_base(const VariantResult& r) { return r.index == 0 && r.name == "base" && r.parameters.empty(); }
-
-}  // namespace
+bool study::is_base(const VariantResult& r) { return r.index == 0 && r.name == "base" && r.parameters.empty(); }
 
 const RankedVariant* comparison_base(const Comparison& comparison) {
   for (const RankedVariant& v : comparison.variants)
-    if (is_base(v.result)) return &v;
+    if (study::is_base(v.result)) return &v;
   return nullptr;
 }
 
@@ -172,7 +168,7 @@ std::vector<const RankedVariant*> best_designs(const Comparison& comparison, int
   std::vector<const RankedVariant*> best;
   for (bool need_feasible : {true, false}) {
     for (const RankedVariant& v : comparison.variants)
-      if (best.size() < static_cast<size_t>(count) && v.result.ok() && !is_base(v.result) &&
+      if (best.size() < static_cast<size_t>(count) && v.result.ok() && !study::is_base(v.result) &&
           (v.feasible || !need_feasible) && std::find(best.begin(), best.end(), &v) == best.end())
         best.push_back(&v);
     if (!best.empty()) break;

@@ -1,6 +1,6 @@
 // The parts of rank_variants (ranking.cpp) that a streamed ranking (streamed_ranking.cpp) uses
-// one variant at a time: the variant's place before its rank is known, and the check that the
-// metrics name modes the variants have.
+// one variant at a time: the variant's place before its rank is known, the check that the
+// metrics name modes the variants have, and which variant is the base.
 #pragma once
 
 #include <set>
@@ -21,5 +21,9 @@ std::vector<double> rank_entry(const VariantResult& r, const Ranking& ranking, R
 /// critical_speed:<mode>) that is not among `modes`, the names of the evaluated variants'
 /// modes; nothing is checked when no variant was evaluated (`evaluated` false).
 void check_mode_names(const Study& study, const std::set<std::string>& modes, bool evaluated);
+
+/// Whether `r` is the study's base design (comparison_base picks it): variant 0, named "base",
+/// overriding nothing.
+bool is_base(const VariantResult& r);
 
 }  // namespace railmodal::study

@@ -4,22 +4,15 @@
 // thread count.
 #include "study/streamed_ranking.hpp"
 
-#include <stdlib.h>  // mkstemp
-#include <unistd.h>  // unlink
-
 #include <algorithm>
-#include <cerrno>
 #include <atomic>
-#include <cstdlib>
 #include <iterator>
 #include <map>
 #include <mutex>
 #include <set>
 #include <stdexcept>
-#include <system_error>
 #include <utility>
 
-#include "study/parallel_evaluation.hpp"
 #include "study/ranking.hpp"
 
 namespace railmodal::study {
@@ -34,75 +27,50 @@ struct Key {
   }
 };
 
-// The best `top` texts seen so far, under a lock: a new one enters when it beats the worst kept.
+// The best `top` things (texts, or whole variants) seen so far, under a lock: a new one enters
+// when it beats the worst kept.
+template <typename T>
 class BestKept {
  public:
   explicit BestKept(size_t top) : top_(top) {}
-  void offer(Key key, std::string text) {
+  void offer(const Key& key, T thing) {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (best_.size() == top_ && !(key < std::prev(best_.end())->first)) return;
-    best_.emplace(std::move(key), std::move(text));
+    best_.emplace(key, std::move(thing));
     if (best_.size() > top_) best_.erase(std::prev(best_.end()));
   }
-  std::vector<std::string> in_order() {
-    std::vector<std::string> texts;
-    for (auto& entry : best_) texts.push_back(std::move(entry.second));
-    return texts;
+  std::vector<T> in_order() {
+    std::vector<T> things;
+    for (auto& entry : best_) things.push_back(std::move(entry.second));
+    return things;
   }
 
  private:
   size_t top_;
   std::mutex mutex_;
-  std::multimap<Key, std::string> best_;  // keys are unique (their positions are)
+  std::multimap<Key, T> best_;  // keys are unique (their positions are)
 };
-
-// The directory for the texts: TMPDIR, as other programs use it, or /tmp.
-std::string temporary_directory() {
-  const char* dir = std::getenv("TMPDIR");
-  return dir && *dir ? dir : "/tmp";
-}
-
-// A file in `directory` that no other process sees and that goes when it is closed (or the
-// process ends): unlinked as soon as it is open.
-std::FILE* anonymous_file(const std::string& directory) {
-  std::string path = directory + "/railmodal-ranking-XXXXXX";
-  const int fd = mkstemp(path.data());
-  if (fd < 0) return nullptr;
-  unlink(path.c_str());
-  std::FILE* file = fdopen(fd, "w+b");
-  if (!file) close(fd);
-  return file;
-}
 
 }  // namespace
 
-StreamedRanking::StreamedRanking(const Study& study, const EvaluationOptions& options, size_t top, const Render& render) {
-  if (options.shards != 1)
-    throw std::invalid_argument("a streamed ranking ranks the whole study: shards must be 1, not " +
-                                std::to_string(options.shards));
+StreamedRanking::StreamedRanking(const Study& study, const Source& source, size_t top, const Render& render,
+                                 size_t keep) {
   const Ranking& ranking = study.ranking;
   const size_t stride = 1 + (ranking.objective.empty() ? 0 : ranking.weighted ? 1 : ranking.objective.size());
   std::vector<double> keys;  // top == 0: `stride` values a variant, by position
-  BestKept best(top);
-  std::mutex mutex;  // the spill file, the mode names
+  BestKept<std::string> best(top);
+  BestKept<RankedVariant> kept(keep);
+  std::mutex mutex;  // the mode names, the base
   std::set<std::string> modes;
   bool evaluated = false;
   std::atomic<size_t> feasible{0};
-  unsigned long long spilled = 0;
-  bool spill_failed = false;  // a full disk, say: thrown once the threads have stopped
-  if (top == 0) {
-    spill_.reset(anonymous_file(temporary_directory()));
-    if (!spill_)
-      throw std::system_error(errno, std::generic_category(),
-                              "the ranking of a whole study keeps its rows in a temporary file, and none could be "
-                              "opened in " + temporary_directory() +
-                              " (set TMPDIR to a writable directory, or keep the best K only with --top K)");
-  }
-  study::evaluate_each(
-      study, options,
+  if (top == 0)
+    spill_ = std::make_unique<SpilledTexts>("the ranking of a whole study keeps its rows",
+                                            keep > 0 ? "" : ", or keep the best K only with --top K");
+  source(
       [&](size_t count) {
         size_ = count;
-        if (top == 0) keys.resize(count * stride), offsets_.resize(count), lengths_.resize(count);
+        if (top == 0) keys.resize(count * stride), spill_->resize(count);
       },
       [&](size_t k, VariantResult&& r) {
         RankedVariant v;
@@ -115,22 +83,20 @@ StreamedRanking::StreamedRanking(const Study& study, const EvaluationOptions& op
           evaluated = true;
           for (const auto& m : v.result.modes) modes.insert(m.name);
         }
+        if (keep > 0 && is_base(v.result)) {
+          const std::lock_guard<std::mutex> lock(mutex);
+          base_ = v;
+        }
+        if (keep > 0) kept.offer({key, k}, std::move(v));
         if (top > 0) return best.offer({std::move(key), k}, std::move(text));
         std::copy(key.begin(), key.end(), keys.begin() + static_cast<std::ptrdiff_t>(k * stride));
-        const std::lock_guard<std::mutex> lock(mutex);
-        spill_failed = spill_failed || std::fwrite(text.data(), 1, text.size(), spill_.get()) != text.size();
-        offsets_[k] = spilled;
-        lengths_[k] = static_cast<unsigned>(text.size());
-        spilled += text.size();
+        spill_->put(k, text);
       });
-  // A full disk shows at the write or only at the flush: both before a byte of the output.
-  if (!spill_failed && top == 0) spill_failed = std::fflush(spill_.get()) != 0 || std::ferror(spill_.get()) != 0;
-  if (spill_failed)
-    throw std::system_error(errno ? errno : EIO, std::generic_category(),
-                            "the ranking of a whole study could not write its temporary file in " +
-                                temporary_directory() + " (free space there, set TMPDIR, or use --top K)");
+  if (spill_) spill_->finish();  // a full disk, say: thrown once the threads have stopped
   check_mode_names(study, modes, evaluated);
   feasible_ = feasible;
+  best_ = kept.in_order();
+  for (size_t i = 0; i < best_.size(); ++i) best_[i].rank = static_cast<int>(i) + 1;
   if (top > 0) {
     kept_ = best.in_order();
     for (size_t i = 0; i < kept_.size(); ++i) order_.push_back(i);
@@ -144,18 +110,18 @@ StreamedRanking::StreamedRanking(const Study& study, const EvaluationOptions& op
     const bool greater = std::lexicographical_compare(key_of(b), key_of(b) + stride, key_of(a), key_of(a) + stride);
     return less || (!greater && a < b);
   });
+  if (base_) base_->rank = static_cast<int>(std::find(order_.begin(), order_.end(), size_t{0}) - order_.begin()) + 1;
 }
 
 std::string StreamedRanking::text(size_t rank) const {
   if (rank < 1 || rank > order_.size()) throw std::out_of_range("a streamed ranking has no rank " + std::to_string(rank));
   const size_t k = order_[rank - 1];
-  if (!spill_) return kept_[k];
-  std::string text(lengths_[k], '\0');
-  if (fseeko(spill_.get(), static_cast<off_t>(offsets_[k]), SEEK_SET) != 0 ||
-      std::fread(text.data(), 1, text.size(), spill_.get()) != text.size())
-    throw std::system_error(errno ? errno : EIO, std::generic_category(),
-                            "the ranking of a whole study could not read back its temporary file");
-  return text;
+  return spill_ ? text_at(k) : kept_[k];
+}
+
+std::string StreamedRanking::text_at(size_t k) const {
+  if (!spill_) throw std::out_of_range("a streamed ranking of the best few keeps no study order");
+  return spill_->at(k);
 }
 
 }  // namespace railmodal::study

@@ -4,13 +4,14 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdio>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "railmodal/study.hpp"
+#include "study/spilled_texts.hpp"
 
 namespace railmodal::study {
 
@@ -20,29 +21,39 @@ class StreamedRanking {
   /// (feasible, violations, criteria, objective; the rank is not known yet and is 0).
   using Render = std::function<std::string(const RankedVariant&)>;
 
-  /// Evaluates the whole study (options.shards must be 1) and ranks it as
-  /// rank_variants(study, evaluate_study(study, options)) would: the same order whatever the
-  /// thread count. `render` is called from the worker threads, concurrently, once per variant.
-  /// With `top` > 0 only the texts of the best `top` variants are kept. Throws as
-  /// evaluate_study, and as rank_variants for a metric naming a mode no variant has.
-  StreamedRanking(const Study& study, const EvaluationOptions& options, size_t top, const Render& render);
+  /// Hands every result of a whole study to `sink` with its position (its index in the study),
+  /// each exactly once, after telling `prepare` how many there are; the sink may be called
+  /// from several threads at once. Evaluating the study is one source; shard files are another.
+  using Sink = std::function<void(size_t position, VariantResult&& result)>;
+  using Source = std::function<void(const std::function<void(size_t count)>& prepare, const Sink& sink)>;
+
+  /// Ranks the results `source` gives (the study evaluated on its threads, or shard files) as
+  /// rank_variants ranks them: the same order whatever order they come in. `render` is called
+  /// as the source hands each on (concurrently, from its threads), once per variant. With `top`
+  /// > 0 only the texts of the best `top` variants are kept. With `keep` > 0 the best `keep`
+  /// variants are kept whole (best()), and the base design (base()). Throws what the source
+  /// throws, and as rank_variants for a metric naming a mode no variant has.
+  StreamedRanking(const Study& study, const Source& source, size_t top, const Render& render, size_t keep = 0);
 
   size_t size() const { return size_; }          ///< variants ranked
   size_t feasible() const { return feasible_; }  ///< evaluated and within every constraint
   size_t shown() const { return order_.size(); }  ///< variants whose text is kept: size(), or top
   /// The text of the variant ranked `rank` (1 ... shown()).
   std::string text(size_t rank) const;
+  /// The text of the variant at `position` in the study (0 ... size() − 1); only without `top`.
+  std::string text_at(size_t position) const;
+  /// The best `keep` variants whole, in rank order, their ranks set (fewer if the study is smaller).
+  const std::vector<RankedVariant>& best() const { return best_; }
+  /// The base design whole with its rank (comparison_base), if `keep` > 0 and the study has one.
+  const RankedVariant* base() const { return base_ ? &*base_ : nullptr; }
 
  private:
-  struct Closer {
-    void operator()(std::FILE* f) const { std::fclose(f); }
-  };
   size_t size_ = 0, feasible_ = 0;
   std::vector<size_t> order_;          ///< variant positions in rank order (top: into kept_)
   std::vector<std::string> kept_;      ///< top > 0: the texts of the best, by position in order_
-  std::unique_ptr<std::FILE, Closer> spill_;  ///< top == 0: every text, one after another
-  std::vector<unsigned long long> offsets_;   ///< top == 0: where each variant's text starts
-  std::vector<unsigned> lengths_;             ///< top == 0: its length
+  std::unique_ptr<SpilledTexts> spill_;       ///< top == 0: every text, by position
+  std::vector<RankedVariant> best_;           ///< keep > 0: the best, whole
+  std::optional<RankedVariant> base_;         ///< keep > 0: the base design, whole
 };
 
 }  // namespace railmodal::study

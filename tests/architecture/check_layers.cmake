@@ -15,7 +15,8 @@
 # like, which every stage throws); load_study.cpp/.hpp, where the study reader (input) and the
 # study plan (study) meet; comparison_curves.cpp, which reads and studies the designs a
 # comparison report draws (public calls only), so that the report reads no file;
-# compare_study.cpp, which joins the streamed ranking (study) and its writer (report). Foundations
+# compare_study.cpp, which joins the streamed ranking (study), its writer (report) and, for a
+# merge, the shard reader (input) that hands it the results one at a time. Foundations
 # below every stage, which include nothing of the stages: require_valid.hpp (the one check of
 # an options struct) and summary/ (the stage clock of an AnalysisSummary), which any analysis
 # and report may include, and shortest_text.hpp (round-trip number text), which any stage may. version.cpp defines
@@ -38,7 +39,7 @@ set(may_include_report "model;gear;excitation;solve;spectrum;response;simulate;s
 set(may_include_errors "")
 set(may_include_load_study "input;study")
 set(may_include_comparison_curves "")
-set(may_include_compare_study "study;report")
+set(may_include_compare_study "input;study;report")
 set(may_include_require_valid "")
 set(may_include_summary "")
 set(may_include_shortest_text "")

@@ -1,11 +1,15 @@
 // compare_study: the ranking of a whole study written from its streamed rows (issue 19 item 2)
 // is the ranking rank_variants and write_comparison write, byte for byte, whatever the thread
-// count; with a top k, its first k variants.
+// count; with a top k, its first k variants. The documents (Markdown, HTML), a shard's file
+// (compare_shard) and a merge of shard files (compare_merged) are the bytes their in-memory
+// writers write too.
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "railmodal/railmodal.hpp"
+#include "report/comparison_document.hpp"
 #include "study/parallel_evaluation.hpp"
 #include "test_support.hpp"
 
@@ -74,14 +78,164 @@ TEST(CompareStudy, TopWritesTheFirstVariantsOfTheRankingWhateverTheThreadCount) 
   }
 }
 
-TEST(CompareStudy, RefusesDocumentsShardsAndANegativeTop) {
+TEST(CompareStudy, RefusesATopForDocumentsShardsAndANegativeTop) {
   const Study study = load_study(bundled_study("resort_against_fette"), [](int) { return false; });
-  EXPECT_THROW(streamed(study, OutputFormat::html, 1), std::invalid_argument);
+  EXPECT_THROW(streamed(study, OutputFormat::html, 1, 2), std::invalid_argument);
+  EXPECT_THROW(streamed(study, OutputFormat::markdown, 1, 2), std::invalid_argument);
   EXPECT_THROW(streamed(study, OutputFormat::csv, 1, -1), std::invalid_argument);
   EvaluationOptions shard;
   shard.shards = 2;
   std::ostringstream out;
   EXPECT_THROW(compare_study(out, study, shard, OutputFormat::csv), std::invalid_argument);
+}
+
+// The document of the whole comparison, as railmodal compare wrote it before it streamed.
+std::string document(const Study& study, const Comparison& comparison, OutputFormat format) {
+  std::ostringstream out;
+  write_comparison_report(out, study, comparison, comparison_curves(study, comparison, kReportBest), format,
+                          provenance_of(study_files(study)));
+  return out.str();
+}
+
+std::string streamed_document(const Study& study, OutputFormat format, int threads) {
+  EvaluationOptions options;
+  options.threads = threads;
+  options.read_in_workers = true;
+  std::ostringstream out;
+  compare_study(out, study, options, format, 0, provenance_of(study_files(study)));
+  return out.str();
+}
+
+// 120 sampled spring sets of the resort car and its base: more variants than the documents'
+// table shows, the base ranked among them (near the middle: the samples lie on both sides of
+// it), below the table's rows, and sweeps binned in the Markdown tables (more than 12 values).
+std::string sampled_study() {
+  const std::string data = RAILMODAL_DATA_DIR;
+  return write_temp("sampled.toml", R"([study]
+name = "Resort car: 120 sampled spring sets and the base"
+vehicle = ")" + data + R"(/vehicles/resort_car.toml"
+scene = ")" + data + R"(/scenes/resort_car_10m_rails.toml"
+
+[[sweep]]
+name = "springs"
+sample = { count = 120, seed = 11 }
+parameters = [
+  { key = "secondary.spring.stiffness", from = "455 kgf/cm", to = "845 kgf/cm", label = "c3" },
+  { key = "primary.spring[0].stiffness", from = "490 kgf/cm", to = "910 kgf/cm", label = "c1" },
+]
+
+[ranking]
+min_critical_speed = "30 km/h"
+objective = [{ metric = "bounce_period", goal = "max" }]
+)");
+}
+
+TEST(CompareStudy, WritesTheBytesOfTheDocumentsWhateverTheThreadCount) {
+  std::vector<std::string> studies;
+  for (const char* name : kStudies) studies.push_back(bundled_study(name));
+  studies.push_back(bundled_study("two_axle_wagon_ride_springs"));
+  studies.push_back(sampled_study());
+  for (const std::string& file : studies) {
+    const Study read = load_study(file);
+    const Study opened = open_study(file);
+    EvaluationOptions options;
+    options.threads = 1;
+    const Comparison comparison = rank_variants(read, evaluate_study(read, options));
+    for (OutputFormat format : {OutputFormat::markdown, OutputFormat::html}) {
+      const std::string expected = document(read, comparison, format);
+      for (int threads : {1, 2, 3})
+        EXPECT_EQ(streamed_document(opened, format, threads), expected) << file << ", " << to_string(format) << ", " << threads;
+    }
+  }
+}
+
+// The sampled study does what its comment says: the base below the table's rows, and binned
+// sweeps, so that the test above covers both.
+TEST(CompareStudy, TheSampledStudyRanksItsBaseBelowTheTable) {
+  const Study study = load_study(sampled_study());
+  const Comparison comparison = rank_variants(study, evaluate_study(study, {}));
+  ASSERT_NE(comparison_base(comparison), nullptr);
+  EXPECT_GT(comparison_base(comparison)->rank, kReportRows);
+  const std::string markdown = document(study, comparison, OutputFormat::markdown);
+  EXPECT_NE(markdown.find("The first 40 of 121 variants"), std::string::npos);
+  EXPECT_NE(markdown.find("Against the base:"), std::string::npos);
+}
+
+std::string shard_of(const Study& study, int shard, int shards, int threads, bool streamed_shard) {
+  EvaluationOptions options;
+  options.shard = shard;
+  options.shards = shards;
+  options.threads = threads;
+  options.read_in_workers = true;
+  std::ostringstream out;
+  if (streamed_shard)
+    compare_shard(out, study, options, provenance_of(study_files(study)));
+  else
+    write_shard(out, study, options, evaluate_study(study, options), provenance_of(study_files(study)));
+  return out.str();
+}
+
+TEST(CompareShard, WritesTheBytesOfWriteShardWhateverTheThreadCount) {
+  for (const char* name : kStudies) {
+    const Study study = open_study(bundled_study(name));
+    for (int shard : {1, 2, 3}) {
+      const std::string expected = shard_of(study, shard, 3, 1, false);
+      for (int threads : {1, 2}) EXPECT_EQ(shard_of(study, shard, 3, threads, true), expected) << name << " " << shard;
+    }
+    // A shard with no variant (more shards than variants) still names the study.
+    EXPECT_EQ(shard_of(study, 100, 100, 2, true), shard_of(study, 100, 100, 1, false)) << name;
+  }
+}
+
+TEST(CompareMerged, WritesWhatTheWholeStudyWritesInEveryFormat) {
+  for (const char* name : kStudies) {
+    const Study study = open_study(bundled_study(name));
+    std::vector<std::string> files;
+    for (int shard : {2, 1, 3})
+      files.push_back(write_temp(std::string(name) + "_" + std::to_string(shard) + ".json", shard_of(study, shard, 3, 2, true)));
+    for (OutputFormat format : {OutputFormat::table, OutputFormat::csv, OutputFormat::json, OutputFormat::markdown,
+                                OutputFormat::html}) {
+      const Provenance inputs = provenance_of(study_files(study));
+      std::ostringstream merged;
+      compare_merged(merged, study, files, format, 0, inputs);
+      EXPECT_EQ(merged.str(), streamed_document(study, format, 2)) << name << ", " << to_string(format);
+    }
+    // The best two of merged shards are the best two of the study.
+    std::ostringstream best, whole;
+    compare_merged(best, study, files, OutputFormat::csv, 2);
+    EvaluationOptions options;
+    options.read_in_workers = true;
+    compare_study(whole, study, options, OutputFormat::csv, 2);
+    EXPECT_EQ(best.str(), whole.str()) << name;
+    EXPECT_EQ(lines(best.str()).size(), 3u) << name;  // the heading and two variants
+    // A shard left out, or given twice: named errors, nothing written.
+    std::ostringstream out;
+    EXPECT_THROW(compare_merged(out, study, {files[0], files[1]}, OutputFormat::csv), InputError);
+    EXPECT_THROW(compare_merged(out, study, {files[0], files[1], files[2], files[0]}, OutputFormat::csv), InputError);
+    EXPECT_EQ(out.str(), "");
+  }
+}
+
+// A sweep point waits in the ranking's file as bytes: read back, it is the same point, numbers
+// bit for bit (a value ranked first or none, −0, the smallest subnormal, text with a NUL).
+TEST(SweepPoint, ReadsBackAsWritten) {
+  report::SweepPoint point;
+  point.feasible = true;
+  point.ranked = -0.0;
+  point.parameters = {{"secondary.spring.stiffness", "455 kgf/cm"}, {"a", std::string("x\0y", 3)}};
+  point.periods = {{"body bounce", 0.9447}, {"pitch", 4.9406564584124654e-324}};
+  for (const bool ranked : {true, false}) {
+    if (!ranked) point.ranked.reset(), point.feasible = false;
+    const report::SweepPoint back = report::sweep_point_from_bytes(report::to_bytes(point));
+    EXPECT_EQ(back.feasible, point.feasible);
+    ASSERT_EQ(back.ranked.has_value(), ranked);
+    if (ranked) {
+      EXPECT_TRUE(std::signbit(*back.ranked));
+    }
+    EXPECT_EQ(back.parameters, point.parameters);
+    EXPECT_EQ(back.periods, point.periods);
+  }
+  EXPECT_THROW(report::sweep_point_from_bytes(report::to_bytes(point).substr(0, 20)), std::invalid_argument);
 }
 
 // A sink that fails (a full disk under a streamed ranking) stops every thread and its exception

@@ -21,6 +21,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -81,17 +82,18 @@ ShardText guarded(const Step& step) {
     return {kInput, e.what()};
   } catch (const OutputError& e) {
     return {e.code(), e.what()};
+  } catch (const std::system_error& e) {  // a shard's temporary file (TMPDIR), as railmodal compare says it
+    return {kOutput, std::string("railmodal: error: ") + e.what()};
   } catch (const std::exception& e) {
     return {kInternal, std::string("railmodal-mpi: internal error: ") + e.what()};
   }
 }
 
-/// The study with its variants named, none read: the threads that evaluate this rank's variants
-/// read them (EvaluationOptions::read_in_workers, as railmodal compare does); rank 0's report
-/// reads the others it draws.
-railmodal::Study load_named_variants(const Options& o) {
-  return railmodal::load_study(o.study, [](int) { return false; });
-}
+/// The study opened, no variant listed or read: the threads that evaluate this rank's variants
+/// make and read them from their index (EvaluationOptions::read_in_workers, as railmodal compare
+/// does); rank 0's report reads the others it draws. A rank holds no list of the study's
+/// variants (about 2.5 kB each).
+railmodal::Study load_named_variants(const Options& o) { return railmodal::open_study(o.study); }
 
 /// Rank 0, before any rank evaluates: its output opened, its study read, and the output refused
 /// if it is one of the study's files (as railmodal compare does), so that these fail first.
@@ -114,8 +116,8 @@ ShardText evaluate_shard(const Options& o, int rank, int size, int threads, std:
     evaluation.shards = size;
     evaluation.threads = threads;
     evaluation.read_in_workers = true;
-    std::ostringstream out;
-    railmodal::write_shard(out, *study, evaluation, railmodal::evaluate_study(*study, evaluation));
+    std::ostringstream out;  // the results' text only: each result's waits in a temporary file (compare_shard)
+    railmodal::compare_shard(out, *study, evaluation);
     return out.str();
   });
 }
@@ -149,10 +151,10 @@ int merge_and_write(const Options& o, const railmodal::Study& study, const std::
         results.push_back(std::move(result));
       }
     }
-    for (size_t i = 0; i < study.variants.size(); ++i)
-      if (!seen.count(static_cast<int>(i)))
+    for (int i = 0; i < railmodal::variant_count(study); ++i)
+      if (!seen.count(i))
         throw railmodal::InputError(o.study, 0, 0, "no rank returned variant " + std::to_string(i + 1) + " ('" +
-                                                       study.variants[i].name + "')");
+                                                       railmodal::variant_name(study, i) + "')");
     const railmodal::Comparison comparison = railmodal::rank_variants(study, std::move(results));
     const railmodal::OutputFormat format = *railmodal::output_format_from_string(o.format);
     // The documents draw the best designs' curves: studied here, read first (the shards did not).

@@ -3,7 +3,6 @@
 #include <iostream>
 #include <memory>
 #include <regex>
-#include <set>
 #include <system_error>
 
 #include "commands.hpp"
@@ -56,46 +55,14 @@ bool read_shard_option(const CompareOptions& o, EvaluationOptions* evaluation) {
   return true;
 }
 
-// The results of the shard files, each variant of the study exactly once.
-std::vector<VariantResult> merged_results(const Study& study, const std::vector<std::string>& files) {
-  std::vector<VariantResult> results;
-  std::set<int> seen;
-  for (const std::string& file : files)
-    for (VariantResult& r : read_shard(file, study)) {
-      if (!seen.insert(r.index).second)
-        throw InputError(file, 0, 0, "variant '" + r.name + "' is also in an earlier shard");
-      results.push_back(std::move(r));
-    }
-  for (int i = 0; i < variant_count(study); ++i)
-    if (!seen.count(i))
-      throw InputError(files.front(), 0, 0,
-                       "no shard holds variant " + std::to_string(i + 1) + " ('" + variant_name(study, i) +
-                           "'): give every shard of the study");
-  return results;
-}
-
-// The ranking of the results in `format`.
-void write_ranked(std::ostream& out, const Study& study, std::vector<VariantResult> results, OutputFormat format) {
-  const Comparison comparison = rank_variants(study, std::move(results));
-  // The documents draw the best designs' curves: studied here, read first if merged.
-  const bool document = format == OutputFormat::markdown || format == OutputFormat::html;
-  // The page names the study's files: merged shards are results of those same files, and give
-  // the page a single run gives, byte for byte.
-  write_comparison_report(out, study, comparison,
-                          document ? comparison_curves(study, comparison, kReportBest) : ComparisonCurves{}, format,
-                          document ? provenance_of(study_files(study)) : Provenance{});
-}
-
 int run(const CompareOptions& o) {
   const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   EvaluationOptions evaluation;
   evaluation.threads = o.threads;
   if (!read_shard_option(o, &evaluation)) return kUsage;
-  if (o.top > 0 && (!o.shard.empty() || !o.merge.empty() || format == OutputFormat::markdown ||
-                    format == OutputFormat::html)) {
+  if (o.top > 0 && (!o.shard.empty() || format == OutputFormat::markdown || format == OutputFormat::html)) {
     std::cerr << "railmodal: error: --top applies to the ranking of a whole study (table, csv, json), not to "
-              << (!o.shard.empty() ? "a shard" : !o.merge.empty() ? "a merge" : "the " + o.format + " report")
-              << "\n";
+              << (!o.shard.empty() ? "a shard" : "the " + o.format + " report") << "\n";
     return kUsage;
   }
   try {
@@ -111,16 +78,20 @@ int run(const CompareOptions& o) {
     evaluation.read_in_workers = true;
     outputs.refuse_inputs(study_files(study));
     if (!merging && !o.quiet) evaluation.progress = terminal_progress("compare");
+    // Results streamed: only their keys held (and a report's best few). The page names the
+    // study's files: merged shards are results of those same files, and give the page a single
+    // run gives, byte for byte.
     const bool document = format == OutputFormat::markdown || format == OutputFormat::html;
+    const Provenance files = document ? provenance_of(study_files(study)) : Provenance{};
     if (!o.shard.empty())
-      write_shard(out, study, evaluation, evaluate_study(study, evaluation), provenance_of(study_files(study)));
-    else if (!merging && !document)  // the ranking alone: results streamed, only their keys held
-      compare_study(out, study, evaluation, format, o.top);
+      compare_shard(out, study, evaluation, provenance_of(study_files(study)));
+    else if (merging)
+      compare_merged(out, study, o.merge, format, o.top, files);
     else
-      write_ranked(out, study, merging ? merged_results(study, o.merge) : evaluate_study(study, evaluation), format);
+      compare_study(out, study, evaluation, format, o.top, files);
     outputs.commit();
     return kSuccess;
-  } catch (const std::system_error& e) {  // the streamed ranking's temporary file
+  } catch (const std::system_error& e) {  // the streamed ranking's (or shard's) temporary file
     throw OutputError(kOutput, std::string("railmodal: error: ") + e.what());
   } catch (...) {
     return exit_of_error("compare", o.study);

@@ -1,0 +1,48 @@
+// Texts made out of order (one a variant, by the threads that evaluate them) and read back in
+// any order later, kept in a temporary file: in memory only where each lies (12 bytes a text).
+// A streamed ranking keeps its rows here until the ranking is known; a shard its results until
+// they can be written in study order (issue 19, item 2).
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace railmodal::study {
+
+class SpilledTexts {
+ public:
+  /// Opens the file in TMPDIR (or /tmp) and unlinks it at once: it goes when this does. Throws
+  /// std::system_error if none can be opened, the message starting with `purpose` ("the
+  /// ranking of a whole study keeps its rows") and ending with `remedy` (after "set TMPDIR to a
+  /// writable directory").
+  SpilledTexts(std::string purpose, std::string remedy);
+
+  /// Room for `count` texts (positions 0 ... count − 1), before any is put.
+  void resize(size_t count);
+  /// Writes the text of `position`; several threads may put at once. A failed write is
+  /// remembered and thrown by finish().
+  void put(size_t position, const std::string& text);
+  /// Flushes the file; throws std::system_error if a write failed (a full disk, say).
+  void finish();
+  /// The text put at `position`; std::system_error if it cannot be read back.
+  std::string at(size_t position) const;
+  size_t size() const { return offsets_.size(); }
+
+ private:
+  struct Closer {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  std::string purpose_, remedy_;
+  std::unique_ptr<std::FILE, Closer> file_;
+  std::mutex mutex_;
+  unsigned long long written_ = 0;
+  bool failed_ = false;
+  std::vector<unsigned long long> offsets_;  ///< where each text starts
+  std::vector<unsigned> lengths_;            ///< its length
+};
+
+}  // namespace railmodal::study
