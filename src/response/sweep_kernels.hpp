@@ -22,21 +22,46 @@ struct SweepBlock {
   int count;
 };
 
-/// One mode's share of an output DOF: φ(o)·s(ω)(a + iωb)/(λ − ω² + iωc), with a = φᵀQ_K and
-/// b = φᵀQ_C. An undamped term (c = 0) adds exactly 0 where |λ − ω²| ≤ `tolerance`: it has no
-/// steady state there, and the caller flags those speeds.
-struct ModalTerm {
-  double ar, ai, br, bi, lambda, c, tolerance;
+/// A mode of the modal path: λ − ω² + iωc; undamped (c = 0) with its `tolerance` on |λ − ω²|.
+struct ModalMode {
+  double lambda, c, tolerance;
   bool undamped;
 };
-void add_modal_terms(const ModalTerm* terms, std::size_t count, const SweepBlock& b);
 
-/// One complex root r = −decay + i·lambda_im of the first-order form:
-/// s(ω)(a + iωb)/(iω − r), every root strictly damped (decay > 0).
-struct RootTerm {
-  double ar, ai, br, bi, decay, lambda_im;
+/// A root r = −decay + i·lambda_im of the first-order form, strictly damped (decay > 0).
+struct RootMode {
+  double decay, lambda_im;
 };
-void add_root_terms(const RootTerm* terms, std::size_t count, const SweepBlock& b);
+
+/// What a mode gives at each speed of a block, computed once and shared by every output DOF
+/// the mode reaches: gap = λ − ω², di = ωc and f = s(ω)/(gap² + di²) for a modal mode (an
+/// undamped one: f = s(ω)/gap, and exactly 0 where |gap| ≤ tolerance: it has no steady state
+/// there, and the caller flags those speeds); di = ω − lambda_im and f = s(ω)/(decay² + di²)
+/// for a root (gap unused). Each array holds kSweepBlock values.
+struct ModeFactors {
+  double* f;
+  double* gap;
+  double* di;
+};
+void modal_factors(const ModalMode& m, const SweepBlock& b, const ModeFactors& out);
+void root_factors(const RootMode& r, const SweepBlock& b, const ModeFactors& out);
+
+/// An output DOF's share of a mode's load, a + iωb: for a modal mode a = φ(o)·φᵀQ_K and
+/// b = φ(o)·φᵀQ_C, for a root the shape's row o times the root's participations in Q_K and Q_C.
+struct Share {
+  double ar, ai, br, bi;
+};
+
+/// Adds the DOF's term of a mode to (b.re, b.im): s(ω)(a + iωb)/(λ − ω² + iωc) for a modal
+/// mode, s(ω)(a + iωb)/(iω − r) for a root, from the mode's factors. Real arithmetic and no
+/// division: the one division per mode and speed is in the factors.
+void add_modal_share(const Share& s, const ModalMode& m, const ModeFactors& f, const SweepBlock& b);
+void add_root_share(const Share& s, const RootMode& r, const ModeFactors& f, const SweepBlock& b);
+
+/// The same with the factors computed in the same pass for this one DOF, not shared (for a mode
+/// that few DOFs take: fewer loads and stores than the two; the same operations and bits).
+void add_modal_term(const Share& s, const ModalMode& m, const SweepBlock& b);
+void add_root_term(const Share& s, const RootMode& r, const SweepBlock& b);
 
 /// A massless DOF's own quasi-static part: s(ω)(k + iωc), complex k = kr + i·ki, c likewise.
 void add_static_term(double kr, double ki, double cr, double ci, const SweepBlock& b);
@@ -44,6 +69,17 @@ void add_static_term(double kr, double ki, double cr, double ci, const SweepBloc
 /// sum0 += |x|, sum1 += |x|·ω, sum2 += |x|·ω² (displacement, velocity, acceleration) with
 /// x = re + i·im, over the block.
 void add_magnitudes(const SweepBlock& b, double* sum0, double* sum1, double* sum2);
+
+/// Whether every speed is positive and finite, and whether they rise (each ≥ the one before):
+/// one branch-free pass over the grid.
+struct SpeedScan {
+  bool valid, ascending;
+};
+SpeedScan scan_speeds(const double* speeds, int count);
+
+/// arg of the input s(ω)·input that phases refer to, per speed: `reference_arg`, plus π where
+/// s < 0 (s real: its sign turns the input by π), NaN where s = 0 (no input, so no phase).
+void input_arguments(const double* scale, double reference_arg, int count, double* out);
 
 /// arg x = atan2(im, re) per speed (rad), NaN where x = 0; see fast_atan2.
 void arguments(const double* re, const double* im, int count, double* out);
