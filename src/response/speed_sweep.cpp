@@ -221,7 +221,8 @@ response::SweepBlock dof_block(BlockWork& work, size_t d, int n) {
 // once for them all; below, each DOF adds its term in one pass, factors and term together.
 // Sharing costs a pass that writes the factors and reads them back per DOF: for two DOFs that
 // was slower than two fused passes (steam locomotive, frame yaw and pitch: 0.39 against
-// 0.36 ms for 10⁴ speeds, docs/performance.md); from three on one division saved per DOF pays.
+// 0.36 ms for 10⁴ speeds, docs/performance.md); from three on it saves two or more divisions
+// a speed for that one pass (not timed apart: no scene of that table has three output DOFs).
 constexpr size_t kShareFactorsFrom = 3;
 
 // Every output DOF's response to one harmonic at the block's n speeds (ω, ω², s(ω) set), from
