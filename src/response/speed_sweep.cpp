@@ -128,32 +128,12 @@ bool agrees_with_direct(const Sweep& s, const AtSpeed& at_speed) {
   return true;
 }
 
-// What one output DOF adds for one harmonic at a block of speeds beyond its shares of the
-// modes: a massless DOF's static part into b.re and b.im, and 1 in `resonant` at the speeds
-// where the response is unbounded (on a grid where ω rises, `ascending`, those are found by
-// bisection); true if it flagged any.
+// What a kernel adds for one harmonic and output DOF at a block of speeds: the complex response
+// into b.re and b.im, and 1 in `resonant` at the speeds where the response is unbounded (on a
+// grid where ω rises, `ascending`, those are found by bisection); true if it flagged any.
 using Kernel = std::function<bool(const response::SweepBlock& b, double* resonant, bool ascending)>;
+using Prepare = std::function<Kernel(int harmonic, int dof)>;
 using response::kSweepBlock;
-
-// One output DOF's share of a mode: the DOF (its index among the output DOFs) and its load.
-struct DofShare {
-  size_t dof;
-  response::Share share;
-};
-
-// Harmonic k at every output DOF, grouped by mode so that each mode's factor at a speed (its
-// one division) is computed once and shared by the DOFs it reaches: the strictly damped roots
-// of the first-order form, then the modes of the modal path, each with the DOFs it reaches in
-// the order of the output DOFs; and per output DOF the rest of its kernel. A DOF adds its terms
-// in the order of the modes, roots first, then its rest, as one DOF alone would.
-struct HarmonicPlan {
-  std::vector<response::RootMode> roots;
-  std::vector<std::vector<DofShare>> root_shares;
-  std::vector<response::ModalMode> modes;
-  std::vector<std::vector<DofShare>> mode_shares;
-  std::vector<Kernel> rest;
-};
-using Prepare = std::function<HarmonicPlan(int harmonic, const std::vector<int>& dofs)>;
 
 // Each output DOF once: displacement, velocity and acceleration of one DOF share its
 // response, its unbounded speeds and its phase (one arg x per speed and DOF).
@@ -180,26 +160,25 @@ OutputDofs output_dofs(const std::vector<OutputRequest>& outputs) {
 // acceleration), arg x of harmonic 1 (rad), and the unbounded flags (0 or 1, as doubles so
 // that the loops mixing them with values vectorise).
 struct DofSums {
-  alignas(64) std::array<double, kSweepBlock> re, im;  // the response of the harmonic being added
-  alignas(64) std::array<std::array<double, kSweepBlock>, 3> sum;
+  std::array<std::array<double, kSweepBlock>, 3> sum;
   std::array<double, kSweepBlock> first_arg;
   std::array<double, kSweepBlock> unbounded;
   bool any_unbounded;  // in this block: most blocks have none, and skip the flag loops
 };
 
-// The arrays of one block of speeds, reused from block to block: ω, ω², s(ω), one mode's
-// factors, the arg of s(ω)·input (NaN: no input), and the kernels' flags.
+// The arrays of one block of speeds, reused from block to block: ω, ω², s(ω), the response of
+// one harmonic and DOF, the arg of s(ω)·input (NaN: no input), and the kernels' flags.
 struct BlockWork {
-  alignas(64) std::array<double, kSweepBlock> w, w2, scale, f, gap, di;
+  alignas(64) std::array<double, kSweepBlock> w, w2, scale, re, im;
   alignas(64) std::array<double, kSweepBlock> input_arg;
   alignas(64) std::array<double, kSweepBlock> resonant{};  // all 0 between kernels
   std::vector<DofSums> per_dof;
 };
 
-// What the block loop runs: the output DOFs, and each harmonic's plan (k at k − 1).
+// What the block loop runs: the output DOFs, and per harmonic (k at k − 1) the kernel of each.
 struct BlockPlan {
   OutputDofs dofs;
-  std::vector<HarmonicPlan> harmonics;
+  std::vector<std::vector<Kernel>> kernels;
   bool ascending;
 };
 
@@ -208,51 +187,6 @@ void clear_sums(std::vector<DofSums>& per_dof, int n) {
     for (auto& sum : d.sum) std::fill_n(sum.begin(), n, 0.0);
     std::fill_n(d.unbounded.begin(), n, 0.0);
     d.any_unbounded = false;
-  }
-}
-
-// The block of output DOF d: the shared ω, ω² and s(ω), and its own response.
-response::SweepBlock dof_block(BlockWork& work, size_t d, int n) {
-  DofSums& out = work.per_dof[d];
-  return {work.w.data(), work.w2.data(), work.scale.data(), out.re.data(), out.im.data(), n};
-}
-
-// A mode that this many output DOFs take computes its factors (its one division per speed)
-// once for them all; below, each DOF adds its term in one pass, factors and term together.
-// Sharing costs a pass that writes the factors and reads them back per DOF: for two DOFs that
-// was slower than two fused passes (steam locomotive, frame yaw and pitch: 0.39 against
-// 0.36 ms for 10⁴ speeds, docs/performance.md); from three on it saves two or more divisions
-// a speed for that one pass (not timed apart: no scene of that table has three output DOFs).
-constexpr size_t kShareFactorsFrom = 3;
-
-// Every output DOF's response to one harmonic at the block's n speeds (ω, ω², s(ω) set), from
-// the terms of its modes, each mode's factors shared or fused as above.
-void add_mode_terms(const HarmonicPlan& h, int n, BlockWork& work) {
-  for (DofSums& out : work.per_dof) {
-    std::fill_n(out.re.begin(), n, 0.0);
-    std::fill_n(out.im.begin(), n, 0.0);
-  }
-  const response::SweepBlock shared{work.w.data(), work.w2.data(), work.scale.data(), nullptr, nullptr, n};
-  const response::ModeFactors factors{work.f.data(), work.gap.data(), work.di.data()};
-  for (size_t r = 0; r < h.roots.size(); ++r) {
-    const std::vector<DofShare>& shares = h.root_shares[r];
-    if (shares.size() < kShareFactorsFrom) {
-      for (const DofShare& d : shares) response::add_root_term(d.share, h.roots[r], dof_block(work, d.dof, n));
-      continue;
-    }
-    response::root_factors(h.roots[r], shared, factors);
-    for (const DofShare& d : shares)
-      response::add_root_share(d.share, h.roots[r], factors, dof_block(work, d.dof, n));
-  }
-  for (size_t j = 0; j < h.modes.size(); ++j) {
-    const std::vector<DofShare>& shares = h.mode_shares[j];
-    if (shares.size() < kShareFactorsFrom) {
-      for (const DofShare& d : shares) response::add_modal_term(d.share, h.modes[j], dof_block(work, d.dof, n));
-      continue;
-    }
-    response::modal_factors(h.modes[j], shared, factors);
-    for (const DofShare& d : shares)
-      response::add_modal_share(d.share, h.modes[j], factors, dof_block(work, d.dof, n));
   }
 }
 
@@ -267,18 +201,18 @@ void add_harmonic(const Sweep& s, const BlockPlan& plan, int k, int begin, int n
   s.source.load_scales(work.w.data(), n, p.reference_omega, work.scale.data());
   if (k == 1 && plan.dofs.any_phase)
     response::input_arguments(work.scale.data(), s.reference_arg, n, work.input_arg.data());
-  const HarmonicPlan& h = plan.harmonics[k - 1];
-  add_mode_terms(h, n, work);
+  const response::SweepBlock block{work.w.data(), work.w2.data(), work.scale.data(), work.re.data(), work.im.data(), n};
   for (size_t d = 0; d < plan.dofs.dofs.size(); ++d) {
+    std::fill_n(work.re.begin(), n, 0.0);
+    std::fill_n(work.im.begin(), n, 0.0);
     DofSums& out = work.per_dof[d];
-    const response::SweepBlock block = dof_block(work, d, n);
-    if (h.rest[d](block, work.resonant.data(), plan.ascending)) {
+    if (plan.kernels[k - 1][d](block, work.resonant.data(), plan.ascending)) {
       for (int v = 0; v < n; ++v) out.unbounded[v] = std::max(out.unbounded[v], work.resonant[v]);
       std::fill_n(work.resonant.begin(), n, 0.0);
       out.any_unbounded = true;
     }
     response::add_magnitudes(block, out.sum[0].data(), out.sum[1].data(), out.sum[2].data());
-    if (k == 1 && plan.dofs.phase[d]) response::arguments(out.re.data(), out.im.data(), n, out.first_arg.data());
+    if (k == 1 && plan.dofs.phase[d]) response::arguments(work.re.data(), work.im.data(), n, out.first_arg.data());
   }
 }
 
@@ -300,9 +234,10 @@ void write_block(const std::vector<OutputRequest>& outputs, const BlockPlan& pla
   }
 }
 
-// Speeds in blocks small enough to stay in cache, one pass per block, harmonic and mode:
-// `prepare(k, dofs)` projects harmonic k's load on the modes once and returns its plan, each
-// mode with the output DOFs it reaches; the sums over harmonics and the phases are common. No array spans all speeds but the curves themselves: fresh 80 kB
+// Speeds in blocks small enough to stay in L1 cache, one pass per block, harmonic and output
+// DOF: `prepare(k, dof)` projects harmonic k's load on the modes once and returns the kernel
+// that adds the complex response of that DOF at a block of speeds; the sums over harmonics and
+// the phases are common. No array spans all speeds but the curves themselves: fresh 80 kB
 // work arrays per harmonic cost more in page faults and cache misses than the arithmetic.
 std::vector<AmplitudeCurve> sweep_in_blocks(const Sweep& s, std::vector<AmplitudeCurve> curves,
                                             const Prepare& prepare) {
@@ -312,7 +247,9 @@ std::vector<AmplitudeCurve> sweep_in_blocks(const Sweep& s, std::vector<Amplitud
   if (!scan.valid) throw std::invalid_argument("amplitude curve: speeds must be positive");
   plan.ascending = scan.ascending;
   plan.dofs = output_dofs(s.outputs);
-  for (int k = 1; k <= s.source.harmonic_count(); ++k) plan.harmonics.push_back(prepare(k, plan.dofs.dofs));
+  plan.kernels.resize(s.source.harmonic_count());
+  for (int k = 1; k <= s.source.harmonic_count(); ++k)
+    for (int dof : plan.dofs.dofs) plan.kernels[k - 1].push_back(prepare(k, dof));
   for (size_t o = 0; o < s.outputs.size(); ++o) {
     curves[o].amplitudes.resize(count);
     curves[o].unbounded.assign(count, false);  // set below where flagged: rare, and bits are slow to write
@@ -341,25 +278,15 @@ struct Resonance {
 };
 
 // The modes' terms of one harmonic's response at one DOF, x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/
-// (λ_j − ω² + iωc_j) (each the index j of its mode in the basis, and a_j, b_j), and the
-// resonances among them.
+// (λ_j − ω² + iωc_j) (each mode j with its a_j, b_j), and the resonances among them.
 struct ModalTerm {
-  size_t mode;
+  response::ModalMode mode;
   response::Share share;
 };
 struct ModalTerms {
   std::vector<ModalTerm> terms;
   std::vector<Resonance> resonances;
 };
-
-// Mode j of the basis as the sweep sees it: λ, φᵀCφ, and for an undamped oscillatory mode the
-// band of ω² around λ where it has no steady state.
-response::ModalMode modal_mode(const ModalBasis& basis, size_t j) {
-  const Mode& mode = *basis.modes[j];
-  const double c = basis.damping[j], lambda = mode.eigenvalue;
-  const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
-  return {lambda, c, undamped ? kAtResonance * lambda : -1.0, undamped};
-}
 
 // The norms of the source's separable parts over all its harmonics, √(Σ_k ‖Q_K,k‖²) and
 // √(Σ_k ‖Q_C,k‖²): the source's total load of each kind, for response::kLoadRoundOff.
@@ -394,10 +321,12 @@ ModalTerms modal_terms(const ModalBasis& basis, const SeparableLoad& p, const Pa
     const std::complex<double> a = response::modal_force(mode, p.stiffness_part, source.stiffness) * at;
     const std::complex<double> b = response::modal_force(mode, p.damping_part, source.damping) * at;
     if (a == 0.0 && b == 0.0) continue;  // the load does not reach this mode
-    const response::ModalMode m = modal_mode(basis, j);
-    out.terms.push_back({j, {a.real(), a.imag(), b.real(), b.imag()}});
-    if (m.undamped && std::abs(at) > 1e-9 * largest)
-      out.resonances.push_back({m.lambda, m.tolerance, a, b, response::kLoadRoundOff * std::abs(at) * shape_norm});
+    const double c = basis.damping[j], lambda = mode.eigenvalue;
+    const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
+    const double tolerance = undamped ? kAtResonance * lambda : -1.0;
+    out.terms.push_back({{lambda, c, tolerance, undamped}, {a.real(), a.imag(), b.real(), b.imag()}});
+    if (undamped && std::abs(at) > 1e-9 * largest)
+      out.resonances.push_back({lambda, tolerance, a, b, response::kLoadRoundOff * std::abs(at) * shape_norm});
   }
   return out;
 }
@@ -428,46 +357,22 @@ bool flag_resonances(const std::vector<Resonance>& resonances, double q_norm_k, 
   return flagged;
 }
 
-// Harmonic k's modal terms at every output DOF into the plan's modes, each mode that some DOF
-// takes with the DOFs that take it; returns each DOF's resonances.
-std::vector<std::vector<Resonance>> add_modal_modes(const ModalBasis& basis, const std::vector<SeparableLoad>& parts,
-                                                    int k, const std::vector<int>& dofs, HarmonicPlan& plan) {
-  const PartNorms source = part_norms(parts);
-  std::vector<std::vector<DofShare>> by_mode(basis.modes.size());
-  std::vector<std::vector<Resonance>> resonances;
-  for (size_t d = 0; d < dofs.size(); ++d) {
-    ModalTerms modal = modal_terms(basis, parts[k - 1], source, dofs[d]);
-    for (const ModalTerm& t : modal.terms) by_mode[t.mode].push_back({d, t.share});
-    resonances.push_back(std::move(modal.resonances));
-  }
-  for (size_t j = 0; j < by_mode.size(); ++j)
-    if (!by_mode[j].empty()) {
-      plan.modes.push_back(modal_mode(basis, j));
-      plan.mode_shares.push_back(std::move(by_mode[j]));
-    }
-  return resonances;
-}
-
 // Modal superposition where it is exact: x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/(λ_j − ω² + iωc_j)
 // + s(ω)·static_o(ω).
-HarmonicPlan modal_plan(const ModalBasis& basis, const std::vector<SeparableLoad>& parts, int k,
-                        const std::vector<int>& dofs) {
+Kernel modal_kernel(const ModalBasis& basis, const std::vector<SeparableLoad>& parts, int k, int dof) {
   const PartNorms source = part_norms(parts);
   const double q_norm_k = source.stiffness, q_norm_c = source.damping;
   const SeparableLoad& p = parts[k - 1];
-  HarmonicPlan plan;
-  std::vector<std::vector<Resonance>> resonances = add_modal_modes(basis, parts, k, dofs, plan);
-  for (size_t d = 0; d < dofs.size(); ++d) {
-    const std::complex<double> sk = massless_follower(basis, p.stiffness_part, dofs[d]);
-    const std::complex<double> sc = massless_follower(basis, p.damping_part, dofs[d]);
-    plan.rest.push_back([resonances = std::move(resonances[d]), sk, sc, q_norm_k, q_norm_c](
-                            const response::SweepBlock& b, double* resonant, bool ascending) {
-      const bool flagged = flag_resonances(resonances, q_norm_k, q_norm_c, b, resonant, ascending);
-      if (sk != 0.0 || sc != 0.0) response::add_static_term(sk.real(), sk.imag(), sc.real(), sc.imag(), b);
-      return flagged;
-    });
-  }
-  return plan;
+  ModalTerms modal = modal_terms(basis, p, source, dof);
+  const std::complex<double> sk = massless_follower(basis, p.stiffness_part, dof);
+  const std::complex<double> sc = massless_follower(basis, p.damping_part, dof);
+  return [terms = std::move(modal.terms), resonances = std::move(modal.resonances), sk, sc, q_norm_k, q_norm_c](
+             const response::SweepBlock& b, double* resonant, bool ascending) {
+    for (const ModalTerm& t : terms) response::add_modal_term(t.share, t.mode, b);
+    const bool flagged = flag_resonances(resonances, q_norm_k, q_norm_c, b, resonant, ascending);
+    if (sk != 0.0 || sc != 0.0) response::add_static_term(sk.real(), sk.imag(), sc.real(), sc.imag(), b);
+    return flagged;
+  };
 }
 
 // The participations of Q_K and Q_C in each complex root, per harmonic (k at k − 1).
@@ -525,34 +430,34 @@ std::complex<double> expanded_response(const response::StateSpaceModes& cm, cons
       x += cm.shapes(dof, r) * (loads.stiffness[k - 1](r) + iw * loads.damping[k - 1](r)) / (iw - cm.roots(r));
   for (const ModalTerm& t : modal_terms(undamped, parts[k - 1], part_norms(parts), dof).terms)
     x += std::complex<double>(t.share.ar - omega * t.share.bi, t.share.ai + omega * t.share.br) /
-         (undamped.modes[t.mode]->eigenvalue - omega * omega);
+         (t.mode.lambda - omega * omega);
   return scale * x;
 }
 
-// The same expansion as a plan: (a_r + iωb_r)/(iω − λ_r) per strictly damped root (no division
-// by 0) at every output DOF, and the undamped modes' terms with their resonance flags.
-HarmonicPlan root_plan(const response::StateSpaceModes& cm, const RootLoads& loads, const ModalBasis& undamped,
-                       const std::vector<SeparableLoad>& parts, int k, const std::vector<int>& dofs) {
-  HarmonicPlan plan;
+// The same expansion as a kernel: (a_r + iωb_r)/(iω − λ_r) per strictly damped root (no
+// division by 0), and the undamped modes' terms with their resonance flags.
+Kernel root_kernel(const response::StateSpaceModes& cm, const RootLoads& loads, const ModalBasis& undamped,
+                   const std::vector<SeparableLoad>& parts, int k, int dof) {
+  struct RootTerm {
+    response::RootMode root;
+    response::Share share;
+  };
+  std::vector<RootTerm> terms;
   for (Eigen::Index r = 0; r < cm.roots.size(); ++r) {
     if (cm.undamped[r]) continue;
-    plan.roots.push_back({-cm.roots(r).real(), cm.roots(r).imag()});
-    std::vector<DofShare> shares;
-    for (size_t d = 0; d < dofs.size(); ++d) {
-      const std::complex<double> a = cm.shapes(dofs[d], r) * loads.stiffness[k - 1](r);
-      const std::complex<double> b = cm.shapes(dofs[d], r) * loads.damping[k - 1](r);
-      shares.push_back({d, {a.real(), a.imag(), b.real(), b.imag()}});
-    }
-    plan.root_shares.push_back(std::move(shares));
+    const std::complex<double> a = cm.shapes(dof, r) * loads.stiffness[k - 1](r);
+    const std::complex<double> b = cm.shapes(dof, r) * loads.damping[k - 1](r);
+    terms.push_back({{-cm.roots(r).real(), cm.roots(r).imag()}, {a.real(), a.imag(), b.real(), b.imag()}});
   }
   const PartNorms source = part_norms(parts);
-  std::vector<std::vector<Resonance>> resonances = add_modal_modes(undamped, parts, k, dofs, plan);
-  for (size_t d = 0; d < dofs.size(); ++d)
-    plan.rest.push_back([resonances = std::move(resonances[d]), q_norm_k = source.stiffness,
-                         q_norm_c = source.damping](const response::SweepBlock& b, double* resonant, bool ascending) {
-      return flag_resonances(resonances, q_norm_k, q_norm_c, b, resonant, ascending);
-    });
-  return plan;
+  ModalTerms modal = modal_terms(undamped, parts[k - 1], source, dof);
+  return [terms = std::move(terms), modal = std::move(modal), q_norm_k = source.stiffness,
+          q_norm_c = source.damping](const response::SweepBlock& b, double* resonant, bool ascending) {
+    for (const RootTerm& t : terms) response::add_root_term(t.share, t.root, b);
+    if (modal.terms.empty()) return false;  // every root damped: bounded everywhere
+    for (const ModalTerm& t : modal.terms) response::add_modal_term(t.share, t.mode, b);
+    return flag_resonances(modal.resonances, q_norm_k, q_norm_c, b, resonant, ascending);
+  };
 }
 
 double power(ResponseQuantity q, double omega) {
@@ -664,7 +569,7 @@ std::vector<AmplitudeCurve> sweep_curves(const LinearSystem& system, const Modal
   if (basis.exact && !equivalent_friction) {
     *method = "modal superposition over the undamped modes, blocks of speeds";
     return sweep_in_blocks(sweep, std::move(curves),
-                           [&](int k, const std::vector<int>& dofs) { return modal_plan(basis, sweep.parts, k, dofs); });
+                           [&](int k, int dof) { return modal_kernel(basis, sweep.parts, k, dof); });
   }
 
   // Discrete dampers (damping not proportional): the complex modes of the first-order form,
@@ -684,8 +589,8 @@ std::vector<AmplitudeCurve> sweep_curves(const LinearSystem& system, const Modal
                       ? "complex modes of the first-order form, checked against direct solves at 9 speeds"
                       : "complex modes of the first-order form and modal terms of its undamped modes, checked "
                         "against direct solves at 9 speeds";
-        return sweep_in_blocks(sweep, std::move(curves), [&](int k, const std::vector<int>& dofs) {
-          return root_plan(cm, loads, *undamped, sweep.parts, k, dofs);
+        return sweep_in_blocks(sweep, std::move(curves), [&](int k, int dof) {
+          return root_kernel(cm, loads, *undamped, sweep.parts, k, dof);
         });
       }
     }

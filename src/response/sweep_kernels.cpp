@@ -3,11 +3,11 @@
 #include <cmath>
 #include <limits>
 
-// The block loops below (factors, shares, magnitudes, arguments, phases_deg, the scans) are built for SSE2 (every x86-64) and
-// for AVX2, and the loader picks one by the CPU (a GNU ifunc: glibc only, and not under a
-// sanitiser, whose runtime the resolver would run before). AVX2 halves the cost of the
-// divisions and square roots that dominate the arithmetic. Without FMA in the AVX2 build, and
-// with contraction off for this file (CMakeLists.txt), both give the same bits.
+// The block loops below (terms, magnitudes, arguments, phases_deg, the scans) are built for
+// SSE2 (every x86-64) and for AVX2, and the loader picks one by the CPU (a GNU ifunc: glibc
+// only, and not under a sanitiser, whose runtime the resolver would run before). AVX2 halves
+// the cost of the divisions and square roots that dominate the arithmetic. Without FMA in the
+// AVX2 build, and with contraction off for this file (CMakeLists.txt), both give the same bits.
 #if !defined(RAILMODAL_VECTOR_CLONES) && defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
     defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
 #define RAILMODAL_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
@@ -63,70 +63,10 @@ RAILMODAL_INLINE_LOOP double atan2_kernel(double y, double x) {
 // The loops, with every array a restrict parameter: GCC takes restrict from parameters (also
 // once inlined), and without it the run-time overlap checks of seven arrays exceed its limit
 // and the loop stays scalar.
-// A mode's factors over a block: the one division per mode and speed. An undamped mode's gap
-// becomes ∞ at its own frequency, so that its factor is exactly 0 there: a select, where a
-// branch or a masked division would stop the vectorising.
-RAILMODAL_INLINE_LOOP void mode_factors(double lambda, double c, double tolerance, bool undamped, int n,
-                                        const double* __restrict w, const double* __restrict w2,
-                                        const double* __restrict scale, double* __restrict f,
-                                        double* __restrict gap_out, double* __restrict di_out) {
-  if (undamped) {
-    for (int v = 0; v < n; ++v) {
-      const double gap = lambda - w2[v];
-      f[v] = scale[v] / (std::abs(gap) <= tolerance ? kInfinity : gap);
-    }
-  } else {
-    for (int v = 0; v < n; ++v) {
-      const double gap = lambda - w2[v], di = w[v] * c;
-      gap_out[v] = gap;
-      di_out[v] = di;
-      f[v] = scale[v] / (gap * gap + di * di);
-    }
-  }
-}
-
-RAILMODAL_INLINE_LOOP void root_mode_factors(double decay, double lambda_im, int n, const double* __restrict w,
-                                             const double* __restrict scale, double* __restrict f,
-                                             double* __restrict di_out) {
-  for (int v = 0; v < n; ++v) {
-    const double di = w[v] - lambda_im;
-    di_out[v] = di;
-    f[v] = scale[v] / (decay * decay + di * di);
-  }
-}
-
-// A DOF's share: s(ω)(a + iωb)/(gap + i·di) = (a + iωb)(gap − i·di)·f, or (a + iωb)·f undamped.
-RAILMODAL_INLINE_LOOP void modal_share(Share s, bool undamped, int n, const double* __restrict w,
-                                       const double* __restrict f, const double* __restrict gap,
-                                       const double* __restrict di, double* __restrict re,
-                                       double* __restrict im) {
-  if (undamped) {
-    for (int v = 0; v < n; ++v) {
-      re[v] += (s.ar - w[v] * s.bi) * f[v];
-      im[v] += (s.ai + w[v] * s.br) * f[v];
-    }
-  } else {
-    for (int v = 0; v < n; ++v) {
-      const double nr = s.ar - w[v] * s.bi, ni = s.ai + w[v] * s.br;
-      re[v] += (nr * gap[v] + ni * di[v]) * f[v];
-      im[v] += (ni * gap[v] - nr * di[v]) * f[v];
-    }
-  }
-}
-
-// s(ω)(a + iωb)/(iω − r) = (a + iωb)(decay − i·di)·f with r = −decay + i·lambda_im.
-RAILMODAL_INLINE_LOOP void root_share(Share s, double decay, int n, const double* __restrict w,
-                                      const double* __restrict f, const double* __restrict di,
-                                      double* __restrict re, double* __restrict im) {
-  for (int v = 0; v < n; ++v) {
-    const double nr = s.ar - w[v] * s.bi, ni = s.ai + w[v] * s.br;
-    re[v] += (nr * decay + ni * di[v]) * f[v];
-    im[v] += (ni * decay - nr * di[v]) * f[v];
-  }
-}
-
-// A mode that few DOFs take: its factor and one DOF's share in one pass, which saves
-// writing the factors out and reading them back (the same operations, so the same bits).
+// A mode's term: s(ω)(a + iωb)/(gap + i·di) = (a + iωb)(gap − i·di)·f with gap = λ − ω², di = ωc
+// and f = s(ω)/(gap² + di²), the one division per mode and speed; undamped, (a + iωb)·s(ω)/gap.
+// An undamped mode's gap becomes ∞ at its own frequency, so that its term is exactly 0 there: a
+// select, where a branch or a masked division would stop the vectorising.
 RAILMODAL_INLINE_LOOP void modal_term(Share s, double lambda, double c, double tolerance, bool undamped, int n,
                                       const double* __restrict w, const double* __restrict w2,
                                       const double* __restrict scale, double* __restrict re,
@@ -149,6 +89,8 @@ RAILMODAL_INLINE_LOOP void modal_term(Share s, double lambda, double c, double t
   }
 }
 
+// A root's term: s(ω)(a + iωb)/(iω − r) = (a + iωb)(decay − i·di)·f with r = −decay + i·lambda_im,
+// di = ω − lambda_im and f = s(ω)/(decay² + di²).
 RAILMODAL_INLINE_LOOP void root_term(Share s, double decay, double lambda_im, int n, const double* __restrict w,
                                      const double* __restrict scale, double* __restrict re,
                                      double* __restrict im) {
@@ -220,26 +162,6 @@ double fast_atan2(double y, double x) { return atan2_kernel(y, x); }
 
 double phase_deg(double arg_x, double arg_input, double offset_deg) {
   return phase_kernel(arg_x, arg_input, offset_deg);
-}
-
-RAILMODAL_VECTOR_CLONES
-void modal_factors(const ModalMode& m, const SweepBlock& b, const ModeFactors& out) {
-  mode_factors(m.lambda, m.c, m.tolerance, m.undamped, b.count, b.w, b.w2, b.scale, out.f, out.gap, out.di);
-}
-
-RAILMODAL_VECTOR_CLONES
-void root_factors(const RootMode& r, const SweepBlock& b, const ModeFactors& out) {
-  root_mode_factors(r.decay, r.lambda_im, b.count, b.w, b.scale, out.f, out.di);
-}
-
-RAILMODAL_VECTOR_CLONES
-void add_modal_share(const Share& s, const ModalMode& m, const ModeFactors& f, const SweepBlock& b) {
-  modal_share(s, m.undamped, b.count, b.w, f.f, f.gap, f.di, b.re, b.im);
-}
-
-RAILMODAL_VECTOR_CLONES
-void add_root_share(const Share& s, const RootMode& r, const ModeFactors& f, const SweepBlock& b) {
-  root_share(s, r.decay, b.count, b.w, f.f, f.di, b.re, b.im);
 }
 
 RAILMODAL_VECTOR_CLONES

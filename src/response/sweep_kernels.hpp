@@ -33,19 +33,6 @@ struct RootMode {
   double decay, lambda_im;
 };
 
-/// What a mode gives at each speed of a block, computed once and shared by every output DOF
-/// the mode reaches: gap = λ − ω², di = ωc and f = s(ω)/(gap² + di²) for a modal mode (an
-/// undamped one: f = s(ω)/gap, and exactly 0 where |gap| ≤ tolerance: it has no steady state
-/// there, and the caller flags those speeds); di = ω − lambda_im and f = s(ω)/(decay² + di²)
-/// for a root (gap unused). Each array holds kSweepBlock values.
-struct ModeFactors {
-  double* f;
-  double* gap;
-  double* di;
-};
-void modal_factors(const ModalMode& m, const SweepBlock& b, const ModeFactors& out);
-void root_factors(const RootMode& r, const SweepBlock& b, const ModeFactors& out);
-
 /// An output DOF's share of a mode's load, a + iωb: for a modal mode a = φ(o)·φᵀQ_K and
 /// b = φ(o)·φᵀQ_C, for a root the shape's row o times the root's participations in Q_K and Q_C.
 struct Share {
@@ -53,13 +40,9 @@ struct Share {
 };
 
 /// Adds the DOF's term of a mode to (b.re, b.im): s(ω)(a + iωb)/(λ − ω² + iωc) for a modal
-/// mode, s(ω)(a + iωb)/(iω − r) for a root, from the mode's factors. Real arithmetic and no
-/// division: the one division per mode and speed is in the factors.
-void add_modal_share(const Share& s, const ModalMode& m, const ModeFactors& f, const SweepBlock& b);
-void add_root_share(const Share& s, const RootMode& r, const ModeFactors& f, const SweepBlock& b);
-
-/// The same with the factors computed in the same pass for this one DOF, not shared (for a mode
-/// that few DOFs take: fewer loads and stores than the two; the same operations and bits).
+/// mode (an undamped one adds exactly 0 where |λ − ω²| ≤ tolerance: it has no steady state
+/// there, and the caller flags those speeds), s(ω)(a + iωb)/(iω − r) for a root. Real
+/// arithmetic, one division per speed, in one pass over the block.
 void add_modal_term(const Share& s, const ModalMode& m, const SweepBlock& b);
 void add_root_term(const Share& s, const RootMode& r, const SweepBlock& b);
 

@@ -1,6 +1,6 @@
 // The sweep's block arithmetic (response/sweep_kernels): the branch-free atan2 against libm,
 // the phase wrap over its whole input range, the input's argument, the sweep's curves sharing
-// one speed grid, and each mode's factors shared by every output DOF without changing a bit.
+// one speed grid, and outputs swept together giving the same bits as each alone.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -151,9 +151,8 @@ TEST(SweepKernels, SpeedScanFindsOrderAndRefusesBadSpeeds) {
 }
 
 // Sweeps `outputs` together and each output alone: every amplitude, flag and phase the same
-// bits. Together a mode reached by several DOFs computes its factor (its one division per
-// speed) once for all of them; alone it takes the fused one-DOF kernel; both do the same
-// operations in the same order, so any difference would be a wrong share.
+// bits. Together the outputs share the blocks' work arrays, the DOFs' sums and the input's
+// arguments; any difference would be one output's work leaking into another's.
 void expect_outputs_together_as_alone(const LinearSystem& sys, const ModalResult& modes,
                                       const ExcitationSource& source, const std::vector<double>& speeds,
                                       const std::string& method) {
@@ -175,7 +174,7 @@ void expect_outputs_together_as_alone(const LinearSystem& sys, const ModalResult
   EXPECT_GT(largest, 0.0) << method;  // the source reaches the outputs: not a comparison of zeros
 }
 
-TEST(SweepKernels, ModesSharedByOutputsGiveTheSameBitsAsOneOutputAlone) {
+TEST(SweepKernels, OutputsSweptTogetherGiveTheSameBitsAsEachAlone) {
   // The modal path: the resort car over rail joints (6 harmonics), every vertical DOF.
   const LinearSystem car = assemble(load_vehicle(data_file("resort_car.toml")), DofSet::vertical);
   RailJoints joints;
