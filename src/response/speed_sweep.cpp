@@ -158,11 +158,13 @@ OutputDofs output_dofs(const std::vector<OutputRequest>& outputs) {
 
 // Per block and DOF: Σ_k |x_k|·ω_k^p for p = 0, 1, 2 (displacement, velocity,
 // acceleration), arg x of harmonic 1 (rad), and the unbounded flags (0 or 1, as doubles so
-// that the loops mixing them with values vectorise).
+// that the loops mixing them with values vectorise). Each array starts on a cache line: a
+// std::vector aligns only to 16 bytes, and AVX2's 32-byte loads and stores across lines made a
+// one-harmonic sweep with phases half as slow again (fette car, 10⁴ speeds: 0.12 against 0.08 ms).
 struct DofSums {
-  std::array<std::array<double, kSweepBlock>, 3> sum;
-  std::array<double, kSweepBlock> first_arg;
-  std::array<double, kSweepBlock> unbounded;
+  alignas(64) std::array<std::array<double, kSweepBlock>, 3> sum;
+  alignas(64) std::array<double, kSweepBlock> first_arg;
+  alignas(64) std::array<double, kSweepBlock> unbounded;
   bool any_unbounded;  // in this block: most blocks have none, and skip the flag loops
 };
 
