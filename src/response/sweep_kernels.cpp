@@ -3,11 +3,11 @@
 #include <cmath>
 #include <limits>
 
-// The block loops below (add_*, arguments, phases_deg) are built for SSE2 (every x86-64) and
-// for AVX2, and the loader picks one by the CPU (a GNU ifunc: glibc only, and not under a
-// sanitiser, whose runtime the resolver would run before). AVX2 halves the cost of the
-// divisions and square roots that dominate the arithmetic. Without FMA in the AVX2 build, and
-// with contraction off for this file (CMakeLists.txt), both give the same bits.
+// The block loops below (terms, magnitudes, arguments, phases_deg, the scans) are built for
+// SSE2 (every x86-64) and for AVX2, and the loader picks one by the CPU (a GNU ifunc: glibc
+// only, and not under a sanitiser, whose runtime the resolver would run before). AVX2 halves
+// the cost of the divisions and square roots that dominate the arithmetic. Without FMA in the
+// AVX2 build, and with contraction off for this file (CMakeLists.txt), both give the same bits.
 #if !defined(RAILMODAL_VECTOR_CLONES) && defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
     defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
 #define RAILMODAL_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
@@ -23,6 +23,8 @@ namespace railmodal::response {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kLargest = std::numeric_limits<double>::max();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDegrees = 180.0 / kPi;
 // π/4 and π/2 rounded to double, and what rounding took off π/2 (Cephes's MOREBITS).
@@ -61,45 +63,62 @@ RAILMODAL_INLINE_LOOP double atan2_kernel(double y, double x) {
 // The loops, with every array a restrict parameter: GCC takes restrict from parameters (also
 // once inlined), and without it the run-time overlap checks of seven arrays exceed its limit
 // and the loop stays scalar.
-RAILMODAL_INLINE_LOOP void modal_terms(const ModalTerm* terms, std::size_t count, int n,
-                                       const double* __restrict w, const double* __restrict w2,
-                                       const double* __restrict scale, double* __restrict re,
-                                       double* __restrict im) {
-  for (std::size_t j = 0; j < count; ++j) {
-    const ModalTerm t = terms[j];
-    if (t.undamped) {
-      // At its own frequency the gap becomes ∞ and the term exactly 0: a select, where a branch
-      // or a masked division would stop the vectorising.
-      for (int v = 0; v < n; ++v) {
-        const double gap = t.lambda - w2[v];
-        const double f = scale[v] / (std::abs(gap) <= t.tolerance ? kInfinity : gap);
-        re[v] += (t.ar - w[v] * t.bi) * f;
-        im[v] += (t.ai + w[v] * t.br) * f;
-      }
-    } else {
-      for (int v = 0; v < n; ++v) {
-        const double gap = t.lambda - w2[v], di = w[v] * t.c;
-        const double nr = t.ar - w[v] * t.bi, ni = t.ai + w[v] * t.br;
-        const double f = scale[v] / (gap * gap + di * di);
-        re[v] += (nr * gap + ni * di) * f;
-        im[v] += (ni * gap - nr * di) * f;
-      }
+// A mode's term: s(ω)(a + iωb)/(gap + i·di) = (a + iωb)(gap − i·di)·f with gap = λ − ω², di = ωc
+// and f = s(ω)/(gap² + di²), the one division per mode and speed; undamped, (a + iωb)·s(ω)/gap.
+// An undamped mode's gap becomes ∞ at its own frequency, so that its term is exactly 0 there: a
+// select, where a branch or a masked division would stop the vectorising.
+RAILMODAL_INLINE_LOOP void modal_term(Share s, double lambda, double c, double tolerance, bool undamped, int n,
+                                      const double* __restrict w, const double* __restrict w2,
+                                      const double* __restrict scale, double* __restrict re,
+                                      double* __restrict im) {
+  if (undamped) {
+    for (int v = 0; v < n; ++v) {
+      const double gap = lambda - w2[v];
+      const double f = scale[v] / (std::abs(gap) <= tolerance ? kInfinity : gap);
+      re[v] += (s.ar - w[v] * s.bi) * f;
+      im[v] += (s.ai + w[v] * s.br) * f;
+    }
+  } else {
+    for (int v = 0; v < n; ++v) {
+      const double gap = lambda - w2[v], di = w[v] * c;
+      const double f = scale[v] / (gap * gap + di * di);
+      const double nr = s.ar - w[v] * s.bi, ni = s.ai + w[v] * s.br;
+      re[v] += (nr * gap + ni * di) * f;
+      im[v] += (ni * gap - nr * di) * f;
     }
   }
 }
 
-RAILMODAL_INLINE_LOOP void root_terms(const RootTerm* terms, std::size_t count, int n,
-                                      const double* __restrict w, const double* __restrict scale,
-                                      double* __restrict re, double* __restrict im) {
-  for (std::size_t j = 0; j < count; ++j) {
-    const RootTerm t = terms[j];
-    for (int v = 0; v < n; ++v) {
-      const double nr = t.ar - w[v] * t.bi, ni = t.ai + w[v] * t.br;
-      const double di = w[v] - t.lambda_im;
-      const double f = scale[v] / (t.decay * t.decay + di * di);
-      re[v] += (nr * t.decay + ni * di) * f;
-      im[v] += (ni * t.decay - nr * di) * f;
-    }
+// A root's term: s(ω)(a + iωb)/(iω − r) = (a + iωb)(decay − i·di)·f with r = −decay + i·lambda_im,
+// di = ω − lambda_im and f = s(ω)/(decay² + di²).
+RAILMODAL_INLINE_LOOP void root_term(Share s, double decay, double lambda_im, int n, const double* __restrict w,
+                                     const double* __restrict scale, double* __restrict re,
+                                     double* __restrict im) {
+  for (int v = 0; v < n; ++v) {
+    const double di = w[v] - lambda_im;
+    const double f = scale[v] / (decay * decay + di * di);
+    const double nr = s.ar - w[v] * s.bi, ni = s.ai + w[v] * s.br;
+    re[v] += (nr * decay + ni * di) * f;
+    im[v] += (ni * decay - nr * di) * f;
+  }
+}
+
+// Two flags over the grid in integers, so that the loop vectorises (a branch per speed would
+// not, and the early exit of std::is_sorted neither).
+RAILMODAL_INLINE_LOOP SpeedScan scan(const double* __restrict v, int n) {
+  long invalid = 0, falls = 0;
+  for (int i = 0; i < n; ++i) invalid |= !(v[i] > 0.0 && v[i] <= kLargest);
+  for (int i = 1; i < n; ++i) falls |= v[i] < v[i - 1];
+  return {invalid == 0, falls == 0};
+}
+
+RAILMODAL_INLINE_LOOP void input_args(const double* __restrict scale, double reference_arg, int n,
+                                      double* __restrict out) {
+  // reference + 0 as the scalar form adds it (−0 becomes +0), so that the bits stay the same.
+  const double plain = reference_arg + 0.0, turned = reference_arg + kPi;
+  for (int v = 0; v < n; ++v) {
+    const double arg = scale[v] < 0.0 ? turned : plain;
+    out[v] = scale[v] == 0.0 ? kNaN : arg;
   }
 }
 
@@ -146,13 +165,21 @@ double phase_deg(double arg_x, double arg_input, double offset_deg) {
 }
 
 RAILMODAL_VECTOR_CLONES
-void add_modal_terms(const ModalTerm* terms, std::size_t count, const SweepBlock& b) {
-  modal_terms(terms, count, b.count, b.w, b.w2, b.scale, b.re, b.im);
+void add_modal_term(const Share& s, const ModalMode& m, const SweepBlock& b) {
+  modal_term(s, m.lambda, m.c, m.tolerance, m.undamped, b.count, b.w, b.w2, b.scale, b.re, b.im);
 }
 
 RAILMODAL_VECTOR_CLONES
-void add_root_terms(const RootTerm* terms, std::size_t count, const SweepBlock& b) {
-  root_terms(terms, count, b.count, b.w, b.scale, b.re, b.im);
+void add_root_term(const Share& s, const RootMode& r, const SweepBlock& b) {
+  root_term(s, r.decay, r.lambda_im, b.count, b.w, b.scale, b.re, b.im);
+}
+
+RAILMODAL_VECTOR_CLONES
+SpeedScan scan_speeds(const double* speeds, int count) { return scan(speeds, count); }
+
+RAILMODAL_VECTOR_CLONES
+void input_arguments(const double* scale, double reference_arg, int count, double* out) {
+  input_args(scale, reference_arg, count, out);
 }
 
 void add_static_term(double kr, double ki, double cr, double ci, const SweepBlock& b) {

@@ -22,21 +22,29 @@ struct SweepBlock {
   int count;
 };
 
-/// One mode's share of an output DOF: φ(o)·s(ω)(a + iωb)/(λ − ω² + iωc), with a = φᵀQ_K and
-/// b = φᵀQ_C. An undamped term (c = 0) adds exactly 0 where |λ − ω²| ≤ `tolerance`: it has no
-/// steady state there, and the caller flags those speeds.
-struct ModalTerm {
-  double ar, ai, br, bi, lambda, c, tolerance;
+/// A mode of the modal path: λ − ω² + iωc; undamped (c = 0) with its `tolerance` on |λ − ω²|.
+struct ModalMode {
+  double lambda, c, tolerance;
   bool undamped;
 };
-void add_modal_terms(const ModalTerm* terms, std::size_t count, const SweepBlock& b);
 
-/// One complex root r = −decay + i·lambda_im of the first-order form:
-/// s(ω)(a + iωb)/(iω − r), every root strictly damped (decay > 0).
-struct RootTerm {
-  double ar, ai, br, bi, decay, lambda_im;
+/// A root r = −decay + i·lambda_im of the first-order form, strictly damped (decay > 0).
+struct RootMode {
+  double decay, lambda_im;
 };
-void add_root_terms(const RootTerm* terms, std::size_t count, const SweepBlock& b);
+
+/// An output DOF's share of a mode's load, a + iωb: for a modal mode a = φ(o)·φᵀQ_K and
+/// b = φ(o)·φᵀQ_C, for a root the shape's row o times the root's participations in Q_K and Q_C.
+struct Share {
+  double ar, ai, br, bi;
+};
+
+/// Adds the DOF's term of a mode to (b.re, b.im): s(ω)(a + iωb)/(λ − ω² + iωc) for a modal
+/// mode (an undamped one adds exactly 0 where |λ − ω²| ≤ tolerance: it has no steady state
+/// there, and the caller flags those speeds), s(ω)(a + iωb)/(iω − r) for a root. Real
+/// arithmetic, one division per speed, in one pass over the block.
+void add_modal_term(const Share& s, const ModalMode& m, const SweepBlock& b);
+void add_root_term(const Share& s, const RootMode& r, const SweepBlock& b);
 
 /// A massless DOF's own quasi-static part: s(ω)(k + iωc), complex k = kr + i·ki, c likewise.
 void add_static_term(double kr, double ki, double cr, double ci, const SweepBlock& b);
@@ -44,6 +52,17 @@ void add_static_term(double kr, double ki, double cr, double ci, const SweepBloc
 /// sum0 += |x|, sum1 += |x|·ω, sum2 += |x|·ω² (displacement, velocity, acceleration) with
 /// x = re + i·im, over the block.
 void add_magnitudes(const SweepBlock& b, double* sum0, double* sum1, double* sum2);
+
+/// Whether every speed is positive and finite, and whether they rise (each ≥ the one before):
+/// one branch-free pass over the grid.
+struct SpeedScan {
+  bool valid, ascending;
+};
+SpeedScan scan_speeds(const double* speeds, int count);
+
+/// arg of the input s(ω)·input that phases refer to, per speed: `reference_arg`, plus π where
+/// s < 0 (s real: its sign turns the input by π), NaN where s = 0 (no input, so no phase).
+void input_arguments(const double* scale, double reference_arg, int count, double* out);
 
 /// arg x = atan2(im, re) per speed (rad), NaN where x = 0; see fast_atan2.
 void arguments(const double* re, const double* im, int count, double* out);
