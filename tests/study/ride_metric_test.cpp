@@ -2,7 +2,6 @@
 // rms_acceleration:<output>, read from results built by hand: their units, their values (+∞ for
 // an unbounded ride, none without a ride), their ranking and their round trip through a shard.
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 #include "railmodal/railmodal.hpp"
@@ -11,8 +10,6 @@
 
 namespace railmodal::test {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A variant whose ride has a floor acceleration (its Wz and RMS as given) and a force output.
 VariantResult ridden(int index, const std::string& name, double floor_rms, double wz, double nmv,

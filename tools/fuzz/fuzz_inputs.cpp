@@ -10,8 +10,9 @@
 // the CLI as a usage error (exit 2) or an internal one (exit 1), so it is not caught here: a
 // crash, a sanitizer report or any exception outside that table is a bug.
 //
-//   build-fuzz/tools/fuzz/fuzz_inputs -max_total_time=60 build-fuzz/corpus
-// (.ci/run builds it with clang, -fsanitize=fuzzer,address,undefined, and runs it briefly.)
+//   build-asan/tools/fuzz/fuzz_inputs -max_total_time=60 build-asan/corpus
+// (tools/sanitize.sh builds it with clang, -fsanitize=fuzzer,address,undefined, with the
+// sanitised test suite, and runs it briefly.)
 #include <unistd.h>
 
 #include <cstddef>
