@@ -178,27 +178,35 @@ Eigen::MatrixXd linear_march(const ride::RideStateSpace& model, const ride::Trac
   return y;
 }
 
-// A weighting run over the evaluated samples: a periodic history is filtered over two
-// periods and the second kept (the filter then in its own periodic steady state); another
-// over the whole run, settling included, and the evaluated tail kept.
-Eigen::VectorXd weighted(const ride::DigitalFilter& filter, const Eigen::VectorXd& run, long evaluated, bool periodic) {
-  if (!periodic) return filter.apply(run).tail(evaluated);
-  return filter.apply_second_pass(run.tail(evaluated));
+// A weighting run over the evaluated samples, into *out: a periodic history (`evaluated`, the
+// run's tail) is filtered over two periods and the second kept (the filter then in its own
+// periodic steady state); another over the whole run, settling included, and the evaluated
+// tail kept. The histories are read in place (Eigen::Ref), not copied.
+void weighted(const ride::DigitalFilter& filter, Eigen::Ref<const Eigen::VectorXd> run,
+              Eigen::Ref<const Eigen::VectorXd> evaluated, bool periodic, Eigen::VectorXd* out) {
+  *out = periodic ? filter.apply_second_pass(evaluated) : filter.apply_from(run, run.size() - evaluated.size());
 }
 
 // Two weightings of the same run side by side (DigitalFilter's pair: the same samples as
-// weighted() of each, bit for bit).
-std::pair<Eigen::VectorXd, Eigen::VectorXd> weighted(const ride::DigitalFilter& first, const ride::DigitalFilter& second,
-                                                     const Eigen::VectorXd& run, long evaluated, bool periodic) {
-  if (periodic) return ride::DigitalFilter::apply_second_pass(first, second, run.tail(evaluated));
-  auto both = ride::DigitalFilter::apply(first, second, run);
-  return {both.first.tail(evaluated), both.second.tail(evaluated)};
+// weighted() of each, bit for bit), into the caller's vectors.
+void weighted(const ride::DigitalFilter& first, const ride::DigitalFilter& second, Eigen::Ref<const Eigen::VectorXd> run,
+              Eigen::Ref<const Eigen::VectorXd> evaluated, bool periodic, Eigen::VectorXd* first_out,
+              Eigen::VectorXd* second_out) {
+  if (periodic)
+    ride::DigitalFilter::apply_second_pass(first, second, evaluated, first_out, second_out);
+  else
+    ride::DigitalFilter::apply_from(first, second, run, run.size() - evaluated.size(), first_out, second_out);
 }
 
 double rms(const Eigen::VectorXd& values) { return std::sqrt(values.squaredNorm() / static_cast<double>(values.size())); }
 
-RideHistory history(const RideOutput& output, const Eigen::VectorXd& run, const RunPlan& plan, bool periodic,
-                    const RideSimulationOptions& options, std::vector<std::string>* notes) {
+// One output's history and indices. `run` is the output's column of the march, read in place;
+// the evaluated samples are copied once, into the history's values, and the weightings read
+// those. `sperling` is a buffer for the Sperling-weighted samples, of which only the RMS is
+// kept: the caller passes the same one for every output, so it is allocated once a ride.
+RideHistory history(const RideOutput& output, Eigen::Ref<const Eigen::VectorXd> run, const RunPlan& plan,
+                    bool periodic, const RideSimulationOptions& options, std::vector<std::string>* notes,
+                    Eigen::VectorXd* sperling) {
   RideHistory h;
   h.values = run.tail(plan.evaluated);
   h.rms = rms(h.values);
@@ -206,13 +214,12 @@ RideHistory history(const RideOutput& output, const Eigen::VectorXd& run, const 
   const FrequencyWeighting weighting = output.axis == RideAxis::vertical ? en12299_wb() : en12299_wd();
   const ride::DigitalFilter comfort = ride::digital_weighting(weighting, plan.step);
   if (output.axis == RideAxis::longitudinal) {
-    h.weighted = weighted(comfort, run, plan.evaluated, periodic);
+    weighted(comfort, run, h.values, periodic, &h.weighted);
   } else {  // Sperling's B beside W
     const SperlingDirection direction =
         output.axis == RideAxis::vertical ? SperlingDirection::vertical : SperlingDirection::lateral;
-    auto both = weighted(comfort, ride::digital_sperling(direction, plan.step), run, plan.evaluated, periodic);
-    h.weighted = std::move(both.first);
-    h.sperling_wz = sperling_wz_from_weighted_rms(rms(both.second));
+    weighted(comfort, ride::digital_sperling(direction, plan.step), run, h.values, periodic, &h.weighted, sperling);
+    h.sperling_wz = sperling_wz_from_weighted_rms(rms(*sperling));
   }
   h.weighted_rms = rms(h.weighted);
   const Eigen::Index window = std::max<Eigen::Index>(1, std::lround(options.window / plan.step));
@@ -307,9 +314,11 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
   result.notes.insert(result.notes.begin(), run_text(geometry, options, plan));
   result.time = Eigen::VectorXd::LinSpaced(plan.evaluated, static_cast<double>(plan.settle) * plan.step,
                                            static_cast<double>(plan.settle + plan.evaluated - 1) * plan.step);
+  Eigen::VectorXd sperling;  // one buffer for every output's Sperling-weighted samples
+  result.histories.reserve(outputs.size());
   for (size_t j = 0; j < outputs.size(); ++j)
-    result.histories.push_back(
-        history(outputs[j], y.col(static_cast<Eigen::Index>(j)), plan, geometry.periodic, options, &result.notes));
+    result.histories.push_back(history(outputs[j], y.col(static_cast<Eigen::Index>(j)), plan, geometry.periodic,
+                                       options, &result.notes, &sperling));
   result.comfort = comfort(outputs, result.histories);
   clock.lap("indices");
 

@@ -62,11 +62,13 @@ struct PaddedSection {
   double b[kFusedOrder + 1] = {}, a[kFusedOrder + 1] = {};
 };
 
-void apply_fused(const std::vector<PaddedSection>& sections, Eigen::VectorXd* signal, std::vector<double>* state) {
+// In place when `in` == `out` (each sample is read before it is written).
+void apply_fused(const std::vector<PaddedSection>& sections, const double* in, double* out, Eigen::Index n,
+                 std::vector<double>* state) {
   const size_t count = sections.size();
   state->resize(kFusedOrder * count, 0.0);
-  for (Eigen::Index n = 0; n < signal->size(); ++n) {
-    double x = (*signal)(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double x = in[i];
     for (size_t j = 0; j < count; ++j) {
       const PaddedSection& s = sections[j];
       double* z = &(*state)[kFusedOrder * j];
@@ -76,7 +78,7 @@ void apply_fused(const std::vector<PaddedSection>& sections, Eigen::VectorXd* si
       z[2] = s.b[3] * x - s.a[3] * y + 0.0;
       x = y;
     }
-    (*signal)(n) = x;
+    out[i] = x;
   }
 }
 
@@ -168,24 +170,62 @@ void run_pair(const std::vector<SectionPair>& sections, const double* in0, const
   }
 }
 
+// The first `from` samples of a run whose output is not kept: run through `run` in chunks
+// of at most `buffer` samples, written there and overwritten, so that the state they leave is
+// the whole run's (the same operations in the same order) without a buffer of `from` samples.
+template <class Run>
+void run_discarded(Eigen::Index from, Eigen::Index buffer, Run run) {
+  for (Eigen::Index done = 0; done < from && buffer > 0; done += std::min(buffer, from - done))
+    run(done, std::min(buffer, from - done));
+}
+
 }  // namespace
 
 std::pair<Eigen::VectorXd, Eigen::VectorXd> DigitalFilter::apply(const DigitalFilter& first,
                                                                  const DigitalFilter& second,
-                                                                 const Eigen::VectorXd& input) {
-  const std::vector<SectionPair> sections = paired(first.sections_, second.sections_);
-  if (sections.empty()) return {first.apply(input), second.apply(input)};
-  std::pair<Eigen::VectorXd, Eigen::VectorXd> out{Eigen::VectorXd(input.size()), Eigen::VectorXd(input.size())};
-  std::vector<Lanes> state;
-  run_pair(sections, input.data(), input.data(), input.size(), out.first.data(), out.second.data(), &state);
+                                                                 Eigen::Ref<const Eigen::VectorXd> input) {
+  std::pair<Eigen::VectorXd, Eigen::VectorXd> out;
+  apply_from(first, second, input, 0, &out.first, &out.second);
   return out;
+}
+
+void DigitalFilter::apply_from(const DigitalFilter& first, const DigitalFilter& second,
+                               Eigen::Ref<const Eigen::VectorXd> input, Eigen::Index from, Eigen::VectorXd* first_out,
+                               Eigen::VectorXd* second_out) {
+  const std::vector<SectionPair> sections = paired(first.sections_, second.sections_);
+  if (sections.empty()) {
+    *first_out = first.apply_from(input, from);
+    *second_out = second.apply_from(input, from);
+    return;
+  }
+  const Eigen::Index kept = input.size() - from;
+  first_out->resize(kept);
+  second_out->resize(kept);
+  std::vector<Lanes> state;
+  const double* in = input.data();
+  run_discarded(from, kept, [&](Eigen::Index start, Eigen::Index n) {
+    run_pair(sections, in + start, in + start, n, first_out->data(), second_out->data(), &state);
+  });
+  run_pair(sections, in + from, in + from, kept, first_out->data(), second_out->data(), &state);
 }
 
 std::pair<Eigen::VectorXd, Eigen::VectorXd> DigitalFilter::apply_second_pass(const DigitalFilter& first,
                                                                              const DigitalFilter& second,
-                                                                             const Eigen::VectorXd& period) {
+                                                                             Eigen::Ref<const Eigen::VectorXd> period) {
+  std::pair<Eigen::VectorXd, Eigen::VectorXd> out;
+  apply_second_pass(first, second, period, &out.first, &out.second);
+  return out;
+}
+
+void DigitalFilter::apply_second_pass(const DigitalFilter& first, const DigitalFilter& second,
+                                      Eigen::Ref<const Eigen::VectorXd> period, Eigen::VectorXd* first_out,
+                                      Eigen::VectorXd* second_out) {
   const std::vector<SectionPair> sections = paired(first.sections_, second.sections_);
-  if (sections.empty()) return {first.apply_second_pass(period), second.apply_second_pass(period)};
+  if (sections.empty()) {
+    *first_out = first.apply_second_pass(period);
+    *second_out = second.apply_second_pass(period);
+    return;
+  }
   // Each lane's first pass over its own lead-in (as apply_second_pass); the shorter lead-in
   // preceded by zeros, through which a cascade at rest stays exactly at rest.
   const Eigen::Index n = period.size();
@@ -195,21 +235,28 @@ std::pair<Eigen::VectorXd, Eigen::VectorXd> DigitalFilter::apply_second_pass(con
   Eigen::VectorXd in0 = period.tail(lead), in1 = period.tail(lead);
   in0.head(lead - lead0).setZero();
   in1.head(lead - lead1).setZero();
-  std::pair<Eigen::VectorXd, Eigen::VectorXd> out{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+  first_out->resize(n);
+  second_out->resize(n);
   std::vector<Lanes> state;
-  run_pair(sections, in0.data(), in1.data(), lead, out.first.data(), out.second.data(), &state);  // first pass
-  run_pair(sections, period.data(), period.data(), n, out.first.data(), out.second.data(), &state);
-  return out;
+  run_pair(sections, in0.data(), in1.data(), lead, first_out->data(), second_out->data(), &state);  // first pass
+  run_pair(sections, period.data(), period.data(), n, first_out->data(), second_out->data(), &state);
 }
 
-Eigen::VectorXd DigitalFilter::apply(const Eigen::VectorXd& input) const {
-  Eigen::VectorXd signal = input;
+Eigen::VectorXd DigitalFilter::apply(Eigen::Ref<const Eigen::VectorXd> input) const { return apply_from(input, 0); }
+
+Eigen::VectorXd DigitalFilter::apply_from(Eigen::Ref<const Eigen::VectorXd> input, Eigen::Index from) const {
+  const Eigen::Index kept = input.size() - from;
   const std::vector<PaddedSection> fused = padded(sections_);
   if (fused.size() == sections_.size()) {
+    Eigen::VectorXd out(kept);
     std::vector<double> state;
-    apply_fused(fused, &signal, &state);
-    return signal;
+    run_discarded(from, kept, [&](Eigen::Index start, Eigen::Index n) {
+      apply_fused(fused, input.data() + start, out.data(), n, &state);
+    });
+    apply_fused(fused, input.data() + from, out.data(), kept, &state);
+    return out;
   }
+  Eigen::VectorXd signal = input;
   for (const Section& s : sections_) {
     const size_t order = s.a.size() - 1;
     std::vector<double> state(order + 1, 0.0);  // transposed direct form II: state[order] stays 0
@@ -220,7 +267,8 @@ Eigen::VectorXd DigitalFilter::apply(const Eigen::VectorXd& input) const {
       signal(n) = y;
     }
   }
-  return signal;
+  if (from == 0) return signal;
+  return signal.tail(kept);
 }
 
 long DigitalFilter::lead_in() const {
@@ -240,12 +288,12 @@ long DigitalFilter::lead_in() const {
   return static_cast<long>(std::ceil(std::log(kLeadInDecay) / std::log(slowest)));
 }
 
-Eigen::VectorXd DigitalFilter::apply_second_pass(const Eigen::VectorXd& period) const {
+Eigen::VectorXd DigitalFilter::apply_second_pass(Eigen::Ref<const Eigen::VectorXd> period) const {
   const std::vector<PaddedSection> fused = padded(sections_);
   if (fused.size() != sections_.size()) {
     Eigen::VectorXd twice(2 * period.size());
     twice << period, period;
-    return apply(twice).tail(period.size());
+    return apply_from(twice, period.size());
   }
   // The first pass over the period's last lead_in() samples only when that is shorter than the
   // period: the state it leaves differs from the whole pass's by the response to the earlier
@@ -253,9 +301,9 @@ Eigen::VectorXd DigitalFilter::apply_second_pass(const Eigen::VectorXd& period) 
   const Eigen::Index lead = std::min<Eigen::Index>(period.size(), std::min<long>(lead_in(), period.size()));
   Eigen::VectorXd signal = period.tail(lead);
   std::vector<double> state;
-  apply_fused(fused, &signal, &state);  // the first pass: only its final state is kept
-  signal = period;
-  apply_fused(fused, &signal, &state);
+  apply_fused(fused, signal.data(), signal.data(), lead, &state);  // the first pass: only its final state is kept
+  signal.resize(period.size());
+  apply_fused(fused, period.data(), signal.data(), period.size(), &state);
   return signal;
 }
 

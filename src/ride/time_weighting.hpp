@@ -19,15 +19,19 @@ class DigitalFilter {
     std::vector<double> b, a;  // coefficients of z⁰, z⁻¹, …; a[0] = 1
   };
   explicit DigitalFilter(std::vector<Section> sections) : sections_(std::move(sections)) {}
-  /// The filtered samples, starting from rest.
-  Eigen::VectorXd apply(const Eigen::VectorXd& input) const;
+  /// The filtered samples, starting from rest. The inputs are taken by Eigen::Ref, so that a
+  /// column of a matrix or a segment of a vector is read in place, not copied.
+  Eigen::VectorXd apply(Eigen::Ref<const Eigen::VectorXd> input) const;
+  /// apply(input).tail(input.size() − from), bit for bit, without a buffer for the first `from`
+  /// samples' output (a settling run whose filtered samples are not kept).
+  Eigen::VectorXd apply_from(Eigen::Ref<const Eigen::VectorXd> input, Eigen::Index from) const;
   /// The periodic steady state's samples over `period`: the second pass of a run from rest over
   /// the period's last lead_in() samples and then the period (the whole period first when it is
   /// no longer than lead_in(): apply(period, period)'s second half, bit for bit). Against the
   /// exact periodic response, each sample differs by at most 2·max|x|·Σ_{k ≥ L}|h_k| (h the
   /// impulse response, L = lead_in()), below 1e-16·max|x|·Σ|h_k| for EN 12299's and Sperling's
   /// weightings (test TimeWeighting.LeadInLeavesLessThanTheStatedTailOfTheImpulseResponse).
-  Eigen::VectorXd apply_second_pass(const Eigen::VectorXd& period) const;
+  Eigen::VectorXd apply_second_pass(Eigen::Ref<const Eigen::VectorXd> period) const;
   /// The samples after which the slowest pole p has decayed below kLeadInDecay: the least L
   /// with |p|^L ≤ kLeadInDecay (the largest long when a pole is on or outside the unit circle).
   long lead_in() const;
@@ -37,12 +41,23 @@ class DigitalFilter {
   /// Two cascades over the same samples side by side (each sample through both while their
   /// states are in registers): {first.apply(input), second.apply(input)}, bit for bit.
   static std::pair<Eigen::VectorXd, Eigen::VectorXd> apply(const DigitalFilter& first, const DigitalFilter& second,
-                                                           const Eigen::VectorXd& input);
+                                                           Eigen::Ref<const Eigen::VectorXd> input);
+  /// The pair's apply_from: *first_out = first.apply_from(input, from) and *second_out likewise,
+  /// bit for bit, written into the caller's vectors (resized; one already of the size is reused,
+  /// so a caller filtering several histories needs no new buffer for each). The outputs must
+  /// not overlap `input`.
+  static void apply_from(const DigitalFilter& first, const DigitalFilter& second,
+                         Eigen::Ref<const Eigen::VectorXd> input, Eigen::Index from, Eigen::VectorXd* first_out,
+                         Eigen::VectorXd* second_out);
   /// {first.apply_second_pass(period), second.apply_second_pass(period)}, bit for bit, side by
   /// side as apply's pair.
   static std::pair<Eigen::VectorXd, Eigen::VectorXd> apply_second_pass(const DigitalFilter& first,
                                                                        const DigitalFilter& second,
-                                                                       const Eigen::VectorXd& period);
+                                                                       Eigen::Ref<const Eigen::VectorXd> period);
+  /// The same into the caller's vectors (resized, reused as apply_from's; not overlapping `period`).
+  static void apply_second_pass(const DigitalFilter& first, const DigitalFilter& second,
+                                Eigen::Ref<const Eigen::VectorXd> period, Eigen::VectorXd* first_out,
+                                Eigen::VectorXd* second_out);
   /// H(e^{iωΔt}) at `frequency` Hz for the sample step `time_step` s.
   std::complex<double> response(double frequency, double time_step) const;
 

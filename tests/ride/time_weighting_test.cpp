@@ -174,6 +174,45 @@ TEST(TimeWeighting, PairedCascadesAreEachCascadeAloneBitForBit) {
     }
 }
 
+TEST(TimeWeighting, ApplyFromAndBuffersGiveTheWholeRunsSamplesBitForBit) {
+  // simulate_ride filters a settling run without keeping its samples (apply_from, the discarded
+  // samples run in chunks no longer than the kept ones) and writes the pairs into buffers it
+  // reuses for every output: the same doubles as the whole run's tail, whatever size and
+  // contents the buffers had. The starts cover no settling, settling shorter and longer than
+  // the kept samples (one chunk, several, 29999 of one sample) and nothing kept.
+  Eigen::VectorXd input(30000);
+  for (Eigen::Index n = 0; n < input.size(); ++n)
+    input(n) = std::sin(0.011 * static_cast<double>(n * n % 983)) + 0.2 * std::cos(0.3 * static_cast<double>(n));
+  const ride::DigitalFilter wb = ride::digital_weighting(en12299_wb(), kStep);
+  const ride::DigitalFilter b = ride::digital_sperling(SperlingDirection::vertical, kStep);
+  const ride::DigitalFilter fourth({ride::bilinear({1.0, 0.0, 0.0, 0.0, 1e-4}, {1.0, 0.5, 0.1, 0.01, 1e-3}, kStep, 0.0)});
+  const std::vector<std::pair<const ride::DigitalFilter*, const ride::DigitalFilter*>> pairs{
+      {&wb, &b}, {&b, &wb}, {&wb, &fourth}};
+  Eigen::VectorXd first_out = Eigen::VectorXd::Constant(5, NAN), second_out = Eigen::VectorXd::Constant(30000, NAN);
+  for (const auto& [first, second] : pairs) {
+    const Eigen::VectorXd whole_first = first->apply(input), whole_second = second->apply(input);
+    for (Eigen::Index from : {Eigen::Index{0}, Eigen::Index{9000}, Eigen::Index{21000}, Eigen::Index{29999},
+                              Eigen::Index{30000}}) {
+      const Eigen::Index kept = input.size() - from;
+      EXPECT_EQ(first->apply_from(input, from), whole_first.tail(kept)) << from;
+      ride::DigitalFilter::apply_from(*first, *second, input, from, &first_out, &second_out);
+      EXPECT_EQ(first_out, whole_first.tail(kept)) << from;
+      EXPECT_EQ(second_out, whole_second.tail(kept)) << from;
+    }
+    for (Eigen::Index n : {Eigen::Index{30000}, Eigen::Index{3000}}) {
+      // A column of a matrix read in place, as simulate_ride passes the march's outputs.
+      Eigen::MatrixXd columns(n, 2);
+      columns.col(0) = input.tail(n);
+      columns.col(1) = input.head(n);
+      const Eigen::VectorXd x = input.tail(n);
+      ride::DigitalFilter::apply_second_pass(*first, *second, columns.col(0), &first_out, &second_out);
+      EXPECT_EQ(first_out, first->apply_second_pass(x));
+      EXPECT_EQ(second_out, second->apply_second_pass(x));
+      EXPECT_EQ(first->apply_second_pass(columns.col(0)), first->apply_second_pass(x));
+    }
+  }
+}
+
 TEST(TimeWeighting, LeadInLeavesLessThanTheStatedTailOfTheImpulseResponse) {
   // apply_second_pass's bound (time_weighting.hpp): the impulse response beyond lead_in() sums
   // to below 1e-16 of the whole (its ℓ1 norm, the filter's largest gain on a bounded input), for
