@@ -181,14 +181,6 @@ void run_discarded(Eigen::Index from, Eigen::Index buffer, Run run) {
 
 }  // namespace
 
-std::pair<Eigen::VectorXd, Eigen::VectorXd> DigitalFilter::apply(const DigitalFilter& first,
-                                                                 const DigitalFilter& second,
-                                                                 Eigen::Ref<const Eigen::VectorXd> input) {
-  std::pair<Eigen::VectorXd, Eigen::VectorXd> out;
-  apply_from(first, second, input, 0, &out.first, &out.second);
-  return out;
-}
-
 void DigitalFilter::apply_from(const DigitalFilter& first, const DigitalFilter& second,
                                Eigen::Ref<const Eigen::VectorXd> input, Eigen::Index from, Eigen::VectorXd* first_out,
                                Eigen::VectorXd* second_out) {
@@ -209,14 +201,6 @@ void DigitalFilter::apply_from(const DigitalFilter& first, const DigitalFilter& 
   run_pair(sections, in + from, in + from, kept, first_out->data(), second_out->data(), &state);
 }
 
-std::pair<Eigen::VectorXd, Eigen::VectorXd> DigitalFilter::apply_second_pass(const DigitalFilter& first,
-                                                                             const DigitalFilter& second,
-                                                                             Eigen::Ref<const Eigen::VectorXd> period) {
-  std::pair<Eigen::VectorXd, Eigen::VectorXd> out;
-  apply_second_pass(first, second, period, &out.first, &out.second);
-  return out;
-}
-
 void DigitalFilter::apply_second_pass(const DigitalFilter& first, const DigitalFilter& second,
                                       Eigen::Ref<const Eigen::VectorXd> period, Eigen::VectorXd* first_out,
                                       Eigen::VectorXd* second_out) {
@@ -229,8 +213,8 @@ void DigitalFilter::apply_second_pass(const DigitalFilter& first, const DigitalF
   // Each lane's first pass over its own lead-in (as apply_second_pass); the shorter lead-in
   // preceded by zeros, through which a cascade at rest stays exactly at rest.
   const Eigen::Index n = period.size();
-  const Eigen::Index lead0 = std::min<Eigen::Index>(n, std::min<long>(first.lead_in(), n));
-  const Eigen::Index lead1 = std::min<Eigen::Index>(n, std::min<long>(second.lead_in(), n));
+  const Eigen::Index lead0 = std::min<Eigen::Index>(n, first.lead_in());
+  const Eigen::Index lead1 = std::min<Eigen::Index>(n, second.lead_in());
   const Eigen::Index lead = std::max(lead0, lead1);
   Eigen::VectorXd in0 = period.tail(lead), in1 = period.tail(lead);
   in0.head(lead - lead0).setZero();
@@ -298,7 +282,7 @@ Eigen::VectorXd DigitalFilter::apply_second_pass(Eigen::Ref<const Eigen::VectorX
   // The first pass over the period's last lead_in() samples only when that is shorter than the
   // period: the state it leaves differs from the whole pass's by the response to the earlier
   // samples, decayed by the slowest pole's |p|^lead_in ≤ kLeadInDecay (bound: time_weighting.hpp).
-  const Eigen::Index lead = std::min<Eigen::Index>(period.size(), std::min<long>(lead_in(), period.size()));
+  const Eigen::Index lead = std::min<Eigen::Index>(period.size(), lead_in());
   Eigen::VectorXd signal = period.tail(lead);
   std::vector<double> state;
   apply_fused(fused, signal.data(), signal.data(), lead, &state);  // the first pass: only its final state is kept

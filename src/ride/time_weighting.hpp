@@ -5,7 +5,6 @@
 
 #include <Eigen/Core>
 #include <complex>
-#include <utility>
 #include <vector>
 
 #include "railmodal/comfort_weighting.hpp"
@@ -39,22 +38,15 @@ class DigitalFilter {
   /// cascade's near-coincident poles (a double pole's tail goes as L·|p|^L).
   static constexpr double kLeadInDecay = 1e-20;
   /// Two cascades over the same samples side by side (each sample through both while their
-  /// states are in registers): {first.apply(input), second.apply(input)}, bit for bit.
-  static std::pair<Eigen::VectorXd, Eigen::VectorXd> apply(const DigitalFilter& first, const DigitalFilter& second,
-                                                           Eigen::Ref<const Eigen::VectorXd> input);
-  /// The pair's apply_from: *first_out = first.apply_from(input, from) and *second_out likewise,
-  /// bit for bit, written into the caller's vectors (resized; one already of the size is reused,
+  /// states are in registers): *first_out = first.apply_from(input, from) and *second_out
+  /// likewise, bit for bit, written into the caller's vectors (resized; one already of the size is reused,
   /// so a caller filtering several histories needs no new buffer for each). The outputs must
   /// not overlap `input`.
   static void apply_from(const DigitalFilter& first, const DigitalFilter& second,
                          Eigen::Ref<const Eigen::VectorXd> input, Eigen::Index from, Eigen::VectorXd* first_out,
                          Eigen::VectorXd* second_out);
-  /// {first.apply_second_pass(period), second.apply_second_pass(period)}, bit for bit, side by
-  /// side as apply's pair.
-  static std::pair<Eigen::VectorXd, Eigen::VectorXd> apply_second_pass(const DigitalFilter& first,
-                                                                       const DigitalFilter& second,
-                                                                       Eigen::Ref<const Eigen::VectorXd> period);
-  /// The same into the caller's vectors (resized, reused as apply_from's; not overlapping `period`).
+  /// *first_out = first.apply_second_pass(period) and *second_out likewise, bit for bit, side by
+  /// side as apply_from's pair (resized, reused as there; not overlapping `period`).
   static void apply_second_pass(const DigitalFilter& first, const DigitalFilter& second,
                                 Eigen::Ref<const Eigen::VectorXd> period, Eigen::VectorXd* first_out,
                                 Eigen::VectorXd* second_out);
