@@ -280,13 +280,9 @@ struct Resonance {
 };
 
 // The modes' terms of one harmonic's response at one DOF, x_o(ω) = Σ_j φ_j(o)·s(ω)(a_j + iωb_j)/
-// (λ_j − ω² + iωc_j) (each mode j with its a_j, b_j), and the resonances among them.
-struct ModalTerm {
-  response::ModalMode mode;
-  response::Share share;
-};
+// (λ_j − ω² + iωc_j), and the resonances among them.
 struct ModalTerms {
-  std::vector<ModalTerm> terms;
+  std::vector<response::ModalTerm> terms;
   std::vector<Resonance> resonances;
 };
 
@@ -326,7 +322,7 @@ ModalTerms modal_terms(const ModalBasis& basis, const SeparableLoad& p, const Pa
     const double c = basis.damping[j], lambda = mode.eigenvalue;
     const bool undamped = mode.kind == ModeKind::oscillatory && c == 0.0;
     const double tolerance = undamped ? kAtResonance * lambda : -1.0;
-    out.terms.push_back({{lambda, c, tolerance, undamped}, {a.real(), a.imag(), b.real(), b.imag()}});
+    out.terms.push_back({a.real(), a.imag(), b.real(), b.imag(), lambda, c, tolerance, undamped});
     if (undamped && std::abs(at) > 1e-9 * largest)
       out.resonances.push_back({lambda, tolerance, a, b, response::kLoadRoundOff * std::abs(at) * shape_norm});
   }
@@ -370,7 +366,7 @@ Kernel modal_kernel(const ModalBasis& basis, const std::vector<SeparableLoad>& p
   const std::complex<double> sc = massless_follower(basis, p.damping_part, dof);
   return [terms = std::move(modal.terms), resonances = std::move(modal.resonances), sk, sc, q_norm_k, q_norm_c](
              const response::SweepBlock& b, double* resonant, bool ascending) {
-    for (const ModalTerm& t : terms) response::add_modal_term(t.share, t.mode, b);
+    response::add_modal_terms(terms.data(), terms.size(), b);
     const bool flagged = flag_resonances(resonances, q_norm_k, q_norm_c, b, resonant, ascending);
     if (sk != 0.0 || sc != 0.0) response::add_static_term(sk.real(), sk.imag(), sc.real(), sc.imag(), b);
     return flagged;
@@ -430,9 +426,8 @@ std::complex<double> expanded_response(const response::StateSpaceModes& cm, cons
   for (Eigen::Index r = 0; r < cm.roots.size(); ++r)
     if (!cm.undamped[r])
       x += cm.shapes(dof, r) * (loads.stiffness[k - 1](r) + iw * loads.damping[k - 1](r)) / (iw - cm.roots(r));
-  for (const ModalTerm& t : modal_terms(undamped, parts[k - 1], part_norms(parts), dof).terms)
-    x += std::complex<double>(t.share.ar - omega * t.share.bi, t.share.ai + omega * t.share.br) /
-         (t.mode.lambda - omega * omega);
+  for (const response::ModalTerm& t : modal_terms(undamped, parts[k - 1], part_norms(parts), dof).terms)
+    x += std::complex<double>(t.ar - omega * t.bi, t.ai + omega * t.br) / (t.lambda - omega * omega);
   return scale * x;
 }
 
@@ -440,24 +435,20 @@ std::complex<double> expanded_response(const response::StateSpaceModes& cm, cons
 // division by 0), and the undamped modes' terms with their resonance flags.
 Kernel root_kernel(const response::StateSpaceModes& cm, const RootLoads& loads, const ModalBasis& undamped,
                    const std::vector<SeparableLoad>& parts, int k, int dof) {
-  struct RootTerm {
-    response::RootMode root;
-    response::Share share;
-  };
-  std::vector<RootTerm> terms;
+  std::vector<response::RootTerm> terms;
   for (Eigen::Index r = 0; r < cm.roots.size(); ++r) {
     if (cm.undamped[r]) continue;
     const std::complex<double> a = cm.shapes(dof, r) * loads.stiffness[k - 1](r);
     const std::complex<double> b = cm.shapes(dof, r) * loads.damping[k - 1](r);
-    terms.push_back({{-cm.roots(r).real(), cm.roots(r).imag()}, {a.real(), a.imag(), b.real(), b.imag()}});
+    terms.push_back({a.real(), a.imag(), b.real(), b.imag(), -cm.roots(r).real(), cm.roots(r).imag()});
   }
   const PartNorms source = part_norms(parts);
   ModalTerms modal = modal_terms(undamped, parts[k - 1], source, dof);
   return [terms = std::move(terms), modal = std::move(modal), q_norm_k = source.stiffness,
           q_norm_c = source.damping](const response::SweepBlock& b, double* resonant, bool ascending) {
-    for (const RootTerm& t : terms) response::add_root_term(t.share, t.root, b);
+    response::add_root_terms(terms.data(), terms.size(), b);
     if (modal.terms.empty()) return false;  // every root damped: bounded everywhere
-    for (const ModalTerm& t : modal.terms) response::add_modal_term(t.share, t.mode, b);
+    response::add_modal_terms(modal.terms.data(), modal.terms.size(), b);
     return flag_resonances(modal.resonances, q_norm_k, q_norm_c, b, resonant, ascending);
   };
 }

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-// The block loops below (terms, magnitudes, arguments, phases_deg, the scans) are built for
+// The block loops below (add_*, magnitudes, arguments, phases_deg, the scans) are built for
 // SSE2 (every x86-64) and for AVX2, and the loader picks one by the CPU (a GNU ifunc: glibc
 // only, and not under a sanitiser, whose runtime the resolver would run before). AVX2 halves
 // the cost of the divisions and square roots that dominate the arithmetic. Without FMA in the
@@ -63,43 +63,45 @@ RAILMODAL_INLINE_LOOP double atan2_kernel(double y, double x) {
 // The loops, with every array a restrict parameter: GCC takes restrict from parameters (also
 // once inlined), and without it the run-time overlap checks of seven arrays exceed its limit
 // and the loop stays scalar.
-// A mode's term: s(ω)(a + iωb)/(gap + i·di) = (a + iωb)(gap − i·di)·f with gap = λ − ω², di = ωc
-// and f = s(ω)/(gap² + di²), the one division per mode and speed; undamped, (a + iωb)·s(ω)/gap.
-// An undamped mode's gap becomes ∞ at its own frequency, so that its term is exactly 0 there: a
-// select, where a branch or a masked division would stop the vectorising.
-RAILMODAL_INLINE_LOOP void modal_term(Share s, double lambda, double c, double tolerance, bool undamped, int n,
-                                      const double* __restrict w, const double* __restrict w2,
-                                      const double* __restrict scale, double* __restrict re,
-                                      double* __restrict im) {
-  if (undamped) {
-    for (int v = 0; v < n; ++v) {
-      const double gap = lambda - w2[v];
-      const double f = scale[v] / (std::abs(gap) <= tolerance ? kInfinity : gap);
-      re[v] += (s.ar - w[v] * s.bi) * f;
-      im[v] += (s.ai + w[v] * s.br) * f;
-    }
-  } else {
-    for (int v = 0; v < n; ++v) {
-      const double gap = lambda - w2[v], di = w[v] * c;
-      const double f = scale[v] / (gap * gap + di * di);
-      const double nr = s.ar - w[v] * s.bi, ni = s.ai + w[v] * s.br;
-      re[v] += (nr * gap + ni * di) * f;
-      im[v] += (ni * gap - nr * di) * f;
+RAILMODAL_INLINE_LOOP void modal_terms(const ModalTerm* terms, std::size_t count, int n,
+                                       const double* __restrict w, const double* __restrict w2,
+                                       const double* __restrict scale, double* __restrict re,
+                                       double* __restrict im) {
+  for (std::size_t j = 0; j < count; ++j) {
+    const ModalTerm t = terms[j];
+    if (t.undamped) {
+      // At its own frequency the gap becomes ∞ and the term exactly 0: a select, where a branch
+      // or a masked division would stop the vectorising.
+      for (int v = 0; v < n; ++v) {
+        const double gap = t.lambda - w2[v];
+        const double f = scale[v] / (std::abs(gap) <= t.tolerance ? kInfinity : gap);
+        re[v] += (t.ar - w[v] * t.bi) * f;
+        im[v] += (t.ai + w[v] * t.br) * f;
+      }
+    } else {
+      for (int v = 0; v < n; ++v) {
+        const double gap = t.lambda - w2[v], di = w[v] * t.c;
+        const double nr = t.ar - w[v] * t.bi, ni = t.ai + w[v] * t.br;
+        const double f = scale[v] / (gap * gap + di * di);
+        re[v] += (nr * gap + ni * di) * f;
+        im[v] += (ni * gap - nr * di) * f;
+      }
     }
   }
 }
 
-// A root's term: s(ω)(a + iωb)/(iω − r) = (a + iωb)(decay − i·di)·f with r = −decay + i·lambda_im,
-// di = ω − lambda_im and f = s(ω)/(decay² + di²).
-RAILMODAL_INLINE_LOOP void root_term(Share s, double decay, double lambda_im, int n, const double* __restrict w,
-                                     const double* __restrict scale, double* __restrict re,
-                                     double* __restrict im) {
-  for (int v = 0; v < n; ++v) {
-    const double di = w[v] - lambda_im;
-    const double f = scale[v] / (decay * decay + di * di);
-    const double nr = s.ar - w[v] * s.bi, ni = s.ai + w[v] * s.br;
-    re[v] += (nr * decay + ni * di) * f;
-    im[v] += (ni * decay - nr * di) * f;
+RAILMODAL_INLINE_LOOP void root_terms(const RootTerm* terms, std::size_t count, int n,
+                                      const double* __restrict w, const double* __restrict scale,
+                                      double* __restrict re, double* __restrict im) {
+  for (std::size_t j = 0; j < count; ++j) {
+    const RootTerm t = terms[j];
+    for (int v = 0; v < n; ++v) {
+      const double nr = t.ar - w[v] * t.bi, ni = t.ai + w[v] * t.br;
+      const double di = w[v] - t.lambda_im;
+      const double f = scale[v] / (t.decay * t.decay + di * di);
+      re[v] += (nr * t.decay + ni * di) * f;
+      im[v] += (ni * t.decay - nr * di) * f;
+    }
   }
 }
 
@@ -165,13 +167,13 @@ double phase_deg(double arg_x, double arg_input, double offset_deg) {
 }
 
 RAILMODAL_VECTOR_CLONES
-void add_modal_term(const Share& s, const ModalMode& m, const SweepBlock& b) {
-  modal_term(s, m.lambda, m.c, m.tolerance, m.undamped, b.count, b.w, b.w2, b.scale, b.re, b.im);
+void add_modal_terms(const ModalTerm* terms, std::size_t count, const SweepBlock& b) {
+  modal_terms(terms, count, b.count, b.w, b.w2, b.scale, b.re, b.im);
 }
 
 RAILMODAL_VECTOR_CLONES
-void add_root_term(const Share& s, const RootMode& r, const SweepBlock& b) {
-  root_term(s, r.decay, r.lambda_im, b.count, b.w, b.scale, b.re, b.im);
+void add_root_terms(const RootTerm* terms, std::size_t count, const SweepBlock& b) {
+  root_terms(terms, count, b.count, b.w, b.scale, b.re, b.im);
 }
 
 RAILMODAL_VECTOR_CLONES

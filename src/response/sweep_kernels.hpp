@@ -22,29 +22,21 @@ struct SweepBlock {
   int count;
 };
 
-/// A mode of the modal path: λ − ω² + iωc; undamped (c = 0) with its `tolerance` on |λ − ω²|.
-struct ModalMode {
-  double lambda, c, tolerance;
+/// One mode's share of an output DOF: φ(o)·s(ω)(a + iωb)/(λ − ω² + iωc), with a = φᵀQ_K and
+/// b = φᵀQ_C. An undamped term (c = 0) adds exactly 0 where |λ − ω²| ≤ `tolerance`: it has no
+/// steady state there, and the caller flags those speeds.
+struct ModalTerm {
+  double ar, ai, br, bi, lambda, c, tolerance;
   bool undamped;
 };
+void add_modal_terms(const ModalTerm* terms, std::size_t count, const SweepBlock& b);
 
-/// A root r = −decay + i·lambda_im of the first-order form, strictly damped (decay > 0).
-struct RootMode {
-  double decay, lambda_im;
+/// One complex root r = −decay + i·lambda_im of the first-order form:
+/// s(ω)(a + iωb)/(iω − r), every root strictly damped (decay > 0).
+struct RootTerm {
+  double ar, ai, br, bi, decay, lambda_im;
 };
-
-/// An output DOF's share of a mode's load, a + iωb: for a modal mode a = φ(o)·φᵀQ_K and
-/// b = φ(o)·φᵀQ_C, for a root the shape's row o times the root's participations in Q_K and Q_C.
-struct Share {
-  double ar, ai, br, bi;
-};
-
-/// Adds the DOF's term of a mode to (b.re, b.im): s(ω)(a + iωb)/(λ − ω² + iωc) for a modal
-/// mode (an undamped one adds exactly 0 where |λ − ω²| ≤ tolerance: it has no steady state
-/// there, and the caller flags those speeds), s(ω)(a + iωb)/(iω − r) for a root. Real
-/// arithmetic, one division per speed, in one pass over the block.
-void add_modal_term(const Share& s, const ModalMode& m, const SweepBlock& b);
-void add_root_term(const Share& s, const RootMode& r, const SweepBlock& b);
+void add_root_terms(const RootTerm* terms, std::size_t count, const SweepBlock& b);
 
 /// A massless DOF's own quasi-static part: s(ω)(k + iωc), complex k = kr + i·ki, c likewise.
 void add_static_term(double kr, double ki, double cr, double ci, const SweepBlock& b);
