@@ -333,8 +333,8 @@ void describe_failure(const Vehicle& vehicle, DofSet dofs, const std::string& wh
 // scene moves into the critical-speed study and its vehicle into the study's system instead of
 // being copied there (a copy of each a variant fewer: their names, lists and the scene's key
 // places are allocations), and what follows reads them there.
-VariantResult evaluate(const StudyVariant& variant, StudyVariant* owned, int index, const DeflectionRule& rule,
-                       const std::optional<HuntingOptions>& hunting) {
+VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned, int index, const DeflectionRule& rule,
+                               const std::optional<HuntingOptions>& hunting) {
   VariantResult r;
   r.index = index;
   r.name = variant.name;
@@ -408,12 +408,12 @@ VariantResult evaluate(const StudyVariant& variant, StudyVariant* owned, int ind
 
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
                                const std::optional<HuntingOptions>& hunting) {
-  return evaluate(variant, nullptr, index, rule, hunting);
+  return evaluate_in_full(variant, nullptr, index, rule, hunting);
 }
 
 VariantResult study::evaluate_owned_variant(StudyVariant&& variant, int index, const DeflectionRule& rule,
                                             const std::optional<HuntingOptions>& hunting) {
-  return evaluate(variant, &variant, index, rule, hunting);
+  return evaluate_in_full(variant, &variant, index, rule, hunting);
 }
 
 }  // namespace railmodal
