@@ -13,8 +13,13 @@ std::vector<Wheelset> wheelsets(const LinearSystem& system) {
     const double x = system.track_inputs[i].point.x();
     auto it = std::find_if(sets.begin(), sets.end(),
                            [&](const Wheelset& w) { return std::abs(w.x - x) <= kSameAxle; });
-    if (it == sets.end()) sets.push_back({x, {i}});
-    else it->inputs.push_back(i);
+    if (it == sets.end()) {
+      sets.push_back({x, {}});
+      sets.back().inputs.reserve(2);  // a wheel on each rail: one allocation per set, not two
+      sets.back().inputs.push_back(i);
+    } else {
+      it->inputs.push_back(i);
+    }
   }
   std::sort(sets.begin(), sets.end(), [](const Wheelset& a, const Wheelset& b) { return a.x > b.x; });
   return sets;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <utility>
 #include <stdexcept>
 
 #include "model/analysis_limits.hpp"
@@ -358,6 +359,7 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
   Eigen::VectorXd q = Eigen::VectorXd::Zero(layout.size());
   for (int i = 0; i < n; ++i) q(free[i]) = qf(i);
   std::vector<double> loads;
+  loads.reserve(v.elements.size());
   for (size_t k = 0; k < v.elements.size(); ++k) {
     const double kz = series_stiffness(v.elements[k].vertical_stages);
     loads.push_back(-kz * vertical_stretch(layout, maps[k], q));  // upper sinks: compression
@@ -570,18 +572,23 @@ FullAssembly assemble_full(const Vehicle& vehicle, bool damping) {
 
 namespace {
 
-LinearSystem system_of(const Vehicle& vehicle, const FullAssembly& a, DofSet set) {
+// `owned`, when given, is `vehicle` itself, which the caller gives up: it is moved into the
+// system last (nothing reads it after), saving the copy of every body and element name.
+LinearSystem system_of(const Vehicle& vehicle, const FullAssembly& a, DofSet set, Vehicle* owned = nullptr) {
   LinearSystem system;
   const std::vector<int> keep = kept_coordinates(vehicle, a.layout, a.free, set, &system.dofs);
   system.mass = pick(a.full.M, keep);
   system.damping = pick(a.full.C, keep);
   system.stiffness = pick(a.K, keep);
   system.gravity_stiffness = pick(a.K_gravity, keep);
-  system.vehicle = vehicle;
   system.element_loads = a.loads;
   system.element_vertical_map = element_vertical_map(a.layout, a.full.maps, keep);
   system.track_inputs = track_inputs(vehicle, a.layout, a.full.maps, a.loads, keep);
   system.series_dampers = series_damper_rows(vehicle, a.layout, a.full.maps, keep);
+  if (owned)
+    system.vehicle = std::move(*owned);
+  else
+    system.vehicle = vehicle;
   return system;
 }
 
@@ -604,6 +611,14 @@ LinearSystem model::assemble_stiffness(const Vehicle& vehicle, DofSet set) {
 model::SystemAndStiffness model::assemble_with_stiffness(const Vehicle& vehicle, DofSet set, DofSet stiffness_set) {
   const FullAssembly a = assemble_full(vehicle, true);
   return {system_of(vehicle, a, set), stiffness_of(vehicle, a, stiffness_set)};
+}
+
+model::SystemAndStiffness model::assemble_with_stiffness(Vehicle&& vehicle, DofSet set, DofSet stiffness_set) {
+  const FullAssembly a = assemble_full(vehicle, true);
+  SystemAndStiffness both;
+  both.stiffness = stiffness_of(vehicle, a, stiffness_set);  // before the vehicle moves into the system
+  both.system = system_of(vehicle, a, set, &vehicle);
+  return both;
 }
 
 }  // namespace railmodal

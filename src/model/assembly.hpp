@@ -20,5 +20,8 @@ struct SystemAndStiffness {
   LinearSystem stiffness;
 };
 SystemAndStiffness assemble_with_stiffness(const Vehicle& vehicle, DofSet set, DofSet stiffness_set);
+/// The same with the vehicle moved into system.vehicle instead of copied (a study's worker
+/// owns the variant it reads). Where it throws, `vehicle` is left as it was.
+SystemAndStiffness assemble_with_stiffness(Vehicle&& vehicle, DofSet set, DofSet stiffness_set);
 
 }  // namespace railmodal::model

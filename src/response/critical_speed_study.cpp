@@ -6,6 +6,7 @@
 #include <limits>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
@@ -174,10 +175,18 @@ CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehi
 
 CriticalSpeedStudy response::study_critical_speeds_of(const Scene& scene, const std::function<LinearSystem()>& assembled,
                                                       const std::function<void(double)>& progress) {
-  model::refuse_ride_only_scene(scene, "critical speeds");
   CriticalSpeedStudy study;
+  study_critical_speeds_into(scene, assembled, &study, progress);
+  return study;
+}
+
+void response::study_critical_speeds_into(Scene given, const std::function<LinearSystem()>& assembled,
+                                          CriticalSpeedStudy* into, const std::function<void(double)>& progress) {
+  model::refuse_ride_only_scene(given, "critical speeds");
+  CriticalSpeedStudy& study = *into;
   StageClock clock(&study.summary);
-  study.scene = scene;
+  study.scene = std::move(given);
+  const Scene& scene = study.scene;
   study.system = assembled();
   solve_stable_modes(scene, &study);
   clock.lap("assembly and modes");
@@ -217,7 +226,6 @@ CriticalSpeedStudy response::study_critical_speeds_of(const Scene& scene, const 
     peak_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - swept).count();
   }
   summarise(&study, sweep_seconds, peak_seconds);
-  return study;
 }
 
 }  // namespace railmodal

@@ -14,4 +14,11 @@ namespace railmodal::response {
 CriticalSpeedStudy study_critical_speeds_of(const Scene& scene, const std::function<LinearSystem()>& assembled,
                                             const std::function<void(double)>& progress = {});
 
+/// The same into `study` (default-constructed), taking the scene as given: a caller that owns
+/// it moves it in instead of copying it. Where it throws, what `study` was given so far stays
+/// there: its scene, and its system once `assembled` returned (a study's variant then
+/// describes its failure from them, the vehicle having moved into the system).
+void study_critical_speeds_into(Scene scene, const std::function<LinearSystem()>& assembled, CriticalSpeedStudy* study,
+                                const std::function<void(double)>& progress = {});
+
 }  // namespace railmodal::response

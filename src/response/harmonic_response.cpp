@@ -99,11 +99,17 @@ HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult
   // D bordered by Mφ of the undamped modes at ω: the rest x ⟂_M φ solves
   // D x = Q − Σ Mφ (φᵀQ); without such modes it is plain D x = Q.
   // Every block but the border's corner is written below: only that corner is zeroed.
-  Eigen::MatrixXcd A(n + r, n + r);
+  // The matrix, its LU and the vectors are this thread's, kept between calls: a study solves
+  // one such system per resonance of every variant, all of one size, and each call made them
+  // anew. The same operations on the same values: the same bits.
+  thread_local Eigen::MatrixXcd A;
+  thread_local Eigen::VectorXcd rhs, x, residual_vector;
+  thread_local Eigen::PartialPivLU<Eigen::MatrixXcd> lu;
+  A.resize(n + r, n + r);
   A.bottomRightCorner(r, r).setZero();
   A.topLeftCorner(n, n) = (system.stiffness - omega * omega * system.mass).cast<std::complex<double>>() +
                           i * omega * system.damping.cast<std::complex<double>>();
-  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(n + r);
+  rhs.setZero(n + r);
   rhs.head(n) = load;
   for (int k = 0; k < r; ++k) {
     const Eigen::VectorXcd b = (system.mass * at[k]->shape).cast<std::complex<double>>();
@@ -112,8 +118,11 @@ HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult
     rhs.head(n) -= b * at[k]->shape.cast<std::complex<double>>().dot(load);
     if (drives(*at[k], load, source_load)) out.resonant_modes.push_back(at[k]->index);
   }
-  const Eigen::VectorXcd x = A.partialPivLu().solve(rhs);
-  const double residual = (A * x - rhs).norm();
+  lu.compute(A);
+  x = lu.solve(rhs);
+  residual_vector.noalias() = A * x;
+  residual_vector -= rhs;
+  const double residual = residual_vector.norm();
   // A load on a direction nothing restrains (a rigid-body mode at ω = 0) has no steady state.
   if (!x.allFinite() || !(residual <= 1e-8 * (rhs.norm() + A.norm() * x.norm())))
     throw NumericalError("harmonic response at " + shortest_text(frequency_hz, 6) +

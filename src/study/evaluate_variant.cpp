@@ -16,6 +16,7 @@
 #include "response/golden_section.hpp"
 #include "response/modal_checks.hpp"
 #include "solve/lateral_stability.hpp"
+#include "study/parallel_evaluation.hpp"
 #include "study/permissible_deflection.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -254,10 +255,9 @@ void hunting_speed(const Vehicle& vehicle, const HuntingOptions& options, Varian
 
 // The ride on the scene's random track, when the scene has one: per output the largest RMS and
 // Sperling Wz over the ride's speeds, and the largest N_MV estimate (the spectra are not kept).
-void ride_summary(const StudyVariant& variant, VariantResult* r) {
-  const Scene& scene = variant.scene;
+void ride_summary(const Vehicle& vehicle, const Scene& scene, VariantResult* r) {
   if (!scene.irregularity || !scene.ride) return;
-  const LinearSystem system = assemble(variant.vehicle, scene.dofs);
+  const LinearSystem system = assemble(vehicle, scene.dofs);
   check_scene_fits(scene, system);
   RideOptions options = scene.ride->options;
   options.keep_spectra = false;  // the metrics need the indices only
@@ -313,13 +313,13 @@ void summarise_evaluation(VariantResult* r) {
 
 // The failure of a vehicle with no steady response: its modes (when they can be computed), and
 // the unstable one named.
-void describe_failure(const StudyVariant& variant, const std::string& why, VariantResult* r) {
+void describe_failure(const Vehicle& vehicle, DofSet dofs, const std::string& why, VariantResult* r) {
   r->failure = "numerical failure: " + why;
-  const LinearSystem system = assemble(variant.vehicle, variant.scene.dofs);
+  const LinearSystem system = assemble(vehicle, dofs);
   const ModalResult modes = solve_modes(system);
   summarise_modes(modes, r);
-  static_deflections(variant.vehicle, system, r);
-  metacentric_height(variant.vehicle, nullptr, r);
+  static_deflections(vehicle, system, r);
+  metacentric_height(vehicle, nullptr, r);
   for (const Mode& m : modes.modes)
     if (m.kind == ModeKind::unstable) {
       char rate[32];
@@ -329,9 +329,11 @@ void describe_failure(const StudyVariant& variant, const std::string& why, Varia
     }
 }
 
-}  // namespace
-
-VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
+// evaluate_variant; `owned`, when given, is `variant` itself, which the caller gives up: its
+// scene moves into the critical-speed study and its vehicle into the study's system instead of
+// being copied there (a copy of each a variant fewer: their names, lists and the scene's key
+// places are allocations), and what follows reads them there.
+VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned, int index, const DeflectionRule& rule,
                                const std::optional<HuntingOptions>& hunting) {
   VariantResult r;
   r.index = index;
@@ -343,7 +345,7 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
       // A ride scene: no periodic source, so no critical speeds, peaks or dynamic deflections.
       summarise_without_sources(variant, &r);
       clock.lap("modes");
-      ride_summary(variant, &r);
+      ride_summary(variant.vehicle, variant.scene, &r);
       clock.lap("ride");
       if (hunting) hunting_speed(variant.vehicle, *hunting, &r);
       clock.lap("hunting stability");
@@ -354,29 +356,41 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
     // lateral stiffness of the metacentric height with its system.
     CriticalSpeedStudy study;
     LinearSystem lateral;
+    bool vehicle_moved = false;  // into study.system (owned only, once assembled)
+    const DofSet dofs = variant.scene.dofs;
     try {
-      study = response::study_critical_speeds_of(variant.scene, [&] {
-        model::SystemAndStiffness both = model::assemble_with_stiffness(variant.vehicle, variant.scene.dofs, DofSet::lateral);
+      const auto assembled = [&] {
+        model::SystemAndStiffness both =
+            owned ? model::assemble_with_stiffness(std::move(owned->vehicle), dofs, DofSet::lateral)
+                  : model::assemble_with_stiffness(variant.vehicle, dofs, DofSet::lateral);
+        vehicle_moved = owned != nullptr;
         lateral = std::move(both.stiffness);
         return std::move(both.system);
-      });
+      };
+      if (owned)
+        response::study_critical_speeds_into(std::move(owned->scene), assembled, &study);
+      else
+        response::study_critical_speeds_into(variant.scene, assembled, &study);
     } catch (const NumericalError& e) {
-      describe_failure(variant, e.what(), &r);
+      describe_failure(vehicle_moved ? study.system.vehicle : variant.vehicle, dofs, e.what(), &r);
       clock.lap("failure");
       summarise_evaluation(&r);
       return r;
     }
+    // The variant's vehicle and scene, wherever they are now (bit for bit the variant's).
+    const Vehicle& vehicle = study.system.vehicle;
+    const Scene& scene = study.scene;
     clock.lap("critical-speed study");
     summarise_modes(study.modes, &r);
-    static_deflections(variant.vehicle, study.system, &r);
-    metacentric_height(variant.vehicle, &lateral, &r);
+    static_deflections(vehicle, study.system, &r);
+    metacentric_height(vehicle, &lateral, &r);
     summarise_response(study, &r);
     clock.lap("summaries");
     if (rule.active()) check_deflections(rule, study, &r);
     clock.lap("deflection checks");
-    if (hunting) hunting_speed(variant.vehicle, *hunting, &r);
+    if (hunting) hunting_speed(vehicle, *hunting, &r);
     clock.lap("hunting stability");
-    ride_summary(variant, &r);
+    ride_summary(vehicle, scene, &r);
     clock.lap("ride");
   } catch (const NumericalError& e) {
     if (r.failure.empty()) r.failure = std::string("numerical failure: ") + e.what();
@@ -388,6 +402,18 @@ VariantResult evaluate_variant(const StudyVariant& variant, int index, const Def
   if (!r.ok()) r.deflections.clear();  // a check cut short is no verdict
   summarise_evaluation(&r);
   return r;
+}
+
+}  // namespace
+
+VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
+                               const std::optional<HuntingOptions>& hunting) {
+  return evaluate_in_full(variant, nullptr, index, rule, hunting);
+}
+
+VariantResult study::evaluate_owned_variant(StudyVariant&& variant, int index, const DeflectionRule& rule,
+                                            const std::optional<HuntingOptions>& hunting) {
+  return evaluate_in_full(variant, &variant, index, rule, hunting);
 }
 
 }  // namespace railmodal

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
@@ -88,7 +89,10 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
       }
       VariantResult result;
       try {
-        result = evaluate_variant(*variant, index, study.deflection_rule, hunting);
+        // A variant read here is this thread's own: given up, it is moved, not copied, into the
+        // evaluation (its name and parameters stay).
+        result = variant == &read ? evaluate_owned_variant(std::move(read), index, study.deflection_rule, hunting)
+                                  : evaluate_variant(*variant, index, study.deflection_rule, hunting);
       } catch (const std::exception& e) {  // evaluate_variant keeps design failures; this is a bug
         result = VariantResult{};
         result.index = index;

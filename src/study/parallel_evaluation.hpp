@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 
 #include "railmodal/study.hpp"
 
@@ -20,5 +21,12 @@ namespace railmodal::study {
 int evaluate_each(const Study& study, const EvaluationOptions& options,
                   const std::function<void(size_t shard_size)>& prepare,
                   const std::function<void(size_t position, VariantResult&& result)>& sink);
+
+/// evaluate_variant for a variant the caller gives up (a worker's, read for this evaluation):
+/// its vehicle and scene are moved into the evaluation instead of copied, the result is the
+/// same. `variant` keeps its name and parameters; its vehicle and scene are left valid but
+/// unspecified.
+VariantResult evaluate_owned_variant(StudyVariant&& variant, int index, const DeflectionRule& rule,
+                                     const std::optional<HuntingOptions>& hunting);
 
 }  // namespace railmodal::study

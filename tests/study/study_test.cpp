@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "railmodal/railmodal.hpp"
+#include "report/streamed_comparison.hpp"
 #include "study/study_files.hpp"
 #include "test_support.hpp"
 
@@ -509,6 +510,29 @@ overrides = { "body.cg_height" = "100 m" }
   EXPECT_NE(results[1].failure.find("unstable: mode 1, body pitch"), std::string::npos) << results[1].failure;
   const Comparison c = rank_variants(s, results);
   EXPECT_EQ(c.variants[1].result.name, "tall");
+}
+
+// The workers of an opened study move each variant they read into its evaluation instead of
+// copying it (study::evaluate_owned_variant); a variant that fails after its vehicle moved into
+// its system is described from there. Every result is the same as from the variants read by
+// load_study and evaluated by reference: the shard's JSON of each, byte for byte.
+TEST(Evaluation, AnOpenedStudyEvaluatesItsVariantsAsALoadedOne) {
+  const std::string path = study_file(R"(
+[[variant]]
+name = "tall"
+overrides = { "body.cg_height" = "100 m" }
+)");
+  EvaluationOptions in_workers;
+  in_workers.read_in_workers = true;
+  in_workers.threads = 2;
+  const auto loaded = evaluate_study(load_study(path), {});
+  const auto opened = evaluate_study(open_study(path), in_workers);
+  ASSERT_EQ(loaded.size(), 2u);
+  ASSERT_EQ(opened.size(), 2u);
+  EXPECT_NE(opened[1].failure.find("unstable: mode 1, body pitch"), std::string::npos) << opened[1].failure;
+  EXPECT_FALSE(opened[1].modes.empty());
+  for (size_t k = 0; k < loaded.size(); ++k)
+    EXPECT_EQ(report::shard_result_json(opened[k]), report::shard_result_json(loaded[k])) << "variant " << k;
 }
 
 TEST(Evaluation, StaticDeflectionOfTheTwoAxleWagonIsItsSpringDeflection) {
