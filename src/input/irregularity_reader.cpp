@@ -80,6 +80,7 @@ bool read_word(std::string_view unit, std::size_t& at, std::string_view word) {
   return true;
 }
 
+// Moves `at` past the C locale's white space: ' ', '\t', '\n', '\v', '\f', '\r'.
 void skip_density_space(std::string_view unit, std::size_t& at) {
   while (at < unit.size() && (unit[at] == ' ' || (unit[at] >= '\t' && unit[at] <= '\r'))) ++at;
 }
