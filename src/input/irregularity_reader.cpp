@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <regex>
+#include <string_view>
 
 #include "input/value_place.hpp"
 
@@ -65,22 +65,73 @@ double abscissa_scale(TableReader& t, SpectrumAbscissa abscissa) {
   t.fail("abscissa_unit", "unknown abscissa");
 }
 
+// A density unit read by a plain scan (it replaced std::regex
+// R"(^\s*(m|cm|mm)(\^2|²)\s*/\s*\(\s*(rad|cycle)\s*/\s*m\s*\)\s*$)", matched whole, which
+// made this file slow to compile), with the same matches: \s is the C locale's white space.
+struct DensityUnit {
+  double length = 0.0;  // the squared length's unit in metres
+  bool per_cycle = false;
+};
+
+// Reads the text `word` at `at` in `unit`, advancing past it; false (`at` unchanged) otherwise.
+bool read_word(std::string_view unit, std::size_t& at, std::string_view word) {
+  if (unit.compare(at, word.size(), word) != 0) return false;
+  at += word.size();
+  return true;
+}
+
+// Moves `at` past the C locale's white space: ' ', '\t', '\n', '\v', '\f', '\r'.
+void skip_density_space(std::string_view unit, std::size_t& at) {
+  while (at < unit.size() && (unit[at] == ' ' || (unit[at] >= '\t' && unit[at] <= '\r'))) ++at;
+}
+
+std::optional<DensityUnit> read_density_unit(std::string_view unit) {
+  DensityUnit u;
+  std::size_t at = 0;
+  skip_density_space(unit, at);
+  // mm and cm before m; after m only ^2 or ² follows, so the order decides nothing else.
+  if (read_word(unit, at, "mm"))
+    u.length = 1e-3;
+  else if (read_word(unit, at, "cm"))
+    u.length = 1e-2;
+  else if (read_word(unit, at, "m"))
+    u.length = 1.0;
+  else
+    return std::nullopt;
+  if (!read_word(unit, at, "^2") && !read_word(unit, at, "²")) return std::nullopt;
+  skip_density_space(unit, at);
+  if (!read_word(unit, at, "/")) return std::nullopt;
+  skip_density_space(unit, at);
+  if (!read_word(unit, at, "(")) return std::nullopt;
+  skip_density_space(unit, at);
+  if (read_word(unit, at, "cycle"))
+    u.per_cycle = true;
+  else if (!read_word(unit, at, "rad"))
+    return std::nullopt;
+  skip_density_space(unit, at);
+  if (!read_word(unit, at, "/")) return std::nullopt;
+  skip_density_space(unit, at);
+  if (!read_word(unit, at, "m")) return std::nullopt;
+  skip_density_space(unit, at);
+  if (!read_word(unit, at, ")")) return std::nullopt;
+  skip_density_space(unit, at);
+  if (at != unit.size()) return std::nullopt;
+  return u;
+}
+
 // `density_unit = "mm^2/(cycle/m)"`: a squared length per rad/m or per cycle/m. Returns the SI
 // factor to the density TrackSpectrum::table takes for `abscissa` (per rad/m for a wavenumber,
 // per cycle/m otherwise): a density per cycle/m is 2π times the same spectrum per rad/m.
 double density_scale(TableReader& t, SpectrumAbscissa abscissa) {
-  const std::string unit = t.string("density_unit");
-  static const std::regex form(R"(^\s*(m|cm|mm)(\^2|²)\s*/\s*\(\s*(rad|cycle)\s*/\s*m\s*\)\s*$)");
-  std::smatch m;
-  if (!std::regex_match(unit, m, form))
+  const std::string text = t.string("density_unit");
+  const std::optional<DensityUnit> unit = read_density_unit(text);
+  if (!unit)
     t.fail("density_unit", "expected a squared length per rad/m or per cycle/m, such as \"m^2/(rad/m)\" or "
-                           "\"mm^2/(cycle/m)\", not '" + unit + "'");
-  const double length = m[1] == "m" ? 1.0 : m[1] == "cm" ? 1e-2 : 1e-3;
-  const bool per_cycle = m[3] == "cycle";
+                           "\"mm^2/(cycle/m)\", not '" + text + "'");
   const bool wants_per_cycle = abscissa != SpectrumAbscissa::wavenumber;
-  double factor = length * length;
-  if (per_cycle && !wants_per_cycle) factor /= 2.0 * kPi;  // S(Ω) = S_n(Ω/2π)/2π
-  if (!per_cycle && wants_per_cycle) factor *= 2.0 * kPi;  // S_n(n) = 2π S(2πn)
+  double factor = unit->length * unit->length;
+  if (unit->per_cycle && !wants_per_cycle) factor /= 2.0 * kPi;  // S(Ω) = S_n(Ω/2π)/2π
+  if (!unit->per_cycle && wants_per_cycle) factor *= 2.0 * kPi;  // S_n(n) = 2π S(2πn)
   return factor;
 }
 

@@ -2,7 +2,7 @@
 //                         [--merge SHARD.json ...] [--top K]
 #include <iostream>
 #include <memory>
-#include <regex>
+#include <string_view>
 #include <system_error>
 
 #include "commands.hpp"
@@ -29,13 +29,28 @@ struct CompareOptions {
 constexpr int kMaxShards = static_cast<int>(kMaxStudyVariants);
 static_assert(kMaxStudyVariants < 10000000, "parse_shard reads at most 7 digits");
 
-// "K/N" into evaluation->shard and shards; false if it is not 1 <= K <= N <= kMaxShards.
+// The value of 1 to 7 ASCII digits (7: kMaxShards, without overflow), or -1 for anything else.
+int shard_number(std::string_view digits) {
+  if (digits.empty() || digits.size() > 7) return -1;
+  int value = 0;
+  for (const char c : digits) {
+    if (c < '0' || c > '9') return -1;
+    value = value * 10 + (c - '0');
+  }
+  return value;
+}
+
+// "K/N" into evaluation->shard and shards; false if it is not 1 <= K <= N <= kMaxShards. A plain
+// scan rather than std::regex R"((\d{1,7})/(\d{1,7}))" (which made this file slow to compile),
+// with the same matches.
 bool parse_shard(const std::string& text, EvaluationOptions* evaluation) {
-  std::smatch m;
-  static const std::regex pattern(R"((\d{1,7})/(\d{1,7}))");  // 7 digits: kMaxShards, without overflow
-  if (!std::regex_match(text, m, pattern)) return false;
-  evaluation->shard = std::stoi(m[1]);
-  evaluation->shards = std::stoi(m[2]);
+  const std::size_t slash = text.find('/');
+  if (slash == std::string::npos) return false;
+  const int shard = shard_number(std::string_view(text).substr(0, slash));
+  const int shards = shard_number(std::string_view(text).substr(slash + 1));
+  if (shard < 0 || shards < 0) return false;
+  evaluation->shard = shard;
+  evaluation->shards = shards;
   return evaluation->shard >= 1 && evaluation->shard <= evaluation->shards && evaluation->shards <= kMaxShards;
 }
 
