@@ -134,6 +134,13 @@ struct RideOptions {
   /// Keep every output PSD on the grid (RideOutputAtSpeed::psd): reports plot them. Off, only
   /// the indices are kept (studies).
   bool keep_spectra = true;
+  /// Only each output's RMS and weighted RMS, for a user (a speed scan, a study's metric) who
+  /// needs no more: no modal shares (RideOutputAtSpeed::modes empty, cross_term_variance σ²),
+  /// no Sperling Wz, P95 estimate or N_MV (RideAtSpeed::comfort empty), no direct_variance and
+  /// no grid error estimate (grid_error_estimate 0, its check left out of the summary; a note
+  /// says so). The RMS and weighted RMS are bit for bit the full solve's (docs/ride.md,
+  /// "Performance").
+  bool rms_only = false;
   bool is_valid(std::string* why) const;
 };
 

@@ -161,9 +161,10 @@ RideOutputAtSpeed output_at_speed(const Problem& p, const RideOutput& o, const r
                                   const Eigen::VectorXd& psd, const std::vector<double>& modal,
                                   const std::vector<ride::BandWeights>& bands, double* grid_error) {
   RideOutputAtSpeed r;
+  const bool rms_only = p.options->rms_only;
   const double variance = ride::integral(power, bands, Eigen::VectorXd());
   r.rms = std::sqrt(std::max(variance, 0.0));
-  if (variance > 0.0) {
+  if (variance > 0.0 && !rms_only) {
     const double coarse = std::sqrt(std::max(ride::integral(power, bands, Eigen::VectorXd(), true), 0.0));
     *grid_error = std::max(*grid_error, std::abs(coarse - r.rms) / r.rms);
   }
@@ -171,11 +172,13 @@ RideOutputAtSpeed output_at_speed(const Problem& p, const RideOutput& o, const r
     const Eigen::VectorXd& w = o.axis == RideAxis::vertical ? p.wb2 : p.wd2;
     const double weighted = ride::integral(power, bands, w);
     r.weighted_rms = std::sqrt(std::max(weighted, 0.0));
-    r.p95_estimate = ride::rms_quantile(weighted, ride::integral_of_square(power, bands, p.grid, w),
-                                        p.options->percentile_window, 0.95);
-    if (o.axis != RideAxis::longitudinal)
-      r.sperling_wz = sperling_wz_from_weighted_rms(std::sqrt(std::max(
-          ride::integral(power, bands, o.axis == RideAxis::vertical ? p.sperling_v2 : p.sperling_l2), 0.0)));
+    if (!rms_only) {  // RideOptions::rms_only: no P95 and no Wz
+      r.p95_estimate = ride::rms_quantile(weighted, ride::integral_of_square(power, bands, p.grid, w),
+                                          p.options->percentile_window, 0.95);
+      if (o.axis != RideAxis::longitudinal)
+        r.sperling_wz = sperling_wz_from_weighted_rms(std::sqrt(std::max(
+            ride::integral(power, bands, o.axis == RideAxis::vertical ? p.sperling_v2 : p.sperling_l2), 0.0)));
+    }
   }
   double modal_sum = 0.0;
   for (size_t j = 0; j < modal.size(); ++j) {
@@ -271,7 +274,7 @@ SpeedOutcome solve_speed(const Problem& p, double speed) {
       for (const ride::FrictionElement& f : p.friction) maps.push_back(ride::stretch_rate_map(system, f.element));
       const ride::Receptances r = ride::receptances(system, p.components, maps, p.grid,
                                                     p.truncation.size() ? &p.truncation : nullptr, nullptr);
-      const ride::SpeedSpectra sp = ride::speed_spectra(system, r, p.components, p.grid, speed, bands);
+      const ride::SpeedSpectra sp = ride::speed_spectra(system, r, p.components, p.grid, speed, bands, false);
       std::vector<double> sigma;
       for (const ride::ComponentPower& power : sp.outputs)
         sigma.push_back(std::sqrt(std::max(ride::integral(power, bands, Eigen::VectorXd()), 0.0)));
@@ -290,7 +293,8 @@ SpeedOutcome solve_speed(const Problem& p, double speed) {
                                                 : ride::output_maps(system, *p.outputs, friction_damping, contact, speed);
   const bool shared = friction_damping.empty() && !p.contact;
   const ride::Receptances own = shared ? ride::Receptances{} : receptances_of(p, system, maps);
-  const ride::SpeedSpectra sp = ride::speed_spectra(system, shared ? p.shared : own, p.components, p.grid, speed, bands);
+  const ride::SpeedSpectra sp = ride::speed_spectra(system, shared ? p.shared : own, p.components, p.grid, speed, bands,
+                                                    p.options->keep_spectra);
   std::vector<std::string> driven;
   std::vector<bool> unbounded = unbounded_outputs(p, system, maps, speed, &driven);
   if (p.contact && !ride::decays(ride::first_order_roots(system))) {
@@ -310,13 +314,13 @@ SpeedOutcome solve_speed(const Problem& p, double speed) {
     }
     s.at.outputs.push_back(output_at_speed(p, (*p.outputs)[o], sp.outputs[o], sp.psd[o], sp.modal_variance[o], bands,
                                            &grid_error[o]));
-    s.at.outputs.back().direct_variance = direct_variance(p, system, maps[o], sp, bands, speed);
+    if (!p.options->rms_only) s.at.outputs.back().direct_variance = direct_variance(p, system, maps[o], sp, bands, speed);
   }
   set_round_off_apart(*p.outputs, grid_error, &s);
   for (const std::string& d : driven)
     s.notes.push_back("at " + shortest_text(speed * 3.6, 6) + " km/h the track excites the undamped mode " + d +
                       ": the outputs it moves have an unbounded RMS");
-  s.at.comfort = comfort(*p.outputs, s.at.outputs, &s.notes);
+  if (!p.options->rms_only) s.at.comfort = comfort(*p.outputs, s.at.outputs, &s.notes);
   if (p.options->keep_spectra) s.at.input_psd = sp.input_psd;
   return s;
 }
@@ -357,7 +361,7 @@ Problem prepare(const LinearSystem& system, const TrackIrregularitySpectra& trac
   // without it would name motions the vehicle does not have, so none are given.
   std::vector<const Mode*> split;
   for (const Mode* m : p.oscillatory)
-    if ((options.modes == 0 || m->index <= truncated) && !p.contact) split.push_back(m);
+    if ((options.modes == 0 || m->index <= truncated) && !p.contact && !options.rms_only) split.push_back(m);
   Eigen::MatrixXd shapes(n, static_cast<Eigen::Index>(split.size()));
   for (size_t j = 0; j < split.size(); ++j) shapes.col(j) = split[j]->shape;
   p.contributions.shapes = shapes;
@@ -409,19 +413,28 @@ void build_grid(Problem* p, const RideOptions& options) {
     }
   p->grid = ride::frequency_grid(options, grid_modes, extra, avoid);
   p->notes = band_notes(*p, options);
+  // Each weighting only where an output reads it (output_at_speed): a vertical acceleration
+  // Wb (and Sperling's vertical B unless rms_only), a lateral or longitudinal one Wd (and the
+  // lateral B for a lateral one unless rms_only).
+  bool vertical = false, horizontal = false, lateral = false;
+  for (const RideOutput& o : *p->outputs)
+    if (o.kind == RideOutput::Kind::point && o.quantity == ResponseQuantity::acceleration) {
+      (o.axis == RideAxis::vertical ? vertical : horizontal) = true;
+      lateral = lateral || o.axis == RideAxis::lateral;
+    }
   const Eigen::Index K = p->grid.size();
-  p->wb2.resize(K);
-  p->wd2.resize(K);
-  p->sperling_v2.resize(K);
-  p->sperling_l2.resize(K);
   const FrequencyWeighting wb = en12299_wb(), wd = en12299_wd();
-  for (Eigen::Index k = 0; k < K; ++k) {
-    const double f = p->grid(k);
-    p->wb2(k) = std::norm(wb.response(f));
-    p->wd2(k) = std::norm(wd.response(f));
-    p->sperling_v2(k) = std::pow(sperling_weighting(f, SperlingDirection::vertical), 2);
-    p->sperling_l2(k) = std::pow(sperling_weighting(f, SperlingDirection::lateral), 2);
-  }
+  auto fill = [&](bool wanted, Eigen::VectorXd* w2, auto weight) {
+    if (!wanted) return;
+    w2->resize(K);
+    for (Eigen::Index k = 0; k < K; ++k) (*w2)(k) = weight(p->grid(k));
+  };
+  fill(vertical, &p->wb2, [&](double f) { return std::norm(wb.response(f)); });
+  fill(horizontal, &p->wd2, [&](double f) { return std::norm(wd.response(f)); });
+  fill(vertical && !options.rms_only, &p->sperling_v2,
+       [](double f) { return std::pow(sperling_weighting(f, SperlingDirection::vertical), 2); });
+  fill(lateral && !options.rms_only, &p->sperling_l2,
+       [](double f) { return std::pow(sperling_weighting(f, SperlingDirection::lateral), 2); });
 }
 
 // Each speed on its own; `threads` workers take every threads-th speed.
@@ -514,8 +527,9 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
     for (const std::string& note : s.notes)
       if (std::find(result.notes.begin(), result.notes.end(), note) == result.notes.end()) result.notes.push_back(note);
   }
-  result.summary.checks.push_back({"grid error estimate (largest relative RMS change on halving the grid)",
-                                   result.grid_error_estimate, std::numeric_limits<double>::infinity(), true});
+  if (!options.rms_only)
+    result.summary.checks.push_back({"grid error estimate (largest relative RMS change on halving the grid)",
+                                     result.grid_error_estimate, std::numeric_limits<double>::infinity(), true});
   if (p.friction.empty()) {
     result.friction_treatment = "none in the vehicle";
   } else {
@@ -548,7 +562,11 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
     result.notes.push_back("H(f) by modal superposition over the " + std::to_string(p.truncation.cols()) +
                            " lowest modes: the response misses the higher modes' share (docs/accuracy.md, "
                            "\"Ride: modal truncation\")");
-  result.notes.push_back("P95 and N_MV are estimates for a stationary Gaussian process (chi-square with ν = "
+  if (options.rms_only)
+    result.notes.push_back("rms_only: each output's RMS and weighted RMS only (no modal shares, Sperling Wz, P95, N_MV "
+                           "or grid error estimate)");
+  else
+    result.notes.push_back("P95 and N_MV are estimates for a stationary Gaussian process (chi-square with ν = "
                          "2T(∫S)²/∫S², T = " + shortest_text(options.percentile_window) + " s), not the statistic of "
                          "measured 5-s windows; that ν takes T long against the response's correlation time, so for a "
                          "narrow-band response the estimate reads high (+5.9 % for a 1 Hz mode at ζ = 0.05, +0.9 % at "

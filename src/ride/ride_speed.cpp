@@ -27,7 +27,8 @@ std::vector<BandWeights> speed_bands(const std::vector<Component>& components, c
 }
 
 SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, const std::vector<Component>& components,
-                           const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands) {
+                           const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands,
+                           bool with_psd) {
   (void)system;  // the inputs' positions are the receptances' own (Receptances::x)
   const int m = r.inputs, C = r.components, O = r.outputs, J = r.modes;
   const Eigen::Index K = grid.size();
@@ -35,7 +36,7 @@ SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, con
 
   SpeedSpectra s;
   s.outputs.assign(O, ComponentPower{std::vector<Eigen::VectorXd>(C, Eigen::VectorXd::Zero(K))});
-  s.psd.assign(O, Eigen::VectorXd::Zero(K));
+  s.psd.assign(O, with_psd ? Eigen::VectorXd::Zero(K) : Eigen::VectorXd());
   s.modal_variance.assign(O, std::vector<double>(J, 0.0));
   s.input_psd.assign(C, Eigen::VectorXd::Zero(K));
   // G_c inside the band: the density at the wavenumber clamped to the band, so that an edge
@@ -130,7 +131,7 @@ SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, con
         combine(column + (static_cast<size_t>(o) * C + c) * m, &re, &im);
         const double h2 = re * re + im * im;
         s.outputs[o].power[c](k) = h2 * inside_density(c, k);
-        s.psd[o](k) += h2 * s.input_psd[c](k);
+        if (with_psd) s.psd[o](k) += h2 * s.input_psd[c](k);
       }
     if (J == 0) continue;
     // H_{c,j} = (a·φ_j)(φ_jᵀM Y_c): mode j's term of each output, needed only where a band

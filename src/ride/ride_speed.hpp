@@ -25,8 +25,10 @@ struct SpeedSpectra {
 /// H_c(f) = Σ_g h_{c,g}(f)·e^{−iωτ_g} over the input groups, τ_g = (x_front − x_g)/V with x_g
 /// from Receptances::x (x forward; `system` is not read), and what the indices need of it (the
 /// modal variances when `r` holds modal terms), at the grid points the speed's bands need: the
-/// power and PSD elsewhere are left zero, where every index weighs them by zero.
+/// power and PSD elsewhere are left zero, where every index weighs them by zero. Without
+/// `with_psd` SpeedSpectra::psd holds empty vectors (no index reads it: only the kept spectra).
 SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, const std::vector<Component>& components,
-                           const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands);
+                           const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands,
+                           bool with_psd);
 
 }  // namespace railmodal::ride

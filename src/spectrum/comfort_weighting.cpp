@@ -51,9 +51,14 @@ std::complex<double> quadratic(std::complex<double> s, double f, double q) {
 }  // namespace
 
 bool FrequencyWeighting::is_valid(std::string* why) const {
-  std::ostringstream out;
+  // The first bad field's text, built only then: response() checks at every frequency, and a
+  // stream constructed per call was most of a ride grid's weighting cost.
+  std::string bad;
   const auto check = [&](double value, const char* field) {
-    if (!positive_finite(value) && out.tellp() == 0) out << field << " must be positive and finite, got " << value;
+    if (positive_finite(value) || !bad.empty()) return;
+    std::ostringstream out;
+    out << field << " must be positive and finite, got " << value;
+    bad = out.str();
   };
   check(f1, "f1");
   check(q1, "q1");
@@ -69,8 +74,8 @@ bool FrequencyWeighting::is_valid(std::string* why) const {
     check(q6, "q6");
   }
   check(gain, "gain");
-  if (out.tellp() == 0) return true;
-  if (why) *why = name + ": " + out.str();
+  if (bad.empty()) return true;
+  if (why) *why = name + ": " + bad;
   return false;
 }
 

@@ -123,5 +123,40 @@ TEST(RideSpeed, ResultNamesTheInputSpectraInInputPsdOrder) {
   EXPECT_EQ(r.speeds[0].input_psd.size(), r.inputs.size());
 }
 
+// RideOptions::rms_only: the same RMS and weighted RMS bit for bit (the same sums over the same
+// points; only the other indices' work is skipped), and none of the other indices.
+TEST(RideSpeed, RmsOnlyGivesTheFullSolvesRmsAndNothingElse) {
+  RideOutput floor = bounce_output();
+  floor.quantity = ResponseQuantity::acceleration;
+  RideOptions full;
+  full.speeds = {20.0, 40.0};
+  RideOptions only = full;
+  only.rms_only = true;
+  const LinearSystem system = test::bouncing_mass(3e4, 1e6, 3e4, {4.0, -4.0});
+  const TrackIrregularitySpectra track = white_level(2 * kPi / 50.0, 2 * kPi / 2.0);
+  const RideResult a = solve_ride(system, track, {floor}, full), b = solve_ride(system, track, {floor}, only);
+  ASSERT_EQ(b.speeds.size(), a.speeds.size());
+  for (size_t v = 0; v < a.speeds.size(); ++v) {
+    const RideOutputAtSpeed &x = a.speeds[v].outputs[0], &y = b.speeds[v].outputs[0];
+    EXPECT_GT(x.rms, 0.0);
+    EXPECT_EQ(y.rms, x.rms);
+    ASSERT_TRUE(x.weighted_rms && y.weighted_rms);
+    EXPECT_EQ(*y.weighted_rms, *x.weighted_rms);
+    EXPECT_TRUE(x.p95_estimate && x.sperling_wz && !x.modes.empty() && !a.speeds[v].comfort.empty());
+    EXPECT_FALSE(y.p95_estimate || y.sperling_wz);
+    EXPECT_TRUE(y.modes.empty());
+    EXPECT_TRUE(b.speeds[v].comfort.empty());
+    EXPECT_DOUBLE_EQ(y.cross_term_variance, y.rms * y.rms);  // σ² with no shares (4 ulps: the square root's round-off)
+    EXPECT_EQ(y.psd.size(), x.psd.size());                    // keep_spectra still keeps the PSD
+    EXPECT_EQ(y.psd, x.psd);
+  }
+  EXPECT_GT(a.grid_error_estimate, 0.0);
+  EXPECT_EQ(b.grid_error_estimate, 0.0);
+  for (const Check& c : b.summary.checks) EXPECT_EQ(c.name.find("grid error"), std::string::npos) << c.name;
+  bool said = false;
+  for (const std::string& n : b.notes) said = said || n.rfind("rms_only", 0) == 0;
+  EXPECT_TRUE(said);
+}
+
 }  // namespace
 }  // namespace railmodal

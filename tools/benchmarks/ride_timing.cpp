@@ -3,18 +3,23 @@
 // (10, 20, …, 200 km/h) over a fixed grid of about 10⁴ frequencies (0.1 … 80 Hz), the vertical
 // floor acceleration over each bogie centre and at mid-car.
 //
-//   ride_timing OUT.json REPEATS   times solve_ride in this process and prints "ride_s T" and
-//                                  "ride_cpu_s T" (wall and processor time, medians of REPEATS
-//                                  runs), then writes M, C, K, the DOF labels, the bodies'
-//                                  reference points, the track inputs (vertical columns and
-//                                  their x), the output points, the speeds, the grid and
-//                                  railmodal's RMS and weighted RMS to OUT.json for the script
-//                                  to redo and compare
+//   ride_timing OUT.json REPEATS   times solve_ride in this process, the full solve and the one
+//                                  with RideOptions::rms_only, interleaved, and prints "ride_s T",
+//                                  "ride_cpu_s T", "ride_rms_s T" and "ride_rms_cpu_s T" (wall
+//                                  and processor time, medians of REPEATS runs each), then writes
+//                                  M, C, K, the DOF labels, the bodies' reference points, the
+//                                  track inputs (vertical columns and their x), the output
+//                                  points, the speeds, the grid and railmodal's figures (RMS,
+//                                  weighted RMS, Sperling's Wz, P95, N_MV, the modal shares, the
+//                                  grid error estimate; the rms_only solve's RMS too) to
+//                                  OUT.json for the script to redo and compare
 //   ride_timing --model OUT.json   writes the model part of that JSON only (no solve): what the
 //                                  script's reference table needs
-//   ride_timing --once             the whole job once, as a user's program would do it: read the
-//                                  vehicle file, assemble, solve, print the RMS table (what
-//                                  compare_ride.py times as a whole process)
+//   ride_timing --once [--rms-only]  the whole job once, as a user's program would do it: read
+//                                  the vehicle file, assemble, solve, print the table (RMS and
+//                                  weighted RMS; without --rms-only Wz, P95 and N_MV too, and
+//                                  the grid error estimate): what compare_ride.py times as a
+//                                  whole process
 //
 // Everything goes through the public API; nothing here computes a response itself.
 #include <algorithm>
@@ -65,53 +70,91 @@ nlohmann::json model_json(const Setup& s) {
   return benchmarks::coach_model_json(s.system, s.outputs, kLongestWavelength, kShortestWavelength);
 }
 
-int once() {
-  const Setup s = setup();
+int once(bool rms_only) {
+  Setup s = setup();
+  s.options.rms_only = rms_only;
   const RideResult r = solve_ride(s.system, s.track, s.outputs, s.options);
   std::cout << "km/h";
-  for (const RideOutput& o : r.outputs) std::cout << "\t" << o.name << " RMS\tweighted";
+  for (const RideOutput& o : r.outputs)
+    std::cout << "\t" << o.name << " RMS\tweighted" << (rms_only ? "" : "\tWz\tP95\tN_MV");
   std::cout << "\n";
   for (const RideAtSpeed& at : r.speeds) {
     std::cout << at.speed * 3.6;
-    for (const RideOutputAtSpeed& o : at.outputs) std::cout << "\t" << o.rms << "\t" << o.weighted_rms.value_or(0.0);
+    for (size_t o = 0; o < at.outputs.size(); ++o) {
+      const RideOutputAtSpeed& out = at.outputs[o];
+      std::cout << "\t" << out.rms << "\t" << out.weighted_rms.value_or(0.0);
+      if (!rms_only)
+        std::cout << "\t" << out.sperling_wz.value_or(0.0) << "\t" << out.p95_estimate.value_or(0.0) << "\t"
+                  << (o < at.comfort.size() ? at.comfort[o].nmv_estimate : 0.0);
+    }
     std::cout << "\n";
   }
+  if (!rms_only) std::cout << "grid error estimate " << r.grid_error_estimate << "\n";
   return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc == 2 && std::string(argv[1]) == "--once") return once();
+  if (argc >= 2 && std::string(argv[1]) == "--once")
+    return once(argc == 3 && std::string(argv[2]) == "--rms-only");
   if (argc == 3 && std::string(argv[1]) == "--model") {
     std::ofstream(argv[2]) << model_json(setup()).dump();
     return 0;
   }
   if (argc != 3) {
-    std::cerr << "usage: ride_timing OUT.json REPEATS | ride_timing --model OUT.json | ride_timing --once\n";
+    std::cerr << "usage: ride_timing OUT.json REPEATS | ride_timing --model OUT.json | ride_timing --once [--rms-only]\n";
     return 2;
   }
   const int repeats = std::max(1, std::atoi(argv[2]));
   const Setup s = setup();
-  RideResult r;
-  benchmarks::Stopwatch ride;
-  for (int k = 0; k < repeats; ++k) ride.time([&] { r = solve_ride(s.system, s.track, s.outputs, s.options); });
-  std::cout << "ride_s " << ride.median_wall() << "\nride_cpu_s " << ride.median_cpu() << "\n";
+  RideOptions rms_only = s.options;
+  rms_only.rms_only = true;
+  RideResult r, q;
+  benchmarks::Stopwatch ride, ride_rms;
+  for (int k = 0; k < repeats; ++k) {  // interleaved: both see the same load
+    ride.time([&] { r = solve_ride(s.system, s.track, s.outputs, s.options); });
+    ride_rms.time([&] { q = solve_ride(s.system, s.track, s.outputs, rms_only); });
+  }
+  std::cout << "ride_s " << ride.median_wall() << "\nride_cpu_s " << ride.median_cpu() << "\nride_rms_s "
+            << ride_rms.median_wall() << "\nride_rms_cpu_s " << ride_rms.median_cpu() << "\n";
   std::cerr << "ride_timing: " << s.system.size() << " DOFs, " << s.system.track_inputs.size() << " track inputs, "
             << r.frequencies.size() << " frequencies, " << r.speeds.size() << " speeds, " << r.outputs.size()
             << " outputs; grid error estimate " << r.grid_error_estimate << "\n";
 
   nlohmann::json j = model_json(s);
   j["frequencies"] = std::vector<double>(r.frequencies.data(), r.frequencies.data() + r.frequencies.size());
-  for (const RideAtSpeed& at : r.speeds) {
-    nlohmann::json rms = nlohmann::json::array(), weighted = nlohmann::json::array();
-    for (const RideOutputAtSpeed& o : at.outputs) {
-      rms.push_back(o.rms);
-      weighted.push_back(o.weighted_rms.value_or(-1.0));
+  j["grid_error_estimate"] = r.grid_error_estimate;
+  for (size_t v = 0; v < r.speeds.size(); ++v) {
+    const RideAtSpeed& at = r.speeds[v];
+    nlohmann::json rms = nlohmann::json::array(), weighted = nlohmann::json::array(), wz = nlohmann::json::array(),
+                   p95 = nlohmann::json::array(), nmv = nlohmann::json::array(), modal = nlohmann::json::array(),
+                   cross = nlohmann::json::array(), only_rms = nlohmann::json::array(),
+                   only_weighted = nlohmann::json::array();
+    for (size_t o = 0; o < at.outputs.size(); ++o) {
+      const RideOutputAtSpeed& out = at.outputs[o];
+      rms.push_back(out.rms);
+      weighted.push_back(out.weighted_rms.value_or(-1.0));
+      wz.push_back(out.sperling_wz.value_or(-1.0));
+      p95.push_back(out.p95_estimate.value_or(-1.0));
+      nmv.push_back(o < at.comfort.size() ? at.comfort[o].nmv_estimate : -1.0);
+      std::vector<double> shares(r.modes.size(), 0.0);  // by mode, lowest first
+      for (const ModalContribution& c : out.modes) shares[c.mode] = c.variance;
+      modal.push_back(shares);
+      cross.push_back(out.cross_term_variance);
+      only_rms.push_back(q.speeds[v].outputs[o].rms);
+      only_weighted.push_back(q.speeds[v].outputs[o].weighted_rms.value_or(-1.0));
     }
     j["speeds"].push_back(at.speed);
     j["rms"].push_back(rms);
     j["weighted_rms"].push_back(weighted);
+    j["sperling_wz"].push_back(wz);
+    j["p95"].push_back(p95);
+    j["nmv"].push_back(nmv);
+    j["modal_variance"].push_back(modal);
+    j["cross_term_variance"].push_back(cross);
+    j["rms_only_rms"].push_back(only_rms);
+    j["rms_only_weighted_rms"].push_back(only_weighted);
   }
   std::ofstream(argv[1]) << j.dump();
   return 0;
