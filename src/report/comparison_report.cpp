@@ -543,39 +543,18 @@ void report::write_streamed_comparison(std::ostream& out, const Comparison& head
   }
 }
 
-std::string report::shard_result_json(const VariantResult& r) {
-  std::ostringstream document;
-  {
-    JsonWriter j(document, 1);
-    j.begin_object().key("results").begin_array();
-    write_result(j, r, nullptr);
-    j.end_array().end_object();
-  }
-  const std::string text = document.str();
-  const std::string open = "{\n \"results\": [\n", close = "\n ]\n}\n";
-  return text.substr(open.size(), text.size() - open.size() - close.size());
-}
+namespace {
 
-void report::write_streamed_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
-                                  size_t count, const std::function<std::string(size_t)>& result_at,
-                                  const Provenance& inputs) {
-  std::ostringstream document;
-  write_shard(document, study, options, {}, inputs);
-  const std::string text = document.str();
-  const std::string empty = "\"results\": []";
-  const size_t at = text.find(empty) + empty.size() - 1;  // before the closing bracket
-  if (count == 0) {
-    out << text;
-    return;
-  }
-  out << text.substr(0, at);
-  for (size_t k = 0; k < count; ++k) out << (k == 0 ? "\n" : ",\n") << result_at(k);
-  out << "\n " << text.substr(at);
-}
+// The shard's depth: its results' array holds each result two levels deep (object, array), laid
+// out one space a level, as the shard files had it.
+constexpr int kShardIndent = 1;
+constexpr size_t kShardResultDepth = 2;
 
-void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
-                 const std::vector<VariantResult>& results, const Provenance& inputs) {
-  JsonWriter j(out, 1);  // one space a level, as the shard files had it
+// A shard's document (write_shard) in one pass, its results written by `write_results` into the
+// "results" array.
+void write_shard_document(std::ostream& out, const Study& study, const EvaluationOptions& options,
+                          const std::function<void(JsonWriter&)>& write_results, const Provenance& inputs) {
+  JsonWriter j(out, kShardIndent);
   j.begin_object();
   j.member("format", "railmodal-compare-shard");
   if (!inputs.files.empty()) {
@@ -585,11 +564,41 @@ void write_shard(std::ostream& out, const Study& study, const EvaluationOptions&
   }
   j.member("permissible_dynamic_deflection", to_string(study.deflection_rule));
   j.key("results").begin_array();
-  for (const auto& r : results) write_result(j, r, nullptr);
+  write_results(j);
   j.end_array();
   j.member("shard", options.shard).member("shards", options.shards).member("study", study.name);
   j.member("variant_count", variant_count(study));
   j.end_object();
+}
+
+}  // namespace
+
+std::string report::shard_result_json(const VariantResult& r) {
+  std::ostringstream text;
+  JsonWriter j(text, kShardIndent, kShardResultDepth);
+  write_result(j, r, nullptr);  // its outermost end flushes
+  return text.str();
+}
+
+void report::write_streamed_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
+                                  size_t count, const std::function<std::string(size_t)>& result_at,
+                                  const Provenance& inputs) {
+  write_shard_document(
+      out, study, options,
+      [&](JsonWriter& j) {
+        for (size_t k = 0; k < count; ++k) j.raw(result_at(k));
+      },
+      inputs);
+}
+
+void write_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,
+                 const std::vector<VariantResult>& results, const Provenance& inputs) {
+  write_shard_document(
+      out, study, options,
+      [&](JsonWriter& j) {
+        for (const auto& r : results) write_result(j, r, nullptr);
+      },
+      inputs);
 }
 
 }  // namespace railmodal

@@ -82,7 +82,7 @@ void JsonWriter::flush() {
 void JsonWriter::new_line() {
   if (indent_ < 0) return;
   buffer_ += '\n';
-  buffer_.append(static_cast<size_t>(indent_) * open_.size(), ' ');
+  buffer_.append(static_cast<size_t>(indent_) * (depth_ + open_.size()), ' ');
 }
 
 void JsonWriter::before_value() {
@@ -120,7 +120,7 @@ JsonWriter& JsonWriter::close(char bracket) {
   if (any) new_line();
   buffer_ += bracket;
   if (open_.empty()) {
-    if (indent_ >= 0) buffer_ += '\n';
+    if (indent_ >= 0 && depth_ == 0) buffer_ += '\n';
     flush();
   }
   return *this;

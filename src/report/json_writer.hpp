@@ -17,6 +17,7 @@
 //   j.end_object();  // the outermost end writes "\n" and flushes
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -32,6 +33,10 @@ class JsonWriter {
   /// compact, on one line with no spaces (dump()), for a value embedded in a line of text, so
   /// the outermost end writes no line break.
   explicit JsonWriter(std::ostream& out, int indent = 2) : out_(out), indent_(indent) {}
+  /// A value laid out as it stands `depth` levels deep in a document of `indent`, for a writer
+  /// of that document to insert later with raw() (a shard's result kept in a temporary file
+  /// until the results can be written in order); its outermost end writes no line break.
+  JsonWriter(std::ostream& out, int indent, size_t depth) : out_(out), indent_(indent), depth_(depth) {}
   JsonWriter(const JsonWriter&) = delete;
   JsonWriter& operator=(const JsonWriter&) = delete;
   ~JsonWriter() { flush(); }
@@ -56,6 +61,9 @@ class JsonWriter {
   JsonWriter& value(Integer n) {
     return integer(static_cast<long long>(n));
   }
+  /// `laid_out`, the text of a value that a JsonWriter(out, indent, depth) of this writer's
+  /// indent wrote at this depth, inserted as it is.
+  JsonWriter& raw(std::string_view laid_out) { return literal(laid_out); }
   /// An array of the elements, each written by value().
   template <typename T>
   JsonWriter& value(const std::vector<T>& elements) {
@@ -89,6 +97,7 @@ class JsonWriter {
 
   std::ostream& out_;
   const int indent_;
+  const size_t depth_ = 0;  // the levels around the outermost value that another writer writes
   std::string buffer_;
   // Per open container: its bracket and whether it has an element yet.
   std::vector<std::pair<char, bool>> open_;

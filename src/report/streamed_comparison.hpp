@@ -25,11 +25,13 @@ study::StreamedRanking::Render streamed_row(const Ranking& ranking, const Deflec
 void write_streamed_comparison(std::ostream& out, const Comparison& head, const study::StreamedRanking& ranked,
                                OutputFormat format);
 
-/// A result's JSON object as it stands in a shard's "results" array (write_shard).
+/// A result's JSON object laid out as it stands in a shard's "results" array (write_shard),
+/// without the line break and indentation before it, for write_streamed_shard to insert.
 std::string shard_result_json(const VariantResult& r);
 
-/// Writes the bytes write_shard writes of the shard's `count` results, from the text
-/// shard_result_json made of each (result_at(0), result_at(1), ... in index order).
+/// Writes the bytes write_shard writes of the shard's `count` results in one pass, each
+/// inserted where write_shard would write it from the text shard_result_json made of it
+/// (result_at(0), result_at(1), ... in index order).
 void write_streamed_shard(std::ostream& out, const Study& study, const EvaluationOptions& options, size_t count,
                           const std::function<std::string(size_t)>& result_at, const Provenance& inputs);
 

@@ -115,6 +115,41 @@ TEST(JsonWriter, StreamsALongArrayWhole) {
   EXPECT_EQ(nlohmann::json::parse(out.str())["values"].get<std::vector<double>>(), values);
 }
 
+// A value laid out apart at the depth where it will stand (a shard's result kept in a temporary
+// file) and inserted with raw() gives the bytes of writing it in place, at every indent, first
+// element or not, empty or not; and the outermost end of the value writes no line break.
+TEST(JsonWriter, AValueLaidOutApartIsInsertedAsWrittenInPlace) {
+  const auto element = [](JsonWriter& j, int n) {
+    j.begin_object().member("n", n).key("values").begin_array();
+    for (int i = 0; i < n; ++i) j.value(i * 0.5);
+    j.end_array().end_object();
+  };
+  for (int indent : {-1, 1, 2}) {
+    std::ostringstream in_place, inserted;
+    {
+      JsonWriter j(in_place, indent);
+      j.begin_object().key("results").begin_array();
+      for (int n : {0, 2}) element(j, n);
+      j.end_array().end_object();
+    }
+    {
+      JsonWriter j(inserted, indent);
+      j.begin_object().key("results").begin_array();
+      for (int n : {0, 2}) {
+        std::ostringstream apart;
+        {
+          JsonWriter a(apart, indent, 2);
+          element(a, n);
+        }
+        EXPECT_NE(apart.str().back(), '\n') << indent;
+        j.raw(apart.str());
+      }
+      j.end_array().end_object();
+    }
+    EXPECT_EQ(inserted.str(), in_place.str()) << indent;
+  }
+}
+
 // Repeated names are written once, the last of them, and in bytewise order.
 TEST(JsonWriter, MemberOrderIsTheMapsOrder) {
   EXPECT_EQ(member_order({"b", "a", "B", "a", "c"}), (std::vector<size_t>{2, 3, 0, 4}));

@@ -11,8 +11,8 @@ computation in numpy and checks that the two agree.
 
 WHY THIS IS THE STRONGEST FAIR BASELINE. It is what a competent numpy/scipy user would write
 for this one problem, knowing its structure as railmodal does:
-  - the modes are found once (scipy.linalg.eigh, or scipy.linalg.eig of the first-order form
-    when the damping is not proportional) and the sweep is vectorised over all speeds at once,
+  - the modes are found once a sweep (scipy.linalg.eigh, and scipy.linalg.eig of the first-order
+    form when the damping is not proportional) and the sweep is vectorised over all speeds at once,
     one (speeds × modes) array per harmonic, no Python loop over speeds;
   - modes that the harmonic does not load, or that do not move the output, are dropped before
     the sweep (a term below 1e-12 of |φ_d|·‖φ‖·‖Q‖: round-off of an exact zero, railmodal's
@@ -24,8 +24,23 @@ for this one problem, knowing its structure as railmodal does:
     complex modes of the first-order form, never a linear solve per speed;
   - the phase is one numpy.angle of the harmonic-1 response, only where asked.
 Batched direct solves (numpy.linalg.solve over all speeds at once) are computed once, untimed,
-as the independent check of both fast paths. railmodal's timing excludes assembly and the modal
-solve as numpy's does; both include allocating their curves.
+as the independent check of both fast paths.
+
+WHAT EACH SIDE TIMES: the same work, from the assembled M, C, K, the real modes and the sources'
+loads to the curves. Untimed on both sides: assembly and the real modal solve (railmodal's
+solve_modes before its clock starts; numpy's scipy.linalg.eigh in real_modes()). Timed on both
+sides: what the damping asks for before the sweep, then the sweep and the allocation of its
+curves. railmodal's amplitude_curves does the former inside each call, per source: ΦᵀCΦ and the
+proportionality test, and with discrete dampers the 2n × 2n eigen-decomposition of the
+first-order form, its left eigenvectors and the check against direct solves at nine speeds
+(src/response/speed_sweep.cpp, sweep_curves); numpy's damping_path() does its equivalent (ΦᵀCΦ
+and the test; M⁻¹, scipy.linalg.eig of the first-order form and the inverse of its eigenvectors)
+inside every timed call, once for all sources, as a user would. (Until 2026-11-26 numpy's
+damping_path ran once, untimed, while railmodal's time held its own: on the complex path the
+ratios favoured numpy by the cost of that eigen-decomposition.) Left in numpy's favour:
+railmodal derives each harmonic's load parts and load scales s(ω) inside its clock, numpy reads
+them from railmodal's JSON (untimed); railmodal repeats the damping work for each source and
+runs its nine-speed check, which the numpy path does not.
 
 AGREEMENT. Amplitudes: each curve to 1e-9 of the largest value of its quantity over the source's
 output DOFs (a DOF the source does not reach is 0 on one side, round-off on the other), at the
@@ -103,13 +118,18 @@ class Problem:
             self.sources.append((harmonics, np.arctan2(ref["im"], ref["re"])))
 
 
-def prepare(p):
-    """The modes and the path the damping allows; what a user computes once before sweeping."""
+def real_modes(p):
+    """The real modes, as railmodal's solve_modes finds them before its clock starts (untimed)."""
+    return scipy.linalg.eigh(p.K, p.M)
+
+
+def damping_path(p, modes):
+    """The path the damping allows and what it needs besides the real modes: the work railmodal's
+    amplitude_curves does inside its clock before it sweeps, so timed with the numpy sweep."""
     n = p.M.shape[0]
+    lam, phi = modes
     if not np.any(p.C):
-        lam, phi = scipy.linalg.eigh(p.K, p.M)
         return "real modal (C = 0)", (lam, phi)
-    lam, phi = scipy.linalg.eigh(p.K, p.M)
     c = phi.T @ p.C @ phi
     if np.max(np.abs(c - np.diag(np.diag(c)))) <= 1e-12 * np.max(np.abs(c)):
         return "complex modal (proportional C)", (lam, phi, np.diag(c).copy())
@@ -269,7 +289,8 @@ def run_case(args, scene):
         print(f"{label}: no periodic source, skipped")
         return None
     p = Problem(model)
-    prepared = prepare(p)
+    modes = real_modes(p)
+    prepared = damping_path(p, modes)
     worst, worst_phase = agreement(p, model, prepared)
 
     def ours():
@@ -284,7 +305,7 @@ def run_case(args, scene):
         return last["sweep" + suffix]
 
     def numpy_side(phases):
-        f = lambda: sweep(p, prepared, phases)
+        f = lambda: sweep(p, damping_path(p, modes), phases)  # the docstring says why both are timed
         if args.clock == "wall":
             return median_of(f, args.inner)[0]
         times = []

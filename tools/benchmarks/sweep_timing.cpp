@@ -7,6 +7,11 @@
 // same computation, and its amplitudes and phases for the script to compare ("-": no JSON, for
 // the script's later timing rounds).
 //
+// Timed: amplitude_curves for every source, with what it does inside before it sweeps (ΦᵀCΦ and
+// the proportionality test; with discrete dampers the complex modes of the first-order form and
+// their check at nine speeds), as the script times its numpy equivalent (damping_path) with its
+// sweep. Not timed, on either side: assembly and the real modes (solve_modes; scipy's eigh).
+//
 //   sweep_timing DATA_DIR OUT.json REPEATS [SCENE]   prints "sweep_s T" (amplitudes only) and
 //                                                    "sweep_with_phases_s T", medians of REPEATS,
 //                                                    and the same in processor time (_cpu_s)

@@ -5,21 +5,28 @@
 //                                                  [--threads T]
 //
 // Rank r evaluates shard r + 1 of N (the variants whose index mod N is r, as
-// `railmodal compare --shard r+1/N`), rank 0 gathers the shards, ranks the variants and writes
-// exactly what `railmodal compare STUDY.toml` writes. Exit codes as railmodal's: 0 success,
-// 2 usage, 3 input, 5 output, 1 internal; every rank exits with the same code.
+// `railmodal compare --shard r+1/N`) into a temporary file on its node, rank 0 receives the
+// other ranks' shards in chunks into temporary files on its own node, merges them as
+// `railmodal compare --merge` does (one result in memory at a time) and writes exactly what
+// `railmodal compare STUDY.toml` writes. Exit codes as railmodal's: 0 success, 2 usage,
+// 3 input, 5 output, 1 internal; every rank exits with the same code.
 #include <mpi.h>
 #ifdef __linux__
 #include <sched.h>
 #endif
 
+#include <stdlib.h>  // mkstemp
+#include <unistd.h>  // close
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <climits>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
+#include <memory>
 #include <optional>
-#include <set>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <thread>
@@ -67,22 +74,23 @@ int default_threads() {
   return std::max(1, std::min(allowed, cores / std::max(1, ranks_on_node)));
 }
 
-/// This rank's shard as JSON (write_shard), or a failure: its exit code and message.
-struct ShardText {
+/// A step's outcome on this rank: success, or its exit code and message.
+struct Outcome {
   int code = kSuccess;
-  std::string text;  ///< the shard, or the message when code != kSuccess
+  std::string message;  ///< when code != kSuccess
 };
 
-/// `step`'s text, or its failure with the exit code and message railmodal gives it.
+/// `step` run, or its failure with the exit code and message railmodal gives it.
 template <class Step>
-ShardText guarded(const Step& step) {
+Outcome guarded(const Step& step) {
   try {
-    return {kSuccess, step()};
+    step();
+    return {};
   } catch (const railmodal::InputError& e) {
     return {kInput, e.what()};
   } catch (const OutputError& e) {
     return {e.code(), e.what()};
-  } catch (const std::system_error& e) {  // a shard's temporary file (TMPDIR), as railmodal compare says it
+  } catch (const std::system_error& e) {  // a temporary file (TMPDIR), as railmodal compare says it
     return {kOutput, std::string("railmodal: error: ") + e.what()};
   } catch (const std::exception& e) {
     return {kInternal, std::string("railmodal-mpi: internal error: ") + e.what()};
@@ -97,18 +105,52 @@ railmodal::Study load_named_variants(const Options& o) { return railmodal::open_
 
 /// Rank 0, before any rank evaluates: its output opened, its study read, and the output refused
 /// if it is one of the study's files (as railmodal compare does), so that these fail first.
-ShardText prepare_output(const Options& o, OutputFiles& outputs, std::ostream** out,
-                         std::optional<railmodal::Study>& study) {
+Outcome prepare_output(const Options& o, OutputFiles& outputs, std::ostream** out,
+                       std::optional<railmodal::Study>& study) {
   return guarded([&] {
     *out = &outputs.open(o.output);
     outputs.refuse_inputs({o.study});
     study = load_named_variants(o);
     outputs.refuse_inputs(railmodal::study_files(*study));
-    return std::string();
   });
 }
 
-ShardText evaluate_shard(const Options& o, int rank, int size, int threads, std::optional<railmodal::Study>& study) {
+/// A shard's file in TMPDIR (or /tmp) on this rank's node, removed when this goes: a rank's own
+/// shard until it is sent (or, on rank 0, merged), and on rank 0 each other rank's as received.
+/// A node's temporary directory, not a shared one: the ranks need no directory they can all
+/// write, and rank 0 reads every shard from its own disk. Its name says whose shard it is, for
+/// the merge's messages.
+class ShardFile {
+ public:
+  explicit ShardFile(int rank) {
+    const char* tmpdir = std::getenv("TMPDIR");
+    const std::string dir = tmpdir && *tmpdir ? tmpdir : "/tmp";
+    path_ = dir + "/railmodal-mpi-rank-" + std::to_string(rank) + "-shard-XXXXXX";
+    const int fd = ::mkstemp(path_.data());
+    if (fd < 0)
+      throw std::system_error(errno, std::generic_category(),
+                              "cannot make a shard's temporary file in " + dir + " (set TMPDIR to a writable directory)");
+    ::close(fd);
+  }
+  ShardFile(const ShardFile&) = delete;
+  ShardFile& operator=(const ShardFile&) = delete;
+  ~ShardFile() { std::remove(path_.c_str()); }
+  const std::string& path() const { return path_; }
+
+  /// Throws std::system_error naming the file if `file` (writing it) has failed.
+  void check_written(const std::ofstream& file) const {
+    if (!file)
+      throw std::system_error(errno ? errno : EIO, std::generic_category(),
+                              "cannot write a shard's temporary file " + path_ + " (free space there, set TMPDIR)");
+  }
+
+ private:
+  std::string path_;
+};
+
+/// Evaluates this rank's shard into `file`.
+Outcome evaluate_shard(const Options& o, int rank, int size, int threads, std::optional<railmodal::Study>& study,
+                       std::unique_ptr<ShardFile>& file) {
   return guarded([&] {
     if (!study) study = load_named_variants(o);
     railmodal::EvaluationOptions evaluation;
@@ -116,15 +158,17 @@ ShardText evaluate_shard(const Options& o, int rank, int size, int threads, std:
     evaluation.shards = size;
     evaluation.threads = threads;
     evaluation.read_in_workers = true;
-    std::ostringstream out;  // the results' text only: each result's waits in a temporary file (compare_shard)
-    railmodal::compare_shard(out, *study, evaluation);
-    return out.str();
+    file = std::make_unique<ShardFile>(rank);
+    std::ofstream out(file->path(), std::ios::binary);
+    railmodal::compare_shard(out, *study, evaluation);  // each result's text waits in a temporary file meanwhile
+    out.close();
+    file->check_written(out);
   });
 }
 
 /// Collective: every rank learns whether any failed, so none waits for a shard that never
 /// comes. The lowest failing rank prints its message and every rank returns that rank's code.
-int first_failure(const ShardText& mine, int rank, int size) {
+int first_failure(const Outcome& mine, int rank, int size) {
   int failing = mine.code != kSuccess ? rank : size;
   int first = size;
   MPI_Allreduce(&failing, &first, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
@@ -132,44 +176,73 @@ int first_failure(const ShardText& mine, int rank, int size) {
   int code = mine.code;
   MPI_Bcast(&code, 1, MPI_INT, first, MPI_COMM_WORLD);
   if (rank == first)
-    std::cerr << (rank == 0 ? "" : "railmodal-mpi: rank " + std::to_string(rank) + ": ") << mine.text << "\n";
+    std::cerr << (rank == 0 ? "" : "railmodal-mpi: rank " + std::to_string(rank) + ": ") << mine.message << "\n";
   return code;
 }
 
-/// Rank 0: the gathered shards ranked and written as railmodal compare writes them.
-int merge_and_write(const Options& o, const railmodal::Study& study, const std::vector<std::string>& shards,
-                    OutputFiles& outputs, std::ostream& out) {
-  const ShardText written = guarded([&] {
-    std::vector<railmodal::VariantResult> results;
-    std::set<int> seen;
-    for (size_t r = 0; r < shards.size(); ++r) {
-      const std::string origin = "railmodal-mpi rank " + std::to_string(r);
-      std::istringstream in(shards[r]);
-      for (railmodal::VariantResult& result : railmodal::read_shard(in, origin, study)) {
-        if (!seen.insert(result.index).second)
-          throw railmodal::InputError(origin, 0, 0, "variant '" + result.name + "' is also in an earlier shard");
-        results.push_back(std::move(result));
-      }
-    }
-    for (int i = 0; i < railmodal::variant_count(study); ++i)
-      if (!seen.count(i))
-        throw railmodal::InputError(o.study, 0, 0, "no rank returned variant " + std::to_string(i + 1) + " ('" +
-                                                       railmodal::variant_name(study, i) + "')");
-    const railmodal::Comparison comparison = railmodal::rank_variants(study, std::move(results));
-    const railmodal::OutputFormat format = *railmodal::output_format_from_string(o.format);
-    // The documents draw the best designs' curves: studied here, read first (the shards did not).
-    const bool document = format == railmodal::OutputFormat::markdown || format == railmodal::OutputFormat::html;
-    railmodal::write_comparison_report(out, study, comparison,
-                                       document
-                                           ? railmodal::comparison_curves(study, comparison, railmodal::kReportBest)
-                                           : railmodal::ComparisonCurves{},
-                                       format,
-                                       document ? railmodal::provenance_of(railmodal::study_files(study))
-                                                : railmodal::Provenance{});
-    outputs.commit();
-    return std::string();
+// A shard travels to rank 0 in messages of at most kChunk bytes, then an empty one: rank 0
+// holds one chunk at a time, whatever the shard's size (about 3.4 kB a variant).
+constexpr int kChunk = 1 << 20;
+constexpr int kShardTag = 1;
+
+/// A rank other than 0: its shard's file sent to rank 0, chunk by chunk, and the empty message
+/// that ends it, sent even when the file cannot be read (the failure is this rank's to report).
+Outcome send_shard(const ShardFile& file) {
+  std::ifstream in(file.path(), std::ios::binary);
+  std::vector<char> chunk(kChunk);
+  while (in) {
+    in.read(chunk.data(), kChunk);
+    const int n = static_cast<int>(in.gcount());
+    if (n > 0) MPI_Send(chunk.data(), n, MPI_CHAR, 0, kShardTag, MPI_COMM_WORLD);
+  }
+  MPI_Send(chunk.data(), 0, MPI_CHAR, 0, kShardTag, MPI_COMM_WORLD);
+  return guarded([&] {
+    if (in.bad() || !in.eof())
+      throw std::system_error(errno ? errno : EIO, std::generic_category(),
+                              "cannot read back the shard's temporary file " + file.path());
   });
-  if (written.code != kSuccess) std::cerr << written.text << "\n";
+}
+
+/// Rank 0: each other rank's shard received into a file of its own, in rank order. A file that
+/// cannot be written is reported after every message has been received, so no rank waits.
+Outcome receive_shards(int size, std::vector<std::unique_ptr<ShardFile>>& files) {
+  std::vector<char> chunk(kChunk);
+  Outcome outcome;
+  for (int r = 1; r < size; ++r) {
+    std::ofstream out;
+    if (outcome.code == kSuccess) outcome = guarded([&] {
+        files.push_back(std::make_unique<ShardFile>(r));
+        out.open(files.back()->path(), std::ios::binary);
+      });
+    for (;;) {
+      MPI_Status status;
+      MPI_Recv(chunk.data(), kChunk, MPI_CHAR, r, kShardTag, MPI_COMM_WORLD, &status);
+      int n = 0;
+      MPI_Get_count(&status, MPI_CHAR, &n);
+      if (n == 0) break;
+      if (outcome.code == kSuccess) out.write(chunk.data(), n);
+    }
+    if (outcome.code == kSuccess) outcome = guarded([&] {
+        out.close();
+        files.back()->check_written(out);
+      });
+  }
+  return outcome;
+}
+
+/// Rank 0: the shards' files merged, ranked and written as railmodal compare writes the study
+/// (compare_merged: one result in memory at a time; each variant exactly once).
+int merge_and_write(const Options& o, const railmodal::Study& study,
+                    const std::vector<std::unique_ptr<ShardFile>>& files, OutputFiles& outputs, std::ostream& out) {
+  const Outcome written = guarded([&] {
+    std::vector<std::string> paths;
+    for (const auto& f : files) paths.push_back(f->path());
+    const railmodal::OutputFormat format = *railmodal::output_format_from_string(o.format);
+    // The documents end with the input files (railmodal compare's provenance); the others ignore it.
+    railmodal::compare_merged(out, study, paths, format, 0, railmodal::provenance_of(railmodal::study_files(study)));
+    outputs.commit();
+  });
+  if (written.code != kSuccess) std::cerr << written.message << "\n";
   return written.code;
 }
 
@@ -179,46 +252,17 @@ int run(const Options& o, int rank, int size) {
   OutputFiles outputs;  // rank 0's
   std::ostream* out = nullptr;
   // Rank 0's output and study are checked before any rank evaluates: a bad output fails alone.
-  int code = first_failure(rank == 0 ? prepare_output(o, outputs, &out, study) : ShardText{}, rank, size);
+  int code = first_failure(rank == 0 ? prepare_output(o, outputs, &out, study) : Outcome{}, rank, size);
   if (code != kSuccess) return code;
-  ShardText shard = evaluate_shard(o, rank, size, threads, study);
-  code = first_failure(shard, rank, size);
+  // Rank 0's shard first, then the others' as received, in rank order.
+  std::vector<std::unique_ptr<ShardFile>> shards(1);
+  code = first_failure(evaluate_shard(o, rank, size, threads, study, shards.front()), rank, size);
   if (code != kSuccess) return code;
 
-  // The shards' lengths, then their bytes, to rank 0 (one Gatherv holds at most INT_MAX bytes).
-  const long long own_length = static_cast<long long>(shard.text.size());
-  int length = own_length > INT_MAX ? -1 : static_cast<int>(own_length);
-  std::vector<int> lengths(rank == 0 ? size : 0);
-  MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
-  std::vector<int> offsets(lengths.size(), 0);
-  int fits = 1;
-  if (rank == 0) {
-    long long total = 0;
-    for (int r = 0; r < size; ++r) {
-      if (lengths[r] < 0) fits = 0;
-      offsets[r] = static_cast<int>(std::min<long long>(total, INT_MAX));
-      total += std::max(lengths[r], 0);
-    }
-    if (total > INT_MAX) fits = 0;
-  }
-  MPI_Bcast(&fits, 1, MPI_INT, 0, MPI_COMM_WORLD);
-  if (!fits) {
-    if (rank == 0) std::cerr << "railmodal-mpi: error: the shards' results exceed 2 GiB; use --shard and --merge\n";
-    return kInternal;
-  }
-  std::vector<char> bytes;
-  if (rank == 0) bytes.resize(static_cast<size_t>(offsets.back()) + static_cast<size_t>(lengths.back()));
-  MPI_Gatherv(shard.text.data(), length, MPI_CHAR, bytes.data(), lengths.data(), offsets.data(), MPI_CHAR, 0,
-              MPI_COMM_WORLD);
-  shard.text.clear();
-  shard.text.shrink_to_fit();
-
-  if (rank == 0) {
-    std::vector<std::string> shards;
-    for (int r = 0; r < size; ++r) shards.emplace_back(bytes.data() + offsets[r], static_cast<size_t>(lengths[r]));
-    bytes.clear();
-    code = merge_and_write(o, *study, shards, outputs, *out);
-  }
+  code = first_failure(rank == 0 ? receive_shards(size, shards) : send_shard(*shards.front()), rank, size);
+  if (rank != 0) shards.clear();  // sent: its file goes
+  if (code != kSuccess) return code;
+  if (rank == 0) code = merge_and_write(o, *study, shards, outputs, *out);
   MPI_Bcast(&code, 1, MPI_INT, 0, MPI_COMM_WORLD);
   return code;
 }
