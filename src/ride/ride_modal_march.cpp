@@ -462,13 +462,13 @@ bool ModalRideMarch::periodic_start(long period, State* start) {
   return true;
 }
 
-Eigen::MatrixXd ModalRideMarch::outputs(State z, long count) {
+std::vector<Eigen::VectorXd> ModalRideMarch::outputs(State z, long count) {
   const size_t n_in = inputs_.size();
   const long B = Block::kSteps;
-  Eigen::MatrixXd y(count, outputs_);
+  std::vector<Eigen::VectorXd> y(outputs_);
+  for (Eigen::VectorXd& column : y) column.resize(count);
   Block block(n_in, modes_);
   std::vector<Cursor> cursor = cursors();
-  std::vector<double> sum(B);
   for (long k0 = 0; k0 < count; k0 += B) {
     const long steps = std::min(B, count - k0);
     read_block(&cursor, steps, &block, true);
@@ -479,8 +479,9 @@ Eigen::MatrixXd ModalRideMarch::outputs(State z, long count) {
     }
     // (the advance after the last step is not used)
     advance_block(&block, steps, &z, true);
-    for (int j = 0; j < outputs_; ++j) {
-      std::fill(sum.begin(), sum.begin() + steps, 0.0);
+    for (int j = 0; j < outputs_; ++j) {  // summed in place in the output's history
+      double* sum = y[j].data() + k0;
+      std::fill(sum, sum + steps, 0.0);
       for (int m = 0; m < modes_; ++m) {
         const double cr = c_re_[j * modes_ + m], ci = c_im_[j * modes_ + m];
         const double* wr = block.w_re.data() + m * B;
@@ -493,7 +494,6 @@ Eigen::MatrixXd ModalRideMarch::outputs(State z, long count) {
         const double* slope = block.slope.data() + i * B;
         for (long b = 0; b < steps; ++b) sum[b] += lw * now[b] + vld * slope[b];
       }
-      std::copy(sum.begin(), sum.begin() + steps, &y(k0, j));
     }
   }
   return y;

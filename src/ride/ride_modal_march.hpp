@@ -47,8 +47,9 @@ class ModalRideMarch {
   /// mode is (almost) undamped: min |1 − μ^period| < 1e-10 · max |1 − μ^period|, the test the
   /// dense path applies to I − Φ^period as its reciprocal condition.
   bool periodic_start(long period, State* start);
-  /// The outputs at steps 0 … count − 1 from `start` at step 0, one column each.
-  Eigen::MatrixXd outputs(State start, long count);
+  /// The outputs at steps 0 … count − 1 from `start` at step 0, one vector each (each
+  /// output's samples are summed in place there: no matrix of all outputs to copy them out of).
+  std::vector<Eigen::VectorXd> outputs(State start, long count);
 
  private:
   ModalRideMarch() = default;

@@ -59,8 +59,9 @@ Eigen::VectorXd realise(const TrackSpectrum& spectrum, Eigen::Index n, double st
     const double sigma = std::sqrt(spectrum.density(static_cast<double>(k) * dOmega) * dOmega);
     Y(k) = std::complex<double>(0.5 * sigma * re, 0.5 * sigma * im);
   }
-  fft.execute();
-  return fft.output();
+  Eigen::VectorXd profile;
+  fft.execute(&profile);  // straight into the profile: no copy, no second buffer touched
+  return profile;
 }
 
 }  // namespace
