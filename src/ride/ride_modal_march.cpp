@@ -201,6 +201,9 @@ std::unique_ptr<ModalRideMarch> ModalRideMarch::make(const RideStateSpace& model
       m->lw_[j * n_in + i] = lw[i * m->outputs_ + j];
       m->ld_[j * n_in + i] = ld[i * m->outputs_ + j];
     }
+  m->slope_used_.assign(m->inputs_.size(), 0);
+  for (int i = 0; i < n_in; ++i)
+    for (int j = 0; j < m->outputs_; ++j) m->slope_used_[i] |= m->ld_[j * n_in + i] != 0.0;
   // Ls·s = Σ over marched modes of weight · Re((Ls·v_k) z_k)
   for (int j = 0; j < m->outputs_; ++j)
     for (int k = 0; k < m->modes_; ++k) {
@@ -310,6 +313,7 @@ void ModalRideMarch::read_block(std::vector<Cursor>* cursors, long steps, Block*
     double* now = block->now.data() + i * B;
     double* mid = block->mid.data() + i * B;
     double* slope = block->slope.data() + i * B;
+    const bool slopes_here = slopes && slope_used_[i];
     for (long b = 0; b < steps; ++b, cursor.next()) {
       if (const long run = cursor.straight_run(steps - b)) {
         // the same formulas as the step below, on a straight run (f = phase, on a sample iff 0)
@@ -317,9 +321,9 @@ void ModalRideMarch::read_block(std::vector<Cursor>* cursors, long steps, Block*
         const double f = in.phase, g = in.phase + in.reach;
         for (long t = 0; t < run; ++t) now[b + t] = q[t] + f * (q[t + 1] - q[t]);
         for (long t = 0; t < run; ++t) mid[b + t] = in.delta == 0.0 ? 0.0 : q[t] + g * (q[t + 1] - q[t]);
-        if (slopes && f == 0.0)
+        if (slopes_here && f == 0.0)
           for (long t = 0; t < run; ++t) slope[b + t] = (q[t + 1] - q[t - 1]) / (2.0 * step_);
-        else if (slopes)
+        else if (slopes_here)
           for (long t = 0; t < run; ++t) slope[b + t] = (q[t + 1] - q[t]) / step_;
         cursor.skip(run - 1);  // and the loop's next()
         b += run - 1;
@@ -329,7 +333,7 @@ void ModalRideMarch::read_block(std::vector<Cursor>* cursors, long steps, Block*
       const double u0 = p(at.j), u1 = p(at.next);
       now[b] = u0 + at.f * (u1 - u0);
       mid[b] = in.delta == 0.0 ? 0.0 : u0 + (at.f + in.reach) * (u1 - u0);
-      if (!slopes) continue;
+      if (!slopes_here) continue;
       // as TrackUnderWheels::slope: on a sample the mean of its two segments; a record's first
       // and last samples take their one segment (the extended line beyond them)
       if (at.at < 0) {
@@ -492,7 +496,11 @@ std::vector<Eigen::VectorXd> ModalRideMarch::outputs(State z, long count) {
         const double lw = lw_[j * n_in + i], vld = speed_ * ld_[j * n_in + i];
         const double* now = block.now.data() + i * B;
         const double* slope = block.slope.data() + i * B;
-        for (long b = 0; b < steps; ++b) sum[b] += lw * now[b] + vld * slope[b];
+        if (slope_used_[i]) {
+          for (long b = 0; b < steps; ++b) sum[b] += lw * now[b] + vld * slope[b];
+        } else {  // vld = 0: the term is a zero, which changes lw·u only in an exact zero's sign
+          for (long b = 0; b < steps; ++b) sum[b] += lw * now[b];
+        }
       }
     }
   }

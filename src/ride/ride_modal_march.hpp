@@ -89,6 +89,9 @@ class ModalRideMarch {
   // outputs: y_j = Σ_k (cr·Re w − ci·Im w) + Σ_inputs (lw·u + V·ld·u'), lw including Q₂'s part
   int outputs_ = 0;
   std::vector<double> c_re_, c_im_, lw_, ld_;
+  // per input, whether any output has a nonzero ld on it (a damper from the track straight into
+  // the output): only those inputs' slopes are read
+  std::vector<char> slope_used_;
   // The taps in the order advance_block() applies them (per input u(t), then u(t + δ) where δ ≠ 0):
   // which input each reads, and whether at t + δ.
   std::vector<int> tap_input_;
