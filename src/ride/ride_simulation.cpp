@@ -159,8 +159,8 @@ std::vector<Eigen::VectorXd> march_outputs(ride::RideMarch* march, const ride::T
 // eigenvectors are well conditioned (ride_modal_march.hpp), else by the dense march; the same
 // discretisation, so the same histories to round-off (tests/ride/ride_modal_march_test.cpp).
 std::vector<Eigen::VectorXd> linear_march(const ride::RideStateSpace& model, const ride::TrackUnderWheels& track,
-                             const std::vector<ride::OutputRow>& rows, bool periodic, const RunPlan& plan, double speed,
-                             std::vector<std::string>* notes, StageClock* clock) {
+                                          const std::vector<ride::OutputRow>& rows, bool periodic, const RunPlan& plan,
+                                          double speed, std::vector<std::string>* notes, StageClock* clock) {
   const long count = plan.settle + plan.evaluated;
   if (const auto modal = ride::ModalRideMarch::make(model, track, rows, speed, plan.step, track.span())) {
     clock->lap("state transition");
@@ -243,11 +243,11 @@ ride::DigitalFilter sperling_filter(const RideOutput& output, double step) {
 }
 
 // The weighted samples of every weighted output: W into RideHistory::weighted, Sperling's B
-// (of which only the RMS is kept, by history_indices()) into the storage of the history's Cc(t),
-// written after it. Two outputs of one axis (the same two filters) go through them at once.
+// (of which only the RMS is kept, by history_indices()) into the storage of the history's
+// Cc(t), written after it. Two outputs of one axis (the same two filters) go through them at once.
 // runs[j]: output j's samples over the run, settling included.
-void weigh_outputs(const std::vector<RideOutput>& outputs, const std::vector<Eigen::VectorXd*>& runs, const RunPlan& plan,
-           bool periodic, std::vector<RideHistory>* histories) {
+void weigh_outputs(const std::vector<RideOutput>& outputs, const std::vector<Eigen::VectorXd*>& runs,
+                   const RunPlan& plan, bool periodic, std::vector<RideHistory>* histories) {
   std::vector<char> done(outputs.size(), 0);
   for (size_t j = 0; j < outputs.size(); ++j) {
     if (done[j] || !weighted_output(outputs[j])) continue;
@@ -275,7 +275,7 @@ void weigh_outputs(const std::vector<RideOutput>& outputs, const std::vector<Eig
 
 // A weighted output's indices from its weighted samples (weigh_outputs()).
 void history_indices(const RideOutput& output, const RunPlan& plan, const RideSimulationOptions& options,
-             std::vector<std::string>* notes, RideHistory* h) {
+                     std::vector<std::string>* notes, RideHistory* h) {
   if (has_sperling(output)) h->sperling_wz = sperling_wz_from_weighted_rms(rms(h->continuous_comfort));
   h->weighted_rms = rms(h->weighted);
   const Eigen::Index window = std::max<Eigen::Index>(1, std::lround(options.window / plan.step));
