@@ -44,6 +44,13 @@ class GaussianStream {
     *second = radius * std::sin(angle);
   }
 
+  /// Moves past one pair of next_normal_pair without forming it (its two uniforms drawn, no
+  /// log, sine or cosine): the stream then stands where next_normal_pair would leave it.
+  void skip_normal_pair() {
+    next_integer();
+    next_integer();
+  }
+
   /// splitmix64's step: also how independent streams are derived from one seed.
   static std::uint64_t splitmix64(std::uint64_t* x) {
     std::uint64_t z = (*x += 0x9e3779b97f4a7c15ULL);

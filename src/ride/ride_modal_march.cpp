@@ -201,6 +201,9 @@ std::unique_ptr<ModalRideMarch> ModalRideMarch::make(const RideStateSpace& model
       m->lw_[j * n_in + i] = lw[i * m->outputs_ + j];
       m->ld_[j * n_in + i] = ld[i * m->outputs_ + j];
     }
+  m->slope_used_.assign(m->inputs_.size(), 0);
+  for (int i = 0; i < n_in; ++i)
+    for (int j = 0; j < m->outputs_; ++j) m->slope_used_[i] |= m->ld_[j * n_in + i] != 0.0;
   // Ls·s = Σ over marched modes of weight · Re((Ls·v_k) z_k)
   for (int j = 0; j < m->outputs_; ++j)
     for (int k = 0; k < m->modes_; ++k) {
@@ -310,6 +313,7 @@ void ModalRideMarch::read_block(std::vector<Cursor>* cursors, long steps, Block*
     double* now = block->now.data() + i * B;
     double* mid = block->mid.data() + i * B;
     double* slope = block->slope.data() + i * B;
+    const bool slopes_here = slopes && slope_used_[i];
     for (long b = 0; b < steps; ++b, cursor.next()) {
       if (const long run = cursor.straight_run(steps - b)) {
         // the same formulas as the step below, on a straight run (f = phase, on a sample iff 0)
@@ -317,9 +321,9 @@ void ModalRideMarch::read_block(std::vector<Cursor>* cursors, long steps, Block*
         const double f = in.phase, g = in.phase + in.reach;
         for (long t = 0; t < run; ++t) now[b + t] = q[t] + f * (q[t + 1] - q[t]);
         for (long t = 0; t < run; ++t) mid[b + t] = in.delta == 0.0 ? 0.0 : q[t] + g * (q[t + 1] - q[t]);
-        if (slopes && f == 0.0)
+        if (slopes_here && f == 0.0)
           for (long t = 0; t < run; ++t) slope[b + t] = (q[t + 1] - q[t - 1]) / (2.0 * step_);
-        else if (slopes)
+        else if (slopes_here)
           for (long t = 0; t < run; ++t) slope[b + t] = (q[t + 1] - q[t]) / step_;
         cursor.skip(run - 1);  // and the loop's next()
         b += run - 1;
@@ -329,7 +333,7 @@ void ModalRideMarch::read_block(std::vector<Cursor>* cursors, long steps, Block*
       const double u0 = p(at.j), u1 = p(at.next);
       now[b] = u0 + at.f * (u1 - u0);
       mid[b] = in.delta == 0.0 ? 0.0 : u0 + (at.f + in.reach) * (u1 - u0);
-      if (!slopes) continue;
+      if (!slopes_here) continue;
       // as TrackUnderWheels::slope: on a sample the mean of its two segments; a record's first
       // and last samples take their one segment (the extended line beyond them)
       if (at.at < 0) {
@@ -462,13 +466,13 @@ bool ModalRideMarch::periodic_start(long period, State* start) {
   return true;
 }
 
-Eigen::MatrixXd ModalRideMarch::outputs(State z, long count) {
+std::vector<Eigen::VectorXd> ModalRideMarch::outputs(State z, long count) {
   const size_t n_in = inputs_.size();
   const long B = Block::kSteps;
-  Eigen::MatrixXd y(count, outputs_);
+  std::vector<Eigen::VectorXd> y(outputs_);
+  for (Eigen::VectorXd& column : y) column.resize(count);
   Block block(n_in, modes_);
   std::vector<Cursor> cursor = cursors();
-  std::vector<double> sum(B);
   for (long k0 = 0; k0 < count; k0 += B) {
     const long steps = std::min(B, count - k0);
     read_block(&cursor, steps, &block, true);
@@ -479,8 +483,9 @@ Eigen::MatrixXd ModalRideMarch::outputs(State z, long count) {
     }
     // (the advance after the last step is not used)
     advance_block(&block, steps, &z, true);
-    for (int j = 0; j < outputs_; ++j) {
-      std::fill(sum.begin(), sum.begin() + steps, 0.0);
+    for (int j = 0; j < outputs_; ++j) {  // summed in place in the output's history
+      double* sum = y[j].data() + k0;
+      std::fill(sum, sum + steps, 0.0);
       for (int m = 0; m < modes_; ++m) {
         const double cr = c_re_[j * modes_ + m], ci = c_im_[j * modes_ + m];
         const double* wr = block.w_re.data() + m * B;
@@ -491,9 +496,12 @@ Eigen::MatrixXd ModalRideMarch::outputs(State z, long count) {
         const double lw = lw_[j * n_in + i], vld = speed_ * ld_[j * n_in + i];
         const double* now = block.now.data() + i * B;
         const double* slope = block.slope.data() + i * B;
-        for (long b = 0; b < steps; ++b) sum[b] += lw * now[b] + vld * slope[b];
+        if (slope_used_[i]) {
+          for (long b = 0; b < steps; ++b) sum[b] += lw * now[b] + vld * slope[b];
+        } else {  // vld = 0: the term is a zero, which changes lw·u only in an exact zero's sign
+          for (long b = 0; b < steps; ++b) sum[b] += lw * now[b];
+        }
       }
-      std::copy(sum.begin(), sum.begin() + steps, &y(k0, j));
     }
   }
   return y;

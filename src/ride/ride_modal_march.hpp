@@ -47,8 +47,9 @@ class ModalRideMarch {
   /// mode is (almost) undamped: min |1 − μ^period| < 1e-10 · max |1 − μ^period|, the test the
   /// dense path applies to I − Φ^period as its reciprocal condition.
   bool periodic_start(long period, State* start);
-  /// The outputs at steps 0 … count − 1 from `start` at step 0, one column each.
-  Eigen::MatrixXd outputs(State start, long count);
+  /// The outputs at steps 0 … count − 1 from `start` at step 0, one vector each (each
+  /// output's samples are summed in place there: no matrix of all outputs to copy them out of).
+  std::vector<Eigen::VectorXd> outputs(State start, long count);
 
  private:
   ModalRideMarch() = default;
@@ -88,6 +89,9 @@ class ModalRideMarch {
   // outputs: y_j = Σ_k (cr·Re w − ci·Im w) + Σ_inputs (lw·u + V·ld·u'), lw including Q₂'s part
   int outputs_ = 0;
   std::vector<double> c_re_, c_im_, lw_, ld_;
+  // per input, whether any output has a nonzero ld on it (a damper from the track straight into
+  // the output): only those inputs' slopes are read
+  std::vector<char> slope_used_;
   // The taps in the order advance_block() applies them (per input u(t), then u(t + δ) where δ ≠ 0):
   // which input each reads, and whether at t + δ.
   std::vector<int> tap_input_;

@@ -138,34 +138,35 @@ Eigen::VectorXd periodic_start(ride::RideMarch* march, long period, int states, 
   return steady ? Eigen::VectorXd(lu.solve(s)) : Eigen::VectorXd::Zero(states);
 }
 
-// The samples of every output over the run, one column each.
-Eigen::MatrixXd march_outputs(ride::RideMarch* march, const ride::TrackUnderWheels& track,
-                              const std::vector<ride::OutputRow>& rows, Eigen::VectorXd s, long count, double speed) {
-  Eigen::MatrixXd y(count, static_cast<Eigen::Index>(rows.size()));
+// The samples of every output over the run, one vector each.
+std::vector<Eigen::VectorXd> march_outputs(ride::RideMarch* march, const ride::TrackUnderWheels& track,
+                                           const std::vector<ride::OutputRow>& rows, Eigen::VectorXd s, long count,
+                                           double speed) {
+  std::vector<Eigen::VectorXd> y(rows.size());
+  for (Eigen::VectorXd& run : y) run.resize(count);
   Eigen::VectorXd w, dw;
   for (long k = 0; k < count; ++k) {
     track.displacement(march->leading(k), &w);
     track.slope(march->leading(k), &dw);
     dw *= speed;  // ẇ = V ∂w/∂ξ
-    for (size_t j = 0; j < rows.size(); ++j)
-      y(k, static_cast<Eigen::Index>(j)) = rows[j].Ls.dot(s) + rows[j].Lw.dot(w) + rows[j].Ld.dot(dw);
+    for (size_t j = 0; j < rows.size(); ++j) y[j](k) = rows[j].Ls.dot(s) + rows[j].Lw.dot(w) + rows[j].Ld.dot(dw);
     if (k + 1 < count) march->advance(k, &s);
   }
   return y;
 }
 
-// The linear vehicle's outputs over the run: in modal coordinates when A's eigenvectors are
-// well conditioned (ride_modal_march.hpp), else by the dense march; the same discretisation,
-// so the same histories to round-off (tests/ride/ride_modal_march_test.cpp).
-Eigen::MatrixXd linear_march(const ride::RideStateSpace& model, const ride::TrackUnderWheels& track,
-                             const std::vector<ride::OutputRow>& rows, bool periodic, const RunPlan& plan, double speed,
-                             std::vector<std::string>* notes, StageClock* clock) {
+// The linear vehicle's outputs over the run, one vector each: in modal coordinates when A's
+// eigenvectors are well conditioned (ride_modal_march.hpp), else by the dense march; the same
+// discretisation, so the same histories to round-off (tests/ride/ride_modal_march_test.cpp).
+std::vector<Eigen::VectorXd> linear_march(const ride::RideStateSpace& model, const ride::TrackUnderWheels& track,
+                                          const std::vector<ride::OutputRow>& rows, bool periodic, const RunPlan& plan,
+                                          double speed, std::vector<std::string>* notes, StageClock* clock) {
   const long count = plan.settle + plan.evaluated;
   if (const auto modal = ride::ModalRideMarch::make(model, track, rows, speed, plan.step, track.span())) {
     clock->lap("state transition");
     ride::ModalRideMarch::State start = modal->rest();
     if (periodic) notes->push_back(periodic_start_note(modal->periodic_start(plan.evaluated, &start)));
-    Eigen::MatrixXd y = modal->outputs(std::move(start), count);
+    std::vector<Eigen::VectorXd> y = modal->outputs(std::move(start), count);
     clock->lap("march");
     return y;
   }
@@ -173,7 +174,7 @@ Eigen::MatrixXd linear_march(const ride::RideStateSpace& model, const ride::Trac
   clock->lap("state transition");
   const Eigen::VectorXd start =
       periodic ? periodic_start(&march, plan.evaluated, 2 * model.n, notes) : Eigen::VectorXd::Zero(2 * model.n);
-  Eigen::MatrixXd y = march_outputs(&march, track, rows, start, count, speed);
+  std::vector<Eigen::VectorXd> y = march_outputs(&march, track, rows, start, count, speed);
   clock->lap("march");
   return y;
 }
@@ -198,41 +199,95 @@ void weighted(const ride::DigitalFilter& first, const ride::DigitalFilter& secon
     ride::DigitalFilter::apply_from(first, second, run, run.size() - evaluated.size(), first_out, second_out);
 }
 
+// The same two weightings of two runs at once (DigitalFilter's two-history form: each output
+// the same samples as the pair's, bit for bit).
+void weighted(const ride::DigitalFilter& first, const ride::DigitalFilter& second, Eigen::Ref<const Eigen::VectorXd> run_a,
+              Eigen::Ref<const Eigen::VectorXd> evaluated_a, Eigen::Ref<const Eigen::VectorXd> run_b,
+              Eigen::Ref<const Eigen::VectorXd> evaluated_b, bool periodic, Eigen::VectorXd* first_a,
+              Eigen::VectorXd* second_a, Eigen::VectorXd* first_b, Eigen::VectorXd* second_b) {
+  if (periodic)
+    ride::DigitalFilter::apply_second_pass(first, second, evaluated_a, evaluated_b, first_a, second_a, first_b, second_b);
+  else
+    ride::DigitalFilter::apply_from(first, second, run_a, run_b, run_a.size() - evaluated_a.size(), first_a, second_a,
+                                    first_b, second_b);
+}
+
 double rms(const Eigen::VectorXd& values) { return std::sqrt(values.squaredNorm() / static_cast<double>(values.size())); }
 
-// One output's history and indices. `run` is the output's column of the march, read in place;
-// the evaluated samples are copied once, into the history's values, and the weightings read
-// those. `sperling` is a buffer for the Sperling-weighted samples, of which only the RMS is
-// kept: the caller passes the same one for every output, so it is allocated once a ride.
-RideHistory history(const RideOutput& output, Eigen::Ref<const Eigen::VectorXd> run, const RunPlan& plan,
-                    bool periodic, const RideSimulationOptions& options, std::vector<std::string>* notes,
-                    Eigen::VectorXd* sperling) {
+// An output's history before its weightings: its samples over the run, `*run`, and their RMS.
+// With no settling the run is the history and moves into it (no copy); else its evaluated
+// tail is copied into the history's values.
+RideHistory history_values(Eigen::VectorXd* run, const RunPlan& plan) {
   RideHistory h;
-  h.values = run.tail(plan.evaluated);
+  if (plan.settle == 0)
+    h.values = std::move(*run);
+  else
+    h.values = run->tail(plan.evaluated);
   h.rms = rms(h.values);
-  if (output.kind != RideOutput::Kind::point || output.quantity != ResponseQuantity::acceleration) return h;
-  const FrequencyWeighting weighting = output.axis == RideAxis::vertical ? en12299_wb() : en12299_wd();
-  const ride::DigitalFilter comfort = ride::digital_weighting(weighting, plan.step);
-  if (output.axis == RideAxis::longitudinal) {
-    weighted(comfort, run, h.values, periodic, &h.weighted);
-  } else {  // Sperling's B beside W
-    const SperlingDirection direction =
-        output.axis == RideAxis::vertical ? SperlingDirection::vertical : SperlingDirection::lateral;
-    weighted(comfort, ride::digital_sperling(direction, plan.step), run, h.values, periodic, &h.weighted, sperling);
-    h.sperling_wz = sperling_wz_from_weighted_rms(rms(*sperling));
+  return h;
+}
+
+bool weighted_output(const RideOutput& output) {
+  return output.kind == RideOutput::Kind::point && output.quantity == ResponseQuantity::acceleration;
+}
+
+// A weighted output's filters: EN 12299's W of its axis, and beside it (lateral and vertical)
+// Sperling's B of its direction.
+ride::DigitalFilter comfort_filter(const RideOutput& output, double step) {
+  return ride::digital_weighting(output.axis == RideAxis::vertical ? en12299_wb() : en12299_wd(), step);
+}
+bool has_sperling(const RideOutput& output) { return output.axis != RideAxis::longitudinal; }
+ride::DigitalFilter sperling_filter(const RideOutput& output, double step) {
+  return ride::digital_sperling(output.axis == RideAxis::vertical ? SperlingDirection::vertical : SperlingDirection::lateral,
+                                step);
+}
+
+// The weighted samples of every weighted output: W into RideHistory::weighted, Sperling's B
+// (of which only the RMS is kept, by history_indices()) into the storage of the history's
+// Cc(t), written after it. Two outputs of one axis (the same two filters) go through them at once.
+// runs[j]: output j's samples over the run, settling included.
+void weigh_outputs(const std::vector<RideOutput>& outputs, const std::vector<Eigen::VectorXd*>& runs,
+                   const RunPlan& plan, bool periodic, std::vector<RideHistory>* histories) {
+  std::vector<char> done(outputs.size(), 0);
+  for (size_t j = 0; j < outputs.size(); ++j) {
+    if (done[j] || !weighted_output(outputs[j])) continue;
+    RideHistory& h = (*histories)[j];
+    const ride::DigitalFilter comfort = comfort_filter(outputs[j], plan.step);
+    if (!has_sperling(outputs[j])) {
+      weighted(comfort, *runs[j], h.values, periodic, &h.weighted);
+      continue;
+    }
+    const ride::DigitalFilter sperling = sperling_filter(outputs[j], plan.step);
+    size_t partner = j + 1;
+    while (partner < outputs.size() &&
+           (done[partner] || !weighted_output(outputs[partner]) || outputs[partner].axis != outputs[j].axis))
+      ++partner;
+    if (partner == outputs.size()) {
+      weighted(comfort, sperling, *runs[j], h.values, periodic, &h.weighted, &h.continuous_comfort);
+      continue;
+    }
+    RideHistory& g = (*histories)[partner];
+    weighted(comfort, sperling, *runs[j], h.values, *runs[partner], g.values, periodic, &h.weighted,
+             &h.continuous_comfort, &g.weighted, &g.continuous_comfort);
+    done[partner] = 1;
   }
-  h.weighted_rms = rms(h.weighted);
+}
+
+// A weighted output's indices from its weighted samples (weigh_outputs()).
+void history_indices(const RideOutput& output, const RunPlan& plan, const RideSimulationOptions& options,
+                     std::vector<std::string>* notes, RideHistory* h) {
+  if (has_sperling(output)) h->sperling_wz = sperling_wz_from_weighted_rms(rms(h->continuous_comfort));
+  h->weighted_rms = rms(h->weighted);
   const Eigen::Index window = std::max<Eigen::Index>(1, std::lround(options.window / plan.step));
-  h.window_rms = ride::window_rms(h.weighted, window);
-  h.continuous_comfort = ride::running_rms(h.weighted, window);
-  if (h.window_rms.size() == 0) {
+  h->window_rms = ride::window_rms(h->weighted, window);
+  ride::running_rms(h->weighted, window, &h->continuous_comfort);
+  if (h->window_rms.size() == 0) {
     notes->push_back(output.name + ": the run is shorter than one window; no P95");
-    return h;
+    return;
   }
   std::string note;
-  h.p95 = ride::zone_p95(h.window_rms, kWindowsPerZone, &note);
+  h->p95 = ride::zone_p95(h->window_rms, kWindowsPerZone, &note);
   notes->push_back(output.name + ": " + note);
-  return h;
 }
 
 // N_MV per floor point: EN 12299 combines the three axes' P95 of the same 5-minute zone, and
@@ -288,7 +343,7 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
   const ride::TrackUnderWheels track(
       system, geometry, ride::cross_level_directions(system, options.contact_half_spacing, options.rolling_radius));
   const RunPlan plan = plan_run(geometry, samples, track, options, &result.notes);
-  Eigen::MatrixXd y;
+  std::vector<Eigen::VectorXd> y;  // every output's samples over the run
   if (options.effects.any()) {
     // The nonlinear effects simulated, not linearised (docs/ride.md, "Friction in time"): from
     // rest, also on a periodic track (a nonlinear orbit has no closed-form start).
@@ -296,7 +351,7 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
       result.notes.push_back("nonlinear effects: started from rest (settle_time is all the settling there is)");
     ride::FrictionMarch march = ride::march_with_effects(system, model, track, rows, plan.settle + plan.evaluated,
                                                          plan.step, options.speed, options.effects);
-    y = std::move(march.y);
+    for (Eigen::Index j = 0; j < march.y.cols(); ++j) y.emplace_back(march.y.col(j));
     int sticks = 0, slips = 0;
     for (const SimulationEvent& e : march.history.events)
       sticks += e.kind == SimulationEvent::Kind::stick, slips += e.kind == SimulationEvent::Kind::slip;
@@ -314,11 +369,17 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
   result.notes.insert(result.notes.begin(), run_text(geometry, options, plan));
   result.time = Eigen::VectorXd::LinSpaced(plan.evaluated, static_cast<double>(plan.settle) * plan.step,
                                            static_cast<double>(plan.settle + plan.evaluated - 1) * plan.step);
-  Eigen::VectorXd sperling;  // one buffer for every output's Sperling-weighted samples
-  result.histories.reserve(outputs.size());
+  double non_finite = 0.0;  // over the whole run, settling included
+  for (const Eigen::VectorXd& run : y) non_finite += static_cast<double>((!run.array().isFinite()).count());
+  result.histories.reserve(outputs.size());  // no reallocation: `runs` points into the histories
+  std::vector<Eigen::VectorXd*> runs;         // each output's whole run, where it is now
+  for (size_t j = 0; j < outputs.size(); ++j) {
+    result.histories.push_back(history_values(&y[j], plan));
+    runs.push_back(plan.settle == 0 ? &result.histories.back().values : &y[j]);
+  }
+  weigh_outputs(outputs, runs, plan, geometry.periodic, &result.histories);
   for (size_t j = 0; j < outputs.size(); ++j)
-    result.histories.push_back(history(outputs[j], y.col(static_cast<Eigen::Index>(j)), plan, geometry.periodic,
-                                       options, &result.notes, &sperling));
+    if (weighted_output(outputs[j])) history_indices(outputs[j], plan, options, &result.notes, &result.histories[j]);
   result.comfort = comfort(outputs, result.histories);
   clock.lap("indices");
 
@@ -330,7 +391,6 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
             "(simulate/sampled_track.hpp); EN 12299 Wb/Wd and Sperling B by the prewarped bilinear transform"
           : "exact state transition with a first-order hold on each wheel's linearly interpolated track (Van Loan), "
             "step = track step / (m·speed); EN 12299 Wb/Wd and Sperling B by the prewarped bilinear transform";
-  const double non_finite = static_cast<double>((!y.array().isFinite()).count());
   result.summary.checks.push_back({"non-finite output samples", non_finite, 0.0, non_finite == 0.0});
   return result;
 }

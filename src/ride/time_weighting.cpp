@@ -170,6 +170,79 @@ void run_pair(const std::vector<SectionPair>& sections, const double* in0, const
   }
 }
 
+// One section of a pair on one sample, its order fixed (1 … kFusedOrder): the operations of
+// apply_fused_pair's padded section without the padding, which for a finite sample is exactly
+// +0 (0·x − 0·y + 0 is +0 whatever the signs of x and y) and adds nothing.
+template <int kOrder>
+inline Lanes section_step(const SectionPair& s, Lanes* z, Lanes x) {
+  const Lanes zero{0.0, 0.0};
+  const Lanes y = s.b[0] * x + z[0];
+  if (kOrder == 1) {
+    z[0] = s.b[1] * x - s.a[1] * y + zero;
+  } else if (kOrder == 2) {
+    z[0] = s.b[1] * x - s.a[1] * y + z[1];
+    z[1] = s.b[2] * x - s.a[2] * y + zero;
+  } else {
+    z[0] = s.b[1] * x - s.a[1] * y + z[1];
+    z[1] = s.b[2] * x - s.a[2] * y + z[2];
+    z[2] = s.b[3] * x - s.a[3] * y + zero;
+  }
+  return y;
+}
+
+// Two histories a and b through two cascades each, in one loop: the first cascade with a in
+// lane 0 and b in lane 1, the second likewise. Four recursions in flight instead of two, so
+// the processor overlaps them where a pair alone waits on its sections' recursions. The
+// section counts and orders fixed, so that the states are locals kept in registers.
+template <int kSections0, int kOrder0, int kSections1, int kOrder1>
+void apply_quad(const SectionPair* first, const SectionPair* second, const double* a, const double* b, Eigen::Index n,
+                double* first_a, double* first_b, double* second_a, double* second_b, std::vector<Lanes>* first_state,
+                std::vector<Lanes>* second_state) {
+  Lanes z0[kFusedOrder * kSections0], z1[kFusedOrder * kSections1];
+  std::copy(first_state->begin(), first_state->end(), z0);
+  std::copy(second_state->begin(), second_state->end(), z1);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Lanes x{a[i], b[i]};
+    Lanes y0 = x, y1 = x;
+    for (int j = 0; j < kSections0; ++j) y0 = section_step<kOrder0>(first[j], z0 + kFusedOrder * j, y0);
+    for (int j = 0; j < kSections1; ++j) y1 = section_step<kOrder1>(second[j], z1 + kFusedOrder * j, y1);
+    first_a[i] = y0[0];
+    first_b[i] = y0[1];
+    second_a[i] = y1[0];
+    second_b[i] = y1[1];
+  }
+  std::copy(z0, z0 + kFusedOrder * kSections0, first_state->begin());
+  std::copy(z1, z1 + kFusedOrder * kSections1, second_state->begin());
+}
+
+// The highest order of a cascade's sections.
+size_t cascade_order(const std::vector<DigitalFilter::Section>& sections) {
+  size_t order = 0;
+  for (const DigitalFilter::Section& s : sections) order = std::max(order, s.a.size() - 1);
+  return order;
+}
+
+// The two histories' passes: apply_quad where it is instantiated (EN 12299's four sections of
+// order 2 beside Sperling's one of order 3), else each cascade's pair over a and b in turn.
+// `first` and `second` are each cascade paired with itself; the states are theirs.
+void run_quad(const std::vector<SectionPair>& first, size_t first_order, const std::vector<SectionPair>& second,
+              size_t second_order, const double* a, const double* b, Eigen::Index n, double* first_a,
+              double* first_b, double* second_a, double* second_b, std::vector<Lanes>* first_state,
+              std::vector<Lanes>* second_state) {
+  first_state->resize(kFusedOrder * first.size(), Lanes{0.0, 0.0});
+  second_state->resize(kFusedOrder * second.size(), Lanes{0.0, 0.0});
+  if (first_order == 2 && second.size() == 1 && second_order == 3) {
+    if (first.size() == 4)  // Wb (vertical) beside Sperling's B
+      return apply_quad<4, 2, 1, 3>(first.data(), second.data(), a, b, n, first_a, first_b, second_a, second_b,
+                                    first_state, second_state);
+    if (first.size() == 3)  // Wd (lateral), without the upward step, beside Sperling's B
+      return apply_quad<3, 2, 1, 3>(first.data(), second.data(), a, b, n, first_a, first_b, second_a, second_b,
+                                    first_state, second_state);
+  }
+  run_pair(first, a, b, n, first_a, first_b, first_state);
+  run_pair(second, a, b, n, second_a, second_b, second_state);
+}
+
 // The first `from` samples of a run whose output is not kept: run through `run` in chunks
 // of at most `buffer` samples, written there and overwritten, so that the state they leave is
 // the whole run's (the same operations in the same order) without a buffer of `from` samples.
@@ -224,6 +297,52 @@ void DigitalFilter::apply_second_pass(const DigitalFilter& first, const DigitalF
   std::vector<Lanes> state;
   run_pair(sections, in0.data(), in1.data(), lead, first_out->data(), second_out->data(), &state);  // first pass
   run_pair(sections, period.data(), period.data(), n, first_out->data(), second_out->data(), &state);
+}
+
+void DigitalFilter::apply_from(const DigitalFilter& first, const DigitalFilter& second, Eigen::Ref<const Eigen::VectorXd> a,
+                               Eigen::Ref<const Eigen::VectorXd> b, Eigen::Index from, Eigen::VectorXd* first_a,
+                               Eigen::VectorXd* second_a, Eigen::VectorXd* first_b, Eigen::VectorXd* second_b) {
+  const std::vector<SectionPair> ff = paired(first.sections_, first.sections_);
+  const std::vector<SectionPair> ss = paired(second.sections_, second.sections_);
+  if (ff.empty() || ss.empty() || a.size() != b.size()) {
+    apply_from(first, second, a, from, first_a, second_a);
+    apply_from(first, second, b, from, first_b, second_b);
+    return;
+  }
+  const Eigen::Index kept = a.size() - from;
+  for (Eigen::VectorXd* out : {first_a, second_a, first_b, second_b}) out->resize(kept);
+  const size_t first_order = cascade_order(first.sections_), second_order = cascade_order(second.sections_);
+  std::vector<Lanes> first_state, second_state;
+  const auto run = [&](Eigen::Index start, Eigen::Index n) {
+    run_quad(ff, first_order, ss, second_order, a.data() + start, b.data() + start, n, first_a->data(),
+             first_b->data(), second_a->data(), second_b->data(), &first_state, &second_state);
+  };
+  run_discarded(from, kept, run);
+  run(from, kept);
+}
+
+void DigitalFilter::apply_second_pass(const DigitalFilter& first, const DigitalFilter& second,
+                                      Eigen::Ref<const Eigen::VectorXd> a, Eigen::Ref<const Eigen::VectorXd> b,
+                                      Eigen::VectorXd* first_a, Eigen::VectorXd* second_a, Eigen::VectorXd* first_b,
+                                      Eigen::VectorXd* second_b) {
+  const std::vector<SectionPair> ff = paired(first.sections_, first.sections_);
+  const std::vector<SectionPair> ss = paired(second.sections_, second.sections_);
+  if (ff.empty() || ss.empty() || a.size() != b.size()) {
+    apply_second_pass(first, second, a, first_a, second_a);
+    apply_second_pass(first, second, b, first_b, second_b);
+    return;
+  }
+  const Eigen::Index n = a.size();
+  for (Eigen::VectorXd* out : {first_a, second_a, first_b, second_b}) out->resize(n);
+  // Each cascade's first pass over its own lead-in, a and b side by side (as the pair's lanes
+  // do, from rest), then the period through both cascades at once.
+  const Eigen::Index lead0 = std::min<Eigen::Index>(n, first.lead_in());
+  const Eigen::Index lead1 = std::min<Eigen::Index>(n, second.lead_in());
+  std::vector<Lanes> first_state, second_state;
+  run_pair(ff, a.data() + n - lead0, b.data() + n - lead0, lead0, first_a->data(), first_b->data(), &first_state);
+  run_pair(ss, a.data() + n - lead1, b.data() + n - lead1, lead1, second_a->data(), second_b->data(), &second_state);
+  run_quad(ff, cascade_order(first.sections_), ss, cascade_order(second.sections_), a.data(), b.data(), n,
+           first_a->data(), first_b->data(), second_a->data(), second_b->data(), &first_state, &second_state);
 }
 
 Eigen::VectorXd DigitalFilter::apply(Eigen::Ref<const Eigen::VectorXd> input) const { return apply_from(input, 0); }

@@ -50,6 +50,17 @@ class DigitalFilter {
   static void apply_second_pass(const DigitalFilter& first, const DigitalFilter& second,
                                 Eigen::Ref<const Eigen::VectorXd> period, Eigen::VectorXd* first_out,
                                 Eigen::VectorXd* second_out);
+  /// Two histories of one length through the same two cascades at once (four recursions in
+  /// flight): the pair apply_from over `a` into *first_a, *second_a and over `b` into *first_b,
+  /// *second_b, bit for bit (resized, reused as there; none overlapping `a` or `b`).
+  static void apply_from(const DigitalFilter& first, const DigitalFilter& second, Eigen::Ref<const Eigen::VectorXd> a,
+                         Eigen::Ref<const Eigen::VectorXd> b, Eigen::Index from, Eigen::VectorXd* first_a,
+                         Eigen::VectorXd* second_a, Eigen::VectorXd* first_b, Eigen::VectorXd* second_b);
+  /// The same for the pair apply_second_pass over two periods `a` and `b` of one length.
+  static void apply_second_pass(const DigitalFilter& first, const DigitalFilter& second,
+                                Eigen::Ref<const Eigen::VectorXd> a, Eigen::Ref<const Eigen::VectorXd> b,
+                                Eigen::VectorXd* first_a, Eigen::VectorXd* second_a, Eigen::VectorXd* first_b,
+                                Eigen::VectorXd* second_b);
   /// H(e^{iωΔt}) at `frequency` Hz for the sample step `time_step` s.
   std::complex<double> response(double frequency, double time_step) const;
 

@@ -54,13 +54,23 @@ Eigen::VectorXd realise(const TrackSpectrum& spectrum, Eigen::Index n, double st
   auto Y = fft.input();
   Y.setZero();
   for (Eigen::Index k = 1; k < n / 2; ++k) {
+    // Drawn for every bin, so a bin's draw does not depend on the band; outside the band (the
+    // density exactly 0: most bins, the band's top usually far below Nyquist) the pair is only
+    // skipped and the bin left at 0. It would be ±0 (0 times the draw's sign), and a signed
+    // zero added to the other bins' nonzero terms leaves every sample the same double.
+    const double density = spectrum.density(static_cast<double>(k) * dOmega);
+    if (density == 0.0) {
+      stream.skip_normal_pair();
+      continue;
+    }
     double re = 0.0, im = 0.0;
-    stream.next_normal_pair(&re, &im);  // drawn for every bin, so a bin's draw does not depend on the band
-    const double sigma = std::sqrt(spectrum.density(static_cast<double>(k) * dOmega) * dOmega);
+    stream.next_normal_pair(&re, &im);
+    const double sigma = std::sqrt(density * dOmega);
     Y(k) = std::complex<double>(0.5 * sigma * re, 0.5 * sigma * im);
   }
-  fft.execute();
-  return fft.output();
+  Eigen::VectorXd profile;
+  fft.execute(&profile);  // straight into the profile: no copy, no second buffer touched
+  return profile;
 }
 
 }  // namespace

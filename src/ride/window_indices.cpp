@@ -68,24 +68,68 @@ double zone_nmv(const Eigen::VectorXd* longitudinal, const Eigen::VectorXd* late
   return largest;
 }
 
-Eigen::VectorXd running_rms(const Eigen::VectorXd& values, Eigen::Index samples) {
+namespace {
+
+// The running sum of squares over one restart interval of running_rms: out[i] for i in
+// [start, end), from the window's sum at `start` (a recursion, one add and one subtract a
+// sample). kChains intervals run side by side: their recursions are independent (each restarts
+// from its own window sum), so they overlap in the processor where one interval at a time waits
+// on each add in turn; each interval's operations are the same, in the same order.
+constexpr int kChains = 8;
+
+void running_sums(const Eigen::VectorXd& values, Eigen::Index samples, Eigen::Index start, double* out) {
   const Eigen::Index n = values.size();
-  Eigen::VectorXd out(n);
-  // A running sum of squares, recomputed every `samples` steps so its rounding cannot build up;
-  // the sums first (a recursion), then the square roots over all of them in one loop.
-  for (Eigen::Index start = 0; start < n; start += samples) {
-    const Eigen::Index first = std::max<Eigen::Index>(0, start + 1 - samples);
-    double sum = values.segment(first, start + 1 - first).squaredNorm();
-    out(start) = sum;
-    const Eigen::Index end = std::min(n, start + samples);
-    for (Eigen::Index i = start + 1; i < end; ++i) {
-      sum += values(i) * values(i);
-      if (i >= samples) sum -= values(i - samples) * values(i - samples);
-      out(i) = sum;
-    }
+  const double* v = values.data();
+  const Eigen::Index first = std::max<Eigen::Index>(0, start + 1 - samples);
+  double sum = values.segment(first, start + 1 - first).squaredNorm();
+  out[start] = sum;
+  const Eigen::Index end = std::min(n, start + samples);
+  for (Eigen::Index i = start + 1; i < end; ++i) {
+    sum += v[i] * v[i];
+    if (i >= samples) sum -= v[i - samples] * v[i - samples];
+    out[i] = sum;
   }
-  for (Eigen::Index i = 0; i < n; ++i)
-    out(i) = std::sqrt(std::max(0.0, out(i)) / static_cast<double>(std::min<Eigen::Index>(i + 1, samples)));
+}
+
+// kChains whole intervals from `start` (start ≥ samples, so every sample drops one).
+void running_sums_side_by_side(const Eigen::VectorXd& values, Eigen::Index samples, Eigen::Index start, double* out) {
+  const double* v = values.data();
+  double sum[kChains];
+  for (int c = 0; c < kChains; ++c) {
+    const Eigen::Index at = start + c * samples;
+    sum[c] = values.segment(at + 1 - samples, samples).squaredNorm();
+    out[at] = sum[c];
+  }
+  for (Eigen::Index i = 1; i < samples; ++i)
+    for (int c = 0; c < kChains; ++c) {
+      const Eigen::Index at = start + c * samples + i;
+      sum[c] += v[at] * v[at];
+      sum[c] -= v[at - samples] * v[at - samples];
+      out[at] = sum[c];
+    }
+}
+
+}  // namespace
+
+void running_rms(const Eigen::VectorXd& values, Eigen::Index samples, Eigen::VectorXd* out) {
+  const Eigen::Index n = values.size();
+  out->resize(n);
+  double* o = out->data();
+  // A running sum of squares, recomputed every `samples` steps so its rounding cannot build up;
+  // the sums first (a recursion), then the square roots over all of them.
+  Eigen::Index start = 0;
+  if (start < n) running_sums(values, samples, start, o), start += samples;
+  for (; start + kChains * samples <= n; start += kChains * samples) running_sums_side_by_side(values, samples, start, o);
+  for (; start < n; start += samples) running_sums(values, samples, start, o);
+  const Eigen::Index head = std::min(n, samples);
+  for (Eigen::Index i = 0; i < head; ++i) o[i] = std::sqrt(std::max(0.0, o[i]) / static_cast<double>(i + 1));
+  const double whole = static_cast<double>(samples);
+  for (Eigen::Index i = head; i < n; ++i) o[i] = std::sqrt(std::max(0.0, o[i]) / whole);
+}
+
+Eigen::VectorXd running_rms(const Eigen::VectorXd& values, Eigen::Index samples) {
+  Eigen::VectorXd out;
+  running_rms(values, samples, &out);
   return out;
 }
 

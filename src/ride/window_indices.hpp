@@ -31,5 +31,7 @@ double zone_nmv(const Eigen::VectorXd* longitudinal, const Eigen::VectorXd* late
 /// Cc(t) = √((1/T)∫_{t−T}^{t} a_w² dτ) at every sample, T = `samples` samples; over the
 /// samples so far while t < T.
 Eigen::VectorXd running_rms(const Eigen::VectorXd& values, Eigen::Index samples);
+/// The same into *out (resized; one already of the size is reused), which must not be `values`.
+void running_rms(const Eigen::VectorXd& values, Eigen::Index samples, Eigen::VectorXd* out);
 
 }  // namespace railmodal::ride

@@ -79,4 +79,14 @@ InverseRealFft::~InverseRealFft() {
 
 void InverseRealFft::execute() { fftw_execute(plan_); }
 
+void InverseRealFft::execute(Eigen::VectorXd* out) {
+  out->resize(length_);
+  if (fftw_alignment_of(out->data()) != fftw_alignment_of(output_)) {
+    execute();
+    *out = output();
+    return;
+  }
+  fftw_execute_dft_c2r(plan_, reinterpret_cast<fftw_complex*>(input_), out->data());
+}
+
 }  // namespace railmodal::spectrum

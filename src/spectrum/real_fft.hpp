@@ -50,6 +50,10 @@ class InverseRealFft {
   /// y[n] = Σ_{k=0}^{length−1} Y[k] e^{+2πikn/length} (unnormalised), valid after execute().
   Eigen::Map<const Eigen::VectorXd> output() const { return {output_, length_}; }
   void execute();
+  /// execute() with y written into *out (resized to `length`) instead of output(): the same
+  /// plan, so the same doubles; straight into out's storage when FFTW's alignment of it is
+  /// the planned buffer's (fftw_execute_dft_c2r's condition), else through output() and copied.
+  void execute(Eigen::VectorXd* out);
 
  private:
   Eigen::Index length_;

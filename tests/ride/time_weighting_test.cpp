@@ -86,6 +86,39 @@ TEST(RideIndices, WindowsPercentileAndRunningRms) {
   EXPECT_DOUBLE_EQ(running(6), std::sqrt((4 + 9) / 2.0));
 }
 
+// running_rms runs several restart intervals of its running sum side by side; each interval's
+// recursion is the same operations as one interval at a time, so Cc(t) is the same doubles as
+// the plain loop below (the form before the intervals ran side by side), on runs with and without a
+// partial last group of intervals, and with the result vector reused.
+TEST(TimeWeighting, RunningRmsSideBySideIsTheOneIntervalAtATimeLoopBitForBit) {
+  const auto plain = [](const Eigen::VectorXd& values, Eigen::Index samples) {
+    const Eigen::Index n = values.size();
+    Eigen::VectorXd out(n);
+    for (Eigen::Index start = 0; start < n; start += samples) {
+      const Eigen::Index first = std::max<Eigen::Index>(0, start + 1 - samples);
+      double sum = values.segment(first, start + 1 - first).squaredNorm();
+      out(start) = sum;
+      for (Eigen::Index i = start + 1; i < std::min(n, start + samples); ++i) {
+        sum += values(i) * values(i);
+        if (i >= samples) sum -= values(i - samples) * values(i - samples);
+        out(i) = sum;
+      }
+    }
+    for (Eigen::Index i = 0; i < n; ++i)
+      out(i) = std::sqrt(std::max(0.0, out(i)) / static_cast<double>(std::min<Eigen::Index>(i + 1, samples)));
+    return out;
+  };
+  Eigen::VectorXd reused;
+  for (Eigen::Index n : {1, 7, 1000, 20011, 100000})
+    for (Eigen::Index samples : {1, 2, 37, 1000, 5000}) {
+      const Eigen::VectorXd values = Eigen::VectorXd::Random(n).array().cube().matrix();  // varied magnitudes
+      const Eigen::VectorXd expected = plain(values, samples);
+      EXPECT_EQ(ride::running_rms(values, samples), expected) << n << " samples, window " << samples;
+      ride::running_rms(values, samples, &reused);
+      EXPECT_EQ(reused, expected) << n << " samples, window " << samples;
+    }
+}
+
 // EN 12299 combines the axes' P95 of the same 5-minute zone, then takes the largest zone's N_MV.
 // Two zones whose worst axes differ: longitudinal worst in zone 2, vertical in zone 1. Zone by
 // zone both give 6√(0.1² + 0.3²) = 1.897; the axes' worst zones combined would read
@@ -173,6 +206,48 @@ TEST(TimeWeighting, PairedCascadesAreEachCascadeAloneBitForBit) {
       EXPECT_EQ(first_out, first->apply_second_pass(x));
       EXPECT_EQ(second_out, second->apply_second_pass(x));
     }
+}
+
+TEST(TimeWeighting, TwoHistoriesAtOnceAreEachHistorysPairBitForBit) {
+  // simulate_ride weighs two outputs of one axis at once (four recursions in one loop, W's
+  // sections without their padding): each output the same doubles as the pair over it alone,
+  // from rest with and without settling and in the periodic second pass (lengths as in the
+  // pair test above), for the instantiated Wb/Wd beside Sperling's B, for cascades taking the
+  // fallback (Sperling's B first, a fourth-order section), and into reused buffers.
+  Eigen::VectorXd a(30000), b(30000);
+  for (Eigen::Index n = 0; n < a.size(); ++n) {
+    a(n) = std::sin(0.013 * static_cast<double>(n * n % 977)) + 0.1 * std::cos(0.7 * static_cast<double>(n));
+    b(n) = std::sin(0.011 * static_cast<double>(n * n % 983)) + 0.2 * std::cos(0.3 * static_cast<double>(n));
+  }
+  const ride::DigitalFilter wb = ride::digital_weighting(en12299_wb(), kStep);
+  const ride::DigitalFilter wd = ride::digital_weighting(en12299_wd(), kStep);
+  const ride::DigitalFilter bv = ride::digital_sperling(SperlingDirection::vertical, kStep);
+  const ride::DigitalFilter bl = ride::digital_sperling(SperlingDirection::lateral, kStep);
+  const ride::DigitalFilter fourth({ride::bilinear({1.0, 0.0, 0.0, 0.0, 1e-4}, {1.0, 0.5, 0.1, 0.01, 1e-3}, kStep, 0.0)});
+  const std::vector<std::pair<const ride::DigitalFilter*, const ride::DigitalFilter*>> pairs{
+      {&wb, &bv}, {&wd, &bl}, {&bv, &wb}, {&wb, &fourth}};
+  Eigen::VectorXd first_a, second_a, first_b = Eigen::VectorXd::Constant(7, NAN), second_b, first, second;
+  for (const auto& [f, s] : pairs) {
+    for (Eigen::Index n : {Eigen::Index{30000}, Eigen::Index{3000}}) {
+      const Eigen::VectorXd x = a.head(n), y = b.head(n);
+      ride::DigitalFilter::apply_second_pass(*f, *s, x, y, &first_a, &second_a, &first_b, &second_b);
+      ride::DigitalFilter::apply_second_pass(*f, *s, x, &first, &second);
+      EXPECT_EQ(first_a, first) << n;
+      EXPECT_EQ(second_a, second) << n;
+      ride::DigitalFilter::apply_second_pass(*f, *s, y, &first, &second);
+      EXPECT_EQ(first_b, first) << n;
+      EXPECT_EQ(second_b, second) << n;
+    }
+    for (Eigen::Index from : {Eigen::Index{0}, Eigen::Index{9000}, Eigen::Index{21000}, Eigen::Index{30000}}) {
+      ride::DigitalFilter::apply_from(*f, *s, a, b, from, &first_a, &second_a, &first_b, &second_b);
+      ride::DigitalFilter::apply_from(*f, *s, a, from, &first, &second);
+      EXPECT_EQ(first_a, first) << from;
+      EXPECT_EQ(second_a, second) << from;
+      ride::DigitalFilter::apply_from(*f, *s, b, from, &first, &second);
+      EXPECT_EQ(first_b, first) << from;
+      EXPECT_EQ(second_b, second) << from;
+    }
+  }
 }
 
 TEST(TimeWeighting, ApplyFromAndBuffersGiveTheWholeRunsSamplesBitForBit) {
