@@ -8,6 +8,7 @@
 #include <optional>
 #include <string_view>
 
+#include "input/c_locale_chars.hpp"
 #include "input/value_place.hpp"
 
 namespace railmodal::input {
@@ -80,9 +81,9 @@ bool read_word(std::string_view unit, std::size_t& at, std::string_view word) {
   return true;
 }
 
-// Moves `at` past the C locale's white space: ' ', '\t', '\n', '\v', '\f', '\r'.
+// Moves `at` past the C locale's white space (the regular expression's \s).
 void skip_density_space(std::string_view unit, std::size_t& at) {
-  while (at < unit.size() && (unit[at] == ' ' || (unit[at] >= '\t' && unit[at] <= '\r'))) ++at;
+  while (at < unit.size() && is_c_space(unit[at])) ++at;
 }
 
 std::optional<DensityUnit> read_density_unit(std::string_view unit) {

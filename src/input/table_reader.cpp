@@ -9,6 +9,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "input/c_locale_chars.hpp"
 #include "input/input_file.hpp"
 #include "input/toml_preflight.hpp"
 #include "input/value_place.hpp"
@@ -33,11 +34,8 @@ const char* type_name(const toml::value& v) {
 // Plain scans for the two patterns of toml11's formatted message that parse_toml_file reads.
 // They replace std::regex (R"(\n\s*(\d+) \|)" and R"(\^+-*\s*(.*))", ECMAScript, searched
 // once each), which made this the library's slowest file to compile, with the same matches:
-// \s is the C locale's white space, \d an ASCII digit and '.' any character but '\n' and '\r'.
-bool is_c_space(char c) {
-  return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
-}
-bool is_ascii_digit(char c) { return c >= '0' && c <= '9'; }
+// \s is the C locale's white space, \d an ASCII digit (input/c_locale_chars.hpp) and '.' any
+// character but '\n' and '\r'.
 
 // The digits of the first "\n", white space, digits, " |" in `message`.
 std::optional<std::string> marker_line_digits(const std::string& message) {
