@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checks that a change of golden outputs is one of number representation only.
 
-Usage: tools/golden_numbers.py [REV] [PATH ...]   (default REV HEAD, PATH tests/golden/expected)
+Usage: tools/golden_numbers.py [--relative R] [REV] [PATH ...]
+       (default REV HEAD, PATH tests/golden/expected)
 
 For every JSON and CSV file under the paths that differs between REV and the working tree:
   - JSON: both parse; every object has the same members in the same order, every array the same
@@ -11,15 +12,24 @@ For every JSON and CSV file under the paths that differs between REV and the wor
     the old one was rounded (written to fewer digits): the new one written with the old one's
     significant digits reads back as the old one.
 Any other file that differs is listed (its change is not checked here). Exits 1 on a mismatch.
+
+With --relative R (a change allowed to move numbers by round-off, e.g. 1e-13) a number may also
+differ by at most R relative to the larger of the two (a CSV number also by one unit in its
+last written digit: a round-off change that tips the rounding); the largest
+relative change of a JSON number is printed, and each number beyond R is listed with its
+absolute change (a value that is round-off of zero, such as a cross term, is judged from that).
 """
 import csv
 import io
 import json
+import math
 import re
 import subprocess
 import sys
 
 NUMBER = re.compile(r'-?\d+(?:\.\d+)?(?:[eE][-+]?\d+)?')
+RELATIVE = 0.0      # --relative: the round-off a change may move a number by
+LARGEST = [0.0, '']  # the largest relative change of a JSON number seen, and where
 
 
 def old_text(rev, path):
@@ -44,7 +54,11 @@ def json_same(a, b, where, problems):
         if a != b or type(a) is not type(b):
             problems.append(f'{where}: {a!r} != {b!r}')
     elif float(a) != float(b):
-        problems.append(f'{where}: {a!r} != {b!r}')
+        change = abs(float(a) - float(b)) / max(abs(float(a)), abs(float(b)))
+        if change > LARGEST[0]:
+            LARGEST[:] = [change, where]
+        if change > RELATIVE:
+            problems.append(f'{where}: {a!r} != {b!r} (relative {change:.2g}, absolute {abs(float(a) - float(b)):.2g})')
 
 
 def skeleton(text):
@@ -77,11 +91,18 @@ def csv_same(old, new, problems):
                 problems.append(f'row {r} field {c}: {u!r} != {v!r}')
                 continue
             if fu != fv and float(f'{fv:.{significant_digits(u)}g}') != fu:
+                unit = 10.0 ** (math.floor(math.log10(abs(fu))) - significant_digits(u) + 1) if fu else 0.0
+                if RELATIVE > 0 and (abs(fu - fv) <= unit * (1 + 1e-9) or abs(fu - fv) <= RELATIVE * max(abs(fu), abs(fv))):
+                    continue  # round-off, or the last written digit tipped by it
                 problems.append(f'row {r} field {c}: {u} is not {v} rounded')
 
 
 def main():
+    global RELATIVE
     args = sys.argv[1:]
+    if args and args[0] == '--relative':
+        RELATIVE = float(args[1])
+        args = args[2:]
     rev = args.pop(0) if args and not args[0].startswith('tests') else 'HEAD'
     paths = args or ['tests/golden/expected']
     changed = subprocess.run(['git', 'diff', '--name-only', rev, '--', *paths], capture_output=True, text=True,
@@ -111,6 +132,8 @@ def main():
         for p in problems[:10]:
             print(f'  {p}')
         bad += bool(problems)
+    if RELATIVE > 0:
+        print(f'largest relative change of a JSON number: {LARGEST[0]:.3g} at {LARGEST[1]}')
     sys.exit(1 if bad else 0)
 
 
