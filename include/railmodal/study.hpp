@@ -247,15 +247,25 @@ struct VariantResult {
 /// Evaluates one variant: modes, static deflections, metacentric height, critical speeds,
 /// peak responses in its scene, when `rule` is active the permissible dynamic deflections, and
 /// when `hunting` is given the hunting speed (VariantResult::hunting_speed) with those options.
+/// With `ride_rms_only` the ride (a scene with random track) is solved with RideOptions::rms_only:
+/// each output's max_rms bit for bit the same, no max_wz and no max_nmv (ride_rms_only(study)).
 /// Never throws for a bad design: an unstable or singular vehicle, or a wheelset contact out of
 /// range, is a result with its `failure`.
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule = {},
-                               const std::optional<HuntingOptions>& hunting = std::nullopt);
+                               const std::optional<HuntingOptions>& hunting = std::nullopt,
+                               bool ride_rms_only = false);
 
 /// The hunting options a study evaluates "hunting_speed" with, when its ranking names that metric
 /// (HuntingOptions' defaults, one thread: the variants are spread over the threads); none otherwise,
 /// and then no variant pays for it.
 std::optional<HuntingOptions> hunting_options_of(const Study& study);
+
+/// Whether a study's ride needs only each output's RMS: its ranking (objective or constraints)
+/// names an rms_acceleration:<output> metric and neither max_wz nor max_nmv. evaluate_study then
+/// solves the ride with RideOptions::rms_only (the same RMS bit for bit, at about 55 % of the
+/// CPU), and the variants' results have no max_wz and no max_nmv (null in JSON and shards). A
+/// study that names no ride metric keeps every index: its JSON reports them.
+bool ride_rms_only(const Study& study);
 
 struct EvaluationOptions {
   int threads = 0;      ///< ≥ 0; 0: std::thread::hardware_concurrency()

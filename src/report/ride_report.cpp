@@ -4,7 +4,8 @@
 // HTML with SVG plots (input and output PSDs log–log with the natural frequencies marked, the
 // indices against speed, and for a time-domain run the weighted acceleration with its 5 s
 // windows and the FFT checks). Figures a result does not have (an unbounded RMS, an index of a
-// force) are words or blank or null, never inf or NaN.
+// force) are words or blank or null, never inf or NaN; the indices a result solved with
+// RideOptions::rms_only skipped (is_rms_only) have no column, member or chart at all.
 #include "railmodal/ride_report.hpp"
 
 #include <algorithm>
@@ -115,19 +116,29 @@ std::string capitalised(std::string word) {
 
 // ---- the tables (text, Markdown, HTML) ----
 
+// RMS only (rms_only): the first four columns.
 Table indices_table(const RideResult& r, const RideAtSpeed& at) {
   Table t;
-  t.headers = {"output", "unit", "RMS", "weighted RMS [m/s²]", "P95 estimate [m/s²]", "Wz", "dominant modes"};
-  t.numeric = {false, false, true, true, true, true, false};
+  const bool every_index = !is_rms_only(r);
+  t.headers = {"output", "unit", "RMS", "weighted RMS [m/s²]"};
+  t.numeric = {false, false, true, true};
+  if (every_index) {
+    t.headers.insert(t.headers.end(), {"P95 estimate [m/s²]", "Wz", "dominant modes"});
+    t.numeric.insert(t.numeric.end(), {true, true, false});
+  }
   for (size_t i = 0; i < r.outputs.size() && i < at.outputs.size(); ++i) {
     const RideOutputAtSpeed& o = at.outputs[i];
+    std::vector<std::string> row{r.outputs[i].name, unit_of(r.outputs[i])};
     if (o.unbounded) {
-      t.rows.push_back({r.outputs[i].name, unit_of(r.outputs[i]), "unbounded", "–", "–", "–", "an undamped mode"});
-      continue;
+      row.insert(row.end(), {"unbounded", "–"});
+      if (every_index) row.insert(row.end(), {"–", "–", "an undamped mode"});
+    } else {
+      row.insert(row.end(), {value_text(o.rms), optional_text(o.weighted_rms)});
+      if (every_index)
+        row.insert(row.end(), {optional_text(o.p95_estimate), o.sperling_wz ? fixed(*o.sperling_wz, 2) : "–",
+                               dominant_modes(r, o)});
     }
-    t.rows.push_back({r.outputs[i].name, unit_of(r.outputs[i]), value_text(o.rms), optional_text(o.weighted_rms),
-                      optional_text(o.p95_estimate), o.sperling_wz ? fixed(*o.sperling_wz, 2) : "–",
-                      dominant_modes(r, o)});
+    t.rows.push_back(std::move(row));
   }
   return t;
 }
@@ -197,7 +208,9 @@ std::string method_text(const RideResult& r) {
          (r.frequencies.size() ? significant(r.frequencies[0], 3) + " to " +
                                      significant(r.frequencies[r.frequencies.size() - 1], 3) + " Hz"
                                : std::string("–")) +
-         "; grid error estimate " + significant(100.0 * r.grid_error_estimate, 2) + " % of an RMS; friction: " +
+         (is_rms_only(r) ? std::string("; RMS and weighted RMS only (no grid error estimate)")
+                      : "; grid error estimate " + significant(100.0 * r.grid_error_estimate, 2) + " % of an RMS") +
+         "; friction: " +
          (r.friction_treatment.empty() ? std::string("none in the vehicle") : r.friction_treatment) + track_rms_text(r);
 }
 
@@ -444,7 +457,7 @@ void write_markdown(std::ostream& out, const Page& p) {
     report::write_markdown_table(out, modes_table(r));
   }
   write_speed_sections(out, p, Document::markdown);
-  if (!r.speeds.empty()) out << "\n" << kEstimateNote << "\n";
+  if (!r.speeds.empty() && !is_rms_only(r)) out << "\n" << kEstimateNote << "\n";
   for (const std::string& n : r.notes) out << "\n- " << n << "\n";
   write_time_domain(out, p, Document::markdown);
 }
@@ -490,7 +503,7 @@ void write_html(std::ostream& out, const Page& p) {
     report::write_html_table(out, modes_table(r));
   }
   write_speed_sections(out, p, Document::html);
-  if (!r.speeds.empty()) out << "<p class=note>" << html_escape(kEstimateNote) << "</p>\n";
+  if (!r.speeds.empty() && !is_rms_only(r)) out << "<p class=note>" << html_escape(kEstimateNote) << "</p>\n";
   write_time_domain(out, p, Document::html);
   report::write_html_footer(out, "ride", p.provenance);
 }
@@ -507,7 +520,7 @@ void write_text(std::ostream& out, const Page& p) {
     write_text_table(out, indices_table(r, at));
     if (!at.comfort.empty()) write_text_table(out, comfort_table(at.comfort, "N_MV (estimate)"));
   }
-  if (!r.speeds.empty()) out << "\n" << kEstimateNote << "\n";
+  if (!r.speeds.empty() && !is_rms_only(r)) out << "\n" << kEstimateNote << "\n";
   for (const std::string& n : r.notes) out << "Note: " << n << "\n";
   if (p.simulated) {
     out << "\nTime-domain run:\n";
@@ -537,17 +550,19 @@ bool has_comfort_indices(const RideOutput& o) {
 
 // One row per speed: for each output its RMS and, for a floor acceleration, its weighted RMS,
 // P95 estimate and Wz, each column headed with its unit; then N_MV per floor point. An unbounded
-// RMS is the word, its other columns blank.
+// RMS is the word, its other columns blank. RMS only (rms_only): the RMS and weighted RMS
+// columns, no P95, Wz or N_MV column (a CSV has no place for the note; the headings say what
+// there is).
 void write_csv(std::ostream& out, const RideResult& r) {
   using report::csv_heading;
   report::CsvWriter csv(out);
+  const bool every_index = !is_rms_only(r);
   csv.field(csv_heading("speed", "km/h"));
   for (const RideOutput& o : r.outputs) {
     csv.field(csv_heading(o.name + " rms", unit_of(o)));
-    if (has_comfort_indices(o))
-      csv.field(csv_heading(o.name + " weighted rms", "m/s²"))
-          .field(csv_heading(o.name + " p95 estimate", "m/s²"))
-          .field(o.name + " sperling wz");
+    if (has_comfort_indices(o)) csv.field(csv_heading(o.name + " weighted rms", "m/s²"));
+    if (has_comfort_indices(o) && every_index)
+      csv.field(csv_heading(o.name + " p95 estimate", "m/s²")).field(o.name + " sperling wz");
   }
   if (!r.speeds.empty())
     for (const RideComfortAtPoint& c : r.speeds.front().comfort) csv.field("nmv estimate " + point_text(c));
@@ -559,12 +574,13 @@ void write_csv(std::ostream& out, const RideResult& r) {
       const bool comfort = has_comfort_indices(r.outputs[i]);
       if (o.unbounded) {
         csv.field("unbounded");
-        if (comfort) csv.blank().blank().blank();
+        if (comfort) csv.blank();
+        if (comfort && every_index) csv.blank().blank();
         continue;
       }
       finite_field(csv, o.rms);
-      if (comfort) {
-        optional_field(csv, o.weighted_rms);
+      if (comfort) optional_field(csv, o.weighted_rms);
+      if (comfort && every_index) {
         optional_field(csv, o.p95_estimate);
         optional_field(csv, o.sperling_wz);
       }
@@ -611,9 +627,14 @@ void write_comfort(JsonWriter& j, const std::vector<RideComfortAtPoint>& comfort
   j.end_array();
 }
 
+// RMS only (rms_only): no comfort, modes, variance, P95 or Wz member.
 void write_at_speed(JsonWriter& j, const RideResult& r, const RideAtSpeed& at) {
-  j.begin_object().key("comfort");
-  write_comfort(j, at.comfort, "nmv_estimate");
+  const bool every_index = !is_rms_only(r);
+  j.begin_object();
+  if (every_index) {
+    j.key("comfort");
+    write_comfort(j, at.comfort, "nmv_estimate");
+  }
   j.key("inputs").begin_array();
   for (size_t k = 0; k < at.input_psd.size(); ++k) {
     j.begin_object().member("name", input_name(r, k)).key("psd_m2_per_hz");
@@ -629,19 +650,25 @@ void write_at_speed(JsonWriter& j, const RideResult& r, const RideAtSpeed& at) {
       j.member("name", out.name).member("unbounded", true).end_object();
       continue;
     }
-    const std::string variance = variance_key_suffix(out);
-    j.member("cross_term_variance_" + variance, o.cross_term_variance);
-    j.member("direct_variance_" + variance, o.direct_variance).key("modes").begin_array();
-    for (const ModalContribution& m : o.modes)
-      // 1-based, as the reports' tables number the modes
-      j.begin_object().member("mode", m.mode + 1).member("share", m.share).member("variance_" + variance, m.variance)
-          .end_object();
-    j.end_array().member("name", out.name).member("p95_estimate_m_s2", o.p95_estimate);
+    if (every_index) {
+      const std::string variance = variance_key_suffix(out);
+      j.member("cross_term_variance_" + variance, o.cross_term_variance);
+      j.member("direct_variance_" + variance, o.direct_variance).key("modes").begin_array();
+      for (const ModalContribution& m : o.modes)
+        // 1-based, as the reports' tables number the modes
+        j.begin_object().member("mode", m.mode + 1).member("share", m.share).member("variance_" + variance, m.variance)
+            .end_object();
+      j.end_array();
+    }
+    j.member("name", out.name);
+    if (every_index) j.member("p95_estimate_m_s2", o.p95_estimate);
     if (o.psd.size() > 0) {
       j.key("psd_" + psd_key_suffix(out));
       write_values(j, o.psd);
     }
-    j.member("rms_" + key_suffix(out), o.rms).member("sperling_wz", o.sperling_wz).member("unbounded", false);
+    j.member("rms_" + key_suffix(out), o.rms);
+    if (every_index) j.member("sperling_wz", o.sperling_wz);
+    j.member("unbounded", false);
     j.member("weighted_rms_m_s2", o.weighted_rms).end_object();
   }
   j.end_array().member("speed_kmh", at.speed * kKmh).member("speed_m_s", at.speed).end_object();
@@ -688,7 +715,9 @@ void write_json(std::ostream& out, const Page& p) {
   const RideResult& r = p.r;
   write_line_member(out, "title", [&](JsonWriter& j) { j.value(p.title); }, true);
   write_line_member(out, "friction_treatment", [&](JsonWriter& j) { j.value(r.friction_treatment); });
-  write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(r.grid_error_estimate); });
+  // RMS only (rms_only): no grid error estimate, and a member that says so.
+  if (is_rms_only(r)) write_line_member(out, "rms_only", [&](JsonWriter& j) { j.value(true); });
+  else write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(r.grid_error_estimate); });
   write_line_member(out, "notes", [&](JsonWriter& j) { j.value(r.notes); });
   write_line_member(out, "track_rms", [&](JsonWriter& j) {
     j.begin_array();

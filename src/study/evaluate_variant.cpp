@@ -254,14 +254,16 @@ void hunting_speed(const Vehicle& vehicle, const HuntingOptions& options, Varian
 }
 
 // The ride on the scene's random track, when the scene has one: per output the largest RMS and
-// Sperling Wz over the ride's speeds, and the largest N_MV estimate (the spectra are not kept).
-void ride_summary(const Vehicle& vehicle, const Scene& scene, VariantResult* r) {
+// Sperling Wz over the ride's speeds, and the largest N_MV estimate (the spectra are not kept);
+// with rms_only (ride_rms_only(study)) the RMS alone.
+void ride_summary(const Vehicle& vehicle, const Scene& scene, bool rms_only, VariantResult* r) {
   if (!scene.irregularity || !scene.ride) return;
   const LinearSystem system = assemble(vehicle, scene.dofs);
   check_scene_fits(scene, system);
   RideOptions options = scene.ride->options;
   options.keep_spectra = false;  // the metrics need the indices only
   options.threads = 1;           // the variants are spread over the threads
+  options.rms_only = rms_only;
   const std::vector<RideOutput> outputs =
       scene.ride->outputs.empty() ? default_ride_outputs(system) : scene.ride->outputs;
   const RideResult ride = solve_ride(system, *scene.irregularity, outputs, options);
@@ -334,7 +336,7 @@ void describe_failure(const Vehicle& vehicle, DofSet dofs, const std::string& wh
 // being copied there (a copy of each a variant fewer: their names, lists and the scene's key
 // places are allocations), and what follows reads them there.
 VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned, int index, const DeflectionRule& rule,
-                               const std::optional<HuntingOptions>& hunting) {
+                               const std::optional<HuntingOptions>& hunting, bool ride_rms_only) {
   VariantResult r;
   r.index = index;
   r.name = variant.name;
@@ -345,7 +347,7 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
       // A ride scene: no periodic source, so no critical speeds, peaks or dynamic deflections.
       summarise_without_sources(variant, &r);
       clock.lap("modes");
-      ride_summary(variant.vehicle, variant.scene, &r);
+      ride_summary(variant.vehicle, variant.scene, ride_rms_only, &r);
       clock.lap("ride");
       if (hunting) hunting_speed(variant.vehicle, *hunting, &r);
       clock.lap("hunting stability");
@@ -390,7 +392,7 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
     clock.lap("deflection checks");
     if (hunting) hunting_speed(vehicle, *hunting, &r);
     clock.lap("hunting stability");
-    ride_summary(vehicle, scene, &r);
+    ride_summary(vehicle, scene, ride_rms_only, &r);
     clock.lap("ride");
   } catch (const NumericalError& e) {
     if (r.failure.empty()) r.failure = std::string("numerical failure: ") + e.what();
@@ -407,13 +409,13 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
 }  // namespace
 
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
-                               const std::optional<HuntingOptions>& hunting) {
-  return evaluate_in_full(variant, nullptr, index, rule, hunting);
+                               const std::optional<HuntingOptions>& hunting, bool ride_rms_only) {
+  return evaluate_in_full(variant, nullptr, index, rule, hunting, ride_rms_only);
 }
 
 VariantResult study::evaluate_owned_variant(StudyVariant&& variant, int index, const DeflectionRule& rule,
-                                            const std::optional<HuntingOptions>& hunting) {
-  return evaluate_in_full(variant, &variant, index, rule, hunting);
+                                            const std::optional<HuntingOptions>& hunting, bool ride_rms_only) {
+  return evaluate_in_full(variant, &variant, index, rule, hunting, ride_rms_only);
 }
 
 }  // namespace railmodal

@@ -80,6 +80,18 @@ bool is_metric(const std::string& name) {
          is_ride_metric(metric);
 }
 
+bool ride_rms_only(const Study& study) {
+  bool rms = false, more = false;
+  const auto see = [&](const std::string& name) {
+    const std::string metric = canonical_metric(name);
+    if (!is_ride_metric(metric)) return;
+    (starts_with(metric, kRmsAcceleration) ? rms : more) = true;
+  };
+  for (const RankingCriterion& c : study.ranking.objective) see(c.metric);
+  for (const RankingConstraint& c : study.ranking.constraints) see(c.metric);
+  return rms && !more;
+}
+
 std::optional<double> metric_value(const VariantResult& r, const std::string& name) {
   const std::string metric = canonical_metric(name);
   if (!r.ok()) return std::nullopt;

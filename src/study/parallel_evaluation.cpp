@@ -56,6 +56,7 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
     }
   prepare(indices.size());
   const std::optional<HuntingOptions> hunting = hunting_options_of(study);
+  const bool rms_only = ride_rms_only(study);
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min(threads, static_cast<int>(indices.size())));
 
@@ -91,8 +92,9 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
       try {
         // A variant read here is this thread's own: given up, it is moved, not copied, into the
         // evaluation (its name and parameters stay).
-        result = variant == &read ? evaluate_owned_variant(std::move(read), index, study.deflection_rule, hunting)
-                                  : evaluate_variant(*variant, index, study.deflection_rule, hunting);
+        result = variant == &read
+                     ? evaluate_owned_variant(std::move(read), index, study.deflection_rule, hunting, rms_only)
+                     : evaluate_variant(*variant, index, study.deflection_rule, hunting, rms_only);
       } catch (const std::exception& e) {  // evaluate_variant keeps design failures; this is a bug
         result = VariantResult{};
         result.index = index;

@@ -27,6 +27,6 @@ int evaluate_each(const Study& study, const EvaluationOptions& options,
 /// same. `variant` keeps its name and parameters; its vehicle and scene are left valid but
 /// unspecified.
 VariantResult evaluate_owned_variant(StudyVariant&& variant, int index, const DeflectionRule& rule,
-                                     const std::optional<HuntingOptions>& hunting);
+                                     const std::optional<HuntingOptions>& hunting, bool ride_rms_only);
 
 }  // namespace railmodal::study

@@ -41,6 +41,13 @@ golden_cases() {
         local ext=$f; [ "$f" = markdown ] && ext=md
         echo "ride/$name.$ext ride $s --format $f"
       done
+      # The RMS and weighted RMS alone (--rms-only), in every format, on the smallest ride scene.
+      if [ "$name" = two_axle_wagon_fra_class4 ]; then
+        for f in table csv json markdown html; do
+          local ext=$f; [ "$f" = markdown ] && ext=md
+          echo "ride/$name.rms_only.$ext ride $s --rms-only --format $f"
+        done
+      fi
     else
       for f in markdown html csv json; do
         local ext=$f; [ "$f" = markdown ] && ext=md

@@ -52,6 +52,35 @@ def test_ride_scene_equals_the_command_line(coach):
     assert [c["nmv_estimate"] for c in coach.comfort()] == pytest.approx([c["nmv_estimate"] for c in comfort], rel=REL)
 
 
+def test_ride_rms_only(coach):
+    # rms_only=True (RideOptions::rms_only, `railmodal ride --rms-only`): the RMS and weighted RMS
+    # bit for bit the full solve's (the same sums in the same order), the other indices skipped
+    # and shown as skipped (None, empty), never as numbers.
+    assert not coach.rms_only and coach.grid_error_estimate > 0
+    only = railmodal.ride_scene(railmodal.load_scene(COACH), rms_only=True)
+    assert only.rms_only and only.grid_error_estimate is None
+    assert any(n.startswith("rms_only:") for n in only.notes)
+    every = coach.records()
+    assert len(only.records()) == len(every)
+    for got, want in zip(only.records(), every):
+        assert got["output"] == want["output"]
+        assert got["rms"] == want["rms"] and got["weighted_rms"] == want["weighted_rms"]
+        for key in ("sperling_wz", "p95_estimate", "cross_term_variance", "direct_variance"):
+            assert got[key] is None, key
+    assert any(r["sperling_wz"] is not None for r in every)
+    assert only.comfort() == [] and only.contributions() == []
+    assert coach.comfort() and coach.contributions()
+    # ride() takes the keyword too, with the same answer.
+    scene = railmodal.load_scene(COACH)
+    system = railmodal.assemble(railmodal.load_vehicle(scene.vehicle_file), scene.dofs)
+    speed = [coach.speeds_m_s[0]]
+    a = railmodal.ride(system, scene, speeds_m_s=speed, rolling_radius_m=0.46, rms_only=True)
+    b = railmodal.ride(system, scene, speeds_m_s=speed, rolling_radius_m=0.46)
+    assert a.rms_only and not b.rms_only
+    assert [r["rms"] for r in a.records()] == [r["rms"] for r in b.records()]
+    assert "rms_only" in railmodal.ride.__doc__ and "Sperling" in railmodal.ride.__doc__
+
+
 def test_ride_tables_for_pandas(coach):
     frame = pandas.DataFrame(coach.records())
     assert len(frame) == len(coach.speeds_m_s) * len(coach.outputs)

@@ -96,5 +96,38 @@ TEST(RideMetric, ShardsCarryTheRide) {
   EXPECT_EQ(without.str().find("\"ride\""), std::string::npos);
 }
 
+// A study ranked by the RMS alone solves its ride with RideOptions::rms_only: the metric is the
+// same number bit for bit (the same sums in the same order: ride.hpp), and Wz and N_MV, not
+// computed, are absent rather than wrong. One naming Wz or N_MV anywhere keeps every index.
+TEST(RideMetric, RankedByTheRmsAloneSkipsTheOtherIndices) {
+  Study s = load_study(std::string(RAILMODAL_DATA_DIR) + "/studies/two_axle_wagon_ride_springs.toml");
+  const std::string rms = "rms_acceleration:floor over the front axle, vertical";
+  EXPECT_FALSE(ride_rms_only(s));  // its own ranking: max_wz
+  s.ranking.objective = {{rms, false, 1.0, {}}};
+  EXPECT_TRUE(ride_rms_only(s));
+  s.ranking.constraints = {{"max_nmv", std::nullopt, 4.0, {}}};
+  EXPECT_FALSE(ride_rms_only(s));
+  s.ranking.constraints.clear();
+
+  const VariantResult every = evaluate_variant(s.variants[1], 1, s.deflection_rule, std::nullopt, false);
+  const VariantResult only = evaluate_variant(s.variants[1], 1, s.deflection_rule, std::nullopt, true);
+  ASSERT_TRUE(every.ok() && only.ok()) << every.failure << only.failure;
+  ASSERT_TRUE(metric_value(every, rms) && metric_value(only, rms));
+  EXPECT_EQ(*metric_value(only, rms), *metric_value(every, rms));  // bit for bit
+  ASSERT_EQ(only.ride.size(), every.ride.size());
+  for (size_t i = 0; i < only.ride.size(); ++i) {
+    EXPECT_EQ(only.ride[i].max_rms, every.ride[i].max_rms) << only.ride[i].output;
+    EXPECT_FALSE(only.ride[i].max_wz) << only.ride[i].output;
+  }
+  EXPECT_TRUE(every.max_nmv && metric_value(every, "max_wz"));
+  EXPECT_FALSE(only.max_nmv);
+  EXPECT_FALSE(metric_value(only, "max_wz"));
+  // evaluate_study takes the study's own need: its results are the RMS-only ones.
+  const std::vector<VariantResult> evaluated = evaluate_study(s, {});
+  ASSERT_EQ(evaluated.size(), 2u);
+  EXPECT_EQ(*metric_value(evaluated[1], rms), *metric_value(every, rms));
+  EXPECT_FALSE(evaluated[1].max_nmv);
+}
+
 }  // namespace
 }  // namespace railmodal::test

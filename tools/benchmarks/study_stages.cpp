@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
   std::vector<VariantResult> results;
   int i = 0;
   const std::vector<double> evaluate = per_variant(variants, [&](const StudyVariant& v) {
-    results.push_back(evaluate_variant(v, i++, study.deflection_rule, hunting_options_of(study)));
+    results.push_back(evaluate_variant(v, i++, study.deflection_rule, hunting_options_of(study), ride_rms_only(study)));
   });
   // Ranking needs every variant of the study: rank a study of the first n.
   Study first = study;
