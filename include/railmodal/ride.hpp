@@ -225,12 +225,11 @@ struct RideResult {
   /// The RMS of each track component over its own band (TrackSpectrum::rms()), in `inputs`
   /// order: m (cross-level: the height difference Δz).
   std::vector<double> input_rms;
+  /// Solved with RideOptions::rms_only: each output's RMS and weighted RMS, none of the other
+  /// indices (a note says which). The reports and the Python binding leave the skipped indices
+  /// out rather than show them empty.
+  bool rms_only = false;
 };
-
-/// Whether `result` was solved with RideOptions::rms_only: each output's RMS and weighted RMS,
-/// none of the other indices (solve_ride marks such a result with a note that begins "rms_only:").
-/// The reports and the Python binding leave the skipped indices out rather than show them empty.
-bool is_rms_only(const RideResult& result);
 
 /// The ride of `system` on `track` at every speed of `options`. Throws std::invalid_argument for invalid options, an
 /// output that names no body, element or wheelset of the system (naming it and the valid names), an output the system

@@ -155,10 +155,10 @@ void bind_ride_output(py::module_& m) {
         "The floor points a ride looks at when none are named (body over each bogie, mid-car, 1 m from each end)");
 }
 
-// One row per speed and output; an index an RMS-only result skipped (is_rms_only) is None.
+// One row per speed and output; an index an RMS-only result skipped (RideResult::rms_only) is None.
 py::list ride_records(const RideResult& r) {
   py::list out;
-  const bool every_index = !is_rms_only(r);
+  const bool every_index = !r.rms_only;
   const auto computed = [every_index](double v) { return every_index ? py::object(py::float_(v)) : py::none(); };
   for (const RideAtSpeed& at : r.speeds)
     for (size_t i = 0; i < r.outputs.size(); ++i) {
@@ -273,12 +273,12 @@ void bind_ride_result(py::module_& m) {
             return out;
           },
           "One row per speed, output and mode: each mode's share of the output's variance (largest first)")
-      .def_property_readonly("rms_only", &is_rms_only,
+      .def_readonly("rms_only", &RideResult::rms_only,
                              "True when solved with rms_only=True: records() has the RMS and weighted RMS only")
       .def_readonly("friction_treatment", &RideResult::friction_treatment)
       .def_property_readonly(
           "grid_error_estimate",
-          [](const RideResult& r) { return is_rms_only(r) ? py::none() : py::object(py::float_(r.grid_error_estimate)); },
+          [](const RideResult& r) { return r.rms_only ? py::none() : py::object(py::float_(r.grid_error_estimate)); },
           "the largest relative RMS change on halving the grid; None with rms_only")
       .def_readonly("notes", &RideResult::notes)
       .def_readonly("summary", &RideResult::summary);

@@ -5,7 +5,7 @@
 // indices against speed, and for a time-domain run the weighted acceleration with its 5 s
 // windows and the FFT checks). Figures a result does not have (an unbounded RMS, an index of a
 // force) are words or blank or null, never inf or NaN; the indices a result solved with
-// RideOptions::rms_only skipped (is_rms_only) have no column, member or chart at all.
+// RideOptions::rms_only skipped (RideResult::rms_only) have no column, member or chart at all.
 #include "railmodal/ride_report.hpp"
 
 #include <algorithm>
@@ -119,7 +119,7 @@ std::string capitalised(std::string word) {
 // RMS only (rms_only): the first four columns.
 Table indices_table(const RideResult& r, const RideAtSpeed& at) {
   Table t;
-  const bool every_index = !is_rms_only(r);
+  const bool every_index = !r.rms_only;
   t.headers = {"output", "unit", "RMS", "weighted RMS [m/s²]"};
   t.numeric = {false, false, true, true};
   if (every_index) {
@@ -208,7 +208,7 @@ std::string method_text(const RideResult& r) {
          (r.frequencies.size() ? significant(r.frequencies[0], 3) + " to " +
                                      significant(r.frequencies[r.frequencies.size() - 1], 3) + " Hz"
                                : std::string("–")) +
-         (is_rms_only(r) ? std::string("; RMS and weighted RMS only (no grid error estimate)")
+         (r.rms_only ? std::string("; RMS and weighted RMS only (no grid error estimate)")
                       : "; grid error estimate " + significant(100.0 * r.grid_error_estimate, 2) + " % of an RMS") +
          "; friction: " +
          (r.friction_treatment.empty() ? std::string("none in the vehicle") : r.friction_treatment) + track_rms_text(r);
@@ -457,7 +457,7 @@ void write_markdown(std::ostream& out, const Page& p) {
     report::write_markdown_table(out, modes_table(r));
   }
   write_speed_sections(out, p, Document::markdown);
-  if (!r.speeds.empty() && !is_rms_only(r)) out << "\n" << kEstimateNote << "\n";
+  if (!r.speeds.empty() && !r.rms_only) out << "\n" << kEstimateNote << "\n";
   for (const std::string& n : r.notes) out << "\n- " << n << "\n";
   write_time_domain(out, p, Document::markdown);
 }
@@ -503,7 +503,7 @@ void write_html(std::ostream& out, const Page& p) {
     report::write_html_table(out, modes_table(r));
   }
   write_speed_sections(out, p, Document::html);
-  if (!r.speeds.empty() && !is_rms_only(r)) out << "<p class=note>" << html_escape(kEstimateNote) << "</p>\n";
+  if (!r.speeds.empty() && !r.rms_only) out << "<p class=note>" << html_escape(kEstimateNote) << "</p>\n";
   write_time_domain(out, p, Document::html);
   report::write_html_footer(out, "ride", p.provenance);
 }
@@ -520,7 +520,7 @@ void write_text(std::ostream& out, const Page& p) {
     write_text_table(out, indices_table(r, at));
     if (!at.comfort.empty()) write_text_table(out, comfort_table(at.comfort, "N_MV (estimate)"));
   }
-  if (!r.speeds.empty() && !is_rms_only(r)) out << "\n" << kEstimateNote << "\n";
+  if (!r.speeds.empty() && !r.rms_only) out << "\n" << kEstimateNote << "\n";
   for (const std::string& n : r.notes) out << "Note: " << n << "\n";
   if (p.simulated) {
     out << "\nTime-domain run:\n";
@@ -556,7 +556,7 @@ bool has_comfort_indices(const RideOutput& o) {
 void write_csv(std::ostream& out, const RideResult& r) {
   using report::csv_heading;
   report::CsvWriter csv(out);
-  const bool every_index = !is_rms_only(r);
+  const bool every_index = !r.rms_only;
   csv.field(csv_heading("speed", "km/h"));
   for (const RideOutput& o : r.outputs) {
     csv.field(csv_heading(o.name + " rms", unit_of(o)));
@@ -629,7 +629,7 @@ void write_comfort(JsonWriter& j, const std::vector<RideComfortAtPoint>& comfort
 
 // RMS only (rms_only): no comfort, modes, variance, P95 or Wz member.
 void write_at_speed(JsonWriter& j, const RideResult& r, const RideAtSpeed& at) {
-  const bool every_index = !is_rms_only(r);
+  const bool every_index = !r.rms_only;
   j.begin_object();
   if (every_index) {
     j.key("comfort");
@@ -716,7 +716,7 @@ void write_json(std::ostream& out, const Page& p) {
   write_line_member(out, "title", [&](JsonWriter& j) { j.value(p.title); }, true);
   write_line_member(out, "friction_treatment", [&](JsonWriter& j) { j.value(r.friction_treatment); });
   // RMS only (rms_only): no grid error estimate, and a member that says so.
-  if (is_rms_only(r)) write_line_member(out, "rms_only", [&](JsonWriter& j) { j.value(true); });
+  if (r.rms_only) write_line_member(out, "rms_only", [&](JsonWriter& j) { j.value(true); });
   else write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(r.grid_error_estimate); });
   write_line_member(out, "notes", [&](JsonWriter& j) { j.value(r.notes); });
   write_line_member(out, "track_rms", [&](JsonWriter& j) {

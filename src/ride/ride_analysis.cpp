@@ -562,6 +562,7 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
     result.notes.push_back("H(f) by modal superposition over the " + std::to_string(p.truncation.cols()) +
                            " lowest modes: the response misses the higher modes' share (docs/accuracy.md, "
                            "\"Ride: modal truncation\")");
+  result.rms_only = options.rms_only;
   if (options.rms_only)
     result.notes.push_back("rms_only: each output's RMS and weighted RMS only (no modal shares, Sperling Wz, P95, N_MV "
                            "or grid error estimate)");

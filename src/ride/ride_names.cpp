@@ -1,7 +1,5 @@
 // The ride's enum names and the rule of its options (one place for both, so the CLI, the
-// scene reader and the analysis agree on every word and bound), and the mark of an RMS-only
-// result.
-#include <algorithm>
+// scene reader and the analysis agree on every word and bound).
 #include <cmath>
 #include <string>
 
@@ -10,12 +8,6 @@
 #include "shortest_text.hpp"
 
 namespace railmodal {
-
-bool is_rms_only(const RideResult& result) {
-  // The note's opening word is pinned by tests/ride/ride_speed_test.cpp.
-  return std::any_of(result.notes.begin(), result.notes.end(),
-                     [](const std::string& n) { return n.rfind("rms_only:", 0) == 0; });
-}
 
 const char* to_string(RideAxis axis) {
   switch (axis) {

@@ -159,6 +159,8 @@ TEST(RideSpeed, RmsOnlyGivesTheFullSolvesRmsAndNothingElse) {
   bool said = false;
   for (const std::string& n : b.notes) said = said || n.rfind("rms_only", 0) == 0;
   EXPECT_TRUE(said);
+  EXPECT_TRUE(b.rms_only);  // the reports and the Python binding read this mark
+  EXPECT_FALSE(a.rms_only);
 }
 
 // The vector sincos against the C library's over the phases the ride forms (up to ~10⁴ rad: 80 Hz
