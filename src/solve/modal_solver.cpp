@@ -170,6 +170,7 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
   const double norm_K = K.norm(), norm_M = M.norm();
   const Eigen::MatrixXd K_phi = K * phi, M_phi = M * phi;
   std::vector<bool> repeated(keep, false);
+  result.modes.reserve(keep);
   for (int k = 0; k + 1 < keep; ++k)
     if (solve::same_eigenvalue(lambda(k), lambda(k + 1), zero)) repeated[k] = repeated[k + 1] = true;
   for (int k = 0; k < keep; ++k) {
@@ -195,8 +196,8 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
     result.max_residual = std::max(result.max_residual, mode.residual);
     mode.repeated = repeated[k];
     auto description = describe(mode.shape, mode.repeated);
-    mode.name = description.name;
-    mode.centre = description.centre;
+    mode.name = std::move(description.name);
+    mode.centre = std::move(description.centre);
     if (mode.kind == ModeKind::unstable) mode.name += " (unstable)";
     if (mode.kind == ModeKind::rigid_body) mode.name += " (rigid-body)";
     result.modes.push_back(std::move(mode));
