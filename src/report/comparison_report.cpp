@@ -262,7 +262,9 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
 std::vector<std::string> report::comparison_row(const Ranking& ranking, const DeflectionRule& rule,
                                                 const RankedVariant& v, bool for_csv) {
   const VariantResult& r = v.result;
-  std::vector<std::string> row{std::to_string(v.rank), r.name, status(v)};
+  std::vector<std::string> row;
+  row.reserve(11 + ranking.objective.size());  // every column below: one allocation for the row, not five
+  row.insert(row.end(), {std::to_string(v.rank), r.name, status(v)});
   if (for_csv) row.push_back(v.objective ? exact(*v.objective) : "");
   for (size_t k = 0; k < ranking.objective.size(); ++k) {
     const auto& x = v.criteria.size() > k ? v.criteria[k] : std::nullopt;
@@ -284,12 +286,22 @@ std::vector<std::string> report::comparison_row(const Ranking& ranking, const De
     else row.push_back(deflection_verdict(*ratio));
   }
   std::string list;
-  for (double p : periods(r)) list += (list.empty() ? "" : " ") + (for_csv ? exact(p) : number(p, "%.3f"));
+  // Each item appended to the list as it is (a joined temporary per item was an allocation).
+  for (double p : periods(r)) {
+    if (!list.empty()) list += ' ';
+    list += for_csv ? exact(p) : number(p, "%.3f");
+  }
   row.push_back(list);
   if (for_csv) {
     std::string speeds, violations;
-    for (double s : critical_speeds_kmh(r)) speeds += (speeds.empty() ? "" : " ") + exact(s);
-    for (const auto& w : v.violations) violations += (violations.empty() ? "" : "; ") + w;
+    for (double s : critical_speeds_kmh(r)) {
+      if (!speeds.empty()) speeds += ' ';
+      speeds += exact(s);
+    }
+    for (const auto& w : v.violations) {
+      if (!violations.empty()) violations += "; ";
+      violations += w;
+    }
     row.push_back(speeds);
     row.push_back(r.failure);
     row.push_back(violations);

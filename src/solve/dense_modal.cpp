@@ -26,9 +26,8 @@ Eigen::MatrixXd take(const Eigen::MatrixXd& A, const std::vector<int>& rows, con
 // mass matrix that is not positive definite is a clear error and never garbage. Eigen's LLT
 // does the work; when it reports a failure, or a pivot is at round-off level, the
 // factorisation is repeated column by column to find the degree of freedom.
-// `labels[kept[j]]` names row j of M (the labels are only read for the message).
-Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<std::string>& labels,
-                                 const std::vector<int>& kept) {
+// `dofs[kept[j]]` is row j of M (its label is only read for the message).
+Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<Dof>& dofs, const std::vector<int>& kept) {
   const double tiny = 64.0 * std::numeric_limits<double>::epsilon() * M.diagonal().cwiseAbs().maxCoeff();
   Eigen::LLT<Eigen::MatrixXd> llt(M);
   if (llt.info() == Eigen::Success) {
@@ -41,7 +40,7 @@ Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<std
     double pivot = M(j, j) - L.row(j).head(j).squaredNorm();
     // Round-off in a positive definite matrix leaves pivots of order ε·scale at worst.
     if (!(pivot > tiny))
-      throw NumericalError("the mass matrix is not positive definite at degree of freedom '" + labels[kept[j]] +
+      throw NumericalError("the mass matrix is not positive definite at degree of freedom '" + dofs[kept[j]].label +
                            "' (pivot " + shortest_text(pivot, 3) + "): its inertia is zero or depends on the others");
     L(j, j) = std::sqrt(pivot);
     for (int i = j + 1; i < n; ++i)
@@ -84,8 +83,7 @@ Eigen::VectorXd rounding_bounds(const Eigen::VectorXd& lambda, int refined) {
 
 }  // namespace
 
-Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
-                            const std::vector<std::string>& labels) {
+Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const std::vector<Dof>& dofs) {
   const int n = static_cast<int>(M.rows());
   Eigenpairs result;
   result.summary.solver = ModalSolver::dense;
@@ -105,9 +103,9 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
     lu.setThreshold(1e-12);
     if (!lu.isInvertible()) {
       // Name a massless DOF with no stiffness of its own.
-      std::string name = labels[massless[0]];
+      std::string name = dofs[massless[0]].label;
       for (int s : massless)
-        if (K.row(s).cwiseAbs().maxCoeff() == 0.0) { name = labels[s]; break; }
+        if (K.row(s).cwiseAbs().maxCoeff() == 0.0) { name = dofs[s].label; break; }
       throw NumericalError("degree of freedom '" + name +
                            "' has neither mass nor a restraint; give it inertia or hold it");
     }
@@ -118,7 +116,7 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
   const Eigen::MatrixXd Mr = take(M, kept, kept);
 
   // K φ = λ M φ  →  (L⁻¹ K L⁻ᵀ) y = λ y,  φ = L⁻ᵀ y: φ is M-normalised when y is unit.
-  const Eigen::MatrixXd L = checked_cholesky(Mr, labels, kept);
+  const Eigen::MatrixXd L = checked_cholesky(Mr, dofs, kept);
   const auto lower = L.triangularView<Eigen::Lower>();
   Eigen::MatrixXd A = lower.solve(Kr);
   A = lower.solve(A.transpose()).transpose();

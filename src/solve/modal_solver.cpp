@@ -244,17 +244,16 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
   const Describe describe = [&system](const Eigen::VectorXd& shape, bool repeated) {
     return solve::describe_mode(system, shape, repeated);
   };
-  const auto labels = labels_of(system.dofs);
   AnalysisSummary timing;
   StageClock clock(&timing);
   ModalResult result;
   if (choose_solver(options.solver, n, options.mode_count) == ModalSolver::dense) {
-    const solve::Eigenpairs pairs = solve::dense_eigenpairs(M, K, labels);
+    const solve::Eigenpairs pairs = solve::dense_eigenpairs(M, K, system.dofs);
     clock.lap("eigensolve");
     result = make_result(system.dofs, M, K, pairs, dense_keep(pairs, options), options, describe);
   } else {
     const Eigen::SparseMatrix<double> Ms = M.sparseView(), Ks = K.sparseView();
-    const solve::Eigenpairs pairs = solve::arpack_eigenpairs(Ms, Ks, labels, options.mode_count, options);
+    const solve::Eigenpairs pairs = solve::arpack_eigenpairs(Ms, Ks, labels_of(system.dofs), options.mode_count, options);
     clock.lap("eigensolve");
     result = make_result(system.dofs, Ms, Ks, pairs, static_cast<int>(pairs.values.size()), options, describe);
   }
