@@ -141,6 +141,7 @@ void summarise(ModalResult* result, const ModalOptions& options, std::vector<Sta
   s.method = s.solver == ModalSolver::dense
                  ? "dense: static condensation of massless DOFs, Cholesky of M, symmetric QR (Eigen)"
                  : "ARPACK shift-invert Lanczos on (K − σM)⁻¹M, " + s.factorisation + " of K − σM";
+  s.checks.reserve(s.checks.size() + 4);  // the four below: one allocation
   s.checks.push_back({"max relative residual", result->max_residual, options.max_residual, true});
   s.checks.push_back({"M-orthonormality error max|ΦᵀMΦ − I|", result->orthonormality_error,
                       std::numeric_limits<double>::infinity(), true});
