@@ -71,7 +71,8 @@ Eigen::VectorXcd generalized_load(const LinearSystem& system, const HarmonicLoad
   constexpr double kTwoPi = 6.28318530717958647692;
   Eigen::VectorXcd QK, QC;
   load_parts(system, load, &QK, &QC);
-  return QK + std::complex<double>(0.0, kTwoPi * load.frequency_hz) * QC;
+  QK += std::complex<double>(0.0, kTwoPi * load.frequency_hz) * QC;  // the sum QK + iωQC, in QK's storage
+  return QK;
 }
 
 SeparableLoad ExcitationSource::separable_load(const LinearSystem& system, int harmonic) const {

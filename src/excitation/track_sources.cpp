@@ -72,7 +72,9 @@ class RailJointSource final : public ExcitationSource {
                      track_factor(2.0 * kPi * out.frequency_hz);
     // Staggered: the right rail's joints lie half a rail on, a factor e^{−iπk} = (−1)^k.
     const double right = p_.staggered && harmonic % 2 == 1 ? -1.0 : 1.0;
-    const auto sets = excitation::wheelsets(system);
+    // This thread's list, kept between loads (a study builds several loads per variant).
+    thread_local std::vector<excitation::Wheelset> sets;
+    excitation::wheelsets(system, &sets);
     out.wheels.reserve(system.track_inputs.size());  // every input is a wheel: one allocation
     for (const auto& set : sets)
       for (int index : set.inputs) {
@@ -221,7 +223,8 @@ class HuntingSource final : public ExcitationSource {
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
     if (harmonic != 1) return out;
-    const auto sets = excitation::wheelsets(system);
+    thread_local std::vector<excitation::Wheelset> sets;  // as the rail joints' list
+    excitation::wheelsets(system, &sets);
     for (const auto& set : sets)
       for (int index : set.inputs) {
         // Each wheelset follows the same sinuous path, y0 sin(2πs/λ + φ), reached later by the

@@ -7,7 +7,7 @@
 
 namespace railmodal::model {
 
-void refuse_series_dampers(const LinearSystem& system, const std::string& analysis) {
+void refuse_series_dampers(const LinearSystem& system, const char* analysis) {
   // The rows, not the elements: a damper no kept motion stretches (a lateral one among the
   // vertical motions) changes nothing this system describes.
   for (const SeriesDamperRow& row : system.series_dampers) {
@@ -15,7 +15,7 @@ void refuse_series_dampers(const LinearSystem& system, const std::string& analys
     const std::string name = row.element >= 0 && row.element < static_cast<int>(elements.size())
                                  ? elements[static_cast<size_t>(row.element)].name
                                  : std::to_string(row.element);
-    throw std::invalid_argument(analysis + ": element '" + name +
+    throw std::invalid_argument(std::string(analysis) + ": element '" + name +
                                 "' has a series damper, which only `railmodal stability` represents");
   }
 }

@@ -13,8 +13,9 @@ namespace railmodal::model {
 
 /// Throws std::invalid_argument("<analysis>: element '<name>' has a series damper, which only
 /// `railmodal stability` represents") for the first of the system's series_dampers rows (the
-/// dampers some kept motion stretches).
-void refuse_series_dampers(const LinearSystem& system, const std::string& analysis);
+/// dampers some kept motion stretches). `analysis` is a word, not a string built per call: every
+/// harmonic solve of a study's variants checks (and a std::string of it was an allocation).
+void refuse_series_dampers(const LinearSystem& system, const char* analysis);
 
 /// What the undamped modes of the system leave out, one sentence each (ModalResult::notes):
 /// the wheel–rail contact of its wheelsets, its series dampers; empty for neither.

@@ -302,6 +302,7 @@ double vertical_stretch(const Layout& layout, const ElementMap& m, const Eigen::
 // body's bending coordinate (never held) after its rigid motions.
 std::vector<int> free_coordinates(const Vehicle& v, const Layout& layout) {
   std::vector<int> free;
+  free.reserve(static_cast<size_t>(layout.size()));
   for (int b = 0; b < layout.bodies; ++b) {
     for (int m = 0; m < kMotionsPerBody; ++m) {
       const Body& body = v.bodies[b];
@@ -342,8 +343,13 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
   Eigen::LLT<Eigen::MatrixXd> llt(Kf);
   Eigen::VectorXd qf;
   if (llt.info() == Eigen::Success) qf = llt.solve(Qf);
-  if (llt.info() != Eigen::Success || !qf.allFinite() || !((Kf * qf - Qf).norm() <= 1e-10 * Qf.norm()))
-    qf = Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(Kf).solve(Qf);
+  if (llt.info() != Eigen::Success || !qf.allFinite() || !((Kf * qf - Qf).norm() <= 1e-10 * Qf.norm())) {
+    // This thread's decomposition, its storage kept between calls: every variant of a study
+    // whose vehicle has a rigid-body mode comes here. The same factorisation of the same matrix.
+    thread_local Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+    cod.compute(Kf);
+    qf = cod.solve(Qf);
+  }
   const double mismatch = (Kf * qf - Qf).norm();
   if (!(mismatch <= 1e-8 * Qf.norm())) {
     // Name the first body whose weight the springs cannot carry.
@@ -440,6 +446,8 @@ Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const Layout& layout, 
 std::vector<int> kept_coordinates(const Vehicle& vehicle, const Layout& layout, const std::vector<int>& free, DofSet set,
                                   std::vector<Dof>* dofs) {
   std::vector<int> keep;
+  keep.reserve(free.size());
+  dofs->reserve(dofs->size() + free.size());
   for (int c : free) {
     const Motion motion = layout.motion_of(c);
     if (!in_set(motion, set)) continue;

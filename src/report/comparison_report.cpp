@@ -3,6 +3,7 @@
 // merge ranks exactly the numbers a single run would have ranked (src/input/shard_reader.cpp
 // reads it back).
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -212,6 +213,14 @@ std::string exact(double x) {
   return std::isfinite(x) ? shortest_text(x) : std::string();
 }
 
+// exact(x) appended to `text` without a string of its own (a row's lists hold a dozen numbers).
+void append_exact(std::string* text, double x) {
+  if (!std::isfinite(x)) return;
+  char buffer[32];
+  const auto written = std::to_chars(buffer, buffer + sizeof buffer, x);  // as shortest_text
+  text->append(buffer, written.ptr);
+}
+
 std::string status(const RankedVariant& v) { return !v.result.ok() ? "failed" : v.feasible ? "yes" : "no"; }
 
 std::string criterion_heading(const RankingCriterion& c) {
@@ -262,7 +271,9 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
 std::vector<std::string> report::comparison_row(const Ranking& ranking, const DeflectionRule& rule,
                                                 const RankedVariant& v, bool for_csv) {
   const VariantResult& r = v.result;
-  std::vector<std::string> row{std::to_string(v.rank), r.name, status(v)};
+  std::vector<std::string> row;
+  row.reserve(11 + ranking.objective.size());  // every column below: one allocation for the row, not five
+  row.insert(row.end(), {std::to_string(v.rank), r.name, status(v)});
   if (for_csv) row.push_back(v.objective ? exact(*v.objective) : "");
   for (size_t k = 0; k < ranking.objective.size(); ++k) {
     const auto& x = v.criteria.size() > k ? v.criteria[k] : std::nullopt;
@@ -284,12 +295,23 @@ std::vector<std::string> report::comparison_row(const Ranking& ranking, const De
     else row.push_back(deflection_verdict(*ratio));
   }
   std::string list;
-  for (double p : periods(r)) list += (list.empty() ? "" : " ") + (for_csv ? exact(p) : number(p, "%.3f"));
+  // Each item appended to the list as it is (a joined temporary per item was an allocation).
+  for (double p : periods(r)) {
+    if (!list.empty()) list += ' ';
+    if (for_csv) append_exact(&list, p);
+    else list += number(p, "%.3f");
+  }
   row.push_back(list);
   if (for_csv) {
     std::string speeds, violations;
-    for (double s : critical_speeds_kmh(r)) speeds += (speeds.empty() ? "" : " ") + exact(s);
-    for (const auto& w : v.violations) violations += (violations.empty() ? "" : "; ") + w;
+    for (double s : critical_speeds_kmh(r)) {
+      if (!speeds.empty()) speeds += ' ';
+      append_exact(&speeds, s);
+    }
+    for (const auto& w : v.violations) {
+      if (!violations.empty()) violations += "; ";
+      violations += w;
+    }
     row.push_back(speeds);
     row.push_back(r.failure);
     row.push_back(violations);
@@ -398,7 +420,12 @@ void write_table(std::ostream& out, const Comparison& c) {
 }
 
 void write_csv_row(std::ostream& out, const std::vector<std::string>& row, size_t from = 0) {
-  for (size_t i = from; i < row.size(); ++i) out << (i > from ? "," : "") << csv_field(row[i]);
+  for (size_t i = from; i < row.size(); ++i) {
+    if (i > from) out << ',';
+    // A field that needs no quotes is written as it is (csv_field would copy it).
+    if (row[i].find_first_of(",\"\n") == std::string::npos) out << row[i];
+    else out << csv_field(row[i]);
+  }
 }
 
 }  // namespace

@@ -31,9 +31,8 @@ int dominant_dof(const Mode& mode) {
 // velocity term, so the load is built on the damped system).
 struct Evaluation {
   std::optional<LinearSystem> damped;  ///< the system with equivalent friction damping, if used
-  Eigen::VectorXcd load;
+  Eigen::VectorXcd damped_load;        ///< the load on `damped`, if used (else the caller's Q)
   HarmonicResponse response;
-  const LinearSystem& system(const LinearSystem& base) const { return damped ? *damped : base; }
 };
 
 // `Q` is generalized_load(system, load), the undamped system's load, reused where no friction
@@ -43,8 +42,12 @@ Evaluation respond(const LinearSystem& system, const ModalResult& modes, const H
   Evaluation e;
   if (friction_reference_amplitude > 0.0 && load.frequency_hz > 0.0 && has_leaf_friction(system))
     e.damped = with_equivalent_friction_damping(system, 2.0 * kPi * load.frequency_hz, friction_reference_amplitude);
-  e.load = e.damped ? generalized_load(*e.damped, load) : Q;
-  e.response = harmonic_response(e.system(system), modes, e.load, load.frequency_hz, source_load);
+  if (e.damped) {
+    e.damped_load = generalized_load(*e.damped, load);
+    e.response = harmonic_response(*e.damped, modes, e.damped_load, load.frequency_hz, source_load);
+  } else {
+    e.response = harmonic_response(system, modes, Q, load.frequency_hz, source_load);  // Q itself, not a copy
+  }
   return e;
 }
 
@@ -102,6 +105,7 @@ DrivenMode driven_mode(const std::vector<WeightedMode>& modes, const Eigen::Vect
 
 std::vector<WeightedMode> unweighted(const Eigenspace& group) {
   std::vector<WeightedMode> modes;
+  modes.reserve(group.size());
   for (const Mode* m : group) modes.push_back({m, 1.0});
   return modes;
 }
@@ -173,6 +177,7 @@ std::vector<ResonanceAtOutput> at_outputs(const LinearSystem& system, const Moda
                                           const std::vector<OutputRequest>& outputs, const HarmonicResponse& response,
                                           double modal_growth, const Eigen::VectorXd& magnitude) {
   std::vector<ResonanceAtOutput> at;
+  at.reserve(outputs.size());
   const double omega = 2.0 * kPi * response.frequency_hz;
   for (const OutputRequest& o : outputs) {
     ResonanceAtOutput r;
@@ -202,6 +207,8 @@ struct SourceLoads {
 
 SourceLoads source_loads(const LinearSystem& system, const ExcitationSource& source, double speed) {
   SourceLoads loads;
+  loads.harmonics.reserve(static_cast<size_t>(source.harmonic_count()));
+  loads.generalized.reserve(static_cast<size_t>(source.harmonic_count()));
   double squared = 0.0;
   for (int k = 1; k <= source.harmonic_count(); ++k) {
     loads.harmonics.push_back(source.load(system, speed, k));
@@ -272,6 +279,9 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
   const auto groups = response::eigenspaces(modes);
   int in_range = 0;
   std::vector<CriticalSpeed> found;
+  size_t most = 0;  // every harmonic of every source meeting every eigenspace
+  for (const ExcitationSource* source : sources) most += static_cast<size_t>(source->harmonic_count()) * groups.size();
+  found.reserve(most);
   for (size_t s = 0; s < sources.size(); ++s) {
     const ExcitationSource& source = *sources[s];
     for (int k = 1; k <= source.harmonic_count(); ++k)
@@ -284,8 +294,10 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
       }
   }
   clock.lap("resonances");
-  std::stable_sort(found.begin(), found.end(),
-                   [](const CriticalSpeed& a, const CriticalSpeed& b) { return a.speed < b.speed; });
+  // By speed, ties in the order found: the order std::stable_sort gives, by insertion (a few
+  // rows; stable_sort's buffer was an allocation per call, two calls per variant of a study).
+  for (size_t i = 1; i < found.size(); ++i)
+    for (size_t j = i; j > 0 && found[j].speed < found[j - 1].speed; --j) std::swap(found[j], found[j - 1]);
   clock.lap("sort");
   if (summary) {
     summary->analysis = "critical speeds";

@@ -25,13 +25,13 @@ double modal_damping(const LinearSystem& system, const Mode& mode) {
 
 // Undamped modes at ω. With C positive semi-definite, φᵀCφ = 0 means Cφ = 0, so each is a
 // null vector of the dynamic stiffness D = K − ω²M + iωC.
-std::vector<const Mode*> undamped_modes_at(const LinearSystem& system, const ModalResult& modes, double omega) {
-  std::vector<const Mode*> at;
+void undamped_modes_at(const LinearSystem& system, const ModalResult& modes, double omega,
+                       std::vector<const Mode*>* at) {
+  at->clear();
   for (const Mode& m : modes.modes)
     if (m.kind == ModeKind::oscillatory && std::abs(m.eigenvalue - omega * omega) <= kAtResonance * m.eigenvalue &&
         response::undamped(system, m))
-      at.push_back(&m);
-  return at;
+      at->push_back(&m);
 }
 
 // A load drives a mode unless its modal force is round-off of ‖φ‖ times the source's total
@@ -94,16 +94,18 @@ HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult
   const int n = system.size();
   const double omega = kTwoPi * frequency_hz;
   const std::complex<double> i(0.0, 1.0);
-  const std::vector<const Mode*> at = undamped_modes_at(system, modes, omega);
+  // The matrix, its LU, the vectors and the list of undamped modes are this thread's, kept
+  // between calls: a study solves one such system per resonance of every variant, all of one
+  // size, and each call made them anew. The same operations on the same values: the same bits.
+  thread_local std::vector<const Mode*> at;
+  undamped_modes_at(system, modes, omega, &at);
   const int r = static_cast<int>(at.size());
   // D bordered by Mφ of the undamped modes at ω: the rest x ⟂_M φ solves
   // D x = Q − Σ Mφ (φᵀQ); without such modes it is plain D x = Q.
   // Every block but the border's corner is written below: only that corner is zeroed.
-  // The matrix, its LU and the vectors are this thread's, kept between calls: a study solves
-  // one such system per resonance of every variant, all of one size, and each call made them
-  // anew. The same operations on the same values: the same bits.
   thread_local Eigen::MatrixXcd A;
-  thread_local Eigen::VectorXcd rhs, x, residual_vector;
+  thread_local Eigen::VectorXcd rhs, x, residual_vector, b;
+  thread_local Eigen::VectorXd mass_shape;  // Mφ, the product (system.mass * φ) evaluated as before
   thread_local Eigen::PartialPivLU<Eigen::MatrixXcd> lu;
   A.resize(n + r, n + r);
   A.bottomRightCorner(r, r).setZero();
@@ -112,7 +114,8 @@ HarmonicResponse harmonic_response(const LinearSystem& system, const ModalResult
   rhs.setZero(n + r);
   rhs.head(n) = load;
   for (int k = 0; k < r; ++k) {
-    const Eigen::VectorXcd b = (system.mass * at[k]->shape).cast<std::complex<double>>();
+    mass_shape.noalias() = system.mass * at[k]->shape;
+    b = mass_shape.cast<std::complex<double>>();
     A.block(0, n + k, n, 1) = b;
     A.block(n + k, 0, 1, n) = b.transpose();
     rhs.head(n) -= b * at[k]->shape.cast<std::complex<double>>().dot(load);

@@ -18,7 +18,10 @@ namespace railmodal::response {
 /// e.g. one on the axis of symmetry of an antisymmetric mode, gives ~1e-17 in the computed φ;
 /// taken at face value it would give a finite "resonance" of 1e14).
 inline bool undamped(const LinearSystem& system, const Mode& mode) {
-  return std::abs(mode.shape.dot(system.damping * mode.shape)) <= 1e-12 * system.damping.norm() * mode.shape.squaredNorm();
+  // Cφ into this thread's vector, kept between calls (the same product as a temporary's).
+  thread_local Eigen::VectorXd damping_shape;
+  damping_shape.noalias() = system.damping * mode.shape;
+  return std::abs(mode.shape.dot(damping_shape)) <= 1e-12 * system.damping.norm() * mode.shape.squaredNorm();
 }
 
 /// The one round-off rule for loads: a load Q_k (one harmonic of a source) drives a mode only

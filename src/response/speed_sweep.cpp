@@ -48,9 +48,17 @@ struct ModalBasis {
 ModalBasis modal_basis(const LinearSystem& system, const ModalResult& modes) {
   ModalBasis b;
   const int n = system.size();
+  // Cφ of each mode, into this thread's vectors kept between calls (every variant of a study
+  // asks): the same products the expressions below made as temporaries, once each.
+  thread_local std::vector<Eigen::VectorXd> damping_shape;
+  if (damping_shape.size() < modes.modes.size()) damping_shape.resize(modes.modes.size());
+  b.modes.reserve(modes.modes.size());
+  b.damping.reserve(modes.modes.size());
   for (const Mode& m : modes.modes) {
+    Eigen::VectorXd& c_phi = damping_shape[b.modes.size()];
+    c_phi.noalias() = system.damping * m.shape;
     b.modes.push_back(&m);
-    b.damping.push_back(m.shape.dot(system.damping * m.shape));
+    b.damping.push_back(m.shape.dot(c_phi));  // φᵀ(Cφ)
   }
   for (int i = 0; i < n; ++i)
     if (system.mass.row(i).cwiseAbs().maxCoeff() == 0.0) b.massless.push_back(i);
@@ -60,7 +68,7 @@ ModalBasis modal_basis(const LinearSystem& system, const ModalResult& modes) {
   double largest = 0.0, off = 0.0;
   for (size_t i = 0; i < b.modes.size(); ++i) {
     largest = std::max(largest, std::abs(b.damping[i]));
-    for (size_t j = 0; j < i; ++j) off = std::max(off, std::abs(b.modes[i]->shape.dot(system.damping * b.modes[j]->shape)));
+    for (size_t j = 0; j < i; ++j) off = std::max(off, std::abs(b.modes[i]->shape.dot(damping_shape[j])));  // φᵢᵀ(Cφⱼ)
   }
   b.exact = !damped_massless && off <= 1e-12 * largest && static_cast<int>(b.modes.size()) + static_cast<int>(b.massless.size()) == n;
   if (!b.massless.empty()) {

@@ -26,7 +26,8 @@ Eigen::MatrixXd take(const Eigen::MatrixXd& A, const std::vector<int>& rows, con
 // mass matrix that is not positive definite is a clear error and never garbage. Eigen's LLT
 // does the work; when it reports a failure, or a pivot is at round-off level, the
 // factorisation is repeated column by column to find the degree of freedom.
-Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<std::string>& labels) {
+// `dofs[kept[j]]` is row j of M (its label is only read for the message).
+Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<Dof>& dofs, const std::vector<int>& kept) {
   const double tiny = 64.0 * std::numeric_limits<double>::epsilon() * M.diagonal().cwiseAbs().maxCoeff();
   Eigen::LLT<Eigen::MatrixXd> llt(M);
   if (llt.info() == Eigen::Success) {
@@ -39,8 +40,8 @@ Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<std
     double pivot = M(j, j) - L.row(j).head(j).squaredNorm();
     // Round-off in a positive definite matrix leaves pivots of order ε·scale at worst.
     if (!(pivot > tiny))
-      throw NumericalError("the mass matrix is not positive definite at degree of freedom '" + labels[j] + "' (pivot " +
-                           shortest_text(pivot, 3) + "): its inertia is zero or depends on the others");
+      throw NumericalError("the mass matrix is not positive definite at degree of freedom '" + dofs[kept[j]].label +
+                           "' (pivot " + shortest_text(pivot, 3) + "): its inertia is zero or depends on the others");
     L(j, j) = std::sqrt(pivot);
     for (int i = j + 1; i < n; ++i)
       L(i, j) = (M(i, j) - L.row(i).head(j).dot(L.row(j).head(j))) / L(j, j);
@@ -82,8 +83,7 @@ Eigen::VectorXd rounding_bounds(const Eigen::VectorXd& lambda, int refined) {
 
 }  // namespace
 
-Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
-                            const std::vector<std::string>& labels) {
+Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const std::vector<Dof>& dofs) {
   const int n = static_cast<int>(M.rows());
   Eigenpairs result;
   result.summary.solver = ModalSolver::dense;
@@ -91,6 +91,7 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
   // Massless DOFs: an exactly zero row of M. They are condensed statically, as the book
   // eliminates the massless leaf-spring end (eq. 192e) and the bogie roll (eq. 252c).
   std::vector<int> kept, massless;
+  kept.reserve(n);
   for (int i = 0; i < n; ++i) (M.row(i).cwiseAbs().maxCoeff() == 0.0 ? massless : kept).push_back(i);
   if (kept.empty()) throw NumericalError("every degree of freedom is massless");
   Eigen::MatrixXd Kr = take(K, kept, kept);
@@ -102,9 +103,9 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
     lu.setThreshold(1e-12);
     if (!lu.isInvertible()) {
       // Name a massless DOF with no stiffness of its own.
-      std::string name = labels[massless[0]];
+      std::string name = dofs[massless[0]].label;
       for (int s : massless)
-        if (K.row(s).cwiseAbs().maxCoeff() == 0.0) { name = labels[s]; break; }
+        if (K.row(s).cwiseAbs().maxCoeff() == 0.0) { name = dofs[s].label; break; }
       throw NumericalError("degree of freedom '" + name +
                            "' has neither mass nor a restraint; give it inertia or hold it");
     }
@@ -113,11 +114,9 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
   }
   result.massless = massless;
   const Eigen::MatrixXd Mr = take(M, kept, kept);
-  std::vector<std::string> kept_labels;
-  for (int i : kept) kept_labels.push_back(labels[i]);
 
   // K φ = λ M φ  →  (L⁻¹ K L⁻ᵀ) y = λ y,  φ = L⁻ᵀ y: φ is M-normalised when y is unit.
-  const Eigen::MatrixXd L = checked_cholesky(Mr, kept_labels);
+  const Eigen::MatrixXd L = checked_cholesky(Mr, dofs, kept);
   const auto lower = L.triangularView<Eigen::Lower>();
   Eigen::MatrixXd A = lower.solve(Kr);
   A = lower.solve(A.transpose()).transpose();

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"
 
 namespace railmodal::solve {
@@ -26,9 +27,8 @@ struct Eigenpairs {
 };
 
 /// Every eigenpair (dense_modal.cpp): massless DOFs condensed statically, a checked Cholesky
-/// factorisation of M, a symmetric QR. scale = max |λ|.
-Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K,
-                            const std::vector<std::string>& labels);
+/// factorisation of M, a symmetric QR. scale = max |λ|. The DOFs' labels name them in errors.
+Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, const std::vector<Dof>& dofs);
 
 /// The `count` lowest eigenpairs, extended to the end of a cluster (arpack_modal.cpp).
 /// scale = max(max Kᵢᵢ/Mᵢᵢ, max |λ| found).

@@ -31,6 +31,7 @@ void solve::condense_roll(const Vehicle& vehicle, const LinearSystem& s, const s
   if (roll < 0) throw std::invalid_argument("body '" + body_name + "' has no free roll motion");
   const int lateral = s.index_of(body_name + ".lateral");
   std::vector<int> others;
+  others.reserve(static_cast<size_t>(s.size()));
   for (int i = 0; i < s.size(); ++i)
     if (i != roll && i != lateral) others.push_back(i);
   double k = K(roll, roll);
@@ -43,7 +44,11 @@ void solve::condense_roll(const Vehicle& vehicle, const LinearSystem& s, const s
       for (int j = 0; j < n; ++j) Koo(i, j) = K(others[i], others[j]);
     }
     // Directions nothing restrains carry no roll moment: the minimum-norm solve skips them.
-    k -= Kor.dot(Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(Koo).solve(Kor));
+    // This thread's decomposition, its storage kept between calls (a study condenses every
+    // variant's roll): the same factorisation of the same matrix.
+    thread_local Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+    cod.compute(Koo);
+    k -= Kor.dot(cod.solve(Kor));
   }
   const Body* body = nullptr;
   for (const auto& b : vehicle.bodies)

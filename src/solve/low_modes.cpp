@@ -93,7 +93,10 @@ double band(const Matrix& K, const Matrix& M) {
 }
 
 int negative_pivots(const Eigen::MatrixXd& A) {
-  const Eigen::LDLT<Eigen::MatrixXd> ldlt(A);
+  // This thread's factorisation, its storage kept between calls (two per dense modal solve,
+  // one solve per variant of a study): the same factorisation of the same matrix.
+  thread_local Eigen::LDLT<Eigen::MatrixXd> ldlt;
+  ldlt.compute(A);
   if (ldlt.info() != Eigen::Success || !ldlt.vectorD().allFinite()) return -1;
   return static_cast<int>((ldlt.vectorD().array() < 0.0).count());
 }

@@ -141,6 +141,7 @@ void summarise(ModalResult* result, const ModalOptions& options, std::vector<Sta
   s.method = s.solver == ModalSolver::dense
                  ? "dense: static condensation of massless DOFs, Cholesky of M, symmetric QR (Eigen)"
                  : "ARPACK shift-invert Lanczos on (K − σM)⁻¹M, " + s.factorisation + " of K − σM";
+  s.checks.reserve(s.checks.size() + 4);  // the four below: one allocation
   s.checks.push_back({"max relative residual", result->max_residual, options.max_residual, true});
   s.checks.push_back({"M-orthonormality error max|ΦᵀMΦ − I|", result->orthonormality_error,
                       std::numeric_limits<double>::infinity(), true});
@@ -170,6 +171,7 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
   const double norm_K = K.norm(), norm_M = M.norm();
   const Eigen::MatrixXd K_phi = K * phi, M_phi = M * phi;
   std::vector<bool> repeated(keep, false);
+  result.modes.reserve(keep);
   for (int k = 0; k + 1 < keep; ++k)
     if (solve::same_eigenvalue(lambda(k), lambda(k + 1), zero)) repeated[k] = repeated[k + 1] = true;
   for (int k = 0; k < keep; ++k) {
@@ -195,8 +197,8 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
     result.max_residual = std::max(result.max_residual, mode.residual);
     mode.repeated = repeated[k];
     auto description = describe(mode.shape, mode.repeated);
-    mode.name = description.name;
-    mode.centre = description.centre;
+    mode.name = std::move(description.name);
+    mode.centre = std::move(description.centre);
     if (mode.kind == ModeKind::unstable) mode.name += " (unstable)";
     if (mode.kind == ModeKind::rigid_body) mode.name += " (rigid-body)";
     result.modes.push_back(std::move(mode));
@@ -243,17 +245,16 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
   const Describe describe = [&system](const Eigen::VectorXd& shape, bool repeated) {
     return solve::describe_mode(system, shape, repeated);
   };
-  const auto labels = labels_of(system.dofs);
   AnalysisSummary timing;
   StageClock clock(&timing);
   ModalResult result;
   if (choose_solver(options.solver, n, options.mode_count) == ModalSolver::dense) {
-    const solve::Eigenpairs pairs = solve::dense_eigenpairs(M, K, labels);
+    const solve::Eigenpairs pairs = solve::dense_eigenpairs(M, K, system.dofs);
     clock.lap("eigensolve");
     result = make_result(system.dofs, M, K, pairs, dense_keep(pairs, options), options, describe);
   } else {
     const Eigen::SparseMatrix<double> Ms = M.sparseView(), Ks = K.sparseView();
-    const solve::Eigenpairs pairs = solve::arpack_eigenpairs(Ms, Ks, labels, options.mode_count, options);
+    const solve::Eigenpairs pairs = solve::arpack_eigenpairs(Ms, Ks, labels_of(system.dofs), options.mode_count, options);
     clock.lap("eigensolve");
     result = make_result(system.dofs, Ms, Ks, pairs, static_cast<int>(pairs.values.size()), options, describe);
   }

@@ -5,6 +5,7 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <map>
 
 #include "model/body_bending.hpp"
@@ -107,11 +108,22 @@ std::string sway_word(const Body& body, const BodyEnergy& e, std::optional<Centr
   return lower ? "lower sway" : "upper sway";
 }
 
+// Whether the system has the DOF "<body>.<motion>": LinearSystem::index_of(label) ≥ 0 without
+// the label built (a long one is an allocation, and every mode of every variant asks).
+bool has_dof(const LinearSystem& system, const std::string& body, const char* motion) {
+  const size_t n = body.size(), m = std::strlen(motion);
+  for (const Dof& d : system.dofs)
+    if (d.label.size() == n + 1 + m && d.label.compare(0, n, body) == 0 && d.label[n] == '.' &&
+        d.label.compare(n + 1, m, motion) == 0)
+      return true;
+  return false;
+}
+
 LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const BodyEnergy& e) {
   // Longitudinal CG motion of a body whose surge is held comes from pitching about a point off
   // the CG; lateral CG motion and roll are one sway, whichever of the two is larger.
   std::array<double, kTerms> t = e.term;
-  if (system.index_of(body.name + ".longitudinal") < 0) {  // held surge: the CG's longitudinal motion is pitch
+  if (!has_dof(system, body.name, "longitudinal")) {  // held surge: the CG's longitudinal motion is pitch
     t[kPitch] += t[kLongitudinal];
     t[kLongitudinal] = 0.0;
   }
@@ -143,8 +155,8 @@ LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const
     default: {
       // A body held laterally rolls about its fixed axis (the book's side rocking) even when
       // its CG moves more than it turns; one held in roll only translates.
-      const bool lateral_free = system.index_of(body.name + ".lateral") >= 0;
-      const bool roll_free = system.index_of(body.name + ".roll") >= 0;
+      const bool lateral_free = has_dof(system, body.name, "lateral");
+      const bool roll_free = has_dof(system, body.name, "roll");
       if (roll_free && !lateral_free) {
         m.word = "roll";
         m.centre = centre_of(body, e.motion, true);
@@ -162,8 +174,13 @@ LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const
 ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape, bool repeated) {
   const auto& bodies = system.vehicle.bodies;
   if (bodies.empty()) return describe_by_dof(system, shape);
-  std::vector<BodyVector> motion(bodies.size(), BodyVector::Zero());
-  std::vector<double> bending(bodies.size(), 0.0);
+  // This thread's lists, kept between modes: every mode of every variant of a study is named.
+  thread_local std::vector<BodyVector> motion;
+  thread_local std::vector<double> bending;
+  thread_local std::vector<BodyEnergy> energy;
+  motion.assign(bodies.size(), BodyVector::Zero());
+  bending.assign(bodies.size(), 0.0);
+  energy.clear();
   for (size_t i = 0; i < system.dofs.size(); ++i) {
     const Dof& dof = system.dofs[i];
     if (dof.motion == Motion::bending)
@@ -172,7 +189,6 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
       motion[dof.body](static_cast<int>(dof.motion)) = shape(static_cast<int>(i));
   }
 
-  std::vector<BodyEnergy> energy;
   int lead = 0;
   for (size_t b = 0; b < bodies.size(); ++b) {
     energy.push_back(energy_of(bodies[b], motion[b], bending[b]));

@@ -24,6 +24,7 @@ namespace railmodal {
 namespace {
 
 void summarise_modes(const ModalResult& modes, VariantResult* r) {
+  r->modes.reserve(r->modes.size() + modes.modes.size());
   for (const Mode& m : modes.modes)
     r->modes.push_back({m.name, to_string(m.kind), m.frequency_hz, m.period_s, m.divergence_rate});
 }
@@ -44,7 +45,10 @@ void static_deflections(const Vehicle& vehicle, const LinearSystem& any, Variant
   Eigen::VectorXd up = Eigen::VectorXd::Zero(s.size());
   for (int i = 0; i < s.size(); ++i)
     if (s.dofs[i].motion == Motion::bounce) up(i) = 1.0;
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(s.stiffness - s.gravity_stiffness);
+  // This thread's factorisation, its storage kept between calls (every variant of a study):
+  // the same factorisation of the same matrix.
+  thread_local Eigen::FullPivLU<Eigen::MatrixXd> lu;
+  lu.compute(s.stiffness - s.gravity_stiffness);
   if (!lu.isInvertible()) return;  // a free vertical direction: no static position to report
   const Eigen::VectorXd q = lu.solve(s.mass * up * vehicle.gravity);
   for (int i = 0; i < s.size(); ++i)
@@ -71,6 +75,8 @@ void metacentric_height(const Vehicle& vehicle, const LinearSystem* lateral, Var
 }
 
 void summarise_response(const CriticalSpeedStudy& study, VariantResult* r) {
+  r->critical_speeds.reserve(r->critical_speeds.size() + study.critical_speeds.size());
+  r->peaks.reserve(r->peaks.size() + study.curves.size());
   for (const CriticalSpeed& c : study.critical_speeds)
     r->critical_speeds.push_back({c.speed, c.source, c.source_kind, c.harmonic, c.mode_name, c.friction_stops});
   for (size_t k = 0; k < study.curves.size(); ++k) {

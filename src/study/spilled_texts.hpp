@@ -28,7 +28,8 @@ class SpilledTexts {
   void put(size_t position, const std::string& text);
   /// Flushes the file; throws std::system_error if a write failed (a full disk, say).
   void finish();
-  /// The text put at `position`; std::system_error if it cannot be read back.
+  /// The text put at `position`, once finish() has flushed the file; std::system_error if it
+  /// cannot be read back.
   std::string at(size_t position) const;
   size_t size() const { return offsets_.size(); }
 
