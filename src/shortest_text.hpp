@@ -7,11 +7,18 @@
 
 namespace railmodal {
 
-/// std::to_chars without a precision: shortest round-trip form ("0.03", "1e-30", "inf", "nan").
-inline std::string shortest_text(double x) {
+/// shortest_text(x) appended to `text`, without a string of its own.
+inline void append_shortest_text(std::string* text, double x) {
   char buffer[32];
   const auto written = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, written.ptr);
+  text->append(buffer, written.ptr);
+}
+
+/// std::to_chars without a precision: shortest round-trip form ("0.03", "1e-30", "inf", "nan").
+inline std::string shortest_text(double x) {
+  std::string text;
+  append_shortest_text(&text, x);
+  return text;
 }
 
 /// At most `digits` significant digits, as printf's %g, for numbers in messages: "1e-11" and

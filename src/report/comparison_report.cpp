@@ -3,7 +3,6 @@
 // merge ranks exactly the numbers a single run would have ranked (src/input/shard_reader.cpp
 // reads it back).
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -215,10 +214,7 @@ std::string exact(double x) {
 
 // exact(x) appended to `text` without a string of its own (a row's lists hold a dozen numbers).
 void append_exact(std::string* text, double x) {
-  if (!std::isfinite(x)) return;
-  char buffer[32];
-  const auto written = std::to_chars(buffer, buffer + sizeof buffer, x);  // as shortest_text
-  text->append(buffer, written.ptr);
+  if (std::isfinite(x)) append_shortest_text(text, x);
 }
 
 std::string status(const RankedVariant& v) { return !v.result.ok() ? "failed" : v.feasible ? "yes" : "no"; }
@@ -327,13 +323,6 @@ std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& 
 
 namespace {
 
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string quoted = "\"";
-  for (char ch : s) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return quoted + "\"";
-}
-
 // Display width: UTF-8 continuation bytes take no column.
 size_t width(const std::string& s) {
   return static_cast<size_t>(std::count_if(s.begin(), s.end(), [](char ch) { return (static_cast<unsigned char>(ch) & 0xC0) != 0x80; }));
@@ -422,9 +411,7 @@ void write_table(std::ostream& out, const Comparison& c) {
 void write_csv_row(std::ostream& out, const std::vector<std::string>& row, size_t from = 0) {
   for (size_t i = from; i < row.size(); ++i) {
     if (i > from) out << ',';
-    // A field that needs no quotes is written as it is (csv_field would copy it).
-    if (row[i].find_first_of(",\"\n") == std::string::npos) out << row[i];
-    else out << csv_field(row[i]);
+    report::write_csv_field(out, row[i]);
   }
 }
 

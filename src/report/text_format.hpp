@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <optional>
+#include <ostream>
 #include <sstream>
 #include <string>
 
@@ -11,12 +12,22 @@
 
 namespace railmodal::report {
 
+/// Whether a CSV field must be quoted: it holds a comma, quote or newline (RFC 4180).
+inline bool csv_needs_quotes(const std::string& text) { return text.find_first_of(",\"\n") != std::string::npos; }
+
 /// A CSV field, quoted when it holds a comma, quote or newline (RFC 4180).
 inline std::string csv_field(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  if (!csv_needs_quotes(text)) return text;
   std::string quoted = "\"";
   for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
+}
+
+/// csv_field(text) written to `out`, a field that needs no quotes without a copy (a study's CSV
+/// writes a dozen fields a variant).
+inline void write_csv_field(std::ostream& out, const std::string& text) {
+  if (csv_needs_quotes(text)) out << csv_field(text);
+  else out << text;
 }
 
 /// A CSV column heading with its unit, "name [unit]" ("body.bounce [m]", "speed [km/h]"); the
