@@ -11,8 +11,6 @@
 namespace railmodal::test {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 const std::string kRideScene = R"([scene]
 name = "ride scene"
 vehicle = "ride_wagon.toml"
