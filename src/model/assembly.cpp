@@ -322,8 +322,8 @@ std::vector<int> free_coordinates(const Vehicle& v, const Layout& layout) {
 // coordinate takes no load from the body's weight, taken as spread uniformly along the beam
 // (∫ m' φ ds = 0), and its stiffness ω²m_b: the springs bend the body (it sags between
 // supports), which moves load between supports only where they are more than statics fixes.
-std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const std::vector<int>& free,
-                                 const std::vector<ElementMap>& maps, const Eigen::MatrixXd& K_springs) {
+// The generalised weights Q in full coordinates: each body's weight at its CG.
+Eigen::VectorXd generalised_weights(const Vehicle& v, const Layout& layout) {
   Eigen::VectorXd Q = Eigen::VectorXd::Zero(layout.size());
   for (int b = 0; b < layout.bodies; ++b) {
     const Body& body = v.bodies[b];
@@ -331,6 +331,12 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
     Q.segment(b * kMotionsPerBody, kMotionsPerBody) =
         model::point_map(body, body.centre_of_gravity).transpose() * weight;
   }
+  return Q;
+}
+
+std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const std::vector<int>& free,
+                                 const std::vector<ElementMap>& maps, const Eigen::MatrixXd& K_springs,
+                                 const Eigen::VectorXd& Q) {
   const int n = static_cast<int>(free.size());
   Eigen::MatrixXd Kf(n, n);
   Eigen::VectorXd Qf(n);
@@ -381,22 +387,18 @@ struct FullModel {
   std::vector<ElementMap> maps;  // one per element
 };
 
-// The coefficients of the springs, dampers and bending modes summed into K_springs (and C, when
-// it is not empty), zeroed first: what changes when only the elements' stiffnesses and viscous
-// dampings do (a study's variants on one base, VariantAssembly). The same sums in the same
-// order whichever path calls it.
-void add_coefficients(const Vehicle& vehicle, const Layout& layout, FullModel* f) {
-  const bool damping = f->C.size() > 0;
+// The coefficients of the springs and bending modes summed into K_springs, zeroed first: what
+// changes when only the elements' stiffnesses do (a study's variants on one base,
+// VariantAssembly). The same sums in the same order whichever path calls it.
+void add_stiffnesses(const Vehicle& vehicle, const Layout& layout, FullModel* f) {
   f->K_springs.setZero();
-  if (damping) f->C.setZero();
-  // The bending mode by itself: modal mass m_b, stiffness ω²m_b, damping 2ζω m_b. Its mass is
-  // not coupled to the rigid motions: for a uniform beam the mode is orthogonal to them
-  // (∫ m' φ ds = ∫ m' (x − centre) φ ds = 0), which we take for the body.
+  // The bending mode by itself: modal mass m_b, stiffness ω²m_b (damping 2ζω m_b in
+  // add_dampings). Its mass is not coupled to the rigid motions: for a uniform beam the mode
+  // is orthogonal to them (∫ m' φ ds = ∫ m' (x − centre) φ ds = 0), which we take for the body.
   for (size_t j = 0; j < layout.bent.size(); ++j) {
     const model::BendingMode& mode = layout.modes[j];
     const int q = layout.rigid() + static_cast<int>(j);
     f->K_springs(q, q) = mode.omega * mode.omega * mode.modal_mass;
-    if (damping) f->C(q, q) = 2.0 * mode.damping_ratio * mode.omega * mode.modal_mass;
   }
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
@@ -406,9 +408,24 @@ void add_coefficients(const Vehicle& vehicle, const Layout& layout, FullModel* f
     add_element(map, {series_stiffness(e.longitudinal_stages), lateral, series_stiffness(e.vertical_stages)},
                 &f->K_springs);
     add_rotational(map, e.rotational_stiffness, &f->K_springs);
-    if (damping) add_element(map, {e.longitudinal_damping, e.lateral_damping, e.vertical_damping}, &f->C);
     add_bending_coupling(layout, map, series_stiffness(e.vertical_stages), &f->K_springs);
-    if (damping) add_bending_coupling(layout, map, e.vertical_damping, &f->C);
+  }
+}
+
+// The viscous dampers and the bending modes' damping summed into C, zeroed first (when C is
+// not empty: an assembly of the stiffness alone has none).
+void add_dampings(const Vehicle& vehicle, const Layout& layout, FullModel* f) {
+  if (f->C.size() == 0) return;
+  f->C.setZero();
+  for (size_t j = 0; j < layout.bent.size(); ++j) {
+    const model::BendingMode& mode = layout.modes[j];
+    const int q = layout.rigid() + static_cast<int>(j);
+    f->C(q, q) = 2.0 * mode.damping_ratio * mode.omega * mode.modal_mass;
+  }
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Element& e = vehicle.elements[k];
+    add_element(f->maps[k], {e.longitudinal_damping, e.lateral_damping, e.vertical_damping}, &f->C);
+    add_bending_coupling(layout, f->maps[k], e.vertical_damping, &f->C);
   }
 }
 
@@ -427,7 +444,8 @@ FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string,
   }
   f.maps.reserve(vehicle.elements.size());
   for (const Element& e : vehicle.elements) f.maps.push_back(element_map(vehicle, layout, index, e));
-  add_coefficients(vehicle, layout, &f);
+  add_stiffnesses(vehicle, layout, &f);
+  add_dampings(vehicle, layout, &f);
   return f;
 }
 
@@ -435,17 +453,24 @@ FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string,
 // coordinate gets none: its second-order terms (the slope φ' turning a load's lever, the
 // drop of a point off the neutral axis) are left out, as the rotation of the beam's sections
 // is (docs/ride.md, "Car-body bending").
-Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const Layout& layout, const std::vector<ElementMap>& maps,
-                                  const std::vector<double>& loads) {
+// The bodies' weights' part, summed first (what the springs' coefficients do not change).
+Eigen::MatrixXd weights_gravity_stiffness(const Vehicle& vehicle, const Layout& layout) {
   Eigen::MatrixXd K_gravity = Eigen::MatrixXd::Zero(layout.size(), layout.size());
+  for (int b = 0; b < layout.bodies; ++b) {
+    const Body& body = vehicle.bodies[b];
+    K_gravity.block(b * kMotionsPerBody, b * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) +=
+        model::dead_load_stiffness(body, body.centre_of_gravity, Eigen::Vector3d(0.0, 0.0, -body.mass * vehicle.gravity));
+  }
+  return K_gravity;
+}
+
+// K_weights: weights_gravity_stiffness's, to which the elements' static loads are added.
+Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const std::vector<ElementMap>& maps,
+                                  const std::vector<double>& loads, const Eigen::MatrixXd& K_weights) {
+  Eigen::MatrixXd K_gravity = K_weights;
   auto block = [&](int body) {
     return K_gravity.block(body * kMotionsPerBody, body * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody);
   };
-  for (int b = 0; b < layout.bodies; ++b) {
-    const Body& body = vehicle.bodies[b];
-    block(b) += model::dead_load_stiffness(body, body.centre_of_gravity,
-                                           Eigen::Vector3d(0.0, 0.0, -body.mass * vehicle.gravity));
-  }
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
     const Eigen::Vector3d on_upper(0.0, 0.0, loads[k]);
@@ -579,6 +604,8 @@ std::vector<SeriesDamperRow> series_damper_rows(const Vehicle& vehicle, const La
 struct FullAssembly {
   Layout layout;
   std::vector<int> free;  // free_coordinates, found once for the statics and every set kept
+  Eigen::VectorXd weights;    // generalised_weights
+  Eigen::MatrixXd K_weights;  // weights_gravity_stiffness
   FullModel full;
   std::vector<double> loads;
   Eigen::MatrixXd K, K_gravity;
@@ -587,21 +614,23 @@ struct FullAssembly {
 // What follows the springs and masses: the static loads, the hangers' lateral stiffness and the
 // dead loads, from a.full (its K_springs summed).
 void add_static_loads(const Vehicle& vehicle, FullAssembly* a) {
-  a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs);
+  a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
   a->K = a->full.K_springs;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
     if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
   }
-  a->K_gravity = gravity_stiffness(vehicle, a->layout, a->full.maps, a->loads);
+  a->K_gravity = gravity_stiffness(vehicle, a->full.maps, a->loads, a->K_weights);
   a->K += a->K_gravity;
 }
 
 FullAssembly assemble_full(const Vehicle& vehicle, bool damping) {
   std::map<std::string, int> index;
   check_vehicle(vehicle, &index);
-  FullAssembly a{Layout(vehicle), {}, {}, {}, {}, {}};
+  FullAssembly a{Layout(vehicle), {}, {}, {}, {}, {}, {}, {}};
   a.free = free_coordinates(vehicle, a.layout);
+  a.weights = generalised_weights(vehicle, a.layout);
+  a.K_weights = weights_gravity_stiffness(vehicle, a.layout);
   a.full = springs_and_masses(vehicle, index, a.layout, damping);
   add_static_loads(vehicle, &a);
   return a;
@@ -680,9 +709,9 @@ bool same_stage_shape(const std::vector<SpringStage>& a, const std::vector<Sprin
   return true;
 }
 
-// Whether `v` differs from `kept` at most in what add_coefficients, static loads and track
-// inputs read afresh: its spring stages' stiffnesses, rotational stiffnesses and viscous
-// dampings (and what the assembly does not read: names of stages, friction, curves, the
+// Whether `v` differs from `kept` at most in what add_stiffnesses, add_dampings, the static
+// loads and the track inputs read afresh: its spring stages' stiffnesses, rotational
+// stiffnesses and viscous dampings (and what the assembly does not read: names of stages, friction, curves, the
 // wheel–rail contact). Everything the kept checks, coordinates, point maps, M and DOF labels
 // were made from is compared. A field added to Body, Element or Vehicle that the assembly
 // reads must be compared here (test VariantAssembly.ComparesEveryFieldTheAssemblyReads).
@@ -730,10 +759,29 @@ bool coefficients_valid(const Vehicle& v) {
   return true;
 }
 
+// The coefficients add_dampings reads (with the bending modes', part of the kept geometry).
+std::vector<double> dampings_of(const Vehicle& v) {
+  std::vector<double> d;
+  d.reserve(3 * v.elements.size());
+  for (const Element& e : v.elements) d.insert(d.end(), {e.longitudinal_damping, e.lateral_damping, e.vertical_damping});
+  return d;
+}
+
+bool same_dampings(const std::vector<double>& damped, const Vehicle& v) {
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const Element& e = v.elements[k];
+    if (!same(damped[3 * k], e.longitudinal_damping) || !same(damped[3 * k + 1], e.lateral_damping) ||
+        !same(damped[3 * k + 2], e.vertical_damping))
+      return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 struct model::VariantAssembly::Base {
   Vehicle kept;  // the geometry the rest was made from (its coefficients are not read)
+  std::vector<double> damped;  // the viscous dampings C was summed from (dampings_of)
   FullAssembly a;  // layout, free coordinates, point maps and M kept; the rest each variant's
   DofSet set, stiffness_set;
   std::vector<int> keep, stiffness_keep;
@@ -749,11 +797,16 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
   reused_ = base_ && base_->set == set && base_->stiffness_set == stiffness_set &&
             same_but_coefficients(base_->kept, vehicle) && coefficients_valid(vehicle);
   if (reused_) {
-    add_coefficients(vehicle, base_->a.layout, &base_->a.full);
+    add_stiffnesses(vehicle, base_->a.layout, &base_->a.full);
+    if (!same_dampings(base_->damped, vehicle)) {
+      add_dampings(vehicle, base_->a.layout, &base_->a.full);
+      base_->damped = dampings_of(vehicle);
+    }
     add_static_loads(vehicle, &base_->a);
   } else {
     FullAssembly a = assemble_full(vehicle, true);  // throws before anything is kept
-    auto fresh = std::unique_ptr<Base>(new Base{vehicle, std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}});
+    auto fresh = std::unique_ptr<Base>(
+        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}});
     const FullAssembly& f = fresh->a;
     fresh->keep = kept_coordinates(vehicle, f.layout, f.free, set, &fresh->dofs);
     fresh->stiffness_keep = kept_coordinates(vehicle, f.layout, f.free, stiffness_set, &fresh->stiffness_dofs);
