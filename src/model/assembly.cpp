@@ -685,21 +685,26 @@ namespace {
 
 // The geometry a VariantAssembly keeps, compared bit for bit (a -0.0 for a 0.0 is another
 // vehicle: its products may carry the sign).
-bool same(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same(const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return same(a.x(), b.x()) && same(a.y(), b.y()) && same(a.z(), b.z()); }
-bool same(const std::optional<double>& a, const std::optional<double>& b) {
-  return a.has_value() == b.has_value() && (!a || same(*a, *b));
+bool bitwise_equal(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool bitwise_equal(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return bitwise_equal(a.x(), b.x()) && bitwise_equal(a.y(), b.y()) && bitwise_equal(a.z(), b.z());
+}
+bool bitwise_equal(const std::optional<double>& a, const std::optional<double>& b) {
+  return a.has_value() == b.has_value() && (!a || bitwise_equal(*a, *b));
 }
 
 bool same_bending(const std::optional<BodyBending>& a, const std::optional<BodyBending>& b) {
   if (a.has_value() != b.has_value()) return false;
   if (!a) return true;
-  if (!same(a->length, b->length) || !same(a->centre, b->centre) || !same(a->damping_ratio, b->damping_ratio)) return false;
-  if (a->beam.has_value() != b->beam.has_value() || a->mode.has_value() != b->mode.has_value()) return false;
-  if (a->beam && (!same(a->beam->bending_stiffness, b->beam->bending_stiffness) ||
-                  !same(a->beam->mass_per_length, b->beam->mass_per_length)))
+  if (!bitwise_equal(a->length, b->length) || !bitwise_equal(a->centre, b->centre) ||
+      !bitwise_equal(a->damping_ratio, b->damping_ratio))
     return false;
-  return !a->mode || (same(a->mode->frequency, b->mode->frequency) && same(a->mode->modal_mass, b->mode->modal_mass));
+  if (a->beam.has_value() != b->beam.has_value() || a->mode.has_value() != b->mode.has_value()) return false;
+  if (a->beam && (!bitwise_equal(a->beam->bending_stiffness, b->beam->bending_stiffness) ||
+                  !bitwise_equal(a->beam->mass_per_length, b->beam->mass_per_length)))
+    return false;
+  return !a->mode || (bitwise_equal(a->mode->frequency, b->mode->frequency) &&
+                      bitwise_equal(a->mode->modal_mass, b->mode->modal_mass));
 }
 
 bool same_stage_shape(const std::vector<SpringStage>& a, const std::vector<SpringStage>& b) {
@@ -716,32 +721,38 @@ bool same_stage_shape(const std::vector<SpringStage>& a, const std::vector<Sprin
 // were made from is compared. A field added to Body, Element or Vehicle that the assembly
 // reads must be compared here (test VariantAssembly.ComparesEveryFieldTheAssemblyReads).
 bool same_but_coefficients(const Vehicle& kept, const Vehicle& v) {
-  if (!same(kept.gravity, v.gravity) || kept.bodies.size() != v.bodies.size() ||
+  if (!bitwise_equal(kept.gravity, v.gravity) || kept.bodies.size() != v.bodies.size() ||
       kept.elements.size() != v.elements.size() || kept.wheelsets.size() != v.wheelsets.size())
     return false;
   for (size_t b = 0; b < v.bodies.size(); ++b) {
     const Body &x = kept.bodies[b], &y = v.bodies[b];
-    if (x.name != y.name || !same(x.mass, y.mass) || !same(x.inertia, y.inertia) ||
-        !same(x.centre_of_gravity, y.centre_of_gravity) || !same(x.reference_point, y.reference_point) ||
-        x.held != y.held || x.longitudinal_free != y.longitudinal_free || !same_bending(x.bending, y.bending))
+    if (x.name != y.name || !bitwise_equal(x.mass, y.mass) || !bitwise_equal(x.inertia, y.inertia) ||
+        !bitwise_equal(x.centre_of_gravity, y.centre_of_gravity) ||
+        !bitwise_equal(x.reference_point, y.reference_point) || x.held != y.held ||
+        x.longitudinal_free != y.longitudinal_free || !same_bending(x.bending, y.bending))
       return false;
   }
   for (size_t k = 0; k < v.elements.size(); ++k) {
     const Element &x = kept.elements[k], &y = v.elements[k];
-    if (x.name != y.name || x.lower != y.lower || x.upper != y.upper || !same(x.point, y.point) ||
-        !same_stage_shape(x.vertical_stages, y.vertical_stages) || !same_stage_shape(x.lateral_stages, y.lateral_stages) ||
-        !same_stage_shape(x.longitudinal_stages, y.longitudinal_stages) || x.hanger.has_value() != y.hanger.has_value() ||
-        x.series_dampers.size() != y.series_dampers.size())
+    if (x.name != y.name || x.lower != y.lower || x.upper != y.upper || !bitwise_equal(x.point, y.point) ||
+        !same_stage_shape(x.vertical_stages, y.vertical_stages) ||
+        !same_stage_shape(x.lateral_stages, y.lateral_stages) ||
+        !same_stage_shape(x.longitudinal_stages, y.longitudinal_stages) ||
+        x.hanger.has_value() != y.hanger.has_value() || x.series_dampers.size() != y.series_dampers.size())
       return false;
-    if (x.hanger && (!same(x.hanger->length, y.hanger->length) || !same(x.hanger->inclination, y.hanger->inclination)))
+    if (x.hanger && (!bitwise_equal(x.hanger->length, y.hanger->length) ||
+                     !bitwise_equal(x.hanger->inclination, y.hanger->inclination)))
       return false;
     for (size_t d = 0; d < x.series_dampers.size(); ++d) {
       const SeriesDamper &p = x.series_dampers[d], &q = y.series_dampers[d];
-      if (p.direction != q.direction || !same(p.damping, q.damping) || !same(p.stiffness, q.stiffness)) return false;
+      if (p.direction != q.direction || !bitwise_equal(p.damping, q.damping) ||
+          !bitwise_equal(p.stiffness, q.stiffness))
+        return false;
     }
   }
   for (size_t w = 0; w < v.wheelsets.size(); ++w)
-    if (kept.wheelsets[w].body != v.wheelsets[w].body || !same(kept.wheelsets[w].spin_inertia, v.wheelsets[w].spin_inertia))
+    if (kept.wheelsets[w].body != v.wheelsets[w].body ||
+        !bitwise_equal(kept.wheelsets[w].spin_inertia, v.wheelsets[w].spin_inertia))
       return false;
   return true;
 }
@@ -763,15 +774,16 @@ bool coefficients_valid(const Vehicle& v) {
 std::vector<double> dampings_of(const Vehicle& v) {
   std::vector<double> d;
   d.reserve(3 * v.elements.size());
-  for (const Element& e : v.elements) d.insert(d.end(), {e.longitudinal_damping, e.lateral_damping, e.vertical_damping});
+  for (const Element& e : v.elements)
+    d.insert(d.end(), {e.longitudinal_damping, e.lateral_damping, e.vertical_damping});
   return d;
 }
 
 bool same_dampings(const std::vector<double>& damped, const Vehicle& v) {
   for (size_t k = 0; k < v.elements.size(); ++k) {
     const Element& e = v.elements[k];
-    if (!same(damped[3 * k], e.longitudinal_damping) || !same(damped[3 * k + 1], e.lateral_damping) ||
-        !same(damped[3 * k + 2], e.vertical_damping))
+    if (!bitwise_equal(damped[3 * k], e.longitudinal_damping) || !bitwise_equal(damped[3 * k + 1], e.lateral_damping) ||
+        !bitwise_equal(damped[3 * k + 2], e.vertical_damping))
       return false;
   }
   return true;
@@ -780,9 +792,9 @@ bool same_dampings(const std::vector<double>& damped, const Vehicle& v) {
 }  // namespace
 
 struct model::VariantAssembly::Base {
-  Vehicle kept;  // the geometry the rest was made from (its coefficients are not read)
+  Vehicle kept;                // the geometry the rest was made from (its coefficients are not read)
   std::vector<double> damped;  // the viscous dampings C was summed from (dampings_of)
-  FullAssembly a;  // layout, free coordinates, point maps and M kept; the rest each variant's
+  FullAssembly a;              // layout, free coordinates, point maps and M kept; the rest each variant's
   DofSet set, stiffness_set;
   std::vector<int> keep, stiffness_keep;
   std::vector<Dof> dofs, stiffness_dofs;
