@@ -350,9 +350,9 @@ struct HandBack {
 // evaluate_variant; `owned`, when given, is `variant` itself, which the caller gives up: its
 // scene moves into the critical-speed study and its vehicle into the study's system instead of
 // being copied there (a copy of each a variant fewer: their names, lists and the scene's key
-// places are allocations), and what follows reads them there. With a `workspace` (owned only)
-// the worker's VariantAssembly assembles it into the workspace's systems: the same matrices,
-// bit for bit, from the base it keeps.
+// places are allocations), and what follows reads them there. With a `workspace` the worker's
+// VariantAssembly assembles it into the workspace's systems: the same matrices, bit for bit,
+// from the base it keeps.
 VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned, int index, const DeflectionRule& rule,
                                const std::optional<HuntingOptions>& hunting, bool ride_rms_only,
                                study::Workspace* workspace) {
@@ -383,9 +383,10 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
     const DofSet dofs = variant.scene.dofs;
     try {
       const auto assembled = [&] {
-        if (workspace) {
-          workspace->assembly.assemble(std::move(owned->vehicle), dofs, DofSet::lateral, &workspace->system, &lateral);
-          vehicle_moved = true;
+        if (workspace) {  // the variant's own vehicle moved in, or a copy (as assemble copies it)
+          workspace->assembly.assemble(owned ? std::move(owned->vehicle) : Vehicle(variant.vehicle), dofs,
+                                       DofSet::lateral, &workspace->system, &lateral);
+          vehicle_moved = owned != nullptr;
           return std::move(workspace->system);
         }
         model::SystemAndStiffness both =
@@ -437,6 +438,11 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
                                const std::optional<HuntingOptions>& hunting, bool ride_rms_only) {
   return evaluate_in_full(variant, nullptr, index, rule, hunting, ride_rms_only, nullptr);
+}
+
+VariantResult study::evaluate_in_workspace(const StudyVariant& variant, int index, const VariantSettings& settings,
+                                           Workspace* workspace) {
+  return evaluate_in_full(variant, nullptr, index, settings.rule, settings.hunting, settings.ride_rms_only, workspace);
 }
 
 VariantResult study::evaluate_owned_variant(StudyVariant&& variant, int index, const VariantSettings& settings,

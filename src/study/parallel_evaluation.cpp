@@ -94,7 +94,7 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
         // evaluation (its name and parameters stay).
         result = variant == &read
                      ? evaluate_owned_variant(std::move(read), index, settings, &workspace)
-                     : evaluate_variant(*variant, index, settings.rule, settings.hunting, settings.ride_rms_only);
+                     : evaluate_in_workspace(*variant, index, settings, &workspace);
       } catch (const std::exception& e) {  // evaluate_variant keeps design failures; this is a bug
         result = VariantResult{};
         result.index = index;

@@ -47,4 +47,9 @@ struct Workspace {
 VariantResult evaluate_owned_variant(StudyVariant&& variant, int index, const VariantSettings& settings,
                                      Workspace* workspace);
 
+/// The same for a variant the caller keeps (read beforehand): its vehicle is copied into the
+/// workspace's system, as evaluate_variant copies it into its own.
+VariantResult evaluate_in_workspace(const StudyVariant& variant, int index, const VariantSettings& settings,
+                                    Workspace* workspace);
+
 }  // namespace railmodal::study

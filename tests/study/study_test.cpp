@@ -540,7 +540,8 @@ overrides = { "body.cg_height" = "100 m" }
 // path (evaluate_variant of the variant read by read_variant, its own assembly from scratch)
 // is the reference. Every reported number of every result is the same to the last bit
 // (shard_result_json writes each in shortest round-trip form, so equal text is equal bits),
-// on the bundled studies and a sample of the 10⁵-variant benchmark study, on 1 and 2 threads.
+// on the bundled studies and a sample of the 10⁵-variant benchmark study, on 1 and 2 threads,
+// with the variants read in the workers or beforehand.
 TEST(Evaluation, VariantsOnTheWorkersBaseAreTheGeneralPathsBitForBit) {
   std::vector<std::pair<std::string, int>> studies;  // path, shards (every variant of shard 1 evaluated)
   for (const auto& file : std::filesystem::directory_iterator(std::string(RAILMODAL_DATA_DIR) + "/studies"))
@@ -550,20 +551,23 @@ TEST(Evaluation, VariantsOnTheWorkersBaseAreTheGeneralPathsBitForBit) {
   for (const auto& [path, shards] : studies) {
     const Study study = open_study(path);
     EvaluationOptions options;
-    options.read_in_workers = true;
     options.shards = shards;
     std::vector<std::string> reference;
     for (int i = 0; i < variant_count(study); ++i)
       if (in_shard(i, 1, shards))
         reference.push_back(report::shard_result_json(evaluate_variant(read_variant(study, i), i, study.deflection_rule,
                                                                        hunting_options_of(study), ride_rms_only(study))));
-    for (int threads : {1, 2}) {
-      options.threads = threads;
-      const std::vector<VariantResult> results = evaluate_study(study, options);
-      ASSERT_EQ(results.size(), reference.size()) << path;
-      for (size_t k = 0; k < results.size(); ++k)
-        EXPECT_EQ(report::shard_result_json(results[k]), reference[k]) << path << ", variant " << results[k].index;
-    }
+    // Read in the workers (each moved into its evaluation), and read beforehand (each copied).
+    const Study loaded = load_study(path, [&](int i) { return in_shard(i, 1, shards); });
+    for (const Study* s : {&study, &loaded})
+      for (int threads : {1, 2}) {
+        options.threads = threads;
+        options.read_in_workers = s == &study;
+        const std::vector<VariantResult> results = evaluate_study(*s, options);
+        ASSERT_EQ(results.size(), reference.size()) << path;
+        for (size_t k = 0; k < results.size(); ++k)
+          EXPECT_EQ(report::shard_result_json(results[k]), reference[k]) << path << ", variant " << results[k].index;
+      }
   }
 }
 
