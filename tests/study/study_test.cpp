@@ -558,7 +558,8 @@ TEST(Evaluation, VariantsOnTheWorkersBaseAreTheGeneralPathsBitForBit) {
         reference.push_back(report::shard_result_json(evaluate_variant(read_variant(study, i), i, study.deflection_rule,
                                                                        hunting_options_of(study), ride_rms_only(study))));
     // Read in the workers (each moved into its evaluation), and read beforehand (each copied).
-    const Study loaded = load_study(path, [&](int i) { return in_shard(i, 1, shards); });
+    const int in = shards;  // a structured binding cannot be captured in C++17
+    const Study loaded = load_study(path, [in](int i) { return in_shard(i, 1, in); });
     for (const Study* s : {&study, &loaded})
       for (int threads : {1, 2}) {
         options.threads = threads;
