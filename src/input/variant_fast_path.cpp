@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 
 #include "input/document_readers.hpp"
@@ -33,6 +34,20 @@ std::optional<double> read_as(const toml::value& value, Quantity kind) {
 }
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// read_as of a drawn value with a unit, without its text (FastKey::unit_scales): the value
+// times its unit's scale, with the reader's checks of a finite, representable result; nothing
+// when the unit was not scaled or a check fails (read_as then says what the reader does).
+std::optional<double> drawn_si(const FastKey& key, const study::WrittenNumber& x) {
+  if (x.unit.empty() || !std::isfinite(x.number)) return std::nullopt;
+  for (const auto& [unit, scale] : key.unit_scales)
+    if (unit == x.unit) {
+      const double si = x.number * scale;
+      if (!std::isfinite(si) || !within_magnitudes(si)) return std::nullopt;
+      return si;
+    }
+  return std::nullopt;
+}
 
 std::vector<double> numbers_of(Vehicle vehicle) {
   std::vector<double> out;
@@ -227,6 +242,12 @@ std::optional<FastPath> resolve_fast_path(const StudyFile& file) {
       if (!all_three) continue;
       const double from = *read_as(drawn[3 * s].value, k->kind), to = *read_as(drawn[3 * s + 1].value, k->kind);
       k->drawn.push_back({std::min(from, to), std::max(from, to)});
+      const std::string& unit = values.samples[s][0].unit;
+      const bool known = std::any_of(k->unit_scales.begin(), k->unit_scales.end(),
+                                     [&](const std::pair<std::string, double>& u) { return u.first == unit; });
+      if (unit.empty() || known) continue;
+      if (const std::optional<double> scale = read_as(toml::value("1 " + unit), k->kind))
+        k->unit_scales.push_back({unit, *scale});
     }
     if (!k->written.empty() || !k->drawn.empty()) fast.keys[key] = std::move(*k);
   }
@@ -253,7 +274,8 @@ std::optional<Vehicle> fast_vehicle(const StudyFile& file, const study::VariantS
     if (found == file.fast->keys.end()) return std::nullopt;
     const FastKey& key = found->second;
     if (a->written >= 0 && !key.written.count(a->written)) return std::nullopt;
-    const std::optional<double> si = read_as(assignment_value(file, *a), key.kind);
+    std::optional<double> si = a->written < 0 ? drawn_si(key, a->drawn) : std::nullopt;
+    if (!si) si = read_as(assignment_value(file, *a), key.kind);
     if (!si) return std::nullopt;
     if (a->written < 0 && std::none_of(key.drawn.begin(), key.drawn.end(),
                                        [&](const std::pair<double, double>& d) { return d.first <= *si && *si <= d.second; }))

@@ -30,6 +30,10 @@ struct FastKey {
   /// The intervals of samples that draw it, SI, ends and middle probed: a drawn value inside
   /// reads as its ends do (the readers' checks of one number accept an interval).
   std::vector<std::pair<double, double>> drawn;
+  /// SI per unit of each unit its samples are drawn in, as the reader reads "1 <unit>": a drawn
+  /// value x of that unit reads as x times it (the reader's strtod of x's shortest round-trip
+  /// text is x), so the fast path multiplies instead of writing and parsing the text.
+  std::vector<std::pair<std::string, double>> unit_scales;
 };
 
 /// The base vehicle read once, and the keys the fast path sets.

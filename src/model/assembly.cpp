@@ -2,6 +2,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <set>
 #include <utility>
@@ -321,8 +322,8 @@ std::vector<int> free_coordinates(const Vehicle& v, const Layout& layout) {
 // coordinate takes no load from the body's weight, taken as spread uniformly along the beam
 // (∫ m' φ ds = 0), and its stiffness ω²m_b: the springs bend the body (it sags between
 // supports), which moves load between supports only where they are more than statics fixes.
-std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const std::vector<int>& free,
-                                 const std::vector<ElementMap>& maps, const Eigen::MatrixXd& K_springs) {
+// The generalised weights Q in full coordinates: each body's weight at its CG.
+Eigen::VectorXd generalised_weights(const Vehicle& v, const Layout& layout) {
   Eigen::VectorXd Q = Eigen::VectorXd::Zero(layout.size());
   for (int b = 0; b < layout.bodies; ++b) {
     const Body& body = v.bodies[b];
@@ -330,6 +331,12 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
     Q.segment(b * kMotionsPerBody, kMotionsPerBody) =
         model::point_map(body, body.centre_of_gravity).transpose() * weight;
   }
+  return Q;
+}
+
+std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const std::vector<int>& free,
+                                 const std::vector<ElementMap>& maps, const Eigen::MatrixXd& K_springs,
+                                 const Eigen::VectorXd& Q) {
   const int n = static_cast<int>(free.size());
   Eigen::MatrixXd Kf(n, n);
   Eigen::VectorXd Qf(n);
@@ -380,6 +387,48 @@ struct FullModel {
   std::vector<ElementMap> maps;  // one per element
 };
 
+// The coefficients of the springs and bending modes summed into K_springs, zeroed first: what
+// changes when only the elements' stiffnesses do (a study's variants on one base,
+// VariantAssembly). The same sums in the same order whichever path calls it.
+void add_stiffnesses(const Vehicle& vehicle, const Layout& layout, FullModel* f) {
+  f->K_springs.setZero();
+  // The bending mode by itself: modal mass m_b, stiffness ω²m_b (damping 2ζω m_b in
+  // add_dampings). Its mass is not coupled to the rigid motions: for a uniform beam the mode
+  // is orthogonal to them (∫ m' φ ds = ∫ m' (x − centre) φ ds = 0), which we take for the body.
+  for (size_t j = 0; j < layout.bent.size(); ++j) {
+    const model::BendingMode& mode = layout.modes[j];
+    const int q = layout.rigid() + static_cast<int>(j);
+    f->K_springs(q, q) = mode.omega * mode.omega * mode.modal_mass;
+  }
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Element& e = vehicle.elements[k];
+    const ElementMap& map = f->maps[k];
+    // A hanger's lateral stiffness needs the static load: it is added later.
+    const double lateral = e.hanger ? 0.0 : series_stiffness(e.lateral_stages);
+    add_element(map, {series_stiffness(e.longitudinal_stages), lateral, series_stiffness(e.vertical_stages)},
+                &f->K_springs);
+    add_rotational(map, e.rotational_stiffness, &f->K_springs);
+    add_bending_coupling(layout, map, series_stiffness(e.vertical_stages), &f->K_springs);
+  }
+}
+
+// The viscous dampers and the bending modes' damping summed into C, zeroed first (when C is
+// not empty: an assembly of the stiffness alone has none).
+void add_dampings(const Vehicle& vehicle, const Layout& layout, FullModel* f) {
+  if (f->C.size() == 0) return;
+  f->C.setZero();
+  for (size_t j = 0; j < layout.bent.size(); ++j) {
+    const model::BendingMode& mode = layout.modes[j];
+    const int q = layout.rigid() + static_cast<int>(j);
+    f->C(q, q) = 2.0 * mode.damping_ratio * mode.omega * mode.modal_mass;
+  }
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Element& e = vehicle.elements[k];
+    add_element(f->maps[k], {e.longitudinal_damping, e.lateral_damping, e.vertical_damping}, &f->C);
+    add_bending_coupling(layout, f->maps[k], e.vertical_damping, &f->C);
+  }
+}
+
 // Without `damping`, C is left empty (the stiffness alone: M and K as with it).
 FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string, int>& index, const Layout& layout,
                              bool damping) {
@@ -389,28 +438,14 @@ FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string,
   for (int b = 0; b < layout.bodies; ++b)
     f.M.block(b * kMotionsPerBody, b * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) =
         model::body_mass(vehicle.bodies[b]);
-  // The bending mode by itself: modal mass m_b, stiffness ω²m_b, damping 2ζω m_b. Its mass is
-  // not coupled to the rigid motions: for a uniform beam the mode is orthogonal to them
-  // (∫ m' φ ds = ∫ m' (x − centre) φ ds = 0), which we take for the body.
   for (size_t j = 0; j < layout.bent.size(); ++j) {
-    const model::BendingMode& mode = layout.modes[j];
     const int q = layout.rigid() + static_cast<int>(j);
-    f.M(q, q) = mode.modal_mass;
-    f.K_springs(q, q) = mode.omega * mode.omega * mode.modal_mass;
-    if (damping) f.C(q, q) = 2.0 * mode.damping_ratio * mode.omega * mode.modal_mass;
+    f.M(q, q) = layout.modes[j].modal_mass;
   }
-  for (const Element& e : vehicle.elements) {
-    f.maps.push_back(element_map(vehicle, layout, index, e));
-    // A hanger's lateral stiffness needs the static load: it is added later.
-    const double lateral = e.hanger ? 0.0 : series_stiffness(e.lateral_stages);
-    add_element(f.maps.back(),
-                {series_stiffness(e.longitudinal_stages), lateral, series_stiffness(e.vertical_stages)},
-                &f.K_springs);
-    add_rotational(f.maps.back(), e.rotational_stiffness, &f.K_springs);
-    if (damping) add_element(f.maps.back(), {e.longitudinal_damping, e.lateral_damping, e.vertical_damping}, &f.C);
-    add_bending_coupling(layout, f.maps.back(), series_stiffness(e.vertical_stages), &f.K_springs);
-    if (damping) add_bending_coupling(layout, f.maps.back(), e.vertical_damping, &f.C);
-  }
+  f.maps.reserve(vehicle.elements.size());
+  for (const Element& e : vehicle.elements) f.maps.push_back(element_map(vehicle, layout, index, e));
+  add_stiffnesses(vehicle, layout, &f);
+  add_dampings(vehicle, layout, &f);
   return f;
 }
 
@@ -418,17 +453,24 @@ FullModel springs_and_masses(const Vehicle& vehicle, const std::map<std::string,
 // coordinate gets none: its second-order terms (the slope φ' turning a load's lever, the
 // drop of a point off the neutral axis) are left out, as the rotation of the beam's sections
 // is (docs/ride.md, "Car-body bending").
-Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const Layout& layout, const std::vector<ElementMap>& maps,
-                                  const std::vector<double>& loads) {
+// The bodies' weights' part, summed first (what the springs' coefficients do not change).
+Eigen::MatrixXd weights_gravity_stiffness(const Vehicle& vehicle, const Layout& layout) {
   Eigen::MatrixXd K_gravity = Eigen::MatrixXd::Zero(layout.size(), layout.size());
+  for (int b = 0; b < layout.bodies; ++b) {
+    const Body& body = vehicle.bodies[b];
+    K_gravity.block(b * kMotionsPerBody, b * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody) +=
+        model::dead_load_stiffness(body, body.centre_of_gravity, Eigen::Vector3d(0.0, 0.0, -body.mass * vehicle.gravity));
+  }
+  return K_gravity;
+}
+
+// K_weights: weights_gravity_stiffness's, to which the elements' static loads are added.
+Eigen::MatrixXd gravity_stiffness(const Vehicle& vehicle, const std::vector<ElementMap>& maps,
+                                  const std::vector<double>& loads, const Eigen::MatrixXd& K_weights) {
+  Eigen::MatrixXd K_gravity = K_weights;
   auto block = [&](int body) {
     return K_gravity.block(body * kMotionsPerBody, body * kMotionsPerBody, kMotionsPerBody, kMotionsPerBody);
   };
-  for (int b = 0; b < layout.bodies; ++b) {
-    const Body& body = vehicle.bodies[b];
-    block(b) += model::dead_load_stiffness(body, body.centre_of_gravity,
-                                           Eigen::Vector3d(0.0, 0.0, -body.mass * vehicle.gravity));
-  }
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
     const Eigen::Vector3d on_upper(0.0, 0.0, loads[k]);
@@ -458,11 +500,17 @@ std::vector<int> kept_coordinates(const Vehicle& vehicle, const Layout& layout, 
   return keep;
 }
 
-Eigen::MatrixXd pick(const Eigen::MatrixXd& A, const std::vector<int>& keep) {
+// A's rows and columns `keep` into *out (its storage reused when it has the size already).
+void pick_into(const Eigen::MatrixXd& A, const std::vector<int>& keep, Eigen::MatrixXd* out) {
   const int n = static_cast<int>(keep.size());
-  Eigen::MatrixXd out(n, n);
+  out->resize(n, n);
   for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) out(i, j) = A(keep[i], keep[j]);
+    for (int j = 0; j < n; ++j) (*out)(i, j) = A(keep[i], keep[j]);
+}
+
+Eigen::MatrixXd pick(const Eigen::MatrixXd& A, const std::vector<int>& keep) {
+  Eigen::MatrixXd out;
+  pick_into(A, keep, &out);
   return out;
 }
 
@@ -493,10 +541,12 @@ bool pulls_only_along(const Element& e) {
 // An element standing on a wheelset takes the rail's longitudinal and vertical displacement as
 // a track element does (the wheelset's held motions follow the rail); the lateral displacement
 // reaches it through the contact, which M, C and K do not hold, so that column stays zero.
-std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const Layout& layout, const std::vector<ElementMap>& maps,
-                                     const std::vector<double>& loads, const std::vector<int>& keep) {
+// Into *inputs, its entries' storage reused where they have their sizes already (a study's
+// worker assembles every variant of one base into the same system).
+void fill_track_inputs(const Vehicle& vehicle, const Layout& layout, const std::vector<ElementMap>& maps,
+                       const std::vector<double>& loads, const std::vector<int>& keep, std::vector<TrackInput>* inputs) {
   const int n = static_cast<int>(keep.size());
-  std::vector<TrackInput> inputs;
+  size_t count = 0;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
     const bool wheelset = model::stands_on_wheelset(vehicle, e);
@@ -505,11 +555,12 @@ std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const Layout& layou
                                     wheelset ? 0.0 : model::lateral_stiffness(e, loads[k]),
                                     series_stiffness(e.vertical_stages));
     const Eigen::Vector3d damping(e.longitudinal_damping, wheelset ? 0.0 : e.lateral_damping, e.vertical_damping);
-    TrackInput input;
+    if (inputs->size() <= count) inputs->emplace_back();
+    TrackInput& input = (*inputs)[count++];
     input.element = static_cast<int>(k);
     input.point = e.point;
-    input.load_per_displacement = Eigen::MatrixXd::Zero(n, 3);
-    input.load_per_velocity = Eigen::MatrixXd::Zero(n, 3);
+    input.load_per_displacement.setZero(n, 3);
+    input.load_per_velocity.setZero(n, 3);
     for (int i = 0; i < n; ++i) {
       if (layout.body_of(keep[i]) != maps[k].upper) continue;
       const Eigen::Vector3d column = maps[k].column(layout, true, keep[i]);
@@ -518,9 +569,8 @@ std::vector<TrackInput> track_inputs(const Vehicle& vehicle, const Layout& layou
         input.load_per_velocity(i, d) = column(d) * damping(d);
       }
     }
-    inputs.push_back(std::move(input));
   }
-  return inputs;
+  inputs->resize(count);
 }
 
 // The stretch of each series damper along its direction, per kept coordinate, from the same
@@ -554,25 +604,35 @@ std::vector<SeriesDamperRow> series_damper_rows(const Vehicle& vehicle, const La
 struct FullAssembly {
   Layout layout;
   std::vector<int> free;  // free_coordinates, found once for the statics and every set kept
+  Eigen::VectorXd weights;    // generalised_weights
+  Eigen::MatrixXd K_weights;  // weights_gravity_stiffness
   FullModel full;
   std::vector<double> loads;
   Eigen::MatrixXd K, K_gravity;
 };
 
+// What follows the springs and masses: the static loads, the hangers' lateral stiffness and the
+// dead loads, from a.full (its K_springs summed).
+void add_static_loads(const Vehicle& vehicle, FullAssembly* a) {
+  a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
+  a->K = a->full.K_springs;
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Element& e = vehicle.elements[k];
+    if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
+  }
+  a->K_gravity = gravity_stiffness(vehicle, a->full.maps, a->loads, a->K_weights);
+  a->K += a->K_gravity;
+}
+
 FullAssembly assemble_full(const Vehicle& vehicle, bool damping) {
   std::map<std::string, int> index;
   check_vehicle(vehicle, &index);
-  FullAssembly a{Layout(vehicle), {}, {}, {}, {}, {}};
+  FullAssembly a{Layout(vehicle), {}, {}, {}, {}, {}, {}, {}};
   a.free = free_coordinates(vehicle, a.layout);
+  a.weights = generalised_weights(vehicle, a.layout);
+  a.K_weights = weights_gravity_stiffness(vehicle, a.layout);
   a.full = springs_and_masses(vehicle, index, a.layout, damping);
-  a.loads = static_loads(vehicle, a.layout, a.free, a.full.maps, a.full.K_springs);
-  a.K = a.full.K_springs;
-  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
-    const Element& e = vehicle.elements[k];
-    if (e.hanger) add_element(a.full.maps[k], {0.0, model::lateral_stiffness(e, a.loads[k]), 0.0}, &a.K);
-  }
-  a.K_gravity = gravity_stiffness(vehicle, a.layout, a.full.maps, a.loads);
-  a.K += a.K_gravity;
+  add_static_loads(vehicle, &a);
   return a;
 }
 
@@ -591,7 +651,7 @@ LinearSystem system_of(const Vehicle& vehicle, const FullAssembly& a, DofSet set
   system.gravity_stiffness = pick(a.K_gravity, keep);
   system.element_loads = a.loads;
   system.element_vertical_map = element_vertical_map(a.layout, a.full.maps, keep);
-  system.track_inputs = track_inputs(vehicle, a.layout, a.full.maps, a.loads, keep);
+  fill_track_inputs(vehicle, a.layout, a.full.maps, a.loads, keep, &system.track_inputs);
   system.series_dampers = series_damper_rows(vehicle, a.layout, a.full.maps, keep);
   if (owned)
     system.vehicle = std::move(*owned);
@@ -619,6 +679,168 @@ LinearSystem model::assemble_stiffness(const Vehicle& vehicle, DofSet set) {
 model::SystemAndStiffness model::assemble_with_stiffness(const Vehicle& vehicle, DofSet set, DofSet stiffness_set) {
   const FullAssembly a = assemble_full(vehicle, true);
   return {system_of(vehicle, a, set), stiffness_of(vehicle, a, stiffness_set)};
+}
+
+namespace {
+
+// The geometry a VariantAssembly keeps, compared bit for bit (a -0.0 for a 0.0 is another
+// vehicle: its products may carry the sign).
+bool bitwise_equal(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool bitwise_equal(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return bitwise_equal(a.x(), b.x()) && bitwise_equal(a.y(), b.y()) && bitwise_equal(a.z(), b.z());
+}
+bool bitwise_equal(const std::optional<double>& a, const std::optional<double>& b) {
+  return a.has_value() == b.has_value() && (!a || bitwise_equal(*a, *b));
+}
+
+bool same_bending(const std::optional<BodyBending>& a, const std::optional<BodyBending>& b) {
+  if (a.has_value() != b.has_value()) return false;
+  if (!a) return true;
+  if (!bitwise_equal(a->length, b->length) || !bitwise_equal(a->centre, b->centre) ||
+      !bitwise_equal(a->damping_ratio, b->damping_ratio))
+    return false;
+  if (a->beam.has_value() != b->beam.has_value() || a->mode.has_value() != b->mode.has_value()) return false;
+  if (a->beam && (!bitwise_equal(a->beam->bending_stiffness, b->beam->bending_stiffness) ||
+                  !bitwise_equal(a->beam->mass_per_length, b->beam->mass_per_length)))
+    return false;
+  return !a->mode || (bitwise_equal(a->mode->frequency, b->mode->frequency) &&
+                      bitwise_equal(a->mode->modal_mass, b->mode->modal_mass));
+}
+
+bool same_stage_shape(const std::vector<SpringStage>& a, const std::vector<SpringStage>& b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i)
+    if (a[i].count != b[i].count) return false;
+  return true;
+}
+
+// Whether `v` differs from `kept` at most in what add_stiffnesses, add_dampings, the static
+// loads and the track inputs read afresh: its spring stages' stiffnesses, rotational
+// stiffnesses and viscous dampings (and what the assembly does not read: names of stages, friction, curves, the
+// wheel–rail contact). Everything the kept checks, coordinates, point maps, M and DOF labels
+// were made from is compared. A field added to Body, Element or Vehicle that the assembly
+// reads must be compared here (test VariantAssembly.ComparesEveryFieldTheAssemblyReads).
+bool same_but_coefficients(const Vehicle& kept, const Vehicle& v) {
+  if (!bitwise_equal(kept.gravity, v.gravity) || kept.bodies.size() != v.bodies.size() ||
+      kept.elements.size() != v.elements.size() || kept.wheelsets.size() != v.wheelsets.size())
+    return false;
+  for (size_t b = 0; b < v.bodies.size(); ++b) {
+    const Body &x = kept.bodies[b], &y = v.bodies[b];
+    if (x.name != y.name || !bitwise_equal(x.mass, y.mass) || !bitwise_equal(x.inertia, y.inertia) ||
+        !bitwise_equal(x.centre_of_gravity, y.centre_of_gravity) ||
+        !bitwise_equal(x.reference_point, y.reference_point) || x.held != y.held ||
+        x.longitudinal_free != y.longitudinal_free || !same_bending(x.bending, y.bending))
+      return false;
+  }
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const Element &x = kept.elements[k], &y = v.elements[k];
+    if (x.name != y.name || x.lower != y.lower || x.upper != y.upper || !bitwise_equal(x.point, y.point) ||
+        !same_stage_shape(x.vertical_stages, y.vertical_stages) ||
+        !same_stage_shape(x.lateral_stages, y.lateral_stages) ||
+        !same_stage_shape(x.longitudinal_stages, y.longitudinal_stages) ||
+        x.hanger.has_value() != y.hanger.has_value() || x.series_dampers.size() != y.series_dampers.size())
+      return false;
+    if (x.hanger && (!bitwise_equal(x.hanger->length, y.hanger->length) ||
+                     !bitwise_equal(x.hanger->inclination, y.hanger->inclination)))
+      return false;
+    for (size_t d = 0; d < x.series_dampers.size(); ++d) {
+      const SeriesDamper &p = x.series_dampers[d], &q = y.series_dampers[d];
+      if (p.direction != q.direction || !bitwise_equal(p.damping, q.damping) ||
+          !bitwise_equal(p.stiffness, q.stiffness))
+        return false;
+    }
+  }
+  for (size_t w = 0; w < v.wheelsets.size(); ++w)
+    if (kept.wheelsets[w].body != v.wheelsets[w].body ||
+        !bitwise_equal(kept.wheelsets[w].spin_inertia, v.wheelsets[w].spin_inertia))
+      return false;
+  return true;
+}
+
+// check_vehicle's checks of the coefficients same_but_coefficients lets differ: a vehicle that
+// fails one is assembled in full, which throws check_vehicle's message.
+bool coefficients_valid(const Vehicle& v) {
+  for (const Element& e : v.elements) {
+    for (const auto* stages : {&e.vertical_stages, &e.lateral_stages, &e.longitudinal_stages})
+      for (const auto& s : *stages)
+        if (!(s.stiffness > 0.0) || !std::isfinite(s.stiffness)) return false;
+    if (!(e.longitudinal_damping >= 0.0) || !std::isfinite(e.longitudinal_damping)) return false;
+    if (!(e.rotational_stiffness.array() >= 0.0).all() || !e.rotational_stiffness.allFinite()) return false;
+  }
+  return true;
+}
+
+// The coefficients add_dampings reads (with the bending modes', part of the kept geometry).
+std::vector<double> dampings_of(const Vehicle& v) {
+  std::vector<double> d;
+  d.reserve(3 * v.elements.size());
+  for (const Element& e : v.elements)
+    d.insert(d.end(), {e.longitudinal_damping, e.lateral_damping, e.vertical_damping});
+  return d;
+}
+
+bool same_dampings(const std::vector<double>& damped, const Vehicle& v) {
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const Element& e = v.elements[k];
+    if (!bitwise_equal(damped[3 * k], e.longitudinal_damping) || !bitwise_equal(damped[3 * k + 1], e.lateral_damping) ||
+        !bitwise_equal(damped[3 * k + 2], e.vertical_damping))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+struct model::VariantAssembly::Base {
+  Vehicle kept;                // the geometry the rest was made from (its coefficients are not read)
+  std::vector<double> damped;  // the viscous dampings C was summed from (dampings_of)
+  FullAssembly a;              // layout, free coordinates, point maps and M kept; the rest each variant's
+  DofSet set, stiffness_set;
+  std::vector<int> keep, stiffness_keep;
+  std::vector<Dof> dofs, stiffness_dofs;
+  Eigen::MatrixXd mass, element_vertical_map;  // picked for `set`
+};
+
+model::VariantAssembly::VariantAssembly() = default;
+model::VariantAssembly::~VariantAssembly() = default;
+
+void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stiffness_set, LinearSystem* system,
+                                      LinearSystem* stiffness) {
+  reused_ = base_ && base_->set == set && base_->stiffness_set == stiffness_set &&
+            same_but_coefficients(base_->kept, vehicle) && coefficients_valid(vehicle);
+  if (reused_) {
+    add_stiffnesses(vehicle, base_->a.layout, &base_->a.full);
+    if (!same_dampings(base_->damped, vehicle)) {
+      add_dampings(vehicle, base_->a.layout, &base_->a.full);
+      base_->damped = dampings_of(vehicle);
+    }
+    add_static_loads(vehicle, &base_->a);
+  } else {
+    FullAssembly a = assemble_full(vehicle, true);  // throws before anything is kept
+    auto fresh = std::unique_ptr<Base>(
+        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}});
+    const FullAssembly& f = fresh->a;
+    fresh->keep = kept_coordinates(vehicle, f.layout, f.free, set, &fresh->dofs);
+    fresh->stiffness_keep = kept_coordinates(vehicle, f.layout, f.free, stiffness_set, &fresh->stiffness_dofs);
+    pick_into(f.full.M, fresh->keep, &fresh->mass);
+    fresh->element_vertical_map = element_vertical_map(f.layout, f.full.maps, fresh->keep);
+    base_ = std::move(fresh);
+  }
+  const Base& b = *base_;
+  const FullAssembly& a = b.a;
+  stiffness->dofs = b.stiffness_dofs;
+  pick_into(a.K, b.stiffness_keep, &stiffness->stiffness);
+  pick_into(a.K_gravity, b.stiffness_keep, &stiffness->gravity_stiffness);
+  system->dofs = b.dofs;
+  system->mass = b.mass;
+  pick_into(a.full.C, b.keep, &system->damping);
+  pick_into(a.K, b.keep, &system->stiffness);
+  pick_into(a.K_gravity, b.keep, &system->gravity_stiffness);
+  system->element_loads = a.loads;
+  system->element_vertical_map = b.element_vertical_map;
+  fill_track_inputs(vehicle, a.layout, a.full.maps, a.loads, b.keep, &system->track_inputs);
+  system->series_dampers = series_damper_rows(vehicle, a.layout, a.full.maps, b.keep);
+  system->vehicle = std::move(vehicle);
 }
 
 model::SystemAndStiffness model::assemble_with_stiffness(Vehicle&& vehicle, DofSet set, DofSet stiffness_set) {

@@ -337,12 +337,25 @@ void describe_failure(const Vehicle& vehicle, DofSet dofs, const std::string& wh
     }
 }
 
+// Gives the workspace its system back when the evaluation ends (its storage serves the next
+// variant), however it ends.
+struct HandBack {
+  LinearSystem* from;
+  study::Workspace* to;
+  ~HandBack() {
+    if (to) to->system = std::move(*from);
+  }
+};
+
 // evaluate_variant; `owned`, when given, is `variant` itself, which the caller gives up: its
 // scene moves into the critical-speed study and its vehicle into the study's system instead of
 // being copied there (a copy of each a variant fewer: their names, lists and the scene's key
-// places are allocations), and what follows reads them there.
+// places are allocations), and what follows reads them there. With a `workspace` the worker's
+// VariantAssembly assembles it into the workspace's systems: the same matrices, bit for bit,
+// from the base it keeps.
 VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned, int index, const DeflectionRule& rule,
-                               const std::optional<HuntingOptions>& hunting, bool ride_rms_only) {
+                               const std::optional<HuntingOptions>& hunting, bool ride_rms_only,
+                               study::Workspace* workspace) {
   VariantResult r;
   r.index = index;
   r.name = variant.name;
@@ -363,11 +376,19 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
     // One assembly and one modal solve serve everything: the study's own, which assembles the
     // lateral stiffness of the metacentric height with its system.
     CriticalSpeedStudy study;
-    LinearSystem lateral;
+    const HandBack hand_back{&study.system, workspace};
+    LinearSystem own_lateral;
+    LinearSystem& lateral = workspace ? workspace->lateral : own_lateral;
     bool vehicle_moved = false;  // into study.system (owned only, once assembled)
     const DofSet dofs = variant.scene.dofs;
     try {
       const auto assembled = [&] {
+        if (workspace) {  // the variant's own vehicle moved in, or a copy (as assemble copies it)
+          workspace->assembly.assemble(owned ? std::move(owned->vehicle) : Vehicle(variant.vehicle), dofs,
+                                       DofSet::lateral, &workspace->system, &lateral);
+          vehicle_moved = owned != nullptr;
+          return std::move(workspace->system);
+        }
         model::SystemAndStiffness both =
             owned ? model::assemble_with_stiffness(std::move(owned->vehicle), dofs, DofSet::lateral)
                   : model::assemble_with_stiffness(variant.vehicle, dofs, DofSet::lateral);
@@ -416,12 +437,17 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
 
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
                                const std::optional<HuntingOptions>& hunting, bool ride_rms_only) {
-  return evaluate_in_full(variant, nullptr, index, rule, hunting, ride_rms_only);
+  return evaluate_in_full(variant, nullptr, index, rule, hunting, ride_rms_only, nullptr);
 }
 
-VariantResult study::evaluate_owned_variant(StudyVariant&& variant, int index, const DeflectionRule& rule,
-                                            const std::optional<HuntingOptions>& hunting, bool ride_rms_only) {
-  return evaluate_in_full(variant, &variant, index, rule, hunting, ride_rms_only);
+VariantResult study::evaluate_in_workspace(const StudyVariant& variant, int index, const VariantSettings& settings,
+                                           Workspace* workspace) {
+  return evaluate_in_full(variant, nullptr, index, settings.rule, settings.hunting, settings.ride_rms_only, workspace);
+}
+
+VariantResult study::evaluate_owned_variant(StudyVariant&& variant, int index, const VariantSettings& settings,
+                                            Workspace* workspace) {
+  return evaluate_in_full(variant, &variant, index, settings.rule, settings.hunting, settings.ride_rms_only, workspace);
 }
 
 }  // namespace railmodal

@@ -55,8 +55,7 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
       indices.push_back(i);
     }
   prepare(indices.size());
-  const std::optional<HuntingOptions> hunting = hunting_options_of(study);
-  const bool rms_only = ride_rms_only(study);
+  const VariantSettings settings{study.deflection_rule, hunting_options_of(study), ride_rms_only(study)};
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min(threads, static_cast<int>(indices.size())));
 
@@ -71,6 +70,7 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
   size_t error_at = indices.size();
   std::exception_ptr error;
   auto work = [&] {
+    Workspace workspace;  // this thread's: its base assembly and systems, kept between variants
     while (!stop) {
       const size_t k = next++;  // a taken index is always finished: see error_at
       if (k >= indices.size()) break;
@@ -93,8 +93,8 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
         // A variant read here is this thread's own: given up, it is moved, not copied, into the
         // evaluation (its name and parameters stay).
         result = variant == &read
-                     ? evaluate_owned_variant(std::move(read), index, study.deflection_rule, hunting, rms_only)
-                     : evaluate_variant(*variant, index, study.deflection_rule, hunting, rms_only);
+                     ? evaluate_owned_variant(std::move(read), index, settings, &workspace)
+                     : evaluate_in_workspace(*variant, index, settings, &workspace);
       } catch (const std::exception& e) {  // evaluate_variant keeps design failures; this is a bug
         result = VariantResult{};
         result.index = index;

@@ -7,6 +7,8 @@
 #include <functional>
 #include <optional>
 
+#include "model/assembly.hpp"
+#include "railmodal/linear_system.hpp"
 #include "railmodal/study.hpp"
 
 namespace railmodal::study {
@@ -22,11 +24,32 @@ int evaluate_each(const Study& study, const EvaluationOptions& options,
                   const std::function<void(size_t shard_size)>& prepare,
                   const std::function<void(size_t position, VariantResult&& result)>& sink);
 
+/// What every variant of a study is evaluated with (evaluate_each works them out once).
+struct VariantSettings {
+  DeflectionRule rule;
+  std::optional<HuntingOptions> hunting;
+  bool ride_rms_only = false;
+};
+
+/// What a worker keeps from one variant to the next (issue 19, item 2): the assembly of the
+/// base its variants differ from by coefficients (model::VariantAssembly), and the two systems
+/// each variant is assembled into (the swept one, and the lateral stiffness of the
+/// metacentric height), handed back after each evaluation so that their storage is reused.
+struct Workspace {
+  model::VariantAssembly assembly;
+  LinearSystem system, lateral;
+};
+
 /// evaluate_variant for a variant the caller gives up (a worker's, read for this evaluation):
-/// its vehicle and scene are moved into the evaluation instead of copied, the result is the
-/// same. `variant` keeps its name and parameters; its vehicle and scene are left valid but
-/// unspecified.
-VariantResult evaluate_owned_variant(StudyVariant&& variant, int index, const DeflectionRule& rule,
-                                     const std::optional<HuntingOptions>& hunting, bool ride_rms_only);
+/// its vehicle and scene are moved into the evaluation instead of copied, and it is assembled
+/// by the worker's `workspace`; the result is evaluate_variant's, bit for bit. `variant` keeps
+/// its name and parameters; its vehicle and scene are left valid but unspecified.
+VariantResult evaluate_owned_variant(StudyVariant&& variant, int index, const VariantSettings& settings,
+                                     Workspace* workspace);
+
+/// The same for a variant the caller keeps (read beforehand): its vehicle is copied into the
+/// workspace's system, as evaluate_variant copies it into its own.
+VariantResult evaluate_in_workspace(const StudyVariant& variant, int index, const VariantSettings& settings,
+                                    Workspace* workspace);
 
 }  // namespace railmodal::study

@@ -14,6 +14,9 @@
 //  - modes: solve_modes() of that system (names and kinds included);
 //  - critical-speed study: study_critical_speeds() (assembly, modes, critical speeds, curves, peaks);
 //  - evaluate: evaluate_variant() (that study and the summaries a study ranks and writes);
+//  - read + evaluate in a worker: evaluate_study() with the variants read in the workers, one
+//    thread (what `railmodal compare` does: each variant read from the parsed files and
+//    evaluated on the worker's kept base, its coefficients written into the base's assembly);
 // and, for all N together, rank_variants() per variant. Medians over the variants (thread CPU
 // time, so that other jobs on a shared machine do not count), with the 10th and 90th percentiles.
 //
@@ -110,6 +113,23 @@ int main(int argc, char** argv) {
   const std::vector<double> evaluate = per_variant(variants, [&](const StudyVariant& v) {
     results.push_back(evaluate_variant(v, i++, study.deflection_rule, hunting_options_of(study), ride_rms_only(study)));
   });
+  // The workers' path: per variant, the thread time between two progress reports (one
+  // thread: the progress is reported on the evaluating thread, after each variant).
+  std::vector<double> in_worker;
+  {
+    EvaluationOptions options;
+    options.threads = 1;
+    options.read_in_workers = true;
+    double last = thread_seconds();
+    options.progress = [&](double) {
+      const double now = thread_seconds();
+      in_worker.push_back(now - last);
+      last = now;
+    };
+    Study first_n = study;
+    first_n.variants.resize(n);
+    sink += evaluate_study(first_n, options).size();
+  }
   // Ranking needs every variant of the study: rank a study of the first n.
   Study first = study;
   first.variants.resize(n);
@@ -134,6 +154,7 @@ int main(int argc, char** argv) {
   line("critical-speed study", spread_us(critical));
   for (const auto& [stage, seconds] : inner) line(("  of which " + stage + " (wall)").c_str(), spread_us(seconds));
   line("evaluate (evaluate_variant)", spread_us(evaluate));
+  line("read + evaluate in a worker", spread_us(in_worker));
   std::printf("%-34s %10.2f %8s %8s %8.2f\n", "rank (rank_variants / n)", 1e6 * rank_seconds, "", "", 1e6 * rank_seconds / floor);
   std::printf("best %s\n", ranked.variants.front().result.name.c_str());
   return 0;
