@@ -30,9 +30,9 @@ CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo 
   -DRAILMODAL_UNITY_TESTS=ON -DRAILMODAL_UNITY_LIBRARY=ON -DRAILMODAL_HEADER_EXAMPLES=OFF >/dev/null
 echo "CI stage: sanitized build (clang, with the fuzzer)"
 time cmake --build build-asan -j"$jobs"
-# The three slowest golden analyses run here in one format, or none, rather than in five (their
-# writers run under the sanitizers in other tests; tests/golden/CMakeLists.txt): the release
-# build compares all five.
+# Each slow analysis runs here once, not once a format or a test: the golden, cli and GoogleTest
+# lists of what the sanitized build leaves out say which other sanitized test runs its code
+# (tests/golden/CMakeLists.txt, tests/cli/, tests/CMakeLists.txt); the release build runs them all.
 echo "CI stage: sanitized ctest"
 time ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-asan --output-on-failure --no-tests=error -j"$jobs" -E package_consumer

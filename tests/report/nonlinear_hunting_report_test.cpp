@@ -1,6 +1,7 @@
 // The nonlinear-hunting report on results built by hand: the critical speed and amplitude, the
 // linear critical speed beside them, both ramps, the holds, the bifurcation curve and the effects
-// in every format; verdicts without a critical speed write words or null, never inf or NaN.
+// in every format; verdicts without a critical speed write words or null, never inf or NaN; a
+// continuation branch, when given, in every format.
 #include "railmodal/nonlinear_hunting_report.hpp"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+
+#include "railmodal/limit_cycles.hpp"
 
 namespace railmodal {
 namespace {
@@ -54,10 +57,30 @@ NonlinearHuntingOptions hand_built_both_effects() {
 }
 
 std::string nonlinear_report_text(const NonlinearHuntingResult& r, const NonlinearHuntingOptions& o, OutputFormat f,
-                    std::optional<double> linear = 66.318144) {
+                    std::optional<double> linear = 66.318144, const LimitCycleBranch* branch = nullptr) {
   std::ostringstream out;
-  write_nonlinear_hunting(out, r, o, f, "hand-built wheelset", Provenance{}, linear);
+  write_nonlinear_hunting(out, r, o, f, "hand-built wheelset", Provenance{}, linear, branch);
   return out.str();
+}
+
+// A subcritical branch from the Hopf point at 66.318 m/s: two unstable orbits, the fold at
+// 66.02 m/s and 6.5 mm, two stable orbits above it (the shape of the bundled scene's branch).
+LimitCycleBranch hand_built_subcritical_branch() {
+  LimitCycleBranch b;
+  b.kind = LimitCycleBranchKind::subcritical;
+  b.hopf_speed = 66.318144;
+  b.hopf_frequency = 2.41;
+  b.points = {{66.30, 0.0001, 0.415, false, 1.02, 1e-12},
+              {66.10, 0.0030, 0.416, false, 1.3, 2e-11},
+              {66.05, 0.0080, 0.420, true, 0.71, 5e-12},
+              {66.40, 0.0100, 0.430, true, 0.52, 1e-11}};
+  b.fold = LimitCycleBranchPoint{66.02, 0.0065, 0.418, false, 1.0, 3e-12};
+  b.folds = {*b.fold};
+  b.end = ContinuationEnd::amplitude_reached;
+  b.flows = 321;
+  b.summary.checks.push_back({"largest Newton residual of the branch", 2e-11,
+                              std::numeric_limits<double>::infinity(), true});
+  return b;
 }
 
 bool nonlinear_report_has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
@@ -130,6 +153,35 @@ TEST(NonlinearHuntingReport, HtmlHasTheBifurcationPlot) {
   EXPECT_TRUE(nonlinear_report_has(html, "critical speed (Hopf point)")) << html;
   EXPECT_TRUE(nonlinear_report_has(html, "clearance")) << html;
   EXPECT_TRUE(nonlinear_report_has(html, "</html>")) << html;
+}
+
+// The continuation's part of every format, on a hand-built branch (cli.hunting_continuation_json
+// writes the bundled scene's; this is the sanitized build's run of the other four writers' part).
+TEST(NonlinearHuntingReport, ContinuationInEveryFormat) {
+  const LimitCycleBranch b = hand_built_subcritical_branch();
+  const NonlinearHuntingResult r = hand_built_converged_result();
+  const NonlinearHuntingOptions o = hand_built_both_effects();
+  const std::string table = nonlinear_report_text(r, o, OutputFormat::table, 66.318144, &b);
+  EXPECT_TRUE(nonlinear_report_has(table, "continuation of the limit cycles")) << table;
+  EXPECT_TRUE(nonlinear_report_has(table, "subcritical: the branch leaves the Hopf point")) << table;
+  EXPECT_TRUE(nonlinear_report_has(table, "amplitude_reached")) << table;
+  const std::string md = nonlinear_report_text(r, o, OutputFormat::markdown, 66.318144, &b);
+  EXPECT_TRUE(nonlinear_report_has(md, "## Continuation of the limit cycles")) << md;
+  const std::string html = nonlinear_report_text(r, o, OutputFormat::html, 66.318144, &b);
+  EXPECT_TRUE(nonlinear_report_has(html, "<h2>Continuation of the limit cycles</h2>")) << html;
+  EXPECT_TRUE(nonlinear_report_has(html, "continuation: stable limit cycles")) << html;
+  EXPECT_TRUE(nonlinear_report_has(html, "</html>")) << html;
+  // CSV: one row of ramp "continuation" an orbit, after both ramps' five half cycles each.
+  const std::string csv = nonlinear_report_text(r, o, OutputFormat::csv, 66.318144, &b);
+  EXPECT_TRUE(nonlinear_report_has(csv, ",stable,period [s],largest_multiplier,newton_residual\n")) << csv;
+  size_t rows = 0;
+  for (size_t at = csv.find("\ncontinuation,"); at != std::string::npos; at = csv.find("\ncontinuation,", at + 1)) ++rows;
+  EXPECT_EQ(rows, b.points.size()) << csv;
+  const nlohmann::json j = nlohmann::json::parse(nonlinear_report_text(r, o, OutputFormat::json, 66.318144, &b));
+  EXPECT_EQ(j["continuation"]["kind"], "subcritical");
+  EXPECT_EQ(j["continuation"]["points"].size(), b.points.size());
+  EXPECT_DOUBLE_EQ(j["continuation"]["fold"]["speed_m_s"].get<double>(), 66.02);
+  EXPECT_EQ(j["continuation"]["end"], "amplitude_reached");
 }
 
 }  // namespace
