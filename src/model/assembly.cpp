@@ -380,6 +380,55 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
   return loads;
 }
 
+// The static loads of static_loads where every direction of K_springs without stiffness is a
+// coordinate direction: free coordinates whose rows are exactly zero (a motion no spring
+// touches; the benchmark study's resort car has one, and every variant's Cholesky failed on
+// it). The minimum-norm solution of K q = Q is then q = 0 on them and the Cholesky solution of
+// the remaining block (the pseudo-inverse of a matrix with zero rows and columns and a positive
+// definite rest), so one smaller Cholesky replaces a failed Cholesky and the complete
+// orthogonal decomposition. It rounds otherwise than the decomposition (a relative change of
+// the order of the unit round-off times the block's condition number), so only a study's
+// workers take it (VariantAssembly), for every variant whatever the worker's base (which rows
+// are zero is found from the variant itself: the results do not depend on the thread count);
+// the general assemble keeps static_loads. Returns false, leaving *loads, where the route does
+// not apply (no zero row, a weight on one, a block not positive definite or not solved to
+// 1e-10): static_loads then decides, with its message.
+bool static_loads_on_sprung(const Vehicle& v, const Layout& layout, const std::vector<int>& free,
+                            const std::vector<ElementMap>& maps, const Eigen::MatrixXd& K_springs,
+                            const Eigen::VectorXd& Q, std::vector<double>* loads) {
+  const int n = static_cast<int>(free.size());
+  thread_local std::vector<int> sprung;
+  sprung.clear();
+  for (int i = 0; i < n; ++i) {
+    bool zero = true;
+    for (int j = 0; j < n && zero; ++j) zero = K_springs(free[i], free[j]) == 0.0;
+    if (!zero)
+      sprung.push_back(free[i]);
+    else if (Q(free[i]) != 0.0)
+      return false;
+  }
+  if (static_cast<int>(sprung.size()) == n) return false;
+  const int m = static_cast<int>(sprung.size());
+  Eigen::MatrixXd Ks(m, m);
+  Eigen::VectorXd Qs(m);
+  for (int i = 0; i < m; ++i) {
+    Qs(i) = Q(sprung[i]);
+    for (int j = 0; j < m; ++j) Ks(i, j) = K_springs(sprung[i], sprung[j]);
+  }
+  const Eigen::LLT<Eigen::MatrixXd> llt(Ks);
+  if (llt.info() != Eigen::Success) return false;
+  const Eigen::VectorXd qs = llt.solve(Qs);
+  if (!qs.allFinite() || !((Ks * qs - Qs).norm() <= 1e-10 * Qs.norm())) return false;
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(layout.size());
+  for (int i = 0; i < m; ++i) q(sprung[i]) = qs(i);
+  loads->resize(v.elements.size());
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const double kz = series_stiffness(v.elements[k].vertical_stages);
+    (*loads)[k] = -kz * vertical_stretch(layout, maps[k], q);  // as static_loads
+  }
+  return true;
+}
+
 // The matrices in full coordinates before the static loads are known: M, C, and K of the
 // springs (hangers' lateral stiffness left out), with each element's point map.
 struct FullModel {
@@ -613,8 +662,12 @@ struct FullAssembly {
 
 // What follows the springs and masses: the static loads, the hangers' lateral stiffness and the
 // dead loads, from a.full (its K_springs summed).
-void add_static_loads(const Vehicle& vehicle, FullAssembly* a) {
-  a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
+// `workers`: static_loads_on_sprung finds the loads where it applies (a study's workers only:
+// see there).
+void add_static_loads(const Vehicle& vehicle, FullAssembly* a, bool workers = false) {
+  if (!workers ||
+      !static_loads_on_sprung(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights, &a->loads))
+    a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
   a->K = a->full.K_springs;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Element& e = vehicle.elements[k];
@@ -624,7 +677,8 @@ void add_static_loads(const Vehicle& vehicle, FullAssembly* a) {
   a->K += a->K_gravity;
 }
 
-FullAssembly assemble_full(const Vehicle& vehicle, bool damping) {
+// `workers`: as add_static_loads's.
+FullAssembly assemble_full(const Vehicle& vehicle, bool damping, bool workers = false) {
   std::map<std::string, int> index;
   check_vehicle(vehicle, &index);
   FullAssembly a{Layout(vehicle), {}, {}, {}, {}, {}, {}, {}};
@@ -632,7 +686,7 @@ FullAssembly assemble_full(const Vehicle& vehicle, bool damping) {
   a.weights = generalised_weights(vehicle, a.layout);
   a.K_weights = weights_gravity_stiffness(vehicle, a.layout);
   a.full = springs_and_masses(vehicle, index, a.layout, damping);
-  add_static_loads(vehicle, &a);
+  add_static_loads(vehicle, &a, workers);
   return a;
 }
 
@@ -814,9 +868,9 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
       add_dampings(vehicle, base_->a.layout, &base_->a.full);
       base_->damped = dampings_of(vehicle);
     }
-    add_static_loads(vehicle, &base_->a);
+    add_static_loads(vehicle, &base_->a, true);
   } else {
-    FullAssembly a = assemble_full(vehicle, true);  // throws before anything is kept
+    FullAssembly a = assemble_full(vehicle, true, true);  // throws before anything is kept
     auto fresh = std::unique_ptr<Base>(
         new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}});
     const FullAssembly& f = fresh->a;
