@@ -660,11 +660,47 @@ struct FullAssembly {
   Eigen::MatrixXd K, K_gravity;
 };
 
+// Each element's dead-load stiffness per unit of its static load, on its upper body and (zero
+// where it stands on the ground) its lower one: what a study's workers keep per base, since
+// the points and bodies do not change with the springs' coefficients.
+struct DeadLoadPatterns {
+  std::vector<model::BodyMatrix> upper, lower;
+};
+
+DeadLoadPatterns dead_load_patterns(const Vehicle& vehicle, const std::vector<ElementMap>& maps) {
+  DeadLoadPatterns p;
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Eigen::Vector3d unit(0.0, 0.0, 1.0);
+    const Eigen::Vector3d& point = vehicle.elements[k].point;
+    p.upper.push_back(model::dead_load_stiffness(vehicle.bodies[maps[k].upper], point, unit));
+    p.lower.push_back(maps[k].lower >= 0 ? model::dead_load_stiffness(vehicle.bodies[maps[k].lower], point, -unit)
+                                         : model::BodyMatrix::Zero());
+  }
+  return p;
+}
+
+// gravity_stiffness from the kept patterns: the same sums in the same order, each term the load
+// times its unit pattern. dead_load_stiffness is linear in the force, and with a vertical force
+// each of its entries is the load times one coordinate of the point (halved, exactly), or
+// such a product plus exact zeros, so each term is gravity_stiffness's but for the sign of a zero.
+void gravity_stiffness_from(const DeadLoadPatterns& p, const std::vector<ElementMap>& maps,
+                            const std::vector<double>& loads, const Eigen::MatrixXd& K_weights,
+                            Eigen::MatrixXd* K_gravity) {
+  *K_gravity = K_weights;
+  auto block = [&](int body) {
+    return K_gravity->block<kMotionsPerBody, kMotionsPerBody>(body * kMotionsPerBody, body * kMotionsPerBody);
+  };
+  for (size_t k = 0; k < maps.size(); ++k) {
+    block(maps[k].upper) += loads[k] * p.upper[k];
+    if (maps[k].lower >= 0) block(maps[k].lower) += loads[k] * p.lower[k];
+  }
+}
+
 // What follows the springs and masses: the static loads, the hangers' lateral stiffness and the
-// dead loads, from a.full (its K_springs summed).
-// `workers`: static_loads_on_sprung finds the loads where it applies (a study's workers only:
-// see there).
-void add_static_loads(const Vehicle& vehicle, FullAssembly* a, bool workers = false) {
+// dead loads, from a.full (its K_springs summed). `workers`, given by a study's workers (only:
+// both round otherwise than assemble), finds the loads by static_loads_on_sprung where it
+// applies and the dead loads from the patterns.
+void add_static_loads(const Vehicle& vehicle, FullAssembly* a, const DeadLoadPatterns* workers = nullptr) {
   if (!workers ||
       !static_loads_on_sprung(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights, &a->loads))
     a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
@@ -673,12 +709,14 @@ void add_static_loads(const Vehicle& vehicle, FullAssembly* a, bool workers = fa
     const Element& e = vehicle.elements[k];
     if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
   }
-  a->K_gravity = gravity_stiffness(vehicle, a->full.maps, a->loads, a->K_weights);
+  if (workers)
+    gravity_stiffness_from(*workers, a->full.maps, a->loads, a->K_weights, &a->K_gravity);
+  else
+    a->K_gravity = gravity_stiffness(vehicle, a->full.maps, a->loads, a->K_weights);
   a->K += a->K_gravity;
 }
 
-// `workers`: as add_static_loads's.
-FullAssembly assemble_full(const Vehicle& vehicle, bool damping, bool workers = false) {
+FullAssembly assemble_full(const Vehicle& vehicle, bool damping) {
   std::map<std::string, int> index;
   check_vehicle(vehicle, &index);
   FullAssembly a{Layout(vehicle), {}, {}, {}, {}, {}, {}, {}};
@@ -686,7 +724,7 @@ FullAssembly assemble_full(const Vehicle& vehicle, bool damping, bool workers = 
   a.weights = generalised_weights(vehicle, a.layout);
   a.K_weights = weights_gravity_stiffness(vehicle, a.layout);
   a.full = springs_and_masses(vehicle, index, a.layout, damping);
-  add_static_loads(vehicle, &a, workers);
+  add_static_loads(vehicle, &a);
   return a;
 }
 
@@ -853,6 +891,7 @@ struct model::VariantAssembly::Base {
   std::vector<int> keep, stiffness_keep;
   std::vector<Dof> dofs, stiffness_dofs;
   Eigen::MatrixXd mass, element_vertical_map;  // picked for `set`
+  DeadLoadPatterns dead_loads;                 // dead_load_patterns
 };
 
 model::VariantAssembly::VariantAssembly() = default;
@@ -868,16 +907,20 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
       add_dampings(vehicle, base_->a.layout, &base_->a.full);
       base_->damped = dampings_of(vehicle);
     }
-    add_static_loads(vehicle, &base_->a, true);
+    add_static_loads(vehicle, &base_->a, &base_->dead_loads);
   } else {
-    FullAssembly a = assemble_full(vehicle, true, true);  // throws before anything is kept
+    FullAssembly a = assemble_full(vehicle, true);  // throws before anything is kept
     auto fresh = std::unique_ptr<Base>(
-        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}});
+        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}, {}});
     const FullAssembly& f = fresh->a;
     fresh->keep = kept_coordinates(vehicle, f.layout, f.free, set, &fresh->dofs);
     fresh->stiffness_keep = kept_coordinates(vehicle, f.layout, f.free, stiffness_set, &fresh->stiffness_dofs);
     pick_into(f.full.M, fresh->keep, &fresh->mass);
     fresh->element_vertical_map = element_vertical_map(f.layout, f.full.maps, fresh->keep);
+    fresh->dead_loads = dead_load_patterns(vehicle, f.full.maps);
+    // The base's static loads found again as every later variant's are (the results do not
+    // depend on which variant a worker took first, hence not on the thread count).
+    add_static_loads(vehicle, &fresh->a, &fresh->dead_loads);
     base_ = std::move(fresh);
   }
   const Base& b = *base_;
