@@ -663,11 +663,19 @@ struct FullAssembly {
 // Each element's dead-load stiffness per unit of its static load, on its upper body and (zero
 // where it stands on the ground) its lower one: what a study's workers keep per base, since
 // the points and bodies do not change with the springs' coefficients.
+// With them, each hanger's lateral stiffness per unit stiffness: the entries of K that
+// add_element(map, {0, 1, 0}) changes (row, column, value; its exact zeros left out).
 struct DeadLoadPatterns {
   std::vector<model::BodyMatrix> upper, lower;
+  struct HangerEntry {
+    int element;
+    Eigen::Index row, column;
+    double value;
+  };
+  std::vector<HangerEntry> hangers;  // in element order
 };
 
-DeadLoadPatterns dead_load_patterns(const Vehicle& vehicle, const std::vector<ElementMap>& maps) {
+DeadLoadPatterns dead_load_patterns(const Vehicle& vehicle, const std::vector<ElementMap>& maps, int layout_size) {
   DeadLoadPatterns p;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
     const Eigen::Vector3d unit(0.0, 0.0, 1.0);
@@ -675,6 +683,12 @@ DeadLoadPatterns dead_load_patterns(const Vehicle& vehicle, const std::vector<El
     p.upper.push_back(model::dead_load_stiffness(vehicle.bodies[maps[k].upper], point, unit));
     p.lower.push_back(maps[k].lower >= 0 ? model::dead_load_stiffness(vehicle.bodies[maps[k].lower], point, -unit)
                                          : model::BodyMatrix::Zero());
+    if (!vehicle.elements[k].hanger) continue;
+    Eigen::MatrixXd per_unit = Eigen::MatrixXd::Zero(layout_size, layout_size);
+    add_element(maps[k], {0.0, 1.0, 0.0}, &per_unit);
+    for (Eigen::Index c = 0; c < per_unit.cols(); ++c)
+      for (Eigen::Index r = 0; r < per_unit.rows(); ++r)
+        if (per_unit(r, c) != 0.0) p.hangers.push_back({static_cast<int>(k), r, c, per_unit(r, c)});
   }
   return p;
 }
@@ -699,15 +713,21 @@ void gravity_stiffness_from(const DeadLoadPatterns& p, const std::vector<Element
 // What follows the springs and masses: the static loads, the hangers' lateral stiffness and the
 // dead loads, from a.full (its K_springs summed). `workers`, given by a study's workers (only:
 // both round otherwise than assemble), finds the loads by static_loads_on_sprung where it
-// applies and the dead loads from the patterns.
+// applies, and the hangers' lateral stiffness and the dead loads from the patterns (a hanger's
+// entry k·(s·a·b) where add_element rounds (s·a·k)·b: round-off).
 void add_static_loads(const Vehicle& vehicle, FullAssembly* a, const DeadLoadPatterns* workers = nullptr) {
   if (!workers ||
       !static_loads_on_sprung(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights, &a->loads))
     a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
   a->K = a->full.K_springs;
-  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
-    const Element& e = vehicle.elements[k];
-    if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
+  if (workers) {
+    for (const DeadLoadPatterns::HangerEntry& h : workers->hangers)
+      a->K(h.row, h.column) += model::lateral_stiffness(vehicle.elements[h.element], a->loads[h.element]) * h.value;
+  } else {
+    for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+      const Element& e = vehicle.elements[k];
+      if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
+    }
   }
   if (workers)
     gravity_stiffness_from(*workers, a->full.maps, a->loads, a->K_weights, &a->K_gravity);
@@ -917,7 +937,7 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
     fresh->stiffness_keep = kept_coordinates(vehicle, f.layout, f.free, stiffness_set, &fresh->stiffness_dofs);
     pick_into(f.full.M, fresh->keep, &fresh->mass);
     fresh->element_vertical_map = element_vertical_map(f.layout, f.full.maps, fresh->keep);
-    fresh->dead_loads = dead_load_patterns(vehicle, f.full.maps);
+    fresh->dead_loads = dead_load_patterns(vehicle, f.full.maps, f.layout.size());
     // The base's static loads found again as every later variant's are (the results do not
     // depend on which variant a worker took first, hence not on the thread count).
     add_static_loads(vehicle, &fresh->a, &fresh->dead_loads);
