@@ -380,6 +380,55 @@ std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const s
   return loads;
 }
 
+// The static loads of static_loads where every direction of K_springs without stiffness is a
+// coordinate direction: free coordinates whose rows are exactly zero (a motion no spring
+// touches; the benchmark study's resort car has one, and every variant's Cholesky failed on
+// it). The minimum-norm solution of K q = Q is then q = 0 on them and the Cholesky solution of
+// the remaining block (the pseudo-inverse of a matrix with zero rows and columns and a positive
+// definite rest), so one smaller Cholesky replaces a failed Cholesky and the complete
+// orthogonal decomposition. It rounds otherwise than the decomposition (a relative change of
+// the order of the unit round-off times the block's condition number), so only a study's
+// workers take it (VariantAssembly), for every variant whatever the worker's base (which rows
+// are zero is found from the variant itself: the results do not depend on the thread count);
+// the general assemble keeps static_loads. Returns false, leaving *loads, where the route does
+// not apply (no zero row, a weight on one, a block not positive definite or not solved to
+// 1e-10): static_loads then decides, with its message.
+bool static_loads_on_sprung(const Vehicle& v, const Layout& layout, const std::vector<int>& free,
+                            const std::vector<ElementMap>& maps, const Eigen::MatrixXd& K_springs,
+                            const Eigen::VectorXd& Q, std::vector<double>* loads) {
+  const int n = static_cast<int>(free.size());
+  thread_local std::vector<int> sprung;
+  sprung.clear();
+  for (int i = 0; i < n; ++i) {
+    bool zero = true;
+    for (int j = 0; j < n && zero; ++j) zero = K_springs(free[i], free[j]) == 0.0;
+    if (!zero)
+      sprung.push_back(free[i]);
+    else if (Q(free[i]) != 0.0)
+      return false;
+  }
+  if (static_cast<int>(sprung.size()) == n) return false;
+  const int m = static_cast<int>(sprung.size());
+  Eigen::MatrixXd Ks(m, m);
+  Eigen::VectorXd Qs(m);
+  for (int i = 0; i < m; ++i) {
+    Qs(i) = Q(sprung[i]);
+    for (int j = 0; j < m; ++j) Ks(i, j) = K_springs(sprung[i], sprung[j]);
+  }
+  const Eigen::LLT<Eigen::MatrixXd> llt(Ks);
+  if (llt.info() != Eigen::Success) return false;
+  const Eigen::VectorXd qs = llt.solve(Qs);
+  if (!qs.allFinite() || !((Ks * qs - Qs).norm() <= 1e-10 * Qs.norm())) return false;
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(layout.size());
+  for (int i = 0; i < m; ++i) q(sprung[i]) = qs(i);
+  loads->resize(v.elements.size());
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const double kz = series_stiffness(v.elements[k].vertical_stages);
+    (*loads)[k] = -kz * vertical_stretch(layout, maps[k], q);  // as static_loads
+  }
+  return true;
+}
+
 // The matrices in full coordinates before the static loads are known: M, C, and K of the
 // springs (hangers' lateral stiffness left out), with each element's point map.
 struct FullModel {
@@ -611,16 +660,79 @@ struct FullAssembly {
   Eigen::MatrixXd K, K_gravity;
 };
 
-// What follows the springs and masses: the static loads, the hangers' lateral stiffness and the
-// dead loads, from a.full (its K_springs summed).
-void add_static_loads(const Vehicle& vehicle, FullAssembly* a) {
-  a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
-  a->K = a->full.K_springs;
+// Each element's dead-load stiffness per unit of its static load, on its upper body and (zero
+// where it stands on the ground) its lower one: what a study's workers keep per base, since
+// the points and bodies do not change with the springs' coefficients.
+// With them, each hanger's lateral stiffness per unit stiffness: the entries of K that
+// add_element(map, {0, 1, 0}) changes (row, column, value; its exact zeros left out).
+struct DeadLoadPatterns {
+  std::vector<model::BodyMatrix> upper, lower;
+  struct HangerEntry {
+    int element;
+    Eigen::Index row, column;
+    double value;
+  };
+  std::vector<HangerEntry> hangers;  // in element order
+};
+
+DeadLoadPatterns dead_load_patterns(const Vehicle& vehicle, const std::vector<ElementMap>& maps, int layout_size) {
+  DeadLoadPatterns p;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
-    const Element& e = vehicle.elements[k];
-    if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
+    const Eigen::Vector3d unit(0.0, 0.0, 1.0);
+    const Eigen::Vector3d& point = vehicle.elements[k].point;
+    p.upper.push_back(model::dead_load_stiffness(vehicle.bodies[maps[k].upper], point, unit));
+    p.lower.push_back(maps[k].lower >= 0 ? model::dead_load_stiffness(vehicle.bodies[maps[k].lower], point, -unit)
+                                         : model::BodyMatrix::Zero());
+    if (!vehicle.elements[k].hanger) continue;
+    Eigen::MatrixXd per_unit = Eigen::MatrixXd::Zero(layout_size, layout_size);
+    add_element(maps[k], {0.0, 1.0, 0.0}, &per_unit);
+    for (Eigen::Index c = 0; c < per_unit.cols(); ++c)
+      for (Eigen::Index r = 0; r < per_unit.rows(); ++r)
+        if (per_unit(r, c) != 0.0) p.hangers.push_back({static_cast<int>(k), r, c, per_unit(r, c)});
   }
-  a->K_gravity = gravity_stiffness(vehicle, a->full.maps, a->loads, a->K_weights);
+  return p;
+}
+
+// gravity_stiffness from the kept patterns: the same sums in the same order, each term the load
+// times its unit pattern. dead_load_stiffness is linear in the force, and with a vertical force
+// each of its entries is the load times one coordinate of the point (halved, exactly), or
+// such a product plus exact zeros, so each term is gravity_stiffness's but for the sign of a zero.
+void gravity_stiffness_from(const DeadLoadPatterns& p, const std::vector<ElementMap>& maps,
+                            const std::vector<double>& loads, const Eigen::MatrixXd& K_weights,
+                            Eigen::MatrixXd* K_gravity) {
+  *K_gravity = K_weights;
+  auto block = [&](int body) {
+    return K_gravity->block<kMotionsPerBody, kMotionsPerBody>(body * kMotionsPerBody, body * kMotionsPerBody);
+  };
+  for (size_t k = 0; k < maps.size(); ++k) {
+    block(maps[k].upper) += loads[k] * p.upper[k];
+    if (maps[k].lower >= 0) block(maps[k].lower) += loads[k] * p.lower[k];
+  }
+}
+
+// What follows the springs and masses: the static loads, the hangers' lateral stiffness and the
+// dead loads, from a.full (its K_springs summed). `workers`, given by a study's workers (only:
+// both round otherwise than assemble), finds the loads by static_loads_on_sprung where it
+// applies, and the hangers' lateral stiffness and the dead loads from the patterns (a hanger's
+// entry k·(s·a·b) where add_element rounds (s·a·k)·b: round-off).
+void add_static_loads(const Vehicle& vehicle, FullAssembly* a, const DeadLoadPatterns* workers = nullptr) {
+  if (!workers ||
+      !static_loads_on_sprung(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights, &a->loads))
+    a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
+  a->K = a->full.K_springs;
+  if (workers) {
+    for (const DeadLoadPatterns::HangerEntry& h : workers->hangers)
+      a->K(h.row, h.column) += model::lateral_stiffness(vehicle.elements[h.element], a->loads[h.element]) * h.value;
+  } else {
+    for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+      const Element& e = vehicle.elements[k];
+      if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
+    }
+  }
+  if (workers)
+    gravity_stiffness_from(*workers, a->full.maps, a->loads, a->K_weights, &a->K_gravity);
+  else
+    a->K_gravity = gravity_stiffness(vehicle, a->full.maps, a->loads, a->K_weights);
   a->K += a->K_gravity;
 }
 
@@ -799,6 +911,7 @@ struct model::VariantAssembly::Base {
   std::vector<int> keep, stiffness_keep;
   std::vector<Dof> dofs, stiffness_dofs;
   Eigen::MatrixXd mass, element_vertical_map;  // picked for `set`
+  DeadLoadPatterns dead_loads;                 // dead_load_patterns
 };
 
 model::VariantAssembly::VariantAssembly() = default;
@@ -814,16 +927,20 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
       add_dampings(vehicle, base_->a.layout, &base_->a.full);
       base_->damped = dampings_of(vehicle);
     }
-    add_static_loads(vehicle, &base_->a);
+    add_static_loads(vehicle, &base_->a, &base_->dead_loads);
   } else {
     FullAssembly a = assemble_full(vehicle, true);  // throws before anything is kept
     auto fresh = std::unique_ptr<Base>(
-        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}});
+        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}, {}});
     const FullAssembly& f = fresh->a;
     fresh->keep = kept_coordinates(vehicle, f.layout, f.free, set, &fresh->dofs);
     fresh->stiffness_keep = kept_coordinates(vehicle, f.layout, f.free, stiffness_set, &fresh->stiffness_dofs);
     pick_into(f.full.M, fresh->keep, &fresh->mass);
     fresh->element_vertical_map = element_vertical_map(f.layout, f.full.maps, fresh->keep);
+    fresh->dead_loads = dead_load_patterns(vehicle, f.full.maps, f.layout.size());
+    // The base's static loads found again as every later variant's are (the results do not
+    // depend on which variant a worker took first, hence not on the thread count).
+    add_static_loads(vehicle, &fresh->a, &fresh->dead_loads);
     base_ = std::move(fresh);
   }
   const Base& b = *base_;

@@ -131,8 +131,26 @@ bool same_bits_matrix(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
          (a.size() == 0 || std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0);
 }
 
-// Every member assemble fills, bit for bit (the vehicles by their shape and stiffnesses: the
-// one moved in is the one given).
+// Whether a and b have the same shape and differ nowhere by more than `relative` times b's
+// largest entry.
+bool near_matrix(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double relative) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         (a.size() == 0 || (a - b).cwiseAbs().maxCoeff() <= relative * b.cwiseAbs().maxCoeff());
+}
+
+// What depends on the static loads (the element loads, the dead-load stiffness, and through
+// the hangers' lateral stiffness K and the track inputs): a study's workers find the loads by
+// a Cholesky factorisation of the sprung block where assemble takes a complete orthogonal
+// decomposition (static_loads_on_sprung), two backward-stable solves that differ by the unit
+// round-off times the block's condition number. Measured below 1e-15 on the bundled vehicles;
+// 1e-13 is the bound a study's round-off change is allowed (docs/performance.md,
+// study-base2), about 450 units of round-off. Elsewhere, and where the route does not apply
+// (no direction without springs), the workers' system is assemble's bit for bit.
+constexpr double kStaticLoadRoundOff = 1e-13;
+
+// Every member assemble fills, bit for bit but for what depends on the static loads (to
+// kStaticLoadRoundOff; the vehicles by their shape and stiffnesses: the one moved in is the
+// one given).
 void expect_same_system(const LinearSystem& got, const LinearSystem& want, const std::string& what) {
   ASSERT_EQ(got.dofs.size(), want.dofs.size()) << what;
   for (size_t i = 0; i < got.dofs.size(); ++i) {
@@ -142,17 +160,22 @@ void expect_same_system(const LinearSystem& got, const LinearSystem& want, const
   }
   EXPECT_TRUE(same_bits_matrix(got.mass, want.mass)) << what << ": mass";
   EXPECT_TRUE(same_bits_matrix(got.damping, want.damping)) << what << ": damping";
-  EXPECT_TRUE(same_bits_matrix(got.stiffness, want.stiffness)) << what << ": stiffness";
-  EXPECT_TRUE(same_bits_matrix(got.gravity_stiffness, want.gravity_stiffness)) << what << ": gravity stiffness";
+  EXPECT_TRUE(near_matrix(got.stiffness, want.stiffness, kStaticLoadRoundOff)) << what << ": stiffness";
+  EXPECT_TRUE(near_matrix(got.gravity_stiffness, want.gravity_stiffness, kStaticLoadRoundOff))
+      << what << ": gravity stiffness";
   EXPECT_TRUE(same_bits_matrix(got.element_vertical_map, want.element_vertical_map)) << what << ": element map";
   ASSERT_EQ(got.element_loads.size(), want.element_loads.size()) << what;
-  EXPECT_EQ(std::memcmp(got.element_loads.data(), want.element_loads.data(), sizeof(double) * got.element_loads.size()), 0)
-      << what << ": element loads";
+  const Eigen::Map<const Eigen::VectorXd> got_loads(got.element_loads.data(),
+                                                    static_cast<Eigen::Index>(got.element_loads.size()));
+  const Eigen::Map<const Eigen::VectorXd> want_loads(want.element_loads.data(),
+                                                     static_cast<Eigen::Index>(want.element_loads.size()));
+  EXPECT_TRUE(near_matrix(got_loads, want_loads, kStaticLoadRoundOff)) << what << ": element loads";
   ASSERT_EQ(got.track_inputs.size(), want.track_inputs.size()) << what;
   for (size_t k = 0; k < got.track_inputs.size(); ++k) {
     EXPECT_EQ(got.track_inputs[k].element, want.track_inputs[k].element) << what;
     EXPECT_TRUE(same_bits_matrix(got.track_inputs[k].point, want.track_inputs[k].point)) << what;
-    EXPECT_TRUE(same_bits_matrix(got.track_inputs[k].load_per_displacement, want.track_inputs[k].load_per_displacement))
+    EXPECT_TRUE(near_matrix(got.track_inputs[k].load_per_displacement, want.track_inputs[k].load_per_displacement,
+                            kStaticLoadRoundOff))
         << what << ": track input " << k;
     EXPECT_TRUE(same_bits_matrix(got.track_inputs[k].load_per_velocity, want.track_inputs[k].load_per_velocity))
         << what << ": track input " << k;
@@ -183,10 +206,10 @@ Vehicle with_coefficients_scaled(Vehicle v, double by) {
   return v;
 }
 
-// A study worker assembles every variant of a bundled vehicle as assemble_with_stiffness does,
-// to the last bit, whether it reuses its base (only coefficients changed) or builds a new one
+// A study worker assembles every variant of a bundled vehicle as assemble_with_stiffness does
+// (expect_same_system: to the last bit but for the static loads' round-off), whether it reuses its base (only coefficients changed) or builds a new one
 // (a mass changed), and reuses exactly when it may.
-TEST(VariantAssembly, EveryBundledVehicleAssemblesBitForBitAsTheGeneralPath) {
+TEST(VariantAssembly, EveryBundledVehicleAssemblesAsTheGeneralPath) {
   int vehicles = 0;
   for (const auto& file : std::filesystem::directory_iterator(std::string(RAILMODAL_DATA_DIR) + "/vehicles")) {
     if (file.path().extension() != ".toml") continue;
@@ -220,8 +243,10 @@ TEST(VariantAssembly, EveryBundledVehicleAssemblesBitForBitAsTheGeneralPath) {
         EXPECT_EQ(worker.reused(), sequence[i].second) << what;
         expect_same_system(system, want.system, what);
         EXPECT_EQ(stiffness.dofs.size(), want.stiffness.dofs.size()) << what;
-        EXPECT_TRUE(same_bits_matrix(stiffness.stiffness, want.stiffness.stiffness)) << what << ": lateral stiffness";
-        EXPECT_TRUE(same_bits_matrix(stiffness.gravity_stiffness, want.stiffness.gravity_stiffness)) << what;
+        EXPECT_TRUE(near_matrix(stiffness.stiffness, want.stiffness.stiffness, kStaticLoadRoundOff))
+            << what << ": lateral stiffness";
+        EXPECT_TRUE(near_matrix(stiffness.gravity_stiffness, want.stiffness.gravity_stiffness, kStaticLoadRoundOff))
+            << what;
       }
     }
     ++vehicles;

@@ -1,5 +1,7 @@
 // Study files: overrides, sweeps, samples, errors; ranking; parallel evaluation.
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
@@ -535,14 +537,45 @@ overrides = { "body.cg_height" = "100 m" }
     EXPECT_EQ(report::shard_result_json(opened[k]), report::shard_result_json(loaded[k])) << "variant " << k;
 }
 
+// Whether two result texts are the same but for their numbers, and every number within
+// `relative` of the other's (the first difference is written to *where).
+bool same_text_numbers_within(const std::string& a, const std::string& b, double relative, std::string* where) {
+  size_t i = 0, j = 0;
+  auto starts_number = [](const std::string& s, size_t k) {
+    return k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) ||
+                            (s[k] == '-' && k + 1 < s.size() && std::isdigit(static_cast<unsigned char>(s[k + 1]))));
+  };
+  while (i < a.size() && j < b.size()) {
+    if (starts_number(a, i) && starts_number(b, j)) {
+      char *end_a = nullptr, *end_b = nullptr;
+      const double x = std::strtod(a.c_str() + i, &end_a), y = std::strtod(b.c_str() + j, &end_b);
+      if (!(std::abs(x - y) <= relative * std::max(std::abs(x), std::abs(y)))) {
+        *where = a.substr(i, 24) + " against " + b.substr(j, 24);
+        return false;
+      }
+      i = static_cast<size_t>(end_a - a.c_str());
+      j = static_cast<size_t>(end_b - b.c_str());
+    } else if (a[i++] != b[j++]) {
+      *where = "text at " + std::to_string(i - 1);
+      return false;
+    }
+  }
+  return i == a.size() && j == b.size();
+}
+
 // The workers evaluate each variant they read on their kept base (study::Workspace: the
 // variant's coefficients written into the base's assembly, model::VariantAssembly); the general
 // path (evaluate_variant of the variant read by read_variant, its own assembly from scratch)
-// is the reference. Every reported number of every result is the same to the last bit
-// (shard_result_json writes each in shortest round-trip form, so equal text is equal bits),
-// on the bundled studies and a sample of the 10⁵-variant benchmark study, on 1 and 2 threads,
-// with the variants read in the workers or beforehand.
-TEST(Evaluation, VariantsOnTheWorkersBaseAreTheGeneralPathsBitForBit) {
+// is the reference. Every reported number of every result is within 1e-13 of it relatively: the
+// workers find the static loads by a Cholesky factorisation of the sprung block where the
+// general path takes a complete orthogonal decomposition (static_loads_on_sprung), and the two
+// backward-stable solves differ by the unit round-off times the block's condition number;
+// the bundled vehicles' largest change is below 1e-15, and 1e-13 (about 450 units of
+// round-off) is the bound a round-off change of a study's numbers is allowed (docs/performance.md,
+// study-base2). Among themselves the workers' results are the same bytes whatever the thread
+// count and whether the variants were read in the workers or beforehand (the route depends on
+// the variant alone), on the bundled studies and a sample of the 10⁵-variant benchmark study.
+TEST(Evaluation, VariantsOnTheWorkersBaseAreTheGeneralPathsToRoundOff) {
   std::vector<std::pair<std::string, int>> studies;  // path, shards (every variant of shard 1 evaluated)
   for (const auto& file : std::filesystem::directory_iterator(std::string(RAILMODAL_DATA_DIR) + "/studies"))
     if (file.path().extension() == ".toml") studies.push_back({file.path().string(), 1});
@@ -560,14 +593,23 @@ TEST(Evaluation, VariantsOnTheWorkersBaseAreTheGeneralPathsBitForBit) {
     // Read in the workers (each moved into its evaluation), and read beforehand (each copied).
     const int in = shards;  // a structured binding cannot be captured in C++17
     const Study loaded = load_study(path, [in](int i) { return in_shard(i, 1, in); });
+    std::vector<std::string> first;  // the workers' results of the first run, bytes
     for (const Study* s : {&study, &loaded})
       for (int threads : {1, 2}) {
         options.threads = threads;
         options.read_in_workers = s == &study;
         const std::vector<VariantResult> results = evaluate_study(*s, options);
         ASSERT_EQ(results.size(), reference.size()) << path;
-        for (size_t k = 0; k < results.size(); ++k)
-          EXPECT_EQ(report::shard_result_json(results[k]), reference[k]) << path << ", variant " << results[k].index;
+        for (size_t k = 0; k < results.size(); ++k) {
+          const std::string got = report::shard_result_json(results[k]);
+          std::string where;
+          EXPECT_TRUE(same_text_numbers_within(got, reference[k], 1e-13, &where))
+              << path << ", variant " << results[k].index << ": " << where;
+          if (first.size() < results.size())
+            first.push_back(got);
+          else
+            EXPECT_EQ(got, first[k]) << path << ", variant " << results[k].index << ", " << threads << " threads";
+        }
       }
   }
 }
