@@ -113,6 +113,21 @@ void check_wheelsets(const Vehicle& vehicle, const std::map<std::string, int>& i
   }
 }
 
+// What is wrong with an element's spring and damper coefficients, or nullptr. One function for
+// check_vehicle (which throws it) and a study's coefficient deltas (coefficients_valid), so the
+// two cannot drift apart.
+const char* coefficient_error(const Element& e) {
+  for (const auto* stages : {&e.vertical_stages, &e.lateral_stages, &e.longitudinal_stages})
+    for (const auto& s : *stages)
+      if (!(s.stiffness > 0.0) || !std::isfinite(s.stiffness) || s.count < 1)
+        return "spring stiffness must be positive and finite";
+  if (!(e.longitudinal_damping >= 0.0) || !std::isfinite(e.longitudinal_damping))
+    return "longitudinal damping must be non-negative and finite";
+  if (!(e.rotational_stiffness.array() >= 0.0).all() || !e.rotational_stiffness.allFinite())
+    return "rotational stiffness must be non-negative and finite";
+  return nullptr;
+}
+
 void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
   if (vehicle.bodies.empty()) throw std::invalid_argument("the vehicle has no bodies");
   if (!(vehicle.gravity > 0.0) || !std::isfinite(vehicle.gravity))
@@ -143,15 +158,7 @@ void check_vehicle(const Vehicle& vehicle, std::map<std::string, int>* index) {
     if (e.upper.empty()) throw std::invalid_argument("element '" + e.name + "' has no upper body");
     if (e.upper == e.lower)
       throw std::invalid_argument("element '" + e.name + "' connects '" + e.upper + "' to itself");
-    for (const auto* stages : {&e.vertical_stages, &e.lateral_stages, &e.longitudinal_stages})
-      for (const auto& s : *stages)
-        if (!(s.stiffness > 0.0) || !std::isfinite(s.stiffness) || s.count < 1)
-          throw std::invalid_argument("element '" + e.name +
-                                      "': spring stiffness must be positive and finite");
-    if (!(e.longitudinal_damping >= 0.0) || !std::isfinite(e.longitudinal_damping))
-      throw std::invalid_argument("element '" + e.name + "': longitudinal damping must be non-negative and finite");
-    if (!(e.rotational_stiffness.array() >= 0.0).all() || !e.rotational_stiffness.allFinite())
-      throw std::invalid_argument("element '" + e.name + "': rotational stiffness must be non-negative and finite");
+    if (const char* error = coefficient_error(e)) throw std::invalid_argument("element '" + e.name + "': " + error);
     if (e.hanger && (!(e.hanger->length > 0.0) || std::abs(e.hanger->inclination) >= kHalfPi))
       throw std::invalid_argument("element '" + e.name +
                                   "': hanger length must be positive, inclination below 90°");
@@ -334,16 +341,26 @@ Eigen::VectorXd generalised_weights(const Vehicle& v, const Layout& layout) {
   return Q;
 }
 
+// K's rows and columns `keep` into *Kk and Q's rows `keep` into *Qk: the static problem on
+// those coordinates.
+void pick_system(const Eigen::MatrixXd& K, const Eigen::VectorXd& Q, const std::vector<int>& keep,
+                 Eigen::MatrixXd* Kk, Eigen::VectorXd* Qk) {
+  const int n = static_cast<int>(keep.size());
+  Kk->resize(n, n);
+  Qk->resize(n);
+  for (int i = 0; i < n; ++i) {
+    (*Qk)(i) = Q(keep[i]);
+    for (int j = 0; j < n; ++j) (*Kk)(i, j) = K(keep[i], keep[j]);
+  }
+}
+
 std::vector<double> static_loads(const Vehicle& v, const Layout& layout, const std::vector<int>& free,
                                  const std::vector<ElementMap>& maps, const Eigen::MatrixXd& K_springs,
                                  const Eigen::VectorXd& Q) {
   const int n = static_cast<int>(free.size());
-  Eigen::MatrixXd Kf(n, n);
-  Eigen::VectorXd Qf(n);
-  for (int i = 0; i < n; ++i) {
-    Qf(i) = Q(free[i]);
-    for (int j = 0; j < n; ++j) Kf(i, j) = K_springs(free[i], free[j]);
-  }
+  Eigen::MatrixXd Kf;
+  Eigen::VectorXd Qf;
+  pick_system(K_springs, Q, free, &Kf, &Qf);
   // Usually K is positive definite on the free coordinates (blocked Cholesky, the cheap
   // path); where a direction has no stiffness (a rigid-body mode gravity does not excite)
   // the minimum-norm solution.
@@ -409,12 +426,9 @@ bool static_loads_on_sprung(const Vehicle& v, const Layout& layout, const std::v
   }
   if (static_cast<int>(sprung.size()) == n) return false;
   const int m = static_cast<int>(sprung.size());
-  Eigen::MatrixXd Ks(m, m);
-  Eigen::VectorXd Qs(m);
-  for (int i = 0; i < m; ++i) {
-    Qs(i) = Q(sprung[i]);
-    for (int j = 0; j < m; ++j) Ks(i, j) = K_springs(sprung[i], sprung[j]);
-  }
+  Eigen::MatrixXd Ks;
+  Eigen::VectorXd Qs;
+  pick_system(K_springs, Q, sprung, &Ks, &Qs);
   const Eigen::LLT<Eigen::MatrixXd> llt(Ks);
   if (llt.info() != Eigen::Success) return false;
   const Eigen::VectorXd qs = llt.solve(Qs);
@@ -872,13 +886,8 @@ bool same_but_coefficients(const Vehicle& kept, const Vehicle& v) {
 // check_vehicle's checks of the coefficients same_but_coefficients lets differ: a vehicle that
 // fails one is assembled in full, which throws check_vehicle's message.
 bool coefficients_valid(const Vehicle& v) {
-  for (const Element& e : v.elements) {
-    for (const auto* stages : {&e.vertical_stages, &e.lateral_stages, &e.longitudinal_stages})
-      for (const auto& s : *stages)
-        if (!(s.stiffness > 0.0) || !std::isfinite(s.stiffness)) return false;
-    if (!(e.longitudinal_damping >= 0.0) || !std::isfinite(e.longitudinal_damping)) return false;
-    if (!(e.rotational_stiffness.array() >= 0.0).all() || !e.rotational_stiffness.allFinite()) return false;
-  }
+  for (const Element& e : v.elements)
+    if (coefficient_error(e)) return false;
   return true;
 }
 
