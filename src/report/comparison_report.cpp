@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/study.hpp"
@@ -487,15 +488,14 @@ void write_streamed_json(std::ostream& out, const Comparison& head, const study:
     return;
   }
   out << text.substr(0, at);
-  for (size_t rank = 1; rank <= ranked.shown(); ++rank) {
-    const std::string kept = ranked.text(rank);
+  ranked.each_text([&](size_t rank, std::string_view kept) {
     const size_t colon = kept.find(':');
-    const size_t split = std::stoul(kept.substr(0, colon));
+    const size_t split = std::stoul(std::string(kept.substr(0, colon)));
     out << (rank == 1 ? "\n" : ",\n");
     out.write(kept.data() + colon + 1, static_cast<std::streamsize>(split));
     out << rank;
     out.write(kept.data() + colon + 1 + split, static_cast<std::streamsize>(kept.size() - colon - 1 - split));
-  }
+  });
   out << "\n  " << text.substr(at);
 }
 
@@ -549,7 +549,7 @@ void report::write_streamed_comparison(std::ostream& out, const Comparison& head
     case OutputFormat::csv:
       write_csv_row(out, comparison_head(head, true));
       out << "\n";
-      for (size_t rank = 1; rank <= ranked.shown(); ++rank) out << rank << "," << ranked.text(rank) << "\n";
+      ranked.each_text([&](size_t rank, std::string_view text) { out << rank << "," << text << "\n"; });
       break;
     case OutputFormat::json: write_streamed_json(out, head, ranked); break;
     default:

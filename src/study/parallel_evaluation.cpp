@@ -136,7 +136,13 @@ std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOp
   clock.lap("evaluate variants");
   if (summary) {
     summary->analysis = "design study, shard " + std::to_string(options.shard) + " of " + std::to_string(options.shards);
-    summary->method = "evaluate_variant on " + std::to_string(threads) + " thread(s), one result slot per variant";
+    // What runs: each thread evaluates the variants it takes in its own workspace
+    // (study::Workspace), not through evaluate_variant, and reads those not read beforehand.
+    const bool reads = options.read_in_workers && study.plan;
+    summary->method = "variants evaluated on " + std::to_string(threads) +
+                      " thread(s), each in its thread's workspace (the base's assembly kept between variants)" +
+                      (reads ? ", a variant not read beforehand read by the thread that takes it" : "") +
+                      ", one result slot per variant";
     const double failed = static_cast<double>(
         std::count_if(results.begin(), results.end(), [](const VariantResult& r) { return !r.ok(); }));
     summary->checks.push_back({"variants evaluated", static_cast<double>(results.size()),

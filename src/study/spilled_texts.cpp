@@ -1,11 +1,14 @@
-// The temporary file of texts: appended under a lock, read back with a seek.
+// The temporary file of texts: appended under a lock, read back one text a read, or front to back.
 #include "study/spilled_texts.hpp"
 
 #include <stdlib.h>  // mkstemp
 #include <unistd.h>  // unlink, pread
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -41,7 +44,7 @@ SpilledTexts::SpilledTexts(std::string purpose, std::string remedy)
                                 " (set TMPDIR to a writable directory" + remedy_ + ")");
 }
 
-void SpilledTexts::resize(size_t count) { offsets_.resize(count), lengths_.resize(count); }
+void SpilledTexts::resize(size_t count) { offsets_.resize(count), lengths_.resize(count), put_order_.reserve(count); }
 
 void SpilledTexts::put(size_t position, const std::string& text) {
   const std::lock_guard<std::mutex> lock(mutex_);
@@ -49,6 +52,7 @@ void SpilledTexts::put(size_t position, const std::string& text) {
   offsets_.at(position) = written_;
   lengths_.at(position) = static_cast<unsigned>(text.size());
   written_ += text.size();
+  put_order_.push_back(position);
 }
 
 void SpilledTexts::finish() {
@@ -65,20 +69,82 @@ std::string SpilledTexts::at(size_t position) const {
     throw std::out_of_range("no text at position " + std::to_string(position) + " of " + std::to_string(size()));
   std::string text(lengths_[position], '\0');
   // One pread of the text's bytes from the flushed file (finish() came first): a seek and a
-  // buffered read were two system calls and a 4 KiB refill per text, one text per variant of a
-  // study, in the serial part that writes the ranked rows.
+  // buffered read were two system calls and a 4 KiB refill per text.
+  read(text.data(), text.size(), offsets_[position]);
+  return text;
+}
+
+void SpilledTexts::read(char* to, size_t bytes, unsigned long long offset) const {
   const int fd = fileno(file_.get());
   size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t got =
-        pread(fd, text.data() + done, text.size() - done, static_cast<off_t>(offsets_[position] + done));
+  while (done < bytes) {
+    const ssize_t got = pread(fd, to + done, bytes - done, static_cast<off_t>(offset + done));
     if (got < 0 && errno == EINTR) continue;
     if (got <= 0)
       throw std::system_error(got < 0 ? errno : EIO, std::generic_category(),
                               purpose_ + " but could not read back its temporary file");
     done += static_cast<size_t>(got);
   }
-  return text;
+}
+
+void SpilledTexts::each_of(const std::vector<size_t>& positions, const std::function<void(std::string_view)>& visit,
+                           size_t gather_bytes) const {
+  unsigned long long wanted = 0;
+  for (size_t p : positions) {
+    if (p >= offsets_.size())
+      throw std::out_of_range("no text at position " + std::to_string(p) + " of " + std::to_string(size()));
+    wanted += lengths_[p];
+  }
+  // Each pass reads the whole file; one read a text costs a system call, about what copying a
+  // page does (kCallBytes). The rows of a study are read in rank order, scattered over the file:
+  // one pread a text was most of the serial part of the 10^5-variant study (docs/performance.md,
+  // "study-serial"). Many short texts are gathered in passes; texts of kilobytes each (a shard's
+  // JSON) or a file many times the gathering room, one read a text.
+  constexpr unsigned long long kCallBytes = 4096;
+  const unsigned long long passes = gather_bytes > 0 ? (wanted + gather_bytes - 1) / gather_bytes : positions.size();
+  if (passes > 1 && passes * written_ > positions.size() * kCallBytes + wanted) {
+    for (size_t p : positions) visit(at(p));
+    return;
+  }
+  constexpr size_t kNone = SIZE_MAX;
+  constexpr size_t kChunkBytes = size_t{1} << 20;
+  std::vector<size_t> slot(offsets_.size(), kNone);  // where a text of this pass goes in `block`
+  std::string block;
+  std::vector<char> chunk(static_cast<size_t>(std::min<unsigned long long>(kChunkBytes, written_)));
+  for (size_t first = 0; first < positions.size();) {
+    // The texts of positions[first ... last − 1]: as many as fit in gather_bytes, at least one.
+    size_t bytes = 0, last = first;
+    for (; last < positions.size() && (last == first || bytes + lengths_[positions[last]] <= gather_bytes); ++last) {
+      if (slot[positions[last]] != kNone)
+        throw std::invalid_argument("each_of: position " + std::to_string(positions[last]) + " is asked for twice");
+      slot[positions[last]] = bytes;
+      bytes += lengths_[positions[last]];
+    }
+    block.resize(bytes);
+    // The file front to back, a chunk at a time: its texts lie in the order they were put.
+    unsigned long long chunk_at = 0, chunk_end = 0;
+    for (size_t p : put_order_) {
+      if (slot[p] == kNone) continue;
+      unsigned long long from = offsets_[p];
+      size_t left = lengths_[p];
+      char* to = block.data() + slot[p];
+      while (left > 0) {
+        if (from < chunk_at || from >= chunk_end) {
+          chunk_at = from;
+          chunk_end = from + std::min<unsigned long long>(chunk.size(), written_ - from);
+          read(chunk.data(), static_cast<size_t>(chunk_end - chunk_at), chunk_at);
+        }
+        const size_t piece = static_cast<size_t>(std::min<unsigned long long>(left, chunk_end - from));
+        std::memcpy(to, chunk.data() + (from - chunk_at), piece);
+        to += piece, from += piece, left -= piece;
+      }
+    }
+    for (; first < last; ++first) {
+      const size_t p = positions[first];
+      visit(std::string_view(block.data() + slot[p], lengths_[p]));
+      slot[p] = kNone;
+    }
+  }
 }
 
 }  // namespace railmodal::study

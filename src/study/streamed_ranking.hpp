@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "railmodal/study.hpp"
@@ -40,6 +41,10 @@ class StreamedRanking {
   size_t shown() const { return order_.size(); }  ///< variants whose text is kept: size(), or top
   /// The text of the variant ranked `rank` (1 ... shown()).
   std::string text(size_t rank) const;
+  /// The texts of ranks 1 ... shown() handed to `visit` with their rank, in rank order: what
+  /// text(rank) gives for each, read from the temporary file in a few sequential passes
+  /// (SpilledTexts::each_of) rather than one read a rank.
+  void each_text(const std::function<void(size_t rank, std::string_view text)>& visit) const;
   /// The text of the variant at `position` in the study (0 ... size() − 1); only without `top`.
   std::string text_at(size_t position) const;
   /// The best `keep` variants whole, in rank order, their ranks set (fewer if the study is smaller).

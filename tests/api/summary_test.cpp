@@ -238,6 +238,9 @@ TEST(AnalysisSummary, StudyVariantsAndShard) {
   double wall = 0.0;
   const auto results = timed([&] { return evaluate_study(study, o, &s); }, &wall);
   expect_filled(s, wall);
+  // The method says what runs: the workers' own workspaces, not evaluate_variant.
+  EXPECT_EQ(s.method, "variants evaluated on 2 thread(s), each in its thread's workspace (the base's assembly kept "
+                      "between variants), one result slot per variant");
   ASSERT_EQ(results.size(), 2u);
   for (const VariantResult& r : results) {
     EXPECT_TRUE(r.ok()) << r.failure;

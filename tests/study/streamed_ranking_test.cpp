@@ -3,7 +3,9 @@
 // count; with a top k, its first k variants. The documents (Markdown, HTML), a shard's file
 // (compare_shard) and a merge of shard files (compare_merged) are the bytes their in-memory
 // writers write too.
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -11,6 +13,7 @@
 #include "railmodal/railmodal.hpp"
 #include "report/comparison_document.hpp"
 #include "study/parallel_evaluation.hpp"
+#include "study/spilled_texts.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
@@ -87,6 +90,42 @@ TEST(CompareStudy, RefusesATopForDocumentsShardsAndANegativeTop) {
   shard.shards = 2;
   std::ostringstream out;
   EXPECT_THROW(compare_study(out, study, shard, OutputFormat::csv), std::invalid_argument);
+}
+
+// SpilledTexts::each_of hands on the texts at the positions asked for, in their order, the same
+// as at() reads one by one, however it reads them: in one pass, in several (small gathering
+// rooms: 0 bytes hold one text a pass, 40 bytes a few short ones), or one read a text (where
+// passes would read the file too often: a room of 1 byte, or 1 MiB in a file holding a text of
+// 1.5 MiB; in one pass the long text straddles the 1 MiB chunks the file is read by). An empty
+// text among them.
+TEST(SpilledTexts, EachOfGivesTheTextsInTheOrderAskedHoweverGathered) {
+  const size_t count = 60;
+  for (bool long_text : {false, true}) {
+    const auto text_of = [&](size_t k) {
+      if (k == 5) return std::string();
+      if (k == 17 && long_text) return std::string((size_t{3} << 19) + 11, 'x');  // 1.5 MiB
+      return "text " + std::to_string(k) + std::string(k % 7, '+');
+    };
+    study::SpilledTexts spilled("a test keeps its texts", "");
+    spilled.resize(count);
+    for (size_t k = 0; k < count; ++k) spilled.put((k * 37) % count, text_of((k * 37) % count));  // out of order
+    spilled.finish();
+    std::vector<size_t> asked;  // a rank order: every position once
+    for (size_t k = 0; k < count; ++k) asked.push_back((k * 13 + 7) % count);
+    const std::vector<size_t> some(asked.begin(), asked.begin() + 20);
+    for (const std::vector<size_t>* positions : std::initializer_list<const std::vector<size_t>*>{&asked, &some})
+      for (size_t room : {size_t{0}, size_t{1}, size_t{40}, size_t{1} << 20, study::SpilledTexts::kGatherBytes}) {
+        std::vector<std::string> got;
+        spilled.each_of(*positions, [&](std::string_view text) { got.emplace_back(text); }, room);
+        ASSERT_EQ(got.size(), positions->size()) << room;
+        for (size_t i = 0; i < got.size(); ++i) {
+          EXPECT_EQ(got[i], text_of((*positions)[i])) << "rank " << i << ", room " << room << ", " << long_text;
+          EXPECT_EQ(got[i], spilled.at((*positions)[i]));
+        }
+      }
+    EXPECT_THROW(spilled.each_of({3, 4, 3}, [](std::string_view) {}), std::invalid_argument);
+    EXPECT_THROW(spilled.each_of({count}, [](std::string_view) {}), std::out_of_range);
+  }
 }
 
 // The document of the whole comparison, as railmodal compare wrote it before it streamed.
