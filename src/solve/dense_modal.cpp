@@ -15,17 +15,10 @@ namespace railmodal::solve {
 
 namespace {
 
-// A(rows, cols) into *out (its storage reused when the size is the same).
-void take_into(const Eigen::MatrixXd& A, const std::vector<int>& rows, const std::vector<int>& cols,
-               Eigen::MatrixXd* out) {
-  out->resize(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(cols.size()));
-  for (size_t i = 0; i < rows.size(); ++i)
-    for (size_t j = 0; j < cols.size(); ++j) (*out)(i, j) = A(rows[i], cols[j]);
-}
-
 Eigen::MatrixXd take(const Eigen::MatrixXd& A, const std::vector<int>& rows, const std::vector<int>& cols) {
-  Eigen::MatrixXd out;
-  take_into(A, rows, cols, &out);
+  Eigen::MatrixXd out(rows.size(), cols.size());
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t j = 0; j < cols.size(); ++j) out(i, j) = A(rows[i], cols[j]);
   return out;
 }
 
@@ -33,19 +26,16 @@ Eigen::MatrixXd take(const Eigen::MatrixXd& A, const std::vector<int>& rows, con
 // mass matrix that is not positive definite is a clear error and never garbage. Eigen's LLT
 // does the work; when it reports a failure, or a pivot is at round-off level, the
 // factorisation is repeated column by column to find the degree of freedom.
-// `dofs[kept[j]]` is row j of M (its label is only read for the message). `llt` is the
-// caller's factorisation object (its storage reused); L goes into *L_out.
-void checked_cholesky(const Eigen::MatrixXd& M, const std::vector<Dof>& dofs, const std::vector<int>& kept,
-                      Eigen::LLT<Eigen::MatrixXd>* llt, Eigen::MatrixXd* L_out) {
+// `dofs[kept[j]]` is row j of M (its label is only read for the message).
+Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<Dof>& dofs, const std::vector<int>& kept) {
   const double tiny = 64.0 * std::numeric_limits<double>::epsilon() * M.diagonal().cwiseAbs().maxCoeff();
-  llt->compute(M);
-  Eigen::MatrixXd& L = *L_out;
-  if (llt->info() == Eigen::Success) {
-    L = llt->matrixL();
-    if ((L.diagonal().array().square() > tiny).all()) return;
+  Eigen::LLT<Eigen::MatrixXd> llt(M);
+  if (llt.info() == Eigen::Success) {
+    Eigen::MatrixXd L = llt.matrixL();
+    if ((L.diagonal().array().square() > tiny).all()) return L;
   }
   const int n = static_cast<int>(M.rows());
-  L.setZero(n, n);
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n, n);
   for (int j = 0; j < n; ++j) {
     double pivot = M(j, j) - L.row(j).head(j).squaredNorm();
     // Round-off in a positive definite matrix leaves pivots of order ε·scale at worst.
@@ -56,18 +46,8 @@ void checked_cholesky(const Eigen::MatrixXd& M, const std::vector<Dof>& dofs, co
     for (int i = j + 1; i < n; ++i)
       L(i, j) = (M(i, j) - L.row(i).head(j).dot(L.row(j).head(j))) / L(j, j);
   }
-  // every pivot passed after all (LLT was at the round-off edge)
+  return L;  // every pivot passed after all (LLT was at the round-off edge)
 }
-
-// What a dense solve works in, kept per thread between solves (a study solves a variant's
-// modes on each of its threads, about 10⁵ times): the reduced matrices, the factor, the
-// reduced problem and its solvers, reused at the same size without allocating. The same
-// operations on the same values as fresh objects: the results are the same bits.
-struct DenseWork {
-  Eigen::MatrixXd Kr, Mr, L, A, At, phi_kept;
-  Eigen::LLT<Eigen::MatrixXd> llt;
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig;
-};
 
 }  // namespace
 
@@ -114,9 +94,7 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, 
   kept.reserve(n);
   for (int i = 0; i < n; ++i) (M.row(i).cwiseAbs().maxCoeff() == 0.0 ? massless : kept).push_back(i);
   if (kept.empty()) throw NumericalError("every degree of freedom is massless");
-  thread_local DenseWork work;
-  Eigen::MatrixXd& Kr = work.Kr;
-  take_into(K, kept, kept, &Kr);
+  Eigen::MatrixXd Kr = take(K, kept, kept);
   Eigen::MatrixXd recover;  // φ_massless = recover · φ_kept
   if (!massless.empty()) {
     const Eigen::MatrixXd Kss = take(K, massless, massless);
@@ -135,29 +113,18 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, 
     Kr += take(K, kept, massless) * recover;
   }
   result.massless = massless;
-  Eigen::MatrixXd& Mr = work.Mr;
-  take_into(M, kept, kept, &Mr);
+  const Eigen::MatrixXd Mr = take(M, kept, kept);
 
   // K φ = λ M φ  →  (L⁻¹ K L⁻ᵀ) y = λ y,  φ = L⁻ᵀ y: φ is M-normalised when y is unit.
-  // (A triangular solve copies its right-hand side into the result and solves there: the
-  // copies below are what lower.solve(Kr) and lower.solve(A.transpose()) did in temporaries.)
-  Eigen::MatrixXd& L = work.L;
-  checked_cholesky(Mr, dofs, kept, &work.llt, &L);
+  const Eigen::MatrixXd L = checked_cholesky(Mr, dofs, kept);
   const auto lower = L.triangularView<Eigen::Lower>();
-  Eigen::MatrixXd& A = work.A;
-  A = Kr;
-  lower.solveInPlace(A);
-  work.At = A.transpose();
-  lower.solveInPlace(work.At);
-  A = work.At.transpose();
+  Eigen::MatrixXd A = lower.solve(Kr);
+  A = lower.solve(A.transpose()).transpose();
   A = 0.5 * (A + A.transpose());
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>& eig = work.eig;
-  eig.compute(A);
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(A);
   if (eig.info() != Eigen::Success) throw NumericalError("the symmetric eigensolver did not converge");
   result.values = eig.eigenvalues();  // ascending
-  Eigen::MatrixXd& phi_kept = work.phi_kept;
-  phi_kept = eig.eigenvectors();
-  L.transpose().triangularView<Eigen::Upper>().solveInPlace(phi_kept);
+  Eigen::MatrixXd phi_kept = L.transpose().triangularView<Eigen::Upper>().solve(eig.eigenvectors());
   // Rigid-body modes are counted by the inertia of K ∓ tM, not read off the computed λ.
   result.zero_band = zero_band(Kr, Mr);
   result.rigid_count = eigenvalues_near_zero(Kr, Mr, result.zero_band);
