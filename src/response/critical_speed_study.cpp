@@ -181,7 +181,8 @@ CriticalSpeedStudy response::study_critical_speeds_of(const Scene& scene, const 
 }
 
 void response::study_critical_speeds_into(Scene given, const std::function<LinearSystem()>& assembled,
-                                          CriticalSpeedStudy* into, const std::function<void(double)>& progress) {
+                                          CriticalSpeedStudy* into, const std::function<void(double)>& progress,
+                                          CurvePhases phases) {
   model::refuse_ride_only_scene(given, "critical speeds");
   CriticalSpeedStudy& study = *into;
   StageClock clock(&study.summary);
@@ -201,10 +202,11 @@ void response::study_critical_speeds_into(Scene given, const std::function<Linea
   // DOFs the rows report, known only once they are found — then the rows are found again. A
   // scene that names its outputs finds them once (half the time of a study's critical speeds).
   if (scene.outputs.empty()) study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
-  const std::vector<OutputRequest> outputs = curve_outputs(scene, study);
+  std::vector<OutputRequest> outputs = curve_outputs(scene, study);
   options.outputs = outputs;
   study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
   clock.lap("critical speeds");
+  for (OutputRequest& o : outputs) o.phase = phases == CurvePhases::kept;  // the curves' (the rows kept theirs)
 
   const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
   check_curve_points(sources.size(), outputs.size(), speeds.size(), study.critical_speeds.size());

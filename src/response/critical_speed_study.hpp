@@ -14,11 +14,18 @@ namespace railmodal::response {
 CriticalSpeedStudy study_critical_speeds_of(const Scene& scene, const std::function<LinearSystem()>& assembled,
                                             const std::function<void(double)>& progress = {});
 
+/// Whether the amplitude curves carry their phases (AmplitudeCurve::phases_deg). A design
+/// study's variant reads only their amplitudes and leaves the phases out: an arg x and a
+/// phase per speed and output, and an array per curve, fewer (issue 19, item 2).
+enum class CurvePhases { kept, left_out };
+
 /// The same into `study` (default-constructed), taking the scene as given: a caller that owns
 /// it moves it in instead of copying it. Where it throws, what `study` was given so far stays
 /// there: its scene, and its system once `assembled` returned (a study's variant then
-/// describes its failure from them, the vehicle having moved into the system).
+/// describes its failure from them, the vehicle having moved into the system). With
+/// CurvePhases::left_out every curve's phases_deg is empty; everything else is the same bits.
 void study_critical_speeds_into(Scene scene, const std::function<LinearSystem()>& assembled, CriticalSpeedStudy* study,
-                                const std::function<void(double)>& progress = {});
+                                const std::function<void(double)>& progress = {},
+                                CurvePhases phases = CurvePhases::kept);
 
 }  // namespace railmodal::response

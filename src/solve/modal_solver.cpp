@@ -242,8 +242,9 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
   const Eigen::MatrixXd& K = system.stiffness;
   if (!M.allFinite() || !K.allFinite())
     throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
-  const Describe describe = [&system](const Eigen::VectorXd& shape, bool repeated) {
-    return solve::describe_mode(system, shape, repeated);
+  solve::ModeNamer namer(system);  // what the names need of the system, once for all modes
+  const Describe describe = [&namer](const Eigen::VectorXd& shape, bool repeated) {
+    return namer.describe(shape, repeated);
   };
   AnalysisSummary timing;
   StageClock clock(&timing);

@@ -32,14 +32,16 @@ struct BodyEnergy {
   double amplitude(Motion m) const { return m == Motion::bending ? bending : motion(static_cast<int>(m)); }
 };
 
-BodyEnergy energy_of(const Body& body, const BodyVector& q, double bending) {
+// `map` is the body's point map of its CG, `bending_mass` its bending mode's modal mass (0
+// without one): ModeNamer::BodyFacts.
+BodyEnergy energy_of(const Body& body, const model::PointMap& map, double bending_mass, const BodyVector& q,
+                     double bending) {
   BodyEnergy e;
   e.motion = q;
   e.bending = bending;
   // The five motions before longitudinal as a 3 × 5 product (the same sums as before it
   // existed), then the longitudinal one, +0 where it is held.
   constexpr int kFive = kMotionsPerBody - 1;
-  const model::PointMap map = model::point_map(body, body.centre_of_gravity);
   const Eigen::Matrix<double, 3, kFive> five = map.leftCols<kFive>();
   const Eigen::Vector3d cg = five * q.head<kFive>() + map.col(kFive) * q(kFive);
   const Eigen::Vector3d rotation(q(2), q(3), q(4));
@@ -49,7 +51,7 @@ BodyEnergy energy_of(const Body& body, const BodyVector& q, double bending) {
   e.term[kRoll] = 0.5 * body.inertia.x() * rotation.x() * rotation.x();
   e.term[kPitch] = 0.5 * body.inertia.y() * rotation.y() * rotation.y();
   e.term[kYaw] = 0.5 * body.inertia.z() * rotation.z() * rotation.z();
-  if (body.bending) e.term[kBending] = 0.5 * model::bending_mode(body).modal_mass * bending * bending;
+  if (body.bending) e.term[kBending] = 0.5 * bending_mass * bending * bending;
   for (double t : e.term) e.total += t;
   return e;
 }
@@ -85,7 +87,7 @@ ModeDescription describe_by_dof(const LinearSystem& system, const Eigen::VectorX
 // How the leading body moves: its word, the motion whose phase twins compare, and the
 // centre of roll or pitch where the word has one.
 struct LeadingMotion {
-  std::string word;
+  const char* word = "";
   Motion key = Motion::bounce;
   std::optional<CentreOfOscillation> centre;
 };
@@ -96,7 +98,7 @@ struct LeadingMotion {
 // shape continuously and a small change of the design cannot swap it. Only an uncoupled body
 // (spring plane through the CG, or no lateral stiffness) has a pure lateral or a pure roll
 // mode about the CG; a share below 1e-6 of the sway energy is round-off of such a mode.
-std::string sway_word(const Body& body, const BodyEnergy& e, std::optional<CentreOfOscillation>* centre) {
+const char* sway_word(const Body& body, const BodyEnergy& e, std::optional<CentreOfOscillation>* centre) {
   const double sway = e.term[kLateral] + e.term[kRoll];
   if (e.term[kLateral] <= 1e-6 * sway) {
     *centre = centre_of(body, e.motion, true);
@@ -109,7 +111,7 @@ std::string sway_word(const Body& body, const BodyEnergy& e, std::optional<Centr
 }
 
 // Whether the system has the DOF "<body>.<motion>": LinearSystem::index_of(label) ≥ 0 without
-// the label built (a long one is an allocation, and every mode of every variant asks).
+// the label built (a long one is an allocation).
 bool has_dof(const LinearSystem& system, const std::string& body, const char* motion) {
   const size_t n = body.size(), m = std::strlen(motion);
   for (const Dof& d : system.dofs)
@@ -119,11 +121,11 @@ bool has_dof(const LinearSystem& system, const std::string& body, const char* mo
   return false;
 }
 
-LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const BodyEnergy& e) {
+LeadingMotion leading_motion(const ModeNamer::BodyFacts& facts, const Body& body, const BodyEnergy& e) {
   // Longitudinal CG motion of a body whose surge is held comes from pitching about a point off
   // the CG; lateral CG motion and roll are one sway, whichever of the two is larger.
   std::array<double, kTerms> t = e.term;
-  if (!has_dof(system, body.name, "longitudinal")) {  // held surge: the CG's longitudinal motion is pitch
+  if (!facts.free_longitudinal) {  // held surge: the CG's longitudinal motion is pitch
     t[kPitch] += t[kLongitudinal];
     t[kLongitudinal] = 0.0;
   }
@@ -155,15 +157,15 @@ LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const
     default: {
       // A body held laterally rolls about its fixed axis (the book's side rocking) even when
       // its CG moves more than it turns; one held in roll only translates.
-      const bool lateral_free = has_dof(system, body.name, "lateral");
-      const bool roll_free = has_dof(system, body.name, "roll");
+      const bool lateral_free = facts.free_lateral;
+      const bool roll_free = facts.free_roll;
       if (roll_free && !lateral_free) {
         m.word = "roll";
         m.centre = centre_of(body, e.motion, true);
       } else {
         m.word = lateral_free && !roll_free ? "lateral" : sway_word(body, e, &m.centre);
       }
-      m.key = m.word == "lateral" ? Motion::lateral : Motion::roll;
+      m.key = std::strcmp(m.word, "lateral") == 0 ? Motion::lateral : Motion::roll;
     }
   }
   return m;
@@ -172,6 +174,31 @@ LeadingMotion leading_motion(const LinearSystem& system, const Body& body, const
 }  // namespace
 
 ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape, bool repeated) {
+  return ModeNamer(system).describe(shape, repeated);
+}
+
+ModeNamer::ModeNamer(const LinearSystem& system) : system_(system) {
+  const auto& bodies = system.vehicle.bodies;
+  bodies_.resize(bodies.size());
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    BodyFacts& f = bodies_[b];
+    f.family = family_of(bodies[b].name);
+    f.free_longitudinal = has_dof(system, bodies[b].name, "longitudinal");
+    f.free_lateral = has_dof(system, bodies[b].name, "lateral");
+    f.free_roll = has_dof(system, bodies[b].name, "roll");
+    f.cg_map = model::point_map(bodies[b], bodies[b].centre_of_gravity);
+    if (bodies[b].bending) f.bending_mass = model::bending_mode(bodies[b]).modal_mass;
+  }
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    BodyFacts& f = bodies_[b];
+    for (size_t o = 0; o < bodies.size() && !f.has_twin; ++o)
+      f.has_twin = !f.family.empty() && f.family != bodies[b].name && bodies[o].name != bodies[b].name &&
+                   bodies_[o].family == f.family;
+  }
+}
+
+ModeDescription ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated) {
+  const LinearSystem& system = system_;
   const auto& bodies = system.vehicle.bodies;
   if (bodies.empty()) return describe_by_dof(system, shape);
   // This thread's lists, kept between modes: every mode of every variant of a study is named.
@@ -191,21 +218,20 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
 
   int lead = 0;
   for (size_t b = 0; b < bodies.size(); ++b) {
-    energy.push_back(energy_of(bodies[b], motion[b], bending[b]));
+    energy.push_back(energy_of(bodies[b], bodies_[b].cg_map, bodies_[b].bending_mass, motion[b], bending[b]));
     if (energy[b].total > energy[lead].total) lead = static_cast<int>(b);
   }
   const BodyEnergy& e = energy[lead];
   const Body& body = bodies[lead];
-  const LeadingMotion leading = leading_motion(system, body, e);
+  const BodyFacts& facts = bodies_[lead];
+  const LeadingMotion leading = leading_motion(facts, body, e);
   ModeDescription d;
   // A repeated mode's shape is one arbitrary member of its subspace, and so is its centre of
   // oscillation (bogies pitch: either bogie's pivot): only a mode of its own has one.
   if (!repeated) d.centre = leading.centre;
 
-  const std::string family = family_of(body.name);
-  const bool has_twin = !family.empty() && family != body.name &&
-                        std::any_of(bodies.begin(), bodies.end(),
-                                    [&](const Body& b) { return b.name != body.name && family_of(b.name) == family; });
+  const std::string& family = facts.family;
+  const bool has_twin = facts.has_twin;
   // A repeated mode of twin bodies is any combination of the twins' motions (the solver's
   // basis is arbitrary, its members unequal mixtures): only the shared subspace has a name.
   if (repeated && has_twin) {
@@ -218,7 +244,7 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
   // which of four nearly equal wheelsets leads changes with a 1 % change of any parameter.
   bool shared = false, in_phase = true;
   for (size_t b = 0; b < bodies.size() && has_twin; ++b) {
-    if (static_cast<int>(b) == lead || family_of(bodies[b].name) != family || energy[b].total < 0.5 * e.total) continue;
+    if (static_cast<int>(b) == lead || bodies_[b].family != family || energy[b].total < 0.5 * e.total) continue;
     shared = true;
     in_phase = in_phase && e.amplitude(leading.key) * energy[b].amplitude(leading.key) >= 0.0;
   }
@@ -226,7 +252,8 @@ ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd&
     d.name = family + "s " + leading.word + ", " + (in_phase ? "in phase" : "antiphase");
     return d;
   }
-  d.name = body.name + " " + leading.word;
+  d.name.reserve(body.name.size() + 1 + std::strlen(leading.word));  // one allocation at most
+  d.name.append(body.name).append(1, ' ').append(leading.word);
   return d;
 }
 

@@ -4,9 +4,11 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"
+#include "model/rigid_body.hpp"
 
 namespace railmodal::solve {
 
@@ -37,6 +39,30 @@ struct ModeDescription {
 /// A system without bodies (matrices read from files) is named after the DOF with the most
 /// kinetic energy φᵢ (Mφ)ᵢ, e.g. "dof3" or "body.bounce", with no centre of oscillation.
 ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape, bool repeated);
+
+/// describe_mode for every mode of one system: what the names need of the system alone (each
+/// body's family and whether it has a twin, its CG's point map, which of its motions are
+/// DOFs) is worked out once, not per mode and body (a study names six modes of each of its
+/// 10⁵ variants). describe() gives describe_mode's description, bit for bit. The system must
+/// outlive the namer.
+class ModeNamer {
+ public:
+  explicit ModeNamer(const LinearSystem& system);
+  ModeDescription describe(const Eigen::VectorXd& shape, bool repeated);
+
+  /// What a body's part in a name depends on, of the system alone.
+  struct BodyFacts {
+    std::string family;  ///< family_of(name)
+    bool has_twin = false;  ///< another body of the same family, under another name
+    bool free_longitudinal = false, free_lateral = false, free_roll = false;  ///< DOFs of the system
+    model::PointMap cg_map;  ///< the CG's motion per unit motion of the reference point
+    double bending_mass = 0.0;  ///< the bending mode's modal mass (a body with Body::bending)
+  };
+
+ private:
+  const LinearSystem& system_;
+  std::vector<BodyFacts> bodies_;
+};
 
 /// What twin bodies share: "bogie1" → "bogie", "wheelset_2" → "wheelset"; a name without a
 /// trailing number is its own family.

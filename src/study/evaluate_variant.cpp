@@ -396,10 +396,12 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
         lateral = std::move(both.stiffness);
         return std::move(both.system);
       };
+      // The variant reads the curves' amplitudes (peaks), never their phases.
+      constexpr auto kNoPhases = response::CurvePhases::left_out;
       if (owned)
-        response::study_critical_speeds_into(std::move(owned->scene), assembled, &study);
+        response::study_critical_speeds_into(std::move(owned->scene), assembled, &study, {}, kNoPhases);
       else
-        response::study_critical_speeds_into(variant.scene, assembled, &study);
+        response::study_critical_speeds_into(variant.scene, assembled, &study, {}, kNoPhases);
     } catch (const NumericalError& e) {
       describe_failure(vehicle_moved ? study.system.vehicle : variant.vehicle, dofs, e.what(), &r);
       clock.lap("failure");

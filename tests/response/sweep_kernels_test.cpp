@@ -1,6 +1,7 @@
 // The sweep's block arithmetic (response/sweep_kernels): the branch-free atan2 against libm,
 // the phase wrap over its whole input range, the input's argument, the sweep's curves sharing
-// one speed grid, and outputs swept together giving the same bits as each alone.
+// one speed grid, outputs swept together giving the same bits as each alone, and a study's
+// curves without their phases.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "railmodal/railmodal.hpp"
+#include "response/critical_speed_study.hpp"
 #include "response/sweep_kernels.hpp"
 #include "test_support.hpp"
 
@@ -191,6 +193,38 @@ TEST(SweepKernels, OutputsSweptTogetherGiveTheSameBitsAsEachAlone) {
   speeds.clear();
   for (double v = 2.0; v <= 30.0; v += 0.05) speeds.push_back(v);
   expect_outputs_together_as_alone(frame, solve_modes(frame), *scene.sources.front(), speeds, "complex modes");
+}
+
+// A design study's variant sweeps its curves without phases (CurvePhases::left_out): every
+// curve's phases are empty, and everything else of the study is the same bits as with them
+// (the phases are written beside the amplitudes, never into them). Over the bundled scenes
+// whose sweeps take the modal path (resort car) and the complex modes (steam locomotive).
+TEST(SweepKernels, AStudyWithoutPhasesHasTheSameCurvesAndPeaksBitForBit) {
+  for (const char* name : {"resort_car_10m_rails.toml", "steam_locomotive_unbalance.toml"}) {
+    const Scene scene = load_scene(std::string(RAILMODAL_DATA_DIR) + "/scenes/" + name);
+    const Vehicle vehicle = load_vehicle(scene.vehicle_file);
+    const auto assembled = [&] { return assemble(vehicle, scene.dofs); };
+    CriticalSpeedStudy with, without;
+    response::study_critical_speeds_into(scene, assembled, &with);
+    response::study_critical_speeds_into(scene, assembled, &without, {}, response::CurvePhases::left_out);
+    ASSERT_EQ(with.curves.size(), without.curves.size()) << name;
+    ASSERT_FALSE(with.curves.empty()) << name;
+    for (size_t c = 0; c < with.curves.size(); ++c) {
+      EXPECT_EQ(with.curves[c].phases_deg.size(), with.curves[c].amplitudes.size()) << name;
+      EXPECT_TRUE(without.curves[c].phases_deg.empty()) << name;
+      EXPECT_EQ(with.curves[c].amplitudes, without.curves[c].amplitudes) << name;
+      EXPECT_EQ(with.curves[c].unbounded, without.curves[c].unbounded) << name;
+      EXPECT_EQ(with.curves[c].speeds, without.curves[c].speeds) << name;
+    }
+    ASSERT_EQ(with.peaks.size(), without.peaks.size()) << name;
+    for (size_t p = 0; p < with.peaks.size(); ++p) {
+      EXPECT_EQ(with.peaks[p].peak.speed, without.peaks[p].peak.speed) << name;
+      EXPECT_EQ(with.peaks[p].peak.amplitude, without.peaks[p].peak.amplitude) << name;
+    }
+    ASSERT_EQ(with.critical_speeds.size(), without.critical_speeds.size()) << name;
+    for (size_t r = 0; r < with.critical_speeds.size(); ++r)
+      EXPECT_EQ(with.critical_speeds[r].speed, without.critical_speeds[r].speed) << name;
+  }
 }
 
 }  // namespace
