@@ -181,7 +181,8 @@ CriticalSpeedStudy response::study_critical_speeds_of(const Scene& scene, const 
 }
 
 void response::study_critical_speeds_into(Scene given, const std::function<LinearSystem()>& assembled,
-                                          CriticalSpeedStudy* into, const std::function<void(double)>& progress) {
+                                          CriticalSpeedStudy* into, const std::function<void(double)>& progress,
+                                          ResonanceDetail detail) {
   model::refuse_ride_only_scene(given, "critical speeds");
   CriticalSpeedStudy& study = *into;
   StageClock clock(&study.summary);
@@ -199,11 +200,15 @@ void response::study_critical_speeds_into(Scene given, const std::function<Linea
   options.friction_reference_amplitude = scene.friction_reference_amplitude;
   // Every row reports every output of the curves: the scene's, or (when it names none) the
   // DOFs the rows report, known only once they are found — then the rows are found again. A
-  // scene that names its outputs finds them once (half the time of a study's critical speeds).
-  if (scene.outputs.empty()) study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
+  // scene that names its outputs finds them once (half the time of a study's critical speeds),
+  // and so do summary rows, which report no outputs.
+  if (scene.outputs.empty())
+    study.critical_speeds = find_critical_speeds_in(study.system, study.modes, sources, options, detail);
   const std::vector<OutputRequest> outputs = curve_outputs(scene, study);
-  options.outputs = outputs;
-  study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
+  if (detail == ResonanceDetail::full || !scene.outputs.empty()) {
+    options.outputs = outputs;
+    study.critical_speeds = find_critical_speeds_in(study.system, study.modes, sources, options, detail);
+  }
   clock.lap("critical speeds");
 
   const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);

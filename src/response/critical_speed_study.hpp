@@ -3,10 +3,27 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "railmodal/critical_speed.hpp"
 
 namespace railmodal::response {
+
+/// What a caller reads of each critical speed. `full`: everything find_critical_speeds gives.
+/// `summary`: the row without its steady response at the resonance (the direct harmonic solve:
+/// `unbounded`, `amplitude` and `outputs` are left at their defaults), for a caller that reads
+/// only the speeds, modes and friction criterion (a design variant's summary,
+/// VariantResult::CriticalSpeedSummary). Every other field is the same bits as `full`'s. The
+/// solve it leaves out cannot fail for a system that has modes: at ω > 0 the dynamic stiffness
+/// bordered by the undamped modes at ω is regular (a null vector x would have Cx = 0 and
+/// (K − ω²M)x = 0, an undamped mode at ω, which the border excludes).
+enum class ResonanceDetail { full, summary };
+
+/// find_critical_speeds with the rows' detail chosen.
+std::vector<CriticalSpeed> find_critical_speeds_in(const LinearSystem& system, const ModalResult& modes,
+                                                   const std::vector<const ExcitationSource*>& sources,
+                                                   const CriticalSpeedOptions& options, ResonanceDetail detail,
+                                                   AnalysisSummary* summary = nullptr);
 
 /// study_critical_speeds(scene, vehicle, progress) with the vehicle's system in the scene's
 /// dofs given by `assembled` (called where study_critical_speeds assembles, so that errors
@@ -17,8 +34,10 @@ CriticalSpeedStudy study_critical_speeds_of(const Scene& scene, const std::funct
 /// The same into `study` (default-constructed), taking the scene as given: a caller that owns
 /// it moves it in instead of copying it. Where it throws, what `study` was given so far stays
 /// there: its scene, and its system once `assembled` returned (a study's variant then
-/// describes its failure from them, the vehicle having moved into the system).
+/// describes its failure from them, the vehicle having moved into the system). With `detail`
+/// summary its critical speeds are find_critical_speeds_in's summary rows, found once.
 void study_critical_speeds_into(Scene scene, const std::function<LinearSystem()>& assembled, CriticalSpeedStudy* study,
-                                const std::function<void(double)>& progress = {});
+                                const std::function<void(double)>& progress = {},
+                                ResonanceDetail detail = ResonanceDetail::full);
 
 }  // namespace railmodal::response

@@ -9,6 +9,7 @@
 #include "model/analysis_limits.hpp"
 #include "railmodal/response.hpp"
 #include "require_valid.hpp"
+#include "response/critical_speed_study.hpp"
 #include "response/friction_damping.hpp"
 #include "response/modal_checks.hpp"
 #include "summary/stage_clock.hpp"
@@ -133,9 +134,11 @@ std::vector<WeightedMode> cluster_of(const ModalResult& modes, const Eigenspace&
 }
 
 // The DOF a critical speed reports: the mode's most energetic one, or for a repeated frequency
-// the one that moves most, weighted by its mass, in the driven combination.
-int reported_dof(const LinearSystem& system, const Eigenspace& group, const Eigen::VectorXd& magnitude) {
+// the one that moves most, weighted by its mass, in the driven combination (whose magnitude per
+// DOF is read only then).
+int reported_dof(const LinearSystem& system, const Eigenspace& group, const Eigen::VectorXcd& shape) {
   if (group.size() == 1) return dominant_dof(*group.front());
+  const Eigen::VectorXd magnitude = shape.cwiseAbs();
   int out = 0;
   for (int d = 1; d < magnitude.size(); ++d)
     if (magnitude(d) * std::sqrt(std::abs(system.mass(d, d))) > magnitude(out) * std::sqrt(std::abs(system.mass(out, out))))
@@ -219,10 +222,12 @@ SourceLoads source_loads(const LinearSystem& system, const ExcitationSource& sou
   return loads;
 }
 
-// The critical speed where harmonic k of source s meets the eigenspace, if the load drives it.
+// The critical speed where harmonic k of source s meets the eigenspace, if the load drives it;
+// with `detail` summary, without its steady response (response::ResonanceDetail).
 std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalResult& modes,
                                        const ExcitationSource& source, int s, int k, double speed,
-                                       const Eigenspace& group, const CriticalSpeedOptions& options) {
+                                       const Eigenspace& group, const CriticalSpeedOptions& options,
+                                       response::ResonanceDetail detail) {
   const Mode& first = *group.front();
   const SourceLoads loads = source_loads(system, source, speed);
   const HarmonicLoad& load = loads.harmonics[k - 1];
@@ -233,12 +238,8 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   // joints), and harmonics that are round-off themselves (the 3rd of a full-length cosine dip).
   const double source_load = loads.norm;
   if (!(d.F0 > response::kLoadRoundOff * first.shape.norm() * source_load)) return std::nullopt;
-  // A complex modal-force vector (inputs out of phase) gives a rotating combination;
-  // its magnitude per DOF is what the output sees.
-  const Eigen::VectorXd magnitude = d.shape.cwiseAbs();
   // The friction criterion and the growth: on the load's projection onto the cluster.
   const DrivenMode cluster = driven_mode(cluster_of(modes, group), Q);
-  const Eigen::VectorXd cluster_magnitude = cluster.shape.cwiseAbs();
 
   CriticalSpeed row;
   row.speed = speed;
@@ -251,9 +252,13 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   for (size_t g = 1; g < group.size(); ++g)
     if (group[g]->name != first.name) row.mode_name += " + " + group[g]->name;
   row.frequency_hz = first.frequency_hz;
-  const int out = reported_dof(system, group, magnitude);
+  // A complex modal-force vector (inputs out of phase) gives a rotating combination;
+  // its magnitude per DOF is what the output sees.
+  const int out = reported_dof(system, group, d.shape);
   row.output = system.dofs[out].label;
-  add_growth_and_friction(system, first.eigenvalue, cluster, cluster_magnitude(out), &row);
+  add_growth_and_friction(system, first.eigenvalue, cluster, std::abs(cluster.shape(out)), &row);
+  if (detail == response::ResonanceDetail::summary) return row;
+  const Eigen::VectorXd cluster_magnitude = cluster.shape.cwiseAbs();
   const HarmonicResponse response =
       respond(system, modes, load, Q, source_load, options.friction_reference_amplitude).response;
   row.unbounded = unbounded_at(response, modes, out);
@@ -268,6 +273,13 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
 std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,
                                                 const std::vector<const ExcitationSource*>& sources,
                                                 const CriticalSpeedOptions& options, AnalysisSummary* summary) {
+  return response::find_critical_speeds_in(system, modes, sources, options, response::ResonanceDetail::full, summary);
+}
+
+std::vector<CriticalSpeed> response::find_critical_speeds_in(const LinearSystem& system, const ModalResult& modes,
+                                                             const std::vector<const ExcitationSource*>& sources,
+                                                             const CriticalSpeedOptions& options,
+                                                             ResonanceDetail detail, AnalysisSummary* summary) {
   require_valid(options, "critical speeds: ");
   model::refuse_series_dampers(system, "critical speeds");
   for (const OutputRequest& o : options.outputs)
@@ -289,7 +301,7 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
         const double speed = source.speed_for(group.front()->frequency_hz, k);
         if (speed < options.min_speed || speed > options.max_speed) continue;
         ++in_range;
-        if (auto row = resonance(system, modes, source, static_cast<int>(s), k, speed, group, options))
+        if (auto row = resonance(system, modes, source, static_cast<int>(s), k, speed, group, options, detail))
           found.push_back(std::move(*row));
       }
   }

@@ -396,10 +396,12 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
         lateral = std::move(both.stiffness);
         return std::move(both.system);
       };
+      // Summary rows: a variant's result reads no resonance's steady response.
+      constexpr auto kRows = response::ResonanceDetail::summary;
       if (owned)
-        response::study_critical_speeds_into(std::move(owned->scene), assembled, &study);
+        response::study_critical_speeds_into(std::move(owned->scene), assembled, &study, {}, kRows);
       else
-        response::study_critical_speeds_into(variant.scene, assembled, &study);
+        response::study_critical_speeds_into(variant.scene, assembled, &study, {}, kRows);
     } catch (const NumericalError& e) {
       describe_failure(vehicle_moved ? study.system.vehicle : variant.vehicle, dofs, e.what(), &r);
       clock.lap("failure");
