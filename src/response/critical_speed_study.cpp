@@ -19,21 +19,47 @@ namespace railmodal {
 
 namespace {
 
-std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpeed>& rows) {
-  // The grid comes out ascending (min(v₀ + i·Δv, v_max) never decreases), so only the few
-  // critical speeds are sorted and merged in: the sorted union, as sorting all would give.
-  std::vector<double> grid;
+// The scene's own grid, ascending and without repeats. Kept per thread for the range it was
+// made for: a study's variants share their scene's range, and each made the same 341 points.
+const std::vector<double>& scene_grid(const Scene& scene) {
+  struct Kept {
+    double min = std::nan(""), max = std::nan(""), step = std::nan("");  // NaN: nothing kept yet
+    std::vector<double> values;
+  };
+  thread_local Kept kept;
+  if (kept.min == scene.min_speed && kept.max == scene.max_speed && kept.step == scene.speed_step) return kept.values;
+  std::vector<double>& grid = kept.values;
+  grid.clear();
   const int steps = static_cast<int>(std::ceil((scene.max_speed - scene.min_speed) / scene.speed_step - 1e-9));
   grid.reserve(static_cast<size_t>(steps) + 1);  // one allocation, not a doubling per few points
   for (int i = 0; i <= steps; ++i) grid.push_back(std::min(scene.min_speed + i * scene.speed_step, scene.max_speed));
   if (!std::is_sorted(grid.begin(), grid.end())) std::sort(grid.begin(), grid.end());  // a scene made in code
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  kept.min = scene.min_speed, kept.max = scene.max_speed, kept.step = scene.speed_step;
+  return grid;
+}
+
+// The sorted union of the scene's grid and the critical speeds, without repeats (the grid
+// comes out ascending: min(v₀ + i·Δv, v_max) never decreases). The few critical speeds are
+// sorted and each put in its place, the grid copied in runs between them: the same values as
+// merging the two and removing repeats.
+std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpeed>& rows) {
+  const std::vector<double>& grid = scene_grid(scene);
   std::vector<double> critical;
   critical.reserve(rows.size());
   for (const auto& r : rows) critical.push_back(r.speed);
   std::sort(critical.begin(), critical.end());
-  std::vector<double> speeds(grid.size() + critical.size());
-  std::merge(grid.begin(), grid.end(), critical.begin(), critical.end(), speeds.begin());
-  speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
+  std::vector<double> speeds;
+  speeds.reserve(grid.size() + critical.size());
+  auto next = grid.begin();  // the first grid point not yet copied
+  for (const double v : critical) {
+    const auto at = std::lower_bound(next, grid.end(), v);
+    speeds.insert(speeds.end(), next, at);
+    next = at;
+    const bool on_grid = at != grid.end() && *at == v;
+    if (!on_grid && (speeds.empty() || speeds.back() != v)) speeds.push_back(v);  // else a repeat
+  }
+  speeds.insert(speeds.end(), next, grid.end());
   return speeds;
 }
 
@@ -211,10 +237,10 @@ void response::study_critical_speeds_into(Scene given, const std::function<Linea
   }
   clock.lap("critical speeds");
 
-  const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
+  const SpeedGrid grid(speed_grid(scene, study.critical_speeds));  // the chunks' grids joined, shared by every curve
+  const std::vector<double>& speeds = grid.values();
   check_curve_points(sources.size(), outputs.size(), speeds.size(), study.critical_speeds.size());
   const double total = static_cast<double>(sources.size() * speeds.size());
-  const SpeedGrid grid(speeds);  // the chunks' grids joined, shared by every curve
   double sweep_seconds = 0.0, peak_seconds = 0.0;  // interleaved per source: timed apart
   for (size_t s = 0; s < sources.size(); ++s) {
     const auto started = std::chrono::steady_clock::now();
