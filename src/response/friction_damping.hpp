@@ -29,6 +29,22 @@ double leaf_hold_stretch(const LinearSystem& system, std::size_t element);
 /// amplitude |δ| of its own stretch. Equal to the real version for ψ = φ·e^{iθ}.
 double modal_friction_work(const LinearSystem& system, const Eigen::VectorXcd& shape);
 
+/// A friction stage of a system as modal_friction_work weighs it: its element, R = φ × load and
+/// the stage's share of the element's stretch.
+struct FrictionStage {
+  std::size_t element;
+  double friction;
+  double share;
+};
+
+/// The system's friction stages, element by element: found once for many modal_friction_work
+/// calls on one system (the critical speeds weigh one combination per resonance).
+std::vector<FrictionStage> friction_stages(const LinearSystem& system);
+
+/// modal_friction_work(system, shape) over `stages` = friction_stages(system): the same sum.
+double modal_friction_work(const LinearSystem& system, const std::vector<FrictionStage>& stages,
+                           const Eigen::VectorXcd& shape);
+
 /// Σ R·s over the friction stages of element `element` (R = φ × load, s the stage's share of the
 /// element's stretch): a Coulomb force level seen across the element. 0 without friction.
 /// The random ride's statistical linearisation takes its friction from here

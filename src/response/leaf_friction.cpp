@@ -71,10 +71,21 @@ double modal_friction_work(const LinearSystem& system, const Eigen::VectorXd& sh
 }
 
 double response::modal_friction_work(const LinearSystem& system, const Eigen::VectorXcd& shape) {
+  return modal_friction_work(system, friction_stages(system), shape);
+}
+
+std::vector<response::FrictionStage> response::friction_stages(const LinearSystem& system) {
+  std::vector<FrictionStage> stages;
+  for_each_friction_stage(system, [&](size_t k, double friction, double share) { stages.push_back({k, friction, share}); });
+  return stages;
+}
+
+double response::modal_friction_work(const LinearSystem& system, const std::vector<FrictionStage>& stages,
+                                     const Eigen::VectorXcd& shape) {
   double work = 0.0;
-  for_each_friction_stage(system, [&](size_t k, double friction, double share) {
-    work += friction * std::abs(share * system.element_vertical_map.row(k).cast<std::complex<double>>().dot(shape));
-  });
+  for (const FrictionStage& s : stages)
+    work += s.friction *
+            std::abs(s.share * system.element_vertical_map.row(s.element).cast<std::complex<double>>().dot(shape));
   return work;
 }
 
