@@ -83,11 +83,12 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
   std::vector<Peak> peaks;
   const auto& a = curve.amplitudes;
   if (a.size() < 3) return peaks;
-  const double largest = largest_bounded(curve);
+  double largest = -1.0;  // largest_bounded (≥ 0) once a bounded maximum needs it: many curves have none
   for (size_t i = 1; i + 1 < a.size(); ++i) {
     // The amplitudes first: few points are maxima, and the flags are bits, slow to read.
     if (!(a[i] >= a[i - 1] && a[i] > a[i + 1])) continue;
     if (curve.unbounded[i - 1] || curve.unbounded[i] || curve.unbounded[i + 1]) continue;
+    if (largest < 0.0) largest = largest_bounded(curve);
     if (a[i] >= 0.01 * largest) {
       const Peak p = refine_peak(study.system, study.modes, source, output, curve.speeds[i - 1], curve.speeds[i + 1],
                                  kPeakTolerance, study.scene.friction_reference_amplitude);
@@ -211,7 +212,8 @@ void response::study_critical_speeds_into(Scene given, const std::function<Linea
                                           ResonanceDetail detail) {
   model::refuse_ride_only_scene(given, "critical speeds");
   CriticalSpeedStudy& study = *into;
-  StageClock clock(&study.summary);
+  const bool full = detail == ResonanceDetail::full;
+  StageClock clock(full ? &study.summary : nullptr);  // summary rows' callers keep their own summary
   study.scene = std::move(given);
   const Scene& scene = study.scene;
   study.system = assembled();
@@ -231,7 +233,7 @@ void response::study_critical_speeds_into(Scene given, const std::function<Linea
   if (scene.outputs.empty())
     study.critical_speeds = find_critical_speeds_in(study.system, study.modes, sources, options, detail);
   const std::vector<OutputRequest> outputs = curve_outputs(scene, study);
-  if (detail == ResonanceDetail::full || !scene.outputs.empty()) {
+  if (full || !scene.outputs.empty()) {
     options.outputs = outputs;
     study.critical_speeds = find_critical_speeds_in(study.system, study.modes, sources, options, detail);
   }
@@ -242,21 +244,23 @@ void response::study_critical_speeds_into(Scene given, const std::function<Linea
   check_curve_points(sources.size(), outputs.size(), speeds.size(), study.critical_speeds.size());
   const double total = static_cast<double>(sources.size() * speeds.size());
   double sweep_seconds = 0.0, peak_seconds = 0.0;  // interleaved per source: timed apart
+  using Clock = std::chrono::steady_clock;
   for (size_t s = 0; s < sources.size(); ++s) {
-    const auto started = std::chrono::steady_clock::now();
+    const auto started = full ? Clock::now() : Clock::time_point{};
     std::vector<AmplitudeCurve> curves = source_curves(study, *sources[s], static_cast<int>(s), outputs, speeds,
                                                        static_cast<double>(s * speeds.size()), total, progress);
-    const auto swept = std::chrono::steady_clock::now();
+    const auto swept = full ? Clock::now() : Clock::time_point{};
     for (size_t o = 0; o < curves.size(); ++o) {
       curves[o].speeds = grid;
       study.curves.push_back(std::move(curves[o]));
       for (const Peak& p : refine_peaks(study, *sources[s], outputs[o], study.curves.back()))
         study.peaks.push_back({static_cast<int>(study.curves.size()) - 1, p});
     }
+    if (!full) continue;
     sweep_seconds += std::chrono::duration<double>(swept - started).count();
-    peak_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - swept).count();
+    peak_seconds += std::chrono::duration<double>(Clock::now() - swept).count();
   }
-  summarise(&study, sweep_seconds, peak_seconds);
+  if (full) summarise(&study, sweep_seconds, peak_seconds);
 }
 
 }  // namespace railmodal

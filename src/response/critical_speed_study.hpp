@@ -35,7 +35,9 @@ CriticalSpeedStudy study_critical_speeds_of(const Scene& scene, const std::funct
 /// it moves it in instead of copying it. Where it throws, what `study` was given so far stays
 /// there: its scene, and its system once `assembled` returned (a study's variant then
 /// describes its failure from them, the vehicle having moved into the system). With `detail`
-/// summary its critical speeds are find_critical_speeds_in's summary rows, found once.
+/// summary its critical speeds are find_critical_speeds_in's summary rows, found once, and the
+/// study's own `summary` (stage times, method, checks) is left empty: a design variant's result
+/// has a summary of its own and reads none of the study's.
 void study_critical_speeds_into(Scene scene, const std::function<LinearSystem()>& assembled, CriticalSpeedStudy* study,
                                 const std::function<void(double)>& progress = {},
                                 ResonanceDetail detail = ResonanceDetail::full);
