@@ -155,15 +155,14 @@ double growth_at(double eigenvalue, const DrivenMode& cluster, double at_output)
 
 // Growth per half period without damping, and what leaf friction takes of it (Den Hartog), of
 // the combination the load drives in the cluster; `at_output` is its entry at the output.
-void add_growth_and_friction(const LinearSystem& system, const std::vector<response::FrictionStage>& stages,
-                             double eigenvalue, const DrivenMode& cluster, double at_output, CriticalSpeed* row) {
+void add_growth_and_friction(const response::FrictionStages& stages, double eigenvalue, const DrivenMode& cluster, double at_output, CriticalSpeed* row) {
   row->growth_per_half_period = growth_at(eigenvalue, cluster, at_output);
   // Each friction stage slides over the amplitude of its own stretch, in phase with the
   // others or not: Σ R|δ(ψ)| per unit modal amplitude. The energy balance on ψ's amplitude a
   // gains π F₀/(2λ) and loses 2R/λ per half period; the growth above maps a to the output by
   // (N/F₀)|ψ(i)| (π F₀/(2λ)·(N/F₀)|ψ(i)| = π N|ψ(i)|/(2λ)), so the decrement is mapped alike:
   // growth ≤ decrement at the output exactly when π F₀ ≤ 4R, the criterion `friction_stops`.
-  const double friction = response::modal_friction_work(system, stages, cluster.shape);
+  const double friction = response::modal_friction_work(stages, cluster.shape);
   row->friction_decrement_per_half_period = 2.0 * friction / eigenvalue * (cluster.N / cluster.F0) * at_output;
   if (friction > 0.0) {
     row->friction_stops = kPi * cluster.F0 <= 4.0 * friction;
@@ -225,7 +224,7 @@ SourceLoads source_loads(const LinearSystem& system, const ExcitationSource& sou
 std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalResult& modes,
                                        const ExcitationSource& source, int s, int k, double speed,
                                        const Eigenspace& group, const CriticalSpeedOptions& options,
-                                       const std::vector<response::FrictionStage>& stages,
+                                       const response::FrictionStages& stages,
                                        response::ResonanceDetail detail) {
   const Mode& first = *group.front();
   const SourceLoads loads = source_loads(system, source, speed);
@@ -257,7 +256,7 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   // its magnitude per DOF is what the output sees.
   const int out = reported_dof(system, group, d.shape);
   row.output = system.dofs[out].label;
-  add_growth_and_friction(system, stages, first.eigenvalue, cluster, std::abs(cluster.shape(out)), &row);
+  add_growth_and_friction(stages, first.eigenvalue, cluster, std::abs(cluster.shape(out)), &row);
   if (detail == response::ResonanceDetail::summary) return row;
   const Eigen::VectorXd cluster_magnitude = cluster.shape.cwiseAbs();
   const HarmonicResponse response =
@@ -290,7 +289,7 @@ std::vector<CriticalSpeed> response::find_critical_speeds_in(const LinearSystem&
   if (summary) *summary = AnalysisSummary{};
   StageClock clock(summary);  // no clock, no strings without a summary
   const auto groups = response::eigenspaces(modes);
-  const std::vector<response::FrictionStage> stages = response::friction_stages(system);  // found once, not per resonance
+  const response::FrictionStages stages = response::friction_stages(system);  // found once, not per resonance
   int in_range = 0;
   std::vector<CriticalSpeed> found;
   size_t most = 0;  // every harmonic of every source meeting every eigenspace
