@@ -19,21 +19,47 @@ namespace railmodal {
 
 namespace {
 
-std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpeed>& rows) {
-  // The grid comes out ascending (min(v₀ + i·Δv, v_max) never decreases), so only the few
-  // critical speeds are sorted and merged in: the sorted union, as sorting all would give.
-  std::vector<double> grid;
+// The scene's own grid, ascending and without repeats. Kept per thread for the range it was
+// made for: a study's variants share their scene's range, and each made the same 341 points.
+const std::vector<double>& scene_grid(const Scene& scene) {
+  struct Kept {
+    double min = std::nan(""), max = std::nan(""), step = std::nan("");  // NaN: nothing kept yet
+    std::vector<double> values;
+  };
+  thread_local Kept kept;
+  if (kept.min == scene.min_speed && kept.max == scene.max_speed && kept.step == scene.speed_step) return kept.values;
+  std::vector<double>& grid = kept.values;
+  grid.clear();
   const int steps = static_cast<int>(std::ceil((scene.max_speed - scene.min_speed) / scene.speed_step - 1e-9));
   grid.reserve(static_cast<size_t>(steps) + 1);  // one allocation, not a doubling per few points
   for (int i = 0; i <= steps; ++i) grid.push_back(std::min(scene.min_speed + i * scene.speed_step, scene.max_speed));
   if (!std::is_sorted(grid.begin(), grid.end())) std::sort(grid.begin(), grid.end());  // a scene made in code
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  kept.min = scene.min_speed, kept.max = scene.max_speed, kept.step = scene.speed_step;
+  return grid;
+}
+
+// The sorted union of the scene's grid and the critical speeds, without repeats (the grid
+// comes out ascending: min(v₀ + i·Δv, v_max) never decreases). The few critical speeds are
+// sorted and each put in its place, the grid copied in runs between them: the same values as
+// merging the two and removing repeats.
+std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpeed>& rows) {
+  const std::vector<double>& grid = scene_grid(scene);
   std::vector<double> critical;
   critical.reserve(rows.size());
   for (const auto& r : rows) critical.push_back(r.speed);
   std::sort(critical.begin(), critical.end());
-  std::vector<double> speeds(grid.size() + critical.size());
-  std::merge(grid.begin(), grid.end(), critical.begin(), critical.end(), speeds.begin());
-  speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
+  std::vector<double> speeds;
+  speeds.reserve(grid.size() + critical.size());
+  auto next = grid.begin();  // the first grid point not yet copied
+  for (const double v : critical) {
+    const auto at = std::lower_bound(next, grid.end(), v);
+    speeds.insert(speeds.end(), next, at);
+    next = at;
+    const bool on_grid = at != grid.end() && *at == v;
+    if (!on_grid && (speeds.empty() || speeds.back() != v)) speeds.push_back(v);  // else a repeat
+  }
+  speeds.insert(speeds.end(), next, grid.end());
   return speeds;
 }
 
@@ -57,11 +83,12 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
   std::vector<Peak> peaks;
   const auto& a = curve.amplitudes;
   if (a.size() < 3) return peaks;
-  const double largest = largest_bounded(curve);
+  double largest = -1.0;  // largest_bounded (≥ 0) once a bounded maximum needs it: many curves have none
   for (size_t i = 1; i + 1 < a.size(); ++i) {
     // The amplitudes first: few points are maxima, and the flags are bits, slow to read.
     if (!(a[i] >= a[i - 1] && a[i] > a[i + 1])) continue;
     if (curve.unbounded[i - 1] || curve.unbounded[i] || curve.unbounded[i + 1]) continue;
+    if (largest < 0.0) largest = largest_bounded(curve);
     if (a[i] >= 0.01 * largest) {
       const Peak p = refine_peak(study.system, study.modes, source, output, curve.speeds[i - 1], curve.speeds[i + 1],
                                  kPeakTolerance, study.scene.friction_reference_amplitude);
@@ -182,10 +209,11 @@ CriticalSpeedStudy response::study_critical_speeds_of(const Scene& scene, const 
 
 void response::study_critical_speeds_into(Scene given, const std::function<LinearSystem()>& assembled,
                                           CriticalSpeedStudy* into, const std::function<void(double)>& progress,
-                                          CurvePhases phases) {
+                                          StudyDetail detail) {
   model::refuse_ride_only_scene(given, "critical speeds");
   CriticalSpeedStudy& study = *into;
-  StageClock clock(&study.summary);
+  const bool full = detail.rows == ResonanceDetail::full;
+  StageClock clock(full ? &study.summary : nullptr);  // summary rows' callers keep their own summary
   study.scene = std::move(given);
   const Scene& scene = study.scene;
   study.system = assembled();
@@ -200,34 +228,40 @@ void response::study_critical_speeds_into(Scene given, const std::function<Linea
   options.friction_reference_amplitude = scene.friction_reference_amplitude;
   // Every row reports every output of the curves: the scene's, or (when it names none) the
   // DOFs the rows report, known only once they are found — then the rows are found again. A
-  // scene that names its outputs finds them once (half the time of a study's critical speeds).
-  if (scene.outputs.empty()) study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
+  // scene that names its outputs finds them once (half the time of a study's critical speeds),
+  // and so do summary rows, which report no outputs.
+  if (scene.outputs.empty())
+    study.critical_speeds = find_critical_speeds_in(study.system, study.modes, sources, options, detail.rows);
   std::vector<OutputRequest> outputs = curve_outputs(scene, study);
-  options.outputs = outputs;
-  study.critical_speeds = find_critical_speeds(study.system, study.modes, sources, options);
+  if (full || !scene.outputs.empty()) {
+    options.outputs = outputs;
+    study.critical_speeds = find_critical_speeds_in(study.system, study.modes, sources, options, detail.rows);
+  }
   clock.lap("critical speeds");
-  for (OutputRequest& o : outputs) o.phase = phases == CurvePhases::kept;  // the curves' (the rows kept theirs)
+  for (OutputRequest& o : outputs) o.phase = detail.phases == CurvePhases::kept;  // the curves' (the rows kept theirs)
 
-  const std::vector<double> speeds = speed_grid(scene, study.critical_speeds);
+  const SpeedGrid grid(speed_grid(scene, study.critical_speeds));  // the chunks' grids joined, shared by every curve
+  const std::vector<double>& speeds = grid.values();
   check_curve_points(sources.size(), outputs.size(), speeds.size(), study.critical_speeds.size());
   const double total = static_cast<double>(sources.size() * speeds.size());
-  const SpeedGrid grid(speeds);  // the chunks' grids joined, shared by every curve
   double sweep_seconds = 0.0, peak_seconds = 0.0;  // interleaved per source: timed apart
+  using Clock = std::chrono::steady_clock;
   for (size_t s = 0; s < sources.size(); ++s) {
-    const auto started = std::chrono::steady_clock::now();
+    const auto started = full ? Clock::now() : Clock::time_point{};
     std::vector<AmplitudeCurve> curves = source_curves(study, *sources[s], static_cast<int>(s), outputs, speeds,
                                                        static_cast<double>(s * speeds.size()), total, progress);
-    const auto swept = std::chrono::steady_clock::now();
+    const auto swept = full ? Clock::now() : Clock::time_point{};
     for (size_t o = 0; o < curves.size(); ++o) {
       curves[o].speeds = grid;
       study.curves.push_back(std::move(curves[o]));
       for (const Peak& p : refine_peaks(study, *sources[s], outputs[o], study.curves.back()))
         study.peaks.push_back({static_cast<int>(study.curves.size()) - 1, p});
     }
+    if (!full) continue;
     sweep_seconds += std::chrono::duration<double>(swept - started).count();
-    peak_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - swept).count();
+    peak_seconds += std::chrono::duration<double>(Clock::now() - swept).count();
   }
-  summarise(&study, sweep_seconds, peak_seconds);
+  if (full) summarise(&study, sweep_seconds, peak_seconds);
 }
 
 }  // namespace railmodal

@@ -9,6 +9,7 @@
 #include "model/analysis_limits.hpp"
 #include "railmodal/response.hpp"
 #include "require_valid.hpp"
+#include "response/critical_speed_study.hpp"
 #include "response/friction_damping.hpp"
 #include "response/modal_checks.hpp"
 #include "summary/stage_clock.hpp"
@@ -86,28 +87,24 @@ struct DrivenMode {
   double N = 0.0;
 };
 
-DrivenMode driven_mode(const std::vector<WeightedMode>& modes, const Eigen::VectorXcd& Q) {
+// The first `count` of `modes`; the shape ψ only `with_shape` (F₀ and N do not depend on it).
+DrivenMode driven_mode(const std::vector<WeightedMode>& modes, size_t count, const Eigen::VectorXcd& Q,
+                       bool with_shape = true) {
   DrivenMode d;
-  d.shape = Eigen::VectorXcd::Zero(Q.size());
+  if (with_shape) d.shape = Eigen::VectorXcd::Zero(Q.size());
   double norm_squared = 0.0, projection = 0.0;
-  for (const WeightedMode& m : modes) {
+  for (size_t j = 0; j < count; ++j) {
+    const WeightedMode& m = modes[j];
     const std::complex<double> f = m.mode->shape.cast<std::complex<double>>().dot(Q);
-    d.shape += m.mode->shape.cast<std::complex<double>>() * (m.weight * std::conj(f));
+    if (with_shape) d.shape += m.mode->shape.cast<std::complex<double>>() * (m.weight * std::conj(f));
     norm_squared += m.weight * m.weight * std::norm(f);
     projection += m.weight * std::norm(f);
   }
   if (!(norm_squared > 0.0)) return d;
-  d.shape /= std::sqrt(norm_squared);
+  if (with_shape) d.shape /= std::sqrt(norm_squared);
   d.N = std::sqrt(norm_squared);
   d.F0 = projection / d.N;
   return d;
-}
-
-std::vector<WeightedMode> unweighted(const Eigenspace& group) {
-  std::vector<WeightedMode> modes;
-  modes.reserve(group.size());
-  for (const Mode* m : group) modes.push_back({m, 1.0});
-  return modes;
 }
 
 // Modes whose frequencies lie within this fraction of the resonance's are judged with it by the
@@ -120,10 +117,12 @@ std::vector<WeightedMode> unweighted(const Eigenspace& group) {
 // when a design passes through the coincidence (issue 17 item 6).
 constexpr double kClusterGap = 0.01;
 
-// The eigenspace and its neighbours within kClusterGap, weighted as above.
+// The eigenspace (first, each weighted 1) and its neighbours within kClusterGap, weighted as above.
 std::vector<WeightedMode> cluster_of(const ModalResult& modes, const Eigenspace& group) {
   const double f = group.front()->frequency_hz;
-  std::vector<WeightedMode> cluster = unweighted(group);
+  std::vector<WeightedMode> cluster;
+  cluster.reserve(modes.modes.size());  // one allocation: at most every mode
+  for (const Mode* m : group) cluster.push_back({m, 1.0});
   for (const Mode& m : modes.modes) {
     if (m.kind != ModeKind::oscillatory || std::find(group.begin(), group.end(), &m) != group.end()) continue;
     const double gap = std::abs(m.frequency_hz - f) / std::max(m.frequency_hz, f);  // alike seen from either
@@ -133,9 +132,11 @@ std::vector<WeightedMode> cluster_of(const ModalResult& modes, const Eigenspace&
 }
 
 // The DOF a critical speed reports: the mode's most energetic one, or for a repeated frequency
-// the one that moves most, weighted by its mass, in the driven combination.
-int reported_dof(const LinearSystem& system, const Eigenspace& group, const Eigen::VectorXd& magnitude) {
+// the one that moves most, weighted by its mass, in the driven combination (whose magnitude per
+// DOF is read only then).
+int reported_dof(const LinearSystem& system, const Eigenspace& group, const Eigen::VectorXcd& shape) {
   if (group.size() == 1) return dominant_dof(*group.front());
+  const Eigen::VectorXd magnitude = shape.cwiseAbs();
   int out = 0;
   for (int d = 1; d < magnitude.size(); ++d)
     if (magnitude(d) * std::sqrt(std::abs(system.mass(d, d))) > magnitude(out) * std::sqrt(std::abs(system.mass(out, out))))
@@ -154,15 +155,14 @@ double growth_at(double eigenvalue, const DrivenMode& cluster, double at_output)
 
 // Growth per half period without damping, and what leaf friction takes of it (Den Hartog), of
 // the combination the load drives in the cluster; `at_output` is its entry at the output.
-void add_growth_and_friction(const LinearSystem& system, double eigenvalue, const DrivenMode& cluster, double at_output,
-                             CriticalSpeed* row) {
+void add_growth_and_friction(const response::FrictionStages& stages, double eigenvalue, const DrivenMode& cluster, double at_output, CriticalSpeed* row) {
   row->growth_per_half_period = growth_at(eigenvalue, cluster, at_output);
   // Each friction stage slides over the amplitude of its own stretch, in phase with the
   // others or not: Σ R|δ(ψ)| per unit modal amplitude. The energy balance on ψ's amplitude a
   // gains π F₀/(2λ) and loses 2R/λ per half period; the growth above maps a to the output by
   // (N/F₀)|ψ(i)| (π F₀/(2λ)·(N/F₀)|ψ(i)| = π N|ψ(i)|/(2λ)), so the decrement is mapped alike:
   // growth ≤ decrement at the output exactly when π F₀ ≤ 4R, the criterion `friction_stops`.
-  const double friction = response::modal_friction_work(system, cluster.shape);
+  const double friction = response::modal_friction_work(stages, cluster.shape);
   row->friction_decrement_per_half_period = 2.0 * friction / eigenvalue * (cluster.N / cluster.F0) * at_output;
   if (friction > 0.0) {
     row->friction_stops = kPi * cluster.F0 <= 4.0 * friction;
@@ -219,26 +219,27 @@ SourceLoads source_loads(const LinearSystem& system, const ExcitationSource& sou
   return loads;
 }
 
-// The critical speed where harmonic k of source s meets the eigenspace, if the load drives it.
+// The critical speed where harmonic k of source s meets the eigenspace, if the load drives it;
+// with `detail` summary, without its steady response (response::ResonanceDetail).
 std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalResult& modes,
                                        const ExcitationSource& source, int s, int k, double speed,
-                                       const Eigenspace& group, const CriticalSpeedOptions& options) {
+                                       const Eigenspace& group, const CriticalSpeedOptions& options,
+                                       const response::FrictionStages& stages,
+                                       response::ResonanceDetail detail) {
   const Mode& first = *group.front();
   const SourceLoads loads = source_loads(system, source, speed);
   const HarmonicLoad& load = loads.harmonics[k - 1];
   const Eigen::VectorXcd& Q = loads.generalized[k - 1];
-  const DrivenMode d = driven_mode(unweighted(group), Q);
+  // The eigenspace's own combination: its shape is read only to report a repeated frequency's DOF.
+  const std::vector<WeightedMode> cluster_modes = cluster_of(modes, group);
+  const DrivenMode d = driven_mode(cluster_modes, group.size(), Q, group.size() > 1);
   // Driven unless the modal force is round-off of the source's total load (one rule for
   // every part of the response: response::kLoadRoundOff): symmetry zeros (roll under square
   // joints), and harmonics that are round-off themselves (the 3rd of a full-length cosine dip).
   const double source_load = loads.norm;
   if (!(d.F0 > response::kLoadRoundOff * first.shape.norm() * source_load)) return std::nullopt;
-  // A complex modal-force vector (inputs out of phase) gives a rotating combination;
-  // its magnitude per DOF is what the output sees.
-  const Eigen::VectorXd magnitude = d.shape.cwiseAbs();
   // The friction criterion and the growth: on the load's projection onto the cluster.
-  const DrivenMode cluster = driven_mode(cluster_of(modes, group), Q);
-  const Eigen::VectorXd cluster_magnitude = cluster.shape.cwiseAbs();
+  const DrivenMode cluster = driven_mode(cluster_modes, cluster_modes.size(), Q);
 
   CriticalSpeed row;
   row.speed = speed;
@@ -251,9 +252,13 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   for (size_t g = 1; g < group.size(); ++g)
     if (group[g]->name != first.name) row.mode_name += " + " + group[g]->name;
   row.frequency_hz = first.frequency_hz;
-  const int out = reported_dof(system, group, magnitude);
+  // A complex modal-force vector (inputs out of phase) gives a rotating combination;
+  // its magnitude per DOF is what the output sees.
+  const int out = reported_dof(system, group, d.shape);
   row.output = system.dofs[out].label;
-  add_growth_and_friction(system, first.eigenvalue, cluster, cluster_magnitude(out), &row);
+  add_growth_and_friction(stages, first.eigenvalue, cluster, std::abs(cluster.shape(out)), &row);
+  if (detail == response::ResonanceDetail::summary) return row;
+  const Eigen::VectorXd cluster_magnitude = cluster.shape.cwiseAbs();
   const HarmonicResponse response =
       respond(system, modes, load, Q, source_load, options.friction_reference_amplitude).response;
   row.unbounded = unbounded_at(response, modes, out);
@@ -268,6 +273,13 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
 std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, const ModalResult& modes,
                                                 const std::vector<const ExcitationSource*>& sources,
                                                 const CriticalSpeedOptions& options, AnalysisSummary* summary) {
+  return response::find_critical_speeds_in(system, modes, sources, options, response::ResonanceDetail::full, summary);
+}
+
+std::vector<CriticalSpeed> response::find_critical_speeds_in(const LinearSystem& system, const ModalResult& modes,
+                                                             const std::vector<const ExcitationSource*>& sources,
+                                                             const CriticalSpeedOptions& options,
+                                                             ResonanceDetail detail, AnalysisSummary* summary) {
   require_valid(options, "critical speeds: ");
   model::refuse_series_dampers(system, "critical speeds");
   for (const OutputRequest& o : options.outputs)
@@ -277,6 +289,7 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
   if (summary) *summary = AnalysisSummary{};
   StageClock clock(summary);  // no clock, no strings without a summary
   const auto groups = response::eigenspaces(modes);
+  const response::FrictionStages stages = response::friction_stages(system);  // found once, not per resonance
   int in_range = 0;
   std::vector<CriticalSpeed> found;
   size_t most = 0;  // every harmonic of every source meeting every eigenspace
@@ -289,7 +302,7 @@ std::vector<CriticalSpeed> find_critical_speeds(const LinearSystem& system, cons
         const double speed = source.speed_for(group.front()->frequency_hz, k);
         if (speed < options.min_speed || speed > options.max_speed) continue;
         ++in_range;
-        if (auto row = resonance(system, modes, source, static_cast<int>(s), k, speed, group, options))
+        if (auto row = resonance(system, modes, source, static_cast<int>(s), k, speed, group, options, stages, detail))
           found.push_back(std::move(*row));
       }
   }

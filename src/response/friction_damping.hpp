@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "railmodal/linear_system.hpp"
@@ -28,6 +29,31 @@ double leaf_hold_stretch(const LinearSystem& system, std::size_t element);
 /// cluster driven out of phase): Σ R·|δ(ψ)| with δ(ψ) complex, each stage sliding over the
 /// amplitude |δ| of its own stretch. Equal to the real version for ψ = φ·e^{iθ}.
 double modal_friction_work(const LinearSystem& system, const Eigen::VectorXcd& shape);
+
+/// A friction stage of a system as modal_friction_work weighs it: its element, R = φ × load,
+/// the stage's share of the element's stretch, and where the nonzero entries of the element's
+/// row of element_vertical_map are in FrictionStages::entries ([begin, end)).
+struct FrictionStage {
+  std::size_t element;
+  double friction;
+  double share;
+  std::size_t begin, end;
+};
+
+/// Every friction stage of a system, element by element, with their rows' nonzero entries
+/// (DOF, coefficient) in the rows' order.
+struct FrictionStages {
+  std::vector<FrictionStage> stages;
+  std::vector<std::pair<int, double>> entries;
+};
+
+/// The system's friction stages: found once for many modal_friction_work calls on one system
+/// (the critical speeds weigh one combination per resonance).
+FrictionStages friction_stages(const LinearSystem& system);
+
+/// modal_friction_work(system, shape) from `stages` = friction_stages(system): the same value,
+/// bit for bit (each stretch summed over its row's nonzero entries only, in the same order).
+double modal_friction_work(const FrictionStages& stages, const Eigen::VectorXcd& shape);
 
 /// Σ R·s over the friction stages of element `element` (R = φ × load, s the stage's share of the
 /// element's stretch): a Coulomb force level seen across the element. 0 without friction.

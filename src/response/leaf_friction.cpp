@@ -78,6 +78,33 @@ double response::modal_friction_work(const LinearSystem& system, const Eigen::Ve
   return work;
 }
 
+response::FrictionStages response::friction_stages(const LinearSystem& system) {
+  FrictionStages out;
+  out.stages.reserve(system.vehicle.elements.size());      // a stage an element at most
+  out.entries.reserve(2 * system.vehicle.elements.size());  // a suspension's row moves about two DOFs
+  for_each_friction_stage(system, [&](size_t k, double friction, double share) {
+    FrictionStage stage{k, friction, share, out.entries.size(), 0};
+    for (int d = 0; d < system.element_vertical_map.cols(); ++d)
+      if (system.element_vertical_map(static_cast<Eigen::Index>(k), d) != 0.0)
+        out.entries.push_back({d, system.element_vertical_map(static_cast<Eigen::Index>(k), d)});
+    stage.end = out.entries.size();
+    out.stages.push_back(stage);
+  });
+  return out;
+}
+
+double response::modal_friction_work(const FrictionStages& stages, const Eigen::VectorXcd& shape) {
+  double work = 0.0;
+  for (const FrictionStage& s : stages.stages) {
+    // The stretch δ = row·ψ over the row's nonzero entries, in the row's order: the terms a
+    // zero entry adds are zeros, so |δ| is the dense product's to the bit.
+    std::complex<double> stretch = 0.0;
+    for (size_t e = s.begin; e < s.end; ++e) stretch += stages.entries[e].second * shape(stages.entries[e].first);
+    work += s.friction * std::abs(s.share * stretch);
+  }
+  return work;
+}
+
 bool has_leaf_friction(const LinearSystem& system) {
   bool any = false;
   for_each_friction_stage(system, [&](size_t, double, double) { any = true; });

@@ -396,12 +396,13 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
         lateral = std::move(both.stiffness);
         return std::move(both.system);
       };
-      // The variant reads the curves' amplitudes (peaks), never their phases.
-      constexpr auto kNoPhases = response::CurvePhases::left_out;
+      // Summary rows and no phases: a variant's result reads no resonance's steady response and
+      // only the curves' amplitudes (peaks).
+      constexpr response::StudyDetail kVariant{response::ResonanceDetail::summary, response::CurvePhases::left_out};
       if (owned)
-        response::study_critical_speeds_into(std::move(owned->scene), assembled, &study, {}, kNoPhases);
+        response::study_critical_speeds_into(std::move(owned->scene), assembled, &study, {}, kVariant);
       else
-        response::study_critical_speeds_into(variant.scene, assembled, &study, {}, kNoPhases);
+        response::study_critical_speeds_into(variant.scene, assembled, &study, {}, kVariant);
     } catch (const NumericalError& e) {
       describe_failure(vehicle_moved ? study.system.vehicle : variant.vehicle, dofs, e.what(), &r);
       clock.lap("failure");

@@ -206,7 +206,8 @@ TEST(SweepKernels, AStudyWithoutPhasesHasTheSameCurvesAndPeaksBitForBit) {
     const auto assembled = [&] { return assemble(vehicle, scene.dofs); };
     CriticalSpeedStudy with, without;
     response::study_critical_speeds_into(scene, assembled, &with);
-    response::study_critical_speeds_into(scene, assembled, &without, {}, response::CurvePhases::left_out);
+    response::study_critical_speeds_into(scene, assembled, &without, {},
+                                         {response::ResonanceDetail::full, response::CurvePhases::left_out});
     ASSERT_EQ(with.curves.size(), without.curves.size()) << name;
     ASSERT_FALSE(with.curves.empty()) << name;
     for (size_t c = 0; c < with.curves.size(); ++c) {

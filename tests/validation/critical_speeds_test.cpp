@@ -3,8 +3,12 @@
 // formula-level examples (hunting wavelengths, Meineke, E5 and E7 given as k ranges, VB-1,
 // VB-3) go through the source types that the general path uses.
 #include <cmath>
+#include <complex>
+#include <filesystem>
 
 #include "railmodal/critical_speed.hpp"
+#include "response/critical_speed_study.hpp"
+#include "response/friction_damping.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
@@ -165,6 +169,99 @@ TEST(CriticalSpeeds, ClusterNeighbourDoesNotInflateGrowthItDoesNotMove) {
     ASSERT_EQ(near.rows, 2) << "split at gap " << gap;
     EXPECT_NEAR(near.bounce_growth, alone.bounce_growth, 1e-6 * alone.bounce_growth) << "gap " << gap;
   }
+}
+
+// The critical-speed studies of every bundled scene that has one, with the vehicle's system.
+struct BundledStudy {
+  std::string name;
+  Scene scene;
+  CriticalSpeedStudy full;
+};
+
+std::vector<BundledStudy> bundled_studies() {
+  std::vector<BundledStudy> out;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(RAILMODAL_DATA_DIR) + "/scenes")) {
+    try {
+      Scene scene = load_scene(entry.path().string());
+      if (scene.sources.empty()) continue;  // a ride or simulation scene
+      CriticalSpeedStudy full = study_critical_speeds(scene, load_vehicle(scene.vehicle_file));
+      out.push_back({entry.path().filename().string(), std::move(scene), std::move(full)});
+    } catch (const std::exception&) {
+      // not a critical-speed scene (a simulation's, a hunting run's, a gear's)
+    }
+  }
+  return out;
+}
+
+// A design variant's study (ResonanceDetail::summary) leaves out each resonance's steady
+// response and the study's own summary, and nothing else: every other field of every row, the
+// curves and the peaks are the full study's, bit for bit (the same operations on the same
+// values), on every bundled critical-speed scene.
+TEST(CriticalSpeeds, SummaryRowsAreTheFullRowsWithoutTheirResponse) {
+  const std::vector<BundledStudy> studies = bundled_studies();
+  ASSERT_GE(studies.size(), 10u);  // the bundled critical-speed scenes (17 when written)
+  for (const BundledStudy& b : studies) {
+    SCOPED_TRACE(b.name);
+    const Vehicle vehicle = load_vehicle(b.scene.vehicle_file);
+    CriticalSpeedStudy summary;
+    response::study_critical_speeds_into(b.scene, [&] { return assemble(vehicle, b.scene.dofs); }, &summary, {},
+                                         {response::ResonanceDetail::summary, response::CurvePhases::kept});
+    ASSERT_EQ(summary.critical_speeds.size(), b.full.critical_speeds.size());
+    for (size_t i = 0; i < summary.critical_speeds.size(); ++i) {
+      const CriticalSpeed& s = summary.critical_speeds[i];
+      const CriticalSpeed& f = b.full.critical_speeds[i];
+      EXPECT_EQ(s.speed, f.speed);
+      EXPECT_EQ(s.source, f.source);
+      EXPECT_EQ(s.source_kind, f.source_kind);
+      EXPECT_EQ(s.harmonic, f.harmonic);
+      EXPECT_EQ(s.mode, f.mode);
+      EXPECT_EQ(s.mode_name, f.mode_name);
+      EXPECT_EQ(s.frequency_hz, f.frequency_hz);
+      EXPECT_EQ(s.output, f.output);
+      EXPECT_EQ(s.growth_per_half_period, f.growth_per_half_period);
+      EXPECT_EQ(s.friction_decrement_per_half_period, f.friction_decrement_per_half_period);
+      EXPECT_EQ(s.friction_stops, f.friction_stops);
+      EXPECT_EQ(s.friction_threshold_scale, f.friction_threshold_scale);
+      EXPECT_FALSE(s.unbounded);  // what the summary leaves out stays at its default
+      EXPECT_EQ(s.amplitude, 0.0);
+      EXPECT_TRUE(s.outputs.empty());
+    }
+    ASSERT_EQ(summary.curves.size(), b.full.curves.size());
+    for (size_t c = 0; c < summary.curves.size(); ++c) {
+      EXPECT_EQ(summary.curves[c].speeds, b.full.curves[c].speeds);
+      EXPECT_EQ(summary.curves[c].amplitudes, b.full.curves[c].amplitudes);
+      EXPECT_EQ(summary.curves[c].unbounded, b.full.curves[c].unbounded);
+    }
+    ASSERT_EQ(summary.peaks.size(), b.full.peaks.size());
+    for (size_t p = 0; p < summary.peaks.size(); ++p) {
+      EXPECT_EQ(summary.peaks[p].curve, b.full.peaks[p].curve);
+      EXPECT_EQ(summary.peaks[p].peak.speed, b.full.peaks[p].peak.speed);
+      EXPECT_EQ(summary.peaks[p].peak.amplitude, b.full.peaks[p].peak.amplitude);
+    }
+    EXPECT_TRUE(summary.summary.stages.empty());
+    EXPECT_FALSE(b.full.summary.stages.empty());
+  }
+}
+
+// The friction work from the stages found once (each stretch over its row's nonzero entries)
+// is the dense product's, bit for bit, for in-phase and out-of-phase combinations of the modes
+// of every bundled critical-speed scene's vehicle (the friction ones among them).
+TEST(CriticalSpeeds, FrictionWorkFromItsStagesIsTheDenseProducts) {
+  int with_friction = 0;
+  for (const BundledStudy& b : bundled_studies()) {
+    SCOPED_TRACE(b.name);
+    const LinearSystem& system = b.full.system;
+    const response::FrictionStages stages = response::friction_stages(system);
+    if (!stages.stages.empty()) ++with_friction;
+    const auto& modes = b.full.modes.modes;
+    for (size_t m = 0; m < modes.size(); ++m) {
+      const Eigen::VectorXcd shape = modes[m].shape.cast<std::complex<double>>() * std::polar(1.0, 0.3) +
+                                     modes[(m + 1) % modes.size()].shape.cast<std::complex<double>>() *
+                                         std::complex<double>(0.0, 0.7);
+      EXPECT_EQ(response::modal_friction_work(stages, shape), response::modal_friction_work(system, shape));
+    }
+  }
+  EXPECT_GE(with_friction, 3);  // the two-axle wagons' and the resort car's leaf springs
 }
 
 // Progress of a study: non-decreasing, ending at exactly 1.
