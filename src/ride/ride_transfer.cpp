@@ -4,9 +4,12 @@
 
 #include <cmath>
 #include <complex>
+#include <cstddef>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "model/analysis_limits.hpp"
 #include "model/element_stiffness.hpp"
@@ -287,41 +290,70 @@ Complex power_of_i_omega(int order, double omega) {
 // Eigen's blocked LU and triangular solves cost more in their dispatch than in arithmetic at
 // this size, and divide by each pivot in complex arithmetic (libgcc's __divdc3, a call per
 // element): here each pivot is inverted once, 1/p = p̄/|p|², and rows are scaled by products.
-Eigen::VectorXd solve_in_place(Eigen::MatrixXcd* D, Eigen::MatrixXcd* B) {
-  const Eigen::Index n = D->rows(), r = B->cols();
-  Eigen::MatrixXcd& a = *D;
-  Eigen::MatrixXcd& b = *B;
-  Eigen::VectorXd pivots = Eigen::VectorXd::Zero(n);
-  std::vector<Complex> inverse(static_cast<size_t>(n));
-  for (Eigen::Index p = 0; p < n; ++p) {
-    Eigen::Index best = p;
-    double largest = std::norm(a(p, p));
-    for (Eigen::Index i = p + 1; i < n; ++i)
-      if (std::norm(a(i, p)) > largest) {
-        largest = std::norm(a(i, p));
+// In real arithmetic on the columns' interleaved parts (std::complex's layout): the products
+// (ac − bd, ad + bc) are std::complex's own, without its NaN and infinity checks (C99 Annex G,
+// a branch per product), so the same bits for finite values; none other reaches here (a zero
+// pivot stops the elimination). `inverse` holds n values.
+void solve_in_place(int n, int r, std::complex<double>* D, std::complex<double>* B, double* pivots,
+                    std::complex<double>* inverse) {
+  double* a = reinterpret_cast<double*>(D);  // a(i, q) at 2(q·n + i), its imaginary part next
+  double* b = reinterpret_cast<double*>(B);
+  const auto at = [n](int i, int q) { return 2 * (static_cast<std::ptrdiff_t>(q) * n + i); };
+  for (int p = 0; p < n; ++p) pivots[p] = 0.0;
+  for (int p = 0; p < n; ++p) {
+    int best = p;
+    double largest = a[at(p, p)] * a[at(p, p)] + a[at(p, p) + 1] * a[at(p, p) + 1];
+    for (int i = p + 1; i < n; ++i) {
+      const double norm = a[at(i, p)] * a[at(i, p)] + a[at(i, p) + 1] * a[at(i, p) + 1];
+      if (norm > largest) {
+        largest = norm;
         best = i;
       }
-    pivots(p) = std::sqrt(largest);
-    if (!(largest > 0.0)) return pivots;  // singular: the caller throws
-    if (best != p) {
-      a.row(p).swap(a.row(best));
-      b.row(p).swap(b.row(best));
     }
-    const Complex pivot = a(p, p);
-    inverse[p] = std::conj(pivot) / largest;  // a complex by a real: no __divdc3
-    for (Eigen::Index i = p + 1; i < n; ++i) {
-      const Complex l = a(i, p) * inverse[p];
-      if (l == 0.0) continue;
-      for (Eigen::Index q = p + 1; q < n; ++q) a(i, q) -= l * a(p, q);
-      for (Eigen::Index q = 0; q < r; ++q) b(i, q) -= l * b(p, q);
+    pivots[p] = std::sqrt(largest);
+    if (!(largest > 0.0)) return;  // singular: the caller throws
+    if (best != p) {
+      for (int q = 0; q < n; ++q) std::swap(D[static_cast<std::ptrdiff_t>(q) * n + p], D[static_cast<std::ptrdiff_t>(q) * n + best]);
+      for (int q = 0; q < r; ++q) std::swap(B[static_cast<std::ptrdiff_t>(q) * n + p], B[static_cast<std::ptrdiff_t>(q) * n + best]);
+    }
+    const double vr = a[at(p, p)] / largest, vi = -a[at(p, p) + 1] / largest;  // conj(pivot)/|pivot|²
+    inverse[p] = Complex(vr, vi);
+    for (int i = p + 1; i < n; ++i) {
+      const double xr = a[at(i, p)], xi = a[at(i, p) + 1];
+      const double lr = xr * vr - xi * vi, li = xr * vi + xi * vr;
+      if (lr == 0.0 && li == 0.0) continue;
+      for (int q = p + 1; q < n; ++q) {
+        const double yr = a[at(p, q)], yi = a[at(p, q) + 1];
+        a[at(i, q)] -= lr * yr - li * yi;
+        a[at(i, q) + 1] -= lr * yi + li * yr;
+      }
+      for (int q = 0; q < r; ++q) {
+        const double yr = b[at(p, q)], yi = b[at(p, q) + 1];
+        b[at(i, q)] -= lr * yr - li * yi;
+        b[at(i, q) + 1] -= lr * yi + li * yr;
+      }
     }
   }
-  for (Eigen::Index p = n - 1; p >= 0; --p)
-    for (Eigen::Index q = 0; q < r; ++q) {
-      Complex sum = b(p, q);
-      for (Eigen::Index j = p + 1; j < n; ++j) sum -= a(p, j) * b(j, q);
-      b(p, q) = sum * inverse[p];
+  for (int p = n - 1; p >= 0; --p) {
+    const double vr = inverse[p].real(), vi = inverse[p].imag();
+    for (int q = 0; q < r; ++q) {
+      double sr = b[at(p, q)], si = b[at(p, q) + 1];
+      for (int j = p + 1; j < n; ++j) {
+        const double ur = a[at(p, j)], ui = a[at(p, j) + 1], yr = b[at(j, q)], yi = b[at(j, q) + 1];
+        sr -= ur * yr - ui * yi;
+        si -= ur * yi + ui * yr;
+      }
+      b[at(p, q)] = sr * vr - si * vi;
+      b[at(p, q) + 1] = sr * vi + si * vr;
     }
+  }
+}
+
+Eigen::VectorXd solve_in_place(Eigen::MatrixXcd* D, Eigen::MatrixXcd* B) {
+  const int n = static_cast<int>(D->rows());
+  Eigen::VectorXd pivots(n);
+  std::vector<Complex> inverse(static_cast<size_t>(n));
+  solve_in_place(n, static_cast<int>(B->cols()), D->data(), B->data(), pivots.data(), inverse.data());
   return pivots;
 }
 
@@ -439,6 +471,8 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
       damper_load.col(c * m + group_of[i]) += t.load_per_velocity * components[c].displacement[i];
     }
   Eigen::MatrixXcd Y;  // the solve's right-hand sides, then its solution
+  Eigen::VectorXd pivots(D.rows());
+  std::vector<Complex> inverse(static_cast<size_t>(D.rows()));
   for (Eigen::Index k = 0; k < K; ++k) {
     const double omega = kTwoPi * grid(k);
     const Complex iw(0.0, omega);
@@ -453,7 +487,8 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
     // Singular: a pivot of U at round-off of the largest (with partial pivoting the pivots'
     // spread bounds the condition from below; a condition estimate costs more solves than the
     // solve itself on these small systems, and would be paid at every frequency).
-    const Eigen::VectorXd pivots = solve_in_place(&D, &Y);
+    solve_in_place(static_cast<int>(D.rows()), static_cast<int>(Y.cols()), D.data(), Y.data(), pivots.data(),
+                   inverse.data());
     if (!(pivots.minCoeff() > 1e-14 * pivots.maxCoeff()))
       throw NumericalError("ride: the dynamic stiffness K − ω²M + iωC is singular at " + shortest_text(grid(k), 8) +
                            " Hz (smallest pivot " + shortest_text(pivots.minCoeff() / pivots.maxCoeff(), 3) +

@@ -70,6 +70,11 @@ std::complex<double> maxwell_stiffness(double stiffness, double damping, double 
 /// or infinity is formed. For the ride's small systems, solved at every grid frequency.
 Eigen::VectorXd solve_in_place(Eigen::MatrixXcd* D, Eigen::MatrixXcd* B);
 
+/// The same on column-major storage: D n × n, B n × r, `pivots` and `inverse` (the pivots'
+/// reciprocals) n values each, all the caller's (no allocation: it runs at every frequency).
+void solve_in_place(int n, int r, std::complex<double>* D, std::complex<double>* B, double* pivots,
+                    std::complex<double>* inverse);
+
 /// The modal basis an output's modal terms are taken in: X = Σ_j φ_j q_j, q_j = φ_jᵀM X.
 struct ModalBasis {
   Eigen::MatrixXd shapes;  ///< n × J, mass-normalised
