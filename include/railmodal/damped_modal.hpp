@@ -82,7 +82,7 @@ struct DampedMode {
   /// The undamped mode this one comes from: a 1-based index into `undamped.modes`, or 0
   /// for a first-order mode (it has no undamped counterpart).
   int undamped_mode = 0;
-  /// The undamped mode's name (see describe_mode), or "<dof> first-order" for a massless
+  /// The undamped mode's name (the mode names of README, "Mode names"), or "<dof> first-order" for a massless
   /// damped degree of freedom.
   std::string name;
   /// φ over LinearSystem::dofs for the first eigenvalue, φᴴMφ = 1 (largest entry 1 for a

@@ -10,14 +10,17 @@
 namespace railmodal::response {
 
 /// What a caller reads of each critical speed. `full`: everything find_critical_speeds gives.
-/// `summary`: the row without its steady response at the resonance (the direct harmonic solve:
-/// `unbounded`, `amplitude` and `outputs` are left at their defaults), for a caller that reads
-/// only the speeds, modes and friction criterion (a design variant's summary,
-/// VariantResult::CriticalSpeedSummary). Every other field is the same bits as `full`'s. The
-/// solve it leaves out cannot fail for a system that has modes: at ω > 0 the dynamic stiffness
-/// bordered by the undamped modes at ω is regular (a null vector x would have Cx = 0 and
-/// (K − ω²M)x = 0, an undamped mode at ω, which the border excludes).
-enum class ResonanceDetail { full, summary };
+/// `without_response`: the row without its steady response at the resonance (the direct
+/// harmonic solve: `unbounded`, `amplitude` and `outputs` are left at their defaults), for a
+/// caller that reads only the speeds, modes and friction criterion (a design variant's summary,
+/// VariantResult::CriticalSpeedSummary). Every other field is the same bits as `full`'s. In exact
+/// arithmetic the solve it leaves out cannot fail for a system that has modes: at ω > 0 the
+/// dynamic stiffness bordered by the undamped modes at ω is regular (a null vector x would have
+/// Cx = 0 and (K − ω²M)x = 0, an undamped mode at ω, which the border excludes). In floating
+/// point its residual check could still refuse a nearly singular system; such a variant now
+/// keeps its rows, which do not depend on that solve (deliberate: docs/studies.md, "What is
+/// computed for each variant").
+enum class ResonanceDetail { full, without_response };
 
 /// find_critical_speeds with the rows' detail chosen.
 std::vector<CriticalSpeed> find_critical_speeds_in(const LinearSystem& system, const ModalResult& modes,
@@ -36,10 +39,11 @@ CriticalSpeedStudy study_critical_speeds_of(const Scene& scene, const std::funct
 /// phase per speed and output, and an array per curve, fewer (issue 19, item 2).
 enum class CurvePhases { kept, left_out };
 
-/// What a caller reads of a critical-speed study. With `rows` summary its critical speeds are
-/// find_critical_speeds_in's summary rows, found once, and the study's own `summary` (stage
-/// times, method, checks) is left empty: a design variant's result has a summary of its own and
-/// reads none of the study's. With `phases` left_out every curve's phases_deg is empty.
+/// What a caller reads of a critical-speed study. With `rows` without_response its critical
+/// speeds are find_critical_speeds_in's rows without their response, found once, and the
+/// study's own `summary` (stage times, method, checks) is left empty: a design variant's result
+/// has a summary of its own and reads none of the study's. With `phases` left_out every curve's
+/// phases_deg is empty.
 /// Everything else is the same bits as the full study's.
 struct StudyDetail {
   ResonanceDetail rows = ResonanceDetail::full;

@@ -155,7 +155,8 @@ double growth_at(double eigenvalue, const DrivenMode& cluster, double at_output)
 
 // Growth per half period without damping, and what leaf friction takes of it (Den Hartog), of
 // the combination the load drives in the cluster; `at_output` is its entry at the output.
-void add_growth_and_friction(const response::FrictionStages& stages, double eigenvalue, const DrivenMode& cluster, double at_output, CriticalSpeed* row) {
+void add_growth_and_friction(const response::FrictionStages& stages, double eigenvalue, const DrivenMode& cluster,
+                             double at_output, CriticalSpeed* row) {
   row->growth_per_half_period = growth_at(eigenvalue, cluster, at_output);
   // Each friction stage slides over the amplitude of its own stretch, in phase with the
   // others or not: Σ R|δ(ψ)| per unit modal amplitude. The energy balance on ψ's amplitude a
@@ -220,7 +221,7 @@ SourceLoads source_loads(const LinearSystem& system, const ExcitationSource& sou
 }
 
 // The critical speed where harmonic k of source s meets the eigenspace, if the load drives it;
-// with `detail` summary, without its steady response (response::ResonanceDetail).
+// with `detail` without_response, without its steady response (response::ResonanceDetail).
 std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalResult& modes,
                                        const ExcitationSource& source, int s, int k, double speed,
                                        const Eigenspace& group, const CriticalSpeedOptions& options,
@@ -257,7 +258,7 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   const int out = reported_dof(system, group, d.shape);
   row.output = system.dofs[out].label;
   add_growth_and_friction(stages, first.eigenvalue, cluster, std::abs(cluster.shape(out)), &row);
-  if (detail == response::ResonanceDetail::summary) return row;
+  if (detail == response::ResonanceDetail::without_response) return row;
   const Eigen::VectorXd cluster_magnitude = cluster.shape.cwiseAbs();
   const HarmonicResponse response =
       respond(system, modes, load, Q, source_load, options.friction_reference_amplitude).response;

@@ -173,10 +173,6 @@ LeadingMotion leading_motion(const ModeNamer::BodyFacts& facts, const Body& body
 
 }  // namespace
 
-ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape, bool repeated) {
-  return ModeNamer(system).describe(shape, repeated);
-}
-
 ModeNamer::ModeNamer(const LinearSystem& system) : system_(system) {
   const auto& bodies = system.vehicle.bodies;
   bodies_.resize(bodies.size());
@@ -197,7 +193,7 @@ ModeNamer::ModeNamer(const LinearSystem& system) : system_(system) {
   }
 }
 
-ModeDescription ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated) {
+ModeDescription ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated) const {
   const LinearSystem& system = system_;
   const auto& bodies = system.vehicle.bodies;
   if (bodies.empty()) return describe_by_dof(system, shape);

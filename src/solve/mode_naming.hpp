@@ -17,8 +17,13 @@ struct ModeDescription {
   std::optional<CentreOfOscillation> centre;
 };
 
-/// Describes a mode shape over system.dofs (all entries, condensed ones recovered);
-/// `repeated`: the mode shares its eigenvalue with another (Mode::repeated).
+/// Names the modes of one system. What the names need of the system alone (each body's family
+/// and whether it has a twin, its CG's point map, which of its motions are DOFs) is worked out
+/// once, not per mode and body (a study names six modes of each of its 10⁵ variants). The
+/// system must outlive the namer.
+///
+/// describe() describes a mode shape over system.dofs (all entries, condensed ones
+/// recovered); `repeated`: the mode shares its eigenvalue with another (Mode::repeated).
 ///
 /// The kinetic energy of each body is split at its centre of gravity into translation
 /// (lateral, vertical, longitudinal) and rotation (roll, pitch, yaw), terms that cannot be
@@ -38,17 +43,10 @@ struct ModeDescription {
 /// leader's energy names the pair and their phase: "bogies bounce, antiphase".
 /// A system without bodies (matrices read from files) is named after the DOF with the most
 /// kinetic energy φᵢ (Mφ)ᵢ, e.g. "dof3" or "body.bounce", with no centre of oscillation.
-ModeDescription describe_mode(const LinearSystem& system, const Eigen::VectorXd& shape, bool repeated);
-
-/// describe_mode for every mode of one system: what the names need of the system alone (each
-/// body's family and whether it has a twin, its CG's point map, which of its motions are
-/// DOFs) is worked out once, not per mode and body (a study names six modes of each of its
-/// 10⁵ variants). describe() gives describe_mode's description, bit for bit. The system must
-/// outlive the namer.
 class ModeNamer {
  public:
   explicit ModeNamer(const LinearSystem& system);
-  ModeDescription describe(const Eigen::VectorXd& shape, bool repeated);
+  ModeDescription describe(const Eigen::VectorXd& shape, bool repeated) const;
 
   /// What a body's part in a name depends on, of the system alone.
   struct BodyFacts {

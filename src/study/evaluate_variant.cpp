@@ -398,7 +398,8 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
       };
       // Summary rows and no phases: a variant's result reads no resonance's steady response and
       // only the curves' amplitudes (peaks).
-      constexpr response::StudyDetail kVariant{response::ResonanceDetail::summary, response::CurvePhases::left_out};
+      constexpr response::StudyDetail kVariant{response::ResonanceDetail::without_response,
+                                               response::CurvePhases::left_out};
       if (owned)
         response::study_critical_speeds_into(std::move(owned->scene), assembled, &study, {}, kVariant);
       else

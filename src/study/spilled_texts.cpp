@@ -89,20 +89,24 @@ void SpilledTexts::read(char* to, size_t bytes, unsigned long long offset) const
 
 void SpilledTexts::each_of(const std::vector<size_t>& positions, const std::function<void(std::string_view)>& visit,
                            size_t gather_bytes) const {
+  // Every position checked before any text is visited: a bad request writes nothing.
   unsigned long long wanted = 0;
+  std::vector<bool> asked(offsets_.size(), false);
   for (size_t p : positions) {
     if (p >= offsets_.size())
       throw std::out_of_range("no text at position " + std::to_string(p) + " of " + std::to_string(size()));
+    if (asked[p]) throw std::invalid_argument("each_of: position " + std::to_string(p) + " is asked for twice");
+    asked[p] = true;
     wanted += lengths_[p];
   }
   // Each pass reads the whole file; one read a text costs a system call, about what copying a
   // page does (kCallBytes). The rows of a study are read in rank order, scattered over the file:
   // one pread a text was most of the serial part of the 10^5-variant study (docs/performance.md,
   // "study-serial"). Many short texts are gathered in passes; texts of kilobytes each (a shard's
-  // JSON) or a file many times the gathering room, one read a text.
+  // JSON), a few texts of a large file or a file many times the gathering room, one read a text.
   constexpr unsigned long long kCallBytes = 4096;
   const unsigned long long passes = gather_bytes > 0 ? (wanted + gather_bytes - 1) / gather_bytes : positions.size();
-  if (passes > 1 && passes * written_ > positions.size() * kCallBytes + wanted) {
+  if (passes * written_ > positions.size() * kCallBytes + wanted) {
     for (size_t p : positions) visit(at(p));
     return;
   }
@@ -115,8 +119,6 @@ void SpilledTexts::each_of(const std::vector<size_t>& positions, const std::func
     // The texts of positions[first ... last − 1]: as many as fit in gather_bytes, at least one.
     size_t bytes = 0, last = first;
     for (; last < positions.size() && (last == first || bytes + lengths_[positions[last]] <= gather_bytes); ++last) {
-      if (slot[positions[last]] != kNone)
-        throw std::invalid_argument("each_of: position " + std::to_string(positions[last]) + " is asked for twice");
       slot[positions[last]] = bytes;
       bytes += lengths_[positions[last]];
     }

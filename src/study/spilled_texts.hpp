@@ -33,10 +33,12 @@ class SpilledTexts {
   /// The text put at `position`, once finish() has flushed the file; std::system_error if it
   /// cannot be read back.
   std::string at(size_t position) const;
-  /// The texts at `positions` (each at most once), handed to `visit` in that order, once
-  /// finish() has flushed the file; each view lives until `visit` returns. Where the file is
-  /// small enough (kGatherBytes) it is read front to back, in passes that each gather the texts of
-  /// as many consecutive entries as fit in `gather_bytes`, rather than with one read a text.
+  /// The texts at `positions` (each at most once: a repeated or missing position throws before
+  /// any text is visited), handed to `visit` in that order, once finish() has flushed the file;
+  /// each view lives until `visit` returns. Where reading the whole file costs less than one
+  /// read a text (many short texts, the file not many times `gather_bytes`) it is read front to
+  /// back, in passes that each gather the texts of as many consecutive entries as fit in
+  /// `gather_bytes`; otherwise one read a text.
   void each_of(const std::vector<size_t>& positions, const std::function<void(std::string_view)>& visit,
                size_t gather_bytes = kGatherBytes) const;
   size_t size() const { return offsets_.size(); }

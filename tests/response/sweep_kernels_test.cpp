@@ -219,6 +219,7 @@ TEST(SweepKernels, AStudyWithoutPhasesHasTheSameCurvesAndPeaksBitForBit) {
     }
     ASSERT_EQ(with.peaks.size(), without.peaks.size()) << name;
     for (size_t p = 0; p < with.peaks.size(); ++p) {
+      EXPECT_EQ(with.peaks[p].curve, without.peaks[p].curve) << name;
       EXPECT_EQ(with.peaks[p].peak.speed, without.peaks[p].peak.speed) << name;
       EXPECT_EQ(with.peaks[p].peak.amplitude, without.peaks[p].peak.amplitude) << name;
     }
