@@ -34,10 +34,10 @@ double modal_friction_work(const LinearSystem& system, const Eigen::VectorXcd& s
 /// the stage's share of the element's stretch, and where the nonzero entries of the element's
 /// row of element_vertical_map are in FrictionStages::entries ([begin, end)).
 struct FrictionStage {
-  std::size_t element;
-  double friction;
-  double share;
-  std::size_t begin, end;
+  std::size_t element = 0;
+  double friction = 0.0;
+  double share = 0.0;
+  std::size_t begin = 0, end = 0;
 };
 
 /// Every friction stage of a system, element by element, with their rows' nonzero entries
@@ -51,8 +51,9 @@ struct FrictionStages {
 /// (the critical speeds weigh one combination per resonance).
 FrictionStages friction_stages(const LinearSystem& system);
 
-/// modal_friction_work(system, shape) from `stages` = friction_stages(system): the same value,
-/// bit for bit (each stretch summed over its row's nonzero entries only, in the same order).
+/// modal_friction_work(system, shape) from `stages` = friction_stages(system), which the former
+/// calls: each stretch summed over its row's nonzero entries only, in the row's order, so |δ| is
+/// the dense row product's to the bit.
 double modal_friction_work(const FrictionStages& stages, const Eigen::VectorXcd& shape);
 
 /// Σ R·s over the friction stages of element `element` (R = φ × load, s the stage's share of the

@@ -70,12 +70,9 @@ double modal_friction_work(const LinearSystem& system, const Eigen::VectorXd& sh
   return response::modal_friction_work(system, Eigen::VectorXcd(shape.cast<std::complex<double>>()));
 }
 
+// One weighing of the friction work: the stages found for this one call.
 double response::modal_friction_work(const LinearSystem& system, const Eigen::VectorXcd& shape) {
-  double work = 0.0;
-  for_each_friction_stage(system, [&](size_t k, double friction, double share) {
-    work += friction * std::abs(share * system.element_vertical_map.row(k).cast<std::complex<double>>().dot(shape));
-  });
-  return work;
+  return modal_friction_work(friction_stages(system), shape);
 }
 
 response::FrictionStages response::friction_stages(const LinearSystem& system) {
