@@ -1,8 +1,10 @@
 // From wheel inputs and point forces to the generalised load on the degrees of freedom.
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
+#include "excitation/generalized_load.hpp"
 #include "model/analysis_limits.hpp"
 #include "model/point_motion.hpp"
 #include "railmodal/excitation.hpp"
@@ -34,6 +36,23 @@ HarmonicLoad ExcitationSource::load(const LinearSystem& system, double speed, in
 
 namespace {
 
+// Q += column d of `per_unit` × u, entry by entry as `Q += per_unit.col(d) * u` sums them (the
+// same products and sums: the same bits). A track element's column is nonzero only at the DOFs
+// its spring moves; a zero entry is skipped where u is finite, since its product is ±0 and
+// adding ±0 leaves every entry of Q as it was (Q starts at +0, and a sum is −0 only when both
+// terms are, so no entry is ever −0).
+void add_column(const Eigen::MatrixXd& per_unit, int d, std::complex<double> u, Eigen::VectorXcd* Q) {
+  const double* column = per_unit.col(d).data();
+  std::complex<double>* q = Q->data();
+  const Eigen::Index n = Q->size();
+  if (std::isfinite(u.real()) && std::isfinite(u.imag())) {
+    for (Eigen::Index r = 0; r < n; ++r)
+      if (column[r] != 0.0) q[r] += column[r] * u;
+  } else {
+    for (Eigen::Index r = 0; r < n; ++r) q[r] += column[r] * u;
+  }
+}
+
 // Q = Q_K + iω Q_C: the wheel inputs through the track elements' stiffness (and the point
 // forces) in Q_K, through their dampers in Q_C.
 void load_parts(const LinearSystem& system, const HarmonicLoad& load, Eigen::VectorXcd* QK, Eigen::VectorXcd* QC) {
@@ -43,15 +62,26 @@ void load_parts(const LinearSystem& system, const HarmonicLoad& load, Eigen::Vec
   const std::complex<double> i(0.0, 1.0);
   QK->setZero(n);
   QC->setZero(n);
+  // The wheels of a wheelset share their delay, and the sources list them together: the phase
+  // e^{−iωτ} is found once per run of equal delays (equal bits, so the same value each wheel's
+  // own exp would give), half the complex exponentials of a rail-joint load.
+  double phase_delay = 0.0;
+  std::complex<double> phase;
+  bool have_phase = false;
   for (const WheelInput& w : load.wheels) {
     if (w.track_input < 0 || w.track_input >= static_cast<int>(system.track_inputs.size()))
       throw std::invalid_argument("generalized_load: no such track input");
     const TrackInput& t = system.track_inputs[w.track_input];
-    const Eigen::Vector3cd u = w.amplitude * std::exp(-i * omega * w.delay_s);
+    if (!have_phase || std::memcmp(&w.delay_s, &phase_delay, sizeof phase_delay) != 0) {
+      phase = std::exp(-i * omega * w.delay_s);
+      phase_delay = w.delay_s;
+      have_phase = true;
+    }
+    const Eigen::Vector3cd u = w.amplitude * phase;
     for (int d = 0; d < 3; ++d) {
       if (u(d) == 0.0) continue;
-      *QK += t.load_per_displacement.col(d) * u(d);
-      *QC += t.load_per_velocity.col(d) * u(d);
+      add_column(t.load_per_displacement, d, u(d), QK);
+      add_column(t.load_per_velocity, d, u(d), QC);
     }
   }
   for (const PointForce& f : load.forces) {
@@ -68,11 +98,16 @@ void load_parts(const LinearSystem& system, const HarmonicLoad& load, Eigen::Vec
 }  // namespace
 
 Eigen::VectorXcd generalized_load(const LinearSystem& system, const HarmonicLoad& load) {
+  Eigen::VectorXcd Q;
+  excitation::generalized_load_into(system, load, &Q);
+  return Q;
+}
+
+void excitation::generalized_load_into(const LinearSystem& system, const HarmonicLoad& load, Eigen::VectorXcd* Q) {
   constexpr double kTwoPi = 6.28318530717958647692;
-  Eigen::VectorXcd QK, QC;
-  load_parts(system, load, &QK, &QC);
-  QK += std::complex<double>(0.0, kTwoPi * load.frequency_hz) * QC;  // the sum QK + iωQC, in QK's storage
-  return QK;
+  thread_local Eigen::VectorXcd QC;  // the damper part, kept: its storage serves this thread's next load
+  load_parts(system, load, Q, &QC);
+  *Q += std::complex<double>(0.0, kTwoPi * load.frequency_hz) * QC;  // the sum QK + iωQC, in QK's storage
 }
 
 SeparableLoad ExcitationSource::separable_load(const LinearSystem& system, int harmonic) const {

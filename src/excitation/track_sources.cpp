@@ -73,8 +73,7 @@ class RailJointSource final : public ExcitationSource {
     // Staggered: the right rail's joints lie half a rail on, a factor e^{−iπk} = (−1)^k.
     const double right = p_.staggered && harmonic % 2 == 1 ? -1.0 : 1.0;
     // This thread's list, kept between loads (a study builds several loads per variant).
-    thread_local std::vector<excitation::Wheelset> sets;
-    excitation::wheelsets(system, &sets);
+    const std::vector<excitation::Wheelset>& sets = excitation::kept_wheelsets(system);
     out.wheels.reserve(system.track_inputs.size());  // every input is a wheel: one allocation
     for (const auto& set : sets)
       for (int index : set.inputs) {
@@ -223,8 +222,7 @@ class HuntingSource final : public ExcitationSource {
     HarmonicLoad out;
     out.frequency_hz = frequency_hz(speed, harmonic);
     if (harmonic != 1) return out;
-    thread_local std::vector<excitation::Wheelset> sets;  // as the rail joints' list
-    excitation::wheelsets(system, &sets);
+    const std::vector<excitation::Wheelset>& sets = excitation::kept_wheelsets(system);  // as the rail joints'
     for (const auto& set : sets)
       for (int index : set.inputs) {
         // Each wheelset follows the same sinuous path, y0 sin(2πs/λ + φ), reached later by the

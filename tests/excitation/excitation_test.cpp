@@ -1,4 +1,5 @@
 // Excitation sources: dip harmonics, wheelbase filtering, staggered joints, unbalance.
+#include <algorithm>
 #include <cmath>
 
 #include "test_support.hpp"
@@ -94,6 +95,32 @@ TEST(RailJoints, WheelDelaysFollowTheWheelbase) {
   double longest = 0.0;
   for (const auto& w : load.wheels) longest = std::max(longest, w.delay_s);
   EXPECT_NEAR(longest, 3.81 / 20.0, 1e-12);
+}
+
+// A source keeps its wheelset list per thread from load to load; a system whose wheels stand
+// elsewhere (another wheelbase, as a study's variant may have) gets its own. Loads on the wagon,
+// on a copy with the rear axle 1 m further back, and on the wagon again: each load's longest
+// delay is its own wheelbase over the speed (the same bits as the first load on the wagon).
+TEST(RailJoints, WheelsetsFollowTheSystemFromLoadToLoad) {
+  const LinearSystem wagon = assemble(load_vehicle(data_file("two_axle_freight_wagon.toml")), DofSet::vertical);
+  LinearSystem longer = wagon;
+  double rear = longer.track_inputs.front().point.x();
+  for (const auto& t : longer.track_inputs) rear = std::min(rear, t.point.x());
+  for (auto& t : longer.track_inputs)
+    if (t.point.x() <= rear + 1e-3) t.point.x() -= 1.0;  // both wheels of the rear axle
+  RailJoints j;
+  j.rail_length = 10.0;
+  j.dip_depth = 0.005;
+  const auto source = make_source(j);
+  auto longest = [&](const LinearSystem& system) {
+    double delay = 0.0;
+    for (const auto& w : source->load(system, 20.0, 1).wheels) delay = std::max(delay, w.delay_s);
+    return delay;
+  };
+  const double first = longest(wagon);
+  EXPECT_NEAR(first, 3.81 / 20.0, 1e-12);
+  EXPECT_NEAR(longest(longer), 4.81 / 20.0, 1e-12);
+  EXPECT_EQ(longest(wagon), first);
 }
 
 // Unbalance digest §3: two cranks at 90° (left lags right) give a vertical force on the axle
