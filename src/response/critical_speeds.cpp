@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "excitation/generalized_load.hpp"
 #include "model/analysis_limits.hpp"
 #include "railmodal/response.hpp"
 #include "require_valid.hpp"
@@ -87,24 +88,29 @@ struct DrivenMode {
   double N = 0.0;
 };
 
-// The first `count` of `modes`; the shape ψ only `with_shape` (F₀ and N do not depend on it).
-DrivenMode driven_mode(const std::vector<WeightedMode>& modes, size_t count, const Eigen::VectorXcd& Q,
-                       bool with_shape = true) {
-  DrivenMode d;
-  if (with_shape) d.shape = Eigen::VectorXcd::Zero(Q.size());
+// The first `count` of `modes` into `out`, whose shape's storage is reused; the shape ψ only
+// `with_shape` (F₀ and N do not depend on it; without, out's shape is left as it was).
+void driven_mode(const std::vector<WeightedMode>& modes, size_t count, const Eigen::VectorXcd& Q, bool with_shape,
+                 DrivenMode* out) {
+  DrivenMode& d = *out;
+  d.F0 = 0.0;
+  d.N = 0.0;
+  if (with_shape) d.shape.setZero(Q.size());
   double norm_squared = 0.0, projection = 0.0;
   for (size_t j = 0; j < count; ++j) {
     const WeightedMode& m = modes[j];
     const std::complex<double> f = m.mode->shape.cast<std::complex<double>>().dot(Q);
-    if (with_shape) d.shape += m.mode->shape.cast<std::complex<double>>() * (m.weight * std::conj(f));
+    // The real shape times the complex weight: the complex product of the shape cast to
+    // complex would add 0·Im and 0·Re terms (and a libgcc call per entry), which change only
+    // the sign of a zero entry; ψ is read only through magnitudes (|ψ(i)|, |row·ψ|).
+    if (with_shape) d.shape += m.mode->shape * (m.weight * std::conj(f));
     norm_squared += m.weight * m.weight * std::norm(f);
     projection += m.weight * std::norm(f);
   }
-  if (!(norm_squared > 0.0)) return d;
+  if (!(norm_squared > 0.0)) return;
   if (with_shape) d.shape /= std::sqrt(norm_squared);
   d.N = std::sqrt(norm_squared);
   d.F0 = projection / d.N;
-  return d;
 }
 
 // Modes whose frequencies lie within this fraction of the resonance's are judged with it by the
@@ -117,18 +123,20 @@ DrivenMode driven_mode(const std::vector<WeightedMode>& modes, size_t count, con
 // when a design passes through the coincidence (issue 17 item 6).
 constexpr double kClusterGap = 0.01;
 
-// The eigenspace (first, each weighted 1) and its neighbours within kClusterGap, weighted as above.
-std::vector<WeightedMode> cluster_of(const ModalResult& modes, const Eigenspace& group) {
+// The eigenspace, each weighted 1, into `cluster`: the first entries of its cluster.
+void eigenspace_weights(const Eigenspace& group, std::vector<WeightedMode>* cluster) {
+  cluster->clear();
+  for (const Mode* m : group) cluster->push_back({m, 1.0});
+}
+
+// The eigenspace's neighbours within kClusterGap, weighted as above, appended to its entries.
+void add_neighbours(const ModalResult& modes, const Eigenspace& group, std::vector<WeightedMode>* cluster) {
   const double f = group.front()->frequency_hz;
-  std::vector<WeightedMode> cluster;
-  cluster.reserve(modes.modes.size());  // one allocation: at most every mode
-  for (const Mode* m : group) cluster.push_back({m, 1.0});
   for (const Mode& m : modes.modes) {
     if (m.kind != ModeKind::oscillatory || std::find(group.begin(), group.end(), &m) != group.end()) continue;
     const double gap = std::abs(m.frequency_hz - f) / std::max(m.frequency_hz, f);  // alike seen from either
-    if (gap < kClusterGap) cluster.push_back({&m, 1.0 - gap / kClusterGap});
+    if (gap < kClusterGap) cluster->push_back({&m, 1.0 - gap / kClusterGap});
   }
-  return cluster;
 }
 
 // The DOF a critical speed reports: the mode's most energetic one, or for a repeated frequency
@@ -201,24 +209,33 @@ std::vector<ResonanceAtOutput> at_outputs(const LinearSystem& system, const Moda
 // drives the resonance and all of them give the norm its round-off rule is relative to. Built
 // once for both (the loads, their order and sums are response::source_load_norm's).
 struct SourceLoads {
-  std::vector<HarmonicLoad> harmonics;      // [k − 1]
+  std::vector<HarmonicLoad> harmonics;        // [k − 1]
   std::vector<Eigen::VectorXcd> generalized;  // [k − 1], generalized_load of each
-  double norm = 0.0;                        // √(Σ_k ‖Q_k‖²)
+  double norm = 0.0;                          // √(Σ_k ‖Q_k‖²)
 };
 
-SourceLoads source_loads(const LinearSystem& system, const ExcitationSource& source, double speed) {
-  SourceLoads loads;
-  loads.harmonics.reserve(static_cast<size_t>(source.harmonic_count()));
-  loads.generalized.reserve(static_cast<size_t>(source.harmonic_count()));
+// The source's loads at `speed` into `loads`, whose storage serves every resonance.
+void source_loads(const LinearSystem& system, const ExcitationSource& source, double speed, SourceLoads* loads) {
+  const size_t count = static_cast<size_t>(source.harmonic_count());
+  loads->harmonics.resize(count);
+  loads->generalized.resize(count);
   double squared = 0.0;
   for (int k = 1; k <= source.harmonic_count(); ++k) {
-    loads.harmonics.push_back(source.load(system, speed, k));
-    loads.generalized.push_back(generalized_load(system, loads.harmonics.back()));
-    squared += loads.generalized.back().squaredNorm();
+    loads->harmonics[k - 1] = source.load(system, speed, k);
+    excitation::generalized_load_into(system, loads->harmonics[k - 1], &loads->generalized[k - 1]);
+    squared += loads->generalized[k - 1].squaredNorm();
   }
-  loads.norm = std::sqrt(squared);
-  return loads;
+  loads->norm = std::sqrt(squared);
 }
+
+// What one call of the critical speeds reuses from resonance to resonance: the loads, the
+// cluster's list and the driven combinations (their storage; each resonance writes its own).
+struct ResonanceScratch {
+  SourceLoads loads;
+  std::vector<WeightedMode> cluster;
+  DrivenMode eigenspace;    // what the load drives in the eigenspace
+  DrivenMode cluster_mode;  // and in its cluster
+};
 
 // The critical speed where harmonic k of source s meets the eigenspace, if the load drives it;
 // with `detail` without_response, without its steady response (response::ResonanceDetail).
@@ -226,21 +243,27 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
                                        const ExcitationSource& source, int s, int k, double speed,
                                        const Eigenspace& group, const CriticalSpeedOptions& options,
                                        const response::FrictionStages& stages,
-                                       response::ResonanceDetail detail) {
+                                       response::ResonanceDetail detail, ResonanceScratch* scratch) {
   const Mode& first = *group.front();
-  const SourceLoads loads = source_loads(system, source, speed);
+  source_loads(system, source, speed, &scratch->loads);
+  const SourceLoads& loads = scratch->loads;
   const HarmonicLoad& load = loads.harmonics[k - 1];
   const Eigen::VectorXcd& Q = loads.generalized[k - 1];
   // The eigenspace's own combination: its shape is read only to report a repeated frequency's DOF.
-  const std::vector<WeightedMode> cluster_modes = cluster_of(modes, group);
-  const DrivenMode d = driven_mode(cluster_modes, group.size(), Q, group.size() > 1);
+  std::vector<WeightedMode>& cluster_modes = scratch->cluster;
+  eigenspace_weights(group, &cluster_modes);
+  const DrivenMode& d = scratch->eigenspace;
+  driven_mode(cluster_modes, group.size(), Q, group.size() > 1, &scratch->eigenspace);
   // Driven unless the modal force is round-off of the source's total load (one rule for
   // every part of the response: response::kLoadRoundOff): symmetry zeros (roll under square
   // joints), and harmonics that are round-off themselves (the 3rd of a full-length cosine dip).
   const double source_load = loads.norm;
   if (!(d.F0 > response::kLoadRoundOff * first.shape.norm() * source_load)) return std::nullopt;
-  // The friction criterion and the growth: on the load's projection onto the cluster.
-  const DrivenMode cluster = driven_mode(cluster_modes, cluster_modes.size(), Q);
+  // The friction criterion and the growth: on the load's projection onto the cluster, the
+  // eigenspace and its neighbours (found only for a resonance the load drives).
+  add_neighbours(modes, group, &cluster_modes);
+  const DrivenMode& cluster = scratch->cluster_mode;
+  driven_mode(cluster_modes, cluster_modes.size(), Q, true, &scratch->cluster_mode);
 
   CriticalSpeed row;
   row.speed = speed;
@@ -292,6 +315,7 @@ std::vector<CriticalSpeed> response::find_critical_speeds_in(const LinearSystem&
   const auto groups = response::eigenspaces(modes);
   const response::FrictionStages stages = response::friction_stages(system);  // found once, not per resonance
   int in_range = 0;
+  thread_local ResonanceScratch scratch;  // this thread's; every call's resonances reuse its storage
   std::vector<CriticalSpeed> found;
   size_t most = 0;  // every harmonic of every source meeting every eigenspace
   for (const ExcitationSource* source : sources) most += static_cast<size_t>(source->harmonic_count()) * groups.size();
@@ -303,7 +327,8 @@ std::vector<CriticalSpeed> response::find_critical_speeds_in(const LinearSystem&
         const double speed = source.speed_for(group.front()->frequency_hz, k);
         if (speed < options.min_speed || speed > options.max_speed) continue;
         ++in_range;
-        if (auto row = resonance(system, modes, source, static_cast<int>(s), k, speed, group, options, stages, detail))
+        if (auto row = resonance(system, modes, source, static_cast<int>(s), k, speed, group, options, stages, detail,
+                                  &scratch))
           found.push_back(std::move(*row));
       }
   }
