@@ -78,15 +78,30 @@ double largest_bounded(const AmplitudeCurve& curve) {
   return largest;
 }
 
+// The first local maximum of a[0, n) from i on (a[i] ≥ a[i − 1] and a[i] > a[i + 1]; 0 < i),
+// or n − 1 if there is none: a tight loop of its own over the amplitudes, each read once (few
+// points are maxima, and the caller's loop would reread the curve's size around its calls).
+size_t next_local_maximum(const double* a, size_t i, size_t n) {
+  if (i + 1 >= n) return n - 1;
+  double before = a[i - 1], at = a[i];
+  for (; i + 1 < n; ++i) {
+    const double after = a[i + 1];
+    if (at >= before && at > after) return i;
+    before = at;
+    at = after;
+  }
+  return n - 1;
+}
+
 std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const ExcitationSource& source,
                                const OutputRequest& output, const AmplitudeCurve& curve) {
   std::vector<Peak> peaks;
   const auto& a = curve.amplitudes;
   if (a.size() < 3) return peaks;
   double largest = -1.0;  // largest_bounded (≥ 0) once a bounded maximum needs it: many curves have none
-  for (size_t i = 1; i + 1 < a.size(); ++i) {
-    // The amplitudes first: few points are maxima, and the flags are bits, slow to read.
-    if (!(a[i] >= a[i - 1] && a[i] > a[i + 1])) continue;
+  // The amplitudes first (next_local_maximum): the flags are bits, slow to read.
+  for (size_t i = next_local_maximum(a.data(), 1, a.size()); i + 1 < a.size();
+       i = next_local_maximum(a.data(), i + 1, a.size())) {
     if (curve.unbounded[i - 1] || curve.unbounded[i] || curve.unbounded[i + 1]) continue;
     if (largest < 0.0) largest = largest_bounded(curve);
     if (a[i] >= 0.01 * largest) {
