@@ -85,10 +85,17 @@ void summarise_response(const CriticalSpeedStudy& study, VariantResult* r) {
     p.source = curve.source;
     p.output = curve.output;
     p.quantity = to_string(curve.quantity);
-    for (size_t i = 0; i < curve.speeds.size(); ++i) {
-      if (curve.unbounded[i]) p.unbounded = true;
-      else if (curve.amplitudes[i] > p.amplitude) p.amplitude = curve.amplitudes[i], p.speed = curve.speeds[i];
-    }
+    // The largest bounded point: an unbounded one holds 0 (AmplitudeCurve::amplitudes), which
+    // never beats p.amplitude (≥ 0), so the amplitudes are scanned without the flags (bits, slow
+    // to read one by one), and the flags only for whether any is set.
+    const std::vector<double>& speeds = curve.speeds.values();
+    const std::vector<double>& a = curve.amplitudes;
+    size_t at = speeds.size();
+    double largest = p.amplitude;
+    for (size_t i = 0; i < speeds.size(); ++i)
+      if (a[i] > largest) largest = a[i], at = i;
+    if (at < speeds.size()) p.amplitude = largest, p.speed = speeds[at];
+    p.unbounded = std::find(curve.unbounded.begin(), curve.unbounded.end(), true) != curve.unbounded.end();
     for (const auto& refined : study.peaks)
       if (refined.curve == static_cast<int>(k) && refined.peak.amplitude > p.amplitude)
         p.amplitude = refined.peak.amplitude, p.speed = refined.peak.speed;
