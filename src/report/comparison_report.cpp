@@ -352,19 +352,22 @@ void write_table_head(std::ostream& out, const Comparison& c, size_t count, size
   out << "\n";
 }
 
-// The table's rows, `rows` of them (0 the heading, then the variants in rank order), each
-// asked for twice (for the column widths, then to write it), then the note of each variant
-// that has one ("" for none): why it failed, or what it violates.
-void write_table_rows(std::ostream& out, size_t rows, const std::function<std::vector<std::string>(size_t)>& row_at,
-                      const std::function<std::string(size_t)>& note_at) {
+// One pass over the table's rows in order (0 the heading, then the variants in rank order):
+// each row's cells handed to `visit`, or with `notes` each variant's note alone (one cell, ""
+// for none: why it failed, or what it violates; the heading has none and is not handed on).
+using RowVisit = std::function<void(std::vector<std::string>&& row)>;
+using TableRows = std::function<void(bool notes, const RowVisit& visit)>;
+
+// The table: its rows in two passes (the column widths, then the lines), then a third for the
+// notes under it. Passes rather than rows by number, so that a streamed ranking reads its kept
+// rows from its file front to back (SpilledTexts::each_of) instead of one read a row.
+void write_table_rows(std::ostream& out, const TableRows& rows) {
   std::vector<size_t> widths;
-  for (size_t n = 0; n < rows; ++n) {
-    const std::vector<std::string> row = row_at(n);
+  rows(false, [&](std::vector<std::string>&& row) {
     widths.resize(std::max(widths.size(), row.size()), 0);
     for (size_t i = 0; i < row.size(); ++i) widths[i] = std::max(widths[i], width(row[i]));
-  }
-  for (size_t n = 0; n < rows; ++n) {
-    const std::vector<std::string> row = row_at(n);
+  });
+  rows(false, [&](std::vector<std::string>&& row) {
     std::string line;
     for (size_t i = 0; i < row.size(); ++i) {
       const bool last = i + 1 == row.size();
@@ -374,15 +377,14 @@ void write_table_rows(std::ostream& out, size_t rows, const std::function<std::v
       if (!last) line += "  ";
     }
     out << line << "\n";
-  }
+  });
   bool notes = false;
-  for (size_t n = 1; n < rows; ++n) {
-    const std::string note = note_at(n);
-    if (note.empty()) continue;
+  rows(true, [&](std::vector<std::string>&& note) {
+    if (note.front().empty()) return;
     if (!notes) out << "\n";
     notes = true;
-    out << note << "\n";
-  }
+    out << note.front() << "\n";
+  });
 }
 
 // A variant's note under the table: why it failed, or the constraints it violates, for people;
@@ -400,13 +402,12 @@ void write_table(std::ostream& out, const Comparison& c) {
   size_t feasible = 0;
   for (const auto& v : c.variants) feasible += v.feasible;
   write_table_head(out, c, c.variants.size(), feasible);
-  write_table_rows(
-      out, c.variants.size() + 1,
-      [&](size_t n) {
-        return n == 0 ? comparison_head(c, false)
-                      : report::comparison_row(c.ranking, c.deflection_rule, c.variants[n - 1], false);
-      },
-      [&](size_t n) { return table_note(c.ranking, c.variants[n - 1]); });
+  write_table_rows(out, [&](bool notes, const RowVisit& visit) {
+    if (!notes) visit(comparison_head(c, false));
+    for (const RankedVariant& v : c.variants)
+      visit(notes ? std::vector<std::string>{table_note(c.ranking, v)}
+                  : report::comparison_row(c.ranking, c.deflection_rule, v, false));
+  });
 }
 
 void write_csv_row(std::ostream& out, const std::vector<std::string>& row, size_t from = 0) {
@@ -445,12 +446,12 @@ std::string packed(const std::vector<std::string>& cells, size_t from) {
   return text;
 }
 
-std::vector<std::string> unpacked(const std::string& text) {
+std::vector<std::string> unpacked(std::string_view text) {
   std::vector<std::string> cells;
   for (size_t at = 0; at < text.size();) {
     const size_t colon = text.find(':', at);
-    const size_t length = std::stoul(text.substr(at, colon - at));
-    cells.push_back(text.substr(colon + 1, length));
+    const size_t length = std::stoul(std::string(text.substr(at, colon - at)));
+    cells.emplace_back(text.substr(colon + 1, length));
     at = colon + 1 + length;
   }
   return cells;
@@ -528,22 +529,17 @@ void report::write_streamed_comparison(std::ostream& out, const Comparison& head
   switch (format) {
     case OutputFormat::table: {
       write_table_head(out, head, ranked.size(), ranked.feasible());
-      // A kept row: its cells after the rank, then its note.
-      const auto cells_and_note = [&](size_t rank, std::string* note) {
-        std::vector<std::string> row{std::to_string(rank)};
-        for (std::string& cell : unpacked(ranked.text(rank))) row.push_back(std::move(cell));
-        if (note) *note = std::move(row.back());
-        row.pop_back();
-        return row;
-      };
-      write_table_rows(
-          out, ranked.shown() + 1,
-          [&](size_t n) { return n == 0 ? comparison_head(head, false) : cells_and_note(n, nullptr); },
-          [&](size_t n) {
-            std::string note;
-            cells_and_note(n, &note);
-            return note;
-          });
+      // A kept row: its cells after the rank, then its note; read in rank order, a pass at a time.
+      write_table_rows(out, [&](bool notes, const RowVisit& visit) {
+        if (!notes) visit(comparison_head(head, false));
+        ranked.each_text([&](size_t rank, std::string_view text) {
+          std::vector<std::string> cells = unpacked(text);
+          if (notes) return visit({std::move(cells.back())});
+          cells.pop_back();
+          cells.insert(cells.begin(), std::to_string(rank));
+          visit(std::move(cells));
+        });
+      });
       break;
     }
     case OutputFormat::csv:

@@ -244,9 +244,13 @@ void response::study_critical_speeds_into(Scene given, const std::function<Linea
   // Every row reports every output of the curves: the scene's, or (when it names none) the
   // DOFs the rows report, known only once they are found — then the rows are found again. A
   // scene that names its outputs finds them once (half the time of a study's critical speeds),
-  // and so do summary rows, which report no outputs.
+  // and so do summary rows, which report no outputs. The first finding feeds only the DOFs
+  // (CriticalSpeed::output, set before the response): its rows are without their response
+  // (a harmonic solve a resonance fewer), and a full study's are then found again in full,
+  // which refuses a failing solve at the same resonance as before.
   if (scene.outputs.empty())
-    study.critical_speeds = find_critical_speeds_in(study.system, study.modes, sources, options, detail.rows);
+    study.critical_speeds =
+        find_critical_speeds_in(study.system, study.modes, sources, options, ResonanceDetail::without_response);
   std::vector<OutputRequest> outputs = curve_outputs(scene, study);
   if (full || !scene.outputs.empty()) {
     options.outputs = outputs;

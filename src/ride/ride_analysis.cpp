@@ -20,6 +20,7 @@
 #include "ride/ride_indices.hpp"
 #include "ride/ride_speed.hpp"
 #include "ride/ride_transfer.hpp"
+#include "ride/ride_workspace.hpp"
 #include "ride/track_under_wheels.hpp"
 #include "shortest_text.hpp"
 #include "summary/stage_clock.hpp"
@@ -46,9 +47,9 @@ struct Problem {
   std::vector<ride::FrictionElement> friction;
   std::vector<std::string> notes;  // the grid's and the track's, for RideResult::notes
   // Without friction the system is the same at every speed: its output maps and receptances
-  // are computed once and every speed reuses them.
+  // are computed once (into the workspace's `shared`) and every speed reuses them.
   std::vector<ride::OutputMap> maps;
-  ride::Receptances shared;
+  const ride::Receptances* shared = nullptr;
   // With wheelsets moving laterally: the creep contact, whose terms depend on speed (so does
   // every speed's own receptances).
   std::optional<ride::CreepContact> contact;
@@ -120,9 +121,10 @@ std::vector<bool> unbounded_outputs(const Problem& p, const LinearSystem& system
   return out;
 }
 
-ride::Receptances receptances_of(const Problem& p, const LinearSystem& system, const std::vector<ride::OutputMap>& maps) {
-  return ride::receptances(system, p.components, maps, p.grid, p.truncation.size() ? &p.truncation : nullptr,
-                           p.contributions.shapes.cols() ? &p.contributions : nullptr);
+void receptances_of(const Problem& p, const LinearSystem& system, const std::vector<ride::OutputMap>& maps,
+                    ride::Receptances* into) {
+  ride::receptances(system, p.components, maps, p.grid, p.truncation.size() ? &p.truncation : nullptr,
+                    p.contributions.shapes.cols() ? &p.contributions : nullptr, into);
 }
 
 struct SpeedOutcome {
@@ -261,7 +263,8 @@ void set_round_off_apart(const std::vector<RideOutput>& outputs, const std::vect
   }
 }
 
-SpeedOutcome solve_speed(const Problem& p, double speed) {
+// One speed, its arrays in the worker's `kept`.
+SpeedOutcome solve_speed(const Problem& p, double speed, ride::SpeedWorkspace* kept) {
   SpeedOutcome s;
   const LinearSystem base = p.contact ? ride::with_creep(*p.system, *p.contact, speed) : *p.system;
   const std::vector<ride::BandWeights> bands = ride::speed_bands(p.components, p.grid, speed);
@@ -272,9 +275,10 @@ SpeedOutcome solve_speed(const Problem& p, double speed) {
       const LinearSystem system = response::with_element_vertical_dampers(base, damping);
       std::vector<ride::OutputMap> maps;
       for (const ride::FrictionElement& f : p.friction) maps.push_back(ride::stretch_rate_map(system, f.element));
-      const ride::Receptances r = ride::receptances(system, p.components, maps, p.grid,
-                                                    p.truncation.size() ? &p.truncation : nullptr, nullptr);
-      const ride::SpeedSpectra sp = ride::speed_spectra(system, r, p.components, p.grid, speed, bands, false);
+      ride::receptances(system, p.components, maps, p.grid, p.truncation.size() ? &p.truncation : nullptr, nullptr,
+                        &kept->passes);
+      ride::SpeedSpectra& sp = kept->pass_spectra;
+      ride::speed_spectra(system, kept->passes, p.components, p.grid, speed, bands, false, &sp);
       std::vector<double> sigma;
       for (const ride::ComponentPower& power : sp.outputs)
         sigma.push_back(std::sqrt(std::max(ride::integral(power, bands, Eigen::VectorXd()), 0.0)));
@@ -292,9 +296,10 @@ SpeedOutcome solve_speed(const Problem& p, double speed) {
                                                 ? p.maps
                                                 : ride::output_maps(system, *p.outputs, friction_damping, contact, speed);
   const bool shared = friction_damping.empty() && !p.contact;
-  const ride::Receptances own = shared ? ride::Receptances{} : receptances_of(p, system, maps);
-  const ride::SpeedSpectra sp = ride::speed_spectra(system, shared ? p.shared : own, p.components, p.grid, speed, bands,
-                                                    p.options->keep_spectra);
+  if (!shared) receptances_of(p, system, maps, &kept->own);
+  const ride::SpeedSpectra& sp = kept->spectra;
+  ride::speed_spectra(system, shared ? *p.shared : kept->own, p.components, p.grid, speed, bands,
+                      p.options->keep_spectra, &kept->spectra);
   std::vector<std::string> driven;
   std::vector<bool> unbounded = unbounded_outputs(p, system, maps, speed, &driven);
   if (p.contact && !ride::decays(ride::first_order_roots(system))) {
@@ -437,19 +442,21 @@ void build_grid(Problem* p, const RideOptions& options) {
        [](double f) { return std::pow(sperling_weighting(f, SperlingDirection::lateral), 2); });
 }
 
-// Each speed on its own; `threads` workers take every threads-th speed.
-std::vector<SpeedOutcome> solve_speeds(const Problem& p, const RideOptions& options) {
+// Each speed on its own; `threads` workers take every threads-th speed, each with its own arrays
+// in `workspace`, kept from one speed to the next.
+std::vector<SpeedOutcome> solve_speeds(const Problem& p, const RideOptions& options, ride::Workspace* workspace) {
   const size_t count = options.speeds.size();
   std::vector<SpeedOutcome> out(count);
   std::vector<std::exception_ptr> errors(count);
+  const size_t threads = std::min<size_t>(static_cast<size_t>(options.threads), count);
+  if (workspace->workers.size() < std::max<size_t>(threads, 1)) workspace->workers.resize(std::max<size_t>(threads, 1));
   auto work = [&](size_t first, size_t step) {
     for (size_t v = first; v < count; v += step) try {
-        out[v] = solve_speed(p, options.speeds[v]);
+        out[v] = solve_speed(p, options.speeds[v], &workspace->workers[first]);
       } catch (...) {
         errors[v] = std::current_exception();
       }
   };
-  const size_t threads = std::min<size_t>(static_cast<size_t>(options.threads), count);
   std::vector<std::thread> pool;
   for (size_t t = 1; t < threads; ++t) pool.emplace_back(work, t, threads);
   work(0, std::max<size_t>(threads, 1));
@@ -493,6 +500,13 @@ bool reaches_laterally(const Problem& p) {
 
 RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
                       const std::vector<RideOutput>& outputs, const RideOptions& options) {
+  ride::Workspace workspace;  // kept across this solve's speeds
+  return ride::solve_ride(system, track, outputs, options, &workspace);
+}
+
+RideResult ride::solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
+                            const std::vector<RideOutput>& outputs, const RideOptions& options,
+                            Workspace* workspace) {
   require_valid(options, "RideOptions: ");
   RideResult result;
   result.summary.analysis = "ride on random track";
@@ -509,10 +523,11 @@ RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra
   result.notes = p.notes;
   clock.lap("grid");
   if (p.friction.empty() && !p.contact) {
-    p.shared = receptances_of(p, system, p.maps);
+    receptances_of(p, system, p.maps, &workspace->shared);
+    p.shared = &workspace->shared;
     clock.lap("receptances");
   }
-  const std::vector<SpeedOutcome> speeds = solve_speeds(p, options);
+  const std::vector<SpeedOutcome> speeds = solve_speeds(p, options, workspace);
   clock.lap("speeds");
 
   result.summary.method =

@@ -28,28 +28,45 @@ std::vector<BandWeights> speed_bands(const std::vector<Component>& components, c
   return bands;
 }
 
-SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, const std::vector<Component>& components,
-                           const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands,
-                           bool with_psd) {
+void speed_spectra(const LinearSystem& system, const Receptances& r, const std::vector<Component>& components,
+                   const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands, bool with_psd,
+                   SpeedSpectra* into) {
   (void)system;  // the inputs' positions are the receptances' own (Receptances::x)
   const int m = r.inputs, C = r.components, O = r.outputs, J = r.modes;
   const Eigen::Index K = grid.size();
   const double front = *std::max_element(r.x.begin(), r.x.end());
 
-  SpeedSpectra s;
-  s.outputs.assign(O, ComponentPower{std::vector<Eigen::VectorXd>(C, Eigen::VectorXd::Zero(K))});
-  s.psd.assign(O, with_psd ? Eigen::VectorXd::Zero(K) : Eigen::VectorXd());
-  s.modal_variance.assign(O, std::vector<double>(J, 0.0));
-  s.input_psd.assign(C, Eigen::VectorXd::Zero(K));
+  // Every array at its size and zero, in the storage it already has when that fits (resize
+  // keeps it at an unchanged size; a vector of vectors shrinks without freeing the rest).
+  SpeedSpectra& s = *into;
+  const auto zeros = [K](Eigen::VectorXd* v) {
+    v->resize(K);
+    v->setZero();
+  };
+  s.outputs.resize(O);
+  for (ComponentPower& p : s.outputs) {
+    p.power.resize(C);
+    for (Eigen::VectorXd& v : p.power) zeros(&v);
+  }
+  s.psd.resize(O);
+  for (Eigen::VectorXd& v : s.psd)
+    if (with_psd) zeros(&v);
+    else v.resize(0);
+  s.modal_variance.resize(O);
+  for (std::vector<double>& v : s.modal_variance) v.assign(J, 0.0);
+  s.input_psd.resize(C);
+  for (Eigen::VectorXd& v : s.input_psd) zeros(&v);
   // G_c inside the band: the density at the wavenumber clamped to the band, so that an edge
   // point carries the edge value whatever the round-off of 2πf/V there. Outside the band the
   // density is zero (TrackSpectrum::density) and the clamped one is the edge's, computed once.
-  Eigen::MatrixXd inside_density(C, K);
+  Eigen::MatrixXd& inside_density = s.inside_density;
+  inside_density.resize(C, K);  // every value written below
   // A grid point this speed needs: one with an integration weight, on an interval inside a
   // band, or with a density. Elsewhere every index multiplies the power by a zero weight and
   // the PSD is H²·0, so the point's combine is skipped and its power left at zero: the sums
   // come out bit for bit as with it (x + 0 = x), at a third to a half of the work.
-  std::vector<char> needed(K, 0);
+  std::vector<char>& needed = s.needed;
+  needed.assign(K, 0);
   for (int c = 0; c < C; ++c) {
     const WavenumberBand b = components[c].spectrum.band();
     const double below = kTwoPi / speed * components[c].spectrum.density(b.low);
@@ -170,7 +187,6 @@ SpeedSpectra speed_spectra(const LinearSystem& system, const Receptances& r, con
         }
     }
   }
-  return s;
 }
 
 }  // namespace railmodal::ride

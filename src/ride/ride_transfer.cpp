@@ -279,6 +279,15 @@ OutputMap output_map(const LinearSystem& system, const RideOutput& o, const std:
   throw std::invalid_argument("ride: output '" + o.name + "': unknown kind");
 }
 
+// At least `columns` columns of `rows` rows, keeping the storage when it already holds them: a
+// kept Receptances is rewritten in place (column-major, so column k lies where it would in an
+// exact-size matrix), and glibc has nothing to return to the system and fault in again at the
+// next solve (docs/ride.md, "Performance", the ninth round).
+template <typename Matrix>
+void keep_columns(Matrix* a, Eigen::Index rows, Eigen::Index columns) {
+  if (a->rows() != rows || a->cols() < columns) a->resize(rows, columns);
+}
+
 Complex power_of_i_omega(int order, double omega) {
   Complex p = 1.0;
   for (int k = 0; k < order; ++k) p *= Complex(0.0, omega);
@@ -349,14 +358,6 @@ void solve_in_place(int n, int r, std::complex<double>* D, std::complex<double>*
   }
 }
 
-Eigen::VectorXd solve_in_place(Eigen::MatrixXcd* D, Eigen::MatrixXcd* B) {
-  const int n = static_cast<int>(D->rows());
-  Eigen::VectorXd pivots(n);
-  std::vector<Complex> inverse(static_cast<size_t>(n));
-  solve_in_place(n, static_cast<int>(B->cols()), D->data(), B->data(), pivots.data(), inverse.data());
-  return pivots;
-}
-
 std::complex<double> maxwell_stiffness(double stiffness, double damping, double omega) {
   const Complex ic(0.0, omega * damping);
   return ic * stiffness / (stiffness + ic);
@@ -419,9 +420,10 @@ OutputMap stretch_rate_map(const LinearSystem& system, int element) {
   return m;
 }
 
-Receptances receptances(const LinearSystem& system, const std::vector<Component>& components,
-                        const std::vector<OutputMap>& maps, const Eigen::VectorXd& grid,
-                        const Eigen::MatrixXd* basis, const ModalBasis* split) {
+void receptances(const LinearSystem& system, const std::vector<Component>& components,
+                 const std::vector<OutputMap>& maps, const Eigen::VectorXd& grid, const Eigen::MatrixXd* basis,
+                 const ModalBasis* split, Receptances* into) {
+  Receptances& r = *into;
   const int n = system.size();
   // The input groups: the inputs at one x (within round-off) share their delay at every speed.
   std::vector<double> xs;
@@ -450,15 +452,16 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
   const Eigen::MatrixXcd basis_c = Phi.cast<Complex>();
   Eigen::MatrixXcd D(stiffness.rows(), stiffness.cols());
   const int J = split ? static_cast<int>(split->shapes.cols()) : 0;
-  Receptances r;
   r.outputs = O;
   r.components = C;
   r.inputs = m;
   r.x = xs;
   r.modes = J;
-  r.response.resize(static_cast<Eigen::Index>(O) * C * m, K);
-  r.modal.resize(static_cast<Eigen::Index>(J) * C * m, K);
-  r.modal_rows.resize(static_cast<Eigen::Index>(O) * J, K);
+  keep_columns(&r.response, static_cast<Eigen::Index>(O) * C * m, K);
+  if (J > 0) {  // without modal terms (rms_only) no reader looks at them: a kept pair stays for the next full solve
+    keep_columns(&r.modal, static_cast<Eigen::Index>(J) * C * m, K);
+    keep_columns(&r.modal_rows, static_cast<Eigen::Index>(O) * J, K);
+  }
   Eigen::MatrixXcd Q(n, C * m), X(n, C * m), A(O, n), h(O, C * m), q(J, C * m), seen(O, J);
   const Eigen::MatrixXcd left_c = split ? Eigen::MatrixXcd(split->left.cast<Complex>()) : Eigen::MatrixXcd();
   const Eigen::MatrixXcd shapes_c = split ? Eigen::MatrixXcd(split->shapes.cast<Complex>()) : Eigen::MatrixXcd();
@@ -522,7 +525,6 @@ Receptances receptances(const LinearSystem& system, const std::vector<Component>
     for (int o = 0; o < O; ++o)
       for (int j = 0; j < J; ++j) r.modal_rows(static_cast<Eigen::Index>(o) * J + j, k) = std::norm(seen(o, j));
   }
-  return r;
 }
 
 }  // namespace railmodal::ride

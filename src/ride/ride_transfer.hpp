@@ -64,14 +64,12 @@ OutputMap stretch_rate_map(const LinearSystem& system, int element);
 std::complex<double> maxwell_stiffness(double stiffness, double damping, double omega);
 
 /// Solves D·Y = B in place (B becomes Y, D its LU factors) by Gaussian elimination with
-/// partial pivoting (the row of the largest modulus in the column, as LAPACK's zgetrf) and
-/// returns the moduli of U's pivots. A zero pivot stops the elimination there (the pivots after
-/// it stay zero and B is left unfinished): the caller refuses the singular matrix, and no NaN
-/// or infinity is formed. For the ride's small systems, solved at every grid frequency.
-Eigen::VectorXd solve_in_place(Eigen::MatrixXcd* D, Eigen::MatrixXcd* B);
-
-/// The same on column-major storage: D n × n, B n × r, `pivots` and `inverse` (the pivots'
-/// reciprocals) n values each, all the caller's (no allocation: it runs at every frequency).
+/// partial pivoting (the row of the largest modulus in the column, as LAPACK's zgetrf) on
+/// column-major storage: D n × n, B n × r. `pivots` receives the moduli of U's pivots and
+/// `inverse` their reciprocals, n values each, all the caller's (no allocation: it runs at every
+/// grid frequency). A zero pivot stops the elimination there (the pivots after it stay zero and
+/// B is left unfinished): the caller refuses the singular matrix, and no NaN or infinity is
+/// formed. For the ride's small systems.
 void solve_in_place(int n, int r, std::complex<double>* D, std::complex<double>* B, double* pivots,
                     std::complex<double>* inverse);
 
@@ -85,6 +83,11 @@ struct ModalBasis {
 /// O outputs, J modes of the split). An input group is the track inputs at one x (the two
 /// wheels of an axle): at every speed they share their delay, so their loads are summed
 /// before the solve and each speed combines m groups, not every input.
+///
+/// The matrices may have more columns than the grid has points: a Receptances kept across
+/// solves (ride::Workspace) keeps its storage when a later grid is shorter, and only the first
+/// grid-size columns are the current solve's (every reader indexes them by grid point). Without
+/// modal terms (modes = 0) `modal` and `modal_rows` are not read and may hold an earlier solve's.
 struct Receptances {
   int outputs = 0, components = 0, inputs = 0, modes = 0;
   std::vector<double> x;  ///< per input group: its position along the vehicle, m (x forward)
@@ -101,8 +104,10 @@ struct Receptances {
 /// frequency for every input group at once; with a basis Φ (n × J, not null) in the reduced
 /// coordinates X = Φq, (ΦᵀDΦ)q = ΦᵀQ (modal truncation). Throws railmodal::NumericalError naming
 /// the frequency where the matrix is singular. With `split` (not null) the modal terms too.
-Receptances receptances(const LinearSystem& system, const std::vector<Component>& components,
-                        const std::vector<OutputMap>& maps, const Eigen::VectorXd& grid,
-                        const Eigen::MatrixXd* basis, const ModalBasis* split);
+/// Writes into `r`, whose matrices are reallocated only when their rows change or the grid
+/// outgrows their columns (the ride's largest arrays: a caller that solves again keeps them).
+void receptances(const LinearSystem& system, const std::vector<Component>& components,
+                 const std::vector<OutputMap>& maps, const Eigen::VectorXd& grid, const Eigen::MatrixXd* basis,
+                 const ModalBasis* split, Receptances* r);
 
 }  // namespace railmodal::ride

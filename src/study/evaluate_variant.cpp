@@ -268,8 +268,9 @@ void hunting_speed(const Vehicle& vehicle, const HuntingOptions& options, Varian
 
 // The ride on the scene's random track, when the scene has one: per output the largest RMS and
 // Sperling Wz over the ride's speeds, and the largest N_MV estimate (the spectra are not kept);
-// with rms_only (ride_rms_only(study)) the RMS alone.
-void ride_summary(const Vehicle& vehicle, const Scene& scene, bool rms_only, VariantResult* r) {
+// with rms_only (ride_rms_only(study)) the RMS alone. With a worker's `kept` (may be null) the
+// solve's large arrays are the ones it kept from its previous variant (ride_workspace.hpp).
+void ride_summary(const Vehicle& vehicle, const Scene& scene, bool rms_only, ride::Workspace* kept, VariantResult* r) {
   if (!scene.irregularity || !scene.ride) return;
   const LinearSystem system = assemble(vehicle, scene.dofs);
   check_scene_fits(scene, system);
@@ -279,7 +280,8 @@ void ride_summary(const Vehicle& vehicle, const Scene& scene, bool rms_only, Var
   options.rms_only = rms_only;
   const std::vector<RideOutput> outputs =
       scene.ride->outputs.empty() ? default_ride_outputs(system) : scene.ride->outputs;
-  const RideResult ride = solve_ride(system, *scene.irregularity, outputs, options);
+  const RideResult ride = kept ? ride::solve_ride(system, *scene.irregularity, outputs, options, kept)
+                                : solve_ride(system, *scene.irregularity, outputs, options);
   r->ride_evaluated = true;
   for (size_t i = 0; i < ride.outputs.size(); ++i) {
     VariantResult::RideSummary o;
@@ -373,7 +375,7 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
       // A ride scene: no periodic source, so no critical speeds, peaks or dynamic deflections.
       summarise_without_sources(variant, &r);
       clock.lap("modes");
-      ride_summary(variant.vehicle, variant.scene, ride_rms_only, &r);
+      ride_summary(variant.vehicle, variant.scene, ride_rms_only, workspace ? &workspace->ride : nullptr, &r);
       clock.lap("ride");
       if (hunting) hunting_speed(variant.vehicle, *hunting, &r);
       clock.lap("hunting stability");
@@ -430,7 +432,7 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
     clock.lap("deflection checks");
     if (hunting) hunting_speed(vehicle, *hunting, &r);
     clock.lap("hunting stability");
-    ride_summary(vehicle, scene, ride_rms_only, &r);
+    ride_summary(vehicle, scene, ride_rms_only, workspace ? &workspace->ride : nullptr, &r);
     clock.lap("ride");
   } catch (const NumericalError& e) {
     if (r.failure.empty()) r.failure = std::string("numerical failure: ") + e.what();

@@ -10,6 +10,7 @@
 #include "model/assembly.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/study.hpp"
+#include "ride/ride_workspace.hpp"
 
 namespace railmodal::study {
 
@@ -34,10 +35,12 @@ struct VariantSettings {
 /// What a worker keeps from one variant to the next (issue 19, item 2): the assembly of the
 /// base its variants differ from by coefficients (model::VariantAssembly), and the two systems
 /// each variant is assembled into (the swept one, and the lateral stiffness of the
-/// metacentric height), handed back after each evaluation so that their storage is reused.
+/// metacentric height), handed back after each evaluation so that their storage is reused; and
+/// the ride solve's large arrays, for a study with a ride metric.
 struct Workspace {
   model::VariantAssembly assembly;
   LinearSystem system, lateral;
+  ride::Workspace ride;
 };
 
 /// evaluate_variant for a variant the caller gives up (a worker's, read for this evaluation):

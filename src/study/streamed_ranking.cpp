@@ -118,12 +118,6 @@ StreamedRanking::StreamedRanking(const Study& study, const Source& source, size_
   if (base_) base_->rank = static_cast<int>(std::find(order_.begin(), order_.end(), size_t{0}) - order_.begin()) + 1;
 }
 
-std::string StreamedRanking::text(size_t rank) const {
-  if (rank < 1 || rank > order_.size()) throw std::out_of_range("a streamed ranking has no rank " + std::to_string(rank));
-  const size_t k = order_[rank - 1];
-  return spill_ ? text_at(k) : kept_[k];
-}
-
 void StreamedRanking::each_text(const std::function<void(size_t, std::string_view)>& visit) const {
   size_t rank = 0;
   if (spill_) return spill_->each_of(order_, [&](std::string_view text) { visit(++rank, text); });

@@ -39,11 +39,9 @@ class StreamedRanking {
   size_t size() const { return size_; }          ///< variants ranked
   size_t feasible() const { return feasible_; }  ///< evaluated and within every constraint
   size_t shown() const { return order_.size(); }  ///< variants whose text is kept: size(), or top
-  /// The text of the variant ranked `rank` (1 ... shown()).
-  std::string text(size_t rank) const;
-  /// The texts of ranks 1 ... shown() handed to `visit` with their rank, in rank order: what
-  /// text(rank) gives for each, read from the temporary file in a few sequential passes
-  /// (SpilledTexts::each_of) rather than one read a rank.
+  /// The texts of ranks 1 ... shown() handed to `visit` with their rank, in rank order, read
+  /// from the temporary file in a few sequential passes (SpilledTexts::each_of) rather than one
+  /// read a rank.
   void each_text(const std::function<void(size_t rank, std::string_view text)>& visit) const;
   /// The text of the variant at `position` in the study (0 ... size() − 1); only without `top`.
   std::string text_at(size_t position) const;

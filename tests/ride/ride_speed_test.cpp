@@ -13,6 +13,7 @@
 #include "railmodal/railmodal.hpp"
 #include "ride/phase_sincos.hpp"
 #include "ride/ride_transfer.hpp"
+#include "ride/ride_workspace.hpp"
 #include "ride_test_systems.hpp"
 
 namespace railmodal {
@@ -40,6 +41,16 @@ TrackIrregularitySpectra white_level(double low, double high) {
 }
 
 // Against Eigen's LU on a random complex system that needs row swaps (a zero leading entry).
+// ride::solve_in_place on Eigen's column-major storage, with the pivot and reciprocal buffers
+// receptances gives it.
+Eigen::VectorXd solve_in_place(Eigen::MatrixXcd* D, Eigen::MatrixXcd* B) {
+  const int n = static_cast<int>(D->rows());
+  Eigen::VectorXd pivots(n);
+  std::vector<Complex> inverse(static_cast<size_t>(n));
+  ride::solve_in_place(n, static_cast<int>(B->cols()), D->data(), B->data(), pivots.data(), inverse.data());
+  return pivots;
+}
+
 TEST(RideSpeed, SmallSolveMatchesEigensLu) {
   std::mt19937 random(21);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -52,7 +63,7 @@ TEST(RideSpeed, SmallSolveMatchesEigensLu) {
   D(0, 0) = 0.0;
   const Eigen::MatrixXcd expected = Eigen::PartialPivLU<Eigen::MatrixXcd>(D).solve(B);
   Eigen::MatrixXcd a = D, y = B;
-  const Eigen::VectorXd pivots = ride::solve_in_place(&a, &y);
+  const Eigen::VectorXd pivots = solve_in_place(&a, &y);
   // 1e-13: a diagonally dominated matrix (condition ~10), two eliminations of n = 7 in double
   // precision differ by a few ulps times the condition.
   EXPECT_LT((y - expected).norm(), 1e-13 * expected.norm());
@@ -65,10 +76,67 @@ TEST(RideSpeed, SmallSolveReportsAZeroPivotWithoutNaN) {
   Eigen::MatrixXcd D(3, 3), B(3, 1);
   D << 1.0, 2.0, 3.0, 2.0, 4.0, 6.0, 1.0, 0.0, 1.0;  // row 2 = 2 × row 1
   B << 1.0, 1.0, 1.0;
-  const Eigen::VectorXd pivots = ride::solve_in_place(&D, &B);
+  const Eigen::VectorXd pivots = solve_in_place(&D, &B);
   EXPECT_EQ(pivots.minCoeff(), 0.0);
   EXPECT_TRUE(pivots.allFinite());
   EXPECT_GT(pivots.maxCoeff(), 0.0);
+}
+
+// A scene's ride as `railmodal ride` runs it, in `kept` (null: solve_ride's own arrays).
+RideResult scene_ride(const std::string& file, bool rms_only, bool keep_spectra, ride::Workspace* kept) {
+  const Scene scene = load_scene(std::string(RAILMODAL_DATA_DIR) + "/scenes/" + file);
+  const LinearSystem system = assemble(load_vehicle(scene.vehicle_file), scene.dofs);
+  RideOptions options = scene.ride->options;
+  options.rms_only = rms_only;
+  options.keep_spectra = keep_spectra;
+  const std::vector<RideOutput> outputs = scene.ride->outputs.empty() ? default_ride_outputs(system) : scene.ride->outputs;
+  return kept ? ride::solve_ride(system, *scene.irregularity, outputs, options, kept)
+              : solve_ride(system, *scene.irregularity, outputs, options);
+}
+
+void expect_same_bits(const RideResult& a, const RideResult& b) {
+  ASSERT_EQ(a.frequencies.size(), b.frequencies.size());
+  EXPECT_EQ(a.frequencies, b.frequencies);
+  ASSERT_EQ(a.speeds.size(), b.speeds.size());
+  EXPECT_EQ(a.grid_error_estimate, b.grid_error_estimate);
+  for (size_t v = 0; v < a.speeds.size(); ++v) {
+    ASSERT_EQ(a.speeds[v].outputs.size(), b.speeds[v].outputs.size());
+    for (size_t o = 0; o < a.speeds[v].outputs.size(); ++o) {
+      const RideOutputAtSpeed &x = a.speeds[v].outputs[o], &y = b.speeds[v].outputs[o];
+      EXPECT_EQ(x.rms, y.rms);
+      EXPECT_EQ(x.weighted_rms, y.weighted_rms);
+      EXPECT_EQ(x.sperling_wz, y.sperling_wz);
+      EXPECT_EQ(x.p95_estimate, y.p95_estimate);
+      EXPECT_EQ(x.cross_term_variance, y.cross_term_variance);
+      EXPECT_EQ(x.direct_variance, y.direct_variance);
+      EXPECT_EQ(x.psd, y.psd);
+      ASSERT_EQ(x.modes.size(), y.modes.size());
+      for (size_t j = 0; j < x.modes.size(); ++j) {
+        EXPECT_EQ(x.modes[j].mode, y.modes[j].mode);
+        EXPECT_EQ(x.modes[j].variance, y.modes[j].variance);
+      }
+    }
+    EXPECT_EQ(a.speeds[v].input_psd, b.speeds[v].input_psd);
+  }
+}
+
+// A workspace kept across solves holds nothing a solve reads before writing it: the coach,
+// then the leaf-friction wagon (another grid, other outputs, its own receptances at each
+// friction pass), the coach RMS-only (no modal terms: the kept ones stay) and with its spectra,
+// and the coach again, all in one workspace, give solve_ride's answers bit for bit.
+TEST(RideSpeed, KeptWorkspaceGivesTheSameBits) {
+  ride::Workspace kept;
+  const RideResult coach = scene_ride("manchester_coach_ore_low.toml", false, false, nullptr);
+  const RideResult wagon = scene_ride("two_axle_wagon_fra_class4.toml", false, true, nullptr);
+  const RideResult coach_rms = scene_ride("manchester_coach_ore_low.toml", true, false, nullptr);
+  const RideResult coach_psd = scene_ride("manchester_coach_ore_low.toml", false, true, nullptr);
+  ASSERT_GT(coach.speeds.size(), 1u);
+  ASSERT_NE(coach.frequencies.size(), wagon.frequencies.size());
+  expect_same_bits(scene_ride("manchester_coach_ore_low.toml", false, false, &kept), coach);
+  expect_same_bits(scene_ride("two_axle_wagon_fra_class4.toml", false, true, &kept), wagon);
+  expect_same_bits(scene_ride("manchester_coach_ore_low.toml", true, false, &kept), coach_rms);
+  expect_same_bits(scene_ride("manchester_coach_ore_low.toml", false, true, &kept), coach_psd);
+  expect_same_bits(scene_ride("manchester_coach_ore_low.toml", false, false, &kept), coach);
 }
 
 // The same vehicle with its wheels doubled at each x (two wheels of an axle, summed into one
