@@ -57,4 +57,10 @@ std::optional<FastPath> resolve_fast_path(const StudyFile& file);
 std::optional<Vehicle> fast_vehicle(const StudyFile& file, const study::VariantSpec& spec,
                                     const std::vector<const study::Assignment*>& on_vehicle);
 
+/// The same written into *vehicle, whose storage is reused where it has the base's sizes (a
+/// study's worker reads each variant into the vehicle of the one before); false, and *vehicle
+/// unchanged, where fast_vehicle gives nothing.
+bool fast_vehicle_into(const StudyFile& file, const study::VariantSpec& spec,
+                       const std::vector<const study::Assignment*>& on_vehicle, Vehicle* vehicle);
+
 }  // namespace railmodal::input
