@@ -40,7 +40,6 @@ struct FastKey {
 struct FastPath {
   Vehicle base;
   std::map<std::string, FastKey> keys;
-  size_t number_count = 0;  // how many numbers the base has (vehicle_numbers' list, reserved once)
 };
 
 /// Probes every vehicle key of the study's sweeps and [[variant]] overrides on the base

@@ -139,11 +139,15 @@ struct Walk {
 
 }  // namespace
 
-std::vector<double*> vehicle_numbers(Vehicle* vehicle, size_t capacity) {
+std::vector<double*> vehicle_numbers(Vehicle* vehicle) {
   std::vector<double*> numbers;
-  numbers.reserve(capacity);
-  Walk{&numbers, nullptr}.vehicle(*vehicle);
+  vehicle_numbers(vehicle, &numbers);
   return numbers;
+}
+
+void vehicle_numbers(Vehicle* vehicle, std::vector<double*>* numbers) {
+  numbers->clear();
+  Walk{numbers, nullptr}.vehicle(*vehicle);
 }
 
 std::string vehicle_shape(const Vehicle& vehicle) {
