@@ -735,8 +735,15 @@ void add_static_loads(const Vehicle& vehicle, FullAssembly* a, const DeadLoadPat
     a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
   a->K = a->full.K_springs;
   if (workers) {
-    for (const DeadLoadPatterns::HangerEntry& h : workers->hangers)
-      a->K(h.row, h.column) += model::lateral_stiffness(vehicle.elements[h.element], a->loads[h.element]) * h.value;
+    // Each hanger's stiffness found once for its entries (a pure function of the element and
+    // its load: the same value each time).
+    int hanger = -1;
+    double k = 0.0;
+    for (const DeadLoadPatterns::HangerEntry& h : workers->hangers) {
+      if (h.element != hanger)
+        hanger = h.element, k = model::lateral_stiffness(vehicle.elements[h.element], a->loads[h.element]);
+      a->K(h.row, h.column) += k * h.value;
+    }
   } else {
     for (size_t k = 0; k < vehicle.elements.size(); ++k) {
       const Element& e = vehicle.elements[k];
