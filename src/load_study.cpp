@@ -92,13 +92,9 @@ std::string variant_name(const Study& study, int index) {
 }
 
 StudyVariant read_variant(const Study& study, int index) {
-  if (index < 0 || index >= variant_count(study))
-    throw std::out_of_range("read_variant: the study has no variant " + std::to_string(index + 1));
-  if (opened(study))
-    return input::read_variant(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), nullptr);
-  if (study.variants[index].read) return study.variants[index];
-  if (!study.plan) throw std::invalid_argument("read_variant: variant '" + study.variants[index].name + "' was never read");
-  return input::read_variant(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), nullptr);
+  StudyVariant variant;
+  detail::read_variant_into(study, index, &variant);
+  return variant;
 }
 
 void detail::read_variant_into(const Study& study, int index, StudyVariant* variant) {
