@@ -92,13 +92,20 @@ std::string variant_name(const Study& study, int index) {
 }
 
 StudyVariant read_variant(const Study& study, int index) {
+  StudyVariant variant;
+  detail::read_variant_into(study, index, &variant);
+  return variant;
+}
+
+void detail::read_variant_into(const Study& study, int index, StudyVariant* variant) {
   if (index < 0 || index >= variant_count(study))
     throw std::out_of_range("read_variant: the study has no variant " + std::to_string(index + 1));
-  if (opened(study))
-    return input::read_variant(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), nullptr);
-  if (study.variants[index].read) return study.variants[index];
+  if (!opened(study) && study.variants[index].read) {
+    *variant = study.variants[index];
+    return;
+  }
   if (!study.plan) throw std::invalid_argument("read_variant: variant '" + study.variants[index].name + "' was never read");
-  return input::read_variant(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), nullptr);
+  input::read_variant_into(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), variant);
 }
 
 std::string study::parameter_label(const Study& study, const std::string& key) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <utility>
 
 #include "input/document_readers.hpp"
 #include "input/key_path.hpp"
@@ -432,29 +433,45 @@ Vehicle read_overridden_vehicle(const StudyFile& file, const study::VariantSpec&
                                         file, spec, read_vehicle);
 }
 
-StudyVariant read_variant(const StudyFile& file, const study::VariantSpec& spec, std::map<std::string, Vehicle>* plain) {
+namespace {
+
+// read_variant's vehicle and scene written into *variant (its name and parameters left to the
+// caller); its vehicle's storage reused by the fast path.
+void read_into(const StudyFile& file, const study::VariantSpec& spec, std::map<std::string, Vehicle>* plain,
+               StudyVariant* variant) {
   const toml::value& vehicle_document = file.vehicle_documents.at(spec.vehicle_file);
   std::vector<const study::Assignment*> on_vehicle, on_scene;
   for (const auto& a : spec.assignments) (a.scene ? on_scene : on_vehicle).push_back(&a);
-  StudyVariant variant;
-  variant.name = spec.name;
-  variant.parameters = spec.parameters;
   if (on_vehicle.empty() && plain) {
     const auto [cached, fresh] = plain->try_emplace(spec.vehicle_file);
     if (fresh) cached->second = read_vehicle(vehicle_document, spec.vehicle_file);
-    variant.vehicle = cached->second;
+    variant->vehicle = cached->second;
   } else if (on_vehicle.empty()) {
-    variant.vehicle = read_vehicle(vehicle_document, spec.vehicle_file);
-  } else if (std::optional<Vehicle> fast = fast_vehicle(file, spec, on_vehicle)) {
-    variant.vehicle = std::move(*fast);
-  } else {
-    variant.vehicle = read_overridden_vehicle(file, spec, on_vehicle);
+    variant->vehicle = read_vehicle(vehicle_document, spec.vehicle_file);
+  } else if (!fast_vehicle_into(file, spec, on_vehicle, &variant->vehicle)) {
+    variant->vehicle = read_overridden_vehicle(file, spec, on_vehicle);
   }
-  variant.scene = on_scene.empty()
-                      ? file.base_scene
-                      : read_with_assignments<Scene>(file.scene_document, file.scene_file, on_scene, file, spec, read_scene);
-  check_rule(file, spec, variant);
+  variant->scene = on_scene.empty()
+                       ? file.base_scene
+                       : read_with_assignments<Scene>(file.scene_document, file.scene_file, on_scene, file, spec, read_scene);
+  check_rule(file, spec, *variant);
+}
+
+}  // namespace
+
+StudyVariant read_variant(const StudyFile& file, const study::VariantSpec& spec, std::map<std::string, Vehicle>* plain) {
+  StudyVariant variant;
+  variant.name = spec.name;
+  variant.parameters = spec.parameters;
+  read_into(file, spec, plain, &variant);
   return variant;
+}
+
+void read_variant_into(const StudyFile& file, study::VariantSpec&& spec, StudyVariant* variant) {
+  read_into(file, spec, nullptr, variant);
+  variant->name = std::move(spec.name);
+  variant->parameters = std::move(spec.parameters);
+  variant->read = true;
 }
 
 }  // namespace railmodal::input

@@ -221,7 +221,6 @@ std::optional<FastPath> resolve_fast_path(const StudyFile& file) {
   }
   const std::string base_shape = vehicle_shape(fast.base);
   const std::vector<double> base = numbers_of(fast.base);
-  fast.number_count = base.size();
   const std::map<std::string, KeyProbes> probes = probe_values(file);
   for (const auto& [key, values] : probes) {
     if (values.written.size() + 3 * values.samples.size() > kMaxProbes) continue;
@@ -265,27 +264,40 @@ std::optional<FastPath> resolve_fast_path(const StudyFile& file) {
   return fast;
 }
 
-std::optional<Vehicle> fast_vehicle(const StudyFile& file, const study::VariantSpec& spec,
-                                    const std::vector<const study::Assignment*>& on_vehicle) {
-  if (!file.fast || spec.vehicle_file != file.plan.vehicle_file) return std::nullopt;
+bool fast_vehicle_into(const StudyFile& file, const study::VariantSpec& spec,
+                       const std::vector<const study::Assignment*>& on_vehicle, Vehicle* vehicle) {
+  if (!file.fast || spec.vehicle_file != file.plan.vehicle_file) return false;
   std::vector<std::pair<const FastKey*, double>> sets;
+  sets.reserve(on_vehicle.size());
   for (const study::Assignment* a : on_vehicle) {
     const auto found = file.fast->keys.find(a->key);
-    if (found == file.fast->keys.end()) return std::nullopt;
+    if (found == file.fast->keys.end()) return false;
     const FastKey& key = found->second;
-    if (a->written >= 0 && !key.written.count(a->written)) return std::nullopt;
+    if (a->written >= 0 && !key.written.count(a->written)) return false;
     std::optional<double> si = a->written < 0 ? drawn_si(key, a->drawn) : std::nullopt;
     if (!si) si = read_as(assignment_value(file, *a), key.kind);
-    if (!si) return std::nullopt;
+    if (!si) return false;
     if (a->written < 0 && std::none_of(key.drawn.begin(), key.drawn.end(),
                                        [&](const std::pair<double, double>& d) { return d.first <= *si && *si <= d.second; }))
-      return std::nullopt;
+      return false;
     sets.push_back({&key, *si});
   }
-  Vehicle vehicle = file.fast->base;
-  const std::vector<double*> numbers = vehicle_numbers(&vehicle, file.fast->number_count);
+  // Assigned, not constructed: a vehicle of the base's shape (a worker's previous variant)
+  // keeps its names', lists' and stages' storage.
+  *vehicle = file.fast->base;
+  // This thread's list, its storage kept between variants (the list is a few kilobytes: its
+  // allocation cost as much as the walk).
+  thread_local std::vector<double*> numbers;
+  vehicle_numbers(vehicle, &numbers);
   for (const auto& [key, si] : sets)
     for (size_t i : key->numbers) *numbers[i] = si;
+  return true;
+}
+
+std::optional<Vehicle> fast_vehicle(const StudyFile& file, const study::VariantSpec& spec,
+                                    const std::vector<const study::Assignment*>& on_vehicle) {
+  Vehicle vehicle;
+  if (!fast_vehicle_into(file, spec, on_vehicle, &vehicle)) return std::nullopt;
   return vehicle;
 }
 

@@ -17,11 +17,19 @@ struct Walk {
   void vector(Eigen::Vector3d& v) {
     for (int i = 0; i < 3; ++i) number(v(i));
   }
+  // The shape's text is made only when it is asked for: a study's fast path walks every
+  // variant's vehicle for its numbers alone, and would otherwise build (and drop) a string
+  // per name, flag and count.
   void text(const std::string& t) {
     if (shape) *shape += t + '\x1f';  // a separator no name holds
   }
+  void text(const char* t) {
+    if (shape) text(std::string(t));
+  }
   void flag(bool present) { text(present ? "1" : "0"); }
-  void count(size_t n) { text(std::to_string(n)); }
+  void count(size_t n) {
+    if (shape) text(std::to_string(n));
+  }
   template <class T, class F>
   void optional(std::optional<T>& o, F f) {
     flag(o.has_value());
@@ -131,11 +139,15 @@ struct Walk {
 
 }  // namespace
 
-std::vector<double*> vehicle_numbers(Vehicle* vehicle, size_t capacity) {
+std::vector<double*> vehicle_numbers(Vehicle* vehicle) {
   std::vector<double*> numbers;
-  numbers.reserve(capacity);
-  Walk{&numbers, nullptr}.vehicle(*vehicle);
+  vehicle_numbers(vehicle, &numbers);
   return numbers;
+}
+
+void vehicle_numbers(Vehicle* vehicle, std::vector<double*>* numbers) {
+  numbers->clear();
+  Walk{numbers, nullptr}.vehicle(*vehicle);
 }
 
 std::string vehicle_shape(const Vehicle& vehicle) {

@@ -12,8 +12,9 @@ namespace railmodal::input {
 /// The vehicle's numbers (every double, vectors' and optional members' included), in a fixed
 /// order that depends only on its shape. A field added to the vehicle's structs must be added
 /// here (test VehicleNumbers.CoverEveryField counts the fields by the structs' sizes).
-/// `capacity`: room reserved for the list (a caller that knows the count, one allocation).
-std::vector<double*> vehicle_numbers(Vehicle* vehicle, size_t capacity = 0);
+std::vector<double*> vehicle_numbers(Vehicle* vehicle);
+/// The same into *numbers, its storage reused (a study's fast path, once a variant).
+void vehicle_numbers(Vehicle* vehicle, std::vector<double*>* numbers);
 
 /// Everything of the vehicle but its numbers, as text: names, kinds, counts, held motions,
 /// flags, which optional parts are present and how long each list is. Two vehicles of the

@@ -249,10 +249,18 @@ void add_element(const ElementMap& m, const Eigen::Vector3d& k, Eigen::MatrixXd*
       // The five motions by themselves, as they were assembled before longitudinal motion was
       // a degree of freedom: the same products of 3 × 5 maps, so a vehicle that frees no surge
       // gets its matrices bit for bit as before (a 3 × 6 product sums in another order).
-      const Eigen::Matrix<double, 3, kFive> a5 = a.map->leftCols<kFive>(), b5 = b.map->leftCols<kFive>();
-      K->block<kFive, kFive>(ra, cb) += a.sign * b.sign * a5.transpose() * kd * b5;
-      K->block<kMotionsPerBody, 1>(ra, cb + kAlong) += a.sign * b.sign * a.map->transpose() * kd * b.map->col(kAlong);
-      K->block<1, kFive>(ra + kAlong, cb) += a.sign * b.sign * a.map->col(kAlong).transpose() * kd * b5;
+      // (s Aᵀ) kd once for the three products, whose left factors are its rows: kd is diagonal,
+      // so each entry sums one term that may be nonzero and exact zeros, which gives the same
+      // bits in any order (x + ±0 = x; a sum of zeros is −0 only when every term is), hence
+      // the products' bits are those of (s A5ᵀ) kd B5 and the rest evaluated apart, without
+      // computing the 5 × 3 and 1 × 3 factors again.
+      const Eigen::Matrix<double, kMotionsPerBody, 3> sak = a.sign * b.sign * a.map->transpose() * kd;
+      const Eigen::Matrix<double, kFive, 3> sak5 = sak.topRows<kFive>();
+      const Eigen::Matrix<double, 1, 3> sak_along = sak.row(kAlong);
+      const Eigen::Matrix<double, 3, kFive> b5 = b.map->leftCols<kFive>();
+      K->block<kFive, kFive>(ra, cb) += sak5 * b5;
+      K->block<kMotionsPerBody, 1>(ra, cb + kAlong) += sak * b.map->col(kAlong);
+      K->block<1, kFive>(ra + kAlong, cb) += sak_along * b5;
     }
 }
 
@@ -735,8 +743,15 @@ void add_static_loads(const Vehicle& vehicle, FullAssembly* a, const DeadLoadPat
     a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
   a->K = a->full.K_springs;
   if (workers) {
-    for (const DeadLoadPatterns::HangerEntry& h : workers->hangers)
-      a->K(h.row, h.column) += model::lateral_stiffness(vehicle.elements[h.element], a->loads[h.element]) * h.value;
+    // Each hanger's stiffness found once for its entries (a pure function of the element and
+    // its load: the same value each time).
+    int hanger = -1;
+    double k = 0.0;
+    for (const DeadLoadPatterns::HangerEntry& h : workers->hangers) {
+      if (h.element != hanger)
+        hanger = h.element, k = model::lateral_stiffness(vehicle.elements[h.element], a->loads[h.element]);
+      a->K(h.row, h.column) += k * h.value;
+    }
   } else {
     for (size_t k = 0; k < vehicle.elements.size(); ++k) {
       const Element& e = vehicle.elements[k];

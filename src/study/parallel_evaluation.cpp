@@ -79,7 +79,10 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
       StudyVariant read;  // this thread's copy of an unread variant, dropped once evaluated
       if (!variant || !variant->read) {
         try {
-          read = read_variant(study, index);
+          // Into the vehicle of the variant before (the workspace's system holds it once
+          // evaluated): its storage serves this one.
+          read.vehicle = std::move(workspace.system.vehicle);
+          detail::read_variant_into(study, index, &read);
           variant = &read;
         } catch (const InputError&) {
           const std::lock_guard<std::mutex> lock(error_mutex);

@@ -18,6 +18,7 @@ VariantSpec sweep_point(const StudyPlan& plan, const Sweep& sweep, std::string n
   spec.name = std::move(name);
   spec.place = {sweep.line, 0};
   spec.vehicle_file = plan.vehicle_file;
+  spec.parameters.reserve(assignments.size());
   for (const Assignment& a : assignments) spec.parameters.push_back({(a.scene ? "scene:" : "") + a.key, a.text});
   spec.assignments = std::move(assignments);
   return spec;
@@ -53,7 +54,13 @@ std::string sample_name(const Sweep& sweep, size_t n) { return sweep.name + " #"
 }  // namespace
 
 std::string WrittenNumber::text() const {
-  if (!unit.empty()) return shortest_text(number) + " " + unit;
+  if (!unit.empty()) {  // appended in place: no temporaries (a sample point writes one per parameter)
+    std::string t = shortest_text(number);
+    t.reserve(t.size() + 1 + unit.size());
+    t += ' ';
+    t += unit;
+    return t;
+  }
   if (integer) return std::to_string(std::llround(number));
   return shortest_text(number);
 }
@@ -92,6 +99,7 @@ VariantSpec PlannedVariants::at(size_t index) const {
   const Sweep& sweep = plan_.sweeps[points.sweep];
   const size_t n = index - points.first;
   std::vector<Assignment> assignments;
+  assignments.reserve(sweep.parameters.size());
   if (sweep.samples > 0) {
     Xoshiro256 generator = points.checkpoints[n / kCheckpoint];
     for (size_t skip = (n % kCheckpoint) * sweep.parameters.size(); skip > 0; --skip) generator.next();

@@ -99,7 +99,7 @@ TEST(PlannedVariants, SampleDrawsWrittenLikeTheLowerEnd) {
 }
 
 // A sample point is drawn from the generator's checkpoint before it: the same numbers as
-// drawing every point in turn, on both sides of the checkpoints (every 256 points), in any order.
+// drawing every point in turn, on both sides of the checkpoints (every 32 points), in any order.
 TEST(PlannedVariants, ASamplePointAskedForAloneIsThePointOfTheSequence) {
   StudyPlan plan;
   plan.variants.push_back({"base", {3, 0}, "wagon.toml", {}, {}});
@@ -109,7 +109,7 @@ TEST(PlannedVariants, ASamplePointAskedForAloneIsThePointOfTheSequence) {
   Xoshiro256 generator(7);
   std::vector<double> drawn;
   for (int i = 0; i < 2000; ++i) drawn.push_back(40.0 + generator.uniform() * (80.0 - 40.0));
-  for (size_t n : {999u, 0u, 255u, 256u, 257u, 511u, 512u, 700u}) {
+  for (size_t n : {999u, 0u, 31u, 32u, 33u, 255u, 256u, 257u, 511u, 512u, 700u}) {
     const VariantSpec spec = planned.at(1 + n);
     EXPECT_EQ(spec.name, "box #" + std::to_string(n + 1));
     ASSERT_EQ(spec.assignments.size(), 2u);
