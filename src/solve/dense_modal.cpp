@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 #include "railmodal/errors.hpp"
 #include "railmodal/modal.hpp"
@@ -94,9 +95,10 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, 
   kept.reserve(n);
   for (int i = 0; i < n; ++i) (M.row(i).cwiseAbs().maxCoeff() == 0.0 ? massless : kept).push_back(i);
   if (kept.empty()) throw NumericalError("every degree of freedom is massless");
-  Eigen::MatrixXd Kr = take(K, kept, kept);
-  Eigen::MatrixXd recover;  // φ_massless = recover · φ_kept
+  // Without massless DOFs the reduced matrices are K and M themselves (no copies).
+  Eigen::MatrixXd condensed_K, recover;  // φ_massless = recover · φ_kept
   if (!massless.empty()) {
+    condensed_K = take(K, kept, kept);
     const Eigen::MatrixXd Kss = take(K, massless, massless);
     const Eigen::MatrixXd Ksm = take(K, massless, kept);
     Eigen::FullPivLU<Eigen::MatrixXd> lu(Kss);
@@ -110,10 +112,12 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, 
                            "' has neither mass nor a restraint; give it inertia or hold it");
     }
     recover = -lu.solve(Ksm);
-    Kr += take(K, kept, massless) * recover;
+    condensed_K += take(K, kept, massless) * recover;
   }
   result.massless = massless;
-  const Eigen::MatrixXd Mr = take(M, kept, kept);
+  const Eigen::MatrixXd kept_M = massless.empty() ? Eigen::MatrixXd() : take(M, kept, kept);
+  const Eigen::MatrixXd& Kr = massless.empty() ? K : condensed_K;
+  const Eigen::MatrixXd& Mr = massless.empty() ? M : kept_M;
 
   // K φ = λ M φ  →  (L⁻¹ K L⁻ᵀ) y = λ y,  φ = L⁻ᵀ y: φ is M-normalised when y is unit.
   const Eigen::MatrixXd L = checked_cholesky(Mr, dofs, kept);
@@ -132,9 +136,11 @@ Eigenpairs dense_eigenpairs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, 
   result.errors = rounding_bounds(result.values, refined);
 
   const int m = static_cast<int>(kept.size());
-  result.vectors = Eigen::MatrixXd::Zero(n, m);
-  for (int i = 0; i < m; ++i) result.vectors.row(kept[i]) = phi_kept.row(i);
-  if (!massless.empty()) {
+  if (massless.empty()) {
+    result.vectors = std::move(phi_kept);  // every DOF kept, in order
+  } else {
+    result.vectors = Eigen::MatrixXd::Zero(n, m);
+    for (int i = 0; i < m; ++i) result.vectors.row(kept[i]) = phi_kept.row(i);
     const Eigen::MatrixXd rec = recover * phi_kept;
     for (size_t s = 0; s < massless.size(); ++s) result.vectors.row(massless[s]) = rec.row(static_cast<int>(s));
   }

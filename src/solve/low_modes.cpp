@@ -116,7 +116,21 @@ int near_zero(const Matrix& K, const Matrix& M, double t) {
 
 }  // namespace
 
-double zero_band(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M) { return band(K, M); }
+double zero_band(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M) {
+  // band() row by row, without its lists (each row's sum in the same order of j, so the same d).
+  double d = 0.0;
+  int most = 0;
+  for (Eigen::Index i = 0; i < K.rows(); ++i) {
+    double row_sum = 0.0;
+    int row_count = 0;
+    for (Eigen::Index j = 0; j < K.cols(); ++j)
+      if (K(i, j) != 0.0) row_sum += std::abs(K(i, j)), ++row_count;
+    most = std::max(most, row_count);
+    if (M(i, i) > 0.0) d = std::max(d, row_sum / M(i, i));
+  }
+  if (!(d > 0.0)) return 1.0;  // K = 0: every eigenvalue is exactly zero; any t > 0 counts them
+  return 8.0 * most * 2.0 * kUnitRoundoff * d;
+}
 double zero_band(const SparseMatrix& K, const SparseMatrix& M) { return band(K, M); }
 
 int eigenvalues_near_zero(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, double t) { return near_zero(K, M, t); }
