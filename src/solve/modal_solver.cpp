@@ -118,6 +118,7 @@ std::vector<bool> rigid_body_modes(const Eigen::VectorXd& lambda, const solve::E
     for (int k = 0; k < m; ++k) rigid[k] = std::abs(lambda(k)) <= zero;
     return rigid;
   }
+  if (pairs.rigid_count == 0) return rigid;  // most vehicles: nothing to sort
   std::vector<int> by_size(m);
   for (int k = 0; k < m; ++k) by_size[k] = k;
   std::stable_sort(by_size.begin(), by_size.end(),
