@@ -23,60 +23,17 @@ Eigen::MatrixXd take(const Eigen::MatrixXd& A, const std::vector<int>& rows, con
   return out;
 }
 
-// Below this size Eigen's LLT factors unblocked (llt_inplace<Lower>::blocked calls unblocked).
-constexpr Eigen::Index kUnblockedCholesky = 32;
-
-// Cholesky A = L Lᵀ in place for A below kUnblockedCholesky rows: L in the lower triangle,
-// zeros above it. Eigen 3.4's unblocked LLT written out, the same operations in the same order,
-// so the same L to the bit, without Eigen's block expressions, its L1 norm and the copy of the
-// factor (at 6 × 6, once per variant of a study: 1.0 k instructions against Eigen's 2.3 k).
-// False at a pivot that is not positive, where LLT reports NumericalIssue.
-bool small_cholesky_in_place(Eigen::MatrixXd* A) {
-  const Eigen::Index n = A->rows();
-  double* a = A->data();
-  const auto at = [a, n](Eigen::Index i, Eigen::Index j) -> double& { return a[j * n + i]; };
-  for (Eigen::Index k = 0; k < n; ++k) {
-    double x = at(k, k);
-    if (k > 0) {
-      double squares = at(k, 0) * at(k, 0);
-      for (Eigen::Index j = 1; j < k; ++j) squares += at(k, j) * at(k, j);
-      x -= squares;
-    }
-    if (x <= 0.0) return false;
-    at(k, k) = x = std::sqrt(x);
-    for (Eigen::Index i = k + 1; i < n; ++i) {
-      if (k > 0) {  // Eigen's matrix-vector product: the row's sum from zero, then added
-        double sum = 0.0;
-        for (Eigen::Index j = 0; j < k; ++j) sum += at(i, j) * at(k, j);
-        at(i, k) += -1.0 * sum;
-      }
-      at(i, k) /= x;
-    }
-  }
-  for (Eigen::Index j = 1; j < n; ++j)
-    for (Eigen::Index i = 0; i < j; ++i) at(i, j) = 0.0;
-  return true;
-}
-
 // Cholesky M = L Lᵀ that names the degree of freedom where it breaks down, so that a
 // mass matrix that is not positive definite is a clear error and never garbage. Eigen's LLT
-// (or small_cholesky_in_place, its bits) does the work; when it reports a failure, or a pivot
-// is at round-off level, the factorisation is repeated column by column to find the degree of
-// freedom. `dofs[kept[j]]` is row j of M (its label is only read for the message).
+// does the work; when it reports a failure, or a pivot is at round-off level, the
+// factorisation is repeated column by column to find the degree of freedom.
+// `dofs[kept[j]]` is row j of M (its label is only read for the message).
 Eigen::MatrixXd checked_cholesky(const Eigen::MatrixXd& M, const std::vector<Dof>& dofs, const std::vector<int>& kept) {
   const double tiny = 64.0 * std::numeric_limits<double>::epsilon() * M.diagonal().cwiseAbs().maxCoeff();
-  {
-    Eigen::MatrixXd L;
-    bool factored = false;
-    if (M.rows() < kUnblockedCholesky) {
-      L = M;
-      factored = small_cholesky_in_place(&L);
-    } else {
-      const Eigen::LLT<Eigen::MatrixXd> llt(M);
-      factored = llt.info() == Eigen::Success;
-      if (factored) L = llt.matrixL();
-    }
-    if (factored && (L.diagonal().array().square() > tiny).all()) return L;
+  Eigen::LLT<Eigen::MatrixXd> llt(M);
+  if (llt.info() == Eigen::Success) {
+    Eigen::MatrixXd L = llt.matrixL();
+    if ((L.diagonal().array().square() > tiny).all()) return L;
   }
   const int n = static_cast<int>(M.rows());
   Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n, n);

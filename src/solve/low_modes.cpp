@@ -5,7 +5,6 @@
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace railmodal::solve {
 namespace {
@@ -93,70 +92,13 @@ double band(const Matrix& K, const Matrix& M) {
   return 8.0 * most * 2.0 * kUnitRoundoff * d;
 }
 
-// The negative pivots of an LDLᵀ of the lower triangle of the n × n column-major matrix `a`,
-// factored in place: Eigen 3.4's LDLT (ldlt_inplace<Lower>::unblocked) written out for the
-// small dense matrices of a modal solve, the same operations in the same order, so the same
-// pivots to the bit (Crout order; each step pivots on the largest |diagonal entry| left as it
-// stands before its own update, the first one on ties; its matrix-vector products' sums).
-// At 6 × 6, twice per modal solve and so twice per variant of a study, Eigen's LDLT with the
-// matrices K ∓ tM it is given cost 3.3 k instructions a factorisation, this 2.4 k. -1 where
-// Eigen's reports a failure (a zero pivot followed by a nonzero one, an entire zero diagonal
-// with entries off it) or a pivot is not finite.
-int negative_pivots_in_place(double* a, int n) {
-  const auto at = [a, n](int i, int j) -> double& { return a[static_cast<size_t>(j) * n + i]; };
-  if (n == 1) return !std::isfinite(at(0, 0)) ? -1 : at(0, 0) < 0.0 ? 1 : 0;  // Eigen's 1 × 1 case
-  thread_local std::vector<double> scaled;  // D(j)·L(k, j), j < k: this thread's, kept
-  scaled.resize(static_cast<size_t>(n));
-  bool found_zero_pivot = false, ok = true;
-  for (int k = 0; k < n; ++k) {
-    int biggest = k;
-    for (int i = k + 1; i < n; ++i)
-      if (std::abs(at(i, i)) > std::abs(at(biggest, biggest))) biggest = i;
-    if (biggest != k) {  // the symmetric swap of rows and columns k and biggest, lower part only
-      for (int j = 0; j < k; ++j) std::swap(at(k, j), at(biggest, j));
-      for (int i = biggest + 1; i < n; ++i) std::swap(at(i, k), at(i, biggest));
-      std::swap(at(k, k), at(biggest, biggest));
-      for (int i = k + 1; i < biggest; ++i) std::swap(at(i, k), at(biggest, i));
-    }
-    if (k > 0) {
-      for (int j = 0; j < k; ++j) scaled[j] = at(j, j) * at(k, j);
-      double dot = at(k, 0) * scaled[0];
-      for (int j = 1; j < k; ++j) dot += at(k, j) * scaled[j];
-      at(k, k) -= dot;
-      // Column k below the pivot less L(i, 0..k−1)·scaled: Eigen's matrix-vector product sums
-      // 16 columns at a time from k = 128 on (4 from 4000 rows on), a lone row in one sum.
-      const int rows_below = n - k - 1;
-      const int block = k < 128 || rows_below == 1 ? k : (n * 8 < 32000 ? 16 : 4);
-      for (int j0 = 0; j0 < k; j0 += block) {
-        const int j1 = std::min(k, j0 + block);
-        for (int i = k + 1; i < n; ++i) {
-          double sum = 0.0;
-          for (int j = j0; j < j1; ++j) sum += at(i, j) * scaled[j];
-          at(i, k) += -1.0 * sum;
-        }
-      }
-    }
-    const double pivot = at(k, k);
-    const bool valid = std::abs(pivot) > 0.0;
-    if (k == 0 && !valid) {  // the whole diagonal is zero: LDLᵀ of the zero matrix only
-      for (int j = 0; j < n; ++j)
-        for (int i = j + 1; i < n; ++i)
-          if (at(i, j) != 0.0) return -1;
-      return 0;
-    }
-    for (int i = k + 1; i < n; ++i) {
-      if (valid) at(i, k) /= pivot;
-      else if (at(i, k) != 0.0) ok = false;
-    }
-    if (found_zero_pivot && valid) ok = false;
-    else if (!valid) found_zero_pivot = true;
-  }
-  int negative = 0;
-  for (int k = 0; k < n; ++k) {
-    if (!std::isfinite(at(k, k))) return -1;
-    if (at(k, k) < 0.0) ++negative;
-  }
-  return ok ? negative : -1;
+int negative_pivots(const Eigen::MatrixXd& A) {
+  // This thread's factorisation, its storage kept between calls (two per dense modal solve,
+  // one solve per variant of a study): the same factorisation of the same matrix.
+  thread_local Eigen::LDLT<Eigen::MatrixXd> ldlt;
+  ldlt.compute(A);
+  if (ldlt.info() != Eigen::Success || !ldlt.vectorD().allFinite()) return -1;
+  return static_cast<int>((ldlt.vectorD().array() < 0.0).count());
 }
 
 int negative_pivots(const SparseMatrix& A) {
@@ -165,25 +107,10 @@ int negative_pivots(const SparseMatrix& A) {
   return static_cast<int>((ldlt.vectorD().array() < 0.0).count());
 }
 
-int near_zero(const SparseMatrix& K, const SparseMatrix& M, double t) {
-  const SparseMatrix below = K - t * M, above = K + t * M;
+template <class Matrix>
+int near_zero(const Matrix& K, const Matrix& M, double t) {
+  const Matrix below = K - t * M, above = K + t * M;
   const int low = negative_pivots(below), high = negative_pivots(above);
-  return low < 0 || high < 0 ? -1 : low - high;
-}
-
-// The negative pivots of K + s·M (s = ∓t), its lower triangle formed in this thread's kept
-// storage (the entries K(i, j) + s·M(i, j) of Eigen's K ∓ t·M, rounded the same way).
-int negative_pivots_of_sum(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, double s) {
-  thread_local std::vector<double> work;
-  const int n = static_cast<int>(K.rows());
-  work.resize(static_cast<size_t>(n) * n);
-  for (int j = 0; j < n; ++j)
-    for (int i = j; i < n; ++i) work[static_cast<size_t>(j) * n + i] = K(i, j) + s * M(i, j);
-  return negative_pivots_in_place(work.data(), n);
-}
-
-int near_zero(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M, double t) {
-  const int low = negative_pivots_of_sum(K, M, -t), high = negative_pivots_of_sum(K, M, t);
   return low < 0 || high < 0 ? -1 : low - high;
 }
 
