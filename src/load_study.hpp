@@ -1,5 +1,6 @@
 // load_study with its limit on the number of variants as a parameter, so that the fuzzer can
-// keep each of its inputs small (tools/fuzz/fuzz_inputs.cpp).
+// keep each of its inputs small (tools/fuzz/fuzz_inputs.cpp); and read_variant into kept
+// storage, for the study's workers (study/parallel_evaluation.cpp).
 #pragma once
 
 #include <cstddef>
@@ -13,5 +14,12 @@ namespace railmodal {
 /// railmodal::load_study, refusing a study of more than `max_variants` variants at the
 /// [[variant]] or [[sweep]] that goes over.
 Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants);
+
+namespace detail {
+/// read_variant written into *variant, whose vehicle's storage is reused where it has the
+/// sizes: a study's workers read each variant into the vehicle of the one before. The same
+/// variant; throws as read_variant, *variant then left valid but unspecified.
+void read_variant_into(const Study& study, int index, StudyVariant* variant);
+}  // namespace detail
 
 }  // namespace railmodal

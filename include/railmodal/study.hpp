@@ -163,14 +163,6 @@ std::string variant_name(const Study& study, int index);
 /// from the study's files (throwing InputError as load_study would).
 StudyVariant read_variant(const Study& study, int index);
 
-namespace detail {
-/// Not part of the API: read_variant for a study's workers (study/parallel_evaluation.cpp),
-/// written into *variant, whose vehicle's storage is reused where it has the sizes (each
-/// variant is read into the vehicle of the one before). The same variant; throws as
-/// read_variant, *variant then left valid but unspecified.
-void read_variant_into(const Study& study, int index, StudyVariant* variant);
-}  // namespace detail
-
 /// The files the study is read from, whichever variants load_study read: the study file, its
 /// scene and every variant's vehicle file, each once (a program must not write over them).
 std::vector<std::string> study_files(const Study& study);

@@ -294,11 +294,4 @@ bool fast_vehicle_into(const StudyFile& file, const study::VariantSpec& spec,
   return true;
 }
 
-std::optional<Vehicle> fast_vehicle(const StudyFile& file, const study::VariantSpec& spec,
-                                    const std::vector<const study::Assignment*>& on_vehicle) {
-  Vehicle vehicle;
-  if (!fast_vehicle_into(file, spec, on_vehicle, &vehicle)) return std::nullopt;
-  return vehicle;
-}
-
 }  // namespace railmodal::input

@@ -51,14 +51,10 @@ struct FastPath {
 /// those numbers set.
 std::optional<FastPath> resolve_fast_path(const StudyFile& file);
 
-/// The variant's vehicle by the fast path, or nothing when one of its keys or values is not
-/// one the fast path knows (the caller then reads it by the general path).
-std::optional<Vehicle> fast_vehicle(const StudyFile& file, const study::VariantSpec& spec,
-                                    const std::vector<const study::Assignment*>& on_vehicle);
-
-/// The same written into *vehicle, whose storage is reused where it has the base's sizes (a
-/// study's worker reads each variant into the vehicle of the one before); false, and *vehicle
-/// unchanged, where fast_vehicle gives nothing.
+/// The variant's vehicle by the fast path, written into *vehicle, whose storage is reused where
+/// it has the base's sizes (a study's worker reads each variant into the vehicle of the one
+/// before); false, and *vehicle unchanged, when one of its keys or values is not one the fast
+/// path knows (the caller then reads it by the general path).
 bool fast_vehicle_into(const StudyFile& file, const study::VariantSpec& spec,
                        const std::vector<const study::Assignment*>& on_vehicle, Vehicle* vehicle);
 

@@ -15,6 +15,7 @@
 
 #include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
+#include "load_study.hpp"
 #include "require_valid.hpp"
 #include "study/parallel_evaluation.hpp"
 #include "summary/stage_clock.hpp"

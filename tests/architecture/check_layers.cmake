@@ -44,8 +44,11 @@ set(may_include_require_valid "")
 set(may_include_summary "")
 set(may_include_shortest_text "")
 set(may_include_version "")
-# Single headers of another stage a stage may include: plan types a reader fills.
+# Single headers of another stage a stage may include: plan types a reader fills; the study's
+# workers read each variant into kept storage (load_study.hpp's detail::read_variant_into, a
+# declaration only: the reader stays behind load_study.cpp).
 set(may_include_headers_input "study/study_plan.hpp")
+set(may_include_headers_study "load_study.hpp")
 
 if(NOT SOURCE_DIR)
   message(FATAL_ERROR "pass -DSOURCE_DIR=<project root>")

@@ -10,6 +10,7 @@
 #include "input/study_reader.hpp"
 #include "input/variant_fast_path.hpp"
 #include "input/vehicle_numbers.hpp"
+#include "load_study.hpp"
 #include "railmodal/railmodal.hpp"
 #include "study/planned_variants.hpp"
 #include "test_support.hpp"
@@ -58,6 +59,13 @@ struct Checked {
   int variants = 0;
 };
 
+// Whether the fast path gives the variant's vehicle (into a fresh one).
+bool reads_fast(const input::StudyFile& file, const study::VariantSpec& spec,
+                const std::vector<const study::Assignment*>& on_vehicle) {
+  Vehicle vehicle;
+  return input::fast_vehicle_into(file, spec, on_vehicle, &vehicle);
+}
+
 // Every variant of the study read with the fast path and without it (the file's probes
 // dropped): the same vehicle and scene.
 Checked check_study(const std::string& path) {
@@ -73,7 +81,7 @@ Checked check_study(const std::string& path) {
     std::vector<const study::Assignment*> on_vehicle;
     for (const auto& a : spec.assignments)
       if (!a.scene) on_vehicle.push_back(&a);
-    if (!on_vehicle.empty() && input::fast_vehicle(file, spec, on_vehicle)) ++c.fast_variants;
+    if (!on_vehicle.empty() && reads_fast(file, spec, on_vehicle)) ++c.fast_variants;
     ++c.variants;
     const StudyVariant fast = input::read_variant(file, spec, nullptr);
     const StudyVariant readers = input::read_variant(readers_only, spec, nullptr);
@@ -109,6 +117,34 @@ TEST(VariantFastPath, BuildsTheBundledStudiesVariantsAsTheReadersDo) {
   EXPECT_TRUE(checked["two_axle_joint_dip_deflection.toml"].fast_keys.empty());
 }
 
+// A study's worker reads each variant into the vehicle of the one before
+// (detail::read_variant_into): in any order, across the bundled studies (other vehicle files,
+// the fast path and the readers, scene-only keys) and the sampled one, each variant is the one
+// read afresh, name, parameters and every number of its vehicle.
+TEST(VariantFastPath, VariantsReadOneIntoAnotherAreTheFreshOnes) {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(std::string(RAILMODAL_DATA_DIR) + "/studies"))
+    files.push_back(entry.path().string());
+  files.push_back(sample_study(12));
+  for (const std::string& file : files) {
+    const Study study = open_study(file);
+    const int n = variant_count(study);
+    std::vector<int> order;  // forwards, then every other one backwards, then the first again
+    for (int i = 0; i < n; ++i) order.push_back(i);
+    for (int i = n - 1; i >= 0; i -= 2) order.push_back(i);
+    order.push_back(0);
+    StudyVariant kept;
+    for (int i : order) {
+      detail::read_variant_into(study, i, &kept);
+      const StudyVariant fresh = read_variant(study, i);
+      const std::string label = file + ": variant " + std::to_string(i + 1);
+      EXPECT_EQ(kept.name, fresh.name) << label;
+      EXPECT_EQ(kept.parameters, fresh.parameters) << label;
+      expect_same_vehicle(kept.vehicle, fresh.vehicle, label);
+    }
+  }
+}
+
 TEST(VariantFastPath, ADrawnValueOutsideTheProbedIntervalTakesTheReaders) {
   input::StudyFile file = input::read_study_file(sample_study(4), kMaxStudyVariants);
   const std::vector<study::VariantSpec> specs = all_variants(file.plan);
@@ -116,12 +152,12 @@ TEST(VariantFastPath, ADrawnValueOutsideTheProbedIntervalTakesTheReaders) {
   study::VariantSpec spec = specs.front();
   std::vector<const study::Assignment*> on_vehicle;
   for (const auto& a : spec.assignments) on_vehicle.push_back(&a);
-  EXPECT_TRUE(input::fast_vehicle(file, spec, on_vehicle));
+  EXPECT_TRUE(reads_fast(file, spec, on_vehicle));
   spec.assignments.front().drawn.number = 2000.0;  // the sample draws 455–845 kgf/cm
-  EXPECT_FALSE(input::fast_vehicle(file, spec, on_vehicle));
+  EXPECT_FALSE(reads_fast(file, spec, on_vehicle));
   spec.assignments.front().drawn.number = 500.0;
   spec.assignments.front().drawn.unit = "parsec";  // not a stiffness: the readers say why
-  EXPECT_FALSE(input::fast_vehicle(file, spec, on_vehicle));
+  EXPECT_FALSE(reads_fast(file, spec, on_vehicle));
 }
 
 // A bad value of a key the fast path sets is still refused by the readers, at the study line
