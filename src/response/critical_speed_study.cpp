@@ -65,9 +65,6 @@ std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpe
 
 constexpr double kPeakTolerance = 1e-6;  // relative, in speed: far below any grid a user would plot
 
-// Local maxima of a curve, refined between their grid neighbours; a maximum beside an
-// unbounded (undamped) point has no finite peak to refine and is left out, but the other
-// peaks of the same curve are not.
 // The largest bounded amplitude of a curve (0 if none): a function of its own, so that the
 // running maximum stays in a register rather than in the caller's frame.
 double largest_bounded(const AmplitudeCurve& curve) {
@@ -93,6 +90,9 @@ size_t next_local_maximum(const double* a, size_t i, size_t n) {
   return n - 1;
 }
 
+// Local maxima of a curve, refined between their grid neighbours; a maximum beside an
+// unbounded (undamped) point has no finite peak to refine and is left out, but the other
+// peaks of the same curve are not.
 std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const ExcitationSource& source,
                                const OutputRequest& output, const AmplitudeCurve& curve) {
   std::vector<Peak> peaks;

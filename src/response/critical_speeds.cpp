@@ -140,11 +140,11 @@ void add_neighbours(const ModalResult& modes, const Eigenspace& group, std::vect
 }
 
 // The DOF a critical speed reports: the mode's most energetic one, or for a repeated frequency
-// the one that moves most, weighted by its mass, in the driven combination (whose magnitude per
-// DOF is read only then).
-int reported_dof(const LinearSystem& system, const Eigenspace& group, const Eigen::VectorXcd& shape) {
+// the one that moves most, weighted by its mass, in the driven combination `shape` (read, and
+// computed by the caller, only then: null for a single mode).
+int reported_dof(const LinearSystem& system, const Eigenspace& group, const Eigen::VectorXcd* shape) {
   if (group.size() == 1) return dominant_dof(*group.front());
-  const Eigen::VectorXd magnitude = shape.cwiseAbs();
+  const Eigen::VectorXd magnitude = shape->cwiseAbs();
   int out = 0;
   for (int d = 1; d < magnitude.size(); ++d)
     if (magnitude(d) * std::sqrt(std::abs(system.mass(d, d))) > magnitude(out) * std::sqrt(std::abs(system.mass(out, out))))
@@ -278,7 +278,7 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   row.frequency_hz = first.frequency_hz;
   // A complex modal-force vector (inputs out of phase) gives a rotating combination;
   // its magnitude per DOF is what the output sees.
-  const int out = reported_dof(system, group, d.shape);
+  const int out = reported_dof(system, group, group.size() > 1 ? &d.shape : nullptr);
   row.output = system.dofs[out].label;
   add_growth_and_friction(stages, first.eigenvalue, cluster, std::abs(cluster.shape(out)), &row);
   if (detail == response::ResonanceDetail::without_response) return row;

@@ -74,9 +74,14 @@ void refine(const Matrix& K, const Matrix& M, int count, Eigen::VectorXd* values
   vectors->leftCols(count) = Z * rr.eigenvectors();
 }
 
-// d = max Σⱼ|Kᵢⱼ|/Mᵢᵢ and m = the most nonzeros in a row of K, for zero_band.
-template <class Matrix>
-double band(const Matrix& K, const Matrix& M) {
+// zero_band from d = max Σⱼ|Kᵢⱼ|/Mᵢᵢ and the most nonzeros in a row of K.
+double band_of(double d, int most) {
+  if (!(d > 0.0)) return 1.0;  // K = 0: every eigenvalue is exactly zero; any t > 0 counts them
+  return 8.0 * most * 2.0 * kUnitRoundoff * d;
+}
+
+// band_of for a sparse K: its entries visited column by column, summed per row.
+double band(const SparseMatrix& K, const SparseMatrix& M) {
   const Eigen::VectorXd m = M.diagonal();
   Eigen::VectorXd row_sum = Eigen::VectorXd::Zero(K.rows());
   std::vector<int> row_count(static_cast<size_t>(K.rows()), 0);
@@ -87,9 +92,7 @@ double band(const Matrix& K, const Matrix& M) {
   double d = 0.0;
   for (Eigen::Index i = 0; i < m.size(); ++i)
     if (m(i) > 0.0) d = std::max(d, row_sum(i) / m(i));
-  if (!(d > 0.0)) return 1.0;  // K = 0: every eigenvalue is exactly zero; any t > 0 counts them
-  const int most = *std::max_element(row_count.begin(), row_count.end());
-  return 8.0 * most * 2.0 * kUnitRoundoff * d;
+  return band_of(d, *std::max_element(row_count.begin(), row_count.end()));
 }
 
 int negative_pivots(const Eigen::MatrixXd& A) {
@@ -117,7 +120,8 @@ int near_zero(const Matrix& K, const Matrix& M, double t) {
 }  // namespace
 
 double zero_band(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M) {
-  // band() row by row, without its lists (each row's sum in the same order of j, so the same d).
+  // Row by row, without the sparse version's lists (each row's sum in the same order of j as
+  // a column-by-column visit, so the same d).
   double d = 0.0;
   int most = 0;
   for (Eigen::Index i = 0; i < K.rows(); ++i) {
@@ -128,8 +132,7 @@ double zero_band(const Eigen::MatrixXd& K, const Eigen::MatrixXd& M) {
     most = std::max(most, row_count);
     if (M(i, i) > 0.0) d = std::max(d, row_sum / M(i, i));
   }
-  if (!(d > 0.0)) return 1.0;  // K = 0: every eigenvalue is exactly zero; any t > 0 counts them
-  return 8.0 * most * 2.0 * kUnitRoundoff * d;
+  return band_of(d, most);
 }
 double zero_band(const SparseMatrix& K, const SparseMatrix& M) { return band(K, M); }
 

@@ -38,8 +38,8 @@ class PlannedVariants {
     std::vector<Xoshiro256> checkpoints;
   };
   // 32 points: a point asked for draws on average 15.5 · P numbers to reach its own (256 made
-  // every variant of a study cost about 4 k instructions for it), and the states take one byte
-  // a point (32 MB for the 10^6-variant study's budget of 500 MB would be 10^9 points).
+  // every variant of a study cost about 4 k instructions for it), and the 32-byte states take
+  // one byte a point: 1 MB at the limit of 10^6 variants.
   static constexpr size_t kCheckpoint = 32;
   const Points& points_of(size_t index) const;
 
