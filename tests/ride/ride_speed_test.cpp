@@ -82,13 +82,17 @@ TEST(RideSpeed, SmallSolveReportsAZeroPivotWithoutNaN) {
   EXPECT_GT(pivots.maxCoeff(), 0.0);
 }
 
-// A scene's ride as `railmodal ride` runs it, in `kept` (null: solve_ride's own arrays).
-RideResult scene_ride(const std::string& file, bool rms_only, bool keep_spectra, ride::Workspace* kept) {
+// A scene's ride as `railmodal ride` runs it, in `kept` (null: solve_ride's own arrays); a
+// positive `per_decade` and `threads` replace the scene's grid density and thread count.
+RideResult scene_ride(const std::string& file, bool rms_only, bool keep_spectra, ride::Workspace* kept,
+                      int per_decade = 0, int threads = 0) {
   const Scene scene = load_scene(std::string(RAILMODAL_DATA_DIR) + "/scenes/" + file);
   const LinearSystem system = assemble(load_vehicle(scene.vehicle_file), scene.dofs);
   RideOptions options = scene.ride->options;
   options.rms_only = rms_only;
   options.keep_spectra = keep_spectra;
+  if (per_decade > 0) options.points_per_decade = per_decade;
+  if (threads > 0) options.threads = threads;
   const std::vector<RideOutput> outputs = scene.ride->outputs.empty() ? default_ride_outputs(system) : scene.ride->outputs;
   return kept ? ride::solve_ride(system, *scene.irregularity, outputs, options, kept)
               : solve_ride(system, *scene.irregularity, outputs, options);
@@ -137,6 +141,21 @@ TEST(RideSpeed, KeptWorkspaceGivesTheSameBits) {
   expect_same_bits(scene_ride("manchester_coach_ore_low.toml", true, false, &kept), coach_rms);
   expect_same_bits(scene_ride("manchester_coach_ore_low.toml", false, true, &kept), coach_psd);
   expect_same_bits(scene_ride("manchester_coach_ore_low.toml", false, false, &kept), coach);
+}
+
+// A kept workspace whose arrays are wider than the next grid (the same rows, fewer points: a
+// kept matrix keeps its columns and the solve uses the first) and narrower again, on one and
+// two threads (a workspace slot per worker): each answer is solve_ride's bit for bit.
+TEST(RideSpeed, KeptWorkspaceServesAShorterGridAndALongerOneAgain) {
+  for (const char* file : {"manchester_coach_ore_low.toml", "two_axle_wagon_fra_class4.toml"}) {
+    ride::Workspace kept;
+    const RideResult fine = scene_ride(file, false, false, nullptr, 300, 1);
+    const RideResult coarse = scene_ride(file, false, false, nullptr, 60, 2);
+    ASSERT_GT(fine.frequencies.size(), coarse.frequencies.size()) << file;
+    expect_same_bits(scene_ride(file, false, false, &kept, 300, 1), fine);
+    expect_same_bits(scene_ride(file, false, false, &kept, 60, 2), coarse);
+    expect_same_bits(scene_ride(file, false, false, &kept, 300, 1), fine);
+  }
 }
 
 // The same vehicle with its wheels doubled at each x (two wheels of an axle, summed into one
