@@ -21,6 +21,7 @@ struct SpeedWorkspace {
   Receptances passes;      ///< the friction linearisation's, rewritten at each pass
   SpeedSpectra spectra;    ///< the speed's spectra
   SpeedSpectra pass_spectra;  ///< the friction passes' stretch-rate spectra
+  SpeedScratch scratch;       ///< speed_spectra's working arrays, for both (one call at a time)
 };
 
 /// The arrays of a ride solve. Holds nothing a solve reads before writing it: the answers are
