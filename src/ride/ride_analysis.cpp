@@ -500,13 +500,14 @@ bool reaches_laterally(const Problem& p) {
 
 RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
                       const std::vector<RideOutput>& outputs, const RideOptions& options) {
-  ride::Workspace workspace;  // kept across this solve's speeds
-  return ride::solve_ride(system, track, outputs, options, &workspace);
+  return ride::solve_ride(system, track, outputs, options, nullptr);
 }
 
 RideResult ride::solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
                             const std::vector<RideOutput>& outputs, const RideOptions& options,
-                            Workspace* workspace) {
+                            Workspace* kept) {
+  Workspace own;  // without a caller's: kept across this solve's speeds only
+  Workspace* workspace = kept ? kept : &own;
   require_valid(options, "RideOptions: ");
   RideResult result;
   result.summary.analysis = "ride on random track";

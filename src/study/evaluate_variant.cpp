@@ -280,8 +280,7 @@ void ride_summary(const Vehicle& vehicle, const Scene& scene, bool rms_only, rid
   options.rms_only = rms_only;
   const std::vector<RideOutput> outputs =
       scene.ride->outputs.empty() ? default_ride_outputs(system) : scene.ride->outputs;
-  const RideResult ride = kept ? ride::solve_ride(system, *scene.irregularity, outputs, options, kept)
-                                : solve_ride(system, *scene.irregularity, outputs, options);
+  const RideResult ride = ride::solve_ride(system, *scene.irregularity, outputs, options, kept);
   r->ride_evaluated = true;
   for (size_t i = 0; i < ride.outputs.size(); ++i) {
     VariantResult::RideSummary o;
