@@ -20,6 +20,7 @@
 #include "report/document_table.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
+#include "response/curve_peaks.hpp"
 #include "study/metrics.hpp"
 
 namespace railmodal {
@@ -496,23 +497,15 @@ std::string curve_title(const CriticalSpeedStudy& st, const CurveKey& key) {
          to_string(key.quantity);
 }
 
-// The largest response on the grid and at the refined peaks; unbounded when the grid met an
-// undamped resonance.
+// The largest response on the grid and at the refined peaks (response::largest_response, as a
+// variant's peak summary finds it); unbounded when the grid met an undamped resonance.
 std::string peak_text(const CriticalSpeedStudy& st, const CurveKey& key) {
   int index = 0;
-  const AmplitudeCurve* curve = find_curve(st, key, &index);
-  if (!curve) return "–";
-  double amplitude = 0.0, speed = 0.0;
-  bool unbounded = false;
-  for (size_t i = 0; i < curve->speeds.size(); ++i) {
-    if (curve->unbounded[i]) unbounded = true;
-    else if (curve->amplitudes[i] > amplitude) amplitude = curve->amplitudes[i], speed = curve->speeds[i];
-  }
-  for (const auto& p : st.peaks)
-    if (p.curve == index && p.peak.amplitude > amplitude) amplitude = p.peak.amplitude, speed = p.peak.speed;
-  if (unbounded) return "unbounded";
+  if (!find_curve(st, key, &index)) return "–";
+  const response::LargestResponse peak = response::largest_response(st, static_cast<size_t>(index));
+  if (peak.unbounded) return "unbounded";
   const report::Unit u = report::unit_of(st.system, key.output, key.quantity);
-  return significant(amplitude * u.scale, 4) + " " + u.name + " at " + fixed(speed * kKmh, 1) + " km/h";
+  return significant(peak.amplitude * u.scale, 4) + " " + u.name + " at " + fixed(peak.speed * kKmh, 1) + " km/h";
 }
 
 Table peak_table(const std::vector<DesignCurves>& sets, const std::vector<CurveKey>& keys) {

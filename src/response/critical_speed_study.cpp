@@ -12,6 +12,7 @@
 #include "railmodal/errors.hpp"
 #include "model/scene_fit.hpp"
 #include "response/critical_speed_study.hpp"
+#include "response/curve_peaks.hpp"
 #include "shortest_text.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -75,21 +76,6 @@ double largest_bounded(const AmplitudeCurve& curve) {
   return largest;
 }
 
-// The first local maximum of a[0, n) from i on (a[i] ≥ a[i − 1] and a[i] > a[i + 1]; 0 < i),
-// or n − 1 if there is none: a tight loop of its own over the amplitudes, each read once (few
-// points are maxima, and the caller's loop would reread the curve's size around its calls).
-size_t next_local_maximum(const double* a, size_t i, size_t n) {
-  if (i + 1 >= n) return n - 1;
-  double before = a[i - 1], at = a[i];
-  for (; i + 1 < n; ++i) {
-    const double after = a[i + 1];
-    if (at >= before && at > after) return i;
-    before = at;
-    at = after;
-  }
-  return n - 1;
-}
-
 // Local maxima of a curve, refined between their grid neighbours; a maximum beside an
 // unbounded (undamped) point has no finite peak to refine and is left out, but the other
 // peaks of the same curve are not.
@@ -100,8 +86,8 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
   if (a.size() < 3) return peaks;
   double largest = -1.0;  // largest_bounded (≥ 0) once a bounded maximum needs it: many curves have none
   // The amplitudes first (next_local_maximum): the flags are bits, slow to read.
-  for (size_t i = next_local_maximum(a.data(), 1, a.size()); i + 1 < a.size();
-       i = next_local_maximum(a.data(), i + 1, a.size())) {
+  for (size_t i = response::next_local_maximum(a.data(), 1, a.size()); i + 1 < a.size();
+       i = response::next_local_maximum(a.data(), i + 1, a.size())) {
     if (curve.unbounded[i - 1] || curve.unbounded[i] || curve.unbounded[i + 1]) continue;
     if (largest < 0.0) largest = largest_bounded(curve);
     if (a[i] >= 0.01 * largest) {

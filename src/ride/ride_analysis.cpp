@@ -278,7 +278,7 @@ SpeedOutcome solve_speed(const Problem& p, double speed, ride::SpeedWorkspace* k
       ride::receptances(system, p.components, maps, p.grid, p.truncation.size() ? &p.truncation : nullptr, nullptr,
                         &kept->passes);
       ride::SpeedSpectra& sp = kept->pass_spectra;
-      ride::speed_spectra(system, kept->passes, p.components, p.grid, speed, bands, false, &sp);
+      ride::speed_spectra(system, kept->passes, p.components, p.grid, speed, bands, false, &sp, &kept->scratch);
       std::vector<double> sigma;
       for (const ride::ComponentPower& power : sp.outputs)
         sigma.push_back(std::sqrt(std::max(ride::integral(power, bands, Eigen::VectorXd()), 0.0)));
@@ -299,7 +299,7 @@ SpeedOutcome solve_speed(const Problem& p, double speed, ride::SpeedWorkspace* k
   if (!shared) receptances_of(p, system, maps, &kept->own);
   const ride::SpeedSpectra& sp = kept->spectra;
   ride::speed_spectra(system, shared ? *p.shared : kept->own, p.components, p.grid, speed, bands,
-                      p.options->keep_spectra, &kept->spectra);
+                      p.options->keep_spectra, &kept->spectra, &kept->scratch);
   std::vector<std::string> driven;
   std::vector<bool> unbounded = unbounded_outputs(p, system, maps, speed, &driven);
   if (p.contact && !ride::decays(ride::first_order_roots(system))) {
@@ -500,13 +500,14 @@ bool reaches_laterally(const Problem& p) {
 
 RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
                       const std::vector<RideOutput>& outputs, const RideOptions& options) {
-  ride::Workspace workspace;  // kept across this solve's speeds
-  return ride::solve_ride(system, track, outputs, options, &workspace);
+  return ride::solve_ride(system, track, outputs, options, nullptr);
 }
 
 RideResult ride::solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
                             const std::vector<RideOutput>& outputs, const RideOptions& options,
-                            Workspace* workspace) {
+                            Workspace* kept) {
+  Workspace own;  // without a caller's: kept across this solve's speeds only
+  Workspace* workspace = kept ? kept : &own;
   require_valid(options, "RideOptions: ");
   RideResult result;
   result.summary.analysis = "ride on random track";

@@ -30,7 +30,7 @@ std::vector<BandWeights> speed_bands(const std::vector<Component>& components, c
 
 void speed_spectra(const LinearSystem& system, const Receptances& r, const std::vector<Component>& components,
                    const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands, bool with_psd,
-                   SpeedSpectra* into) {
+                   SpeedSpectra* into, SpeedScratch* scratch) {
   (void)system;  // the inputs' positions are the receptances' own (Receptances::x)
   const int m = r.inputs, C = r.components, O = r.outputs, J = r.modes;
   const Eigen::Index K = grid.size();
@@ -59,13 +59,13 @@ void speed_spectra(const LinearSystem& system, const Receptances& r, const std::
   // G_c inside the band: the density at the wavenumber clamped to the band, so that an edge
   // point carries the edge value whatever the round-off of 2πf/V there. Outside the band the
   // density is zero (TrackSpectrum::density) and the clamped one is the edge's, computed once.
-  Eigen::MatrixXd& inside_density = s.inside_density;
+  Eigen::MatrixXd& inside_density = scratch->inside_density;
   inside_density.resize(C, K);  // every value written below
   // A grid point this speed needs: one with an integration weight, on an interval inside a
   // band, or with a density. Elsewhere every index multiplies the power by a zero weight and
   // the PSD is H²·0, so the point's combine is skipped and its power left at zero: the sums
   // come out bit for bit as with it (x + 0 = x), at a third to a half of the work.
-  std::vector<char>& needed = s.needed;
+  std::vector<char>& needed = scratch->needed;
   needed.assign(K, 0);
   for (int c = 0; c < C; ++c) {
     const WavenumberBand b = components[c].spectrum.band();

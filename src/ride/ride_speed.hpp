@@ -20,10 +20,13 @@ struct SpeedSpectra {
   std::vector<Eigen::VectorXd> psd;     ///< per output: Σ_c |H_c|²G_c (G zero outside its band), unit²/Hz
   std::vector<std::vector<double>> modal_variance;  ///< [output][mode]: ∫|H_j|²G df (with a basis)
   std::vector<Eigen::VectorXd> input_psd;           ///< per component: G_c on the grid, m²/Hz
-  /// speed_spectra's working arrays (not results), kept with the spectra: each component's
-  /// density clamped to its band, and which grid points the speed needs.
-  Eigen::MatrixXd inside_density;
-  std::vector<char> needed;
+};
+
+/// speed_spectra's working arrays for one speed (not part of its result), kept by the caller
+/// from one speed to the next with its spectra (ride_workspace.hpp's SpeedWorkspace).
+struct SpeedScratch {
+  Eigen::MatrixXd inside_density;  ///< [component][grid point]: the density clamped to the band
+  std::vector<char> needed;        ///< [grid point]: whether the speed's bands need it
 };
 
 /// H_c(f) = Σ_g h_{c,g}(f)·e^{−iωτ_g} over the input groups, τ_g = (x_front − x_g)/V with x_g
@@ -31,10 +34,11 @@ struct SpeedSpectra {
 /// modal variances when `r` holds modal terms), at the grid points the speed's bands need: the
 /// power and PSD elsewhere are left zero, where every index weighs them by zero. Without
 /// `with_psd` SpeedSpectra::psd holds empty vectors (no index reads it: only the kept spectra).
-/// Written into `s`, whose arrays are reused where their sizes already fit (a caller's
-/// SpeedSpectra kept from one speed to the next: ride_workspace.hpp); every value is rewritten.
+/// Written into `s`, with its working arrays in `scratch`, whose arrays are reused where their
+/// sizes already fit (a caller's kept from one speed to the next: ride_workspace.hpp); every
+/// value is rewritten.
 void speed_spectra(const LinearSystem& system, const Receptances& r, const std::vector<Component>& components,
                    const Eigen::VectorXd& grid, double speed, const std::vector<BandWeights>& bands, bool with_psd,
-                   SpeedSpectra* s);
+                   SpeedSpectra* s, SpeedScratch* scratch);
 
 }  // namespace railmodal::ride

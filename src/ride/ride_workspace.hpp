@@ -21,6 +21,7 @@ struct SpeedWorkspace {
   Receptances passes;      ///< the friction linearisation's, rewritten at each pass
   SpeedSpectra spectra;    ///< the speed's spectra
   SpeedSpectra pass_spectra;  ///< the friction passes' stretch-rate spectra
+  SpeedScratch scratch;       ///< speed_spectra's working arrays, for both (one call at a time)
 };
 
 /// The arrays of a ride solve. Holds nothing a solve reads before writing it: the answers are
@@ -30,8 +31,9 @@ struct Workspace {
   std::vector<SpeedWorkspace> workers;
 };
 
-/// solve_ride (railmodal/ride.hpp) with its large arrays in `workspace` (not null), which the
-/// caller keeps for its next solve. Not for two threads at once on one workspace.
+/// solve_ride (railmodal/ride.hpp) with its large arrays in `workspace`, which the caller keeps
+/// for its next solve; null: in a workspace of the solve's own, freed on return (the public
+/// solve_ride). Not for two threads at once on one workspace.
 RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
                       const std::vector<RideOutput>& outputs, const RideOptions& options, Workspace* workspace);
 

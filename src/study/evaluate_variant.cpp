@@ -13,6 +13,7 @@
 #include "railmodal/study.hpp"
 #include "model/assembly.hpp"
 #include "response/critical_speed_study.hpp"
+#include "response/curve_peaks.hpp"
 #include "response/golden_section.hpp"
 #include "response/modal_checks.hpp"
 #include "solve/lateral_stability.hpp"
@@ -85,20 +86,8 @@ void summarise_response(const CriticalSpeedStudy& study, VariantResult* r) {
     p.source = curve.source;
     p.output = curve.output;
     p.quantity = to_string(curve.quantity);
-    // The largest bounded point: an unbounded one holds 0 (AmplitudeCurve::amplitudes), which
-    // never beats p.amplitude (≥ 0), so the amplitudes are scanned without the flags (bits, slow
-    // to read one by one), and the flags only for whether any is set.
-    const std::vector<double>& speeds = curve.speeds.values();
-    const std::vector<double>& a = curve.amplitudes;
-    size_t at = speeds.size();
-    double largest = p.amplitude;
-    for (size_t i = 0; i < speeds.size(); ++i)
-      if (a[i] > largest) largest = a[i], at = i;
-    if (at < speeds.size()) p.amplitude = largest, p.speed = speeds[at];
-    p.unbounded = std::find(curve.unbounded.begin(), curve.unbounded.end(), true) != curve.unbounded.end();
-    for (const auto& refined : study.peaks)
-      if (refined.curve == static_cast<int>(k) && refined.peak.amplitude > p.amplitude)
-        p.amplitude = refined.peak.amplitude, p.speed = refined.peak.speed;
+    const response::LargestResponse largest = response::largest_response(study, k);
+    p.amplitude = largest.amplitude, p.speed = largest.speed, p.unbounded = largest.unbounded;
     r->peaks.push_back(p);
   }
 }
@@ -201,16 +190,15 @@ void take_deflection(const std::vector<study::PermissibleDeflection>& limits, in
 void check_curve(const CriticalSpeedStudy& study, const std::vector<study::PermissibleDeflection>& limits,
                  const std::vector<double>& reference, int s, const DeflectionCurve& curve, VariantResult* r) {
   const std::vector<double>& speeds = curve.speeds.values();
+  const std::vector<double>& a = curve.amplitudes;
   double largest = 0.0;
   for (size_t v = 0; v < speeds.size(); ++v) {
     take_deflection(limits, curve.element, curve, v, speeds[v], s, r);
-    if (!curve.unbounded[v]) largest = std::max(largest, curve.amplitudes[v]);
+    if (!curve.unbounded[v]) largest = std::max(largest, a[v]);
   }
-  for (size_t v = 1; v + 1 < speeds.size(); ++v) {
-    const bool peak = !curve.unbounded[v - 1] && !curve.unbounded[v] && !curve.unbounded[v + 1] &&
-                      curve.amplitudes[v] >= curve.amplitudes[v - 1] && curve.amplitudes[v] > curve.amplitudes[v + 1] &&
-                      curve.amplitudes[v] >= 0.01 * largest;
-    if (!peak) continue;
+  for (size_t v = response::next_local_maximum(a.data(), 1, a.size()); v + 1 < a.size();
+       v = response::next_local_maximum(a.data(), v + 1, a.size())) {
+    if (curve.unbounded[v - 1] || curve.unbounded[v] || curve.unbounded[v + 1] || !(a[v] >= 0.01 * largest)) continue;
     const DeflectionCurve refined =
         refine_deflection(study, *study.scene.sources[s], s, curve.element, reference, curve, v);
     take_deflection(limits, curve.element, refined, 0, refined.speeds[0], s, r);
@@ -280,8 +268,7 @@ void ride_summary(const Vehicle& vehicle, const Scene& scene, bool rms_only, rid
   options.rms_only = rms_only;
   const std::vector<RideOutput> outputs =
       scene.ride->outputs.empty() ? default_ride_outputs(system) : scene.ride->outputs;
-  const RideResult ride = kept ? ride::solve_ride(system, *scene.irregularity, outputs, options, kept)
-                                : solve_ride(system, *scene.irregularity, outputs, options);
+  const RideResult ride = ride::solve_ride(system, *scene.irregularity, outputs, options, kept);
   r->ride_evaluated = true;
   for (size_t i = 0; i < ride.outputs.size(); ++i) {
     VariantResult::RideSummary o;

@@ -94,8 +94,7 @@ RideResult scene_ride(const std::string& file, bool rms_only, bool keep_spectra,
   if (per_decade > 0) options.points_per_decade = per_decade;
   if (threads > 0) options.threads = threads;
   const std::vector<RideOutput> outputs = scene.ride->outputs.empty() ? default_ride_outputs(system) : scene.ride->outputs;
-  return kept ? ride::solve_ride(system, *scene.irregularity, outputs, options, kept)
-              : solve_ride(system, *scene.irregularity, outputs, options);
+  return ride::solve_ride(system, *scene.irregularity, outputs, options, kept);
 }
 
 void expect_same_bits(const RideResult& a, const RideResult& b) {

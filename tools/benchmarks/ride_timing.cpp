@@ -4,9 +4,11 @@
 // floor acceleration over each bogie centre and at mid-car.
 //
 //   ride_timing OUT.json REPEATS   times solve_ride in this process, the full solve and the one
-//                                  with RideOptions::rms_only, interleaved, and prints "ride_s T",
-//                                  "ride_cpu_s T", "ride_rms_s T" and "ride_rms_cpu_s T" (wall
-//                                  and processor time, medians of REPEATS runs each), then writes
+//                                  with RideOptions::rms_only in a kept workspace and the full
+//                                  solve through the public solve_ride, interleaved, and prints
+//                                  "ride_s T", "ride_cpu_s T", "ride_rms_s T", "ride_rms_cpu_s T",
+//                                  "ride_public_s T" and "ride_public_cpu_s T" (wall and
+//                                  processor time, medians of REPEATS runs each), then writes
 //                                  M, C, K, the DOF labels, the bodies' reference points, the
 //                                  track inputs (vertical columns and their x), the output
 //                                  points, the speeds, the grid and railmodal's figures (RMS,
@@ -21,11 +23,13 @@
 //                                  the grid error estimate): what compare_ride.py times as a
 //                                  whole process
 //
-// Everything goes through the public API but one thing: the repeated solves keep their large
-// arrays in one ride::Workspace (src/ride/ride_workspace.hpp), as a study's worker does, so that
-// their cost does not depend on whether glibc returns those arrays to the system between solves
-// (docs/ride.md, "Performance", the ninth round); the answers are solve_ride's, bit for bit.
-// Nothing here computes a response itself.
+// Everything goes through the public API but one thing: the repeated solves ride_s and
+// ride_rms_s keep their large arrays in one ride::Workspace (src/ride/ride_workspace.hpp), as a
+// study's worker does, so that their cost does not depend on whether glibc returns those arrays
+// to the system between solves (docs/ride.md, "Performance", the ninth round); the answers are
+// solve_ride's, bit for bit. ride_public_s is the public solve_ride (and Python's ride), which
+// allocates those arrays at every call: what a program that solves repeatedly through
+// include/ pays. Nothing here computes a response itself.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -115,15 +119,24 @@ int main(int argc, char** argv) {
   const Setup s = setup();
   RideOptions rms_only = s.options;
   rms_only.rms_only = true;
-  RideResult r, q;
-  benchmarks::Stopwatch ride, ride_rms;
+  RideResult r, q, public_r;
+  benchmarks::Stopwatch ride, ride_rms, ride_public;
   ride::Workspace workspace;  // one for both: the rms_only solve leaves the modal terms' arrays alone
-  for (int k = 0; k < repeats; ++k) {  // interleaved: both see the same load
+  for (int k = 0; k < repeats; ++k) {  // interleaved: all three see the same load
     ride.time([&] { r = ride::solve_ride(s.system, s.track, s.outputs, s.options, &workspace); });
     ride_rms.time([&] { q = ride::solve_ride(s.system, s.track, s.outputs, rms_only, &workspace); });
+    ride_public.time([&] { public_r = solve_ride(s.system, s.track, s.outputs, s.options); });
   }
   std::cout << "ride_s " << ride.median_wall() << "\nride_cpu_s " << ride.median_cpu() << "\nride_rms_s "
-            << ride_rms.median_wall() << "\nride_rms_cpu_s " << ride_rms.median_cpu() << "\n";
+            << ride_rms.median_wall() << "\nride_rms_cpu_s " << ride_rms.median_cpu() << "\nride_public_s "
+            << ride_public.median_wall() << "\nride_public_cpu_s " << ride_public.median_cpu() << "\n";
+  for (size_t v = 0; v < r.speeds.size(); ++v)  // the kept workspace changes no answer
+    for (size_t o = 0; o < r.speeds[v].outputs.size(); ++o)
+      if (r.speeds[v].outputs[o].rms != public_r.speeds[v].outputs[o].rms ||
+          r.speeds[v].outputs[o].weighted_rms != public_r.speeds[v].outputs[o].weighted_rms) {
+        std::cerr << "ride_timing: the kept workspace's solve differs from solve_ride's\n";
+        return 1;
+      }
   std::cerr << "ride_timing: " << s.system.size() << " DOFs, " << s.system.track_inputs.size() << " track inputs, "
             << r.frequencies.size() << " frequencies, " << r.speeds.size() << " speeds, " << r.outputs.size()
             << " outputs; grid error estimate " << r.grid_error_estimate << "\n";
