@@ -204,6 +204,7 @@ struct ElementMap {
   int upper = 0, lower = -1;
   model::PointMap up, low;
   double up_bending = 0.0, low_bending = 0.0;
+  bool finite = false;  // up and (where there is a lower body) low hold finite numbers only
 
   // The displacement (longitudinal, lateral, vertical) of the point on the upper (lower) body
   // per unit of full coordinate c; zero for another body's coordinate.
@@ -231,12 +232,50 @@ ElementMap element_map(const Vehicle& v, const Layout& layout, const std::map<st
     if (layout.bending[m.lower] >= 0)
       m.low_bending = layout.modes[layout.bending[m.lower] - layout.rigid()].shape_at(e.point.x(), what(e.lower));
   }
+  m.finite = m.up.allFinite() && (m.lower < 0 || m.low.allFinite());
   return m;
+}
+
+// add_element where at most two of the stiffnesses are nonzero (`stiff`, `count` of them, in
+// order), all finite, and so are the maps: each entry of a pair's 6 × 6 block gains the terms
+// (s a_d,i k_d) b_d,j of those directions only, as one product or the sum of two. add_element's
+// Eigen products give the same bits: its factor (s Aᵀ) kd has the entry (s a_d,i) k_d plus exact
+// zeros, and a direction whose k_d is zero adds only exact zeros (a finite number times zero) to
+// the entry's sum; x + ±0 = x, a sum of two terms is the same in either order, and a zero sum
+// added to K leaves it as it was (K is summed from +0 and holds no −0: +0 + −0 = +0). The
+// resort car's springs and dampers act in one direction each (vertical), so this is one
+// multiply a term instead of three products of 3 × 5 maps per pair.
+void add_element_sparse(const ElementMap& m, const Eigen::Vector3d& k, const int* stiff, int count,
+                        Eigen::MatrixXd* K) {
+  struct Side { int body; const model::PointMap* map; double sign; };
+  const Side sides[2] = {{m.upper, &m.up, 1.0}, {m.lower, &m.low, -1.0}};
+  for (const Side& a : sides)
+    for (const Side& b : sides) {
+      if (a.body < 0 || b.body < 0) continue;
+      const double s = a.sign * b.sign;
+      Eigen::Map<Eigen::Matrix<double, kMotionsPerBody, kMotionsPerBody>, Eigen::Unaligned, Eigen::OuterStride<>> block(
+          K->data() + b.body * kMotionsPerBody * K->rows() + a.body * kMotionsPerBody, Eigen::OuterStride<>(K->rows()));
+      // (s a_d,i) k_d, the factor add_element forms.
+      const Eigen::Matrix<double, kMotionsPerBody, 1> u0 = (s * a.map->row(stiff[0]).transpose()) * k(stiff[0]);
+      if (count == 1) {
+        for (int j = 0; j < kMotionsPerBody; ++j) block.col(j) += u0 * (*b.map)(stiff[0], j);
+      } else {
+        const Eigen::Matrix<double, kMotionsPerBody, 1> u1 = (s * a.map->row(stiff[1]).transpose()) * k(stiff[1]);
+        for (int j = 0; j < kMotionsPerBody; ++j)
+          block.col(j) += u0 * (*b.map)(stiff[0], j) + u1 * (*b.map)(stiff[1], j);
+      }
+    }
 }
 
 // k = diag(longitudinal, lateral, vertical) at the point: K += Bᵀ k B, scattered into the
 // blocks of the two bodies only (a dense Bᵀ k B would cost O(n²) per element).
 void add_element(const ElementMap& m, const Eigen::Vector3d& k, Eigen::MatrixXd* K) {
+  int stiff[3];
+  int count = 0;
+  for (int d = 0; d < 3; ++d)
+    if (k(d) != 0.0) stiff[count++] = d;
+  if (count == 0 && k.allFinite() && m.finite) return;  // only exact zeros to add
+  if (count <= 2 && k.allFinite() && m.finite) return add_element_sparse(m, k, stiff, count, K);
   struct Side { int body; const model::PointMap* map; double sign; };
   const Side sides[2] = {{m.upper, &m.up, 1.0}, {m.lower, &m.low, -1.0}};
   const Eigen::Matrix3d kd = k.asDiagonal();
