@@ -754,54 +754,94 @@ DeadLoadPatterns dead_load_patterns(const Vehicle& vehicle, const std::vector<El
   return p;
 }
 
-// gravity_stiffness from the kept patterns: the same sums in the same order, each term the load
-// times its unit pattern. dead_load_stiffness is linear in the force, and with a vertical force
-// each of its entries is the load times one coordinate of the point (halved, exactly), or
-// such a product plus exact zeros, so each term is gravity_stiffness's but for the sign of a zero.
-void gravity_stiffness_from(const DeadLoadPatterns& p, const std::vector<ElementMap>& maps,
-                            const std::vector<double>& loads, const Eigen::MatrixXd& K_weights,
-                            Eigen::MatrixXd* K_gravity) {
-  *K_gravity = K_weights;
-  auto block = [&](int body) {
-    return K_gravity->block<kMotionsPerBody, kMotionsPerBody>(body * kMotionsPerBody, body * kMotionsPerBody);
+// Where a set of kept coordinates (`keep`) meets what a study's workers add per variant, found
+// once per base: the picked cells inside each body's rigid 6 × 6 block (its dead loads), and
+// the picked cells of the hangers' per-unit entries, in DeadLoadPatterns::hangers' order.
+struct PickedCells {
+  struct Cell {
+    int row, column;    // among the kept coordinates
+    int motion_row, motion_column;  // in the body's block
   };
-  for (size_t k = 0; k < maps.size(); ++k) {
-    block(maps[k].upper) += loads[k] * p.upper[k];
-    if (maps[k].lower >= 0) block(maps[k].lower) += loads[k] * p.lower[k];
+  std::vector<std::vector<Cell>> in_block;  // per body
+  struct HangerCell {
+    int row, column;
+    size_t entry;  // in DeadLoadPatterns::hangers
+  };
+  std::vector<HangerCell> hangers;
+};
+
+PickedCells picked_cells(const Layout& layout, const DeadLoadPatterns& p, const std::vector<int>& keep) {
+  PickedCells cells;
+  cells.in_block.resize(static_cast<size_t>(layout.bodies));
+  const int n = static_cast<int>(keep.size());
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (keep[i] < layout.rigid() && keep[j] < layout.rigid() && layout.body_of(keep[i]) == layout.body_of(keep[j]))
+        cells.in_block[static_cast<size_t>(layout.body_of(keep[i]))].push_back(
+            {i, j, keep[i] % kMotionsPerBody, keep[j] % kMotionsPerBody});
+  std::vector<int> position(static_cast<size_t>(layout.size()), -1);
+  for (int i = 0; i < n; ++i) position[static_cast<size_t>(keep[i])] = i;
+  for (size_t e = 0; e < p.hangers.size(); ++e) {
+    const int row = position[static_cast<size_t>(p.hangers[e].row)];
+    const int column = position[static_cast<size_t>(p.hangers[e].column)];
+    if (row >= 0 && column >= 0) cells.hangers.push_back({row, column, e});
   }
+  return cells;
+}
+
+// The rows and columns `keep` of a study's workers' K and K_gravity: K_springs plus each
+// hanger's per-unit entries times its stiffness (k·(s·a·b) where add_element rounds (s·a·k)·b),
+// and K_weights plus each element's load times its unit dead-load pattern (equal to
+// gravity_stiffness's terms but for the sign of a zero), then K + K_gravity: study-base2's sums
+// (round-off against assemble). Computed on the kept cells only, each entry the same sum in the
+// same order as in the full N × N matrices the workers formed before, so the same bits without
+// the full copies and sums.
+void picked_stiffness(const FullAssembly& a, const DeadLoadPatterns& p, const std::vector<double>& hanger_stiffness,
+                      const std::vector<int>& keep, const PickedCells& cells, Eigen::MatrixXd* K,
+                      Eigen::MatrixXd* K_gravity) {
+  pick_into(a.full.K_springs, keep, K);
+  for (const PickedCells::HangerCell& h : cells.hangers)
+    (*K)(h.row, h.column) += hanger_stiffness[static_cast<size_t>(p.hangers[h.entry].element)] * p.hangers[h.entry].value;
+  pick_into(a.K_weights, keep, K_gravity);
+  const std::vector<ElementMap>& maps = a.full.maps;
+  for (size_t k = 0; k < maps.size(); ++k) {
+    for (const PickedCells::Cell& c : cells.in_block[static_cast<size_t>(maps[k].upper)])
+      (*K_gravity)(c.row, c.column) += a.loads[k] * p.upper[k](c.motion_row, c.motion_column);
+    if (maps[k].lower >= 0)
+      for (const PickedCells::Cell& c : cells.in_block[static_cast<size_t>(maps[k].lower)])
+        (*K_gravity)(c.row, c.column) += a.loads[k] * p.lower[k](c.motion_row, c.motion_column);
+  }
+  *K += *K_gravity;
 }
 
 // What follows the springs and masses: the static loads, the hangers' lateral stiffness and the
-// dead loads, from a.full (its K_springs summed). `workers`, given by a study's workers (only:
-// both round otherwise than assemble), finds the loads by static_loads_on_sprung where it
-// applies, and the hangers' lateral stiffness and the dead loads from the patterns (a hanger's
-// entry k·(s·a·b) where add_element rounds (s·a·k)·b: round-off).
-void add_static_loads(const Vehicle& vehicle, FullAssembly* a, const DeadLoadPatterns* workers = nullptr) {
-  if (!workers ||
-      !static_loads_on_sprung(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights, &a->loads))
-    a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
+// dead loads, from a.full (its K_springs summed).
+void add_static_loads(const Vehicle& vehicle, FullAssembly* a) {
+  a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
   a->K = a->full.K_springs;
-  if (workers) {
-    // Each hanger's stiffness found once for its entries (a pure function of the element and
-    // its load: the same value each time).
-    int hanger = -1;
-    double k = 0.0;
-    for (const DeadLoadPatterns::HangerEntry& h : workers->hangers) {
-      if (h.element != hanger)
-        hanger = h.element, k = model::lateral_stiffness(vehicle.elements[h.element], a->loads[h.element]);
-      a->K(h.row, h.column) += k * h.value;
-    }
-  } else {
-    for (size_t k = 0; k < vehicle.elements.size(); ++k) {
-      const Element& e = vehicle.elements[k];
-      if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
-    }
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Element& e = vehicle.elements[k];
+    if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
   }
-  if (workers)
-    gravity_stiffness_from(*workers, a->full.maps, a->loads, a->K_weights, &a->K_gravity);
-  else
-    a->K_gravity = gravity_stiffness(vehicle, a->full.maps, a->loads, a->K_weights);
+  a->K_gravity = gravity_stiffness(vehicle, a->full.maps, a->loads, a->K_weights);
   a->K += a->K_gravity;
+}
+
+// The static loads of a study's workers (static_loads_on_sprung where it applies, otherwise
+// static_loads, which decides with its message) and each hanger's lateral stiffness, once per
+// hanger (a pure function of the element and its load), into *hanger_stiffness by element.
+// K and K_gravity are then picked for each kept set by picked_stiffness.
+void workers_static_loads(const Vehicle& vehicle, FullAssembly* a, const DeadLoadPatterns& p,
+                          std::vector<double>* hanger_stiffness) {
+  if (!static_loads_on_sprung(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights, &a->loads))
+    a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
+  hanger_stiffness->assign(vehicle.elements.size(), 0.0);
+  int hanger = -1;
+  for (const DeadLoadPatterns::HangerEntry& h : p.hangers)
+    if (h.element != hanger) {
+      hanger = h.element;
+      (*hanger_stiffness)[static_cast<size_t>(hanger)] = model::lateral_stiffness(vehicle.elements[h.element], a->loads[h.element]);
+    }
 }
 
 FullAssembly assemble_full(const Vehicle& vehicle, bool damping) {
@@ -970,11 +1010,15 @@ struct model::VariantAssembly::Base {
   Vehicle kept;                // the geometry the rest was made from (its coefficients are not read)
   std::vector<double> damped;  // the viscous dampings C was summed from (dampings_of)
   FullAssembly a;              // layout, free coordinates, point maps and M kept; the rest each variant's
+                               // (its full K and K_gravity, the first vehicle's by assemble, are not
+                               // read: each variant's are picked_stiffness's)
   DofSet set, stiffness_set;
   std::vector<int> keep, stiffness_keep;
   std::vector<Dof> dofs, stiffness_dofs;
   Eigen::MatrixXd mass, element_vertical_map;  // picked for `set`
   DeadLoadPatterns dead_loads;                 // dead_load_patterns
+  PickedCells cells, stiffness_cells;          // picked_cells of keep and stiffness_keep
+  std::vector<double> hanger_stiffness;        // each variant's, by element (workers_static_loads)
 };
 
 model::VariantAssembly::VariantAssembly() = default;
@@ -990,32 +1034,34 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
       add_dampings(vehicle, base_->a.layout, &base_->a.full);
       base_->damped = dampings_of(vehicle);
     }
-    add_static_loads(vehicle, &base_->a, &base_->dead_loads);
+    workers_static_loads(vehicle, &base_->a, base_->dead_loads, &base_->hanger_stiffness);
   } else {
     FullAssembly a = assemble_full(vehicle, true);  // throws before anything is kept
     auto fresh = std::unique_ptr<Base>(
-        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}, {}});
+        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}});
     const FullAssembly& f = fresh->a;
     fresh->keep = kept_coordinates(vehicle, f.layout, f.free, set, &fresh->dofs);
     fresh->stiffness_keep = kept_coordinates(vehicle, f.layout, f.free, stiffness_set, &fresh->stiffness_dofs);
     pick_into(f.full.M, fresh->keep, &fresh->mass);
     fresh->element_vertical_map = element_vertical_map(f.layout, f.full.maps, fresh->keep);
     fresh->dead_loads = dead_load_patterns(vehicle, f.full.maps, f.layout.size());
+    fresh->cells = picked_cells(f.layout, fresh->dead_loads, fresh->keep);
+    fresh->stiffness_cells = picked_cells(f.layout, fresh->dead_loads, fresh->stiffness_keep);
     // The base's static loads found again as every later variant's are (the results do not
     // depend on which variant a worker took first, hence not on the thread count).
-    add_static_loads(vehicle, &fresh->a, &fresh->dead_loads);
+    workers_static_loads(vehicle, &fresh->a, fresh->dead_loads, &fresh->hanger_stiffness);
     base_ = std::move(fresh);
   }
   const Base& b = *base_;
   const FullAssembly& a = b.a;
   stiffness->dofs = b.stiffness_dofs;
-  pick_into(a.K, b.stiffness_keep, &stiffness->stiffness);
-  pick_into(a.K_gravity, b.stiffness_keep, &stiffness->gravity_stiffness);
+  picked_stiffness(a, b.dead_loads, b.hanger_stiffness, b.stiffness_keep, b.stiffness_cells, &stiffness->stiffness,
+                   &stiffness->gravity_stiffness);
   system->dofs = b.dofs;
   system->mass = b.mass;
   pick_into(a.full.C, b.keep, &system->damping);
-  pick_into(a.K, b.keep, &system->stiffness);
-  pick_into(a.K_gravity, b.keep, &system->gravity_stiffness);
+  picked_stiffness(a, b.dead_loads, b.hanger_stiffness, b.keep, b.cells, &system->stiffness,
+                   &system->gravity_stiffness);
   system->element_loads = a.loads;
   system->element_vertical_map = b.element_vertical_map;
   fill_track_inputs(vehicle, a.layout, a.full.maps, a.loads, b.keep, &system->track_inputs);
