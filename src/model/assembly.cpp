@@ -473,14 +473,18 @@ bool static_loads_on_sprung(const Vehicle& v, const Layout& layout, const std::v
   }
   if (static_cast<int>(sprung.size()) == n) return false;
   const int m = static_cast<int>(sprung.size());
-  Eigen::MatrixXd Ks;
-  Eigen::VectorXd Qs;
+  // This thread's matrices and factorisation, their storage kept between variants (the same
+  // operations into kept storage: the same bits).
+  thread_local Eigen::MatrixXd Ks;
+  thread_local Eigen::VectorXd Qs, qs, Ksqs, q;
+  thread_local Eigen::LLT<Eigen::MatrixXd> llt;
   pick_system(K_springs, Q, sprung, &Ks, &Qs);
-  const Eigen::LLT<Eigen::MatrixXd> llt(Ks);
+  llt.compute(Ks);
   if (llt.info() != Eigen::Success) return false;
-  const Eigen::VectorXd qs = llt.solve(Qs);
-  if (!qs.allFinite() || !((Ks * qs - Qs).norm() <= 1e-10 * Qs.norm())) return false;
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(layout.size());
+  qs = llt.solve(Qs);
+  Ksqs.noalias() = Ks * qs;
+  if (!qs.allFinite() || !((Ksqs - Qs).norm() <= 1e-10 * Qs.norm())) return false;
+  q.setZero(layout.size());
   for (int i = 0; i < m; ++i) q(sprung[i]) = qs(i);
   loads->resize(v.elements.size());
   for (size_t k = 0; k < v.elements.size(); ++k) {
