@@ -650,6 +650,22 @@ bool pulls_only_along(const Element& e) {
          e.rotational_stiffness.isZero(0.0);
 }
 
+// Each element's upper-body columns among the kept coordinates (position, ElementMap::column),
+// which depend only on the geometry: a study's workers find them once per base (upper_columns).
+struct KeptColumn {
+  int position;
+  Eigen::Vector3d column;
+};
+using UpperColumns = std::vector<std::vector<KeptColumn>>;  // per element
+
+UpperColumns upper_columns(const Layout& layout, const std::vector<ElementMap>& maps, const std::vector<int>& keep) {
+  UpperColumns columns(maps.size());
+  for (size_t k = 0; k < maps.size(); ++k)
+    for (int i = 0; i < static_cast<int>(keep.size()); ++i)
+      if (layout.body_of(keep[i]) == maps[k].upper) columns[k].push_back({i, maps[k].column(layout, true, keep[i])});
+  return columns;
+}
+
 // Where the track's displacement enters: the final stiffness of each track element
 // (hangers included) and its damping, seen from the kept coordinates of its upper body.
 // An element standing on a wheelset takes the rail's longitudinal and vertical displacement as
@@ -657,8 +673,10 @@ bool pulls_only_along(const Element& e) {
 // reaches it through the contact, which M, C and K do not hold, so that column stays zero.
 // Into *inputs, its entries' storage reused where they have their sizes already (a study's
 // worker assembles every variant of one base into the same system).
+// `kept`, when given, is upper_columns(layout, maps, keep): the same columns, found once.
 void fill_track_inputs(const Vehicle& vehicle, const Layout& layout, const std::vector<ElementMap>& maps,
-                       const std::vector<double>& loads, const std::vector<int>& keep, std::vector<TrackInput>* inputs) {
+                       const std::vector<double>& loads, const std::vector<int>& keep, std::vector<TrackInput>* inputs,
+                       const UpperColumns* kept = nullptr) {
   const int n = static_cast<int>(keep.size());
   size_t count = 0;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
@@ -675,6 +693,14 @@ void fill_track_inputs(const Vehicle& vehicle, const Layout& layout, const std::
     input.point = e.point;
     input.load_per_displacement.setZero(n, 3);
     input.load_per_velocity.setZero(n, 3);
+    if (kept) {
+      for (const KeptColumn& c : (*kept)[k])
+        for (int d = 0; d < 3; ++d) {
+          input.load_per_displacement(c.position, d) = c.column(d) * stiffness(d);
+          input.load_per_velocity(c.position, d) = c.column(d) * damping(d);
+        }
+      continue;
+    }
     for (int i = 0; i < n; ++i) {
       if (layout.body_of(keep[i]) != maps[k].upper) continue;
       const Eigen::Vector3d column = maps[k].column(layout, true, keep[i]);
@@ -1022,6 +1048,7 @@ struct model::VariantAssembly::Base {
   Eigen::MatrixXd mass, element_vertical_map;  // picked for `set`
   DeadLoadPatterns dead_loads;                 // dead_load_patterns
   PickedCells cells, stiffness_cells;          // picked_cells of keep and stiffness_keep
+  UpperColumns track_columns;                  // upper_columns of keep
   std::vector<double> hanger_stiffness;        // each variant's, by element (workers_static_loads)
 };
 
@@ -1042,7 +1069,7 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
   } else {
     FullAssembly a = assemble_full(vehicle, true);  // throws before anything is kept
     auto fresh = std::unique_ptr<Base>(
-        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}});
+        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}});
     const FullAssembly& f = fresh->a;
     fresh->keep = kept_coordinates(vehicle, f.layout, f.free, set, &fresh->dofs);
     fresh->stiffness_keep = kept_coordinates(vehicle, f.layout, f.free, stiffness_set, &fresh->stiffness_dofs);
@@ -1051,6 +1078,7 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
     fresh->dead_loads = dead_load_patterns(vehicle, f.full.maps, f.layout.size());
     fresh->cells = picked_cells(f.layout, fresh->dead_loads, fresh->keep);
     fresh->stiffness_cells = picked_cells(f.layout, fresh->dead_loads, fresh->stiffness_keep);
+    fresh->track_columns = upper_columns(f.layout, f.full.maps, fresh->keep);
     // The base's static loads found again as every later variant's are (the results do not
     // depend on which variant a worker took first, hence not on the thread count).
     workers_static_loads(vehicle, &fresh->a, fresh->dead_loads, &fresh->hanger_stiffness);
@@ -1068,7 +1096,7 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
                    &system->gravity_stiffness);
   system->element_loads = a.loads;
   system->element_vertical_map = b.element_vertical_map;
-  fill_track_inputs(vehicle, a.layout, a.full.maps, a.loads, b.keep, &system->track_inputs);
+  fill_track_inputs(vehicle, a.layout, a.full.maps, a.loads, b.keep, &system->track_inputs, &b.track_columns);
   system->series_dampers = series_damper_rows(vehicle, a.layout, a.full.maps, b.keep);
   system->vehicle = std::move(vehicle);
 }
