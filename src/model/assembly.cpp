@@ -501,11 +501,34 @@ struct FullModel {
   std::vector<ElementMap> maps;  // one per element
 };
 
+// The pairs of bodies whose 6 × 6 blocks add_element and add_rotational write for `maps` (each
+// element's two bodies, both ways, and each by itself), without repeats.
+std::vector<std::pair<int, int>> joined_blocks(const std::vector<ElementMap>& maps) {
+  std::set<std::pair<int, int>> blocks;
+  for (const ElementMap& m : maps)
+    for (int a : {m.upper, m.lower})
+      for (int b : {m.upper, m.lower})
+        if (a >= 0 && b >= 0) blocks.insert({a, b});
+  return {blocks.begin(), blocks.end()};
+}
+
 // The coefficients of the springs and bending modes summed into K_springs, zeroed first: what
 // changes when only the elements' stiffnesses do (a study's variants on one base,
 // VariantAssembly). The same sums in the same order whichever path calls it.
-void add_stiffnesses(const Vehicle& vehicle, const Layout& layout, FullModel* f) {
-  f->K_springs.setZero();
+// `joined`, when given, is joined_blocks(f->maps), and K_springs was summed before with the
+// same maps: add_stiffnesses writes only those blocks and the bending coordinates' rows and
+// columns, so the rest still holds +0 and only these are zeroed (the same matrix).
+void add_stiffnesses(const Vehicle& vehicle, const Layout& layout, FullModel* f,
+                     const std::vector<std::pair<int, int>>* joined = nullptr) {
+  if (joined) {
+    for (const auto& [a, b] : *joined)
+      f->K_springs.block<kMotionsPerBody, kMotionsPerBody>(a * kMotionsPerBody, b * kMotionsPerBody).setZero();
+    const int bent = layout.size() - layout.rigid();
+    f->K_springs.bottomRows(bent).setZero();
+    f->K_springs.rightCols(bent).setZero();
+  } else {
+    f->K_springs.setZero();
+  }
   // The bending mode by itself: modal mass m_b, stiffness ω²m_b (damping 2ζω m_b in
   // add_dampings). Its mass is not coupled to the rigid motions: for a uniform beam the mode
   // is orthogonal to them (∫ m' φ ds = ∫ m' (x − centre) φ ds = 0), which we take for the body.
@@ -1049,6 +1072,7 @@ struct model::VariantAssembly::Base {
   DeadLoadPatterns dead_loads;                 // dead_load_patterns
   PickedCells cells, stiffness_cells;          // picked_cells of keep and stiffness_keep
   UpperColumns track_columns;                  // upper_columns of keep
+  std::vector<std::pair<int, int>> joined;     // joined_blocks of the point maps
   std::vector<double> hanger_stiffness;        // each variant's, by element (workers_static_loads)
 };
 
@@ -1060,7 +1084,7 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
   reused_ = base_ && base_->set == set && base_->stiffness_set == stiffness_set &&
             same_but_coefficients(base_->kept, vehicle) && coefficients_valid(vehicle);
   if (reused_) {
-    add_stiffnesses(vehicle, base_->a.layout, &base_->a.full);
+    add_stiffnesses(vehicle, base_->a.layout, &base_->a.full, &base_->joined);
     if (!same_dampings(base_->damped, vehicle)) {
       add_dampings(vehicle, base_->a.layout, &base_->a.full);
       base_->damped = dampings_of(vehicle);
@@ -1069,7 +1093,7 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
   } else {
     FullAssembly a = assemble_full(vehicle, true);  // throws before anything is kept
     auto fresh = std::unique_ptr<Base>(
-        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}});
+        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}});
     const FullAssembly& f = fresh->a;
     fresh->keep = kept_coordinates(vehicle, f.layout, f.free, set, &fresh->dofs);
     fresh->stiffness_keep = kept_coordinates(vehicle, f.layout, f.free, stiffness_set, &fresh->stiffness_dofs);
@@ -1079,6 +1103,7 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
     fresh->cells = picked_cells(f.layout, fresh->dead_loads, fresh->keep);
     fresh->stiffness_cells = picked_cells(f.layout, fresh->dead_loads, fresh->stiffness_keep);
     fresh->track_columns = upper_columns(f.layout, f.full.maps, fresh->keep);
+    fresh->joined = joined_blocks(f.full.maps);
     // The base's static loads found again as every later variant's are (the results do not
     // depend on which variant a worker took first, hence not on the thread count).
     workers_static_loads(vehicle, &fresh->a, fresh->dead_loads, &fresh->hanger_stiffness);
