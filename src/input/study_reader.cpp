@@ -441,6 +441,7 @@ void read_into(const StudyFile& file, const study::VariantSpec& spec, std::map<s
                StudyVariant* variant) {
   const toml::value& vehicle_document = file.vehicle_documents.at(spec.vehicle_file);
   std::vector<const study::Assignment*> on_vehicle, on_scene;
+  on_vehicle.reserve(spec.assignments.size());
   for (const auto& a : spec.assignments) (a.scene ? on_scene : on_vehicle).push_back(&a);
   if (on_vehicle.empty() && plain) {
     const auto [cached, fresh] = plain->try_emplace(spec.vehicle_file);
@@ -451,9 +452,12 @@ void read_into(const StudyFile& file, const study::VariantSpec& spec, std::map<s
   } else if (!fast_vehicle_into(file, spec, on_vehicle, &variant->vehicle)) {
     variant->vehicle = read_overridden_vehicle(file, spec, on_vehicle);
   }
-  variant->scene = on_scene.empty()
-                       ? file.base_scene
-                       : read_with_assignments<Scene>(file.scene_document, file.scene_file, on_scene, file, spec, read_scene);
+  // Assigned (not a copy then a move): a worker's scene of the variant before keeps its
+  // strings' and key places' storage.
+  if (on_scene.empty())
+    variant->scene = file.base_scene;
+  else
+    variant->scene = read_with_assignments<Scene>(file.scene_document, file.scene_file, on_scene, file, spec, read_scene);
   check_rule(file, spec, *variant);
 }
 

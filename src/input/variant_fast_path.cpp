@@ -35,6 +35,38 @@ std::optional<double> read_as(const toml::value& value, Quantity kind) {
 
 bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
+std::vector<SpringStage>& stage_list(Element& e, int list) {
+  return list == 0 ? e.vertical_stages : list == 1 ? e.lateral_stages : e.longitudinal_stages;
+}
+
+double& number_at(Vehicle& v, const FastKey::StagePlace& p) {
+  SpringStage& s = stage_list(v.elements[p.element], p.list)[p.stage];
+  return p.stiffness ? s.stiffness : s.relative_friction;
+}
+
+// FastKey::places of `numbers` (vehicle_numbers order) on `base`: each found among the spring
+// stages' stiffnesses and frictions by its address; empty when one is elsewhere.
+std::vector<FastKey::StagePlace> stage_places(Vehicle& base, const std::vector<size_t>& numbers) {
+  const std::vector<double*> all = vehicle_numbers(&base);
+  std::vector<FastKey::StagePlace> places;
+  for (size_t i : numbers) {
+    bool found = false;
+    for (size_t e = 0; e < base.elements.size() && !found; ++e)
+      for (int list = 0; list < 3 && !found; ++list)
+        for (size_t s = 0; s < stage_list(base.elements[e], list).size() && !found; ++s)
+          for (const bool stiffness : {true, false}) {
+            const FastKey::StagePlace p{e, list, s, stiffness};
+            if (&number_at(base, p) == all[i]) {
+              places.push_back(p);
+              found = true;
+              break;
+            }
+          }
+    if (!found) return {};
+  }
+  return places;
+}
+
 // read_as of a drawn value with a unit, without its text (FastKey::unit_scales): the value
 // times its unit's scale, with the reader's checks of a finite, representable result; nothing
 // when the unit was not scaled or a check fails (read_as then says what the reader does).
@@ -261,6 +293,7 @@ std::optional<FastPath> resolve_fast_path(const StudyFile& file) {
     else
       ++it;
   if (!corners_read_as_set(file, probes, fast, base_shape, base)) return std::nullopt;
+  for (auto& [key, k] : fast.keys) k.places = stage_places(fast.base, k.numbers);
   return fast;
 }
 
@@ -285,6 +318,11 @@ bool fast_vehicle_into(const StudyFile& file, const study::VariantSpec& spec,
   // Assigned, not constructed: a vehicle of the base's shape (a worker's previous variant)
   // keeps its names', lists' and stages' storage.
   *vehicle = file.fast->base;
+  if (std::all_of(sets.begin(), sets.end(), [](const auto& set) { return !set.first->places.empty(); })) {
+    for (const auto& [key, si] : sets)
+      for (const FastKey::StagePlace& p : key->places) number_at(*vehicle, p) = si;
+    return true;
+  }
   // This thread's list, its storage kept between variants (the list is a few kilobytes: its
   // allocation cost as much as the walk).
   thread_local std::vector<double*> numbers;

@@ -34,6 +34,16 @@ struct FastKey {
   /// value x of that unit reads as x times it (the reader's strtod of x's shortest round-trip
   /// text is x), so the fast path multiplies instead of writing and parsing the text.
   std::vector<std::pair<std::string, double>> unit_scales;
+  /// Where each of `numbers` lies when every one is a spring stage's stiffness or relative
+  /// friction (what a study's keys set most), found once on the base: a variant's numbers are
+  /// then written there without walking the whole vehicle for them. Empty otherwise.
+  struct StagePlace {
+    size_t element = 0;
+    int list = 0;  ///< 0 vertical, 1 lateral, 2 longitudinal stages
+    size_t stage = 0;
+    bool stiffness = true;  ///< false: the relative friction
+  };
+  std::vector<StagePlace> places;
 };
 
 /// The base vehicle read once, and the keys the fast path sets.

@@ -204,6 +204,7 @@ struct ElementMap {
   int upper = 0, lower = -1;
   model::PointMap up, low;
   double up_bending = 0.0, low_bending = 0.0;
+  bool finite = false;  // up and (where there is a lower body) low hold finite numbers only
 
   // The displacement (longitudinal, lateral, vertical) of the point on the upper (lower) body
   // per unit of full coordinate c; zero for another body's coordinate.
@@ -231,12 +232,50 @@ ElementMap element_map(const Vehicle& v, const Layout& layout, const std::map<st
     if (layout.bending[m.lower] >= 0)
       m.low_bending = layout.modes[layout.bending[m.lower] - layout.rigid()].shape_at(e.point.x(), what(e.lower));
   }
+  m.finite = m.up.allFinite() && (m.lower < 0 || m.low.allFinite());
   return m;
+}
+
+// add_element where at most two of the stiffnesses are nonzero (`stiff`, `count` of them, in
+// order), all finite, and so are the maps: each entry of a pair's 6 × 6 block gains the terms
+// (s a_d,i k_d) b_d,j of those directions only, as one product or the sum of two. add_element's
+// Eigen products give the same bits: its factor (s Aᵀ) kd has the entry (s a_d,i) k_d plus exact
+// zeros, and a direction whose k_d is zero adds only exact zeros (a finite number times zero) to
+// the entry's sum; x + ±0 = x, a sum of two terms is the same in either order, and a zero sum
+// added to K leaves it as it was (K is summed from +0 and holds no −0: +0 + −0 = +0). The
+// resort car's springs and dampers act in one direction each (vertical), so this is one
+// multiply a term instead of three products of 3 × 5 maps per pair.
+void add_element_sparse(const ElementMap& m, const Eigen::Vector3d& k, const int* stiff, int count,
+                        Eigen::MatrixXd* K) {
+  struct Side { int body; const model::PointMap* map; double sign; };
+  const Side sides[2] = {{m.upper, &m.up, 1.0}, {m.lower, &m.low, -1.0}};
+  for (const Side& a : sides)
+    for (const Side& b : sides) {
+      if (a.body < 0 || b.body < 0) continue;
+      const double s = a.sign * b.sign;
+      Eigen::Map<Eigen::Matrix<double, kMotionsPerBody, kMotionsPerBody>, Eigen::Unaligned, Eigen::OuterStride<>> block(
+          K->data() + b.body * kMotionsPerBody * K->rows() + a.body * kMotionsPerBody, Eigen::OuterStride<>(K->rows()));
+      // (s a_d,i) k_d, the factor add_element forms.
+      const Eigen::Matrix<double, kMotionsPerBody, 1> u0 = (s * a.map->row(stiff[0]).transpose()) * k(stiff[0]);
+      if (count == 1) {
+        for (int j = 0; j < kMotionsPerBody; ++j) block.col(j) += u0 * (*b.map)(stiff[0], j);
+      } else {
+        const Eigen::Matrix<double, kMotionsPerBody, 1> u1 = (s * a.map->row(stiff[1]).transpose()) * k(stiff[1]);
+        for (int j = 0; j < kMotionsPerBody; ++j)
+          block.col(j) += u0 * (*b.map)(stiff[0], j) + u1 * (*b.map)(stiff[1], j);
+      }
+    }
 }
 
 // k = diag(longitudinal, lateral, vertical) at the point: K += Bᵀ k B, scattered into the
 // blocks of the two bodies only (a dense Bᵀ k B would cost O(n²) per element).
 void add_element(const ElementMap& m, const Eigen::Vector3d& k, Eigen::MatrixXd* K) {
+  int stiff[3];
+  int count = 0;
+  for (int d = 0; d < 3; ++d)
+    if (k(d) != 0.0) stiff[count++] = d;
+  if (count == 0 && k.allFinite() && m.finite) return;  // only exact zeros to add
+  if (count <= 2 && k.allFinite() && m.finite) return add_element_sparse(m, k, stiff, count, K);
   struct Side { int body; const model::PointMap* map; double sign; };
   const Side sides[2] = {{m.upper, &m.up, 1.0}, {m.lower, &m.low, -1.0}};
   const Eigen::Matrix3d kd = k.asDiagonal();
@@ -434,14 +473,18 @@ bool static_loads_on_sprung(const Vehicle& v, const Layout& layout, const std::v
   }
   if (static_cast<int>(sprung.size()) == n) return false;
   const int m = static_cast<int>(sprung.size());
-  Eigen::MatrixXd Ks;
-  Eigen::VectorXd Qs;
+  // This thread's matrices and factorisation, their storage kept between variants (the same
+  // operations into kept storage: the same bits).
+  thread_local Eigen::MatrixXd Ks;
+  thread_local Eigen::VectorXd Qs, qs, Ksqs, q;
+  thread_local Eigen::LLT<Eigen::MatrixXd> llt;
   pick_system(K_springs, Q, sprung, &Ks, &Qs);
-  const Eigen::LLT<Eigen::MatrixXd> llt(Ks);
+  llt.compute(Ks);
   if (llt.info() != Eigen::Success) return false;
-  const Eigen::VectorXd qs = llt.solve(Qs);
-  if (!qs.allFinite() || !((Ks * qs - Qs).norm() <= 1e-10 * Qs.norm())) return false;
-  Eigen::VectorXd q = Eigen::VectorXd::Zero(layout.size());
+  qs = llt.solve(Qs);
+  Ksqs.noalias() = Ks * qs;
+  if (!qs.allFinite() || !((Ksqs - Qs).norm() <= 1e-10 * Qs.norm())) return false;
+  q.setZero(layout.size());
   for (int i = 0; i < m; ++i) q(sprung[i]) = qs(i);
   loads->resize(v.elements.size());
   for (size_t k = 0; k < v.elements.size(); ++k) {
@@ -458,11 +501,34 @@ struct FullModel {
   std::vector<ElementMap> maps;  // one per element
 };
 
+// The pairs of bodies whose 6 × 6 blocks add_element and add_rotational write for `maps` (each
+// element's two bodies, both ways, and each by itself), without repeats.
+std::vector<std::pair<int, int>> joined_blocks(const std::vector<ElementMap>& maps) {
+  std::set<std::pair<int, int>> blocks;
+  for (const ElementMap& m : maps)
+    for (int a : {m.upper, m.lower})
+      for (int b : {m.upper, m.lower})
+        if (a >= 0 && b >= 0) blocks.insert({a, b});
+  return {blocks.begin(), blocks.end()};
+}
+
 // The coefficients of the springs and bending modes summed into K_springs, zeroed first: what
 // changes when only the elements' stiffnesses do (a study's variants on one base,
 // VariantAssembly). The same sums in the same order whichever path calls it.
-void add_stiffnesses(const Vehicle& vehicle, const Layout& layout, FullModel* f) {
-  f->K_springs.setZero();
+// `joined`, when given, is joined_blocks(f->maps), and K_springs was summed before with the
+// same maps: add_stiffnesses writes only those blocks and the bending coordinates' rows and
+// columns, so the rest still holds +0 and only these are zeroed (the same matrix).
+void add_stiffnesses(const Vehicle& vehicle, const Layout& layout, FullModel* f,
+                     const std::vector<std::pair<int, int>>* joined = nullptr) {
+  if (joined) {
+    for (const auto& [a, b] : *joined)
+      f->K_springs.block<kMotionsPerBody, kMotionsPerBody>(a * kMotionsPerBody, b * kMotionsPerBody).setZero();
+    const int bent = layout.size() - layout.rigid();
+    f->K_springs.bottomRows(bent).setZero();
+    f->K_springs.rightCols(bent).setZero();
+  } else {
+    f->K_springs.setZero();
+  }
   // The bending mode by itself: modal mass m_b, stiffness ω²m_b (damping 2ζω m_b in
   // add_dampings). Its mass is not coupled to the rigid motions: for a uniform beam the mode
   // is orthogonal to them (∫ m' φ ds = ∫ m' (x − centre) φ ds = 0), which we take for the body.
@@ -607,6 +673,22 @@ bool pulls_only_along(const Element& e) {
          e.rotational_stiffness.isZero(0.0);
 }
 
+// Each element's upper-body columns among the kept coordinates (position, ElementMap::column),
+// which depend only on the geometry: a study's workers find them once per base (upper_columns).
+struct KeptColumn {
+  int position;
+  Eigen::Vector3d column;
+};
+using UpperColumns = std::vector<std::vector<KeptColumn>>;  // per element
+
+UpperColumns upper_columns(const Layout& layout, const std::vector<ElementMap>& maps, const std::vector<int>& keep) {
+  UpperColumns columns(maps.size());
+  for (size_t k = 0; k < maps.size(); ++k)
+    for (int i = 0; i < static_cast<int>(keep.size()); ++i)
+      if (layout.body_of(keep[i]) == maps[k].upper) columns[k].push_back({i, maps[k].column(layout, true, keep[i])});
+  return columns;
+}
+
 // Where the track's displacement enters: the final stiffness of each track element
 // (hangers included) and its damping, seen from the kept coordinates of its upper body.
 // An element standing on a wheelset takes the rail's longitudinal and vertical displacement as
@@ -614,8 +696,10 @@ bool pulls_only_along(const Element& e) {
 // reaches it through the contact, which M, C and K do not hold, so that column stays zero.
 // Into *inputs, its entries' storage reused where they have their sizes already (a study's
 // worker assembles every variant of one base into the same system).
+// `kept`, when given, is upper_columns(layout, maps, keep): the same columns, found once.
 void fill_track_inputs(const Vehicle& vehicle, const Layout& layout, const std::vector<ElementMap>& maps,
-                       const std::vector<double>& loads, const std::vector<int>& keep, std::vector<TrackInput>* inputs) {
+                       const std::vector<double>& loads, const std::vector<int>& keep, std::vector<TrackInput>* inputs,
+                       const UpperColumns* kept = nullptr) {
   const int n = static_cast<int>(keep.size());
   size_t count = 0;
   for (size_t k = 0; k < vehicle.elements.size(); ++k) {
@@ -632,6 +716,14 @@ void fill_track_inputs(const Vehicle& vehicle, const Layout& layout, const std::
     input.point = e.point;
     input.load_per_displacement.setZero(n, 3);
     input.load_per_velocity.setZero(n, 3);
+    if (kept) {
+      for (const KeptColumn& c : (*kept)[k])
+        for (int d = 0; d < 3; ++d) {
+          input.load_per_displacement(c.position, d) = c.column(d) * stiffness(d);
+          input.load_per_velocity(c.position, d) = c.column(d) * damping(d);
+        }
+      continue;
+    }
     for (int i = 0; i < n; ++i) {
       if (layout.body_of(keep[i]) != maps[k].upper) continue;
       const Eigen::Vector3d column = maps[k].column(layout, true, keep[i]);
@@ -715,54 +807,94 @@ DeadLoadPatterns dead_load_patterns(const Vehicle& vehicle, const std::vector<El
   return p;
 }
 
-// gravity_stiffness from the kept patterns: the same sums in the same order, each term the load
-// times its unit pattern. dead_load_stiffness is linear in the force, and with a vertical force
-// each of its entries is the load times one coordinate of the point (halved, exactly), or
-// such a product plus exact zeros, so each term is gravity_stiffness's but for the sign of a zero.
-void gravity_stiffness_from(const DeadLoadPatterns& p, const std::vector<ElementMap>& maps,
-                            const std::vector<double>& loads, const Eigen::MatrixXd& K_weights,
-                            Eigen::MatrixXd* K_gravity) {
-  *K_gravity = K_weights;
-  auto block = [&](int body) {
-    return K_gravity->block<kMotionsPerBody, kMotionsPerBody>(body * kMotionsPerBody, body * kMotionsPerBody);
+// Where a set of kept coordinates (`keep`) meets what a study's workers add per variant, found
+// once per base: the picked cells inside each body's rigid 6 × 6 block (its dead loads), and
+// the picked cells of the hangers' per-unit entries, in DeadLoadPatterns::hangers' order.
+struct PickedCells {
+  struct Cell {
+    int row, column;    // among the kept coordinates
+    int motion_row, motion_column;  // in the body's block
   };
-  for (size_t k = 0; k < maps.size(); ++k) {
-    block(maps[k].upper) += loads[k] * p.upper[k];
-    if (maps[k].lower >= 0) block(maps[k].lower) += loads[k] * p.lower[k];
+  std::vector<std::vector<Cell>> in_block;  // per body
+  struct HangerCell {
+    int row, column;
+    size_t entry;  // in DeadLoadPatterns::hangers
+  };
+  std::vector<HangerCell> hangers;
+};
+
+PickedCells picked_cells(const Layout& layout, const DeadLoadPatterns& p, const std::vector<int>& keep) {
+  PickedCells cells;
+  cells.in_block.resize(static_cast<size_t>(layout.bodies));
+  const int n = static_cast<int>(keep.size());
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (keep[i] < layout.rigid() && keep[j] < layout.rigid() && layout.body_of(keep[i]) == layout.body_of(keep[j]))
+        cells.in_block[static_cast<size_t>(layout.body_of(keep[i]))].push_back(
+            {i, j, keep[i] % kMotionsPerBody, keep[j] % kMotionsPerBody});
+  std::vector<int> position(static_cast<size_t>(layout.size()), -1);
+  for (int i = 0; i < n; ++i) position[static_cast<size_t>(keep[i])] = i;
+  for (size_t e = 0; e < p.hangers.size(); ++e) {
+    const int row = position[static_cast<size_t>(p.hangers[e].row)];
+    const int column = position[static_cast<size_t>(p.hangers[e].column)];
+    if (row >= 0 && column >= 0) cells.hangers.push_back({row, column, e});
   }
+  return cells;
+}
+
+// The rows and columns `keep` of a study's workers' K and K_gravity: K_springs plus each
+// hanger's per-unit entries times its stiffness (k·(s·a·b) where add_element rounds (s·a·k)·b),
+// and K_weights plus each element's load times its unit dead-load pattern (equal to
+// gravity_stiffness's terms but for the sign of a zero), then K + K_gravity: study-base2's sums
+// (round-off against assemble). Computed on the kept cells only, each entry the same sum in the
+// same order as in the full N × N matrices the workers formed before, so the same bits without
+// the full copies and sums.
+void picked_stiffness(const FullAssembly& a, const DeadLoadPatterns& p, const std::vector<double>& hanger_stiffness,
+                      const std::vector<int>& keep, const PickedCells& cells, Eigen::MatrixXd* K,
+                      Eigen::MatrixXd* K_gravity) {
+  pick_into(a.full.K_springs, keep, K);
+  for (const PickedCells::HangerCell& h : cells.hangers)
+    (*K)(h.row, h.column) += hanger_stiffness[static_cast<size_t>(p.hangers[h.entry].element)] * p.hangers[h.entry].value;
+  pick_into(a.K_weights, keep, K_gravity);
+  const std::vector<ElementMap>& maps = a.full.maps;
+  for (size_t k = 0; k < maps.size(); ++k) {
+    for (const PickedCells::Cell& c : cells.in_block[static_cast<size_t>(maps[k].upper)])
+      (*K_gravity)(c.row, c.column) += a.loads[k] * p.upper[k](c.motion_row, c.motion_column);
+    if (maps[k].lower >= 0)
+      for (const PickedCells::Cell& c : cells.in_block[static_cast<size_t>(maps[k].lower)])
+        (*K_gravity)(c.row, c.column) += a.loads[k] * p.lower[k](c.motion_row, c.motion_column);
+  }
+  *K += *K_gravity;
 }
 
 // What follows the springs and masses: the static loads, the hangers' lateral stiffness and the
-// dead loads, from a.full (its K_springs summed). `workers`, given by a study's workers (only:
-// both round otherwise than assemble), finds the loads by static_loads_on_sprung where it
-// applies, and the hangers' lateral stiffness and the dead loads from the patterns (a hanger's
-// entry k·(s·a·b) where add_element rounds (s·a·k)·b: round-off).
-void add_static_loads(const Vehicle& vehicle, FullAssembly* a, const DeadLoadPatterns* workers = nullptr) {
-  if (!workers ||
-      !static_loads_on_sprung(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights, &a->loads))
-    a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
+// dead loads, from a.full (its K_springs summed).
+void add_static_loads(const Vehicle& vehicle, FullAssembly* a) {
+  a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
   a->K = a->full.K_springs;
-  if (workers) {
-    // Each hanger's stiffness found once for its entries (a pure function of the element and
-    // its load: the same value each time).
-    int hanger = -1;
-    double k = 0.0;
-    for (const DeadLoadPatterns::HangerEntry& h : workers->hangers) {
-      if (h.element != hanger)
-        hanger = h.element, k = model::lateral_stiffness(vehicle.elements[h.element], a->loads[h.element]);
-      a->K(h.row, h.column) += k * h.value;
-    }
-  } else {
-    for (size_t k = 0; k < vehicle.elements.size(); ++k) {
-      const Element& e = vehicle.elements[k];
-      if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
-    }
+  for (size_t k = 0; k < vehicle.elements.size(); ++k) {
+    const Element& e = vehicle.elements[k];
+    if (e.hanger) add_element(a->full.maps[k], {0.0, model::lateral_stiffness(e, a->loads[k]), 0.0}, &a->K);
   }
-  if (workers)
-    gravity_stiffness_from(*workers, a->full.maps, a->loads, a->K_weights, &a->K_gravity);
-  else
-    a->K_gravity = gravity_stiffness(vehicle, a->full.maps, a->loads, a->K_weights);
+  a->K_gravity = gravity_stiffness(vehicle, a->full.maps, a->loads, a->K_weights);
   a->K += a->K_gravity;
+}
+
+// The static loads of a study's workers (static_loads_on_sprung where it applies, otherwise
+// static_loads, which decides with its message) and each hanger's lateral stiffness, once per
+// hanger (a pure function of the element and its load), into *hanger_stiffness by element.
+// K and K_gravity are then picked for each kept set by picked_stiffness.
+void workers_static_loads(const Vehicle& vehicle, FullAssembly* a, const DeadLoadPatterns& p,
+                          std::vector<double>* hanger_stiffness) {
+  if (!static_loads_on_sprung(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights, &a->loads))
+    a->loads = static_loads(vehicle, a->layout, a->free, a->full.maps, a->full.K_springs, a->weights);
+  hanger_stiffness->assign(vehicle.elements.size(), 0.0);
+  int hanger = -1;
+  for (const DeadLoadPatterns::HangerEntry& h : p.hangers)
+    if (h.element != hanger) {
+      hanger = h.element;
+      (*hanger_stiffness)[static_cast<size_t>(hanger)] = model::lateral_stiffness(vehicle.elements[h.element], a->loads[h.element]);
+    }
 }
 
 FullAssembly assemble_full(const Vehicle& vehicle, bool damping) {
@@ -931,11 +1063,17 @@ struct model::VariantAssembly::Base {
   Vehicle kept;                // the geometry the rest was made from (its coefficients are not read)
   std::vector<double> damped;  // the viscous dampings C was summed from (dampings_of)
   FullAssembly a;              // layout, free coordinates, point maps and M kept; the rest each variant's
+                               // (its full K and K_gravity, the first vehicle's by assemble, are not
+                               // read: each variant's are picked_stiffness's)
   DofSet set, stiffness_set;
   std::vector<int> keep, stiffness_keep;
   std::vector<Dof> dofs, stiffness_dofs;
   Eigen::MatrixXd mass, element_vertical_map;  // picked for `set`
   DeadLoadPatterns dead_loads;                 // dead_load_patterns
+  PickedCells cells, stiffness_cells;          // picked_cells of keep and stiffness_keep
+  UpperColumns track_columns;                  // upper_columns of keep
+  std::vector<std::pair<int, int>> joined;     // joined_blocks of the point maps
+  std::vector<double> hanger_stiffness;        // each variant's, by element (workers_static_loads)
 };
 
 model::VariantAssembly::VariantAssembly() = default;
@@ -946,40 +1084,44 @@ void model::VariantAssembly::assemble(Vehicle&& vehicle, DofSet set, DofSet stif
   reused_ = base_ && base_->set == set && base_->stiffness_set == stiffness_set &&
             same_but_coefficients(base_->kept, vehicle) && coefficients_valid(vehicle);
   if (reused_) {
-    add_stiffnesses(vehicle, base_->a.layout, &base_->a.full);
+    add_stiffnesses(vehicle, base_->a.layout, &base_->a.full, &base_->joined);
     if (!same_dampings(base_->damped, vehicle)) {
       add_dampings(vehicle, base_->a.layout, &base_->a.full);
       base_->damped = dampings_of(vehicle);
     }
-    add_static_loads(vehicle, &base_->a, &base_->dead_loads);
+    workers_static_loads(vehicle, &base_->a, base_->dead_loads, &base_->hanger_stiffness);
   } else {
     FullAssembly a = assemble_full(vehicle, true);  // throws before anything is kept
     auto fresh = std::unique_ptr<Base>(
-        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}, {}});
+        new Base{vehicle, dampings_of(vehicle), std::move(a), set, stiffness_set, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}, {}});
     const FullAssembly& f = fresh->a;
     fresh->keep = kept_coordinates(vehicle, f.layout, f.free, set, &fresh->dofs);
     fresh->stiffness_keep = kept_coordinates(vehicle, f.layout, f.free, stiffness_set, &fresh->stiffness_dofs);
     pick_into(f.full.M, fresh->keep, &fresh->mass);
     fresh->element_vertical_map = element_vertical_map(f.layout, f.full.maps, fresh->keep);
     fresh->dead_loads = dead_load_patterns(vehicle, f.full.maps, f.layout.size());
+    fresh->cells = picked_cells(f.layout, fresh->dead_loads, fresh->keep);
+    fresh->stiffness_cells = picked_cells(f.layout, fresh->dead_loads, fresh->stiffness_keep);
+    fresh->track_columns = upper_columns(f.layout, f.full.maps, fresh->keep);
+    fresh->joined = joined_blocks(f.full.maps);
     // The base's static loads found again as every later variant's are (the results do not
     // depend on which variant a worker took first, hence not on the thread count).
-    add_static_loads(vehicle, &fresh->a, &fresh->dead_loads);
+    workers_static_loads(vehicle, &fresh->a, fresh->dead_loads, &fresh->hanger_stiffness);
     base_ = std::move(fresh);
   }
   const Base& b = *base_;
   const FullAssembly& a = b.a;
   stiffness->dofs = b.stiffness_dofs;
-  pick_into(a.K, b.stiffness_keep, &stiffness->stiffness);
-  pick_into(a.K_gravity, b.stiffness_keep, &stiffness->gravity_stiffness);
+  picked_stiffness(a, b.dead_loads, b.hanger_stiffness, b.stiffness_keep, b.stiffness_cells, &stiffness->stiffness,
+                   &stiffness->gravity_stiffness);
   system->dofs = b.dofs;
   system->mass = b.mass;
   pick_into(a.full.C, b.keep, &system->damping);
-  pick_into(a.K, b.keep, &system->stiffness);
-  pick_into(a.K_gravity, b.keep, &system->gravity_stiffness);
+  picked_stiffness(a, b.dead_loads, b.hanger_stiffness, b.keep, b.cells, &system->stiffness,
+                   &system->gravity_stiffness);
   system->element_loads = a.loads;
   system->element_vertical_map = b.element_vertical_map;
-  fill_track_inputs(vehicle, a.layout, a.full.maps, a.loads, b.keep, &system->track_inputs);
+  fill_track_inputs(vehicle, a.layout, a.full.maps, a.loads, b.keep, &system->track_inputs, &b.track_columns);
   system->series_dampers = series_damper_rows(vehicle, a.layout, a.full.maps, b.keep);
   system->vehicle = std::move(vehicle);
 }

@@ -80,9 +80,10 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
       StudyVariant read;  // this thread's copy of an unread variant, dropped once evaluated
       if (!variant || !variant->read) {
         try {
-          // Into the vehicle of the variant before (the workspace's system holds it once
-          // evaluated): its storage serves this one.
+          // Into the vehicle and scene of the variant before (the workspace holds them once
+          // evaluated): their storage serves this one.
           read.vehicle = std::move(workspace.system.vehicle);
+          read.scene = std::move(workspace.scene);
           detail::read_variant_into(study, index, &read);
           variant = &read;
         } catch (const InputError&) {

@@ -35,11 +35,13 @@ struct VariantSettings {
 /// What a worker keeps from one variant to the next (issue 19, item 2): the assembly of the
 /// base its variants differ from by coefficients (model::VariantAssembly), and the two systems
 /// each variant is assembled into (the swept one, and the lateral stiffness of the
-/// metacentric height), handed back after each evaluation so that their storage is reused; and
-/// the ride solve's large arrays, for a study with a ride metric.
+/// metacentric height), handed back after each evaluation so that their storage is reused,
+/// with the variant's scene (the next variant's is assigned into it: its names and key places
+/// keep their storage); and the ride solve's large arrays, for a study with a ride metric.
 struct Workspace {
   model::VariantAssembly assembly;
   LinearSystem system, lateral;
+  Scene scene;
   ride::Workspace ride;
 };
 
