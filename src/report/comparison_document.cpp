@@ -168,7 +168,7 @@ std::vector<std::string> verdict(const Comparison& c, const Writer& w, const rep
 // ---- the ranked table -----------------------------------------------------------------------
 
 Table ranked_table(const Comparison& c) {
-  const auto rows = report::comparison_rows(c, false);
+  const auto rows = report::comparison_rows(c);
   Table t;
   t.headers = rows.front();
   for (size_t i = 0; i < t.headers.size(); ++i) t.numeric.push_back(i >= 3 && i + 1 < t.headers.size());

@@ -3,8 +3,10 @@
 // merge ranks exactly the numbers a single run would have ranked (src/input/shard_reader.cpp
 // reads it back).
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -26,6 +28,10 @@ namespace {
 using report::JsonWriter;
 
 constexpr double kKmh = 3.6;  // km/h per m/s
+// Room for a number written with a precision: fixed notation of the largest double is 309
+// digits before the point (%.1f of 1e308); a study's values are far smaller, but a failed
+// design's may not be.
+constexpr size_t kTextMax = 330;
 
 std::vector<double> periods(const VariantResult& r) {
   std::vector<double> out;
@@ -201,24 +207,114 @@ void write_json(std::ostream& out, const Comparison& c) {
   j.end_object();
 }
 
-std::string number(double x, const char* format = "%.4f") {
+// A number for people: as printf's %.<precision>f (fixed) or %.<precision>g (general) writes it,
+// which to_chars with a precision writes too, at a fraction of snprintf's cost (a study's table
+// writes nine a row); "none" for +∞, "-inf" for −∞.
+std::string number(double x, std::chars_format format, int precision) {
   if (!std::isfinite(x)) return x > 0 ? "none" : "-inf";
-  char text[64];
-  std::snprintf(text, sizeof text, format, x);
-  return text;
+  char text[kTextMax];
+  return std::string(text, std::to_chars(text, text + sizeof text, x, format, precision).ptr);
 }
 
-// Shortest text that reads back as the same double (CSV is for programs).
-std::string exact(double x) {
-  return std::isfinite(x) ? shortest_text(x) : std::string();
-}
-
-// exact(x) appended to `text` without a string of its own (a row's lists hold a dozen numbers).
+// The shortest text that reads back as the same double (CSV is for programs), appended to `text`;
+// nothing for a non-finite value.
 void append_exact(std::string* text, double x) {
   if (std::isfinite(x)) append_shortest_text(text, x);
 }
 
-std::string status(const RankedVariant& v) { return !v.result.ok() ? "failed" : v.feasible ? "yes" : "no"; }
+const char* status(const RankedVariant& v) { return !v.result.ok() ? "failed" : v.feasible ? "yes" : "no"; }
+
+// What a row needs of an objective criterion, worked out once per study rather than once per
+// row (display_unit and infinite_is_unbounded look the metric up by its name).
+struct CriterionColumn {
+  double per_si;  // the display unit per SI unit
+  bool peak;      // +∞ is "unbounded" (a peak), not "none" (no critical speed)
+};
+
+std::vector<CriterionColumn> criterion_columns(const Ranking& ranking) {
+  std::vector<CriterionColumn> columns;
+  for (const auto& k : ranking.objective)
+    columns.push_back({study::display_unit(k.metric).per_si, study::infinite_is_unbounded(k.metric)});
+  return columns;
+}
+
+// metric_value(r, "lowest_critical_speed") and metric_value(r, "static_deflection")
+// (study/metrics.cpp) without its look-up by name, which cost a row more than its numbers' text.
+std::optional<double> lowest_critical_speed(const VariantResult& r) {
+  if (!r.ok()) return std::nullopt;
+  return r.critical_speeds.empty() ? std::numeric_limits<double>::infinity() : r.critical_speeds.front().speed;
+}
+
+std::optional<double> body_deflection(const VariantResult& r) {
+  if (!r.ok()) return std::nullopt;
+  for (const auto& [body, deflection] : r.static_deflections)
+    if (body == "body") return deflection;
+  return std::nullopt;
+}
+
+// A CSV field of any text (a name, a failure) appended as write_csv_field writes it: quoted
+// when it holds a comma, quote or line break.
+void append_csv_text(std::string* row, std::string_view text) {
+  if (text.find_first_of(",\"\n") == std::string_view::npos) {
+    row->append(text);
+    return;
+  }
+  *row += '"';
+  for (char c : text) {
+    if (c == '"') *row += '"';
+    *row += c;
+  }
+  *row += '"';
+}
+
+// A variant's CSV row after its rank (a streamed ranking knows the rank only when it writes),
+// appended to `row` field by field: numbers straight from to_chars, and only the fields that
+// can hold any text (the name, the failure, the violations) looked at for quotes.
+void append_csv_row(std::string* row, const std::vector<CriterionColumn>& criteria, bool deflections,
+                    const RankedVariant& v) {
+  const VariantResult& r = v.result;
+  append_csv_text(row, r.name);
+  *row += ',';
+  *row += status(v);
+  *row += ',';
+  if (v.objective) append_exact(row, *v.objective);
+  for (size_t k = 0; k < criteria.size(); ++k) {
+    *row += ',';
+    if (v.criteria.size() > k && v.criteria[k]) append_exact(row, *v.criteria[k] * criteria[k].per_si);
+  }
+  *row += ',';
+  if (const auto lowest = lowest_critical_speed(r)) append_exact(row, *lowest * kKmh);
+  *row += ',';
+  if (const auto deflection = body_deflection(r)) append_exact(row, *deflection * 1000.0);
+  if (deflections) {
+    *row += ',';
+    const auto ratio = r.ok() ? metric_value(r, "dynamic_deflection_ratio") : std::nullopt;
+    if (ratio && std::isinf(*ratio)) *row += "unbounded";
+    else if (ratio) append_exact(row, *ratio);
+  }
+  *row += ',';
+  size_t start = row->size();  // a list's items apart by a space, as the table has them
+  for (const auto& m : r.modes)
+    if (m.kind == "oscillatory") {
+      if (row->size() > start) *row += ' ';
+      append_exact(row, m.period_s);
+    }
+  *row += ',';
+  start = row->size();
+  for (const auto& c : r.critical_speeds) {
+    if (row->size() > start) *row += ' ';
+    append_exact(row, c.speed * kKmh);
+  }
+  *row += ',';
+  append_csv_text(row, r.failure);
+  *row += ',';
+  std::string violations;
+  for (const auto& w : v.violations) {
+    if (!violations.empty()) violations += "; ";
+    violations += w;
+  }
+  append_csv_text(row, violations);
+}
 
 std::string criterion_heading(const RankingCriterion& c) {
   const std::string unit = study::display_unit(c.metric).unit;
@@ -236,10 +332,8 @@ std::string criterion_title(const RankingCriterion& c) {
 // of permissible (within)", "130.2 % of permissible (exceeds)".
 std::string deflection_verdict(double ratio) {
   if (std::isinf(ratio)) return "unbounded (exceeds)";
-  return number(100.0 * ratio, "%.1f") + " % of permissible" + (ratio <= 1.0 ? " (within)" : " (exceeds)");
+  return number(100.0 * ratio, std::chars_format::fixed, 1) + " % of permissible" + (ratio <= 1.0 ? " (within)" : " (exceeds)");
 }
-
-std::optional<double> body_deflection(const VariantResult& r) { return metric_value(r, "static_deflection"); }
 
 // The header: the table's names for people, the CSV's for programs (metric names, units in
 // brackets, the extra columns).
@@ -263,62 +357,44 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
   return head;
 }
 
-}  // namespace
-
-std::vector<std::string> report::comparison_row(const Ranking& ranking, const DeflectionRule& rule,
-                                                const RankedVariant& v, bool for_csv) {
+// A variant's row of comparison_rows (its rank is v.rank), the criteria's columns worked out
+// once per study.
+std::vector<std::string> table_row(const std::vector<CriterionColumn>& criteria, bool deflections,
+                                   const RankedVariant& v) {
   const VariantResult& r = v.result;
   std::vector<std::string> row;
-  row.reserve(11 + ranking.objective.size());  // every column below: one allocation for the row, not five
+  row.reserve(7 + criteria.size());  // every column below: one allocation for the row, not five
   row.insert(row.end(), {std::to_string(v.rank), r.name, status(v)});
-  if (for_csv) row.push_back(v.objective ? exact(*v.objective) : "");
-  for (size_t k = 0; k < ranking.objective.size(); ++k) {
+  for (size_t k = 0; k < criteria.size(); ++k) {
     const auto& x = v.criteria.size() > k ? v.criteria[k] : std::nullopt;
-    const double scale = study::display_unit(ranking.objective[k].metric).per_si;
-    const bool peak = study::infinite_is_unbounded(ranking.objective[k].metric);
-    if (!x) row.push_back(for_csv ? "" : "-");
-    else if (for_csv) row.push_back(exact(*x * scale));
-    else if (std::isinf(*x) && *x > 0) row.push_back(peak ? "unbounded" : "none");  // no critical speed in range
-    else row.push_back(number(*x * scale, "%.4g"));
+    if (!x) row.push_back("-");
+    else if (std::isinf(*x) && *x > 0) row.push_back(criteria[k].peak ? "unbounded" : "none");  // no critical speed in range
+    else row.push_back(number(*x * criteria[k].per_si, std::chars_format::general, 4));
   }
-  const auto lowest = r.ok() ? metric_value(r, "lowest_critical_speed") : std::nullopt;
-  row.push_back(!lowest ? (for_csv ? "" : "-") : for_csv ? exact(*lowest * kKmh) : number(*lowest * kKmh, "%.1f"));
+  const auto lowest = lowest_critical_speed(r);
+  row.push_back(!lowest ? "-" : number(*lowest * kKmh, std::chars_format::fixed, 1));
   const auto deflection = body_deflection(r);
-  row.push_back(!deflection ? (for_csv ? "" : "-") : for_csv ? exact(*deflection * 1000.0) : number(*deflection * 1000.0, "%.1f"));
-  if (rule.active()) {
+  row.push_back(!deflection ? "-" : number(*deflection * 1000.0, std::chars_format::fixed, 1));
+  if (deflections) {
     const auto ratio = r.ok() ? metric_value(r, "dynamic_deflection_ratio") : std::nullopt;
-    if (!ratio) row.push_back(for_csv ? "" : "-");
-    else if (for_csv) row.push_back(std::isinf(*ratio) ? "unbounded" : exact(*ratio));
-    else row.push_back(deflection_verdict(*ratio));
+    row.push_back(!ratio ? "-" : deflection_verdict(*ratio));
   }
   std::string list;
   // Each item appended to the list as it is (a joined temporary per item was an allocation).
   for (double p : periods(r)) {
     if (!list.empty()) list += ' ';
-    if (for_csv) append_exact(&list, p);
-    else list += number(p, "%.3f");
+    list += number(p, std::chars_format::fixed, 3);
   }
   row.push_back(list);
-  if (for_csv) {
-    std::string speeds, violations;
-    for (double s : critical_speeds_kmh(r)) {
-      if (!speeds.empty()) speeds += ' ';
-      append_exact(&speeds, s);
-    }
-    for (const auto& w : v.violations) {
-      if (!violations.empty()) violations += "; ";
-      violations += w;
-    }
-    row.push_back(speeds);
-    row.push_back(r.failure);
-    row.push_back(violations);
-  }
   return row;
 }
 
-std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& c, bool for_csv) {
-  std::vector<std::vector<std::string>> rows{comparison_head(c, for_csv)};
-  for (const RankedVariant& v : c.variants) rows.push_back(comparison_row(c.ranking, c.deflection_rule, v, for_csv));
+}  // namespace
+
+std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& c) {
+  std::vector<std::vector<std::string>> rows{comparison_head(c, false)};
+  const std::vector<CriterionColumn> criteria = criterion_columns(c.ranking);
+  for (const RankedVariant& v : c.variants) rows.push_back(table_row(criteria, c.deflection_rule.active(), v));
   return rows;
 }
 
@@ -402,17 +478,18 @@ void write_table(std::ostream& out, const Comparison& c) {
   size_t feasible = 0;
   for (const auto& v : c.variants) feasible += v.feasible;
   write_table_head(out, c, c.variants.size(), feasible);
+  const std::vector<CriterionColumn> criteria = criterion_columns(c.ranking);
   write_table_rows(out, [&](bool notes, const RowVisit& visit) {
     if (!notes) visit(comparison_head(c, false));
     for (const RankedVariant& v : c.variants)
       visit(notes ? std::vector<std::string>{table_note(c.ranking, v)}
-                  : report::comparison_row(c.ranking, c.deflection_rule, v, false));
+                  : table_row(criteria, c.deflection_rule.active(), v));
   });
 }
 
-void write_csv_row(std::ostream& out, const std::vector<std::string>& row, size_t from = 0) {
-  for (size_t i = from; i < row.size(); ++i) {
-    if (i > from) out << ',';
+void write_csv_row(std::ostream& out, const std::vector<std::string>& row) {
+  for (size_t i = 0; i < row.size(); ++i) {
+    if (i > 0) out << ',';
     report::write_csv_field(out, row[i]);
   }
 }
@@ -422,14 +499,18 @@ void write_csv_row(std::ostream& out, const std::vector<std::string>& row, size_
 void write_comparison(std::ostream& out, const Comparison& comparison, OutputFormat format) {
   switch (format) {
     case OutputFormat::table: write_table(out, comparison); break;
-    case OutputFormat::csv:
+    case OutputFormat::csv: {
       write_csv_row(out, comparison_head(comparison, true));
       out << "\n";
+      const std::vector<CriterionColumn> criteria = criterion_columns(comparison.ranking);
+      std::string row;
       for (const RankedVariant& v : comparison.variants) {
-        write_csv_row(out, report::comparison_row(comparison.ranking, comparison.deflection_rule, v, true));
-        out << "\n";
+        row = std::to_string(v.rank) + ',';
+        append_csv_row(&row, criteria, comparison.deflection_rule.active(), v);
+        out << row << "\n";
       }
       break;
+    }
     case OutputFormat::json: write_json(out, comparison); break;
     default:
       throw std::invalid_argument(report::unwritten_format("write_comparison", "table, csv or json", format) +
@@ -439,11 +520,13 @@ void write_comparison(std::ostream& out, const Comparison& comparison, OutputFor
 
 namespace {
 
-// Cells kept as one text, each as its length, ':' and its bytes (a name may hold any character).
-std::string packed(const std::vector<std::string>& cells, size_t from) {
-  std::string text;
-  for (size_t i = from; i < cells.size(); ++i) text += std::to_string(cells[i].size()) + ":" + cells[i];
-  return text;
+// A cell appended to cells kept as one text: its length, ':' and its bytes (a name may hold any
+// character).
+void append_packed(std::string* text, std::string_view cell) {
+  char length[24];
+  text->append(length, std::to_chars(length, length + sizeof length, cell.size()).ptr);
+  *text += ':';
+  text->append(cell);
 }
 
 std::vector<std::string> unpacked(std::string_view text) {
@@ -458,24 +541,26 @@ std::vector<std::string> unpacked(std::string_view text) {
 }
 
 // A variant's JSON object as it stands in the comparison's "variants" array, with its rank
-// left out: "<where the rank goes>:<text>".
+// left out: "<where the rank goes>:<text>", the place zero-padded to kRankPlaceDigits so that
+// the text is written after it in its place, not copied behind it.
+constexpr size_t kRankPlaceDigits = 9;
+
 std::string json_object(const Comparison& head, const RankedVariant& v) {
-  std::ostringstream document;
+  std::string kept(kRankPlaceDigits, '0');
+  kept += ":    ";  // the object's indentation as an element of "variants", two levels deep
+  const size_t object = kept.size() - 4;
   {
-    JsonWriter j(document);
-    j.begin_object().key("variants").begin_array();
+    JsonWriter j(&kept, 2, 2);
     const RankingMembers ranked{head, v};
     write_result(j, v.result, &ranked);
-    j.end_array().end_object();
   }
-  const std::string text = document.str();
-  const std::string open = "{\n  \"variants\": [\n", close = "\n  ]\n}\n";
-  std::string object = text.substr(open.size(), text.size() - open.size() - close.size());
   // One member a line: the rank member is the only line of the object that reads so.
-  const std::string rank = "\n      \"rank\": 0";
-  const size_t at = object.find(rank) + rank.size() - 1;
-  object.erase(at, 1);
-  return std::to_string(at) + ":" + object;
+  const std::string_view rank = "\n      \"rank\": 0";
+  const size_t at = kept.rfind(rank) + rank.size() - 1;
+  kept.erase(at, 1);
+  const std::string place = std::to_string(at - object);
+  kept.replace(kRankPlaceDigits - place.size(), place.size(), place);
+  return kept;
 }
 
 void write_streamed_json(std::ostream& out, const Comparison& head, const study::StreamedRanking& ranked) {
@@ -506,14 +591,19 @@ study::StreamedRanking::Render report::streamed_row(const Ranking& ranking, cons
                                                    OutputFormat format) {
   switch (format) {
     case OutputFormat::table:
-      return [ranking, rule](const RankedVariant& v) {
-        return packed(comparison_row(ranking, rule, v, false), 1) + packed({table_note(ranking, v)}, 0);
+      return [ranking, criteria = criterion_columns(ranking), deflections = rule.active()](const RankedVariant& v) {
+        const std::vector<std::string> cells = table_row(criteria, deflections, v);
+        std::string text;
+        for (size_t i = 1; i < cells.size(); ++i) append_packed(&text, cells[i]);  // the rank is not known yet
+        append_packed(&text, table_note(ranking, v));
+        return text;
       };
     case OutputFormat::csv:
-      return [ranking, rule](const RankedVariant& v) {
-        std::ostringstream row;
-        write_csv_row(row, comparison_row(ranking, rule, v, true), 1);
-        return row.str();
+      return [criteria = criterion_columns(ranking), deflections = rule.active()](const RankedVariant& v) {
+        std::string row;
+        row.reserve(384);  // a row of the benchmark study is about 300 bytes: one allocation
+        append_csv_row(&row, criteria, deflections, v);
+        return row;
       };
     case OutputFormat::json:
       return [head = std::make_shared<Comparison>(Comparison{"", "", ranking, rule, {}, {}})](const RankedVariant& v) {
@@ -584,10 +674,12 @@ void write_shard_document(std::ostream& out, const Study& study, const Evaluatio
 }  // namespace
 
 std::string report::shard_result_json(const VariantResult& r) {
-  std::ostringstream text;
-  JsonWriter j(text, kShardIndent, kShardResultDepth);
-  write_result(j, r, nullptr);  // its outermost end flushes
-  return text.str();
+  std::string text;
+  {
+    JsonWriter j(&text, kShardIndent, kShardResultDepth);
+    write_result(j, r, nullptr);
+  }
+  return text;
 }
 
 void report::write_streamed_shard(std::ostream& out, const Study& study, const EvaluationOptions& options,

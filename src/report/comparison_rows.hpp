@@ -1,4 +1,4 @@
-// The ranked comparison as rows of text, shared by the table, CSV and the Markdown/HTML report.
+// The ranked comparison as rows of text for people, shared by the table and the Markdown/HTML report.
 #pragma once
 
 #include <string>
@@ -8,12 +8,10 @@
 
 namespace railmodal::report {
 
-/// Header then one row per variant in rank order: rank, variant, feasible, each criterion,
-/// lowest critical speed, static deflection, periods (for_csv: exact numbers and the extra
-/// columns objective, critical speeds, failure and violations).
-std::vector<std::vector<std::string>> comparison_rows(const Comparison& comparison, bool for_csv);
-/// One variant's row of comparison_rows (its rank is v.rank).
-std::vector<std::string> comparison_row(const Ranking& ranking, const DeflectionRule& rule, const RankedVariant& v,
-                                        bool for_csv);
+/// The table's header then one row per variant in rank order, for people: rank, variant,
+/// feasible, each criterion, lowest critical speed, static deflection, the largest dynamic
+/// deflection (with a deflection rule), periods. (The CSV's rows, for programs, are written
+/// straight into its text: comparison_report.cpp.)
+std::vector<std::vector<std::string>> comparison_rows(const Comparison& comparison);
 
 }  // namespace railmodal::report

@@ -29,12 +29,28 @@ size_t utf8_length(std::string_view text, size_t i) {
   return n;
 }
 
+// A character a JSON string holds as it is and nlohmann::json wrote as it is: printable ASCII
+// but the quote and the backslash.
+bool is_plain(char ch) {
+  const unsigned char c = static_cast<unsigned char>(ch);
+  return c >= 0x20 && c < 0x80 && c != '"' && c != '\\';
+}
+
 }  // namespace
 
 void append_json_string(std::string& out, std::string_view text) {
   static const char kHex[] = "0123456789abcdef";
   out += '"';
   for (size_t i = 0; i < text.size();) {
+    // A run of printable ASCII other than the quote and the backslash (a key, most names) is
+    // appended as it is, in one go rather than a character at a time.
+    size_t plain = i;
+    while (plain < text.size() && is_plain(text[plain])) ++plain;
+    if (plain > i) {
+      out.append(text.data() + i, plain - i);
+      i = plain;
+      continue;
+    }
     const unsigned char c = static_cast<unsigned char>(text[i]);
     switch (c) {
       case '"': out += "\\\""; break;
@@ -75,7 +91,8 @@ std::vector<size_t> member_order(const std::vector<std::string>& names) {
 }
 
 void JsonWriter::flush() {
-  out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+  if (!out_) return;
+  out_->write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
   buffer_.clear();
 }
 
@@ -98,8 +115,25 @@ void JsonWriter::before_value() {
 
 JsonWriter& JsonWriter::key(std::string_view name) {
   flush_if_full();
-  if (open_.back().second) buffer_ += ',';
+  const bool comma = open_.back().second;
   open_.back().second = true;
+  // A plain name (every key we write, and the line it starts, is short) in one append rather
+  // than a character at a time: a study's JSON writes a hundred keys a variant.
+  const size_t spaces = indent_ < 0 ? 0 : static_cast<size_t>(indent_) * (depth_ + open_.size());
+  char line[128];
+  if (spaces + name.size() + 6 <= sizeof line && std::all_of(name.begin(), name.end(), is_plain)) {
+    char* p = line;
+    if (comma) *p++ = ',';
+    if (indent_ >= 0) *p++ = '\n', p = std::fill_n(p, spaces, ' ');
+    *p++ = '"';
+    p = std::copy(name.begin(), name.end(), p);
+    *p++ = '"', *p++ = ':';
+    if (indent_ >= 0) *p++ = ' ';
+    buffer_.append(line, p);
+    after_key_ = true;
+    return *this;
+  }
+  if (comma) buffer_ += ',';
   new_line();
   append_json_string(buffer_, name);
   buffer_ += indent_ < 0 ? ":" : ": ";

@@ -32,11 +32,16 @@ class JsonWriter {
   /// `indent` spaces a level, as nlohmann::json::dump's argument (the shard files have 1); −1:
   /// compact, on one line with no spaces (dump()), for a value embedded in a line of text, so
   /// the outermost end writes no line break.
-  explicit JsonWriter(std::ostream& out, int indent = 2) : out_(out), indent_(indent) {}
+  explicit JsonWriter(std::ostream& out, int indent = 2) : out_(&out), indent_(indent), buffer_(own_) {}
   /// A value laid out as it stands `depth` levels deep in a document of `indent`, for a writer
   /// of that document to insert later with raw() (a shard's result kept in a temporary file
   /// until the results can be written in order); its outermost end writes no line break.
-  JsonWriter(std::ostream& out, int indent, size_t depth) : out_(out), indent_(indent), depth_(depth) {}
+  JsonWriter(std::ostream& out, int indent, size_t depth)
+      : out_(&out), indent_(indent), depth_(depth), buffer_(own_) {}
+  /// As JsonWriter(out, indent, depth), appending to `*text` as it goes rather than to a stream:
+  /// a text kept per variant is made without a stream and a copy.
+  JsonWriter(std::string* text, int indent, size_t depth)
+      : out_(nullptr), indent_(indent), depth_(depth), buffer_(*text) {}
   JsonWriter(const JsonWriter&) = delete;
   JsonWriter& operator=(const JsonWriter&) = delete;
   ~JsonWriter() { flush(); }
@@ -78,7 +83,8 @@ class JsonWriter {
     return value(x);
   }
 
-  /// Writes the buffer to the stream (the outermost end_object or end_array does it too).
+  /// Writes the buffer to the stream (the outermost end_object or end_array does it too);
+  /// nothing for a writer into a text.
   void flush();
 
  private:
@@ -90,15 +96,16 @@ class JsonWriter {
   void before_value();
   void new_line();
   void flush_if_full() {
-    if (buffer_.size() > kFlushAt) flush();
+    if (out_ && buffer_.size() > kFlushAt) flush();
   }
 
   static constexpr size_t kFlushAt = 1 << 16;
 
-  std::ostream& out_;
+  std::ostream* out_;  // null: the text is the buffer
   const int indent_;
   const size_t depth_ = 0;  // the levels around the outermost value that another writer writes
-  std::string buffer_;
+  std::string own_;         // the buffer of a writer to a stream
+  std::string& buffer_;
   // Per open container: its bracket and whether it has an element yet.
   std::vector<std::pair<char, bool>> open_;
   bool after_key_ = false;
