@@ -346,13 +346,15 @@ void describe_failure(const Vehicle& vehicle, DofSet dofs, const std::string& wh
     }
 }
 
-// Gives the workspace its system back when the evaluation ends (its storage serves the next
-// variant), however it ends.
+// Gives the workspace its system and modes back when the evaluation ends (their storage
+// serves the next variant), however it ends.
 struct HandBack {
-  LinearSystem* from;
+  CriticalSpeedStudy* from;
   study::Workspace* to;
   ~HandBack() {
-    if (to) to->system = std::move(*from);
+    if (!to) return;
+    to->system = std::move(from->system);
+    to->modes = std::move(from->modes);
   }
 };
 
@@ -385,7 +387,8 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
     // One assembly and one modal solve serve everything: the study's own, which assembles the
     // lateral stiffness of the metacentric height with its system.
     CriticalSpeedStudy study;
-    const HandBack hand_back{&study.system, workspace};
+    if (workspace) study.modes = std::move(workspace->modes);  // solved into (solve::solve_modes_into)
+    const HandBack hand_back{&study, workspace};
     LinearSystem own_lateral;
     LinearSystem& lateral = workspace ? workspace->lateral : own_lateral;
     bool vehicle_moved = false;  // into study.system (owned only, once assembled)
