@@ -51,6 +51,7 @@ void static_deflections(const Vehicle& vehicle, const LinearSystem& any, Variant
   lu.compute(s.stiffness - s.gravity_stiffness);
   if (!lu.isInvertible()) return;  // a free vertical direction: no static position to report
   const Eigen::VectorXd q = lu.solve(s.mass * up * vehicle.gravity);
+  r->static_deflections.reserve(r->static_deflections.size() + static_cast<size_t>(up.sum()));  // a body a bounce DOF
   for (int i = 0; i < s.size(); ++i)
     if (s.dofs[i].motion == Motion::bounce) r->static_deflections.push_back({vehicle.bodies[s.dofs[i].body].name, q(i)});
 }
@@ -62,7 +63,7 @@ void metacentric_height(const Vehicle& vehicle, const LinearSystem* lateral, Var
     if (b.name == "body" && std::find(b.held.begin(), b.held.end(), Motion::roll) == b.held.end()) {
       try {
         if (lateral) {
-          LateralStability out;
+          thread_local LateralStability out;  // this thread's: its strings serve every variant
           solve::condense_roll(vehicle, *lateral, "body", &out);
           r->metacentric_height = out.metacentric_height;
         } else {
@@ -316,6 +317,7 @@ void summarise_evaluation(VariantResult* r) {
   s.analysis = "design variant";
   s.method = "critical-speed study of the variant in its scene, then its metrics";
   constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+  s.checks.reserve(s.checks.size() + 6);  // the checks below: one allocation
   s.checks.push_back({"evaluated (0: failed)", r->ok() ? 1.0 : 0.0, kNoLimit, r->ok()});
   s.checks.push_back({"modes", static_cast<double>(r->modes.size()), kNoLimit, true});
   s.checks.push_back({"critical speeds", static_cast<double>(r->critical_speeds.size()), kNoLimit, true});
