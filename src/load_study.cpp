@@ -105,7 +105,11 @@ void detail::read_variant_into(const Study& study, int index, StudyVariant* vari
     return;
   }
   if (!study.plan) throw std::invalid_argument("read_variant: variant '" + study.variants[index].name + "' was never read");
-  input::read_variant_into(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), variant);
+  // This thread's spec, its strings and lists kept from its previous variant: a worker reads one
+  // variant after another (the spec is fully written each time).
+  thread_local study::VariantSpec spec;
+  study.plan->variants.at_into(static_cast<size_t>(index), &spec);
+  input::read_variant_into(study.plan->file, spec, variant);
 }
 
 std::string study::parameter_label(const Study& study, const std::string& key) {

@@ -471,10 +471,10 @@ StudyVariant read_variant(const StudyFile& file, const study::VariantSpec& spec,
   return variant;
 }
 
-void read_variant_into(const StudyFile& file, study::VariantSpec&& spec, StudyVariant* variant) {
+void read_variant_into(const StudyFile& file, const study::VariantSpec& spec, StudyVariant* variant) {
   read_into(file, spec, nullptr, variant);
-  variant->name = std::move(spec.name);
-  variant->parameters = std::move(spec.parameters);
+  variant->name = spec.name;  // copied into the variant's own storage (a worker's, reused)
+  variant->parameters = spec.parameters;
   variant->read = true;
 }
 

@@ -50,9 +50,9 @@ StudyVariant read_variant(const StudyFile& file, const study::VariantSpec& spec,
 
 /// read_variant(file, spec, nullptr) written into *variant, whose vehicle's storage is reused
 /// where it has the sizes (a study's worker reads each variant into the vehicle of the one
-/// before), and `spec` given up: its name and parameters move into the variant. Where it
+/// before), its name and parameters copied into the variant's own (reused as well). Where it
 /// throws, *variant is left valid but unspecified.
-void read_variant_into(const StudyFile& file, study::VariantSpec&& spec, StudyVariant* variant);
+void read_variant_into(const StudyFile& file, const study::VariantSpec& spec, StudyVariant* variant);
 
 /// A number written as the study writes it: "40 mm", 40 or 40.0 (a swept range's values, a
 /// sample's draws).

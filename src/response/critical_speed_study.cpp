@@ -14,6 +14,7 @@
 #include "response/critical_speed_study.hpp"
 #include "response/curve_peaks.hpp"
 #include "shortest_text.hpp"
+#include "solve/modal_solver.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -103,7 +104,9 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
 void solve_stable_modes(const Scene& scene, CriticalSpeedStudy* study) {
   if (study->system.size() == 0) throw std::invalid_argument("no free degrees of freedom in the chosen set");
   check_scene_fits(scene, study->system);
-  study->modes = solve_modes(study->system);
+  // Into the modes the study holds: a study's worker hands it the previous variant's, whose
+  // storage serves again (evaluate_variant.cpp); a fresh study's are empty.
+  solve::solve_modes_into(study->system, ModalOptions{}, &study->modes);
   for (const Mode& m : study->modes.modes)
     if (m.kind == ModeKind::unstable)
       throw NumericalError("mode " + std::to_string(m.index) + " (" + m.name + ") is unstable (divergence rate " +

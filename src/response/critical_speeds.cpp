@@ -312,10 +312,12 @@ std::vector<CriticalSpeed> response::find_critical_speeds_in(const LinearSystem&
                                   std::to_string(system.size()) + " DOFs)");
   if (summary) *summary = AnalysisSummary{};
   StageClock clock(summary);  // no clock, no strings without a summary
-  const auto groups = response::eigenspaces(modes);
+  // This thread's eigenspaces and scratch: every call's lists and resonances reuse their storage.
+  thread_local std::vector<std::vector<const Mode*>> groups;
+  response::eigenspaces_into(modes, &groups);
   const response::FrictionStages stages = response::friction_stages(system);  // found once, not per resonance
   int in_range = 0;
-  thread_local ResonanceScratch scratch;  // this thread's; every call's resonances reuse its storage
+  thread_local ResonanceScratch scratch;
   std::vector<CriticalSpeed> found;
   size_t most = 0;  // every harmonic of every source meeting every eigenspace
   for (const ExcitationSource* source : sources) most += static_cast<size_t>(source->harmonic_count()) * groups.size();

@@ -64,15 +64,24 @@ inline bool moves(const Eigen::RowVectorXd& row, const Eigen::VectorXd& shape) {
 /// Oscillatory modes grouped by frequency: a repeated frequency (relative gap below 1e-8, as
 /// Mode::repeated) is one eigenspace, whose basis the solver chose arbitrarily. Modes come in
 /// ascending order, so each group is a run; the critical speeds name a group by its first mode.
-inline std::vector<std::vector<const Mode*>> eigenspaces(const ModalResult& modes) {
-  std::vector<std::vector<const Mode*>> groups;
+/// Written into `groups`, whose lists serve again (a study's worker finds them per variant).
+inline void eigenspaces_into(const ModalResult& modes, std::vector<std::vector<const Mode*>>* groups) {
+  size_t count = 0;
   for (const Mode& m : modes.modes) {
     if (m.kind != ModeKind::oscillatory) continue;
-    if (!groups.empty() && std::abs(m.eigenvalue - groups.back().front()->eigenvalue) <= 1e-8 * m.eigenvalue)
-      groups.back().push_back(&m);
-    else
-      groups.push_back({&m});
+    if (count > 0 && std::abs(m.eigenvalue - (*groups)[count - 1].front()->eigenvalue) <= 1e-8 * m.eigenvalue) {
+      (*groups)[count - 1].push_back(&m);
+      continue;
+    }
+    if (count == groups->size()) groups->emplace_back();
+    (*groups)[count++].assign(1, &m);
   }
+  groups->resize(count);
+}
+
+inline std::vector<std::vector<const Mode*>> eigenspaces(const ModalResult& modes) {
+  std::vector<std::vector<const Mode*>> groups;
+  eigenspaces_into(modes, &groups);
   return groups;
 }
 

@@ -5,7 +5,9 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "model/analysis_limits.hpp"
 #include "railmodal/errors.hpp"
@@ -14,6 +16,7 @@
 #include "shortest_text.hpp"
 #include "solve/eigenpairs.hpp"
 #include "solve/low_modes.hpp"
+#include "solve/modal_solver.hpp"
 #include "solve/mode_naming.hpp"
 #include "summary/stage_clock.hpp"
 
@@ -103,8 +106,10 @@ namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925;
 
-// Names a mode from its shape and whether it is repeated.
-using Describe = std::function<solve::ModeDescription(const Eigen::VectorXd&, bool)>;
+// Names a mode from its shape and whether it is repeated: writes its name and centre of
+// oscillation (ModeNamer::describe).
+using Describe =
+    std::function<void(const Eigen::VectorXd&, bool, std::string*, std::optional<CentreOfOscillation>*)>;
 
 void check_options(const ModalOptions& options) { require_valid(options, "ModalOptions: "); }
 
@@ -135,36 +140,53 @@ double relative_error_bound(const std::vector<Mode>& modes) {
   return worst;
 }
 
-// The summary of a result make_result() returned: its method, checks and stage times.
-void summarise(ModalResult* result, const ModalOptions& options, std::vector<StageTiming> stages) {
+// The summary of a result make_result() wrote: its method, checks and stage times. The checks
+// (the back-end's, then these) are written into `kept`, the checks of a result kept from an
+// earlier solve (solve_modes_into), so that their names' storage serves again.
+void summarise(ModalResult* result, const ModalOptions& options, std::vector<StageTiming> stages,
+               std::vector<Check> kept = {}) {
   SolverSummary& s = result->solver;
   s.analysis = "undamped modes";
   s.method = s.solver == ModalSolver::dense
                  ? "dense: static condensation of massless DOFs, Cholesky of M, symmetric QR (Eigen)"
                  : "ARPACK shift-invert Lanczos on (K − σM)⁻¹M, " + s.factorisation + " of K − σM";
-  s.checks.reserve(s.checks.size() + 4);  // the four below: one allocation
-  s.checks.push_back({"max relative residual", result->max_residual, options.max_residual, true});
-  s.checks.push_back({"M-orthonormality error max|ΦᵀMΦ − I|", result->orthonormality_error,
-                      std::numeric_limits<double>::infinity(), true});
+  const size_t given = s.checks.size();
+  kept.resize(given + (s.count_checked ? 4 : 3));  // the back-end's and those below: one allocation at most
+  for (size_t i = 0; i < given; ++i) kept[i] = s.checks[i];
+  size_t next = given;
+  const auto check = [&](const char* name, double value, double limit, bool passed) {
+    Check& c = kept[next++];
+    c.name = name;
+    c.value = value;
+    c.limit = limit;
+    c.passed = passed;
+  };
+  check("max relative residual", result->max_residual, options.max_residual, true);
+  check("M-orthonormality error max|ΦᵀMΦ − I|", result->orthonormality_error, std::numeric_limits<double>::infinity(),
+        true);
   // Rounding, not the solver's convergence: the residual cannot see it (issue 18 item 9).
   const double bound = relative_error_bound(result->modes);
-  s.checks.push_back(
-      {"max relative rounding error bound of λ", bound, kEigenvalueAccuracy, bound <= kEigenvalueAccuracy});
+  check("max relative rounding error bound of λ", bound, kEigenvalueAccuracy, bound <= kEigenvalueAccuracy);
   if (s.count_checked) {
     const double found = static_cast<double>(result->modes.size());
-    s.checks.push_back({"eigenvalues below the last mode by the inertia of K − μM", found, found, true});
+    check("eigenvalues below the last mode by the inertia of K − μM", found, found, true);
   }
+  s.checks = std::move(kept);
   s.stages = std::move(stages);
 }
 
-// Classifies, names and checks the first `keep` eigenpairs. Matrix: dense or sparse.
+// Classifies, names and checks the first `keep` eigenpairs into `into` (all but its notes).
+// Every member is written: a result kept from another solve (solve_modes_into) ends as a
+// fresh one would, its modes' shapes and names in the storage it had. Matrix: dense or sparse.
 template <class Matrix>
-ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Matrix& K, const solve::Eigenpairs& pairs,
-                        int keep, const ModalOptions& options, const Describe& describe) {
-  ModalResult result;
+void make_result(const std::vector<Dof>& dofs, const Matrix& M, const Matrix& K, const solve::Eigenpairs& pairs,
+                 int keep, const ModalOptions& options, const Describe& describe, ModalResult* into) {
+  ModalResult& result = *into;
   result.dofs = dofs;
   result.solver = pairs.summary;
+  result.condensed.clear();
   for (int s : pairs.massless) result.condensed.push_back(dofs[s].label);
+  result.max_residual = 0.0;
   const Eigen::VectorXd lambda = pairs.values.head(keep);
   const Eigen::MatrixXd phi = pairs.vectors.leftCols(keep);
   const double zero = options.zero_tolerance * pairs.scale;
@@ -172,15 +194,16 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
   const double norm_K = K.norm(), norm_M = M.norm();
   const Eigen::MatrixXd K_phi = K * phi, M_phi = M * phi;
   std::vector<bool> repeated(keep, false);
-  result.modes.reserve(keep);
+  result.modes.resize(keep);
   for (int k = 0; k + 1 < keep; ++k)
     if (solve::same_eigenvalue(lambda(k), lambda(k + 1), zero)) repeated[k] = repeated[k + 1] = true;
   for (int k = 0; k < keep; ++k) {
-    Mode mode;
+    Mode& mode = result.modes[k];
     mode.index = k + 1;
     mode.eigenvalue = lambda(k);
     mode.eigenvalue_error = pairs.errors.size() > k ? pairs.errors(k) : 0.0;
     mode.shape = phi.col(k);
+    mode.omega_rad_s = mode.frequency_hz = mode.period_s = mode.divergence_rate = 0.0;  // as a new Mode's
     if (rigid[k]) {
       mode.kind = ModeKind::rigid_body;
     } else if (lambda(k) < 0.0) {
@@ -197,12 +220,9 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
     mode.residual = denom > 0.0 ? (K_phi.col(k) - lambda(k) * M_phi.col(k)).norm() / denom : 0.0;
     result.max_residual = std::max(result.max_residual, mode.residual);
     mode.repeated = repeated[k];
-    auto description = describe(mode.shape, mode.repeated);
-    mode.name = std::move(description.name);
-    mode.centre = std::move(description.centre);
+    describe(mode.shape, mode.repeated, &mode.name, &mode.centre);
     if (mode.kind == ModeKind::unstable) mode.name += " (unstable)";
     if (mode.kind == ModeKind::rigid_body) mode.name += " (rigid-body)";
-    result.modes.push_back(std::move(mode));
   }
   // Orthonormality over the kept coordinates (the condensed ones carry no mass).
   const Eigen::MatrixXd G = phi.transpose() * M_phi;
@@ -210,7 +230,6 @@ ModalResult make_result(const std::vector<Dof>& dofs, const Matrix& M, const Mat
   if (!(result.max_residual <= options.max_residual))
     throw NumericalError("eigen-solution residual " + shortest_text(result.max_residual, 3) + " exceeds the limit " +
                          shortest_text(options.max_residual, 3));
-  return result;
 }
 
 std::vector<std::string> labels_of(const std::vector<Dof>& dofs) {
@@ -236,6 +255,12 @@ bool all_finite(const Eigen::SparseMatrix<double>& A) {
 }  // namespace
 
 ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options) {
+  ModalResult result;
+  solve::solve_modes_into(system, options, &result);
+  return result;
+}
+
+void solve::solve_modes_into(const LinearSystem& system, const ModalOptions& options, ModalResult* into) {
   check_options(options);
   const int n = system.size();
   if (n == 0) throw std::invalid_argument("the system has no degrees of freedom");
@@ -244,26 +269,26 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
   if (!M.allFinite() || !K.allFinite())
     throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
   solve::ModeNamer namer(system);  // what the names need of the system, once for all modes
-  const Describe describe = [&namer](const Eigen::VectorXd& shape, bool repeated) {
-    return namer.describe(shape, repeated);
+  const Describe describe = [&namer](const Eigen::VectorXd& shape, bool repeated, std::string* name,
+                                     std::optional<CentreOfOscillation>* centre) {
+    namer.describe(shape, repeated, name, centre);
   };
+  std::vector<Check> kept_checks = std::move(into->solver.checks);  // rewritten by summarise
   AnalysisSummary timing;
   StageClock clock(&timing);
-  ModalResult result;
   if (choose_solver(options.solver, n, options.mode_count) == ModalSolver::dense) {
     const solve::Eigenpairs pairs = solve::dense_eigenpairs(M, K, system.dofs);
     clock.lap("eigensolve");
-    result = make_result(system.dofs, M, K, pairs, dense_keep(pairs, options), options, describe);
+    make_result(system.dofs, M, K, pairs, dense_keep(pairs, options), options, describe, into);
   } else {
     const Eigen::SparseMatrix<double> Ms = M.sparseView(), Ks = K.sparseView();
     const solve::Eigenpairs pairs = solve::arpack_eigenpairs(Ms, Ks, labels_of(system.dofs), options.mode_count, options);
     clock.lap("eigensolve");
-    result = make_result(system.dofs, Ms, Ks, pairs, static_cast<int>(pairs.values.size()), options, describe);
+    make_result(system.dofs, Ms, Ks, pairs, static_cast<int>(pairs.values.size()), options, describe, into);
   }
   clock.lap("classify and check");
-  summarise(&result, options, std::move(timing.stages));
-  result.notes = model::undamped_mode_notes(system);
-  return result;
+  summarise(into, options, std::move(timing.stages), std::move(kept_checks));
+  into->notes = model::undamped_mode_notes(system);
 }
 
 ModalResult solve_modes(const SparseSystem& system, const ModalOptions& options) {
@@ -286,16 +311,19 @@ ModalResult solve_modes(const SparseSystem& system, const ModalOptions& options)
   if (!all_finite(system.mass) || !all_finite(system.stiffness))
     throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
   // Without bodies a mode is named after the DOF with the most kinetic energy φᵢ (Mφ)ᵢ.
-  const Describe describe = [&system](const Eigen::VectorXd& shape, bool) {
+  const Describe describe = [&system](const Eigen::VectorXd& shape, bool, std::string* name,
+                                      std::optional<CentreOfOscillation>* centre) {
     Eigen::Index lead = 0;
     shape.cwiseProduct(system.mass * shape).maxCoeff(&lead);
-    return solve::ModeDescription{system.dofs[lead].label, std::nullopt};
+    *name = system.dofs[lead].label;
+    centre->reset();
   };
   const solve::Eigenpairs pairs =
       solve::arpack_eigenpairs(system.mass, system.stiffness, labels_of(system.dofs), options.mode_count, options);
   clock.lap("eigensolve");
-  ModalResult result = make_result(system.dofs, system.mass, system.stiffness, pairs,
-                                   static_cast<int>(pairs.values.size()), options, describe);
+  ModalResult result;
+  make_result(system.dofs, system.mass, system.stiffness, pairs, static_cast<int>(pairs.values.size()), options,
+              describe, &result);
   clock.lap("classify and check");
   summarise(&result, options, std::move(timing.stages));
   return result;

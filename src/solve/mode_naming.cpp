@@ -75,13 +75,11 @@ std::optional<CentreOfOscillation> centre_of(const Body& body, const BodyVector&
 
 // Matrices read from files have no bodies: the DOF with the most kinetic energy,
 // φᵢ (Mφ)ᵢ, names the mode.
-ModeDescription describe_by_dof(const LinearSystem& system, const Eigen::VectorXd& shape) {
+void describe_by_dof(const LinearSystem& system, const Eigen::VectorXd& shape, std::string* name) {
   const Eigen::VectorXd energy = shape.cwiseProduct(system.mass * shape);
   Eigen::Index lead = 0;
   energy.maxCoeff(&lead);
-  ModeDescription d;
-  d.name = system.dofs[lead].label;
-  return d;
+  *name = system.dofs[lead].label;
 }
 
 // How the leading body moves: its word, the motion whose phase twins compare, and the
@@ -193,10 +191,12 @@ ModeNamer::ModeNamer(const LinearSystem& system) : system_(system) {
   }
 }
 
-ModeDescription ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated) const {
+void ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated, std::string* name,
+                         std::optional<CentreOfOscillation>* centre) const {
   const LinearSystem& system = system_;
   const auto& bodies = system.vehicle.bodies;
-  if (bodies.empty()) return describe_by_dof(system, shape);
+  centre->reset();
+  if (bodies.empty()) return describe_by_dof(system, shape, name);
   // This thread's lists, kept between modes: every mode of every variant of a study is named.
   thread_local std::vector<BodyVector> motion;
   thread_local std::vector<double> bending;
@@ -221,18 +221,17 @@ ModeDescription ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated)
   const Body& body = bodies[lead];
   const BodyFacts& facts = bodies_[lead];
   const LeadingMotion leading = leading_motion(facts, body, e);
-  ModeDescription d;
   // A repeated mode's shape is one arbitrary member of its subspace, and so is its centre of
   // oscillation (bogies pitch: either bogie's pivot): only a mode of its own has one.
-  if (!repeated) d.centre = leading.centre;
+  if (!repeated) *centre = leading.centre;
 
   const std::string& family = facts.family;
   const bool has_twin = facts.has_twin;
   // A repeated mode of twin bodies is any combination of the twins' motions (the solver's
   // basis is arbitrary, its members unequal mixtures): only the shared subspace has a name.
   if (repeated && has_twin) {
-    d.name = family + "s " + leading.word + " (repeated)";
-    return d;
+    name->assign(family).append("s ").append(leading.word).append(" (repeated)");
+    return;
   }
   // Twin bodies (bogie1/bogie2, wheelset1…wheelset4) sharing the energy: name the family and
   // their phase, "in phase" when every twin that shares it moves with the leading body. With
@@ -245,12 +244,11 @@ ModeDescription ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated)
     in_phase = in_phase && e.amplitude(leading.key) * energy[b].amplitude(leading.key) >= 0.0;
   }
   if (shared) {
-    d.name = family + "s " + leading.word + ", " + (in_phase ? "in phase" : "antiphase");
-    return d;
+    name->assign(family).append("s ").append(leading.word).append(", ").append(in_phase ? "in phase" : "antiphase");
+    return;
   }
-  d.name.reserve(body.name.size() + 1 + std::strlen(leading.word));  // one allocation at most
-  d.name.append(body.name).append(1, ' ').append(leading.word);
-  return d;
+  name->reserve(body.name.size() + 1 + std::strlen(leading.word));  // one allocation at most, none in kept storage
+  name->assign(body.name).append(1, ' ').append(leading.word);
 }
 
 std::string family_of(const std::string& name) {

@@ -12,18 +12,15 @@
 
 namespace railmodal::solve {
 
-struct ModeDescription {
-  std::string name;
-  std::optional<CentreOfOscillation> centre;
-};
-
 /// Names the modes of one system. What the names need of the system alone (each body's family
 /// and whether it has a twin, its CG's point map, which of its motions are DOFs) is worked out
 /// once, not per mode and body (a study names six modes of each of its 10⁵ variants). The
 /// system must outlive the namer.
 ///
 /// describe() describes a mode shape over system.dofs (all entries, condensed ones
-/// recovered); `repeated`: the mode shares its eigenvalue with another (Mode::repeated).
+/// recovered); `repeated`: the mode shares its eigenvalue with another (Mode::repeated). It
+/// writes the name into `name` (its storage reused: a study's worker names its modes into the
+/// previous variant's) and sets or clears `centre`.
 ///
 /// The kinetic energy of each body is split at its centre of gravity into translation
 /// (lateral, vertical, longitudinal) and rotation (roll, pitch, yaw), terms that cannot be
@@ -46,7 +43,8 @@ struct ModeDescription {
 class ModeNamer {
  public:
   explicit ModeNamer(const LinearSystem& system);
-  ModeDescription describe(const Eigen::VectorXd& shape, bool repeated) const;
+  void describe(const Eigen::VectorXd& shape, bool repeated, std::string* name,
+                std::optional<CentreOfOscillation>* centre) const;
 
   /// What a body's part in a name depends on, of the system alone.
   struct BodyFacts {

@@ -52,6 +52,7 @@ void static_deflections(const Vehicle& vehicle, const LinearSystem& any, Variant
   lu.compute(s.stiffness - s.gravity_stiffness);
   if (!lu.isInvertible()) return;  // a free vertical direction: no static position to report
   const Eigen::VectorXd q = lu.solve(s.mass * up * vehicle.gravity);
+  r->static_deflections.reserve(r->static_deflections.size() + static_cast<size_t>(up.sum()));  // a body a bounce DOF
   for (int i = 0; i < s.size(); ++i)
     if (s.dofs[i].motion == Motion::bounce) r->static_deflections.push_back({vehicle.bodies[s.dofs[i].body].name, q(i)});
 }
@@ -63,7 +64,7 @@ void metacentric_height(const Vehicle& vehicle, const LinearSystem* lateral, Var
     if (b.name == "body" && std::find(b.held.begin(), b.held.end(), Motion::roll) == b.held.end()) {
       try {
         if (lateral) {
-          LateralStability out;
+          thread_local LateralStability out;  // this thread's: its strings serve every variant
           solve::condense_roll(vehicle, *lateral, "body", &out);
           r->metacentric_height = out.metacentric_height;
         } else {
@@ -303,6 +304,7 @@ void summarise_evaluation(VariantResult* r) {
   s.analysis = "design variant";
   s.method = "critical-speed study of the variant in its scene, then its metrics";
   constexpr double kNoLimit = std::numeric_limits<double>::infinity();
+  s.checks.reserve(s.checks.size() + 6);  // the checks below: one allocation
   s.checks.push_back({"evaluated (0: failed)", r->ok() ? 1.0 : 0.0, kNoLimit, r->ok()});
   s.checks.push_back({"modes", static_cast<double>(r->modes.size()), kNoLimit, true});
   s.checks.push_back({"critical speeds", static_cast<double>(r->critical_speeds.size()), kNoLimit, true});
@@ -333,8 +335,8 @@ void describe_failure(const Vehicle& vehicle, DofSet dofs, const std::string& wh
     }
 }
 
-// Gives the workspace its system and scene back when the evaluation ends (their storage serves
-// the next variant), however it ends.
+// Gives the workspace its system, scene and modes back when the evaluation ends (their
+// storage serves the next variant), however it ends.
 struct HandBack {
   CriticalSpeedStudy* from;
   study::Workspace* to;
@@ -342,6 +344,7 @@ struct HandBack {
     if (!to) return;
     to->system = std::move(from->system);
     to->scene = std::move(from->scene);
+    to->modes = std::move(from->modes);
   }
 };
 
@@ -374,6 +377,7 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
     // One assembly and one modal solve serve everything: the study's own, which assembles the
     // lateral stiffness of the metacentric height with its system.
     CriticalSpeedStudy study;
+    if (workspace) study.modes = std::move(workspace->modes);  // solved into (solve::solve_modes_into)
     const HandBack hand_back{&study, workspace};
     LinearSystem own_lateral;
     LinearSystem& lateral = workspace ? workspace->lateral : own_lateral;

@@ -12,10 +12,21 @@
 namespace railmodal {
 namespace {
 
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
+// The metrics are read per variant (the ranking's constraints and criteria, a report's rows):
+// they are looked at through views, so that naming a metric builds no string.
+bool starts_with(std::string_view s, std::string_view prefix) { return s.substr(0, prefix.size()) == prefix; }
 
-// "peak:<dof>:<quantity>" → dof and quantity; false when it is not of that form.
-bool split_peak(const std::string& metric, std::string* dof, std::string* quantity) {
+// canonical_metric without a copy: a view of a literal or of `metric` itself.
+std::string_view canonical(std::string_view metric) {
+  if (metric == "critical_speed") return "lowest_critical_speed";
+  if (metric == "bounce_period") return "period:body bounce";
+  if (metric == "pitch_period") return "period:body pitch";
+  if (metric == "bounce_critical_speed") return "critical_speed:body bounce";
+  return metric;
+}
+
+// "peak:<dof>:<quantity>" → dof and quantity (views of `metric`); false when it is not of that form.
+bool split_peak(std::string_view metric, std::string_view* dof, std::string_view* quantity) {
   if (!starts_with(metric, "peak:")) return false;
   const size_t colon = metric.rfind(':');
   if (colon <= 5) return false;
@@ -24,12 +35,11 @@ bool split_peak(const std::string& metric, std::string* dof, std::string* quanti
   return !dof->empty() && (*quantity == "displacement" || *quantity == "velocity" || *quantity == "acceleration");
 }
 
-constexpr const char* kRmsAcceleration = "rms_acceleration:";
-constexpr size_t kRmsAccelerationLength = 17;
+constexpr std::string_view kRmsAcceleration = "rms_acceleration:";
 
 // The ride's metrics: the largest Wz or N_MV over outputs (points) and speeds, or the largest RMS
 // of a named output; +∞ where the ride is unbounded; none without a ride.
-std::optional<double> ride_metric(const VariantResult& r, const std::string& metric) {
+std::optional<double> ride_metric(const VariantResult& r, std::string_view metric) {
   if (!r.ride_evaluated) return std::nullopt;
   constexpr double kUnbounded = std::numeric_limits<double>::infinity();
   if (metric == "max_nmv") return r.max_nmv;
@@ -40,37 +50,30 @@ std::optional<double> ride_metric(const VariantResult& r, const std::string& met
       else if (o.max_wz) largest = std::max(largest.value_or(*o.max_wz), *o.max_wz);
     return largest;
   }
-  const std::string output = metric.substr(kRmsAccelerationLength);
+  const std::string_view output = metric.substr(kRmsAcceleration.size());
   for (const auto& o : r.ride)
     if (o.output == output) return o.unbounded ? kUnbounded : o.max_rms;
   return std::nullopt;
 }
 
-bool is_ride_metric(const std::string& metric) {
+bool is_ride_metric(std::string_view metric) {
   return metric == "max_wz" || metric == "max_nmv" ||
-         (starts_with(metric, kRmsAcceleration) && metric.size() > kRmsAccelerationLength);
+         (starts_with(metric, kRmsAcceleration) && metric.size() > kRmsAcceleration.size());
 }
 
-bool is_rotation(const std::string& dof) {
-  for (const char* m : {".roll", ".pitch", ".yaw"})
-    if (dof.size() > std::string(m).size() && dof.compare(dof.size() - std::string(m).size(), std::string::npos, m) == 0)
-      return true;
+bool is_rotation(std::string_view dof) {
+  for (const std::string_view m : {".roll", ".pitch", ".yaw"})
+    if (dof.size() > m.size() && dof.substr(dof.size() - m.size()) == m) return true;
   return false;
 }
 
 }  // namespace
 
-std::string canonical_metric(const std::string& metric) {
-  if (metric == "critical_speed") return "lowest_critical_speed";
-  if (metric == "bounce_period") return "period:body bounce";
-  if (metric == "pitch_period") return "period:body pitch";
-  if (metric == "bounce_critical_speed") return "critical_speed:body bounce";
-  return metric;
-}
+std::string canonical_metric(const std::string& metric) { return std::string(canonical(metric)); }
 
 bool is_metric(const std::string& name) {
-  const std::string metric = canonical_metric(name);
-  std::string dof, quantity;
+  const std::string_view metric = canonical(name);
+  std::string_view dof, quantity;
   return metric == "lowest_critical_speed" || metric == "hunting_speed" || metric == "static_deflection" ||
          metric == "metacentric_height" || metric == "dynamic_deflection_ratio" ||
          (starts_with(metric, "dynamic_deflection_ratio:") && metric.size() > 25) ||
@@ -83,7 +86,7 @@ bool is_metric(const std::string& name) {
 bool ride_rms_only(const Study& study) {
   bool rms = false, more = false;
   const auto see = [&](const std::string& name) {
-    const std::string metric = canonical_metric(name);
+    const std::string_view metric = canonical(name);
     if (!is_ride_metric(metric)) return;
     (starts_with(metric, kRmsAcceleration) ? rms : more) = true;
   };
@@ -93,7 +96,7 @@ bool ride_rms_only(const Study& study) {
 }
 
 std::optional<double> metric_value(const VariantResult& r, const std::string& name) {
-  const std::string metric = canonical_metric(name);
+  const std::string_view metric = canonical(name);
   if (!r.ok()) return std::nullopt;
   if (metric == "lowest_critical_speed")
     return r.critical_speeds.empty() ? std::numeric_limits<double>::infinity() : r.critical_speeds.front().speed;
@@ -103,13 +106,13 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
     return std::numeric_limits<double>::infinity();
   }
   if (starts_with(metric, "period:")) {
-    const std::string mode = metric.substr(7);
+    const std::string_view mode = metric.substr(7);
     for (const auto& m : r.modes)
       if (m.name == mode && m.kind == "oscillatory") return m.period_s;
     return std::nullopt;
   }
   if (metric == "static_deflection" || starts_with(metric, "static_deflection:")) {
-    const std::string body = metric == "static_deflection" ? "body" : metric.substr(18);
+    const std::string_view body = metric == "static_deflection" ? std::string_view("body") : metric.substr(18);
     for (const auto& [name_of_body, deflection] : r.static_deflections)
       if (name_of_body == body) return deflection;
     return std::nullopt;
@@ -120,7 +123,7 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
   if (metric == "dynamic_deflection_ratio" || starts_with(metric, "dynamic_deflection_ratio:")) {
     // The worst check (of the named element); +∞ for an unbounded resonance. No value when
     // nothing was checked.
-    const std::string element = metric.size() > 25 ? metric.substr(25) : "";
+    const std::string_view element = metric.size() > 25 ? metric.substr(25) : std::string_view();
     std::optional<double> worst;
     for (const auto& c : r.deflections) {
       if (!element.empty() && c.element != element) continue;
@@ -129,7 +132,7 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
     }
     return worst;
   }
-  std::string dof, quantity;
+  std::string_view dof, quantity;
   if (split_peak(metric, &dof, &quantity)) {
     std::optional<double> largest;
     for (const auto& p : r.peaks)
@@ -143,13 +146,13 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
 }
 
 const char* metric_unit(const std::string& name) {
-  const std::string metric = canonical_metric(name);
+  const std::string_view metric = canonical(name);
   if (metric == "lowest_critical_speed" || metric == "hunting_speed" || starts_with(metric, "critical_speed:"))
     return "m/s";
   if (starts_with(metric, "period:")) return "s";
   if (starts_with(metric, "dynamic_deflection_ratio") || metric == "max_wz" || metric == "max_nmv") return "";
   if (starts_with(metric, kRmsAcceleration)) return "m/s^2";
-  std::string dof, quantity;
+  std::string_view dof, quantity;
   if (split_peak(metric, &dof, &quantity)) {
     const bool rotation = is_rotation(dof);
     if (quantity == "displacement") return rotation ? "rad" : "m";
@@ -164,19 +167,19 @@ namespace study {
 DisplayUnit display_unit(const std::string& metric) {
   const char* si = metric_unit(metric);
   // Critical speeds in km/h, as the book gives them; peak velocities stay in m/s.
-  if (std::string_view(si) == "m/s" && !starts_with(canonical_metric(metric), "peak:")) return {"km/h", 3.6};
+  if (std::string_view(si) == "m/s" && !starts_with(canonical(metric), "peak:")) return {"km/h", 3.6};
   if (std::string_view(si) == "m") return {"mm", 1000.0};
   return {si, 1.0};
 }
 
 bool infinite_is_unbounded(const std::string& metric) {
-  const std::string m = canonical_metric(metric);
+  const std::string_view m = canonical(metric);
   return starts_with(m, "peak:") || starts_with(m, "dynamic_deflection") || is_ride_metric(m);
 }
 
 std::string title(const std::string& metric) {
-  const std::string m = canonical_metric(metric);
-  std::string dof, quantity;
+  const std::string m(canonical(metric));
+  std::string_view dof, quantity;
   if (m == "lowest_critical_speed") return "lowest critical speed";
   if (m == "hunting_speed") return "linear hunting speed";
   if (m == "static_deflection") return "static deflection of the body";
@@ -186,10 +189,10 @@ std::string title(const std::string& metric) {
   if (starts_with(m, "period:")) return "period of " + m.substr(7);
   if (starts_with(m, "static_deflection:")) return "static deflection of " + m.substr(18);
   if (starts_with(m, "dynamic_deflection_ratio:")) return "dynamic deflection of " + m.substr(25) + " / permissible";
-  if (split_peak(m, &dof, &quantity)) return "peak " + quantity + " of " + dof;
+  if (split_peak(m, &dof, &quantity)) return "peak " + std::string(quantity) + " of " + std::string(dof);
   if (m == "max_wz") return "largest Sperling Wz of the ride";
   if (m == "max_nmv") return "largest N_MV (estimate) of the ride";
-  if (starts_with(m, kRmsAcceleration)) return "largest RMS acceleration at " + m.substr(kRmsAccelerationLength);
+  if (starts_with(m, kRmsAcceleration)) return "largest RMS acceleration at " + m.substr(kRmsAcceleration.size());
   return metric;
 }
 
@@ -212,16 +215,18 @@ std::vector<std::string> violations(const VariantResult& r, const Ranking& ranki
   std::vector<std::string> out;
   const int digits = for_people ? 4 : 6;
   for (const RankingConstraint& c : ranking.constraints) {
-    const std::string name = for_people ? title(c.metric) : c.metric;
+    // The metric's name is copied only for a constraint the result breaks (rank_entry asks
+    // every variant, and most keep every constraint).
+    const auto name = [&] { return for_people ? title(c.metric) : c.metric; };
     const std::optional<double> value = metric_value(r, c.metric);
     if (!value && r.deflections_checked && starts_with(c.metric, "dynamic_deflection_ratio"))
-      out.push_back("no " + name + ": no spring of this variant falls under the deflection rule");
+      out.push_back("no " + name() + ": no spring of this variant falls under the deflection rule");
     else if (!value)
-      out.push_back("no " + name);
+      out.push_back("no " + name());
     else if (c.min && *value < *c.min)
-      out.push_back(name + " " + shown(c.metric, *value, digits) + " < " + shown(c.metric, *c.min, digits));
+      out.push_back(name() + " " + shown(c.metric, *value, digits) + " < " + shown(c.metric, *c.min, digits));
     else if (c.max && *value > *c.max)
-      out.push_back(name + " " + shown(c.metric, *value, digits) + " > " + shown(c.metric, *c.max, digits));
+      out.push_back(name() + " " + shown(c.metric, *value, digits) + " > " + shown(c.metric, *c.max, digits));
   }
   return out;
 }

@@ -54,15 +54,21 @@ std::string sample_name(const Sweep& sweep, size_t n) { return sweep.name + " #"
 }  // namespace
 
 std::string WrittenNumber::text() const {
-  if (!unit.empty()) {  // appended in place: no temporaries (a sample point writes one per parameter)
-    std::string t = shortest_text(number);
-    t.reserve(t.size() + 1 + unit.size());
-    t += ' ';
-    t += unit;
-    return t;
+  std::string t;
+  write_text(&t);
+  return t;
+}
+
+void WrittenNumber::write_text(std::string* text) const {
+  text->clear();
+  if (integer && unit.empty()) {
+    *text = std::to_string(std::llround(number));
+    return;
   }
-  if (integer) return std::to_string(std::llround(number));
-  return shortest_text(number);
+  append_shortest_text(text, number);  // in place: no temporaries (a sample point writes one per parameter)
+  if (unit.empty()) return;
+  *text += ' ';
+  *text += unit;
 }
 
 PlannedVariants::PlannedVariants(StudyPlan plan) : plan_(std::move(plan)), size_(plan_.variants.size()) {
@@ -94,28 +100,56 @@ const PlannedVariants::Points& PlannedVariants::points_of(size_t index) const {
 }
 
 VariantSpec PlannedVariants::at(size_t index) const {
-  if (index < plan_.variants.size()) return plan_.variants[index];
+  VariantSpec spec;
+  at_into(index, &spec);
+  return spec;
+}
+
+void PlannedVariants::at_into(size_t index, VariantSpec* into) const {
+  if (index < plan_.variants.size()) {
+    *into = plan_.variants[index];
+    return;
+  }
   const Points& points = points_of(index);
   const Sweep& sweep = plan_.sweeps[points.sweep];
   const size_t n = index - points.first;
+  if (sweep.samples > 0) {
+    // Written member by member into the spec's own strings (a worker's, kept from its previous
+    // variant): what sweep_point makes of the drawn assignments, without a string made anew.
+    VariantSpec& spec = *into;
+    spec.name.assign(sweep.name).append(" #").append(std::to_string(n + 1));  // sample_name
+    spec.place = {sweep.line, 0};
+    spec.vehicle_file = plan_.vehicle_file;
+    const size_t count = sweep.parameters.size();
+    spec.assignments.resize(count);
+    spec.parameters.resize(count);
+    Xoshiro256 generator = points.checkpoints[n / kCheckpoint];
+    for (size_t skip = (n % kCheckpoint) * count; skip > 0; --skip) generator.next();
+    for (size_t j = 0; j < count; ++j) {
+      const SweepParameter& p = sweep.parameters[j];
+      const double u = generator.uniform();
+      Assignment& a = spec.assignments[j];
+      a.key = p.key;
+      a.scene = p.scene;
+      a.place = p.place;
+      a.written = -1;
+      a.drawn.number = p.from.number + u * (p.to.number - p.from.number);
+      a.drawn.unit = p.from.unit;
+      a.drawn.integer = p.from.integer;
+      a.drawn.write_text(&a.text);
+      spec.parameters[j].first.assign(a.scene ? "scene:" : "").append(a.key);
+      spec.parameters[j].second = a.text;
+    }
+    return;
+  }
   std::vector<Assignment> assignments;
   assignments.reserve(sweep.parameters.size());
-  if (sweep.samples > 0) {
-    Xoshiro256 generator = points.checkpoints[n / kCheckpoint];
-    for (size_t skip = (n % kCheckpoint) * sweep.parameters.size(); skip > 0; --skip) generator.next();
-    for (const SweepParameter& p : sweep.parameters) {
-      const double u = generator.uniform();
-      WrittenNumber drawn{p.from.number + u * (p.to.number - p.from.number), p.from.unit, p.from.integer};
-      assignments.push_back({p.key, p.scene, p.place, drawn.text(), -1, drawn});
-    }
-    return sweep_point(plan_, sweep, sample_name(sweep, n), std::move(assignments));
-  }
   const std::vector<const WrittenValue*> values = grid_values(sweep, n);
   for (size_t j = 0; j < values.size(); ++j) {
     const SweepParameter& p = sweep.parameters[j];
     assignments.push_back({p.key, p.scene, p.place, values[j]->text, values[j]->index, {}});
   }
-  return sweep_point(plan_, sweep, grid_name(sweep, values), std::move(assignments));
+  *into = sweep_point(plan_, sweep, grid_name(sweep, values), std::move(assignments));
 }
 
 std::string PlannedVariants::name(size_t index) const {

@@ -20,6 +20,9 @@ class PlannedVariants {
   size_t size() const { return size_; }
   /// Variant `index` (0 ... size() − 1): the same whenever it is asked for.
   VariantSpec at(size_t index) const;
+  /// at(index) written into `into`, whose strings and lists serve again where they can (a
+  /// study's worker reads each of its variants into one spec).
+  void at_into(size_t index, VariantSpec* into) const;
   /// Its name alone, without drawing or writing its values.
   std::string name(size_t index) const;
   /// The first variant, in study order, whose name an earlier one has; none when the names

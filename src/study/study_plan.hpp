@@ -26,6 +26,8 @@ struct WrittenNumber {
   bool integer = false;
   /// As shown in names and reports: "40 mm", "40", "0.25" (the shortest text that reads back).
   std::string text() const;
+  /// text() written into `text` (its storage reused).
+  void write_text(std::string* text) const;
 };
 
 /// A value written in the study file (an override's or a swept value): its text, and its
