@@ -161,6 +161,12 @@ const char* metric_unit(const std::string& name) {
 
 namespace study {
 
+bool names_ride(const std::string& metric) { return is_ride_metric(canonical_metric(metric)); }
+
+std::string ride_output_of(const std::string& metric) {
+  return starts_with(metric, kRmsAcceleration) ? metric.substr(kRmsAccelerationLength) : std::string();
+}
+
 DisplayUnit display_unit(const std::string& metric) {
   const char* si = metric_unit(metric);
   // Critical speeds in km/h, as the book gives them; peak velocities stay in m/s.

@@ -9,6 +9,11 @@
 
 namespace railmodal::study {
 
+/// Whether the metric is one of the ride's (max_wz, max_nmv, rms_acceleration:<output>).
+bool names_ride(const std::string& metric);
+/// The ride output a metric names ("rms_acceleration:<output>" → the output), or "".
+std::string ride_output_of(const std::string& metric);
+
 /// The unit a report shows a metric in and the factor from SI: km/h, mm, s, ...
 struct DisplayUnit {
   const char* unit;
