@@ -39,6 +39,25 @@ std::vector<RideOutput> ride_outputs(const OfferedMetrics& offered) {
   return out;
 }
 
+// What a ride output measures, for a message: "a force", "an element's deflection", ...
+std::string quantity_of(const RideOutput& o) {
+  switch (o.kind) {
+    case RideOutput::Kind::element_deflection: return "an element's deflection";
+    case RideOutput::Kind::element_force: return "an element's force";
+    case RideOutput::Kind::wheel_rail_force: return "a wheel-rail force";
+    case RideOutput::Kind::point: break;
+  }
+  return o.quantity == ResponseQuantity::acceleration ? "an acceleration"
+         : o.quantity == ResponseQuantity::velocity   ? "a velocity"
+                                                      : "a displacement";
+}
+
+// What an RMS metric asks for, for a message: "an acceleration", ...
+std::string quantity_of_metric(const std::string& metric) {
+  const std::string unit = rms_ride_unit(metric);
+  return unit == "N" ? "a force" : unit == "m" ? "a displacement" : unit == "m/s" ? "a velocity" : "an acceleration";
+}
+
 std::string quoted_list(const std::vector<std::string>& names) {
   std::string list;
   for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
@@ -80,7 +99,13 @@ void check_offered_metrics(const Ranking& ranking, const std::string& study_file
     if (output.empty()) return;
     if (!outputs_found) outputs = ride_outputs(offered), outputs_found = true;
     const auto named = std::find_if(outputs.begin(), outputs.end(), [&](const RideOutput& o) { return o.name == output; });
-    if (named != outputs.end()) return;
+    if (named != outputs.end()) {
+      const std::string unit = unit_of(*named);
+      if (unit == rms_ride_unit(metric)) return;
+      const std::string instead = rms_metric_for(unit);
+      refuse("ride output '" + output + "' is " + quantity_of(*named) + " (" + unit + "), not " +
+             quantity_of_metric(metric) + (instead.empty() ? "" : ": use '" + instead + output + "', its RMS in " + unit));
+    }
     std::vector<std::string> names;
     const std::string* closest = nullptr;
     size_t distance = output.size() / 8 + 3;  // a few letters off, more in a long name

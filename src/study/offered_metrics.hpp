@@ -1,6 +1,7 @@
 // Whether a study's ranking names metrics its vehicles and scene can give, checked once when the
 // study is loaded (docs/studies.md, "Ranking"): a ride output no vehicle's ride has (a misspelt
-// name), a ride metric on a scene without a ride, hunting_speed on vehicles without wheelsets.
+// name) or one of another quantity than the metric's, a ride metric on a scene without a ride,
+// hunting_speed on vehicles without wheelsets.
 // Unchecked, every variant would lack the value and the ranking would fall back to study order
 // without a word.
 #pragma once
@@ -30,9 +31,10 @@ struct OfferedMetrics {
 bool names_offered_metrics(const Ranking& ranking);
 
 /// Throws InputError at the study's key (file:line:column, the key) for a metric that no
-/// variant can have: a ride metric when the scene has no ride, an rms_acceleration:<output>
-/// naming no output of the ride ("did you mean" the closest name, and the names there are),
-/// hunting_speed when no vehicle has wheelsets.
+/// variant can have: a ride metric when the scene has no ride, an RMS metric naming no output of
+/// the ride ("did you mean" the closest name, and the names there are) or an output of another
+/// quantity (rms_acceleration: on a force: the metric that fits is named), hunting_speed when no
+/// vehicle has wheelsets.
 void check_offered_metrics(const Ranking& ranking, const std::string& study_file, const OfferedMetrics& offered);
 
 }  // namespace railmodal::study

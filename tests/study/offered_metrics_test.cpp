@@ -76,6 +76,39 @@ TEST(OfferedMetrics, HuntingSpeedNeedsAVehicleWithWheelsets) {
                                            "objective = [{ metric = \"hunting_speed\", goal = \"max\" }]")));
 }
 
+// rms_acceleration: on a spring force (N) read the force's RMS as an acceleration in m/s² (the
+// audit's 1.5e4 "m/s^2"): refused, naming the output's quantity and the metric that fits it,
+// whose unit is the output's own.
+TEST(OfferedMetrics, AnRmsMetricOfAnotherQuantityIsRefusedWithTheOneThatFits) {
+  const std::string scene = "two_axle_wagon_fra_class4.toml";
+  const InputError e = study_error_at(
+      offered_study("two_axle_freight_wagon.toml", scene,
+                    "objective = [{ metric = \"rms_acceleration:front left spring force\", goal = \"min\" }]"),
+      "a force as an acceleration");
+  EXPECT_EQ(e.line(), 6);
+  EXPECT_NE(e.message().find("ride output 'front left spring force' is an element's force (N), not an acceleration: "
+                             "use 'rms_force:front left spring force', its RMS in N"),
+            std::string::npos)
+      << e.what();
+  const InputError v = study_error_at(
+      offered_study("two_axle_freight_wagon.toml", scene,
+                    "objective = [{ metric = \"rms_force:floor at mid-wagon, vertical\", goal = \"min\" }]"),
+      "an acceleration as a force");
+  EXPECT_NE(v.message().find("is an acceleration (m/s²), not a force: use 'rms_acceleration:floor at mid-wagon, "
+                             "vertical'"),
+            std::string::npos)
+      << v.what();
+  // The force's own metric loads, and its limit is read as a force.
+  const Study s = load_study(offered_study("two_axle_freight_wagon.toml", scene,
+                                           "\"max_rms_force:front left spring force\" = \"2 tf\""));
+  ASSERT_EQ(s.ranking.constraints.size(), 1u);
+  EXPECT_DOUBLE_EQ(*s.ranking.constraints[0].max, 2000 * 9.80665);
+  const InputError unit = study_error_at(
+      offered_study("two_axle_freight_wagon.toml", scene, "\"max_rms_force:front left spring force\" = \"2 m\""),
+      "a length as a force limit");
+  EXPECT_NE(unit.message().find("expected a force"), std::string::npos) << unit.what();
+}
+
 // A variant that changes the scene's ride may name outputs the base scene does not: the name is
 // then left to the evaluated variants.
 TEST(OfferedMetrics, AStudyThatChangesTheRideIsNotCheckedAgainstTheBaseScene) {
