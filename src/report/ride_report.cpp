@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <charconv>
 #include <cstdio>
 
 #include "report/csv_writer.hpp"
@@ -20,6 +21,7 @@
 #include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 namespace {
@@ -60,6 +62,16 @@ std::string psd_key_suffix(const RideOutput& o) {
 std::string variance_key_suffix(const RideOutput& o) {
   const std::string psd = psd_key_suffix(o);
   return psd.substr(0, psd.size() - std::string("_per_hz").size());
+}
+
+// A speed in km/h for CSV and JSON: m/s × 3.6 to 15 significant digits, so that a speed given as
+// "150 km/h" (41.666… m/s) is 150 and not 150.00000000000003, the product's round-off; any speed
+// written with up to 15 digits comes back as written (speed_m_s keeps the exact value).
+double kmh_value(double speed) {
+  const std::string text = shortest_text(speed * kKmh, 15);
+  double value = speed * kKmh;
+  std::from_chars(text.data(), text.data() + text.size(), value);  // locale-free, as to_chars wrote it
+  return value;
 }
 
 std::string kmh(double speed) { return fixed(speed * kKmh, 1) + " km/h"; }
@@ -602,7 +614,7 @@ void write_csv(std::ostream& out, const RideResult& r) {
     for (const RideComfortAtPoint& c : r.speeds.front().comfort) csv.field("nmv estimate " + point_text(c, r.outputs));
   csv.end_row();
   for (const RideAtSpeed& at : r.speeds) {
-    finite_field(csv, at.speed * kKmh);
+    finite_field(csv, kmh_value(at.speed));
     for (size_t i = 0; i < r.outputs.size() && i < at.outputs.size(); ++i) {
       const RideOutputAtSpeed& o = at.outputs[i];
       const bool comfort = has_comfort_indices(r.outputs[i]);
@@ -705,7 +717,7 @@ void write_at_speed(JsonWriter& j, const RideResult& r, const RideAtSpeed& at) {
     j.member("unbounded", false);
     j.member("weighted_rms_m_s2", o.weighted_rms).end_object();
   }
-  j.end_array().member("speed_kmh", at.speed * kKmh).member("speed_m_s", at.speed).end_object();
+  j.end_array().member("speed_kmh", kmh_value(at.speed)).member("speed_m_s", at.speed).end_object();
 }
 
 void write_summary(JsonWriter& j, const AnalysisSummary& s) {

@@ -139,6 +139,25 @@ TEST(RideReport, FloorPointsAreNamedByTheirOutputsAndTheFrameSaidOnce) {
   EXPECT_TRUE(has(written(r, OutputFormat::table), "floor over bogie 1 / sway sensor: body (9.5, 0, 1.2) m"));
 }
 
+// A speed given as "150 km/h" is 41.666… m/s, and 41.666… × 3.6 is 150.00000000000003 in doubles:
+// the CSV and JSON give the km/h it was written in (the audit found the long form).
+TEST(RideReport, SpeedsInKmhAreTheOnesWritten) {
+  RideResult r = hand_built();
+  r.speeds[0].speed = 150 / 3.6;
+  r.speeds[1].speed = 175 / 3.6;
+  ASSERT_NE(r.speeds[0].speed * 3.6, 150.0);  // the round-off this is about
+  ASSERT_NE(r.speeds[1].speed * 3.6, 175.0);
+  std::istringstream csv(written(r, OutputFormat::csv));
+  std::string head, row1, row2;
+  std::getline(csv, head), std::getline(csv, row1), std::getline(csv, row2);
+  EXPECT_EQ(row1.rfind("150,", 0), 0u) << row1;
+  EXPECT_EQ(row2.rfind("175,", 0), 0u) << row2;
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  EXPECT_EQ(j["speeds"][0]["speed_kmh"].get<double>(), 150.0);
+  EXPECT_EQ(j["speeds"][1]["speed_kmh"].get<double>(), 175.0);
+  EXPECT_EQ(j["speeds"][0]["speed_m_s"].get<double>(), 150 / 3.6);  // the exact speed stays
+}
+
 TEST(RideReport, JsonKeysCarryUnitsAndNullsForWhatIsNot) {
   const nlohmann::json j = nlohmann::json::parse(written(hand_built(), OutputFormat::json));
   ASSERT_EQ(j["speeds"].size(), 2u);
