@@ -232,6 +232,21 @@ std::string track_rms_text(const RideResult& r) {
   return text;
 }
 
+// Whether the grid error estimate measured anything: some output has a bounded RMS at some speed.
+// With none (every output unbounded) it is 0 by default, not an estimate, and the reports say so.
+bool grid_error_estimated(const RideResult& r) {
+  for (const RideAtSpeed& at : r.speeds)
+    for (const RideOutputAtSpeed& o : at.outputs)
+      if (!o.unbounded && o.rms > 0.0) return true;
+  return false;
+}
+
+std::string grid_error_text(const RideResult& r) {
+  if (r.rms_only) return "; RMS and weighted RMS only (no grid error estimate)";
+  if (!grid_error_estimated(r)) return "; no grid error estimate (no output has a bounded RMS)";
+  return "; grid error estimate " + significant(100.0 * r.grid_error_estimate, 2) + " % of an RMS";
+}
+
 std::string method_text(const RideResult& r) {
   if (r.frequencies.size() == 0)
     return "No frequency-domain ride: the track is a geometry file, which has no spectrum; the time-domain run below "
@@ -240,8 +255,7 @@ std::string method_text(const RideResult& r) {
          (r.frequencies.size() ? significant(r.frequencies[0], 3) + " to " +
                                      significant(r.frequencies[r.frequencies.size() - 1], 3) + " Hz"
                                : std::string("–")) +
-         (r.rms_only ? std::string("; RMS and weighted RMS only (no grid error estimate)")
-                      : "; grid error estimate " + significant(100.0 * r.grid_error_estimate, 2) + " % of an RMS") +
+         grid_error_text(r) +
          "; friction: " +
          (r.friction_treatment.empty() ? std::string("none in the vehicle") : r.friction_treatment) + track_rms_text(r);
 }
@@ -763,6 +777,7 @@ void write_json(std::ostream& out, const Page& p) {
   write_line_member(out, "friction_treatment", [&](JsonWriter& j) { j.value(r.friction_treatment); });
   // RMS only (rms_only): no grid error estimate, and a member that says so.
   if (r.rms_only) write_line_member(out, "rms_only", [&](JsonWriter& j) { j.value(true); });
+  else if (!grid_error_estimated(r)) write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(nullptr); });
   else write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(r.grid_error_estimate); });
   write_line_member(out, "notes", [&](JsonWriter& j) { j.value(r.notes); });
   write_line_member(out, "track_rms", [&](JsonWriter& j) {

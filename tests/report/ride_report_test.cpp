@@ -158,6 +158,25 @@ TEST(RideReport, SpeedsInKmhAreTheOnesWritten) {
   EXPECT_EQ(j["speeds"][0]["speed_m_s"].get<double>(), 150 / 3.6);  // the exact speed stays
 }
 
+// Every output unbounded at every speed: no RMS to estimate the grid's error from. The reports
+// say so rather than "0 %", and the JSON has null.
+TEST(RideReport, AnAllUnboundedRideHasNoGridErrorEstimate) {
+  RideResult r = hand_built();
+  r.grid_error_estimate = 0.0;
+  for (RideAtSpeed& at : r.speeds) {
+    for (RideOutputAtSpeed& o : at.outputs) o = RideOutputAtSpeed(), o.unbounded = true;
+    at.comfort.clear();
+  }
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html}) {
+    const std::string text = written(r, f);
+    EXPECT_TRUE(has(text, "no grid error estimate (no output has a bounded RMS)")) << text;
+    EXPECT_FALSE(has(text, "grid error estimate 0")) << text;
+  }
+  EXPECT_TRUE(nlohmann::json::parse(written(r, OutputFormat::json))["grid_error_estimate"].is_null());
+  // One bounded output: the estimate, as before.
+  EXPECT_TRUE(has(written(hand_built(), OutputFormat::table), "grid error estimate 0.02 % of an RMS"));
+}
+
 TEST(RideReport, JsonKeysCarryUnitsAndNullsForWhatIsNot) {
   const nlohmann::json j = nlohmann::json::parse(written(hand_built(), OutputFormat::json));
   ASSERT_EQ(j["speeds"].size(), 2u);
