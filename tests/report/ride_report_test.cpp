@@ -143,8 +143,9 @@ TEST(RideReport, FloorPointsAreNamedByTheirOutputsAndTheFrameSaidOnce) {
 // the CSV and JSON give the km/h it was written in (the audit found the long form).
 TEST(RideReport, SpeedsInKmhAreTheOnesWritten) {
   RideResult r = hand_built();
-  r.speeds[0].speed = 150 / 3.6;
-  r.speeds[1].speed = 175 / 3.6;
+  const double kmh = 1000.0 / 3600.0;  // m/s a km/h, as the unit reader converts "150 km/h"
+  r.speeds[0].speed = 150 * kmh;
+  r.speeds[1].speed = 175 * kmh;
   ASSERT_NE(r.speeds[0].speed * 3.6, 150.0);  // the round-off this is about
   ASSERT_NE(r.speeds[1].speed * 3.6, 175.0);
   std::istringstream csv(written(r, OutputFormat::csv));
@@ -155,7 +156,7 @@ TEST(RideReport, SpeedsInKmhAreTheOnesWritten) {
   const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
   EXPECT_EQ(j["speeds"][0]["speed_kmh"].get<double>(), 150.0);
   EXPECT_EQ(j["speeds"][1]["speed_kmh"].get<double>(), 175.0);
-  EXPECT_EQ(j["speeds"][0]["speed_m_s"].get<double>(), 150 / 3.6);  // the exact speed stays
+  EXPECT_EQ(j["speeds"][0]["speed_m_s"].get<double>(), 150 * kmh);  // the exact speed stays
 }
 
 // Every output unbounded at every speed: no RMS to estimate the grid's error from. The reports

@@ -46,9 +46,9 @@ TEST(OfferedMetrics, AMisspeltRideOutputIsRefusedWithTheNameItMeant) {
 TEST(OfferedMetrics, TheDefaultFloorPointsAreTheNamesWithoutRideOutputs) {
   const std::string scene = "manchester_coach_ore_low.toml";
   EXPECT_NO_THROW(load_study(offered_study("manchester_benchmark_coach.toml", scene,
-                                           "max_rms_acceleration:floor over front bogie, vertical = \"1 m/s^2\"")));
+                                           "\"max_rms_acceleration:floor over front bogie, vertical\" = \"1 m/s^2\"")));
   const InputError e = study_error_at(
-      offered_study("manchester_benchmark_coach.toml", scene, "max_rms_acceleration:floor over bogie 1 = \"1 m/s^2\""),
+      offered_study("manchester_benchmark_coach.toml", scene, "\"max_rms_acceleration:floor over bogie 1\" = \"1 m/s^2\""),
       "an output of another vehicle");
   EXPECT_EQ(e.line(), 6);
   EXPECT_NE(e.message().find("key 'ranking.max_rms_acceleration:floor over bogie 1'"), std::string::npos) << e.what();
