@@ -3,6 +3,8 @@
 // Neither layer calls the other.
 #include "load_study.hpp"
 
+#include <algorithm>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <memory>
@@ -12,7 +14,9 @@
 
 #include "input/study_reader.hpp"
 #include "railmodal/errors.hpp"
+#include "input/document_readers.hpp"
 #include "study/metrics.hpp"
+#include "study/offered_metrics.hpp"
 #include "study/planned_variants.hpp"
 
 namespace railmodal {
@@ -29,6 +33,44 @@ struct StudySource {
 
 namespace {
 
+// Whether a variant of the plan sets a key whose path starts with one of `prefixes` (in the
+// vehicle file, or with `scene` in the scene file).
+bool overrides_under(const study::StudyPlan& plan, bool scene, std::initializer_list<const char*> prefixes) {
+  const auto under = [&](const std::string& key) {
+    return std::any_of(prefixes.begin(), prefixes.end(), [&](const char* p) { return key.rfind(p, 0) == 0; });
+  };
+  for (const study::VariantSpec& spec : plan.variants)
+    for (const study::Assignment& a : spec.assignments)
+      if (a.scene == scene && under(a.key)) return true;
+  for (const study::Sweep& sweep : plan.sweeps)
+    for (const study::SweepParameter& p : sweep.parameters)
+      if (p.scene == scene && under(p.key)) return true;
+  return false;
+}
+
+// The ranking's ride and hunting metrics against what the study's vehicle files (read as
+// written, once each) and its scene give, when it names any: a metric no variant can have is
+// refused here rather than ranked as missing in every variant (study/offered_metrics.hpp).
+void refuse_metrics_not_offered(const input::StudyFile& file) {
+  if (!study::names_offered_metrics(file.plan.ranking)) return;
+  study::OfferedMetrics offered;
+  offered.scene_file = file.scene_file;
+  offered.scene = &file.base_scene;
+  std::vector<Vehicle> vehicles;
+  vehicles.reserve(file.vehicle_documents.size());
+  for (const auto& [path, document] : file.vehicle_documents) {
+    try {
+      vehicles.push_back(input::read_vehicle(document, path));
+    } catch (const InputError&) {
+      offered.vehicles_complete = false;  // reported by the variant that reads it
+    }
+  }
+  for (const Vehicle& v : vehicles) offered.vehicles.push_back(&v);
+  offered.vehicle_may_gain_wheelsets = overrides_under(file.plan, false, {"wheelset"});
+  offered.scene_may_change_ride = overrides_under(file.plan, true, {"ride", "source"});
+  study::check_offered_metrics(file.plan.ranking, file.path, offered);
+}
+
 // The study file read and checked, its variants not listed (open_study).
 Study opened_study(const std::string& path, size_t max_variants) {
   input::StudyFile file = input::read_study_file(path, max_variants);
@@ -38,6 +80,7 @@ Study opened_study(const std::string& path, size_t max_variants) {
     throw InputError(file.path, spec.place.line, spec.place.column, "variant '" + spec.name + "': another variant has this name");
   }
   input::check_variants(&file);
+  refuse_metrics_not_offered(file);
   Study study;
   study.name = file.plan.name;
   study.source = path;

@@ -235,6 +235,7 @@ Quantity limit_quantity(const std::string& metric) {
   if (unit == "m") return Quantity::length;
   if (unit == "s") return Quantity::time;
   if (unit == "m/s^2") return Quantity::acceleration;
+  if (unit == "N") return Quantity::force;
   if (unit == "rad") return Quantity::angle;
   if (unit == "rad/s") return Quantity::angular_speed;
   return Quantity::dimensionless;
@@ -249,7 +250,8 @@ void read_ranking(TableReader& t, Ranking* ranking, bool deflections_checked) {
       r.fail(key, "unknown metric '" + metric +
                       "' (lowest_critical_speed, critical_speed:<mode name>, bounce_critical_speed, period:<mode name>, bounce_period, static_deflection[:<body>], "
                       "metacentric_height, hunting_speed, peak:<dof>:<displacement|velocity|acceleration>, dynamic_deflection_ratio, "
-                      "dynamic_deflection_ratio:<element>, max_wz, max_nmv, rms_acceleration:<ride output name>)");
+                      "dynamic_deflection_ratio:<element>, max_wz, max_nmv, rms_acceleration:<ride output name>, "
+                      "rms_velocity:, rms_displacement: and rms_force:<ride output name>)");
     if (!deflections_checked && canonical_metric(metric).rfind("dynamic_deflection", 0) == 0)
       r.fail(key, "metric '" + metric + "' needs a [permissible_dynamic_deflection] table naming the rule");
   };

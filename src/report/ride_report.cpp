@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <charconv>
 #include <cstdio>
 
 #include "report/csv_writer.hpp"
@@ -20,6 +21,7 @@
 #include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 namespace {
@@ -62,6 +64,16 @@ std::string variance_key_suffix(const RideOutput& o) {
   return psd.substr(0, psd.size() - std::string("_per_hz").size());
 }
 
+// A speed in km/h for CSV and JSON: m/s × 3.6 to 15 significant digits, so that a speed given as
+// "150 km/h" (41.666… m/s) is 150 and not 150.00000000000003, the product's round-off; any speed
+// written with up to 15 digits comes back as written (speed_m_s keeps the exact value).
+double kmh_value(double speed) {
+  const std::string text = shortest_text(speed * kKmh, 15);
+  double value = speed * kKmh;
+  std::from_chars(text.data(), text.data() + text.size(), value);  // locale-free, as to_chars wrote it
+  return value;
+}
+
 std::string kmh(double speed) { return fixed(speed * kKmh, 1) + " km/h"; }
 // Four significant digits with their trailing zeros ("0.1500", not "0.15"), so that a column
 // reads at one precision; from 1000 on, whole units.
@@ -75,9 +87,28 @@ std::string value_text(double v) {
 }
 std::string optional_text(const std::optional<double>& v) { return v ? value_text(*v) : "–"; }
 
-std::string point_text(const RideComfortAtPoint& c) {
-  return c.body + " (" + significant(c.point.x(), 4) + ", " + significant(c.point.y(), 4) + ", " +
-         significant(c.point.z(), 4) + ") m";
+// A floor point as people read it: the name its acceleration outputs share once their axis is
+// taken off ("floor over front bogie, vertical" and "…, lateral" give "floor over front bogie"),
+// or their names joined by " / ", then its body and coordinates: "floor over front bogie: body
+// (9.5, 0, 0.3675) m". The reports say the frame once (kFloorPointNote).
+std::string point_text(const RideComfortAtPoint& c, const std::vector<RideOutput>& outputs) {
+  std::string name;
+  std::vector<std::string> names;
+  for (const RideOutput& o : outputs) {
+    if (o.kind != RideOutput::Kind::point || o.quantity != ResponseQuantity::acceleration || o.body != c.body ||
+        (o.point - c.point).norm() > 1e-9)  // the tolerance the ride groups a point's axes by
+      continue;
+    std::string n = o.name;
+    const std::string axis = std::string(", ") + to_string(o.axis);
+    if (n.size() > axis.size() && n.compare(n.size() - axis.size(), std::string::npos, axis) == 0)
+      n.resize(n.size() - axis.size());
+    if (std::find(names.begin(), names.end(), n) != names.end()) continue;
+    name += (names.empty() ? "" : " / ") + n;
+    names.push_back(n);
+  }
+  const std::string where = c.body + " (" + significant(c.point.x(), 4) + ", " + significant(c.point.y(), 4) + ", " +
+                            significant(c.point.z(), 4) + ") m";
+  return name.empty() ? where : name + ": " + where;
 }
 
 // Modes are numbered from 1 in every report (the table, the marks on the spectra).
@@ -143,14 +174,15 @@ Table indices_table(const RideResult& r, const RideAtSpeed& at) {
   return t;
 }
 
-Table comfort_table(const std::vector<RideComfortAtPoint>& comfort, const std::string& heading) {
+Table comfort_table(const std::vector<RideComfortAtPoint>& comfort, const std::vector<RideOutput>& outputs,
+                    const std::string& heading) {
   Table t;
   t.headers = {"floor point", heading, "axes without an output"};
   t.numeric = {false, true, false};
   for (const RideComfortAtPoint& c : comfort) {
     std::string missing;
     for (RideAxis a : c.missing_axes) missing += (missing.empty() ? "" : ", ") + std::string(to_string(a));
-    t.rows.push_back({point_text(c), fixed(c.nmv_estimate, 2), missing.empty() ? "–" : missing + " (taken as 0)"});
+    t.rows.push_back({point_text(c, outputs), fixed(c.nmv_estimate, 2), missing.empty() ? "–" : missing + " (taken as 0)"});
   }
   return t;
 }
@@ -200,6 +232,21 @@ std::string track_rms_text(const RideResult& r) {
   return text;
 }
 
+// Whether the grid error estimate measured anything: some output has a bounded RMS at some speed.
+// With none (every output unbounded) it is 0 by default, not an estimate, and the reports say so.
+bool grid_error_estimated(const RideResult& r) {
+  for (const RideAtSpeed& at : r.speeds)
+    for (const RideOutputAtSpeed& o : at.outputs)
+      if (!o.unbounded && o.rms > 0.0) return true;
+  return false;
+}
+
+std::string grid_error_text(const RideResult& r) {
+  if (r.rms_only) return "; RMS and weighted RMS only (no grid error estimate)";
+  if (!grid_error_estimated(r)) return "; no grid error estimate (no output has a bounded RMS)";
+  return "; grid error estimate " + significant(100.0 * r.grid_error_estimate, 2) + " % of an RMS";
+}
+
 std::string method_text(const RideResult& r) {
   if (r.frequencies.size() == 0)
     return "No frequency-domain ride: the track is a geometry file, which has no spectrum; the time-domain run below "
@@ -208,8 +255,7 @@ std::string method_text(const RideResult& r) {
          (r.frequencies.size() ? significant(r.frequencies[0], 3) + " to " +
                                      significant(r.frequencies[r.frequencies.size() - 1], 3) + " Hz"
                                : std::string("–")) +
-         (r.rms_only ? std::string("; RMS and weighted RMS only (no grid error estimate)")
-                      : "; grid error estimate " + significant(100.0 * r.grid_error_estimate, 2) + " % of an RMS") +
+         grid_error_text(r) +
          "; friction: " +
          (r.friction_treatment.empty() ? std::string("none in the vehicle") : r.friction_treatment) + track_rms_text(r);
 }
@@ -242,6 +288,16 @@ std::vector<std::string> run_notes(const RideSimulationResult& s) {
   for (const auto& [text, count] : shared)
     notes.push_back(count == 1 ? text : capitalised(text) + " (" + std::to_string(count) + " outputs)");
   return notes;
+}
+
+constexpr const char* kFloorPointNote =
+    "Floor points: named by their outputs, then the body and the point (x, y, z) in m in the vehicle frame (x "
+    "forward, y to the left, z up from the plane of the axles, on the track centre line).";
+
+// Whether the report has an N_MV table, whose floor points kFloorPointNote explains.
+bool has_floor_points(const RideResult& r, const RideSimulationResult* simulated) {
+  return std::any_of(r.speeds.begin(), r.speeds.end(), [](const RideAtSpeed& at) { return !at.comfort.empty(); }) ||
+         (simulated && !simulated->comfort.empty());
 }
 
 constexpr const char* kCheckNote =
@@ -372,7 +428,7 @@ report::Chart nmv_chart(const RideResult& r) {
   if (r.speeds.empty()) return c;
   for (size_t p = 0; p < r.speeds.front().comfort.size(); ++p) {
     report::ChartSeries s;
-    s.label = point_text(r.speeds.front().comfort[p]);
+    s.label = point_text(r.speeds.front().comfort[p], r.outputs);
     for (const RideAtSpeed& at : r.speeds)
       if (p < at.comfort.size()) s.x.push_back(at.speed * kKmh), s.y.push_back(at.comfort[p].nmv_estimate);
     c.series.push_back(s);
@@ -419,7 +475,7 @@ void write_speed_sections(std::ostream& out, const Page& p, Document d) {
     write_table(out, indices_table(r, at), d);
     if (!at.comfort.empty()) {
       out << (md ? "\n" : "");
-      write_table(out, comfort_table(at.comfort, "N_MV (estimate)"), d);
+      write_table(out, comfort_table(at.comfort, r.outputs, "N_MV (estimate)"), d);
     }
   }
 }
@@ -436,7 +492,7 @@ void write_time_domain(std::ostream& out, const Page& p, Document d) {
   write_table(out, simulated_table(s), d);
   if (!s.comfort.empty()) {
     out << (md ? "\n" : "");
-    write_table(out, comfort_table(s.comfort, "N_MV"), d);
+    write_table(out, comfort_table(s.comfort, s.outputs, "N_MV"), d);
   }
   if (d == Document::html)
     for (size_t i = 0; i < s.outputs.size() && i < s.histories.size(); ++i)
@@ -458,6 +514,7 @@ void write_markdown(std::ostream& out, const Page& p) {
   }
   write_speed_sections(out, p, Document::markdown);
   if (!r.speeds.empty() && !r.rms_only) out << "\n" << kEstimateNote << "\n";
+  if (has_floor_points(r, p.simulated)) out << "\n" << kFloorPointNote << "\n";
   for (const std::string& n : r.notes) out << "\n- " << n << "\n";
   write_time_domain(out, p, Document::markdown);
 }
@@ -504,6 +561,7 @@ void write_html(std::ostream& out, const Page& p) {
   }
   write_speed_sections(out, p, Document::html);
   if (!r.speeds.empty() && !r.rms_only) out << "<p class=note>" << html_escape(kEstimateNote) << "</p>\n";
+  if (has_floor_points(r, p.simulated)) out << "<p class=note>" << html_escape(kFloorPointNote) << "</p>\n";
   write_time_domain(out, p, Document::html);
   report::write_html_footer(out, "ride", p.provenance);
 }
@@ -518,15 +576,17 @@ void write_text(std::ostream& out, const Page& p) {
   for (const RideAtSpeed& at : r.speeds) {
     out << "\nAt " << kmh(at.speed) << ":\n";
     write_text_table(out, indices_table(r, at));
-    if (!at.comfort.empty()) write_text_table(out, comfort_table(at.comfort, "N_MV (estimate)"));
+    if (!at.comfort.empty()) write_text_table(out, comfort_table(at.comfort, r.outputs, "N_MV (estimate)"));
   }
-  if (!r.speeds.empty() && !r.rms_only) out << "\n" << kEstimateNote << "\n";
+  const bool estimated = !r.speeds.empty() && !r.rms_only;
+  if (estimated) out << "\n" << kEstimateNote << "\n";
+  if (has_floor_points(r, p.simulated)) out << (estimated ? "" : "\n") << kFloorPointNote << "\n";
   for (const std::string& n : r.notes) out << "Note: " << n << "\n";
   if (p.simulated) {
     out << "\nTime-domain run:\n";
     for (const std::string& n : run_notes(*p.simulated)) out << "  " << n << "\n";
     write_text_table(out, simulated_table(*p.simulated));
-    if (!p.simulated->comfort.empty()) write_text_table(out, comfort_table(p.simulated->comfort, "N_MV"));
+    if (!p.simulated->comfort.empty()) write_text_table(out, comfort_table(p.simulated->comfort, p.simulated->outputs, "N_MV"));
     if (p.checks) {
       out << "FFT checks:\n";
       write_text_table(out, checks_table(*p.checks, *p.simulated));
@@ -565,10 +625,10 @@ void write_csv(std::ostream& out, const RideResult& r) {
       csv.field(csv_heading(o.name + " p95 estimate", "m/s²")).field(o.name + " sperling wz");
   }
   if (!r.speeds.empty())
-    for (const RideComfortAtPoint& c : r.speeds.front().comfort) csv.field("nmv estimate " + point_text(c));
+    for (const RideComfortAtPoint& c : r.speeds.front().comfort) csv.field("nmv estimate " + point_text(c, r.outputs));
   csv.end_row();
   for (const RideAtSpeed& at : r.speeds) {
-    finite_field(csv, at.speed * kKmh);
+    finite_field(csv, kmh_value(at.speed));
     for (size_t i = 0; i < r.outputs.size() && i < at.outputs.size(); ++i) {
       const RideOutputAtSpeed& o = at.outputs[i];
       const bool comfort = has_comfort_indices(r.outputs[i]);
@@ -671,7 +731,7 @@ void write_at_speed(JsonWriter& j, const RideResult& r, const RideAtSpeed& at) {
     j.member("unbounded", false);
     j.member("weighted_rms_m_s2", o.weighted_rms).end_object();
   }
-  j.end_array().member("speed_kmh", at.speed * kKmh).member("speed_m_s", at.speed).end_object();
+  j.end_array().member("speed_kmh", kmh_value(at.speed)).member("speed_m_s", at.speed).end_object();
 }
 
 void write_summary(JsonWriter& j, const AnalysisSummary& s) {
@@ -717,6 +777,7 @@ void write_json(std::ostream& out, const Page& p) {
   write_line_member(out, "friction_treatment", [&](JsonWriter& j) { j.value(r.friction_treatment); });
   // RMS only (rms_only): no grid error estimate, and a member that says so.
   if (r.rms_only) write_line_member(out, "rms_only", [&](JsonWriter& j) { j.value(true); });
+  else if (!grid_error_estimated(r)) write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(nullptr); });
   else write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(r.grid_error_estimate); });
   write_line_member(out, "notes", [&](JsonWriter& j) { j.value(r.notes); });
   write_line_member(out, "track_rms", [&](JsonWriter& j) {

@@ -543,7 +543,13 @@ RideResult ride::solve_ride(const LinearSystem& system, const TrackIrregularityS
     for (const std::string& note : s.notes)
       if (std::find(result.notes.begin(), result.notes.end(), note) == result.notes.end()) result.notes.push_back(note);
   }
-  if (!options.rms_only)
+  // With no bounded RMS at any speed (an all-unbounded ride) nothing was estimated: no check,
+  // rather than one that reads 0.
+  const bool bounded = std::any_of(result.speeds.begin(), result.speeds.end(), [](const RideAtSpeed& at) {
+    return std::any_of(at.outputs.begin(), at.outputs.end(),
+                       [](const RideOutputAtSpeed& o) { return !o.unbounded && o.rms > 0.0; });
+  });
+  if (!options.rms_only && bounded)
     result.summary.checks.push_back({"grid error estimate (largest relative RMS change on halving the grid)",
                                      result.grid_error_estimate, std::numeric_limits<double>::infinity(), true});
   if (p.friction.empty()) {

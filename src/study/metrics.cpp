@@ -35,7 +35,24 @@ bool split_peak(std::string_view metric, std::string_view* dof, std::string_view
   return !dof->empty() && (*quantity == "displacement" || *quantity == "velocity" || *quantity == "acceleration");
 }
 
-constexpr std::string_view kRmsAcceleration = "rms_acceleration:";
+// The ride's RMS metrics, one for each quantity a ride output can be (ride.hpp, unit_of), each
+// in that quantity's SI unit: a force's RMS is never shown as an acceleration.
+struct RmsMetric {
+  std::string_view prefix;
+  const char* unit;       // metric_unit's spelling
+  const char* ride_unit;  // unit_of's spelling
+};
+constexpr RmsMetric kRmsMetrics[] = {{"rms_acceleration:", "m/s^2", "m/s²"},
+                                     {"rms_velocity:", "m/s", "m/s"},
+                                     {"rms_displacement:", "m", "m"},
+                                     {"rms_force:", "N", "N"}};
+
+// The RMS metric `metric` is (with an output named after its prefix), or null.
+const RmsMetric* rms_metric(std::string_view metric) {
+  for (const RmsMetric& m : kRmsMetrics)
+    if (metric.size() > m.prefix.size() && starts_with(metric, m.prefix)) return &m;
+  return nullptr;
+}
 
 // The ride's metrics: the largest Wz or N_MV over outputs (points) and speeds, or the largest RMS
 // of a named output; +∞ where the ride is unbounded; none without a ride.
@@ -50,15 +67,14 @@ std::optional<double> ride_metric(const VariantResult& r, std::string_view metri
       else if (o.max_wz) largest = std::max(largest.value_or(*o.max_wz), *o.max_wz);
     return largest;
   }
-  const std::string_view output = metric.substr(kRmsAcceleration.size());
+  const std::string_view output = metric.substr(rms_metric(metric)->prefix.size());
   for (const auto& o : r.ride)
     if (o.output == output) return o.unbounded ? kUnbounded : o.max_rms;
   return std::nullopt;
 }
 
 bool is_ride_metric(std::string_view metric) {
-  return metric == "max_wz" || metric == "max_nmv" ||
-         (starts_with(metric, kRmsAcceleration) && metric.size() > kRmsAcceleration.size());
+  return metric == "max_wz" || metric == "max_nmv" || rms_metric(metric);
 }
 
 bool is_rotation(std::string_view dof) {
@@ -88,7 +104,7 @@ bool ride_rms_only(const Study& study) {
   const auto see = [&](const std::string& name) {
     const std::string_view metric = canonical(name);
     if (!is_ride_metric(metric)) return;
-    (starts_with(metric, kRmsAcceleration) ? rms : more) = true;
+    (rms_metric(metric) ? rms : more) = true;
   };
   for (const RankingCriterion& c : study.ranking.objective) see(c.metric);
   for (const RankingConstraint& c : study.ranking.constraints) see(c.metric);
@@ -151,7 +167,7 @@ const char* metric_unit(const std::string& name) {
     return "m/s";
   if (starts_with(metric, "period:")) return "s";
   if (starts_with(metric, "dynamic_deflection_ratio") || metric == "max_wz" || metric == "max_nmv") return "";
-  if (starts_with(metric, kRmsAcceleration)) return "m/s^2";
+  if (const RmsMetric* rms = rms_metric(metric)) return rms->unit;
   std::string_view dof, quantity;
   if (split_peak(metric, &dof, &quantity)) {
     const bool rotation = is_rotation(dof);
@@ -164,10 +180,29 @@ const char* metric_unit(const std::string& name) {
 
 namespace study {
 
+bool names_ride(const std::string& metric) { return is_ride_metric(canonical(metric)); }
+
+std::string ride_output_of(const std::string& metric) {
+  const RmsMetric* rms = rms_metric(metric);
+  return rms ? metric.substr(rms->prefix.size()) : std::string();
+}
+
+std::string rms_ride_unit(const std::string& metric) {
+  const RmsMetric* rms = rms_metric(metric);
+  return rms ? rms->ride_unit : "";
+}
+
+std::string rms_metric_for(const std::string& ride_unit) {
+  for (const RmsMetric& m : kRmsMetrics)
+    if (ride_unit == m.ride_unit) return std::string(m.prefix);
+  return "";
+}
+
 DisplayUnit display_unit(const std::string& metric) {
   const char* si = metric_unit(metric);
-  // Critical speeds in km/h, as the book gives them; peak velocities stay in m/s.
-  if (std::string_view(si) == "m/s" && !starts_with(canonical(metric), "peak:")) return {"km/h", 3.6};
+  // Critical speeds in km/h, as the book gives them; peak and RMS velocities stay in m/s.
+  const std::string_view m = canonical(metric);
+  if (std::string_view(si) == "m/s" && !starts_with(m, "peak:") && !rms_metric(m)) return {"km/h", 3.6};
   if (std::string_view(si) == "m") return {"mm", 1000.0};
   return {si, 1.0};
 }
@@ -192,7 +227,8 @@ std::string title(const std::string& metric) {
   if (split_peak(m, &dof, &quantity)) return "peak " + std::string(quantity) + " of " + std::string(dof);
   if (m == "max_wz") return "largest Sperling Wz of the ride";
   if (m == "max_nmv") return "largest N_MV (estimate) of the ride";
-  if (starts_with(m, kRmsAcceleration)) return "largest RMS acceleration at " + m.substr(kRmsAcceleration.size());
+  if (const RmsMetric* rms = rms_metric(m))
+    return (rms == kRmsMetrics ? "largest RMS acceleration at " : "largest RMS of ") + m.substr(rms->prefix.size());
   return metric;
 }
 

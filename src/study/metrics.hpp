@@ -9,6 +9,16 @@
 
 namespace railmodal::study {
 
+/// Whether the metric is one of the ride's (max_wz, max_nmv, rms_<quantity>:<output>).
+bool names_ride(const std::string& metric);
+/// The ride output a metric names ("rms_acceleration:<output>" → the output), or "".
+std::string ride_output_of(const std::string& metric);
+/// The unit (as railmodal::unit_of spells it: "m/s²", "m/s", "m", "N") of the ride outputs an
+/// RMS metric (rms_acceleration:, rms_velocity:, rms_displacement:, rms_force:) may name, or "".
+std::string rms_ride_unit(const std::string& metric);
+/// The RMS metric's prefix for an output of that unit ("N" → "rms_force:"), or "".
+std::string rms_metric_for(const std::string& ride_unit);
+
 /// The unit a report shows a metric in and the factor from SI: km/h, mm, s, ...
 struct DisplayUnit {
   const char* unit;

@@ -92,7 +92,7 @@ TEST(RideReport, CsvHasUnitsInItsHeadsAndOneRowPerSpeed) {
   EXPECT_TRUE(has(head, "\"floor over bogie 1, vertical rms [m/s²]\"")) << head;
   EXPECT_TRUE(has(head, "secondary spring force rms [N]")) << head;
   EXPECT_TRUE(has(head, "p95 estimate [m/s²]")) << head;
-  EXPECT_TRUE(has(head, "nmv estimate body (9.5, 0, 1.2) m")) << head;
+  EXPECT_TRUE(has(head, "nmv estimate floor over bogie 1: body (9.5, 0, 1.2) m")) << head;
   EXPECT_EQ(row1.rfind("100,", 0), 0u) << row1;
   EXPECT_TRUE(has(row1, ",unbounded,")) << row1;
   // As many fields in every row as in the head (quoted commas counted once).
@@ -104,6 +104,78 @@ TEST(RideReport, CsvHasUnitsInItsHeadsAndOneRowPerSpeed) {
   };
   EXPECT_EQ(fields(row1), fields(head));
   EXPECT_EQ(fields(row2), fields(head));
+}
+
+size_t occurrences(const std::string& text, const std::string& part) {
+  size_t n = 0;
+  for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
+// A floor point is named by its outputs ("floor over bogie 1, vertical" and ", lateral" give
+// "floor over bogie 1"), its body and coordinates beside, in the table, the CSV heading and the
+// HTML legend; the frame of the coordinates is said once in each document (the user audit of
+// 2026-11-27 found coordinates alone, and no frame).
+TEST(RideReport, FloorPointsAreNamedByTheirOutputsAndTheFrameSaidOnce) {
+  RideResult r = hand_built();
+  RideOutput lateral = r.outputs[0];
+  lateral.name = "floor over bogie 1, lateral";
+  lateral.axis = RideAxis::lateral;
+  r.outputs.push_back(lateral);
+  for (RideAtSpeed& at : r.speeds) {
+    at.outputs.push_back(at.outputs[0]);
+    at.comfort[0].missing_axes = {RideAxis::longitudinal};
+  }
+  const std::string named = "floor over bogie 1: body (9.5, 0, 1.2) m";
+  const std::string frame = "in the vehicle frame (x forward, y to the left, z up";
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html}) {
+    const std::string text = written(r, f);
+    EXPECT_TRUE(has(text, named)) << text;
+    EXPECT_EQ(occurrences(text, frame), 1u) << text;
+  }
+  EXPECT_TRUE(has(written(r, OutputFormat::csv), "nmv estimate " + named));
+  // Outputs at one point with names of their own: both names.
+  r.outputs[2].name = "sway sensor";
+  EXPECT_TRUE(has(written(r, OutputFormat::table), "floor over bogie 1 / sway sensor: body (9.5, 0, 1.2) m"));
+}
+
+// A speed given as "150 km/h" is 41.666… m/s, and 41.666… × 3.6 is 150.00000000000003 in doubles:
+// the CSV and JSON give the km/h it was written in (the audit found the long form).
+TEST(RideReport, SpeedsInKmhAreTheOnesWritten) {
+  RideResult r = hand_built();
+  const double kmh = 1000.0 / 3600.0;  // m/s a km/h, as the unit reader converts "150 km/h"
+  r.speeds[0].speed = 150 * kmh;
+  r.speeds[1].speed = 175 * kmh;
+  ASSERT_NE(r.speeds[0].speed * 3.6, 150.0);  // the round-off this is about
+  ASSERT_NE(r.speeds[1].speed * 3.6, 175.0);
+  std::istringstream csv(written(r, OutputFormat::csv));
+  std::string head, row1, row2;
+  std::getline(csv, head), std::getline(csv, row1), std::getline(csv, row2);
+  EXPECT_EQ(row1.rfind("150,", 0), 0u) << row1;
+  EXPECT_EQ(row2.rfind("175,", 0), 0u) << row2;
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  EXPECT_EQ(j["speeds"][0]["speed_kmh"].get<double>(), 150.0);
+  EXPECT_EQ(j["speeds"][1]["speed_kmh"].get<double>(), 175.0);
+  EXPECT_EQ(j["speeds"][0]["speed_m_s"].get<double>(), 150 * kmh);  // the exact speed stays
+}
+
+// Every output unbounded at every speed: no RMS to estimate the grid's error from. The reports
+// say so rather than "0 %", and the JSON has null.
+TEST(RideReport, AnAllUnboundedRideHasNoGridErrorEstimate) {
+  RideResult r = hand_built();
+  r.grid_error_estimate = 0.0;
+  for (RideAtSpeed& at : r.speeds) {
+    for (RideOutputAtSpeed& o : at.outputs) o = RideOutputAtSpeed(), o.unbounded = true;
+    at.comfort.clear();
+  }
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html}) {
+    const std::string text = written(r, f);
+    EXPECT_TRUE(has(text, "no grid error estimate (no output has a bounded RMS)")) << text;
+    EXPECT_FALSE(has(text, "grid error estimate 0")) << text;
+  }
+  EXPECT_TRUE(nlohmann::json::parse(written(r, OutputFormat::json))["grid_error_estimate"].is_null());
+  // One bounded output: the estimate, as before.
+  EXPECT_TRUE(has(written(hand_built(), OutputFormat::table), "grid error estimate 0.02 % of an RMS"));
 }
 
 TEST(RideReport, JsonKeysCarryUnitsAndNullsForWhatIsNot) {

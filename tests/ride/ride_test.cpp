@@ -2,6 +2,7 @@
 // point kinematics, modal shares, unbounded answers, friction and the error contract.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <iostream>
@@ -306,6 +307,38 @@ TEST(Ride, UndampedExcitedModeIsUnboundedNotANumber) {
   bool named = false;
   for (const std::string& note : r.notes) named = named || note.find("undamped mode") != std::string::npos;
   EXPECT_TRUE(named);
+}
+
+// Only the end, which the undamped pitch moves: no output has a bounded RMS, so there is nothing
+// for the grid error estimate to measure. The summary has no such check rather than one reading 0
+// (the reports then say "no grid error estimate"; the user audit of 2026-11-27 saw "0 %").
+TEST(Ride, AnAllUnboundedRideHasNoGridErrorCheck) {
+  Vehicle v = body_on_track(12000.0, 60000.0, {{3.0, 0.0}, {-3.0, 0.0}}, 5e5, 0.0);
+  Element damper;
+  damper.name = "centre damper";
+  damper.upper = "body";
+  damper.vertical_damping = 8e3;
+  v.elements.push_back(damper);
+  TrackIrregularitySpectra track;
+  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  RideOptions options;
+  options.speeds = {30.0};
+  const auto grid_check = [](const RideResult& r) {
+    return std::any_of(r.summary.checks.begin(), r.summary.checks.end(),
+                       [](const Check& c) { return c.name.rfind("grid error estimate", 0) == 0; });
+  };
+  const LinearSystem s = assemble(v, DofSet::vertical);
+  const RideOutput end = point_output("end", Eigen::Vector3d(6, 0, 0), RideAxis::vertical, ResponseQuantity::acceleration);
+  const RideResult unbounded = solve_ride(s, track, {end}, options);
+  ASSERT_TRUE(unbounded.speeds[0].outputs[0].unbounded);
+  EXPECT_FALSE(grid_check(unbounded));
+  EXPECT_EQ(unbounded.grid_error_estimate, 0.0);
+  // With the centre's bounded RMS beside it the estimate is made and checked.
+  const RideResult mixed = solve_ride(
+      s, track, {point_output("centre", Eigen::Vector3d(0, 0, 0), RideAxis::vertical, ResponseQuantity::acceleration), end},
+      options);
+  EXPECT_TRUE(grid_check(mixed));
+  EXPECT_GT(mixed.grid_error_estimate, 0.0);
 }
 
 // Cross-level Δz = z_left − z_right rolls the rails by θ = Δz/(2b) about the rail top, r0 below

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "railmodal/railmodal.hpp"
+#include "study/metrics.hpp"
 #include "study/study_files.hpp"
 #include "test_support.hpp"
 
@@ -34,6 +35,24 @@ TEST(RideMetric, NamesUnitsAndTitles) {
   EXPECT_STREQ(metric_unit("max_wz"), "");
   EXPECT_STREQ(metric_unit("max_nmv"), "");
   EXPECT_STREQ(metric_unit("rms_acceleration:floor over bogie 1"), "m/s^2");
+  // Each RMS metric in its quantity's unit: a force in N, never as an acceleration (the audit).
+  EXPECT_TRUE(is_metric("rms_force:spring force"));
+  EXPECT_TRUE(is_metric("rms_displacement:spring deflection"));
+  EXPECT_TRUE(is_metric("rms_velocity:floor over bogie 1"));
+  EXPECT_FALSE(is_metric("rms_force:"));
+  EXPECT_STREQ(metric_unit("rms_force:spring force"), "N");
+  EXPECT_STREQ(metric_unit("rms_displacement:spring deflection"), "m");
+  EXPECT_STREQ(metric_unit("rms_velocity:floor over bogie 1"), "m/s");
+}
+
+// What a table heads each RMS metric with: its output's unit, velocities in m/s (not km/h, the
+// unit of the critical speeds), displacements in mm.
+TEST(RideMetric, RmsHeadingsCarryTheOutputsUnit) {
+  EXPECT_EQ(study::heading("rms_acceleration:floor"), "largest RMS acceleration at floor [m/s^2]");
+  EXPECT_EQ(study::heading("rms_force:spring force"), "largest RMS of spring force [N]");
+  EXPECT_EQ(study::heading("rms_velocity:floor"), "largest RMS of floor [m/s]");
+  EXPECT_EQ(study::heading("rms_displacement:spring deflection"), "largest RMS of spring deflection [mm]");
+  EXPECT_EQ(study::shown("rms_force:spring force", 1500.0), "1500 N");
 }
 
 TEST(RideMetric, Values) {
@@ -42,6 +61,7 @@ TEST(RideMetric, Values) {
   EXPECT_DOUBLE_EQ(*metric_value(r, "max_nmv"), 1.9);
   EXPECT_DOUBLE_EQ(*metric_value(r, "rms_acceleration:floor over bogie 1"), 0.31);
   EXPECT_FALSE(metric_value(r, "rms_acceleration:no such output"));
+  EXPECT_DOUBLE_EQ(*metric_value(r, "rms_force:spring force"), 1500.0);
   // Unbounded: +∞, not a number the ranking could prefer.
   const VariantResult u = ridden(1, "undamped", 0.0, 0.0, 1.0, true);
   EXPECT_TRUE(std::isinf(*metric_value(u, "max_wz")));

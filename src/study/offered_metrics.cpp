@@ -1,0 +1,126 @@
+// Metrics the study's vehicles and scene cannot give, refused when the study is loaded.
+#include "study/offered_metrics.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "railmodal/errors.hpp"
+#include "railmodal/ride.hpp"
+#include "study/metrics.hpp"
+
+namespace railmodal::study {
+namespace {
+
+// Levenshtein distance between two names, to point at the one a misspelt name meant.
+size_t offered_name_distance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+// The ride's outputs by name, in the order the ride reports them: the scene's, or each
+// vehicle's default floor points (the first of each name).
+std::vector<RideOutput> ride_outputs(const OfferedMetrics& offered) {
+  if (!offered.scene->ride->outputs.empty()) return offered.scene->ride->outputs;
+  std::vector<RideOutput> out;
+  std::set<std::string> seen;
+  for (const Vehicle* vehicle : offered.vehicles)
+    for (RideOutput& o : default_ride_outputs(assemble(*vehicle, offered.scene->dofs)))
+      if (seen.insert(o.name).second) out.push_back(std::move(o));
+  return out;
+}
+
+// What a ride output measures, for a message: "a force", "an element's deflection", ...
+std::string quantity_of(const RideOutput& o) {
+  switch (o.kind) {
+    case RideOutput::Kind::element_deflection: return "an element's deflection";
+    case RideOutput::Kind::element_force: return "an element's force";
+    case RideOutput::Kind::wheel_rail_force: return "a wheel-rail force";
+    case RideOutput::Kind::point: break;
+  }
+  return o.quantity == ResponseQuantity::acceleration ? "an acceleration"
+         : o.quantity == ResponseQuantity::velocity   ? "a velocity"
+                                                      : "a displacement";
+}
+
+// What an RMS metric asks for, for a message: "an acceleration", ...
+std::string quantity_of_metric(const std::string& metric) {
+  const std::string unit = rms_ride_unit(metric);
+  return unit == "N" ? "a force" : unit == "m" ? "a displacement" : unit == "m/s" ? "a velocity" : "an acceleration";
+}
+
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "'" : ", '") + n + "'";
+  return list;
+}
+
+}  // namespace
+
+bool names_offered_metrics(const Ranking& ranking) {
+  const auto named = [](const std::string& metric) { return metric == "hunting_speed" || names_ride(metric); };
+  return std::any_of(ranking.objective.begin(), ranking.objective.end(),
+                     [&](const RankingCriterion& c) { return named(c.metric); }) ||
+         std::any_of(ranking.constraints.begin(), ranking.constraints.end(),
+                     [&](const RankingConstraint& c) { return named(c.metric); });
+}
+
+void check_offered_metrics(const Ranking& ranking, const std::string& study_file, const OfferedMetrics& offered) {
+  if (!offered.vehicles_complete) return;
+  const bool ride = offered.scene->ride && offered.scene->irregularity;
+  bool outputs_found = false;
+  std::vector<RideOutput> outputs;
+  const auto check = [&](const std::string& metric, const MetricPlace& written) {
+    const auto refuse = [&](const std::string& why) {
+      throw InputError(study_file, written.place.line, written.place.column, "key '" + written.key + "': " + why);
+    };
+    if (metric == "hunting_speed" && !offered.vehicle_may_gain_wheelsets &&
+        std::none_of(offered.vehicles.begin(), offered.vehicles.end(),
+                     [](const Vehicle* v) { return !v->wheelsets.empty(); })) {
+      std::vector<std::string> names;
+      for (const Vehicle* v : offered.vehicles) names.push_back(v->name);
+      refuse("metric 'hunting_speed' needs wheelsets, and no vehicle of the study has any (" + quoted_list(names) +
+             "): the hunting speed is that of the wheel-rail contact ([[wheelset]] tables, docs/stability.md)");
+    }
+    if (!names_ride(metric) || offered.scene_may_change_ride) return;
+    if (!ride)
+      refuse("metric '" + metric + "' needs a ride, and the scene " + offered.scene_file +
+             " has no [ride] table with a track irregularity source (docs/scenes.md, \"Ride scenes\")");
+    const std::string output = ride_output_of(metric);
+    if (output.empty()) return;
+    if (!outputs_found) outputs = ride_outputs(offered), outputs_found = true;
+    const auto named = std::find_if(outputs.begin(), outputs.end(), [&](const RideOutput& o) { return o.name == output; });
+    if (named != outputs.end()) {
+      const std::string unit = unit_of(*named);
+      if (unit == rms_ride_unit(metric)) return;
+      const std::string instead = rms_metric_for(unit);
+      refuse("ride output '" + output + "' is " + quantity_of(*named) + " (" + unit + "), not " +
+             quantity_of_metric(metric) + (instead.empty() ? "" : ": use '" + instead + output + "', its RMS in " + unit));
+    }
+    std::vector<std::string> names;
+    const std::string* closest = nullptr;
+    size_t distance = output.size() / 8 + 3;  // a few letters off, more in a long name
+    for (const RideOutput& o : outputs) {
+      names.push_back(o.name);
+      const size_t d = offered_name_distance(o.name, output);
+      if (d < distance) distance = d, closest = &o.name;
+    }
+    refuse("no ride output named '" + output + "'" + (closest ? "; did you mean '" + *closest + "'?" : ".") +
+           " The ride's outputs are " + quoted_list(names) +
+           (offered.scene->ride->outputs.empty() ? " (the default floor points: docs/ride.md, \"Using it\")"
+                                                 : " ([[ride.output]] of the scene)"));
+  };
+  for (const RankingConstraint& c : ranking.constraints) check(c.metric, c.written);
+  for (const RankingCriterion& c : ranking.objective) check(c.metric, c.written);
+}
+
+}  // namespace railmodal::study
