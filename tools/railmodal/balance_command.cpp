@@ -11,6 +11,9 @@
 namespace railmodal::cli {
 namespace {
 
+// The formats `balance` writes, its default first.
+const std::vector<std::string> kBalanceFormats{"table", "csv", "json", "markdown", "html"};
+
 struct BalanceCommandOptions {
   std::string locomotive;
   std::string speed;     // "": the file's design_speed
@@ -44,25 +47,12 @@ BalanceOptions balance_options(const BalanceCommandOptions& o) {
   return b;
 }
 
-OutputFormat format_of(const BalanceCommandOptions& o) {
-  if (!o.format.empty()) return *output_format_from_string(o.format);
-  const size_t dot = o.output.rfind('.'), slash = o.output.find_last_of("/\\");
-  if (o.output == "-" || dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return OutputFormat::table;
-  std::string ext = o.output.substr(dot + 1);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == "html" || ext == "htm") return OutputFormat::html;
-  if (ext == "csv") return OutputFormat::csv;
-  if (ext == "json") return OutputFormat::json;
-  if (ext == "md" || ext == "markdown") return OutputFormat::markdown;
-  return OutputFormat::table;
-}
-
 int run(const BalanceCommandOptions& o) {
-  const OutputFormat format = format_of(o);
+  OutputFormat format;
   BalanceOptions options;
   double speed = 0.0;
   try {
+    format = report_format(o.format, o.output, kBalanceFormats);
     options = balance_options(o);
     if (!o.speed.empty()) {
       try {
@@ -117,9 +107,9 @@ std::function<int()> add_balance_command(CLI::App& app) {
       ->check(CLI::IsMember({"book", "least_squares", "minimax"}))
       ->capture_default_str();
   cmd->add_option("--format", options->format,
-                  "Output format: table, csv, json, markdown, html (with plots against crank angle); default: from "
-                  "the -o file's extension (.html, .csv, .json, .md), else table")
-      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
+                  "Output format: table, csv, json, markdown, html (with plots against crank angle); " +
+                      format_rule_help(kBalanceFormats))
+      ->check(CLI::IsMember(kBalanceFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   return [options] { return run(*options); };

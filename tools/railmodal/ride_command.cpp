@@ -10,6 +10,9 @@
 namespace railmodal::cli {
 namespace {
 
+// The formats `ride` writes, its default first.
+const std::vector<std::string> kRideFormats{"table", "csv", "json", "markdown", "html"};
+
 struct RideCommandOptions {
   std::string scene;
   std::string vehicle;  // "": the scene's
@@ -96,10 +99,11 @@ int ride_exit(const std::string& scene_file, const RideResult& result) {
 }
 
 int run(const RideCommandOptions& o) {
-  const OutputFormat format = report_format(o.format, o.output);
   std::string current = o.scene;  // the file an error without a location belongs to
+  OutputFormat format;
   std::vector<double> speeds;
   try {
+    format = report_format(o.format, o.output, kRideFormats);
     speeds = command_line_speeds(o);
   } catch (const UsageError& e) {
     return usage_error("ride", e.what());
@@ -184,9 +188,8 @@ std::function<int()> add_ride_command(CLI::App& app) {
                 "RMS bit for bit. Not for a scene with [ride.simulation] (the time domain)");
   cmd->add_option("--format", options->format,
                   "Output format: table, csv (one row per speed), json, markdown, html (with the input and "
-                  "output spectra and the indices against speed); default: from the -o file's extension "
-                  "(.html, .csv, .json, .md), else table")
-      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
+                  "output spectra and the indices against speed); " + format_rule_help(kRideFormats))
+      ->check(CLI::IsMember(kRideFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   return [options] { return run(*options); };

@@ -18,6 +18,9 @@ constexpr long long kMaxSpeeds = 100000;
 // The design curve solves the whole grid once per conicity.
 constexpr size_t kMaxConicities = 100;
 
+// The formats `stability` writes, its default first.
+const std::vector<std::string> kStabilityFormats{"table", "csv", "json", "markdown", "html"};
+
 struct StabilityOptions {
   std::string vehicle;
   std::string speeds = "10 km/h:500 km/h";
@@ -110,9 +113,10 @@ HuntingOptions hunting_options(const StabilityOptions& o) {
 }
 
 int run(const StabilityOptions& o) {
-  const OutputFormat format = report_format(o.format, o.output);
+  OutputFormat format;
   HuntingOptions options;
   try {
+    format = report_format(o.format, o.output, kStabilityFormats);
     options = hunting_options(o);
   } catch (const UsageError& e) {
     return usage_error("stability", e.what());
@@ -176,9 +180,9 @@ std::function<int()> add_stability_command(CLI::App& app) {
   cmd->add_option(
          "--format", options->format,
          "Output format: table, csv (each oscillatory branch's eigenvalue, Im λ > 0, at every speed; real roots "
-         "left out), json, markdown, html (with the root locus, damping and conicity plots); default: "
-         "from the -o file's extension (.html, .csv, .json, .md), else table")
-      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
+         "left out), json, markdown, html (with the root locus, damping and conicity plots); " +
+             format_rule_help(kStabilityFormats))
+      ->check(CLI::IsMember(kStabilityFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   return [options] { return run(*options); };
