@@ -112,6 +112,7 @@ std::function<int()> add_balance_command(CLI::App& app) {
       ->check(CLI::IsMember(kBalanceFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  add_quiet_flag(*cmd, nullptr);
   return [options] { return run(*options); };
 }
 

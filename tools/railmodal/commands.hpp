@@ -49,6 +49,11 @@ std::function<int()> add_balance_command(CLI::App& app);
 /// Notes on stderr that `old_spelling` still works but is deprecated for `new_spelling`.
 void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling);
 
+/// -q/--quiet, alike on every command (README.md, "Options every command takes"): no progress on
+/// stderr. `quiet` is null for a command that shows no progress: it accepts the flag all the
+/// same, so that a script may pass -q to any command.
+void add_quiet_flag(CLI::App& cmd, bool* quiet);
+
 /// A progress reporter for long runs: shows "name: 42 %" on stderr, only when stderr is a
 /// terminal and only once the run has taken a second; clears the line at 100 %.
 std::function<void(double)> terminal_progress(const std::string& name);

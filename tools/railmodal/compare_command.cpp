@@ -148,7 +148,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
                   "Write only the best K variants of the ranking (table, csv, json); 0: every variant")
       ->check(CLI::Range(0, static_cast<int>(kMaxStudyVariants)))
       ->capture_default_str();
-  cmd->add_flag("-q,--quiet", options->quiet, "No progress on stderr (shown on a terminal for runs over a second)");
+  add_quiet_flag(*cmd, &options->quiet);
   return [options] { return run(*options); };
 }
 

@@ -106,7 +106,7 @@ std::function<int()> add_critical_speed_command(CLI::App& app) {
       ->check(CLI::IsMember(kCriticalSpeedFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
-  cmd->add_flag("-q,--quiet", options->quiet, "No progress on stderr (shown on a terminal for runs over a second)");
+  add_quiet_flag(*cmd, &options->quiet);
   return [options] { return run(*options); };
 }
 

@@ -120,6 +120,7 @@ std::function<int()> add_hunting_command(CLI::App& app) {
       ->check(CLI::IsMember(kHuntingFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  add_quiet_flag(*cmd, nullptr);
   return [options] { return run(*options); };
 }
 

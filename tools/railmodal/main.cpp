@@ -25,6 +25,14 @@ std::function<void(double)> terminal_progress(const std::string& name) {
   };
 }
 
+void add_quiet_flag(CLI::App& cmd, bool* quiet) {
+  const std::string help = "No progress on stderr (shown on a terminal for runs over a second)";
+  if (quiet)
+    cmd.add_flag("-q,--quiet", *quiet, help);
+  else
+    cmd.add_flag("-q,--quiet")->description(help + "; this command shows none: accepted, as by every command");
+}
+
 void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling) {
   std::cerr << "railmodal: note: '" << old_spelling << "' is deprecated and will be removed; write 'railmodal "
             << new_spelling << "'\n";

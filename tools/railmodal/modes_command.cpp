@@ -199,6 +199,7 @@ std::function<int()> add_modes_command(CLI::App& app) {
       ->check(finite_number);
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  add_quiet_flag(*cmd, nullptr);
   return [options, dofs] {
     options->dofs_given = dofs->count() > 0;
     return run(*options);

@@ -181,7 +181,7 @@ std::function<int()> add_ride_command(CLI::App& app) {
   cmd->add_option("--speeds", options->speeds,
                   "Speeds, in place of the scene's: a list \"100 km/h, 160 km/h\" or a range MIN:MAX:STEP such as "
                   "\"100 km/h:200 km/h:20 km/h\" (MIN:MAX alone: 11 speeds)");
-  cmd->add_option("--threads", options->threads, "Threads over speeds (default 1)")->check(CLI::Range(1, 1024));
+  cmd->add_option("--threads", options->threads, "Threads over speeds (default 1: a ride of a few speeds takes milliseconds; threads pay on a long grid)")->check(CLI::Range(1, 1024));
   cmd->add_flag("--rms-only", options->rms_only,
                 "Only each output's RMS and EN 12299 weighted RMS, at about 55 % of the CPU: no Sperling Wz, P95 "
                 "estimate, N_MV, modal shares or grid error estimate (the report says so); the same RMS and weighted "
@@ -192,6 +192,7 @@ std::function<int()> add_ride_command(CLI::App& app) {
       ->check(CLI::IsMember(kRideFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  add_quiet_flag(*cmd, nullptr);
   return [options] { return run(*options); };
 }
 

@@ -132,6 +132,7 @@ std::function<int()> add(CLI::App& app, const std::string& name, const std::stri
                   "refused up front")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  add_quiet_flag(*cmd, nullptr);
   return [options, check] { return run(*options, check); };
 }
 
