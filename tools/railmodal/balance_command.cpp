@@ -55,11 +55,7 @@ int run(const BalanceCommandOptions& o) {
     format = report_format(o.format, o.output, kBalanceFormats);
     options = balance_options(o);
     if (!o.speed.empty()) {
-      try {
-        speed = parse_speed(o.speed);
-      } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--speed: ") + e.what());
-      }
+      speed = command_line_speed(o.speed, "--speed");
       if (!(speed > 0.0) || !std::isfinite(speed)) throw UsageError("--speed must be above zero, got '" + o.speed + "'");
     }
   } catch (const UsageError& e) {
@@ -96,7 +92,7 @@ std::function<int()> add_balance_command(CLI::App& app) {
                   "File (TOML) with a [driving_gear] table, e.g. data/locomotives/su.toml")
       ->required();
   cmd->add_option("--speed", options->speed,
-                  "Speed to balance for (\"100 km/h\", \"20 m/s\", or m/s bare); default: the file's design_speed");
+                  "Speed to balance for, with its unit (\"100 km/h\", \"20 m/s\"); default: the file's design_speed");
   cmd->add_option("--alpha", options->alpha,
                   "Overbalance the coupled wheels up to this overload coefficient (Zhdanov eq. (89a)), as 0.3 or 30%");
   cmd->add_option("--fraction", options->fraction,

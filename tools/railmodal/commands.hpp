@@ -28,6 +28,11 @@ int usage_error(const std::string& command, const std::string& message);
 /// `command` (kUsage). Anything else (an OutputError, an internal error) goes on to main().
 int exit_of_error(const std::string& command, const std::string& blamed);
 
+/// A speed an option gives ("100 km/h", "20 m/s"), in m/s, with its unit as every speed of the
+/// files and options (README.md, "Speeds"): a bare number is a UsageError naming `option`, as
+/// is anything parse_speed refuses.
+double command_line_speed(const std::string& text, const std::string& option);
+
 /// Registers `modes` on the app; the returned function runs it after parsing.
 std::function<int()> add_modes_command(CLI::App& app);
 /// Registers `critical-speed`.

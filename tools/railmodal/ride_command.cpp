@@ -16,7 +16,8 @@ const std::vector<std::string> kRideFormats{"table", "csv", "json", "markdown", 
 struct RideCommandOptions {
   std::string scene;
   std::string vehicle;  // "": the scene's
-  std::string speeds;   // "": the scene's [ride] speeds
+  std::string speeds;   // the scene's [ride] speeds unless speeds_given
+  bool speeds_given = false;  // --speeds "" is refused, not taken for the scene's
   int threads = 1;
   bool rms_only = false;  // RideOptions::rms_only
   std::string format;  // "": from the output file's extension, else table
@@ -25,7 +26,7 @@ struct RideCommandOptions {
 
 // --speeds, read before any file (a usage error, exit 2); empty: not given.
 std::vector<double> command_line_speeds(const RideCommandOptions& o) {
-  if (o.speeds.empty()) return {};
+  if (!o.speeds_given) return {};
   try {
     return parse_speeds(o.speeds);
   } catch (const std::invalid_argument& e) {
@@ -178,7 +179,7 @@ std::function<int()> add_ride_command(CLI::App& app) {
                   "data/scenes/manchester_coach_ore_low.toml")
       ->required();
   cmd->add_option("--vehicle", options->vehicle, "Vehicle file (TOML), in place of the scene's");
-  cmd->add_option("--speeds", options->speeds,
+  CLI::Option* speeds = cmd->add_option("--speeds", options->speeds,
                   "Speeds, in place of the scene's: a list \"100 km/h, 160 km/h\" or a range MIN:MAX:STEP such as "
                   "\"100 km/h:200 km/h:20 km/h\" (MIN:MAX alone: 11 speeds)");
   cmd->add_option("--threads", options->threads, "Threads over speeds (default 1: a ride of a few speeds takes milliseconds; threads pay on a long grid)")->check(CLI::Range(1, 1024));
@@ -193,7 +194,10 @@ std::function<int()> add_ride_command(CLI::App& app) {
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   add_quiet_flag(*cmd, nullptr);
-  return [options] { return run(*options); };
+  return [options, speeds] {
+    options->speeds_given = speeds->count() > 0;
+    return run(*options);
+  };
 }
 
 }  // namespace railmodal::cli

@@ -35,12 +35,7 @@ struct StabilityOptions {
 
 // `why` says what the value must be above zero for.
 double speed_of(const std::string& text, const std::string& option, const std::string& why) {
-  double speed = 0.0;
-  try {
-    speed = parse_speed(text);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(option + ": " + e.what());
-  }
+  const double speed = command_line_speed(text, option);
   if (!(speed > 0.0) || !std::isfinite(speed)) throw UsageError(option + ": " + why + ", got '" + text + "'");
   return speed;
 }
@@ -163,7 +158,7 @@ std::function<int()> add_stability_command(CLI::App& app) {
                   "Vehicle file (TOML) with [wheelset] data, e.g. data/vehicles/wheelset_on_springs.toml")
       ->required();
   cmd->add_option("--speeds", options->speeds,
-                  "Speed range MIN:MAX, each as in the files (\"75 km/h\", \"20 m/s\", or m/s bare); MIN > 0")
+                  "Speed range MIN:MAX, each with its unit as in the files (\"75 km/h\", \"20 m/s\"); MIN > 0")
       ->capture_default_str();
   cmd->add_option("--speed-count", options->speed_count, "Speeds of the uniform grid from MIN to MAX (default 200)")
       ->check(CLI::Range(2, static_cast<int>(kMaxSpeeds)));
