@@ -95,7 +95,9 @@ struct DampedMode {
 
 struct DampedModalResult {
   std::vector<Dof> dofs;
-  /// Ordered as the undamped modes they come from, first-order modes last.
+  /// In ascending damped frequency (modes that do not oscillate, f_d = 0, first); among equal
+  /// frequencies as the undamped modes they come from, first-order modes last.
+  /// DampedMode::undamped_mode names each one's undamped mode.
   std::vector<DampedMode> modes;
   /// The undamped solve (C ignored) the damped modes are matched to.
   ModalResult undamped;

@@ -18,6 +18,8 @@ std::vector<double> read_speeds(TableReader& t) {
     if (speeds.empty()) t.fail("speeds", "give at least one speed");
     for (double s : speeds)
       if (!(s > 0.0)) t.fail("speeds", "a speed must be above zero");
+    if (std::set<double>(speeds.begin(), speeds.end()).size() != speeds.size())
+      t.fail("speeds", "a speed is given twice: give each once");
     return speeds;
   }
   if (!v.is_string())

@@ -1,5 +1,6 @@
 // Speeds as the files write them, for command lines and [ride] tables: one reading of units
 // for files and options.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -80,6 +81,11 @@ std::vector<double> parse_speeds(const std::string& text) {
     start = comma + 1;
   }
   if (speeds.size() > kMaxSpeeds) throw std::invalid_argument("more than 10000 speeds");
+  // The same speed twice would be solved and reported twice: a slip, refused rather than guessed.
+  std::vector<double> sorted = speeds;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    throw std::invalid_argument("a speed is given twice in '" + trimmed(text) + "': give each once");
   return speeds;
 }
 

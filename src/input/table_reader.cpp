@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <optional>
 #include <sstream>
+#include <string>
 #include <system_error>
 
 #include "input/c_locale_chars.hpp"
@@ -18,6 +20,30 @@
 
 namespace railmodal::input {
 namespace {
+
+// A speed written without its unit ("100", 100, 2.5e1): anything but zero, which is zero in
+// every unit.
+bool unitless_speed(const toml::value& v) {
+  if (v.is_integer()) return v.as_integer() != 0;
+  if (v.is_floating()) return v.as_floating() != 0.0;
+  if (!v.is_string()) return false;
+  const char* start = v.as_string().str.c_str();
+  while (*start == ' ' || *start == '\t') ++start;
+  char* end = nullptr;
+  const double value = std::strtod(start, &end);
+  if (end == start) return false;
+  while (*end == ' ' || *end == '\t') ++end;
+  return *end == '\0' && value != 0.0;
+}
+
+// The number a bare speed was written as, for the message's example.
+std::string written_speed_number(const toml::value& v) {
+  if (v.is_integer()) return std::to_string(v.as_integer());
+  if (v.is_floating()) return shortest_text(v.as_floating());
+  const std::string& text = v.as_string().str;
+  const size_t first = text.find_first_not_of(" \t"), last = text.find_last_not_of(" \t");
+  return text.substr(first, last - first + 1);
+}
 
 const char* type_name(const toml::value& v) {
   switch (v.type()) {
@@ -134,6 +160,11 @@ const toml::value& TableReader::at(const std::string& key) {
 }
 
 double TableReader::to_quantity(const toml::value& v, const std::string& key, Quantity kind) const {
+  // A speed needs its unit, in files as on the command line (README.md, "Speeds"): a bare 100
+  // would be 100 m/s, 360 km/h, where the reports speak km/h.
+  if (kind == Quantity::speed && unitless_speed(v))
+    fail(key, "give the speed its unit, such as \"" + written_speed_number(v) + " km/h\" or \"" +
+                  written_speed_number(v) + " m/s\": a bare number is not a speed");
   double value = 0.0;
   if (v.is_integer()) {
     value = static_cast<double>(v.as_integer());

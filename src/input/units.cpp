@@ -191,7 +191,7 @@ const char* example_of(Quantity q) {
     case Quantity::acceleration: return "\"981 cm/s^2\" or 9.81 (m/s²)";
     case Quantity::damping: return "\"20 kN*s/m\" or 2.0e4 (N·s/m)";
     case Quantity::modulus: return "\"2.2e6 kgf/cm^2\" or 2.16e11 (Pa)";
-    case Quantity::speed: return "\"75 km/h\" or 20.8 (m/s)";
+    case Quantity::speed: return "\"75 km/h\" or \"20.8 m/s\"";  // a speed needs its unit (table_reader.cpp)
     case Quantity::rotational_stiffness: return "\"940 kN*m/rad\" or 9.4e5 (N·m/rad)";
     case Quantity::dimensionless: return "a number";
     case Quantity::time: return "\"2 ms\" or 0.002 (s)";

@@ -1,9 +1,11 @@
 // The critical-speed report: Markdown, self-contained HTML with inline SVG, CSV, JSON.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 
 #include "model/element_stiffness.hpp"
 #include "railmodal/critical_speed_report.hpp"
@@ -34,15 +36,61 @@ std::string source_label(const CriticalSpeedStudy& study, int s) {
   return "[" + std::to_string(s + 1) + "] " + study.scene.sources[s]->kind();
 }
 
-std::string amplitude_text(const CriticalSpeedStudy& study, const CriticalSpeed& r) {
+// Round-off shown as what it is, in the Markdown and HTML reports (CSV and JSON keep every
+// value): an amplitude or growth of at most 1e-12 of the largest the report gives the same
+// output and quantity reads 0. A mode that does not move an output (by symmetry: the Su
+// locomotive's frame pitch and its frame yaw) leaves it about 1e-16 of that largest, the
+// round-off of a double-precision solve (9.354e-19 mrad beside 29.49 mrad); 1e-12 keeps four
+// orders of headroom above it and hides nothing a 4-digit table could show of a real
+// response. Per output and quantity, since outputs differ in unit (mm, mrad, m/s²).
+class CriticalSpeedRoundOff {
+ public:
+  explicit CriticalSpeedRoundOff(const CriticalSpeedStudy& st) {
+    for (const CriticalSpeed& r : st.critical_speeds) {
+      if (!r.unbounded) note(r.output, ResponseQuantity::displacement, r.amplitude);
+      note(r.output, ResponseQuantity::displacement, r.growth_per_half_period);
+      for (const ResonanceAtOutput& o : r.outputs) {
+        if (!o.unbounded) note(o.output, o.quantity, o.amplitude);
+        note(o.output, o.quantity, o.growth_per_half_period);
+      }
+    }
+    for (const AmplitudeCurve& c : st.curves)
+      for (const double a : c.amplitudes) note(c.output, c.quantity, a);
+    for (const auto& p : st.peaks) note(st.curves[p.curve].output, st.curves[p.curve].quantity, p.peak.amplitude);
+  }
+  /// `value`, or 0 when it is round-off beside the largest of its output and quantity.
+  double shown(const std::string& output, ResponseQuantity quantity, double value) const {
+    const auto largest = largest_.find(key(output, quantity));
+    return largest != largest_.end() && std::abs(value) <= kRelative * largest->second ? 0.0 : value;
+  }
+
+ private:
+  static constexpr double kRelative = 1e-12;
+  static std::string key(const std::string& output, ResponseQuantity quantity) {
+    return output + " " + to_string(quantity);
+  }
+  void note(const std::string& output, ResponseQuantity quantity, double value) {
+    if (!std::isfinite(value)) return;
+    double& largest = largest_[key(output, quantity)];
+    largest = std::max(largest, std::abs(value));
+  }
+  std::map<std::string, double> largest_;
+};
+
+std::string amplitude_text(const CriticalSpeedStudy& study, const CriticalSpeedRoundOff& round_off,
+                           const CriticalSpeed& r) {
   if (r.unbounded) return "unbounded";
   const Unit u = unit_of(study.system, r.output, ResponseQuantity::displacement);
-  return significant(r.amplitude * u.scale, 4) + " " + u.name;
+  return significant(round_off.shown(r.output, ResponseQuantity::displacement, r.amplitude) * u.scale, 4) + " " +
+         u.name;
 }
 
-std::string growth_text(const CriticalSpeedStudy& study, const CriticalSpeed& r) {
+std::string growth_text(const CriticalSpeedStudy& study, const CriticalSpeedRoundOff& round_off,
+                        const CriticalSpeed& r) {
   const Unit u = unit_of(study.system, r.output, ResponseQuantity::displacement);
-  return significant(r.growth_per_half_period * u.scale, 3) + " " + u.name;
+  return significant(round_off.shown(r.output, ResponseQuantity::displacement, r.growth_per_half_period) * u.scale,
+                     3) +
+         " " + u.name;
 }
 
 std::string friction_text(const CriticalSpeedStudy& study, const CriticalSpeed& r) {
@@ -74,10 +122,11 @@ Table critical_speed_table(const CriticalSpeedStudy& st) {
   Table t{{"speed (km/h)", "source", "k", "mode", "f (Hz)", "output", "amplitude", "undamped growth per half period", "leaf friction"},
           {true, false, true, false, true, false, true, true, false},
           {}};
+  const CriticalSpeedRoundOff round_off(st);
   for (const auto& r : st.critical_speeds)
     t.rows.push_back({fixed(r.speed * kKmh, 1), source_label(st, r.source), std::to_string(r.harmonic),
                       std::to_string(r.mode) + " " + r.mode_name, fixed(r.frequency_hz, 3), r.output,
-                      amplitude_text(st, r), growth_text(st, r), friction_text(st, r)});
+                      amplitude_text(st, round_off, r), growth_text(st, round_off, r), friction_text(st, r)});
   return t;
 }
 
@@ -87,13 +136,16 @@ Table outputs_table(const CriticalSpeedStudy& st) {
   Table t{{"speed (km/h)", "source", "k", "mode", "output", "amplitude", "undamped growth per half period"},
           {true, false, true, false, false, true, true},
           {}};
+  const CriticalSpeedRoundOff round_off(st);
   for (const auto& r : st.critical_speeds)
     for (const ResonanceAtOutput& o : r.outputs) {
       const Unit u = unit_of(st.system, o.output, o.quantity);
+      const double amplitude = round_off.shown(o.output, o.quantity, o.amplitude);
+      const double growth = round_off.shown(o.output, o.quantity, o.growth_per_half_period);
       t.rows.push_back({fixed(r.speed * kKmh, 1), source_label(st, r.source), std::to_string(r.harmonic),
                         std::to_string(r.mode) + " " + r.mode_name, o.output + " " + to_string(o.quantity),
-                        o.unbounded ? "unbounded" : significant(o.amplitude * u.scale, 4) + " " + u.name,
-                        significant(o.growth_per_half_period * u.scale, 3) + " " + u.name});
+                        o.unbounded ? "unbounded" : significant(amplitude * u.scale, 4) + " " + u.name,
+                        significant(growth * u.scale, 3) + " " + u.name});
     }
   return t;
 }

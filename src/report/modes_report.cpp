@@ -91,7 +91,10 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
              "  of oscillation.\n";
       break;
     }
-  out << "\nmode shapes (mass-normalised; m and rad per √kg)\n";
+  // The units the CSV heads its columns with (shape_unit); a matrix model's are its matrices'.
+  const bool vehicle = std::any_of(r.dofs.begin(), r.dofs.end(), [](const Dof& d) { return d.body >= 0; });
+  out << (vehicle ? "\nmode shapes (mass-normalised: translations in 1/sqrt(kg), rotations in rad/(sqrt(kg) m))\n"
+                  : "\nmode shapes (mass-normalised; in the units of the matrices)\n");
   // The DOF column: 18 wide, wider where a label needs it (bogie1.longitudinal is 19), with
   // one space before the first shape column.
   size_t dof_width = 18;

@@ -499,12 +499,20 @@ DampedMode damped_mode(const RootGroup& group, int slot, const ModeContext& c) {
   return mode;
 }
 
-// Ordered as the undamped modes (slot order already), first-order modes by decay rate.
+// In ascending damped frequency f_d, as every mode table is ordered (docs/product.md): damping
+// moves modes by different amounts, so the undamped order is not the damped one (the coach's
+// body bounce, 1.0703 Hz damped, comes after a mode at 1.0597 Hz whose undamped frequency is
+// higher). A mode that does not oscillate (rigid-body, overdamped, critically damped, divergent,
+// first-order) has f_d = 0 and comes first; among equals, the undamped order (slot order
+// already), first-order modes last and by decay rate.
 void order_modes(std::vector<DampedMode>& modes) {
   std::stable_sort(modes.begin(), modes.end(), [](const DampedMode& a, const DampedMode& b) {
     if ((a.undamped_mode == 0) != (b.undamped_mode == 0)) return b.undamped_mode == 0;
     if (a.undamped_mode == 0) return a.decay_rate < b.decay_rate;
     return a.undamped_mode < b.undamped_mode;
+  });
+  std::stable_sort(modes.begin(), modes.end(), [](const DampedMode& a, const DampedMode& b) {
+    return a.damped_frequency_hz.value_or(0.0) < b.damped_frequency_hz.value_or(0.0);
   });
   for (size_t i = 0; i < modes.size(); ++i) modes[i].index = static_cast<int>(i) + 1;
 }

@@ -2,6 +2,7 @@
 // of one damped oscillator through critical damping, massless damped DOFs (first-order
 // states), rigid-body and divergent modes, and an independent state-space solve.
 #include <Eigen/Dense>
+#include <algorithm>
 #include <complex>
 #include <filesystem>
 
@@ -366,6 +367,34 @@ TEST(DampedModes, CoachAgreesWithThePlainStateMatrix) {
       EXPECT_GT(*m.damping_ratio, 0.03) << m.name;
       EXPECT_LT(*m.damping_ratio, 0.6) << m.name;
     }
+}
+
+// The modes in ascending damped frequency, as every mode table (docs/product.md), though the
+// coach's dampers move body upper sway (undamped 1.2259 Hz) below body bounce (undamped 1.0739
+// Hz): indices 1…n in that order, each undamped mode exactly once.
+TEST(DampedModes, OrderedByDampedFrequency) {
+  const auto system = assemble(load_vehicle(data_file("manchester_benchmark_coach.toml")), DofSet::all);
+  const auto r = solve_damped_modes(system);
+  std::vector<int> undamped;
+  double previous = 0.0;
+  for (size_t k = 0; k < r.modes.size(); ++k) {
+    const DampedMode& m = r.modes[k];
+    EXPECT_EQ(m.index, static_cast<int>(k) + 1);
+    ASSERT_TRUE(m.damped_frequency_hz) << m.name;  // every coach mode is underdamped
+    EXPECT_GE(*m.damped_frequency_hz, previous) << m.name;
+    previous = *m.damped_frequency_hz;
+    undamped.push_back(m.undamped_mode);
+  }
+  std::sort(undamped.begin(), undamped.end());
+  for (size_t k = 0; k < undamped.size(); ++k) EXPECT_EQ(undamped[k], static_cast<int>(k) + 1);
+  // The case that made the order matter: a mode whose undamped frequency is higher comes first.
+  const auto at = [&r](const std::string& name) {
+    return std::find_if(r.modes.begin(), r.modes.end(), [&name](const DampedMode& m) { return m.name == name; });
+  };
+  ASSERT_NE(at("body upper sway"), r.modes.end());
+  ASSERT_NE(at("body bounce"), r.modes.end());
+  EXPECT_LT(at("body upper sway")->index, at("body bounce")->index);
+  EXPECT_GT(at("body upper sway")->undamped_mode, at("body bounce")->undamped_mode);
 }
 
 // Invariants over many random models with heavy non-proportional damping (ζ from 0.01 to

@@ -51,10 +51,14 @@ using railmodal::cli::OutputFiles;
 
 struct Options {
   std::string study;
-  std::string format = "table";
+  std::string format;  // "": report_format's rule, as railmodal compare's
+  railmodal::OutputFormat chosen = railmodal::OutputFormat::table;  // by that rule
   std::string output = "-";
   int threads = 0;
 };
+
+// The formats compare writes, its default first (railmodal compare's).
+const std::vector<std::string> kFormats{"table", "csv", "json", "markdown", "html"};
 
 /// The default thread count of a rank: the cores it may run on (its binding), shared with the
 /// other ranks of its node when they are not bound apart, at least 1.
@@ -237,7 +241,7 @@ int merge_and_write(const Options& o, const railmodal::Study& study,
   const Outcome written = guarded([&] {
     std::vector<std::string> paths;
     for (const auto& f : files) paths.push_back(f->path());
-    const railmodal::OutputFormat format = *railmodal::output_format_from_string(o.format);
+    const railmodal::OutputFormat format = o.chosen;
     // The documents end with the input files (railmodal compare's provenance); the others ignore it.
     railmodal::compare_merged(out, study, paths, format, 0, railmodal::provenance_of(railmodal::study_files(study)));
     outputs.commit();
@@ -284,9 +288,10 @@ int main(int argc, char** argv) {
   CLI::App* cmd = app.add_subcommand(
       "compare", "Evaluate and rank the variants of a design study, rank r evaluating shard r+1 of N (docs/studies.md)");
   cmd->add_option("study", o.study, "Study file (TOML), e.g. data/studies/resort_against_fette.toml")->required();
-  cmd->add_option("--format", o.format, "Output format: the ranked table (table, csv, json) or the report (markdown, html)")
-      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}))
-      ->capture_default_str();
+  cmd->add_option("--format", o.format,
+                  "Output format: the ranked table (table, csv, json) or the report (markdown, html); " +
+                      railmodal::cli::format_rule_help(kFormats))
+      ->check(CLI::IsMember(kFormats));
   cmd->add_option("-o,--output", o.output, "Output file, written by rank 0 whole or not at all; - for stdout")
       ->capture_default_str();
   cmd->add_option("--threads", o.threads,
@@ -299,7 +304,11 @@ int main(int argc, char** argv) {
   // Every rank parses the same arguments and reaches the same verdict; rank 0 speaks.
   try {
     app.parse(argc, argv);
+    o.chosen = railmodal::cli::report_format(o.format, o.output, kFormats);
     parsed = true;
+  } catch (const railmodal::cli::UsageError& e) {
+    if (rank == 0) std::cerr << "railmodal-mpi: error: " << e.what() << "\nRun 'railmodal-mpi --help' for usage.\n";
+    code = kUsage;
   } catch (const CLI::CallForHelp&) {
     if (rank == 0) std::cout << app.help();
   } catch (const CLI::CallForAllHelp&) {

@@ -11,6 +11,9 @@
 namespace railmodal::cli {
 namespace {
 
+// The formats `balance` writes, its default first.
+const std::vector<std::string> kBalanceFormats{"table", "csv", "json", "markdown", "html"};
+
 struct BalanceCommandOptions {
   std::string locomotive;
   std::string speed;     // "": the file's design_speed
@@ -44,32 +47,15 @@ BalanceOptions balance_options(const BalanceCommandOptions& o) {
   return b;
 }
 
-OutputFormat format_of(const BalanceCommandOptions& o) {
-  if (!o.format.empty()) return *output_format_from_string(o.format);
-  const size_t dot = o.output.rfind('.'), slash = o.output.find_last_of("/\\");
-  if (o.output == "-" || dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return OutputFormat::table;
-  std::string ext = o.output.substr(dot + 1);
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == "html" || ext == "htm") return OutputFormat::html;
-  if (ext == "csv") return OutputFormat::csv;
-  if (ext == "json") return OutputFormat::json;
-  if (ext == "md" || ext == "markdown") return OutputFormat::markdown;
-  return OutputFormat::table;
-}
-
 int run(const BalanceCommandOptions& o) {
-  const OutputFormat format = format_of(o);
+  OutputFormat format;
   BalanceOptions options;
   double speed = 0.0;
   try {
+    format = report_format(o.format, o.output, kBalanceFormats);
     options = balance_options(o);
     if (!o.speed.empty()) {
-      try {
-        speed = parse_speed(o.speed);
-      } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--speed: ") + e.what());
-      }
+      speed = command_line_speed(o.speed, "--speed");
       if (!(speed > 0.0) || !std::isfinite(speed)) throw UsageError("--speed must be above zero, got '" + o.speed + "'");
     }
   } catch (const UsageError& e) {
@@ -106,7 +92,7 @@ std::function<int()> add_balance_command(CLI::App& app) {
                   "File (TOML) with a [driving_gear] table, e.g. data/locomotives/su.toml")
       ->required();
   cmd->add_option("--speed", options->speed,
-                  "Speed to balance for (\"100 km/h\", \"20 m/s\", or m/s bare); default: the file's design_speed");
+                  "Speed to balance for, with its unit (\"100 km/h\", \"20 m/s\"); default: the file's design_speed");
   cmd->add_option("--alpha", options->alpha,
                   "Overbalance the coupled wheels up to this overload coefficient (Zhdanov eq. (89a)), as 0.3 or 30%");
   cmd->add_option("--fraction", options->fraction,
@@ -117,11 +103,12 @@ std::function<int()> add_balance_command(CLI::App& app) {
       ->check(CLI::IsMember({"book", "least_squares", "minimax"}))
       ->capture_default_str();
   cmd->add_option("--format", options->format,
-                  "Output format: table, csv, json, markdown, html (with plots against crank angle); default: from "
-                  "the -o file's extension (.html, .csv, .json, .md), else table")
-      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
+                  "Output format: table, csv, json, markdown, html (with plots against crank angle); " +
+                      format_rule_help(kBalanceFormats))
+      ->check(CLI::IsMember(kBalanceFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  add_quiet_flag(*cmd, nullptr);
   return [options] { return run(*options); };
 }
 

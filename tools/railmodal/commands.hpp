@@ -28,6 +28,11 @@ int usage_error(const std::string& command, const std::string& message);
 /// `command` (kUsage). Anything else (an OutputError, an internal error) goes on to main().
 int exit_of_error(const std::string& command, const std::string& blamed);
 
+/// A speed an option gives ("100 km/h", "20 m/s"), in m/s, with its unit as every speed of the
+/// files and options (README.md, "Speeds"): a bare number is a UsageError naming `option`, as
+/// is anything parse_speed refuses.
+double command_line_speed(const std::string& text, const std::string& option);
+
 /// Registers `modes` on the app; the returned function runs it after parsing.
 std::function<int()> add_modes_command(CLI::App& app);
 /// Registers `critical-speed`.
@@ -48,6 +53,11 @@ std::function<int()> add_ride_command(CLI::App& app);
 std::function<int()> add_balance_command(CLI::App& app);
 /// Notes on stderr that `old_spelling` still works but is deprecated for `new_spelling`.
 void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling);
+
+/// -q/--quiet, alike on every command (README.md, "Options every command takes"): no progress on
+/// stderr. `quiet` is null for a command that shows no progress: it accepts the flag all the
+/// same, so that a script may pass -q to any command.
+void add_quiet_flag(CLI::App& cmd, bool* quiet);
 
 /// A progress reporter for long runs: shows "name: 42 %" on stderr, only when stderr is a
 /// terminal and only once the run has taken a second; clears the line at 100 %.

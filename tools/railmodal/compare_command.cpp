@@ -14,9 +14,12 @@
 namespace railmodal::cli {
 namespace {
 
+// The formats `compare` writes, its default first.
+const std::vector<std::string> kCompareFormats{"table", "csv", "json", "markdown", "html"};
+
 struct CompareOptions {
   std::string study;
-  std::string format = "table";
+  std::string format;  // "": report_format's rule
   std::string output = "-";
   int threads = 0;
   std::string shard;
@@ -71,13 +74,22 @@ bool read_shard_option(const CompareOptions& o, EvaluationOptions* evaluation) {
 }
 
 int run(const CompareOptions& o) {
-  const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
+  OutputFormat format;
+  try {
+    // A shard is always JSON: neither --format nor -o's extension can ask for another.
+    format = o.shard.empty() ? report_format(o.format, o.output, kCompareFormats)
+                             : report_format(o.format, o.output, {"json"}, "a shard");
+    if (!o.shard.empty() && format != OutputFormat::json)
+      throw UsageError("--shard writes its results as JSON, not " + o.format);
+  } catch (const UsageError& e) {
+    return usage_error("compare", e.what());
+  }
   EvaluationOptions evaluation;
   evaluation.threads = o.threads;
   if (!read_shard_option(o, &evaluation)) return kUsage;
   if (o.top > 0 && (!o.shard.empty() || format == OutputFormat::markdown || format == OutputFormat::html)) {
     std::cerr << "railmodal: error: --top applies to the ranking of a whole study (table, csv, json), not to "
-              << (!o.shard.empty() ? "a shard" : "the " + o.format + " report") << "\n";
+              << (!o.shard.empty() ? "a shard" : std::string("the ") + to_string(format) + " report") << "\n";
     return kUsage;
   }
   try {
@@ -120,9 +132,9 @@ std::function<int()> add_compare_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("compare", "Evaluate and rank the variants of a design study (docs/studies.md)");
   cmd->add_option("study", options->study, "Study file (TOML), e.g. data/studies/resort_against_fette.toml")->required();
   cmd->add_option("--format", options->format,
-                  "Output format: the ranked table (table, csv, json) or the report (markdown, html); a shard is always JSON")
-      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}))
-      ->capture_default_str();
+                  "Output format: the ranked table (table, csv, json) or the report (markdown, html); a shard is "
+                  "always JSON; " + format_rule_help(kCompareFormats))
+      ->check(CLI::IsMember(kCompareFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   cmd->add_option("--threads", options->threads, "Threads evaluating variants; 0: all cores")
@@ -136,7 +148,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
                   "Write only the best K variants of the ranking (table, csv, json); 0: every variant")
       ->check(CLI::Range(0, static_cast<int>(kMaxStudyVariants)))
       ->capture_default_str();
-  cmd->add_flag("-q,--quiet", options->quiet, "No progress on stderr (shown on a terminal for runs over a second)");
+  add_quiet_flag(*cmd, &options->quiet);
   return [options] { return run(*options); };
 }
 

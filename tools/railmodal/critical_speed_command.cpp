@@ -11,11 +11,14 @@
 namespace railmodal::cli {
 namespace {
 
+// The formats `critical-speed` writes, its default first.
+const std::vector<std::string> kCriticalSpeedFormats{"markdown", "html", "csv", "json"};
+
 struct CriticalSpeedCommandOptions {
   std::string argument;  // the scene; in the old spelling (--scene given), the vehicle
   std::string vehicle;
   std::string scene;
-  std::string format = "markdown";
+  std::string format;  // "": report_format's rule
   std::string output = "-";
   bool quiet = false;
 };
@@ -40,9 +43,9 @@ int run(CriticalSpeedCommandOptions o) {
   if (const std::string problem = read_spelling(&o); !problem.empty()) {
     return usage_error("critical-speed", problem);
   }
-  const OutputFormat format = *output_format_from_string(o.format);  // CLI11 checked the word
   std::string current = o.scene;  // the file an error without a location belongs to
   try {
+    const OutputFormat format = report_format(o.format, o.output, kCriticalSpeedFormats);
     OutputFiles outputs;
     std::ostream& out = outputs.open(o.output);
     Scene scene = load_scene(o.scene);
@@ -98,12 +101,12 @@ std::function<int()> add_critical_speed_command(CLI::App& app) {
   cmd->add_option("--vehicle", options->vehicle, "Vehicle file (TOML); default: the scene's 'vehicle'");
   cmd->add_option("--scene", options->scene,
                   "Deprecated spelling: critical-speed [VEHICLE] --scene SCENE (works, with a note on stderr)");
-  cmd->add_option("--format", options->format, "Report format")
-      ->check(CLI::IsMember({"markdown", "html", "csv", "json"}))
-      ->capture_default_str();
+  cmd->add_option("--format", options->format,
+                  "Report format: markdown, html (with plots), csv, json; " + format_rule_help(kCriticalSpeedFormats))
+      ->check(CLI::IsMember(kCriticalSpeedFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
-  cmd->add_flag("-q,--quiet", options->quiet, "No progress on stderr (shown on a terminal for runs over a second)");
+  add_quiet_flag(*cmd, &options->quiet);
   return [options] { return run(*options); };
 }
 

@@ -15,6 +15,9 @@
 namespace railmodal::cli {
 namespace {
 
+// The formats `hunting` writes, its default first.
+const std::vector<std::string> kHuntingFormats{"table", "csv", "json", "markdown", "html"};
+
 struct HuntingCommandOptions {
   std::string scene;
   std::string vehicle;  // "": the scene's
@@ -36,9 +39,9 @@ std::optional<double> linear_critical_speed(const LinearSystem& system, const No
 }
 
 int run(const HuntingCommandOptions& o) {
-  const OutputFormat format = report_format(o.format, o.output);
   std::string current = o.scene;  // the file an error without a location belongs to
   try {
+    const OutputFormat format = report_format(o.format, o.output, kHuntingFormats);
     OutputFiles files;
     std::ostream& out = files.open(o.output);
     Scene scene = load_scene(o.scene);
@@ -113,11 +116,11 @@ std::function<int()> add_hunting_command(CLI::App& app) {
                 "\"Continuation of the limit cycles\")");
   cmd->add_option("--format", options->format,
                   "Output format: table, csv (every half cycle of both ramps: the bifurcation data), json, markdown, "
-                  "html (with the bifurcation plot); default: from the -o file's extension (.html, .csv, .json, "
-                  ".md), else table")
-      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
+                  "html (with the bifurcation plot); " + format_rule_help(kHuntingFormats))
+      ->check(CLI::IsMember(kHuntingFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  add_quiet_flag(*cmd, nullptr);
   return [options] { return run(*options); };
 }
 

@@ -3,10 +3,12 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 #include "commands.hpp"
 #include "output_file.hpp"
+#include "railmodal/input.hpp"
 #include "railmodal/version.hpp"
 
 namespace railmodal::cli {
@@ -23,6 +25,28 @@ std::function<void(double)> terminal_progress(const std::string& name) {
     }
     std::cerr << "\r" << name << ": " << static_cast<int>(100.0 * fraction) << " %" << std::flush;
   };
+}
+
+double command_line_speed(const std::string& text, const std::string& option) {
+  char* end = nullptr;
+  const double number = std::strtod(text.c_str(), &end);
+  const bool bare = end != text.c_str() && text.find_first_not_of(" \t", static_cast<size_t>(end - text.c_str())) == std::string::npos;
+  if (bare && number != 0.0)
+    throw UsageError(option + ": give the speed its unit, such as \"" + text + " km/h\" or \"" + text +
+                     " m/s\": a bare number is not a speed");
+  try {
+    return parse_speed(text);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(option + ": " + e.what());
+  }
+}
+
+void add_quiet_flag(CLI::App& cmd, bool* quiet) {
+  const std::string help = "No progress on stderr (shown on a terminal for runs over a second)";
+  if (quiet)
+    cmd.add_flag("-q,--quiet", *quiet, help);
+  else
+    cmd.add_flag("-q,--quiet")->description(help + "; this command shows none: accepted, as by every command");
 }
 
 void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling) {

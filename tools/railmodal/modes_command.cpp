@@ -16,13 +16,15 @@ namespace {
 
 // The dense solver holds M, K and a few n × n work matrices: 10 000 DOFs is ~4 GB.
 constexpr long long kMaxDenseDofs = 10000;
+// The formats `modes` writes, its default first.
+const std::vector<std::string> kModesFormats{"table", "csv", "json"};
 
 struct ModesOptions {
   std::string file;
   std::string mass, stiffness, damping;
   std::string dofs = "all";
   bool dofs_given = false;
-  std::string format = "table";
+  std::string format;  // "": report_format's rule
   std::string output = "-";
   bool damped = false;  // complex modes of M q̈ + C q̇ + K q = 0 instead of K φ = λ M φ
   std::string solver = "auto";
@@ -115,9 +117,9 @@ int run(const ModesOptions& o) {
         "--damped solves every mode densely; --solver arpack, --modes and --shift apply to undamped modes");
   const bool matrices = o.file.empty();
   const std::string source = matrices ? o.mass + ", " + o.stiffness : o.file;  // for numerical errors
-  const OutputFormat format = *output_format_from_string(o.format);
   const ModalOptions options = modal_options(o);
   try {
+    const OutputFormat format = report_format(o.format, o.output, kModesFormats);
     OutputFiles outputs;
     std::ostream& out = outputs.open(o.output);
     outputs.refuse_inputs({o.file, o.mass, o.stiffness, o.damping});
@@ -177,9 +179,8 @@ std::function<int()> add_modes_command(CLI::App& app) {
              "vehicle symmetric about its centre line")
           ->check(CLI::IsMember({"vertical", "lateral", "all"}))
           ->capture_default_str();
-  cmd->add_option("--format", options->format, "Output format")
-      ->check(CLI::IsMember({"table", "csv", "json"}))
-      ->capture_default_str();
+  cmd->add_option("--format", options->format, "Output format: table, csv, json; " + format_rule_help(kModesFormats))
+      ->check(CLI::IsMember(kModesFormats));
   cmd->add_flag("--damped", options->damped,
                  "Damped modes (viscous dampers in C): damped frequency, damping ratio, stability, "
                  "and the undamped frequency beside them");
@@ -198,6 +199,7 @@ std::function<int()> add_modes_command(CLI::App& app) {
       ->check(finite_number);
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  add_quiet_flag(*cmd, nullptr);
   return [options, dofs] {
     options->dofs_given = dofs->count() > 0;
     return run(*options);

@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
@@ -17,19 +18,43 @@
 
 namespace railmodal::cli {
 
-OutputFormat report_format(const std::string& word, const std::string& output) {
-  if (!word.empty()) return *output_format_from_string(word);
+namespace {
+
+// The format an output file's extension names ("" for none): the same words --format takes.
+std::string extension_format(const std::string& output) {
   const size_t dot = output.rfind('.'), slash = output.find_last_of("/\\");
-  if (output == "-" || dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return OutputFormat::table;
+  if (output == "-" || dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
   std::string ext = output.substr(dot + 1);
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == "html" || ext == "htm") return OutputFormat::html;
-  if (ext == "csv") return OutputFormat::csv;
-  if (ext == "json") return OutputFormat::json;
-  if (ext == "md" || ext == "markdown") return OutputFormat::markdown;
-  return OutputFormat::table;
+  if (ext == "html" || ext == "htm") return "html";
+  if (ext == "csv" || ext == "json") return ext;
+  if (ext == "md" || ext == "markdown") return "markdown";
+  return "";
 }
+
+std::string listed(const std::vector<std::string>& words) {
+  std::string text;
+  for (const std::string& w : words) text += (text.empty() ? "" : ", ") + w;
+  return text;
+}
+
+}  // namespace
+
+OutputFormat report_format(const std::string& word, const std::string& output, const std::vector<std::string>& formats,
+                           const std::string& writer) {
+  if (!word.empty()) return *output_format_from_string(word);
+  const std::string named = extension_format(output);
+  if (named.empty()) return *output_format_from_string(formats.front());
+  if (std::find(formats.begin(), formats.end(), named) == formats.end())
+    throw UsageError("-o " + output + ": its extension asks for " + named + ", and " + writer + " writes " +
+                     listed(formats) + ": give --format or another file name");
+  return *output_format_from_string(named);
+}
+
+std::string format_rule_help(const std::vector<std::string>& formats) {
+  return "default: what the -o file's extension names (.html, .csv, .json, .md), else " + formats.front();
+}
+
 namespace {
 
 namespace fs = std::filesystem;

@@ -11,10 +11,17 @@
 
 namespace railmodal::cli {
 
-/// A report's format: `word` (--format, checked by CLI11) when given; without it, what the
-/// output file's extension says (".html" writes HTML, not the text table into an .html file;
-/// .csv, .json, .md), else the text table.
-OutputFormat report_format(const std::string& word, const std::string& output);
+/// A report's format, by one rule for every command (README.md, "Output formats"): `word`
+/// (--format, checked by CLI11 against `formats`) when given; else the format the -o file's
+/// extension names (.html or .htm, .csv, .json, .md or .markdown), which must be one of
+/// `formats` (else a UsageError: ".html" never gets a text table); else `formats.front()`, the
+/// command's default (standard output, no extension or another one such as .txt).
+/// `writer` names what writes the report in that error ("a shard").
+OutputFormat report_format(const std::string& word, const std::string& output, const std::vector<std::string>& formats,
+                           const std::string& writer = "this command");
+
+/// The end of every --format help: the rule above, with the command's default.
+std::string format_rule_help(const std::vector<std::string>& formats);
 
 /// An output that cannot be written (exit code kOutput) or that the command line names wrongly,
 /// such as an input of the run (kUsage). main() prints the message and exits with the code.

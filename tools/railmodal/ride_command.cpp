@@ -10,10 +10,14 @@
 namespace railmodal::cli {
 namespace {
 
+// The formats `ride` writes, its default first.
+const std::vector<std::string> kRideFormats{"table", "csv", "json", "markdown", "html"};
+
 struct RideCommandOptions {
   std::string scene;
   std::string vehicle;  // "": the scene's
-  std::string speeds;   // "": the scene's [ride] speeds
+  std::string speeds;   // the scene's [ride] speeds unless speeds_given
+  bool speeds_given = false;  // --speeds "" is refused, not taken for the scene's
   int threads = 1;
   bool rms_only = false;  // RideOptions::rms_only
   std::string format;  // "": from the output file's extension, else table
@@ -22,7 +26,7 @@ struct RideCommandOptions {
 
 // --speeds, read before any file (a usage error, exit 2); empty: not given.
 std::vector<double> command_line_speeds(const RideCommandOptions& o) {
-  if (o.speeds.empty()) return {};
+  if (!o.speeds_given) return {};
   try {
     return parse_speeds(o.speeds);
   } catch (const std::invalid_argument& e) {
@@ -96,10 +100,11 @@ int ride_exit(const std::string& scene_file, const RideResult& result) {
 }
 
 int run(const RideCommandOptions& o) {
-  const OutputFormat format = report_format(o.format, o.output);
   std::string current = o.scene;  // the file an error without a location belongs to
+  OutputFormat format;
   std::vector<double> speeds;
   try {
+    format = report_format(o.format, o.output, kRideFormats);
     speeds = command_line_speeds(o);
   } catch (const UsageError& e) {
     return usage_error("ride", e.what());
@@ -174,22 +179,25 @@ std::function<int()> add_ride_command(CLI::App& app) {
                   "data/scenes/manchester_coach_ore_low.toml")
       ->required();
   cmd->add_option("--vehicle", options->vehicle, "Vehicle file (TOML), in place of the scene's");
-  cmd->add_option("--speeds", options->speeds,
+  CLI::Option* speeds = cmd->add_option("--speeds", options->speeds,
                   "Speeds, in place of the scene's: a list \"100 km/h, 160 km/h\" or a range MIN:MAX:STEP such as "
                   "\"100 km/h:200 km/h:20 km/h\" (MIN:MAX alone: 11 speeds)");
-  cmd->add_option("--threads", options->threads, "Threads over speeds (default 1)")->check(CLI::Range(1, 1024));
+  cmd->add_option("--threads", options->threads, "Threads over speeds (default 1: a ride of a few speeds takes milliseconds; threads pay on a long grid)")->check(CLI::Range(1, 1024));
   cmd->add_flag("--rms-only", options->rms_only,
                 "Only each output's RMS and EN 12299 weighted RMS, at about 55 % of the CPU: no Sperling Wz, P95 "
                 "estimate, N_MV, modal shares or grid error estimate (the report says so); the same RMS and weighted "
                 "RMS bit for bit. Not for a scene with [ride.simulation] (the time domain)");
   cmd->add_option("--format", options->format,
                   "Output format: table, csv (one row per speed), json, markdown, html (with the input and "
-                  "output spectra and the indices against speed); default: from the -o file's extension "
-                  "(.html, .csv, .json, .md), else table")
-      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
+                  "output spectra and the indices against speed); " + format_rule_help(kRideFormats))
+      ->check(CLI::IsMember(kRideFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
-  return [options] { return run(*options); };
+  add_quiet_flag(*cmd, nullptr);
+  return [options, speeds] {
+    options->speeds_given = speeds->count() > 0;
+    return run(*options);
+  };
 }
 
 }  // namespace railmodal::cli

@@ -15,7 +15,9 @@ namespace {
 struct SimulateOptions {
   std::string scene;
   std::string vehicle;
-  std::string format;
+  std::vector<std::string> formats;  // what the command writes, its default first
+  std::string format;                 // "": report_format's rule
+  OutputFormat chosen = OutputFormat::csv;  // the run's, by report_format
   std::string output = "-";
   std::string spectra;  // simulate: also the amplitude spectra, to this file
   double memory_limit_gb = kDefaultMemoryLimit / 1e9;  // for what a run must hold whole
@@ -44,7 +46,7 @@ int load(const SimulateOptions& o, Scene* scene, Vehicle* vehicle) {
 // (`spectra`, if asked for), are written from the record of the outputs once it is complete.
 void write_simulation(const SimulateOptions& o, const Scene& scene, const Vehicle& vehicle, std::ostream& text,
                       std::ostream* spectra) {
-  const OutputFormat format = *output_format_from_string(o.format);
+  const OutputFormat format = o.chosen;
   CsvHistoryWriter csv(text, scene);
   std::optional<OutputRecord> record;
   if (format == OutputFormat::json || spectra) record.emplace(scene, spectra != nullptr, o.memory_limit_gb * 1e9);
@@ -68,7 +70,7 @@ std::optional<FftCheckResult> write_run(const SimulateOptions& o, bool check, co
       return std::nullopt;
     }
     FftCheckResult result = fft_check(scene, vehicle, o.memory_limit_gb * 1e9);
-    write_fft_check(text, result, scene, vehicle, *output_format_from_string(o.format),
+    write_fft_check(text, result, scene, vehicle, o.chosen,
                     provenance_of({o.scene, scene.vehicle_file}));
     return result;
   } catch (const std::invalid_argument& e) {
@@ -91,8 +93,9 @@ int check_exit(const std::string& scene_file, const FftCheckResult& result) {
   return kSuccess;
 }
 
-int run(const SimulateOptions& o, bool check) {
+int run(SimulateOptions o, bool check) {
   try {
+    o.chosen = report_format(o.format, o.output, o.formats);
     OutputFiles outputs;
     std::ostream& text = outputs.open(o.output);
     std::ostream* spectra = o.spectra.empty() ? nullptr : &outputs.open(o.spectra);
@@ -111,11 +114,14 @@ int run(const SimulateOptions& o, bool check) {
 std::function<int()> add(CLI::App& app, const std::string& name, const std::string& help, bool check,
                          const std::vector<std::string>& formats) {
   auto options = std::make_shared<SimulateOptions>();
-  options->format = formats.front();
+  options->formats = formats;
   CLI::App* cmd = app.add_subcommand(name, help);
   cmd->add_option("scene", options->scene, "Scene file (TOML) with a [simulation] table")->required();
   cmd->add_option("--vehicle", options->vehicle, "Vehicle file; default: the scene's 'vehicle'");
-  cmd->add_option("--format", options->format, "Output format")->check(CLI::IsMember(formats))->capture_default_str();
+  std::string words;
+  for (const std::string& f : formats) words += (words.empty() ? "" : ", ") + f;
+  cmd->add_option("--format", options->format, "Output format: " + words + "; " + format_rule_help(formats))
+      ->check(CLI::IsMember(formats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
   if (!check)
@@ -126,6 +132,7 @@ std::function<int()> add(CLI::App& app, const std::string& name, const std::stri
                   "refused up front")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  add_quiet_flag(*cmd, nullptr);
   return [options, check] { return run(*options, check); };
 }
 

@@ -18,6 +18,9 @@ constexpr long long kMaxSpeeds = 100000;
 // The design curve solves the whole grid once per conicity.
 constexpr size_t kMaxConicities = 100;
 
+// The formats `stability` writes, its default first.
+const std::vector<std::string> kStabilityFormats{"table", "csv", "json", "markdown", "html"};
+
 struct StabilityOptions {
   std::string vehicle;
   std::string speeds = "10 km/h:500 km/h";
@@ -32,12 +35,7 @@ struct StabilityOptions {
 
 // `why` says what the value must be above zero for.
 double speed_of(const std::string& text, const std::string& option, const std::string& why) {
-  double speed = 0.0;
-  try {
-    speed = parse_speed(text);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(option + ": " + e.what());
-  }
+  const double speed = command_line_speed(text, option);
   if (!(speed > 0.0) || !std::isfinite(speed)) throw UsageError(option + ": " + why + ", got '" + text + "'");
   return speed;
 }
@@ -110,9 +108,10 @@ HuntingOptions hunting_options(const StabilityOptions& o) {
 }
 
 int run(const StabilityOptions& o) {
-  const OutputFormat format = report_format(o.format, o.output);
+  OutputFormat format;
   HuntingOptions options;
   try {
+    format = report_format(o.format, o.output, kStabilityFormats);
     options = hunting_options(o);
   } catch (const UsageError& e) {
     return usage_error("stability", e.what());
@@ -159,7 +158,7 @@ std::function<int()> add_stability_command(CLI::App& app) {
                   "Vehicle file (TOML) with [wheelset] data, e.g. data/vehicles/wheelset_on_springs.toml")
       ->required();
   cmd->add_option("--speeds", options->speeds,
-                  "Speed range MIN:MAX, each as in the files (\"75 km/h\", \"20 m/s\", or m/s bare); MIN > 0")
+                  "Speed range MIN:MAX, each with its unit as in the files (\"75 km/h\", \"20 m/s\"); MIN > 0")
       ->capture_default_str();
   cmd->add_option("--speed-count", options->speed_count, "Speeds of the uniform grid from MIN to MAX (default 200)")
       ->check(CLI::Range(2, static_cast<int>(kMaxSpeeds)));
@@ -176,11 +175,12 @@ std::function<int()> add_stability_command(CLI::App& app) {
   cmd->add_option(
          "--format", options->format,
          "Output format: table, csv (each oscillatory branch's eigenvalue, Im λ > 0, at every speed; real roots "
-         "left out), json, markdown, html (with the root locus, damping and conicity plots); default: "
-         "from the -o file's extension (.html, .csv, .json, .md), else table")
-      ->check(CLI::IsMember({"table", "csv", "json", "markdown", "html"}));
+         "left out), json, markdown, html (with the root locus, damping and conicity plots); " +
+             format_rule_help(kStabilityFormats))
+      ->check(CLI::IsMember(kStabilityFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  add_quiet_flag(*cmd, nullptr);
   return [options] { return run(*options); };
 }
 
