@@ -104,21 +104,40 @@ std::string convergence_text(const Page& p) {
   const NonlinearHuntingResult& r = p.r;
   std::string text = std::string(to_string(r.convergence)) + ": ";
   switch (r.convergence) {
-    case NonlinearConvergence::converged:
+    case NonlinearConvergence::converged: {
       if (p.o.hold_periods == 0)
-        return text + "halving the ramp rate moved the critical speed by less than " + fixed(p.o.tolerance, 3) +
-               " m/s (no holds asked for: the ramp's answer is the result).";
-      return text + "the held critical speed is bracketed to within " + fixed(p.o.tolerance, 3) +
-             " m/s and a hold twice as long keeps its cycle; halving the ramp rate moved the ramp's answer by " +
-             fixed(r.convergence_difference, 3) + " m/s" +
-             (r.convergence_difference <= p.o.tolerance ? "" : ", more than that: the ramp lags, the holds do not") +
+        return text + "halving the ramp rate moved the critical speed by " + kmh_difference(r.convergence_difference) +
+               ", within the tolerance " + kmh_difference(p.o.tolerance) +
+               " (no holds asked for: the ramp's answer is the result).";
+      const HeldCriticalSpeed& h = r.hold;
+      return text + "the held critical speed lies between " + fixed(*h.highest_dying * kKmh, 3) + " km/h (dies) and " +
+             fixed(*h.lowest_surviving * kKmh, 3) + " km/h (survives), a bracket of " +
+             kmh_difference(*h.lowest_surviving - *h.highest_dying) + " within the tolerance " +
+             kmh_difference(p.o.tolerance) + ", and a hold twice as long keeps its cycle; halving the ramp rate moved "
+             "the ramp's answer by " + kmh_difference(r.convergence_difference) +
+             (r.convergence_difference <= p.o.tolerance ? "" : ", more than the tolerance: the ramp lags, the holds do not") +
              ".";
+    }
     case NonlinearConvergence::not_converged:
       return text + nonlinear_hunting_warning(r, p.o) + " Read the figures as an estimate, not an answer.";
     case NonlinearConvergence::not_applicable:
       return text + "both ramp rates agree that there is no critical speed to converge.";
   }
   return text;
+}
+
+// The summary's checks for people: speeds in km/h (the JSON keeps them in m/s, the unit in the
+// name, as every JSON does).
+AnalysisSummary checks_in_kmh(const AnalysisSummary& summary) {
+  AnalysisSummary shown = summary;
+  for (Check& c : shown.checks) {
+    const std::size_t at = c.name.find(", m/s");
+    if (at == std::string::npos) continue;
+    c.name.replace(at, 5, ", km/h");
+    c.value *= kKmh;
+    if (std::isfinite(c.limit)) c.limit *= kKmh;
+  }
+  return shown;
 }
 
 const char* const kEstimate =
@@ -307,7 +326,7 @@ void write_table(std::ostream& out, const Page& p) {
     write_text_table(out, branch_table(*p.branch));
     out << wrapped("continuation checks: " + report::checks_text(p.branch->summary)) << "\n";
   }
-  out << "\n" << wrapped("checks: " + report::checks_text(r.summary)) << "\n"
+  out << "\n" << wrapped("checks: " + report::checks_text(checks_in_kmh(r.summary))) << "\n"
       << wrapped("method: " + r.summary.method)
       << "\n";
 }
@@ -342,7 +361,7 @@ void write_markdown(std::ostream& out, const Page& p) {
     report::write_markdown_table(out, branch_table(*p.branch));
     out << "\nContinuation checks: " << report::checks_text(p.branch->summary) << ".\n\n";
   }
-  out << "## Checks\n\n" << report::checks_text(r.summary)
+  out << "## Checks\n\n" << report::checks_text(checks_in_kmh(r.summary))
       << ".\n\nMethod: " << r.summary.method << ".\n\n";
   out << report::provenance_line("hunting", p.provenance) << "\n";
 }
@@ -442,7 +461,7 @@ void write_html(std::ostream& out, const Page& p) {
     report::write_html_table(out, branch_table(*p.branch));
     out << "<p class=note>Continuation checks: " << html_escape(report::checks_text(p.branch->summary)) << ".</p>\n";
   }
-  out << "<h2>Checks</h2>\n<p>" << html_escape(report::checks_text(r.summary)) << ".</p>\n<p class=note>Method: "
+  out << "<h2>Checks</h2>\n<p>" << html_escape(report::checks_text(checks_in_kmh(r.summary))) << ".</p>\n<p class=note>Method: "
       << html_escape(r.summary.method) << ".</p>\n";
   report::write_html_footer(out, "hunting", p.provenance);
 }
