@@ -154,8 +154,9 @@ const char* const kLinearNote =
     "'railmodal hunting SCENE' computes it from a scene naming the effects (docs/stability.md).";
 
 const char* const kBranchNote =
-    "ζ = −Re λ/|λ|, f = Im λ/2π. Branches are followed from speed to speed by eigenvector continuity (MAC); "
-    "where the lowest MAC falls below the tracking's threshold the branch veers: its name there is uncertain.";
+    "ζ = −Re λ/|λ|, f = Im λ/2π; f \"real\": the pair is two real (overdamped) roots at that speed, ζ 100 %, left "
+    "out of the CSV there. Branches are followed from speed to speed by eigenvector continuity (MAC); where the "
+    "lowest MAC falls below the tracking's threshold the branch veers: its name there is uncertain.";
 
 // ---- tables shared by every format for people ----
 
@@ -209,8 +210,12 @@ Table branches_table(const HuntingResult& r) {
     if (b.damping_ratio.empty()) continue;
     const Least l = least_damping(b), mac = least_continuity(b);
     const bool veer_at = b.veers && mac.at < r.speeds.size();
-    t.rows.push_back({std::to_string(k + 1), b.name, fixed(b.frequency_hz.front(), 3), percent(b.damping_ratio.front()),
-                      fixed(b.frequency_hz.back(), 3), percent(b.damping_ratio.back()), percent(l.value),
+    // A pair that is real there (overdamped) has no frequency: "real", its ζ 100 % by definition.
+    const auto frequency = [&](size_t i) {
+      return b.eigenvalues[i].imag() == 0.0 ? std::string("real") : fixed(b.frequency_hz[i], 3);
+    };
+    t.rows.push_back({std::to_string(k + 1), b.name, frequency(0), percent(b.damping_ratio.front()),
+                      frequency(b.eigenvalues.size() - 1), percent(b.damping_ratio.back()), percent(l.value),
                       l.at < r.speeds.size() ? fixed(r.speeds[l.at] * kKmh, 1) : "—",
                       b.continuity.empty() ? "—" : fixed(mac.value, 3),
                       veer_at ? "VEERS near " + fixed(r.speeds[mac.at] * kKmh, 1) + " km/h" : "continuous"});
@@ -618,6 +623,7 @@ void write_csv(std::ostream& out, const HuntingResult& r) {
   for (const HuntingBranch& b : r.branches) {
     const std::string name = "," + report::csv_field(b.name);
     for (size_t i = 0; i < b.eigenvalues.size() && i < r.speeds.size(); ++i) {
+      if (b.eigenvalues[i].imag() == 0.0) continue;  // a real (overdamped) root there: not an oscillation
       row.clear();
       csv_number(&row, r.speeds[i] * kKmh);
       row.erase(0, 1);  // the first field has no comma before it
