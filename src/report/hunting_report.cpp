@@ -89,9 +89,13 @@ std::string range_text(const HuntingResult& r) {
 
 // The critical speed with its frequency and Klingel's beside it.
 std::string critical_text(const HuntingCriticalSpeed& c) {
-  const std::string motion = c.motion.empty() || c.motion == c.branch ? "" : " (there mostly " + c.motion + ")";
-  return fixed(c.speed * kKmh, 2) + " km/h (" + significant(c.speed, 8) + " m/s), branch '" + c.branch + "'" +
-         motion + ", hunting frequency " + fixed(c.frequency_hz, 3) +
+  // A branch is named after its shape at the lowest speed; at the critical speed it may be
+  // another motion (the coach's 'body lateral/roll' hunts as its wheelsets): that one first.
+  const std::string branch = c.motion.empty() || c.motion == c.branch
+                                 ? "branch '" + c.branch + "'"
+                                 : c.motion + " (on the branch named '" + c.branch + "' after its shape at the lowest speed)";
+  return fixed(c.speed * kKmh, 2) + " km/h (" + significant(c.speed, 8) + " m/s): " + branch +
+         ", hunting frequency " + fixed(c.frequency_hz, 3) +
          " Hz (Klingel's V/Λ there: " + fixed(c.klingel_frequency_hz, 3) + " Hz)";
 }
 
@@ -157,6 +161,9 @@ const char* const kBranchNote =
     "ζ = −Re λ/|λ|, f = Im λ/2π; f \"real\": the pair is two real (overdamped) roots at that speed, ζ 100 %, left "
     "out of the CSV there. Branches are followed from speed to speed by eigenvector continuity (MAC); where the "
     "lowest MAC falls below the tracking's threshold the branch veers: its name there is uncertain.";
+// Under the verdict, for each check that failed: the run exits 6 (docs/stability.md).
+const char* const kFailedNote =
+    "The figures below are not an answer to sign off on: the run exits 6 (docs/stability.md)";
 
 // ---- tables shared by every format for people ----
 
@@ -275,6 +282,8 @@ void write_table(std::ostream& out, const Page& p) {
   out << "speeds " << range_text(r) << "; " << r.dofs.size() << " degrees of freedom; " << r.branches.size()
       << " oscillatory branches\n\n";
   out << wrapped("verdict: " + std::string(to_string(r.verdict)) + ": " + verdict_text(r)) << "\n";
+  for (const std::string& f : report::failed_checks(r.summary))
+    out << wrapped("CHECK FAILED: " + f + ". " + kFailedNote) << "\n";
   if (r.critical) out << "  refined in " << r.critical->evaluations << " eigen-solves\n";
   if (r.damping_threshold) out << wrapped("damping threshold: " + threshold_text(r)) << "\n";
   out << "\nunstable speed intervals:";
@@ -304,6 +313,8 @@ void write_markdown(std::ostream& out, const Page& p) {
   out << "Speeds " << range_text(r) << "; " << r.dofs.size() << " degrees of freedom; " << r.branches.size()
       << " oscillatory branches.\n\n";
   out << "**Verdict: " << to_string(r.verdict) << "**: " << verdict_text(r) << "\n\n";
+  for (const std::string& f : report::failed_checks(r.summary))
+    out << "**Check failed:** " << f << ". " << kFailedNote << "\n\n";
   write_markdown_table(out, verdict_table(r));
   out << "## Unstable speed intervals\n\n";
   if (r.unstable_intervals.empty())
@@ -550,6 +561,8 @@ void write_html(std::ostream& out, const Page& p) {
   const bool stable = r.verdict == HuntingVerdict::stable_throughout;
   out << "<p class=" << (stable ? "ok" : "bad") << "><b>Verdict: " << to_string(r.verdict)
       << "</b>: " << html_escape(verdict_text(r)) << "</p>\n";
+  for (const std::string& f : report::failed_checks(r.summary))
+    out << "<p class=bad><b>Check failed:</b> " << html_escape(f + ". " + kFailedNote) << "</p>\n";
   report::write_html_table(out, verdict_table(r));
   out << "<h2>Unstable speed intervals</h2>\n";
   if (r.unstable_intervals.empty())

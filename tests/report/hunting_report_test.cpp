@@ -256,6 +256,12 @@ TEST(HuntingReport, ChecksAreWrittenInEveryFormatButNotTheTimes) {
   EXPECT_TRUE(has(table, "refinement evaluations (eigenvalues only) 37")) << table;
   EXPECT_TRUE(has(table, "method: QR of the state matrix on 2 thread(s)")) << table;
   EXPECT_TRUE(has(table, "warning: check failed: 1 − minimum branch continuity (MAC) 0.5, limit 0.2")) << table;
+  // ... and said under the verdict, before any table (the audit of 2026-11-27 found it only at the
+  // end of a long report), in every format for people.
+  const size_t said = table.find("CHECK FAILED: 1 − minimum branch continuity (MAC) 0.5, limit 0.2");
+  ASSERT_NE(said, std::string::npos) << table;
+  EXPECT_LT(said, table.find("branches (least damped")) << table;
+  EXPECT_GT(said, table.find("verdict: ")) << table;
   const std::string markdown = written(r, OutputFormat::markdown), html = written(r, OutputFormat::html);
   EXPECT_TRUE(has(markdown, "## Checks")) << markdown;
   EXPECT_TRUE(has(markdown, "2 thread(s)")) << markdown;
