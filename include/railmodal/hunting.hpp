@@ -66,7 +66,7 @@ struct HuntingBranch {
   std::vector<double> frequency_hz;               ///< Im λ/2π per speed
   /// MAC of the eigenvector with the one it was matched to at the previous speed (1 at the
   /// first, 1 where the eigenvalues alone matched every root beyond doubt, so that no
-  /// eigenvectors were computed, and 1 where the pair is real at either end of the step, with no
+  /// eigenvectors were computed, and 1 where the pair is real or nearly (Im λ < 1 % of |λ|) at either end of the step, with no
   /// oscillation to follow: docs/stability.md): below HuntingOptions::continuity_threshold
   /// the branch veers and its identity there is uncertain.
   std::vector<double> continuity;

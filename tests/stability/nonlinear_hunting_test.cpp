@@ -326,9 +326,13 @@ TEST(NonlinearHunting, TooFastRampIsFlaggedAndTheAnswerIsTheLowestSurvivingHold)
   // The answer is never above a hold whose cycle survived, and is itself such a hold.
   bool held_there = false;
   for (const SpeedHold& h : r.hold.holds) {
-    if (h.survives) EXPECT_LE(*r.critical_speed, h.speed) << "a cycle survived a hold at " << h.speed;
+    if (h.survives) {
+      EXPECT_LE(*r.critical_speed, h.speed) << "a cycle survived a hold at " << h.speed;
+    }
     held_there = held_there || (h.survives && h.speed == *r.critical_speed);
-    if (!h.survives && r.hold.highest_dying) EXPECT_LE(h.speed, *r.hold.highest_dying);
+    if (!h.survives && r.hold.highest_dying) {
+      EXPECT_LE(h.speed, *r.hold.highest_dying);
+    }
   }
   EXPECT_TRUE(held_there);
   EXPECT_EQ(*r.critical_speed, *r.hold.lowest_surviving);

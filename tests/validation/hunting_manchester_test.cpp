@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <limits>
 
 #include "railmodal/railmodal.hpp"
@@ -30,11 +31,15 @@ TEST(HuntingManchesterCoach, OverdampedPairsDoNotFailTheTracking) {
   for (const HuntingBranch& b : r.branches) {
     bool real = false;
     for (size_t s = 0; s < b.eigenvalues.size(); ++s) {
-      const bool real_step = b.eigenvalues[s].imag() == 0.0 || (s > 0 && b.eigenvalues[s - 1].imag() == 0.0);
+      const auto overdamped = [](std::complex<double> l) { return std::abs(l.imag()) <= 0.01 * std::abs(l); };
+      const bool real_step = overdamped(b.eigenvalues[s]) || (s > 0 && overdamped(b.eigenvalues[s - 1]));
       real = real || b.eigenvalues[s].imag() == 0.0;
-      if (real_step) EXPECT_EQ(b.continuity[s], 1.0) << b.name << " at " << r.speeds[s];
       // Where it oscillates at both ends the tracking holds (0.971 the least, measured).
-      if (!real_step) EXPECT_GE(b.continuity[s], options.continuity_threshold) << b.name << " at " << r.speeds[s];
+      if (real_step) {
+        EXPECT_EQ(b.continuity[s], 1.0) << b.name << " at " << r.speeds[s];
+      } else {
+        EXPECT_GE(b.continuity[s], options.continuity_threshold) << b.name << " at " << r.speeds[s];
+      }
     }
     real_at_some_speed += real ? 1 : 0;
     EXPECT_FALSE(b.veers) << b.name;
