@@ -65,8 +65,9 @@ struct HuntingBranch {
   std::vector<double> damping_ratio;              ///< ζ = −Re λ/|λ| per speed
   std::vector<double> frequency_hz;               ///< Im λ/2π per speed
   /// MAC of the eigenvector with the one it was matched to at the previous speed (1 at the
-  /// first, and 1 where the eigenvalues alone matched every root beyond doubt, so that no
-  /// eigenvectors were computed: docs/stability.md): below HuntingOptions::continuity_threshold
+  /// first, 1 where the eigenvalues alone matched every root beyond doubt, so that no
+  /// eigenvectors were computed, and 1 where the pair is real or nearly (Im λ < 1 % of |λ|) at either end of the step, with no
+  /// oscillation to follow: docs/stability.md): below HuntingOptions::continuity_threshold
   /// the branch veers and its identity there is uncertain.
   std::vector<double> continuity;
   bool veers = false;  ///< some continuity fell below the threshold

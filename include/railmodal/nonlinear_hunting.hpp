@@ -160,7 +160,9 @@ struct HeldCriticalSpeed {
 /// Whether the critical speed is converged.
 enum class NonlinearConvergence {
   converged,      ///< held critical speed bracketed to within options.tolerance, and the doubled hold survives
-  not_converged,  ///< the rates disagree on the verdict, or the confirmation failed to bracket or confirm
+  /// The rates disagree on the verdict, the confirmation failed to bracket or confirm, or the
+  /// stated ramp ended while its cycle was collapsing (collapsing_at_end_speed).
+  not_converged,
   not_applicable  ///< both rates agree there is no critical speed (none at the start, survives, unbounded)
 };
 const char* to_string(NonlinearConvergence convergence);
@@ -179,9 +181,19 @@ struct NonlinearHuntingResult {
   /// infinite when either has none (then see `convergence`).
   double convergence_difference = 0.0;
   /// 2·V(rate/2) − V(rate), m/s: the ramps' answers extrapolated to a zero rate, if the lag is
-  /// linear in the rate (information: near a fold it is not, and it stays biased upward).
+  /// linear in the rate (information: near a fold it is not, and it stays biased upward). None
+  /// when either ramp is too fast (its answer more than options.hold_margin above a held speed
+  /// whose cycle survives): such a ramp lost the cycle before settling on it, not by a lag.
   std::optional<double> richardson_critical_speed;
   HeldCriticalSpeed hold;  ///< the confirmation by holding the speed (empty when not run)
+  /// The stated ramp is too fast for its answer: it lost the limit cycle more than
+  /// options.hold_margin above a held speed whose cycle survives (the confirmation assumes the
+  /// answer within that margin). The held answer stands only if the holds still bracketed it.
+  bool ramp_too_fast = false;
+  /// The stated ramp's verdict is survives_to_end_speed, but its amplitude was still collapsing
+  /// there (its last whole half cycle fell by more than the 0.5 % a half cycle of a cycle on its
+  /// branch): whether a cycle survives at the end speed is not known. Then not_converged.
+  bool collapsing_at_end_speed = false;
   NonlinearConvergence convergence = NonlinearConvergence::not_applicable;
   bool converged = false;  ///< convergence == converged
   AnalysisSummary summary;

@@ -39,6 +39,11 @@ struct LimitCycleBranch;  // railmodal/limit_cycles.hpp
 /// the branch on the bifurcation plot (stable solid, unstable dashed), its points as rows of the
 /// CSV (ramp "continuation", with four more columns) and a "continuation" object in the JSON;
 /// without it the output is what it was. Throws std::invalid_argument for a format it does not write.
+/// Why `result` is not_converged and what to change in `options` (the ramp rate, the end speed,
+/// the holds), speeds in km/h, as one paragraph; "" when it is converged or not_applicable. The
+/// reports put it under the verdict; `railmodal hunting` also writes it on stderr and exits 6.
+std::string nonlinear_hunting_warning(const NonlinearHuntingResult& result, const NonlinearHuntingOptions& options);
+
 void write_nonlinear_hunting(std::ostream& out, const NonlinearHuntingResult& result,
                              const NonlinearHuntingOptions& options, OutputFormat format, const std::string& vehicle,
                              const Provenance& provenance, std::optional<double> linear_critical_speed = std::nullopt,

@@ -89,9 +89,13 @@ std::string range_text(const HuntingResult& r) {
 
 // The critical speed with its frequency and Klingel's beside it.
 std::string critical_text(const HuntingCriticalSpeed& c) {
-  const std::string motion = c.motion.empty() || c.motion == c.branch ? "" : " (there mostly " + c.motion + ")";
-  return fixed(c.speed * kKmh, 2) + " km/h (" + significant(c.speed, 8) + " m/s), branch '" + c.branch + "'" +
-         motion + ", hunting frequency " + fixed(c.frequency_hz, 3) +
+  // A branch is named after its shape at the lowest speed; at the critical speed it may be
+  // another motion (the coach's 'body lateral/roll' hunts as its wheelsets): that one first.
+  const std::string branch = c.motion.empty() || c.motion == c.branch
+                                 ? "branch '" + c.branch + "'"
+                                 : c.motion + " (on the branch named '" + c.branch + "' after its shape at the lowest speed)";
+  return fixed(c.speed * kKmh, 2) + " km/h (" + significant(c.speed, 8) + " m/s): " + branch +
+         ", hunting frequency " + fixed(c.frequency_hz, 3) +
          " Hz (Klingel's V/Λ there: " + fixed(c.klingel_frequency_hz, 3) + " Hz)";
 }
 
@@ -154,8 +158,12 @@ const char* const kLinearNote =
     "'railmodal hunting SCENE' computes it from a scene naming the effects (docs/stability.md).";
 
 const char* const kBranchNote =
-    "ζ = −Re λ/|λ|, f = Im λ/2π. Branches are followed from speed to speed by eigenvector continuity (MAC); "
-    "where the lowest MAC falls below the tracking's threshold the branch veers: its name there is uncertain.";
+    "ζ = −Re λ/|λ|, f = Im λ/2π; f \"real\": the pair is two real (overdamped) roots at that speed, ζ 100 %, left "
+    "out of the CSV there. Branches are followed from speed to speed by eigenvector continuity (MAC); where the "
+    "lowest MAC falls below the tracking's threshold the branch veers: its name there is uncertain.";
+// Under the verdict, for each check that failed: the run exits 6 (docs/stability.md).
+const char* const kFailedNote =
+    "The figures below are not an answer to sign off on: the run exits 6 (docs/stability.md)";
 
 // ---- tables shared by every format for people ----
 
@@ -209,8 +217,12 @@ Table branches_table(const HuntingResult& r) {
     if (b.damping_ratio.empty()) continue;
     const Least l = least_damping(b), mac = least_continuity(b);
     const bool veer_at = b.veers && mac.at < r.speeds.size();
-    t.rows.push_back({std::to_string(k + 1), b.name, fixed(b.frequency_hz.front(), 3), percent(b.damping_ratio.front()),
-                      fixed(b.frequency_hz.back(), 3), percent(b.damping_ratio.back()), percent(l.value),
+    // A pair that is real there (overdamped) has no frequency: "real", its ζ 100 % by definition.
+    const auto frequency = [&](size_t i) {
+      return b.eigenvalues[i].imag() == 0.0 ? std::string("real") : fixed(b.frequency_hz[i], 3);
+    };
+    t.rows.push_back({std::to_string(k + 1), b.name, frequency(0), percent(b.damping_ratio.front()),
+                      frequency(b.eigenvalues.size() - 1), percent(b.damping_ratio.back()), percent(l.value),
                       l.at < r.speeds.size() ? fixed(r.speeds[l.at] * kKmh, 1) : "—",
                       b.continuity.empty() ? "—" : fixed(mac.value, 3),
                       veer_at ? "VEERS near " + fixed(r.speeds[mac.at] * kKmh, 1) + " km/h" : "continuous"});
@@ -270,6 +282,8 @@ void write_table(std::ostream& out, const Page& p) {
   out << "speeds " << range_text(r) << "; " << r.dofs.size() << " degrees of freedom; " << r.branches.size()
       << " oscillatory branches\n\n";
   out << wrapped("verdict: " + std::string(to_string(r.verdict)) + ": " + verdict_text(r)) << "\n";
+  for (const std::string& f : report::failed_checks(r.summary))
+    out << wrapped("CHECK FAILED: " + f + ". " + kFailedNote) << "\n";
   if (r.critical) out << "  refined in " << r.critical->evaluations << " eigen-solves\n";
   if (r.damping_threshold) out << wrapped("damping threshold: " + threshold_text(r)) << "\n";
   out << "\nunstable speed intervals:";
@@ -299,6 +313,8 @@ void write_markdown(std::ostream& out, const Page& p) {
   out << "Speeds " << range_text(r) << "; " << r.dofs.size() << " degrees of freedom; " << r.branches.size()
       << " oscillatory branches.\n\n";
   out << "**Verdict: " << to_string(r.verdict) << "**: " << verdict_text(r) << "\n\n";
+  for (const std::string& f : report::failed_checks(r.summary))
+    out << "**Check failed:** " << f << ". " << kFailedNote << "\n\n";
   write_markdown_table(out, verdict_table(r));
   out << "## Unstable speed intervals\n\n";
   if (r.unstable_intervals.empty())
@@ -545,6 +561,8 @@ void write_html(std::ostream& out, const Page& p) {
   const bool stable = r.verdict == HuntingVerdict::stable_throughout;
   out << "<p class=" << (stable ? "ok" : "bad") << "><b>Verdict: " << to_string(r.verdict)
       << "</b>: " << html_escape(verdict_text(r)) << "</p>\n";
+  for (const std::string& f : report::failed_checks(r.summary))
+    out << "<p class=bad><b>Check failed:</b> " << html_escape(f + ". " + kFailedNote) << "</p>\n";
   report::write_html_table(out, verdict_table(r));
   out << "<h2>Unstable speed intervals</h2>\n";
   if (r.unstable_intervals.empty())
@@ -618,6 +636,7 @@ void write_csv(std::ostream& out, const HuntingResult& r) {
   for (const HuntingBranch& b : r.branches) {
     const std::string name = "," + report::csv_field(b.name);
     for (size_t i = 0; i < b.eigenvalues.size() && i < r.speeds.size(); ++i) {
+      if (b.eigenvalues[i].imag() == 0.0) continue;  // a real (overdamped) root there: not an oscillation
       row.clear();
       csv_number(&row, r.speeds[i] * kKmh);
       row.erase(0, 1);  // the first field has no comma before it

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "report/csv_writer.hpp"
 #include "report/document_table.hpp"
@@ -78,6 +80,9 @@ std::string verdict_text(const NonlinearHuntingResult& r) {
       return "a hunting limit cycle was established and died out on the way down: the nonlinear critical speed "
              "is the lowest speed at which it survives.";
     case NonlinearHuntingVerdict::survives_to_end_speed:
+      if (r.collapsing_at_end_speed)
+        return "the oscillation had not died out by the end speed, but it was collapsing there: it may not be a "
+               "limit cycle at all (below).";
       return "the limit cycle still lives at the end speed: the nonlinear critical speed is below it (none is "
              "invented). Lower end_speed.";
     case NonlinearHuntingVerdict::no_limit_cycle_at_start:
@@ -92,27 +97,52 @@ std::string verdict_text(const NonlinearHuntingResult& r) {
 
 std::string optional_speed(const std::optional<double>& v) { return v ? speed_text(*v) : "none"; }
 
+// A speed difference in km/h, with three decimals (the tolerance's 0.05 m/s is 0.180 km/h).
+std::string kmh_difference(double speed) { return fixed(speed * kKmh, 3) + " km/h"; }
+
 std::string convergence_text(const Page& p) {
   const NonlinearHuntingResult& r = p.r;
   std::string text = std::string(to_string(r.convergence)) + ": ";
   switch (r.convergence) {
-    case NonlinearConvergence::converged:
+    case NonlinearConvergence::converged: {
       if (p.o.hold_periods == 0)
-        return text + "halving the ramp rate moved the critical speed by less than " + fixed(p.o.tolerance, 3) +
-               " m/s (no holds asked for: the ramp's answer is the result).";
-      return text + "the held critical speed is bracketed to within " + fixed(p.o.tolerance, 3) +
-             " m/s and a hold twice as long keeps its cycle; halving the ramp rate moved the ramp's answer by " +
-             fixed(r.convergence_difference, 3) + " m/s" +
-             (r.convergence_difference <= p.o.tolerance ? "" : ", more than that: the ramp lags, the holds do not") +
+        return text + "halving the ramp rate moved the critical speed by " + kmh_difference(r.convergence_difference) +
+               ", within the tolerance " + kmh_difference(p.o.tolerance) +
+               " (no holds asked for: the ramp's answer is the result).";
+      const HeldCriticalSpeed& h = r.hold;
+      return text + "the held critical speed lies between " + fixed(*h.highest_dying * kKmh, 3) + " km/h (dies) and " +
+             fixed(*h.lowest_surviving * kKmh, 3) + " km/h (survives), a bracket of " +
+             kmh_difference(*h.lowest_surviving - *h.highest_dying) + " within the tolerance " +
+             kmh_difference(p.o.tolerance) + ", and a hold twice as long keeps its cycle; halving the ramp rate moved "
+             "the ramp's answer by " + kmh_difference(r.convergence_difference) +
+             (r.convergence_difference <= p.o.tolerance ? "" : ", more than the tolerance: the ramp lags, the holds do not") +
              ".";
+    }
     case NonlinearConvergence::not_converged:
-      return text + "the two ramp rates disagree, or the holds did not bracket or confirm the answer: read the "
-                    "figure as an estimate (a slower ramp, a longer hold_periods, or a wider hold_margin).";
+      return text + nonlinear_hunting_warning(r, p.o) + " Read the figures as an estimate, not an answer.";
     case NonlinearConvergence::not_applicable:
       return text + "both ramp rates agree that there is no critical speed to converge.";
   }
   return text;
 }
+
+// The summary's checks for people: speeds in km/h (the JSON keeps them in m/s, the unit in the
+// name, as every JSON does).
+AnalysisSummary checks_in_kmh(const AnalysisSummary& summary) {
+  AnalysisSummary shown = summary;
+  for (Check& c : shown.checks) {
+    const std::size_t at = c.name.find(", m/s");
+    if (at == std::string::npos) continue;
+    c.name.replace(at, 5, ", km/h");
+    c.value *= kKmh;
+    if (std::isfinite(c.limit)) c.limit *= kKmh;
+  }
+  return shown;
+}
+
+const char* const kEstimate =
+    "The figures below are an estimate, not an answer: the run exits 6 (docs/stability.md, \"When the answer is "
+    "not converged\").";
 
 const char* const kCannotShow =
     "What the ramp-down shows: the stable hunting limit cycle the disturbance falls onto, followed down in speed to "
@@ -138,7 +168,9 @@ Table result_table(const Page& p) {
   const NonlinearHuntingResult& r = p.r;
   Table t{{"quantity", "value"}, {false, false}, {}};
   t.rows.push_back({"verdict", to_string(r.verdict)});
-  t.rows.push_back({"nonlinear critical speed", optional_speed(r.critical_speed)});
+  const bool estimate = r.convergence == NonlinearConvergence::not_converged && r.critical_speed;
+  t.rows.push_back({"nonlinear critical speed",
+                    optional_speed(r.critical_speed) + (estimate ? ", not converged: an estimate" : "")});
   t.rows.push_back({"limit-cycle amplitude there", r.critical_speed ? mm(r.amplitude) : "none"});
   t.rows.push_back({"watched wheelset", "wheelset " + std::to_string(r.stated_rate.watched_wheelset + 1) +
                                             " of the vehicle file (the one that moves most)"});
@@ -271,6 +303,8 @@ void write_table(std::ostream& out, const Page& p) {
   out << "railmodal hunting: " << p.vehicle << "\n";
   out << wrapped("effects: " + effects_text(p.o)) << "\n" << wrapped("ramp: " + ramp_text(p.o)) << "\n\n";
   out << wrapped("verdict: " + std::string(to_string(r.verdict)) + ": " + verdict_text(r)) << "\n\n";
+  if (r.convergence == NonlinearConvergence::not_converged)
+    out << wrapped("NOT CONVERGED: " + nonlinear_hunting_warning(r, p.o) + " " + kEstimate) << "\n\n";
   write_text_table(out, result_table(p));
   out << "\nramps:\n";
   write_text_table(out, ramps_table(p));
@@ -292,7 +326,8 @@ void write_table(std::ostream& out, const Page& p) {
     write_text_table(out, branch_table(*p.branch));
     out << wrapped("continuation checks: " + report::checks_text(p.branch->summary)) << "\n";
   }
-  out << "\n" << wrapped("checks: " + report::checks_text(r.summary)) << "\n" << wrapped("method: " + r.summary.method)
+  out << "\n" << wrapped("checks: " + report::checks_text(checks_in_kmh(r.summary))) << "\n"
+      << wrapped("method: " + r.summary.method)
       << "\n";
 }
 
@@ -303,6 +338,8 @@ void write_markdown(std::ostream& out, const Page& p) {
   out << "# Nonlinear hunting: " << p.vehicle << "\n\n";
   out << "Effects: " << effects_text(p.o) << ".\n\nRamp: " << ramp_text(p.o) << ".\n\n";
   out << "**Verdict: " << to_string(r.verdict) << "**: " << verdict_text(r) << "\n\n";
+  if (r.convergence == NonlinearConvergence::not_converged)
+    out << "**Not converged**: " << nonlinear_hunting_warning(r, p.o) << " " << kEstimate << "\n\n";
   report::write_markdown_table(out, result_table(p));
   out << "\n## Ramps\n\n";
   report::write_markdown_table(out, ramps_table(p));
@@ -324,7 +361,7 @@ void write_markdown(std::ostream& out, const Page& p) {
     report::write_markdown_table(out, branch_table(*p.branch));
     out << "\nContinuation checks: " << report::checks_text(p.branch->summary) << ".\n\n";
   }
-  out << "## Checks\n\n" << report::checks_text(r.summary)
+  out << "## Checks\n\n" << report::checks_text(checks_in_kmh(r.summary))
       << ".\n\nMethod: " << r.summary.method << ".\n\n";
   out << report::provenance_line("hunting", p.provenance) << "\n";
 }
@@ -399,6 +436,9 @@ void write_html(std::ostream& out, const Page& p) {
   const bool found = r.verdict == NonlinearHuntingVerdict::limit_cycle_dies_out;
   out << "<p class=" << (found ? "ok" : "bad") << "><b>Verdict: " << to_string(r.verdict) << "</b>: "
       << html_escape(verdict_text(r)) << "</p>\n";
+  if (r.convergence == NonlinearConvergence::not_converged)
+    out << "<p class=bad><b>Not converged</b>: " << html_escape(nonlinear_hunting_warning(r, p.o)) << " "
+        << html_escape(kEstimate) << "</p>\n";
   report::write_html_table(out, result_table(p));
   out << "<h2>Bifurcation plot</h2>\n" << report::svg_chart(bifurcation_chart(p));
   out << "<p class=note>One point per half cycle of the watched wheelset's lateral motion: its largest |y| and the "
@@ -421,7 +461,7 @@ void write_html(std::ostream& out, const Page& p) {
     report::write_html_table(out, branch_table(*p.branch));
     out << "<p class=note>Continuation checks: " << html_escape(report::checks_text(p.branch->summary)) << ".</p>\n";
   }
-  out << "<h2>Checks</h2>\n<p>" << html_escape(report::checks_text(r.summary)) << ".</p>\n<p class=note>Method: "
+  out << "<h2>Checks</h2>\n<p>" << html_escape(report::checks_text(checks_in_kmh(r.summary))) << ".</p>\n<p class=note>Method: "
       << html_escape(r.summary.method) << ".</p>\n";
   report::write_html_footer(out, "hunting", p.provenance);
 }
@@ -548,6 +588,51 @@ void write_json(std::ostream& out, const Page& p) {
 }
 
 }  // namespace
+
+std::string nonlinear_hunting_warning(const NonlinearHuntingResult& r, const NonlinearHuntingOptions& o) {
+  if (r.convergence != NonlinearConvergence::not_converged) return "";
+  std::vector<std::string> why;
+  const std::string rate = significant(o.ramp_rate, 4) + " m/s²";
+  const HeldCriticalSpeed& h = r.hold;
+  if (r.stated_rate.verdict != r.halved_rate.verdict)
+    why.push_back(std::string("the ramp at ") + rate + " ends " + to_string(r.stated_rate.verdict) + ", the one at " +
+                  "half of it " + to_string(r.halved_rate.verdict) + ": lower ramp_rate");
+  if (r.ramp_too_fast)
+    why.push_back("the ramp at " + rate + " lost the limit cycle at " + fixed(*r.stated_rate.critical_speed * kKmh, 2) +
+                  " km/h, more than hold_margin (" + fixed(o.hold_margin * kKmh, 2) + " km/h) above a held speed " +
+                  "whose cycle survives (" + fixed(*h.lowest_surviving * kKmh, 2) + " km/h): the ramp is too fast "
+                  "for its answer (it dragged the cycle down before the cycle settled on its branch); lower "
+                  "ramp_rate, to " + significant(o.ramp_rate / 10.0, 4) + " m/s² or less");
+  if (r.collapsing_at_end_speed) {
+    const auto& c = r.stated_rate.curve;
+    const double fall = 1.0 - c[c.size() - 2].amplitude / c[c.size() - 3].amplitude;
+    why.push_back("the ramp at " + rate + " ended while the cycle collapsed (its last whole half cycle fell by " +
+                  fixed(100.0 * fall, 1) + " %, a cycle on its branch by under 0.5 %): whether a cycle survives at " +
+                  "end_speed is not known; lower ramp_rate (a ramp too fast for the cycle to settle drags it down " +
+                  "over a long stretch of speed) or end_speed");
+  }
+  if (r.verdict == NonlinearHuntingVerdict::limit_cycle_dies_out && o.hold_periods > 0) {
+    if (!h.lowest_surviving)
+      why.push_back("no held speed near the ramp's answer kept its cycle: lower ramp_rate or widen hold_margin");
+    else if (!h.highest_dying)
+      why.push_back("every held speed down to " + fixed(*h.lowest_surviving * kKmh, 2) +
+                    " km/h kept its cycle: the held critical speed is below it, not bracketed; widen hold_margin " +
+                    "or lower ramp_rate");
+    else if (*h.lowest_surviving - *h.highest_dying > o.tolerance)
+      why.push_back("the held critical speed is bracketed to " +
+                    kmh_difference(*h.lowest_surviving - *h.highest_dying) + ", over the tolerance " +
+                    kmh_difference(o.tolerance));
+    if (h.lowest_surviving && !h.doubled_hold_survives)
+      why.push_back("the lowest surviving held speed lost its cycle in a hold twice as long: a longer hold_periods");
+  } else if (r.verdict == NonlinearHuntingVerdict::limit_cycle_dies_out) {
+    why.push_back("halving the ramp rate moved its answer by " + kmh_difference(r.convergence_difference) +
+                  ", over the tolerance " + kmh_difference(o.tolerance) + ": lower ramp_rate");
+  }
+  std::string text;
+  for (const std::string& w : why) text += (text.empty() ? "" : "; ") + w;
+  if (text.empty()) text = "the confirmation did not converge";
+  return text + ".";
+}
 
 void write_nonlinear_hunting(std::ostream& out, const NonlinearHuntingResult& result,
                              const NonlinearHuntingOptions& options, OutputFormat format, const std::string& vehicle,

@@ -124,14 +124,19 @@ HeldCriticalSpeed confirm_by_holding(const stability::LateralEquations& e, const
     low_dies = true;
     high = std::min(high + o.hold_margin, top);
   }
+  // Down from the surviving `high` by hold_margin at a time until a hold dies. A hold that
+  // survives becomes `high` at once, so `high` is always the lowest surviving hold, also when the
+  // widening runs out (it was left one step above it, and the answer above a surviving hold).
   for (int widen = 0; !low_dies; ++widen) {
-    if (low < high && !hold(low, o.hold_periods)) {
-      low_dies = true;
-      break;
+    if (low < high) {
+      if (!hold(low, o.hold_periods)) {
+        low_dies = true;
+        break;
+      }
+      high = low;
     }
-    if (widen == 4 || low <= bottom) break;
-    high = low;
-    low = std::max(low - o.hold_margin, bottom);
+    if (widen == 4 || high <= bottom) break;
+    low = std::max(high - o.hold_margin, bottom);
   }
   if (low_dies) {
     while (high - low > o.tolerance) {
@@ -176,8 +181,12 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
   r.summary.checks.push_back({"critical speed change on halving the ramp rate, m/s (reported)",
                               both ? r.convergence_difference : 0.0, std::numeric_limits<double>::infinity(), true});
   if (r.verdict != NonlinearHuntingVerdict::limit_cycle_dies_out) {
-    // No critical speed to converge: the verdict is the answer, if both rates give it.
-    r.convergence = same_verdict ? NonlinearConvergence::not_applicable : NonlinearConvergence::not_converged;
+    // No critical speed to converge: the verdict is the answer, if both rates give it, and if the
+    // stated ramp did not end inside a collapse.
+    r.collapsing_at_end_speed = r.verdict == NonlinearHuntingVerdict::survives_to_end_speed &&
+                                stability::collapsing_at_end(r.stated_rate.curve);
+    r.convergence = same_verdict && !r.collapsing_at_end_speed ? NonlinearConvergence::not_applicable
+                                                               : NonlinearConvergence::not_converged;
   } else if (options.hold_periods == 0) {
     // No confirmation asked for: the ramp's answer stands, converged when halving the rate moves
     // it by less than the tolerance.
@@ -188,6 +197,15 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
     clock.lap("holds of the speed");
     const HeldCriticalSpeed& h = r.hold;
     if (h.lowest_surviving) r.critical_speed = h.lowest_surviving;
+    // A ramp loses the cycle near where holds do, give or take its lag (a fraction of a m/s at a
+    // rate that suits it); one whose answer lies more than hold_margin above a hold whose cycle
+    // survives lost the cycle before it had settled on it (the bundled scene at 5 m/s²: 257 km/h
+    // against a cycle held at 239 km/h): too fast for its answer, and no lag to extrapolate.
+    const auto ahead = [&](const RampDown& d) {
+      return h.lowest_surviving && d.critical_speed && *d.critical_speed > *h.lowest_surviving + options.hold_margin;
+    };
+    r.ramp_too_fast = ahead(r.stated_rate);
+    if (r.ramp_too_fast || ahead(r.halved_rate)) r.richardson_critical_speed.reset();
     const double bracket = h.lowest_surviving && h.highest_dying ? *h.lowest_surviving - *h.highest_dying
                                                                  : std::numeric_limits<double>::infinity();
     r.convergence = same_verdict && bracket <= options.tolerance && h.doubled_hold_survives
@@ -197,10 +215,15 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
         {"bracket of the held critical speed, m/s", bracket, options.tolerance, bracket <= options.tolerance});
     r.summary.checks.push_back({"held critical speed dies in a hold twice as long (count)",
                                 h.doubled_hold_survives ? 0.0 : 1.0, 0.0, h.doubled_hold_survives});
+    if (r.ramp_too_fast)
+      r.summary.checks.push_back({"stated ramp's answer above the lowest surviving hold, m/s",
+                                  *r.stated_rate.critical_speed - *h.lowest_surviving, options.hold_margin, false});
   }
   r.converged = r.convergence == NonlinearConvergence::converged;
   if (r.convergence == NonlinearConvergence::not_converged && !same_verdict)
     r.summary.checks.push_back({"ramp rates with different verdicts (count)", 1.0, 0.0, false});
+  if (r.collapsing_at_end_speed)
+    r.summary.checks.push_back({"stated ramp collapsing at the end speed (count)", 1.0, 0.0, false});
   return r;
 }
 

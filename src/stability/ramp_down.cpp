@@ -220,6 +220,13 @@ RampDown ramp_down(const LateralEquations& e, const NonlinearHuntingOptions& o, 
   return r;
 }
 
+bool collapsing_at_end(const std::vector<LimitCyclePoint>& curve) {
+  // The last point is the unfinished half cycle where the ramp stopped (HalfCycles::finish): its
+  // amplitude is only as large as the motion got before the end, so the two before it are compared.
+  const std::size_t n = curve.size();
+  return n >= 3 && curve[n - 2].amplitude < (1.0 - kOnBranchDecay) * curve[n - 3].amplitude;
+}
+
 SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o, double speed,
                      const Eigen::VectorXd& start, int watched, int periods) {
   SpeedHold hold;

@@ -26,6 +26,10 @@ struct BranchStates {
 RampDown ramp_down(const LateralEquations& equations, const NonlinearHuntingOptions& options, double ramp_rate,
                    BranchStates* branch = nullptr);
 
+/// Whether the last whole half cycle of `curve` (the one before the unfinished last) fell by more
+/// than a cycle on its branch does in a half cycle (0.5 %): the oscillation was collapsing there.
+bool collapsing_at_end(const std::vector<LimitCyclePoint>& curve);
+
 /// Holds `speed` from `start` for `periods` periods (counted as half cycles of the wheelset
 /// `watched`): survives when every half cycle after the first stays at or above half the start's
 /// amplitude; stops early when one falls below it.

@@ -146,6 +146,29 @@ TEST(HuntingReport, ZeroConicityWritesNoInfinity) {
   EXPECT_DOUBLE_EQ(j["contacts"][0]["conicity"].get<double>(), 0.0);
 }
 
+// A branch that is a pair of real (overdamped) roots at some speeds: the CSV holds oscillations
+// only (--help and docs/stability.md say real roots are left out), so those speeds have no row;
+// the branches table says "real" for its frequency there, not "0.000". Before, the coach's CSV had
+// 68 rows with Im λ = 0 and its table "f 0.000 Hz, ζ 100 %" at 10 km/h.
+TEST(HuntingReport, RealRootsOfABranchAreLeftOutOfTheCsvAndSaidInTheTable) {
+  HuntingResult r = test::two_interval_result();
+  HuntingBranch& b = r.branches.front();
+  b.eigenvalues.front() = {-3.0, 0.0};
+  b.frequency_hz.front() = 0.0;
+  b.damping_ratio.front() = 1.0;
+  const std::vector<std::string> lines = lines_of(written(r, OutputFormat::csv));
+  EXPECT_EQ(lines.size(), r.branches.size() * r.speeds.size());  // the heading, less the real row
+  for (size_t k = 1; k < lines.size(); ++k) {
+    std::istringstream row(lines[k]);
+    std::vector<std::string> cells;
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    ASSERT_GE(cells.size(), 4u);
+    EXPECT_NE(std::stod(cells[3]), 0.0) << lines[k];
+  }
+  const std::string table = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(table, "  real  ")) << table;
+}
+
 TEST(HuntingReport, CsvHasOneRowPerBranchAndSpeedWithUnitsInTheHeadings) {
   const HuntingResult r = test::two_interval_result();
   const std::vector<std::string> lines = lines_of(written(r, OutputFormat::csv));
@@ -233,6 +256,12 @@ TEST(HuntingReport, ChecksAreWrittenInEveryFormatButNotTheTimes) {
   EXPECT_TRUE(has(table, "refinement evaluations (eigenvalues only) 37")) << table;
   EXPECT_TRUE(has(table, "method: QR of the state matrix on 2 thread(s)")) << table;
   EXPECT_TRUE(has(table, "warning: check failed: 1 − minimum branch continuity (MAC) 0.5, limit 0.2")) << table;
+  // ... and said under the verdict, before any table (the audit of 2026-11-27 found it only at the
+  // end of a long report), in every format for people.
+  const size_t said = table.find("CHECK FAILED: 1 − minimum branch continuity (MAC) 0.5, limit 0.2");
+  ASSERT_NE(said, std::string::npos) << table;
+  EXPECT_LT(said, table.find("branches (least damped")) << table;
+  EXPECT_GT(said, table.find("verdict: ")) << table;
   const std::string markdown = written(r, OutputFormat::markdown), html = written(r, OutputFormat::html);
   EXPECT_TRUE(has(markdown, "## Checks")) << markdown;
   EXPECT_TRUE(has(markdown, "2 thread(s)")) << markdown;

@@ -87,9 +87,13 @@ int run(const HuntingCommandOptions& o) {
     if (branch && branch->end == ContinuationEnd::newton_failed)
       std::cerr << o.scene << ": warning: the continuation of the limit cycles stopped where its corrector failed: "
                 << branch->failure << "\n";
-    if (result.convergence == NonlinearConvergence::not_converged)
-      std::cerr << o.scene << ": warning: the nonlinear critical speed is not converged (see the report's "
-                << "convergence section)\n";
+    // A result that did not converge is written (its figures show what went wrong) but is not an
+    // answer: exit 6, as a ride whose checks failed, with the reason and what to change on stderr.
+    if (result.convergence == NonlinearConvergence::not_converged) {
+      std::cerr << o.scene << ": hunting check FAILED: the nonlinear critical speed is not converged: "
+                << nonlinear_hunting_warning(result, options) << " The report is written as an estimate.\n";
+      return kCheckFailed;
+    }
     return kSuccess;
   } catch (...) {
     return exit_of_error("hunting", current);

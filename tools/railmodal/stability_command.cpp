@@ -140,7 +140,16 @@ int run(const StabilityOptions& o) {
     }
     write_hunting_stability(out, result, format, vehicle.name, provenance_of({o.vehicle}));
     outputs.commit();
-    return kSuccess;
+    // A run whose own checks failed (the eigen residual, the branches' tracking) is written, its
+    // report saying so under the verdict, then exits 6 with the checks on stderr, as `ride` does.
+    bool failed = false;
+    for (const Check& c : result.summary.checks)
+      if (!c.passed) {
+        std::cerr << o.vehicle << ": stability check FAILED: " << c.name << " = " << c.value << " above " << c.limit
+                  << "\n";
+        failed = true;
+      }
+    return failed ? kCheckFailed : kSuccess;
   } catch (...) {
     return exit_of_error("stability", o.vehicle);
   }
