@@ -270,10 +270,12 @@ TEST(DampedModes, MasslessDamperNodeIsFirstOrder) {
   EXPECT_EQ(r.first_order, std::vector<std::string>{"p2.bounce"});
   ASSERT_EQ(eigenvalue_count(r), 3);
   ASSERT_EQ(r.modes.size(), 2u);
-  EXPECT_EQ(r.modes[0].undamped_mode, 1);
-  EXPECT_EQ(r.modes[1].kind, DampedModeKind::first_order);
-  EXPECT_EQ(r.modes[1].name, "p2.bounce first-order");
-  EXPECT_EQ(r.modes[1].undamped_mode, 0);
+  // In ascending damped frequency: the first-order mode, which does not oscillate (f_d = 0),
+  // first (damped_modal.cpp, order_modes).
+  EXPECT_EQ(r.modes[0].kind, DampedModeKind::first_order);
+  EXPECT_EQ(r.modes[0].name, "p2.bounce first-order");
+  EXPECT_EQ(r.modes[0].undamped_mode, 0);
+  EXPECT_EQ(r.modes[1].undamped_mode, 1);
   EXPECT_LT(r.max_residual, 1e-12);
   // Each root makes the cubic vanish to round-off of its terms.
   for (const auto& mode : r.modes)
@@ -285,7 +287,7 @@ TEST(DampedModes, MasslessDamperNodeIsFirstOrder) {
       EXPECT_LT(std::abs(sum), 1e-13 * size) << l;
     }
   // The static-follower node moves with the others in the shape: p1 between x and p2.
-  const auto& s = r.modes[1].shape;
+  const auto& s = r.modes[0].shape;
   EXPECT_NEAR(std::abs(s(1) - (k2a * s(0) + k2b * s(2)) / (k2a + k2b)), 0.0, 1e-12 * s.cwiseAbs().maxCoeff());
 }
 
@@ -306,10 +308,11 @@ TEST(DampedModes, RayleighDampingOnMasslessNodes) {
   EXPECT_EQ(r.first_order.size(), 2u);
   ASSERT_EQ(r.modes.size(), 3u);
   const double zeta = alpha / (2.0 * w) + beta * w / 2.0;
-  EXPECT_EQ(r.modes[0].kind, DampedModeKind::underdamped);
-  EXPECT_NEAR(*r.modes[0].damping_ratio, zeta, 1e-10 * zeta);
-  EXPECT_NEAR(*r.modes[0].natural_frequency_hz * 2.0 * kPi, w, 1e-10 * w);
-  for (int i = 1; i < 3; ++i) {
+  // The two first-order modes (f_d = 0) first, in ascending damped frequency.
+  EXPECT_EQ(r.modes[2].kind, DampedModeKind::underdamped);
+  EXPECT_NEAR(*r.modes[2].damping_ratio, zeta, 1e-10 * zeta);
+  EXPECT_NEAR(*r.modes[2].natural_frequency_hz * 2.0 * kPi, w, 1e-10 * w);
+  for (int i = 0; i < 2; ++i) {
     EXPECT_EQ(r.modes[i].kind, DampedModeKind::first_order);
     EXPECT_NEAR(r.modes[i].eigenvalues[0].real(), -1.0 / beta, 1e-10 / beta);
   }
