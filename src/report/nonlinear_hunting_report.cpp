@@ -558,6 +558,7 @@ void write_json(std::ostream& out, const Page& p) {
   const NonlinearHuntingResult& r = p.r;
   JsonWriter j(out);
   j.begin_object().member("amplitude_m", if_found(r.critical_speed, r.amplitude)).member("analysis", "nonlinear");
+  j.member("collapsing_at_end_speed", r.collapsing_at_end_speed);
   if (p.branch) {
     j.key("continuation");
     write_branch(j, *p.branch);
@@ -573,8 +574,13 @@ void write_json(std::ostream& out, const Page& p) {
         .member("survives", h.survives).end_object();
   j.end_array().member("lowest_surviving_m_s", r.hold.lowest_surviving).end_object();
   j.member("linear_critical_speed_kmh", kmh(p.linear)).member("linear_critical_speed_m_s", p.linear);
+  // Why the answer is an estimate (the text under the verdict), null when it is not one.
+  j.key("not_converged_reason");
+  if (r.convergence == NonlinearConvergence::not_converged) j.value(nonlinear_hunting_warning(r, p.o));
+  else j.value(nullptr);
   j.key("options");
   write_options(j, p.o);
+  j.member("ramp_too_fast", r.ramp_too_fast);
   j.key("ramps").begin_array();
   write_ramp(j, r.stated_rate);
   write_ramp(j, r.halved_rate);

@@ -215,9 +215,15 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
         {"bracket of the held critical speed, m/s", bracket, options.tolerance, bracket <= options.tolerance});
     r.summary.checks.push_back({"held critical speed dies in a hold twice as long (count)",
                                 h.doubled_hold_survives ? 0.0 : 1.0, 0.0, h.doubled_hold_survives});
-    if (r.ramp_too_fast)
-      r.summary.checks.push_back({"stated ramp's answer above the lowest surviving hold, m/s",
-                                  *r.stated_rate.critical_speed - *h.lowest_surviving, options.hold_margin, false});
+    // Holds that bracket the answer make it (the ramp only says where to hold): the ramp's lead
+    // is then reported, not failed; without the bracket it is why the answer is an estimate.
+    if (r.ramp_too_fast) {
+      const bool held = r.convergence == NonlinearConvergence::converged;
+      r.summary.checks.push_back({held ? "stated ramp's answer above the lowest surviving hold, m/s (reported)"
+                                       : "stated ramp's answer above the lowest surviving hold, m/s",
+                                  *r.stated_rate.critical_speed - *h.lowest_surviving,
+                                  held ? std::numeric_limits<double>::infinity() : options.hold_margin, held});
+    }
   }
   r.converged = r.convergence == NonlinearConvergence::converged;
   if (r.convergence == NonlinearConvergence::not_converged && !same_verdict)
