@@ -270,7 +270,7 @@ InitialCondition read_initial_condition(TableReader& i) {
   const bool rotation = ic.dof.find(".roll") != std::string::npos || ic.dof.find(".pitch") != std::string::npos ||
                         ic.dof.find(".yaw") != std::string::npos;
   ic.displacement = i.optional_quantity("displacement", rotation ? Quantity::angle : Quantity::length).value_or(0.0);
-  ic.velocity = i.optional_quantity("velocity", rotation ? Quantity::angular_speed : Quantity::speed).value_or(0.0);
+  ic.velocity = i.optional_quantity("velocity", rotation ? Quantity::angular_speed : Quantity::velocity).value_or(0.0);
   i.finish();
   return ic;
 }

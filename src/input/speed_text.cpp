@@ -32,6 +32,9 @@ bool bare_number(const std::string& text) {
 }
 
 double positive_speed(const std::string& text) {
+  // A bare zero or negative number is refused for its value first: no unit would make it a speed.
+  if (bare_number(trimmed(text)) && !(std::strtod(trimmed(text).c_str(), nullptr) > 0.0))
+    throw std::invalid_argument("a speed must be above zero, got '" + trimmed(text) + "'");
   if (bare_number(trimmed(text)))
     throw std::invalid_argument("give every speed its unit, such as \"" + trimmed(text) + " km/h\" or \"" +
                                 trimmed(text) + " m/s\": got the bare number '" + trimmed(text) + "'");
@@ -82,9 +85,12 @@ std::vector<double> parse_speeds(const std::string& text) {
   }
   if (speeds.size() > kMaxSpeeds) throw std::invalid_argument("more than 10000 speeds");
   // The same speed twice would be solved and reported twice: a slip, refused rather than guessed.
+  // "The same" to the 15 significant digits the reports print in km/h ("100 km/h" and
+  // "27.7777777777778 m/s" differ in the 16th), so that no two rows read alike.
   std::vector<double> sorted = speeds;
   std::sort(sorted.begin(), sorted.end());
-  if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+  if (std::adjacent_find(sorted.begin(), sorted.end(), [](double a, double b) { return b - a <= 1e-14 * b; }) !=
+      sorted.end())
     throw std::invalid_argument("a speed is given twice in '" + trimmed(text) + "': give each once");
   return speeds;
 }

@@ -231,7 +231,12 @@ DeflectionRule read_deflection_rule(TableReader& t, int* elements_line, int* ele
 // have no units of angular acceleration: such limits are plain numbers (rad/s²).
 Quantity limit_quantity(const std::string& metric) {
   const std::string unit = metric_unit(metric);
-  if (unit == "m/s") return Quantity::speed;
+  // A vehicle's speed (shown in km/h) needs its unit; a vibration's velocity (a peak or an RMS,
+  // shown in m/s) is a velocity: a bare number is m/s.
+  if (unit == "m/s") {
+    const bool vibration = metric.rfind("peak:", 0) == 0 || metric.rfind("rms_", 0) == 0;
+    return vibration ? Quantity::velocity : Quantity::speed;
+  }
   if (unit == "m") return Quantity::length;
   if (unit == "s") return Quantity::time;
   if (unit == "m/s^2") return Quantity::acceleration;

@@ -142,6 +142,7 @@ Dimension dimension_of(Quantity q) {
     case Quantity::damping: return dim(1, 0, -1);
     case Quantity::modulus: return dim(1, -1, -2);
     case Quantity::speed: return dim(0, 1, -1);
+    case Quantity::velocity: return dim(0, 1, -1);
     case Quantity::rotational_stiffness: return dim(1, 2, -2, -1);
     case Quantity::dimensionless: return dim(0, 0, 0);
     case Quantity::time: return dim(0, 0, 1);
@@ -167,6 +168,7 @@ const char* name_of(Quantity q) {
     case Quantity::damping: return "a damping coefficient (force·time/length)";
     case Quantity::modulus: return "a modulus (force/area)";
     case Quantity::speed: return "a speed";
+    case Quantity::velocity: return "a velocity";
     case Quantity::rotational_stiffness: return "a rotational stiffness (moment/angle)";
     case Quantity::dimensionless: return "a plain number";
     case Quantity::time: return "a time";
@@ -192,6 +194,7 @@ const char* example_of(Quantity q) {
     case Quantity::damping: return "\"20 kN*s/m\" or 2.0e4 (N·s/m)";
     case Quantity::modulus: return "\"2.2e6 kgf/cm^2\" or 2.16e11 (Pa)";
     case Quantity::speed: return "\"75 km/h\" or \"20.8 m/s\"";  // a speed needs its unit (table_reader.cpp)
+    case Quantity::velocity: return "\"0.05 m/s\" or 0.05 (m/s)";
     case Quantity::rotational_stiffness: return "\"940 kN*m/rad\" or 9.4e5 (N·m/rad)";
     case Quantity::dimensionless: return "a number";
     case Quantity::time: return "\"2 ms\" or 0.002 (s)";

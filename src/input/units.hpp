@@ -21,7 +21,9 @@ enum class Quantity {
   moment,       ///< force·length, N·m (a creep coefficient f23)
   force_area,      ///< force·length², N·m² (the spin creep coefficient f33; a beam's EI)
   mass_per_length, ///< kg/m (a beam's mass per length)
-  frequency        ///< Hz, cycles per second (a bending mode's frequency)
+  frequency,       ///< Hz, cycles per second (a bending mode's frequency)
+  velocity         ///< m/s of a motion (an initial velocity, a limit on a vibration velocity):
+                   ///< a bare number is m/s, where a vehicle's speed needs its unit
 };
 Dimension dimension_of(Quantity quantity);
 const char* name_of(Quantity quantity);     ///< "stiffness (force/length)"

@@ -63,6 +63,17 @@ TEST(OfferedMetrics, ARideMetricNeedsARide) {
   EXPECT_NE(e.message().find("metric 'max_wz' needs a ride"), std::string::npos) << e.what();
 }
 
+// A limit on a vibration's velocity (a peak or an RMS, shown in m/s) is a velocity: a bare number
+// is m/s, as for a displacement's metre. A limit on a vehicle's speed (shown in km/h) needs its
+// unit, as every speed does (review of 2026-11-27: both were refused with a km/h hint).
+TEST(StudyLimits, AVibrationVelocityLimitMayBeBareAVehicleSpeedMayNot) {
+  EXPECT_NO_THROW(load_study(write_study(example3_wagon(), "[ranking]\n\"max_peak:body.bounce:velocity\" = 0.05\n")));
+  const InputError e =
+      study_error_at(write_study(example3_wagon(), "[ranking]\nmin_lowest_critical_speed = 30\n"), "a bare speed");
+  EXPECT_EQ(e.line(), 6);
+  EXPECT_NE(e.message().find("give the speed its unit"), std::string::npos) << e.what();
+}
+
 TEST(OfferedMetrics, HuntingSpeedNeedsAVehicleWithWheelsets) {
   const InputError e =
       study_error_at(write_study(example3_wagon(), "[ranking]\nmin_hunting_speed = \"150 km/h\"\n"), "no wheelsets");
