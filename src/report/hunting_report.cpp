@@ -17,6 +17,7 @@
 #include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
+#include "stability/branch_naming.hpp"
 
 namespace railmodal {
 
@@ -217,9 +218,10 @@ Table branches_table(const HuntingResult& r) {
     if (b.damping_ratio.empty()) continue;
     const Least l = least_damping(b), mac = least_continuity(b);
     const bool veer_at = b.veers && mac.at < r.speeds.size();
-    // A pair that is real there (overdamped) has no frequency: "real", its ζ 100 % by definition.
+    // A pair that is real or nearly real there (overdamped: stability::overdamped_root) does not
+    // oscillate: "real", its ζ 100 % to the table's digits.
     const auto frequency = [&](size_t i) {
-      return b.eigenvalues[i].imag() == 0.0 ? std::string("real") : fixed(b.frequency_hz[i], 3);
+      return stability::overdamped_root(b.eigenvalues[i]) ? std::string("real") : fixed(b.frequency_hz[i], 3);
     };
     t.rows.push_back({std::to_string(k + 1), b.name, frequency(0), percent(b.damping_ratio.front()),
                       frequency(b.eigenvalues.size() - 1), percent(b.damping_ratio.back()), percent(l.value),
@@ -636,7 +638,7 @@ void write_csv(std::ostream& out, const HuntingResult& r) {
   for (const HuntingBranch& b : r.branches) {
     const std::string name = "," + report::csv_field(b.name);
     for (size_t i = 0; i < b.eigenvalues.size() && i < r.speeds.size(); ++i) {
-      if (b.eigenvalues[i].imag() == 0.0) continue;  // a real (overdamped) root there: not an oscillation
+      if (stability::overdamped_root(b.eigenvalues[i])) continue;  // overdamped there: not an oscillation
       row.clear();
       csv_number(&row, r.speeds[i] * kKmh);
       row.erase(0, 1);  // the first field has no comma before it

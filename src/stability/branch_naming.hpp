@@ -2,11 +2,19 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cmath>
+#include <complex>
 #include <string>
 
 #include "railmodal/linear_system.hpp"
 
 namespace railmodal::stability {
+
+/// A root that does not oscillate: real, or a pair whose Im λ is under 1 % of |λ| (ζ > 0.99995,
+/// a decay of e^−600 a cycle). One rule for the tracking (such a step's MAC says nothing: next
+/// to where two real roots meet the eigenvector is nearly defective), the naming and the
+/// reports (shown as "real", left out of the CSV).
+inline bool overdamped_root(std::complex<double> value) { return std::abs(value.imag()) <= 0.01 * std::abs(value); }
 
 /// The name of a root from its displacement shape weighted by √M_ii (squared entries: the
 /// kinetic energy of each degree of freedom, up to the factor ω²/2 they share). The body

@@ -52,7 +52,7 @@ bool kinematic(const HuntingBranch& b, const std::vector<double>& speeds, double
 // c = 20 kN·s/m on a two-axle wagon at 10 km/h), but at higher speed it can meet a creep root and
 // form a complex pair: it is then a branch, named as the relaxation it starts as.
 std::string relaxation_of(const LinearSystem& system, cd value) {
-  if (std::abs(value.imag()) > 0.01 * std::abs(value)) return "";
+  if (!overdamped_root(value)) return "";
   for (const SeriesDamperRow& d : system.series_dampers) {
     const double rate = -d.stiffness / d.damping;
     if (std::abs(value.real() - rate) <= 0.05 * std::abs(rate)) {
@@ -127,8 +127,7 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
       // eigenvalues alone decided (the CSV leaves the real speeds out, Im λ = 0).
       // Nearly real counts too (Im λ under 1 % of |λ|, ζ > 0.99995, as the naming below): next
       // to the meeting the eigenvector is nearly defective as well (the coach's 0.36 at 22 km/h).
-      const auto overdamped = [](const cd& l) { return std::abs(l.imag()) <= 0.01 * std::abs(l); };
-      const bool real_step = overdamped(upper) || (s > 0 && overdamped(b.eigenvalues[s - 1]));
+      const bool real_step = overdamped_root(upper) || (s > 0 && overdamped_root(b.eigenvalues[s - 1]));
       b.continuity.push_back(real_step ? 1.0 : std::min(paths.continuity[s][p], paths.continuity[s][q]));
       if (b.continuity.back() < continuity_threshold) b.veers = true;
     }
@@ -138,7 +137,7 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
     const cd first = speeds[0].values(first_root);
     b.name = relaxation_of(system, first);
     if (b.name.empty())
-      b.name = root_name(system, speeds[0].shapes.col(first_root), std::abs(first.imag()) > 0.01 * std::abs(first));
+      b.name = root_name(system, speeds[0].shapes.col(first_root), !overdamped_root(first));
     if (kinematic(b, grid, klingel_wavelength)) b.name += " (kinematic)";
     group_names.push_back(b.name);
     is_branch.push_back(true);

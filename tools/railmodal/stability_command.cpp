@@ -183,8 +183,8 @@ std::function<int()> add_stability_command(CLI::App& app) {
       ->check(CLI::Range(0, 1024));
   cmd->add_option(
          "--format", options->format,
-         "Output format: table, csv (each oscillatory branch's eigenvalue, Im λ > 0, at every speed; real roots "
-         "left out), json, markdown, html (with the root locus, damping and conicity plots); " +
+         "Output format: table, csv (each oscillatory branch's eigenvalue, Im λ > 0, at every speed; real and nearly "
+         "real roots, Im λ under 1 % of |λ|, left out), json, markdown, html (with the root locus, damping and conicity plots); " +
              format_rule_help(kStabilityFormats))
       ->check(CLI::IsMember(kStabilityFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
