@@ -348,6 +348,19 @@ struct HandBack {
   }
 };
 
+// Gives the workspace a ride variant's vehicle and scene back when its evaluation ends, as
+// HandBack does for the others through the critical-speed study: the next variant is read into
+// their storage (parallel_evaluation.cpp).
+struct GiveBackRead {
+  StudyVariant* from;
+  study::Workspace* to;
+  ~GiveBackRead() {
+    if (!from || !to) return;
+    to->system.vehicle = std::move(from->vehicle);
+    to->scene = std::move(from->scene);
+  }
+};
+
 // evaluate_variant; `owned`, when given, is `variant` itself, which the caller gives up: its
 // scene moves into the critical-speed study and its vehicle into the study's system instead of
 // being copied there (a copy of each a variant fewer: their names, lists and the scene's key
@@ -365,6 +378,7 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
   try {
     if (variant.scene.sources.empty() && variant.scene.irregularity) {
       // A ride scene: no periodic source, so no critical speeds, peaks or dynamic deflections.
+      const GiveBackRead give_back{owned, workspace};
       summarise_without_sources(variant, &r);
       clock.lap("modes");
       ride_summary(variant.vehicle, variant.scene, ride_rms_only, workspace ? &workspace->ride : nullptr, &r);
