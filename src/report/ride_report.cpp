@@ -419,6 +419,27 @@ report::Chart index_chart(const RideResult& r, RideAxis axis, const std::string&
 std::optional<double> weighted_of(const RideOutputAtSpeed& o) { return o.weighted_rms; }
 std::optional<double> wz_of(const RideOutputAtSpeed& o) { return o.sperling_wz; }
 
+// The floor points with an N_MV at some speed, in the order the speeds first give them. A point
+// whose axis is unbounded at a speed has no N_MV there and is left out of that speed's list, so
+// the lists of two speeds need not match by position: columns and series go by the point.
+std::vector<const RideComfortAtPoint*> comfort_points(const RideResult& r) {
+  std::vector<const RideComfortAtPoint*> points;
+  for (const RideAtSpeed& at : r.speeds)
+    for (const RideComfortAtPoint& c : at.comfort)
+      if (std::none_of(points.begin(), points.end(), [&](const RideComfortAtPoint* p) {
+            return p->body == c.body && p->point == c.point;
+          }))
+        points.push_back(&c);
+  return points;
+}
+
+// The N_MV of `point` at one speed, or null where it has none (an unbounded axis).
+const RideComfortAtPoint* comfort_at(const RideAtSpeed& at, const RideComfortAtPoint& point) {
+  for (const RideComfortAtPoint& c : at.comfort)
+    if (c.body == point.body && c.point == point.point) return &c;
+  return nullptr;
+}
+
 report::Chart nmv_chart(const RideResult& r) {
   report::Chart c;
   c.id = "nmv";
@@ -426,11 +447,12 @@ report::Chart nmv_chart(const RideResult& r) {
   c.x_label = "speed (km/h)";
   c.y_label = "N_MV estimate (–)";
   if (r.speeds.empty()) return c;
-  for (size_t p = 0; p < r.speeds.front().comfort.size(); ++p) {
+  for (const RideComfortAtPoint* point : comfort_points(r)) {
     report::ChartSeries s;
-    s.label = point_text(r.speeds.front().comfort[p], r.outputs);
+    s.label = point_text(*point, r.outputs);
     for (const RideAtSpeed& at : r.speeds)
-      if (p < at.comfort.size()) s.x.push_back(at.speed * kKmh), s.y.push_back(at.comfort[p].nmv_estimate);
+      if (const RideComfortAtPoint* c = comfort_at(at, *point))
+        s.x.push_back(at.speed * kKmh), s.y.push_back(c->nmv_estimate);
     c.series.push_back(s);
   }
   return c;
@@ -540,7 +562,7 @@ void write_html(std::ostream& out, const Page& p) {
       const report::Chart wz = index_chart(r, axis, "wz", "Sperling's ride index Wz, " + along, "Wz (–)", wz_of);
       if (!wz.series.empty()) out << report::svg_chart(wz);
     }
-    if (!r.speeds.front().comfort.empty()) out << report::svg_chart(nmv_chart(r));
+    if (!comfort_points(r).empty()) out << report::svg_chart(nmv_chart(r));
   }
   if (!r.speeds.empty()) {
     // The spectra at the highest speed: the one a ride is signed off at.
@@ -624,8 +646,8 @@ void write_csv(std::ostream& out, const RideResult& r) {
     if (has_comfort_indices(o) && every_index)
       csv.field(csv_heading(o.name + " p95 estimate", "m/s²")).field(o.name + " sperling wz");
   }
-  if (!r.speeds.empty())
-    for (const RideComfortAtPoint& c : r.speeds.front().comfort) csv.field("nmv estimate " + point_text(c, r.outputs));
+  const std::vector<const RideComfortAtPoint*> points = comfort_points(r);
+  for (const RideComfortAtPoint* c : points) csv.field("nmv estimate " + point_text(*c, r.outputs));
   csv.end_row();
   for (const RideAtSpeed& at : r.speeds) {
     finite_field(csv, kmh_value(at.speed));
@@ -645,7 +667,11 @@ void write_csv(std::ostream& out, const RideResult& r) {
         optional_field(csv, o.sperling_wz);
       }
     }
-    for (const RideComfortAtPoint& c : at.comfort) finite_field(csv, c.nmv_estimate);
+    for (const RideComfortAtPoint* point : points) {
+      const RideComfortAtPoint* c = comfort_at(at, *point);
+      if (c) finite_field(csv, c->nmv_estimate);
+      else csv.field("unbounded");  // an axis there is unbounded at this speed (the notes say which)
+    }
     csv.end_row();
   }
 }

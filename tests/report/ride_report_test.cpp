@@ -10,6 +10,7 @@
 #include <regex>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace railmodal {
 namespace {
@@ -137,6 +138,52 @@ TEST(RideReport, FloorPointsAreNamedByTheirOutputsAndTheFrameSaidOnce) {
   // Outputs at one point with names of their own: both names.
   r.outputs[2].name = "sway sensor";
   EXPECT_TRUE(has(written(r, OutputFormat::table), "floor over bogie 1 / sway sensor: body (9.5, 0, 1.2) m"));
+}
+
+// A floor point with an unbounded axis at one speed has no N_MV there and is left out of that
+// speed's list: the CSV's columns and the chart's series go by the point, not by the position in
+// the first speed's list (the columns shifted, and a point missing at the first speed had no
+// column; fix-study's note of 2026-11-27).
+TEST(RideReport, NmvColumnsGoByThePointWhereAPointIsUnboundedAtSomeSpeeds) {
+  RideResult r = hand_built();
+  RideOutput rear = r.outputs[0];
+  rear.name = "floor over bogie 2, vertical";
+  rear.point = Eigen::Vector3d(-9.5, 0.0, 1.2);
+  r.outputs.push_back(rear);
+  for (RideAtSpeed& at : r.speeds) {
+    at.outputs.push_back(at.outputs[0]);
+    RideComfortAtPoint c = at.comfort[0];
+    c.point = rear.point;
+    c.nmv_estimate = 7.25;
+    at.comfort.push_back(c);
+  }
+  r.speeds[0].comfort.erase(r.speeds[0].comfort.begin());  // bogie 1's point unbounded at 100 km/h
+  std::istringstream csv(written(r, OutputFormat::csv));
+  std::string heading, first, second;
+  std::getline(csv, heading);
+  std::getline(csv, first);
+  std::getline(csv, second);
+  const auto fields = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::string field;
+    std::istringstream in(line);
+    while (std::getline(in, field, ',')) out.push_back(field);
+    return out;
+  };
+  // Headings may hold commas inside quotes: count the N_MV columns from the end.
+  ASSERT_TRUE(has(heading, "nmv estimate floor over bogie 1: body (9.5, 0, 1.2) m")) << heading;
+  ASSERT_TRUE(has(heading, "nmv estimate floor over bogie 2: body (-9.5, 0, 1.2) m")) << heading;
+  // In the order the speeds first give the points: bogie 2's (the only one at 100 km/h) first.
+  EXPECT_LT(heading.find("floor over bogie 2: body"), heading.find("floor over bogie 1: body"));
+  const std::vector<std::string> a = fields(first), b = fields(second);
+  ASSERT_EQ(a.size(), b.size()) << first << "\n" << second;
+  EXPECT_EQ(a[a.size() - 2], "7.25") << first;
+  EXPECT_EQ(a.back(), "unbounded") << first;
+  EXPECT_EQ(b[b.size() - 2], "7.25") << second;
+  EXPECT_EQ(b.back(), "1.5333333333333337") << second;  // 6 × the P95 estimate at 200 km/h
+  // The chart: one series per point, the first point's without the speed it lacks.
+  const std::string html = written(r, OutputFormat::html);
+  EXPECT_TRUE(has(html, "floor over bogie 2: body (-9.5, 0, 1.2) m")) << html.substr(0, 2000);
 }
 
 // A speed given as "150 km/h" is 41.666… m/s, and 41.666… × 3.6 is 150.00000000000003 in doubles:
