@@ -8,6 +8,10 @@
 namespace railmodal::input {
 
 double read_mass(TableReader& t, double gravity) {
+  if (!t.has("mass") && !t.has("weight")) {
+    t.refuse_misspelling("weight");  // "wieght", "mas": point at it (the audit of 2026-11-27)
+    t.refuse_misspelling("mass");
+  }
   if (t.has("mass") == t.has("weight"))
     t.fail("mass", t.has("mass") ? "give mass or weight, not both" : "missing: give mass (\"34 t\") or weight (\"34000 kgf\")");
   if (t.has("mass")) return t.positive("mass", Quantity::mass);

@@ -411,7 +411,13 @@ Scene read_scene(const toml::value& document, const std::string& path) {
   const bool hunting = root.has("nonlinear_hunting");
   if (root.has("simulation"))
     scene.simulation = read_simulation(root.table("simulation"), root.has("source"), &scene.name_places);
-  if (root.has("speed") || (!scene.simulation && !ride && !hunting)) read_speed_range(root.table("speed"), scene);
+  // A scene that asks for nothing: say what each command needs (the audit of 2026-11-27 met a
+  // bare "key 'speed': missing" from `ride`, whose scenes need no [speed]).
+  if (!root.has("speed") && !scene.simulation && !ride && !hunting)
+    root.fail("speed", "missing: the scene has none of [speed] (a range of speeds for critical-speed), "
+                       "[simulation] (simulate), [ride] with an irregularity source (ride) or "
+                       "[nonlinear_hunting] (hunting)");
+  if (root.has("speed")) read_speed_range(root.table("speed"), scene);
   std::string geometry;
   if (root.has("source") || (!scene.simulation && !hunting)) read_sources(root, scene, &geometry);
   if (root.has("output"))

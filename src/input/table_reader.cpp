@@ -143,16 +143,19 @@ size_t edit_distance(const std::string& a, const std::string& b) {
 
 }  // namespace
 
+void TableReader::refuse_misspelling(const std::string& key) const {
+  if (!table_.is_table()) return;
+  for (const auto& [present, value] : table_.as_table())
+    if (!read_.count(present) && edit_distance(present, key) <= 2) {
+      const KeyPlace place = place_of(value);
+      throw InputError(file_, place.line, place.column,
+                       "key '" + key_path(key) + "': missing; is '" + present + "' a misspelling of it?");
+    }
+}
+
 const toml::value& TableReader::at(const std::string& key) {
   if (!has(key)) {
-    // Point at a present key that looks like a misspelling of the missing one.
-    if (table_.is_table())
-      for (const auto& [present, value] : table_.as_table())
-        if (!read_.count(present) && edit_distance(present, key) <= 2) {
-          const KeyPlace place = place_of(value);
-          throw InputError(file_, place.line, place.column,
-                           "key '" + key_path(key) + "': missing; is '" + present + "' a misspelling of it?");
-        }
+    refuse_misspelling(key);  // point at a present key that looks like a misspelling of it
     fail(key, "missing (required)");
   }
   read_.insert(key);

@@ -61,6 +61,9 @@ class TableReader {
 
   /// Throws for the first key that was never read.
   void finish() const;
+  /// For a missing `key`: throws at a present, unread key that looks like a misspelling of it
+  /// ("is 'wieght' a misspelling of it?"); returns when there is none.
+  void refuse_misspelling(const std::string& key) const;
 
   /// Where this key's value is written (the table's place when the key is absent).
   KeyPlace place(const std::string& key) const;
