@@ -209,9 +209,11 @@ void write_json(std::ostream& out, const Comparison& c) {
 
 // A number for people: as printf's %.<precision>f (fixed) or %.<precision>g (general) writes it,
 // which to_chars with a precision writes too, at a fraction of snprintf's cost (a study's table
-// writes nine a row); "none" for +∞, "-inf" for −∞.
+// writes nine a row); "none" for +∞, "-inf" for −∞, and "-" for NaN, the table's mark of a value
+// not there (the CSV leaves it blank and JSON writes null; before, NaN fell through to "-inf").
 std::string number(double x, std::chars_format format, int precision) {
-  if (!std::isfinite(x)) return x > 0 ? "none" : "-inf";
+  if (std::isnan(x)) return "-";
+  if (std::isinf(x)) return x > 0 ? "none" : "-inf";
   char text[kTextMax];
   return std::string(text, std::to_chars(text, text + sizeof text, x, format, precision).ptr);
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "railmodal/railmodal.hpp"
+#include "report/comparison_rows.hpp"
 #include "study/study_files.hpp"
 #include "test_support.hpp"
 
@@ -103,6 +104,31 @@ TEST(HuntingMetric, JsonTellsStableThroughoutFromNoValue) {
   EXPECT_TRUE(by_name.at("no wheelsets").at("criteria").at(0).is_null());
   EXPECT_FALSE(by_name.at("no wheelsets").contains("hunting_speed_m_s"));
   EXPECT_DOUBLE_EQ(by_name.at("a").at("objective").get<double>(), 200.0 / 3.6);
+}
+
+// A NaN (no value the analysis could give) reads as a value not there in every format: "-" in
+// the table (it had read "-inf", the text of −∞), a blank CSV field, null in JSON.
+TEST(HuntingMetric, NanIsNoValueInEveryFormat) {
+  Study s = hand_study({"a", "undefined"});
+  s.ranking.objective.push_back({"hunting_speed", true, 1.0, {}});
+  const Comparison c = rank_variants(
+      s, {hunting(0, "a", 200.0 / 3.6), hunting(1, "undefined", std::numeric_limits<double>::quiet_NaN())});
+  const std::vector<std::vector<std::string>> rows = report::comparison_rows(c);
+  ASSERT_EQ(rows.size(), 3u);
+  const size_t criterion = 3;  // rank, variant, feasible, then the objective's criterion
+  ASSERT_GT(rows[0].size(), criterion);
+  ASSERT_EQ(rows[0][criterion], "linear hunting speed, maximised [km/h]");
+  for (const auto& row : rows)
+    if (row[1] == "undefined") EXPECT_EQ(row[criterion], "-");
+    else if (row[1] == "a") EXPECT_EQ(row[criterion], "200");
+  std::ostringstream csv, json;
+  write_comparison(csv, c, OutputFormat::csv);
+  EXPECT_EQ(csv.str().find("inf"), std::string::npos) << csv.str();
+  EXPECT_EQ(csv.str().find("nan"), std::string::npos) << csv.str();
+  write_comparison(json, c, OutputFormat::json);
+  const nlohmann::json j = nlohmann::json::parse(json.str());
+  for (const auto& v : j.at("variants"))
+    if (v.at("name") == "undefined") EXPECT_TRUE(v.at("criteria").at(0).is_null()) << v;
 }
 
 TEST(HuntingMetric, OnlyAStudyThatNamesItPaysForIt) {
