@@ -28,10 +28,6 @@ namespace {
 using report::JsonWriter;
 
 constexpr double kKmh = 3.6;  // km/h per m/s
-// Room for a number written with a precision: fixed notation of the largest double is 309
-// digits before the point (%.1f of 1e308); a study's values are far smaller, but a failed
-// design's may not be.
-constexpr size_t kTextMax = 330;
 
 std::vector<double> periods(const VariantResult& r) {
   std::vector<double> out;
@@ -207,15 +203,13 @@ void write_json(std::ostream& out, const Comparison& c) {
   j.end_object();
 }
 
-// A number for people: as printf's %.<precision>f (fixed) or %.<precision>g (general) writes it,
-// which to_chars with a precision writes too, at a fraction of snprintf's cost (a study's table
-// writes nine a row); "none" for +∞, "-inf" for −∞, and "-" for NaN, the table's mark of a value
-// not there (the CSV leaves it blank and JSON writes null; before, NaN fell through to "-inf").
+// A number in the table's cells, as report::fixed (std::chars_format::fixed) or
+// report::significant (general) writes it; "none" for +∞, "-inf" for −∞, and "-" for NaN, the
+// table's mark of a value not there (the CSV leaves it blank and JSON writes null).
 std::string number(double x, std::chars_format format, int precision) {
   if (std::isnan(x)) return "-";
   if (std::isinf(x)) return x > 0 ? "none" : "-inf";
-  char text[kTextMax];
-  return std::string(text, std::to_chars(text, text + sizeof text, x, format, precision).ptr);
+  return format == std::chars_format::fixed ? report::fixed(x, precision) : report::significant(x, precision);
 }
 
 // The shortest text that reads back as the same double (CSV is for programs), appended to `text`;

@@ -18,6 +18,7 @@
 
 namespace railmodal {
 
+using report::fixed;
 using report::html_escape;
 
 namespace {
@@ -31,12 +32,6 @@ constexpr size_t kMaxEventLines = 24;
 bool is_rotation(const std::string& dof) {
   return dof.find(".pitch") != std::string::npos || dof.find(".roll") != std::string::npos ||
          dof.find(".yaw") != std::string::npos;
-}
-
-std::string fixed(double v, int digits) {
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(digits) << v;
-  return out.str();
 }
 
 // The first ten periods of the lowest checked mode (all of a shorter record): long records of

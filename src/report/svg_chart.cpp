@@ -1,4 +1,5 @@
 #include "report/svg_chart.hpp"
+#include "report/text_format.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -43,12 +44,6 @@ std::string shade_colour(double t) {
     rgb[c] = static_cast<int>(std::lround(stops[k][c] + (t - k) * (stops[k + 1][c] - stops[k][c])));
   std::snprintf(text, sizeof text, "#%02x%02x%02x", rgb[0], rgb[1], rgb[2]);
   return text;
-}
-
-std::string number(double v) {
-  std::ostringstream out;
-  out << std::setprecision(4) << v;
-  return out.str();
 }
 
 // The width of `text` in the chart's sans-serif at `font_size`: 0.6 em a character (UTF-8
@@ -216,7 +211,7 @@ void write_axes(std::ostream& s, const Chart& chart, const Plot& p) {
   for (double t : xticks) {
     s << "<line x1=\"" << p.X(t) << "\" y1=\"" << p.top << "\" x2=\"" << p.X(t) << "\" y2=\"" << p.top + p.height
       << "\" stroke=\"#e4e4e4\"/><text x=\"" << p.X(t) << "\" y=\"" << p.top + p.height + 16
-      << "\" text-anchor=\"middle\">" << number(t) << "</text>\n";
+      << "\" text-anchor=\"middle\">" << significant(t, 4) << "</text>\n";
   }
   std::vector<double> yticks;
   if (chart.log_y) {
@@ -227,7 +222,7 @@ void write_axes(std::ostream& s, const Chart& chart, const Plot& p) {
   for (double t : yticks)
     s << "<line x1=\"" << p.left << "\" y1=\"" << p.Y(t) << "\" x2=\"" << p.left + p.width << "\" y2=\"" << p.Y(t)
       << "\" stroke=\"#e4e4e4\"/><text x=\"" << p.left - 6 << "\" y=\"" << p.Y(t) + 4 << "\" text-anchor=\"end\">"
-      << number(t) << "</text>\n";
+      << significant(t, 4) << "</text>\n";
   s << "<text class=\"x-label\" x=\"" << p.left + p.width / 2 << "\" y=\"" << p.top + p.height + 38
     << "\" text-anchor=\"middle\">" << html_escape(chart.x_label) << "</text>\n";
   s << "<text class=\"y-label\" transform=\"translate(16," << p.top + p.height / 2
@@ -370,7 +365,7 @@ void write_unbounded_marks(std::ostream& s, const Chart& chart, const Plot& p) {
       const double x = p.X(u);
       marks.push_back(x);
       s << "<path class=\"unbounded\" d=\"M" << x - 5 << "," << p.top - 2 << " L" << x + 5 << "," << p.top - 2 << " L"
-        << x << "," << p.top - 11 << " Z\" fill=\"" << colour_of(chart, k) << "\"><title>unbounded at " << number(u)
+        << x << "," << p.top - 11 << " Z\" fill=\"" << colour_of(chart, k) << "\"><title>unbounded at " << significant(u, 4)
         << "</title></path>\n";
     }
   // One word for each cluster of marks closer than a word's width (several designs at one speed).

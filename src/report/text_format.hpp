@@ -1,11 +1,11 @@
 // Text helpers shared by the report writers.
 #pragma once
 
+#include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <iomanip>
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <string>
 
 #include "railmodal/vehicle.hpp"
@@ -46,25 +46,29 @@ inline std::string displacement_unit(const std::string& label) {
   return *motion == Motion::roll || *motion == Motion::pitch || *motion == Motion::yaw ? "rad" : "m";
 }
 
-/// `value` with `digits` significant digits.
+/// The most characters significant and fixed write for a precision up to kMaxPrecision.
+constexpr int kMaxPrecision = 40;
+
+/// `value` with `digits` (at most kMaxPrecision) significant digits, as printf's %.<digits>g
+/// writes it ("0.1235", "1.235e+05", "inf", "nan"): std::to_chars with a precision writes
+/// printf's text, without a stream or the locale.
 inline std::string significant(double value, int digits) {
-  std::ostringstream s;
-  s << std::setprecision(digits) << value;
-  return s.str();
+  char text[2 * kMaxPrecision];  // sign, digits, point, "e-308", or "0.000" before 40 digits
+  return std::string(text, std::to_chars(text, text + sizeof text, value, std::chars_format::general, digits).ptr);
 }
 
-/// `value` with `decimals` digits after the point; round-off never prints as "-0.0". From 1e9
-/// on, in scientific notation with as many digits after the point: a stiff link's ω of 1e150
+/// `value` with `decimals` (at most kMaxPrecision) digits after the point, as printf's
+/// %.<decimals>f writes it; round-off never prints as "-0.0". From 1e9 on, in scientific
+/// notation with as many digits after the point (%.<decimals>e): a stiff link's ω of 1e150
 /// printed fixed was 150 digits, none of them meaningful past the 16th.
 inline std::string fixed(double value, int decimals) {
-  std::ostringstream s;
-  if (std::abs(value) >= 1e9) {
-    s << std::scientific << std::setprecision(decimals) << value;
-    return s.str();
-  }
-  const double half_unit = 0.5 * std::pow(10.0, -decimals);
-  s << std::fixed << std::setprecision(decimals) << (std::abs(value) < half_unit ? 0.0 : value);
-  return s.str();
+  char text[2 * kMaxPrecision];  // below 1e9: sign, 9 digits, point and decimals
+  const auto format = std::abs(value) >= 1e9 ? std::chars_format::scientific : std::chars_format::fixed;
+  const char* end = std::to_chars(text, text + sizeof text, value, format, decimals).ptr;
+  const char* first = text;
+  // A negative value that rounds to zero ("-0.00") is written without its sign.
+  if (*first == '-' && std::all_of(first + 1, end, [](char c) { return c == '0' || c == '.'; })) ++first;
+  return std::string(first, end);
 }
 
 /// A table cell: `text` right-aligned in `width` characters, or after one space when it is
