@@ -248,28 +248,13 @@ std::optional<double> body_deflection(const VariantResult& r) {
   return std::nullopt;
 }
 
-// A CSV field of any text (a name, a failure) appended as write_csv_field writes it: quoted
-// when it holds a comma, quote or line break.
-void append_csv_text(std::string* row, std::string_view text) {
-  if (text.find_first_of(",\"\n") == std::string_view::npos) {
-    row->append(text);
-    return;
-  }
-  *row += '"';
-  for (char c : text) {
-    if (c == '"') *row += '"';
-    *row += c;
-  }
-  *row += '"';
-}
-
 // A variant's CSV row after its rank (a streamed ranking knows the rank only when it writes),
 // appended to `row` field by field: numbers straight from to_chars, and only the fields that
 // can hold any text (the name, the failure, the violations) looked at for quotes.
 void append_csv_row(std::string* row, const std::vector<CriterionColumn>& criteria, bool deflections,
                     const RankedVariant& v) {
   const VariantResult& r = v.result;
-  append_csv_text(row, r.name);
+  report::append_csv_field(row, r.name);
   *row += ',';
   *row += status(v);
   *row += ',';
@@ -302,14 +287,14 @@ void append_csv_row(std::string* row, const std::vector<CriterionColumn>& criter
     append_exact(row, c.speed * kKmh);
   }
   *row += ',';
-  append_csv_text(row, r.failure);
+  report::append_csv_field(row, r.failure);
   *row += ',';
   std::string violations;
   for (const auto& w : v.violations) {
     if (!violations.empty()) violations += "; ";
     violations += w;
   }
-  append_csv_text(row, violations);
+  report::append_csv_field(row, violations);
 }
 
 std::string criterion_heading(const RankingCriterion& c) {

@@ -3,6 +3,7 @@
 #include <charconv>
 
 #include "report/number_text.hpp"
+#include "report/text_format.hpp"
 
 namespace railmodal::report {
 
@@ -26,16 +27,7 @@ CsvWriter& CsvWriter::field(double x) {
 
 CsvWriter& CsvWriter::field(std::string_view text) {
   separate();
-  if (text.find_first_of(",\"\n\r") == std::string_view::npos) {
-    buffer_.append(text);
-    return *this;
-  }
-  buffer_ += '"';
-  for (char c : text) {
-    if (c == '"') buffer_ += '"';
-    buffer_ += c;
-  }
-  buffer_ += '"';
+  append_csv_field(&buffer_, text);
   return *this;
 }
 

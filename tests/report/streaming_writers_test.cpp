@@ -16,6 +16,7 @@
 #include "report/json_writer.hpp"
 #include "report/number_text.hpp"
 #include "report/svg_chart.hpp"
+#include "report/text_format.hpp"
 
 namespace railmodal::report {
 namespace {
@@ -168,6 +169,22 @@ TEST(CsvWriter, QuotesTextThatNeedsItAndWritesNumbersShortest) {
             "# note: a comment\n"
             "plain,\"a, b\",\"say \"\"hi\"\"\",\"two\nlines\"\n"
             "1,0.1,2,,true,inf\n");
+}
+
+// One quoting rule (RFC 4180: a comma, quote or line break, CR included) for every CSV writer:
+// the streaming writer, csv_field, and the rows a study's CSV appends field by field.
+TEST(CsvWriter, EveryWriterQuotesAlike) {
+  for (const std::string text : {"plain", "a, b", "say \"hi\"", "two\nlines", "carriage\rreturn", ""}) {
+    std::ostringstream out;
+    CsvWriter(out).field(text);
+    std::string row;
+    append_csv_field(&row, text);
+    EXPECT_EQ(out.str(), csv_field(text));
+    EXPECT_EQ(row, csv_field(text));
+    EXPECT_EQ(csv_needs_quotes(text), csv_field(text) != text) << text;
+  }
+  EXPECT_EQ(csv_field("carriage\rreturn"), "\"carriage\rreturn\"");
+  EXPECT_EQ(csv_field("say \"hi\""), "\"say \"\"hi\"\"\"");
 }
 
 // The (x, y) points of every polyline of an SVG chart.
