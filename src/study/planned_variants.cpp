@@ -12,16 +12,18 @@
 namespace railmodal::study {
 namespace {
 
-// A variant of the sweep with the given assignments, one per parameter.
-VariantSpec sweep_point(const StudyPlan& plan, const Sweep& sweep, std::string name, std::vector<Assignment> assignments) {
-  VariantSpec spec;
-  spec.name = std::move(name);
-  spec.place = {sweep.line, 0};
-  spec.vehicle_file = plan.vehicle_file;
-  spec.parameters.reserve(assignments.size());
-  for (const Assignment& a : assignments) spec.parameters.push_back({(a.scene ? "scene:" : "") + a.key, a.text});
-  spec.assignments = std::move(assignments);
-  return spec;
+// The rest of a sweep's point once its name and assignments are written into `spec`: where it
+// is written, its vehicle file, and its parameters as Study lists them. Member by member into
+// the spec's own strings (a worker's, kept from its previous variant), without a string made anew.
+void finish_sweep_point(const StudyPlan& plan, const Sweep& sweep, VariantSpec* spec) {
+  spec->place = {sweep.line, 0};
+  spec->vehicle_file = plan.vehicle_file;
+  spec->parameters.resize(spec->assignments.size());
+  for (size_t j = 0; j < spec->assignments.size(); ++j) {
+    const Assignment& a = spec->assignments[j];
+    spec->parameters[j].first.assign(a.scene ? "scene:" : "").append(a.key);
+    spec->parameters[j].second = a.text;
+  }
 }
 
 size_t grid_size(const Sweep& sweep) {
@@ -113,16 +115,11 @@ void PlannedVariants::at_into(size_t index, VariantSpec* into) const {
   const Points& points = points_of(index);
   const Sweep& sweep = plan_.sweeps[points.sweep];
   const size_t n = index - points.first;
+  VariantSpec& spec = *into;
+  const size_t count = sweep.parameters.size();
+  spec.assignments.resize(count);
   if (sweep.samples > 0) {
-    // Written member by member into the spec's own strings (a worker's, kept from its previous
-    // variant): what sweep_point makes of the drawn assignments, without a string made anew.
-    VariantSpec& spec = *into;
     spec.name.assign(sweep.name).append(" #").append(std::to_string(n + 1));  // sample_name
-    spec.place = {sweep.line, 0};
-    spec.vehicle_file = plan_.vehicle_file;
-    const size_t count = sweep.parameters.size();
-    spec.assignments.resize(count);
-    spec.parameters.resize(count);
     Xoshiro256 generator = points.checkpoints[n / kCheckpoint];
     for (size_t skip = (n % kCheckpoint) * count; skip > 0; --skip) generator.next();
     for (size_t j = 0; j < count; ++j) {
@@ -137,19 +134,16 @@ void PlannedVariants::at_into(size_t index, VariantSpec* into) const {
       a.drawn.unit = p.from.unit;
       a.drawn.integer = p.from.integer;
       a.drawn.write_text(&a.text);
-      spec.parameters[j].first.assign(a.scene ? "scene:" : "").append(a.key);
-      spec.parameters[j].second = a.text;
     }
-    return;
+  } else {
+    const std::vector<const WrittenValue*> values = grid_values(sweep, n);
+    spec.name = grid_name(sweep, values);
+    for (size_t j = 0; j < count; ++j) {
+      const SweepParameter& p = sweep.parameters[j];
+      spec.assignments[j] = {p.key, p.scene, p.place, values[j]->text, values[j]->index, {}};
+    }
   }
-  std::vector<Assignment> assignments;
-  assignments.reserve(sweep.parameters.size());
-  const std::vector<const WrittenValue*> values = grid_values(sweep, n);
-  for (size_t j = 0; j < values.size(); ++j) {
-    const SweepParameter& p = sweep.parameters[j];
-    assignments.push_back({p.key, p.scene, p.place, values[j]->text, values[j]->index, {}});
-  }
-  *into = sweep_point(plan_, sweep, grid_name(sweep, values), std::move(assignments));
+  finish_sweep_point(plan_, sweep, &spec);
 }
 
 std::string PlannedVariants::name(size_t index) const {
