@@ -15,6 +15,7 @@
 #include "input/input_file.hpp"
 #include "input/toml_preflight.hpp"
 #include "input/value_place.hpp"
+#include "edit_distance.hpp"
 #include "railmodal/errors.hpp"
 #include "shortest_text.hpp"
 
@@ -122,26 +123,6 @@ void TableReader::fail(const std::string& key, const std::string& message) const
 bool TableReader::has(const std::string& key) const {
   return table_.is_table() && table_.as_table().count(key) > 0;
 }
-
-namespace {
-
-// Levenshtein distance, to recognise a misspelt key.
-size_t edit_distance(const std::string& a, const std::string& b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
-}  // namespace
 
 void TableReader::refuse_misspelling(const std::string& key) const {
   if (!table_.is_table()) return;

@@ -4,28 +4,13 @@
 #include <algorithm>
 #include <set>
 
+#include "edit_distance.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/ride.hpp"
 #include "study/metrics.hpp"
 
 namespace railmodal::study {
 namespace {
-
-// Levenshtein distance between two names, to point at the one a misspelt name meant.
-size_t offered_name_distance(const std::string& a, const std::string& b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
 
 // The ride's outputs by name, in the order the ride reports them: the scene's, or each
 // vehicle's default floor points (the first of each name).
@@ -111,7 +96,7 @@ void check_offered_metrics(const Ranking& ranking, const std::string& study_file
     size_t distance = output.size() / 8 + 3;  // a few letters off, more in a long name
     for (const RideOutput& o : outputs) {
       names.push_back(o.name);
-      const size_t d = offered_name_distance(o.name, output);
+      const size_t d = edit_distance(o.name, output);
       if (d < distance) distance = d, closest = &o.name;
     }
     refuse("no ride output named '" + output + "'" + (closest ? "; did you mean '" + *closest + "'?" : ".") +
