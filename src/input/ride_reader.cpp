@@ -2,11 +2,11 @@
 // an optional time-domain run on a realisation of the track.
 #include "input/ride_reader.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <set>
 #include <vector>
 
+#include "input/speed_text.hpp"
 #include "railmodal/input.hpp"
 
 namespace railmodal::input {
@@ -20,11 +20,7 @@ std::vector<double> read_speeds(TableReader& t) {
     if (speeds.empty()) t.fail("speeds", "give at least one speed");
     for (double s : speeds)
       if (!(s > 0.0)) t.fail("speeds", "a speed must be above zero");
-    // Twice to the 15 significant digits the reports print (speed_text.cpp, parse_speeds).
-    std::vector<double> sorted = speeds;
-    std::sort(sorted.begin(), sorted.end());
-    if (std::adjacent_find(sorted.begin(), sorted.end(), [](double a, double b) { return b - a <= 1e-14 * b; }) !=
-        sorted.end())
+    if (has_repeated_speed(speeds))
       t.fail("speeds", "a speed is given twice: give each once");
     return speeds;
   }

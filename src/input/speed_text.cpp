@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "input/speed_text.hpp"
 #include "input/units.hpp"
 #include "railmodal/input.hpp"
 
@@ -67,6 +68,12 @@ std::vector<double> speed_range(const std::string& text, size_t colon) {
 
 }  // namespace
 
+bool input::has_repeated_speed(std::vector<double> speeds) {
+  std::sort(speeds.begin(), speeds.end());
+  return std::adjacent_find(speeds.begin(), speeds.end(), [](double a, double b) { return b - a <= 1e-14 * b; }) !=
+         speeds.end();
+}
+
 double parse_speed(const std::string& text) { return input::parse_quantity(text, input::Quantity::speed); }
 
 std::vector<double> parse_speeds(const std::string& text) {
@@ -84,13 +91,7 @@ std::vector<double> parse_speeds(const std::string& text) {
     start = comma + 1;
   }
   if (speeds.size() > kMaxSpeeds) throw std::invalid_argument("more than 10000 speeds");
-  // The same speed twice would be solved and reported twice: a slip, refused rather than guessed.
-  // "The same" to the 15 significant digits the reports print in km/h ("100 km/h" and
-  // "27.7777777777778 m/s" differ in the 16th), so that no two rows read alike.
-  std::vector<double> sorted = speeds;
-  std::sort(sorted.begin(), sorted.end());
-  if (std::adjacent_find(sorted.begin(), sorted.end(), [](double a, double b) { return b - a <= 1e-14 * b; }) !=
-      sorted.end())
+  if (input::has_repeated_speed(speeds))
     throw std::invalid_argument("a speed is given twice in '" + trimmed(text) + "': give each once");
   return speeds;
 }

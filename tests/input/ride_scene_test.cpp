@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "input/speed_text.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
@@ -291,6 +292,23 @@ TEST(RideScene, ParseSpeeds) {
   EXPECT_THROW(parse_speeds("100 km/h,,120 km/h"), std::invalid_argument);
   EXPECT_THROW(parse_speeds("1 m/s:1000 m/s:0.01 m/s"), std::invalid_argument);  // 10⁵ speeds
   EXPECT_THROW(parse_speeds(""), std::invalid_argument);
+}
+
+// A speed given twice, to the 15 significant digits the reports print in km/h, is refused alike
+// in a list on the command line and in a [ride] table's array or string; 16 digits apart are
+// two speeds.
+TEST(RideScene, ASpeedGivenTwiceIsRefusedWhereverItIsWritten) {
+  EXPECT_TRUE(input::has_repeated_speed({100 / 3.6, 120 / 3.6, 100 / 3.6}));
+  EXPECT_TRUE(input::has_repeated_speed({27.7777777777778, 100 / 3.6}));  // 100 km/h to 15 digits
+  EXPECT_FALSE(input::has_repeated_speed({27.77777777777, 100 / 3.6}));
+  EXPECT_FALSE(input::has_repeated_speed({10.0}));
+  EXPECT_FALSE(input::has_repeated_speed({}));
+  EXPECT_THROW(parse_speeds("100 km/h, 120 km/h, 27.7777777777778 m/s"), std::invalid_argument);
+  EXPECT_NO_THROW(parse_speeds("100 km/h, 120 km/h, 27.77777777777 m/s"));
+  expect_ride_error("speeds = \"100 km/h:200 km/h:25 km/h\"", "speeds = [\"100 km/h\", \"120 km/h\", \"100 km/h\"]",
+                    {"speeds", "given twice"});
+  expect_ride_error("speeds = \"100 km/h:200 km/h:25 km/h\"", "speeds = \"100 km/h, 120 km/h, 100 km/h\"",
+                    {"speeds", "given twice"});
 }
 
 }  // namespace
