@@ -307,6 +307,11 @@ std::string canonical_metric(const std::string& metric);
 /// The SI unit of a metric's values and limits: "m/s" (critical speeds, peak velocities), "m",
 /// "s", "m/s^2", "rad", "rad/s", "rad/s^2", or "" for a ratio.
 const char* metric_unit(const std::string& metric);
+/// Whether a metric's values are the vehicle's speed (lowest_critical_speed,
+/// critical_speed:<mode>, hunting_speed: m/s, reports show km/h) rather than a vibration's
+/// velocity (peak:<dof>:velocity, rms_velocity:<output>: m/s as m/s). Both are "m/s" to
+/// metric_unit; a limit on the first must carry its unit, a bare number on the second is m/s.
+bool metric_is_vehicle_speed(const std::string& metric);
 
 struct RankedVariant {
   VariantResult result;

@@ -233,10 +233,7 @@ Quantity limit_quantity(const std::string& metric) {
   const std::string unit = metric_unit(metric);
   // A vehicle's speed (shown in km/h) needs its unit; a vibration's velocity (a peak or an RMS,
   // shown in m/s) is a velocity: a bare number is m/s.
-  if (unit == "m/s") {
-    const bool vibration = metric.rfind("peak:", 0) == 0 || metric.rfind("rms_", 0) == 0;
-    return vibration ? Quantity::velocity : Quantity::speed;
-  }
+  if (unit == "m/s") return metric_is_vehicle_speed(metric) ? Quantity::speed : Quantity::velocity;
   if (unit == "m") return Quantity::length;
   if (unit == "s") return Quantity::time;
   if (unit == "m/s^2") return Quantity::acceleration;

@@ -41,11 +41,12 @@ struct RmsMetric {
   std::string_view prefix;
   const char* unit;       // metric_unit's spelling
   const char* ride_unit;  // unit_of's spelling
+  const char* title;      // title's words before the output's name
 };
-constexpr RmsMetric kRmsMetrics[] = {{"rms_acceleration:", "m/s^2", "m/s²"},
-                                     {"rms_velocity:", "m/s", "m/s"},
-                                     {"rms_displacement:", "m", "m"},
-                                     {"rms_force:", "N", "N"}};
+constexpr RmsMetric kRmsMetrics[] = {{"rms_acceleration:", "m/s^2", "m/s²", "largest RMS acceleration at "},
+                                     {"rms_velocity:", "m/s", "m/s", "largest RMS of "},
+                                     {"rms_displacement:", "m", "m", "largest RMS of "},
+                                     {"rms_force:", "N", "N", "largest RMS of "}};
 
 // The RMS metric `metric` is (with an output named after its prefix), or null.
 const RmsMetric* rms_metric(std::string_view metric) {
@@ -75,6 +76,12 @@ std::optional<double> ride_metric(const VariantResult& r, std::string_view metri
 
 bool is_ride_metric(std::string_view metric) {
   return metric == "max_wz" || metric == "max_nmv" || rms_metric(metric);
+}
+
+// The vehicle's own speed (critical and hunting speeds: m/s, shown in km/h), as against a
+// vibration's velocity (a peak or an RMS, m/s shown as m/s).
+bool is_vehicle_speed(std::string_view metric) {
+  return metric == "lowest_critical_speed" || metric == "hunting_speed" || starts_with(metric, "critical_speed:");
 }
 
 bool is_rotation(std::string_view dof) {
@@ -161,10 +168,11 @@ std::optional<double> metric_value(const VariantResult& r, const std::string& na
   return std::nullopt;
 }
 
+bool metric_is_vehicle_speed(const std::string& metric) { return is_vehicle_speed(canonical(metric)); }
+
 const char* metric_unit(const std::string& name) {
   const std::string_view metric = canonical(name);
-  if (metric == "lowest_critical_speed" || metric == "hunting_speed" || starts_with(metric, "critical_speed:"))
-    return "m/s";
+  if (is_vehicle_speed(metric)) return "m/s";
   if (starts_with(metric, "period:")) return "s";
   if (starts_with(metric, "dynamic_deflection_ratio") || metric == "max_wz" || metric == "max_nmv") return "";
   if (const RmsMetric* rms = rms_metric(metric)) return rms->unit;
@@ -199,10 +207,9 @@ std::string rms_metric_for(const std::string& ride_unit) {
 }
 
 DisplayUnit display_unit(const std::string& metric) {
-  const char* si = metric_unit(metric);
   // Critical speeds in km/h, as the book gives them; peak and RMS velocities stay in m/s.
-  const std::string_view m = canonical(metric);
-  if (std::string_view(si) == "m/s" && !starts_with(m, "peak:") && !rms_metric(m)) return {"km/h", 3.6};
+  if (is_vehicle_speed(canonical(metric))) return {"km/h", 3.6};
+  const char* si = metric_unit(metric);
   if (std::string_view(si) == "m") return {"mm", 1000.0};
   return {si, 1.0};
 }
@@ -228,7 +235,7 @@ std::string title(const std::string& metric) {
   if (m == "max_wz") return "largest Sperling Wz of the ride";
   if (m == "max_nmv") return "largest N_MV (estimate) of the ride";
   if (const RmsMetric* rms = rms_metric(m))
-    return (rms == kRmsMetrics ? "largest RMS acceleration at " : "largest RMS of ") + m.substr(rms->prefix.size());
+    return rms->title + m.substr(rms->prefix.size());
   return metric;
 }
 
