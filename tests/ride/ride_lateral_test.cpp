@@ -22,12 +22,11 @@ constexpr double kAxleLoad = 1.0e5;  // N: two 50 kN wheels (data/vehicles/wheel
 constexpr double kLateral = 1.0e6;   // N/m to the frame
 constexpr double kYaw = 2.0e6;       // N·m/rad to the frame
 
-Vehicle wheelset_on_springs(const test::WheelsetData& d) {
-  Vehicle v;
-  v.name = "wheelset on springs";
-  test::add_wheelset(v, d);
+// The wheelset on springs (hunting_test_support.hpp) with its axle load, which the lateral
+// ride's contact takes.
+Vehicle loaded_wheelset_on_springs(const test::WheelsetData& d) {
+  Vehicle v = test::wheelset_on_springs(d, kLateral, kYaw);
   v.wheelsets.back().contact.axle_load = kAxleLoad;
-  test::add_springs_to_ground(v, d, kLateral, kYaw);
   return v;
 }
 
@@ -81,7 +80,7 @@ TrackIrregularitySpectra ore_alignment() {
 TEST(RideLateral, WheelsetOnSpringsFollowsItsHandReceptance) {
   const test::WheelsetData d;
   const double vc = critical_speed(d);
-  const LinearSystem s = assemble(wheelset_on_springs(d), DofSet::lateral);
+  const LinearSystem s = assemble(loaded_wheelset_on_springs(d), DofSet::lateral);
   RideOptions options;
   options.speeds = {0.4 * vc, 0.8 * vc};
   const RideResult r =
@@ -110,7 +109,7 @@ TEST(RideLateral, WheelsetFollowsTheRailAtLowFrequency) {
   const test::WheelsetData d;
   const Eigen::Vector2cd h = receptance(d, 0.5 * critical_speed(d), 2 * kPi * 1e-4);
   EXPECT_NEAR(std::abs(h(0)), 1.0, 1e-3);  // the first-order terms in ω ~ 1e-4 of the static ones
-  const LinearSystem s = assemble(wheelset_on_springs(d), DofSet::lateral);
+  const LinearSystem s = assemble(loaded_wheelset_on_springs(d), DofSet::lateral);
   RideOptions options;
   options.speeds = {0.5 * critical_speed(d)};
   options.min_frequency = 0.01;
@@ -131,7 +130,7 @@ TEST(RideLateral, WheelsetFollowsTheRailAtLowFrequency) {
 TEST(RideLateral, AboveTheCriticalSpeedEveryOutputIsUnbounded) {
   const test::WheelsetData d;
   const double vc = critical_speed(d);
-  const LinearSystem s = assemble(wheelset_on_springs(d), DofSet::lateral);
+  const LinearSystem s = assemble(loaded_wheelset_on_springs(d), DofSet::lateral);
   RideOptions options;
   options.speeds = {0.95 * vc, 1.05 * vc};
   const RideResult r = solve_ride(s, ore_alignment(), {lateral_displacement("axle", 0.0)}, options);
@@ -261,7 +260,7 @@ TEST(RideLateral, CrossLevelHandTermsEachMatter) {
 TEST(RideLateral, LateralWheelRailForceUnderAlignmentFollowsTheHandModel) {
   const test::WheelsetData d;
   const double vc = critical_speed(d);
-  const LinearSystem s = assemble(wheelset_on_springs(d), DofSet::lateral);
+  const LinearSystem s = assemble(loaded_wheelset_on_springs(d), DofSet::lateral);
   RideOptions options;
   options.speeds = {0.6 * vc};
   const RideResult r = solve_ride(s, ore_alignment(), {lateral_wheel_rail_force()}, options);
@@ -296,7 +295,7 @@ void expect_refused(const LinearSystem& s, const TrackIrregularitySpectra& track
 // model of a wheelset vehicle) the lateral one is refused too.
 TEST(RideLateral, LongitudinalAndContactlessWheelRailForcesAreRefused) {
   const test::WheelsetData d;
-  const LinearSystem s = assemble(wheelset_on_springs(d), DofSet::lateral);
+  const LinearSystem s = assemble(loaded_wheelset_on_springs(d), DofSet::lateral);
   RideOutput longitudinal = lateral_wheel_rail_force();
   longitudinal.axis = RideAxis::longitudinal;
   expect_refused(s, ore_alignment(), longitudinal, "equal and opposite");
@@ -340,7 +339,7 @@ TEST(RideLateral, TimeDomainRefusesAWheelsetWithoutItsContact) {
   y.axis = RideAxis::lateral;
   y.quantity = ResponseQuantity::displacement;
   try {
-    simulate_ride(assemble(wheelset_on_springs(d), DofSet::lateral), geometry, {y}, options);
+    simulate_ride(assemble(loaded_wheelset_on_springs(d), DofSet::lateral), geometry, {y}, options);
     ADD_FAILURE() << "no exception";
   } catch (const std::invalid_argument& e) {
     const std::string what = e.what();

@@ -61,6 +61,19 @@ TrackSpectrum white(TrackIrregularity kind, double S0, double low, double high) 
   return TrackSpectrum::table(kind, SpectrumAbscissa::wavenumber, {low, high}, {S0, S0});
 }
 
+// A track with one irregularity, ORE B176 at `level` over wavenumbers 0.06 to `highest` rad/m
+// (wavelengths 105 m down to 3.1 m with the default), the others none: most tests' track.
+TrackIrregularitySpectra one_irregularity(TrackIrregularity kind, OreLevel level = OreLevel::low, double highest = 2.0) {
+  TrackIrregularitySpectra track;
+  const TrackSpectrum spectrum = TrackSpectrum::ore_b176(level, kind, {0.06, highest});
+  switch (kind) {
+    case TrackIrregularity::vertical_level: track.vertical_level = spectrum; break;
+    case TrackIrregularity::alignment: track.alignment = spectrum; break;
+    case TrackIrregularity::cross_level: track.cross_level = spectrum; break;
+  }
+  return track;
+}
+
 RideOutput point_output(const std::string& name, Eigen::Vector3d p, RideAxis axis, ResponseQuantity q) {
   RideOutput o;
   o.name = name;
@@ -216,8 +229,7 @@ TEST(Ride, TwoAxlePitchMatchesItsClosedForm) {
 TEST(Ride, PointOutputIsRigidBodyCombination) {
   const LinearSystem s =
       assemble(body_on_track(12000.0, 60000.0, {{3.5, 0.0}, {-2.5, 0.0}}, 5e5, 8e3), DofSet::vertical);
-  TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::vertical_level);
   std::vector<RideOutput> outputs;
   for (double x : {-1.5, 0.0, 1.5, 3.0})
     outputs.push_back(point_output("x" + std::to_string(x), Eigen::Vector3d(x, 0, 0.7), RideAxis::vertical,
@@ -247,8 +259,7 @@ TEST(Ride, PointOutputIsRigidBodyCombination) {
 TEST(Ride, ModalSharesAndCrossTermAddUpToTheVariance) {
   const LinearSystem s =
       assemble(body_on_track(12000.0, 60000.0, {{3.0, 0.0}, {-3.0, 0.0}}, 5e5, 8e3), DofSet::vertical);
-  TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::high, TrackIrregularity::vertical_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::vertical_level, OreLevel::high);
   RideOptions options;
   options.speeds = {25.0, 40.0};
   const RideResult r = solve_ride(
@@ -286,8 +297,7 @@ TEST(Ride, UndampedExcitedModeIsUnboundedNotANumber) {
   damper.vertical_damping = 8e3;
   v.elements.push_back(damper);
   const LinearSystem s = assemble(v, DofSet::vertical);
-  TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::vertical_level);
   RideOptions options;
   options.speeds = {30.0};
   const RideResult r = solve_ride(
@@ -319,8 +329,7 @@ TEST(Ride, AnAllUnboundedRideHasNoGridErrorCheck) {
   damper.upper = "body";
   damper.vertical_damping = 8e3;
   v.elements.push_back(damper);
-  TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::vertical_level);
   RideOptions options;
   options.speeds = {30.0};
   const auto grid_check = [](const RideResult& r) {
@@ -349,8 +358,7 @@ TEST(Ride, CrossLevelSignAndScaling) {
   Vehicle v = body_on_track(12000.0, 60000.0, {{3.0, 1.0}, {3.0, -1.0}, {-3.0, 1.0}, {-3.0, -1.0}}, 5e5, 8e3);
   v.elements[0].point.z() = 0.4;
   const LinearSystem s = assemble(v, DofSet::all);
-  TrackIrregularitySpectra track;
-  track.cross_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::cross_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::cross_level);
   const std::vector<ride::Component> standard = ride::track_components(s, track, 0.0, 0.0);
   ASSERT_EQ(standard.size(), 1u);
   EXPECT_NEAR(standard[0].displacement[0].z(), 1.0 / 1.5, 1e-15);   // left rail up by Δz·y/(2b)
@@ -367,8 +375,7 @@ TEST(Ride, CrossLevelIsTheSameInTimeAndFrequency) {
   Vehicle v = body_on_track(12000.0, 60000.0, {{3.0, 0.8}, {3.0, -0.8}, {-3.0, 0.8}, {-3.0, -0.8}}, 5e5, 8e3);
   for (Element& e : v.elements) e.point.z() = 0.3;
   const LinearSystem s = assemble(v, DofSet::all);
-  TrackIrregularitySpectra track;
-  track.cross_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::cross_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::cross_level);
   const std::vector<ride::Component> c = ride::track_components(s, track, 0.0, 0.5);
   TrackGeometry g;
   g.step = 1.0;
@@ -456,8 +463,7 @@ TEST(Ride, RefusesWhatWouldBeASilentZero) {
 TEST(Ride, CrossLevelRollsAStiffBodyByHalfTheHeightDifferenceOverB) {
   const LinearSystem s = assemble(
       body_on_track(12000.0, 60000.0, {{3.0, 1.0}, {3.0, -1.0}, {-3.0, 1.0}, {-3.0, -1.0}}, 5e9, 8e4), DofSet::all);
-  TrackIrregularitySpectra track;
-  track.cross_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::cross_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::cross_level);
   RideOptions options;
   options.speeds = {20.0};
   options.max_frequency = 5.0;
@@ -479,8 +485,7 @@ TEST(Ride, CrossLevelRollsAStiffBodyByHalfTheHeightDifferenceOverB) {
 TEST(Ride, AlignmentMovesAStiffBodySideways) {
   const LinearSystem s = assemble(
       body_on_track(12000.0, 60000.0, {{3.0, 1.0}, {3.0, -1.0}, {-3.0, 1.0}, {-3.0, -1.0}}, 5e9, 8e4), DofSet::all);
-  TrackIrregularitySpectra track;
-  track.alignment = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::alignment, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::alignment);
   RideOptions options;
   options.speeds = {20.0};
   options.max_frequency = 5.0;
@@ -500,8 +505,7 @@ TEST(Ride, AlignmentMovesAStiffBodySideways) {
 TEST(Ride, WeightedIndicesAreIntegralsOfTheWeightedPsd) {
   const LinearSystem s =
       assemble(body_on_track(12000.0, 60000.0, {{3.5, 0.0}, {-2.5, 0.0}}, 5e5, 8e3), DofSet::vertical);
-  TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::vertical_level);
   RideOptions options;
   options.speeds = {30.0, 45.0};
   const std::vector<RideOutput> outputs = {
@@ -537,8 +541,7 @@ TEST(Ride, WeightedIndicesAreIntegralsOfTheWeightedPsd) {
 // (the same receptances to round-off).
 TEST(Ride, ModalTruncationConvergesToTheDirectSolve) {
   const LinearSystem s = assemble(load_vehicle(test::data_file("manchester_benchmark_coach.toml")), DofSet::vertical);
-  TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 6.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::vertical_level, OreLevel::low, 6.0);
   RideOptions options;
   options.speeds = {150 / 3.6};
   options.keep_spectra = false;
@@ -595,8 +598,7 @@ Vehicle leaf_wagon(double friction) {
 }
 
 TEST(Ride, LeafFrictionIsLinearisedStatisticallyAndVanishesWithPhi) {
-  TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::high, TrackIrregularity::vertical_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::vertical_level, OreLevel::high);
   RideOptions options;
   options.speeds = {20.0, 30.0};
   const std::vector<RideOutput> outputs = {
@@ -618,8 +620,7 @@ TEST(Ride, LeafFrictionIsLinearisedStatisticallyAndVanishesWithPhi) {
 TEST(Ride, BadOptionsAndOutputsThrowNamingThem) {
   const LinearSystem s =
       assemble(body_on_track(12000.0, 60000.0, {{3.0, 0.0}, {-3.0, 0.0}}, 5e5, 8e3), DofSet::vertical);
-  TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::vertical_level);
   const RideOutput good = point_output("centre", Eigen::Vector3d::Zero(), RideAxis::vertical, ResponseQuantity::acceleration);
   auto message = [&](const TrackIrregularitySpectra& t, const std::vector<RideOutput>& o, const RideOptions& opt) {
     try {
@@ -663,8 +664,7 @@ TEST(Ride, BadOptionsAndOutputsThrowNamingThem) {
 TEST(Ride, AlignmentOnWheelsetsActsThroughTheCreepContact) {
   const LinearSystem s =
       assemble(load_vehicle(test::data_file("manchester_benchmark_coach_wheelsets.toml")), DofSet::all);
-  TrackIrregularitySpectra track;
-  track.alignment = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::alignment, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::alignment);
   RideOptions options;
   options.speeds = {30.0};
   const RideResult r = solve_ride(s, track, default_ride_outputs(s), options);
@@ -680,8 +680,7 @@ TEST(Ride, AlignmentOnWheelsetsActsThroughTheCreepContact) {
 TEST(Ride, ElementForceOfTheOnlySpringIsMassTimesAcceleration) {
   const double m = 1000.0;
   const LinearSystem s = assemble(body_on_track(m, 1.0, {{0.0, 0.0}}, 1e6, 3e3, {Motion::pitch}), DofSet::vertical);
-  TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::vertical_level);
   RideOutput force;
   force.name = "spring force";
   force.kind = RideOutput::Kind::element_force;
@@ -731,8 +730,7 @@ TEST(Ride, WheelRailForceIsSpringForcePlusTheWheelsetsInertia) {
   e.vertical_damping = c;
   v.elements = {e};
   const LinearSystem s = assemble(v, DofSet::vertical);
-  TrackIrregularitySpectra track;
-  track.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  TrackIrregularitySpectra track = one_irregularity(TrackIrregularity::vertical_level);
   RideOutput force;
   force.name = "wheel-rail";
   force.kind = RideOutput::Kind::wheel_rail_force;

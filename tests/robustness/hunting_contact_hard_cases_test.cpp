@@ -14,14 +14,6 @@
 namespace railmodal::test {
 namespace {
 
-Vehicle wheelset_on_springs(const WheelsetData& d, double k_y = 1.0e6, double k_psi = 2.0e6) {
-  Vehicle v;
-  v.name = "wheelset";
-  add_wheelset(v, d);
-  if (k_y > 0.0 || k_psi > 0.0) add_springs_to_ground(v, d, k_y, k_psi);
-  return v;
-}
-
 bool all_finite(const Eigen::VectorXcd& values) {
   for (const auto& l : values)
     if (!std::isfinite(l.real()) || !std::isfinite(l.imag())) return false;

@@ -10,15 +10,6 @@
 namespace railmodal {
 namespace {
 
-LinearSystem wheelset_on_springs() {
-  Vehicle v;
-  v.name = "wheelset on springs";
-  test::WheelsetData d;
-  test::add_wheelset(v, d);
-  test::add_springs_to_ground(v, d, 1.0e6, 2.0e6);
-  return assemble(v, DofSet::lateral);
-}
-
 TEST(NonlinearHuntingHardCases, RampToACrawlHasNoNaN) {
   // From 40 m/s (stable: the linear critical speed is 65.3 m/s) down to 0.5 m/s, where the creep
   // damping is 2f22κ/(mV) ≈ 2.8e4 1/s: the explicit steps shrink but stay finite.
@@ -28,7 +19,7 @@ TEST(NonlinearHuntingHardCases, RampToACrawlHasNoNaN) {
   o.end_speed = 0.5;
   o.ramp_rate = 2.0;
   o.disturbance = 0.01;  // on the flange
-  const NonlinearHuntingResult r = solve_nonlinear_hunting(wheelset_on_springs(), o);
+  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(test::wheelset_on_springs(), DofSet::lateral), o);
   EXPECT_EQ(r.verdict, NonlinearHuntingVerdict::no_limit_cycle_at_start);
   EXPECT_FALSE(r.critical_speed.has_value());
   // No limit cycle at either rate: no critical speed to converge; not applicable, never "converged".
@@ -46,7 +37,7 @@ TEST(NonlinearHuntingHardCases, LimitCycleOutlivesTheRamp) {
   o.wheel_load = 50e3;
   o.start_speed = 80.0;
   o.end_speed = 70.0;
-  const NonlinearHuntingResult r = solve_nonlinear_hunting(wheelset_on_springs(), o);
+  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(test::wheelset_on_springs(), DofSet::lateral), o);
   EXPECT_EQ(r.verdict, NonlinearHuntingVerdict::survives_to_end_speed);
   EXPECT_FALSE(r.critical_speed.has_value());
   EXPECT_EQ(r.halved_rate.verdict, NonlinearHuntingVerdict::survives_to_end_speed);

@@ -17,19 +17,11 @@ namespace railmodal {
 namespace {
 
 using test::WheelsetData;
+using test::wheelset_on_springs;
 
 // The linear critical speed of the wheelset on springs (k_y = 1e6 N/m, k_ψ = 2e6 N·m/rad), by
 // Routh–Hurwitz in hunting_validation_test.cpp (WheelsetOnSpringsCriticalSpeed).
 constexpr double kLinearCriticalSpeed = 66.205641;  // 65.330265 before κ entered the force projection
-
-Vehicle wheelset_on_springs() {
-  Vehicle v;
-  v.name = "wheelset on springs";
-  WheelsetData d;
-  test::add_wheelset(v, d);
-  test::add_springs_to_ground(v, d, 1.0e6, 2.0e6);
-  return v;
-}
 
 // Two wheelsets in a frame on soft, damped primary springs, each wheelset's reference point off
 // its axle (so the contact forces reach the DOFs through the lever), and a series damper added by
@@ -181,9 +173,14 @@ NonlinearHuntingOptions wheelset_options() {
   return o;
 }
 
+// The nonlinear critical speed of the wheelset on springs (hunting_test_support.hpp) under `o`.
+NonlinearHuntingResult solve_wheelset_on_springs(const NonlinearHuntingOptions& o) {
+  return solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+}
+
 TEST(NonlinearHunting, WheelsetOnSpringsLimitCycle) {
   const NonlinearHuntingOptions o = wheelset_options();
-  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  const NonlinearHuntingResult r = solve_wheelset_on_springs(o);
   ASSERT_EQ(r.verdict, NonlinearHuntingVerdict::limit_cycle_dies_out);
   ASSERT_TRUE(r.critical_speed.has_value());
   RecordProperty("nonlinear_critical_speed", std::to_string(*r.critical_speed));
@@ -299,7 +296,7 @@ TEST(NonlinearHunting, HuntingOfTheSecondWheelsetIsSeen) {
   NonlinearHuntingOptions o = wheelset_options();
   o.end_speed = 60.0;  // the fold is near 65 m/s: the ramp below 60 m/s would only cost time
   const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(v, DofSet::lateral), o);
-  const NonlinearHuntingResult alone = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  const NonlinearHuntingResult alone = solve_wheelset_on_springs(o);
   EXPECT_EQ(r.stated_rate.watched_wheelset, 1);
   ASSERT_EQ(r.verdict, NonlinearHuntingVerdict::limit_cycle_dies_out);
   ASSERT_TRUE(r.critical_speed && alone.critical_speed);
@@ -319,7 +316,7 @@ TEST(NonlinearHunting, TooFastRampIsFlaggedAndTheAnswerIsTheLowestSurvivingHold)
   o.start_speed = 75.0;
   o.end_speed = 50.0;
   o.ramp_rate = 5.0;
-  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  const NonlinearHuntingResult r = solve_wheelset_on_springs(o);
   ASSERT_EQ(r.verdict, NonlinearHuntingVerdict::limit_cycle_dies_out);
   ASSERT_TRUE(r.critical_speed && r.hold.lowest_surviving && r.stated_rate.critical_speed);
   ASSERT_FALSE(r.hold.holds.empty());
@@ -353,7 +350,7 @@ TEST(NonlinearHunting, TooFastRampIsFlaggedAndTheAnswerIsTheLowestSurvivingHold)
 TEST(NonlinearHunting, SuitableRampIsNotFlagged) {
   NonlinearHuntingOptions o = wheelset_options();
   o.end_speed = 60.0;  // the fold is near 66 m/s: the ramp below 60 m/s would only cost time
-  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  const NonlinearHuntingResult r = solve_wheelset_on_springs(o);
   EXPECT_FALSE(r.ramp_too_fast);
   EXPECT_FALSE(r.collapsing_at_end_speed);
   EXPECT_TRUE(r.richardson_critical_speed.has_value());
@@ -369,7 +366,7 @@ TEST(NonlinearHunting, RampEndingInsideACollapseIsNotConverged) {
   o.start_speed = 75.0;
   o.end_speed = 50.0;
   o.ramp_rate = 20.0;
-  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  const NonlinearHuntingResult r = solve_wheelset_on_springs(o);
   ASSERT_EQ(r.verdict, NonlinearHuntingVerdict::survives_to_end_speed);
   const auto& c = r.curve;
   ASSERT_GE(c.size(), 3u);
@@ -388,7 +385,7 @@ TEST(NonlinearHunting, LinearLawRampFindsTheLinearCriticalSpeed) {
   o.effects.clear();
   o.start_speed = 68.0;
   o.disturbance = 1e-4;
-  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  const NonlinearHuntingResult r = solve_wheelset_on_springs(o);
   ASSERT_TRUE(r.halved_rate.critical_speed.has_value() && r.stated_rate.critical_speed.has_value());
   EXPECT_NEAR(*r.halved_rate.critical_speed, kLinearCriticalSpeed, 0.05);
   EXPECT_NEAR(*r.stated_rate.critical_speed, kLinearCriticalSpeed, 0.05);
@@ -406,7 +403,7 @@ TEST(NonlinearHunting, LinearLawGrowsWithoutBound) {
   o.effects.clear();
   o.start_speed = 100.0;
   o.ramp_rate = 0.2;
-  const NonlinearHuntingResult r = solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o);
+  const NonlinearHuntingResult r = solve_wheelset_on_springs(o);
   EXPECT_EQ(r.verdict, NonlinearHuntingVerdict::unbounded_growth);
   EXPECT_EQ(r.halved_rate.verdict, NonlinearHuntingVerdict::unbounded_growth);
   EXPECT_FALSE(r.critical_speed.has_value());
@@ -441,7 +438,7 @@ TEST(NonlinearHunting, OptionsAreValidated) {
   o = {};
   o.disturbance = 0.0;
   EXPECT_FALSE(o.is_valid(&why));
-  EXPECT_THROW(solve_nonlinear_hunting(assemble(wheelset_on_springs(), DofSet::lateral), o), std::invalid_argument);
+  EXPECT_THROW(solve_wheelset_on_springs(o), std::invalid_argument);
   Vehicle no_wheelsets = wheelset_on_springs();
   no_wheelsets.wheelsets.clear();
   EXPECT_THROW(solve_nonlinear_hunting(assemble(no_wheelsets, DofSet::lateral)), std::invalid_argument);

@@ -13,14 +13,6 @@
 namespace railmodal::test {
 namespace {
 
-Vehicle wheelset_on_springs(const WheelsetData& d, double k_y, double k_psi) {
-  Vehicle v;
-  v.name = "wheelset on springs";
-  add_wheelset(v, d);
-  if (k_y > 0.0 || k_psi > 0.0) add_springs_to_ground(v, d, k_y, k_psi);
-  return v;
-}
-
 HuntingOptions options(double from, double to) {
   HuntingOptions o;
   o.min_speed = from;

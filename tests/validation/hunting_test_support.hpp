@@ -79,6 +79,18 @@ inline void add_springs_to_ground(Vehicle& v, const WheelsetData& d, double late
         spring(d.name + (y > 0 ? ".left" : ".right"), d.name, "", {d.x, y, 0.0}, yaw / (2.0 * b * b), lateral / 2.0));
 }
 
+/// One wheelset held to a fixed frame by lateral and yaw springs (none where both are zero): with
+/// the defaults, the wheelset on springs of data/vehicles/wheelset_on_springs.toml (k_y = 1 MN/m,
+/// k_ψ = 2 MN·m/rad), whose linear critical speed hunting_validation_test.cpp finds by
+/// Routh–Hurwitz. The hunting, nonlinear-hunting and lateral-ride tests share it.
+inline Vehicle wheelset_on_springs(const WheelsetData& d = {}, double k_y = 1.0e6, double k_psi = 2.0e6) {
+  Vehicle v;
+  v.name = "wheelset on springs";
+  add_wheelset(v, d);
+  if (k_y > 0.0 || k_psi > 0.0) add_springs_to_ground(v, d, k_y, k_psi);
+  return v;
+}
+
 /// The system with its contact terms at one speed.
 struct HuntingModel {
   LinearSystem system;
