@@ -9,6 +9,7 @@
 #include "require_valid.hpp"
 #include "ride/gaussian_stream.hpp"
 #include "spectrum/real_fft.hpp"
+#include "xoshiro256.hpp"
 
 namespace railmodal {
 namespace {
@@ -26,7 +27,7 @@ Eigen::Index sample_count(const TrackSynthesisOptions& options) {
 // component's profile does not depend on which others are synthesised with it.
 std::uint64_t component_seed(std::uint64_t seed, TrackIrregularity irregularity) {
   std::uint64_t x = seed ^ (0x5851f42d4c957f2dULL * (static_cast<std::uint64_t>(irregularity) + 1));
-  return ride::GaussianStream::splitmix64(&x);
+  return splitmix64(&x);
 }
 
 void require_representable(const TrackSpectrum& spectrum, double lowest, double nyquist) {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "study/sampling.hpp"
 #include "study/study_plan.hpp"
+#include "xoshiro256.hpp"
 
 namespace railmodal::study {
 

@@ -19,12 +19,13 @@
 # merge, the shard reader (input) that hands it the results one at a time. Foundations
 # below every stage, which include nothing of the stages: require_valid.hpp (the one check of
 # an options struct) and summary/ (the stage clock of an AnalysisSummary), which any analysis
-# and report may include, shortest_text.hpp (round-trip number text) and edit_distance.hpp (how far a misspelt name is
-# from the one meant), which any stage may. version.cpp defines
+# and report may include, shortest_text.hpp (round-trip number text) edit_distance.hpp (how far a misspelt name is
+# from the one meant) and xoshiro256.hpp (the portable random sequence of samples and track
+# realisations), which any stage may. version.cpp defines
 # railmodal::version() and includes nothing of the stages.
 cmake_minimum_required(VERSION 3.16)
 
-set(foundations "require_valid;summary;shortest_text;edit_distance")
+set(foundations "require_valid;summary;shortest_text;edit_distance;xoshiro256")
 set(may_include_model "shortest_text")
 set(may_include_input "model;shortest_text;edit_distance")
 set(may_include_gear "model;${foundations}")
@@ -45,6 +46,7 @@ set(may_include_require_valid "")
 set(may_include_summary "")
 set(may_include_shortest_text "")
 set(may_include_edit_distance "")
+set(may_include_xoshiro256 "")
 set(may_include_version "")
 # Single headers of another stage a stage may include: plan types a reader fills; the study's
 # workers read each variant into kept storage (load_study.hpp's detail::read_variant_into, a
