@@ -31,7 +31,7 @@ using report::html_escape;
 using report::significant;
 using report::Table;
 
-constexpr double kKmh = 3.6;        // km/h per m/s
+using report::kKmh;
 constexpr size_t kChartPoints = 2000;  // points per sweep chart: larger studies are thinned
 constexpr size_t kModeSeries = 6;   // periods plotted per sweep chart: the lowest modes
 constexpr size_t kCurveCharts = 8;  // amplitude charts at most

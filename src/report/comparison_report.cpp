@@ -27,7 +27,7 @@ namespace {
 
 using report::JsonWriter;
 
-constexpr double kKmh = 3.6;  // km/h per m/s
+using report::kKmh;
 
 std::vector<double> periods(const VariantResult& r) {
   std::vector<double> out;

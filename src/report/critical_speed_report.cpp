@@ -30,7 +30,7 @@ using report::unit_of;
 using report::write_html_table;
 using report::write_markdown_table;
 
-constexpr double kKmh = 3.6;  // m/s → km/h
+using report::kKmh;
 
 std::string source_label(const CriticalSpeedStudy& study, int s) {
   return "[" + std::to_string(s + 1) + "] " + study.scene.sources[s]->kind();

@@ -31,7 +31,7 @@ using report::wrapped;
 using report::write_markdown_table;
 using report::write_text_table;
 
-constexpr double kKmh = 3.6;  // m/s → km/h
+using report::kKmh;
 
 // Branches drawn each in a colour of their own (the palette has eight; the rest share the last).
 constexpr size_t kColouredBranches = 7;

@@ -31,7 +31,7 @@ using report::Table;
 using report::wrapped;
 using report::write_text_table;
 
-constexpr double kKmh = 3.6;  // m/s → km/h
+using report::kKmh;
 constexpr double kMm = 1e3;   // m → mm
 // Points of the stated ramp's curve the text formats list (the CSV and JSON carry every half cycle).
 constexpr size_t kListedPoints = 12;

@@ -32,7 +32,7 @@ using report::significant;
 using report::Table;
 using report::write_text_table;
 
-constexpr double kKmh = 3.6;  // m/s → km/h
+using report::kKmh;
 // Modes named per output: the largest shares, down to this one.
 constexpr size_t kDominantModes = 3;
 constexpr double kSmallestShownShare = 0.05;

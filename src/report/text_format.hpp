@@ -13,6 +13,9 @@
 
 namespace railmodal::report {
 
+/// km/h per m/s: speeds are SI inside and km/h in the reports (docs/product.md).
+constexpr double kKmh = 3.6;
+
 /// Whether a CSV field must be quoted: it holds a comma, quote or line break (RFC 4180).
 inline bool csv_needs_quotes(std::string_view text) { return text.find_first_of(",\"\n\r") != std::string_view::npos; }
 
