@@ -145,8 +145,11 @@ std::shared_ptr<const ExcitationSource> unbalance(TableReader& t) {
       m.finish();
       p.reciprocating.push_back(r);
     }
-  if (p.rotating.empty() && p.reciprocating.empty())
+  if (p.rotating.empty() && p.reciprocating.empty()) {
+    t.refuse_misspelling("rotating");
+    t.refuse_misspelling("reciprocating");
     t.fail("rotating", "missing: give [[source.rotating]] or [[source.reciprocating]] masses");
+  }
   return make_source(p);
 }
 

@@ -64,6 +64,8 @@ std::string stiffness_given_by(const TableReader& t, const std::string& kind) {
   const bool leaf = kind == "leaf" && any_of(t, kLeafGeometry);
   const bool elliptic = kind == "elliptic" && any_of(t, kEllipticGeometry);
   if (coil || leaf || elliptic) given.push_back(kind + " geometry");
+  if (given.empty())  // "stifness", "flexibilty": point at it rather than say "missing"
+    for (const char* key : {"stiffness", "flexibility", "static_deflection", "load_deflection"}) t.refuse_misspelling(key);
   if (given.size() != 1) {
     const std::string choices =
         "give exactly one of stiffness, flexibility, static_deflection, load_deflection" +

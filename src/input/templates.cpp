@@ -279,9 +279,11 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   TableReader s = root.table("suspension");
   if (wheelset)
     for (const char* key : {"lateral", "longitudinal"})
-      if (!s.has(key))
+      if (!s.has(key)) {
+        s.refuse_misspelling(key);
         s.fail(key, std::string("missing: on wheelsets the body is guided by the springs' ") + key + " stages, e.g. " +
                         key + " = { stiffness = \"3000 kN/m\" }");
+      }
   const double a1 = s.positive("wheelbase", Quantity::length) / 2.0;
   const double b1 = s.positive("spring_spacing", Quantity::length) / 2.0;
   if (std::abs(offset) >= a1) root.fail("body", "cg_offset puts the CG outside the wheelbase");
@@ -361,9 +363,11 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
     root.fail("wheelset", "stands under primary (axlebox) springs; a single-suspension wagon has none");
   if (wheelset)
     for (const char* key : {"lateral", "longitudinal"})
-      if (!pri->has(key))
+      if (!pri->has(key)) {
+        pri->refuse_misspelling(key);
         pri->fail(key, std::string("missing: on wheelsets the bogie frame is guided by the axlebox springs' ") + key +
                            " stages, e.g. " + key + " = { stiffness = \"3000 kN/m\" }");
+      }
 
   const double g = v->gravity;
   for (int k = 0; k < 2; ++k) {
