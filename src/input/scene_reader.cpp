@@ -390,6 +390,10 @@ void read_sources(TableReader& root, Scene& scene, std::string* geometry) {
       *geometry = irregularity.geometry_file;
       scene.name_places["irregularity"] = t.place("kind");
       scene.name_places["irregularity.geometry"] = t.place("geometry");
+      // The components' tables, which the ride may refuse once the vehicle is known (one that
+      // moves no degree of freedom of the model): its error is placed there.
+      for (const char* key : {"vertical_level", "alignment", "cross_level"})
+        if (t.has(key)) scene.name_places[std::string("irregularity.") + key] = t.place(key);
     } else {
       // The keys ExcitationSource::misfit (and check_scene_fits) may blame, once the vehicle is
       // known, by the source's index in scene.sources (the irregularity source is not there).
