@@ -203,7 +203,7 @@ std::vector<study::Assignment> read_overrides(TableReader& t, const std::string&
   std::vector<study::Assignment> out;
   if (!t.has(key)) return out;
   const toml::value& table = t.raw(key);
-  if (!table.is_table()) t.fail(key, "expected a table of key paths and values, such as { \"body.weight\" = \"30 t\" }");
+  if (!table.is_table()) t.fail(key, "expected a table of key paths and values, such as { \"body.weight\" = \"30 tf\" }");
   std::map<std::string, const toml::value*> sorted;
   for (const auto& [path, value] : table.as_table()) sorted[path] = &value;
   for (const auto& [path, value] : sorted) {
