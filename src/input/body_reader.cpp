@@ -1,5 +1,7 @@
 #include "input/body_reader.hpp"
 
+#include "input/input_warnings.hpp"
+
 #include <cmath>
 #include <string>
 
@@ -35,6 +37,7 @@ Eigen::Vector3d read_inertia(TableReader& t, double mass) {
   for (int k = 0; k < 3; ++k) {
     if (radii) {
       const auto r = sub.optional_positive(names[k], Quantity::length, true);
+      if (r) warn_implausible_length(sub, names[k], *r, kBodyLength);
       inertia(k) = r ? mass * *r * *r : 0.0;
       if (!within_magnitudes(inertia(k)))
         sub.fail(names[k], "with the mass gives a moment of inertia: " + magnitude_complaint(inertia(k)));

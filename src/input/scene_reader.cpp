@@ -292,7 +292,12 @@ SimulationSpec read_simulation(TableReader t, bool with_sources, std::map<std::s
   sim.time_step = t.positive("time_step", Quantity::time);
   if (sim.duration / sim.time_step > 1e8) t.fail("time_step", "gives more than 1e8 steps; take a longer step");
   if (sim.time_step > sim.duration) t.fail("time_step", "is longer than the duration");
-  if (t.has("effects")) sim.effects = read_effects(t);
+  if (t.has("effects")) {
+    sim.effects = read_effects(t);
+    // Where each effect is named, for scene_warnings (an effect the vehicle gives nothing to).
+    for (size_t k = 0; k < sim.effects.size(); ++k)
+      (*places)["simulation.effects[" + std::to_string(k) + "]"] = place_of(t.raw("effects").as_array()[k]);
+  }
   if (t.has("tolerance")) {
     sim.tolerance = t.positive("tolerance", Quantity::dimensionless);
     if (!(sim.tolerance < 1e-2)) t.fail("tolerance", "must be below 1e-2 (default 1e-10)");

@@ -153,8 +153,11 @@ int run(const RideCommandOptions& o) {
                                           scene.ride ? scene.ride->geometry_file : std::string()};
     files.refuse_inputs(inputs);
     current = scene.vehicle_file;
-    const LinearSystem system = assemble(load_vehicle(scene.vehicle_file), scene.dofs);
+    const Vehicle vehicle = load_vehicle(scene.vehicle_file);
+    print_input_warnings(vehicle.warnings);
+    const LinearSystem system = assemble(vehicle, scene.dofs);
     current = o.scene;
+    print_input_warnings(scene_warnings(scene, vehicle));  // a floor point beyond the body
     check_scene_fits(scene, system);
     const std::vector<RideOutput> outputs =
         scene.ride && !scene.ride->outputs.empty() ? scene.ride->outputs : default_ride_outputs(system);
