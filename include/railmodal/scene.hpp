@@ -105,4 +105,11 @@ void check_scene_fits(const Scene& scene, const LinearSystem& system);
 /// Reads a scene file; errors are InputError with file, line, column and key.
 Scene load_scene(const std::string& path);
 
+/// What the scene asks of `vehicle` that the vehicle gives nothing to, or that lies beyond it,
+/// each "scene.toml:20:12: warning: ..." (docs/input.md, "Implausible inputs"): an effect of
+/// [simulation] the vehicle has no part for (viscous_dampers without dampers, leaf_friction
+/// without leaf friction, progressive_springs without a curve), a [[ride.output]] point beyond
+/// the body's extent. Accepted inputs: the caller shows them; no analysis changes.
+std::vector<std::string> scene_warnings(const Scene& scene, const Vehicle& vehicle);
+
 }  // namespace railmodal

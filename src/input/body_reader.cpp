@@ -1,5 +1,7 @@
 #include "input/body_reader.hpp"
 
+#include "input/input_warnings.hpp"
+
 #include <cmath>
 #include <string>
 
@@ -25,13 +27,17 @@ Eigen::Vector3d read_inertia(TableReader& t, double mass) {
     t.fail("inertia", "give inertia or radius_of_gyration, not both");
   Eigen::Vector3d inertia = Eigen::Vector3d::Zero();
   const bool radii = t.has("radius_of_gyration");
-  if (!radii && !t.has("inertia"))
+  if (!radii && !t.has("inertia")) {
+    t.refuse_misspelling("radius_of_gyration");  // "radius_of_gyraton", "inertai": point at it
+    t.refuse_misspelling("inertia");
     t.fail("radius_of_gyration", "missing: give radius_of_gyration = {roll, pitch, yaw} or inertia = {roll, pitch, yaw}");
+  }
   TableReader sub = t.table(radii ? "radius_of_gyration" : "inertia");
   const char* names[] = {"roll", "pitch", "yaw"};
   for (int k = 0; k < 3; ++k) {
     if (radii) {
       const auto r = sub.optional_positive(names[k], Quantity::length, true);
+      if (r) warn_implausible_length(sub, names[k], *r, kBodyLength);
       inertia(k) = r ? mass * *r * *r : 0.0;
       if (!within_magnitudes(inertia(k)))
         sub.fail(names[k], "with the mass gives a moment of inertia: " + magnitude_complaint(inertia(k)));
@@ -64,6 +70,8 @@ std::optional<BodyBending> read_bending(TableReader& parent) {
   b.centre = t.optional_quantity("centre", Quantity::length);
   const bool beam = t.has("bending_stiffness") || t.has("mass_per_length");
   const bool mode = t.has("frequency") || t.has("modal_mass");
+  if (!beam && !mode)
+    for (const char* key : {"bending_stiffness", "mass_per_length", "frequency", "modal_mass"}) t.refuse_misspelling(key);
   if (beam == mode)
     t.fail(beam ? "frequency" : "bending_stiffness",
            beam ? "give the beam (bending_stiffness and mass_per_length) or the mode (frequency and modal_mass), "
@@ -156,6 +164,10 @@ WheelRailContact read_contact(TableReader& t) {
   c.roll_parameter = t.optional_quantity("roll_parameter", Quantity::dimensionless);
   // W: without it, the wheelset's weight and the static loads of what stands on it.
   c.axle_load = t.optional_positive("axle_load", Quantity::force);
+  if (!t.has("creep") && !t.has("hertz")) {
+    t.refuse_misspelling("creep");
+    t.refuse_misspelling("hertz");
+  }
   if (t.has("creep") == t.has("hertz"))
     t.fail("creep", t.has("creep") ? "give creep or hertz, not both"
                                    : "missing: give the creep coefficients, creep = { f11 = \"…\", f22 = \"…\", "

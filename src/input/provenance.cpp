@@ -3,12 +3,14 @@
 #include "railmodal/provenance.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
+#include "input/input_file.hpp"
 #include "railmodal/errors.hpp"
 
 namespace railmodal {
@@ -37,8 +39,9 @@ Provenance provenance_of(const std::vector<std::string>& paths) {
       provenance.files.push_back({path, ""});
       continue;
     }
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, 0, 0, "cannot be read");
+    if (!in) throw InputError(path, 0, 0, "cannot be read" + input::system_reason(errno));
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     provenance.files.push_back({path, content_digest(bytes)});
   }

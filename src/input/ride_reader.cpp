@@ -80,6 +80,7 @@ RideOutput read_output(TableReader& t, size_t k, std::set<std::string>* names,
   if (out.kind == RideOutput::Kind::point) {
     out.body = t.string("body");
     (*places)[at + "body"] = t.place("body");
+    (*places)[at + "point"] = t.place("point");  // scene_warnings: a point beyond the body
     const auto p = t.point("point");
     out.point = Eigen::Vector3d(p[0], p[1], p[2]);
     const std::string quantity = t.optional_string("quantity").value_or("acceleration");

@@ -145,8 +145,11 @@ std::shared_ptr<const ExcitationSource> unbalance(TableReader& t) {
       m.finish();
       p.reciprocating.push_back(r);
     }
-  if (p.rotating.empty() && p.reciprocating.empty())
+  if (p.rotating.empty() && p.reciprocating.empty()) {
+    t.refuse_misspelling("rotating");
+    t.refuse_misspelling("reciprocating");
     t.fail("rotating", "missing: give [[source.rotating]] or [[source.reciprocating]] masses");
+  }
   return make_source(p);
 }
 
@@ -289,7 +292,12 @@ SimulationSpec read_simulation(TableReader t, bool with_sources, std::map<std::s
   sim.time_step = t.positive("time_step", Quantity::time);
   if (sim.duration / sim.time_step > 1e8) t.fail("time_step", "gives more than 1e8 steps; take a longer step");
   if (sim.time_step > sim.duration) t.fail("time_step", "is longer than the duration");
-  if (t.has("effects")) sim.effects = read_effects(t);
+  if (t.has("effects")) {
+    sim.effects = read_effects(t);
+    // Where each effect is named, for scene_warnings (an effect the vehicle gives nothing to).
+    for (size_t k = 0; k < sim.effects.size(); ++k)
+      (*places)["simulation.effects[" + std::to_string(k) + "]"] = place_of(t.raw("effects").as_array()[k]);
+  }
   if (t.has("tolerance")) {
     sim.tolerance = t.positive("tolerance", Quantity::dimensionless);
     if (!(sim.tolerance < 1e-2)) t.fail("tolerance", "must be below 1e-2 (default 1e-10)");
@@ -387,6 +395,10 @@ void read_sources(TableReader& root, Scene& scene, std::string* geometry) {
       *geometry = irregularity.geometry_file;
       scene.name_places["irregularity"] = t.place("kind");
       scene.name_places["irregularity.geometry"] = t.place("geometry");
+      // The components' tables, which the ride may refuse once the vehicle is known (one that
+      // moves no degree of freedom of the model): its error is placed there.
+      for (const char* key : {"vertical_level", "alignment", "cross_level"})
+        if (t.has(key)) scene.name_places[std::string("irregularity.") + key] = t.place(key);
     } else {
       // The keys ExcitationSource::misfit (and check_scene_fits) may blame, once the vehicle is
       // known, by the source's index in scene.sources (the irregularity source is not there).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "input/input_warnings.hpp"
 #include "model/spring_formulas.hpp"
 #include "shortest_text.hpp"
 
@@ -64,6 +65,8 @@ std::string stiffness_given_by(const TableReader& t, const std::string& kind) {
   const bool leaf = kind == "leaf" && any_of(t, kLeafGeometry);
   const bool elliptic = kind == "elliptic" && any_of(t, kEllipticGeometry);
   if (coil || leaf || elliptic) given.push_back(kind + " geometry");
+  if (given.empty())  // "stifness", "flexibilty": point at it rather than say "missing"
+    for (const char* key : {"stiffness", "flexibility", "static_deflection", "load_deflection"}) t.refuse_misspelling(key);
   if (given.size() != 1) {
     const std::string choices =
         "give exactly one of stiffness, flexibility, static_deflection, load_deflection" +
@@ -86,13 +89,20 @@ double curve_stiffness(TableReader& t, std::optional<double> element_load, Sprin
   return curve.stiffness_at(load);
 }
 
+// A spring's positive dimension, warned when beyond a spring's scale (input_warnings.hpp).
+double spring_dimension(TableReader& t, const std::string& key) {
+  const double value = t.positive(key, Quantity::length);
+  warn_implausible_length(t, key, value, kSpringLength);
+  return value;
+}
+
 double coil_stiffness(TableReader& t) {
-  const double d = t.positive("wire_diameter", Quantity::length);
+  const double d = spring_dimension(t, "wire_diameter");
   double r = 0.0;
   if (t.has("mean_radius") == t.has("mean_diameter"))
     t.fail("mean_radius", "give exactly one of mean_radius and mean_diameter");
-  r = t.has("mean_radius") ? t.positive("mean_radius", Quantity::length)
-                           : t.positive("mean_diameter", Quantity::length) / 2.0;
+  r = t.has("mean_radius") ? spring_dimension(t, "mean_radius")
+                           : spring_dimension(t, "mean_diameter") / 2.0;
   const double n = t.positive("active_coils", Quantity::dimensionless);
   const double G = t.positive("shear_modulus", Quantity::modulus);
   return model::coil_spring_stiffness(d, r, n, G);  // eq. (4)
@@ -101,9 +111,9 @@ double coil_stiffness(TableReader& t) {
 // The leaf spring's geometry into *g, and its stiffness: at the carried load where inclined
 // shackles make it depend on the load.
 double leaf_stiffness(TableReader& t, std::optional<double> element_load, int count, model::LeafSpringGeometry* g) {
-  g->length = t.positive("length", Quantity::length);
-  g->leaf_width = t.positive("leaf_width", Quantity::length);
-  g->leaf_thickness = t.positive("leaf_thickness", Quantity::length);
+  g->length = spring_dimension(t, "length");
+  g->leaf_width = spring_dimension(t, "leaf_width");
+  g->leaf_thickness = spring_dimension(t, "leaf_thickness");
   g->leaves = t.count("leaves", 1);
   g->full_length_leaves = t.count("full_length_leaves", 1);
   if (g->full_length_leaves > g->leaves) t.fail("full_length_leaves", "cannot exceed leaves");
@@ -121,8 +131,8 @@ double leaf_stiffness(TableReader& t, std::optional<double> element_load, int co
 
 double elliptic_stiffness(TableReader& t) {
   return model::elliptic_spring_stiffness(
-      t.positive("length", Quantity::length), t.positive("leaf_width", Quantity::length),
-      t.positive("leaf_thickness", Quantity::length), t.count("leaves", 1), t.count("rows", 1),
+      spring_dimension(t, "length"), spring_dimension(t, "leaf_width"),
+      spring_dimension(t, "leaf_thickness"), t.count("leaves", 1), t.count("rows", 1),
       t.positive("modulus", Quantity::modulus));
 }
 
@@ -220,7 +230,7 @@ SpringStage read_spring_stage(TableReader& t, std::optional<double> element_load
   } else if (way == "flexibility") {
     stage.stiffness = 1.0 / t.positive("flexibility", Quantity::flexibility);
   } else if (way == "static_deflection") {
-    const double f = t.positive("static_deflection", Quantity::length);
+    const double f = spring_dimension(t, "static_deflection");
     stage.stiffness = load_per_spring(t, element_load, stage.count, "static_deflection") / f;
   } else if (way == "load_deflection") {
     stage.stiffness = curve_stiffness(t, element_load, &stage);
@@ -299,6 +309,7 @@ SwingHanger read_hanger(TableReader& parent) {
   TableReader t = parent.table("hanger");
   SwingHanger h;
   h.length = t.positive("length", Quantity::length);
+  warn_implausible_length(t, "length", h.length, kHangerLength);  // a bare "734": 734 m, a 54 s sway
   h.inclination = t.optional_quantity("inclination", Quantity::angle).value_or(0.0);
   if (!(std::abs(h.inclination) < 1.3962634015954636))  // 80°: beyond, cos α ≈ 0
     t.fail("inclination", "must be within ±80 degrees; write units, e.g. \"14 deg\"");

@@ -76,6 +76,36 @@ study::WrittenValue keep(const toml::value& v, StudyFile* file) {
   return {value_text(v), static_cast<int>(file->written.size() - 1)};
 }
 
+// A range whose ends differ in unit (from = "40 kg", to = "80 mm"): the end its key cannot take
+// is blamed, with the reader's reason. Each end is tried by reading the base vehicle (or scene)
+// with the key set to it, on this error path only; an end every reading takes, or a key no
+// reading blames, leaves `to` blamed for differing from `from`. (Blaming `to` always put the
+// error on the right value when `from` was wrong: the audit of 2026-11-27.)
+[[noreturn]] void refuse_mixed_units(TableReader& t, const study::SweepParameter& p, const StudyFile& file,
+                                     const study::WrittenNumber& from, const study::WrittenNumber& to) {
+  const std::string document_file = p.scene ? file.scene_file : file.plan.vehicle_file;
+  for (const char* end : {"from", "to"}) {
+    const toml::value value = drawn_value(end == std::string("from") ? from : to);
+    std::string path;
+    try {
+      toml::value document = parse_toml_file(document_file);
+      path = set_at_path(document, p.key, value);
+      if (p.scene)
+        (void)read_scene(document, document_file);
+      else
+        (void)read_vehicle(document, document_file);
+    } catch (const InputError& e) {
+      const std::string prefix = "key '" + path + "': ";
+      if (!path.empty() && e.message().rfind(prefix, 0) == 0)
+        t.fail(end, "'" + value_text(value) + "' is not a value of key '" + p.key + "': " +
+                        e.message().substr(prefix.size()));
+    } catch (const std::exception&) {
+      // A key the document cannot hold: its own error comes with the variants.
+    }
+  }
+  t.fail("to", "must be in the same unit as from ('" + from.unit + "')");
+}
+
 // The values of a grid parameter: a list, or a range stepped through.
 void read_values(TableReader& t, study::SweepParameter* p, StudyFile* file) {
   if (t.has("values")) {
@@ -86,7 +116,7 @@ void read_values(TableReader& t, study::SweepParameter* p, StudyFile* file) {
   }
   const study::WrittenNumber from = number_with_unit(t, "from");
   const study::WrittenNumber to = number_with_unit(t, "to");
-  if (to.unit != from.unit) t.fail("to", "must be in the same unit as from ('" + from.unit + "')");
+  if (to.unit != from.unit) refuse_mixed_units(t, *p, *file, from, to);
   if (!(to.number >= from.number)) t.fail("to", "must not be below from");
   const study::WrittenNumber step = number_with_unit(t, "step");
   if (step.unit != from.unit) t.fail("step", "must be in the same unit as from ('" + from.unit + "')");
@@ -102,11 +132,11 @@ void read_values(TableReader& t, study::SweepParameter* p, StudyFile* file) {
 }
 
 // The interval a sample draws a parameter from.
-void read_interval(TableReader& t, study::SweepParameter* p) {
+void read_interval(TableReader& t, study::SweepParameter* p, const StudyFile* file) {
   if (t.has("values")) t.fail("values", "a sample draws from an interval: give from and to");
   p->from = number_with_unit(t, "from");
   p->to = number_with_unit(t, "to");
-  if (p->to.unit != p->from.unit) t.fail("to", "must be in the same unit as from ('" + p->from.unit + "')");
+  if (p->to.unit != p->from.unit) refuse_mixed_units(t, *p, *file, p->from, p->to);
   if (!(p->to.number >= p->from.number)) t.fail("to", "must not be below from");
   if (t.has("step")) t.fail("step", "a sample draws from the interval: no step");
   if (p->from.integer && p->to.integer) t.fail("from", "a sample draws real numbers: write 1.0 rather than 1");
@@ -122,7 +152,7 @@ study::SweepParameter read_parameter(TableReader& t, bool sample, StudyFile* fil
   p.label = t.optional_string("label").value_or(dot == std::string::npos ? p.key : p.key.substr(dot + 1));
   const toml::value& where = t.raw(p.scene ? "scene_key" : "key");
   p.place = place(where);
-  if (sample) read_interval(t, &p);
+  if (sample) read_interval(t, &p, file);
   else read_values(t, &p, file);
   t.finish();
   return p;
@@ -173,7 +203,7 @@ std::vector<study::Assignment> read_overrides(TableReader& t, const std::string&
   std::vector<study::Assignment> out;
   if (!t.has(key)) return out;
   const toml::value& table = t.raw(key);
-  if (!table.is_table()) t.fail(key, "expected a table of key paths and values, such as { \"body.weight\" = \"30 t\" }");
+  if (!table.is_table()) t.fail(key, "expected a table of key paths and values, such as { \"body.weight\" = \"30 tf\" }");
   std::map<std::string, const toml::value*> sorted;
   for (const auto& [path, value] : table.as_table()) sorted[path] = &value;
   for (const auto& [path, value] : sorted) {

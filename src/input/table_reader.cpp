@@ -46,6 +46,15 @@ std::string written_speed_number(const toml::value& v) {
   return text.substr(first, last - first + 1);
 }
 
+// A value as the file writes it, for messages: a string quoted ("\"-10 km/h\""), a number as
+// its shortest text.
+std::string written_text(const toml::value& v) {
+  if (v.is_string()) return "\"" + v.as_string().str + "\"";
+  if (v.is_integer()) return std::to_string(v.as_integer());
+  if (v.is_floating()) return shortest_text(v.as_floating());
+  return "a " + std::string(v.is_array() ? "list" : "value");
+}
+
 const char* type_name(const toml::value& v) {
   switch (v.type()) {
     case toml::value_t::boolean: return "a boolean";
@@ -94,12 +103,17 @@ bool within_magnitudes(double si) {
   return si == 0.0 || (std::abs(si) >= kSmallestMagnitude && std::abs(si) <= kLargestMagnitude);
 }
 
-std::string magnitude_complaint(double si) {
+std::string magnitude_complaint(double si, const std::string& written) {
   std::ostringstream out;
-  if (std::abs(si) > kLargestMagnitude)
+  out << std::setprecision(3);
+  if (!written.empty())
+    out << "the value " << written << " (" << si << " in SI units) is "
+        << (std::abs(si) > kLargestMagnitude ? "beyond any physical quantity (more than 1e30"
+                                             : "below any physical quantity (less than 1e-30");
+  else if (std::abs(si) > kLargestMagnitude)
     out << "the value is beyond any physical quantity (more than 1e30";
   else
-    out << "the value " << std::setprecision(3) << si << " is below any physical quantity (less than 1e-30";
+    out << "the value " << si << " is below any physical quantity (less than 1e-30";
   out << " in SI units): a quantity is zero or of magnitude 1e-30 to 1e30 in SI units";
   return out.str();
 }
@@ -165,7 +179,9 @@ double TableReader::to_quantity(const toml::value& v, const std::string& key, Qu
                   ", got " + type_name(v));
   }
   if (!std::isfinite(value)) fail(key, "the value is not a finite number");
-  if (!within_magnitudes(value)) fail(key, magnitude_complaint(value));
+  // A value written with units is quoted as written: its SI number alone ("1e-322") is not what
+  // the file says.
+  if (!within_magnitudes(value)) fail(key, magnitude_complaint(value, v.is_string() ? written_text(v) : std::string()));
   return value;
 }
 
@@ -180,9 +196,11 @@ std::optional<double> TableReader::optional_quantity(const std::string& key, Qua
 
 double TableReader::positive(const std::string& key, Quantity kind, bool allow_zero) {
   const double value = quantity(key, kind);
+  // The value as the file writes it ("-10 km/h"), not its SI number (-2.77778, which the audit of
+  // 2026-11-27 found echoed for "-10 km/h").
   if (allow_zero ? value < 0.0 : !(value > 0.0))
     fail(key, std::string("must be ") + (allow_zero ? "zero or positive" : "positive") + ", got " +
-                  shortest_text(value, 6) + " (SI)");
+                  written_text(table_.as_table().at(key)));
   return value;
 }
 

@@ -23,8 +23,9 @@ inline constexpr double kSmallestMagnitude = 1e-30;
 inline constexpr double kLargestMagnitude = 1e30;
 /// Whether `si` is zero or inside [kSmallestMagnitude, kLargestMagnitude] in magnitude.
 bool within_magnitudes(double si);
-/// Why `si` is not: "the value ... is below any physical quantity ...", naming the band.
-std::string magnitude_complaint(double si);
+/// Why `si` is not: "the value ... is below any physical quantity ...", naming the band; with
+/// the value as `written` in the file ("\"1e-320 cm/s^2\""), that and its SI number.
+std::string magnitude_complaint(double si, const std::string& written = std::string());
 
 class TableReader {
  public:

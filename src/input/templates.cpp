@@ -6,10 +6,24 @@
 #include <string>
 
 #include "input/body_reader.hpp"
+#include "input/input_warnings.hpp"
 #include "input/spring_reader.hpp"
 
 namespace railmodal::input {
 namespace {
+
+// A wagon's length (a spacing, a wheelbase, a height), warned when beyond a wagon's scale
+// (input_warnings.hpp); `positive`: refused unless > 0.
+double wagon_dimension(TableReader& t, const std::string& key, bool positive = true) {
+  const double value = positive ? t.positive(key, Quantity::length) : t.quantity(key, Quantity::length);
+  warn_implausible_length(t, key, value, kBodyLength);
+  return value;
+}
+
+std::optional<double> optional_wagon_dimension(TableReader& t, const std::string& key) {
+  if (!t.has(key)) return std::nullopt;
+  return wagon_dimension(t, key, false);
+}
 
 // Damping of an element from optional keys of a template table.
 void read_damping(TableReader& t, Element* e) {
@@ -69,8 +83,8 @@ bool add_draw_gear(TableReader& root, const Body& body, Vehicle* v) {
     root.fail("draw_gear",
               "pulls the body longitudinally, but its longitudinal motion is held: add "
               "free = [\"longitudinal\"] to [body]");
-  const double half_spacing = t.positive("spacing", Quantity::length) / 2.0;
-  const double height = t.quantity("height", Quantity::length);
+  const double half_spacing = wagon_dimension(t, "spacing") / 2.0;
+  const double height = wagon_dimension(t, "height", false);
   for (int end : {+1, -1}) {
     Element e;
     e.name = end > 0 ? "front draw gear" : "rear draw gear";
@@ -102,14 +116,14 @@ BogieFrame read_bogie_frame(TableReader& root, bool sprung, double gravity) {
     TableReader g = root.table("bogie");
     f.mass = read_mass(g, gravity);
     f.inertia = read_inertia(g, f.mass);
-    f.cg_height = g.quantity("cg_height", Quantity::length);
-    f.half_wheelbase = g.positive("wheelbase", Quantity::length) / 2.0;
-    f.bolster = g.optional_quantity("bolster_height", Quantity::length).value_or(0.0);
+    f.cg_height = wagon_dimension(g, "cg_height", false);
+    f.half_wheelbase = wagon_dimension(g, "wheelbase") / 2.0;
+    f.bolster = optional_wagon_dimension(g, "bolster_height").value_or(0.0);
     f.longitudinal_free = read_longitudinal_free(g);
     g.finish();
   } else if (root.has("bogie")) {  // unsprung bogie frames: only the bolster height matters
     TableReader g = root.table("bogie");
-    f.bolster = g.optional_quantity("bolster_height", Quantity::length).value_or(0.0);
+    f.bolster = optional_wagon_dimension(g, "bolster_height").value_or(0.0);
     g.finish();
   }
   return f;
@@ -134,7 +148,7 @@ struct Secondary {
 
 Secondary read_secondary(TableReader& sec) {
   Secondary s;
-  s.half_spacing = sec.positive("spacing", Quantity::length) / 2.0;
+  s.half_spacing = wagon_dimension(sec, "spacing") / 2.0;
   if (sec.has("hanger")) s.hanger = read_hanger(sec);
   s.anti_roll_bar = sec.optional_positive("anti_roll_bar", Quantity::rotational_stiffness, true).value_or(0.0);
   if (sec.has("yaw_damper")) {
@@ -142,8 +156,8 @@ Secondary read_secondary(TableReader& sec) {
     YawDamper& d = s.yaw_damper.emplace();
     d.damping = t.positive("damping", Quantity::damping);
     d.series_stiffness = t.positive("series_stiffness", Quantity::stiffness);
-    d.half_spacing = t.positive("spacing", Quantity::length) / 2.0;
-    d.height = t.optional_quantity("height", Quantity::length);
+    d.half_spacing = wagon_dimension(t, "spacing") / 2.0;
+    d.height = optional_wagon_dimension(t, "height");
     t.finish();
   }
   return s;
@@ -263,8 +277,8 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   body.name = "body";
   body.mass = read_mass(b, v->gravity);
   body.inertia = read_inertia(b, body.mass);
-  const double l = b.quantity("cg_height", Quantity::length);  // CG above the axle plane
-  const double offset = b.optional_quantity("cg_offset", Quantity::length).value_or(0.0);
+  const double l = wagon_dimension(b, "cg_height", false);  // CG above the axle plane
+  const double offset = optional_wagon_dimension(b, "cg_offset").value_or(0.0);
   body.longitudinal_free = read_longitudinal_free(b);
   body.bending = read_bending(b);
   b.finish();
@@ -279,11 +293,13 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   TableReader s = root.table("suspension");
   if (wheelset)
     for (const char* key : {"lateral", "longitudinal"})
-      if (!s.has(key))
+      if (!s.has(key)) {
+        s.refuse_misspelling(key);
         s.fail(key, std::string("missing: on wheelsets the body is guided by the springs' ") + key + " stages, e.g. " +
                         key + " = { stiffness = \"3000 kN/m\" }");
-  const double a1 = s.positive("wheelbase", Quantity::length) / 2.0;
-  const double b1 = s.positive("spring_spacing", Quantity::length) / 2.0;
+      }
+  const double a1 = wagon_dimension(s, "wheelbase") / 2.0;
+  const double b1 = wagon_dimension(s, "spring_spacing") / 2.0;
   if (std::abs(offset) >= a1) root.fail("body", "cg_offset puts the CG outside the wheelbase");
   if (!body.longitudinal_free && s.has("longitudinal_damping"))
     s.fail("longitudinal_damping",
@@ -331,8 +347,8 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   body.name = "body";
   body.mass = read_mass(bt, v->gravity);
   body.inertia = read_inertia(bt, body.mass);
-  const double d0 = bt.quantity("cg_height", Quantity::length);  // above the bolster plane
-  const double l3 = bt.positive("bogie_spacing", Quantity::length) / 2.0;
+  const double d0 = wagon_dimension(bt, "cg_height", false);  // above the bolster plane
+  const double l3 = wagon_dimension(bt, "bogie_spacing") / 2.0;
   body.longitudinal_free = read_longitudinal_free(bt);
   body.bending = read_bending(bt);
   bt.finish();
@@ -349,7 +365,7 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   double b2 = 0.0;
   if (sprung_bogies) {
     pri.emplace(root.table("primary"));
-    b2 = pri->positive("spacing", Quantity::length) / 2.0;
+    b2 = wagon_dimension(*pri, "spacing") / 2.0;
   } else if (root.has("primary")) {
     root.fail("primary", "a single-suspension wagon has no primary springs (its bogie frames are unsprung)");
   }
@@ -361,9 +377,11 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
     root.fail("wheelset", "stands under primary (axlebox) springs; a single-suspension wagon has none");
   if (wheelset)
     for (const char* key : {"lateral", "longitudinal"})
-      if (!pri->has(key))
+      if (!pri->has(key)) {
+        pri->refuse_misspelling(key);
         pri->fail(key, std::string("missing: on wheelsets the bogie frame is guided by the axlebox springs' ") + key +
                            " stages, e.g. " + key + " = { stiffness = \"3000 kN/m\" }");
+      }
 
   const double g = v->gravity;
   for (int k = 0; k < 2; ++k) {

@@ -252,6 +252,18 @@ double parse_quantity(const std::string& text, Quantity expected) {
   if (factors.empty()) return value;  // a bare number is SI
   const Dimension wanted = dimension_of(expected);
   UnitDefinition unit = evaluate(factors, false);
+  // A mass where a force is wanted ("34000 kg" for a weight or a load) is refused: a compound
+  // unit reads kg and t as the book's kilogram- and tonne-force below ("910 kg/cm", unambiguous:
+  // no mass per length is asked for), but alone it may as well mean the mass (the audit of
+  // 2026-11-27 met weight = "34000 kg").
+  if (wanted == dimension_of(Quantity::force) && unit.dimension == dimension_of(Quantity::mass)) {
+    const std::string number(start, static_cast<size_t>(end - start));
+    const bool tonnes = factors.size() == 1 && factors[0].symbol == "t";
+    throw std::invalid_argument("expected a force, got a mass in \"" + text + "\": a weight or a load is a force; write \"" +
+                                number + (tonnes ? " tf" : " kgf") + "\" (" + (tonnes ? "tonne" : "kilogram") +
+                                "-force), or give the mass as a mass (a body's mass = \"" + number + " " +
+                                (tonnes ? "t" : "kg") + "\")");
+  }
   if (unit.dimension != wanted && mentions_mass_units(factors)) {
     // The book's "kg/cm" and "mm/t": kilogram-force and tonne-force.
     UnitDefinition as_force = evaluate(factors, true);

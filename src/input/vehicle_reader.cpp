@@ -5,6 +5,7 @@
 
 #include "input/body_reader.hpp"
 #include "input/document_readers.hpp"
+#include "input/input_warnings.hpp"
 #include "input/spring_reader.hpp"
 #include "input/table_reader.hpp"
 #include "input/templates.hpp"
@@ -133,6 +134,7 @@ Vehicle read_vehicle(const toml::value& document, const std::string& path) {
   TableReader root(document, path, "");
   Vehicle v;
   v.source = path;
+  const WarningCollector warnings(&v.warnings);
   TableReader head = root.table("vehicle");
   v.name = head.string("name");
   v.gravity = head.optional_positive("gravity", Quantity::acceleration).value_or(9.81);

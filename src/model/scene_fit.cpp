@@ -2,10 +2,12 @@
 // or a body the vehicle lacks is the scene file's error, at the key that names it.
 #include "railmodal/scene.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "model/analysis_limits.hpp"
 #include "model/scene_fit.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 namespace {
@@ -39,8 +41,22 @@ void check_ride_output(const Scene& scene, const LinearSystem& system, const Rid
     return known.empty() ? std::string("none") : known;
   };
   if (o.kind == RideOutput::Kind::point) {
-    for (const Body& b : v.bodies)
-      if (b.name == o.body) return;
+    for (const Body& b : v.bodies) {
+      if (b.name != o.body) continue;
+      // A bending beam's length is the body's: a point beyond its ends is not on the body (the
+      // tolerance of model::BendingMode::shape_at, which would refuse it without the key).
+      // Without a beam the body's ends are not known: scene_warnings warns instead.
+      if (b.bending) {
+        const double centre = b.bending->centre.value_or(b.centre_of_gravity.x());
+        const double half = 0.5 * b.bending->length;
+        if (std::abs(o.point.x() - centre) > half * (1.0 + 2e-9))
+          fail_at(scene, at + "point", at + "point",
+                  "x = " + shortest_text(o.point.x()) + " m is beyond the ends of body '" + b.name +
+                      "' (its bending beam: x = " + shortest_text(centre - half) + " m to " +
+                      shortest_text(centre + half) + " m)");
+      }
+      return;
+    }
     fail_at(scene, at + "body", at + "body",
             "the vehicle has no body '" + o.body + "' (" + list(v.bodies, [](const Body& b) { return b.name; }) + ")");
   }

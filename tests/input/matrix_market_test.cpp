@@ -285,7 +285,7 @@ TEST(MatrixMarket, MissingFile) {
     read_matrix_market("/nonexistent/K.mtx");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_STREQ(e.what(), "/nonexistent/K.mtx: error: cannot open the file");
+    EXPECT_STREQ(e.what(), "/nonexistent/K.mtx: error: cannot open the file: No such file or directory");
   }
 }
 

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 namespace railmodal::input {
 namespace {
@@ -38,6 +40,24 @@ TEST(Units, BookKgAndTonneAsForce) {
   expect_si("650 kg/cm", Quantity::stiffness, 650 * 980.665);
   expect_si("10.5 mm/t", Quantity::flexibility, 10.5e-3 / 9806.65);
   expect_si("62.5 kg/mm", Quantity::stiffness, 62.5 * 9806.65);
+}
+
+// ... but a mass alone where a force is wanted ("34000 kg" for a weight) may mean the mass as well
+// as the kilogram-force: refused, saying both ways to write it (the audit of 2026-11-27).
+TEST(Units, MassAloneIsNotAForce) {
+  for (const auto& [text, force, mass] : {std::tuple<const char*, const char*, const char*>{"34000 kg", "\"34000 kgf\"", "\"34000 kg\""},
+                                          {"34 t", "\"34 tf\"", "\"34 t\""}}) {
+    try {
+      parse_quantity(text, Quantity::force);
+      FAIL() << text << ": no error";
+    } catch (const std::invalid_argument& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("expected a force, got a mass"), std::string::npos) << what;
+      EXPECT_NE(what.find("write " + std::string(force)), std::string::npos) << what;
+      EXPECT_NE(what.find("mass = " + std::string(mass)), std::string::npos) << what;
+    }
+  }
+  expect_si("34 t", Quantity::mass, 34000.0);  // as a mass it stays one
 }
 
 TEST(Units, WrongDimensionSaysWhatWasExpected) {

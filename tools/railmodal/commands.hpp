@@ -5,6 +5,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace railmodal::cli {
 
@@ -53,6 +54,11 @@ std::function<int()> add_ride_command(CLI::App& app);
 std::function<int()> add_balance_command(CLI::App& app);
 /// Notes on stderr that `old_spelling` still works but is deprecated for `new_spelling`.
 void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling);
+
+/// The readers' warnings (Vehicle::warnings, scene_warnings), one a line on stderr, as the
+/// library wrote them ("file:line:col: warning: ..."). Not silenced by -q, which is for progress:
+/// a warning is about the input, as an error is (docs/input.md, "Implausible inputs").
+void print_input_warnings(const std::vector<std::string>& warnings);
 
 /// -q/--quiet, alike on every command (README.md, "Options every command takes"): no progress on
 /// stderr. `quiet` is null for a command that shows no progress: it accepts the flag all the

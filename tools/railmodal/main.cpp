@@ -49,6 +49,10 @@ void add_quiet_flag(CLI::App& cmd, bool* quiet) {
     cmd.add_flag("-q,--quiet")->description(help + "; this command shows none: accepted, as by every command");
 }
 
+void print_input_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) std::cerr << w << "\n";
+}
+
 void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling) {
   std::cerr << "railmodal: note: '" << old_spelling << "' is deprecated and will be removed; write 'railmodal "
             << new_spelling << "'\n";

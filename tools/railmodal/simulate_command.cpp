@@ -39,6 +39,8 @@ int load(const SimulateOptions& o, Scene* scene, Vehicle* vehicle) {
     return kInput;
   }
   *vehicle = load_vehicle(scene->vehicle_file);
+  print_input_warnings(vehicle->warnings);
+  print_input_warnings(scene_warnings(*scene, *vehicle));  // an effect the vehicle has nothing for
   return kSuccess;
 }
 

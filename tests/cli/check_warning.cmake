@@ -1,0 +1,25 @@
+# Runs the railmodal program on an input that draws a warning: exit code 0, the warning on
+# stderr, and (given REF_ARGS, a run of the same analysis without the unusual input) stdout the
+# same bytes as the reference's, whose stderr has no warning: a warning changes no output.
+#   -DEXE=... -DARGS="a|b|c" -DWARNING=regex [-DREF_ARGS="a|b|c"] [-DSTDOUT=regex]
+string(REPLACE "|" ";" ARGS "${ARGS}")
+execute_process(COMMAND ${EXE} ${ARGS} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "exit code ${code}, expected 0\nstderr: ${err}")
+endif()
+if(NOT err MATCHES "${WARNING}")
+  message(FATAL_ERROR "stderr does not match '${WARNING}':\n${err}")
+endif()
+if(DEFINED STDOUT AND NOT out MATCHES "${STDOUT}")
+  message(FATAL_ERROR "stdout does not match '${STDOUT}':\n${out}")
+endif()
+if(DEFINED REF_ARGS)
+  string(REPLACE "|" ";" REF_ARGS "${REF_ARGS}")
+  execute_process(COMMAND ${EXE} ${REF_ARGS} RESULT_VARIABLE ref_code OUTPUT_VARIABLE ref_out ERROR_VARIABLE ref_err)
+  if(NOT ref_code EQUAL 0 OR ref_err MATCHES "warning:")
+    message(FATAL_ERROR "the reference run: exit code ${ref_code}\nstderr: ${ref_err}")
+  endif()
+  if(NOT out STREQUAL ref_out)
+    message(FATAL_ERROR "stdout differs from the reference run's (a warning must change no output)")
+  endif()
+endif()
