@@ -38,12 +38,6 @@ Eigen::MatrixXcd orthonormal_span(const Eigen::MatrixXcd& vectors) {
   return svd.matrixU().leftCols(rank);
 }
 
-// Roots closer than this (relative distance) are twins, as the tracking takes them
-// (track_roots: a symmetric vehicle's front and rear wheelsets, split by 1e-5 and less): which
-// twin a path continues to is not decided, and their eigenvectors are any basis of their
-// common subspace.
-constexpr double kTwins = 1e-4;
-
 // How much of the span of `part` lies in the span of `whole`: cos² of the largest principal
 // angle between them, the smallest singular value of Q_partᴴQ_whole squared for orthonormal bases
 // (Björck and Golub, "Numerical methods for computing angles between linear subspaces", Math.
@@ -58,7 +52,9 @@ double share_within(const Eigen::MatrixXcd& part, const Eigen::MatrixXcd& whole)
 }
 
 // The shapes of roots r1 and r2 at one speed, and with `twins` those of every root within kTwins
-// of either (empty without shapes).
+// of either (empty without shapes). Which twin a path continues to is not decided (track_roots:
+// a symmetric vehicle's front and rear wheelsets, split by 1e-5 and less), and their
+// eigenvectors are any basis of their common subspace.
 Eigen::MatrixXcd pair_shapes(const SpeedRoots& roots, int r1, int r2, bool twins) {
   if (roots.shapes.size() == 0) return {};
   std::vector<int> columns{r1, r2};
