@@ -145,13 +145,14 @@ struct SpeedHold {
   /// would take over 6900 periods). It dies when it fell below half the start, or the rate is
   /// resolved below −1e-4. Neither: `undecided` (never counted as surviving).
   bool survives = false;
-  bool undecided = false;        ///< the rate is within two standard errors of −1e-4 per period
-  double rate_per_period = 0.0;  ///< 1/period: d ln(amplitude)/d(periods), fitted over the second half
-  double rate_error = 0.0;       ///< 1/period: its standard error (infinite when too few half cycles)
   double start_amplitude = 0.0;  ///< m: the watched wheelset's amplitude in the start state
   double end_amplitude = 0.0;    ///< m: its last half cycle's amplitude
   int periods = 0;               ///< periods held (fewer when it died, or grew past the bound)
   int steps = 0;                 ///< accepted Runge–Kutta steps
+  // Last, so that brace-initialised holds (the report tests') keep their meaning.
+  bool undecided = false;        ///< the rate is within two standard errors of −1e-4 per period
+  double rate_per_period = 0.0;  ///< 1/period: d ln(amplitude)/d(periods), fitted over the second half
+  double rate_error = 0.0;       ///< 1/period: its standard error (infinite when too few half cycles)
 };
 
 /// The critical speed by holding the speed: the lowest speed at which a limit cycle started on the
