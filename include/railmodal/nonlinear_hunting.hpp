@@ -139,11 +139,20 @@ struct RampDown {
 /// One held speed of the confirmation: the ramp's state on the branch, integrated at a fixed speed.
 struct SpeedHold {
   double speed = 0.0;            ///< m/s
-  bool survives = false;         ///< the amplitude stayed above half the start's for all the periods
+  /// The cycle survives: it grew past the amplitude bound, or held all the periods without falling
+  /// below half the start's amplitude and its amplitude's growth rate over the hold's second half
+  /// is resolved at or above −1e-4 per period (rate_per_period − 2·rate_error ≥ −1e-4: halving
+  /// would take over 6900 periods). It dies when it fell below half the start, or the rate is
+  /// resolved below −1e-4. Neither: `undecided` (never counted as surviving).
+  bool survives = false;
   double start_amplitude = 0.0;  ///< m: the watched wheelset's amplitude in the start state
   double end_amplitude = 0.0;    ///< m: its last half cycle's amplitude
   int periods = 0;               ///< periods held (fewer when it died, or grew past the bound)
   int steps = 0;                 ///< accepted Runge–Kutta steps
+  // Last, so that brace-initialised holds (the report tests') keep their meaning.
+  bool undecided = false;        ///< the rate is within two standard errors of −1e-4 per period
+  double rate_per_period = 0.0;  ///< 1/period: d ln(amplitude)/d(periods), fitted over the second half
+  double rate_error = 0.0;       ///< 1/period: its standard error (infinite when too few half cycles)
 };
 
 /// The critical speed by holding the speed: the lowest speed at which a limit cycle started on the
@@ -154,6 +163,9 @@ struct HeldCriticalSpeed {
   /// lowest_surviving held again for 2·hold_periods still survives (the hold is long enough).
   bool doubled_hold_survives = false;
   std::vector<SpeedHold> holds;  ///< in the order held, the doubled hold last
+  /// Holds still undecided when held four times as long (counted as not surviving): the answer is
+  /// then not converged.
+  int undecided_holds = 0;
   int steps = 0;                 ///< Σ steps of the holds
 };
 

@@ -112,13 +112,19 @@ struct FftCheck {
   /// a pass nor a failure. A linear scene's excited mode is always checked (no line there is a
   /// failure); a nonlinear scene's is not when the record cannot resolve the tolerance
   /// (`not_resolved`) or shows no line near the mode (`no_line`: friction holds it, or a
-  /// forced nonlinear response).
-  enum class Outcome { passed, failed, not_excited, not_resolved, no_line };
+  /// forced nonlinear response); `not_applicable` where no record of this scene could check the
+  /// mode by its line, whatever its length (`why_not_applicable` says why): a speed ramp (the
+  /// response is not stationary), a constant-speed forcing whose own line lies within the
+  /// tolerance of the mode (a peak there is the forcing's, whatever the mode), or a release that
+  /// comes to rest (a longer run adds only rest).
+  enum class Outcome { passed, failed, not_excited, not_resolved, no_line, not_applicable };
   Outcome outcome = Outcome::not_excited;
   bool checked() const { return outcome == Outcome::passed || outcome == Outcome::failed; }
   /// not_resolved: the record length that would resolve the tolerance, in s (the line's width
   /// falls as 1/duration: duration·resolution_hz/(kNonlinearTolerance·modal_hz)); else 0.
   double needed_duration_s = 0.0;
+  /// not_applicable: why no run of this scene could check the mode, in words; else empty.
+  std::string why_not_applicable;
   /// Friction and kinks are not expected to keep a line at the linear frequency: leaf friction
   /// R = φ·load moves the half periods to π/k₁, π/k₂ with k² = (1 ± φ)k₀² (springs digest
   /// (51), (63)), √(1 ± φ) − 1 ≤ 4.3 % for the book's φ ≤ 0.085; 5 % holds that and no more,
@@ -126,7 +132,7 @@ struct FftCheck {
   static constexpr double kNonlinearTolerance = 0.05;
 };
 /// The words the fft-check reports write: "passed", "failed", "not excited", "not resolved",
-/// "no line".
+/// "no line", "not applicable".
 const char* to_string(FftCheck::Outcome outcome);
 /// Inverse of to_string; std::nullopt for an unknown word.
 std::optional<FftCheck::Outcome> fft_check_outcome_from_string(const std::string& word);
@@ -157,11 +163,24 @@ struct FftCheckResult {
   /// half periods check what broad spectral lines cannot.
   std::optional<Swings> swings;
   double linear_half_period_s = 0.0;  ///< π/ω of that mode, for comparison
+  /// The check of a free friction decay by its half periods, made where its spectrum cannot
+  /// check it: a release (no source) with leaf friction and no other effect that excites one
+  /// mode only. Each half period between turning points must lie within
+  /// FftCheck::kNonlinearTolerance of the mode's linear half period: leaf friction makes them
+  /// π/k₁, π/k₂ with k² = (1 ± φ)k₀² (springs digest (51), (63)), at most 4.3 % off for φ ≤ 0.085.
+  struct HalfPeriodCheck {
+    int count = 0;                 ///< half periods between turning points compared
+    double worst_rel_error = 0.0;  ///< the largest |half period − linear|/linear
+    double tolerance = FftCheck::kNonlinearTolerance;
+    bool passed = false;
+  };
+  std::optional<HalfPeriodCheck> half_period_check;
   bool nonlinear = false;             ///< the scene names a nonlinearity: checks held to kNonlinearTolerance
-  int checked = 0;                    ///< checks that were made (FftCheck::checked())
+  int checked = 0;                    ///< checks that were made (FftCheck::checked(), and half_period_check)
   int failed = 0;                     ///< of those, outside their tolerance: the verdict FAILED (exit 6)
   /// The verdict: at least one check made and none failed. Not passed and not failed when
-  /// nothing could be checked (checked == 0): "not checked" is not a pass.
+  /// nothing could be checked (checked == 0): "not checked" is not a pass (the command exits 6
+  /// for it as for a failure: the check asked for was not made; the verdict says which).
   bool passed = false;
   /// The checks (modes checked, excited, within resolution) and the stage times; the
   /// simulation, modes and spectra carry their own.

@@ -134,6 +134,8 @@ std::string verdict_text(const FftCheck& c, bool nonlinear) {
     case Outcome::not_resolved:
       return "not checked: the record resolves only " + percent(c.resolution_hz / c.modal_hz) + " of f (needs ≤ " +
              percent(c.tolerance) + ": " + needed_run(c.needed_duration_s) + ")";
+    case Outcome::not_applicable:
+      return "not applicable: " + c.why_not_applicable;
     case Outcome::passed:
       return nonlinear ? "ok (within " + percent(c.tolerance) + ")" : "ok";
     case Outcome::failed:
@@ -152,38 +154,66 @@ std::string compared_text(const FftCheckResult& r) {
          percent(FftCheck::kNonlinearTolerance) +
          " (friction moves the lines by √(1 ± φ), ≤ 4.3 % for φ ≤ 0.085), where the record resolves " +
          percent(FftCheck::kNonlinearTolerance) + " of f (line width ≤ " + percent(FftCheck::kNonlinearTolerance) +
-         " of f) and shows a line; other modes are not checked";
+         " of f) and shows a line that no forcing could have made; other modes are not checked" +
+         (r.half_period_check ? "; and the half periods between turning points of a free friction decay with the "
+                                "linear half period, within " + percent(r.half_period_check->tolerance) +
+                                " (π/k₁, π/k₂ with k² = (1 ± φ)k₀², springs digest (51), (63))"
+                              : "");
+}
+
+// The reason of the first check that no run could make (they share it in the bundled scenes:
+// the ramp, or a forcing at the mode's frequency); the table says each one's.
+std::string first_not_applicable(const FftCheckResult& r) {
+  for (const auto& c : r.checks)
+    if (c.outcome == FftCheck::Outcome::not_applicable) return c.why_not_applicable;
+  return "";
+}
+
+// The half-period check of a free friction decay, in words.
+std::string half_period_text(const FftCheckResult& r) {
+  const FftCheckResult::HalfPeriodCheck& h = *r.half_period_check;
+  return std::string(h.passed ? "" : "FAILED: ") + "the " + std::to_string(h.count) + " half periods of " +
+         r.swings->dof + " between turning points within " + percent(h.worst_rel_error) + " of the linear " +
+         fixed(r.linear_half_period_s, 4) + " s (tolerance " + percent(h.tolerance) + ")";
 }
 
 // Why the checks not made were not: "2 not resolved: a run of at least 31 s; 1 no line".
 std::string not_checked_reasons(const FftCheckResult& r) {
   using Outcome = FftCheck::Outcome;
-  int not_excited = 0, not_resolved = 0, no_line = 0;
+  int not_excited = 0, not_resolved = 0, no_line = 0, not_applicable = 0;
   double needed = 0.0;
   for (const auto& c : r.checks) {
     not_excited += c.outcome == Outcome::not_excited;
     no_line += c.outcome == Outcome::no_line;
+    not_applicable += c.outcome == Outcome::not_applicable;
     if (c.outcome == Outcome::not_resolved) ++not_resolved, needed = std::max(needed, c.needed_duration_s);
   }
   std::string text;
   const auto add = [&text](const std::string& part) { text += (text.empty() ? "" : "; ") + part; };
   if (not_resolved) add(std::to_string(not_resolved) + " not resolved: " + needed_run(needed));
   if (no_line) add(std::to_string(no_line) + " no line");
+  if (not_applicable) add(std::to_string(not_applicable) + " not applicable: " + first_not_applicable(r));
   if (not_excited) add(std::to_string(not_excited) + " not excited");
   return text;
 }
 
 // The verdict of all the checks: how many were made and passed, and how many were not, and why.
 std::string fft_check_verdict_text(const FftCheckResult& r) {
-  const size_t not_checked = r.checks.size() - static_cast<size_t>(r.checked);
+  const int spectral_checked = r.checked - (r.half_period_check ? 1 : 0);
+  const size_t not_checked = r.checks.size() - static_cast<size_t>(spectral_checked);
   const std::string rest =
       not_checked ? "; " + std::to_string(not_checked) + " not checked (" + not_checked_reasons(r) + ")" : "";
-  const std::string made = std::to_string(r.checked) + " of " + std::to_string(r.checks.size()) + " modes checked";
-  if (r.failed > 0) return "FAILED: " + made + ", " + std::to_string(r.failed) + " outside its tolerance" + rest;
+  const std::string made = std::to_string(spectral_checked) + " of " + std::to_string(r.checks.size()) + " modes checked";
+  const std::string halves = r.half_period_check ? "; " + half_period_text(r) : "";
+  const int spectral_failed = r.failed - (r.half_period_check && !r.half_period_check->passed ? 1 : 0);
+  if (r.failed > 0)
+    return "FAILED: " + made + ", " + std::to_string(spectral_failed) + " outside its tolerance" + halves + rest;
   if (r.checked == 0) return "NOT CHECKED: no mode's line could be checked (" + not_checked_reasons(r) + ")";
   const std::string within =
       r.nonlinear ? "within " + percent(FftCheck::kNonlinearTolerance) : "each within its line's width";
-  return "ok: " + made + ", " + within + rest;
+  if (spectral_checked == 0)  // the half periods alone
+    return "ok: " + half_period_text(r) + "; no mode's line could be checked (" + not_checked_reasons(r) + ")";
+  return "ok: " + made + ", " + within + halves + rest;
 }
 
 std::string overall_verdict(const FftCheckResult& r) { return "verdict: " + fft_check_verdict(r); }
@@ -211,7 +241,7 @@ void checks_table(std::ostream& out, const FftCheckResult& r) {
     }
     out << "</tr>\n";
   }
-  out << "</table>\n<p>" << html_escape(compared_text(r)) << ". <b>" << html_escape(overall_verdict(r)) << "</b></p>\n";
+  out << "</table>\n";
 }
 
 void swings_table(std::ostream& out, const FftCheckResult& r) {
@@ -246,6 +276,7 @@ void write_json_check(report::JsonWriter& j, const FftCheck& c) {
   j.member("peak_hz", c.peak_hz ? std::optional<double>(*c.peak_hz) : none);
   j.member("rel_error", c.peak_hz ? std::optional<double>(c.rel_error) : none);
   j.member("resolution_hz", c.resolution_hz).member("tolerance", c.tolerance);
+  if (c.outcome == FftCheck::Outcome::not_applicable) j.member("why_not_applicable", c.why_not_applicable);
   j.member("within_resolution", c.within_resolution);
   j.end_object();
 }
@@ -258,6 +289,13 @@ void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene) 
   for (const auto& c : r.checks) write_json_check(j, c);
   j.end_array();
   j.member("checks_failed", r.failed).member("checks_made", r.checked).member("compared", compared_text(r));
+  if (r.half_period_check) {
+    const FftCheckResult::HalfPeriodCheck& h = *r.half_period_check;
+    j.key("half_period_check").begin_object();
+    j.member("count", h.count).member("passed", h.passed).member("tolerance", h.tolerance);
+    j.member("worst_rel_error", h.worst_rel_error);
+    j.end_object();
+  }
   if (r.swings) {
     const Swings& w = *r.swings;
     j.key("half_periods").begin_object();
@@ -335,8 +373,9 @@ void write_table(std::ostream& out, const FftCheckResult& r, const Scene& scene)
           << "  " << verdict_text(c, r.nonlinear);
     out << "\n";
   }
-  out << compared_text(r) << "\n" << overall_verdict(r) << "\n";
   if (r.swings) swings_text(out, r);
+  // The verdict last, below everything it judges (README: every report ends with it).
+  out << (r.swings ? "\n" : "") << compared_text(r) << "\n" << overall_verdict(r) << "\n";
 }
 
 void write_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, const Vehicle& vehicle,
@@ -373,6 +412,9 @@ void write_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, 
         << "lists them). ";
   out << "</p>\n<h2>Spectra</h2>\n<p>Dotted lines: the modal frequencies, numbered as in the checks.</p>\n";
   for (size_t k = 0; k < r.spectra.size(); ++k) out << report::svg_chart(spectrum_chart(r, k)) << "\n";
+  // The verdict last, below everything it judges.
+  out << "<h2>Verdict</h2>\n<p>" << html_escape(compared_text(r)) << ". <b>" << html_escape(overall_verdict(r))
+      << "</b></p>\n";
   report::write_html_footer(out, "fft-check", provenance);
 }
 

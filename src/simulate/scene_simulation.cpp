@@ -24,13 +24,15 @@ const char* to_string(FftCheck::Outcome outcome) {
     case Outcome::not_excited: return "not excited";
     case Outcome::not_resolved: return "not resolved";
     case Outcome::no_line: return "no line";
+    case Outcome::not_applicable: return "not applicable";
   }
   return "?";
 }
 
 std::optional<FftCheck::Outcome> fft_check_outcome_from_string(const std::string& word) {
   using Outcome = FftCheck::Outcome;
-  for (Outcome o : {Outcome::passed, Outcome::failed, Outcome::not_excited, Outcome::not_resolved, Outcome::no_line})
+  for (Outcome o : {Outcome::passed, Outcome::failed, Outcome::not_excited, Outcome::not_resolved, Outcome::no_line,
+                    Outcome::not_applicable})
     if (word == to_string(o)) return o;
   return std::nullopt;
 }
@@ -147,6 +149,74 @@ void judge(bool nonlinear, double record_s, FftCheck* check) {
   }
 }
 
+std::string hz_text(double hz) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f Hz", hz);
+  return text;
+}
+
+// Why no run of a nonlinear scene, however long, could check `check`'s mode by its line (empty
+// when a long enough one could). Asked of a check that found a peak (passed, failed, not
+// resolved) and, for a speed ramp, of every excited mode:
+//  - a speed ramp sweeps the forcing: the response is not stationary, and its spectrum is that
+//    of the sweep (a band), not a line of the mode;
+//  - a constant speed whose forcing has a line (a harmonic n·V/λ of a source) within the
+//    tolerance of the mode: the peak is the forcing's whatever the mode (the bundled scenes at a
+//    critical speed choose V so that it is), and the check would pass by construction;
+//  - a release that comes to rest (a spring stuck in its dead band): its line is as wide as the
+//    motion before, and a longer run adds only rest.
+std::string why_no_run_could_check(const Scene& scene, const FftCheck& check, const std::optional<Swings>& swings) {
+  const SimulationSpec& spec = *scene.simulation;
+  const double tolerance = check.tolerance * check.modal_hz;
+  if (spec.final_speed > 0.0 && !scene.sources.empty()) {
+    double low = std::numeric_limits<double>::infinity(), high = 0.0;
+    for (const auto& source : scene.sources) {
+      low = std::min(low, std::min(spec.speed, spec.final_speed) / source->wavelength());
+      high = std::max(high, std::max(spec.speed, spec.final_speed) / source->wavelength());
+    }
+    return "a speed ramp: the forcing's V/λ sweeps " + hz_text(low) + " to " + hz_text(high) +
+           ", so the response is not stationary and its spectrum is the sweep's, not the mode's line";
+  }
+  if (spec.speed > 0.0)
+    for (const auto& source : scene.sources)
+      for (int n = 1; n <= source->harmonic_count(); ++n) {
+        const double line = n * spec.speed / source->wavelength();
+        const std::string named = "the forcing's own line (" + source->kind() + ", " +
+                                  (n == 1 ? "" : std::to_string(n) + "·") + "V/λ = " + hz_text(line) + ")";
+        if (std::abs(line - check.modal_hz) <= tolerance)
+          return named + " lies within the tolerance of the mode: a peak there is the forcing's whatever the mode";
+        // The peak found is the forcing's (within its resolution), and the mode's is not there:
+        // a longer run narrows the forcing's line, it does not make the mode's.
+        if (check.peak_hz && std::abs(line - *check.peak_hz) <= check.resolution_hz)
+          return "the peak found is " + named + ", not the mode's; a longer run only narrows it";
+      }
+  if (swings && swings->comes_to_rest && !swings->turning_times.empty() && check.outcome == FftCheck::Outcome::not_resolved) {
+    char text[160];
+    std::snprintf(text, sizeof text, "the motion comes to rest at %.2f s (a spring stuck in its dead band): its line is "
+                  "as wide as the motion before, and a longer run adds only rest", swings->turning_times.back());
+    return text;
+  }
+  return "";
+}
+
+// A free friction decay's half periods between turning points against the linear half period
+// (FftCheckResult::half_period_check): where it applies, else nothing.
+std::optional<FftCheckResult::HalfPeriodCheck> check_half_periods(const Scene& scene, const FftCheckResult& r) {
+  const NonlinearEffects effects = scene_effects(scene);
+  const int excited = static_cast<int>(
+      std::count_if(r.checks.begin(), r.checks.end(), [](const FftCheck& c) { return c.excited; }));
+  if (!scene.sources.empty() || !effects.leaf_friction || effects.progressive_springs || excited != 1 || !r.swings)
+    return std::nullopt;
+  const std::vector<double> halves = r.swings->half_periods_between_turns();
+  if (halves.empty()) return std::nullopt;
+  FftCheckResult::HalfPeriodCheck c;
+  c.count = static_cast<int>(halves.size());
+  for (double h : halves)
+    c.worst_rel_error = std::max(c.worst_rel_error, std::abs(h - r.linear_half_period_s) / r.linear_half_period_s);
+  c.passed = c.worst_rel_error <= c.tolerance;
+  return c;
+}
+
 }  // namespace
 
 NonlinearEffects scene_effects(const Scene& scene) {
@@ -211,6 +281,15 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memo
     dof_energy(d) = system.mass(d, d) * out.history.displacement.col(d).cwiseAbs2().maxCoeff();
   const ModalAmplitudes amplitudes = modal_amplitudes(system, out.modes, out.history);
   out.nonlinear = scene_effects(scene).any();
+  // Friction and kinks broaden the lines: the half periods of the most excited mode's DOF
+  // are the check (the lowest mode may barely move: the two-axle wagon's pitch over joints).
+  if (out.nonlinear && amplitudes.most_mode >= 0) {
+    const Mode& mode = out.modes.modes[amplitudes.most_mode];
+    out.swings = swings(out.history, showing_dof(mode, dof_energy));
+    out.linear_half_period_s = 0.5 / mode.frequency_hz;
+  }
+  clock.lap("swings");
+  const bool ramp = scene.simulation->final_speed > 0.0;
   for (size_t r = 0; r < out.modes.modes.size(); ++r) {
     const Mode& mode = out.modes.modes[r];
     if (mode.kind != ModeKind::oscillatory || mode.frequency_hz > fs / 4.0) continue;
@@ -231,22 +310,26 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memo
     check.excited = check.modal_amplitude_ratio >= FftCheck::kExcitedRatio;
     match_peak(out.spectra[at - out.spectrum_dofs.begin()], &check);
     judge(out.nonlinear, static_cast<double>(n) / fs, &check);
+    if (out.nonlinear && check.excited && (ramp || check.peak_hz)) {
+      check.why_not_applicable = why_no_run_could_check(scene, check, out.swings);
+      if (!check.why_not_applicable.empty()) {
+        check.outcome = FftCheck::Outcome::not_applicable;
+        check.needed_duration_s = 0.0;
+      }
+    }
     out.checks.push_back(check);
   }
   for (const FftCheck& c : out.checks) {
     out.checked += c.checked();
     out.failed += c.outcome == FftCheck::Outcome::failed;
   }
+  out.half_period_check = check_half_periods(scene, out);
+  if (out.half_period_check) {
+    ++out.checked;
+    out.failed += !out.half_period_check->passed;
+  }
   out.passed = out.checked > 0 && out.failed == 0;
   clock.lap("spectra and peaks");
-  // Friction and kinks broaden the lines: the half periods of the most excited mode's DOF
-  // are the check (the lowest mode may barely move: the two-axle wagon's pitch over joints).
-  if (scene_effects(scene).any() && amplitudes.most_mode >= 0) {
-    const Mode& mode = out.modes.modes[amplitudes.most_mode];
-    out.swings = swings(out.history, showing_dof(mode, dof_energy));
-    out.linear_half_period_s = 0.5 / mode.frequency_hz;
-  }
-  clock.lap("swings");
   summarise_checks(&out);
   return out;
 }

@@ -6,6 +6,9 @@
 #include <complex>
 #include <map>
 
+#include <Eigen/QR>
+#include <Eigen/SVD>
+
 #include "stability/branch_naming.hpp"
 #include "stability/damping_search.hpp"
 
@@ -22,6 +25,66 @@ int conjugate_of(const Eigen::VectorXcd& values, int r) {
   for (int q : {r - 1, r + 1})
     if (q >= 0 && q < values.size() && values(q) == std::conj(values(r))) return q;
   return -1;
+}
+
+// An orthonormal basis of the span of `vectors`' columns: the left singular vectors whose
+// singular value is above 1e-8 of the largest (a pair at its meeting, where the two eigenvectors
+// coincide, spans one direction). Empty when every column is zero.
+Eigen::MatrixXcd orthonormal_span(const Eigen::MatrixXcd& vectors) {
+  const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(vectors, Eigen::ComputeThinU);
+  const Eigen::VectorXd& sigma = svd.singularValues();
+  int rank = 0;
+  while (rank < sigma.size() && sigma(rank) > 1e-8 * sigma(0)) ++rank;
+  return svd.matrixU().leftCols(rank);
+}
+
+// How much of the span of `part` lies in the span of `whole`: cos² of the largest principal
+// angle between them, the smallest singular value of Q_partᴴQ_whole squared for orthonormal bases
+// (Björck and Golub, "Numerical methods for computing angles between linear subspaces", Math.
+// Comp. 27 (1973) 579–594, section 3). 1 when either moves no mass (nothing to follow).
+double share_within(const Eigen::MatrixXcd& part, const Eigen::MatrixXcd& whole) {
+  const Eigen::MatrixXcd a = orthonormal_span(part), b = orthonormal_span(whole);
+  if (a.cols() == 0 || b.cols() == 0) return 1.0;
+  if (a.cols() > b.cols()) return 0.0;  // a plane cannot lie in a line
+  const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(a.adjoint() * b);
+  const double cosine = std::min(1.0, svd.singularValues().minCoeff());
+  return cosine * cosine;
+}
+
+// The shapes of roots r1 and r2 at one speed, and with `twins` those of every root within kTwins
+// of either (empty without shapes). Which twin a path continues to is not decided (track_roots:
+// a symmetric vehicle's front and rear wheelsets, split by 1e-5 and less), and their
+// eigenvectors are any basis of their common subspace.
+Eigen::MatrixXcd pair_shapes(const SpeedRoots& roots, int r1, int r2, bool twins) {
+  if (roots.shapes.size() == 0) return {};
+  std::vector<int> columns{r1, r2};
+  if (twins)
+    for (int j = 0; j < roots.values.size(); ++j) {
+      const auto close = [&](int r) {
+        const double scale = std::abs(roots.values(j)) + std::abs(roots.values(r));
+        return std::abs(roots.values(j) - roots.values(r)) <= kTwins * scale;
+      };
+      if (j != r1 && j != r2 && (close(r1) || close(r2))) columns.push_back(j);
+    }
+  Eigen::MatrixXcd shapes(roots.shapes.rows(), static_cast<Eigen::Index>(columns.size()));
+  for (std::size_t c = 0; c < columns.size(); ++c) shapes.col(static_cast<Eigen::Index>(c)) = roots.shapes.col(columns[c]);
+  return shapes;
+}
+
+// How well a root pair's plane (the span of its two halves' shapes) at one speed continues at
+// the next: the share of each speed's plane within the other's (share_within), the smaller. Where
+// the pair is real or nearly real its two shapes are the eigenvectors of two real roots, and
+// next to where they meet they are nearly parallel (defective at the meeting), so each one's MAC
+// says nothing; the plane they span is the pair's invariant subspace (its displacement part),
+// which stays continuous through the meeting as long as the pair stays apart from other roots.
+// A swap with another pair changes the plane, and this sees it where the earlier rule (1 at every
+// real step) did not. Twins of either root join the other speed's side (their subspace is what
+// is defined, and the tracking takes twins in order). 1 when either speed has no shapes (the
+// step was decided by the eigenvalues alone, within track_roots' stated bound).
+double plane_continuity(const SpeedRoots& before, int b1, int b2, const SpeedRoots& now, int n1, int n2) {
+  if (before.shapes.size() == 0 || now.shapes.size() == 0) return 1.0;
+  return std::min(share_within(pair_shapes(before, b1, b2, false), pair_shapes(now, n1, n2, true)),
+                  share_within(pair_shapes(now, n1, n2, false), pair_shapes(before, b1, b2, true)));
 }
 
 // The kinematic test. Klingel's motion has a wavelength, not a frequency: at low speed its
@@ -123,12 +186,16 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
       // no oscillation to follow: the two roots meet and leave the real axis as a complex pair,
       // and at the meeting the eigenvector is defective, so its MAC with either neighbour says
       // nothing about the tracking (the Manchester coach's wheelset pairs fell to 0.11 there and
-      // failed the continuity check although every oscillation was followed). 1, as where the
-      // eigenvalues alone decided (the CSV leaves the real speeds out, Im λ = 0).
+      // failed the continuity check although every oscillation was followed). The plane the
+      // pair's two shapes span does (plane_continuity): a swap of two real pairs between the
+      // speeds shows there, which the earlier rule (1 at every real step) hid.
       // Nearly real counts too (Im λ under 1 % of |λ|, ζ > 0.99995, as the naming below): next
       // to the meeting the eigenvector is nearly defective as well (the coach's 0.36 at 22 km/h).
       const bool real_step = overdamped_root(upper) || (s > 0 && overdamped_root(b.eigenvalues[s - 1]));
-      b.continuity.push_back(real_step ? 1.0 : std::min(paths.continuity[s][p], paths.continuity[s][q]));
+      b.continuity.push_back(
+          !real_step || s == 0 ? std::min(paths.continuity[s][p], paths.continuity[s][q])
+                               : plane_continuity(speeds[s - 1], paths.root[s - 1][p], paths.root[s - 1][q],
+                                                  speeds[s], rp, rq));
       if (b.continuity.back() < continuity_threshold) b.veers = true;
     }
     // An overdamped pair at the lowest speed (two real roots, or a pair whose Im λ is under 1 %

@@ -108,10 +108,19 @@ HeldCriticalSpeed confirm_by_holding(const stability::LateralEquations& e, const
     while (i < branch.branch_end && curve[i + 1].speed >= speed) ++i;
     return branch.states[i];
   };
+  // A hold whose rate is not resolved (SpeedHold::undecided) is held again four times as long
+  // (the rate's error falls as periods^−3/2, eight times); still undecided, it counts as not
+  // surviving for the bisection and is counted, and the answer is not converged.
   const auto hold = [&](double speed, int periods) {
-    const SpeedHold h = stability::hold_speed(e, o, speed, start_for(speed), ramp.watched_wheelset, periods);
+    SpeedHold h = stability::hold_speed(e, o, speed, start_for(speed), ramp.watched_wheelset, periods);
+    if (h.undecided) {
+      held.holds.push_back(h);
+      held.steps += h.steps;
+      h = stability::hold_speed(e, o, speed, start_for(speed), ramp.watched_wheelset, 4 * periods);
+    }
     held.holds.push_back(h);
     held.steps += h.steps;
+    held.undecided_holds += h.undecided;
     return h.survives;
   };
   const double top = o.start_speed, bottom = o.end_speed;
@@ -208,9 +217,12 @@ NonlinearHuntingResult solve_nonlinear_hunting(const LinearSystem& system, const
     if (r.ramp_too_fast || ahead(r.halved_rate)) r.richardson_critical_speed.reset();
     const double bracket = h.lowest_surviving && h.highest_dying ? *h.lowest_surviving - *h.highest_dying
                                                                  : std::numeric_limits<double>::infinity();
-    r.convergence = same_verdict && bracket <= options.tolerance && h.doubled_hold_survives
+    r.convergence = same_verdict && bracket <= options.tolerance && h.doubled_hold_survives && h.undecided_holds == 0
                         ? NonlinearConvergence::converged
                         : NonlinearConvergence::not_converged;
+    if (h.undecided_holds > 0)
+      r.summary.checks.push_back({"holds whose growth rate was not resolved, held four times as long too (count)",
+                                  static_cast<double>(h.undecided_holds), 0.0, false});
     r.summary.checks.push_back(
         {"bracket of the held critical speed, m/s", bracket, options.tolerance, bracket <= options.tolerance});
     r.summary.checks.push_back({"held critical speed dies in a hold twice as long (count)",

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -28,8 +29,12 @@ constexpr double kOnBranchDecay = 0.005;
 // Samples per hunting period at the start speed: the amplitude is the largest sampled |y| of a
 // half cycle, so it is low by at most 1 − cos(π/100) ≈ 5e-4 of itself.
 constexpr double kSamplesPerPeriod = 100.0;
-// A held cycle whose amplitude falls by more than this over the last quarter of the hold is dying.
-constexpr double kSettled = 0.01;
+// A held cycle whose amplitude decays faster than this, per period, is dying; one that decays more
+// slowly (or grows) survives. A cycle at this rate takes ln 2/1e-4 ≈ 6900 periods to halve
+// (about 50 min of hunting at 2.4 Hz, the bundled wheelset's): a cycle that outlives any run is a
+// cycle. The rate is fitted over the hold's second half (hold_rate), so the settling onto a cycle
+// just above the fold, which is over by then, does not count as a decay.
+constexpr double kHoldRate = 1e-4;
 
 double klingel_wavelength(const WheelsetContact& w) {
   const auto& g = w.geometry;
@@ -227,6 +232,41 @@ bool collapsing_at_end(const std::vector<LimitCyclePoint>& curve) {
   return n >= 3 && curve[n - 2].amplitude < (1.0 - kOnBranchDecay) * curve[n - 3].amplitude;
 }
 
+// The growth rate of the half-cycle amplitudes A_k over the second half of a hold, per period: the
+// least-squares slope of ln A_k against k (two half cycles a period; the last, unfinished half
+// cycle left out), with its standard error from the residuals (the peaks are sampled values, low
+// by up to 5e-4 of themselves: kSamplesPerPeriod, so the residuals are that scatter). Needs at
+// least 4 half cycles; a rate of 0 with an infinite error otherwise.
+struct HoldRate {
+  double per_period = 0.0;
+  double standard_error = std::numeric_limits<double>::infinity();
+};
+
+HoldRate hold_rate(const std::vector<LimitCyclePoint>& peaks) {
+  HoldRate rate;
+  if (peaks.size() < 2) return rate;
+  const std::size_t end = peaks.size() - 1, begin = std::max<std::size_t>(1, end / 2);
+  const double n = static_cast<double>(end - begin);
+  if (n < 4.0) return rate;
+  double mean_k = 0.0, mean_l = 0.0;
+  for (std::size_t k = begin; k < end; ++k) mean_k += static_cast<double>(k), mean_l += std::log(peaks[k].amplitude);
+  mean_k /= n, mean_l /= n;
+  double skk = 0.0, skl = 0.0;
+  for (std::size_t k = begin; k < end; ++k) {
+    const double dk = static_cast<double>(k) - mean_k;
+    skk += dk * dk, skl += dk * (std::log(peaks[k].amplitude) - mean_l);
+  }
+  const double slope = skl / skk;
+  double residual = 0.0;
+  for (std::size_t k = begin; k < end; ++k) {
+    const double r = std::log(peaks[k].amplitude) - mean_l - slope * (static_cast<double>(k) - mean_k);
+    residual += r * r;
+  }
+  rate.per_period = 2.0 * slope;
+  rate.standard_error = 2.0 * std::sqrt(residual / std::max(1.0, n - 2.0) / skk);
+  return rate;
+}
+
 SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o, double speed,
                      const Eigen::VectorXd& start, int watched, int periods) {
   SpeedHold hold;
@@ -256,11 +296,28 @@ SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o
   hold.periods = static_cast<int>(p.size()) / 2;
   hold.end_amplitude = p.empty() ? std::abs(axle_lateral(w, x)) : p.back().amplitude;
   // Near the fold the collapse is slow (the cycle lingers where the branch was) and so is the
-  // approach to a cycle just above it: a hold survives when, besides never falling below half the
-  // start, its amplitude no longer falls over the last quarter of the hold (by more than 1%, the
-  // settling still left in a hold that ends on a cycle).
-  const bool settled = p.size() >= 4 && p.back().amplitude >= (1.0 - kSettled) * p[p.size() * 3 / 4 - 1].amplitude;
-  hold.survives = !died && (grew || (static_cast<int>(p.size()) >= 2 * periods + 1 && settled));
+  // approach to a cycle just above it: a hold that neither fell below half the start nor grew past
+  // the bound is decided by its amplitude's growth rate over its second half (hold_rate), against
+  // −kHoldRate, only where the rate is resolved: two standard errors clear of the threshold. A
+  // rate within them (or a hold too short to fit) is undecided, not surviving: the caller holds
+  // longer (the error falls as periods^−3/2) or says so.
+  const HoldRate rate = hold_rate(p);
+  hold.rate_per_period = rate.per_period;
+  hold.rate_error = rate.standard_error;
+  const bool completed = static_cast<int>(p.size()) >= 2 * periods + 1;
+  if (died) {
+    hold.survives = false;
+  } else if (grew) {
+    hold.survives = true;
+  } else if (!completed) {
+    hold.undecided = true;  // stopped early without dying or growing: cannot happen but by the bound
+  } else if (rate.per_period - 2.0 * rate.standard_error >= -kHoldRate) {
+    hold.survives = true;
+  } else if (rate.per_period + 2.0 * rate.standard_error < -kHoldRate) {
+    hold.survives = false;
+  } else {
+    hold.undecided = true;
+  }
   return hold;
 }
 

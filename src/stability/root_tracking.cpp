@@ -64,8 +64,6 @@ double relative_distance(std::complex<double> a, std::complex<double> b) {
   return scale > 0.0 ? std::abs(a - b) / scale : 0.0;
 }
 
-// Roots closer than this (relative distance) are twins: taken as one value, in order.
-constexpr double kTwins = 1e-4;
 
 // The root each path continues to when the eigenvalues alone decide, or an empty vector.
 std::vector<int> clear_continuation(const std::vector<std::complex<double>>& predicted, const Eigen::VectorXcd& now) {

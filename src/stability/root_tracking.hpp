@@ -7,6 +7,10 @@
 
 namespace railmodal::stability {
 
+/// Roots closer than this (relative distance |λ − μ|/(|λ| + |μ|)) are twins: taken as one value,
+/// in order, by track_roots, and compared as one subspace by the branch continuity (branches.cpp).
+inline constexpr double kTwins = 1e-4;
+
 /// Root paths over the speed grid: path p is root path[s][p] at speed s.
 struct RootPaths {
   std::vector<std::vector<int>> root;  ///< [speed][path] → index into that speed's roots

@@ -13,6 +13,7 @@
 
 #include "railmodal/errors.hpp"
 #include "railmodal/railmodal.hpp"
+#include "stability/branches.hpp"
 #include "stability/damping_search.hpp"
 #include "stability/hunting_analysis.hpp"
 #include "stability/root_tracking.hpp"
@@ -487,6 +488,64 @@ TEST(HuntingStability, HungarianAssignmentIsOptimal) {
   // The greedy choice (row 0 takes column 0 at cost 1) is not optimal here.
   const std::vector<std::vector<double>> cost = {{1.0, 2.0, 9.0}, {1.1, 9.0, 9.0}, {9.0, 9.0, 1.0}};
   EXPECT_EQ(minimum_cost_assignment(cost), (std::vector<int>{1, 0, 2}));
+}
+
+
+// Branch continuity where a pair is real (fix-checks, 2026-11-27). Two real pairs, A (roots −10,
+// −12, shapes in the plane of DOFs 1–2) and B (−11, −13, plane of DOFs 3–4), become complex at
+// the top speed. Paths 0–1 hold A and 2–3 hold B at the lowest speed; at the middle speed the
+// tracking is handed a swap: paths 0–1 go on to B's roots. Both ends of the step are real, where
+// the earlier rule counted 1 whatever the shapes, and the swap went unflagged. The planes the
+// pairs span (principal angles, Björck–Golub) are orthogonal across the swap: continuity 0 and
+// the branch veers. Without the swap the planes continue (continuity 1 to round-off).
+TEST(BranchContinuity, RealPairsThatSwapBetweenSpeedsAreCaught) {
+  const HandBuilt h = oscillators({{1, 0, 0, 0}, {1, 0, 0, 0}, {1, 0, 0, 0}, {1, 0, 0, 0}});
+  using cd = std::complex<double>;
+  const auto e = [](int i) { return Eigen::VectorXcd(Eigen::VectorXcd::Unit(4, i)); };
+  // A real pair's two shapes: distinct directions of its plane, nearly parallel (a meeting near).
+  const auto real_pair = [&](int i, int j, Eigen::MatrixXcd* shapes, int col) {
+    shapes->col(col) = (e(i) + 0.10 * e(j)).normalized();
+    shapes->col(col + 1) = (e(i) - 0.12 * e(j)).normalized();
+  };
+  const auto speeds_with = [&](bool swap) {
+    std::vector<SpeedRoots> speeds(3);
+    for (int s = 0; s < 3; ++s) {
+      speeds[s].speed = 10.0 * (s + 1);
+      speeds[s].shapes = Eigen::MatrixXcd(4, 4);
+    }
+    // Roots in each speed's own order: 0–1 the pair in DOFs 1–2, 2–3 the pair in DOFs 3–4.
+    speeds[0].values = Eigen::Vector4cd(cd(-10), cd(-12), cd(-11), cd(-13));
+    speeds[1].values = Eigen::Vector4cd(cd(-10.5), cd(-11.5), cd(-10.8), cd(-12.5));
+    speeds[2].values = Eigen::Vector4cd(cd(-1, 2), cd(-1, -2), cd(-1, 3), cd(-1, -3));
+    for (int s = 0; s < 2; ++s) {
+      real_pair(0, 1, &speeds[s].shapes, 0);
+      real_pair(2, 3, &speeds[s].shapes, 2);
+    }
+    const cd i(0.0, 1.0);
+    speeds[2].shapes.col(0) = (e(0) + i * e(1)) / std::sqrt(2.0);
+    speeds[2].shapes.col(1) = (e(0) - i * e(1)) / std::sqrt(2.0);
+    speeds[2].shapes.col(2) = (e(2) + i * e(3)) / std::sqrt(2.0);
+    speeds[2].shapes.col(3) = (e(2) - i * e(3)) / std::sqrt(2.0);
+    RootPaths paths;
+    paths.root = {{0, 1, 2, 3}, swap ? std::vector<int>{2, 3, 0, 1} : std::vector<int>{0, 1, 2, 3},
+                  swap ? std::vector<int>{2, 3, 0, 1} : std::vector<int>{0, 1, 2, 3}};
+    // The per-root MACs the tracking would report; at the real steps the branch does not use them.
+    paths.continuity.assign(3, std::vector<double>(4, 1.0));
+    return std::make_pair(speeds, paths);
+  };
+  const double threshold = 0.8;
+  for (bool swap : {false, true}) {
+    const auto [speeds, paths] = speeds_with(swap);
+    const Branches b = group_branches(h.system, speeds, paths, 20.0, threshold);
+    ASSERT_EQ(b.oscillatory.size(), 2u);
+    for (const HuntingBranch& branch : b.oscillatory) {
+      ASSERT_EQ(branch.continuity.size(), 3u);
+      // The real step 0 → 1: across the swap the planes are orthogonal (cos² = 0, to round-off);
+      // without it the same plane (1 to round-off, the SVD's 1e-15).
+      EXPECT_NEAR(branch.continuity[1], swap ? 0.0 : 1.0, 1e-12) << branch.name;
+      EXPECT_EQ(branch.veers, swap) << branch.name;
+    }
+  }
 }
 
 }  // namespace

@@ -277,6 +277,44 @@ TEST(NonlinearHunting, HeldCriticalSpeedAgreesWithALongHold) {
   EXPECT_GT(above.end_amplitude, 0.02);  // a cycle of over 20 mm, not a slow decay
 }
 
+// A hold just below the fold whose cycle dies slowly (fix-checks, 2026-11-27). Saturation only,
+// 0.0115 m/s below the held critical speed (65.625 m/s with the contact model of this test; the
+// fold lies 0.005–0.017 m/s below the answer): held 1500 periods the cycle falls to half (at about
+// 1000 periods), so it dies; held 200 periods it has lost only 14 %, and its decay over the last
+// quarter, rate × 50 periods ≈ 0.85 %, is under the 1 % by which the earlier rule called it
+// surviving. The measured rate, −1.7e-4 a period with a standard error of 1e-6, is resolved below
+// the −1e-4 threshold: it dies.
+TEST(NonlinearHunting, SlowDeathJustBelowTheFoldIsNotASurvival) {
+  NonlinearHuntingOptions o = wheelset_options();
+  o.effects = {NonlinearEffect::creep_saturation};
+  const LinearSystem s = assemble(wheelset_on_springs(), DofSet::lateral);
+  const NonlinearHuntingResult r = solve_nonlinear_hunting(s, o);
+  ASSERT_TRUE(r.critical_speed.has_value());
+  const stability::LateralEquations e(s, o);
+  stability::BranchStates branch;
+  stability::ramp_down(e, o, o.ramp_rate, &branch);
+  const Eigen::VectorXd& start = branch.states[branch.branch_end];
+  const double speed = *r.critical_speed - 0.0115;
+  // The premise: a long hold sees it die (falls below half the start: no rate needed).
+  const SpeedHold long_hold = stability::hold_speed(e, o, speed, start, 0, 1500);
+  ASSERT_FALSE(long_hold.survives);
+  ASSERT_LT(long_hold.periods, 1500);
+  // The short hold: the earlier rule's blind spot (a fall of under 1 % over its last quarter) ...
+  const int periods = 200;
+  const SpeedHold hold = stability::hold_speed(e, o, speed, start, 0, periods);
+  EXPECT_EQ(hold.periods, periods);                       // it did not fall to half
+  EXPECT_LT(-hold.rate_per_period * periods / 4.0, 0.01);  // so the old rule said "survives"
+  // ... and the rate, resolved (two standard errors clear of −1e-4), says it dies.
+  EXPECT_LT(hold.rate_per_period + 2.0 * hold.rate_error, -1e-4);
+  EXPECT_FALSE(hold.survives);
+  EXPECT_FALSE(hold.undecided);
+  // A hold too short to fit a rate (fewer than 4 half cycles in its second half) is undecided,
+  // never surviving.
+  const SpeedHold brief = stability::hold_speed(e, o, speed, start, 0, 3);
+  EXPECT_TRUE(brief.undecided);
+  EXPECT_FALSE(brief.survives);
+}
+
 TEST(NonlinearHunting, HuntingOfTheSecondWheelsetIsSeen) {
   // Two wheelsets on their own springs to the ground, not coupled: the first so stiffly held in
   // yaw that it does not hunt at all in the ramp, the second the wheelset on springs. The hunting

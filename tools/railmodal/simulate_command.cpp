@@ -80,18 +80,22 @@ std::optional<FftCheckResult> write_run(const SimulateOptions& o, bool check, co
   }
 }
 
-// An fft-check's exit: 6 when a check made failed; 0 otherwise, with a note on stderr when
-// nothing could be checked (not a pass: the report's verdict says "NOT CHECKED").
+// An fft-check's exit: 6 when a check made failed, and 6 when nothing could be checked (the
+// report's verdict says "NOT CHECKED" and why, and stderr says it): the user asked for a check
+// and none was made, which a script reading the exit alone must not take for a pass (as
+// `hunting` exits 6 for an answer not converged); 0 only for the verdict "ok".
 int check_exit(const std::string& scene_file, const FftCheckResult& result) {
   if (result.failed > 0) {
     std::cerr << scene_file
               << ": fft-check FAILED: " << fft_check_verdict(result).substr(std::string("FAILED: ").size()) << "\n";
     return kCheckFailed;
   }
-  if (result.checked == 0)
+  if (result.checked == 0) {
     std::cerr << scene_file << ": fft-check: nothing was checked: "
               << fft_check_verdict(result).substr(std::string("NOT CHECKED: ").size())
               << "; \"not checked\" is not a pass\n";
+    return kCheckFailed;
+  }
   return kSuccess;
 }
 
