@@ -168,7 +168,7 @@ TEST(FftCheck, PartlyCheckedRecordPassesOnWhatItChecked) {
   EXPECT_TRUE(r.passed);
   const std::string verdict = fft_check_verdict(r);
   EXPECT_EQ(
-      verdict.rfind("ok: 1 of 2 modes checked, within 5.0 %; 1 not checked (1 not resolved: a run of at least ", 0), 0u)
+      verdict.rfind("passed: 1 of 2 modes checked, within 5.0 %; 1 not checked (1 not resolved: a run of at least ", 0), 0u)
       << verdict;
 }
 
