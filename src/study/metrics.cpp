@@ -204,6 +204,10 @@ DisplayUnit display_unit(const std::string& metric) {
   const std::string_view m = canonical(metric);
   if (std::string_view(si) == "m/s" && !starts_with(m, "peak:") && !rms_metric(m)) return {"km/h", 3.6};
   if (std::string_view(si) == "m") return {"mm", 1000.0};
+  // Reports write a unit as every report does (docs/input.md, "Names and units in outputs"):
+  // metric_unit's "m/s^2" is the API's ASCII spelling.
+  if (std::string_view(si) == "m/s^2") return {"m/s²", 1.0};
+  if (std::string_view(si) == "rad/s^2") return {"rad/s²", 1.0};
   return {si, 1.0};
 }
 
