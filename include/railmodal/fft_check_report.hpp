@@ -47,7 +47,7 @@ void write_fft_check(std::ostream& out, const FftCheckResult& result, const Scen
                      OutputFormat format, const Provenance& provenance = {});
 
 /// The verdict of all the checks in words, as every report ends: "FAILED: 2 of 6 modes
-/// checked, 1 outside its tolerance; …", "ok: 1 of 6 modes checked, within 5.0 %; 5 not
+/// checked, 1 outside its tolerance; …", "passed: 1 of 6 modes checked, within 5.0 %; 5 not
 /// checked (5 no line)" or "NOT CHECKED: no mode's line could be checked (2 not resolved: a run
 /// of at least 31 s)". "Not checked" is neither a pass nor a failure.
 std::string fft_check_verdict(const FftCheckResult& result);

@@ -82,8 +82,9 @@ struct RideOutput {
   RideAxis axis = RideAxis::vertical;
   ResponseQuantity quantity = ResponseQuantity::acceleration;  ///< point only
 };
-const char* to_string(RideOutput::Kind kind);  ///< "point", "element-deflection", "element-force", "wheel-rail-force"
+const char* to_string(RideOutput::Kind kind);  ///< "point", "element_deflection", "element_force", "wheel_rail_force"
 /// Inverse of to_string; std::nullopt for an unknown word.
+/// Also reads the hyphenated words of files written before 2026-11-27 ("element-force", ...).
 std::optional<RideOutput::Kind> ride_output_kind_from_string(const std::string& word);
 /// The SI unit of an output's values: "m", "m/s", "m/s²" (a point's displacement, velocity,
 /// acceleration; an element's deflection in m) or "N" (forces).
@@ -230,6 +231,11 @@ struct RideResult {
   /// out rather than show them empty.
   bool rms_only = false;
 };
+
+/// Whether `result` holds a grid error estimate: not when solved with rms_only, nor when no
+/// output has a bounded, nonzero RMS at any speed (RideResult::grid_error_estimate is then 0, not
+/// an estimate; the reports write "no grid error estimate", JSON null, Python None).
+bool has_grid_error_estimate(const RideResult& result);
 
 /// The ride of `system` on `track` at every speed of `options`. Throws std::invalid_argument for invalid options, an
 /// output that names no body, element or wheelset of the system (naming it and the valid names), an output the system

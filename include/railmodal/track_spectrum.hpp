@@ -46,8 +46,9 @@ enum class TrackIrregularity {
   alignment,       ///< lateral alignment, m
   cross_level,     ///< height difference between the rails Δz = z_left − z_right, m
 };
-const char* to_string(TrackIrregularity irregularity);  ///< "vertical-level", "alignment", "cross-level"
+const char* to_string(TrackIrregularity irregularity);  ///< "vertical_level", "alignment", "cross_level"
 /// Inverse of to_string; std::nullopt for an unknown word.
+/// Also reads the spellings before 2026-11-27, "vertical-level" and "cross-level".
 std::optional<TrackIrregularity> track_irregularity_from_string(const std::string& word);
 
 /// The two ORE B176 track qualities.
@@ -62,8 +63,9 @@ enum class SpectrumAbscissa {
   spatial_frequency,  ///< n = 1/λ in cycles/m; density in m²/(cycle/m)
   wavelength,         ///< λ in m; density in m²/(cycle/m), i.e. per unit of 1/λ (not per metre of λ)
 };
-const char* to_string(SpectrumAbscissa abscissa);  ///< "wavenumber", "spatial-frequency", "wavelength"
+const char* to_string(SpectrumAbscissa abscissa);  ///< "wavenumber", "spatial_frequency", "wavelength"
 /// Inverse of to_string; std::nullopt for an unknown word.
+/// Also reads "spatial-frequency", the spelling before 2026-11-27.
 std::optional<SpectrumAbscissa> spectrum_abscissa_from_string(const std::string& word);
 
 /// A band of wavenumbers, rad/m: 0 ≤ low < high < ∞.

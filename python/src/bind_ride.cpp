@@ -27,7 +27,7 @@ constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();  // an abs
 
 TrackIrregularity irregularity_argument(const std::string& word) {
   return enum_argument(word, track_irregularity_from_string, "irregularity",
-                       "'vertical-level', 'alignment', 'cross-level'");
+                       "'vertical_level', 'alignment', 'cross_level'");
 }
 
 void bind_track_spectrum(py::module_& m) {
@@ -56,7 +56,7 @@ void bind_track_spectrum(py::module_& m) {
              const std::vector<double>& densities) {
             return TrackSpectrum::table(irregularity_argument(irregularity),
                                         enum_argument(abscissa, spectrum_abscissa_from_string, "abscissa",
-                                                      "'wavenumber', 'spatial-frequency', 'wavelength'"),
+                                                      "'wavenumber', 'spatial_frequency', 'wavelength'"),
                                         abscissae, densities);
           },
           py::arg("irregularity"), py::arg("abscissa"), py::arg("abscissae"), py::arg("densities"),
@@ -129,7 +129,7 @@ void bind_ride_output(py::module_& m) {
              RideOutput o;
              o.name = name;
              o.kind = enum_argument(kind, ride_output_kind_from_string, "kind",
-                                    "'point', 'element-deflection', 'element-force', 'wheel-rail-force'");
+                                    "'point', 'element_deflection', 'element_force', 'wheel_rail_force'");
              o.body = body;
              o.point = point;
              o.element = element;
@@ -278,8 +278,11 @@ void bind_ride_result(py::module_& m) {
       .def_readonly("friction_treatment", &RideResult::friction_treatment)
       .def_property_readonly(
           "grid_error_estimate",
-          [](const RideResult& r) { return r.rms_only ? py::none() : py::object(py::float_(r.grid_error_estimate)); },
-          "the largest relative RMS change on halving the grid; None with rms_only")
+          [](const RideResult& r) {
+            return has_grid_error_estimate(r) ? py::object(py::float_(r.grid_error_estimate)) : py::none();
+          },
+          "the largest relative RMS change on halving the grid; None with rms_only or when no output has a "
+          "bounded RMS")
       .def_readonly("notes", &RideResult::notes)
       .def_readonly("summary", &RideResult::summary);
 }

@@ -226,10 +226,22 @@ py::dict hold_dict(const HeldCriticalSpeed& h) {
                   py::arg("steps") = h.steps);
 }
 
+// The result with its not_converged_reason: why it did not converge, as the reports say it (JSON
+// "not_converged_reason"), or None. The words need the options, which the result does not hold, so
+// the functions that solve set it on the instance (the class has a __dict__ for it).
+py::object with_reason(NonlinearHuntingResult result, const NonlinearHuntingOptions& options) {
+  const std::string why = nonlinear_hunting_warning(result, options);
+  py::object out = py::cast(std::move(result));
+  out.attr("not_converged_reason") = why.empty() ? py::object(py::none()) : py::object(py::str(why));
+  return out;
+}
+
 void bind_nonlinear_hunting(py::module_& m) {
   py::class_<NonlinearHuntingResult>(m, "NonlinearHuntingResult",
                                      "The nonlinear critical speed from a ramp-down, its check at half the rate and "
-                                     "its confirmation by held speeds")
+                                     "its confirmation by held speeds; not_converged_reason: why it did not "
+                                     "converge (as the reports say), or None",
+                                     py::dynamic_attr())
       .def_property_readonly("verdict", [](const NonlinearHuntingResult& r) { return std::string(to_string(r.verdict)); })
       .def_property_readonly("critical_speed_m_s",
                              [](const NonlinearHuntingResult& r) { return optional_value(r.critical_speed); })
@@ -245,6 +257,10 @@ void bind_nonlinear_hunting(py::module_& m) {
       .def_property_readonly("convergence",
                              [](const NonlinearHuntingResult& r) { return std::string(to_string(r.convergence)); })
       .def_readonly("converged", &NonlinearHuntingResult::converged)
+      .def_readonly("ramp_too_fast", &NonlinearHuntingResult::ramp_too_fast,
+                    "the stated ramp lost the cycle more than hold_margin above a held speed whose cycle survives")
+      .def_readonly("collapsing_at_end_speed", &NonlinearHuntingResult::collapsing_at_end_speed,
+                    "the stated ramp survived to end_speed, its cycle still collapsing there")
       .def_readonly("summary", &NonlinearHuntingResult::summary);
 
   m.def(
@@ -273,8 +289,12 @@ void bind_nonlinear_hunting(py::module_& m) {
         o.hold_periods = hold_periods;
         o.hold_margin = hold_margin;
         const SystemArgument s(system, DofSet::lateral);
-        py::gil_scoped_release release;
-        return solve_nonlinear_hunting(*s, o);
+        NonlinearHuntingResult result;
+        {
+          py::gil_scoped_release release;
+          result = solve_nonlinear_hunting(*s, o);
+        }
+        return with_reason(std::move(result), o);
       },
       py::arg("system"), py::kw_only(),
       py::arg("effects") = std::vector<std::string>{"creep_saturation", "flange_contact"},
@@ -333,7 +353,9 @@ SceneHunting scene_hunting(const Scene& scene, const py::object& vehicle) {
 void bind_scene_hunting(py::module_& m) {
   m.def(
       "hunting_scene",
-      [](const Scene& scene, const py::object& vehicle) { return scene_hunting(scene, vehicle).result; },
+      [](const Scene& scene, const py::object& vehicle) {
+        return with_reason(scene_hunting(scene, vehicle).result, *scene.nonlinear_hunting);
+      },
       py::arg("scene"), py::arg("vehicle") = py::none(),
       "The scene's [nonlinear_hunting] ramp-down ('railmodal hunting'): a NonlinearHuntingResult. `vehicle` (a file "
       "or Vehicle) replaces the scene's. InputError without the table; ValueError without wheelsets.");

@@ -58,11 +58,11 @@ std::string describe(TrackIrregularity irregularity) {
 const char* to_string(TrackIrregularity irregularity) {
   switch (irregularity) {
     case TrackIrregularity::vertical_level:
-      return "vertical-level";
+      return "vertical_level";
     case TrackIrregularity::alignment:
       return "alignment";
     case TrackIrregularity::cross_level:
-      return "cross-level";
+      return "cross_level";
   }
   return "";
 }
@@ -71,6 +71,9 @@ std::optional<TrackIrregularity> track_irregularity_from_string(const std::strin
   for (TrackIrregularity i :
        {TrackIrregularity::vertical_level, TrackIrregularity::alignment, TrackIrregularity::cross_level})
     if (word == to_string(i)) return i;
+  // The hyphenated words before 2026-11-27 (the vocabulary is in underscores: docs/input.md).
+  if (word == "vertical-level") return TrackIrregularity::vertical_level;
+  if (word == "cross-level") return TrackIrregularity::cross_level;
   return std::nullopt;
 }
 
@@ -87,7 +90,7 @@ const char* to_string(SpectrumAbscissa abscissa) {
     case SpectrumAbscissa::wavenumber:
       return "wavenumber";
     case SpectrumAbscissa::spatial_frequency:
-      return "spatial-frequency";
+      return "spatial_frequency";
     case SpectrumAbscissa::wavelength:
       return "wavelength";
   }
@@ -98,6 +101,7 @@ std::optional<SpectrumAbscissa> spectrum_abscissa_from_string(const std::string&
   for (SpectrumAbscissa a :
        {SpectrumAbscissa::wavenumber, SpectrumAbscissa::spatial_frequency, SpectrumAbscissa::wavelength})
     if (word == to_string(a)) return a;
+  if (word == "spatial-frequency") return SpectrumAbscissa::spatial_frequency;  // the spelling before 2026-11-27
   return std::nullopt;
 }
 

@@ -58,7 +58,7 @@ double abscissa_scale(TableReader& t, SpectrumAbscissa abscissa) {
     case SpectrumAbscissa::wavenumber:
       if (unit == "rad/m") return 1.0;
       t.fail("abscissa_unit", "a wavenumber's unit is rad/m, not '" + unit +
-                                  "' (a table per cycle/m is abscissa = \"spatial-frequency\")");
+                                  "' (a table per cycle/m is abscissa = \"spatial_frequency\")");
     case SpectrumAbscissa::spatial_frequency:
       if (unit == "cycle/m" || unit == "1/m") return 1.0;
       t.fail("abscissa_unit", "a spatial frequency's unit is cycle/m (or 1/m), not '" + unit + "'");
@@ -139,7 +139,7 @@ double density_scale(TableReader& t, SpectrumAbscissa abscissa) {
 TrackSpectrum table(TableReader& t, TrackIrregularity component) {
   const std::string word = t.string("abscissa");
   const auto abscissa = spectrum_abscissa_from_string(word);
-  if (!abscissa) t.fail("abscissa", "must be wavenumber, spatial-frequency or wavelength, not '" + word + "'");
+  if (!abscissa) t.fail("abscissa", "must be wavenumber, spatial_frequency or wavelength, not '" + word + "'");
   const double x_scale = abscissa_scale(t, *abscissa);
   double s_scale = density_scale(t, *abscissa);
   // A two-sided density (on −∞ … ∞) holds half the variance on Ω > 0: doubled to one-sided.
@@ -177,10 +177,10 @@ TrackSpectrum table(TableReader& t, TrackIrregularity component) {
 
 TrackSpectrum spectrum_of(TableReader& c, TrackIrregularity component) {
   const std::string kind = c.string("spectrum");
-  if (kind == "ore-b176") return ore(c, component);
+  if (kind == "ore_b176" || kind == "ore-b176") return ore(c, component);  // "ore-b176": before 2026-11-27
   if (kind == "fra") return fra(c, component);
   if (kind == "table") return table(c, component);
-  c.fail("spectrum", "unknown spectrum '" + kind + "' (ore-b176, fra, table)");
+  c.fail("spectrum", "unknown spectrum '" + kind + "' (ore_b176, fra, table)");
 }
 
 TrackSpectrum component_spectrum(TableReader c, TrackIrregularity component) {
@@ -200,8 +200,7 @@ IrregularitySource read_irregularity(TableReader& t) {
   IrregularitySource source;
   for (TrackIrregularity component :
        {TrackIrregularity::vertical_level, TrackIrregularity::alignment, TrackIrregularity::cross_level}) {
-    std::string key = to_string(component);
-    std::replace(key.begin(), key.end(), '-', '_');
+    const std::string key = to_string(component);
     if (!t.has(key)) continue;
     TrackSpectrum s = component_spectrum(t.table(key), component);
     (component == TrackIrregularity::vertical_level ? source.spectra.vertical_level

@@ -73,7 +73,7 @@ RideOutput read_output(TableReader& t, size_t k, std::set<std::string>* names,
   const std::string kind = t.optional_string("kind").value_or("point");
   const auto parsed = ride_output_kind_from_string(kind);
   if (!parsed)
-    t.fail("kind", "must be point, element-deflection, element-force or wheel-rail-force, not '" + kind + "'");
+    t.fail("kind", "must be point, element_deflection, element_force or wheel_rail_force, not '" + kind + "'");
   out.kind = *parsed;
   out.axis = read_axis(t);
   const std::string at = "ride.output[" + std::to_string(k) + "].";

@@ -65,13 +65,14 @@ HeaderColumn header_column(const std::string& file, int line, const Field& field
   out.name = field.text;
   const std::string name = trim(field.text.substr(0, open)), unit = trim(field.text.substr(open + 1, close - open - 1));
   if (name == "distance") out.kind = Column::distance;
-  else if (name == "vertical level") out.kind = Column::vertical_level;
+  // The scene's words (vertical_level, cross_level), or the spellings before 2026-11-27.
+  else if (name == "vertical_level" || name == "vertical level") out.kind = Column::vertical_level;
   else if (name == "alignment") out.kind = Column::alignment;
-  else if (name == "cross-level") out.kind = Column::cross_level;
+  else if (name == "cross_level" || name == "cross-level") out.kind = Column::cross_level;
   else
     throw InputError(file, line, field.column,
                      "column '" + field.text + "': unknown column '" + name +
-                         "'; expected distance, vertical level, alignment or cross-level");
+                         "'; expected distance, vertical_level, alignment or cross_level");
   if (unit == "m") out.scale = 1.0;
   else if (unit == "mm") out.scale = 1e-3;
   else

@@ -43,13 +43,13 @@ report::Table table_of(std::vector<std::string> headers) {
 // wheel loads ΔP of `result`.
 Section angle_table(const std::string& title, const GearResult& r, const std::vector<std::string>& cylinders,
                     const std::vector<std::string>& wheels, bool rods) {
-  std::vector<std::string> headers = {"phi [deg]"};
+  std::vector<std::string> headers = {"φ [deg]"};
   if (rods)
     for (const std::string& c : cylinders)
       for (const char* q : {"X", "Y", "Z"}) headers.push_back(std::string(q) + " " + c + " [kN]");
   for (const std::string& w : wheels) headers.push_back("dP " + w + " [kN]");
   headers.push_back("sum X [kN]");
-  headers.push_back("sum MX [kN m]");
+  headers.push_back("sum MX [kN·m]");
   Section s{title, table_of(headers)};
   const int steps = static_cast<int>(r.states.size());
   for (int degree = 0; degree < 360; degree += 15) {
@@ -69,7 +69,7 @@ Section angle_table(const std::string& title, const GearResult& r, const std::ve
 
 Section harmonics_table(const GearResult& r, const std::vector<std::string>& cylinders,
                         const std::vector<std::string>& wheels) {
-  Section s{"Harmonics of the gear as given (amplitudes, kN; sum MX in kN m)",
+  Section s{"Harmonics of the gear as given (amplitudes, kN; sum MX in kN·m)",
             table_of({"quantity", "order 0", "order 1", "order 2", "order 3", "order 4"})};
   s.table.numeric[0] = false;
   const int highest = std::min<int>(4, static_cast<int>(r.surging_harmonics.size()) - 1);
@@ -92,7 +92,7 @@ Section harmonics_table(const GearResult& r, const std::vector<std::string>& cyl
 Section counterweight_table(const BalanceStudy& study, const std::vector<std::string>& wheels) {
   Section s{"Counterweights by rule (kg on the crank radius, degrees ahead of the wheel's crank)",
             table_of({"rule", "wheel", "rotating [kg]", "at [deg]", "vertical [kg]", "at [deg]", "overbalance [kg]",
-                      "at [deg]", "total [kg]", "at [deg]", "max dP [kN]", "least load [kN]", "alpha", "alpha (89a)",
+                      "at [deg]", "total [kg]", "at [deg]", "max dP [kN]", "least load [kN]", "α", "α (89a)",
                       "wheel lift"})};
   s.table.numeric[0] = s.table.numeric[1] = s.table.numeric[14] = false;
   for (const BalanceResult& b : study.by_rule) {
@@ -113,10 +113,10 @@ Section counterweight_table(const BalanceStudy& study, const std::vector<std::st
 std::string rule_of(const BalanceResult& b) { return to_string(b.rule); }
 
 Section after_table(const BalanceStudy& study) {
-  std::vector<std::string> headers = {"rule", "max sum X [kN]", "unbalanced surging [%]", "max sum MX [kN m]",
-                                      "unbalanced nosing [%]", "max alpha"};
-  for (double limit : kAlphaLimits) headers.push_back("alpha " + report::fixed(limit, 2) + " at [km/h]");
-  Section s{"After balancing: surging, nosing, and the speeds at which the largest alpha reaches the limits",
+  std::vector<std::string> headers = {"rule", "max sum X [kN]", "unbalanced surging [%]", "max sum MX [kN·m]",
+                                      "unbalanced nosing [%]", "max α"};
+  for (double limit : kAlphaLimits) headers.push_back("α " + report::fixed(limit, 2) + " at [km/h]");
+  Section s{"After balancing: surging, nosing, and the speeds at which the largest α reaches the limits",
             table_of(headers)};
   s.table.numeric[0] = false;
   for (const BalanceResult& b : study.by_rule) {
@@ -135,8 +135,8 @@ Section after_table(const BalanceStudy& study) {
 }
 
 Section trade_off_table(const BalanceResult& b) {
-  Section s{"Trade-off (" + rule_of(b) + " rule): alpha against the fraction of reciprocating mass balanced",
-            table_of({"balanced [%]", "max alpha", "max sum X [kN]", "max sum MX [kN m]"})};
+  Section s{"Trade-off (" + rule_of(b) + " rule): α against the fraction of reciprocating mass balanced",
+            table_of({"balanced [%]", "max α", "max sum X [kN]", "max sum MX [kN·m]"})};
   for (const BalanceTradeOff& t : b.trade_off)
     s.table.rows.push_back({report::fixed(100 * t.fraction, 0), report::fixed(t.max_alpha, 3), kn(t.max_surging),
                             kn(t.max_nosing)});
@@ -224,14 +224,14 @@ void write_states(JsonWriter& j, const GearResult& r, const std::vector<std::str
     if (rods) {
       j.key("cylinders").begin_array();
       for (std::size_t c = 0; c < st->cylinders.size(); ++c)
-        j.begin_object().member("cylinder", cylinders[c]).member("X_N", st->cylinders[c].horizontal)
-            .member("Y_N", st->cylinders[c].vertical).member("Z_N", st->cylinders[c].guide).end_object();
+        j.begin_object().member("cylinder", cylinders[c]).member("X_n", st->cylinders[c].horizontal)
+            .member("Y_n", st->cylinders[c].vertical).member("Z_n", st->cylinders[c].guide).end_object();
       j.end_array();
     }
     j.key("wheel_loads").begin_array();
     for (std::size_t w = 0; w < st->wheel_loads.size(); ++w)
-      j.begin_object().member("wheel", wheels[w]).member("dP_N", st->wheel_loads[w]).end_object();
-    j.end_array().member("surging_N", st->surging).member("nosing_N_m", st->nosing).end_object();
+      j.begin_object().member("wheel", wheels[w]).member("dP_n", st->wheel_loads[w]).end_object();
+    j.end_array().member("surging_n", st->surging).member("nosing_n_m", st->nosing).end_object();
   }
   j.end_array();
 }
@@ -242,29 +242,29 @@ void write_gear(JsonWriter& j, const GearResult& r, const std::vector<std::strin
   write_states(j, r, cylinders, wheels, true);
   j.key("harmonics").begin_object().key("cylinders").begin_array();
   for (std::size_t c = 0; c < cylinders.size(); ++c) {
-    j.begin_object().member("cylinder", cylinders[c]).key("X_N");
+    j.begin_object().member("cylinder", cylinders[c]).key("X_n");
     write_harmonics(j, r.horizontal_harmonics[c]);
-    j.key("Y_N");
+    j.key("Y_n");
     write_harmonics(j, r.vertical_harmonics[c]);
-    j.key("Z_N");
+    j.key("Z_n");
     write_harmonics(j, r.guide_harmonics[c]);
     j.end_object();
   }
-  j.end_array().key("surging_N");
+  j.end_array().key("surging_n");
   write_harmonics(j, r.surging_harmonics);
-  j.key("nosing_N_m");
+  j.key("nosing_n_m");
   write_harmonics(j, r.nosing_harmonics);
   j.end_object().key("wheels").begin_array();
   for (std::size_t w = 0; w < r.wheels.size(); ++w) {
     const GearWheelLoad& x = r.wheels[w];
-    j.begin_object().member("wheel", wheels[w]).member("static_load_N", x.static_load);
-    j.member("max_dP_N", x.max_dynamic_load).member("min_dP_N", x.min_dynamic_load);
-    j.member("least_load_N", x.static_load + x.min_dynamic_load).member("alpha", x.alpha);
-    j.member("alpha_89a", x.alpha_89a).member("wheel_lift", x.wheel_lift).key("dP_harmonics_N");
+    j.begin_object().member("wheel", wheels[w]).member("static_load_n", x.static_load);
+    j.member("max_dP_n", x.max_dynamic_load).member("min_dP_n", x.min_dynamic_load);
+    j.member("least_load_n", x.static_load + x.min_dynamic_load).member("alpha", x.alpha);
+    j.member("alpha_89a", x.alpha_89a).member("wheel_lift", x.wheel_lift).key("dP_harmonics_n");
     write_harmonics(j, x.harmonics);
     j.end_object();
   }
-  j.end_array().member("max_surging_N", r.max_surging).member("max_nosing_N_m", r.max_nosing).end_object();
+  j.end_array().member("max_surging_n", r.max_surging).member("max_nosing_n_m", r.max_nosing).end_object();
 }
 
 double largest_alpha(const BalanceResult& b) {
@@ -283,25 +283,25 @@ void write_rule(JsonWriter& j, const BalanceStudy& study, const BalanceResult& b
     j.member("vertical_mass_kg", x.vertical_mass).member("vertical_angle_deg", x.vertical_angle / kDegree);
     j.member("overbalance_mass_kg", x.overbalance_mass).member("overbalance_angle_deg", x.overbalance_angle / kDegree);
     j.member("total_mass_kg", x.total_mass).member("total_angle_deg", x.total_angle / kDegree);
-    j.member("max_hammer_blow_N", x.max_hammer_blow);
-    j.member("least_load_N", b.after.wheels[w].static_load + b.after.wheels[w].min_dynamic_load);
+    j.member("max_hammer_blow_n", x.max_hammer_blow);
+    j.member("least_load_n", b.after.wheels[w].static_load + b.after.wheels[w].min_dynamic_load);
     j.member("alpha", x.alpha).member("alpha_89a", x.alpha_89a).member("wheel_lift", x.alpha >= 1.0);
-    j.key("dP_harmonics_N");
+    j.key("dP_harmonics_n");
     write_harmonics(j, b.after.wheels[w].harmonics);
     j.end_object();
   }
   const double alpha = largest_alpha(b);
-  j.end_array().member("max_surging_N", b.after.max_surging);
-  j.member("unbalanced_surging_percent", b.percent_unbalanced_surging).member("max_nosing_N_m", b.after.max_nosing);
+  j.end_array().member("max_surging_n", b.after.max_surging);
+  j.member("unbalanced_surging_percent", b.percent_unbalanced_surging).member("max_nosing_n_m", b.after.max_nosing);
   j.member("unbalanced_nosing_percent", b.percent_unbalanced_nosing).member("max_alpha", alpha);
   j.key("speed_at_alpha").begin_array();
   // JSON has no infinity: a speed that is never reached is null (JsonWriter).
   for (double limit : kAlphaLimits)
-    j.begin_object().member("alpha", limit).member("speed_km_per_h", speed_at_alpha(alpha, b.speed, limit) * 3.6)
+    j.begin_object().member("alpha", limit).member("speed_kmh", speed_at_alpha(alpha, b.speed, limit) * 3.6)
         .end_object();
-  j.end_array().key("surging_harmonics_N");
+  j.end_array().key("surging_harmonics_n");
   write_harmonics(j, b.after.surging_harmonics);
-  j.key("nosing_harmonics_N_m");
+  j.key("nosing_harmonics_n_m");
   write_harmonics(j, b.after.nosing_harmonics);
   if (b.rule == study.options.rule) {
     j.key("states_every_15_deg");
@@ -311,7 +311,7 @@ void write_rule(JsonWriter& j, const BalanceStudy& study, const BalanceResult& b
     j.key("trade_off").begin_array();
     for (const BalanceTradeOff& x : b.trade_off)
       j.begin_object().member("balanced_fraction", x.fraction).member("max_alpha", x.max_alpha)
-          .member("max_surging_N", x.max_surging).member("max_nosing_N_m", x.max_nosing).end_object();
+          .member("max_surging_n", x.max_surging).member("max_nosing_n_m", x.max_nosing).end_object();
     j.end_array();
   }
   j.end_object();
@@ -322,17 +322,17 @@ std::vector<std::string> alpha_notes(const BalanceStudy& study);
 void write_json(std::ostream& out, const BalanceStudy& study, const std::vector<std::string>& cylinders,
                 const std::vector<std::string>& wheels) {
   JsonWriter j(out);
-  j.begin_object().member("engine", study.name).member("speed_m_per_s", study.gear.speed);
-  j.member("speed_km_per_h", study.gear.speed * 3.6).member("omega_rad_per_s", study.gear.omega);
+  j.begin_object().member("engine", study.name).member("speed_m_s", study.gear.speed);
+  j.member("speed_kmh", study.gear.speed * 3.6).member("omega_rad_s", study.gear.omega);
   j.member("frequency_hz", study.gear.frequency_hz).key("options").begin_object();
   j.member("rule", to_string(study.options.rule)).member("allowed_alpha", study.options.allowed_alpha);
   j.member("reciprocating_fraction", study.options.reciprocating_fraction);
   j.member("overbalance_driving_axles", study.options.overbalance_driving_axles).end_object();
   j.key("conventions").begin_object();
   j.member("crank_angle",
-           "phi: the right (reference) crank's angle from its rear dead centre, in the direction of rotation running "
+           "φ: the right (reference) crank's angle from its rear dead centre, in the direction of rotation running "
            "forward (Zhdanov; docs/driving_gear.md)");
-  j.member("harmonics", "q(phi) = sum over k of amplitude_k cos(k phi - phase_k), k = 0 the mean");
+  j.member("harmonics", "q(φ) = sum over k of amplitude_k cos(k φ - phase_k), k = 0 the mean");
   j.member("signs",
            "X + forward, Y and Z + up, dP + pressing the rail, surging + forward, nosing + turning the engine to the "
            "right");
@@ -378,7 +378,7 @@ void csv_states(CsvRows& csv, const std::string& rule, const GearResult& r, cons
       }
     for (std::size_t w = 0; w < st->wheel_loads.size(); ++w) csv.row("state", rule, wheels[w], "dP", "N", at, st->wheel_loads[w]);
     csv.row("state", rule, "engine", "surging", "N", at, st->surging);
-    csv.row("state", rule, "engine", "nosing", "N m", at, st->nosing);
+    csv.row("state", rule, "engine", "nosing", "N·m", at, st->nosing);
   }
 }
 
@@ -403,7 +403,7 @@ void write_csv(std::ostream& out, const BalanceStudy& study, const std::vector<s
   }
   for (std::size_t w = 0; w < wheels.size(); ++w) csv_harmonics(csv, "", wheels[w], "dP", "N", g.wheels[w].harmonics);
   csv_harmonics(csv, "", "engine", "surging", "N", g.surging_harmonics);
-  csv_harmonics(csv, "", "engine", "nosing", "N m", g.nosing_harmonics);
+  csv_harmonics(csv, "", "engine", "nosing", "N·m", g.nosing_harmonics);
   const CsvRows::At none{"", "", ""};
   for (const BalanceResult& b : study.by_rule) {
     const std::string rule = to_string(b.rule);
@@ -427,7 +427,7 @@ void write_csv(std::ostream& out, const BalanceStudy& study, const std::vector<s
     const auto put = [&](const std::string& q, const char* unit, double v) { csv.row("after", rule, "engine", q, unit, none, v); };
     put("max surging", "N", b.after.max_surging);
     put("unbalanced surging", "%", b.percent_unbalanced_surging);
-    put("max nosing", "N m", b.after.max_nosing);
+    put("max nosing", "N·m", b.after.max_nosing);
     put("unbalanced nosing", "%", b.percent_unbalanced_nosing);
     const double alpha = largest_alpha(b);
     put("max alpha", "1", alpha);
@@ -439,7 +439,7 @@ void write_csv(std::ostream& out, const BalanceStudy& study, const std::vector<s
       const CsvRows::At at{"", "", shortest_text(t.fraction)};
       csv.row("trade_off", rule, "engine", "max alpha", "1", at, t.max_alpha);
       csv.row("trade_off", rule, "engine", "max surging", "N", at, t.max_surging);
-      csv.row("trade_off", rule, "engine", "max nosing", "N m", at, t.max_nosing);
+      csv.row("trade_off", rule, "engine", "max nosing", "N·m", at, t.max_nosing);
     }
   }
 }
@@ -458,9 +458,9 @@ std::vector<std::string> alpha_notes(const BalanceStudy& study) {
     if (b.wheels.empty() || !(b.wheels[worst].alpha > allowed * (1 + 1e-9))) continue;
     const WheelBalance& w = b.wheels[worst];
     notes.push_back(
-        "The " + std::string(to_string(b.rule)) + " rule leaves alpha = " + report::fixed(w.alpha, 3) + " at wheel " +
+        "The " + std::string(to_string(b.rule)) + " rule leaves α = " + report::fixed(w.alpha, 3) + " at wheel " +
         study.axle_names[static_cast<std::size_t>(w.axle)] + (w.right ? " R" : " L") + ", above the allowed " +
-        report::fixed(allowed, 3) + ": --alpha sizes the overbalance of the coupled wheels so that their alpha is " +
+        report::fixed(allowed, 3) + ": --alpha sizes the overbalance of the coupled wheels so that their α is " +
         report::fixed(allowed, 3) + "; a driving wheel" +
         (study.options.overbalance_driving_axles ? "" : ", not overbalanced,") +
         " keeps what its vertical counterweight leaves of the rods' Y: the second harmonic, which no "
@@ -473,17 +473,17 @@ std::vector<std::string> alpha_notes(const BalanceStudy& study) {
 }
 
 std::string heading(const BalanceStudy& study) {
-  return "Driving gear of " + study.name + " at " + report::fixed(study.gear.speed * 3.6, 1) + " km/h (omega " +
-         report::fixed(study.gear.omega, 3) + " 1/s, f1 " + report::fixed(study.gear.frequency_hz, 3) + " Hz)";
+  return "Driving gear of " + study.name + " at " + shortest_text(study.gear.speed * 3.6, 6) + " km/h (ω " +
+         report::fixed(study.gear.omega, 3) + " rad/s, f1 " + report::fixed(study.gear.frequency_hz, 3) + " Hz)";
 }
 
 std::string overbalance_line(const BalanceStudy& study) {
   if (study.options.allowed_alpha > 0)
-    return "Overbalance: the coupled wheels up to alpha = " + report::fixed(study.options.allowed_alpha, 3) +
-           " (Zhdanov eq. (89a)); alpha is max|dP|/P over every mass (eq. (78)), alpha (89a) adds the overbalance's "
+    return "Overbalance: the coupled wheels up to α = " + report::fixed(study.options.allowed_alpha, 3) +
+           " (Zhdanov eq. (89a)); α is max|dP|/P over every mass (eq. (78)), α (89a) adds the overbalance's "
            "blow to the rest.";
   return "Overbalance: " + report::fixed(100 * study.options.reciprocating_fraction, 0) +
-         " % of the reciprocating masses; alpha is max|dP|/P over every mass (eq. (78)), alpha (89a) adds the "
+         " % of the reciprocating masses; α is max|dP|/P over every mass (eq. (78)), α (89a) adds the "
          "overbalance's blow to the rest.";
 }
 
@@ -538,7 +538,7 @@ void write_html(std::ostream& out, const BalanceStudy& study, const std::vector<
   }
   // One chart each: an axis carries one unit.
   report::Chart surging = angle_chart("surging", "Surging after balancing", "sum X (kN)");
-  report::Chart nosing = angle_chart("nosing", "Nosing after balancing", "sum MX (kN m)");
+  report::Chart nosing = angle_chart("nosing", "Nosing after balancing", "sum MX (kN·m)");
   report::ChartSeries x, mx;
   x.label = "sum X";
   mx.label = "sum MX";
@@ -554,13 +554,13 @@ void write_html(std::ostream& out, const BalanceStudy& study, const std::vector<
   if (!b.trade_off.empty()) {
     report::Chart trade;
     trade.id = "trade-off";
-    trade.title = "Largest alpha against the reciprocating mass balanced (" + rule_of(b) + " rule)";
+    trade.title = "Largest α against the reciprocating mass balanced (" + rule_of(b) + " rule)";
     trade.x_label = "reciprocating mass balanced (%)";
     // α itself on the axis (max|dP| over the static wheel load), so that the limit lines' labels
     // read in the axis' unit.
-    trade.y_label = "largest alpha (max|dP| / static load)";
+    trade.y_label = "largest α (max|dP| / static load)";
     report::ChartSeries alpha;
-    alpha.label = "largest alpha of any wheel";
+    alpha.label = "largest α of any wheel";
     for (const BalanceTradeOff& t : b.trade_off) {
       alpha.x.push_back(100 * t.fraction);
       alpha.y.push_back(t.max_alpha);

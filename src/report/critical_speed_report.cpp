@@ -15,6 +15,7 @@
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
@@ -285,7 +286,7 @@ void write_markdown(std::ostream& out, const CriticalSpeedStudy& st, const Prove
   out << "# Critical speeds: " << st.system.vehicle.name << "\n\n";
   out << "Scene **" << st.scene.name << "** (`" << st.scene.source << "`), vehicle `" << st.scene.vehicle_file
       << "`, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "
-      << fixed(st.scene.min_speed * kKmh, 1) << "–" << fixed(st.scene.max_speed * kKmh, 1) << " km/h.\n\n";
+      << shortest_text(st.scene.min_speed * kKmh, 6) << "–" << shortest_text(st.scene.max_speed * kKmh, 6) << " km/h.\n\n";
   out << friction_model_note(st) << "\n\n";
   // What the modes leave out (ModalResult::notes, as `modes` prints them): none for the book's wagons.
   for (const std::string& note : st.modes.notes) out << "Note: " << note << ".\n\n";
@@ -419,7 +420,7 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st, const Provenanc
   out << "<h1>Critical speeds: " << html_escape(v.name) << "</h1>\n<p>Scene <b>" << html_escape(st.scene.name)
       << "</b> (<code>" << html_escape(st.scene.source) << "</code>), vehicle <code>" << html_escape(st.scene.vehicle_file)
       << "</code>, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "
-      << fixed(st.scene.min_speed * kKmh, 1) << "–" << fixed(st.scene.max_speed * kKmh, 1) << " km/h.</p>\n";
+      << shortest_text(st.scene.min_speed * kKmh, 6) << "–" << shortest_text(st.scene.max_speed * kKmh, 6) << " km/h.</p>\n";
 
   out << "<p>" << html_escape(friction_model_note(st)) << "</p>\n";
   for (const std::string& note : st.modes.notes) out << "<p class=note>Note: " << html_escape(note) << ".</p>\n";
@@ -469,7 +470,7 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st, const Provenanc
 std::string output_unit(const std::string& output, ResponseQuantity quantity) {
   const std::string unit = report::displacement_unit(output);
   if (unit.empty() || quantity == ResponseQuantity::displacement) return unit;
-  return unit + (quantity == ResponseQuantity::velocity ? "/s" : "/s^2");
+  return unit + (quantity == ResponseQuantity::velocity ? "/s" : "/s²");
 }
 
 // The per-output columns' names, "<dof>.<quantity>_amplitude [unit]" and
@@ -533,7 +534,7 @@ void write_json_critical_speed(report::JsonWriter& j, const CriticalSpeed& r) {
   }
   j.end_array();
   j.member("source", r.source_kind).member("source_index", r.source + 1);
-  j.member("speed_kmh", r.speed * kKmh).member("unbounded", r.unbounded);
+  j.member("speed_kmh", r.speed * kKmh).member("speed_m_s", r.speed).member("unbounded", r.unbounded);
   j.end_object();
 }
 
@@ -551,6 +552,9 @@ void write_json_curve(report::JsonWriter& j, const CriticalSpeedStudy& st, const
   j.member("quantity", to_string(c.quantity)).member("source_index", c.source + 1);
   j.key("speeds_kmh").begin_array();
   for (double v : c.speeds) j.value(v * kKmh);
+  j.end_array();
+  j.key("speeds_m_s").begin_array();
+  for (double v : c.speeds) j.value(v);
   j.end_array();
   j.member("transfer_function", transfer_function(st, c));
   j.member("unit", is_rotation(st.system, c.output) ? "rad-based SI" : "SI (m, m/s, m/s²)");

@@ -15,6 +15,7 @@
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
@@ -137,7 +138,7 @@ std::string verdict_text(const FftCheck& c, bool nonlinear) {
     case Outcome::not_applicable:
       return "not applicable: " + c.why_not_applicable;
     case Outcome::passed:
-      return nonlinear ? "ok (within " + percent(c.tolerance) + ")" : "ok";
+      return nonlinear ? "passed (within " + percent(c.tolerance) + ")" : "passed";
     case Outcome::failed:
       if (!c.peak_hz) return "FAILED: no line within 3 resolutions";
       return nonlinear ? "FAILED: " + percent(std::abs(c.rel_error)) + " off (tolerance " + percent(c.tolerance) + ")"
@@ -212,8 +213,8 @@ std::string fft_check_verdict_text(const FftCheckResult& r) {
   const std::string within =
       r.nonlinear ? "within " + percent(FftCheck::kNonlinearTolerance) : "each within its line's width";
   if (spectral_checked == 0)  // the half periods alone
-    return "ok: " + half_period_text(r) + "; no mode's line could be checked (" + not_checked_reasons(r) + ")";
-  return "ok: " + made + ", " + within + halves + rest;
+    return "passed: " + half_period_text(r) + "; no mode's line could be checked (" + not_checked_reasons(r) + ")";
+  return "passed: " + made + ", " + within + halves + rest;
 }
 
 std::string overall_verdict(const FftCheckResult& r) { return "verdict: " + fft_check_verdict(r); }
@@ -385,7 +386,7 @@ void write_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, 
       << "</b> (<code>" << html_escape(scene.vehicle_file) << "</code>). ";
   const auto& sim = *scene.simulation;
   out << fixed(sim.duration, 3) << " s at a step of " << fixed(1e3 * sim.time_step, 3) << " ms";
-  if (sim.speed > 0.0) out << ", " << fixed(sim.speed * 3.6, 2) << " km/h";
+  if (sim.speed > 0.0) out << ", " << shortest_text(sim.speed * 3.6, 6) << " km/h";
   out << "; effects: ";
   if (sim.effects.empty()) out << "none (the linear, undamped model)";
   for (size_t i = 0; i < sim.effects.size(); ++i) out << (i ? ", " : "") << html_escape(sim.effects[i]);

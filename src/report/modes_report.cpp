@@ -36,7 +36,7 @@ using report::csv_heading;
 std::string shape_unit(const Dof& dof) {
   if (dof.body < 0) return "";
   const std::string unit = report::displacement_unit(dof.label);
-  return unit == "rad" ? "rad/(sqrt(kg) m)" : unit == "m" ? "1/sqrt(kg)" : "";
+  return unit == "rad" ? "rad/(sqrt(kg)·m)" : unit == "m" ? "1/sqrt(kg)" : "";
 }
 
 // One line on how ARPACK found the modes (nothing for the dense solver, which finds all).
@@ -93,7 +93,7 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
     }
   // The units the CSV heads its columns with (shape_unit); a matrix model's are its matrices'.
   const bool vehicle = std::any_of(r.dofs.begin(), r.dofs.end(), [](const Dof& d) { return d.body >= 0; });
-  out << (vehicle ? "\nmode shapes (mass-normalised: translations in 1/sqrt(kg), rotations in rad/(sqrt(kg) m))\n"
+  out << (vehicle ? "\nmode shapes (mass-normalised: translations in 1/sqrt(kg), rotations in rad/(sqrt(kg)·m))\n"
                   : "\nmode shapes (mass-normalised; in the units of the matrices)\n");
   // The DOF column: 18 wide, wider where a label needs it (bogie1.longitudinal is 19), with
   // one space before the first shape column.

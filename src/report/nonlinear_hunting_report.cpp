@@ -19,6 +19,7 @@
 #include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
@@ -69,7 +70,7 @@ std::string effects_text(const NonlinearHuntingOptions& o) {
 }
 
 std::string ramp_text(const NonlinearHuntingOptions& o) {
-  return "from " + fixed(o.start_speed * kKmh, 1) + " to " + fixed(o.end_speed * kKmh, 1) + " km/h at " +
+  return "from " + shortest_text(o.start_speed * kKmh, 6) + " to " + shortest_text(o.end_speed * kKmh, 6) + " km/h at " +
          significant(o.ramp_rate, 4) + " m/s² and at half of it, every wheelset displaced laterally by " +
          mm(o.disturbance) + " at the start";
 }
@@ -474,7 +475,7 @@ void write_html(std::ostream& out, const Page& p) {
 void write_csv(std::ostream& out, const NonlinearHuntingResult& r, const LimitCycleBranch* branch) {
   using report::csv_heading;
   report::CsvWriter csv(out);
-  csv.field("ramp").field(csv_heading("ramp_rate", "m/s^2")).field("half_cycle").field(csv_heading("speed", "km/h"));
+  csv.field("ramp").field(csv_heading("ramp_rate", "m/s²")).field("half_cycle").field(csv_heading("speed", "km/h"));
   csv.field(csv_heading("amplitude", "mm"));
   if (branch)
     csv.field("stable").field(csv_heading("period", "s")).field("largest_multiplier").field("newton_residual");

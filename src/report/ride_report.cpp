@@ -47,22 +47,6 @@ struct Page {
 
 // ---- units and words ----
 
-// The unit as a JSON key's suffix: "m_s2" for m/s².
-std::string key_suffix(const RideOutput& o) {
-  const std::string u = unit_of(o);
-  return u == "m" ? "m" : u == "m/s" ? "m_s" : u == "N" ? "n" : "m_s2";
-}
-// The unit of the output's PSD as a JSON key's suffix: "m2_s4_per_hz" for (m/s²)²/Hz.
-std::string psd_key_suffix(const RideOutput& o) {
-  const std::string u = unit_of(o);
-  return u == "m" ? "m2_per_hz" : u == "m/s" ? "m2_s2_per_hz" : u == "N" ? "n2_per_hz" : "m2_s4_per_hz";
-}
-
-// The unit of a variance of the output: "m2", "m2_s2", "n2", "m2_s4" (its PSD's per hertz).
-std::string variance_key_suffix(const RideOutput& o) {
-  const std::string psd = psd_key_suffix(o);
-  return psd.substr(0, psd.size() - std::string("_per_hz").size());
-}
 
 // A speed in km/h for CSV and JSON: m/s × 3.6 to 15 significant digits, so that a speed given as
 // "150 km/h" (41.666… m/s) is 150 and not 150.00000000000003, the product's round-off; any speed
@@ -74,7 +58,10 @@ double kmh_value(double speed) {
   return value;
 }
 
-std::string kmh(double speed) { return fixed(speed * kKmh, 1) + " km/h"; }
+// A ride speed, as the user gave it ("100 km/h", "12.5 km/h"): every report prints a speed it was
+// given in this form and a speed it computed at the precision it has (docs/input.md, "Names and
+// units in outputs").
+std::string kmh(double speed) { return shortest_text(speed * kKmh, 6) + " km/h"; }
 // Four significant digits with their trailing zeros ("0.1500", not "0.15"), so that a column
 // reads at one precision; from 1000 on, whole units.
 std::string value_text(double v) {
@@ -234,16 +221,9 @@ std::string track_rms_text(const RideResult& r) {
 
 // Whether the grid error estimate measured anything: some output has a bounded RMS at some speed.
 // With none (every output unbounded) it is 0 by default, not an estimate, and the reports say so.
-bool grid_error_estimated(const RideResult& r) {
-  for (const RideAtSpeed& at : r.speeds)
-    for (const RideOutputAtSpeed& o : at.outputs)
-      if (!o.unbounded && o.rms > 0.0) return true;
-  return false;
-}
-
 std::string grid_error_text(const RideResult& r) {
   if (r.rms_only) return "; RMS and weighted RMS only (no grid error estimate)";
-  if (!grid_error_estimated(r)) return "; no grid error estimate (no output has a bounded RMS)";
+  if (!has_grid_error_estimate(r)) return "; no grid error estimate (no output has a bounded RMS)";
   return "; grid error estimate " + significant(100.0 * r.grid_error_estimate, 2) + " % of an RMS";
 }
 
@@ -737,24 +717,23 @@ void write_at_speed(JsonWriter& j, const RideResult& r, const RideAtSpeed& at) {
       continue;
     }
     if (every_index) {
-      const std::string variance = variance_key_suffix(out);
-      j.member("cross_term_variance_" + variance, o.cross_term_variance);
-      j.member("direct_variance_" + variance, o.direct_variance).key("modes").begin_array();
+      j.member("cross_term_variance", o.cross_term_variance);
+      j.member("direct_variance", o.direct_variance).key("modes").begin_array();
       for (const ModalContribution& m : o.modes)
         // 1-based, as the reports' tables number the modes
-        j.begin_object().member("mode", m.mode + 1).member("share", m.share).member("variance_" + variance, m.variance)
+        j.begin_object().member("mode", m.mode + 1).member("share", m.share).member("variance", m.variance)
             .end_object();
       j.end_array();
     }
     j.member("name", out.name);
     if (every_index) j.member("p95_estimate_m_s2", o.p95_estimate);
     if (o.psd.size() > 0) {
-      j.key("psd_" + psd_key_suffix(out));
+      j.key("psd");
       write_values(j, o.psd);
     }
-    j.member("rms_" + key_suffix(out), o.rms);
+    j.member("rms", o.rms);
     if (every_index) j.member("sperling_wz", o.sperling_wz);
-    j.member("unbounded", false);
+    j.member("unbounded", false).member("unit", unit_of(out));
     j.member("weighted_rms_m_s2", o.weighted_rms).end_object();
   }
   j.end_array().member("speed_kmh", kmh_value(at.speed)).member("speed_m_s", at.speed).end_object();
@@ -786,7 +765,7 @@ void write_simulated(JsonWriter& j, const RideSimulationResult& s, const RideFft
   for (size_t i = 0; i < s.outputs.size() && i < s.histories.size(); ++i) {
     const RideHistory& h = s.histories[i];
     j.begin_object().member("name", s.outputs[i].name).member("p95_m_s2", h.p95);
-    j.member("rms_" + key_suffix(s.outputs[i]), h.rms).member("sperling_wz", h.sperling_wz);
+    j.member("rms", h.rms).member("sperling_wz", h.sperling_wz).member("unit", unit_of(s.outputs[i]));
     j.member("weighted_rms_m_s2", h.weighted_rms).key("window_rms_m_s2");
     write_values(j, h.window_rms);
     j.end_object();
@@ -803,7 +782,7 @@ void write_json(std::ostream& out, const Page& p) {
   write_line_member(out, "friction_treatment", [&](JsonWriter& j) { j.value(r.friction_treatment); });
   // RMS only (rms_only): no grid error estimate, and a member that says so.
   if (r.rms_only) write_line_member(out, "rms_only", [&](JsonWriter& j) { j.value(true); });
-  else if (!grid_error_estimated(r)) write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(nullptr); });
+  else if (!has_grid_error_estimate(r)) write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(nullptr); });
   else write_line_member(out, "grid_error_estimate", [&](JsonWriter& j) { j.value(r.grid_error_estimate); });
   write_line_member(out, "notes", [&](JsonWriter& j) { j.value(r.notes); });
   write_line_member(out, "track_rms", [&](JsonWriter& j) {

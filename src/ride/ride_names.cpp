@@ -27,9 +27,9 @@ std::optional<RideAxis> ride_axis_from_string(const std::string& word) {
 const char* to_string(RideOutput::Kind kind) {
   switch (kind) {
     case RideOutput::Kind::point: return "point";
-    case RideOutput::Kind::element_deflection: return "element-deflection";
-    case RideOutput::Kind::element_force: return "element-force";
-    case RideOutput::Kind::wheel_rail_force: return "wheel-rail-force";
+    case RideOutput::Kind::element_deflection: return "element_deflection";
+    case RideOutput::Kind::element_force: return "element_force";
+    case RideOutput::Kind::wheel_rail_force: return "wheel_rail_force";
   }
   return "?";
 }
@@ -38,6 +38,11 @@ std::optional<RideOutput::Kind> ride_output_kind_from_string(const std::string& 
   for (RideOutput::Kind k : {RideOutput::Kind::point, RideOutput::Kind::element_deflection,
                              RideOutput::Kind::element_force, RideOutput::Kind::wheel_rail_force})
     if (word == to_string(k)) return k;
+  // The hyphenated words of files written before 2026-11-27 (docs/input.md, "Names and units in
+  // outputs": the vocabulary is in underscores now).
+  if (word == "element-deflection") return RideOutput::Kind::element_deflection;
+  if (word == "element-force") return RideOutput::Kind::element_force;
+  if (word == "wheel-rail-force") return RideOutput::Kind::wheel_rail_force;
   return std::nullopt;
 }
 

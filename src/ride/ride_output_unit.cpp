@@ -1,4 +1,5 @@
-// The unit of a ride output's values, one answer for reports and studies.
+// The unit of a ride output's values, and whether a result has a grid error estimate: one answer
+// for the reports, studies and the Python binding.
 #include "railmodal/ride.hpp"
 
 namespace railmodal {
@@ -16,6 +17,14 @@ std::string unit_of(const RideOutput& output) {
       return "N";
   }
   return "";
+}
+
+bool has_grid_error_estimate(const RideResult& result) {
+  if (result.rms_only) return false;
+  for (const RideAtSpeed& at : result.speeds)
+    for (const RideOutputAtSpeed& o : at.outputs)
+      if (!o.unbounded && o.rms > 0.0) return true;
+  return false;
 }
 
 }  // namespace railmodal

@@ -11,6 +11,7 @@
 #include "stability/hunting_analysis.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -276,6 +277,18 @@ int neutral_roots(const std::vector<SpeedRoots>& roots) {
   return most;
 }
 
+// 1 − `threshold` as the decimal the user means: 0.8 is stored as 0.80000000000000004441, and
+// 1 − that is exactly 0.19999999999999995559, one ulp below the double nearest 0.2, which reports
+// printed as 0.19999999999999996. Rounded to 15 significant digits (a double's 15.95 round-trip
+// exactly from decimal) and read back, it is 0.2; the check's verdict compares the MAC with the
+// threshold itself, not with this.
+double complement_as_given(double threshold) {
+  const std::string text = shortest_text(1.0 - threshold, 15);
+  double value = 1.0 - threshold;
+  std::from_chars(text.data(), text.data() + text.size(), value);  // locale-free
+  return value;
+}
+
 void summarise(const SolvedGrid& grid, const std::vector<double>& zeta, int evaluations, const HuntingOptions& options,
                HuntingResult* result) {
   double continuity = 1.0;
@@ -285,11 +298,12 @@ void summarise(const SolvedGrid& grid, const std::vector<double>& zeta, int eval
   summary.analysis = "hunting stability";
   summary.method =
       "QR of the balanced first-order state matrix at each speed (Eigen), roots tracked by MAC and "
-      "eigenvalue continuity (Hungarian assignment), least-damped ζ refined by Brent's method on " +
-      std::to_string(worker_count(options.threads, static_cast<int>(result->speeds.size()))) + " thread(s)";
+      "eigenvalue continuity (Hungarian assignment), least-damped ζ refined by Brent's method";
+  // No thread count in the method: the answer is the same whatever it is, and the reports write
+  // the method, so that two runs' outputs differed where their results did not.
   const double inf = std::numeric_limits<double>::infinity();
   summary.checks.push_back({"max relative eigen residual", grid.residual, kMaxResidual, grid.residual <= kMaxResidual});
-  summary.checks.push_back({"1 − minimum branch continuity (MAC)", 1.0 - continuity, 1.0 - options.continuity_threshold,
+  summary.checks.push_back({"1 − minimum branch continuity (MAC)", 1.0 - continuity, complement_as_given(options.continuity_threshold),
                             continuity >= options.continuity_threshold});
   summary.checks.push_back({"least-damped ζ at the lowest speed", zeta.front(), inf, true});
   summary.checks.push_back({"refinement evaluations (eigenvalues only)", static_cast<double>(evaluations), inf, true});

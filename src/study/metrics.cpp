@@ -211,6 +211,10 @@ DisplayUnit display_unit(const std::string& metric) {
   if (is_vehicle_speed(canonical(metric))) return {"km/h", 3.6};
   const char* si = metric_unit(metric);
   if (std::string_view(si) == "m") return {"mm", 1000.0};
+  // Reports write a unit as every report does (docs/input.md, "Names and units in outputs"):
+  // metric_unit's "m/s^2" is the API's ASCII spelling.
+  if (std::string_view(si) == "m/s^2") return {"m/s²", 1.0};
+  if (std::string_view(si) == "rad/s^2") return {"rad/s²", 1.0};
   return {si, 1.0};
 }
 

@@ -160,6 +160,39 @@ axis = "vertical"
   EXPECT_TRUE(s.name_places.count("ride.output[1].element"));
 }
 
+// The scene vocabulary is in underscores (docs/input.md, "Names and units in outputs"); the
+// hyphenated words of files written before 2026-11-27 read the same.
+TEST(RideScene, UnderscoredWordsAndTheirHyphenatedAliasesReadTheSame) {
+  const auto scene_with = [](const std::string& ore, const std::string& abscissa, const std::string& kind) {
+    std::string text = kRideScene;
+    text.replace(text.find("\"ore-b176\""), 10, "\"" + ore + "\"");
+    const std::string fra = "[source.cross_level]\nspectrum = \"fra\"\nclass = 4\n";
+    text.replace(text.find(fra), fra.size(),
+                 "[source.alignment]\nspectrum = \"table\"\nabscissa = \"" + abscissa +
+                     "\"\nabscissa_unit = \"cycle/m\"\ndensity_unit = \"m^2/(cycle/m)\"\n"
+                     "points = [[0.02, 1e-6], [0.5, 0.5e-8]]\n");
+    return load_scene(write_ride_scene(text + "[[ride.output]]\nkind = \"" + kind +
+                                       "\"\nelement = \"spring 1\"\naxis = \"vertical\"\n"));
+  };
+  const Scene now = scene_with("ore_b176", "spatial_frequency", "element_force");
+  const Scene before = scene_with("ore-b176", "spatial-frequency", "element-force");
+  for (const Scene* s : {&now, &before}) {
+    ASSERT_TRUE(s->irregularity && s->irregularity->vertical_level && s->irregularity->alignment);
+    ASSERT_EQ(s->ride->outputs.size(), 1u);
+    EXPECT_EQ(s->ride->outputs[0].kind, RideOutput::Kind::element_force);
+  }
+  EXPECT_EQ(now.irregularity->vertical_level->name(), before.irregularity->vertical_level->name());
+  EXPECT_EQ(now.irregularity->vertical_level->variance(), before.irregularity->vertical_level->variance());
+  EXPECT_EQ(now.irregularity->alignment->variance(), before.irregularity->alignment->variance());
+  // The words as written back: underscores.
+  EXPECT_STREQ(to_string(RideOutput::Kind::wheel_rail_force), "wheel_rail_force");
+  EXPECT_STREQ(to_string(TrackIrregularity::cross_level), "cross_level");
+  EXPECT_STREQ(to_string(SpectrumAbscissa::spatial_frequency), "spatial_frequency");
+  for (const char* old : {"vertical-level", "cross-level"}) EXPECT_TRUE(track_irregularity_from_string(old)) << old;
+  for (const char* old : {"element-deflection", "element-force", "wheel-rail-force"})
+    EXPECT_TRUE(ride_output_kind_from_string(old)) << old;
+}
+
 TEST(RideScene, TimeDomainRun) {
   const Scene s = load_scene(write_ride_scene(kRideScene + R"(
 [ride.realisation]
@@ -265,7 +298,7 @@ TEST(RideScene, TableErrors) {
   };
   const std::string units = "abscissa_unit = \"m\"\ndensity_unit = \"m^2/(cycle/m)\"\n";
   expect_table_error("abscissa = \"period\"\n" + units + "points = [[1, 1], [2, 1]]\n",
-                     {"alignment.abscissa", "wavenumber, spatial-frequency or wavelength"});
+                     {"alignment.abscissa", "wavenumber, spatial_frequency or wavelength"});
   expect_table_error("abscissa = \"wavenumber\"\n" + units + "points = [[1, 1], [2, 1]]\n",
                      {"alignment.abscissa_unit", "rad/m"});
   expect_table_error("abscissa = \"wavelength\"\nabscissa_unit = \"m\"\ndensity_unit = \"m^2/Hz\"\n"

@@ -34,6 +34,16 @@ TEST(TrackGeometryReader, ReadsColumnsInMillimetresAndMetres) {
   EXPECT_DOUBLE_EQ(g.length(), 0.75);
 }
 
+// The columns named as the scene names the components (vertical_level, cross_level) read as the
+// spellings before 2026-11-27 do ("vertical level", "cross-level", above).
+TEST(TrackGeometryReader, ColumnsNamedAsTheScenesComponents) {
+  const TrackGeometry g = load_track_geometry(write_temp(
+      "track_underscored.csv", "distance [m], vertical_level [mm], cross_level [m]\n0, 1.5, 0.001\n0.25, -2.0, 0.002\n"));
+  ASSERT_EQ(g.vertical_level.size(), 2);
+  EXPECT_DOUBLE_EQ(g.vertical_level(1), -2.0e-3);
+  EXPECT_DOUBLE_EQ(g.cross_level(1), 0.002);
+}
+
 TEST(TrackGeometryReader, ToleratesDistancesRoundedWithinAThousandthOfAStep) {
   // 1/3 m written to 4 decimals: off its place by up to 3e-5 m, 1e-4 of the step
   const TrackGeometry g = load_track_geometry(write_temp(

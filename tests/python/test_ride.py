@@ -39,10 +39,9 @@ def test_ride_scene_equals_the_command_line(coach):
         for i, want in enumerate(at["outputs"]):
             got = next(rows)
             assert got["output"] == want["name"] and got["unbounded"] == want["unbounded"]
-            rms_key = next(k for k in want if k.startswith("rms_"))
-            assert got["rms"] == pytest.approx(want[rms_key], rel=REL)
-            psd_key = next(k for k in want if k.startswith("psd_"))
-            np.testing.assert_allclose(coach.psd[s, i], want[psd_key], **SAME)
+            # The RMS and PSD under one key whatever the output's unit, the unit beside them.
+            assert got["rms"] == pytest.approx(want["rms"], rel=REL) and got["unit"] == want["unit"]
+            np.testing.assert_allclose(coach.psd[s, i], want["psd"], **SAME)
             for key in ("weighted_rms", "p95_estimate"):
                 json_key = next((k for k in want if k.startswith(key)), None)
                 assert (got[key] is None) == (json_key is None or want[json_key] is None)
@@ -81,6 +80,17 @@ def test_ride_rms_only(coach):
     assert "rms_only" in railmodal.ride.__doc__ and "Sperling" in railmodal.ride.__doc__
 
 
+def test_no_grid_error_estimate_when_every_output_is_unbounded():
+    # Khanin's car has neither dampers nor friction: the track drives undamped modes, so every
+    # output is unbounded at every speed and there is no RMS to estimate an error of. The report
+    # says "no grid error estimate" (JSON null); the binding gives None, not 0.0.
+    system = railmodal.assemble(railmodal.load_vehicle(data("vehicles", "khanin_car_upstroke.toml")), "vertical")
+    track = {"vertical_level": railmodal.TrackSpectrum.fra_class(4, "vertical_level")}
+    r = railmodal.ride(system, track, speeds_m_s=[20.0, 30.0])
+    assert r.records() and all(row["unbounded"] for row in r.records())
+    assert r.grid_error_estimate is None and not r.rms_only
+
+
 def test_ride_tables_for_pandas(coach):
     frame = pandas.DataFrame(coach.records())
     assert len(frame) == len(coach.speeds_m_s) * len(coach.outputs)
@@ -111,7 +121,7 @@ def test_ride_of_a_system_with_the_scenes_track_and_outputs(coach):
     spectra = {"vertical_level": None}
     for name in ("vertical_level", "alignment", "cross_level"):
         band = (2 * np.pi / 100, 2 * np.pi / 1)  # the scene's wavelengths 1 … 100 m
-        spectra[name] = railmodal.TrackSpectrum.ore_b176("low", name.replace("_", "-"), band)
+        spectra[name] = railmodal.TrackSpectrum.ore_b176("low", name, band)
     by_dict = railmodal.ride(system, spectra, outputs, speeds_m_s=[speed], rolling_radius_m=r0)
     np.testing.assert_array_equal(by_scene.psd, by_dict.psd)
     # About the axle plane instead (r0 = 0, no wheelsets here), the cross-level moves the lateral

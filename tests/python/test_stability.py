@@ -119,6 +119,29 @@ def test_nonlinear_hunting_returns_its_bifurcation_curve(nonlinear):
         assert 20.0 <= nonlinear.critical_speed_m_s <= linear * (1 + 1e-6)
     assert nonlinear.convergence in ("converged", "not_converged", "not_applicable")
     assert nonlinear.converged == (nonlinear.convergence == "converged")
+    # The flags the reports write (JSON ramp_too_fast, collapsing_at_end_speed,
+    # not_converged_reason) are the result's too: a reason exactly when not converged.
+    assert isinstance(nonlinear.ramp_too_fast, bool) and isinstance(nonlinear.collapsing_at_end_speed, bool)
+    assert (nonlinear.not_converged_reason is None) == (nonlinear.convergence != "not_converged")
+
+
+def test_a_ramp_too_fast_says_so_as_the_report_does(tmp_path):
+    # The bundled scene at ten times its ramp rate (5 m/s²): the ramp drags the cycle down before
+    # it settles, far above the held speed; the result's flags and reason are the JSON report's.
+    text = open(data("scenes", "wheelset_on_springs_nonlinear_hunting.toml"), encoding="utf-8").read()
+    text = text.replace('ramp_rate = "0.5 m/s^2"', 'ramp_rate = "5 m/s^2"')
+    text = text.replace('vehicle = "../vehicles/', 'vehicle = "%s/' % data("vehicles"))
+    assert '"5 m/s^2"' in text
+    scene_file = tmp_path / "fast_ramp.toml"
+    scene_file.write_text(text, encoding="utf-8")
+    scene = railmodal.load_scene(str(scene_file))
+    result = railmodal.hunting_scene(scene)
+    report = json.loads(railmodal.hunting_report(scene, format="json"))
+    assert result.ramp_too_fast and report["ramp_too_fast"]
+    assert result.collapsing_at_end_speed == report["collapsing_at_end_speed"]
+    assert result.convergence == "not_converged"
+    assert result.not_converged_reason == report["not_converged_reason"]
+    assert "the ramp is too fast" in result.not_converged_reason
 
 
 def test_nonlinear_hunting_errors():

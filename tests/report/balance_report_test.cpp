@@ -25,16 +25,20 @@ std::string written(const BalanceStudy& study, OutputFormat format) {
 TEST(BalanceReport, JsonCarriesEveryNumberExactlyWithUnitsAndPhases) {
   const BalanceStudy study = su_study(0.3);
   const auto j = nlohmann::json::parse(written(study, OutputFormat::json));
-  EXPECT_EQ(j.at("speed_m_per_s").get<double>(), study.gear.speed);
+  EXPECT_EQ(j.at("speed_m_s").get<double>(), study.gear.speed);
+  // Names as every command spells them (docs/input.md, "Names and units in outputs").
+  EXPECT_EQ(j.at("omega_rad_s").get<double>(), study.gear.omega);
+  EXPECT_TRUE(j.contains("speed_kmh"));
+  for (const char* before : {"speed_m_per_s", "speed_km_per_h", "omega_rad_per_s"}) EXPECT_FALSE(j.contains(before));
   // The state at 90° (the 7th of the 15° grid): exactly the solver's doubles, not rounded.
   const auto& state = j.at("gear").at("states_every_15_deg").at(6);
   EXPECT_EQ(state.at("crank_angle_deg").get<double>(), 90.0);
-  EXPECT_EQ(state.at("cylinders").at(0).at("Y_N").get<double>(), study.gear.states[90].cylinders[0].vertical);
-  EXPECT_EQ(state.at("nosing_N_m").get<double>(), study.gear.states[90].nosing);
+  EXPECT_EQ(state.at("cylinders").at(0).at("Y_n").get<double>(), study.gear.states[90].cylinders[0].vertical);
+  EXPECT_EQ(state.at("nosing_n_m").get<double>(), study.gear.states[90].nosing);
   // Harmonics with amplitude and phase: Σ A_k cos(kφ − ψ_k) at 90° gives Y back. Orders 0 … 6
   // leave the λ⁷ tail (λ = 0.149: 2e-6 of the amplitude) and round-off.
   double y = 0.0;
-  for (const auto& h : j.at("gear").at("harmonics").at("cylinders").at(0).at("Y_N")) {
+  for (const auto& h : j.at("gear").at("harmonics").at("cylinders").at(0).at("Y_n")) {
     const double k = h.at("order").get<double>();
     const double a = h.at("amplitude").get<double>(), psi = h.at("phase_deg").get<double>() * M_PI / 180;
     y += a * std::cos(k * M_PI / 2 - psi);
@@ -89,6 +93,23 @@ TEST(BalanceReport, ExplainsAnAlphaAboveTheAllowedOne) {
   EXPECT_FALSE(j.at("notes").empty());
   // Without --alpha there is nothing to explain.
   EXPECT_TRUE(nlohmann::json::parse(written(su_study(0.0), OutputFormat::json)).at("notes").empty());
+}
+
+// The reports people read spell the quantities as every command does (docs/input.md, "Names and
+// units in outputs"): α, ω, φ and kN·m, the speed as given; CSV keeps the words and takes N·m.
+TEST(BalanceReport, NamesAndUnitsAsEveryCommandSpellsThem) {
+  const BalanceStudy study = su_study(0.3);
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html}) {
+    const std::string text = written(study, f);
+    for (const char* now : {"max α", "α (89a)", "φ [deg]", "[kN·m]", " km/h (ω ", " rad/s, f1 "})
+      EXPECT_NE(text.find(now), std::string::npos) << to_string(f) << ": " << now;
+    for (const char* before : {"alpha (89a)", "max alpha", "phi [deg]", "kN m", "(omega "})
+      EXPECT_EQ(text.find(before), std::string::npos) << to_string(f) << ": " << before;
+    EXPECT_EQ(text.find(".0 km/h (ω"), std::string::npos) << to_string(f);  // a given speed as given
+  }
+  const std::string csv = written(study, OutputFormat::csv);
+  EXPECT_NE(csv.find(",nosing,N·m,"), std::string::npos);
+  EXPECT_EQ(csv.find(",N m,"), std::string::npos);
 }
 
 }  // namespace

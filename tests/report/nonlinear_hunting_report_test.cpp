@@ -109,7 +109,7 @@ TEST(NonlinearHuntingReport, WithoutEffectsTheLawIsSaidToBeLinear) {
 
 TEST(NonlinearHuntingReport, CsvHoldsEveryHalfCycleOfBothRamps) {
   const std::string csv = nonlinear_report_text(hand_built_converged_result(), hand_built_both_effects(), OutputFormat::csv);
-  EXPECT_EQ(csv.rfind("ramp,ramp_rate [m/s^2],half_cycle,speed [km/h],amplitude [mm]\n", 0), 0u) << csv;
+  EXPECT_EQ(csv.rfind("ramp,ramp_rate [m/s²],half_cycle,speed [km/h],amplitude [mm]\n", 0), 0u) << csv;
   EXPECT_TRUE(nonlinear_report_has(csv, "stated,0.5,1,270,10.5\n")) << csv;
   // every digit the double needs (shortest round-trip): 62 m/s × 3.6 is 223.20000000000002 km/h
   EXPECT_TRUE(nonlinear_report_has(csv, "halved,0.25,5,223.20000000000002,0.1\n")) << csv;

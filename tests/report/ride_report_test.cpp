@@ -225,25 +225,30 @@ TEST(RideReport, AnAllUnboundedRideHasNoGridErrorEstimate) {
   EXPECT_TRUE(has(written(hand_built(), OutputFormat::table), "grid error estimate 0.02 % of an RMS"));
 }
 
+// An output's RMS, PSD and variances are under the same keys whatever its unit, which is beside
+// them ("unit"); a quantity of one fixed unit carries it in its key (docs/input.md, "Names and
+// units in outputs").
 TEST(RideReport, JsonKeysCarryUnitsAndNullsForWhatIsNot) {
   const nlohmann::json j = nlohmann::json::parse(written(hand_built(), OutputFormat::json));
   ASSERT_EQ(j["speeds"].size(), 2u);
   const auto& first = j["speeds"][0];
   EXPECT_NEAR(first["speed_kmh"].get<double>(), 100.0, 1e-9);
-  EXPECT_NEAR(first["outputs"][0]["rms_m_s2"].get<double>(), 0.25 * 100 / 3.6 / 50, 1e-12);
+  EXPECT_NEAR(first["outputs"][0]["rms"].get<double>(), 0.25 * 100 / 3.6 / 50, 1e-12);
+  EXPECT_EQ(first["outputs"][0]["unit"], "m/s²");
   EXPECT_TRUE(first["outputs"][0].contains("p95_estimate_m_s2"));
   const auto& second = j["speeds"][1];
   EXPECT_TRUE(second["outputs"][1]["weighted_rms_m_s2"].is_null());  // a force has no comfort index
-  EXPECT_NEAR(second["outputs"][1]["rms_n"].get<double>(), 1234.4, 1e-9);
-  EXPECT_EQ(first["outputs"][0]["psd_m2_s4_per_hz"].size(), 5u);
+  EXPECT_NEAR(second["outputs"][1]["rms"].get<double>(), 1234.4, 1e-9);
+  EXPECT_EQ(second["outputs"][1]["unit"], "N");
+  EXPECT_EQ(first["outputs"][0]["psd"].size(), 5u);
   EXPECT_TRUE(first["outputs"][1]["unbounded"].get<bool>());
-  EXPECT_FALSE(first["outputs"][1].contains("rms_n"));
+  EXPECT_FALSE(first["outputs"][1].contains("rms"));
   EXPECT_EQ(first["inputs"][0]["name"], "ORE B176 low, vertical level");
-  EXPECT_EQ(j["outputs"][1]["kind"], "element-force");
+  EXPECT_EQ(j["outputs"][1]["kind"], "element_force");
   EXPECT_TRUE(j["time_domain"].is_null());
 }
 
-// The review's JSON items: modes numbered from 1 as the tables number them, variances with their
+// The review's JSON items: modes numbered from 1 as the tables number them, variances beside their
 // unit, the track's RMS per component, and a figure without a bound neither passed nor failed.
 TEST(RideReport, JsonModesFromOneVariancesWithUnitsAndUnboundedChecksNotPassed) {
   RideResult r = hand_built();
@@ -255,8 +260,9 @@ TEST(RideReport, JsonModesFromOneVariancesWithUnitsAndUnboundedChecksNotPassed) 
   const auto& modes = j["speeds"][0]["outputs"][0]["modes"];
   ASSERT_EQ(modes.size(), 2u);
   EXPECT_EQ(modes[0]["mode"].get<int>(), 1);  // ModalContribution::mode 0, "body bounce", mode 1 in the tables
-  EXPECT_NEAR(modes[0]["variance_m2_s4"].get<double>(), 0.8, 1e-15);
-  EXPECT_NEAR(j["speeds"][0]["outputs"][0]["cross_term_variance_m2_s4"].get<double>(), 0.05, 1e-15);
+  EXPECT_NEAR(modes[0]["variance"].get<double>(), 0.8, 1e-15);  // (m/s²)², the output's "unit" squared
+  EXPECT_NEAR(j["speeds"][0]["outputs"][0]["cross_term_variance"].get<double>(), 0.05, 1e-15);
+  EXPECT_EQ(j["speeds"][0]["outputs"][0]["unit"], "m/s²");
   EXPECT_TRUE(j["summary"]["checks"][0]["passed"].is_null());
   EXPECT_FALSE(j["summary"]["checks"][1]["passed"].get<bool>());
   EXPECT_EQ(j["track_rms"][0]["name"], "ORE B176 low, vertical level");
@@ -314,6 +320,8 @@ TEST(RideReport, TimeDomainRunAndItsChecks) {
   const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json, &s, &c));
   EXPECT_NEAR(j["time_domain"]["fft_checks"]["fraction_outside_band"].get<double>(), 0.052, 1e-15);
   EXPECT_EQ(j["time_domain"]["outputs"][0]["window_rms_m_s2"].size(), 2u);
+  EXPECT_TRUE(j["time_domain"]["outputs"][0].contains("rms"));
+  EXPECT_EQ(j["time_domain"]["outputs"][0]["unit"], "m/s²");
 }
 
 TEST(RideReport, RefusesAFormatItDoesNotWrite) {

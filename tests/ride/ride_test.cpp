@@ -656,7 +656,7 @@ TEST(Ride, BadOptionsAndOutputsThrowNamingThem) {
   EXPECT_NE(message(TrackIrregularitySpectra{}, {good}, ok).find("no irregularity"), std::string::npos);
   TrackIrregularitySpectra swapped;
   swapped.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::alignment, {0.06, 2.0});
-  EXPECT_NE(message(swapped, {good}, ok).find("vertical-level slot holds a alignment"), std::string::npos);
+  EXPECT_NE(message(swapped, {good}, ok).find("vertical_level slot holds a alignment"), std::string::npos);
 }
 
 // Alignment on wheelsets acts through the creep contact (tests/ride/ride_lateral_test.cpp checks

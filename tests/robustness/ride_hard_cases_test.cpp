@@ -78,7 +78,7 @@ TEST(RideHardCases, SpectrumOutsideTheGridIsRefused) {
     solve_ride(s, track, {floor_acc()}, options);
     ADD_FAILURE() << "a band wholly outside the grid was accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("at 360 km/h the vertical-level band"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("at 360 km/h the vertical_level band"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("wholly outside the grid 0.1 … 80 Hz"), std::string::npos) << e.what();
   }
 }

@@ -128,8 +128,8 @@ TEST(FftCheck, FrictionSceneForcedAtItsModeIsNotCheckedAndSaysWhy) {
   const std::string text = table.str();
   EXPECT_NE(text.find("within 5.0 %"), std::string::npos) << text;
   EXPECT_EQ(text.find("a run of at least"), std::string::npos) << text;
-  EXPECT_EQ(text.find("verdict: ok"), std::string::npos) << text;
-  EXPECT_EQ(text.find("  ok ("), std::string::npos) << text;  // no mode's row says ok either
+  EXPECT_EQ(text.find("verdict: passed"), std::string::npos) << text;
+  EXPECT_EQ(text.find("  passed ("), std::string::npos) << text;  // no mode's row says passed either
   // The verdict is the report's last line, below the half periods it also judges.
   const std::string last = text.substr(text.rfind('\n', text.size() - 2) + 1);
   EXPECT_EQ(last.rfind("verdict: NOT CHECKED: no mode's line could be checked (2 not applicable: ", 0), 0u) << last;
@@ -189,6 +189,8 @@ TEST(FftCheck, DropTestIsCheckedByItsHalfPeriods) {
   EXPECT_TRUE(r.half_period_check->passed);
   EXPECT_EQ(r.checked, 1);
   EXPECT_TRUE(r.passed);
+  const std::string verdict = fft_check_verdict(r);
+  EXPECT_EQ(verdict.rfind("passed: ", 0), 0u) << verdict;  // the half periods are a check made
 }
 
 // A linear release holds its line within the line's width: the verdict passes.

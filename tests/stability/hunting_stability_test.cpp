@@ -451,6 +451,12 @@ TEST(HuntingStability, SameResultOnAnyNumberOfThreads) {
     ASSERT_TRUE(r.critical);
     EXPECT_EQ(r.critical->speed, results[0].critical->speed);
     EXPECT_EQ(r.threshold_speed, results[0].threshold_speed);
+    // The summary the reports write is the same too: no thread count in the method, and the MAC
+    // check's limit 1 − 0.8 as the decimal 0.2 (the subtraction's double is 0.19999999999999996).
+    EXPECT_EQ(r.summary.method, results[0].summary.method);
+    EXPECT_EQ(r.summary.method.find("thread"), std::string::npos) << r.summary.method;
+    ASSERT_EQ(r.summary.checks[1].name, "1 − minimum branch continuity (MAC)");
+    EXPECT_EQ(r.summary.checks[1].limit, 0.2);
     ASSERT_EQ(r.conicity_curve.size(), 4u);
     for (size_t c = 0; c < 4; ++c) {
       EXPECT_EQ(r.conicity_curve[c].verdict, results[0].conicity_curve[c].verdict);

@@ -48,7 +48,7 @@ TEST(RideMetric, NamesUnitsAndTitles) {
 // What a table heads each RMS metric with: its output's unit, velocities in m/s (not km/h, the
 // unit of the critical speeds), displacements in mm.
 TEST(RideMetric, RmsHeadingsCarryTheOutputsUnit) {
-  EXPECT_EQ(study::heading("rms_acceleration:floor"), "largest RMS acceleration at floor [m/s^2]");
+  EXPECT_EQ(study::heading("rms_acceleration:floor"), "largest RMS acceleration at floor [m/s²]");
   EXPECT_EQ(study::heading("rms_force:spring force"), "largest RMS of spring force [N]");
   EXPECT_EQ(study::heading("rms_velocity:floor"), "largest RMS of floor [m/s]");
   EXPECT_EQ(study::heading("rms_displacement:spring deflection"), "largest RMS of spring deflection [mm]");

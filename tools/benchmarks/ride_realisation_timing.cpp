@@ -112,7 +112,7 @@ int track_csv(const std::string& path, double length, double step, std::uint64_t
       << "# ORE B176 low level, vertical level, alignment and cross-level, wavelengths 1 ... 100 m, seed " << seed
       << ",\n# as a stand-in for a recording car's file (no public measured record is at hand): one whole\n"
       << "# period of " << length << " m, read as measured (the run starts from rest and ends with the file).\n"
-      << "distance [m],vertical level [mm],alignment [mm],cross-level [mm]\n";
+      << "distance [m],vertical_level [mm],alignment [mm],cross_level [mm]\n";
   char row[128];
   for (Eigen::Index n = 0; n < g.vertical_level.size(); ++n) {
     std::snprintf(row, sizeof row, "%.2f,%.3f,%.3f,%.3f\n", static_cast<double>(n) * step, 1e3 * g.vertical_level[n],
