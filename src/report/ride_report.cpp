@@ -692,7 +692,10 @@ void write_point(JsonWriter& j, const Eigen::Vector3d& p) {
 void write_output(JsonWriter& j, const RideOutput& o) {
   j.begin_object().member("axis", to_string(o.axis));
   if (o.kind == RideOutput::Kind::point) {
-    j.member("body", o.body).member("kind", to_string(o.kind)).member("name", o.name);
+    j.member("body", o.body);
+    // An acceleration's frame: an accelerometer on the body (with g·φ) or the track's (inertial).
+    if (o.quantity == ResponseQuantity::acceleration) j.member("frame", to_string(o.frame));
+    j.member("kind", to_string(o.kind)).member("name", o.name);
     write_point(j, o.point);
     j.member("quantity", to_string(o.quantity));
   } else {
