@@ -81,7 +81,26 @@ struct RideOutput {
   std::string element;                              ///< element_*: element name; wheel_rail_force: wheelset body
   RideAxis axis = RideAxis::vertical;
   ResponseQuantity quantity = ResponseQuantity::acceleration;  ///< point only
+  /// The axes a point's acceleration is read along (docs/ride.md, "Lateral acceleration's frame").
+  enum class Frame {
+    /// An accelerometer fixed to the body (EN 12299, ISO 2631-1: transducers on the floor, along
+    /// the body's axes): the specific force, the acceleration plus the component of gravity along
+    /// the tilted axis, laterally ÿ + g·φ (φ the body's roll), longitudinally ẍ − g·θ (θ its
+    /// pitch, positive nose down: the vehicle frame's right-handed rotation about y), vertically z̈.
+    body,
+    /// The acceleration in the track's (inertial) frame, without gravity.
+    track,
+  };
+  /// Point accelerations only; a displacement or velocity differs only to second order and is
+  /// the same in both.
+  Frame frame = Frame::body;
 };
+const char* to_string(RideOutput::Frame frame);  ///< "body", "track"
+/// Inverse of to_string; std::nullopt for an unknown word.
+std::optional<RideOutput::Frame> ride_frame_from_string(const std::string& word);
+/// Whether an accelerometer's gravity term g·φ (lateral) or −g·θ (longitudinal) enters `output`:
+/// a point's lateral or longitudinal acceleration read in the body frame.
+bool reads_gravity(const RideOutput& output);
 const char* to_string(RideOutput::Kind kind);  ///< "point", "element_deflection", "element_force", "wheel_rail_force"
 /// Inverse of to_string; std::nullopt for an unknown word.
 /// Also reads the hyphenated words of files written before 2026-11-27 ("element-force", ...).

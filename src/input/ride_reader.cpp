@@ -86,6 +86,12 @@ RideOutput read_output(TableReader& t, size_t k, std::set<std::string>* names,
     const std::string quantity = t.optional_string("quantity").value_or("acceleration");
     if (const auto q = response_quantity_from_string(quantity)) out.quantity = *q;
     else t.fail("quantity", "must be displacement, velocity or acceleration, not '" + quantity + "'");
+    // body: as an accelerometer on the floor reads it (with gravity's component, g·φ), the
+    // EN 12299 measurement; track: inertial (docs/ride.md, "Lateral acceleration's frame").
+    const std::string frame = t.optional_string("frame").value_or("body");
+    if (const auto f = ride_frame_from_string(frame)) out.frame = *f;
+    else t.fail("frame", "must be body (an accelerometer fixed to the body, reading gravity's component g·φ) or "
+                         "track (inertial), not '" + frame + "'");
   } else {
     // A wheel–rail force names its wheelset's body; the element outputs an element.
     const char* key = out.kind == RideOutput::Kind::wheel_rail_force ? "wheelset" : "element";

@@ -343,10 +343,13 @@ void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vecto
     chart.periods.title = "Periods against " + p.label;
     chart.periods.x_label = axis_label(p, false);
     chart.periods.y_label = "period (s)";
-    for (const std::string& mode : modes) {
+    // A colour means one thing throughout the report: the variants of the amplitude charts take
+    // the first kReportBest + 1 (base first), the modes those after them, feasibility two greys.
+    for (size_t m = 0; m < modes.size(); ++m) {
       report::ChartSeries series;
-      series.label = mode;
+      series.label = modes[m];
       series.markers_only = true;
+      series.colour = static_cast<int>(kReportBest + 1 + m);
       chart.modes.push_back(series);
     }
     chart.objective.id = "sweep-objective-" + std::to_string(k + 1);
@@ -358,6 +361,7 @@ void write_sweep_charts(std::ostream& out, const Comparison& c, const std::vecto
     chart.objective.y_label = ranked_label(c.ranking, false);
     chart.feasible.label = "feasible", chart.infeasible.label = "infeasible";
     chart.feasible.markers_only = chart.infeasible.markers_only = true;
+    chart.feasible.colour = report::kDarkGrey, chart.infeasible.colour = report::kLightGrey;
   }
   points([&](const report::SweepPoint& v) {
     for_each_swept(v, swept, [&](size_t k, double x) {
@@ -534,13 +538,15 @@ void write_curve_charts(std::ostream& out, const std::vector<DesignCurves>& sets
     chart.log_y = true;
     chart.x_min = INFINITY;
     chart.x_max = -INFINITY;
-    for (const DesignCurves& s : sets) {
+    for (size_t v = 0; v < sets.size(); ++v) {
+      const DesignCurves& s = sets[v];
       int index = 0;
       const AmplitudeCurve* curve = find_curve(s.study, keys[k], &index);
       if (!curve) continue;
       report::ChartSeries series;
       series.label = s.label;
       series.dashed = s.base;
+      series.colour = static_cast<int>(v);  // the variant's own colour in every chart, a curve missing or not
       for (size_t i = 0; i < curve->speeds.size(); ++i) {
         series.x.push_back(curve->speeds[i] * kKmh);
         series.y.push_back(curve->unbounded[i] ? NAN : curve->amplitudes[i] * u.scale);
@@ -680,7 +686,8 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
   if (!swept.empty() && reference) {
     out << "<h2>Swept parameters</h2>\n<p class=note>Each evaluated variant is a point: the periods of the "
            "lowest modes and the value ranked first against each parameter the study varies (points at one value "
-           "differ in the other parameters).</p>\n";
+           "differ in the other parameters). Colours: each mode its own, feasible dark grey, infeasible light grey; "
+           "the variants of the amplitude charts below take colours of their own.</p>\n";
     write_sweep_charts(out, c, swept, *reference, points);
   }
   const std::vector<DesignCurves>& sets = curves.designs;

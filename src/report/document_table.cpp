@@ -2,12 +2,24 @@
 #include "report/document_table.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "railmodal/version.hpp"
 #include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 
 namespace railmodal::report {
+namespace {
+
+// A number and its " %" stay on one line: a narrow numeric column would otherwise wrap the sign
+// under its number ("12.34" / "%", the audit of 2026-11-27).
+std::string unbroken_percent(std::string cell) {
+  for (size_t at = cell.find(" %"); at != std::string::npos; at = cell.find(" %", at))
+    cell.replace(at, 1, "&nbsp;");
+  return cell;
+}
+
+}  // namespace
 
 void write_markdown_table(std::ostream& out, const Table& t) {
   out << "|";
@@ -29,7 +41,9 @@ void write_html_table(std::ostream& out, const Table& t) {
   out << "</tr>\n";
   for (const auto& row : t.rows) {
     out << "<tr>";
-    for (size_t c = 0; c < row.size(); ++c) out << (t.numeric[c] ? "<td class=n>" : "<td>") << html_escape(row[c]) << "</td>";
+    for (size_t c = 0; c < row.size(); ++c)
+      out << (t.numeric[c] ? "<td class=n>" + unbroken_percent(html_escape(row[c])) : "<td>" + html_escape(row[c]))
+          << "</td>";
     out << "</tr>\n";
   }
   out << "</table>\n";

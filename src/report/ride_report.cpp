@@ -396,6 +396,30 @@ report::Chart index_chart(const RideResult& r, RideAxis axis, const std::string&
   return c;
 }
 
+// The RMS against speed of a group's outputs, for those without comfort indices (forces,
+// deflections, displacements and velocities), which the index charts do not show: every
+// requested output then has a chart against speed (the audit of 2026-11-27).
+report::Chart rms_chart(const RideResult& r, const Group& g, int id) {
+  report::Chart c;
+  c.id = "rms-" + std::to_string(id);
+  c.title = std::string("RMS against speed, ") + to_string(g.axis) + " " + quantity_word(g.unit);
+  c.x_label = "speed (km/h)";
+  c.y_label = "RMS (" + g.unit + ")";
+  for (size_t i = 0; i < r.outputs.size(); ++i) {
+    if (unit_of(r.outputs[i]) != g.unit || r.outputs[i].axis != g.axis) continue;
+    report::ChartSeries s;
+    s.label = r.outputs[i].name;
+    bool any = false;
+    for (const RideAtSpeed& at : r.speeds) {
+      s.x.push_back(at.speed * kKmh);
+      s.y.push_back(at.outputs[i].unbounded ? std::nan("") : at.outputs[i].rms);
+      any = any || !at.outputs[i].unbounded;
+    }
+    if (any) c.series.push_back(s);
+  }
+  return c;
+}
+
 std::optional<double> weighted_of(const RideOutputAtSpeed& o) { return o.weighted_rms; }
 std::optional<double> wz_of(const RideOutputAtSpeed& o) { return o.sperling_wz; }
 
@@ -462,7 +486,8 @@ report::Chart history_chart(const RideSimulationResult& s, size_t i, double wind
     windows.x.push_back(t0 + (w + 1) * window), windows.y.push_back(h.window_rms[w]);
   }
   c.series.push_back(windows);
-  if (h.p95) c.lines.push_back({"P95", *h.p95, false, "the 95th percentile of the window RMS values"});
+  // Over the trace: under it, the dense history hid the level (the audit of 2026-11-27).
+  if (h.p95) c.lines.push_back({"P95", *h.p95, false, "the 95th percentile of the window RMS values", true});
   return c;
 }
 
@@ -543,6 +568,12 @@ void write_html(std::ostream& out, const Page& p) {
       if (!wz.series.empty()) out << report::svg_chart(wz);
     }
     if (!comfort_points(r).empty()) out << report::svg_chart(nmv_chart(r));
+    const std::vector<Group> groups = groups_of(r);
+    for (size_t g = 0; g < groups.size(); ++g) {
+      if (groups[g].unit == "m/s²") continue;  // point accelerations: the index charts above
+      const report::Chart c = rms_chart(r, groups[g], static_cast<int>(g));
+      if (!c.series.empty()) out << report::svg_chart(c);
+    }
   }
   if (!r.speeds.empty()) {
     // The spectra at the highest speed: the one a ride is signed off at.
@@ -672,7 +703,10 @@ void write_point(JsonWriter& j, const Eigen::Vector3d& p) {
 void write_output(JsonWriter& j, const RideOutput& o) {
   j.begin_object().member("axis", to_string(o.axis));
   if (o.kind == RideOutput::Kind::point) {
-    j.member("body", o.body).member("kind", to_string(o.kind)).member("name", o.name);
+    j.member("body", o.body);
+    // An acceleration's frame: an accelerometer on the body (with g·φ) or the track's (inertial).
+    if (o.quantity == ResponseQuantity::acceleration) j.member("frame", to_string(o.frame));
+    j.member("kind", to_string(o.kind)).member("name", o.name);
     write_point(j, o.point);
     j.member("quantity", to_string(o.quantity));
   } else {

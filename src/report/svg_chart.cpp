@@ -16,7 +16,12 @@ namespace railmodal::report {
 
 namespace {
 
-const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2"};
+// The first kAutomaticColours go round for series without a colour of their own; the rest only
+// when a report chooses them (ChartSeries::colour), so that a colour can mean one thing across a
+// report's charts: olive and grey, then a dark and a light grey.
+const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf",
+                                "#8c564b", "#e377c2", "#bcbd22", "#7f7f7f", "#333333", "#aaaaaa"};
+constexpr size_t kAutomaticColours = 8;
 
 // Within this fraction of an unbounded x the response of an undamped mode is at least
 // 1/(1 − 0.95²) ≈ 10 times its quasi-static value: such points only measure how close the
@@ -28,7 +33,7 @@ constexpr double kLegendRow = 18;  // height of a legend row
 const char* colour_of(const Chart& chart, size_t k) {
   constexpr size_t n = sizeof(kColours) / sizeof(kColours[0]);
   const int chosen = chart.series[k].colour;
-  return kColours[(chosen >= 0 ? static_cast<size_t>(chosen) : k) % n];
+  return chosen >= 0 ? kColours[static_cast<size_t>(chosen) % n] : kColours[k % kAutomaticColours];
 }
 
 // A sequential scale for ChartSeries::shade, from dark blue through teal and green to yellow
@@ -142,7 +147,9 @@ std::vector<LegendEntry> legend_entries(const Chart& chart) {
     entries.push_back(
         {LegendEntry::Swatch::unbounded, "#444", "unbounded: an undamped resonance, the curve leaves the plot"});
   for (const auto& l : chart.lines)
-    if (!l.key.empty()) entries.push_back({LegendEntry::Swatch::reference, "#888", l.label + "  " + l.key});
+    if (!l.key.empty())
+      entries.push_back({l.over_data ? LegendEntry::Swatch::dashed : LegendEntry::Swatch::reference,
+                         l.over_data ? "#111" : "#888", l.label + "  " + l.key});
   if (!chart.shade_key.empty()) entries.push_back({LegendEntry::Swatch::shade, "#444", chart.shade_key});
   return entries;
 }
@@ -229,15 +236,18 @@ void write_axes(std::ostream& s, const Chart& chart, const Plot& p) {
     << ") rotate(-90)\" text-anchor=\"middle\">" << html_escape(chart.y_label) << "</text>\n";
 }
 
-void write_reference_lines(std::ostream& s, const Chart& chart, const Plot& p) {
+// The lines under the series (over_data false), or those over them (true).
+void write_reference_lines(std::ostream& s, const Chart& chart, const Plot& p, bool over_data) {
   for (const auto& l : chart.lines) {
+    if (l.over_data != over_data) continue;
     if (l.vertical)
       s << "<line x1=\"" << p.X(l.value) << "\" y1=\"" << p.top << "\" x2=\"" << p.X(l.value) << "\" y2=\""
         << p.top + p.height;
     else
       s << "<line x1=\"" << p.left << "\" y1=\"" << p.Y(l.value) << "\" x2=\"" << p.left + p.width << "\" y2=\""
         << p.Y(l.value);
-    s << "\" stroke=\"#888\" stroke-dasharray=\"2,3\"/>\n";
+    s << (over_data ? "\" stroke=\"#111\" stroke-width=\"2\" stroke-dasharray=\"6,4\"/>\n"
+                    : "\" stroke=\"#888\" stroke-dasharray=\"2,3\"/>\n");
   }
 }
 
@@ -375,9 +385,22 @@ void write_unbounded_marks(std::ostream& s, const Chart& chart, const Plot& p) {
   for (size_t k = 0, first = 0; k < marks.size(); ++k)
     if (k + 1 == marks.size() || marks[k + 1] - marks[first] > width)
       wanted.push_back((marks[first] + marks[k]) / 2 - width / 2), first = k + 1;
-  if (wanted.empty() || (width + 3) * static_cast<double>(wanted.size()) > p.width + 60) return;
+  // Words whose places would leave less than a word's gap between them read as one
+  // ("unboundedunbounded", the audit of 2026-11-27): one word, centred on both, says it once.
+  constexpr double kWordGap = 12;
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (size_t k = 0; k + 1 < wanted.size(); ++k)
+      if (wanted[k + 1] - wanted[k] < width + kWordGap) {
+        wanted[k] = (wanted[k] + wanted[k + 1]) / 2;
+        wanted.erase(wanted.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+        merged = true;
+        break;
+      }
+  }
+  if (wanted.empty() || (width + kWordGap) * static_cast<double>(wanted.size()) > p.width + 60) return;
   const std::vector<double> at =
-      spread(wanted, std::vector<double>(wanted.size(), width), p.left - 30, chart.width - 4.0, 3);
+      spread(wanted, std::vector<double>(wanted.size(), width), p.left - 30, chart.width - 4.0, kWordGap);
   for (double x : at)
     s << "<text class=\"mark-label\" x=\"" << x << "\" y=\"" << p.top - 14 << "\" fill=\"#555\" font-size=\"10\">"
       << "unbounded</text>\n";
@@ -488,8 +511,9 @@ std::string svg_chart(const Chart& chart) {
   write_axes(s, chart, p);
   s << "<clipPath id=\"plot-" << chart.id << "\"><rect x=\"" << p.left << "\" y=\"" << p.top << "\" width=\""
     << p.width << "\" height=\"" << p.height << "\"/></clipPath>\n<g clip-path=\"url(#plot-" << chart.id << ")\">\n";
-  write_reference_lines(s, chart, p);
+  write_reference_lines(s, chart, p, false);
   for (size_t k = 0; k < chart.series.size(); ++k) write_series(s, chart, k, p);
+  write_reference_lines(s, chart, p, true);
   s << "</g>\n";
   write_unbounded_marks(s, chart, p);
   write_line_labels(s, chart, p);

@@ -14,7 +14,9 @@ struct ChartSeries {
   std::vector<double> x, y;  ///< NaN in y breaks the line
   bool dashed = false;
   bool markers_only = false;  ///< draw circles at the points instead of a line
-  int colour = -1;  ///< index into the palette; −1: the series' own position (a source's harmonics share one)
+  /// Index into the palette (12 colours: kChartColours); −1: the series' own position among the
+  /// first 8 (a source's harmonics share one).
+  int colour = -1;
   /// x where the series grows without limit (an undamped resonance): marked by a triangle at the
   /// top of the plot, and the automatic y range leaves out the points within 5 % of it.
   std::vector<double> unbounded_x;
@@ -24,11 +26,18 @@ struct ChartSeries {
   std::vector<double> shade;
 };
 
+/// The palette's size, and its last two entries: a dark and a light grey, for a distinction
+/// that is not one of a report's series (feasible or not).
+constexpr int kChartColours = 12, kDarkGrey = 10, kLightGrey = 11;
+
 struct ReferenceLine {
   std::string label;  ///< short, drawn at the line (right of the plot, or above it for a vertical line)
   double value = 0.0;
   bool vertical = false;  ///< x = value; otherwise y = value
   std::string key;        ///< what the label stands for, listed in the legend ("label  key"); "": not listed
+  /// Drawn over the series, solid and dark, instead of dotted grey under them: a level that a
+  /// dense trace would hide (a P95 over an acceleration history).
+  bool over_data = false;
 };
 
 struct Chart {

@@ -594,12 +594,7 @@ RideResult ride::solve_ride(const LinearSystem& system, const TrackIrregularityS
                          "measured 5-s windows; that ν takes T long against the response's correlation time, so for a "
                          "narrow-band response the estimate reads high (+5.9 % for a 1 Hz mode at ζ = 0.05, +0.9 % at "
                          "ζ = 0.2; docs/ride.md)");
-  for (const RideOutput& o : outputs)
-    if (o.kind == RideOutput::Kind::point && o.quantity == ResponseQuantity::acceleration && o.axis != RideAxis::vertical) {
-      result.notes.push_back("lateral and longitudinal accelerations are inertial, in the track's frame: an "
-                             "accelerometer fixed to a rolling body also reads g·φ (φ its roll)");
-      break;
-    }
+  for (const std::string& note : ride::frame_notes(outputs)) result.notes.push_back(note);
   return result;
 }
 

@@ -46,6 +46,19 @@ std::optional<RideOutput::Kind> ride_output_kind_from_string(const std::string& 
   return std::nullopt;
 }
 
+const char* to_string(RideOutput::Frame frame) { return frame == RideOutput::Frame::body ? "body" : "track"; }
+
+std::optional<RideOutput::Frame> ride_frame_from_string(const std::string& word) {
+  for (RideOutput::Frame f : {RideOutput::Frame::body, RideOutput::Frame::track})
+    if (word == to_string(f)) return f;
+  return std::nullopt;
+}
+
+bool reads_gravity(const RideOutput& output) {
+  return output.kind == RideOutput::Kind::point && output.quantity == ResponseQuantity::acceleration &&
+         output.axis != RideAxis::vertical && output.frame == RideOutput::Frame::body;
+}
+
 bool RideOptions::is_valid(std::string* why) const {
   if (speeds.empty()) return invalid(why, "speeds: at least one speed is needed");
   for (double v : speeds)

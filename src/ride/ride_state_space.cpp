@@ -6,6 +6,7 @@
 #include "model/analysis_limits.hpp"
 #include "model/point_motion.hpp"
 #include "railmodal/errors.hpp"
+#include "ride/ride_transfer.hpp"
 
 namespace railmodal::ride {
 namespace {
@@ -108,7 +109,11 @@ std::vector<OutputRow> output_rows(const LinearSystem& system, const RideStateSp
   for (const RideOutput& output : outputs) {
     if (output.kind == RideOutput::Kind::point) {
       const Eigen::MatrixXd map = model::point_displacement_map(system, body_index(system, output), output.point);
-      rows.push_back(motion_row(system, model, map.row(static_cast<int>(output.axis)), output.quantity));
+      OutputRow row = motion_row(system, model, map.row(static_cast<int>(output.axis)), output.quantity);
+      // An accelerometer on the body reads g·φ (−g·θ) besides r·q̈: a row on q (ride_transfer.hpp).
+      const Eigen::RowVectorXd gravity = gravity_row(system, output);
+      if (gravity.size()) row.Ls.head(model.n) += gravity;
+      rows.push_back(row);
     } else if (output.kind == RideOutput::Kind::element_deflection && output.axis == RideAxis::vertical) {
       const int e = element_index(system, output);
       OutputRow row = motion_row(system, model, system.element_vertical_map.row(e), ResponseQuantity::displacement);

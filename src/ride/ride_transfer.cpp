@@ -262,6 +262,7 @@ OutputMap output_map(const LinearSystem& system, const RideOutput& o, const std:
       m.order = o.quantity == ResponseQuantity::displacement ? 0 : o.quantity == ResponseQuantity::velocity ? 1 : 2;
       m.a0 = model::point_displacement_map(system, body, o.point).row(axis);
       m.a1 = Eigen::RowVectorXd::Zero(system.size());
+      m.gravity = gravity_row(system, o);
       return m;
     }
     case RideOutput::Kind::element_deflection:
@@ -367,12 +368,51 @@ Eigen::RowVectorXcd OutputMap::row(double omega) const {
   Eigen::RowVectorXcd r = a0.cast<Complex>() + Complex(0.0, omega) * a1.cast<Complex>();
   for (const SeriesDamperRow& s : series)
     r -= maxwell_stiffness(s.stiffness, s.damping, omega) * s.stretch.cast<Complex>();
-  return power_of_i_omega(order, omega) * r;
+  r *= power_of_i_omega(order, omega);
+  if (gravity.size()) r += gravity.cast<Complex>();
+  return r;
+}
+
+// The specific force f = a − g_vec (g_vec = (0, 0, −g)) along a body axis e turned by the small
+// rotation θ: f·(e + θ × e) = a·e + g·e_z·(θ × e) + O(θ²) = a·e + g·θ·(e × e_z); e_y × e_z = e_x
+// gives +g·θx = +g·φ, e_x × e_z = −e_y gives −g·θy (EN 12299:2009 §3 and ISO 2631-1:1997 §4:
+// accelerations measured by transducers on the floor along the vehicle body's axes; docs/ride.md,
+// "Lateral acceleration's frame").
+Eigen::RowVectorXd gravity_row(const LinearSystem& system, const RideOutput& output) {
+  if (!reads_gravity(output)) return {};
+  const int body = body_index(system, output.body);
+  const Motion tilt = output.axis == RideAxis::lateral ? Motion::roll : Motion::pitch;
+  const double g = output.axis == RideAxis::lateral ? system.vehicle.gravity : -system.vehicle.gravity;
+  Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(system.size());
+  bool any = false;
+  for (int d = 0; d < system.size(); ++d)
+    if (system.dofs[d].body == body && system.dofs[d].motion == tilt) {
+      row(d) = g;
+      any = true;
+    }
+  if (!any) return {};
+  return row;
 }
 
 std::complex<double> OutputMap::track(std::size_t term, const Eigen::Vector3d& u, double omega) const {
   const Complex s(0.0, omega);
   return power_of_i_omega(order, omega) * (t0[term].dot(u) + s * t1[term].dot(u) + s * s * t2[term].dot(u));
+}
+
+std::vector<std::string> frame_notes(const std::vector<RideOutput>& outputs) {
+  bool body = false, track = false;
+  for (const RideOutput& o : outputs)
+    if (o.kind == RideOutput::Kind::point && o.quantity == ResponseQuantity::acceleration && o.axis != RideAxis::vertical)
+      (o.frame == RideOutput::Frame::body ? body : track) = true;
+  std::vector<std::string> notes;
+  if (body)
+    notes.push_back("lateral and longitudinal accelerations with frame = body are what an accelerometer fixed to the "
+                    "body reads (EN 12299, ISO 2631-1): the specific force along the body's tilted axes, ÿ + g·φ and "
+                    "ẍ − g·θ (φ the body's roll, θ its pitch, nose down)");
+  if (track)
+    notes.push_back("lateral and longitudinal accelerations with frame = track are inertial, in the track's frame: an "
+                    "accelerometer fixed to a rolling body also reads g·φ (φ its roll)");
+  return notes;
 }
 
 std::vector<Component> track_components(const LinearSystem& system, const TrackIrregularitySpectra& track,
@@ -509,6 +549,8 @@ void receptances(const LinearSystem& system, const std::vector<Component>& compo
       }
       const Complex power = power_of_i_omega(map.order, omega);
       for (int j = 0; j < n; ++j) A(o, j) *= power;
+      if (map.gravity.size())
+        for (int j = 0; j < n; ++j) A(o, j) += map.gravity(j);
       for (size_t t = 0; t < maps[o].inputs.size(); ++t)
         for (int c = 0; c < C; ++c) {
           const int i = maps[o].inputs[t];

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <complex>
+#include <string>
 #include <vector>
 
 #include "railmodal/ride.hpp"
@@ -33,11 +34,13 @@ std::vector<Component> track_components(const LinearSystem& system, const TrackI
                                         double contact_half_spacing, double rolling_radius);
 
 /// One output as a linear map of the DOF response X and the track displacements u_i:
-///   y(ω) = (iω)^order · [a(ω)·X + Σ_terms t(ω)·u_input],
-///   a(ω) = a0 + iω·a1 − Σ_series k_s(ω)·stretch,  t(ω) = t0 + iω·t1 + (iω)²·t2.
+///   y(ω) = (iω)^order · [a(ω)·X + Σ_terms t(ω)·u_input] + g·X,
+///   a(ω) = a0 + iω·a1 − Σ_series k_s(ω)·stretch,  t(ω) = t0 + iω·t1 + (iω)²·t2,
+/// g the accelerometer's gravity row (gravity_row; empty, no term, in the track frame).
 struct OutputMap {
   int order = 0;  ///< 0 displacement (or force), 1 velocity, 2 acceleration
   Eigen::RowVectorXd a0, a1;
+  Eigen::RowVectorXd gravity;  ///< empty, or per DOF: g·φ's or −g·θ's coefficient
   std::vector<SeriesDamperRow> series;  ///< Maxwell elements whose force the output carries
   std::vector<int> inputs;              ///< track inputs with a direct term
   std::vector<Eigen::Vector3d> t0, t1, t2;
@@ -56,6 +59,19 @@ struct OutputMap {
 std::vector<OutputMap> output_maps(const LinearSystem& system, const std::vector<RideOutput>& outputs,
                                    const std::vector<double>& friction_damping, const CreepContact* contact = nullptr,
                                    double speed = 0.0);
+
+/// The gravity term an accelerometer fixed to the output's body reads along its tilted axis,
+/// per DOF: laterally +g on the body's roll (ÿ + g·φ), longitudinally −g on its pitch (ẍ − g·θ;
+/// pitch right-handed about y, nose down), g = Vehicle::gravity. Empty where it does not enter
+/// (reads_gravity false, or no roll or pitch DOF of that body). A bending mode's local slope is
+/// left out (it tilts a longitudinal axis only). Both domains use it: the frequency domain adds
+/// g·H_φ to the output's H, the time domain g·φ(t) to its history.
+Eigen::RowVectorXd gravity_row(const LinearSystem& system, const RideOutput& output);
+
+/// What a reader must know of the frame of the outputs' lateral and longitudinal point
+/// accelerations: one note for those read by an accelerometer on the body (with the gravity
+/// component), one for those in the track's frame; none without such outputs.
+std::vector<std::string> frame_notes(const std::vector<RideOutput>& outputs);
 
 /// The map of element k's vertical stretch rate (upper relative to lower, track subtracted), m/s.
 OutputMap stretch_rate_map(const LinearSystem& system, int element);

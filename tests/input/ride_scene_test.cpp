@@ -193,6 +193,30 @@ TEST(RideScene, UnderscoredWordsAndTheirHyphenatedAliasesReadTheSame) {
     EXPECT_TRUE(ride_output_kind_from_string(old)) << old;
 }
 
+// A point acceleration's frame: body (an accelerometer on the floor, with g·φ) unless the
+// output says track; any other word is refused naming both.
+TEST(RideScene, OutputFrame) {
+  const Scene s = load_scene(write_ride_scene(kRideScene + R"(
+[[ride.output]]
+body = "body"
+point = ["2 m", "0 m", "1.2 m"]
+axis = "lateral"
+[[ride.output]]
+name = "inertial"
+body = "body"
+point = ["2 m", "0 m", "1.2 m"]
+axis = "lateral"
+frame = "track"
+)"));
+  ASSERT_EQ(s.ride->outputs.size(), 2u);
+  EXPECT_EQ(s.ride->outputs[0].frame, RideOutput::Frame::body);
+  EXPECT_EQ(s.ride->outputs[1].frame, RideOutput::Frame::track);
+  expect_ride_error("points_per_decade = 50",
+                    "points_per_decade = 50\n[[ride.output]]\nbody = \"body\"\npoint = [\"0 m\", \"0 m\", \"0 m\"]\n"
+                    "frame = \"inertial\"",
+                    {"ride.output[0].frame", "body", "track", "'inertial'"});
+}
+
 TEST(RideScene, TimeDomainRun) {
   const Scene s = load_scene(write_ride_scene(kRideScene + R"(
 [ride.realisation]
