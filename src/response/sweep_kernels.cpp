@@ -1,5 +1,6 @@
 #include "response/sweep_kernels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -158,6 +159,25 @@ RAILMODAL_INLINE_LOOP void phases(int n, const double* __restrict arg_x, const d
   }
 }
 
+// Points a test of the scans below: few enough that a block holding the point sought is not
+// long to walk again one point at a time. A whole block's loop has a constant count, so it is
+// vectorised without a remainder.
+constexpr std::size_t kScanBlock = 32;
+
+// Whether a point of [i, i + count) may be a local maximum (a[j] ≥ a[j − 1] and a[j] > a[j + 1]),
+// and whether a point of a[0, count) is above `floor`: the tests of every point or'd, no branch.
+RAILMODAL_INLINE_LOOP bool any_peak_test(const double* __restrict a, std::size_t i, std::size_t count) {
+  long any = 0;
+  for (std::size_t j = i; j < i + count; ++j) any |= static_cast<long>((a[j] >= a[j - 1]) & (a[j] > a[j + 1]));
+  return any != 0;
+}
+
+RAILMODAL_INLINE_LOOP bool any_greater(const double* __restrict a, std::size_t count, double floor) {
+  long any = 0;
+  for (std::size_t j = 0; j < count; ++j) any |= static_cast<long>(a[j] > floor);
+  return any != 0;
+}
+
 }  // namespace
 
 double fast_atan2(double y, double x) { return atan2_kernel(y, x); }
@@ -203,6 +223,21 @@ RAILMODAL_VECTOR_CLONES
 void phases_deg(const double* arg_x, const double* arg_input, const double* unbounded, double offset_deg, int count,
                 double* out) {
   phases(count, arg_x, arg_input, unbounded, offset_deg, out);
+}
+
+RAILMODAL_VECTOR_CLONES
+std::size_t skip_to_local_maximum(const double* a, std::size_t i, std::size_t n) {
+  for (; i + kScanBlock < n; i += kScanBlock)  // whole blocks: [i, i + kScanBlock) all below n − 1
+    if (any_peak_test(a, i, kScanBlock)) return i;
+  return i;  // the rest, fewer than a block: the caller walks it
+}
+
+RAILMODAL_VECTOR_CLONES
+bool any_above(const double* a, std::size_t n, double floor) {
+  std::size_t i = 0;
+  for (; i + kScanBlock <= n; i += kScanBlock)
+    if (any_greater(a + i, kScanBlock, floor)) return true;
+  return any_greater(a + i, n - i, floor);
 }
 
 }  // namespace railmodal::response
