@@ -53,19 +53,9 @@ inline LargestResponse largest_response(const CriticalSpeedStudy& study, size_t 
   const std::vector<double>& speeds = curve.speeds.values();
   const std::vector<double>& a = curve.amplitudes;
   LargestResponse p;
-  // The running largest, strictly greater taking over, point by point only in the blocks that
-  // hold a point above it (a vectorised test): a block without one would change nothing.
-  const size_t n = speeds.size();
-  size_t at = n;
-  double largest = p.amplitude;
-  constexpr size_t kBlock = 32;
-  for (size_t i = 0; i < n; i += kBlock) {
-    const size_t end = std::min(i + kBlock, n);
-    if (!any_above(a.data() + i, end - i, largest)) continue;
-    for (size_t j = i; j < end; ++j)
-      if (a[j] > largest) largest = a[j], at = j;
-  }
-  if (at < n) p.amplitude = largest, p.speed = speeds[at];
+  // One pass's running largest, strictly greater taking over (response::largest_above).
+  const LargestPoint largest = largest_above(a.data(), speeds.size(), p.amplitude);
+  if (largest.at < speeds.size()) p.amplitude = largest.value, p.speed = speeds[largest.at];
   p.unbounded = std::find(curve.unbounded.begin(), curve.unbounded.end(), true) != curve.unbounded.end();
   for (const auto& refined : study.peaks)
     if (refined.curve == static_cast<int>(k) && refined.peak.amplitude > p.amplitude)

@@ -82,7 +82,13 @@ void phases_deg(const double* arg_x, const double* arg_input, const double* unbo
 /// branch, so the caller's own walk from i' (next_local_maximum) is short. 1 ≤ i.
 std::size_t skip_to_local_maximum(const double* a, std::size_t i, std::size_t n);
 
-/// Whether some a[j] > floor, j in [0, n): one branch-free pass.
-bool any_above(const double* a, std::size_t n, double floor);
+/// The largest a[j] above `floor`, j in [0, n), and its first place: what one pass keeping a
+/// running largest (from `floor`, taking a[j] only when a[j] > it) ends with, at = the place it
+/// took last; {floor, n} when no a[j] > floor. Vectorised: running largests of every 32nd point.
+struct LargestPoint {
+  double value;
+  std::size_t at;
+};
+LargestPoint largest_above(const double* a, std::size_t n, double floor);
 
 }  // namespace railmodal::response
