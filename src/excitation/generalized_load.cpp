@@ -36,20 +36,29 @@ HarmonicLoad ExcitationSource::load(const LinearSystem& system, double speed, in
 
 namespace {
 
-// Q += column d of `per_unit` × u, entry by entry as `Q += per_unit.col(d) * u` sums them (the
-// same products and sums: the same bits). A track element's column is nonzero only at the DOFs
+// QK += column d of `stiffness` × u and QC += column d of `damping` × u, entry by entry as
+// `QK += stiffness.col(d) * u` (and QC's) sums them: the same products and sums, the same bits
+// (QK's entries take only stiffness terms and QC's only damping terms, so one pass over the
+// rows does both in the order two would). A track element's column is nonzero only at the DOFs
 // its spring moves; a zero entry is skipped where u is finite, since its product is ±0 and
-// adding ±0 leaves every entry of Q as it was (Q starts at +0, and a sum is −0 only when both
-// terms are, so no entry is ever −0).
-void add_column(const Eigen::MatrixXd& per_unit, int d, std::complex<double> u, Eigen::VectorXcd* Q) {
-  const double* column = per_unit.col(d).data();
-  std::complex<double>* q = Q->data();
-  const Eigen::Index n = Q->size();
+// adding ±0 leaves every entry as it was (Q starts at +0, and a sum is −0 only when both terms
+// are, so no entry is ever −0). One call a wheel and direction: u's finiteness is tested once.
+void add_columns(const TrackInput& t, int d, std::complex<double> u, Eigen::VectorXcd* QK, Eigen::VectorXcd* QC) {
+  const double* stiffness = t.load_per_displacement.col(d).data();
+  const double* damping = t.load_per_velocity.col(d).data();
+  std::complex<double>* qk = QK->data();
+  std::complex<double>* qc = QC->data();
+  const Eigen::Index n = QK->size();
   if (std::isfinite(u.real()) && std::isfinite(u.imag())) {
-    for (Eigen::Index r = 0; r < n; ++r)
-      if (column[r] != 0.0) q[r] += column[r] * u;
+    for (Eigen::Index r = 0; r < n; ++r) {
+      if (stiffness[r] != 0.0) qk[r] += stiffness[r] * u;
+      if (damping[r] != 0.0) qc[r] += damping[r] * u;
+    }
   } else {
-    for (Eigen::Index r = 0; r < n; ++r) q[r] += column[r] * u;
+    for (Eigen::Index r = 0; r < n; ++r) {
+      qk[r] += stiffness[r] * u;
+      qc[r] += damping[r] * u;
+    }
   }
 }
 
@@ -80,8 +89,7 @@ void load_parts(const LinearSystem& system, const HarmonicLoad& load, Eigen::Vec
     const Eigen::Vector3cd u = w.amplitude * phase;
     for (int d = 0; d < 3; ++d) {
       if (u(d) == 0.0) continue;
-      add_column(t.load_per_displacement, d, u(d), QK);
-      add_column(t.load_per_velocity, d, u(d), QC);
+      add_columns(t, d, u(d), QK, QC);
     }
   }
   for (const PointForce& f : load.forces) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "railmodal/critical_speed.hpp"
+#include "response/sweep_kernels.hpp"
 
 namespace railmodal::response {
 
@@ -18,6 +19,10 @@ namespace railmodal::response {
 /// Walk a curve's maxima with `for (i = next_local_maximum(a, 1, n); i + 1 < n; i =
 /// next_local_maximum(a, i + 1, n))`, which also ends at once for n < 3.
 inline size_t next_local_maximum(const double* a, size_t i, size_t n) {
+  if (i + 1 >= n) return n - 1;
+  // Past the blocks with no maximum (a vectorised test), then point by point: the same
+  // comparisons, the same first maximum.
+  i = skip_to_local_maximum(a, i, n);
   if (i + 1 >= n) return n - 1;
   double before = a[i - 1], at = a[i];
   for (; i + 1 < n; ++i) {
@@ -48,11 +53,9 @@ inline LargestResponse largest_response(const CriticalSpeedStudy& study, size_t 
   const std::vector<double>& speeds = curve.speeds.values();
   const std::vector<double>& a = curve.amplitudes;
   LargestResponse p;
-  size_t at = speeds.size();
-  double largest = p.amplitude;
-  for (size_t i = 0; i < speeds.size(); ++i)
-    if (a[i] > largest) largest = a[i], at = i;
-  if (at < speeds.size()) p.amplitude = largest, p.speed = speeds[at];
+  // One pass's running largest, strictly greater taking over (response::largest_above).
+  const LargestPoint largest = largest_above(a.data(), speeds.size(), p.amplitude);
+  if (largest.at < speeds.size()) p.amplitude = largest.value, p.speed = speeds[largest.at];
   p.unbounded = std::find(curve.unbounded.begin(), curve.unbounded.end(), true) != curve.unbounded.end();
   for (const auto& refined : study.peaks)
     if (refined.curve == static_cast<int>(k) && refined.peak.amplitude > p.amplitude)

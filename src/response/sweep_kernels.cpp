@@ -1,5 +1,6 @@
 #include "response/sweep_kernels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -158,6 +159,32 @@ RAILMODAL_INLINE_LOOP void phases(int n, const double* __restrict arg_x, const d
   }
 }
 
+// Points a test of the scans below: few enough that a block holding the point sought is not
+// long to walk again one point at a time. A whole block's loop has a constant count, so it is
+// vectorised without a remainder.
+constexpr std::size_t kScanBlock = 32;
+
+// Whether a point of [i, i + count) may be a local maximum (a[j] ≥ a[j − 1] and a[j] > a[j + 1]):
+// the tests of every point or'd, no branch.
+RAILMODAL_INLINE_LOOP bool any_peak_test(const double* __restrict a, std::size_t i, std::size_t count) {
+  long any = 0;
+  for (std::size_t j = i; j < i + count; ++j) any |= static_cast<long>((a[j] >= a[j - 1]) & (a[j] > a[j + 1]));
+  return any != 0;
+}
+
+// Lane j's running maximum over a block, a[j] taken only when greater than it (never a NaN,
+// as a single running maximum): elementwise over the lanes, so it is vectorised.
+RAILMODAL_INLINE_LOOP void running_maxima(const double* __restrict a, double* __restrict lane) {
+  for (std::size_t j = 0; j < kScanBlock; ++j) lane[j] = a[j] > lane[j] ? a[j] : lane[j];
+}
+
+// Whether a block holds `value`: the tests or'd, no branch.
+RAILMODAL_INLINE_LOOP bool block_holds(const double* __restrict a, double value) {
+  long any = 0;
+  for (std::size_t j = 0; j < kScanBlock; ++j) any |= static_cast<long>(a[j] == value);
+  return any != 0;
+}
+
 }  // namespace
 
 double fast_atan2(double y, double x) { return atan2_kernel(y, x); }
@@ -203,6 +230,35 @@ RAILMODAL_VECTOR_CLONES
 void phases_deg(const double* arg_x, const double* arg_input, const double* unbounded, double offset_deg, int count,
                 double* out) {
   phases(count, arg_x, arg_input, unbounded, offset_deg, out);
+}
+
+RAILMODAL_VECTOR_CLONES
+std::size_t skip_to_local_maximum(const double* a, std::size_t i, std::size_t n) {
+  for (; i + kScanBlock < n; i += kScanBlock)  // whole blocks: [i, i + kScanBlock) all below n − 1
+    if (any_peak_test(a, i, kScanBlock)) return i;
+  return i;  // the rest, fewer than a block: the caller walks it
+}
+
+RAILMODAL_VECTOR_CLONES
+LargestPoint largest_above(const double* a, std::size_t n, double floor) {
+  // kScanBlock running maxima, lane j over a[j], a[j + kScanBlock], …, then the largest of the
+  // lanes and the rest: the largest value a single pass keeps, whatever order the values are
+  // met in (a value enters only when greater, so no NaN does, and of equal values the first).
+  double lane[kScanBlock];
+  for (double& l : lane) l = floor;
+  std::size_t i = 0;
+  for (; i + kScanBlock <= n; i += kScanBlock) running_maxima(a + i, lane);
+  double largest = floor;
+  for (; i < n; ++i) largest = a[i] > largest ? a[i] : largest;
+  for (const double l : lane) largest = l > largest ? l : largest;
+  if (!(largest > floor)) return {floor, n};
+  // A single pass's strict `>` keeps the first place of the largest: every value before it is
+  // smaller. Its value is read there (of +0 and −0 the pass keeps the one it met).
+  // The blocks before its block are passed by a vectorised test.
+  std::size_t at = 0;
+  while (at + kScanBlock <= n && !block_holds(a + at, largest)) at += kScanBlock;
+  while (!(a[at] == largest)) ++at;
+  return {a[at], at};
 }
 
 }  // namespace railmodal::response

@@ -77,4 +77,18 @@ double phase_deg(double arg_x, double arg_input, double offset_deg);
 void phases_deg(const double* arg_x, const double* arg_input, const double* unbounded, double offset_deg, int count,
                 double* out);
 
+/// The first i' ≥ i from which a local maximum of a[0, n) (a[j] ≥ a[j − 1] and a[j] > a[j + 1],
+/// 0 < j < n − 1) may be found: no j in [i, i') is one. Tests blocks of points without a
+/// branch, so the caller's own walk from i' (next_local_maximum) is short. 1 ≤ i.
+std::size_t skip_to_local_maximum(const double* a, std::size_t i, std::size_t n);
+
+/// The largest a[j] above `floor`, j in [0, n), and its first place: what one pass keeping a
+/// running largest (from `floor`, taking a[j] only when a[j] > it) ends with, at = the place it
+/// took last; {floor, n} when no a[j] > floor. Vectorised: running largests of every 32nd point.
+struct LargestPoint {
+  double value;
+  std::size_t at;
+};
+LargestPoint largest_above(const double* a, std::size_t n, double floor);
+
 }  // namespace railmodal::response

@@ -1,7 +1,7 @@
 // The sweep's block arithmetic (response/sweep_kernels): the branch-free atan2 against libm,
 // the phase wrap over its whole input range, the input's argument, the sweep's curves sharing
-// one speed grid, outputs swept together giving the same bits as each alone, and a study's
-// curves without their phases.
+// one speed grid, outputs swept together giving the same bits as each alone, a study's curves
+// without their phases, and the curve scans (the largest, the local maxima) against one pass.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 
 #include "railmodal/railmodal.hpp"
 #include "response/critical_speed_study.hpp"
+#include "response/curve_peaks.hpp"
 #include "response/sweep_kernels.hpp"
 #include "test_support.hpp"
 
@@ -150,6 +151,51 @@ TEST(SweepKernels, SpeedScanFindsOrderAndRefusesBadSpeeds) {
     const std::vector<double> v = {1.0, bad, 2.0};
     EXPECT_FALSE(response::scan_speeds(v.data(), 3).valid) << bad;
   }
+}
+
+// The curve scans against the single passes they replace (a running largest from `floor`,
+// strictly greater taking over; the first point with a[j] >= a[j - 1] and a[j] > a[j + 1]), on
+// curves of every length around the 32-point blocks, with ties, ±0, NaN and plateaus.
+TEST(SweepKernels, CurveScansFindWhatOnePassFinds) {
+  std::mt19937_64 random(20261127);
+  std::uniform_int_distribution<int> pick(0, 9);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> values = {0.0, -0.0, 1.0, 2.0, 2.0, 3.0, nan, -1.0, 0.5, 3.0};
+  int found_largest = 0, found_maximum = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const size_t n = static_cast<size_t>(trial % 100);
+    std::vector<double> a(n);
+    for (double& x : a) x = values[static_cast<size_t>(pick(random))];
+    for (const double floor : {0.0, -2.0}) {
+      double largest = floor;
+      size_t at = n;
+      for (size_t j = 0; j < n; ++j)
+        if (a[j] > largest) largest = a[j], at = j;
+      const response::LargestPoint got = response::largest_above(a.data(), n, floor);
+      ASSERT_EQ(got.at, at) << "trial " << trial;
+      if (at < n) {
+        ++found_largest;
+        EXPECT_EQ(std::signbit(got.value), std::signbit(largest)) << "trial " << trial;
+        EXPECT_EQ(got.value, largest) << "trial " << trial;
+      }
+    }
+    for (size_t from = 1; from < n; from += 7) {
+      size_t first = n - 1;
+      for (size_t j = from; j + 1 < n; ++j)
+        if (a[j] >= a[j - 1] && a[j] > a[j + 1]) {
+          first = j;
+          break;
+        }
+      const size_t got = response::next_local_maximum(a.data(), from, n);
+      ASSERT_EQ(got, first) << "trial " << trial << " from " << from;
+      // skip_to_local_maximum passes no maximum: the first is at or after where it stops.
+      EXPECT_LE(response::skip_to_local_maximum(a.data(), from, n), first) << "trial " << trial;
+      if (first + 1 < n) ++found_maximum;
+    }
+  }
+  // Both kinds of answer were met often: not a comparison of empty results.
+  EXPECT_GT(found_largest, 1000);
+  EXPECT_GT(found_maximum, 1000);
 }
 
 // Sweeps `outputs` together and each output alone: every amplitude, flag and phase the same
