@@ -165,9 +165,10 @@ struct FftCheckResult {
   double linear_half_period_s = 0.0;  ///< π/ω of that mode, for comparison
   /// The check of a free friction decay by its half periods, made where its spectrum cannot
   /// check it: a release (no source) with leaf friction and no other effect that excites one
-  /// mode only. Each half period between turning points must lie within
-  /// FftCheck::kNonlinearTolerance of the mode's linear half period: leaf friction makes them
-  /// π/k₁, π/k₂ with k² = (1 ± φ)k₀² (springs digest (51), (63)), at most 4.3 % off for φ ≤ 0.085.
+  /// mode only. Each half period between turning points must lie within `tolerance` of the
+  /// mode's linear half period: leaf friction makes them π/k₁, π/k₂ with k² = (1 ± φ)k₀²
+  /// (springs digest (51), (63)), up to 1/√(1 − φ) − 1 off (4.5 % at φ = 0.085); the tolerance
+  /// is that for the vehicle's largest φ plus 1 %, at least FftCheck::kNonlinearTolerance.
   struct HalfPeriodCheck {
     int count = 0;                 ///< half periods between turning points compared
     double worst_rel_error = 0.0;  ///< the largest |half period − linear|/linear
