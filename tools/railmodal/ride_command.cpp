@@ -88,10 +88,12 @@ bool has_spectra(const TrackIrregularitySpectra& t) { return t.vertical_level ||
 InputError ride_scene_error(const Scene& scene, const std::string& message) {
   std::string blamed;
   for (const char* key : {"vertical_level", "alignment", "cross_level"}) {
-    std::string name = key;  // as the library writes it (to_string(TrackIrregularity)): "cross-level"
-    std::replace(name.begin(), name.end(), '_', '-');
-    if (!scene.name_places.count(std::string("irregularity.") + key) || message.find(name) == std::string::npos)
-      continue;
+    // The library names a component by to_string(TrackIrregularity) ("cross_level") and some
+    // prose by its hyphenated word ("cross-level"): either names it.
+    std::string hyphenated = key;
+    std::replace(hyphenated.begin(), hyphenated.end(), '_', '-');
+    const bool named = message.find(key) != std::string::npos || message.find(hyphenated) != std::string::npos;
+    if (!scene.name_places.count(std::string("irregularity.") + key) || !named) continue;
     if (!blamed.empty()) return InputError(scene.source, 0, 0, message);  // two components named: neither alone
     blamed = key;
   }
