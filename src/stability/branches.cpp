@@ -5,6 +5,7 @@
 #include <cmath>
 #include <complex>
 #include <map>
+#include <utility>
 
 #include <Eigen/QR>
 #include <Eigen/SVD>
@@ -43,9 +44,14 @@ Eigen::MatrixXcd orthonormal_span(const Eigen::MatrixXcd& vectors) {
 // (Björck and Golub, "Numerical methods for computing angles between linear subspaces", Math.
 // Comp. 27 (1973) 579–594, section 3). 1 when either moves no mass (nothing to follow).
 double share_within(const Eigen::MatrixXcd& part, const Eigen::MatrixXcd& whole) {
-  const Eigen::MatrixXcd a = orthonormal_span(part), b = orthonormal_span(whole);
+  Eigen::MatrixXcd a = orthonormal_span(part), b = orthonormal_span(whole);
   if (a.cols() == 0 || b.cols() == 0) return 1.0;
-  if (a.cols() > b.cols()) return 0.0;  // a plane cannot lie in a line
+  // A pair at its meeting spans one direction (its two eigenvectors coincide: the matrix is
+  // defective there, and the second direction of its invariant plane is a generalised
+  // eigenvector the shapes do not hold). The other speed's plane cannot lie in that line, but
+  // the line must lie in the plane: measure that instead of calling the step a veer (review of
+  // 2026-11-27: a step onto a meeting would otherwise read 0).
+  if (a.cols() > b.cols()) std::swap(a, b);
   const Eigen::JacobiSVD<Eigen::MatrixXcd> svd(a.adjoint() * b);
   const double cosine = std::min(1.0, svd.singularValues().minCoeff());
   return cosine * cosine;
