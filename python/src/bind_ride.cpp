@@ -125,7 +125,7 @@ void bind_ride_output(py::module_& m) {
   py::class_<RideOutput>(m, "RideOutput", "One quantity the ride reports (a point's motion, an element's deflection or force, a wheel–rail force)")
       .def(py::init([](const std::string& name, const std::string& kind, const std::string& body,
                        const Eigen::Vector3d& point, const std::string& element, const std::string& axis,
-                       const std::string& quantity) {
+                       const std::string& quantity, const std::string& frame) {
              RideOutput o;
              o.name = name;
              o.kind = enum_argument(kind, ride_output_kind_from_string, "kind",
@@ -136,11 +136,12 @@ void bind_ride_output(py::module_& m) {
              o.axis = enum_argument(axis, ride_axis_from_string, "axis", "'longitudinal', 'lateral', 'vertical'");
              o.quantity = enum_argument(quantity, response_quantity_from_string, "quantity",
                                         "'displacement', 'velocity', 'acceleration'");
+             o.frame = enum_argument(frame, ride_frame_from_string, "frame", "'body', 'track'");
              return o;
            }),
            py::arg("name"), py::kw_only(), py::arg("kind") = "point", py::arg("body") = "",
            py::arg("point_m") = Eigen::Vector3d::Zero().eval(), py::arg("element") = "", py::arg("axis") = "vertical",
-           py::arg("quantity") = "acceleration")
+           py::arg("quantity") = "acceleration", py::arg("frame") = "body")
       .def_readonly("name", &RideOutput::name)
       .def_property_readonly("kind", [](const RideOutput& o) { return std::string(to_string(o.kind)); })
       .def_readonly("body", &RideOutput::body)
@@ -149,6 +150,9 @@ void bind_ride_output(py::module_& m) {
       .def_property_readonly("axis", [](const RideOutput& o) { return std::string(to_string(o.axis)); })
       .def_property_readonly("quantity", [](const RideOutput& o) { return std::string(to_string(o.quantity)); })
       .def_property_readonly("unit", [](const RideOutput& o) { return unit_of(o); })
+      .def_property_readonly("frame", [](const RideOutput& o) { return std::string(to_string(o.frame)); },
+                             "'body': a point acceleration as an accelerometer fixed to the floor reads it "
+                             "(lateral ÿ + g·φ, longitudinal ẍ − g·θ); 'track': inertial")
       .def("__repr__", [](const RideOutput& o) { return "<railmodal.RideOutput '" + o.name + "'>"; });
 
   m.def("default_ride_outputs", &default_ride_outputs, py::arg("system"),

@@ -375,9 +375,10 @@ Eigen::RowVectorXcd OutputMap::row(double omega) const {
 
 // The specific force f = a − g_vec (g_vec = (0, 0, −g)) along a body axis e turned by the small
 // rotation θ: f·(e + θ × e) = a·e + g·e_z·(θ × e) + O(θ²) = a·e + g·θ·(e × e_z); e_y × e_z = e_x
-// gives +g·θx = +g·φ, e_x × e_z = −e_y gives −g·θy (EN 12299:2009 §3 and ISO 2631-1:1997 §4:
-// accelerations measured by transducers on the floor along the vehicle body's axes; docs/ride.md,
-// "Lateral acceleration's frame").
+// gives +g·θx = +g·φ, e_x × e_z = −e_y gives −g·θy. EN 12299 and ISO 2631-1 evaluate accelerations
+// measured by transducers on the floor along the body's axes, as the public sources cited in
+// docs/ride.md ("Lateral acceleration's frame") describe them; the standards' own text was not
+// at hand.
 Eigen::RowVectorXd gravity_row(const LinearSystem& system, const RideOutput& output) {
   if (!reads_gravity(output)) return {};
   const int body = body_index(system, output.body);
@@ -446,7 +447,11 @@ std::vector<OutputMap> output_maps(const LinearSystem& system, const std::vector
     if (!names.insert(o.name).second) throw std::invalid_argument("ride: output name '" + o.name + "' is repeated");
     maps.push_back(output_map(system, o, friction_damping, contact, speed));
     const OutputMap& m = maps.back();
-    if (m.a0.cwiseAbs().maxCoeff() == 0.0 && m.a1.cwiseAbs().maxCoeff() == 0.0 && m.series.empty() && m.inputs.empty())
+    // An accelerometer's gravity row moves it too (a longitudinal reading −g·θ with the
+    // longitudinal motion held and pitch free).
+    const bool gravity_moves_it = m.gravity.size() && m.gravity.cwiseAbs().maxCoeff() > 0.0;
+    if (m.a0.cwiseAbs().maxCoeff() == 0.0 && m.a1.cwiseAbs().maxCoeff() == 0.0 && m.series.empty() && m.inputs.empty() &&
+        !gravity_moves_it)
       throw std::invalid_argument("ride: output '" + o.name + "': no degree of freedom of this model moves it (the " +
                                   to_string(o.axis) + " axis is not among the model's motions); its answer would be "
                                   "zero: leave it out, or give the degrees of freedom it needs (dofs = \"all\")");

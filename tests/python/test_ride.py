@@ -141,6 +141,18 @@ def test_ride_of_a_system_with_the_scenes_track_and_outputs(coach):
     one = railmodal.ride(system, spectra, [mine], speeds_m_s=[speed])
     np.testing.assert_array_equal(one.psd[0, 0], by_dict.psd[0, 0])
     assert mine.unit == o.unit and mine.kind == "point"
+    # The frame reaches the library: a lateral point read in the track frame (inertial) differs
+    # from the default floor accelerometer's reading (with g·phi: a few per cent on this coach,
+    # docs/ride.md), and each output reads back its word.
+    lat = outputs[lateral[0]]
+    floor = railmodal.RideOutput("floor", body=lat.body, point_m=lat.point_m, axis="lateral")
+    track = railmodal.RideOutput("track", body=lat.body, point_m=lat.point_m, axis="lateral", frame="track")
+    both = railmodal.ride(system, spectra, [floor, track], speeds_m_s=[speed], rolling_radius_m=r0)
+    assert floor.frame == "body" and track.frame == "track"
+    by_floor, by_track = (r["rms"] for r in both.records())
+    assert abs(by_floor / by_track - 1) > 1e-3
+    with pytest.raises(ValueError, match="frame"):
+        railmodal.RideOutput("x", frame="inertial")
 
 
 def test_ride_errors():

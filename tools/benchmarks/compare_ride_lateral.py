@@ -74,6 +74,10 @@ class Model:
         # Lateral displacement of a body point: lateral + (x − x_ref)·yaw − (z − z_ref)·roll
         # (u = θ × r, its y component ψ·dx − φ·dz).
         self.P = np.zeros((len(j["outputs"]), n))
+        # A floor accelerometer (frame "body", the default) also reads gravity along its axis
+        # tilted by the roll: + g·roll on a lateral reading (docs/ride.md, "Lateral
+        # acceleration's frame"); frame "track" is the inertial acceleration alone.
+        self.G_roll = np.zeros((len(j["outputs"]), n))
         for o, out in enumerate(j["outputs"]):
             ref = j["reference_points"][out["body"]]
             for d, dof in enumerate(j["dofs"]):
@@ -82,6 +86,8 @@ class Model:
                 motion = dof["label"].split(".")[-1]
                 self.P[o, d] = {"lateral": 1.0, "yaw": out["point"][0] - ref[0],
                                 "roll": -(out["point"][2] - ref[2])}.get(motion, 0.0)
+                if motion == "roll" and out.get("frame", "body") == "body":
+                    self.G_roll[o, d] = j["gravity"]
 
     def at_speed(self, V):
         """K_V, C_V and the wheelsets' loads per metre (Bd) and per m/s (Bv) of alignment."""
@@ -111,7 +117,7 @@ def receptance_solve(m, f, V):
     w = 2 * np.pi * f
     D = K[None] - (w**2)[:, None, None] * m.M[None] + 1j * w[:, None, None] * C[None]
     X = np.linalg.solve(D, Bd[None] + 1j * w[:, None, None] * Bv[None])
-    return -(w**2)[:, None, None] * (m.P[None] @ X)  # (F, outputs, wheelsets)
+    return -(w**2)[:, None, None] * (m.P[None] @ X) + m.G_roll[None] @ X  # (F, outputs, wheelsets)
 
 
 def receptance_modal(m, f, V):
@@ -124,8 +130,9 @@ def receptance_modal(m, f, V):
     left = m.P @ Vec[:n]
     rd, rv = W[:, n:] @ Minv @ Bd, W[:, n:] @ Minv @ Bv
     w = 2 * np.pi * f
-    Lg = left[None] * (1.0 / (1j * w[:, None] - lam[None]))[:, None, :]
-    return -(w**2)[:, None, None] * (Lg @ rd + (1j * w)[:, None, None] * (Lg @ rv))
+    g = (1.0 / (1j * w[:, None] - lam[None]))[:, None, :]
+    Lg = (-(w**2)[:, None, None] * left[None] + (m.G_roll @ Vec[:n])[None]) * g
+    return Lg @ rd + (1j * w)[:, None, None] * (Lg @ rv)
 
 
 def ride(m, receptance):

@@ -89,7 +89,11 @@ nlohmann::json model_json(const Setup& s, const RideResult& r) {
                                   {"rho", (kappa - 1.0) / kappa}});
   }
   for (const RideOutput& o : s.outputs)
-    j["outputs"].push_back({{"name", o.name}, {"body", o.body}, {"point", {o.point.x(), o.point.y(), o.point.z()}}});
+    j["outputs"].push_back({{"name", o.name},
+                            {"body", o.body},
+                            {"point", {o.point.x(), o.point.y(), o.point.z()}},
+                            {"frame", to_string(o.frame)}});
+  j["gravity"] = s.system.vehicle.gravity;
   j["band"] = {2 * kPi / kLongest, 2 * kPi / kShortest};
   j["speeds"] = s.options.speeds;
   j["grid"] = std::vector<double>(r.frequencies.data(), r.frequencies.data() + r.frequencies.size());
