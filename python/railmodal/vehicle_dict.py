@@ -107,7 +107,7 @@ def vehicle_from_dict(vehicle):
     """A Vehicle from a dict with the tables and keys of a vehicle file, units as strings:
 
         vehicle_from_dict({"vehicle": {"name": "wagon", "template": "two-axle"},
-                           "body": {"weight": "20 t", ...}, ...})
+                           "body": {"weight": "20 tf", ...}, ...})
 
     Read by the same reader as files (the same checks and unit conversions). Errors are
     railmodal.InputError with file "<dict>", line and column None and the key path in .key.

@@ -31,6 +31,7 @@ std::string system_reason(int error) {
 
 std::string read_input_text(const std::string& path, size_t limit, const std::string& why) {
   std::ifstream in = open_input(path);
+  errno = 0;  // a reason left over from opening is not the read's
   std::string text;
   char buffer[1 << 16];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {

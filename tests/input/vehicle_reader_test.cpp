@@ -80,7 +80,7 @@ TEST(VehicleReader, AbsurdMagnitudes) {
   expect_error("weight = \"20000 kgf\"", "mass = 5e-324",
                {"bad.toml:5:8: error: key 'body.mass': the value 4.94e-324 is below any physical quantity",
                 "zero or of magnitude 1e-30 to 1e30 in SI units"});
-  expect_error("\"1000 kgf/cm\"", "\"1e-31 N/m\"", {"key 'suspension.spring.stiffness': the value 1e-31 is below"});
+  expect_error("\"1000 kgf/cm\"", "\"1e-31 N/m\"", {"key 'suspension.spring.stiffness': the value \"1e-31 N/m\" (1e-31 in SI units) is below"});
   expect_error("\"1000 kgf/cm\"", "1e31", {"key 'suspension.spring.stiffness': the value is beyond any physical"});
   expect_error("name = \"test wagon\"", "name = \"test wagon\"\ngravity = 1e-320",
                {"bad.toml:3:11: error: key 'vehicle.gravity': the value 1e-320 is below"});

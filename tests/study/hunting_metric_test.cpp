@@ -118,24 +118,31 @@ TEST(HuntingMetric, NanIsNoValueInEveryFormat) {
   const size_t criterion = 3;  // rank, variant, feasible, then the objective's criterion
   ASSERT_GT(rows[0].size(), criterion);
   ASSERT_EQ(rows[0][criterion], "linear hunting speed, maximised [km/h]");
+  int seen = 0;  // both variants' rows must be there, or the checks below would check nothing
   for (const auto& row : rows) {
     if (row[1] == "undefined") {
       EXPECT_EQ(row[criterion], "-");
+      ++seen;
     } else if (row[1] == "a") {
       EXPECT_EQ(row[criterion], "200");
+      ++seen;
     }
   }
+  EXPECT_EQ(seen, 2);
   std::ostringstream csv, json;
   write_comparison(csv, c, OutputFormat::csv);
   EXPECT_EQ(csv.str().find("inf"), std::string::npos) << csv.str();
   EXPECT_EQ(csv.str().find("nan"), std::string::npos) << csv.str();
   write_comparison(json, c, OutputFormat::json);
   const nlohmann::json j = nlohmann::json::parse(json.str());
+  int undefined = 0;
   for (const auto& v : j.at("variants")) {
     if (v.at("name") == "undefined") {
       EXPECT_TRUE(v.at("criteria").at(0).is_null()) << v;
+      ++undefined;
     }
   }
+  EXPECT_EQ(undefined, 1);
 }
 
 TEST(HuntingMetric, OnlyAStudyThatNamesItPaysForIt) {

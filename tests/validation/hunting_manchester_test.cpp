@@ -20,8 +20,9 @@ namespace {
 // leave the real axis as complex pairs; at the meeting the eigenvector is defective and its MAC
 // with a neighbour means nothing. Before the audit of 2026-11-27 those steps counted: the
 // continuity check failed at 1 − 0.113 (limit 0.2) although every oscillation was followed, and
-// the docs' example reported it. Steps where a branch is real at either end count as 1; every
-// step where it oscillates at both ends keeps its MAC, and the check passes.
+// the docs' example reported it. Steps where a branch is real at either end are now judged by
+// the plane of the pair's shapes (stability/branches.cpp, plane_continuity), the others by their
+// MAC, and the check passes.
 TEST(HuntingManchesterCoach, OverdampedPairsDoNotFailTheTracking) {
   const Vehicle coach = load_vehicle(data_file("manchester_benchmark_coach_wheelsets.toml"));
   HuntingOptions options;
@@ -31,15 +32,12 @@ TEST(HuntingManchesterCoach, OverdampedPairsDoNotFailTheTracking) {
   for (const HuntingBranch& b : r.branches) {
     bool real = false;
     for (size_t s = 0; s < b.eigenvalues.size(); ++s) {
-      const auto overdamped = [](std::complex<double> l) { return std::abs(l.imag()) <= 0.01 * std::abs(l); };
-      const bool real_step = overdamped(b.eigenvalues[s]) || (s > 0 && overdamped(b.eigenvalues[s - 1]));
       real = real || b.eigenvalues[s].imag() == 0.0;
-      // Where it oscillates at both ends the tracking holds (0.971 the least, measured).
-      if (real_step) {
-        EXPECT_EQ(b.continuity[s], 1.0) << b.name << " at " << r.speeds[s];
-      } else {
-        EXPECT_GE(b.continuity[s], options.continuity_threshold) << b.name << " at " << r.speeds[s];
-      }
+      // Where it oscillates at both ends the tracking holds by the MAC (0.971 the least,
+      // measured); where it is real at either end, by the plane the pair's two shapes span
+      // (principal angles, since the review of 2026-11-27: 0.939 the least, measured). Both
+      // above the threshold: every step is followed.
+      EXPECT_GE(b.continuity[s], options.continuity_threshold) << b.name << " at " << r.speeds[s];
     }
     real_at_some_speed += real ? 1 : 0;
     EXPECT_FALSE(b.veers) << b.name;
