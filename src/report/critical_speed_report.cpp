@@ -120,7 +120,7 @@ Table sources_table(const CriticalSpeedStudy& st) {
 }
 
 Table critical_speed_table(const CriticalSpeedStudy& st) {
-  Table t{{"speed (km/h)", "source", "k", "mode", "f (Hz)", "output", "amplitude", "undamped growth per half period", "leaf friction"},
+  Table t{{"speed (km/h)", "source", "k", "mode", "f (Hz)", "output", "amplitude", "growth per half period if undamped", "leaf friction"},
           {true, false, true, false, true, false, true, true, false},
           {}};
   const CriticalSpeedRoundOff round_off(st);
@@ -134,7 +134,7 @@ Table critical_speed_table(const CriticalSpeedStudy& st) {
 // Every requested output at every critical speed: its amplitude there, or its growth per half
 // period (issue 17 item 7: the table above shows one output per mode).
 Table outputs_table(const CriticalSpeedStudy& st) {
-  Table t{{"speed (km/h)", "source", "k", "mode", "output", "amplitude", "undamped growth per half period"},
+  Table t{{"speed (km/h)", "source", "k", "mode", "output", "amplitude", "growth per half period if undamped"},
           {true, false, true, false, false, true, true},
           {}};
   const CriticalSpeedRoundOff round_off(st);
@@ -276,7 +276,8 @@ std::string friction_model_note(const CriticalSpeedStudy& st) {
 const char* const kCriticalSpeedNote =
     "Amplitude: steady amplitude of the output at the critical speed; unbounded where nothing damps the mode "
     "(no viscous damping): the amplitude then grows by the growth per half period (the book's secular solutions "
-    "(168d), (274)). Leaf friction: Den Hartog's criterion — friction stops the resonance when the growth per half "
+    "(168d), (274)). Where dampers keep the amplitude finite, the growth is what the resonance would gain per half "
+    "period without them: the figure friction is weighed against, not a growth of this vehicle. Leaf friction: Den Hartog's criterion — friction stops the resonance when the growth per half "
     "period does not exceed the friction decrement 2φf (two-axle digest (169a) without its static term); the "
     "factor is how much larger the source amplitude would have to be for the resonance to grow.";
 
