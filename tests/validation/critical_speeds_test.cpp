@@ -464,5 +464,27 @@ TEST(CriticalSpeeds, ReciprocatingSeriesVB3) {
   EXPECT_EQ(reciprocating_coefficient(1 / 4.0, 3), 0.0);
 }
 
+// "Critical speed" is also the onset of hunting (docs/stability.md): a report on a kinematic-
+// hunting source says in every format that its speeds are resonances to that input and where the
+// stability critical speed is (audit 2026-11-27b); a report on rail joints has no such note.
+TEST(CriticalSpeeds, AHuntingSourcesReportSaysItsSpeedsAreResonances) {
+  const std::string says = "resonances to a kinematic (forced) input";
+  const auto report = [](const CriticalSpeedStudy& st, OutputFormat f) {
+    std::ostringstream out;
+    write_critical_speed_report(out, st, f);
+    return out.str();
+  };
+  const CriticalSpeedStudy hunting = study("manchester_coach_hunting.toml");
+  for (OutputFormat f : {OutputFormat::markdown, OutputFormat::html, OutputFormat::csv, OutputFormat::json}) {
+    const std::string text = report(hunting, f);
+    EXPECT_NE(text.find(says), std::string::npos) << to_string(f);
+    EXPECT_NE(text.find("`railmodal stability`"), std::string::npos) << to_string(f);
+  }
+  EXPECT_NE(report(hunting, OutputFormat::csv).find("# note: these critical speeds are resonances"), std::string::npos);
+  const CriticalSpeedStudy joints = study("resort_car_10m_rails.toml");
+  for (OutputFormat f : {OutputFormat::markdown, OutputFormat::html, OutputFormat::csv, OutputFormat::json})
+    EXPECT_EQ(report(joints, f).find(says), std::string::npos) << to_string(f);
+}
+
 }  // namespace
 }  // namespace railmodal::test
