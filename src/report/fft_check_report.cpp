@@ -208,7 +208,8 @@ std::string fft_check_verdict_text(const FftCheckResult& r) {
   const std::string halves = r.half_period_check ? "; " + half_period_text(r) : "";
   const int spectral_failed = r.failed - (r.half_period_check && !r.half_period_check->passed ? 1 : 0);
   if (r.failed > 0)
-    return "FAILED: " + made + ", " + std::to_string(spectral_failed) + " outside its tolerance" + halves + rest;
+    return "FAILED: " + made + ", " + std::to_string(spectral_failed) +
+           (spectral_failed == 1 ? " outside its tolerance" : " outside their tolerances") + halves + rest;
   if (r.checked == 0) return "NOT CHECKED: no mode's line could be checked (" + not_checked_reasons(r) + ")";
   const std::string within =
       r.nonlinear ? "within " + percent(FftCheck::kNonlinearTolerance) : "each within its line's width";
