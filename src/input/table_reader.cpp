@@ -136,7 +136,9 @@ void TableReader::fail(const std::string& key, const std::string& message) const
 
 bool TableReader::has(const std::string& key) const {
   const bool present = table_.is_table() && table_.as_table().count(key) > 0;
-  if (!present) absent_.push_back(key);  // every optional key passes here: finish's suggestions
+  // Every optional key passes here: finish's suggestions. Once every key present is read, no
+  // unknown key is left to suggest for, and nothing is kept (a study reads each variant's file).
+  if (!present && table_.is_table() && read_.size() < table_.as_table().size()) absent_.push_back(key);
   return present;
 }
 
