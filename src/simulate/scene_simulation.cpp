@@ -278,7 +278,9 @@ std::string add_effect(const Scene& scene, const std::string& effect) {
 
 std::vector<std::string> unsimulated_parts(const Scene& scene, const Vehicle& vehicle) {
   std::vector<std::string> out;
-  if (!scene.simulation) return out;
+  // "effects = []" written in the file: the linear, undamped model chosen, not forgotten.
+  if (!scene.simulation || (scene.simulation->effects.empty() && scene.name_places.count("simulation.effects")))
+    return out;
   // What scene_system leaves out without "viscous_dampers": the vertical and lateral dampers.
   const int dampers = count_parts(vehicle, scene.dofs, [](const Element& e, bool vertical) {
     return static_cast<int>((vertical ? e.vertical_damping : e.lateral_damping) > 0.0);

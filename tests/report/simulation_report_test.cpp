@@ -25,11 +25,13 @@ displacement = "10 mm"
 
 std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 
-// `vehicle` released in bounce, vertical DOFs, its [simulation] naming `effects` (a TOML array).
+// `vehicle` released in bounce, vertical DOFs, its [simulation] naming `effects` (a TOML array;
+// "": no effects key).
 Scene released_with_effects(const std::string& vehicle, const std::string& effects) {
   return load_scene(write_temp("effects.toml", "[scene]\nname = \"release\"\nvehicle = \"" + data_file(vehicle) +
                                                    "\"\ndofs = \"vertical\"\n[simulation]\nduration = \"1 s\"\n"
-                                                   "time_step = \"10 ms\"\neffects = " + effects + R"(
+                                                   "time_step = \"10 ms\"\n" +
+                                                   (effects.empty() ? "" : "effects = " + effects) + R"(
 [[simulation.initial]]
 dof = "body.bounce"
 displacement = "10 mm"
@@ -45,7 +47,7 @@ TEST(SimulationReport, DampersTheSceneLeavesOutAreWarned) {
   const auto dampers = std::count_if(coach.elements.begin(), coach.elements.end(),
                                      [](const Element& e) { return e.vertical_damping > 0.0; });
   ASSERT_GT(dampers, 0);
-  const Scene undamped = released_with_effects("manchester_benchmark_coach.toml", "[]");
+  const Scene undamped = released_with_effects("manchester_benchmark_coach.toml", "");
   const std::vector<std::string> parts = unsimulated_parts(undamped, coach);
   ASSERT_EQ(parts.size(), 1u);
   EXPECT_EQ(parts[0], std::to_string(dampers) +
@@ -58,6 +60,9 @@ TEST(SimulationReport, DampersTheSceneLeavesOutAreWarned) {
   EXPECT_NE(table.str().find("warning: " + parts[0] + "\n"), std::string::npos) << table.str();
   EXPECT_LT(table.str().find("warning: "), table.str().find("#    mode"));  // in the header, above the checks
   EXPECT_EQ(nlohmann::json::parse(json.str()).at("unsimulated_parts"), nlohmann::json(parts));
+
+  // "effects = []" written: the undamped model chosen on purpose, not warned.
+  EXPECT_TRUE(unsimulated_parts(released_with_effects("manchester_benchmark_coach.toml", "[]"), coach).empty());
 
   const Scene damped = released_with_effects("manchester_benchmark_coach.toml", "[\"viscous_dampers\"]");
   EXPECT_TRUE(unsimulated_parts(damped, coach).empty());
