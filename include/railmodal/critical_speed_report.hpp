@@ -22,7 +22,11 @@ namespace railmodal {
 
 /// Writes markdown, html, csv or json (std::invalid_argument for table). The markdown and html
 /// documents end with the railmodal version and `provenance`'s input files and their digests
-/// (provenance_of({scene file, vehicle file})); {}: "input files not recorded".
+/// (provenance_of({scene file, vehicle file})); {}: "input files not recorded". Every format
+/// writes the notes (markdown and html "Note: …", csv "# note: …" lines, json "notes", absent
+/// when there is none): what the modes leave out (ModalResult::notes) and, for a scene with a
+/// kinematic-hunting source, that its critical speeds are resonances to a kinematic input and
+/// that the stability critical speed (the onset of hunting) is `railmodal stability`'s.
 void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, OutputFormat format,
                                  const Provenance& provenance = {});
 

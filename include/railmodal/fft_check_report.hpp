@@ -24,7 +24,8 @@ namespace railmodal {
 
 /// Writes table, csv, json or html (std::invalid_argument for markdown).
 ///   table: the checks (mode, DOF, modal and peak frequency, relative error, resolution and
-///   whether the peak lies within it, or why there is none) and, for a nonlinear scene, the
+///   whether the peak lies within it, or why there is none), below a header that warns of each
+///   part of the vehicle the scene's effects leave out (unsimulated_parts), and, for a nonlinear scene, the
 ///   half periods between the turning points and between passes through the static position.
 ///   csv: one row per check: mode, mode_name, dof, modal [Hz], peak [Hz], rel_error,
 ///   resolution [Hz], within_resolution, excited, modal_amplitude_ratio, tolerance, outcome
@@ -33,12 +34,13 @@ namespace railmodal {
 ///   json: {"scene", "checks": [{the csv's columns, keyed mode_name, modal_hz, peak_hz,
 ///   resolution_hz, …; no peak: null}], "nonlinear", "compared", "checked" (false: nothing
 ///   could be checked), "checks_made", "checks_failed", "passed", "verdict" (as the csv's),
-///   "verdict_text" (fft_check_verdict), and for a nonlinear scene
+///   "verdict_text" (fft_check_verdict), "unsimulated_parts" (unsimulated_parts' sentences; [] when
+///   the scene simulates every part), and for a nonlinear scene
 ///   "half_periods": {"dof", "linear_half_period_s", "between_turning_points_s",
 ///   "between_crossings_s", "turning_points": [{"time_s", "displacement"}], "comes_to_rest"}}.
 ///   html: a self-contained page (inline SVG, no scripts): the displacement histories of the
 ///   DOFs whose spectra were taken, translations (mm) and rotations (mrad) on charts of their
-///   own, with the stick/slip/kink events marked when there are few enough to see; each
+///   own (below the warnings of unsimulated_parts), with the stick/slip/kink events marked when there are few enough to see; each
 ///   spectrum up to 1.5× the highest checked mode with every modal frequency as a vertical
 ///   line; the check table and the half-period table. The page ends with the railmodal
 ///   version and `provenance`'s input files with their digests.

@@ -25,7 +25,8 @@ namespace railmodal {
 /// per mode (index, name, Hz, s, rad/s, centre of oscillation) and the mode shapes below;
 /// csv: one row per mode with one column per DOF; json: {"vehicle", "dofs", "modes":
 /// [{"index", "kind", "frequency_hz", "period_s", "omega_rad_s", "divergence_rate_per_s",
-/// "name", "stable", "repeated", "centre_of_oscillation", "residual", "shape": {label:
+/// "name", "stable", "repeated", "centre_of_oscillation" ({"about", "body", "x_m" or "z_m"}:
+/// CentreOfOscillation::position, in the vehicle frame, z_m up from the axle plane), "residual", "shape": {label:
 /// value}}], "condensed", "max_residual", "orthonormality_error"}. JSON also holds "solver":
 /// {"name", and for ARPACK "shift", "factorisation", "requested", "subspace_size", "restarts",
 /// "operator_applications", "runs", "count_checked"}. ModalResult::notes, when there are any,

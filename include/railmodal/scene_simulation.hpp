@@ -30,6 +30,14 @@ namespace railmodal {
 /// velocity input at the wheels).
 LinearSystem scene_system(const Scene& scene, const Vehicle& vehicle);
 
+/// What the vehicle has, in the scene's DOF set, that the scene's [simulation] leaves out because
+/// its effects do not name it (docs/scenes.md, "Only the named effects are built"), one sentence
+/// a kind: "12 viscous dampers in the vehicle are not simulated: add effects =
+/// [\"viscous_dampers\"]", and alike for leaf friction and progressive springs (simulated as
+/// linear springs). Empty when the scene has no [simulation] or names every effect the vehicle
+/// has. simulate and fft-check warn with it on stderr; the fft-check report writes it as notes.
+std::vector<std::string> unsimulated_parts(const Scene& scene, const Vehicle& vehicle);
+
 /// The nonlinearities the scene names (leaf_friction, progressive_springs).
 NonlinearEffects scene_effects(const Scene& scene);
 

@@ -294,6 +294,9 @@ SimulationSpec read_simulation(TableReader t, bool with_sources, std::map<std::s
   if (sim.time_step > sim.duration) t.fail("time_step", "is longer than the duration");
   if (t.has("effects")) {
     sim.effects = read_effects(t);
+    // Where the key is, even an empty list: "effects = []" leaves the vehicle's dampers and
+    // friction out on purpose, and unsimulated_parts does not warn of them.
+    (*places)["simulation.effects"] = t.place("effects");
     // Where each effect is named, for scene_warnings (an effect the vehicle gives nothing to).
     for (size_t k = 0; k < sim.effects.size(); ++k)
       (*places)["simulation.effects[" + std::to_string(k) + "]"] = place_of(t.raw("effects").as_array()[k]);

@@ -135,7 +135,11 @@ void TableReader::fail(const std::string& key, const std::string& message) const
 }
 
 bool TableReader::has(const std::string& key) const {
-  return table_.is_table() && table_.as_table().count(key) > 0;
+  const bool present = table_.is_table() && table_.as_table().count(key) > 0;
+  // Every optional key passes here: finish's suggestions. Once every key present is read, no
+  // unknown key is left to suggest for, and nothing is kept (a study reads each variant's file).
+  if (!present && table_.is_table() && read_.size() < table_.as_table().size()) absent_.push_back(key);
+  return present;
 }
 
 void TableReader::refuse_misspelling(const std::string& key) const {
@@ -315,10 +319,43 @@ std::vector<TableReader> TableReader::tables(const std::string& key) {
   return out;
 }
 
+namespace {
+
+// Whether `word` is one of `key`'s words ("damping" of "vertical_damping").
+bool is_word_of(const std::string& word, const std::string& key) {
+  for (size_t at = key.find(word); at != std::string::npos; at = key.find(word, at + 1))
+    if ((at == 0 || key[at - 1] == '_') && (at + word.size() == key.size() || key[at + word.size()] == '_'))
+      return true;
+  return false;
+}
+
+// "; did you mean 'a'?" or "; did you mean 'a', 'b' or 'c'?", from the keys asked for and absent:
+// the closest within two edits (a typo: "spring_spaceing"), else those `unknown` is a word of
+// (the two-axle template's [suspension] "damping" is vertical_ or lateral_damping), at most
+// three; "" when none is near.
+std::string did_you_mean(const std::string& unknown, std::vector<std::string> absent) {
+  std::sort(absent.begin(), absent.end());
+  absent.erase(std::unique(absent.begin(), absent.end()), absent.end());
+  std::vector<std::string> meant;
+  size_t best = 3;
+  for (const std::string& key : absent)
+    if (const size_t d = edit_distance(unknown, key); d < best) best = d, meant = {key};
+  if (meant.empty())
+    for (const std::string& key : absent)
+      if (meant.size() < 3 && is_word_of(unknown, key)) meant.push_back(key);
+  if (meant.empty()) return "";
+  std::string text = "; did you mean ";
+  for (size_t k = 0; k < meant.size(); ++k)
+    text += (k == 0 ? "" : k + 1 == meant.size() ? " or " : ", ") + ("'" + meant[k] + "'");
+  return text + "?";
+}
+
+}  // namespace
+
 void TableReader::finish() const {
   if (!table_.is_table()) return;
   for (const auto& [key, value] : table_.as_table())
-    if (!read_.count(key)) fail(key, "unknown key (misspelt, or not used here)");
+    if (!read_.count(key)) fail(key, "unknown key (misspelt, or not used here)" + did_you_mean(key, absent_));
 }
 
 toml::value parse_toml_file(const std::string& file) {

@@ -60,7 +60,8 @@ class TableReader {
   /// An array of tables ([[key]] or key = [{...}, ...]); a single table counts as one.
   std::vector<TableReader> tables(const std::string& key);
 
-  /// Throws for the first key that was never read.
+  /// Throws for the first key that was never read, with the keys asked for and absent that it
+  /// likely meant ("did you mean 'vertical_damping', 'lateral_damping' or …?").
   void finish() const;
   /// For a missing `key`: throws at a present, unread key that looks like a misspelling of it
   /// ("is 'wieght' a misspelling of it?"); returns when there is none.
@@ -83,6 +84,8 @@ class TableReader {
   std::string file_;
   std::string path_;
   std::set<std::string> read_;
+  /// The keys asked for (has) and absent: what an unknown key may have meant (finish).
+  mutable std::vector<std::string> absent_;
 };
 
 /// Parses a TOML file; a syntax error becomes an InputError with its line and column.

@@ -92,7 +92,7 @@ Section harmonics_table(const GearResult& r, const std::vector<std::string>& cyl
 Section counterweight_table(const BalanceStudy& study, const std::vector<std::string>& wheels) {
   Section s{"Counterweights by rule (kg on the crank radius, degrees ahead of the wheel's crank)",
             table_of({"rule", "wheel", "rotating [kg]", "at [deg]", "vertical [kg]", "at [deg]", "overbalance [kg]",
-                      "at [deg]", "total [kg]", "at [deg]", "max dP [kN]", "least load [kN]", "α", "α (89a)",
+                      "at [deg]", "total [kg]", "at [deg]", "max dP, hammer blow [kN]", "least load [kN]", "α", "α (89a)",
                       "wheel lift"})};
   s.table.numeric[0] = s.table.numeric[1] = s.table.numeric[14] = false;
   for (const BalanceResult& b : study.by_rule) {
@@ -154,7 +154,7 @@ std::vector<Section> sections_of(const BalanceStudy& study, const std::vector<st
   const BalanceResult& b = chosen(study);
   std::vector<Section> out;
   out.push_back(angle_table("Forces every 15 degrees of the right crank, the gear as given (X, Y on the crank pin, Z on "
-                            "the guide bar, dP on the rail)",
+                            "the guide bar, dP on the rail: the hammer blow)",
                             study.gear, cylinders, wheels, true));
   out.push_back(harmonics_table(study.gear, cylinders, wheels));
   out.push_back(counterweight_table(study, wheels));

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "model/element_stiffness.hpp"
 #include "railmodal/critical_speed_report.hpp"
@@ -120,7 +121,7 @@ Table sources_table(const CriticalSpeedStudy& st) {
 }
 
 Table critical_speed_table(const CriticalSpeedStudy& st) {
-  Table t{{"speed (km/h)", "source", "k", "mode", "f (Hz)", "output", "amplitude", "undamped growth per half period", "leaf friction"},
+  Table t{{"speed (km/h)", "source", "k", "mode", "f (Hz)", "output", "amplitude", "growth per half period if undamped", "leaf friction"},
           {true, false, true, false, true, false, true, true, false},
           {}};
   const CriticalSpeedRoundOff round_off(st);
@@ -134,7 +135,7 @@ Table critical_speed_table(const CriticalSpeedStudy& st) {
 // Every requested output at every critical speed: its amplitude there, or its growth per half
 // period (issue 17 item 7: the table above shows one output per mode).
 Table outputs_table(const CriticalSpeedStudy& st) {
-  Table t{{"speed (km/h)", "source", "k", "mode", "output", "amplitude", "undamped growth per half period"},
+  Table t{{"speed (km/h)", "source", "k", "mode", "output", "amplitude", "growth per half period if undamped"},
           {true, false, true, false, false, true, true},
           {}};
   const CriticalSpeedRoundOff round_off(st);
@@ -273,10 +274,28 @@ std::string friction_model_note(const CriticalSpeedStudy& st) {
          "linear model).";
 }
 
+// "Critical speed" also names the onset of hunting (docs/stability.md), which a kinematic-hunting
+// source's resonances are not: every report of such a scene says which one it gives.
+const char* const kKinematicHuntingNote =
+    "these critical speeds are resonances to a kinematic (forced) input, the wheelsets' hunting motion at "
+    "V/Λ; the stability critical speed, where hunting sets in, is what `railmodal stability` computes "
+    "(docs/stability.md)";
+
+// The notes every format writes: what the modes leave out (ModalResult::notes, as `modes`
+// prints them; none for the book's wagons), and which critical speed a hunting source's are.
+std::vector<std::string> report_notes(const CriticalSpeedStudy& st) {
+  std::vector<std::string> notes = st.modes.notes;
+  if (std::any_of(st.scene.sources.begin(), st.scene.sources.end(),
+                  [](const auto& s) { return s->kind() == "hunting"; }))
+    notes.push_back(kKinematicHuntingNote);
+  return notes;
+}
+
 const char* const kCriticalSpeedNote =
     "Amplitude: steady amplitude of the output at the critical speed; unbounded where nothing damps the mode "
     "(no viscous damping): the amplitude then grows by the growth per half period (the book's secular solutions "
-    "(168d), (274)). Leaf friction: Den Hartog's criterion — friction stops the resonance when the growth per half "
+    "(168d), (274)). Where dampers keep the amplitude finite, the growth is what the resonance would gain per half "
+    "period without them: the figure friction is weighed against, not a growth of this vehicle. Leaf friction: Den Hartog's criterion — friction stops the resonance when the growth per half "
     "period does not exceed the friction decrement 2φf (two-axle digest (169a) without its static term); the "
     "factor is how much larger the source amplitude would have to be for the resonance to grow.";
 
@@ -288,8 +307,7 @@ void write_markdown(std::ostream& out, const CriticalSpeedStudy& st, const Prove
       << "`, " << to_string(st.scene.dofs) << " degrees of freedom (" << st.system.size() << "), speeds "
       << shortest_text(st.scene.min_speed * kKmh, 6) << "–" << shortest_text(st.scene.max_speed * kKmh, 6) << " km/h.\n\n";
   out << friction_model_note(st) << "\n\n";
-  // What the modes leave out (ModalResult::notes, as `modes` prints them): none for the book's wagons.
-  for (const std::string& note : st.modes.notes) out << "Note: " << note << ".\n\n";
+  for (const std::string& note : report_notes(st)) out << "Note: " << note << ".\n\n";
   out << "## Sources\n\n";
   write_markdown_table(out, sources_table(st));
   out << "A harmonic k of a source runs at f = k·V/Λ; a mode of frequency f resonates at V = Λ·f/k.\n\n";
@@ -423,7 +441,7 @@ void write_html(std::ostream& out, const CriticalSpeedStudy& st, const Provenanc
       << shortest_text(st.scene.min_speed * kKmh, 6) << "–" << shortest_text(st.scene.max_speed * kKmh, 6) << " km/h.</p>\n";
 
   out << "<p>" << html_escape(friction_model_note(st)) << "</p>\n";
-  for (const std::string& note : st.modes.notes) out << "<p class=note>Note: " << html_escape(note) << ".</p>\n";
+  for (const std::string& note : report_notes(st)) out << "<p class=note>Note: " << html_escape(note) << ".</p>\n";
   out << "<h2>Sources</h2>\n";
   write_html_table(out, sources_table(st));
   out << "<h2>Critical speeds</h2>\n";
@@ -491,7 +509,7 @@ void write_csv(std::ostream& out, const CriticalSpeedStudy& st) {
   // The amplitudes are of each row's output: m, or rad for a roll, pitch or yaw.
   using report::csv_heading;
   report::CsvWriter csv(out);
-  for (const std::string& note : st.modes.notes) csv.line("# note: " + note);  // as `modes` writes them
+  for (const std::string& note : report_notes(st)) csv.line("# note: " + note);  // as `modes` writes them
   csv.line(csv_heading("speed", "km/h") + ",source,source_index,harmonic,mode,mode_name," +
            csv_heading("frequency", "Hz") + ",output," + csv_heading("amplitude", "m or rad") + ",unbounded," +
            csv_heading("growth_per_half_period", "m or rad") + "," +
@@ -581,7 +599,8 @@ void write_json(std::ostream& out, const CriticalSpeedStudy& st) {
     j.end_object();
   }
   j.end_array();
-  if (!st.modes.notes.empty()) j.member("notes", st.modes.notes);  // absent for the book's wagons: their files stay
+  // Absent without a note (the book's wagons over joints): their files stay.
+  if (const std::vector<std::string> notes = report_notes(st); !notes.empty()) j.member("notes", notes);
   j.member("scene", st.scene.name);
   j.key("sources").begin_array();
   for (size_t s = 0; s < st.scene.sources.size(); ++s) {

@@ -208,7 +208,8 @@ std::string fft_check_verdict_text(const FftCheckResult& r) {
   const std::string halves = r.half_period_check ? "; " + half_period_text(r) : "";
   const int spectral_failed = r.failed - (r.half_period_check && !r.half_period_check->passed ? 1 : 0);
   if (r.failed > 0)
-    return "FAILED: " + made + ", " + std::to_string(spectral_failed) + " outside its tolerance" + halves + rest;
+    return "FAILED: " + made + ", " + std::to_string(spectral_failed) +
+           (spectral_failed == 1 ? " outside its tolerance" : " outside their tolerances") + halves + rest;
   if (r.checked == 0) return "NOT CHECKED: no mode's line could be checked (" + not_checked_reasons(r) + ")";
   const std::string within =
       r.nonlinear ? "within " + percent(FftCheck::kNonlinearTolerance) : "each within its line's width";
@@ -282,7 +283,7 @@ void write_json_check(report::JsonWriter& j, const FftCheck& c) {
   j.end_object();
 }
 
-void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene) {
+void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene, const Vehicle& vehicle) {
   report::JsonWriter j(out);
   j.begin_object();
   j.member("checked", r.checked > 0);
@@ -311,6 +312,9 @@ void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene) 
     j.end_object();
   }
   j.member("nonlinear", r.nonlinear).member("passed", r.passed).member("scene", scene.name);
+  j.key("unsimulated_parts").begin_array();
+  for (const std::string& part : unsimulated_parts(scene, vehicle)) j.value(part);
+  j.end_array();
   j.member("verdict", verdict_word(r)).member("verdict_text", fft_check_verdict(r));
   j.end_object();
 }
@@ -355,10 +359,13 @@ void swings_text(std::ostream& out, const FftCheckResult& r) {
   }
 }
 
-void write_table(std::ostream& out, const FftCheckResult& r, const Scene& scene) {
+void write_table(std::ostream& out, const FftCheckResult& r, const Scene& scene, const Vehicle& vehicle) {
   out << "railmodal fft-check: " << scene.name << "\n"
       << "spectra: Hann window, zero-padded x4, of " << r.history.time.size() << " samples at "
-      << 1.0 / scene.simulation->time_step << " Hz\n\n";
+      << 1.0 / scene.simulation->time_step << " Hz\n";
+  // In the header, where it is read before the checks it explains (an undamped resonance).
+  for (const std::string& part : unsimulated_parts(scene, vehicle)) out << "warning: " << part << "\n";
+  out << "\n";
   out << std::left << std::setw(5) << "#" << std::setw(32) << "mode" << std::setw(16) << "dof" << std::right
       << std::setw(11) << "modal [Hz]" << std::setw(11) << "peak [Hz]" << std::setw(12) << "rel. error" << std::setw(13)
       << "resol. [Hz]" << "  check\n";
@@ -391,6 +398,8 @@ void write_html(std::ostream& out, const FftCheckResult& r, const Scene& scene, 
   if (sim.effects.empty()) out << "none (the linear, undamped model)";
   for (size_t i = 0; i < sim.effects.size(); ++i) out << (i ? ", " : "") << html_escape(sim.effects[i]);
   out << ".</p>\n";
+  for (const std::string& part : unsimulated_parts(scene, vehicle))
+    out << "<p><b>Warning:</b> " << html_escape(part) << ".</p>\n";
   if (!r.spectra.empty()) {
     const Spectrum& s = r.spectra.front();
     out << "<p>Spectra: " << to_string(s.window) << " window, " << s.signal_length << " samples zero-padded to "
@@ -426,9 +435,9 @@ std::string fft_check_verdict(const FftCheckResult& result) { return fft_check_v
 void write_fft_check(std::ostream& out, const FftCheckResult& result, const Scene& scene, const Vehicle& vehicle,
                      OutputFormat format, const Provenance& provenance) {
   switch (format) {
-    case OutputFormat::table: write_table(out, result, scene); break;
+    case OutputFormat::table: write_table(out, result, scene, vehicle); break;
     case OutputFormat::csv: write_csv(out, result); break;
-    case OutputFormat::json: write_json(out, result, scene); break;
+    case OutputFormat::json: write_json(out, result, scene, vehicle); break;
     case OutputFormat::html: write_html(out, result, scene, vehicle, provenance); break;
     default:
       throw std::invalid_argument(report::unwritten_format("write_fft_check", "table, csv, json or html", format));

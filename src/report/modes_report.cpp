@@ -23,8 +23,10 @@ std::string centre_text(const Mode& mode) {
   std::ostringstream s;
   // Round-off must not print as "-0.000".
   const double position = std::abs(c.position) < 5e-4 ? 0.0 : c.position;
+  // With its datum (the vehicle frame, docs/input.md): a roll centre's z is no height above the
+  // body's reference point nor above rail, and reads as either without it.
   s << std::fixed << std::setprecision(3) << (c.about == "roll" ? "roll, z = " : "pitch, x = ")
-    << position << " m";
+    << position << (c.about == "roll" ? " m from the axle plane" : " m in the vehicle frame");
   return s.str();
 }
 

@@ -161,6 +161,26 @@ Table indices_table(const RideResult& r, const RideAtSpeed& at) {
   return t;
 }
 
+// What a partial N_MV covers, "vertical only", when a lateral or vertical axis of the point has no
+// output (taken as 0, the vertical-only coach reads 0.76 where all its axes give 0.99); "" when
+// both are there: the longitudinal axis, which no bundled scene outputs, is only named.
+std::string nmv_scope(const RideComfortAtPoint& c) {
+  const auto missing = [&c](RideAxis a) {
+    return std::find(c.missing_axes.begin(), c.missing_axes.end(), a) != c.missing_axes.end();
+  };
+  if (!missing(RideAxis::lateral) && !missing(RideAxis::vertical)) return "";
+  std::string present;
+  for (RideAxis a : {RideAxis::longitudinal, RideAxis::lateral, RideAxis::vertical})
+    if (!missing(a)) present += (present.empty() ? "" : " and ") + std::string(to_string(a));
+  return present + " only";
+}
+
+// The N_MV as people read it: "0.76 (vertical only)" for a partial one.
+std::string nmv_text(const RideComfortAtPoint& c) {
+  const std::string scope = nmv_scope(c);
+  return fixed(c.nmv_estimate, 2) + (scope.empty() ? "" : " (" + scope + ")");
+}
+
 Table comfort_table(const std::vector<RideComfortAtPoint>& comfort, const std::vector<RideOutput>& outputs,
                     const std::string& heading) {
   Table t;
@@ -169,7 +189,7 @@ Table comfort_table(const std::vector<RideComfortAtPoint>& comfort, const std::v
   for (const RideComfortAtPoint& c : comfort) {
     std::string missing;
     for (RideAxis a : c.missing_axes) missing += (missing.empty() ? "" : ", ") + std::string(to_string(a));
-    t.rows.push_back({point_text(c, outputs), fixed(c.nmv_estimate, 2), missing.empty() ? "–" : missing + " (taken as 0)"});
+    t.rows.push_back({point_text(c, outputs), nmv_text(c), missing.empty() ? "–" : missing + " (taken as 0)"});
   }
   return t;
 }
@@ -453,7 +473,8 @@ report::Chart nmv_chart(const RideResult& r) {
   if (r.speeds.empty()) return c;
   for (const RideComfortAtPoint* point : comfort_points(r)) {
     report::ChartSeries s;
-    s.label = point_text(*point, r.outputs);
+    const std::string scope = nmv_scope(*point);
+    s.label = point_text(*point, r.outputs) + (scope.empty() ? "" : " (" + scope + ")");
     for (const RideAtSpeed& at : r.speeds)
       if (const RideComfortAtPoint* c = comfort_at(at, *point))
         s.x.push_back(at.speed * kKmh), s.y.push_back(c->nmv_estimate);
@@ -658,7 +679,10 @@ void write_csv(std::ostream& out, const RideResult& r) {
       csv.field(csv_heading(o.name + " p95 estimate", "m/s²")).field(o.name + " sperling wz");
   }
   const std::vector<const RideComfortAtPoint*> points = comfort_points(r);
-  for (const RideComfortAtPoint* c : points) csv.field("nmv estimate " + point_text(*c, r.outputs));
+  for (const RideComfortAtPoint* c : points) {
+    const std::string scope = nmv_scope(*c);
+    csv.field("nmv estimate " + (scope.empty() ? "" : "(" + scope + ") ") + point_text(*c, r.outputs));
+  }
   csv.end_row();
   for (const RideAtSpeed& at : r.speeds) {
     finite_field(csv, kmh_value(at.speed));
@@ -721,6 +745,8 @@ void write_comfort(JsonWriter& j, const std::vector<RideComfortAtPoint>& comfort
     j.begin_object().member("body", c.body).key("missing_axes").begin_array();
     for (RideAxis x : c.missing_axes) j.value(to_string(x));
     j.end_array().member(key, c.nmv_estimate);
+    // A partial N_MV says so beside its figure (absent for one over the lateral and vertical axes).
+    if (const std::string scope = nmv_scope(c); !scope.empty()) j.member("partial", scope);
     write_point(j, c.point);
     j.end_object();
   }

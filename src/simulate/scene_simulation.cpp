@@ -251,6 +251,67 @@ LinearSystem scene_system(const Scene& scene, const Vehicle& vehicle) {
   return assemble(v, scene.dofs);
 }
 
+namespace {
+
+// How many of the vehicle's parts in `dofs` `counts` finds: dampers or spring stages, each
+// direction of an element on its own (a vertical-only scene has no use for the lateral ones).
+int count_parts(const Vehicle& vehicle, DofSet dofs, int (*counts)(const Element&, bool vertical)) {
+  int n = 0;
+  for (const Element& e : vehicle.elements) {
+    if (dofs != DofSet::lateral) n += counts(e, true);
+    if (dofs != DofSet::vertical) n += counts(e, false);
+  }
+  return n;
+}
+
+int stages_where(const std::vector<SpringStage>& stages, bool (*has)(const SpringStage&)) {
+  return static_cast<int>(std::count_if(stages.begin(), stages.end(), has));
+}
+
+// "add effects = [\"x\"]" to a scene that names none; "add \"x\" to effects" to one that names some.
+std::string add_effect(const Scene& scene, const std::string& effect) {
+  return scene.simulation->effects.empty() ? "add effects = [\"" + effect + "\"]"
+                                           : "add \"" + effect + "\" to effects";
+}
+
+}  // namespace
+
+std::vector<std::string> unsimulated_parts(const Scene& scene, const Vehicle& vehicle) {
+  std::vector<std::string> out;
+  // "effects = []" written in the file: the linear, undamped model chosen, not forgotten.
+  if (!scene.simulation || (scene.simulation->effects.empty() && scene.name_places.count("simulation.effects")))
+    return out;
+  // What scene_system leaves out without "viscous_dampers": the vertical and lateral dampers.
+  const int dampers = count_parts(vehicle, scene.dofs, [](const Element& e, bool vertical) {
+    return static_cast<int>((vertical ? e.vertical_damping : e.lateral_damping) > 0.0);
+  });
+  if (dampers > 0 && !names(scene, "viscous_dampers"))
+    out.push_back(std::to_string(dampers) + (dampers == 1 ? " viscous damper" : " viscous dampers") +
+                  " in the vehicle " + (dampers == 1 ? "is" : "are") + " not simulated (C = 0): " +
+                  add_effect(scene, "viscous_dampers"));
+  // Leaf friction acts on the vertical stages only (docs/scenes.md, "leaf_friction").
+  const int leaves = scene.dofs == DofSet::lateral
+                         ? 0
+                         : count_parts(vehicle, DofSet::vertical, [](const Element& e, bool) {
+                             return stages_where(e.vertical_stages,
+                                                 [](const SpringStage& s) { return s.relative_friction > 0.0; });
+                           });
+  if (leaves > 0 && !names(scene, "leaf_friction"))
+    out.push_back(std::to_string(leaves) + (leaves == 1 ? " spring stage" : " spring stages") +
+                  " with leaf friction in the vehicle " + (leaves == 1 ? "is" : "are") +
+                  " simulated without it: " + add_effect(scene, "leaf_friction"));
+  const int curves = count_parts(vehicle, scene.dofs, [](const Element& e, bool vertical) {
+    return stages_where(vertical ? e.vertical_stages : e.lateral_stages,
+                        [](const SpringStage& s) { return s.curve.has_value(); });
+  });
+  if (curves > 0 && !names(scene, "progressive_springs"))
+    out.push_back(std::to_string(curves) + (curves == 1 ? " progressive spring" : " progressive springs") +
+                  " in the vehicle " + (curves == 1 ? "is" : "are") +
+                  " simulated as linear (the tangent at the carried load): " +
+                  add_effect(scene, "progressive_springs"));
+  return out;
+}
+
 TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle) {
   return simulate::recorded([&](HistorySink& sink) { return simulate_scene(scene, vehicle, {&sink}); });
 }

@@ -62,6 +62,25 @@ TEST(VehicleReader, UnknownKey) {
                {"bad.toml:7:", "key 'body.colour': unknown key"});
 }
 
+// An unknown key is pointed at the key it likely meant, as a study's misspelt names are: a typo
+// within two edits ("spring_spaceing"), or a word of the keys asked for ("damping" of
+// the [suspension]'s vertical_damping and lateral_damping; audit 2026-11-27b, bad1.toml).
+TEST(VehicleReader, UnknownKeySaysWhatItLikelyMeant) {
+  expect_error("spring_spacing = \"200 cm\"", "spring_spacing = \"200 cm\"\ndamping = \"10 kN*s/m\"",
+               {"key 'suspension.damping': unknown key (misspelt, or not used here); did you mean",
+                "'vertical_damping'", "'lateral_damping'"});
+  expect_error("spring_spacing = \"200 cm\"", "spring_spacing = \"200 cm\"\nvertical_dampign = \"10 kN*s/m\"",
+               {"key 'suspension.vertical_dampign': unknown key (misspelt, or not used here); did you mean "
+                "'vertical_damping'?"});
+  // Nothing near: no suggestion.
+  try {
+    load_vehicle(write_temp("colour.toml", kGood + "colour = \"red\"\n"));
+    FAIL() << "no error for colour";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find("did you mean"), std::string::npos) << e.what();
+  }
+}
+
 TEST(VehicleReader, WrongType) {
   expect_error("\"400 cm\"", "true", {"bad.toml:9:", "key 'suspension.wheelbase'", "got a boolean"});
 }

@@ -81,6 +81,17 @@ TEST(BalanceReport, CsvIsOneTableOfNumbersAtFullPrecision) {
 
 // --alpha 0.3 holds the coupled wheels at 0.3; the book's rule leaves a driving wheel above it,
 // and the report says why, in every format a person reads, and in the JSON's notes.
+// README and docs/driving_gear.md call the dynamic wheel load dP the hammer blow: every report
+// for people says the term where it prints dP (audit 2026-11-27b found it nowhere).
+TEST(BalanceReport, DynamicWheelLoadIsCalledTheHammerBlow) {
+  const BalanceStudy study = su_study(0.0);
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html}) {
+    const std::string text = written(study, f);
+    EXPECT_NE(text.find("dP on the rail: the hammer blow"), std::string::npos) << to_string(f);
+    EXPECT_NE(text.find("max dP, hammer blow [kN]"), std::string::npos) << to_string(f);
+  }
+}
+
 TEST(BalanceReport, ExplainsAnAlphaAboveTheAllowedOne) {
   const BalanceStudy study = su_study(0.3);
   double book_alpha = 0.0;

@@ -1,5 +1,7 @@
 // The modes tables keep their columns apart however large the numbers (issue 18 item 15: at
 // ω ≥ 1e8 the frequency, period and ω of a stiff mode ran together into one word).
+#include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -94,6 +96,30 @@ TEST(ModesTable, AbsurdFrequencyStaysANumberOfAFewDigits) {
   ASSERT_EQ(row.size(), 5u) << out.str();
   EXPECT_EQ(row[2], "1.5915e+149") << out.str();
   EXPECT_EQ(row[4], "1.000e+150") << out.str();
+}
+
+// A centre of oscillation is given with its datum (audit 2026-11-27b: "roll, z = -2.060 m" read as
+// a height above the body or the rail, where it is the vehicle frame's z from the axle plane).
+// The figure is the mode's CentreOfOscillation, printed to the millimetre.
+TEST(ModesTable, CentresOfOscillationSayTheirDatum) {
+  const LinearSystem sys = assemble(load_vehicle(data_file("manchester_benchmark_coach.toml")), DofSet::all);
+  const ModalResult modes = solve_modes(sys);
+  std::ostringstream table, csv;
+  write_modes(table, sys, modes, OutputFormat::table);
+  write_modes(csv, sys, modes, OutputFormat::csv);
+  int rolls = 0;
+  for (const Mode& m : modes.modes) {
+    if (!m.centre || m.centre->at_infinity) continue;
+    char figure[32];
+    // As the writer rounds: a centre within half a millimetre of 0 is 0.000, never -0.000.
+    std::snprintf(figure, sizeof figure, "%.3f", std::abs(m.centre->position) < 5e-4 ? 0.0 : m.centre->position);
+    const std::string said = m.centre->about == "roll" ? std::string("roll, z = ") + figure + " m from the axle plane"
+                                                       : std::string("pitch, x = ") + figure + " m in the vehicle frame";
+    EXPECT_NE(table.str().find(said), std::string::npos) << said;
+    EXPECT_NE(csv.str().find(said), std::string::npos) << said;
+    rolls += m.centre->about == "roll";
+  }
+  EXPECT_GT(rolls, 0);  // the coach's sways: the datum was said at least once
 }
 
 }  // namespace

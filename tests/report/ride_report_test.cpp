@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -70,6 +71,13 @@ std::string written(const RideResult& r, OutputFormat format, const RideSimulati
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+// A figure as the tables print it, with two decimals.
+std::string report_fixed_2(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", x);
+  return text;
+}
+
 TEST(RideReport, TableSaysEveryIndexAndTheUnbounded) {
   const std::string t = written(hand_built(), OutputFormat::table);
   EXPECT_TRUE(has(t, "Ride: hand-built coach")) << t;
@@ -83,6 +91,31 @@ TEST(RideReport, TableSaysEveryIndexAndTheUnbounded) {
   EXPECT_FALSE(std::regex_search(t, std::regex("\\b(nan|inf|NaN)\\b"))) << t;
 }
 
+// An N_MV without a lateral (or vertical) output is not the point's N_MV (audit 2026-11-27b: the
+// vertical-only coach read "N_MV 0.76" where all its axes give 0.99): every format says what it
+// covers; one over both axes (the longitudinal only missing, as in every bundled scene) is plain.
+TEST(RideReport, PartialNmvIsLabelledInEveryFormat) {
+  const RideResult vertical = hand_built();  // its floor point has no lateral output
+  const std::string nmv = report_fixed_2(vertical.speeds[1].comfort[0].nmv_estimate);
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html})
+    EXPECT_TRUE(has(written(vertical, f), nmv + " (vertical only)")) << written(vertical, f);
+  EXPECT_TRUE(has(written(vertical, OutputFormat::html), "floor over bogie 1: body (9.5, 0, 1.2) m (vertical only)"));
+  EXPECT_TRUE(has(written(vertical, OutputFormat::csv), "nmv estimate (vertical only) floor over bogie 1"));
+  EXPECT_TRUE(has(written(vertical, OutputFormat::json), "\"partial\":\"vertical only\""));
+
+  RideResult lateral = hand_built();
+  for (RideAtSpeed& at : lateral.speeds) at.comfort[0].missing_axes = {RideAxis::longitudinal, RideAxis::vertical};
+  EXPECT_TRUE(has(written(lateral, OutputFormat::table), nmv + " (lateral only)"));
+
+  RideResult both = hand_built();
+  for (RideAtSpeed& at : both.speeds) at.comfort[0].missing_axes = {RideAxis::longitudinal};
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html, OutputFormat::csv,
+                         OutputFormat::json}) {
+    EXPECT_FALSE(has(written(both, f), "vertical only")) << written(both, f);
+    EXPECT_FALSE(has(written(both, f), "\"partial\"")) << written(both, f);
+  }
+}
+
 TEST(RideReport, CsvHasUnitsInItsHeadsAndOneRowPerSpeed) {
   const std::string csv = written(hand_built(), OutputFormat::csv);
   std::istringstream in(csv);
@@ -93,7 +126,7 @@ TEST(RideReport, CsvHasUnitsInItsHeadsAndOneRowPerSpeed) {
   EXPECT_TRUE(has(head, "\"floor over bogie 1, vertical rms [m/s²]\"")) << head;
   EXPECT_TRUE(has(head, "secondary spring force rms [N]")) << head;
   EXPECT_TRUE(has(head, "p95 estimate [m/s²]")) << head;
-  EXPECT_TRUE(has(head, "nmv estimate floor over bogie 1: body (9.5, 0, 1.2) m")) << head;
+  EXPECT_TRUE(has(head, "nmv estimate (vertical only) floor over bogie 1: body (9.5, 0, 1.2) m")) << head;
   EXPECT_EQ(row1.rfind("100,", 0), 0u) << row1;
   EXPECT_TRUE(has(row1, ",unbounded,")) << row1;
   // As many fields in every row as in the head (quoted commas counted once).
@@ -171,8 +204,8 @@ TEST(RideReport, NmvColumnsGoByThePointWhereAPointIsUnboundedAtSomeSpeeds) {
     return out;
   };
   // Headings may hold commas inside quotes: count the N_MV columns from the end.
-  ASSERT_TRUE(has(heading, "nmv estimate floor over bogie 1: body (9.5, 0, 1.2) m")) << heading;
-  ASSERT_TRUE(has(heading, "nmv estimate floor over bogie 2: body (-9.5, 0, 1.2) m")) << heading;
+  ASSERT_TRUE(has(heading, "nmv estimate (vertical only) floor over bogie 1: body (9.5, 0, 1.2) m")) << heading;
+  ASSERT_TRUE(has(heading, "nmv estimate (vertical only) floor over bogie 2: body (-9.5, 0, 1.2) m")) << heading;
   // In the order the speeds first give the points: bogie 2's (the only one at 100 km/h) first.
   EXPECT_LT(heading.find("floor over bogie 2: body"), heading.find("floor over bogie 1: body"));
   const std::vector<std::string> a = fields(first), b = fields(second);

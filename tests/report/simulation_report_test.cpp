@@ -2,6 +2,7 @@
 // order, and their spectra taken exactly as fft-check takes them.
 #include <algorithm>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "railmodal/railmodal.hpp"
@@ -23,6 +24,67 @@ displacement = "10 mm"
 }
 
 std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+// `vehicle` released in bounce, vertical DOFs, its [simulation] naming `effects` (a TOML array;
+// "": no effects key).
+Scene released_with_effects(const std::string& vehicle, const std::string& effects) {
+  return load_scene(write_temp("effects.toml", "[scene]\nname = \"release\"\nvehicle = \"" + data_file(vehicle) +
+                                                   "\"\ndofs = \"vertical\"\n[simulation]\nduration = \"1 s\"\n"
+                                                   "time_step = \"10 ms\"\n" +
+                                                   (effects.empty() ? "" : "effects = " + effects) + R"(
+[[simulation.initial]]
+dof = "body.bounce"
+displacement = "10 mm"
+)"));
+}
+
+// A scene that names no effects leaves the coach's dampers out by design (docs/scenes.md), never
+// silently (audit 2026-11-27b: 178 mm over joints without them, 6.9 mm with them): a sentence
+// counting them, in the fft-check report's header and JSON; none once the effect is named.
+TEST(SimulationReport, DampersTheSceneLeavesOutAreWarned) {
+  const Vehicle coach = load_vehicle(data_file("manchester_benchmark_coach.toml"));
+  // Vertical DOFs: the vertical dampers count, the lateral ones do nothing there.
+  const auto dampers = std::count_if(coach.elements.begin(), coach.elements.end(),
+                                     [](const Element& e) { return e.vertical_damping > 0.0; });
+  ASSERT_GT(dampers, 0);
+  const Scene undamped = released_with_effects("manchester_benchmark_coach.toml", "");
+  const std::vector<std::string> parts = unsimulated_parts(undamped, coach);
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_EQ(parts[0], std::to_string(dampers) +
+                          " viscous dampers in the vehicle are not simulated (C = 0): add effects = "
+                          "[\"viscous_dampers\"]");
+  const FftCheckResult r = fft_check(undamped, coach);
+  std::ostringstream table, json;
+  write_fft_check(table, r, undamped, coach, OutputFormat::table);
+  write_fft_check(json, r, undamped, coach, OutputFormat::json);
+  EXPECT_NE(table.str().find("warning: " + parts[0] + "\n"), std::string::npos) << table.str();
+  EXPECT_LT(table.str().find("warning: "), table.str().find("#    mode"));  // in the header, above the checks
+  EXPECT_EQ(nlohmann::json::parse(json.str()).at("unsimulated_parts"), nlohmann::json(parts));
+
+  // "effects = []" written: the undamped model chosen on purpose, not warned.
+  EXPECT_TRUE(unsimulated_parts(released_with_effects("manchester_benchmark_coach.toml", "[]"), coach).empty());
+
+  const Scene damped = released_with_effects("manchester_benchmark_coach.toml", "[\"viscous_dampers\"]");
+  EXPECT_TRUE(unsimulated_parts(damped, coach).empty());
+  const FftCheckResult d = fft_check(damped, coach);
+  std::ostringstream quiet, quiet_json;
+  write_fft_check(quiet, d, damped, coach, OutputFormat::table);
+  write_fft_check(quiet_json, d, damped, coach, OutputFormat::json);
+  EXPECT_EQ(quiet.str().find("warning"), std::string::npos) << quiet.str();
+  EXPECT_EQ(nlohmann::json::parse(quiet_json.str()).at("unsimulated_parts"), nlohmann::json::array());
+}
+
+// Leaf friction left out is warned alike, and a scene naming another effect is told to add it.
+TEST(SimulationReport, LeafFrictionTheSceneLeavesOutIsWarned) {
+  const Vehicle wagon = load_vehicle(data_file("two_axle_freight_wagon.toml"));
+  const Scene plain = released_with_effects("two_axle_freight_wagon.toml", "[\"progressive_springs\"]");
+  const std::vector<std::string> parts = unsimulated_parts(plain, wagon);
+  ASSERT_EQ(parts.size(), 1u);
+  EXPECT_NE(parts[0].find("with leaf friction in the vehicle"), std::string::npos) << parts[0];
+  EXPECT_NE(parts[0].find("add \"leaf_friction\" to effects"), std::string::npos) << parts[0];
+  EXPECT_TRUE(
+      unsimulated_parts(released_with_effects("two_axle_freight_wagon.toml", "[\"leaf_friction\"]"), wagon).empty());
+}
 
 TEST(SimulationReport, WritesTheNamedOutputsInTheHistorysOrder) {
   const Scene scene = released_wagon(R"(["body.pitch", "body.bounce"])");

@@ -153,6 +153,11 @@ TEST(FftCheck, ResolvedLineOutsideTheToleranceFails) {
   EXPECT_EQ(r.failed, 1);
   EXPECT_FALSE(r.passed);
   EXPECT_EQ(fft_check_verdict(r), "FAILED: 1 of 1 modes checked, 1 outside its tolerance");
+  // More than one outside: each outside its own tolerance (audit 2026-11-27b).
+  FftCheckResult two = r;
+  two.checks.push_back(two.checks.front());
+  two.checked = two.failed = 2;
+  EXPECT_EQ(fft_check_verdict(two), "FAILED: 2 of 2 modes checked, 2 outside their tolerances");
 }
 
 // A longer run of the same forced scene does not make its check: 10 s narrow the lines (the

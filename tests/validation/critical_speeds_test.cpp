@@ -2,11 +2,14 @@
 // vehicle file → assembly → modes → excitation source → critical-speed finder); the digests'
 // formula-level examples (hunting wavelengths, Meineke, E5 and E7 given as k ranges, VB-1,
 // VB-3) go through the source types that the general path uses.
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <filesystem>
+#include <sstream>
 
 #include "railmodal/critical_speed.hpp"
+#include "railmodal/critical_speed_report.hpp"
 #include "response/critical_speed_study.hpp"
 #include "response/friction_damping.hpp"
 #include "test_support.hpp"
@@ -34,6 +37,22 @@ double kmh(const CriticalSpeed& r) { return r.speed * 3.6; }
 
 // Two-axle digest, Example 3 (derived table): bounce resonance at V = L/T on 10, 12.5 and
 // 15 m rails, 75.0 / 93.8 / 112.6 km/h (T = 0.4798 s). The digest prints one decimal: ±0.05.
+// The growth per half period is the book's undamped secular growth (168d), (274), what Den
+// Hartog's friction criterion weighs; a damped coach's resonance does not grow, so the reports
+// head the figure "if undamped" (audit 2026-11-27b read 3.83 mm of growth for a finite amplitude).
+TEST(CriticalSpeeds, GrowthOfADampedResonanceIsHeadedIfUndamped) {
+  const CriticalSpeedStudy coach = study("manchester_coach_hunting.toml");
+  ASSERT_TRUE(std::any_of(coach.critical_speeds.begin(), coach.critical_speeds.end(), [](const CriticalSpeed& c) {
+    return !c.unbounded && c.growth_per_half_period > 0.0;  // damped, finite, and a growth given
+  }));
+  for (OutputFormat f : {OutputFormat::markdown, OutputFormat::html}) {
+    std::ostringstream out;
+    write_critical_speed_report(out, coach, f);
+    EXPECT_NE(out.str().find("growth per half period if undamped"), std::string::npos) << to_string(f);
+    EXPECT_EQ(out.str().find("undamped growth"), std::string::npos) << to_string(f);
+  }
+}
+
 TEST(CriticalSpeeds, TwoAxleFreightWagonBounceOnThreeRailLengths) {
   const auto s = study("two_axle_freight_wagon_joints.toml");
   EXPECT_NEAR(kmh(row(s, 0, 1, "body bounce")), 75.0, 0.05);
@@ -443,6 +462,28 @@ TEST(CriticalSpeeds, ReciprocatingSeriesVB3) {
   EXPECT_NEAR(reciprocating_coefficient(1 / 4.0, 4), -0.00410, 1e-5);
   EXPECT_NEAR(reciprocating_coefficient(1 / 6.0, 4), -0.00118, 1e-5);
   EXPECT_EQ(reciprocating_coefficient(1 / 4.0, 3), 0.0);
+}
+
+// "Critical speed" is also the onset of hunting (docs/stability.md): a report on a kinematic-
+// hunting source says in every format that its speeds are resonances to that input and where the
+// stability critical speed is (audit 2026-11-27b); a report on rail joints has no such note.
+TEST(CriticalSpeeds, AHuntingSourcesReportSaysItsSpeedsAreResonances) {
+  const std::string says = "resonances to a kinematic (forced) input";
+  const auto report = [](const CriticalSpeedStudy& st, OutputFormat f) {
+    std::ostringstream out;
+    write_critical_speed_report(out, st, f);
+    return out.str();
+  };
+  const CriticalSpeedStudy hunting = study("manchester_coach_hunting.toml");
+  for (OutputFormat f : {OutputFormat::markdown, OutputFormat::html, OutputFormat::csv, OutputFormat::json}) {
+    const std::string text = report(hunting, f);
+    EXPECT_NE(text.find(says), std::string::npos) << to_string(f);
+    EXPECT_NE(text.find("`railmodal stability`"), std::string::npos) << to_string(f);
+  }
+  EXPECT_NE(report(hunting, OutputFormat::csv).find("# note: these critical speeds are resonances"), std::string::npos);
+  const CriticalSpeedStudy joints = study("resort_car_10m_rails.toml");
+  for (OutputFormat f : {OutputFormat::markdown, OutputFormat::html, OutputFormat::csv, OutputFormat::json})
+    EXPECT_EQ(report(joints, f).find(says), std::string::npos) << to_string(f);
 }
 
 }  // namespace

@@ -41,6 +41,9 @@ int load(const SimulateOptions& o, Scene* scene, Vehicle* vehicle) {
   *vehicle = load_vehicle(scene->vehicle_file);
   print_input_warnings(vehicle->warnings);
   print_input_warnings(scene_warnings(*scene, *vehicle));  // an effect the vehicle has nothing for
+  // A part the scene's effects leave out (its dampers): accepted by design, never silently.
+  for (const std::string& part : unsimulated_parts(*scene, *vehicle))
+    std::cerr << o.scene << ": warning: " << part << "\n";
   return kSuccess;
 }
 
