@@ -118,8 +118,9 @@ struct HuntingResult {
   std::vector<double> speeds;  ///< m/s, the grid
   std::vector<std::string> dofs;  ///< labels of the degrees of freedom (the first-order system's
                                   ///< displacement half), in order
-  /// The oscillatory branches (Im λ > 0 at some speed), least damped first at the top speed. Roots
-  /// real at every speed (the creep roots, a series damper's relaxation −k/c) are not branches.
+  /// The oscillatory branches (Im λ above 1 % of |λ| at some speed), least damped first at the
+  /// top speed. Roots real, or overdamped pairs, at every speed (the creep roots, a series
+  /// damper's relaxation −k/c) are not branches and not in the continuity check.
   std::vector<HuntingBranch> branches;
   HuntingVerdict verdict = HuntingVerdict::stable_throughout;
   std::optional<HuntingCriticalSpeed> critical;

@@ -6,9 +6,13 @@
 // speed falls as the conicity grows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
+#include <fstream>
+#include <iterator>
 #include <limits>
+#include <string>
 
 #include "railmodal/railmodal.hpp"
 #include "test_support.hpp"
@@ -75,6 +79,36 @@ TEST(HuntingManchesterCoach, DesignCurveFollowsTheRigidBogie) {
     else
       EXPECT_LT(std::abs(departure), 0.2) << "λ = " << p.conicity;
   }
+}
+
+// A series (yaw) damper adds the state of its force, whose root −k/c (here −10 MN/m / 400 kN·s/m
+// = −25/s) pairs by round-off with a creep root into a pair whose Im λ stays under 1 % of |λ|:
+// it never oscillates. Counted among the oscillatory branches, its plane's MAC near a meeting of
+// real roots failed the continuity check at every grid (user audit 2026-11-27b, 2.1: "CHECK
+// FAILED … MAC 1", exit 6, even at 1000 speeds). It is a real root now: no branch, no check.
+TEST(HuntingManchesterCoach, AYawDamperPassesTheContinuityCheck) {
+  std::ifstream in(data_file("manchester_benchmark_coach_wheelsets.toml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string secondary = "\n[secondary]\n";
+  const size_t at = text.find(secondary);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + secondary.size(),
+              "yaw_damper = { damping = \"400 kN*s/m\", series_stiffness = \"10 MN/m\", spacing = \"2.6 m\" }\n");
+  const Vehicle coach = load_vehicle(write_temp("coach_yaw_damper.toml", text));
+  const LinearSystem system = assemble(coach, DofSet::lateral);
+  ASSERT_FALSE(system.series_dampers.empty());  // the case is exercised
+  HuntingOptions options;
+  options.threads = 1;
+  const HuntingResult r = solve_hunting_stability(system, options);
+  for (const HuntingBranch& b : r.branches) {
+    // Every branch oscillates somewhere (Im λ above 1 % of |λ|, the rule of overdamped_root).
+    EXPECT_TRUE(std::any_of(b.eigenvalues.begin(), b.eigenvalues.end(),
+                            [](std::complex<double> l) { return std::abs(l.imag()) > 0.01 * std::abs(l); }))
+        << b.name;
+    EXPECT_EQ(b.name.find("series damper relaxation"), std::string::npos) << b.name;
+    EXPECT_FALSE(b.veers) << b.name;
+  }
+  EXPECT_TRUE(r.summary.passed());
 }
 
 }  // namespace
