@@ -97,7 +97,7 @@ std::string branch_number(const HuntingResult& r, const std::string& name) {
   return "";
 }
 // "#2 name", or the name alone when no branch has it.
-std::string numbered(const HuntingResult& r, const std::string& name) {
+std::string cited_branch(const HuntingResult& r, const std::string& name) {
   const std::string number = branch_number(r, name);
   return number.empty() ? name : number + " " + name;
 }
@@ -109,13 +109,20 @@ std::string kinematic_frequencies(const HuntingCriticalSpeed& c) {
          (c.bogie_frequency_hz > 0.0 ? "; a rigid bogie's V/Λ_b: " + fixed(c.bogie_frequency_hz, 3) + " Hz" : "");
 }
 
+// "#2 'name'", or 'name' when no branch has it: the branch in a sentence.
+std::string quoted_branch(const HuntingResult& r, const std::string& name) {
+  const std::string number = branch_number(r, name);
+  return (number.empty() ? "" : number + " ") + "'" + name + "'";
+}
+
 // The critical speed with its frequency and the kinematic ones beside it.
 std::string critical_text(const HuntingResult& r, const HuntingCriticalSpeed& c) {
   // A branch is named after its shape at the lowest speed; at the critical speed it may move
   // otherwise (the coach's branch 'body lateral/roll' hunts as its bogies): said after it.
-  std::string branch = "branch " + (branch_number(r, c.branch).empty() ? "" : branch_number(r, c.branch) + " ") +
-                       "'" + c.branch + "'";
-  if (!c.motion.empty() && c.motion != c.branch) branch += ", moving there as " + c.motion;
+  std::string branch = "branch " + quoted_branch(r, c.branch);
+  // (Not when the motion is the branch's name but for its " (kinematic)" or " (2)".)
+  const bool same = c.motion == c.branch || c.branch.rfind(c.motion + " (", 0) == 0;
+  if (!c.motion.empty() && !same) branch += ", moving there as " + c.motion;
   return fixed(c.speed * kKmh, 2) + " km/h (" + significant(c.speed, 8) + " m/s): " + branch +
          ", hunting frequency " + fixed(c.frequency_hz, 3) + " Hz (" + kinematic_frequencies(c) + ")";
 }
@@ -142,7 +149,7 @@ std::string interval_text(const HuntingResult& r, const UnstableInterval& u) {
                                                : "from " + fixed(u.from * kKmh, 2) + " km/h";
   const std::string to =
       u.to_highest_speed ? "still unstable at the highest, " + kmh(u.to) : "to " + fixed(u.to * kKmh, 2) + " km/h";
-  return from + ", " + to + " (" + numbered(r, u.branch) + ")";
+  return from + ", " + to + " (" + cited_branch(r, u.branch) + ")";
 }
 
 // The branches already at or below the threshold at the lowest speed, each with its ζ there:
@@ -163,7 +170,7 @@ std::string threshold_text(const HuntingResult& r) {
   const std::string zeta = "ζ = " + significant(100.0 * *r.damping_threshold, 4) + " %";
   std::string text = "no branch damped more than " + zeta + " at a lower speed falls to it within the range.";
   if (r.threshold_speed)
-    text = "branch " + numbered(r, r.threshold_branch) + " falls to " + zeta + " at " + fixed(*r.threshold_speed * kKmh, 2) +
+    text = "branch " + quoted_branch(r, r.threshold_branch) + " falls to " + zeta + " at " + fixed(*r.threshold_speed * kKmh, 2) +
            " km/h, the lowest speed at which a branch damped more than that at a lower speed falls to it.";
   const std::string below = least_damped_at_lowest_speed(r);
   if (!below.empty())
@@ -195,7 +202,7 @@ Table verdict_table(const HuntingResult& r) {
     const HuntingCriticalSpeed& c = *r.critical;
     t.rows.push_back(
         {"linear critical speed", fixed(c.speed * kKmh, 2) + " km/h = " + significant(c.speed, 8) + " m/s"});
-    t.rows.push_back({"hunting branch", numbered(r, c.branch)});
+    t.rows.push_back({"hunting branch", cited_branch(r, c.branch)});
     t.rows.push_back({"what moves most at that speed", c.motion});
     t.rows.push_back({"hunting frequency", fixed(c.frequency_hz, 3) + " Hz"});
     t.rows.push_back({"Klingel's V/Λ at that speed", fixed(c.klingel_frequency_hz, 3) + " Hz"});
@@ -206,7 +213,7 @@ Table verdict_table(const HuntingResult& r) {
   if (r.damping_threshold) {
     const std::string zeta = "ζ = " + significant(100.0 * *r.damping_threshold, 4) + " %";
     t.rows.push_back({"speed at which a branch falls to " + zeta,
-                      r.threshold_speed ? fixed(*r.threshold_speed * kKmh, 2) + " km/h (" + numbered(r, r.threshold_branch) + ")"
+                      r.threshold_speed ? fixed(*r.threshold_speed * kKmh, 2) + " km/h (" + cited_branch(r, r.threshold_branch) + ")"
                                         : "none in the range"});
     if (!r.below_threshold_at_lowest_speed.empty())
       t.rows.push_back({"at or below " + zeta + " at the lowest speed", least_damped_at_lowest_speed(r)});
@@ -220,7 +227,7 @@ Table intervals_table(const HuntingResult& r) {
     t.rows.push_back(
         {u.from_lowest_speed ? fixed(u.from * kKmh, 2) + " (unstable at the lowest speed)" : fixed(u.from * kKmh, 2),
          u.to_highest_speed ? fixed(u.to * kKmh, 2) + " (still unstable at the highest)" : fixed(u.to * kKmh, 2),
-         numbered(r, u.branch)});
+         cited_branch(r, u.branch)});
   return t;
 }
 
@@ -527,7 +534,7 @@ report::Chart damping_chart(const HuntingResult& r) {
                        "the linear critical speed (km/h)"});
   if (r.threshold_speed)
     c.lines.push_back({"V at ζ = " + significant(threshold, 3) + " %", *r.threshold_speed * kKmh, true,
-                       "where branch " + numbered(r, r.threshold_branch) + " falls to the threshold"});
+                       "where branch " + quoted_branch(r, r.threshold_branch) + " falls to the threshold"});
   for (size_t k = 0; k < r.branches.size(); ++k) {
     const HuntingBranch& b = r.branches[k];
     report::ChartSeries s;
@@ -687,11 +694,16 @@ void write_csv(std::ostream& out, const HuntingResult& r) {
 
 // Every object's members in alphabetical order, as the files had them (json_writer.hpp); a
 // number that is not finite is null (never inf or NaN in JSON).
-// The branch's number in `branches` (1 for the first), null for a name no branch has.
-std::optional<double> json_branch_number(const HuntingResult& r, const std::string& name) {
+// The member `branch_number`: the branch's place in `branches` (1 for the first), null for a
+// name no branch has (a real root's).
+void write_branch_number(JsonWriter& j, const HuntingResult& r, const std::string& name) {
+  j.key("branch_number");
   for (size_t k = 0; k < r.branches.size(); ++k)
-    if (r.branches[k].name == name) return static_cast<double>(k + 1);
-  return std::nullopt;
+    if (r.branches[k].name == name) {
+      j.value(static_cast<int>(k + 1));
+      return;
+    }
+  j.value(nullptr);
 }
 
 // The critical speed; with `tracked` (the vehicle's own conicity, whose branches were followed
@@ -704,7 +716,7 @@ void write_critical(JsonWriter& j, const std::optional<HuntingCriticalSpeed>& c,
   j.begin_object().member("bogie_frequency_hz", c->bogie_frequency_hz > 0.0 ? std::optional<double>(c->bogie_frequency_hz)
                                                                           : std::optional<double>());
   j.member("branch", c->branch);
-  if (tracked) j.member("branch_number", json_branch_number(*tracked, c->branch));
+  if (tracked) write_branch_number(j, *tracked, c->branch);
   j.member("evaluations", c->evaluations);
   j.member("frequency_hz", c->frequency_hz).member("klingel_frequency_hz", c->klingel_frequency_hz);
   j.member("motion", c->motion).member("speed_kmh", c->speed * kKmh).member("speed_m_s", c->speed).end_object();
@@ -757,12 +769,14 @@ void write_json(std::ostream& out, const Page& p) {
   write_line_member(out, "summary", [&](JsonWriter& j) { write_summary(j, r.summary); });
   write_line_member(out, "unstable_intervals", [&](JsonWriter& j) {
     j.begin_array();
-    for (const UnstableInterval& u : r.unstable_intervals)
-      j.begin_object().member("branch", u.branch).member("branch_number", json_branch_number(r, u.branch))
-          .member("from_kmh", u.from * kKmh)
+    for (const UnstableInterval& u : r.unstable_intervals) {
+      j.begin_object().member("branch", u.branch);
+      write_branch_number(j, r, u.branch);
+      j.member("from_kmh", u.from * kKmh)
           .member("from_lowest_speed", u.from_lowest_speed).member("from_m_s", u.from)
           .member("to_highest_speed", u.to_highest_speed).member("to_kmh", u.to * kKmh).member("to_m_s", u.to)
           .end_object();
+    }
     j.end_array();
   });
   write_line_member(out, "damping_threshold", [&](JsonWriter& j) { j.value(r.damping_threshold); });

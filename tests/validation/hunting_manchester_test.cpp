@@ -132,9 +132,12 @@ TEST(HuntingManchesterCoach, TwoBranchesWithOverlappingUnstableIntervals) {
     // ζ of this branch is below 0 at every grid speed inside the interval and not below 0 at
     // the grid speed just under its lower end.
     for (size_t s = 0; s < r.speeds.size(); ++s) {
-      if (r.speeds[s] > u.from && r.speeds[s] < u.to) EXPECT_LT(b->damping_ratio[s], 0.0) << u.branch;
-      if (s + 1 < r.speeds.size() && r.speeds[s] < u.from && r.speeds[s + 1] > u.from)
+      if (r.speeds[s] > u.from && r.speeds[s] < u.to) {
+        EXPECT_LT(b->damping_ratio[s], 0.0) << u.branch;
+      }
+      if (s + 1 < r.speeds.size() && r.speeds[s] < u.from && r.speeds[s + 1] > u.from) {
         EXPECT_GE(b->damping_ratio[s], 0.0) << u.branch;
+      }
     }
   }
   EXPECT_EQ(names.size(), r.unstable_intervals.size());  // one interval per branch here, each its own
@@ -143,6 +146,34 @@ TEST(HuntingManchesterCoach, TwoBranchesWithOverlappingUnstableIntervals) {
   // The critical speed is the first interval's lower end, refined on the least-damped root
   // (1e-8 relative bracket there and on the branch: 1e-7 with margin).
   EXPECT_NEAR(r.critical->speed, r.unstable_intervals.front().from, 1e-7 * r.critical->speed);
+}
+
+// The coach's bogies hunt (the frequency at the critical speed is within 4 % of a rigid bogie's
+// V/Λ_b, docs/stability.md's table), and the name says so: "bogie1+bogie2 hunting", not
+// "wheelset1+wheelset2+wheelset3 hunting", where a threshold on each wheelset's own energy cut
+// the fourth (user audit 2026-11-27b, 1.4). V/Λ_b is given beside Klingel's V/Λ.
+TEST(HuntingManchesterCoach, BogieHuntingIsNamedByTheBogiesWithTheRigidBogieFrequency) {
+  const Vehicle coach = load_vehicle(data_file("manchester_benchmark_coach_wheelsets.toml"));
+  HuntingOptions options;
+  options.threads = 1;
+  const HuntingResult r = solve_hunting_stability(assemble(coach, DofSet::lateral), options);
+  ASSERT_TRUE(r.critical);
+  EXPECT_EQ(r.critical->motion.rfind("bogie1+bogie2 hunting, in phase", 0), 0u) << r.critical->motion;
+  const ResolvedContact& c = r.contacts.front();
+  const double a = 2.56 / 2.0;  // half the wheelbase of the file's bogies
+  const double stretch =
+      std::sqrt(1.0 + a * a * c.creep.f22 / (c.contact_half_spacing * c.contact_half_spacing * c.creep.f11));
+  // The same formula on the same numbers: to round-off (1e-12 relative).
+  EXPECT_NEAR(r.critical->bogie_frequency_hz, r.critical->klingel_frequency_hz / stretch,
+              1e-12 * r.critical->bogie_frequency_hz);
+  EXPECT_LT(std::abs(r.critical->frequency_hz / r.critical->bogie_frequency_hz - 1.0), 0.05);  // −4.0 % measured
+  for (const HuntingBranch& b : r.branches) {
+    // A name lists every wheelset of a family or none: never 3 of the 4.
+    int wheelsets = 0;
+    for (const char* w : {"wheelset1", "wheelset2", "wheelset3", "wheelset4"})
+      wheelsets += b.name.find(w) != std::string::npos ? 1 : 0;
+    EXPECT_NE(wheelsets, 3) << b.name;
+  }
 }
 
 }  // namespace
