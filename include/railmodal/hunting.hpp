@@ -73,13 +73,16 @@ struct HuntingBranch {
   bool veers = false;  ///< some continuity fell below the threshold
 };
 
-/// A speed interval over which the vehicle is unstable (some ζ < 0).
+/// A speed interval over which one branch is unstable (its ζ < 0); intervals of different
+/// branches may overlap.
 struct UnstableInterval {
   double from = 0.0;  ///< m/s
   double to = 0.0;    ///< m/s
   bool from_lowest_speed = false;  ///< already unstable at the lowest speed of the grid
   bool to_highest_speed = false;   ///< still unstable at the highest speed of the grid
-  std::string branch;              ///< the branch that is unstable there (the least damped)
+  /// The branch whose ζ is below 0 there, by its name (HuntingBranch::name); a root real at
+  /// every speed (no branch) by its group's name, "… (real root)" or a series damper's relaxation.
+  std::string branch;
 };
 
 /// The linear critical speed: where the least-damped branch's ζ crosses 0 from stable below.
@@ -92,10 +95,17 @@ struct HuntingCriticalSpeed {
   /// What moves most in the unstable mode at the critical speed, named as branches are
   /// ("bogie1 lateral/yaw"), from the eigenvector at the refined critical speed only: the same
   /// on any grid that finds the same crossing. A branch keeps the name of what it was at the
-  /// lowest speed, which after veering can be another body.
+  /// lowest speed, which after veering can be another body. Where that name is another
+  /// branch's (but for its " (kinematic)" and " (2)"), " (shape at the critical speed)" follows
+  /// it, so that it is never read as that branch.
   std::string motion;
   double frequency_hz = 0.0;   ///< the hunting frequency there
   double klingel_frequency_hz = 0.0;  ///< V/Λ of the wheelsets' kinematic wavelength Λ
+  /// V/Λ_b of a rigid bogie's kinematic wavelength Λ_b = 2π√((r0·l0/λ)(1 + a²f22/(l0²f11))),
+  /// a its half wheelbase (docs/stability.md, "The equations of motion"): the frequency a
+  /// bogie's hunting is compared with. The shortest Λ_b of the vehicle's bogies; 0 for a
+  /// vehicle without bogies (fewer than two bodies each carrying two or more wheelsets).
+  double bogie_frequency_hz = 0.0;
   int evaluations = 0;         ///< eigen-solves the refinement took
 };
 
@@ -118,12 +128,17 @@ struct HuntingResult {
   std::vector<double> speeds;  ///< m/s, the grid
   std::vector<std::string> dofs;  ///< labels of the degrees of freedom (the first-order system's
                                   ///< displacement half), in order
-  /// The oscillatory branches (Im λ > 0 at some speed), least damped first at the top speed. Roots
-  /// real at every speed (the creep roots, a series damper's relaxation −k/c) are not branches.
+  /// The oscillatory branches (Im λ above 1 % of |λ| at some speed), least damped first at the
+  /// top speed. Roots real, or overdamped pairs, at every speed (the creep roots, a series
+  /// damper's relaxation −k/c) are not branches and not in the continuity check.
   std::vector<HuntingBranch> branches;
   HuntingVerdict verdict = HuntingVerdict::stable_throughout;
   std::optional<HuntingCriticalSpeed> critical;
-  std::vector<UnstableInterval> unstable_intervals;  ///< every one, in order of speed
+  /// Every branch's unstable intervals, each end where that branch's ζ crosses 0 (refined), in
+  /// order of their lower ends (ties in the order of `branches`); the least-damped root's
+  /// intervals held by no branch (a real root's) too. The critical speed is the lowest end of
+  /// the least-damped root's, which is one of these.
+  std::vector<UnstableInterval> unstable_intervals;
   /// HuntingOptions::damping_threshold as asked (none: not asked), for the reports.
   std::optional<double> damping_threshold;
   /// The lowest speed at which an oscillatory branch whose ζ was ABOVE

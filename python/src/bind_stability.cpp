@@ -25,7 +25,17 @@ py::object critical_dict(const std::optional<HuntingCriticalSpeed>& c) {
   if (!c) return py::none();
   return py::dict(py::arg("speed_m_s") = c->speed, py::arg("branch") = c->branch, py::arg("motion") = c->motion,
                   py::arg("frequency_hz") = c->frequency_hz, py::arg("klingel_frequency_hz") = c->klingel_frequency_hz,
+                  py::arg("bogie_frequency_hz") =
+                      c->bogie_frequency_hz > 0.0 ? py::object(py::float_(c->bogie_frequency_hz)) : py::none(),
                   py::arg("evaluations") = c->evaluations);
+}
+
+// The place of the branch named `name` in HuntingResult::branches from 1, as the reports number
+// them; None for a name no branch has (a real root's group).
+py::object branch_number(const HuntingResult& r, const std::string& name) {
+  for (size_t k = 0; k < r.branches.size(); ++k)
+    if (r.branches[k].name == name) return py::int_(k + 1);
+  return py::none();
 }
 
 // The root locus as one array per quantity, speeds × branches (the branches in HuntingResult order).
@@ -136,10 +146,12 @@ void bind_hunting(py::module_& m) {
                                  out.append(py::dict(py::arg("from_m_s") = u.from, py::arg("to_m_s") = u.to,
                                                      py::arg("from_lowest_speed") = u.from_lowest_speed,
                                                      py::arg("to_highest_speed") = u.to_highest_speed,
-                                                     py::arg("branch") = u.branch));
+                                                     py::arg("branch") = u.branch,
+                                                     py::arg("branch_number") = branch_number(r, u.branch)));
                                return out;
                              },
-                             "records, in order of speed")
+                             "records, one per branch and interval, in order of their lower ends; branch_number "
+                             "is the branch's place in `branches` from 1 (None for a real root)")
       .def_property_readonly("damping_threshold",
                              [](const HuntingResult& r) { return optional_value(r.damping_threshold); })
       .def_property_readonly("threshold_speed_m_s",

@@ -88,23 +88,50 @@ std::string range_text(const HuntingResult& r) {
          " speeds";
 }
 
-// The critical speed with its frequency and Klingel's beside it.
-std::string critical_text(const HuntingCriticalSpeed& c) {
-  // A branch is named after its shape at the lowest speed; at the critical speed it may be
-  // another motion (the coach's 'body lateral/roll' hunts as its wheelsets): that one first.
-  const std::string branch = c.motion.empty() || c.motion == c.branch
-                                 ? "branch '" + c.branch + "'"
-                                 : c.motion + " (on the branch named '" + c.branch + "' after its shape at the lowest speed)";
+// The number of the branch named `name` in the branch table ("#2"), "" for a name no branch has
+// (a real root's group). Every mention of a branch cites it, so that one branch has one name
+// wherever it appears (user audit 2026-11-27b, 1.4).
+std::string branch_number(const HuntingResult& r, const std::string& name) {
+  for (size_t k = 0; k < r.branches.size(); ++k)
+    if (r.branches[k].name == name) return "#" + std::to_string(k + 1);
+  return "";
+}
+// "#2 name", or the name alone when no branch has it.
+std::string cited_branch(const HuntingResult& r, const std::string& name) {
+  const std::string number = branch_number(r, name);
+  return number.empty() ? name : number + " " + name;
+}
+
+// The frequencies a hunting frequency is held against: Klingel's V/Λ of a free wheelset, and for
+// a vehicle on bogies the rigid bogie's V/Λ_b (HuntingCriticalSpeed::bogie_frequency_hz).
+std::string kinematic_frequencies(const HuntingCriticalSpeed& c) {
+  return "Klingel's V/Λ there: " + fixed(c.klingel_frequency_hz, 3) + " Hz" +
+         (c.bogie_frequency_hz > 0.0 ? "; a rigid bogie's V/Λ_b: " + fixed(c.bogie_frequency_hz, 3) + " Hz" : "");
+}
+
+// "#2 'name'", or 'name' when no branch has it: the branch in a sentence.
+std::string quoted_branch(const HuntingResult& r, const std::string& name) {
+  const std::string number = branch_number(r, name);
+  return (number.empty() ? "" : number + " ") + "'" + name + "'";
+}
+
+// The critical speed with its frequency and the kinematic ones beside it.
+std::string critical_text(const HuntingResult& r, const HuntingCriticalSpeed& c) {
+  // A branch is named after its shape at the lowest speed; at the critical speed it may move
+  // otherwise (the coach's branch 'body lateral/roll' hunts as its bogies): said after it.
+  std::string branch = "branch " + quoted_branch(r, c.branch);
+  // (Not when the motion is the branch's name but for its " (kinematic)" or " (2)".)
+  const bool same = c.motion == c.branch || c.branch.rfind(c.motion + " (", 0) == 0;
+  if (!c.motion.empty() && !same) branch += ", moving there as " + c.motion;
   return fixed(c.speed * kKmh, 2) + " km/h (" + significant(c.speed, 8) + " m/s): " + branch +
-         ", hunting frequency " + fixed(c.frequency_hz, 3) +
-         " Hz (Klingel's V/Λ there: " + fixed(c.klingel_frequency_hz, 3) + " Hz)";
+         ", hunting frequency " + fixed(c.frequency_hz, 3) + " Hz (" + kinematic_frequencies(c) + ")";
 }
 
 // The verdict in a sentence, with the critical speed or what stands in its place.
 std::string verdict_text(const HuntingResult& r) {
   switch (r.verdict) {
     case HuntingVerdict::critical_speed_in_range:
-      return r.critical ? "hunts above the linear critical speed " + critical_text(*r.critical) + "."
+      return r.critical ? "hunts above the linear critical speed " + critical_text(r, *r.critical) + "."
                         : "unstable within the range (no critical speed was refined).";
     case HuntingVerdict::stable_throughout:
       return "stable at every speed from " + kmh(lowest_speed(r)) + " to " + kmh(highest_speed(r)) +
@@ -116,13 +143,13 @@ std::string verdict_text(const HuntingResult& r) {
   return "";
 }
 
-// One unstable interval, its open ends said.
-std::string interval_text(const UnstableInterval& u) {
+// One unstable interval, its open ends said, its branch by number and name.
+std::string interval_text(const HuntingResult& r, const UnstableInterval& u) {
   const std::string from = u.from_lowest_speed ? "unstable at the lowest speed, " + kmh(u.from)
                                                : "from " + fixed(u.from * kKmh, 2) + " km/h";
   const std::string to =
       u.to_highest_speed ? "still unstable at the highest, " + kmh(u.to) : "to " + fixed(u.to * kKmh, 2) + " km/h";
-  return from + ", " + to + " (" + u.branch + ")";
+  return from + ", " + to + " (" + cited_branch(r, u.branch) + ")";
 }
 
 // The branches already at or below the threshold at the lowest speed, each with its ζ there:
@@ -143,7 +170,7 @@ std::string threshold_text(const HuntingResult& r) {
   const std::string zeta = "ζ = " + significant(100.0 * *r.damping_threshold, 4) + " %";
   std::string text = "no branch damped more than " + zeta + " at a lower speed falls to it within the range.";
   if (r.threshold_speed)
-    text = "branch '" + r.threshold_branch + "' falls to " + zeta + " at " + fixed(*r.threshold_speed * kKmh, 2) +
+    text = "branch " + quoted_branch(r, r.threshold_branch) + " falls to " + zeta + " at " + fixed(*r.threshold_speed * kKmh, 2) +
            " km/h, the lowest speed at which a branch damped more than that at a lower speed falls to it.";
   const std::string below = least_damped_at_lowest_speed(r);
   if (!below.empty())
@@ -175,16 +202,18 @@ Table verdict_table(const HuntingResult& r) {
     const HuntingCriticalSpeed& c = *r.critical;
     t.rows.push_back(
         {"linear critical speed", fixed(c.speed * kKmh, 2) + " km/h = " + significant(c.speed, 8) + " m/s"});
-    t.rows.push_back({"hunting branch", c.branch});
+    t.rows.push_back({"hunting branch", cited_branch(r, c.branch)});
     t.rows.push_back({"what moves most at that speed", c.motion});
     t.rows.push_back({"hunting frequency", fixed(c.frequency_hz, 3) + " Hz"});
     t.rows.push_back({"Klingel's V/Λ at that speed", fixed(c.klingel_frequency_hz, 3) + " Hz"});
+    if (c.bogie_frequency_hz > 0.0)
+      t.rows.push_back({"a rigid bogie's V/Λ_b at that speed", fixed(c.bogie_frequency_hz, 3) + " Hz"});
     t.rows.push_back({"eigen-solves of the refinement", std::to_string(c.evaluations)});
   }
   if (r.damping_threshold) {
     const std::string zeta = "ζ = " + significant(100.0 * *r.damping_threshold, 4) + " %";
     t.rows.push_back({"speed at which a branch falls to " + zeta,
-                      r.threshold_speed ? fixed(*r.threshold_speed * kKmh, 2) + " km/h (" + r.threshold_branch + ")"
+                      r.threshold_speed ? fixed(*r.threshold_speed * kKmh, 2) + " km/h (" + cited_branch(r, r.threshold_branch) + ")"
                                         : "none in the range"});
     if (!r.below_threshold_at_lowest_speed.empty())
       t.rows.push_back({"at or below " + zeta + " at the lowest speed", least_damped_at_lowest_speed(r)});
@@ -198,7 +227,7 @@ Table intervals_table(const HuntingResult& r) {
     t.rows.push_back(
         {u.from_lowest_speed ? fixed(u.from * kKmh, 2) + " (unstable at the lowest speed)" : fixed(u.from * kKmh, 2),
          u.to_highest_speed ? fixed(u.to * kKmh, 2) + " (still unstable at the highest)" : fixed(u.to * kKmh, 2),
-         u.branch});
+         cited_branch(r, u.branch)});
   return t;
 }
 
@@ -233,9 +262,14 @@ Table branches_table(const HuntingResult& r) {
 }
 
 Table conicity_table(const HuntingResult& r) {
+  // The rigid bogie's V/Λ_b beside Klingel's for a vehicle on bogies (0 at every point otherwise).
+  const bool bogies = std::any_of(r.conicity_curve.begin(), r.conicity_curve.end(), [](const ConicityPoint& p) {
+    return p.critical && p.critical->bogie_frequency_hz > 0.0;
+  });
   Table t{{"conicity λ", "verdict", "critical speed (km/h)", "branch", "f (Hz)", "Klingel V/Λ (Hz)"},
           {true, false, true, false, true, true},
           {}};
+  if (bogies) t.headers.push_back("rigid bogie V/Λ_b (Hz)"), t.numeric.push_back(true);
   for (const ConicityPoint& p : r.conicity_curve) {
     if (p.critical)
       t.rows.push_back({significant(p.conicity, 4), to_string(p.verdict), fixed(p.critical->speed * kKmh, 2),
@@ -246,6 +280,10 @@ Table conicity_table(const HuntingResult& r) {
                         p.verdict == HuntingVerdict::stable_throughout ? "above " + range_kmh(highest_speed(r))
                                                                        : "below " + range_kmh(lowest_speed(r)),
                         "—", "—", "—"});
+    if (bogies)
+      t.rows.back().push_back(p.critical && p.critical->bogie_frequency_hz > 0.0
+                                  ? fixed(p.critical->bogie_frequency_hz, 3)
+                                  : "—");
   }
   return t;
 }
@@ -291,7 +329,7 @@ void write_table(std::ostream& out, const Page& p) {
   out << "\nunstable speed intervals:";
   if (r.unstable_intervals.empty()) out << " none";
   out << "\n";
-  for (const UnstableInterval& u : r.unstable_intervals) out << "  " << interval_text(u) << "\n";
+  for (const UnstableInterval& u : r.unstable_intervals) out << "  " << interval_text(r, u) << "\n";
   out << "\nbranches (least damped first at the highest speed):\n";
   write_text_table(out, branches_table(r));
   out << wrapped(kBranchNote) << "\n";
@@ -496,7 +534,7 @@ report::Chart damping_chart(const HuntingResult& r) {
                        "the linear critical speed (km/h)"});
   if (r.threshold_speed)
     c.lines.push_back({"V at ζ = " + significant(threshold, 3) + " %", *r.threshold_speed * kKmh, true,
-                       "where branch '" + r.threshold_branch + "' falls to the threshold"});
+                       "where branch " + quoted_branch(r, r.threshold_branch) + " falls to the threshold"});
   for (size_t k = 0; k < r.branches.size(); ++k) {
     const HuntingBranch& b = r.branches[k];
     report::ChartSeries s;
@@ -656,12 +694,30 @@ void write_csv(std::ostream& out, const HuntingResult& r) {
 
 // Every object's members in alphabetical order, as the files had them (json_writer.hpp); a
 // number that is not finite is null (never inf or NaN in JSON).
-void write_critical(JsonWriter& j, const std::optional<HuntingCriticalSpeed>& c) {
+// The member `branch_number`: the branch's place in `branches` (1 for the first), null for a
+// name no branch has (a real root's).
+void write_branch_number(JsonWriter& j, const HuntingResult& r, const std::string& name) {
+  j.key("branch_number");
+  for (size_t k = 0; k < r.branches.size(); ++k)
+    if (r.branches[k].name == name) {
+      j.value(static_cast<int>(k + 1));
+      return;
+    }
+  j.value(nullptr);
+}
+
+// The critical speed; with `tracked` (the vehicle's own conicity, whose branches were followed
+// over the grid) its branch's number too.
+void write_critical(JsonWriter& j, const std::optional<HuntingCriticalSpeed>& c, const HuntingResult* tracked = nullptr) {
   if (!c) {
     j.value(nullptr);
     return;
   }
-  j.begin_object().member("branch", c->branch).member("evaluations", c->evaluations);
+  j.begin_object().member("bogie_frequency_hz", c->bogie_frequency_hz > 0.0 ? std::optional<double>(c->bogie_frequency_hz)
+                                                                          : std::optional<double>());
+  j.member("branch", c->branch);
+  if (tracked) write_branch_number(j, *tracked, c->branch);
+  j.member("evaluations", c->evaluations);
   j.member("frequency_hz", c->frequency_hz).member("klingel_frequency_hz", c->klingel_frequency_hz);
   j.member("motion", c->motion).member("speed_kmh", c->speed * kKmh).member("speed_m_s", c->speed).end_object();
 }
@@ -709,15 +765,18 @@ void write_json(std::ostream& out, const Page& p) {
   write_line_member(out, "vehicle", [&](JsonWriter& j) { j.value(p.vehicle); }, true);
   write_line_member(out, "analysis", [&](JsonWriter& j) { j.value("linear"); });
   write_line_member(out, "verdict", [&](JsonWriter& j) { j.value(to_string(r.verdict)); });
-  write_line_member(out, "critical", [&](JsonWriter& j) { write_critical(j, r.critical); });
+  write_line_member(out, "critical", [&](JsonWriter& j) { write_critical(j, r.critical, &r); });
   write_line_member(out, "summary", [&](JsonWriter& j) { write_summary(j, r.summary); });
   write_line_member(out, "unstable_intervals", [&](JsonWriter& j) {
     j.begin_array();
-    for (const UnstableInterval& u : r.unstable_intervals)
-      j.begin_object().member("branch", u.branch).member("from_kmh", u.from * kKmh)
+    for (const UnstableInterval& u : r.unstable_intervals) {
+      j.begin_object().member("branch", u.branch);
+      write_branch_number(j, r, u.branch);
+      j.member("from_kmh", u.from * kKmh)
           .member("from_lowest_speed", u.from_lowest_speed).member("from_m_s", u.from)
           .member("to_highest_speed", u.to_highest_speed).member("to_kmh", u.to * kKmh).member("to_m_s", u.to)
           .end_object();
+    }
     j.end_array();
   });
   write_line_member(out, "damping_threshold", [&](JsonWriter& j) { j.value(r.damping_threshold); });

@@ -43,7 +43,102 @@ std::string words_of(const LinearSystem& system, const Eigen::VectorXd& energy, 
   return words;
 }
 
+// The DOF of `body`'s lateral motion in the system, −1 when it has none.
+int lateral_dof_of(const LinearSystem& system, int body) {
+  for (int i = 0; i < system.size(); ++i)
+    if (system.dofs[i].body == body && system.dofs[i].motion == Motion::lateral) return i;
+  return -1;
+}
+
+// Hunting wheelsets named by their bogies (branch_naming.hpp), or "" when the leading bogie's
+// wheelsets do not move together (or the leading body is in no bogie). `per_mass` is each
+// body's energy per unit mass.
+std::string bogie_hunting_name(const LinearSystem& system, const Eigen::VectorXcd& shape,
+                               const std::map<int, double>& per_mass, int lead) {
+  const std::vector<WheelsetBogie> bogies = wheelset_bogies(system.vehicle);
+  const auto energy_of = [&](int body) {
+    const auto e = per_mass.find(body);
+    return e == per_mass.end() ? 0.0 : e->second;
+  };
+  // Each bogie's lateral amplitude (the sum of its wheelsets'), its energy per unit mass (the
+  // sum of theirs), and whether its wheelsets move together.
+  struct Moving {
+    std::complex<double> lateral;
+    double energy = 0.0;
+    bool together = true;
+  };
+  std::vector<Moving> moving(bogies.size());
+  int lead_bogie = -1;
+  for (size_t g = 0; g < bogies.size(); ++g) {
+    std::vector<std::complex<double>> y;
+    for (int w : bogies[g].wheelsets) {
+      const int dof = lateral_dof_of(system, w);
+      y.push_back(dof >= 0 ? shape(dof) : 0.0);
+      moving[g].lateral += y.back();
+      moving[g].energy += energy_of(w);
+      if (w == lead) lead_bogie = static_cast<int>(g);
+    }
+    double largest = 0.0;
+    for (const auto& a : y) largest = std::max(largest, std::norm(a));
+    for (size_t i = 0; i < y.size(); ++i)
+      for (size_t j = 0; j < y.size(); ++j)
+        moving[g].together = moving[g].together && std::real(y[i] * std::conj(y[j])) >= 0.0 &&
+                             std::norm(y[i]) >= 0.25 * largest && largest > 0.0;
+  }
+  if (lead_bogie < 0 || !moving[lead_bogie].together) return "";
+  // The bogie that moves most leads (its wheelsets' energy, not one wheelset's).
+  for (size_t g = 0; g < bogies.size(); ++g)
+    if (moving[g].together && moving[g].energy > moving[lead_bogie].energy) lead_bogie = static_cast<int>(g);
+  std::string names;
+  bool in_phase = true;
+  int count = 0;
+  for (size_t g = 0; g < bogies.size(); ++g) {
+    if (!moving[g].together || moving[g].energy < 0.5 * moving[lead_bogie].energy) continue;
+    names += (names.empty() ? "" : "+") + system.vehicle.bodies[bogies[g].body].name;
+    in_phase = in_phase && std::real(moving[g].lateral * std::conj(moving[lead_bogie].lateral)) >= 0.0;
+    ++count;
+  }
+  return count == 1 ? names + " hunting" : names + " hunting, " + (in_phase ? "in phase" : "antiphase");
+}
+
 }  // namespace
+
+std::vector<WheelsetBogie> wheelset_bogies(const Vehicle& vehicle) {
+  const auto index_of = [&](const std::string& name) {
+    for (size_t b = 0; b < vehicle.bodies.size(); ++b)
+      if (vehicle.bodies[b].name == name) return static_cast<int>(b);
+    return -1;
+  };
+  std::vector<WheelsetBogie> bogies(vehicle.bodies.size());
+  for (const Wheelset& w : vehicle.wheelsets) {
+    const int ws = index_of(w.body);
+    if (ws < 0) continue;
+    // The body an element joins the wheelset to (its primary suspension), the first found.
+    int carrier = -1;
+    for (const Element& e : vehicle.elements) {
+      const std::string& other = e.lower == w.body ? e.upper : e.upper == w.body ? e.lower : std::string();
+      if (!other.empty() && model::wheelset_of(vehicle, other) == nullptr) {
+        carrier = index_of(other);
+        break;
+      }
+    }
+    if (carrier >= 0) bogies[carrier].wheelsets.push_back(ws);
+  }
+  std::vector<WheelsetBogie> out;
+  for (size_t b = 0; b < bogies.size(); ++b) {
+    if (bogies[b].wheelsets.size() < 2) continue;
+    WheelsetBogie g = bogies[b];
+    g.body = static_cast<int>(b);
+    double low = vehicle.bodies[g.wheelsets.front()].centre_of_gravity.x(), high = low;
+    for (int w : g.wheelsets)
+      low = std::min(low, vehicle.bodies[w].centre_of_gravity.x()),
+      high = std::max(high, vehicle.bodies[w].centre_of_gravity.x());
+    g.half_wheelbase = 0.5 * (high - low);
+    out.push_back(g);
+  }
+  if (out.size() < 2) out.clear();
+  return out;
+}
 
 std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weighted_shape, bool oscillatory) {
   const int n = system.size();
@@ -70,6 +165,9 @@ std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weight
   int key = -1;
   const std::string words = words_of(system, energy, lead, oscillatory, &key);
   const std::string& name = system.vehicle.bodies[lead].name;
+  if (words == "hunting")
+    if (std::string by_bogie = bogie_hunting_name(system, weighted_shape, per_mass, lead); !by_bogie.empty())
+      return by_bogie;
   // Twin bodies (bogie1/bogie2, wheelset1…wheelset4) that move at least half as much as the
   // leading one share the mode: name the family and the phase of the key motion, "in phase"
   // when every such twin's is within 90° of the leading body's. Which of two nearly equal

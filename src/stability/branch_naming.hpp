@@ -5,10 +5,24 @@
 #include <cmath>
 #include <complex>
 #include <string>
+#include <vector>
 
 #include "railmodal/linear_system.hpp"
 
 namespace railmodal::stability {
+
+/// A bogie of a vehicle on wheelsets: a body that two or more wheelsets hang from (an element
+/// joins each of them to it).
+struct WheelsetBogie {
+  int body = -1;               ///< index into vehicle.bodies
+  std::vector<int> wheelsets;  ///< their bodies, in the vehicle's order
+  double half_wheelbase = 0.0;  ///< a, m: half the spread of their axles' x (centres of gravity)
+};
+
+/// The bogies, in the order of the vehicle's bodies; empty unless two or more bodies each carry
+/// two or more wheelsets (a two-axle wagon's body, carrying its two, is not a bogie: it is the
+/// vehicle).
+std::vector<WheelsetBogie> wheelset_bogies(const Vehicle& vehicle);
 
 /// A root that does not oscillate: real, or a pair whose Im λ is under 1 % of |λ| (ζ > 0.99995,
 /// a decay of e^−600 a cycle). One rule for the tracking (such a step's MAC says nothing: next
@@ -28,7 +42,12 @@ inline bool overdamped_root(std::complex<double> value) { return std::abs(value.
 ///  - when twin bodies (the same name but for a trailing number: bogie1, bogie2) do the same
 ///    and move at least half as much per unit mass, their names joined by "+" and the phase of
 ///    the leading motion: "bogie1+bogie2 yaw, in phase", "ws1+ws2 hunting, antiphase" (twins
-///    grouped as the undamped modes' names group them, src/solve/mode_naming.cpp).
+///    grouped as the undamped modes' names group them, src/solve/mode_naming.cpp);
+///  - on a bogie vehicle (wheelset_bogies), hunting wheelsets are named by their bogies when
+///    the wheelsets of the leading bogie move together (their lateral motions within 90° of
+///    each other and within a factor 2 in amplitude): "bogie1+bogie2 hunting, in phase", each
+///    bogie whose wheelsets move together with at least half the leading bogie's energy per
+///    unit mass, so that no wheelset of a bogie is left out by a threshold on its own.
 /// A system whose DOFs have no bodies (matrices read from files) is named after the label of
 /// the DOF with the most energy. A shape with no displacement (a series damper's own root,
 /// λ = −k/c, where nothing moves) is "series damper relaxation".

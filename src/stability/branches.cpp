@@ -204,10 +204,23 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
                                                   speeds[s], rp, rq));
       if (b.continuity.back() < continuity_threshold) b.veers = true;
     }
+    const cd first = speeds[0].values(first_root);
+    // A pair that is overdamped at every speed (a series damper's relaxation −k/c paired with a
+    // creep root by round-off: Im λ under 1 % of |λ| throughout) never oscillates: it is a real
+    // root, named as one, and neither an oscillatory branch nor part of the continuity check
+    // (its plane's MAC near a meeting with another real root says nothing: the coach with a yaw
+    // damper failed that check at every grid, user audit 2026-11-27b, 2.1). Its ζ still counts
+    // in the least-damped search, which looks at every root.
+    if (std::all_of(b.eigenvalues.begin(), b.eigenvalues.end(), [](cd l) { return overdamped_root(l); })) {
+      const std::string relaxation = relaxation_of(system, first);
+      group_names.push_back(relaxation.empty() ? root_name(system, speeds[0].shapes.col(first_root), false) + " (real root)"
+                                               : relaxation);
+      is_branch.push_back(false);
+      continue;
+    }
     // An overdamped pair at the lowest speed (two real roots, or a pair whose Im λ is under 1 %
     // of |λ|: ζ > 0.99995, a decay of e^−600 per cycle, shown as 0 Hz and ζ = 100 %) is not
     // hunting there: it does not oscillate.
-    const cd first = speeds[0].values(first_root);
     b.name = relaxation_of(system, first);
     if (b.name.empty())
       b.name = root_name(system, speeds[0].shapes.col(first_root), !overdamped_root(first));

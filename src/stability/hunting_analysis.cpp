@@ -53,6 +53,22 @@ double shortest_wavelength(const ContactMatrices& contact) {
   return wavelength;
 }
 
+// The shortest kinematic wavelength of the vehicle's rigid bogies, Λ_b = Λ·√(1 + a²f22/(l0²f11))
+// (docs/stability.md, "The equations of motion": no net lateral creep force and no net yaw moment
+// on two wheelsets at x = ±a with a common yaw; Rocard's factor √(1 + (2a/s)²) when f11 = f22),
+// with the contact of each bogie's first wheelset; infinite without bogies.
+double shortest_bogie_wavelength(const LinearSystem& system, const ContactMatrices& contact) {
+  double wavelength = std::numeric_limits<double>::infinity();
+  for (const WheelsetBogie& g : wheelset_bogies(system.vehicle))
+    for (const ResolvedContact& c : contact.wheelsets) {
+      if (c.body != system.vehicle.bodies[g.wheelsets.front()].name) continue;
+      const double a = g.half_wheelbase, l0 = c.contact_half_spacing;
+      if (c.creep.f11 > 0.0 && l0 > 0.0)
+        wavelength = std::min(wavelength, c.klingel_wavelength * std::sqrt(1.0 + a * a * c.creep.f22 / (l0 * l0 * c.creep.f11)));
+    }
+  return wavelength;
+}
+
 double klingel_frequency(double speed, double wavelength) {
   return std::isfinite(wavelength) && wavelength > 0.0 ? speed / wavelength : 0.0;
 }
@@ -86,7 +102,7 @@ Scan scan(const std::vector<double>& speeds, const std::vector<double>& zeta, co
 // The critical speed of a scan that has one: the first interval's lower end, with the
 // hunting frequency of the least-damped root there (one more eigen-solve).
 HuntingCriticalSpeed critical_speed(const LinearSystem& vehicle, const Scan& scan, const FirstOrderSystem& system,
-                                    double wavelength) {
+                                    double wavelength, double bogie_wavelength) {
   const ScannedInterval& first = scan.intervals.front();
   HuntingCriticalSpeed c;
   c.speed = first.from;
@@ -95,6 +111,7 @@ HuntingCriticalSpeed critical_speed(const LinearSystem& vehicle, const Scan& sca
   c.frequency_hz = at.root >= 0 ? std::abs(roots.values(at.root).imag()) / kTwoPi : 0.0;
   c.motion = root_name(vehicle, roots.shapes.col(std::max(at.root, 0)));
   c.klingel_frequency_hz = klingel_frequency(c.speed, wavelength);
+  c.bogie_frequency_hz = klingel_frequency(c.speed, bogie_wavelength);
   c.evaluations = first.from_evaluations + 1;
   return c;
 }
@@ -108,7 +125,8 @@ ConicityPoint conicity_point(const LinearSystem& system, double conicity, const 
   const Scan s = scan(speeds, zeta, fos, options.relative_tolerance);
   point.verdict = s.verdict;
   if (s.verdict == HuntingVerdict::critical_speed_in_range) {
-    point.critical = critical_speed(system, s, fos, shortest_wavelength(contact));
+    point.critical =
+        critical_speed(system, s, fos, shortest_wavelength(contact), shortest_bogie_wavelength(system, contact));
     // Named where it goes unstable (no tracking over this conicity's grid).
     point.critical->branch = point.critical->motion;
   }
@@ -189,33 +207,12 @@ SolvedGrid solve_grid(const FirstOrderSystem& fos, const std::vector<double>& sp
   return grid;
 }
 
-// The verdict, the unstable intervals (each named after the group of its least-damped root)
-// and the critical speed. Returns the eigen-solves the refinements took.
-int stability_over_speed(const LinearSystem& system, const FirstOrderSystem& fos, const SolvedGrid& grid,
-                         const Branches& branches, const std::vector<double>& zeta, double wavelength,
-                         const HuntingOptions& options, HuntingResult* result) {
-  const Scan own = scan(result->speeds, zeta, fos, options.relative_tolerance);
-  int evaluations = own.evaluations;
-  result->verdict = own.verdict;
-  for (const ScannedInterval& i : own.intervals) {
-    const int at = least_damped(grid.roots[i.grid_index].values).root;
-    result->unstable_intervals.push_back({i.from, i.to, i.from_lowest_speed, i.to_highest_speed,
-                                          at >= 0 ? branches.name_of_root[i.grid_index][at] : std::string()});
-  }
-  if (result->verdict == HuntingVerdict::critical_speed_in_range) {
-    result->critical = critical_speed(system, own, fos, wavelength);
-    result->critical->branch = result->unstable_intervals.front().branch;
-    evaluations += 1;
-  }
-  return evaluations;
-}
-
 // ζ of one branch between grid speeds s − 1 and s: the root (upper half) nearest to the branch's
 // eigenvalue interpolated linearly between the two grid speeds. Within a grid step a branch
 // moves little against its distance to the others (the tracking matched it by eigenvalues or
-// shapes over the whole step), so the nearest root is the branch's.
+// shapes over the whole step), so the nearest root is the branch's. `raw` as in ZetaAt.
 double branch_zeta(const FirstOrderSystem& fos, const HuntingBranch& b, const std::vector<double>& speeds, int s,
-                   double speed) {
+                   double speed, bool raw = true) {
   const double t = (speed - speeds[s - 1]) / (speeds[s] - speeds[s - 1]);
   const std::complex<double> guess = (1.0 - t) * b.eigenvalues[s - 1] + t * b.eigenvalues[s];
   const Eigen::VectorXcd values = solve_at_speed(fos, speed, false).values;
@@ -223,7 +220,89 @@ double branch_zeta(const FirstOrderSystem& fos, const HuntingBranch& b, const st
   for (int i = 1; i < values.size(); ++i)
     if (std::abs(values(i) - guess) < std::abs(values(nearest) - guess)) nearest = i;
   const std::complex<double> upper = values(nearest).imag() < 0.0 ? std::conj(values(nearest)) : values(nearest);
-  return root_damping(upper, root_scale(values), true).zeta;
+  return root_damping(upper, root_scale(values), raw).zeta;
+}
+
+// A branch's name without what tells it from its namesakes: " (2)", " (3)", … and " (kinematic)".
+std::string base_name(std::string name) {
+  for (bool cut = true; cut;) {
+    cut = false;
+    const size_t open = name.rfind(" (");
+    if (open == std::string::npos || name.back() != ')') break;
+    const std::string inside = name.substr(open + 2, name.size() - open - 3);
+    if (inside == "kinematic" || (!inside.empty() && std::all_of(inside.begin(), inside.end(), [](char c) {
+                                    return c >= '0' && c <= '9';
+                                  }))) {
+      name.erase(open);
+      cut = true;
+    }
+  }
+  return name;
+}
+
+// One branch's unstable intervals: where its own ζ is below 0 on the grid, each end refined on
+// that branch (branch_zeta in the grid step that holds the speed).
+std::vector<ScannedInterval> branch_intervals(const FirstOrderSystem& fos, const HuntingBranch& b,
+                                              const std::vector<double>& speeds, double relative_tolerance,
+                                              int* evaluations) {
+  const auto zeta_at = [&](double v, bool raw) {
+    const auto above = std::upper_bound(speeds.begin(), speeds.end(), v);
+    const int s = std::clamp(static_cast<int>(above - speeds.begin()), 1, static_cast<int>(speeds.size()) - 1);
+    return branch_zeta(fos, b, speeds, s, v, raw);
+  };
+  return unstable_intervals(speeds, b.damping_ratio, zeta_at, relative_tolerance, evaluations);
+}
+
+// The verdict, the critical speed (the least-damped root's first crossing) and the unstable
+// intervals: each oscillatory branch's own (docs/stability.md: every unstable interval, its ends
+// where ζ of its branch crosses 0, so that a branch going unstable while another already is
+// still shows: the coach's second hunting branch, user audit 2026-11-27b, 1.3), and the
+// least-damped root's intervals held by no branch (a real root's), named after its group.
+// Returns the eigen-solves the refinements took.
+int stability_over_speed(const LinearSystem& system, const FirstOrderSystem& fos, const SolvedGrid& grid,
+                         const Branches& branches, const std::vector<double>& zeta, double wavelength,
+                         double bogie_wavelength, const HuntingOptions& options, HuntingResult* result) {
+  const Scan own = scan(result->speeds, zeta, fos, options.relative_tolerance);
+  int evaluations = own.evaluations;
+  result->verdict = own.verdict;
+  struct Listed {
+    UnstableInterval interval;
+    size_t branch;  // its place in result->branches; real roots after every branch
+  };
+  std::vector<Listed> listed;
+  const auto named = [](const ScannedInterval& i, const std::string& name) {
+    return UnstableInterval{i.from, i.to, i.from_lowest_speed, i.to_highest_speed, name};
+  };
+  const std::vector<HuntingBranch>& all = result->branches;
+  for (size_t k = 0; k < all.size(); ++k)
+    for (const ScannedInterval& i : branch_intervals(fos, all[k], result->speeds, options.relative_tolerance, &evaluations))
+      listed.push_back({named(i, all[k].name), k});
+  std::string critical_branch;
+  for (const ScannedInterval& i : own.intervals) {
+    const int at = least_damped(grid.roots[i.grid_index].values).root;
+    const std::string name = at >= 0 ? branches.name_of_root[i.grid_index][at] : std::string();
+    if (critical_branch.empty()) critical_branch = name;
+    const bool a_branch = std::any_of(all.begin(), all.end(), [&](const HuntingBranch& b) { return b.name == name; });
+    if (!a_branch) listed.push_back({named(i, name), all.size()});
+  }
+  std::stable_sort(listed.begin(), listed.end(), [](const Listed& a, const Listed& b) {
+    return a.interval.from != b.interval.from ? a.interval.from < b.interval.from : a.branch < b.branch;
+  });
+  for (const Listed& l : listed) result->unstable_intervals.push_back(l.interval);
+  if (result->verdict == HuntingVerdict::critical_speed_in_range) {
+    result->critical = critical_speed(system, own, fos, wavelength, bogie_wavelength);
+    result->critical->branch = critical_branch;
+    // The motion is named as branches are; where that is another branch's name, it would read as
+    // that branch (user audit 2026-11-27b, 1.4: "body lateral/roll" on branch "body yaw/lateral
+    // (kinematic)", beside a stable branch of that name).
+    std::string& motion = result->critical->motion;
+    const bool another = std::any_of(all.begin(), all.end(), [&](const HuntingBranch& b) {
+      return b.name != critical_branch && base_name(b.name) == base_name(motion);
+    });
+    if (another) motion += " (shape at the critical speed)";
+    evaluations += 1;
+  }
+  return evaluations;
 }
 
 // The threshold speed (HuntingResult::threshold_speed): the lowest downward crossing of the
@@ -338,7 +417,8 @@ HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& 
 
   std::vector<double> zeta;
   for (const SpeedRoots& r : grid.roots) zeta.push_back(least_damped(r.values).zeta);
-  int evaluations = stability_over_speed(system, fos, grid, branches, zeta, wavelength, options, &result);
+  int evaluations = stability_over_speed(system, fos, grid, branches, zeta, wavelength,
+                                         shortest_bogie_wavelength(system, own), options, &result);
   result.damping_threshold = options.damping_threshold;
   if (options.damping_threshold)
     evaluations += threshold_crossing(fos, *options.damping_threshold, options.relative_tolerance, &result);

@@ -24,6 +24,20 @@ def locus():
     return railmodal.hunting_stability(WHEELSET, speed_count=20, conicities=[0.1, 0.2], threads=1)
 
 
+def test_every_branch_interval_and_the_rigid_bogie_frequency_on_the_coach():
+    # Two branches of the coach go unstable, overlapping (docs/stability.md, "Reading the
+    # output"): each is listed with its number, as the command line lists them.
+    coach = data("vehicles", "manchester_benchmark_coach_wheelsets.toml")
+    got = railmodal.hunting_stability(coach, threads=1)
+    expected = cli_json("stability", coach, "--threads", "1")
+    assert len(got.unstable_intervals) == len(expected["unstable_intervals"]) >= 2
+    for g, e in zip(got.unstable_intervals, expected["unstable_intervals"]):
+        assert (g["branch"], g["branch_number"]) == (e["branch"], e["branch_number"])
+        assert got.branches[g["branch_number"] - 1] == g["branch"]
+        assert g["from_m_s"] == pytest.approx(e["from_m_s"], rel=REL)
+    assert got.critical["bogie_frequency_hz"] == pytest.approx(expected["critical"]["bogie_frequency_hz"], rel=REL)
+
+
 def test_root_locus_equals_the_command_line(locus):
     expected = cli_json("stability", WHEELSET, "--speed-count", "20", "--conicity", "0.1,0.2", "--threads", "1")
     assert locus.verdict == expected["verdict"] == "critical_speed_in_range"
@@ -41,8 +55,10 @@ def test_root_locus_equals_the_command_line(locus):
     for key in ("speed_m_s", "frequency_hz", "klingel_frequency_hz"):
         assert critical[key] == pytest.approx(expected["critical"][key], rel=REL)
     assert (critical["branch"], critical["motion"]) == (expected["critical"]["branch"], expected["critical"]["motion"])
+    assert critical["bogie_frequency_hz"] is None and expected["critical"]["bogie_frequency_hz"] is None  # no bogies
     (interval,) = locus.unstable_intervals
     assert interval["from_m_s"] == pytest.approx(critical["speed_m_s"], rel=REL) and interval["to_highest_speed"]
+    assert interval["branch_number"] == expected["unstable_intervals"][0]["branch_number"]
     for got, want in zip(locus.conicity_curve, expected["conicity_curve"]):
         assert got["conicity"] == want["conicity"] and got["verdict"] == want["verdict"]
         assert got["critical_speed_m_s"] == pytest.approx(want["critical"]["speed_m_s"], rel=REL)

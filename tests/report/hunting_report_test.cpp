@@ -64,13 +64,16 @@ TEST(HuntingReport, EveryUnstableIntervalIsListedWithItsOpenEnd) {
   const std::string table = written(r, OutputFormat::table);
   EXPECT_TRUE(has(table, "linear critical speed 200.00 km/h (55.555556 m/s)")) << table;
   EXPECT_TRUE(has(table, "hunting frequency 2.778 Hz (Klingel's V/Λ there: 2.500 Hz)")) << table;
-  EXPECT_TRUE(has(table, "from 200.00 km/h, to 300.00 km/h (wheelset 1 hunting (kinematic))")) << table;
+  // Every mention of a branch cites its row of the branches table (user audit 2026-11-27b, 1.4).
+  EXPECT_TRUE(has(table, "from 200.00 km/h, to 300.00 km/h (#1 wheelset 1 hunting (kinematic))")) << table;
+  EXPECT_TRUE(has(table, "branch #1 'wheelset 1 hunting (kinematic)', hunting frequency")) << table;
+  EXPECT_FALSE(has(table, "V/Λ_b")) << table;  // no bogies: no rigid-bogie frequency
   EXPECT_TRUE(has(table, "from 400.00 km/h, still unstable at the highest, 500.0 km/h")) << table;
   EXPECT_TRUE(has(table, "falls to ζ = 5 % at 150.00 km/h")) << table;
   const std::string markdown = written(r, OutputFormat::markdown);
   EXPECT_TRUE(has(markdown, "| 400.00 | 500.00 (still unstable at the highest) |")) << markdown;
   EXPECT_TRUE(
-      has(markdown, "| speed at which a branch falls to ζ = 5 % | 150.00 km/h (wheelset 1 hunting (kinematic)) |"))
+      has(markdown, "| speed at which a branch falls to ζ = 5 % | 150.00 km/h (#1 wheelset 1 hunting (kinematic)) |"))
       << markdown;
   EXPECT_TRUE(has(markdown, "Written by railmodal")) << markdown;
 
@@ -78,6 +81,9 @@ TEST(HuntingReport, EveryUnstableIntervalIsListedWithItsOpenEnd) {
   ASSERT_EQ(j["unstable_intervals"].size(), 2u);
   EXPECT_FALSE(j["unstable_intervals"][0]["to_highest_speed"].get<bool>());
   EXPECT_TRUE(j["unstable_intervals"][1]["to_highest_speed"].get<bool>());
+  EXPECT_EQ(j["unstable_intervals"][0]["branch_number"], 1);
+  EXPECT_EQ(j["critical"]["branch_number"], 1);
+  EXPECT_TRUE(j["critical"]["bogie_frequency_hz"].is_null());
   // km/h to 1e-12 relative: the JSON keeps every digit (shortest round trip).
   EXPECT_NEAR(j["critical"]["speed_kmh"].get<double>(), 200.0, 1e-12 * 200.0);
   EXPECT_DOUBLE_EQ(j["critical"]["speed_m_s"].get<double>(), 200.0 / 3.6);
@@ -94,7 +100,7 @@ TEST(HuntingReport, EveryUnstableIntervalIsListedWithItsOpenEnd) {
 TEST(HuntingReport, ABranchBelowTheThresholdFromTheLowestSpeedIsListedNotTheCrossing) {
   const HuntingResult r = test::threshold_below_at_lowest_result();
   const std::string table = written(r, OutputFormat::table);
-  EXPECT_TRUE(has(table, "branch 'wheelset 1 hunting (kinematic)' falls to ζ = 12 % at 82.20 km/h")) << table;
+  EXPECT_TRUE(has(table, "branch #1 'wheelset 1 hunting (kinematic)' falls to ζ = 12 % at 82.20 km/h")) << table;
   EXPECT_TRUE(has(table, "not what decides it: 'body lateral' (ζ = 10 %)")) << table;
   const std::string markdown = written(r, OutputFormat::markdown);
   EXPECT_TRUE(has(markdown, "| at or below ζ = 12 % at the lowest speed | 'body lateral' (ζ = 10 %) |")) << markdown;

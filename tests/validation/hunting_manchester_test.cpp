@@ -6,9 +6,14 @@
 // speed falls as the conicity grows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
+#include <fstream>
+#include <iterator>
 #include <limits>
+#include <set>
+#include <string>
 
 #include "railmodal/railmodal.hpp"
 #include "test_support.hpp"
@@ -74,6 +79,100 @@ TEST(HuntingManchesterCoach, DesignCurveFollowsTheRigidBogie) {
       EXPECT_LT(std::abs(departure), 0.08) << "λ = " << p.conicity;
     else
       EXPECT_LT(std::abs(departure), 0.2) << "λ = " << p.conicity;
+  }
+}
+
+// A series (yaw) damper adds the state of its force, whose root −k/c (here −10 MN/m / 400 kN·s/m
+// = −25/s) pairs by round-off with a creep root into a pair whose Im λ stays under 1 % of |λ|:
+// it never oscillates. Counted among the oscillatory branches, its plane's MAC near a meeting of
+// real roots failed the continuity check at every grid (user audit 2026-11-27b, 2.1: "CHECK
+// FAILED … MAC 1", exit 6, even at 1000 speeds). It is a real root now: no branch, no check.
+TEST(HuntingManchesterCoach, AYawDamperPassesTheContinuityCheck) {
+  std::ifstream in(data_file("manchester_benchmark_coach_wheelsets.toml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string secondary = "\n[secondary]\n";
+  const size_t at = text.find(secondary);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + secondary.size(),
+              "yaw_damper = { damping = \"400 kN*s/m\", series_stiffness = \"10 MN/m\", spacing = \"2.6 m\" }\n");
+  const Vehicle coach = load_vehicle(write_temp("coach_yaw_damper.toml", text));
+  const LinearSystem system = assemble(coach, DofSet::lateral);
+  ASSERT_FALSE(system.series_dampers.empty());  // the case is exercised
+  HuntingOptions options;
+  options.threads = 1;
+  const HuntingResult r = solve_hunting_stability(system, options);
+  for (const HuntingBranch& b : r.branches) {
+    // Every branch oscillates somewhere (Im λ above 1 % of |λ|, the rule of overdamped_root).
+    EXPECT_TRUE(std::any_of(b.eigenvalues.begin(), b.eigenvalues.end(),
+                            [](std::complex<double> l) { return std::abs(l.imag()) > 0.01 * std::abs(l); }))
+        << b.name;
+    EXPECT_EQ(b.name.find("series damper relaxation"), std::string::npos) << b.name;
+    EXPECT_FALSE(b.veers) << b.name;
+  }
+  EXPECT_TRUE(r.summary.passed());
+}
+
+// Every branch's unstable interval is listed, not only the least-damped root's: on the coach two
+// branches go unstable within 3 km/h of each other and stay so to 500 km/h (user audit
+// 2026-11-27b, 1.3: the second, −13.7 % at 500 km/h, was in no interval). Each interval's ends
+// are where its own branch's ζ crosses 0, and the critical speed is the lowest lower end.
+TEST(HuntingManchesterCoach, TwoBranchesWithOverlappingUnstableIntervals) {
+  const Vehicle coach = load_vehicle(data_file("manchester_benchmark_coach_wheelsets.toml"));
+  HuntingOptions options;
+  options.threads = 1;
+  const HuntingResult r = solve_hunting_stability(assemble(coach, DofSet::lateral), options);
+  ASSERT_TRUE(r.critical);
+  ASSERT_GE(r.unstable_intervals.size(), 2u);
+  std::set<std::string> names;
+  for (const UnstableInterval& u : r.unstable_intervals) {
+    names.insert(u.branch);
+    const auto b = std::find_if(r.branches.begin(), r.branches.end(),
+                                [&](const HuntingBranch& x) { return x.name == u.branch; });
+    ASSERT_NE(b, r.branches.end()) << u.branch;
+    // ζ of this branch is below 0 at every grid speed inside the interval and not below 0 at
+    // the grid speed just under its lower end.
+    for (size_t s = 0; s < r.speeds.size(); ++s) {
+      if (r.speeds[s] > u.from && r.speeds[s] < u.to) {
+        EXPECT_LT(b->damping_ratio[s], 0.0) << u.branch;
+      }
+      if (s + 1 < r.speeds.size() && r.speeds[s] < u.from && r.speeds[s + 1] > u.from) {
+        EXPECT_GE(b->damping_ratio[s], 0.0) << u.branch;
+      }
+    }
+  }
+  EXPECT_EQ(names.size(), r.unstable_intervals.size());  // one interval per branch here, each its own
+  // Overlapping: the second begins before the first ends.
+  EXPECT_LT(r.unstable_intervals[1].from, r.unstable_intervals[0].to);
+  // The critical speed is the first interval's lower end, refined on the least-damped root
+  // (1e-8 relative bracket there and on the branch: 1e-7 with margin).
+  EXPECT_NEAR(r.critical->speed, r.unstable_intervals.front().from, 1e-7 * r.critical->speed);
+}
+
+// The coach's bogies hunt (the frequency at the critical speed is within 4 % of a rigid bogie's
+// V/Λ_b, docs/stability.md's table), and the name says so: "bogie1+bogie2 hunting", not
+// "wheelset1+wheelset2+wheelset3 hunting", where a threshold on each wheelset's own energy cut
+// the fourth (user audit 2026-11-27b, 1.4). V/Λ_b is given beside Klingel's V/Λ.
+TEST(HuntingManchesterCoach, BogieHuntingIsNamedByTheBogiesWithTheRigidBogieFrequency) {
+  const Vehicle coach = load_vehicle(data_file("manchester_benchmark_coach_wheelsets.toml"));
+  HuntingOptions options;
+  options.threads = 1;
+  const HuntingResult r = solve_hunting_stability(assemble(coach, DofSet::lateral), options);
+  ASSERT_TRUE(r.critical);
+  EXPECT_EQ(r.critical->motion.rfind("bogie1+bogie2 hunting, in phase", 0), 0u) << r.critical->motion;
+  const ResolvedContact& c = r.contacts.front();
+  const double a = 2.56 / 2.0;  // half the wheelbase of the file's bogies
+  const double stretch =
+      std::sqrt(1.0 + a * a * c.creep.f22 / (c.contact_half_spacing * c.contact_half_spacing * c.creep.f11));
+  // The same formula on the same numbers: to round-off (1e-12 relative).
+  EXPECT_NEAR(r.critical->bogie_frequency_hz, r.critical->klingel_frequency_hz / stretch,
+              1e-12 * r.critical->bogie_frequency_hz);
+  EXPECT_LT(std::abs(r.critical->frequency_hz / r.critical->bogie_frequency_hz - 1.0), 0.05);  // −4.0 % measured
+  for (const HuntingBranch& b : r.branches) {
+    // A name lists every wheelset of a family or none: never 3 of the 4.
+    int wheelsets = 0;
+    for (const char* w : {"wheelset1", "wheelset2", "wheelset3", "wheelset4"})
+      wheelsets += b.name.find(w) != std::string::npos ? 1 : 0;
+    EXPECT_NE(wheelsets, 3) << b.name;
   }
 }
 
