@@ -139,5 +139,18 @@ TEST(StudyWork, ARideStudysReportDrawsTheRankedRideMetricAgainstSpeed) {
   }
 }
 
+// A sweep of one parameter named as its label: "ky = 100 kN/m", not "ky: ky = 100 kN/m"; a
+// sweep named otherwise keeps its name first.
+TEST(StudyWork, ASweepNamedAsItsOneLabelIsNotRepeatedInItsVariantsNames) {
+  const std::string head = "[study]\nvehicle = \"" + data_file("manchester_benchmark_coach_wheelsets.toml") +
+                           "\"\nbase = false\n[ranking]\nobjective = [{ metric = \"hunting_speed\", goal = \"max\" }]\n";
+  const auto sweep = [](const std::string& name) {
+    return "[[sweep]]\nname = \"" + name +
+           "\"\nparameters = [{ key = \"secondary.lateral.stiffness\", values = [\"100 kN/m\"], label = \"ky\" }]\n";
+  };
+  EXPECT_EQ(variant_name(open_study(write_temp("same.toml", head + sweep("ky"))), 0), "ky = 100 kN/m");
+  EXPECT_EQ(variant_name(open_study(write_temp("other.toml", head + sweep("lateral"))), 0), "lateral: ky = 100 kN/m");
+}
+
 }  // namespace
 }  // namespace railmodal::test
