@@ -167,7 +167,7 @@ std::string study::parameter_label(const Study& study, const std::string& key) {
 std::vector<std::string> study_files(const Study& study) {
   std::vector<std::string> files{study.source};
   if (!study.plan) return files;
-  files.push_back(study.plan->file.scene_file);
+  if (!study.plan->file.scene_file.empty()) files.push_back(study.plan->file.scene_file);  // a study may have none
   for (const auto& [file, document] : study.plan->file.vehicle_documents) files.push_back(file);
   return files;
 }

@@ -25,6 +25,7 @@
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/hunting.hpp"
+#include "railmodal/ride.hpp"
 #include "railmodal/scene.hpp"
 #include "railmodal/summary.hpp"
 #include "railmodal/vehicle.hpp"
@@ -244,16 +245,37 @@ struct VariantResult {
   bool ok() const { return failure.empty(); }
 };
 
-/// Evaluates one variant: modes, static deflections, metacentric height, critical speeds,
-/// peak responses in its scene, when `rule` is active the permissible dynamic deflections, and
-/// when `hunting` is given the hunting speed (VariantResult::hunting_speed) with those options.
+/// Which of a variant's analyses in its scene a study pays for (docs/studies.md, "What is
+/// computed"): modes, static deflections and the metacentric height always; the rest only when
+/// the ranking reads it.
+struct VariantWork {
+  /// The scene's critical-speed study: critical speeds, peak responses and (with a deflection
+  /// rule) the permissible dynamic deflections. Without it those stay empty.
+  bool critical_speeds = true;
+  /// The ride on the scene's random track, when the scene has one.
+  bool ride = true;
+};
+
+/// What a study's ranking reads: critical speeds when it names lowest_critical_speed,
+/// critical_speed:<mode>, peak:… or dynamic_deflection_ratio, or the study names a deflection
+/// rule; the ride when it names a ride metric (max_wz, max_nmv, rms_…:).
+VariantWork variant_work_of(const Ranking& ranking, const DeflectionRule& rule);
+
+/// Whether a metric reads the study's scene (critical speeds, peaks, dynamic deflections, the
+/// ride); periods, static deflections, the metacentric height and hunting_speed need no scene.
+bool metric_needs_scene(const std::string& metric);
+
+/// Evaluates one variant: modes, static deflections, metacentric height, and as `work` asks
+/// critical speeds and peak responses in its scene (when `rule` is active the permissible dynamic
+/// deflections too) and the ride; when `hunting` is given the hunting speed
+/// (VariantResult::hunting_speed) with those options.
 /// With `ride_rms_only` the ride (a scene with random track) is solved with RideOptions::rms_only:
 /// each output's max_rms bit for bit the same, no max_wz and no max_nmv (ride_rms_only(study)).
 /// Never throws for a bad design: an unstable or singular vehicle, or a wheelset contact out of
 /// range, is a result with its `failure`.
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule = {},
                                const std::optional<HuntingOptions>& hunting = std::nullopt,
-                               bool ride_rms_only = false);
+                               bool ride_rms_only = false, const VariantWork& work = {});
 
 /// The hunting options a study evaluates "hunting_speed" with, when its ranking names that metric
 /// (HuntingOptions' defaults, one thread: the variants are spread over the threads); none otherwise,
@@ -349,7 +371,9 @@ std::vector<const RankedVariant*> best_designs(const Comparison& comparison, int
 struct DesignCurves {
   std::string label;  ///< "base", "1. softer springs"
   bool base = false;
-  CriticalSpeedStudy study;
+  CriticalSpeedStudy study;  ///< empty when the study computes no critical speeds (variant_work_of)
+  /// The design's ride at the scene's ride speeds (no spectra), when the study ranks a ride metric.
+  std::optional<RideResult> ride;
 };
 /// The response curves a comparison report draws: the base's (when it was evaluated) and the
 /// best designs', in that order, and a note for each design that could not be studied.
@@ -357,9 +381,11 @@ struct ComparisonCurves {
   std::vector<DesignCurves> designs;
   std::vector<std::string> notes;  ///< "No curves for NAME: why"
 };
-/// Studies the base and the best `best` designs of `comparison` (study_critical_speeds of each),
-/// reading those the study did not read (results merged from shards) with read_variant. A
-/// design that cannot be read or solved gets a note, not an exception.
+/// Studies the base and the best `best` designs of `comparison`, as much as the study computes of
+/// each variant (variant_work_of): study_critical_speeds of each when it computes critical
+/// speeds, its ride when it ranks a ride metric, nothing otherwise. Reads those the study did not
+/// read (results merged from shards) with read_variant. A design that cannot be solved gets a
+/// note, not an exception.
 ComparisonCurves comparison_curves(const Study& study, const Comparison& comparison, int best);
 
 /// The results of one shard read back from the JSON write_shard wrote (comparison_report.hpp),

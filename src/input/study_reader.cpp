@@ -152,6 +152,8 @@ study::SweepParameter read_parameter(TableReader& t, bool sample, StudyFile* fil
   p.label = t.optional_string("label").value_or(dot == std::string::npos ? p.key : p.key.substr(dot + 1));
   const toml::value& where = t.raw(p.scene ? "scene_key" : "key");
   p.place = place(where);
+  if (p.scene && file->scene_file.empty())
+    t.fail("scene_key", "a scene key, and the study names no scene ([study] scene = \"...\")");
   if (sample) read_interval(t, &p, file);
   else read_values(t, &p, file);
   t.finish();
@@ -202,6 +204,8 @@ study::Sweep read_sweep(TableReader& t, int number, size_t* listed, size_t max_v
 std::vector<study::Assignment> read_overrides(TableReader& t, const std::string& key, bool scene, StudyFile* file) {
   std::vector<study::Assignment> out;
   if (!t.has(key)) return out;
+  if (scene && file->scene_file.empty())
+    t.fail(key, "scene overrides, and the study names no scene ([study] scene = \"...\")");
   const toml::value& table = t.raw(key);
   if (!table.is_table()) t.fail(key, "expected a table of key paths and values, such as { \"body.weight\" = \"30 tf\" }");
   std::map<std::string, const toml::value*> sorted;
@@ -336,7 +340,9 @@ void read_variants(TableReader& root, const toml::value& document, size_t max_va
   TableReader head = root.table("study");
   plan.name = head.optional_string("name").value_or(std::filesystem::path(file->path).stem().string());
   plan.vehicle_file = head.existing_file("vehicle");
-  file->scene_file = head.existing_file("scene");
+  // Optional: a study ranked only by metrics that need no scene (modes, statics, the hunting
+  // speed) has none (read_study_file checks the ranking).
+  if (head.has("scene")) file->scene_file = head.existing_file("scene");
   const bool base = head.optional_boolean("base").value_or(true);
   head.finish();
   if (base)
@@ -408,6 +414,27 @@ void check_rule(const StudyFile& file, const study::VariantSpec& spec, const Stu
   }
 }
 
+// A study without a scene: every metric its ranking names must need none (metric_needs_scene:
+// critical speeds, peaks and dynamic deflections are the scene's sources', the ride its track's),
+// and it names no deflection rule. Refused at the metric's key, naming it.
+void refuse_metrics_needing_a_scene(const StudyFile& file) {
+  const Ranking& ranking = file.plan.ranking;
+  const auto refuse = [&](const std::string& metric, const MetricPlace& written) {
+    throw InputError(file.path, written.place.line, written.place.column,
+                     "key '" + written.key + "': metric '" + metric +
+                         "' needs a scene (the critical speeds and responses of its sources, or its ride), and "
+                         "[study] names none: add scene = \"...\" (docs/studies.md)");
+  };
+  for (const RankingCriterion& c : ranking.objective)
+    if (metric_needs_scene(c.metric)) refuse(c.metric, c.written);
+  for (const RankingConstraint& c : ranking.constraints)
+    if (metric_needs_scene(c.metric)) refuse(c.metric, c.written);
+  if (file.plan.deflection_rule.active())
+    throw InputError(file.path, file.rule_place.line, file.rule_place.column,
+                     "key 'permissible_dynamic_deflection': the dynamic deflections are those under the scene's "
+                     "sources, and [study] names no scene: add scene = \"...\"");
+}
+
 }  // namespace
 
 StudyFile read_study_file(const std::string& path, size_t max_variants) {
@@ -432,6 +459,10 @@ StudyFile read_study_file(const std::string& path, size_t max_variants) {
   if (plan.variants.empty() && plan.sweeps.empty())
     throw InputError(path, 0, 0, "no variants: base = false and no [[variant]] or [[sweep]]");
 
+  if (file.scene_file.empty()) {
+    refuse_metrics_needing_a_scene(file);
+    return file;  // every variant in the default scene: no source, every DOF (Scene's defaults)
+  }
   file.scene_document = parse_toml_file(file.scene_file);
   file.base_scene = read_scene(file.scene_document, file.scene_file);
   // A ride scene whose only source is random track is ridden at its [ride] speeds and has no

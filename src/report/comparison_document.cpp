@@ -560,6 +560,103 @@ void write_curve_charts(std::ostream& out, const std::vector<DesignCurves>& sets
   }
 }
 
+// ---- the ranked ride metric against speed ------------------------------------------------------
+
+// The ride metric the study ranks by: its first in the objective, else in the constraints; "".
+std::string ranked_ride_metric(const Ranking& ranking) {
+  for (const RankingCriterion& c : ranking.objective)
+    if (study::names_ride(c.metric)) return c.metric;
+  for (const RankingConstraint& c : ranking.constraints)
+    if (study::names_ride(c.metric)) return c.metric;
+  return "";
+}
+
+// What the ride metric is at one speed (the metric is its largest over the speeds).
+std::string ride_metric_at_speed_title(const std::string& metric) {
+  if (metric == "max_nmv") return "N_MV (estimate) at the worst floor point";
+  if (metric == "max_wz") return "Sperling Wz of the worst output";
+  return "RMS of " + study::ride_output_of(metric);
+}
+
+// The metric at each of the ride's speeds, SI, as study/metrics.cpp takes its largest: N_MV the
+// largest over the floor points, Wz over the outputs, an RMS of its output; NaN where unbounded
+// (an undamped mode the track excites) or absent.
+std::vector<double> ride_metric_at_speeds(const RideResult& ride, const std::string& metric) {
+  std::vector<double> out;
+  const std::string output = study::ride_output_of(metric);
+  for (const RideAtSpeed& at : ride.speeds) {
+    double v = NAN;
+    if (metric == "max_nmv") {
+      for (const RideComfortAtPoint& c : at.comfort) v = std::isnan(v) ? c.nmv_estimate : std::max(v, c.nmv_estimate);
+    } else {
+      bool unbounded = false;
+      for (size_t i = 0; i < ride.outputs.size(); ++i) {
+        const RideOutputAtSpeed& o = at.outputs[i];
+        if (metric == "max_wz") {
+          unbounded = unbounded || o.unbounded;
+          if (o.sperling_wz) v = std::isnan(v) ? *o.sperling_wz : std::max(v, *o.sperling_wz);
+        } else if (ride.outputs[i].name == output) {
+          unbounded = o.unbounded;
+          v = o.rms;
+        }
+      }
+      if (unbounded) v = NAN;
+    }
+    out.push_back(v);
+  }
+  return out;
+}
+
+// One row per design: the metric at each ride speed, in the metric's display unit.
+Table ride_table(const std::vector<DesignCurves>& sets, const std::string& metric) {
+  Table t;
+  t.headers = {"variant"};
+  const DesignCurves* first = nullptr;
+  for (const DesignCurves& s : sets)
+    if (s.ride && !first) first = &s;
+  for (const RideAtSpeed& at : first->ride->speeds) t.headers.push_back(significant(at.speed * kKmh, 6) + " km/h");
+  t.numeric.assign(t.headers.size(), true);
+  t.numeric.front() = false;
+  const study::DisplayUnit u = study::display_unit(metric);
+  for (const DesignCurves& s : sets) {
+    if (!s.ride) continue;
+    std::vector<std::string> row{s.label};
+    for (double v : ride_metric_at_speeds(*s.ride, metric))
+      row.push_back(std::isnan(v) ? "unbounded" : significant(v * u.per_si, 4) + (*u.unit ? std::string(" ") + u.unit : ""));
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+void write_ride_chart(std::ostream& out, const std::vector<DesignCurves>& sets, const std::string& metric) {
+  const study::DisplayUnit u = study::display_unit(metric);
+  report::Chart chart;
+  chart.id = "ride-1";
+  chart.title = ride_metric_at_speed_title(metric);
+  chart.x_label = "speed (km/h)";
+  chart.y_label = ride_metric_at_speed_title(metric) + (*u.unit ? std::string(" (") + u.unit + ")" : "");
+  for (size_t v = 0; v < sets.size(); ++v) {
+    const DesignCurves& s = sets[v];
+    if (!s.ride) continue;
+    report::ChartSeries series;
+    series.label = s.label;
+    series.dashed = s.base;
+    series.colour = static_cast<int>(v);
+    const std::vector<double> values = ride_metric_at_speeds(*s.ride, metric);
+    for (size_t i = 0; i < values.size(); ++i) {
+      series.x.push_back(s.ride->speeds[i].speed * kKmh);
+      series.y.push_back(values[i] * u.per_si);
+      if (std::isnan(values[i])) series.unbounded_x.push_back(s.ride->speeds[i].speed * kKmh);
+    }
+    chart.series.push_back(series);
+  }
+  out << report::svg_chart(chart);
+}
+
+bool any_ride(const std::vector<DesignCurves>& sets) {
+  return std::any_of(sets.begin(), sets.end(), [](const DesignCurves& s) { return s.ride.has_value(); });
+}
+
 // ---- permissible dynamic deflections ------------------------------------------------------------
 
 std::string rule_text(const DeflectionRule& rule) {
@@ -657,10 +754,16 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c, 
     }
   }
   const std::vector<DesignCurves>& sets = curves.designs;
-  if (!sets.empty()) {
+  if (const std::vector<CurveKey> keys = curve_keys(sets); !keys.empty()) {
     out << "## Peak responses of the best variants\n\nThe largest amplitude of each output over the speed range, "
            "for the base and the best " << kReportBest << " variants; the curves are in the HTML report.\n\n";
-    report::write_markdown_table(out, peak_table(sets, curve_keys(sets)));
+    report::write_markdown_table(out, peak_table(sets, keys));
+  }
+  if (const std::string metric = ranked_ride_metric(c.ranking); !metric.empty() && any_ride(sets)) {
+    out << "## " << ride_metric_at_speed_title(metric) << " against speed\n\nAt each speed of the scene's ride, "
+           "for the base and the best " << kReportBest << " variants (" << study::title(metric)
+        << " is the largest over these speeds); the chart is in the HTML report.\n\n";
+    report::write_markdown_table(out, ride_table(sets, metric));
   }
   if (c.deflection_rule.active()) {
     out << "## Permissible dynamic deflections\n\n" << rule_text(c.deflection_rule) << "\n\n";
@@ -691,8 +794,7 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
     write_sweep_charts(out, c, swept, *reference, points);
   }
   const std::vector<DesignCurves>& sets = curves.designs;
-  if (!sets.empty()) {
-    const std::vector<CurveKey> keys = curve_keys(sets);
+  if (const std::vector<CurveKey> keys = curve_keys(sets); !keys.empty()) {
     out << "<h2>Amplitude against speed: the best variants over the base</h2>\n<p class=note>The base dashed; the "
            "best "
         << kReportBest
@@ -700,6 +802,14 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
            "resonances (unbounded).</p>\n";
     write_curve_charts(out, sets, keys);
     report::write_html_table(out, peak_table(sets, keys));
+  }
+  if (const std::string metric = ranked_ride_metric(c.ranking); !metric.empty() && any_ride(sets)) {
+    out << "<h2>" << html_escape(ride_metric_at_speed_title(metric)) << " against speed: the best variants over the "
+           "base</h2>\n<p class=note>At each speed of the scene's ride; the base dashed, the best "
+        << kReportBest << " variants by rank. The ranked value (" << html_escape(study::title(metric))
+        << ") is the largest over these speeds.</p>\n";
+    write_ride_chart(out, sets, metric);
+    report::write_html_table(out, ride_table(sets, metric));
   }
   if (c.deflection_rule.active()) {
     out << "<h2>Permissible dynamic deflections</h2>\n<p class=note>" << html_escape(rule_text(c.deflection_rule))

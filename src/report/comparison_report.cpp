@@ -225,13 +225,41 @@ const char* status(const RankedVariant& v) { return !v.result.ok() ? "failed" : 
 struct CriterionColumn {
   double per_si;  // the display unit per SI unit
   bool peak;      // +∞ is "unbounded" (a peak), not "none" (no critical speed)
+  std::string metric;
 };
 
-std::vector<CriterionColumn> criterion_columns(const Ranking& ranking) {
-  std::vector<CriterionColumn> columns;
-  for (const auto& k : ranking.objective)
-    columns.push_back({study::display_unit(k.metric).per_si, study::infinite_is_unbounded(k.metric)});
-  return columns;
+// The columns of a comparison's table and CSV, worked out once per study: each criterion; each
+// metric a constraint names that no other column shows (the hunting speed a ride study is
+// constrained by, say: a reader sees the value the constraint judges); the lowest critical
+// speed only when the study computes critical speeds (variant_work_of), so that "none" never
+// reads as "stable" where nothing was computed.
+struct Columns {
+  std::vector<CriterionColumn> criteria, constrained;
+  bool critical_speeds = true;
+  bool deflections = false;
+};
+
+CriterionColumn column_of(const std::string& metric) {
+  return {study::display_unit(metric).per_si, study::infinite_is_unbounded(metric), metric};
+}
+
+Columns columns_of(const Ranking& ranking, const DeflectionRule& rule) {
+  Columns c;
+  c.critical_speeds = variant_work_of(ranking, rule).critical_speeds;
+  c.deflections = rule.active();
+  for (const auto& k : ranking.objective) c.criteria.push_back(column_of(k.metric));
+  const auto shown = [&](const std::string& metric) {
+    if ((metric == "lowest_critical_speed" && c.critical_speeds) || metric == "static_deflection" ||
+        (metric == "dynamic_deflection_ratio" && c.deflections))
+      return true;  // a column of its own
+    for (const auto* list : {&c.criteria, &c.constrained})
+      for (const CriterionColumn& k : *list)
+        if (k.metric == metric) return true;
+    return false;
+  };
+  for (const auto& k : ranking.constraints)
+    if (!shown(k.metric)) c.constrained.push_back(column_of(k.metric));
+  return c;
 }
 
 // metric_value(r, "lowest_critical_speed") and metric_value(r, "static_deflection")
@@ -251,8 +279,8 @@ std::optional<double> body_deflection(const VariantResult& r) {
 // A variant's CSV row after its rank (a streamed ranking knows the rank only when it writes),
 // appended to `row` field by field: numbers straight from to_chars, and only the fields that
 // can hold any text (the name, the failure, the violations) looked at for quotes.
-void append_csv_row(std::string* row, const std::vector<CriterionColumn>& criteria, bool deflections,
-                    const RankedVariant& v) {
+void append_csv_row(std::string* row, const Columns& columns, const RankedVariant& v) {
+  const std::vector<CriterionColumn>& criteria = columns.criteria;
   const VariantResult& r = v.result;
   report::append_csv_field(row, r.name);
   *row += ',';
@@ -263,11 +291,19 @@ void append_csv_row(std::string* row, const std::vector<CriterionColumn>& criter
     *row += ',';
     if (v.criteria.size() > k && v.criteria[k]) append_exact(row, *v.criteria[k] * criteria[k].per_si);
   }
-  *row += ',';
-  if (const auto lowest = lowest_critical_speed(r)) append_exact(row, *lowest * kKmh);
+  for (const CriterionColumn& k : columns.constrained) {
+    *row += ',';
+    const auto x = r.ok() ? metric_value(r, k.metric) : std::nullopt;
+    if (x && std::isinf(*x) && *x > 0) *row += k.peak ? "unbounded" : "none";
+    else if (x) append_exact(row, *x * k.per_si);
+  }
+  if (columns.critical_speeds) {
+    *row += ',';
+    if (const auto lowest = lowest_critical_speed(r)) append_exact(row, *lowest * kKmh);
+  }
   *row += ',';
   if (const auto deflection = body_deflection(r)) append_exact(row, *deflection * 1000.0);
-  if (deflections) {
+  if (columns.deflections) {
     *row += ',';
     const auto ratio = r.ok() ? metric_value(r, "dynamic_deflection_ratio") : std::nullopt;
     if (ratio && std::isinf(*ratio)) *row += "unbounded";
@@ -280,11 +316,13 @@ void append_csv_row(std::string* row, const std::vector<CriterionColumn>& criter
       if (row->size() > start) *row += ' ';
       append_exact(row, m.period_s);
     }
-  *row += ',';
-  start = row->size();
-  for (const auto& c : r.critical_speeds) {
-    if (row->size() > start) *row += ' ';
-    append_exact(row, c.speed * kKmh);
+  if (columns.critical_speeds) {
+    *row += ',';
+    start = row->size();
+    for (const auto& c : r.critical_speeds) {
+      if (row->size() > start) *row += ' ';
+      append_exact(row, c.speed * kKmh);
+    }
   }
   *row += ',';
   report::append_csv_field(row, r.failure);
@@ -322,41 +360,52 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
   std::vector<std::string> head{"rank", "variant", "feasible"};
   if (for_csv) head.push_back("objective");
   for (const auto& k : c.ranking.objective) head.push_back(for_csv ? criterion_heading(k) : criterion_title(k));
-  const bool deflections = c.deflection_rule.active();
+  const Columns columns = columns_of(c.ranking, c.deflection_rule);
+  for (const CriterionColumn& k : columns.constrained) {
+    const std::string unit = study::display_unit(k.metric).unit;
+    head.push_back(for_csv ? report::csv_heading(k.metric, unit) : study::heading(k.metric));
+  }
   if (!for_csv) {
-    for (const char* h : {"lowest critical speed [km/h]", "static deflection [mm]"}) head.push_back(h);
-    if (deflections) head.push_back("largest dynamic deflection");
+    if (columns.critical_speeds) head.push_back("lowest critical speed [km/h]");
+    head.push_back("static deflection [mm]");
+    if (columns.deflections) head.push_back("largest dynamic deflection");
     head.push_back("periods [s]");
     return head;
   }
-  head.push_back(report::csv_heading("lowest_critical_speed", "km/h"));
+  if (columns.critical_speeds) head.push_back(report::csv_heading("lowest_critical_speed", "km/h"));
   head.push_back(report::csv_heading("static_deflection", "mm"));
-  if (deflections) head.push_back("dynamic_deflection_ratio");
+  if (columns.deflections) head.push_back("dynamic_deflection_ratio");
   head.push_back(report::csv_heading("periods", "s"));
-  head.push_back(report::csv_heading("critical_speeds", "km/h"));
+  if (columns.critical_speeds) head.push_back(report::csv_heading("critical_speeds", "km/h"));
   for (const char* h : {"failure", "violations"}) head.push_back(h);
   return head;
 }
 
 // A variant's row of comparison_rows (its rank is v.rank), the criteria's columns worked out
 // once per study.
-std::vector<std::string> table_row(const std::vector<CriterionColumn>& criteria, bool deflections,
-                                   const RankedVariant& v) {
+std::string shown_value(const CriterionColumn& k, const std::optional<double>& x) {
+  if (!x) return "-";
+  if (std::isinf(*x) && *x > 0) return k.peak ? "unbounded" : "none";  // no critical speed in range
+  return number(*x * k.per_si, std::chars_format::general, 4);
+}
+
+std::vector<std::string> table_row(const Columns& columns, const RankedVariant& v) {
+  const std::vector<CriterionColumn>& criteria = columns.criteria;
   const VariantResult& r = v.result;
   std::vector<std::string> row;
-  row.reserve(7 + criteria.size());  // every column below: one allocation for the row, not five
+  row.reserve(7 + criteria.size() + columns.constrained.size());  // every column below: one allocation for the row, not five
   row.insert(row.end(), {std::to_string(v.rank), r.name, status(v)});
-  for (size_t k = 0; k < criteria.size(); ++k) {
-    const auto& x = v.criteria.size() > k ? v.criteria[k] : std::nullopt;
-    if (!x) row.push_back("-");
-    else if (std::isinf(*x) && *x > 0) row.push_back(criteria[k].peak ? "unbounded" : "none");  // no critical speed in range
-    else row.push_back(number(*x * criteria[k].per_si, std::chars_format::general, 4));
+  for (size_t k = 0; k < criteria.size(); ++k)
+    row.push_back(shown_value(criteria[k], v.criteria.size() > k ? v.criteria[k] : std::nullopt));
+  for (const CriterionColumn& k : columns.constrained)
+    row.push_back(shown_value(k, r.ok() ? metric_value(r, k.metric) : std::nullopt));
+  if (columns.critical_speeds) {
+    const auto lowest = lowest_critical_speed(r);
+    row.push_back(!lowest ? "-" : number(*lowest * kKmh, std::chars_format::fixed, 1));
   }
-  const auto lowest = lowest_critical_speed(r);
-  row.push_back(!lowest ? "-" : number(*lowest * kKmh, std::chars_format::fixed, 1));
   const auto deflection = body_deflection(r);
   row.push_back(!deflection ? "-" : number(*deflection * 1000.0, std::chars_format::fixed, 1));
-  if (deflections) {
+  if (columns.deflections) {
     const auto ratio = r.ok() ? metric_value(r, "dynamic_deflection_ratio") : std::nullopt;
     row.push_back(!ratio ? "-" : deflection_verdict(*ratio));
   }
@@ -374,8 +423,8 @@ std::vector<std::string> table_row(const std::vector<CriterionColumn>& criteria,
 
 std::vector<std::vector<std::string>> report::comparison_rows(const Comparison& c) {
   std::vector<std::vector<std::string>> rows{comparison_head(c, false)};
-  const std::vector<CriterionColumn> criteria = criterion_columns(c.ranking);
-  for (const RankedVariant& v : c.variants) rows.push_back(table_row(criteria, c.deflection_rule.active(), v));
+  const Columns columns = columns_of(c.ranking, c.deflection_rule);
+  for (const RankedVariant& v : c.variants) rows.push_back(table_row(columns, v));
   return rows;
 }
 
@@ -459,12 +508,11 @@ void write_table(std::ostream& out, const Comparison& c) {
   size_t feasible = 0;
   for (const auto& v : c.variants) feasible += v.feasible;
   write_table_head(out, c, c.variants.size(), feasible);
-  const std::vector<CriterionColumn> criteria = criterion_columns(c.ranking);
+  const Columns columns = columns_of(c.ranking, c.deflection_rule);
   write_table_rows(out, [&](bool notes, const RowVisit& visit) {
     if (!notes) visit(comparison_head(c, false));
     for (const RankedVariant& v : c.variants)
-      visit(notes ? std::vector<std::string>{table_note(c.ranking, v)}
-                  : table_row(criteria, c.deflection_rule.active(), v));
+      visit(notes ? std::vector<std::string>{table_note(c.ranking, v)} : table_row(columns, v));
   });
 }
 
@@ -483,11 +531,11 @@ void write_comparison(std::ostream& out, const Comparison& comparison, OutputFor
     case OutputFormat::csv: {
       write_csv_row(out, comparison_head(comparison, true));
       out << "\n";
-      const std::vector<CriterionColumn> criteria = criterion_columns(comparison.ranking);
+      const Columns columns = columns_of(comparison.ranking, comparison.deflection_rule);
       std::string row;
       for (const RankedVariant& v : comparison.variants) {
         row = std::to_string(v.rank) + ',';
-        append_csv_row(&row, criteria, comparison.deflection_rule.active(), v);
+        append_csv_row(&row, columns, v);
         out << row << "\n";
       }
       break;
@@ -572,18 +620,18 @@ study::StreamedRanking::Render report::streamed_row(const Ranking& ranking, cons
                                                    OutputFormat format) {
   switch (format) {
     case OutputFormat::table:
-      return [ranking, criteria = criterion_columns(ranking), deflections = rule.active()](const RankedVariant& v) {
-        const std::vector<std::string> cells = table_row(criteria, deflections, v);
+      return [ranking, columns = columns_of(ranking, rule)](const RankedVariant& v) {
+        const std::vector<std::string> cells = table_row(columns, v);
         std::string text;
         for (size_t i = 1; i < cells.size(); ++i) append_packed(&text, cells[i]);  // the rank is not known yet
         append_packed(&text, table_note(ranking, v));
         return text;
       };
     case OutputFormat::csv:
-      return [criteria = criterion_columns(ranking), deflections = rule.active()](const RankedVariant& v) {
+      return [columns = columns_of(ranking, rule)](const RankedVariant& v) {
         std::string row;
         row.reserve(384);  // a row of the benchmark study is about 300 bytes: one allocation
-        append_csv_row(&row, criteria, deflections, v);
+        append_csv_row(&row, columns, v);
         return row;
       };
     case OutputFormat::json:

@@ -368,7 +368,7 @@ struct GiveBackRead {
 // VariantAssembly assembles it into the workspace's systems: the same matrices, bit for bit,
 // from the base it keeps.
 VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned, int index, const DeflectionRule& rule,
-                               const std::optional<HuntingOptions>& hunting, bool ride_rms_only,
+                               const std::optional<HuntingOptions>& hunting, bool ride_rms_only, const VariantWork& work,
                                study::Workspace* workspace) {
   VariantResult r;
   r.index = index;
@@ -376,12 +376,15 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
   r.parameters = variant.parameters;
   StageClock clock(&r.summary);
   try {
-    if (variant.scene.sources.empty() && variant.scene.irregularity) {
-      // A ride scene: no periodic source, so no critical speeds, peaks or dynamic deflections.
+    if (!work.critical_speeds || (variant.scene.sources.empty() && variant.scene.irregularity)) {
+      // No critical speeds: the ranking reads none (nothing is built for them: a vehicle the
+      // scene's analyses refuse, one with series dampers say, still has its modes and hunting
+      // speed), or a ride scene has no periodic source.
       const GiveBackRead give_back{owned, workspace};
       summarise_without_sources(variant, &r);
       clock.lap("modes");
-      ride_summary(variant.vehicle, variant.scene, ride_rms_only, workspace ? &workspace->ride : nullptr, &r);
+      if (work.ride)
+        ride_summary(variant.vehicle, variant.scene, ride_rms_only, workspace ? &workspace->ride : nullptr, &r);
       clock.lap("ride");
       if (hunting) hunting_speed(variant.vehicle, *hunting, &r);
       clock.lap("hunting stability");
@@ -439,7 +442,7 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
     clock.lap("deflection checks");
     if (hunting) hunting_speed(vehicle, *hunting, &r);
     clock.lap("hunting stability");
-    ride_summary(vehicle, scene, ride_rms_only, workspace ? &workspace->ride : nullptr, &r);
+    if (work.ride) ride_summary(vehicle, scene, ride_rms_only, workspace ? &workspace->ride : nullptr, &r);
     clock.lap("ride");
   } catch (const NumericalError& e) {
     if (r.failure.empty()) r.failure = std::string("numerical failure: ") + e.what();
@@ -456,18 +459,21 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
 }  // namespace
 
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
-                               const std::optional<HuntingOptions>& hunting, bool ride_rms_only) {
-  return evaluate_in_full(variant, nullptr, index, rule, hunting, ride_rms_only, nullptr);
+                               const std::optional<HuntingOptions>& hunting, bool ride_rms_only,
+                               const VariantWork& work) {
+  return evaluate_in_full(variant, nullptr, index, rule, hunting, ride_rms_only, work, nullptr);
 }
 
 VariantResult study::evaluate_in_workspace(const StudyVariant& variant, int index, const VariantSettings& settings,
                                            Workspace* workspace) {
-  return evaluate_in_full(variant, nullptr, index, settings.rule, settings.hunting, settings.ride_rms_only, workspace);
+  return evaluate_in_full(variant, nullptr, index, settings.rule, settings.hunting, settings.ride_rms_only, settings.work,
+                          workspace);
 }
 
 VariantResult study::evaluate_owned_variant(StudyVariant&& variant, int index, const VariantSettings& settings,
                                             Workspace* workspace) {
-  return evaluate_in_full(variant, &variant, index, settings.rule, settings.hunting, settings.ride_rms_only, workspace);
+  return evaluate_in_full(variant, &variant, index, settings.rule, settings.hunting, settings.ride_rms_only, settings.work,
+                          workspace);
 }
 
 }  // namespace railmodal

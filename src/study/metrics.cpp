@@ -106,6 +106,35 @@ bool is_metric(const std::string& name) {
          is_ride_metric(metric);
 }
 
+namespace {
+// Metrics read from the scene's critical-speed study (its critical speeds, its amplitude curves,
+// the deflection checks made on them).
+bool reads_critical_speeds(std::string_view metric) {
+  std::string_view dof, quantity;
+  return metric == "lowest_critical_speed" || starts_with(metric, "critical_speed:") ||
+         starts_with(metric, "dynamic_deflection_ratio") || split_peak(metric, &dof, &quantity);
+}
+}  // namespace
+
+bool metric_needs_scene(const std::string& name) {
+  const std::string_view metric = canonical(name);
+  return reads_critical_speeds(metric) || is_ride_metric(metric);
+}
+
+VariantWork variant_work_of(const Ranking& ranking, const DeflectionRule& rule) {
+  VariantWork work;
+  work.critical_speeds = rule.active();
+  work.ride = false;
+  const auto see = [&](const std::string& name) {
+    const std::string_view metric = canonical(name);
+    work.critical_speeds = work.critical_speeds || reads_critical_speeds(metric);
+    work.ride = work.ride || is_ride_metric(metric);
+  };
+  for (const RankingCriterion& c : ranking.objective) see(c.metric);
+  for (const RankingConstraint& c : ranking.constraints) see(c.metric);
+  return work;
+}
+
 bool ride_rms_only(const Study& study) {
   bool rms = false, more = false;
   const auto see = [&](const std::string& name) {

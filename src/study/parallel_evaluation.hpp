@@ -31,6 +31,7 @@ struct VariantSettings {
   DeflectionRule rule;
   std::optional<HuntingOptions> hunting;
   bool ride_rms_only = false;
+  VariantWork work;  ///< variant_work_of the study's ranking
 };
 
 /// What a worker keeps from one variant to the next (issue 19, item 2): the assembly of the

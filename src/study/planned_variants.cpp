@@ -44,8 +44,10 @@ std::vector<const WrittenValue*> grid_values(const Sweep& sweep, size_t n) {
   return values;
 }
 
-// "<sweep>: <label> = <value>, ..."
+// "<sweep>: <label> = <value>, ...", or "<label> = <value>" for a sweep of one parameter named
+// as its label ("ky: ky = 100 kN/m" repeated it: the user audit of 2026-11-27b).
 std::string grid_name(const Sweep& sweep, const std::vector<const WrittenValue*>& values) {
+  if (values.size() == 1 && sweep.parameters[0].label == sweep.name) return sweep.name + " = " + values[0]->text;
   std::string name = sweep.name;
   for (size_t j = 0; j < values.size(); ++j) name += (j ? ", " : ": ") + sweep.parameters[j].label + " = " + values[j]->text;
   return name;

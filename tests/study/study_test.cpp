@@ -589,7 +589,8 @@ TEST(Evaluation, VariantsOnTheWorkersBaseAreTheGeneralPathsToRoundOff) {
     for (int i = 0; i < variant_count(study); ++i)
       if (in_shard(i, 1, shards))
         reference.push_back(report::shard_result_json(evaluate_variant(read_variant(study, i), i, study.deflection_rule,
-                                                                       hunting_options_of(study), ride_rms_only(study))));
+                                                                       hunting_options_of(study), ride_rms_only(study),
+                                 variant_work_of(study.ranking, study.deflection_rule))));
     // Read in the workers (each moved into its evaluation), and read beforehand (each copied).
     const int in = shards;  // a structured binding cannot be captured in C++17
     const Study loaded = load_study(path, [in](int i) { return in_shard(i, 1, in); });

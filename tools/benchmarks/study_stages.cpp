@@ -111,7 +111,8 @@ int main(int argc, char** argv) {
   std::vector<VariantResult> results;
   int i = 0;
   const std::vector<double> evaluate = per_variant(variants, [&](const StudyVariant& v) {
-    results.push_back(evaluate_variant(v, i++, study.deflection_rule, hunting_options_of(study), ride_rms_only(study)));
+    results.push_back(evaluate_variant(v, i++, study.deflection_rule, hunting_options_of(study), ride_rms_only(study),
+                                 variant_work_of(study.ranking, study.deflection_rule)));
   });
   // The workers' path: per variant, the thread time between two progress reports (one
   // thread: the progress is reported on the evaluating thread, after each variant).
