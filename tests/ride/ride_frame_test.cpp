@@ -185,6 +185,47 @@ TEST(RideFrame, TimeDomainReadsTheSameGravityTermAsTheFrequencyDomain) {
   EXPECT_TRUE(noted);
 }
 
+// An output that only the accelerometer's gravity term moves is answered, not refused as zero.
+// With its longitudinal motion held, the body's point at its centre reads ẍ = 0 in the track
+// frame (refused: nothing moves it), but an accelerometer there, fixed to the pitching body,
+// reads −g·θ. Vertical level pitches the body (the springs at x = ±3 m meet it 6 m/V apart), and
+// θ is the longitudinal displacement of a point 1 m above the centre (x = z·θ for a rotation θ
+// about y), so the reading's PSD is g² times that point's at every frequency (1e-12: round-off
+// of the products; the two rows are the same row scaled by −g).
+TEST(RideFrame, OutputOnlyGravityMovesIsNotRefusedAsZero) {
+  const LinearSystem s = rolling_body();
+  TrackIrregularitySpectra t;
+  t.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  RideOptions options;
+  options.speeds = {20.0};
+  const RideOutput centre = frame_test_point("ẍ body", Eigen::Vector3d(0, 0, 0), RideAxis::longitudinal,
+                                            ResponseQuantity::acceleration, RideOutput::Frame::body);
+  const RideOutput pitch = frame_test_point("x 1 m up", Eigen::Vector3d(0, 0, 1), RideAxis::longitudinal,
+                                           ResponseQuantity::displacement, RideOutput::Frame::track);
+  const RideResult r = solve_ride(s, t, {centre, pitch}, options);
+  const RideAtSpeed& at = r.speeds[0];
+  int checked = 0;
+  for (Eigen::Index k = 0; k < r.frequencies.size(); ++k) {
+    const double theta = at.outputs[1].psd(k);
+    if (!(theta > 0.0)) continue;
+    const double g2 = kFrameTestGravity * kFrameTestGravity;
+    EXPECT_NEAR(at.outputs[0].psd(k), g2 * theta, 1e-12 * g2 * theta) << r.frequencies(k);
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_GT(at.outputs[0].rms, 0.0);
+  // The same point read in the track's frame has nothing to move it: refused, naming the output.
+  RideOutput inertial = centre;
+  inertial.frame = RideOutput::Frame::track;
+  try {
+    solve_ride(s, t, {inertial}, options);
+    ADD_FAILURE() << "a track-frame ẍ of a body held longitudinally was answered";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'ẍ body': no degree of freedom of this model moves it"), std::string::npos)
+        << e.what();
+  }
+}
+
 // A body that cannot roll (roll held) reads ÿ in the body frame: there is no tilt for gravity to
 // act along. The answer is the track frame's to the bit (the same row), and a note says that the
 // tilted-axis reading asked for is not what the model can give, naming the output and the body,
