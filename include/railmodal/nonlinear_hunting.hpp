@@ -141,7 +141,7 @@ struct SpeedHold {
   double speed = 0.0;            ///< m/s
   /// The cycle survives: it grew past the amplitude bound, or held all the periods without falling
   /// below half the start's amplitude and its amplitude's growth rate over the hold's second half
-  /// is resolved at or above −1e-4 per period (rate_per_period − 2·rate_error ≥ −1e-4: halving
+  /// is resolved at or above −1e-4 per period (rate_per_period − rate_error ≥ −1e-4: halving
   /// would take over 6900 periods). It dies when it fell below half the start, or the rate is
   /// resolved below −1e-4. Neither: `undecided` (never counted as surviving).
   bool survives = false;
@@ -150,9 +150,12 @@ struct SpeedHold {
   int periods = 0;               ///< periods held (fewer when it died, or grew past the bound)
   int steps = 0;                 ///< accepted Runge–Kutta steps
   // Last, so that brace-initialised holds (the report tests') keep their meaning.
-  bool undecided = false;        ///< the rate is within two standard errors of −1e-4 per period
+  bool undecided = false;        ///< −1e-4 per period lies within rate_error of the rate
   double rate_per_period = 0.0;  ///< 1/period: d ln(amplitude)/d(periods), fitted over the second half
-  double rate_error = 0.0;       ///< 1/period: its standard error (infinite when too few half cycles)
+  /// 1/period: the most the residual's wobble about the fitted line can have moved the rate, its
+  /// worst case over the residual's envelope (the residuals are deterministic, not noise: no
+  /// standard error); infinite when too few half cycles.
+  double rate_error = 0.0;
 };
 
 /// The critical speed by holding the speed: the lowest speed at which a limit cycle started on the

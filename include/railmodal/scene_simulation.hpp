@@ -123,8 +123,10 @@ struct FftCheck {
   /// forced nonlinear response); `not_applicable` where no record of this scene could check the
   /// mode by its line, whatever its length (`why_not_applicable` says why): a speed ramp (the
   /// response is not stationary), a constant-speed forcing whose own line lies within the
-  /// tolerance of the mode (a peak there is the forcing's, whatever the mode), or a release that
-  /// comes to rest (a longer run adds only rest).
+  /// tolerance of the mode (a peak there is the forcing's, whatever the mode) or within its
+  /// resolution of the peak found with a linear forced response of at least a tenth of that
+  /// peak's amplitude (the peak is the forcing's line), or a release that comes to rest (a
+  /// longer run adds only rest).
   enum class Outcome { passed, failed, not_excited, not_resolved, no_line, not_applicable };
   Outcome outcome = Outcome::not_excited;
   bool checked() const { return outcome == Outcome::passed || outcome == Outcome::failed; }

@@ -594,7 +594,7 @@ RideResult ride::solve_ride(const LinearSystem& system, const TrackIrregularityS
                          "measured 5-s windows; that ν takes T long against the response's correlation time, so for a "
                          "narrow-band response the estimate reads high (+5.9 % for a 1 Hz mode at ζ = 0.05, +0.9 % at "
                          "ζ = 0.2; docs/ride.md)");
-  for (const std::string& note : ride::frame_notes(outputs)) result.notes.push_back(note);
+  for (const std::string& note : ride::frame_notes(system, outputs)) result.notes.push_back(note);
   return result;
 }
 

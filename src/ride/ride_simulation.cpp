@@ -393,7 +393,7 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
           : "exact state transition with a first-order hold on each wheel's linearly interpolated track (Van Loan), "
             "step = track step / (m·speed); EN 12299 Wb/Wd and Sperling B by the prewarped bilinear transform";
   result.summary.checks.push_back({"non-finite output samples", non_finite, 0.0, non_finite == 0.0});
-  for (const std::string& note : ride::frame_notes(outputs)) result.notes.push_back(note);
+  for (const std::string& note : ride::frame_notes(system, outputs)) result.notes.push_back(note);
   return result;
 }
 

@@ -400,11 +400,21 @@ std::complex<double> OutputMap::track(std::size_t term, const Eigen::Vector3d& u
   return power_of_i_omega(order, omega) * (t0[term].dot(u) + s * t1[term].dot(u) + s * s * t2[term].dot(u));
 }
 
-std::vector<std::string> frame_notes(const std::vector<RideOutput>& outputs) {
+std::vector<std::string> frame_notes(const LinearSystem& system, const std::vector<RideOutput>& outputs) {
   bool body = false, track = false;
-  for (const RideOutput& o : outputs)
+  std::vector<std::string> untilted;  // frame = body on a body that cannot tilt about that axis
+  for (const RideOutput& o : outputs) {
     if (o.kind == RideOutput::Kind::point && o.quantity == ResponseQuantity::acceleration && o.axis != RideAxis::vertical)
       (o.frame == RideOutput::Frame::body ? body : track) = true;
+    if (reads_gravity(o) && gravity_row(system, o).size() == 0) {
+      const bool lateral = o.axis == RideAxis::lateral;
+      untilted.push_back("output '" + o.name + "' asks for frame = body, but body '" + o.body + "' has no " +
+                         (lateral ? "roll" : "pitch") + " freedom in this model: it cannot tilt, so the accelerometer "
+                         "reads " + (lateral ? "ÿ" : "ẍ") + " alone, with no " + (lateral ? "g·φ" : "g·θ") +
+                         " term (the same as frame = track); give the body its " + (lateral ? "roll" : "pitch") +
+                         " (dofs, held) for the tilted-axis reading");
+    }
+  }
   std::vector<std::string> notes;
   if (body)
     notes.push_back("lateral and longitudinal accelerations with frame = body are what an accelerometer fixed to the "
@@ -413,6 +423,7 @@ std::vector<std::string> frame_notes(const std::vector<RideOutput>& outputs) {
   if (track)
     notes.push_back("lateral and longitudinal accelerations with frame = track are inertial, in the track's frame: an "
                     "accelerometer fixed to a rolling body also reads g·φ (φ its roll)");
+  notes.insert(notes.end(), untilted.begin(), untilted.end());
   return notes;
 }
 

@@ -70,8 +70,11 @@ Eigen::RowVectorXd gravity_row(const LinearSystem& system, const RideOutput& out
 
 /// What a reader must know of the frame of the outputs' lateral and longitudinal point
 /// accelerations: one note for those read by an accelerometer on the body (with the gravity
-/// component), one for those in the track's frame; none without such outputs.
-std::vector<std::string> frame_notes(const std::vector<RideOutput>& outputs);
+/// component), one for those in the track's frame; none without such outputs. And one for each
+/// output that asks for frame = body on a body without the tilt it needs (no roll DOF for a
+/// lateral reading, no pitch for a longitudinal one): that body cannot tilt, so the reading is the
+/// inertial one, and the note says so rather than leaving out g·φ silently.
+std::vector<std::string> frame_notes(const LinearSystem& system, const std::vector<RideOutput>& outputs);
 
 /// The map of element k's vertical stretch rate (upper relative to lower, track subtracted), m/s.
 OutputMap stretch_rate_map(const LinearSystem& system, int element);

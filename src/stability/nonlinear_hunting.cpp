@@ -109,7 +109,7 @@ HeldCriticalSpeed confirm_by_holding(const stability::LateralEquations& e, const
     return branch.states[i];
   };
   // A hold whose rate is not resolved (SpeedHold::undecided) is held again four times as long
-  // (the rate's error falls as periods^−3/2, eight times); still undecided, it counts as not
+  // (the bound on the rate falls as 1/periods, four times); still undecided, it counts as not
   // surviving for the bisection and is counted, and the answer is not converged.
   const auto hold = [&](double speed, int periods) {
     SpeedHold h = stability::hold_speed(e, o, speed, start_for(speed), ramp.watched_wheelset, periods);

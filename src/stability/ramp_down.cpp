@@ -234,12 +234,17 @@ bool collapsing_at_end(const std::vector<LimitCyclePoint>& curve) {
 
 // The growth rate of the half-cycle amplitudes A_k over the second half of a hold, per period: the
 // least-squares slope of ln A_k against k (two half cycles a period; the last, unfinished half
-// cycle left out), with its standard error from the residuals (the peaks are sampled values, low
-// by up to 5e-4 of themselves: kSamplesPerPeriod, so the residuals are that scatter). Needs at
-// least 4 half cycles; a rate of 0 with an infinite error otherwise.
+// cycle left out), and the most by which the residual's wobble can have moved it. The residuals
+// are not noise but deterministic and correlated (the peaks are sampled values, low by up to 5e-4
+// of themselves at kSamplesPerPeriod, in a pattern that repeats with the step's phase against
+// the cycle; what is left of the settling), so no standard error describes them. The bound is
+// the worst case over their envelope instead: the slope is linear in the data,
+// s = Σ d_k l_k / Σ d_k² (d_k = k − k̄), so a wobble w_k with |w_k| ≤ R, R the largest |residual|,
+// moves it by at most R·Σ|d_k| / Σd_k² (≈ 3R/n over n half cycles), whatever the wobble's
+// pattern. Needs at least 4 half cycles; a rate of 0 with an infinite bound otherwise.
 struct HoldRate {
   double per_period = 0.0;
-  double standard_error = std::numeric_limits<double>::infinity();
+  double bound = std::numeric_limits<double>::infinity();
 };
 
 HoldRate hold_rate(const std::vector<LimitCyclePoint>& peaks) {
@@ -251,19 +256,17 @@ HoldRate hold_rate(const std::vector<LimitCyclePoint>& peaks) {
   double mean_k = 0.0, mean_l = 0.0;
   for (std::size_t k = begin; k < end; ++k) mean_k += static_cast<double>(k), mean_l += std::log(peaks[k].amplitude);
   mean_k /= n, mean_l /= n;
-  double skk = 0.0, skl = 0.0;
+  double skk = 0.0, skl = 0.0, sum_abs_dk = 0.0;
   for (std::size_t k = begin; k < end; ++k) {
     const double dk = static_cast<double>(k) - mean_k;
-    skk += dk * dk, skl += dk * (std::log(peaks[k].amplitude) - mean_l);
+    skk += dk * dk, skl += dk * (std::log(peaks[k].amplitude) - mean_l), sum_abs_dk += std::abs(dk);
   }
   const double slope = skl / skk;
-  double residual = 0.0;
-  for (std::size_t k = begin; k < end; ++k) {
-    const double r = std::log(peaks[k].amplitude) - mean_l - slope * (static_cast<double>(k) - mean_k);
-    residual += r * r;
-  }
+  double envelope = 0.0;
+  for (std::size_t k = begin; k < end; ++k)
+    envelope = std::max(envelope, std::abs(std::log(peaks[k].amplitude) - mean_l - slope * (static_cast<double>(k) - mean_k)));
   rate.per_period = 2.0 * slope;
-  rate.standard_error = 2.0 * std::sqrt(residual / std::max(1.0, n - 2.0) / skk);
+  rate.bound = 2.0 * envelope * sum_abs_dk / skk;
   return rate;
 }
 
@@ -298,12 +301,12 @@ SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o
   // Near the fold the collapse is slow (the cycle lingers where the branch was) and so is the
   // approach to a cycle just above it: a hold that neither fell below half the start nor grew past
   // the bound is decided by its amplitude's growth rate over its second half (hold_rate), against
-  // −kHoldRate, only where the rate is resolved: two standard errors clear of the threshold. A
-  // rate within them (or a hold too short to fit) is undecided, not surviving: the caller holds
-  // longer (the error falls as periods^−3/2) or says so.
+  // −kHoldRate, only where the rate is resolved: its worst case over the residual's envelope
+  // clear of the threshold. A rate within that bound (or a hold too short to fit) is undecided,
+  // not surviving: the caller holds longer (the bound falls as 1/periods) or says so.
   const HoldRate rate = hold_rate(p);
   hold.rate_per_period = rate.per_period;
-  hold.rate_error = rate.standard_error;
+  hold.rate_error = rate.bound;
   const bool completed = static_cast<int>(p.size()) >= 2 * periods + 1;
   if (died) {
     hold.survives = false;
@@ -311,9 +314,9 @@ SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o
     hold.survives = true;
   } else if (!completed) {
     hold.undecided = true;  // stopped early without dying or growing: cannot happen but by the bound
-  } else if (rate.per_period - 2.0 * rate.standard_error >= -kHoldRate) {
+  } else if (rate.per_period - rate.bound >= -kHoldRate) {
     hold.survives = true;
-  } else if (rate.per_period + 2.0 * rate.standard_error < -kHoldRate) {
+  } else if (rate.per_period + rate.bound < -kHoldRate) {
     hold.survives = false;
   } else {
     hold.undecided = true;

@@ -358,6 +358,75 @@ TEST(RideReport, TimeDomainRunAndItsChecks) {
   EXPECT_EQ(j["time_domain"]["outputs"][0]["unit"], "m/s²");
 }
 
+// The <svg> … </svg> charts of an HTML page.
+std::vector<std::string> svg_charts(const std::string& html) {
+  std::vector<std::string> charts;
+  for (size_t at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1))
+    charts.push_back(html.substr(at, html.find("</svg>", at) - at));
+  return charts;
+}
+
+// The HTML fixes of ride-comfort (56f2b1a, the audit of 2026-11-27), held by what each was for
+// rather than by the goldens' bytes. An output without a comfort index (the spring force) has its
+// RMS against speed in a chart of its own, the acceleration (in the index charts) not there, and
+// the speed where the force is unbounded is a gap, not a point.
+TEST(RideReport, HtmlChartsTheRmsAgainstSpeedOfOutputsWithoutAComfortIndex) {
+  const std::string html = written(hand_built(), OutputFormat::html);
+  std::vector<std::string> rms;
+  for (const std::string& c : svg_charts(html))
+    if (has(c, ">RMS against speed, ")) rms.push_back(c);
+  ASSERT_EQ(rms.size(), 1u) << html;
+  EXPECT_TRUE(has(rms[0], ">secondary spring force<")) << rms[0];
+  EXPECT_FALSE(has(rms[0], "floor over bogie 1")) << rms[0];
+  EXPECT_TRUE(has(rms[0], ">RMS (N)<")) << rms[0];
+  // One finite point (200 km/h): the line through it has one vertex, or it is drawn as a marker.
+  const size_t plot = rms[0].find("<g clip-path=");
+  ASSERT_NE(plot, std::string::npos);
+  const std::string inside = rms[0].substr(plot, rms[0].find("</g>", plot) - plot);
+  EXPECT_FALSE(has(inside, "nan")) << inside;
+  EXPECT_TRUE(has(inside, "<polyline") || has(inside, "<circle")) << inside;
+}
+
+// The time-domain history chart draws the P95 of the windows over the trace (a dark dashed line
+// after every series of the plot: drawn under it, the dense history hid it), and its legend shows
+// the same dashed dark swatch.
+TEST(RideReport, HtmlDrawsTheTimeDomainP95OverTheTrace) {
+  const RideResult r = hand_built();
+  RideSimulationResult s;
+  s.outputs = {r.outputs[0]};
+  s.time = Eigen::VectorXd::LinSpaced(1001, 0.0, 10.0);
+  RideHistory h;
+  h.values = Eigen::VectorXd::Zero(1001);
+  h.weighted = (s.time.array() * 6.0).sin().matrix();
+  h.window_rms = Eigen::Vector2d(0.70, 0.71);
+  h.rms = 0.7;
+  h.weighted_rms = 0.705;
+  h.p95 = 0.7095;
+  s.histories = {h};
+  const std::string html = written(r, OutputFormat::html, &s, nullptr);
+  int histories = 0;
+  for (const std::string& c : svg_charts(html)) {
+    if (!has(c, "P95  the 95th percentile of the window RMS values")) continue;
+    ++histories;
+    const size_t plot = c.find("<g clip-path=");
+    ASSERT_NE(plot, std::string::npos) << c;
+    const std::string inside = c.substr(plot, c.find("</g>", plot) - plot);
+    const std::string dashed = "stroke=\"#111\" stroke-width=\"2\" stroke-dasharray=\"6,4\"";
+    const size_t line = inside.rfind("<line ");
+    ASSERT_NE(line, std::string::npos) << inside;
+    EXPECT_TRUE(has(inside.substr(line), dashed)) << inside.substr(line);  // the plot's last line is the P95
+    const size_t last_series = inside.rfind("<polyline");
+    ASSERT_NE(last_series, std::string::npos) << inside;
+    EXPECT_GT(line, last_series) << "the P95 is drawn before (under) the trace";
+    // The legend's swatch: the same dark dashes, beside the P95's key.
+    const size_t key = c.find("P95  the 95th percentile");
+    const size_t swatch = c.rfind("<line ", key);
+    ASSERT_NE(swatch, std::string::npos);
+    EXPECT_TRUE(has(c.substr(swatch, key - swatch), dashed)) << c.substr(swatch, key - swatch);
+  }
+  EXPECT_EQ(histories, 1) << html;
+}
+
 TEST(RideReport, RefusesAFormatItDoesNotWrite) {
   std::ostringstream out;
   EXPECT_THROW(write_ride(out, hand_built(), static_cast<OutputFormat>(42)), std::invalid_argument);

@@ -30,14 +30,14 @@ SpringStage frame_test_coil(double k) {
 // springs' plane, and moves them sideways by −θ(z + r0): zero with z = 0 and r0 = 0 (no wheelsets),
 // so cross-level excites roll and nothing else. Roll: 4k·1² = 2e6 N·m/rad on 2e4 kg·m², 1.59 Hz,
 // ζ = 4c/(2√(K I)) = 0.08.
-LinearSystem rolling_body() {
+LinearSystem rolling_body(std::vector<Motion> held = {Motion::longitudinal}) {
   Vehicle v;
   v.name = "rolling body";
   Body b;
   b.name = "body";
   b.mass = 12000.0;
   b.inertia = Eigen::Vector3d(2e4, 1e5, 1e5);
-  b.held = {Motion::longitudinal};
+  b.held = held;
   v.bodies.push_back(b);
   const double points[4][2] = {{3.0, 1.0}, {3.0, -1.0}, {-3.0, 1.0}, {-3.0, -1.0}};
   for (int i = 0; i < 4; ++i) {
@@ -183,6 +183,87 @@ TEST(RideFrame, TimeDomainReadsTheSameGravityTermAsTheFrequencyDomain) {
   bool noted = false;
   for (const std::string& n : simulated.notes) noted = noted || n.find("frame = body") != std::string::npos;
   EXPECT_TRUE(noted);
+}
+
+// An output that only the accelerometer's gravity term moves is answered, not refused as zero.
+// With its longitudinal motion held, the body's point at its centre reads ẍ = 0 in the track
+// frame (refused: nothing moves it), but an accelerometer there, fixed to the pitching body,
+// reads −g·θ. Vertical level pitches the body (the springs at x = ±3 m meet it 6 m/V apart), and
+// θ is the longitudinal displacement of a point 1 m above the centre (x = z·θ for a rotation θ
+// about y), so the reading's PSD is g² times that point's at every frequency (1e-12: round-off
+// of the products; the two rows are the same row scaled by −g).
+TEST(RideFrame, OutputOnlyGravityMovesIsNotRefusedAsZero) {
+  const LinearSystem s = rolling_body();
+  TrackIrregularitySpectra t;
+  t.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
+  RideOptions options;
+  options.speeds = {20.0};
+  const RideOutput centre = frame_test_point("ẍ body", Eigen::Vector3d(0, 0, 0), RideAxis::longitudinal,
+                                            ResponseQuantity::acceleration, RideOutput::Frame::body);
+  const RideOutput pitch = frame_test_point("x 1 m up", Eigen::Vector3d(0, 0, 1), RideAxis::longitudinal,
+                                           ResponseQuantity::displacement, RideOutput::Frame::track);
+  const RideResult r = solve_ride(s, t, {centre, pitch}, options);
+  const RideAtSpeed& at = r.speeds[0];
+  int checked = 0;
+  for (Eigen::Index k = 0; k < r.frequencies.size(); ++k) {
+    const double theta = at.outputs[1].psd(k);
+    if (!(theta > 0.0)) continue;
+    const double g2 = kFrameTestGravity * kFrameTestGravity;
+    EXPECT_NEAR(at.outputs[0].psd(k), g2 * theta, 1e-12 * g2 * theta) << r.frequencies(k);
+    ++checked;
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_GT(at.outputs[0].rms, 0.0);
+  // The same point read in the track's frame has nothing to move it: refused, naming the output.
+  RideOutput inertial = centre;
+  inertial.frame = RideOutput::Frame::track;
+  try {
+    solve_ride(s, t, {inertial}, options);
+    ADD_FAILURE() << "a track-frame ẍ of a body held longitudinally was answered";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("'ẍ body': no degree of freedom of this model moves it"), std::string::npos)
+        << e.what();
+  }
+}
+
+// A body that cannot roll (roll held) reads ÿ in the body frame: there is no tilt for gravity to
+// act along. The answer is the track frame's to the bit (the same row), and a note says that the
+// tilted-axis reading asked for is not what the model can give, naming the output and the body,
+// in the frequency and the time domain alike. Alignment moves the body sideways.
+TEST(RideFrame, BodyFrameOnABodyThatCannotRollReadsTheInertialAccelerationAndSaysSo) {
+  const LinearSystem s = rolling_body({Motion::longitudinal, Motion::roll});
+  TrackIrregularitySpectra t;
+  t.alignment = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::alignment, {0.06, 2.0});
+  const Eigen::Vector3d p(1.0, 0.5, 0.8);
+  const std::vector<RideOutput> outputs{
+      frame_test_point("ÿ body", p, RideAxis::lateral, ResponseQuantity::acceleration, RideOutput::Frame::body),
+      frame_test_point("ÿ track", p, RideAxis::lateral, ResponseQuantity::acceleration, RideOutput::Frame::track)};
+  RideOptions options;
+  options.speeds = {20.0};
+  const RideResult r = solve_ride(s, t, outputs, options);
+  const RideAtSpeed& at = r.speeds[0];
+  EXPECT_GT(at.outputs[0].rms, 0.0);
+  for (Eigen::Index k = 0; k < r.frequencies.size(); ++k) EXPECT_EQ(at.outputs[0].psd(k), at.outputs[1].psd(k));
+  EXPECT_EQ(at.outputs[0].rms, at.outputs[1].rms);
+  const auto untilted_notes = [](const std::vector<std::string>& notes) {
+    int n = 0;
+    for (const std::string& note : notes)
+      n += note.find("output 'ÿ body' asks for frame = body, but body 'body' has no roll freedom") != std::string::npos &&
+           note.find("reads ÿ alone, with no g·φ term") != std::string::npos;
+    return n;
+  };
+  EXPECT_EQ(untilted_notes(r.notes), 1);
+  // The rolling body gets no such note.
+  EXPECT_EQ(untilted_notes(solve_ride(rolling_body(), t, outputs, options).notes), 0);
+  TrackSynthesisOptions synthesis;
+  synthesis.length = 512.0;
+  synthesis.step = 0.25;
+  synthesis.seed = 3;
+  RideSimulationOptions o;
+  o.speed = 20.0;
+  o.time_step = synthesis.step / o.speed;
+  const RideSimulationResult simulated = simulate_ride(s, synthesise_track(t, synthesis), {outputs[0]}, o);
+  EXPECT_EQ(untilted_notes(simulated.notes), 1);
 }
 
 TEST(EnumNames, RideOutputFrame) {

@@ -554,5 +554,65 @@ TEST(BranchContinuity, RealPairsThatSwapBetweenSpeedsAreCaught) {
   }
 }
 
+// A pair at its meeting (fix-logic, 2026-11-28: the test a7243c3 lacked). Where a real pair's
+// roots meet, its two eigenvectors coincide: its shapes span one direction, a line. The step onto
+// the meeting compares the previous speed's plane with that line; a plane cannot lie in a line,
+// and the rule before a7243c3 read 0 there (a false veer). The measure is the line's share
+// within the other speed's plane, cos² of the angle between them: 1 for a line in the plane (the
+// pair continues), and 0.5 for a line at 45° to it (e0 + e2: half in the plane of DOFs 1–2), a
+// veer below the threshold 0.8 that the measure must still see. The step off the meeting onto
+// the complex pair's plane (DOFs 1–2) measures the same line within that plane.
+TEST(BranchContinuity, StepOntoAMeetingMeasuresItsLineWithinThePlane) {
+  const HandBuilt h = oscillators({{1, 0, 0, 0}, {1, 0, 0, 0}, {1, 0, 0, 0}, {1, 0, 0, 0}});
+  using cd = std::complex<double>;
+  const auto e = [](int i) { return Eigen::VectorXcd(Eigen::VectorXcd::Unit(4, i)); };
+  const auto speeds_meeting_along = [&](const Eigen::VectorXcd& line) {
+    std::vector<SpeedRoots> speeds(3);
+    for (int s = 0; s < 3; ++s) {
+      speeds[s].speed = 10.0 * (s + 1);
+      speeds[s].shapes = Eigen::MatrixXcd(4, 4);
+    }
+    speeds[0].values = Eigen::Vector4cd(cd(-10), cd(-12), cd(-21), cd(-23));
+    speeds[1].values = Eigen::Vector4cd(cd(-11), cd(-11), cd(-20), cd(-22));  // pair A meets at −11
+    speeds[2].values = Eigen::Vector4cd(cd(-1, 2), cd(-1, -2), cd(-1, 3), cd(-1, -3));
+    // Speed 0: A's two real shapes span DOFs 1–2; B's span DOFs 3–4, at every real speed.
+    speeds[0].shapes.col(0) = (e(0) + 0.10 * e(1)).normalized();
+    speeds[0].shapes.col(1) = (e(0) - 0.12 * e(1)).normalized();
+    speeds[1].shapes.col(0) = speeds[1].shapes.col(1) = line.normalized();  // coincident at the meeting
+    for (int s = 0; s < 2; ++s) {
+      speeds[s].shapes.col(2) = (e(2) + 0.10 * e(3)).normalized();
+      speeds[s].shapes.col(3) = (e(2) - 0.12 * e(3)).normalized();
+    }
+    const cd i(0.0, 1.0);
+    speeds[2].shapes.col(0) = (e(0) + i * e(1)) / std::sqrt(2.0);
+    speeds[2].shapes.col(1) = (e(0) - i * e(1)) / std::sqrt(2.0);
+    speeds[2].shapes.col(2) = (e(2) + i * e(3)) / std::sqrt(2.0);
+    speeds[2].shapes.col(3) = (e(2) - i * e(3)) / std::sqrt(2.0);
+    RootPaths paths;
+    paths.root = {{0, 1, 2, 3}, {0, 1, 2, 3}, {0, 1, 2, 3}};
+    paths.continuity.assign(3, std::vector<double>(4, 1.0));
+    return std::make_pair(speeds, paths);
+  };
+  const double threshold = 0.8;
+  // The meeting's line in A's plane, and tilted 45° out of it towards B's (e0 + e2). Expected
+  // to round-off of the SVDs (1e-15, and 1e-12 allows their sums).
+  for (const auto& [line, expected] : {std::pair{Eigen::VectorXcd(e(0) + 0.3 * e(1)), 1.0},
+                                       std::pair{Eigen::VectorXcd(e(0) + e(2)), 0.5}}) {
+    const auto [speeds, paths] = speeds_meeting_along(line);
+    const Branches b = group_branches(h.system, speeds, paths, 20.0, threshold);
+    ASSERT_EQ(b.oscillatory.size(), 2u);
+    int seen = 0;
+    for (const HuntingBranch& branch : b.oscillatory) {
+      ASSERT_EQ(branch.continuity.size(), 3u);
+      if (std::abs(branch.frequency_hz.back() - 2.0 / kTwoPi) > 1e-9) continue;  // pair A: Im λ = 2 at the top
+      ++seen;
+      EXPECT_NEAR(branch.continuity[1], expected, 1e-12) << "onto the meeting";
+      EXPECT_NEAR(branch.continuity[2], expected, 1e-12) << "off the meeting";
+      EXPECT_EQ(branch.veers, expected < threshold);
+    }
+    EXPECT_EQ(seen, 1);
+  }
+}
+
 }  // namespace
 }  // namespace railmodal::stability
