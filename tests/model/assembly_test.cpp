@@ -288,8 +288,9 @@ TEST(VariantAssembly, ABadCoefficientGivesAssemblesMessage) {
 // with a reason) before these sizes (x86-64, libstdc++) are updated, as VehicleNumbers' are.
 TEST(VariantAssembly, ComparesEveryFieldTheAssemblyReads) {
   if (sizeof(void*) != 8 || sizeof(std::string) != 32) GTEST_SKIP() << "sizes measured on x86-64 with libstdc++";
-  // 168 since Vehicle::warnings (2026-11-27): the reader's diagnostics, which no assembly reads.
-  EXPECT_EQ(sizeof(Vehicle), 168u);
+  // 144: Vehicle::warnings (168, 2026-11-27) went back out of the model on 2026-11-28 (the
+  // reader hands its warnings beside the vehicle: load_vehicle's out-parameter).
+  EXPECT_EQ(sizeof(Vehicle), 144u);
   EXPECT_EQ(sizeof(Body), 232u);
   EXPECT_EQ(sizeof(BodyBending), 80u);
   EXPECT_EQ(sizeof(SpringStage), 112u);

@@ -155,8 +155,7 @@ int run(const RideCommandOptions& o) {
                                           scene.ride ? scene.ride->geometry_file : std::string()};
     files.refuse_inputs(inputs);
     current = scene.vehicle_file;
-    const Vehicle vehicle = load_vehicle(scene.vehicle_file);
-    print_input_warnings(vehicle.warnings);
+    const Vehicle vehicle = load_vehicle_and_warn(scene.vehicle_file);
     const LinearSystem system = assemble(vehicle, scene.dofs);
     current = o.scene;
     print_input_warnings(scene_warnings(scene, vehicle));  // a floor point beyond the body
