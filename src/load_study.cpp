@@ -15,6 +15,7 @@
 #include "input/study_reader.hpp"
 #include "railmodal/errors.hpp"
 #include "input/document_readers.hpp"
+#include "input/table_reader.hpp"
 #include "study/metrics.hpp"
 #include "study/offered_metrics.hpp"
 #include "study/planned_variants.hpp"
@@ -71,8 +72,28 @@ void refuse_metrics_not_offered(const input::StudyFile& file) {
   study::check_offered_metrics(file.plan.ranking, file.path, offered);
 }
 
+// The warnings of the study's base vehicle file and its scene as written (not a variant's
+// overrides), appended to `warnings`: the input a user wrote, said once rather than by every
+// variant that reads it. A base file that does not read alone (its variants' overrides complete
+// it) has none: the variants that read it report what is wrong.
+void append_base_warnings(const input::StudyFile& file, std::vector<std::string>* warnings) {
+  const std::string& path = file.plan.vehicle_file;
+  const auto parsed = file.vehicle_documents.find(path);
+  std::vector<std::string> found;
+  try {
+    const Vehicle base = parsed != file.vehicle_documents.end()
+                             ? input::read_vehicle(parsed->second, path, &found)
+                             : input::read_vehicle(input::parse_toml_file(path), path, &found);
+    const std::vector<std::string> scene = scene_warnings(file.base_scene, base);
+    found.insert(found.end(), scene.begin(), scene.end());
+  } catch (const InputError&) {
+    return;
+  }
+  warnings->insert(warnings->end(), found.begin(), found.end());
+}
+
 // The study file read and checked, its variants not listed (open_study).
-Study opened_study(const std::string& path, size_t max_variants) {
+Study opened_study(const std::string& path, size_t max_variants, std::vector<std::string>* warnings = nullptr) {
   input::StudyFile file = input::read_study_file(path, max_variants);
   study::PlannedVariants planned(file.plan);
   if (const std::optional<size_t> repeated = planned.first_repeated_name()) {
@@ -81,6 +102,7 @@ Study opened_study(const std::string& path, size_t max_variants) {
   }
   input::check_variants(&file);
   refuse_metrics_not_offered(file);
+  if (warnings) append_base_warnings(file, warnings);
   Study study;
   study.name = file.plan.name;
   study.source = path;
@@ -115,7 +137,9 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
   return load_study(path, read_only, kMaxStudyVariants);
 }
 
-Study open_study(const std::string& path) { return opened_study(path, kMaxStudyVariants); }
+Study open_study(const std::string& path, std::vector<std::string>* warnings) {
+  return opened_study(path, kMaxStudyVariants, warnings);
+}
 
 namespace {
 

@@ -23,7 +23,11 @@ namespace railmodal {
 /// Reads a vehicle file. Throws InputError ("file:line:col: error: key 'x': ...") for a
 /// syntax error, a missing, unknown or mistyped key, a quantity of the wrong dimension or a
 /// non-physical value (negative or zero mass, negative stiffness, NaN).
-Vehicle load_vehicle(const std::string& path);
+/// `warnings`, when given, gets what the reader accepted but found unusual, one line each
+/// ("wagon.toml:41:10: warning: key 'secondary.hanger.length': read as 734 m ...";
+/// docs/input.md, "Implausible inputs"), appended, for the caller to show: they change no
+/// result. Without it none are made (a study reads thousands of variants and shows none).
+Vehicle load_vehicle(const std::string& path, std::vector<std::string>* warnings = nullptr);
 
 /// A speed written as vehicle and scene files write one: "75 km/h", "20.8 m/s" or a bare number
 /// (m/s), in m/s. For programs that take speeds on their command line (railmodal stability

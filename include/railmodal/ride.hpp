@@ -262,7 +262,9 @@ bool has_grid_error_estimate(const RideResult& result);
 /// component that reaches no degree of freedom (alignment on a vertical model), a component whose temporal band lies
 /// wholly outside the grid at a speed, no component at all, an element on the track through a series damper, and what the ride does not model yet
 /// on wheelsets: cross-level with lateral degrees of freedom (the rails' roll through the contact), and a
-/// lateral or longitudinal wheel-rail-force output. Where the system holds wheelsets' lateral motion the linear
+/// lateral or longitudinal wheel-rail-force output. The refusals of one component (it reaches no degree of freedom,
+/// its band is outside the grid, cross-level on such wheelsets) are an IrregularityComponentError (track_spectrum.hpp)
+/// that says which. Where the system holds wheelsets' lateral motion the linear
 /// creep contact (contact_matrices) is assembled at each speed and alignment acts through it (docs/ride.md, "Lateral
 /// ride through the creep forces"); above the linear critical speed every output is `unbounded`. Throws
 /// railmodal::NumericalError naming the frequency where the

@@ -61,7 +61,8 @@ struct TrackSynthesisOptions {
 
 /// A realisation of `track` by inverse real FFT (FFTW). Throws std::invalid_argument for
 /// invalid options, no component, or a spectrum band the sampling cannot represent (its upper
-/// end above the Nyquist wavenumber, or its lower end below 2π/length), naming which.
+/// end above the Nyquist wavenumber, or its lower end below 2π/length), naming which: that one
+/// an IrregularityComponentError (track_spectrum.hpp) with its component.
 TrackGeometry synthesise_track(const TrackIrregularitySpectra& track, const TrackSynthesisOptions& options);
 
 /// Measured track geometry from a CSV file: a header row naming the columns with units

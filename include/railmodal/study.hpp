@@ -152,7 +152,10 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
 /// made from its index when asked for (variant_count, variant_name, read_variant). A study of
 /// 10^6 variants opens in a few megabytes; evaluate_study reads each variant in the worker that
 /// evaluates it (EvaluationOptions::read_in_workers), compare_study keeps only its keys.
-Study open_study(const std::string& path);
+/// `warnings`, when given, gets the warnings of the base vehicle file and of the scene as
+/// written, appended once (load_vehicle's and scene_warnings' lines), not those of each
+/// variant; without it none are made.
+Study open_study(const std::string& path, std::vector<std::string>* warnings = nullptr);
 
 /// The number of variants of the study: Study::variants', or, for an opened study, its plan's.
 int variant_count(const Study& study);

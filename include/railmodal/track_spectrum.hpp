@@ -35,6 +35,7 @@
 #pragma once
 
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,22 @@ const char* to_string(TrackIrregularity irregularity);  ///< "vertical_level", "
 /// Inverse of to_string; std::nullopt for an unknown word.
 /// Also reads the spellings before 2026-11-27, "vertical-level" and "cross-level".
 std::optional<TrackIrregularity> track_irregularity_from_string(const std::string& word);
+
+/// One component of a track's irregularity refused where it meets a system, a frequency grid or
+/// a sampling, though valid on its own: it moves no degree of freedom of the model, its band
+/// lies wholly outside the grid at a speed, cross-level the ride does not model on these
+/// wheelsets, a band the realisation cannot sample. A std::invalid_argument (what() says why)
+/// that says which component, so that a caller can place the error at that component of its
+/// input (railmodal ride: at the scene's [source.alignment] table and key) without reading text.
+class IrregularityComponentError : public std::invalid_argument {
+ public:
+  IrregularityComponentError(TrackIrregularity component, const std::string& message)
+      : std::invalid_argument(message), component_(component) {}
+  TrackIrregularity component() const { return component_; }
+
+ private:
+  TrackIrregularity component_;
+};
 
 /// The two ORE B176 track qualities.
 enum class OreLevel { low, high };

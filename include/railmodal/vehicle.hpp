@@ -253,10 +253,6 @@ struct Vehicle {
   /// The bodies that are wheelsets on the rails; empty for the book's wagons, whose axles are
   /// the track (elements with lower = "").
   std::vector<Wheelset> wheelsets;
-  /// What the reader accepted but found unusual ("wagon.toml:41:10: warning: key
-  /// 'secondary.hanger.length': read as 734 m ..."; docs/input.md, "Implausible inputs"), for
-  /// the caller to show; no analysis reads it. Empty for a vehicle built in code.
-  std::vector<std::string> warnings;
 };
 
 /// Combined stiffness of stages in series (each stage = count springs in parallel), N/m.

@@ -208,8 +208,21 @@ void bind_model(py::module_& m) {
                std::to_string(v.elements.size()) + " elements)";
       });
 
-  m.def("load_vehicle", &load_vehicle, py::arg("path"), py::call_guard<py::gil_scoped_release>(),
-        "Reads a vehicle file (TOML with units). InputError names file, line, column and key.");
+  m.def(
+      "load_vehicle",
+      [](const std::string& path) {
+        std::vector<std::string> warnings;
+        Vehicle vehicle;
+        {
+          py::gil_scoped_release unlocked;
+          vehicle = load_vehicle(path, &warnings);
+        }
+        warn_input(warnings);
+        return vehicle;
+      },
+      py::arg("path"),
+      "Reads a vehicle file (TOML with units). InputError names file, line, column and key; what it accepts "
+      "but finds unusual is an InputWarning (Python's warnings module).");
 
   py::class_<LinearSystem>(m, "LinearSystem",
                            "M q'' + C q' + K q = f over dof_labels (SI). M, C, K, K_gravity are read-only "

@@ -4,11 +4,14 @@
 
 #include <pybind11/pybind11.h>
 
+#include <string>
+#include <vector>
+
 #include "vehicle_lists.hpp"  // the vehicle's lists are opaque types: seen by every file
 
 namespace railmodal::python {
 
-void bind_errors(pybind11::module_& m);      // InputError, NumericalError → Python exceptions
+void bind_errors(pybind11::module_& m);      // InputError, NumericalError → Python exceptions; InputWarning
 void bind_model(pybind11::module_& m);       // vehicles (file, dict), assemble, Matrix Market
 void bind_modes(pybind11::module_& m);       // undamped and damped modes
 void bind_response(pybind11::module_& m);    // harmonic response, FRFs, critical speeds
@@ -17,5 +20,10 @@ void bind_study(pybind11::module_& m);       // design studies (compare)
 void bind_stability(pybind11::module_& m);   // hunting stability
 void bind_ride(pybind11::module_& m);        // ride on random track
 void bind_balance(pybind11::module_& m);     // driving gear and balancing
+
+/// Issues each of a reader's warnings ("file:line:col: warning: ...") as a railmodal.InputWarning
+/// through Python's warnings module, at the caller's line; the GIL held. Throws
+/// error_already_set when a filter makes the warning an error.
+void warn_input(const std::vector<std::string>& warnings);
 
 }  // namespace railmodal::python

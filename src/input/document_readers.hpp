@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 #include <toml.hpp>
 
 #include "railmodal/scene.hpp"
@@ -11,7 +12,9 @@
 
 namespace railmodal::input {
 
-Vehicle read_vehicle(const toml::value& document, const std::string& file);
+/// `warnings`: as load_vehicle's (input.hpp); nullptr: none are made.
+Vehicle read_vehicle(const toml::value& document, const std::string& file,
+                     std::vector<std::string>* warnings = nullptr);
 Scene read_scene(const toml::value& document, const std::string& file);
 
 }  // namespace railmodal::input

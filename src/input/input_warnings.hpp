@@ -11,8 +11,8 @@ namespace railmodal::input {
 class TableReader;
 
 /// While alive, the warnings of the reader run on this thread go to `*into` (a study reads its
-/// variants on several threads, each into its own vehicle). Nested collectors stack; without
-/// one, warnings are dropped.
+/// variants on several threads). Nested collectors stack; without one, or with `into` null,
+/// warnings are not made.
 class WarningCollector {
  public:
   explicit WarningCollector(std::vector<std::string>* into);

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "model/spring_stages.hpp"
 #include "railmodal/scene.hpp"
 #include "railmodal/vehicle.hpp"
 #include "shortest_text.hpp"
@@ -23,10 +24,9 @@ std::string scene_warning(const Scene& scene, const std::string& place_key, cons
 }
 
 bool any_stage(const Vehicle& v, bool (*has)(const SpringStage&)) {
-  for (const Element& e : v.elements)
-    for (const auto* stages : {&e.vertical_stages, &e.lateral_stages, &e.longitudinal_stages})
-      if (std::any_of(stages->begin(), stages->end(), has)) return true;
-  return false;
+  bool found = false;
+  model::each_spring_stage(v, [&](const SpringStage& s) { found = found || has(s); });
+  return found;
 }
 
 // Why the effect has nothing to act on in `v` ("" when it has): what the vehicle lacks.

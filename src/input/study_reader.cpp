@@ -494,8 +494,10 @@ toml::value assignment_value(const StudyFile& file, const study::Assignment& a) 
 
 Vehicle read_overridden_vehicle(const StudyFile& file, const study::VariantSpec& spec,
                                 const std::vector<const study::Assignment*>& on_vehicle) {
+  // A variant's overrides draw no warnings: the base file's are said once (open_study).
+  const auto read = [](const toml::value& document, const std::string& path) { return read_vehicle(document, path); };
   return read_with_assignments<Vehicle>(file.vehicle_documents.at(spec.vehicle_file), spec.vehicle_file, on_vehicle,
-                                        file, spec, read_vehicle);
+                                        file, spec, read);
 }
 
 namespace {

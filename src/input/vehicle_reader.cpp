@@ -130,11 +130,11 @@ void read_general(TableReader& root, Vehicle* v) {
 
 }  // namespace
 
-Vehicle read_vehicle(const toml::value& document, const std::string& path) {
+Vehicle read_vehicle(const toml::value& document, const std::string& path, std::vector<std::string>* warnings) {
   TableReader root(document, path, "");
   Vehicle v;
   v.source = path;
-  const WarningCollector warnings(&v.warnings);
+  const WarningCollector collector(warnings);
   TableReader head = root.table("vehicle");
   v.name = head.string("name");
   v.gravity = head.optional_positive("gravity", Quantity::acceleration).value_or(9.81);
@@ -157,6 +157,8 @@ Vehicle read_vehicle(const toml::value& document, const std::string& path) {
 
 }  // namespace input
 
-Vehicle load_vehicle(const std::string& path) { return input::read_vehicle(input::parse_toml_file(path), path); }
+Vehicle load_vehicle(const std::string& path, std::vector<std::string>* warnings) {
+  return input::read_vehicle(input::parse_toml_file(path), path, warnings);
+}
 
 }  // namespace railmodal

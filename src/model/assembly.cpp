@@ -13,6 +13,7 @@
 #include "model/body_bending.hpp"
 #include "model/element_stiffness.hpp"
 #include "model/rigid_body.hpp"
+#include "model/spring_stages.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/linear_system.hpp"
 
@@ -117,10 +118,11 @@ void check_wheelsets(const Vehicle& vehicle, const std::map<std::string, int>& i
 // check_vehicle (which throws it) and a study's coefficient deltas (coefficients_valid), so the
 // two cannot drift apart.
 const char* coefficient_error(const Element& e) {
-  for (const auto* stages : {&e.vertical_stages, &e.lateral_stages, &e.longitudinal_stages})
-    for (const auto& s : *stages)
-      if (!(s.stiffness > 0.0) || !std::isfinite(s.stiffness) || s.count < 1)
-        return "spring stiffness must be positive and finite";
+  bool stiffness_valid = true;
+  model::each_spring_stage(e, [&](const SpringStage& s) {
+    stiffness_valid = stiffness_valid && s.stiffness > 0.0 && std::isfinite(s.stiffness) && s.count >= 1;
+  });
+  if (!stiffness_valid) return "spring stiffness must be positive and finite";
   if (!(e.longitudinal_damping >= 0.0) || !std::isfinite(e.longitudinal_damping))
     return "longitudinal damping must be non-negative and finite";
   if (!(e.rotational_stiffness.array() >= 0.0).all() || !e.rotational_stiffness.allFinite())

@@ -386,10 +386,11 @@ std::vector<std::string> band_notes(const Problem& p, const RideOptions& options
                              c.spectrum.name() + ") spans " + shortest_text(low, 4) + " … " + shortest_text(high, 4) +
                              " Hz";
       if (high <= options.min_frequency || low >= options.max_frequency)
-        throw std::invalid_argument("ride: " + at + ", wholly outside the grid " + shortest_text(options.min_frequency) +
-                                    " … " + shortest_text(options.max_frequency) +
-                                    " Hz: its answer would be zero; widen the grid (min_frequency, max_frequency) or "
-                                    "the band");
+        throw IrregularityComponentError(
+            c.kind, "ride: " + at + ", wholly outside the grid " + shortest_text(options.min_frequency) + " … " +
+                        shortest_text(options.max_frequency) +
+                        " Hz: its answer would be zero; widen the grid (min_frequency, max_frequency) or "
+                        "the band");
       if (low < options.min_frequency || high > options.max_frequency)
         notes.push_back(at + ", beyond the grid " + shortest_text(options.min_frequency) + " … " +
                         shortest_text(options.max_frequency) + " Hz: the RMS covers the part inside the grid only");

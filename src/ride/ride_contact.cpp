@@ -41,10 +41,12 @@ void add_suspension_roll(const LinearSystem& system, const std::string& wheelset
     const bool lateral_series = std::any_of(e.series_dampers.begin(), e.series_dampers.end(),
                                             [](const SeriesDamper& s) { return s.direction == Motion::lateral; });
     if (e.rotational_stiffness.x() != 0.0 || lateral_series)
-      throw std::invalid_argument("ride: cross-level through the contact: element '" + e.name + "' on wheelset '" +
-                                  wheelset + "' has " + (lateral_series ? "a lateral series damper" : "a roll stiffness") +
-                                  ", which the rails' roll would load and the ride does not model; leave the "
-                                  "cross-level out, or move the element off the wheelset");
+      throw IrregularityComponentError(TrackIrregularity::cross_level,
+                                       "ride: cross-level through the contact: element '" + e.name + "' on wheelset '" +
+                                           wheelset + "' has " +
+                                           (lateral_series ? "a lateral series damper" : "a roll stiffness") +
+                                           ", which the rails' roll would load and the ride does not model; leave the "
+                                           "cross-level out, or move the element off the wheelset");
     if (k >= system.element_loads.size())
       throw std::invalid_argument("ride: cross-level through the contact: element '" + e.name +
                                   "' has no static load in the assembled system (assemble the vehicle first)");

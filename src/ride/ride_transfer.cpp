@@ -90,10 +90,12 @@ Component component(const LinearSystem& system, TrackIrregularity slot, const Tr
   bool rail_roll = false;
   for (const TrackInput& t : system.track_inputs) rail_roll = rail_roll || t.element == kRailRollInput;
   if (wheelsets && slot == TrackIrregularity::cross_level && has_lateral_dofs(system) && !rail_roll)
-    throw std::invalid_argument("ride: cross-level on a vehicle with wheelsets moves them laterally through the "
-                                "wheel–rail contact (the rails' roll tilts the normal loads), which the ride models "
-                                "only when the wheelsets' lateral and yaw motions are free (dofs = \"all\"); leave it "
-                                "out, free them, or give the vertical degrees of freedom only");
+    throw IrregularityComponentError(
+        TrackIrregularity::cross_level,
+        "ride: cross-level on a vehicle with wheelsets moves them laterally through the "
+        "wheel–rail contact (the rails' roll tilts the normal loads), which the ride models "
+        "only when the wheelsets' lateral and yaw motions are free (dofs = \"all\"); leave it "
+        "out, free them, or give the vertical degrees of freedom only");
   Component c{slot, spectrum, {}};
   if (slot == TrackIrregularity::cross_level)
     c.displacement = cross_level_directions(system, contact_half_spacing, rolling_radius);
@@ -105,11 +107,12 @@ Component component(const LinearSystem& system, TrackIrregularity slot, const Tr
   for (size_t i = 0; i < system.track_inputs.size(); ++i)
     if (system.track_inputs[i].element < 0) c.displacement[i] = contact_direction(system.track_inputs[i].element, slot);
   if (!reaches_dofs(system, c))
-    throw std::invalid_argument(std::string("ride: the ") + to_string(slot) + " component (" + spectrum.name() +
-                                ") moves no degree of freedom of this model (" +
-                                (slot == TrackIrregularity::vertical_level ? "no vertical" : "no lateral or roll") +
-                                " motion reaches the track inputs); its answer would be zero: leave it out, or give "
-                                "the degrees of freedom it acts on (dofs = \"all\")");
+    throw IrregularityComponentError(
+        slot, std::string("ride: the ") + to_string(slot) + " component (" + spectrum.name() +
+                  ") moves no degree of freedom of this model (" +
+                  (slot == TrackIrregularity::vertical_level ? "no vertical" : "no lateral or roll") +
+                  " motion reaches the track inputs); its answer would be zero: leave it out, or give "
+                  "the degrees of freedom it acts on (dofs = \"all\")");
   return c;
 }
 

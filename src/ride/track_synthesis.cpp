@@ -40,7 +40,7 @@ void require_representable(const TrackSpectrum& spectrum, double lowest, double 
     why << spectrum.name() << ": the band's lower end " << band.low
         << " rad/m is below the lowest wavenumber 2 pi/length = " << lowest
         << " rad/m the profile holds; take a longer length or raise the band's lower end";
-  if (why.tellp() > 0) throw std::invalid_argument("synthesise_track: " + why.str());
+  if (why.tellp() > 0) throw IrregularityComponentError(spectrum.irregularity(), "synthesise_track: " + why.str());
 }
 
 // z_n = Σ_k Re(c_k e^{iΩ_k x_n}), k = 1 … N/2 − 1, Ω_k = kΔΩ, ΔΩ = 2π/(NΔx): c_k has

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "model/scene_fit.hpp"
+#include "model/spring_stages.hpp"
 #include "railmodal/response.hpp"
 #include "simulate/history_summary.hpp"
 #include "simulate/record_memory.hpp"
@@ -252,9 +253,7 @@ std::string why_no_run_could_check(const Scene& scene, const FftCheck& check, co
 // The largest relative friction φ of the vehicle's leaf springs (0 without any).
 double largest_leaf_friction(const Vehicle& vehicle) {
   double phi = 0.0;
-  for (const Element& e : vehicle.elements)
-    for (const auto* stages : {&e.vertical_stages, &e.lateral_stages, &e.longitudinal_stages})
-      for (const SpringStage& stage : *stages) phi = std::max(phi, stage.relative_friction);
+  model::each_spring_stage(vehicle, [&](const SpringStage& stage) { phi = std::max(phi, stage.relative_friction); });
   return phi;
 }
 

@@ -43,6 +43,24 @@ TEST(VehicleReader, GoodFileLoads) {
   EXPECT_EQ(v.elements.size(), 4u);
 }
 
+// What the reader accepts but finds unusual comes back beside the vehicle, appended to what the
+// caller's list holds, and changes nothing the vehicle holds; without the list none are made.
+TEST(VehicleReader, WarningsComeBackBesideTheVehicle) {
+  std::string text = kGood;
+  text.replace(text.find("wheelbase = \"400 cm\""), 20, "wheelbase = 400");  // 400 m, a bare number
+  const std::string path = write_temp("warned.toml", text);
+  std::vector<std::string> warnings{"the caller's own line"};
+  const Vehicle warned = load_vehicle(path, &warnings);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0], "the caller's own line");
+  EXPECT_EQ(warnings[1].rfind(path + ":9:13: warning: key 'suspension.wheelbase': read as 400 m", 0), 0u) << warnings[1];
+  const Vehicle quiet = load_vehicle(path);
+  ASSERT_EQ(quiet.elements.size(), warned.elements.size());
+  for (size_t k = 0; k < quiet.elements.size(); ++k)
+    EXPECT_EQ(quiet.elements[k].point, warned.elements[k].point) << quiet.elements[k].name;
+  EXPECT_EQ(std::abs(warned.elements[0].point.x()), 200.0);  // half the wheelbase as written, m
+}
+
 TEST(VehicleReader, WrongDimensionNamesLineColumnAndKey) {
   expect_error("weight = \"20000 kgf\"", "weight = \"20000 kgf/cm\"",
                {"bad.toml:5:10: error: key 'body.weight'", "expected a force", "force/length"});

@@ -1,4 +1,6 @@
 """Errors arrive as Python exceptions with the command line's text (docs/python.md, "Errors")."""
+import warnings
+
 import numpy as np
 import pytest
 
@@ -88,3 +90,27 @@ def test_unknown_dof_label_lists_the_labels():
     modes = railmodal.modes(system)
     with pytest.raises(ValueError, match=r"no degree of freedom 'body.bonce' \(there are: body.lateral, "):
         railmodal.frf(system, modes, "body.bonce", [1.0])
+
+
+def test_a_readings_warnings_are_input_warnings_with_the_clis_text():
+    warned = "tests/cli/warnings/resort_car_hanger_bare_number.toml"
+    _, _, stderr = cli("modes", warned)
+    with pytest.warns(railmodal.InputWarning) as caught:
+        odd = railmodal.load_vehicle(warned)  # the tests run in the source tree (ctest's working directory)
+    assert [str(w.message) for w in caught] == stderr.splitlines()
+    assert 'did you mean "734 mm"?' in str(caught[0].message)
+    assert issubclass(railmodal.InputWarning, UserWarning)
+    assert caught[0].filename == __file__  # at the caller's line, not inside the package
+    # A warning changes nothing: the vehicle read as written (734 m hangers) whether or not
+    # warnings are shown; the lateral stiffness holds the hangers'.
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        quiet = railmodal.load_vehicle(warned)
+    assert np.array_equal(railmodal.assemble(odd, "lateral").K, railmodal.assemble(quiet, "lateral").K)
+
+
+def test_input_warnings_become_errors_under_a_filter():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", railmodal.InputWarning)
+        with pytest.raises(railmodal.InputWarning):
+            railmodal.load_vehicle("tests/cli/warnings/resort_car_hanger_bare_number.toml")

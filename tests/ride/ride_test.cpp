@@ -419,7 +419,9 @@ TEST(Ride, DirectTrackTermOfASpringForceIsReportedApart) {
 }
 
 // What would be a silent zero is an error naming what is wrong: a component no DOF feels, an
-// output no DOF moves, a band wholly outside the grid.
+// output no DOF moves, a band wholly outside the grid. A refused component is an
+// IrregularityComponentError that says which (railmodal ride places it at that component's
+// table); an output's error is a plain std::invalid_argument, even when its name names a component.
 TEST(Ride, RefusesWhatWouldBeASilentZero) {
   const Vehicle v = body_on_track(12000.0, 60000.0, {{3.0, 0.8}, {3.0, -0.8}, {-3.0, 0.8}, {-3.0, -0.8}}, 5e5, 8e3);
   const LinearSystem vertical = assemble(v, DofSet::vertical);
@@ -428,25 +430,31 @@ TEST(Ride, RefusesWhatWouldBeASilentZero) {
   const RideOutput floor =
       point_output("floor", Eigen::Vector3d(0, 0, 0), RideAxis::vertical, ResponseQuantity::acceleration);
   auto message = [&](const TrackIrregularitySpectra& t, const std::vector<RideOutput>& o, const RideOptions& opt) {
+    // The component a refusal names, then the message: "alignment: ride: ..."; "-: " for none.
     try {
       solve_ride(vertical, t, o, opt);
+    } catch (const IrregularityComponentError& e) {
+      return std::string(to_string(e.component())) + ": " + e.what();
     } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
+      return "-: " + std::string(e.what());
     }
     return std::string("no error");
   };
   TrackIrregularitySpectra alignment;
   alignment.alignment = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::alignment, {0.06, 2.0});
-  EXPECT_NE(message(alignment, {floor}, options).find("alignment component"), std::string::npos);
+  const std::string unfelt = message(alignment, {floor}, options);
+  EXPECT_EQ(unfelt.rfind("alignment: ride: the alignment component", 0), 0u) << unfelt;
   TrackIrregularitySpectra level;
   level.vertical_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {0.06, 2.0});
   const RideOutput sideways =
-      point_output("sideways", Eigen::Vector3d(0, 0, 0), RideAxis::lateral, ResponseQuantity::acceleration);
-  EXPECT_NE(message(level, {floor, sideways}, options).find("output 'sideways': no degree of freedom"),
-            std::string::npos);
+      point_output("alignment gauge", Eigen::Vector3d(0, 0, 0), RideAxis::lateral, ResponseQuantity::acceleration);
+  const std::string unmoved = message(level, {floor, sideways}, options);
+  EXPECT_EQ(unmoved.rfind("-: ride: output 'alignment gauge': no degree of freedom", 0), 0u) << unmoved;
   RideOptions high = options;
   high.min_frequency = 20.0;  // 30 m/s × 2 rad/m / 2π = 9.5 Hz, the band's top
-  EXPECT_NE(message(level, {floor}, high).find("wholly outside the grid"), std::string::npos);
+  const std::string outside = message(level, {floor}, high);
+  EXPECT_EQ(outside.rfind("vertical_level: ride: at ", 0), 0u) << outside;
+  EXPECT_NE(outside.find("wholly outside the grid"), std::string::npos) << outside;
   // partly outside: an answer over the grid's part, with a note
   RideOptions partly = options;
   partly.min_frequency = 1.0;  // the band starts at 30 × 0.06 / 2π = 0.29 Hz

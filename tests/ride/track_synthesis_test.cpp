@@ -110,7 +110,8 @@ TEST(TrackSynthesis, RefusesBandsTheSamplingCannotHold) {
   try {
     synthesise_track(ore_level(0.1, 7.0), o);
     ADD_FAILURE() << "no error";
-  } catch (const std::invalid_argument& e) {
+  } catch (const IrregularityComponentError& e) {  // which component, for the caller to place
+    EXPECT_EQ(e.component(), TrackIrregularity::vertical_level);
     EXPECT_NE(std::string(e.what()).find("above the Nyquist wavenumber"), std::string::npos) << e.what();
   }
   try {

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "railmodal/vehicle.hpp"
+
 namespace railmodal::cli {
 
 /// Exit codes (docs/product: 0 success, 2 usage, 3 input, 4 numerical, 5 output, 1 internal).
@@ -55,10 +57,13 @@ std::function<int()> add_balance_command(CLI::App& app);
 /// Notes on stderr that `old_spelling` still works but is deprecated for `new_spelling`.
 void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling);
 
-/// The readers' warnings (Vehicle::warnings, scene_warnings), one a line on stderr, as the
-/// library wrote them ("file:line:col: warning: ..."). Not silenced by -q, which is for progress:
-/// a warning is about the input, as an error is (docs/input.md, "Implausible inputs").
+/// The readers' warnings (load_vehicle's, open_study's, scene_warnings), one a line on stderr, as
+/// the library wrote them ("file:line:col: warning: ..."). Not silenced by -q, which is for
+/// progress: a warning is about the input, as an error is (docs/input.md, "Implausible inputs").
 void print_input_warnings(const std::vector<std::string>& warnings);
+
+/// load_vehicle, with its reading's warnings printed (print_input_warnings) before it returns.
+Vehicle load_vehicle_and_warn(const std::string& path);
 
 /// -q/--quiet, alike on every command (README.md, "Options every command takes"): no progress on
 /// stderr. `quiet` is null for a command that shows no progress: it accepts the flag all the

@@ -101,7 +101,9 @@ int run(const CompareOptions& o) {
     // read it (read_in_workers), a shard its own only; a merge reads none but those its report
     // draws (read_variant). A bad override stops the run at the first such variant.
     const bool merging = !o.merge.empty();
-    const Study study = open_study(o.study);
+    std::vector<std::string> warnings;
+    const Study study = open_study(o.study, &warnings);
+    print_input_warnings(warnings);  // the base vehicle's and the scene's, once: not a variant's
     evaluation.read_in_workers = true;
     outputs.refuse_inputs(study_files(study));
     if (!merging && !o.quiet) evaluation.progress = terminal_progress("compare");

@@ -69,8 +69,7 @@ int run(CriticalSpeedCommandOptions o) {
     }
     current = scene.vehicle_file;
     outputs.refuse_inputs({o.scene, scene.vehicle_file});
-    const Vehicle vehicle = load_vehicle(scene.vehicle_file);
-    print_input_warnings(vehicle.warnings);
+    const Vehicle vehicle = load_vehicle_and_warn(scene.vehicle_file);
     try {
       assemble(vehicle, scene.dofs);  // a vehicle that cannot be assembled is the vehicle file's fault
     } catch (const std::invalid_argument& e) {

@@ -58,8 +58,7 @@ int run(const HuntingCommandOptions& o) {
     }
     files.refuse_inputs({o.scene, scene.vehicle_file});
     current = scene.vehicle_file;
-    const Vehicle vehicle = load_vehicle(scene.vehicle_file);
-    print_input_warnings(vehicle.warnings);
+    const Vehicle vehicle = load_vehicle_and_warn(scene.vehicle_file);
     if (vehicle.wheelsets.empty()) {
       const std::string why = "the vehicle has no [wheelset] data: hunting needs wheelsets on rails (docs/stability.md)";
       // Blame the scene's `vehicle` key, where the file was chosen; a --vehicle file itself.

@@ -53,6 +53,13 @@ void print_input_warnings(const std::vector<std::string>& warnings) {
   for (const std::string& w : warnings) std::cerr << w << "\n";
 }
 
+Vehicle load_vehicle_and_warn(const std::string& path) {
+  std::vector<std::string> warnings;
+  Vehicle vehicle = load_vehicle(path, &warnings);
+  print_input_warnings(warnings);
+  return vehicle;
+}
+
 void warn_deprecated_spelling(const std::string& old_spelling, const std::string& new_spelling) {
   std::cerr << "railmodal: note: '" << old_spelling << "' is deprecated and will be removed; write 'railmodal "
             << new_spelling << "'\n";

@@ -46,8 +46,7 @@ std::string input_problem(const ModesOptions& o) {
 }
 
 LinearSystem vehicle_system(const ModesOptions& o) {
-  const Vehicle vehicle = load_vehicle(o.file);
-  print_input_warnings(vehicle.warnings);
+  const Vehicle vehicle = load_vehicle_and_warn(o.file);
   try {
     return assemble(vehicle, *dof_set_from_string(o.dofs));  // CLI11 checked the word
   } catch (const std::invalid_argument& e) {

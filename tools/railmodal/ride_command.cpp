@@ -1,6 +1,5 @@
 // railmodal ride SCENE [--vehicle VEHICLE] [--speeds "100 km/h:200 km/h:20 km/h"] [--threads N] [--rms-only]
 //                      [--format table|csv|json|markdown|html] [-o OUT]
-#include <algorithm>
 #include <iostream>
 #include <memory>
 
@@ -82,24 +81,15 @@ bool has_spectra(const TrackIrregularitySpectra& t) { return t.vertical_level ||
 
 // The ride's refusal of one of the scene's spectra once the vehicle is known ("ride: the
 // alignment component (...) moves no degree of freedom of this model", "ride: cross-level on a
-// vehicle with wheelsets ..."), as the scene file's error at that component's table and key;
-// an error naming no single component of the scene, at the scene file (the audit of 2026-11-27
-// met the first with neither line nor key).
-InputError ride_scene_error(const Scene& scene, const std::string& message) {
-  std::string blamed;
-  for (const char* key : {"vertical_level", "alignment", "cross_level"}) {
-    // The library names a component by to_string(TrackIrregularity) ("cross_level") and some
-    // prose by its hyphenated word ("cross-level"): either names it.
-    std::string hyphenated = key;
-    std::replace(hyphenated.begin(), hyphenated.end(), '_', '-');
-    const bool named = message.find(key) != std::string::npos || message.find(hyphenated) != std::string::npos;
-    if (!scene.name_places.count(std::string("irregularity.") + key) || !named) continue;
-    if (!blamed.empty()) return InputError(scene.source, 0, 0, message);  // two components named: neither alone
-    blamed = key;
-  }
-  if (blamed.empty()) return InputError(scene.source, 0, 0, message);
-  const KeyPlace at = scene.name_places.at("irregularity." + blamed);
-  return InputError(scene.source, at.line, at.column, "key 'source." + blamed + "': " + message);
+// vehicle with wheelsets ..."), as the scene file's error at that component's table and key; at
+// the scene file when the scene does not say where the component is written (the audit of
+// 2026-11-27 met the first with neither line nor key).
+InputError ride_scene_error(const Scene& scene, const IrregularityComponentError& refused) {
+  const std::string key = to_string(refused.component());
+  const auto written = scene.name_places.find("irregularity." + key);
+  if (written == scene.name_places.end()) return InputError(scene.source, 0, 0, refused.what());
+  return InputError(scene.source, written->second.line, written->second.column,
+                    "key 'source." + key + "': " + refused.what());
 }
 
 // What the ride leaves out of a scene, said in the report rather than dropped silently: its
@@ -155,8 +145,7 @@ int run(const RideCommandOptions& o) {
                                           scene.ride ? scene.ride->geometry_file : std::string()};
     files.refuse_inputs(inputs);
     current = scene.vehicle_file;
-    const Vehicle vehicle = load_vehicle(scene.vehicle_file);
-    print_input_warnings(vehicle.warnings);
+    const Vehicle vehicle = load_vehicle_and_warn(scene.vehicle_file);
     const LinearSystem system = assemble(vehicle, scene.dofs);
     current = o.scene;
     print_input_warnings(scene_warnings(scene, vehicle));  // a floor point beyond the body
@@ -171,11 +160,13 @@ int run(const RideCommandOptions& o) {
       // Measured geometry alone has no spectra: only its time-domain run is reported.
       if (has_spectra(*scene.irregularity)) result = solve_ride(system, *scene.irregularity, outputs, options);
       time_domain = run_time_domain(scene, system, outputs, track);
+    } catch (const IrregularityComponentError& e) {
+      // The reader checked every key it could; what is left is a component only the vehicle, the
+      // grid or the realisation can refuse (a component that moves nothing, a band the
+      // realisation cannot sample): the scene's error, at the component the library names.
+      throw ride_scene_error(scene, e);
     } catch (const std::invalid_argument& e) {
-      // The reader checked every key it could; what is left is a value only the vehicle and the
-      // spectra together can refuse (a band the realisation cannot sample, a component that
-      // moves nothing): the scene's error, at the component it names.
-      throw ride_scene_error(scene, e.what());
+      throw InputError(scene.source, 0, 0, e.what());  // the scene's, at no one component
     }
     note_ignored_sources(scene, &result);
     std::vector<std::string> provenance_files{o.scene, scene.vehicle_file};

@@ -38,8 +38,7 @@ int load(const SimulateOptions& o, Scene* scene, Vehicle* vehicle) {
               << "\n";
     return kInput;
   }
-  *vehicle = load_vehicle(scene->vehicle_file);
-  print_input_warnings(vehicle->warnings);
+  *vehicle = load_vehicle_and_warn(scene->vehicle_file);
   print_input_warnings(scene_warnings(*scene, *vehicle));  // an effect the vehicle has nothing for
   // A part the scene's effects leave out (its dampers): accepted by design, never silently.
   for (const std::string& part : unsimulated_parts(*scene, *vehicle))

@@ -120,8 +120,7 @@ int run(const StabilityOptions& o) {
     OutputFiles outputs;
     std::ostream& out = outputs.open(o.output);
     outputs.refuse_inputs({o.vehicle});
-    const Vehicle vehicle = load_vehicle(o.vehicle);
-    print_input_warnings(vehicle.warnings);
+    const Vehicle vehicle = load_vehicle_and_warn(o.vehicle);
     if (vehicle.wheelsets.empty()) {
       std::cerr << o.vehicle << ": error: the vehicle has no [wheelset] data: the hunting stability needs wheelsets "
                 << "on rails (docs/stability.md; 'railmodal modes' and 'critical-speed' analyse it without)\n";
