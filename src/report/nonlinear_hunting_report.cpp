@@ -576,8 +576,9 @@ void write_json(std::ostream& out, const Page& p) {
   j.key("holds").begin_array();
   for (const SpeedHold& h : r.hold.holds)
     j.begin_object().member("end_amplitude_m", h.end_amplitude).member("periods", h.periods)
+        .member("rate_error", h.rate_error).member("rate_per_period", h.rate_per_period)
         .member("speed_kmh", h.speed * kKmh).member("speed_m_s", h.speed).member("start_amplitude_m", h.start_amplitude)
-        .member("steps", h.steps).member("survives", h.survives).end_object();
+        .member("steps", h.steps).member("survives", h.survives).member("undecided", h.undecided).end_object();
   j.end_array().member("lowest_surviving_kmh", kmh(r.hold.lowest_surviving));
   j.member("lowest_surviving_m_s", r.hold.lowest_surviving).end_object();
   j.member("linear_critical_speed_kmh", kmh(p.linear)).member("linear_critical_speed_m_s", p.linear);
