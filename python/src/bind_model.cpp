@@ -15,6 +15,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "dofs.hpp"
+#include "number_text.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/input.hpp"
 #include "railmodal/linear_system.hpp"
@@ -150,7 +151,7 @@ void bind_model(py::module_& m) {
           "the motions held, a tuple (b.held.append would change a copy): assign a new list to change them")
       .def_readwrite("longitudinal_free", &Body::longitudinal_free)
       .def_property_readonly("has_bending", [](const Body& b) { return b.bending.has_value(); })
-      .def("__repr__", [](const Body& b) { return "Body('" + b.name + "', mass=" + std::to_string(b.mass) + " kg)"; });
+      .def("__repr__", [](const Body& b) { return "Body('" + b.name + "', mass=" + number_text(b.mass) + " kg)"; });
 
   py::class_<Element>(m, "Element", "A suspension element between two bodies or a body and the track (SI).")
       .def(py::init<>())

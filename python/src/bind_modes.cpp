@@ -15,6 +15,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "dofs.hpp"
+#include "number_text.hpp"
 #include "options.hpp"
 #include "railmodal/damped_modal.hpp"
 #include "railmodal/linear_system.hpp"
@@ -170,7 +171,7 @@ void bind_modal_result(py::module_& m) {
       .def_readonly("eigenvalue_error", &Mode::eigenvalue_error)
       .def("to_dict", &mode_record)
       .def("__repr__", [](const Mode& x) {
-        return "Mode(" + std::to_string(x.index) + ", '" + x.name + "', " + std::to_string(x.frequency_hz) + " Hz)";
+        return "Mode(" + std::to_string(x.index) + ", '" + x.name + "', " + number_text(x.frequency_hz, 6) + " Hz)";
       });
 
   py::class_<ModalResult>(m, "ModalResult",

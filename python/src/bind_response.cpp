@@ -17,6 +17,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "dofs.hpp"
+#include "number_text.hpp"
 #include "options.hpp"
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/excitation.hpp"
@@ -61,7 +62,7 @@ FrequencyResponse sweep(const LinearSystem& system, const ModalResult& modes, co
   py::gil_scoped_release release;
   for (std::size_t f = 0; f < frequencies.size(); ++f) {
     if (!std::isfinite(frequencies[f]) || frequencies[f] < 0.0)
-      throw std::invalid_argument("frequency " + std::to_string(frequencies[f]) + " Hz: expected finite and >= 0");
+      throw std::invalid_argument("frequency " + number_text(frequencies[f]) + " Hz: expected finite and >= 0");
     const HarmonicResponse r = modal ? modal_harmonic_response(system, modes, load, frequencies[f], mode_count)
                                      : harmonic_response(system, modes, load, frequencies[f]);
     const std::complex<double> iw(0.0, 2.0 * kPi * frequencies[f]);

@@ -373,9 +373,17 @@ void bind_ride_functions(py::module_& m) {
         RideOptions options = scene.ride ? scene.ride->options : RideOptions{};
         if (speeds) options.speeds = *speeds;
         if (options.speeds.empty() && scene.ride && scene.ride->simulation) options.speeds = {scene.ride->simulation->speed};
-        if (options.speeds.empty())
-          throw InputError(scene.source, 0, 0,
-                           "no speeds: give them in [ride] (speeds = \"100 km/h:200 km/h:20 km/h\") or as speeds_m_s");
+        if (options.speeds.empty()) {
+          // At the [ride] table (its speeds key) as `railmodal ride` places it, else at the
+          // irregularity source of a scene without [ride].
+          const std::string message = "no speeds: give them in [ride] (speeds = \"100 km/h:200 km/h:20 km/h\") or as speeds_m_s";
+          const auto ride = scene.name_places.find("ride.speeds");
+          if (ride != scene.name_places.end())
+            throw InputError(scene.source, ride->second.line, ride->second.column, "key 'ride.speeds': " + message);
+          const auto source = scene.name_places.find("irregularity");
+          const KeyPlace at = source != scene.name_places.end() ? source->second : KeyPlace{};
+          throw InputError(scene.source, at.line, at.column, message);
+        }
         options.threads = threads;
         options.rms_only = rms_only;
         py::gil_scoped_release release;

@@ -177,7 +177,11 @@ py::list fft_check_records(const std::vector<FftCheck>& checks) {
                         py::arg("modal_amplitude_ratio") = c.modal_amplitude_ratio, py::arg("excited") = c.excited,
                         py::arg("tolerance") = c.tolerance,
                         py::arg("outcome") = to_string(c.outcome),  // the reports' words
-                        py::arg("needed_duration_s") = c.needed_duration_s));
+                        py::arg("needed_duration_s") = c.needed_duration_s,
+                        // The JSON's why_not_applicable: the words, where the outcome is "not applicable".
+                        py::arg("why_not_applicable") = c.outcome == FftCheck::Outcome::not_applicable
+                                                            ? py::object(py::str(c.why_not_applicable))
+                                                            : py::object(py::none())));
   return out;
 }
 
@@ -206,6 +210,16 @@ void bind_fft_check(py::module_& m) {
                              "Spectrum by DOF label")
       .def_property_readonly("swings",
                              [](const FftCheckResult& r) { return r.swings ? py::object(swings_dict(*r.swings)) : py::none(); })
+      .def_property_readonly(
+          "half_period_check",
+          [](const FftCheckResult& r) {
+            if (!r.half_period_check) return py::object(py::none());
+            const FftCheckResult::HalfPeriodCheck& h = *r.half_period_check;
+            return py::object(py::dict(py::arg("count") = h.count, py::arg("passed") = h.passed,
+                                       py::arg("tolerance") = h.tolerance, py::arg("worst_rel_error") = h.worst_rel_error));
+          },
+          "The check of a free friction decay by its half periods between turning points (JSON "
+          "half_period_check: count, passed, tolerance, worst_rel_error), or None where it was not made")
       .def_readonly("linear_half_period_s", &FftCheckResult::linear_half_period_s)
       .def_readonly("nonlinear", &FftCheckResult::nonlinear)
       .def_readonly("checked", &FftCheckResult::checked)

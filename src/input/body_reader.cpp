@@ -6,6 +6,7 @@
 #include <string>
 
 #include "railmodal/vehicle.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal::input {
 
@@ -109,9 +110,9 @@ void check_bending_reach(TableReader& body_table, const Body& body, const std::v
     // The tolerance of model::BendingMode::shape_at, which would refuse the same element.
     if (std::abs(e.point.x() - centre) <= half * (1.0 + 2e-9)) continue;
     TableReader t = body_table.table("bending");
-    t.fail("length", "element '" + e.name + "' acts on '" + body.name + "' at x = " + std::to_string(e.point.x()) +
-                         " m, beyond the ends of the bending beam (x = " + std::to_string(centre - half) + " m to " +
-                         std::to_string(centre + half) + " m): lengthen the beam or move its centre");
+    t.fail("length", "element '" + e.name + "' acts on '" + body.name + "' at x = " + shortest_text(e.point.x()) +
+                         " m, beyond the ends of the bending beam (x = " + shortest_text(centre - half, 6) + " m to " +
+                         shortest_text(centre + half, 6) + " m): lengthen the beam or move its centre");
   }
 }
 

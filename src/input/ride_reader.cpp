@@ -163,6 +163,9 @@ RideSimulationOptions read_simulation(TableReader t, const RideOptions& ride) {
 
 RideSpec read_ride(TableReader t, std::map<std::string, KeyPlace>* places) {
   RideSpec ride;
+  // Where a ride without speeds is refused (railmodal ride, when --speeds gives none either):
+  // the speeds key, or the [ride] table when it is absent.
+  (*places)["ride.speeds"] = t.place("speeds");
   read_options(t, ride.options);
   std::set<std::string> names;
   if (t.has("output"))

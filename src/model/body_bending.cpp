@@ -18,6 +18,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "shortest_text.hpp"
+
 namespace railmodal::model {
 namespace {
 
@@ -65,8 +67,8 @@ double BendingMode::shape_at(double x, const std::string& what) const {
   // A point at an end, written in the file's few digits, may sit round-off beyond it.
   constexpr double kEndTolerance = 1e-9;
   if (!(xi >= -kEndTolerance && xi <= 1.0 + kEndTolerance))
-    throw std::invalid_argument(what + " at x = " + std::to_string(x) + " m lies beyond the ends of the bending beam (x = " +
-                                std::to_string(centre - 0.5 * length) + " m to " + std::to_string(centre + 0.5 * length) +
+    throw std::invalid_argument(what + " at x = " + shortest_text(x) + " m lies beyond the ends of the bending beam (x = " +
+                                shortest_text(centre - 0.5 * length, 6) + " m to " + shortest_text(centre + 0.5 * length, 6) +
                                 " m)");
   return free_free_mode_shape(xi);
 }

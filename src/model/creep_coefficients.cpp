@@ -4,16 +4,17 @@
 #include <string>
 
 #include "railmodal/wheel_rail.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
 CreepCoefficients creep_coefficients(const HertzContact& ellipse, double youngs_modulus, double poisson_ratio) {
   if (!(std::isfinite(ellipse.a) && ellipse.a > 0.0 && std::isfinite(ellipse.b) && ellipse.b > 0.0))
     throw std::invalid_argument("creep_coefficients: the ellipse's semi-axes must be positive and finite (a = " +
-                                std::to_string(ellipse.a) + " m, b = " + std::to_string(ellipse.b) + " m)");
+                                shortest_text(ellipse.a, 6) + " m, b = " + shortest_text(ellipse.b, 6) + " m)");
   if (!(std::isfinite(youngs_modulus) && youngs_modulus > 0.0))
     throw std::invalid_argument("creep_coefficients: Young's modulus must be positive and finite, not " +
-                                std::to_string(youngs_modulus));
+                                shortest_text(youngs_modulus));
   // kalker_coefficients checks a/b and ν against the table.
   const KalkerCoefficients c = kalker_coefficients(ellipse.a / ellipse.b, poisson_ratio);
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "railmodal/wheel_rail.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 namespace {
@@ -83,20 +84,20 @@ void require(bool ok, const std::string& message) {
 HertzContact hertz_contact(const HertzContactInput& input, double rolling_radius) {
   require(input.wheel_load.has_value(), "the wheel load is not set");
   const double load = *input.wheel_load;
-  require(std::isfinite(load) && load > 0.0, "the wheel load must be positive and finite, not " + std::to_string(load));
+  require(std::isfinite(load) && load > 0.0, "the wheel load must be positive and finite, not " + shortest_text(load));
   require(std::isfinite(rolling_radius) && rolling_radius > 0.0,
-          "the rolling radius must be positive and finite, not " + std::to_string(rolling_radius));
+          "the rolling radius must be positive and finite, not " + shortest_text(rolling_radius));
   require(std::isfinite(input.rail_head_radius) && input.rail_head_radius > 0.0,
-          "the rail head radius must be positive and finite, not " + std::to_string(input.rail_head_radius));
+          "the rail head radius must be positive and finite, not " + shortest_text(input.rail_head_radius));
   require(std::isfinite(input.youngs_modulus) && input.youngs_modulus > 0.0,
-          "Young's modulus must be positive and finite, not " + std::to_string(input.youngs_modulus));
+          "Young's modulus must be positive and finite, not " + shortest_text(input.youngs_modulus));
   require(std::isfinite(input.poisson_ratio) && input.poisson_ratio >= 0.0 && input.poisson_ratio <= 0.5,
-          "Poisson's ratio must lie in [0, 0.5], not " + std::to_string(input.poisson_ratio));
+          "Poisson's ratio must lie in [0, 0.5], not " + shortest_text(input.poisson_ratio));
   double wheel_curvature = 0.0;  // a straight (conical) tread across the wheel
   if (input.wheel_transverse_radius) {
     const double r = *input.wheel_transverse_radius;
     require(std::isfinite(r) && r != 0.0,
-            "the wheel's transverse radius must be finite and nonzero, not " + std::to_string(r));
+            "the wheel's transverse radius must be finite and nonzero, not " + shortest_text(r));
     wheel_curvature = 1.0 / r;
   }
 
@@ -105,9 +106,9 @@ HertzContact hertz_contact(const HertzContactInput& input, double rolling_radius
   // (negative when hollow) against the rail head.
   const double along = 0.5 / rolling_radius;
   const double across = 0.5 * (1.0 / input.rail_head_radius + wheel_curvature);
-  require(across > 0.0, "a hollow tread of transverse radius " + std::to_string(*input.wheel_transverse_radius) +
+  require(across > 0.0, "a hollow tread of transverse radius " + shortest_text(*input.wheel_transverse_radius) +
                             " m conforms to or wraps the rail head of radius " +
-                            std::to_string(input.rail_head_radius) +
+                            shortest_text(input.rail_head_radius) +
                             " m: no point contact (Hertz needs |radius| > the rail head radius)");
 
   // Contact modulus of two bodies of one steel: 1/E* = 2(1 − ν²)/E.

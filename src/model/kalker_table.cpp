@@ -8,6 +8,7 @@
 #include <string>
 
 #include "railmodal/wheel_rail.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 namespace {
@@ -95,10 +96,10 @@ double across_poisson(const std::array<double, 3>& column, AxisPosition nu) {
 KalkerCoefficients kalker_coefficients(double a_over_b, double poisson_ratio) {
   if (!std::isfinite(a_over_b) || a_over_b < kSmallestRatio * (1.0 - kEdgeSlack) ||
       a_over_b > (1.0 + kEdgeSlack) / kSmallestRatio)
-    throw std::invalid_argument("kalker_coefficients: a/b = " + std::to_string(a_over_b) +
+    throw std::invalid_argument("kalker_coefficients: a/b = " + shortest_text(a_over_b, 6) +
                                 " is outside Kalker's table (0.1 <= a/b <= 10)");
   if (!std::isfinite(poisson_ratio) || poisson_ratio < 0.0 || poisson_ratio > 0.5)
-    throw std::invalid_argument("kalker_coefficients: Poisson's ratio " + std::to_string(poisson_ratio) +
+    throw std::invalid_argument("kalker_coefficients: Poisson's ratio " + shortest_text(poisson_ratio) +
                                 " is outside Kalker's table (0 <= nu <= 0.5)");
 
   // Each branch is tabulated against its own g = min(a/b, b/a); interpolate linearly in that g.

@@ -9,6 +9,7 @@
 #include "model/wheelset_creepage.hpp"
 #include "model/wheelset_dofs.hpp"
 #include "railmodal/wheel_rail.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 namespace {
@@ -20,7 +21,7 @@ constexpr double kPi = 3.14159265358979323846;
 }
 
 void require(bool ok, const Wheelset& w, const std::string& name, double value, const char* rule) {
-  if (!ok) fail(w, name + " = " + std::to_string(value) + " " + rule);
+  if (!ok) fail(w, name + " = " + shortest_text(value) + " " + rule);
 }
 
 // W: what the rails carry under the wheelset: given, or from its vertical equilibrium (its
@@ -112,7 +113,7 @@ ContactMatrices contact_matrices(const LinearSystem& system, std::optional<doubl
   if (v.wheelsets.empty())
     throw std::invalid_argument("contact_matrices: the vehicle '" + v.name + "' has no wheelsets");
   if (conicity && !(*conicity >= 0.0 && *conicity < 1.0))
-    throw std::invalid_argument("contact_matrices: conicity = " + std::to_string(*conicity) +
+    throw std::invalid_argument("contact_matrices: conicity = " + shortest_text(*conicity) +
                                 " must be ≥ 0 and below 1");
   const int n = system.size();
   ContactMatrices out;

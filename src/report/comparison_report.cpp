@@ -36,9 +36,11 @@ std::vector<double> periods(const VariantResult& r) {
   return out;
 }
 
-std::vector<double> critical_speeds_kmh(const VariantResult& r) {
+// The critical speeds in km/h (scale kKmh) or m/s (scale 1): the JSON gives both lists, as
+// critical-speed's gives speeds_kmh and speeds_m_s (docs/input.md, "Names and units in outputs").
+std::vector<double> critical_speeds(const VariantResult& r, double scale) {
   std::vector<double> out;
-  for (const auto& c : r.critical_speeds) out.push_back(c.speed * kKmh);
+  for (const auto& c : r.critical_speeds) out.push_back(c.speed * scale);
   return out;
 }
 
@@ -77,7 +79,8 @@ void write_deflections(JsonWriter& j, const VariantResult& r) {
   for (const auto& c : r.deflections) {
     j.begin_object().member("basis", c.basis).member("deflection_m", c.deflection).member("element", c.element);
     j.member("kept", c.kept()).member("permissible_m", c.permissible).member("source", c.source);
-    j.member("speed_m_s", c.speed).member("stage", c.stage).member("unbounded", c.unbounded).end_object();
+    j.member("speed_kmh", c.speed * kKmh).member("speed_m_s", c.speed).member("stage", c.stage);
+    j.member("unbounded", c.unbounded).end_object();
   }
   j.end_array();
 }
@@ -86,7 +89,8 @@ void write_peaks(JsonWriter& j, const VariantResult& r) {
   j.key("peaks").begin_array();
   for (const auto& p : r.peaks) {
     j.begin_object().member("amplitude", p.amplitude).member("output", p.output).member("quantity", p.quantity);
-    j.member("source", p.source).member("speed_m_s", p.speed).member("unbounded", p.unbounded).end_object();
+    j.member("source", p.source).member("speed_kmh", p.speed * kKmh).member("speed_m_s", p.speed);
+    j.member("unbounded", p.unbounded).end_object();
   }
   j.end_array();
 }
@@ -131,7 +135,7 @@ void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* r
     for (size_t k = 0; k < v.criteria.size(); ++k) ranking_value(j, v.criteria[k], is_peak(ranked->comparison, k));
     j.end_array();
     write_critical_speeds(j, r);
-    j.member("critical_speeds_kmh", critical_speeds_kmh(r));
+    j.member("critical_speeds_kmh", critical_speeds(r, kKmh)).member("critical_speeds_m_s", critical_speeds(r, 1.0));
     if (r.deflections_checked) {
       j.key("dynamic_deflection_ratio");
       ratio && std::isinf(*ratio) ? j.value("unbounded") : j.value(ratio);
@@ -144,6 +148,8 @@ void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* r
   r.ok() ? j.value(nullptr) : j.value(r.failure);
   if (ranked) j.member("feasible", ranked->variant.feasible);
   if (r.hunting_speed) {  // +∞, stable over the whole range, is "none"
+    j.key("hunting_speed_kmh");
+    std::isinf(*r.hunting_speed) ? j.value("none") : j.value(*r.hunting_speed * kKmh);
     j.key("hunting_speed_m_s");
     std::isinf(*r.hunting_speed) ? j.value("none") : j.value(*r.hunting_speed);
   }

@@ -17,6 +17,7 @@
 #include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
+#include "shortest_text.hpp"
 #include "stability/branch_naming.hpp"
 
 namespace railmodal {
@@ -43,15 +44,11 @@ struct Page {
   const Provenance& provenance;
 };
 
-// A speed of the range in km/h: one decimal, or as many more (up to 6) as keep it within 0.1 % of
-// its value, so that 0.01 km/h does not print as 0.0.
-std::string range_kmh(double speed) {
-  const double v = speed * kKmh;
-  int decimals = 1;
-  while (decimals < 6 && std::abs(std::stod(fixed(v, decimals)) - v) > 1e-3 * std::abs(v)) ++decimals;
-  return fixed(v, decimals);
-}
-std::string kmh(double speed) { return range_kmh(speed) + " km/h"; }
+// A speed the user gave (an end of --speeds, the grid's lowest and highest) in km/h as given, to at
+// most 6 significant digits ("10", "72.5", "0.01"), as every report prints a given speed
+// (docs/input.md, "Names and units in outputs"); computed speeds keep their own precision.
+std::string given_kmh(double speed) { return shortest_text(speed * kKmh, 6); }
+std::string kmh(double speed) { return given_kmh(speed) + " km/h"; }
 std::string percent(double ratio) { return fixed(100.0 * ratio, 2) + " %"; }
 
 double lowest_speed(const HuntingResult& r) { return r.speeds.empty() ? 0.0 : r.speeds.front(); }
@@ -84,7 +81,7 @@ std::vector<size_t> by_least_damping(const HuntingResult& r) {
 }
 
 std::string range_text(const HuntingResult& r) {
-  return range_kmh(lowest_speed(r)) + "–" + range_kmh(highest_speed(r)) + " km/h, " + std::to_string(r.speeds.size()) +
+  return given_kmh(lowest_speed(r)) + "–" + given_kmh(highest_speed(r)) + " km/h, " + std::to_string(r.speeds.size()) +
          " speeds";
 }
 
@@ -174,8 +171,8 @@ std::string threshold_text(const HuntingResult& r) {
            " km/h, the lowest speed at which a branch damped more than that at a lower speed falls to it.";
   const std::string below = least_damped_at_lowest_speed(r);
   if (!below.empty())
-    text += " Already at or below it at the lowest speed, " + fixed(r.speeds.front() * kKmh, 2) +
-            " km/h, and so not what decides it: " + below + ".";
+    text += " Already at or below it at the lowest speed, " + kmh(lowest_speed(r)) +
+            ", and so not what decides it: " + below + ".";
   return text;
 }
 
@@ -232,12 +229,7 @@ Table intervals_table(const HuntingResult& r) {
 }
 
 Table branches_table(const HuntingResult& r) {
-  // Whole km/h in the headings, unless that would hide the speed (0.01 km/h is not "0").
-  auto heading = [](double speed) {
-    const double v = speed * kKmh;
-    return std::abs(std::round(v) - v) <= 1e-3 * std::abs(v) ? fixed(v, 0) : range_kmh(speed);
-  };
-  const std::string low = heading(lowest_speed(r)), high = heading(highest_speed(r));
+  const std::string low = given_kmh(lowest_speed(r)), high = given_kmh(highest_speed(r));
   Table t{{"#", "branch", "f at " + low + " km/h (Hz)", "ζ at " + low + " km/h", "f at " + high + " km/h (Hz)",
            "ζ at " + high + " km/h", "least ζ", "at (km/h)", "lowest MAC", "tracking"},
           {true, false, true, true, true, true, true, true, true, false},
@@ -277,8 +269,8 @@ Table conicity_table(const HuntingResult& r) {
                         fixed(p.critical->klingel_frequency_hz, 3)});
     else
       t.rows.push_back({significant(p.conicity, 4), to_string(p.verdict),
-                        p.verdict == HuntingVerdict::stable_throughout ? "above " + range_kmh(highest_speed(r))
-                                                                       : "below " + range_kmh(lowest_speed(r)),
+                        p.verdict == HuntingVerdict::stable_throughout ? "above " + given_kmh(highest_speed(r))
+                                                                       : "below " + given_kmh(lowest_speed(r)),
                         "—", "—", "—"});
     if (bogies)
       t.rows.back().push_back(p.critical && p.critical->bogie_frequency_hz > 0.0

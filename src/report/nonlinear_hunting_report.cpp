@@ -507,6 +507,8 @@ void write_ramp(JsonWriter& j, const RampDown& d) {
   j.member("critical_speed_kmh", kmh(d.critical_speed)).member("critical_speed_m_s", d.critical_speed);
   j.key("curve").begin_object().key("amplitude_m").begin_array();
   for (const LimitCyclePoint& q : d.curve) j.value(q.amplitude);
+  j.end_array().key("speed_kmh").begin_array();
+  for (const LimitCyclePoint& q : d.curve) j.value(q.speed * kKmh);
   j.end_array().key("speed_m_s").begin_array();
   for (const LimitCyclePoint& q : d.curve) j.value(q.speed);
   j.end_array().end_object();
@@ -523,14 +525,16 @@ void write_options(JsonWriter& j, const NonlinearHuntingOptions& o) {
     j.value(nullptr);
   j.member("disturbance_m", o.disturbance).key("effects").begin_array();
   for (NonlinearEffect e : o.effects) j.value(to_string(e));
-  j.end_array().member("end_speed_m_s", o.end_speed).member("extinction_amplitude_m", o.extinction_amplitude);
+  j.end_array().member("end_speed_kmh", o.end_speed * kKmh).member("end_speed_m_s", o.end_speed);
+  j.member("extinction_amplitude_m", o.extinction_amplitude);
   j.key("flange_contact");
   if (has_effect(o, NonlinearEffect::flange_contact))
     j.begin_object().member("clearance_m", o.flange_clearance).member("stiffness_n_m", o.flange_stiffness).end_object();
   else
     j.value(nullptr);
   j.member("hold_margin_m_s", o.hold_margin).member("hold_periods", o.hold_periods);
-  j.member("ramp_rate_m_s2", o.ramp_rate).member("start_speed_m_s", o.start_speed).member("tolerance_m_s", o.tolerance);
+  j.member("ramp_rate_m_s2", o.ramp_rate).member("start_speed_kmh", o.start_speed * kKmh);
+  j.member("start_speed_m_s", o.start_speed).member("tolerance_m_s", o.tolerance);
   j.end_object();
 }
 
@@ -568,12 +572,15 @@ void write_json(std::ostream& out, const Page& p) {
   j.member("convergence_difference_m_s", r.convergence_difference);
   j.member("critical_speed_kmh", kmh(r.critical_speed)).member("critical_speed_m_s", r.critical_speed);
   j.key("hold").begin_object().member("doubled_hold_survives", r.hold.doubled_hold_survives);
-  j.member("highest_dying_m_s", r.hold.highest_dying).key("holds").begin_array();
+  j.member("highest_dying_kmh", kmh(r.hold.highest_dying)).member("highest_dying_m_s", r.hold.highest_dying);
+  j.key("holds").begin_array();
   for (const SpeedHold& h : r.hold.holds)
     j.begin_object().member("end_amplitude_m", h.end_amplitude).member("periods", h.periods)
-        .member("speed_m_s", h.speed).member("start_amplitude_m", h.start_amplitude).member("steps", h.steps)
-        .member("survives", h.survives).end_object();
-  j.end_array().member("lowest_surviving_m_s", r.hold.lowest_surviving).end_object();
+        .member("rate_error", h.rate_error).member("rate_per_period", h.rate_per_period)
+        .member("speed_kmh", h.speed * kKmh).member("speed_m_s", h.speed).member("start_amplitude_m", h.start_amplitude)
+        .member("steps", h.steps).member("survives", h.survives).member("undecided", h.undecided).end_object();
+  j.end_array().member("lowest_surviving_kmh", kmh(r.hold.lowest_surviving));
+  j.member("lowest_surviving_m_s", r.hold.lowest_surviving).end_object();
   j.member("linear_critical_speed_kmh", kmh(p.linear)).member("linear_critical_speed_m_s", p.linear);
   // Why the answer is an estimate (the text under the verdict), null when it is not one.
   j.key("not_converged_reason");
@@ -585,7 +592,8 @@ void write_json(std::ostream& out, const Page& p) {
   j.key("ramps").begin_array();
   write_ramp(j, r.stated_rate);
   write_ramp(j, r.halved_rate);
-  j.end_array().member("richardson_critical_speed_m_s", r.richardson_critical_speed);
+  j.end_array().member("richardson_critical_speed_kmh", kmh(r.richardson_critical_speed));
+  j.member("richardson_critical_speed_m_s", r.richardson_critical_speed);
   j.key("summary").begin_object().member("analysis", r.summary.analysis).key("checks").begin_array();
   for (const Check& c : r.summary.checks)
     j.begin_object().member("limit", c.limit).member("name", c.name).member("passed", c.passed)

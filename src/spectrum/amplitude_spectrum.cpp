@@ -38,7 +38,7 @@ void check_signal(const Eigen::Ref<const Eigen::VectorXd>& signal, Eigen::Index 
                                 std::to_string(signal.size()));
   for (Eigen::Index n = 0; n < signal.size(); ++n)
     if (!std::isfinite(signal(n)))
-      throw std::invalid_argument("signal[" + std::to_string(n) + "] is " + std::to_string(signal(n)) +
+      throw std::invalid_argument("signal[" + std::to_string(n) + "] is " + shortest_text(signal(n)) +
                                   ": samples must be finite");
 }
 

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "shortest_text.hpp"
+
 namespace railmodal::stability {
 namespace {
 
@@ -186,8 +188,8 @@ OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hop
     const Orbit o = solve_orbit(problem, guess, fixed, &branch.flows);
     if (!o.converged) {
       branch.end = BranchEnd::newton_failed;
-      branch.failure = "no orbit of amplitude " + std::to_string(fixed.target) + " near the Hopf point (residual " +
-                       std::to_string(o.residual) + ")";
+      branch.failure = "no orbit of amplitude " + shortest_text(fixed.target, 6) + " near the Hopf point (residual " +
+                       shortest_text(o.residual, 6) + ")";
       return branch;
     }
     branch.orbits.push_back(o);
@@ -227,9 +229,9 @@ OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hop
       step /= 2.0;
       if (step < s.min_step) {
         branch.end = BranchEnd::newton_failed;
-        branch.failure = "the corrector failed at parameter " + std::to_string(last.parameter) + ", amplitude " +
-                         std::to_string(last.start_value) + " even with a step of " + std::to_string(step) +
-                         " (residual " + std::to_string(next.residual) + ")";
+        branch.failure = "the corrector failed at parameter " + shortest_text(last.parameter, 6) + ", amplitude " +
+                         shortest_text(last.start_value, 6) + " even with a step of " + shortest_text(step, 6) +
+                         " (residual " + shortest_text(next.residual, 6) + ")";
         return branch;
       }
     }

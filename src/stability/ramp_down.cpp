@@ -13,6 +13,7 @@
 
 #include "railmodal/errors.hpp"
 #include "simulate/dormand_prince.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal::stability {
 namespace {
@@ -108,8 +109,8 @@ int integrate(const LateralEquations& e, const std::function<double(double)>& sp
                        std::abs(step.error[i]) /
                            (kAbsoluteTolerance + kRelativeTolerance * std::max(std::abs(x[i]), std::abs(step.y[i]))));
     if (!std::isfinite(error) || h < 1e-12 * std::max(1.0, duration))
-      throw NumericalError("solve_nonlinear_hunting: the integration failed at " + std::to_string(speed_at(t)) +
-                           " m/s (step " + std::to_string(h) + " s, error " + std::to_string(error) + ")");
+      throw NumericalError("solve_nonlinear_hunting: the integration failed at " + shortest_text(speed_at(t), 6) +
+                           " m/s (step " + shortest_text(h, 6) + " s, error " + shortest_text(error, 6) + ")");
     if (error <= 1.0) {
       t += h;
       x = step.y;

@@ -136,7 +136,7 @@ TEST(BendingReader, ErrorsNameTheKey) {
   // A beam that does not reach the springs: named at its length, with the element. Centred on
   // the CG (x = 0.5 m), it reaches from −8.5 m to 9.5 m: the front springs stand at its end.
   expect_error(with_bending(R"(bending = { length = "18 m", frequency = "9 Hz", modal_mass = "8 t", damping_ratio = 0.02 })"),
-               {"key 'body[0].bending.length'", "element 'rear left'", "beyond the ends of the bending beam (x = -8.5"});
+               {"key 'body[0].bending.length'", "element 'rear left'", "beyond the ends of the bending beam (x = -8.5 m to 9.5 m)"});
   expect_error(replaced(kGeneral, R"(held = ["lateral", "yaw"])", R"(held = ["lateral", "bending"])"),
                {"key 'body[0].held'", "cannot be held"});
 }

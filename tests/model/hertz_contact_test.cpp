@@ -109,6 +109,28 @@ TEST(HertzContact, BadInputsAreNamed) {
   }
 }
 
+// Numbers in the messages as the caller gave them ("-2500", "0.51"), not std::to_string's
+// "-2500.000000" (docs/input.md, "Names and units in outputs"); a computed one (a/b) to six
+// significant digits.
+TEST(HertzContact, MessagesGiveTheNumbersAsGiven) {
+  expect_invalid(wheel_on_rail(-2500.0), 0.46, "the wheel load must be positive and finite, not -2500");
+  HertzContactInput in = wheel_on_rail();
+  in.poisson_ratio = 0.51;
+  expect_invalid(in, 0.46, "Poisson's ratio must lie in [0, 0.5], not 0.51");
+  in = wheel_on_rail(70e3, 0.3);
+  in.wheel_transverse_radius = -0.25;
+  expect_invalid(in, 0.46, "a hollow tread of transverse radius -0.25 m conforms to or wraps the rail head of radius 0.3 m");
+  HertzContact slender;
+  slender.a = 50e-3;
+  slender.b = 3e-3;  // a/b = 16.666…: six digits
+  try {
+    creep_coefficients(slender, 2.1e11, 0.28);
+    FAIL() << "a/b = 16.7 was taken";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("a/b = 16.6667 is outside"), std::string::npos) << e.what();
+  }
+}
+
 // creep_coefficients refuses a degenerate ellipse and a modulus out of range, and leaves a/b
 // and ν to Kalker's table (which names them).
 TEST(CreepCoefficients, BadInputsAreNamed) {

@@ -175,6 +175,18 @@ def test_ride_errors():
         railmodal.ride(system, 3, speeds_m_s=[30.0])
 
 
+def test_a_ride_without_speeds_is_placed_at_its_ride_table():
+    # The corpus scene's [ride] gives no speeds and none are passed: the command line and the
+    # binding refuse it at the [ride] table (line 12), not at the file alone.
+    path = str(SOURCE / "tests" / "corpus" / "bad_inputs" / "ride_no_speeds.toml")
+    code, _, stderr = cli("ride", path, check=False)
+    with pytest.raises(railmodal.InputError) as error:
+        railmodal.ride_scene(railmodal.load_scene(path))
+    assert code == 3 and "ride_no_speeds.toml:12:" in stderr and "key 'ride.speeds': no speeds" in stderr
+    assert error.value.file == path and error.value.line == 12
+    assert "key 'ride.speeds': no speeds" in str(error.value)
+
+
 def test_track_spectrum_prints_its_headers_example():
     band = (2 * np.pi / 70, 2 * np.pi / 3)
     s = railmodal.TrackSpectrum.ore_b176("low", "vertical-level", band)

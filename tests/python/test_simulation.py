@@ -106,6 +106,30 @@ def test_fft_check_equals_the_command_line():
     assert set(result.spectra) == {c["dof"] for c in result.checks} <= set(result.history.labels)
 
 
+def test_fft_check_says_why_not_applicable_and_checks_the_half_periods():
+    # The drop test is a free release with leaf friction: a mode whose motion comes to rest is
+    # not applicable (the words are the JSON's why_not_applicable) and the half periods between
+    # turning points are checked instead (the JSON's half_period_check), as fft-check writes them.
+    scene = railmodal.load_scene(DROP)
+    result = railmodal.fft_check(scene)
+    expected = cli_json("fft-check", DROP)
+    assert len(result.checks) == len(expected["checks"])
+    not_applicable = 0
+    for got, want in zip(result.checks, expected["checks"]):
+        assert got["outcome"] == want["outcome"]
+        assert got["why_not_applicable"] == want.get("why_not_applicable")  # None where the JSON has none
+        not_applicable += got["outcome"] == "not applicable"
+    assert not_applicable > 0
+    h, want = result.half_period_check, expected["half_period_check"]
+    assert (h["count"], h["passed"]) == (want["count"], want["passed"]) and h["count"] > 0
+    assert h["tolerance"] == pytest.approx(want["tolerance"], rel=REL)
+    assert h["worst_rel_error"] == pytest.approx(want["worst_rel_error"], rel=REL)
+    # A linear release is checked by its spectrum: no half-period check, nothing not applicable.
+    free = railmodal.fft_check(railmodal.load_scene(FREE))
+    assert free.half_period_check is None
+    assert all(c["why_not_applicable"] is None for c in free.checks)
+
+
 def test_output_spectra_show_the_modes_the_fft_check_found():
     scene = railmodal.load_scene(FREE)
     spectra = railmodal.output_spectra(railmodal.simulate(scene, outputs_only=True), scene)

@@ -195,6 +195,26 @@ def test_a_scenes_nonlinear_hunting_equals_the_command_line():
         railmodal.hunting_report(scene, format="pdf")
 
 
+def test_the_holds_give_their_growth_rates_as_the_json_does():
+    # Each hold's fitted growth rate, its error and what they decided (survives, undecided) are
+    # the result's, under the JSON's names, equal to what 'railmodal hunting' writes for the
+    # same scene (the same library call: equal to the JSON's printed digits, REL).
+    scene_file = data("scenes", "wheelset_on_springs_nonlinear_hunting.toml")
+    result = railmodal.hunting_scene(railmodal.load_scene(scene_file))
+    expected = cli_json("hunting", scene_file)["hold"]["holds"]
+    holds = result.hold["holds"]
+    assert len(holds) == len(expected) > 0
+    for got, want in zip(holds, expected):
+        assert got["speed_m_s"] == pytest.approx(want["speed_m_s"], rel=REL)
+        assert (got["survives"], got["undecided"]) == (want["survives"], want["undecided"])
+        assert not (got["survives"] and got["undecided"])  # an undecided hold never counts as surviving
+        assert got["rate_per_period"] == pytest.approx(want["rate_per_period"], rel=REL, abs=1e-300)
+        # The JSON writes an infinite error (too few half cycles) as null.
+        assert got["rate_error"] == (pytest.approx(want["rate_error"], rel=REL, abs=1e-300)
+                                     if want["rate_error"] is not None else float("inf"))
+    assert set(pandas.DataFrame(holds).columns) >= {"rate_per_period", "rate_error", "undecided"}
+
+
 def test_limit_cycles_scene_is_the_commands_continuation():
     # limit_cycles_scene runs continue_limit_cycles on the scene's model, as
     # 'railmodal hunting --continuation' does: the same branch, to the last digit the JSON keeps.

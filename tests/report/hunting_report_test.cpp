@@ -48,7 +48,7 @@ TEST(HuntingReport, StableThroughoutSaysSoAndInventsNoCriticalSpeed) {
   const HuntingResult r = test::stable_result();
   const std::string table = written(r, OutputFormat::table);
   EXPECT_TRUE(has(table, "verdict: stable_throughout")) << table;
-  EXPECT_TRUE(has(table, "stable at every speed from 10.0 km/h to 500.0 km/h")) << table;
+  EXPECT_TRUE(has(table, "stable at every speed from 10 km/h to 500 km/h")) << table;
   EXPECT_TRUE(has(table, "unstable speed intervals: none")) << table;
   EXPECT_FALSE(has(table, "critical speed 2")) << table;
   EXPECT_TRUE(has(table, "the nonlinear critical speed")) << table;  // the linear remark
@@ -68,7 +68,7 @@ TEST(HuntingReport, EveryUnstableIntervalIsListedWithItsOpenEnd) {
   EXPECT_TRUE(has(table, "from 200.00 km/h, to 300.00 km/h (#1 wheelset 1 hunting (kinematic))")) << table;
   EXPECT_TRUE(has(table, "branch #1 'wheelset 1 hunting (kinematic)', hunting frequency")) << table;
   EXPECT_FALSE(has(table, "V/Λ_b")) << table;  // no bogies: no rigid-bogie frequency
-  EXPECT_TRUE(has(table, "from 400.00 km/h, still unstable at the highest, 500.0 km/h")) << table;
+  EXPECT_TRUE(has(table, "from 400.00 km/h, still unstable at the highest, 500 km/h")) << table;
   EXPECT_TRUE(has(table, "falls to ζ = 5 % at 150.00 km/h")) << table;
   const std::string markdown = written(r, OutputFormat::markdown);
   EXPECT_TRUE(has(markdown, "| 400.00 | 500.00 (still unstable at the highest) |")) << markdown;
@@ -114,8 +114,8 @@ TEST(HuntingReport, ABranchBelowTheThresholdFromTheLowestSpeedIsListedNotTheCros
 TEST(HuntingReport, UnstableAtTheLowestSpeedGivesNoCriticalSpeed) {
   const HuntingResult r = test::unstable_at_lowest_result();
   const std::string table = written(r, OutputFormat::table);
-  EXPECT_TRUE(has(table, "already unstable at the lowest speed, 10.0 km/h: no critical speed is given")) << table;
-  EXPECT_TRUE(has(table, "unstable at the lowest speed, 10.0 km/h, to 120.00 km/h")) << table;
+  EXPECT_TRUE(has(table, "already unstable at the lowest speed, 10 km/h: no critical speed is given")) << table;
+  EXPECT_TRUE(has(table, "unstable at the lowest speed, 10 km/h, to 120.00 km/h")) << table;
   const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
   EXPECT_EQ(j["verdict"], "unstable_at_lowest_speed");
   EXPECT_TRUE(j["critical"].is_null());
@@ -126,8 +126,8 @@ TEST(HuntingReport, ConicityCurveGivesBoundsNotValuesOutsideTheRange) {
   const HuntingResult r = test::conicity_result();
   const std::string table = written(r, OutputFormat::table);
   EXPECT_TRUE(has(table, "critical speed against conicity")) << table;
-  EXPECT_TRUE(has(table, "above 500.0")) << table;  // λ = 0.05, stable throughout
-  EXPECT_TRUE(has(table, "below 10.0")) << table;   // λ = 0.4, unstable at the lowest speed
+  EXPECT_TRUE(has(table, "above 500 ")) << table;  // λ = 0.05, stable throughout
+  EXPECT_TRUE(has(table, "below 10 ")) << table;   // λ = 0.4, unstable at the lowest speed
   EXPECT_TRUE(has(table, "400.00")) << table;       // λ = 0.1: 40/0.1 km/h
   const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
   ASSERT_EQ(j["conicity_curve"].size(), 4u);
@@ -305,11 +305,28 @@ TEST(HuntingReport, ALowSpeedIsNotPrintedAsZero) {
   HuntingResult r = test::stable_result();
   r.speeds.front() = 0.01 / 3.6;
   const std::string table = written(r, OutputFormat::table);
-  EXPECT_TRUE(has(table, "speeds 0.01–500.0 km/h")) << table;
+  EXPECT_TRUE(has(table, "speeds 0.01–500 km/h")) << table;
   EXPECT_TRUE(has(table, "from 0.01 km/h")) << table;
   EXPECT_TRUE(has(table, "f at 0.01 km/h")) << table;
   EXPECT_FALSE(has(table, "0.0–")) << table;
-  EXPECT_TRUE(has(written(test::stable_result(), OutputFormat::table), "speeds 10.0–500.0 km/h"));  // as before
+}
+
+// The range's ends are speeds the user gave: printed as given, to at most 6 significant digits
+// ("10–500 km/h", "72.5–333.333 km/h"), not "10.0–500.0 km/h" (docs/input.md, "Names and units
+// in outputs"); in every place the report names them.
+TEST(HuntingReport, TheGivenSpeedsArePrintedAsGiven) {
+  const std::string round = written(test::stable_result(), OutputFormat::table);
+  EXPECT_TRUE(has(round, "speeds 10–500 km/h")) << round;
+  EXPECT_TRUE(has(round, "f at 10 km/h")) << round;
+  EXPECT_FALSE(has(round, "10.0–")) << round;
+  HuntingResult r = test::stable_result();
+  r.speeds.front() = 72.5 / 3.6;
+  r.speeds.back() = 1000.0 / 3.0 / 3.6;  // 333.333… km/h: six digits
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html}) {
+    const std::string text = written(r, f);
+    EXPECT_TRUE(has(text, "peeds 72.5–333.333 km/h")) << text;
+    EXPECT_TRUE(has(text, "from 72.5 km/h to 333.333 km/h")) << text;
+  }
 }
 
 // The reports say what the CSV and JSON hold (each branch's root with Im λ > 0; the real roots

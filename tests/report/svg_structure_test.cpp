@@ -257,7 +257,7 @@ TEST(SvgStructure, HuntingStabilityChartsReadWell) {
     const std::string& locus = charts[1];
     EXPECT_NE(locus.find("fill=\"#440154\""), std::string::npos);
     EXPECT_NE(locus.find("fill=\"#fde725\""), std::string::npos);
-    EXPECT_NE(locus.find("dots: speed from 10.0 km/h (dark) to 500.0 km/h (light)"), std::string::npos);
+    EXPECT_NE(locus.find("dots: speed from 10 km/h (dark) to 500 km/h (light)"), std::string::npos);
   }
 }
 

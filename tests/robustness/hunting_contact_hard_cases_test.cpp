@@ -157,12 +157,12 @@ TEST(HuntingContactHardCases, ErrorsNameTheWheelset) {
   // One conicity rule everywhere (reader, HuntingOptions, here): 0 ≤ λ < 1.
   Vehicle steep = good;
   steep.wheelsets[0].contact.conicity = 1.5;
-  expect_error(steep, DofSet::lateral, "conicity = 1.500000 must be ≥ 0 and below 1");
+  expect_error(steep, DofSet::lateral, "conicity = 1.5 must be ≥ 0 and below 1");
   try {
     contact_matrices(assemble(good, DofSet::lateral), 1.0);
     ADD_FAILURE() << "a conicity override of 1 was taken";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("conicity = 1.000000 must be ≥ 0 and below 1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("conicity = 1 must be ≥ 0 and below 1"), std::string::npos) << e.what();
   }
 
   // The contact acts at the centre of gravity, the axle centre: off the track's centre line or the

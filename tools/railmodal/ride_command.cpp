@@ -41,9 +41,17 @@ RideOptions ride_options(const Scene& scene, const std::vector<double>& speeds, 
   RideOptions options = scene.ride ? scene.ride->options : RideOptions{};
   if (!speeds.empty()) options.speeds = speeds;
   if (options.speeds.empty() && scene.ride && scene.ride->simulation) options.speeds = {scene.ride->simulation->speed};
-  if (options.speeds.empty())
-    throw InputError(scene.source, 0, 0,
-                     "no speeds: give them in [ride] (speeds = \"100 km/h:200 km/h:20 km/h\") or as --speeds");
+  if (options.speeds.empty()) {
+    // At the [ride] table (its speeds key), or at the irregularity source of a scene without one,
+    // with file:line as every input error.
+    const std::string message = "no speeds: give them in [ride] (speeds = \"100 km/h:200 km/h:20 km/h\") or as --speeds";
+    const auto ride = scene.name_places.find("ride.speeds");
+    if (ride != scene.name_places.end())
+      throw InputError(scene.source, ride->second.line, ride->second.column, "key 'ride.speeds': " + message);
+    const auto source = scene.name_places.find("irregularity");
+    const KeyPlace at = source != scene.name_places.end() ? source->second : KeyPlace{};
+    throw InputError(scene.source, at.line, at.column, message);
+  }
   options.threads = o.threads;
   options.rms_only = o.rms_only;
   return options;
