@@ -98,7 +98,9 @@ void compare_study(std::ostream& out, const Study& study, const EvaluationOption
                                 std::to_string(options.shards));
   const StreamedRanking::Source results = [&](const std::function<void(size_t)>& prepare,
                                               const StreamedRanking::Sink& sink) {
-    study::evaluate_each(study, options, prepare, sink);
+    // A CSV or table of the ranking writes no mode name: a variant names only the modes its
+    // ranking reads (study::ModeNamesRead).
+    study::evaluate_each(study, options, prepare, sink, format != OutputFormat::csv && format != OutputFormat::table);
   };
   write_ranked(out, study, results, format, top, provenance, "compare_study");
 }

@@ -101,17 +101,20 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
 }
 
 // Solves the assembled vehicle; a vehicle with an unstable mode has no steady response.
-void solve_stable_modes(const Scene& scene, CriticalSpeedStudy* study) {
+// With `naming` deferred only an unstable mode is named, for its error.
+void solve_stable_modes(const Scene& scene, solve::ModeNaming naming, CriticalSpeedStudy* study) {
   if (study->system.size() == 0) throw std::invalid_argument("no free degrees of freedom in the chosen set");
   check_scene_fits(scene, study->system);
   // Into the modes the study holds: a study's worker hands it the previous variant's, whose
   // storage serves again (evaluate_variant.cpp); a fresh study's are empty.
-  solve::solve_modes_into(study->system, ModalOptions{}, &study->modes);
-  for (const Mode& m : study->modes.modes)
-    if (m.kind == ModeKind::unstable)
+  solve::solve_modes_into(study->system, ModalOptions{}, &study->modes, naming);
+  for (Mode& m : study->modes.modes)
+    if (m.kind == ModeKind::unstable) {
+      if (naming == solve::ModeNaming::deferred) solve::name_mode(solve::ModeNamer(study->system), &m);
       throw NumericalError("mode " + std::to_string(m.index) + " (" + m.name + ") is unstable (divergence rate " +
                            shortest_text(m.divergence_rate, 4) +
                            " 1/s): the vehicle has no steady response to harmonic input; see railmodal modes");
+    }
 }
 
 // The scene's outputs, or (if it names none) the DOF reported for each critical speed.
@@ -221,7 +224,7 @@ void response::study_critical_speeds_into(Scene given, const std::function<Linea
   study.scene = std::move(given);
   const Scene& scene = study.scene;
   study.system = assembled();
-  solve_stable_modes(scene, &study);
+  solve_stable_modes(scene, detail.naming, &study);
   clock.lap("assembly and modes");
 
   std::vector<const ExcitationSource*> sources;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "railmodal/critical_speed.hpp"
+#include "solve/modal_solver.hpp"
 
 namespace railmodal::response {
 
@@ -43,11 +44,14 @@ enum class CurvePhases { kept, left_out };
 /// speeds are find_critical_speeds_in's rows without their response, found once, and the
 /// study's own `summary` (stage times, method, checks) is left empty: a design variant's result
 /// has a summary of its own and reads none of the study's. With `phases` left_out every curve's
-/// phases_deg is empty.
+/// phases_deg is empty. With `naming` deferred the modes are not named (solve::ModeNaming: every
+/// Mode::name and CriticalSpeed::mode_name empty, but an unstable mode's in the error it throws):
+/// the caller names what it reads (solve::name_mode, name_eigenspace).
 /// Everything else is the same bits as the full study's.
 struct StudyDetail {
   ResonanceDetail rows = ResonanceDetail::full;
   CurvePhases phases = CurvePhases::kept;
+  solve::ModeNaming naming = solve::ModeNaming::now;
 };
 
 /// The same into `study` (default-constructed), taking the scene as given: a caller that owns

@@ -271,10 +271,7 @@ std::optional<CriticalSpeed> resonance(const LinearSystem& system, const ModalRe
   row.source_kind = source.kind();
   row.harmonic = k;
   row.mode = first.index;
-  row.mode_name = first.name;
-  // A repeated cluster of twins has one name for the subspace ("bogies pitch (repeated)").
-  for (size_t g = 1; g < group.size(); ++g)
-    if (group[g]->name != first.name) row.mode_name += " + " + group[g]->name;
+  response::name_eigenspace(group, &row.mode_name);
   row.frequency_hz = first.frequency_hz;
   // A complex modal-force vector (inputs out of phase) gives a rotating combination;
   // its magnitude per DOF is what the output sees.

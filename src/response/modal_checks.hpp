@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <complex>
+#include <string>
 #include <vector>
 
 #include "railmodal/excitation.hpp"
@@ -83,6 +84,15 @@ inline std::vector<std::vector<const Mode*>> eigenspaces(const ModalResult& mode
   std::vector<std::vector<const Mode*>> groups;
   eigenspaces_into(modes, &groups);
   return groups;
+}
+
+/// The name of an eigenspace (CriticalSpeed::mode_name) from its modes' names: its first mode's,
+/// and each other's that differs, after " + " (a repeated cluster of twins has one name for the
+/// subspace: "bogies pitch (repeated)"). Written into `name`, its storage reused.
+inline void name_eigenspace(const std::vector<const Mode*>& group, std::string* name) {
+  name->assign(group.front()->name);
+  for (size_t g = 1; g < group.size(); ++g)
+    if (group[g]->name != group.front()->name) name->append(" + ").append(group[g]->name);
 }
 
 /// The eigenspace whose first mode has 1-based index `mode` (CriticalSpeed::mode); empty if none.

@@ -175,7 +175,14 @@ void summarise(ModalResult* result, const ModalOptions& options, std::vector<Sta
   s.stages = std::move(stages);
 }
 
-// Classifies, names and checks the first `keep` eigenpairs into `into` (all but its notes).
+// A mode that is not oscillatory says so after the name of its shape.
+void add_kind_to_name(Mode* mode) {
+  if (mode->kind == ModeKind::unstable) mode->name += " (unstable)";
+  if (mode->kind == ModeKind::rigid_body) mode->name += " (rigid-body)";
+}
+
+// Classifies, names and checks the first `keep` eigenpairs into `into` (all but its notes);
+// without `describe` the modes are left unnamed (ModeNaming::deferred).
 // Every member is written: a result kept from another solve (solve_modes_into) ends as a
 // fresh one would, its modes' shapes and names in the storage it had. Matrix: dense or sparse.
 template <class Matrix>
@@ -220,9 +227,13 @@ void make_result(const std::vector<Dof>& dofs, const Matrix& M, const Matrix& K,
     mode.residual = denom > 0.0 ? (K_phi.col(k) - lambda(k) * M_phi.col(k)).norm() / denom : 0.0;
     result.max_residual = std::max(result.max_residual, mode.residual);
     mode.repeated = repeated[k];
-    describe(mode.shape, mode.repeated, &mode.name, &mode.centre);
-    if (mode.kind == ModeKind::unstable) mode.name += " (unstable)";
-    if (mode.kind == ModeKind::rigid_body) mode.name += " (rigid-body)";
+    if (describe) {
+      describe(mode.shape, mode.repeated, &mode.name, &mode.centre);
+      add_kind_to_name(&mode);
+    } else {  // named later, if at all (ModeNaming::deferred)
+      mode.name.clear();
+      mode.centre.reset();
+    }
   }
   // Orthonormality over the kept coordinates (the condensed ones carry no mass).
   const Eigen::MatrixXd G = phi.transpose() * M_phi;
@@ -260,7 +271,13 @@ ModalResult solve_modes(const LinearSystem& system, const ModalOptions& options)
   return result;
 }
 
-void solve::solve_modes_into(const LinearSystem& system, const ModalOptions& options, ModalResult* into) {
+void solve::name_mode(const ModeNamer& namer, Mode* mode) {
+  namer.describe(mode->shape, mode->repeated, &mode->name, &mode->centre);
+  add_kind_to_name(mode);
+}
+
+void solve::solve_modes_into(const LinearSystem& system, const ModalOptions& options, ModalResult* into,
+                             ModeNaming naming) {
   check_options(options);
   const int n = system.size();
   if (n == 0) throw std::invalid_argument("the system has no degrees of freedom");
@@ -268,11 +285,14 @@ void solve::solve_modes_into(const LinearSystem& system, const ModalOptions& opt
   const Eigen::MatrixXd& K = system.stiffness;
   if (!M.allFinite() || !K.allFinite())
     throw NumericalError("the mass or stiffness matrix contains NaN or infinity");
-  solve::ModeNamer namer(system);  // what the names need of the system, once for all modes
-  const Describe describe = [&namer](const Eigen::VectorXd& shape, bool repeated, std::string* name,
-                                     std::optional<CentreOfOscillation>* centre) {
-    namer.describe(shape, repeated, name, centre);
-  };
+  // What the names need of the system, once for all modes (when they are named now).
+  std::optional<solve::ModeNamer> namer;
+  Describe describe;
+  if (naming == ModeNaming::now) {
+    namer.emplace(system);
+    describe = [&namer](const Eigen::VectorXd& shape, bool repeated, std::string* name,
+                        std::optional<CentreOfOscillation>* centre) { namer->describe(shape, repeated, name, centre); };
+  }
   std::vector<Check> kept_checks = std::move(into->solver.checks);  // rewritten by summarise
   AnalysisSummary timing;
   StageClock clock(&timing);

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
@@ -17,6 +20,8 @@
 #include "response/golden_section.hpp"
 #include "response/modal_checks.hpp"
 #include "solve/lateral_stability.hpp"
+#include "solve/modal_solver.hpp"
+#include "solve/mode_naming.hpp"
 #include "study/parallel_evaluation.hpp"
 #include "study/permissible_deflection.hpp"
 #include "summary/stage_clock.hpp"
@@ -335,6 +340,52 @@ void describe_failure(const Vehicle& vehicle, DofSet dofs, const std::string& wh
     }
 }
 
+// Names, among the modes a critical-speed study left unnamed (solve::ModeNaming::deferred) and
+// its critical speeds, what the ranking reads (study::ModeNamesRead): the same names, in the
+// same places, as a study that named every mode.
+void name_what_is_read(const study::ModeNamesRead& read, CriticalSpeedStudy* study) {
+  std::vector<Mode>& modes = study->modes.modes;
+  std::optional<solve::ModeNamer> namer;  // made with the first name
+  thread_local std::vector<char> named;   // per mode; this thread's, its storage kept
+  named.assign(modes.size(), 0);
+  const auto name = [&](size_t k) {
+    if (named[k]) return;
+    if (!namer) namer.emplace(study->system);
+    solve::name_mode(*namer, &modes[k]);
+    named[k] = 1;
+  };
+  thread_local std::vector<std::vector<const Mode*>> groups;  // the eigenspaces, as the rows found them
+  response::eigenspaces_into(study->modes, &groups);
+  const auto name_speed = [&](CriticalSpeed* c) {
+    for (const auto& group : groups)
+      if (group.front()->index == c->mode) {
+        for (const Mode* m : group) name(static_cast<size_t>(m->index - 1));  // Mode::index: 1-based place
+        response::name_eigenspace(group, &c->mode_name);
+        return;
+      }
+  };
+  bool every = false;  // a mode a metric names is missing: every name, for check_mode_names's list
+  for (const std::string& x : read.periods) {  // metric_value: the first oscillatory mode named x
+    bool found = false;
+    for (size_t k = 0; k < modes.size() && !found; ++k) {
+      name(k);
+      found = modes[k].kind == ModeKind::oscillatory && modes[k].name == x;
+    }
+    every = every || !found;
+  }
+  for (const std::string& x : read.critical_speeds) {  // metric_value: the first critical speed named x
+    bool found = false;
+    for (size_t i = 0; i < study->critical_speeds.size() && !found; ++i) {
+      name_speed(&study->critical_speeds[i]);
+      found = study->critical_speeds[i].mode_name == x;
+    }
+    every = every || !found;
+  }
+  if (!every) return;
+  for (size_t k = 0; k < modes.size(); ++k) name(k);
+  for (CriticalSpeed& c : study->critical_speeds) name_speed(&c);
+}
+
 // Gives the workspace its system, scene and modes back when the evaluation ends (their
 // storage serves the next variant), however it ends.
 struct HandBack {
@@ -369,7 +420,7 @@ struct GiveBackRead {
 // from the base it keeps.
 VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned, int index, const DeflectionRule& rule,
                                const std::optional<HuntingOptions>& hunting, bool ride_rms_only, const VariantWork& work,
-                               study::Workspace* workspace) {
+                               const study::ModeNamesRead& names, study::Workspace* workspace) {
   VariantResult r;
   r.index = index;
   r.name = variant.name;
@@ -417,8 +468,10 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
       };
       // Summary rows and no phases: a variant's result reads no resonance's steady response and
       // only the curves' amplitudes (peaks).
-      constexpr response::StudyDetail kVariant{response::ResonanceDetail::without_response,
-                                               response::CurvePhases::left_out};
+      // Its modes named now, or (names.all false) those the ranking reads once it is done.
+      const response::StudyDetail kVariant{response::ResonanceDetail::without_response,
+                                           response::CurvePhases::left_out,
+                                           names.all ? solve::ModeNaming::now : solve::ModeNaming::deferred};
       if (owned)
         response::study_critical_speeds_into(std::move(owned->scene), assembled, &study, {}, kVariant);
       else
@@ -432,6 +485,7 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
     // The variant's vehicle and scene, wherever they are now (bit for bit the variant's).
     const Vehicle& vehicle = study.system.vehicle;
     const Scene& scene = study.scene;
+    if (!names.all) name_what_is_read(names, &study);
     clock.lap("critical-speed study");
     summarise_modes(study.modes, &r);
     static_deflections(vehicle, study.system, &r);
@@ -461,19 +515,19 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
                                const std::optional<HuntingOptions>& hunting, bool ride_rms_only,
                                const VariantWork& work) {
-  return evaluate_in_full(variant, nullptr, index, rule, hunting, ride_rms_only, work, nullptr);
+  return evaluate_in_full(variant, nullptr, index, rule, hunting, ride_rms_only, work, study::ModeNamesRead{}, nullptr);
 }
 
 VariantResult study::evaluate_in_workspace(const StudyVariant& variant, int index, const VariantSettings& settings,
                                            Workspace* workspace) {
   return evaluate_in_full(variant, nullptr, index, settings.rule, settings.hunting, settings.ride_rms_only, settings.work,
-                          workspace);
+                          settings.names, workspace);
 }
 
 VariantResult study::evaluate_owned_variant(StudyVariant&& variant, int index, const VariantSettings& settings,
                                             Workspace* workspace) {
   return evaluate_in_full(variant, &variant, index, settings.rule, settings.hunting, settings.ride_rms_only, settings.work,
-                          workspace);
+                          settings.names, workspace);
 }
 
 }  // namespace railmodal

@@ -41,9 +41,22 @@ std::optional<HuntingOptions> hunting_options_of(const Study& study) {
   return options;
 }
 
+study::ModeNamesRead study::mode_names_ranked(const Ranking& ranking) {
+  ModeNamesRead names;
+  names.all = false;
+  const auto see = [&](const std::string& metric) {
+    const std::string name = canonical_metric(metric);
+    for (auto [prefix, list] : {std::pair{"period:", &names.periods}, {"critical_speed:", &names.critical_speeds}})
+      if (name.rfind(prefix, 0) == 0) list->push_back(name.substr(std::char_traits<char>::length(prefix)));
+  };
+  for (const RankingConstraint& c : ranking.constraints) see(c.metric);
+  for (const RankingCriterion& c : ranking.objective) see(c.metric);
+  return names;
+}
+
 int study::evaluate_each(const Study& study, const EvaluationOptions& options,
                          const std::function<void(size_t)>& prepare,
-                         const std::function<void(size_t, VariantResult&&)>& sink) {
+                         const std::function<void(size_t, VariantResult&&)>& sink, bool names_written) {
   require_valid(options, "");
   std::vector<int> indices;
   const bool opened = study.variants.empty() && study.plan;  // open_study: no variant listed, none read
@@ -57,7 +70,8 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
     }
   prepare(indices.size());
   const VariantSettings settings{study.deflection_rule, hunting_options_of(study), ride_rms_only(study),
-                                 variant_work_of(study.ranking, study.deflection_rule)};
+                                 variant_work_of(study.ranking, study.deflection_rule),
+                                 names_written ? ModeNamesRead{} : mode_names_ranked(study.ranking)};
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min(threads, static_cast<int>(indices.size())));
 

@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "model/assembly.hpp"
 #include "railmodal/linear_system.hpp"
@@ -22,9 +24,29 @@ namespace railmodal::study {
 /// worker threads, concurrently, once per position. Returns the threads used. Throws
 /// as evaluate_study: std::invalid_argument for invalid options or an unread variant, the
 /// InputError of the lowest-index variant that could not be read.
+/// With `names_written` false the sink writes no mode name (a CSV or table of the ranking):
+/// each result then names only the modes its ranking reads (ModeNamesRead).
 int evaluate_each(const Study& study, const EvaluationOptions& options,
                   const std::function<void(size_t shard_size)>& prepare,
-                  const std::function<void(size_t position, VariantResult&& result)>& sink);
+                  const std::function<void(size_t position, VariantResult&& result)>& sink,
+                  bool names_written = true);
+
+/// Which mode names a variant's result carries (issue 19, item 2: naming its modes cost a
+/// twentieth of a variant). `all`: every mode's and critical speed's, as evaluate_variant gives
+/// them. Otherwise only what the ranking's metrics read: for each mode named by a metric
+/// `period:X`, the modes in order up to the first oscillatory one named X; for each
+/// `critical_speed:X`, the critical speeds' modes in order up to the first named X; every name
+/// when a variant has no such mode (so that a metric naming a mode no variant has is refused
+/// with every variant's names listed, study::check_mode_names). Names not read are left empty.
+/// metric_value of every metric is the same as with every name.
+struct ModeNamesRead {
+  bool all = true;
+  std::vector<std::string> periods;          ///< X of the metrics period:X
+  std::vector<std::string> critical_speeds;  ///< X of the metrics critical_speed:X
+};
+
+/// The names a ranking by `ranking` reads: ModeNamesRead without `all`.
+ModeNamesRead mode_names_ranked(const Ranking& ranking);
 
 /// What every variant of a study is evaluated with (evaluate_each works them out once).
 struct VariantSettings {
@@ -32,6 +54,7 @@ struct VariantSettings {
   std::optional<HuntingOptions> hunting;
   bool ride_rms_only = false;
   VariantWork work;  ///< variant_work_of the study's ranking
+  ModeNamesRead names;
 };
 
 /// What a worker keeps from one variant to the next (issue 19, item 2): the assembly of the

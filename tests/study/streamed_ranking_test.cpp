@@ -300,5 +300,70 @@ TEST(EvaluateEach, ASinksFailureReachesTheCaller) {
   }
 }
 
+// Every result of `study` by evaluate_each, in study order; with `names_written` false a
+// variant names only the modes its ranking reads (study::ModeNamesRead).
+std::vector<VariantResult> evaluated_each(const Study& study, bool names_written) {
+  EvaluationOptions options;
+  options.threads = 2;
+  options.read_in_workers = true;
+  std::vector<VariantResult> results;
+  study::evaluate_each(
+      study, options, [&](size_t count) { results.resize(count); },
+      [&](size_t k, VariantResult&& r) { results[k] = std::move(r); }, names_written);
+  return results;
+}
+
+void expect_names_read(Study study);
+
+// A CSV or table of a ranking writes no mode name, so its variants name only the modes the
+// ranking reads: every metric has the value it has with every name, every name given is the
+// one every-name evaluation gives, and the names not read are left out. A metric naming a mode
+// the variant lacks has every name given (a study whose variants all lack it is refused with
+// their names listed, study::check_mode_names).
+TEST(EvaluateEach, NamesOnlyTheModesTheRankingReadsWhenNoNameIsWritten) {
+  for (const char* name : {"two_axle_rail_length_and_springs", "resort_against_fette"})
+    expect_names_read(open_study(bundled_study(name)));
+}
+
+void expect_names_read(Study study) {
+  const std::vector<VariantResult> all = evaluated_each(study, true);
+  // Every mode-named metric a result could be ranked by: a period and a critical speed of
+  // every mode (a resonance's eigenspace) a variant has, and one no variant has.
+  std::vector<std::string> metrics{"period:no such mode", "critical_speed:no such mode"};
+  for (const VariantResult& r : all) {
+    for (const auto& m : r.modes) metrics.push_back("period:" + m.name);
+    for (const auto& c : r.critical_speeds) metrics.push_back("critical_speed:" + c.mode_name);
+  }
+  std::sort(metrics.begin(), metrics.end());
+  metrics.erase(std::unique(metrics.begin(), metrics.end()), metrics.end());
+  ASSERT_GT(metrics.size(), 5u);  // two modes of each kind at least, and the missing two
+  size_t left_out = 0, read = 0;
+  for (const std::string& metric : metrics) {
+    study.ranking.objective.assign(1, RankingCriterion{metric, true, 1.0, {}});
+    study.ranking.constraints.clear();
+    const std::vector<VariantResult> named = evaluated_each(study, false);
+    ASSERT_EQ(named.size(), all.size());
+    const bool missing = metric.find("no such mode") != std::string::npos;
+    for (size_t k = 0; k < all.size(); ++k) {
+      ASSERT_TRUE(all[k].ok()) << all[k].failure;
+      EXPECT_EQ(metric_value(named[k], metric), metric_value(all[k], metric)) << metric << ", " << all[k].name;
+      ASSERT_EQ(named[k].modes.size(), all[k].modes.size());
+      for (size_t m = 0; m < all[k].modes.size(); ++m) {
+        const std::string& name = named[k].modes[m].name;
+        (name.empty() ? left_out : read) += 1;
+        EXPECT_TRUE(name.empty() ? !missing : name == all[k].modes[m].name) << metric << ", mode " << m + 1;
+        EXPECT_EQ(named[k].modes[m].period_s, all[k].modes[m].period_s);
+      }
+      ASSERT_EQ(named[k].critical_speeds.size(), all[k].critical_speeds.size());
+      for (size_t c = 0; c < all[k].critical_speeds.size(); ++c) {
+        const std::string& name = named[k].critical_speeds[c].mode_name;
+        EXPECT_TRUE(name.empty() ? !missing : name == all[k].critical_speeds[c].mode_name) << metric << ", " << c;
+      }
+    }
+  }
+  EXPECT_GT(left_out, 0u) << study.name;  // names were left out
+  EXPECT_GT(read, 0u) << study.name;
+}
+
 }  // namespace
 }  // namespace railmodal::test

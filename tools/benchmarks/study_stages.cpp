@@ -17,6 +17,9 @@
 //  - read + evaluate in a worker: evaluate_study() with the variants read in the workers, one
 //    thread (what `railmodal compare` does: each variant read from the parsed files and
 //    evaluated on the worker's kept base, its coefficients written into the base's assembly);
+//  - compare, CSV: compare_study() writing CSV, one thread: read + evaluate in a worker naming
+//    only the modes the ranking reads, then the variant's key and CSV row (what `railmodal
+//    compare --format csv` does per variant);
 // and, for all N together, rank_variants() per variant. Medians over the variants (thread CPU
 // time, so that other jobs on a shared machine do not count), with the 10th and 90th percentiles.
 //
@@ -30,6 +33,7 @@
 #include <ctime>
 #include <functional>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -131,6 +135,27 @@ int main(int argc, char** argv) {
     first_n.variants.resize(n);
     sink += evaluate_study(first_n, options).size();
   }
+  // What `railmodal compare --format csv` does per variant: read + evaluate in a worker, then
+  // the sink (the ranking's key, the CSV row into the temporary file); a variant names only the
+  // modes its ranking reads (no CSV column holds a mode name). The ranking and writing after
+  // the last variant are not counted.
+  std::vector<double> in_compare;
+  {
+    EvaluationOptions options;
+    options.threads = 1;
+    options.read_in_workers = true;
+    double last = thread_seconds();
+    options.progress = [&](double) {
+      const double now = thread_seconds();
+      in_compare.push_back(now - last);
+      last = now;
+    };
+    Study first_n = study;
+    first_n.variants.resize(n);
+    std::ostringstream csv;
+    compare_study(csv, first_n, options, OutputFormat::csv);
+    sink += static_cast<double>(csv.str().size());
+  }
   // Ranking needs every variant of the study: rank a study of the first n.
   Study first = study;
   first.variants.resize(n);
@@ -156,6 +181,7 @@ int main(int argc, char** argv) {
   for (const auto& [stage, seconds] : inner) line(("  of which " + stage + " (wall)").c_str(), spread_us(seconds));
   line("evaluate (evaluate_variant)", spread_us(evaluate));
   line("read + evaluate in a worker", spread_us(in_worker));
+  line("compare, CSV: + key and row", spread_us(in_compare));
   std::printf("%-34s %10.2f %8s %8s %8.2f\n", "rank (rank_variants / n)", 1e6 * rank_seconds, "", "", 1e6 * rank_seconds / floor);
   std::printf("best %s\n", ranked.variants.front().result.name.c_str());
   return 0;
