@@ -121,6 +121,9 @@ struct Study {
   std::vector<StudyVariant> variants;
   Ranking ranking;
   DeflectionRule deflection_rule;  ///< [permissible_dynamic_deflection]; none: not checked
+  /// Every analysis of each variant whatever the ranking reads (Python's evaluate_variants,
+  /// which ranks nothing); false: only what the ranking reads (variant_work_of).
+  bool every_analysis = false;
   std::shared_ptr<const detail::StudySource> plan;  ///< for read_variant; shared by copies
 };
 
@@ -236,6 +239,9 @@ struct VariantResult {
     bool unbounded = false;         ///< an undamped mode the track excites: no finite RMS
   };
   bool ride_evaluated = false;      ///< the scene has a ride, and it was computed
+  /// The scene's critical speeds and peaks were computed (VariantWork::critical_speeds); when
+  /// false, critical_speeds and peaks are empty because nothing was asked, not because none exist.
+  bool critical_speeds_evaluated = false;
   std::vector<RideSummary> ride;    ///< in the ride's output order
   /// The largest N_MV estimate over the floor points and speeds; none without comfort points.
   std::optional<double> max_nmv;
@@ -261,7 +267,8 @@ struct VariantWork {
 
 /// What a study's ranking reads: critical speeds when it names lowest_critical_speed,
 /// critical_speed:<mode>, peak:… or dynamic_deflection_ratio, or the study names a deflection
-/// rule; the ride when it names a ride metric (max_wz, max_nmv, rms_…:).
+/// rule; the ride when it names a ride metric (max_wz, max_nmv, rms_…:). A ranking with no
+/// objective and no constraint reads everything.
 VariantWork variant_work_of(const Ranking& ranking, const DeflectionRule& rule);
 
 /// Whether a metric reads the study's scene (critical speeds, peaks, dynamic deflections, the

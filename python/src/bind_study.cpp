@@ -281,6 +281,7 @@ void bind_batched_variants(py::module_& m) {
         rule.book = enum_argument(book, deflection_book_from_string, "deflection_rule", "'none', 'korotkevich', 'lehner'");
         rule.service = enum_argument(service, deflection_service_from_string, "service", "'passenger', 'freight'");
         Study study = study_of(scene, vehicles, names, rule);
+        study.every_analysis = true;  // ranks nothing, returns every figure
         if (hunting_speed) study.ranking.objective.push_back({"hunting_speed", true, 1.0, {}});  // asks for the metric
         EvaluationOptions options;
         options.threads = threads;

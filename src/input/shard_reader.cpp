@@ -30,13 +30,16 @@ VariantResult result_from_json(const json& j) {
   for (const auto& s : j.at("static_deflections"))
     r.static_deflections.push_back({s.at("body").get<std::string>(), s.at("deflection_m").get<double>()});
   if (!j.at("metacentric_height_m").is_null()) r.metacentric_height = j.at("metacentric_height_m").get<double>();
-  for (const auto& c : j.at("critical_speeds"))
-    r.critical_speeds.push_back({c.at("speed_m_s").get<double>(), c.at("source").get<int>(),
-                                 c.at("source_kind").get<std::string>(), c.at("harmonic").get<int>(),
-                                 c.at("mode_name").get<std::string>(), c.at("friction_stops").get<bool>()});
-  for (const auto& p : j.at("peaks"))
-    r.peaks.push_back({p.at("source").get<int>(), p.at("output").get<std::string>(), p.at("quantity").get<std::string>(),
-                       p.at("amplitude").get<double>(), p.at("speed_m_s").get<double>(), p.at("unbounded").get<bool>()});
+  r.critical_speeds_evaluated = j.contains("critical_speeds");
+  if (r.critical_speeds_evaluated)
+    for (const auto& c : j.at("critical_speeds"))
+      r.critical_speeds.push_back({c.at("speed_m_s").get<double>(), c.at("source").get<int>(),
+                                   c.at("source_kind").get<std::string>(), c.at("harmonic").get<int>(),
+                                   c.at("mode_name").get<std::string>(), c.at("friction_stops").get<bool>()});
+  if (j.contains("peaks"))
+    for (const auto& p : j.at("peaks"))
+      r.peaks.push_back({p.at("source").get<int>(), p.at("output").get<std::string>(), p.at("quantity").get<std::string>(),
+                         p.at("amplitude").get<double>(), p.at("speed_m_s").get<double>(), p.at("unbounded").get<bool>()});
   if (j.contains("hunting_speed_m_s")) {
     const json& h = j.at("hunting_speed_m_s");
     r.hunting_speed =

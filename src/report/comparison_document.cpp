@@ -634,7 +634,8 @@ void write_ride_chart(std::ostream& out, const std::vector<DesignCurves>& sets, 
   chart.id = "ride-1";
   chart.title = ride_metric_at_speed_title(metric);
   chart.x_label = "speed (km/h)";
-  chart.y_label = ride_metric_at_speed_title(metric) + (*u.unit ? std::string(" (") + u.unit + ")" : "");
+  // A dimensionless index (Wz, N_MV) says so, as the ride report's "Wz (–)" does.
+  chart.y_label = ride_metric_at_speed_title(metric) + " (" + (*u.unit ? u.unit : "–") + ")";
   for (size_t v = 0; v < sets.size(); ++v) {
     const DesignCurves& s = sets[v];
     if (!s.ride) continue;

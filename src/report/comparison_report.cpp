@@ -134,8 +134,10 @@ void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* r
     j.key("criteria").begin_array();
     for (size_t k = 0; k < v.criteria.size(); ++k) ranking_value(j, v.criteria[k], is_peak(ranked->comparison, k));
     j.end_array();
-    write_critical_speeds(j, r);
-    j.member("critical_speeds_kmh", critical_speeds(r, kKmh)).member("critical_speeds_m_s", critical_speeds(r, 1.0));
+    if (r.critical_speeds_evaluated) {  // absent, not empty, when the study asked for none
+      write_critical_speeds(j, r);
+      j.member("critical_speeds_kmh", critical_speeds(r, kKmh)).member("critical_speeds_m_s", critical_speeds(r, 1.0));
+    }
     if (r.deflections_checked) {
       j.key("dynamic_deflection_ratio");
       ratio && std::isinf(*ratio) ? j.value("unbounded") : j.value(ratio);
@@ -169,7 +171,7 @@ void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* r
   j.key("parameters").begin_array();
   for (const auto& [key, value] : r.parameters) j.begin_object().member("key", key).member("value", value).end_object();
   j.end_array();
-  write_peaks(j, r);
+  if (r.critical_speeds_evaluated) write_peaks(j, r);
   if (ranked) j.member("periods_s", periods(r)).member("rank", ranked->variant.rank);
   if (r.ride_evaluated) write_ride(j, r);
   j.key("static_deflections").begin_array();

@@ -296,9 +296,24 @@ void ride_summary(const Vehicle& vehicle, const Scene& scene, bool rms_only, rid
 
 // The modes and statics of a variant whose scene has no periodic source (a ride scene): no
 // critical-speed study to take them from.
+// A divergent mode makes the variant a failure naming it (the critical-speed study refuses such a
+// vehicle; a study that asks for no critical speeds must not rank its "period" instead).
+bool name_unstable_mode(const ModalResult& modes, VariantResult* r) {
+  for (const Mode& m : modes.modes)
+    if (m.kind == ModeKind::unstable) {
+      char rate[32];
+      std::snprintf(rate, sizeof rate, "%.4g", m.divergence_rate);
+      r->failure = "unstable: mode " + std::to_string(m.index) + ", " + m.name + ", diverges at " + rate + " 1/s";
+      return true;
+    }
+  return false;
+}
+
 void summarise_without_sources(const StudyVariant& variant, VariantResult* r) {
   const LinearSystem system = assemble(variant.vehicle, variant.scene.dofs);
-  summarise_modes(solve_modes(system), r);
+  const ModalResult modes = solve_modes(system);
+  summarise_modes(modes, r);
+  name_unstable_mode(modes, r);
   static_deflections(variant.vehicle, system, r);
   metacentric_height(variant.vehicle, nullptr, r);
 }
@@ -331,13 +346,7 @@ void describe_failure(const Vehicle& vehicle, DofSet dofs, const std::string& wh
   summarise_modes(modes, r);
   static_deflections(vehicle, system, r);
   metacentric_height(vehicle, nullptr, r);
-  for (const Mode& m : modes.modes)
-    if (m.kind == ModeKind::unstable) {
-      char rate[32];
-      std::snprintf(rate, sizeof rate, "%.4g", m.divergence_rate);
-      r->failure = "unstable: mode " + std::to_string(m.index) + ", " + m.name + ", diverges at " + rate + " 1/s";
-      return;
-    }
+  name_unstable_mode(modes, r);
 }
 
 // Names, among the modes a critical-speed study left unnamed (solve::ModeNaming::deferred) and
@@ -434,6 +443,11 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
       const GiveBackRead give_back{owned, workspace};
       summarise_without_sources(variant, &r);
       clock.lap("modes");
+      if (!r.ok()) {  // a divergent mode: nothing else of it to rank
+        summarise_evaluation(&r);
+        return r;
+      }
+      r.critical_speeds_evaluated = work.critical_speeds;  // asked for, and a ride scene has none
       if (work.ride)
         ride_summary(variant.vehicle, variant.scene, ride_rms_only, workspace ? &workspace->ride : nullptr, &r);
       clock.lap("ride");
@@ -491,6 +505,7 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
     static_deflections(vehicle, study.system, &r);
     metacentric_height(vehicle, &lateral, &r);
     summarise_response(study, &r);
+    r.critical_speeds_evaluated = true;
     clock.lap("summaries");
     if (rule.active()) check_deflections(rule, study, &r);
     clock.lap("deflection checks");

@@ -123,6 +123,8 @@ bool metric_needs_scene(const std::string& name) {
 
 VariantWork variant_work_of(const Ranking& ranking, const DeflectionRule& rule) {
   VariantWork work;
+  // A study that ranks nothing lists every variant's figures: all of them are computed.
+  if (ranking.objective.empty() && ranking.constraints.empty()) return work;
   work.critical_speeds = rule.active();
   work.ride = false;
   const auto see = [&](const std::string& name) {
@@ -150,6 +152,8 @@ bool ride_rms_only(const Study& study) {
 std::optional<double> metric_value(const VariantResult& r, const std::string& name) {
   const std::string_view metric = canonical(name);
   if (!r.ok()) return std::nullopt;
+  // Not asked for is not "none in range": no value (Python's None), not +inf.
+  if (reads_critical_speeds(metric) && !r.critical_speeds_evaluated) return std::nullopt;
   if (metric == "lowest_critical_speed")
     return r.critical_speeds.empty() ? std::numeric_limits<double>::infinity() : r.critical_speeds.front().speed;
   if (starts_with(metric, "critical_speed:")) {

@@ -70,7 +70,7 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
     }
   prepare(indices.size());
   const VariantSettings settings{study.deflection_rule, hunting_options_of(study), ride_rms_only(study),
-                                 variant_work_of(study.ranking, study.deflection_rule),
+                                 study.every_analysis ? VariantWork{} : variant_work_of(study.ranking, study.deflection_rule),
                                  names_written ? ModeNamesRead{} : mode_names_ranked(study.ranking)};
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min(threads, static_cast<int>(indices.size())));

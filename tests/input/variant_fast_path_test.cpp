@@ -104,7 +104,7 @@ TEST(VariantFastPath, BuildsTheBundledStudiesVariantsAsTheReadersDo) {
   std::map<std::string, Checked> checked;
   for (const auto& entry : std::filesystem::directory_iterator(studies))
     checked[entry.path().filename().string()] = check_study(entry.path().string());
-  ASSERT_EQ(checked.size(), 4u) << "a study was added to data/studies: say here which keys it sets fast";
+  ASSERT_EQ(checked.size(), 5u) << "a study was added to data/studies: say here which keys it sets fast";
   // The cradle springs' stiffness of the resort car's overrides is set fast; the other file
   // (the Fette car) takes the readers.
   EXPECT_EQ(checked["resort_against_fette.toml"].fast_keys, std::set<std::string>{"secondary.spring.stiffness"});
@@ -115,6 +115,9 @@ TEST(VariantFastPath, BuildsTheBundledStudiesVariantsAsTheReadersDo) {
   EXPECT_TRUE(checked["two_axle_wagon_ride_springs.toml"].fast_keys.empty());
   // Scene keys only.
   EXPECT_TRUE(checked["two_axle_joint_dip_deflection.toml"].fast_keys.empty());
+  // The primary's longitudinal stiffness is set fast; the yaw damper (a series damper table)
+  // takes the readers.
+  EXPECT_EQ(checked["coach_hunting_yaw_dampers.toml"].fast_keys, std::set<std::string>{"primary.longitudinal.stiffness"});
 }
 
 // A study's worker reads each variant into the vehicle of the one before

@@ -281,6 +281,7 @@ VariantResult result(int index, const std::string& name, double bounce_period, d
   r.name = name;
   r.modes.push_back({"body bounce", "oscillatory", 1.0 / bounce_period, bounce_period, 0.0});
   r.critical_speeds.push_back({critical_speed, 0, "rail_joints", 1, "body bounce", false});
+  r.critical_speeds_evaluated = true;  // as a variant whose ranking reads them
   return r;
 }
 
