@@ -328,13 +328,17 @@ std::vector<std::string> unsimulated_parts(const Scene& scene, const Vehicle& ve
   // "effects = []" written in the file: the linear, undamped model chosen, not forgotten.
   if (!scene.simulation || (scene.simulation->effects.empty() && scene.name_places.count("simulation.effects")))
     return out;
-  // What scene_system leaves out without "viscous_dampers": the vertical and lateral dampers.
-  const int dampers = count_parts(vehicle, scene.dofs, [](const Element& e, bool vertical) {
+  // What scene_system leaves out without "viscous_dampers": the vertical and lateral dampers (the
+  // longitudinal ones, series dampers and a body's bending damping stay in C). A lateral scene's
+  // roll feels a vertical damper set off the centre line too.
+  int dampers = count_parts(vehicle, scene.dofs, [](const Element& e, bool vertical) {
     return static_cast<int>((vertical ? e.vertical_damping : e.lateral_damping) > 0.0);
   });
+  if (scene.dofs == DofSet::lateral)
+    for (const Element& e : vehicle.elements) dampers += e.vertical_damping > 0.0 && e.point.y() != 0.0;
   if (dampers > 0 && !names(scene, "viscous_dampers"))
     out.push_back(std::to_string(dampers) + (dampers == 1 ? " viscous damper" : " viscous dampers") +
-                  " in the vehicle " + (dampers == 1 ? "is" : "are") + " not simulated (C = 0): " +
+                  " in the vehicle " + (dampers == 1 ? "is" : "are") + " not simulated: " +
                   add_effect(scene, "viscous_dampers"));
   // Leaf friction acts on the vertical stages only (docs/scenes.md, "leaf_friction").
   const int leaves = scene.dofs == DofSet::lateral
