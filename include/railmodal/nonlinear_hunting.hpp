@@ -152,9 +152,10 @@ struct SpeedHold {
   // Last, so that brace-initialised holds (the report tests') keep their meaning.
   bool undecided = false;        ///< −1e-4 per period lies within rate_error of the rate
   double rate_per_period = 0.0;  ///< 1/period: d ln(amplitude)/d(periods), fitted over the second half
-  /// 1/period: the most the residual's wobble about the fitted line can have moved the rate, its
-  /// worst case over the residual's envelope (the residuals are deterministic, not noise: no
-  /// standard error); infinite when too few half cycles.
+  /// 1/period: the most a wobble no larger than the largest residual can move the fitted rate
+  /// (the residuals are deterministic, not noise: no standard error). Not a bound on a drift the
+  /// fitted line absorbs (a settling still under way), which leaves no residual: that is why only
+  /// the hold's second half is fitted. Infinite when too few half cycles.
   double rate_error = 0.0;
 };
 

@@ -411,8 +411,19 @@ void bind_critical_speeds(py::module_& m) {
   m.def(
       "study_critical_speeds",
       [](const Scene& scene, const Vehicle* vehicle) {  // a pointer: the vehicle is not copied
+        if (vehicle) {
+          py::gil_scoped_release release;
+          return study_critical_speeds(scene, *vehicle);
+        }
+        std::vector<std::string> warnings;
+        Vehicle own;
+        {
+          py::gil_scoped_release release;
+          own = load_vehicle(scene.vehicle_file, &warnings);
+        }
+        warn_input(warnings);  // as load_vehicle's binding does: InputWarning, with the GIL held
         py::gil_scoped_release release;
-        return vehicle ? study_critical_speeds(scene, *vehicle) : study_critical_speeds(scene, load_vehicle(scene.vehicle_file));
+        return study_critical_speeds(scene, own);
       },
       py::arg("scene"), py::arg("vehicle") = py::none(),
       "The critical-speed study of a scene (its own vehicle unless one is given), as `railmodal critical-speed`.");

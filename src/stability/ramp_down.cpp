@@ -242,7 +242,10 @@ bool collapsing_at_end(const std::vector<LimitCyclePoint>& curve) {
 // the worst case over their envelope instead: the slope is linear in the data,
 // s = Σ d_k l_k / Σ d_k² (d_k = k − k̄), so a wobble w_k with |w_k| ≤ R, R the largest |residual|,
 // moves it by at most R·Σ|d_k| / Σd_k² (≈ 3R/n over n half cycles), whatever the wobble's
-// pattern. Needs at least 4 half cycles; a rate of 0 with an infinite bound otherwise.
+// pattern. R is measured after the fit, so a part of the wobble that correlates with k (a slow
+// settling) is absorbed into the slope and not seen: the bound holds for the sampling pattern,
+// not for a settling, which is why only the second half is fitted (review of 2026-11-28).
+// Needs at least 4 half cycles; a rate of 0 with an infinite bound otherwise.
 struct HoldRate {
   double per_period = 0.0;
   double bound = std::numeric_limits<double>::infinity();
