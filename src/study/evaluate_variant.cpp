@@ -294,8 +294,6 @@ void ride_summary(const Vehicle& vehicle, const Scene& scene, bool rms_only, rid
     for (const RideComfortAtPoint& c : at.comfort) r->max_nmv = std::max(r->max_nmv.value_or(c.nmv_estimate), c.nmv_estimate);
 }
 
-// The modes and statics of a variant whose scene has no periodic source (a ride scene): no
-// critical-speed study to take them from.
 // A divergent mode makes the variant a failure naming it (the critical-speed study refuses such a
 // vehicle; a study that asks for no critical speeds must not rank its "period" instead).
 bool name_unstable_mode(const ModalResult& modes, VariantResult* r) {
@@ -309,6 +307,8 @@ bool name_unstable_mode(const ModalResult& modes, VariantResult* r) {
   return false;
 }
 
+// The modes and statics of a variant with no critical-speed study to take them from (its
+// ranking reads no critical speed, or a ride scene has no periodic source).
 void summarise_without_sources(const StudyVariant& variant, VariantResult* r) {
   const LinearSystem system = assemble(variant.vehicle, variant.scene.dofs);
   const ModalResult modes = solve_modes(system);
@@ -427,9 +427,13 @@ struct GiveBackRead {
 // places are allocations), and what follows reads them there. With a `workspace` the worker's
 // VariantAssembly assembles it into the workspace's systems: the same matrices, bit for bit,
 // from the base it keeps.
-VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned, int index, const DeflectionRule& rule,
-                               const std::optional<HuntingOptions>& hunting, bool ride_rms_only, const VariantWork& work,
-                               const study::ModeNamesRead& names, study::Workspace* workspace) {
+VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned, int index,
+                               const study::VariantSettings& settings, study::Workspace* workspace) {
+  const DeflectionRule& rule = settings.rule;
+  const std::optional<HuntingOptions>& hunting = settings.hunting;
+  const bool ride_rms_only = settings.ride_rms_only;
+  const VariantWork& work = settings.work;
+  const study::ModeNamesRead& names = settings.names;
   VariantResult r;
   r.index = index;
   r.name = variant.name;
@@ -530,19 +534,18 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
                                const std::optional<HuntingOptions>& hunting, bool ride_rms_only,
                                const VariantWork& work) {
-  return evaluate_in_full(variant, nullptr, index, rule, hunting, ride_rms_only, work, study::ModeNamesRead{}, nullptr);
+  // Every mode named (ModeNamesRead's default), as the public result promises.
+  return evaluate_in_full(variant, nullptr, index, study::VariantSettings{rule, hunting, ride_rms_only, work, {}}, nullptr);
 }
 
 VariantResult study::evaluate_in_workspace(const StudyVariant& variant, int index, const VariantSettings& settings,
                                            Workspace* workspace) {
-  return evaluate_in_full(variant, nullptr, index, settings.rule, settings.hunting, settings.ride_rms_only, settings.work,
-                          settings.names, workspace);
+  return evaluate_in_full(variant, nullptr, index, settings, workspace);
 }
 
 VariantResult study::evaluate_owned_variant(StudyVariant&& variant, int index, const VariantSettings& settings,
                                             Workspace* workspace) {
-  return evaluate_in_full(variant, &variant, index, settings.rule, settings.hunting, settings.ride_rms_only, settings.work,
-                          settings.names, workspace);
+  return evaluate_in_full(variant, &variant, index, settings, workspace);
 }
 
 }  // namespace railmodal
