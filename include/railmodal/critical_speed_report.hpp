@@ -26,7 +26,8 @@ namespace railmodal {
 /// writes the notes (markdown and html "Note: …", csv "# note: …" lines, json "notes", absent
 /// when there is none): what the modes leave out (ModalResult::notes) and, for a scene with a
 /// kinematic-hunting source, that its critical speeds are resonances to a kinematic input and
-/// that the stability critical speed (the onset of hunting) is `railmodal stability`'s.
+/// that the stability critical speed (the onset of hunting) is `railmodal stability`'s; for a
+/// scene with random track irregularity too, that `ride` takes it (it has no critical speeds).
 void write_critical_speed_report(std::ostream& out, const CriticalSpeedStudy& study, OutputFormat format,
                                  const Provenance& provenance = {});
 

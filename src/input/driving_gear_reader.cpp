@@ -97,8 +97,25 @@ GearCylinder read_cylinder(TableReader& t, const std::map<std::string, int>& axl
   return c;
 }
 
+// A scene that drives its vehicle by a gear names the gear's own file in a source's `gear` key:
+// handed to `balance`, it would only be "missing driving_gear" (user audit 2026-11-27c, F10).
+void refuse_a_scene(const toml::value& document, const TableReader& root) {
+  if (root.has("driving_gear") || !document.contains("scene")) return;
+  std::string named;
+  if (document.contains("source") && document.at("source").is_array())
+    for (const toml::value& source : document.at("source").as_array())
+      if (source.is_table() && source.contains("gear") && source.at("gear").is_string()) {
+        named = source.at("gear").as_string();
+        break;
+      }
+  root.fail("driving_gear", "this is a scene file, not a driving gear's: give the gear file" +
+                                (named.empty() ? std::string(" (a [driving_gear] table)")
+                                               : " its driving_gear source names, gear = \"" + named + "\" (relative to the scene)"));
+}
+
 DrivingGear read_driving_gear(const toml::value& document, const std::string& path, std::vector<bool>* positioned) {
   TableReader root(document, path, "");
+  refuse_a_scene(document, root);
   TableReader head = root.table("driving_gear");
   DrivingGear g;
   g.source = path;

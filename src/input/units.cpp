@@ -49,6 +49,7 @@ const std::map<std::string, UnitDefinition>& unit_table() {
       {"mrad", {1.0e-3, dim(0, 0, 0, 1)}},
       {"deg", {kPi / 180.0, dim(0, 0, 0, 1)}},
       {"°", {kPi / 180.0, dim(0, 0, 0, 1)}},
+      {"%", {0.01, dim(0, 0, 0)}},  // a share: "40 %" is 0.4, as `balance --fraction 40%` reads it
   };
   return table;
 }
@@ -74,12 +75,15 @@ std::vector<Factor> parse_unit_expression(const std::string& text) {
     if (is_space(text, i) || text[i] == '*' || text[i] == '.') { ++i; continue; }
     if (text.compare(i, middle_dot.size(), middle_dot) == 0) { i += middle_dot.size(); continue; }
     if (text[i] == '/') { sign = -1; ++i; continue; }
-    // A symbol: letters, or the degree sign.
+    // A symbol: letters, the degree sign or the percent sign.
     std::string symbol;
     const std::string degree = "\xC2\xB0";
     if (text.compare(i, degree.size(), degree) == 0) {
       symbol = "°";
       i += degree.size();
+    } else if (text[i] == '%') {
+      symbol = "%";
+      ++i;
     } else {
       while (i < text.size() && std::isalpha(static_cast<unsigned char>(text[i]))) symbol += text[i++];
     }

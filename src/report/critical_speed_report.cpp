@@ -288,6 +288,11 @@ std::vector<std::string> report_notes(const CriticalSpeedStudy& st) {
   if (std::any_of(st.scene.sources.begin(), st.scene.sources.end(),
                   [](const auto& s) { return s->kind() == "hunting"; }))
     notes.push_back(kKinematicHuntingNote);
+  // The random track has no line spectrum, so no critical speed: said, as `ride` says which
+  // periodic sources it leaves out (user audit 2026-11-27c, F4).
+  if (st.scene.irregularity)
+    notes.push_back("the scene's random track irregularity has no critical speeds (a broad spectrum, not a line): "
+                    "railmodal ride takes it");
   return notes;
 }
 
@@ -506,22 +511,23 @@ std::string output_columns(const CriticalSpeedStudy& st) {
 }
 
 void write_csv(std::ostream& out, const CriticalSpeedStudy& st) {
-  // The amplitudes are of each row's output: m, or rad for a roll, pitch or yaw.
+  // The amplitudes are of each row's output, m for a translation and rad for a roll, pitch or
+  // yaw: the row's unit is in its output_unit column, which the three headings name.
   using report::csv_heading;
   report::CsvWriter csv(out);
   for (const std::string& note : report_notes(st)) csv.line("# note: " + note);  // as `modes` writes them
   csv.line(csv_heading("speed", "km/h") + ",source,source_index,harmonic,mode,mode_name," +
-           csv_heading("frequency", "Hz") + ",output," + csv_heading("amplitude", "m or rad") + ",unbounded," +
-           csv_heading("growth_per_half_period", "m or rad") + "," +
-           csv_heading("friction_decrement_per_half_period", "m or rad") + ",friction_stops,friction_threshold_scale" +
-           output_columns(st));
+           csv_heading("frequency", "Hz") + ",output,output_unit," + csv_heading("amplitude", "output_unit") +
+           ",unbounded," + csv_heading("growth_per_half_period", "output_unit") + "," +
+           csv_heading("friction_decrement_per_half_period", "output_unit") +
+           ",friction_stops,friction_threshold_scale" + output_columns(st));
   // An unbounded amplitude is a blank field.
   const auto amplitude = [&csv](double value, bool unbounded) -> report::CsvWriter& {
     return unbounded ? csv.blank() : csv.field(value);
   };
   for (const auto& r : st.critical_speeds) {
     csv.field(r.speed * kKmh).field(r.source_kind).field(r.source + 1).field(r.harmonic).field(r.mode);
-    csv.field(r.mode_name).field(r.frequency_hz).field(r.output);
+    csv.field(r.mode_name).field(r.frequency_hz).field(r.output).field(report::displacement_unit(r.output));
     amplitude(r.amplitude, r.unbounded).field(r.unbounded).field(r.growth_per_half_period);
     csv.field(r.friction_decrement_per_half_period).field(r.friction_stops).field(r.friction_threshold_scale);
     // Each output: its amplitude (blank where unbounded) and its growth per half period.

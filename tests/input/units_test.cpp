@@ -33,6 +33,11 @@ TEST(Units, SiAndTechnicalUnits) {
   expect_si("20 kN*s/m", Quantity::damping, 2.0e4);
   expect_si("940 kN*m/rad", Quantity::rotational_stiffness, 9.4e5);
   expect_si("8.9e5", Quantity::stiffness, 8.9e5);  // a bare number is SI
+  // A share as a percentage, as `balance --fraction 40%` takes it (user audit 2026-11-27c, F5).
+  expect_si("40 %", Quantity::dimensionless, 0.4);
+  expect_si("40%", Quantity::dimensionless, 0.4);
+  expect_si("0.4", Quantity::dimensionless, 0.4);
+  EXPECT_THROW(parse_quantity("40 %", Quantity::length), std::invalid_argument);  // not a length
 }
 
 // The book writes kg and t for kilogram-force and tonne-force in stiffness and flexibility.

@@ -92,7 +92,9 @@ std::function<int()> add_balance_command(CLI::App& app) {
                   "File (TOML) with a [driving_gear] table, e.g. data/locomotives/su.toml")
       ->required();
   cmd->add_option("--speed", options->speed,
-                  "Speed to balance for, with its unit (\"100 km/h\", \"20 m/s\"); default: the file's design_speed");
+                  "Speed to size and judge the balance at, with its unit (\"100 km/h\", \"20 m/s\"): with --alpha the "
+                  "overbalance is re-sized to reach alpha there; with --fraction the same counterweights are evaluated "
+                  "there; default: the file's design_speed");
   cmd->add_option("--alpha", options->alpha,
                   "Overbalance the coupled wheels up to this overload coefficient (Zhdanov eq. (89a)), as 0.3 or 30%");
   cmd->add_option("--fraction", options->fraction,
