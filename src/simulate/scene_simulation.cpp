@@ -308,24 +308,29 @@ std::string why_no_run_could_check(const Scene& scene, const FftCheck& check, co
 // hann_decay_gain, the window being near zero where the transient still is); when that is under
 // 1/kForcedLineShare of what the spectrum holds at its frequency (the forced lines' leakage,
 // other modes) the spectrum there is another's, and a peak read there would pass or fail the mode
-// on someone else's line. Only where the decay is the cause: were |φ_d|·A itself under that share,
-// the mode is weak on this DOF, not decayed, and is checked as before.
+// on someone else's line; under find_peaks' threshold (3 % of the largest line) no peak is sought
+// and the mode would fail for want of one. Only where the decay is the cause: were |φ_d|·A itself
+// under that floor, the mode is weak on this DOF, not decayed, and is checked as before.
 std::string why_decayed(const FftCheck& check, const simulate::FreeMode& free, double shape_at_dof,
                         const Spectrum& spectrum, double record_s) {
   if (!check.excited || !(free.decay_rate > 0.0) || !(free.initial_amplitude > 0.0)) return "";
   const Eigen::Index bin = std::lround(free.damped_hz / spectrum.bin_spacing);
   if (bin >= spectrum.amplitude.size()) return "";
-  const double there = spectrum.amplitude(bin);
+  // What a line must reach to be read as the mode's: a tenth of what the spectrum holds at its
+  // frequency, and the share of the largest line above which find_peaks looks at all.
+  const double largest = spectrum.amplitude.tail(spectrum.amplitude.size() - 1).maxCoeff();
+  const double sought = PeakOptions{}.threshold * largest;
+  const double floor = std::max(spectrum.amplitude(bin) / kForcedLineShare, sought);
   const double steady = std::abs(shape_at_dof) * free.initial_amplitude;  // its line, were it not to decay
   const double line = steady * simulate::hann_decay_gain(free.decay_rate, record_s);
-  if (kForcedLineShare * line >= there || kForcedLineShare * steady < there) return "";
-  char text[480];
+  if (line >= floor || steady < floor) return "";
+  char text[520];
   std::snprintf(text, sizeof text,
                 "its free response (ζ = %.3f) falls as e^{−%.3g t}, to 1 %% of its start by %.3g s; in the Hann "
-                "spectrum of the %.3g s record its line would be %.1e of the amplitude there (the forced response "
-                "and other modes): a free release (no [[source]], [[simulation.initial]] displacing the mode) or a "
-                "run of about %.3g s (3/σ) checks it",
-                free.damping_ratio, free.decay_rate, std::log(100.0) / free.decay_rate, record_s, line / there,
+                "spectrum of the %.3g s record its line would be %.1e of the largest (%s): a free release (no "
+                "[[source]], [[simulation.initial]] displacing the mode) or a run of about %.3g s (3/σ) checks it",
+                free.damping_ratio, free.decay_rate, std::log(100.0) / free.decay_rate, record_s, line / largest,
+                floor == sought ? "peaks are sought above 3 % of it" : "under a tenth of the spectrum at its frequency",
                 3.0 / free.decay_rate);
   return text;
 }
