@@ -94,16 +94,26 @@ struct OutputSpectra {
 };
 OutputSpectra output_spectra(const TimeHistory& history, const Scene& scene);
 
-/// One mode against the spectrum of its most energetic DOF.
+/// One mode against the spectrum of the DOF where it dominates.
 struct FftCheck {
   int mode = 0;
   std::string mode_name;
+  /// The DOF the mode is checked on: where it dominates the record, the largest √M_dd·|φ_d|
+  /// times the share of that DOF's motion the mode's coordinate can make (min(1,
+  /// |φ_d|·max|η|/max|x_d|)), among the DOFs that move (√M_dd·max|x_d| above kExcitedRatio of
+  /// the most moving one's): in a forced scene a DOF that the forcing drives through another
+  /// mode is not where this one shows.
   std::string dof;
   double modal_hz = 0.0;              ///< undamped natural frequency
+  /// The frequency the peak is compared with: where the mode's free response oscillates,
+  /// |Im λ|/2π of its damped mode (solve_damped_modes) when the scene builds damping (its named
+  /// dampers, or the longitudinal ones that always stay), else modal_hz.
+  double damped_hz = 0.0;
+  double damping_ratio = 0.0;         ///< ζ of that damped mode (0 without damping)
   std::optional<double> peak_hz;      ///< the spectral peak nearest to it, if one is within 3 resolutions
-  double rel_error = 0.0;             ///< (peak − modal)/modal
+  double rel_error = 0.0;             ///< (peak − damped)/damped
   double resolution_hz = 0.0;         ///< the peak's half-width at half amplitude (≥ the window's)
-  bool within_resolution = false;     ///< |peak − modal| ≤ resolution
+  bool within_resolution = false;     ///< |peak − damped| ≤ resolution
   /// How much the record holds of this mode: the largest |φᵀMx| over the record (the modal
   /// coordinate, one scale for every mode) over that of the most excited mode.
   double modal_amplitude_ratio = 0.0;
@@ -126,8 +136,15 @@ struct FftCheck {
   /// tolerance of the mode (a peak there is the forcing's, whatever the mode) or within its
   /// resolution of the peak found with a linear forced response of at least a tenth of that
   /// peak's amplitude (the peak is the forcing's line), or a release that comes to rest (a
-  /// longer run adds only rest).
-  enum class Outcome { passed, failed, not_excited, not_resolved, no_line, not_applicable };
+  /// longer run adds only rest). The forcing-line rules hold for linear scenes too (their
+  /// forced response is exact). `decayed` (linear scenes): the mode's free response has died
+  /// away where the Hann window weighs the record, so its line is not in the spectrum: the line
+  /// it would make there, |φ_d|·A·g (A its free amplitude at t = 0 with the forced steady state
+  /// taken out, g = the Hann gain of its decay e^{−σt} over the record), is under
+  /// 1/kForcedLineShare of the spectrum's amplitude at its frequency (the forced response, other
+  /// modes), and would not be without the decay (`why_decayed` says by how much and what to
+  /// change). A peak read there would be another line's: not checked, never passed or failed.
+  enum class Outcome { passed, failed, not_excited, not_resolved, no_line, not_applicable, decayed };
   Outcome outcome = Outcome::not_excited;
   bool checked() const { return outcome == Outcome::passed || outcome == Outcome::failed; }
   /// not_resolved: the record length that would resolve the tolerance, in s (the line's width
@@ -135,6 +152,12 @@ struct FftCheck {
   double needed_duration_s = 0.0;
   /// not_applicable: why no run of this scene could check the mode, in words; else empty.
   std::string why_not_applicable;
+  /// decayed: its decay, what is left of its line and what would check it, in words; else empty.
+  std::string why_decayed;
+  /// A line is another's (the forcing's, another mode's) when this mode could make less than
+  /// 1/kForcedLineShare of the spectrum there; a forcing line takes the peak found when its
+  /// linear forced response makes at least that share of it (scene_simulation.cpp says why ten).
+  static constexpr double kForcedLineShare = 10.0;
   /// Friction and kinks are not expected to keep a line at the linear frequency: leaf friction
   /// R = φ·load moves the half periods to π/k₁, π/k₂ with k² = (1 ± φ)k₀² (springs digest
   /// (51), (63)), √(1 ± φ) − 1 ≤ 4.3 % for the book's φ ≤ 0.085; 5 % holds that and no more,
@@ -142,7 +165,7 @@ struct FftCheck {
   static constexpr double kNonlinearTolerance = 0.05;
 };
 /// The words the fft-check reports write: "passed", "failed", "not excited", "not resolved",
-/// "no line", "not applicable".
+/// "no line", "not applicable", "decayed".
 const char* to_string(FftCheck::Outcome outcome);
 /// Inverse of to_string; std::nullopt for an unknown word.
 std::optional<FftCheck::Outcome> fft_check_outcome_from_string(const std::string& word);

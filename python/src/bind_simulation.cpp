@@ -171,7 +171,8 @@ py::list fft_check_records(const std::vector<FftCheck>& checks) {
   py::list out;
   for (const FftCheck& c : checks)
     out.append(py::dict(py::arg("mode") = c.mode, py::arg("mode_name") = c.mode_name, py::arg("dof") = c.dof,
-                        py::arg("modal_hz") = c.modal_hz, py::arg("peak_hz") = optional_value(c.peak_hz),
+                        py::arg("modal_hz") = c.modal_hz, py::arg("damped_hz") = c.damped_hz,
+                        py::arg("damping_ratio") = c.damping_ratio, py::arg("peak_hz") = optional_value(c.peak_hz),
                         py::arg("rel_error") = c.rel_error, py::arg("resolution_hz") = c.resolution_hz,
                         py::arg("within_resolution") = c.within_resolution,
                         py::arg("modal_amplitude_ratio") = c.modal_amplitude_ratio, py::arg("excited") = c.excited,
@@ -181,7 +182,11 @@ py::list fft_check_records(const std::vector<FftCheck>& checks) {
                         // The JSON's why_not_applicable: the words, where the outcome is "not applicable".
                         py::arg("why_not_applicable") = c.outcome == FftCheck::Outcome::not_applicable
                                                             ? py::object(py::str(c.why_not_applicable))
-                                                            : py::object(py::none())));
+                                                            : py::object(py::none()),
+                        // The JSON's why_decayed, where the outcome is "decayed".
+                        py::arg("why_decayed") = c.outcome == FftCheck::Outcome::decayed
+                                                     ? py::object(py::str(c.why_decayed))
+                                                     : py::object(py::none())));
   return out;
 }
 

@@ -97,7 +97,7 @@ report::Chart spectrum_chart(const FftCheckResult& r, size_t k) {
   c.series.push_back(std::move(line));
   c.x_min = 0.0;
   c.x_max = top;
-  for (const auto& check : r.checks) c.lines.push_back({std::to_string(check.mode), check.modal_hz, true, ""});
+  for (const auto& check : r.checks) c.lines.push_back({std::to_string(check.mode), check.damped_hz, true, ""});
   return c;
 }
 
@@ -133,10 +133,12 @@ std::string verdict_text(const FftCheck& c, bool nonlinear) {
       return "not checked: no line within 3 resolutions (friction, a kink or the forcing moved it: see the half "
              "periods)";
     case Outcome::not_resolved:
-      return "not checked: the record resolves only " + percent(c.resolution_hz / c.modal_hz) + " of f (needs ≤ " +
+      return "not checked: the record resolves only " + percent(c.resolution_hz / c.damped_hz) + " of f (needs ≤ " +
              percent(c.tolerance) + ": " + needed_run(c.needed_duration_s) + ")";
     case Outcome::not_applicable:
       return "not applicable: " + c.why_not_applicable;
+    case Outcome::decayed:
+      return "not checked: decayed: " + c.why_decayed;
     case Outcome::passed:
       return nonlinear ? "passed (within " + percent(c.tolerance) + ")" : "passed";
     case Outcome::failed:
@@ -147,10 +149,25 @@ std::string verdict_text(const FftCheck& c, bool nonlinear) {
   return "";
 }
 
+// Whether the scene builds damping: its checks compare the damped frequencies.
+bool damped(const FftCheckResult& r) {
+  return std::any_of(r.checks.begin(), r.checks.end(), [](const FftCheck& c) { return c.damping_ratio > 0.0; });
+}
+
 // What a nonlinear scene's checks compare, and the verdict of all of them.
 std::string compared_text(const FftCheckResult& r) {
-  if (!r.nonlinear)
-    return "compared: the spectral peak of each excited mode with its modal frequency, within the line's width";
+  if (!r.nonlinear) {
+    const bool others = std::any_of(r.checks.begin(), r.checks.end(), [](const FftCheck& c) {
+      return c.outcome == FftCheck::Outcome::not_applicable || c.outcome == FftCheck::Outcome::decayed;
+    });
+    return std::string("compared: the spectral peak of each excited mode with its ") +
+           (damped(r) ? "damped frequency (where its free response oscillates)" : "modal frequency") +
+           ", within the line's width" +
+           (others ? "; not where the peak is a forcing's line (its linear forced response, exact here, makes at "
+                     "least a tenth of it) or the mode's free response has decayed under a tenth of the spectrum "
+                     "there"
+                   : "");
+  }
   return "compared: the spectral peak of each excited mode with its LINEAR modal frequency, within " +
          percent(FftCheck::kNonlinearTolerance) +
          " (friction moves the lines by √(1 ± φ), ≤ 4.3 % for φ ≤ 0.085), where the record resolves " +
@@ -170,6 +187,14 @@ std::string first_not_applicable(const FftCheckResult& r) {
   return "";
 }
 
+// The first decayed mode's name and reason (what would check it holds for the others alike).
+std::string first_decayed(const FftCheckResult& r) {
+  for (const auto& c : r.checks)
+    if (c.outcome == FftCheck::Outcome::decayed) return c.mode_name + ": " + c.why_decayed;
+  return "";
+}
+
+
 // The half-period check of a free friction decay, in words.
 std::string half_period_text(const FftCheckResult& r) {
   const FftCheckResult::HalfPeriodCheck& h = *r.half_period_check;
@@ -181,12 +206,13 @@ std::string half_period_text(const FftCheckResult& r) {
 // Why the checks not made were not: "2 not resolved: a run of at least 31 s; 1 no line".
 std::string not_checked_reasons(const FftCheckResult& r) {
   using Outcome = FftCheck::Outcome;
-  int not_excited = 0, not_resolved = 0, no_line = 0, not_applicable = 0;
+  int not_excited = 0, not_resolved = 0, no_line = 0, not_applicable = 0, decayed = 0;
   double needed = 0.0;
   for (const auto& c : r.checks) {
     not_excited += c.outcome == Outcome::not_excited;
     no_line += c.outcome == Outcome::no_line;
     not_applicable += c.outcome == Outcome::not_applicable;
+    decayed += c.outcome == Outcome::decayed;
     if (c.outcome == Outcome::not_resolved) ++not_resolved, needed = std::max(needed, c.needed_duration_s);
   }
   std::string text;
@@ -194,6 +220,7 @@ std::string not_checked_reasons(const FftCheckResult& r) {
   if (not_resolved) add(std::to_string(not_resolved) + " not resolved: " + needed_run(needed));
   if (no_line) add(std::to_string(no_line) + " no line");
   if (not_applicable) add(std::to_string(not_applicable) + " not applicable: " + first_not_applicable(r));
+  if (decayed) add(std::to_string(decayed) + " decayed, " + first_decayed(r));
   if (not_excited) add(std::to_string(not_excited) + " not excited");
   return text;
 }
@@ -226,12 +253,13 @@ std::string verdict_word(const FftCheckResult& r) {
 }
 
 void checks_table(std::ostream& out, const FftCheckResult& r) {
-  out << "<table><tr><th>#</th><th>mode</th><th>dof</th><th>modal [Hz]</th><th>peak [Hz]</th><th>rel. error</th>"
+  out << "<table><tr><th>#</th><th>mode</th><th>dof</th><th>" << (damped(r) ? "damped" : "modal")
+      << " [Hz]</th><th>peak [Hz]</th><th>rel. error</th>"
          "<th>resolution [Hz]</th><th>check</th></tr>\n";
   for (const auto& c : r.checks) {
     const bool failed = c.outcome == FftCheck::Outcome::failed;
     out << "<tr><td class=n>" << c.mode << "</td><td>" << html_escape(c.mode_name) << "</td><td>" << html_escape(c.dof)
-        << "</td><td class=n>" << fixed(c.modal_hz, 4) << "</td>";
+        << "</td><td class=n>" << fixed(c.damped_hz, 4) << "</td>";
     if (c.peak_hz) {
       std::ostringstream rel;
       rel << std::scientific << std::setprecision(2) << c.rel_error;
@@ -271,13 +299,15 @@ void swings_table(std::ostream& out, const FftCheckResult& r) {
 void write_json_check(report::JsonWriter& j, const FftCheck& c) {
   const std::optional<double> none;
   j.begin_object();
-  j.member("checked", c.checked()).member("dof", c.dof).member("excited", c.excited);
+  j.member("checked", c.checked()).member("damped_hz", c.damped_hz).member("damping_ratio", c.damping_ratio);
+  j.member("dof", c.dof).member("excited", c.excited);
   j.member("modal_amplitude_ratio", c.modal_amplitude_ratio).member("modal_hz", c.modal_hz);
   j.member("mode", c.mode).member("mode_name", c.mode_name).member("outcome", to_string(c.outcome));
   j.member("passed", c.outcome == FftCheck::Outcome::passed);
   j.member("peak_hz", c.peak_hz ? std::optional<double>(*c.peak_hz) : none);
   j.member("rel_error", c.peak_hz ? std::optional<double>(c.rel_error) : none);
   j.member("resolution_hz", c.resolution_hz).member("tolerance", c.tolerance);
+  if (c.outcome == FftCheck::Outcome::decayed) j.member("why_decayed", c.why_decayed);
   if (c.outcome == FftCheck::Outcome::not_applicable) j.member("why_not_applicable", c.why_not_applicable);
   j.member("within_resolution", c.within_resolution);
   j.end_object();
@@ -322,11 +352,13 @@ void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene, 
 void write_csv(std::ostream& out, const FftCheckResult& r) {
   using report::csv_heading;
   using report::number_text;
-  out << "mode,mode_name,dof," << csv_heading("modal", "Hz") << "," << csv_heading("peak", "Hz") << ",rel_error,"
+  out << "mode,mode_name,dof," << csv_heading("modal", "Hz") << "," << csv_heading("damped", "Hz")
+      << ",damping_ratio," << csv_heading("peak", "Hz") << ",rel_error,"
       << csv_heading("resolution", "Hz")
       << ",within_resolution,excited,modal_amplitude_ratio,tolerance,outcome,checked,passed,verdict\n";
   for (const auto& c : r.checks)
     out << c.mode << ",\"" << c.mode_name << "\"," << c.dof << "," << number_text(c.modal_hz) << ","
+        << number_text(c.damped_hz) << "," << number_text(c.damping_ratio) << ","
         << (c.peak_hz ? number_text(*c.peak_hz) : "") << "," << (c.peak_hz ? number_text(c.rel_error) : "") << ","
         << number_text(c.resolution_hz) << "," << (c.within_resolution ? "true" : "false") << ","
         << (c.excited ? "true" : "false") << "," << number_text(c.modal_amplitude_ratio) << ","
@@ -367,11 +399,11 @@ void write_table(std::ostream& out, const FftCheckResult& r, const Scene& scene,
   for (const std::string& part : unsimulated_parts(scene, vehicle)) out << "warning: " << part << "\n";
   out << "\n";
   out << std::left << std::setw(5) << "#" << std::setw(32) << "mode" << std::setw(16) << "dof" << std::right
-      << std::setw(11) << "modal [Hz]" << std::setw(11) << "peak [Hz]" << std::setw(12) << "rel. error" << std::setw(13)
-      << "resol. [Hz]" << "  check\n";
+      << std::setw(11) << (damped(r) ? "damped [Hz]" : "modal [Hz]") << std::setw(11) << "peak [Hz]" << std::setw(12)
+      << "rel. error" << std::setw(13) << "resol. [Hz]" << "  check\n";
   for (const auto& c : r.checks) {
     out << std::left << std::setw(5) << c.mode << std::setw(32) << c.mode_name << std::setw(16) << c.dof << std::right
-        << std::fixed << std::setprecision(4) << std::setw(11) << c.modal_hz;
+        << std::fixed << std::setprecision(4) << std::setw(11) << c.damped_hz;
     if (c.peak_hz)
       out << std::setw(11) << *c.peak_hz << std::scientific << std::setprecision(2) << std::setw(12) << c.rel_error
           << std::fixed << std::setprecision(4) << std::setw(13) << c.resolution_hz << "  "

@@ -9,7 +9,9 @@
 
 #include "model/scene_fit.hpp"
 #include "model/spring_stages.hpp"
+#include "railmodal/damped_modal.hpp"
 #include "railmodal/response.hpp"
+#include "simulate/free_response.hpp"
 #include "simulate/history_summary.hpp"
 #include "simulate/record_memory.hpp"
 #include "simulate/record_spectrum.hpp"
@@ -27,6 +29,7 @@ const char* to_string(FftCheck::Outcome outcome) {
     case Outcome::not_resolved: return "not resolved";
     case Outcome::no_line: return "no line";
     case Outcome::not_applicable: return "not applicable";
+    case Outcome::decayed: return "decayed";
   }
   return "?";
 }
@@ -34,7 +37,7 @@ const char* to_string(FftCheck::Outcome outcome) {
 std::optional<FftCheck::Outcome> fft_check_outcome_from_string(const std::string& word) {
   using Outcome = FftCheck::Outcome;
   for (Outcome o : {Outcome::passed, Outcome::failed, Outcome::not_excited, Outcome::not_resolved, Outcome::no_line,
-                    Outcome::not_applicable})
+                    Outcome::not_applicable, Outcome::decayed})
     if (word == to_string(o)) return o;
   return std::nullopt;
 }
@@ -57,6 +60,32 @@ int showing_dof(const Mode& mode, const Eigen::VectorXd& dof_energy) {
     if (mode.kinetic_energy_share(d) > mode.kinetic_energy_share(most_energetic)) most_energetic = d;
   }
   return mode.kinetic_energy_share(best) * dof_energy(best) > 0.0 ? best : most_energetic;
+}
+
+// The DOF where a mode dominates the record (FftCheck::dof): the largest √M_dd·|φ_d| times
+// min(1, |φ_d|·max|η|/max|x_d|), the share of the DOF's motion that the mode's coordinate can
+// make, among the DOFs that move (√M_dd·max|x_d| at least FftCheck::kExcitedRatio of the most
+// moving one's: a DOF the release leaves at rest holds round-off, where a repeated pair's basis
+// may put a mode). Without the share, a DOF the forcing drives through another mode would win
+// on the mode's shape alone and show that mode's lines, not this one's. √M_dd puts m and rad on
+// one scale (the kinetic-energy scale of the mass-normalised shape). The most energetic DOF when
+// nothing moves.
+int dominant_dof(const Mode& mode, double modal_amplitude, const Eigen::VectorXd& mass_diagonal,
+                 const Eigen::VectorXd& motion) {
+  const Eigen::VectorXd scaled = mass_diagonal.cwiseMax(0.0).cwiseSqrt().cwiseProduct(motion);
+  const double floor = FftCheck::kExcitedRatio * scaled.maxCoeff();
+  int best = -1;
+  double best_score = 0.0;
+  for (int d = 0; d < motion.size(); ++d) {
+    if (!(scaled(d) > floor)) continue;
+    const double share = std::min(1.0, std::abs(mode.shape(d)) * modal_amplitude / motion(d));
+    const double score = std::sqrt(mass_diagonal(d)) * std::abs(mode.shape(d)) * share;
+    if (score > best_score) best = d, best_score = score;
+  }
+  if (best >= 0) return best;
+  int most_energetic = 0;
+  mode.kinetic_energy_share.maxCoeff(&most_energetic);
+  return most_energetic;
 }
 
 // The analysis, the method and the counts of the checks (their stages are timed already).
@@ -119,7 +148,7 @@ ModalAmplitudes modal_amplitudes(const LinearSystem& system, const ModalResult& 
 double match_peak(const Spectrum& spectrum, FftCheck* check) {
   check->resolution_hz = spectrum.resolution;
   if (!check->excited) return 0.0;
-  const double f = check->modal_hz;
+  const double f = check->damped_hz;
   const SpectralPeak* nearest = nullptr;
   const auto peaks = find_peaks(spectrum);
   for (const auto& p : peaks)
@@ -136,19 +165,21 @@ double match_peak(const Spectrum& spectrum, FftCheck* check) {
 
 // Holds the check to its tolerance: a linear scene's line within its own width (no line is a
 // failure); a nonlinear scene's within FftCheck::kNonlinearTolerance of the mode, checked only
-// where the record (of `record_s` seconds) resolves that finely and shows a line at all.
+// where the record (of `record_s` seconds) resolves that finely and shows a line at all. The
+// mode's frequency is the damped one, where its free response oscillates.
 void judge(bool nonlinear, double record_s, FftCheck* check) {
   using Outcome = FftCheck::Outcome;
-  check->tolerance = nonlinear ? FftCheck::kNonlinearTolerance : check->resolution_hz / check->modal_hz;
+  const double f = check->damped_hz;
+  check->tolerance = nonlinear ? FftCheck::kNonlinearTolerance : check->resolution_hz / f;
   if (!check->excited) {
     check->outcome = Outcome::not_excited;
   } else if (!nonlinear) {
     check->outcome = check->within_resolution ? Outcome::passed : Outcome::failed;
   } else if (!check->peak_hz) {
     check->outcome = Outcome::no_line;
-  } else if (check->resolution_hz > check->tolerance * check->modal_hz) {
+  } else if (check->resolution_hz > check->tolerance * f) {
     check->outcome = Outcome::not_resolved;
-    check->needed_duration_s = record_s * check->resolution_hz / (check->tolerance * check->modal_hz);
+    check->needed_duration_s = record_s * check->resolution_hz / (check->tolerance * f);
   } else {
     check->outcome = std::abs(check->rel_error) <= check->tolerance ? Outcome::passed : Outcome::failed;
   }
@@ -168,7 +199,10 @@ std::string hz_text(double hz) {
 // response is 16.6 mm (4.9×). Ten is twice that, and a weak harmonic lies orders below (0.01 mm
 // dips: 0.033 mm against the 18.5 mm release, 1.8e-3). The two-axle wagon's pitch at 75 km/h
 // reads 1.02 mrad on the joints' line where the linear response is 1.06 (1.04×): the forcing's.
-constexpr double kForcedLineShare = 10.0;
+// A linear scene's forced line is exactly its H(ω)Q: the same share there holds a margin for
+// the transient's leakage into the line and errs to "the forcing's" (not checked), never to a
+// pass on the forcing's line. FftCheck::kForcedLineShare.
+constexpr double kForcedLineShare = FftCheck::kForcedLineShare;
 
 // The peak a check found, with what tells the forcing's line from the mode's: its amplitude on
 // the check's DOF and the scene's linear system there.
@@ -195,7 +229,30 @@ double forced_line_amplitude(const FoundPeak& peak, const ExcitationSource& sour
   return std::abs(x.displacement(peak.dof));
 }
 
-// Why no run of a nonlinear scene, however long, could check `check`'s mode by its line (empty
+// "the forcing's own line (rail_joints, 2·V/λ = 4.168 Hz)".
+std::string forcing_line_name(const ExcitationSource& source, int n, double line) {
+  return "the forcing's own line (" + source.kind() + ", " + (n == 1 ? "" : std::to_string(n) + "·") +
+         "V/λ = " + hz_text(line) + ")";
+}
+
+// A constant-speed forcing's line (a harmonic n·V/λ of a source) within the check's tolerance of
+// the mode, in words; empty when there is none. A peak there is the forcing's whatever the mode
+// (the bundled scenes at a critical speed choose V so that it is), and the check would pass by
+// construction; nor can a decayed transient be told from it there.
+std::string forcing_line_at_mode(const Scene& scene, const FftCheck& check) {
+  const SimulationSpec& spec = *scene.simulation;
+  if (!(spec.speed > 0.0) || spec.final_speed > 0.0) return "";
+  for (const auto& source : scene.sources)
+    for (int n = 1; n <= source->harmonic_count(); ++n) {
+      const double line = n * spec.speed / source->wavelength();
+      if (std::abs(line - check.damped_hz) <= check.tolerance * check.damped_hz)
+        return forcing_line_name(*source, n, line) +
+               " lies within the tolerance of the mode: a peak there is the forcing's whatever the mode";
+    }
+  return "";
+}
+
+// Why no run of a scene, however long, could check `check`'s mode by its line (empty
 // when a long enough one could). Asked of a check that found a peak (passed, failed, not
 // resolved) and, for a speed ramp, of every excited mode:
 //  - a speed ramp sweeps the forcing: the response is not stationary, and its spectrum is that
@@ -213,7 +270,6 @@ double forced_line_amplitude(const FoundPeak& peak, const ExcitationSource& sour
 std::string why_no_run_could_check(const Scene& scene, const FftCheck& check, const std::optional<Swings>& swings,
                                    const FoundPeak& peak) {
   const SimulationSpec& spec = *scene.simulation;
-  const double tolerance = check.tolerance * check.modal_hz;
   if (spec.final_speed > 0.0 && !scene.sources.empty()) {
     double low = std::numeric_limits<double>::infinity(), high = 0.0;
     for (const auto& source : scene.sources) {
@@ -223,14 +279,12 @@ std::string why_no_run_could_check(const Scene& scene, const FftCheck& check, co
     return "a speed ramp: the forcing's V/λ sweeps " + hz_text(low) + " to " + hz_text(high) +
            ", so the response is not stationary and its spectrum is the sweep's, not the mode's line";
   }
+  if (const std::string at = forcing_line_at_mode(scene, check); !at.empty()) return at;
   if (spec.speed > 0.0)
     for (const auto& source : scene.sources)
       for (int n = 1; n <= source->harmonic_count(); ++n) {
         const double line = n * spec.speed / source->wavelength();
-        const std::string named = "the forcing's own line (" + source->kind() + ", " +
-                                  (n == 1 ? "" : std::to_string(n) + "·") + "V/λ = " + hz_text(line) + ")";
-        if (std::abs(line - check.modal_hz) <= tolerance)
-          return named + " lies within the tolerance of the mode: a peak there is the forcing's whatever the mode";
+        const std::string named = forcing_line_name(*source, n, line);
         // The peak found is the forcing's (within its resolution, and the linear forced response
         // there makes at least a share of its amplitude that nonlinearity cannot have made from
         // nothing), and the mode's is not there: a longer run narrows the forcing's line, it does
@@ -246,6 +300,39 @@ std::string why_no_run_could_check(const Scene& scene, const FftCheck& check, co
     return text;
   }
   return "";
+}
+
+// Why a linear scene's mode has no line of its own in the record (FftCheck::Outcome::decayed),
+// or empty. Its free response, `free` (amplitude A at t = 0, decaying as e^{−σt}), would make a
+// line of |φ_d|·A·g on the check's DOF in the Hann spectrum of a `record_s` record (g:
+// hann_decay_gain, the window being near zero where the transient still is); when that is under
+// 1/kForcedLineShare of what the spectrum holds at its frequency (the forced lines' leakage,
+// other modes) the spectrum there is another's, and a peak read there would pass or fail the mode
+// on someone else's line; under find_peaks' threshold (3 % of the largest line) no peak is sought
+// and the mode would fail for want of one. Only where the decay is the cause: were |φ_d|·A itself
+// under that floor, the mode is weak on this DOF, not decayed, and is checked as before.
+std::string why_decayed(const FftCheck& check, const simulate::FreeMode& free, double shape_at_dof,
+                        const Spectrum& spectrum, double record_s) {
+  if (!check.excited || !(free.decay_rate > 0.0) || !(free.initial_amplitude > 0.0)) return "";
+  const Eigen::Index bin = std::lround(free.damped_hz / spectrum.bin_spacing);
+  if (bin >= spectrum.amplitude.size()) return "";
+  // What a line must reach to be read as the mode's: a tenth of what the spectrum holds at its
+  // frequency, and the share of the largest line above which find_peaks looks at all.
+  const double largest = spectrum.amplitude.tail(spectrum.amplitude.size() - 1).maxCoeff();
+  const double sought = PeakOptions{}.threshold * largest;
+  const double floor = std::max(spectrum.amplitude(bin) / kForcedLineShare, sought);
+  const double steady = std::abs(shape_at_dof) * free.initial_amplitude;  // its line, were it not to decay
+  const double line = steady * simulate::hann_decay_gain(free.decay_rate, record_s);
+  if (line >= floor || steady < floor) return "";
+  char text[520];
+  std::snprintf(text, sizeof text,
+                "its free response (ζ = %.3f) falls as e^{−%.3g t}, to 1 %% of its start by %.3g s; in the Hann "
+                "spectrum of the %.3g s record its line would be %.1e of the largest (%s): a free release (no "
+                "[[source]], [[simulation.initial]] displacing the mode) or a run of about %.3g s (3/σ) checks it",
+                free.damping_ratio, free.decay_rate, std::log(100.0) / free.decay_rate, record_s, line / largest,
+                floor == sought ? "peaks are sought above 3 % of it" : "under a tenth of the spectrum at its frequency",
+                3.0 / free.decay_rate);
+  return text;
 }
 
 // A free friction decay's half periods between turning points against the linear half period
@@ -398,16 +485,34 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memo
   require_check_fits(*scene.simulation, system.size(), memory_limit);
   out.history = simulate_scene(scene, vehicle);
   clock.lap("simulate");
-  out.modes = solve_modes(system);
+  // A damped scene's free response oscillates at the damped frequencies and decays: the damped
+  // modes (their undamped solve is the scene's modes, matched by index) say where and how fast.
+  std::optional<DampedModalResult> damped;
+  if (system.damping.size() > 0 && system.damping.cwiseAbs().maxCoeff() > 0.0) {
+    damped = solve_damped_modes(system);
+    out.modes = damped->undamped;
+  } else {
+    out.modes = solve_modes(system);
+  }
   clock.lap("modes");
+  const SimulationSpec& spec = *scene.simulation;
+  const bool ramp = spec.final_speed > 0.0;
+  std::vector<const ExcitationSource*> sources;
+  if (!ramp)  // a ramp has no steady state to take out
+    for (const auto& s : scene.sources) sources.push_back(s.get());
+  const std::vector<simulate::FreeMode> free =
+      simulate::free_modes(system, out.modes, damped ? &*damped : nullptr, sources, spec.speed, spec.initial);
   const double fs = 1.0 / scene.simulation->time_step;
   const Eigen::Index n = out.history.time.size();
   SpectrumAnalyzer analyzer(n, record_spectrum_options(n));
   // Modal coordinates η = ΦᵀM x over the record: mass-normalised, so one scale for every mode
   // whatever its DOFs' units; a mode far below the most excited one holds only round-off.
   Eigen::VectorXd dof_energy(system.size());  // M_dd max|x_d|²: comparable across m and rad
-  for (int d = 0; d < system.size(); ++d)
-    dof_energy(d) = system.mass(d, d) * out.history.displacement.col(d).cwiseAbs2().maxCoeff();
+  Eigen::VectorXd motion(system.size());  // max |x_d| over the record
+  for (int d = 0; d < system.size(); ++d) {
+    motion(d) = out.history.displacement.col(d).cwiseAbs().maxCoeff();
+    dof_energy(d) = system.mass(d, d) * motion(d) * motion(d);
+  }
   const ModalAmplitudes amplitudes = modal_amplitudes(system, out.modes, out.history);
   out.nonlinear = scene_effects(scene).any();
   // Friction and kinks broaden the lines: the half periods of the most excited mode's DOF
@@ -418,11 +523,12 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memo
     out.linear_half_period_s = 0.5 / mode.frequency_hz;
   }
   clock.lap("swings");
-  const bool ramp = scene.simulation->final_speed > 0.0;
+  const double record_s = static_cast<double>(n) / fs;
+  const Eigen::VectorXd mass_diagonal = system.mass.diagonal();
   for (size_t r = 0; r < out.modes.modes.size(); ++r) {
     const Mode& mode = out.modes.modes[r];
     if (mode.kind != ModeKind::oscillatory || mode.frequency_hz > fs / 4.0) continue;
-    const int dof = showing_dof(mode, dof_energy);
+    const int dof = dominant_dof(mode, amplitudes.amplitude[r], mass_diagonal, motion);
     const std::string label = system.dofs[dof].label;
     auto at = std::find(out.spectrum_dofs.begin(), out.spectrum_dofs.end(), label);
     if (at == out.spectrum_dofs.end()) {
@@ -435,11 +541,22 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memo
     check.mode_name = mode.name;
     check.dof = label;
     check.modal_hz = mode.frequency_hz;
+    check.damped_hz = free[r].damped_hz;
+    check.damping_ratio = free[r].damping_ratio;
     check.modal_amplitude_ratio = amplitudes.most > 0.0 ? amplitudes.amplitude[r] / amplitudes.most : 0.0;
     check.excited = check.modal_amplitude_ratio >= FftCheck::kExcitedRatio;
-    const double peak_amplitude = match_peak(out.spectra[at - out.spectrum_dofs.begin()], &check);
-    judge(out.nonlinear, static_cast<double>(n) / fs, &check);
-    if (out.nonlinear && check.excited && (ramp || check.peak_hz)) {
+    const Spectrum& spectrum = out.spectra[at - out.spectrum_dofs.begin()];
+    const double peak_amplitude = match_peak(spectrum, &check);
+    judge(out.nonlinear, record_s, &check);
+    // Its free response gone, a linear scene's mode has no line to check; the free part of a
+    // nonlinear or ramped scene is not the linear one (no steady state to take out).
+    // A forcing line at the mode makes it not applicable first: no run could tell the two apart.
+    if (!out.nonlinear && !ramp && forcing_line_at_mode(scene, check).empty())
+      check.why_decayed = why_decayed(check, free[r], mode.shape(dof), spectrum, record_s);
+    if (!check.why_decayed.empty()) {
+      check.outcome = FftCheck::Outcome::decayed;
+      check.needed_duration_s = 0.0;
+    } else if (check.excited && (ramp || check.peak_hz)) {
       const FoundPeak peak{system, out.modes, dof, peak_amplitude};
       check.why_not_applicable = why_no_run_could_check(scene, check, out.swings, peak);
       if (!check.why_not_applicable.empty()) {

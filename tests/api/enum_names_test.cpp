@@ -97,7 +97,7 @@ TEST(EnumNames, SimulationEventKind) {
 TEST(EnumNames, FftCheckOutcome) {
   using Outcome = FftCheck::Outcome;
   expect_round_trip({Outcome::passed, Outcome::failed, Outcome::not_excited, Outcome::not_resolved, Outcome::no_line,
-                     Outcome::not_applicable},
+                     Outcome::not_applicable, Outcome::decayed},
                     fft_check_outcome_from_string);
 }
 
