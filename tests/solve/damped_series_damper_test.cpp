@@ -9,6 +9,7 @@
 
 #include "railmodal/wheel_rail.hpp"
 #include "stability/first_order_system.hpp"
+#include "series_damper_coach.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
@@ -95,11 +96,11 @@ TEST(DampedSeriesDamper, OneMassHasTheRootsOfItsCubic) {
   ASSERT_EQ(r.dofs.size(), 2u);
   EXPECT_EQ(r.dofs[1].label, "damper.bounce stroke");
   EXPECT_EQ(r.first_order, std::vector<std::string>{"damper.bounce stroke"});
-  ASSERT_EQ(r.notes.size(), 1u);
-  EXPECT_NE(r.notes[0].find("series dampers: in"), std::string::npos);
+  ASSERT_EQ(r.undamped.notes.size(), 1u);
+  EXPECT_NE(r.undamped.notes[0].find("series dampers: in"), std::string::npos);
   // The pair is the mass's bounce, the real root the damper's relaxation, reported as such: a
-  // first-order mode, no frequency, its decay rate the root (k/c = 50 /s when alone; here the
-  // mass's spring in series with k makes it faster).
+  // first-order mode, no frequency, its decay rate the cubic's real root (k/c = 50 /s for the
+  // damper alone, the mass held; the mass moving with it changes that).
   const DampedMode& bounce = r.modes[0].kind == DampedModeKind::underdamped ? r.modes[0] : r.modes[1];
   const DampedMode& relaxation = r.modes[0].kind == DampedModeKind::underdamped ? r.modes[1] : r.modes[0];
   EXPECT_EQ(bounce.kind, DampedModeKind::underdamped);
@@ -111,16 +112,20 @@ TEST(DampedSeriesDamper, OneMassHasTheRootsOfItsCubic) {
   ASSERT_EQ(relaxation.eigenvalues.size(), 1u);
   EXPECT_EQ(relaxation.eigenvalues[0].imag(), 0.0);
   EXPECT_DOUBLE_EQ(relaxation.decay_rate, -relaxation.eigenvalues[0].real());
-  EXPECT_GT(relaxation.decay_rate, k / c);
+  const auto real_root = std::min_element(expected.begin(), expected.end(),
+                                          [](cd a, cd b) { return std::abs(a.imag()) < std::abs(b.imag()); });
+  EXPECT_NEAR(relaxation.decay_rate, -real_root->real(), 1e-12 * scale);
   // Its shape is mostly the stroke (scaled to 1 at its largest entry).
   EXPECT_NEAR(std::abs(relaxation.shape(1)), 1.0, 1e-12);
 }
 
 // As k → ∞ the series spring is rigid and the element a plain damper c along its stretch:
 // C + c·stretchᵀstretch. The Maxwell stiffness k_s(λ) = cλ/(1 + cλ/k) differs from cλ by the
-// fraction cλ/k, so each root moves by O(c|λ|/k) of the damper's share: the difference falls
-// tenfold for each tenfold k (first order), which is what is checked, and at the stiffest k it
-// is within 1e-6 of the largest root (c|λ|/k ≈ 4e5·40/1e12 ≈ 2e-5, times the damper's share).
+// fraction cλ/k of the damper's force, so a root moves by (c|λ|/k) times what the damper moves
+// it: |δλ| = C·c|λ|²/k, C the damper's effect in units of |λ|. Checked: first order (a tenfold
+// k divides the difference by about ten, measured 0.103 and 0.108; 0.2 allowed) and, at the
+// stiffest k, C below 30: measured 14 here (32, 3.3, 0.36 /s at k × 1e3, 1e4, 1e5, the largest
+// root 251 /s): the yaw dampers move some roots by several |λ|.
 TEST(DampedSeriesDamper, AStiffSeriesSpringIsThePlainDamper) {
   const LinearSystem coach = assemble(coach_with_yaw_dampers(), DofSet::lateral);
   ASSERT_EQ(coach.series_dampers.size(), 4u);  // two a bogie, both stretched by the bogie's yaw
@@ -145,7 +150,8 @@ TEST(DampedSeriesDamper, AStiffSeriesSpringIsThePlainDamper) {
   }
   EXPECT_LT(mismatch[1], 0.2 * mismatch[0]);
   EXPECT_LT(mismatch[2], 0.2 * mismatch[1]);
-  EXPECT_LT(mismatch[2], 1e-6 * scale);
+  const double stiffest = 1e5 * coach.series_dampers[0].stiffness, c = coach.series_dampers[0].damping;
+  EXPECT_LT(mismatch[2], 30.0 * c * scale * scale / stiffest);
 }
 
 // The coach with yaw dampers, lateral: the same roots as the hunting analysis' first-order
