@@ -35,7 +35,8 @@ enum class DampedModeKind {
   divergent,    ///< two real eigenvalues of opposite signs: an undamped unstable mode (λ = ω² < 0),
                 ///< which damping slows but cannot stop
   first_order,  ///< one real eigenvalue on its own: a massless degree of freedom held by a
-                ///< damper (or, under heavy mixing, a root left over by the matching)
+                ///< damper, as a series damper's stroke (its relaxation, near −k/c), or,
+                ///< under heavy mixing, a root left over by the matching
   rigid_body    ///< λ = 0 (a direction nothing restrains), with the rate at which its velocity
                 ///< decays as the second eigenvalue
 };
@@ -82,10 +83,10 @@ struct DampedMode {
   /// The undamped mode this one comes from: a 1-based index into `undamped.modes`, or 0
   /// for a first-order mode (it has no undamped counterpart).
   int undamped_mode = 0;
-  /// The undamped mode's name (the mode names of README, "Mode names"), or "<dof> first-order" for a massless
-  /// damped degree of freedom.
+  /// The undamped mode's name (the mode names of README, "Mode names"), "<dof> first-order" for a massless
+  /// damped degree of freedom, "series damper relaxation (<element>)" for a series damper's stroke.
   std::string name;
-  /// φ over LinearSystem::dofs for the first eigenvalue, φᴴMφ = 1 (largest entry 1 for a
+  /// φ over DampedModalResult::dofs for the first eigenvalue, φᴴMφ = 1 (largest entry 1 for a
   /// first-order mode), its phase chosen so that φ_uᵀMφ is real and positive for the
   /// undamped mode φ_u it comes from: with C = 0 it is the undamped shape.
   Eigen::VectorXcd shape;
@@ -94,16 +95,20 @@ struct DampedMode {
 };
 
 struct DampedModalResult {
+  /// The system's degrees of freedom, then one per series damper (LinearSystem::series_dampers
+  /// order): the stroke of its dashpot, "<element>.<direction> stroke", massless, body −1.
   std::vector<Dof> dofs;
   /// In ascending damped frequency (modes that do not oscillate, f_d = 0, first); among equal
   /// frequencies as the undamped modes they come from, first-order modes last.
   /// DampedMode::undamped_mode names each one's undamped mode.
   std::vector<DampedMode> modes;
-  /// The undamped solve (C ignored) the damped modes are matched to.
+  /// The undamped solve (C and the series dampers ignored) the damped modes are matched to; its
+  /// notes are the damped modes' (model::damped_mode_notes: a note that series dampers are in).
   ModalResult undamped;
   /// Massless degrees of freedom without damping, condensed out statically.
   std::vector<std::string> condensed;
-  /// Massless degrees of freedom with damping: each adds a first-order state.
+  /// Massless degrees of freedom with damping, the series dampers' strokes among them: each adds
+  /// a first-order state.
   std::vector<std::string> first_order;
   bool stable = true;  ///< every mode is stable
   double max_residual = 0.0;
@@ -118,11 +123,13 @@ struct DampedModalResult {
 /// ones and ζ = 0 exactly; with Rayleigh damping C = αM + βK, ζ = α/(2ω) + βω/2.
 ///
 /// Massless degrees of freedom without damping are condensed statically as in
-/// solve_modes(); a massless one with damping becomes a first-order state. Throws
+/// solve_modes(); a massless one with damping becomes a first-order state, and so does each
+/// series damper (LinearSystem::series_dampers), through the stroke of its dashpot (the
+/// undamped modes are solved without them: they carry no static force). Throws
 /// NumericalError as solve_modes() does, when the damping of the massless damped degrees of
 /// freedom is singular (naming them), and when a residual exceeds
-/// options.undamped.max_residual; std::invalid_argument for bad options or a damping matrix
-/// of the wrong size.
+/// options.undamped.max_residual; std::invalid_argument for bad options, a damping matrix
+/// of the wrong size, and a series damper without a positive damping and stiffness.
 DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedModalOptions& options = {});
 
 }  // namespace railmodal

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "model/analysis_limits.hpp"
+
 namespace railmodal::ride {
 
 SampledRideTrack::SampledRideTrack(const TrackUnderWheels& track, double speed, double start)
@@ -42,6 +44,8 @@ double SampledRideTrack::next_break(double t) const {
 FrictionMarch march_with_effects(const LinearSystem& system, const RideStateSpace& model,
                                  const TrackUnderWheels& track, const std::vector<OutputRow>& rows, long count,
                                  double step, double speed, const NonlinearEffects& effects) {
+  // The nonlinear simulation holds M, C and K only: no stroke states (s below is (q, v)).
+  model::refuse_series_dampers(system, "the ride with nonlinear effects");
   const SampledRideTrack sampled(track, speed, track.span());
   SimulationOptions options;
   options.speed = speed;

@@ -174,7 +174,7 @@ std::vector<Eigen::VectorXd> linear_march(const ride::RideStateSpace& model, con
   ride::RideMarch march(model, track, speed, plan.step, track.span());
   clock->lap("state transition");
   const Eigen::VectorXd start =
-      periodic ? periodic_start(&march, plan.evaluated, 2 * model.n, notes) : Eigen::VectorXd::Zero(2 * model.n);
+      periodic ? periodic_start(&march, plan.evaluated, model.states(), notes) : Eigen::VectorXd::Zero(model.states());
   std::vector<Eigen::VectorXd> y = march_outputs(&march, track, rows, start, count, speed);
   clock->lap("march");
   return y;

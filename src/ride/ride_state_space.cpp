@@ -3,8 +3,8 @@
 #include <Eigen/Dense>
 #include <stdexcept>
 
-#include "model/analysis_limits.hpp"
 #include "model/point_motion.hpp"
+#include "model/series_damper_strokes.hpp"
 #include "railmodal/errors.hpp"
 #include "ride/ride_transfer.hpp"
 
@@ -29,8 +29,8 @@ void refuse_wheelsets_without_contact(const LinearSystem& system) {
 }  // namespace
 
 RideStateSpace ride_state_space(const LinearSystem& system) {
-  model::refuse_series_dampers(system, "ride simulation");
   refuse_wheelsets_without_contact(system);
+  refuse_series_dampers_on_track(system, "ride simulation");
   const int n = system.size();
   if (n == 0) throw std::invalid_argument("ride simulation: the system has no degrees of freedom");
   for (int i = 0; i < n; ++i)
@@ -41,6 +41,8 @@ RideStateSpace ride_state_space(const LinearSystem& system) {
   if (llt.info() != Eigen::Success) throw NumericalError("ride simulation: the mass matrix is not positive definite");
   RideStateSpace s;
   s.n = n;
+  s.strokes = static_cast<int>(system.series_dampers.size());
+  const int d = s.strokes;
   s.mass_inverse = llt.solve(Eigen::MatrixXd::Identity(n, n));
   const int m = 3 * static_cast<int>(system.track_inputs.size());
   s.Bd = Eigen::MatrixXd::Zero(n, m);
@@ -49,14 +51,25 @@ RideStateSpace ride_state_space(const LinearSystem& system) {
     s.Bd.middleCols(3 * i, 3) = system.track_inputs[i].load_per_displacement;
     s.Bv.middleCols(3 * i, 3) = system.track_inputs[i].load_per_velocity;
   }
+  // The strokes' rows and columns of the extended M, C, K (the series dampers' only part in it).
+  const LinearSystem extended = d > 0 ? model::with_series_damper_strokes(system) : LinearSystem();
+  const Eigen::MatrixXd& K = d > 0 ? extended.stiffness : system.stiffness;  // (n + d) square
+  s.position_stiffness = K.topRows(n);
   const Eigen::MatrixXd MinvBv = s.mass_inverse * s.Bv;
-  s.A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  s.A.topRightCorner(n, n).setIdentity();
-  s.A.bottomLeftCorner(n, n) = -s.mass_inverse * system.stiffness;
-  s.A.bottomRightCorner(n, n) = -s.mass_inverse * system.damping;
-  s.B.resize(2 * n, m);
+  s.A = Eigen::MatrixXd::Zero(s.states(), s.states());
+  s.A.block(0, n, n, n).setIdentity();
+  const Eigen::MatrixXd MinvK = -s.mass_inverse * s.position_stiffness;  // on (q, u)
+  s.A.block(n, 0, n, n) = MinvK.leftCols(n);
+  s.A.block(n, 2 * n, n, d) = MinvK.rightCols(d);
+  s.A.block(n, n, n, n) = -s.mass_inverse * system.damping;
+  for (int j = 0; j < d; ++j) {  // c u̇ = −(K_uq q + K_uu u) = k(stretch·q − u)
+    const double c = extended.damping(n + j, n + j);
+    s.A.block(2 * n + j, 0, 1, n) = -K.block(n + j, 0, 1, n) / c;
+    s.A(2 * n + j, 2 * n + j) = -K(n + j, n + j) / c;
+  }
+  s.B = Eigen::MatrixXd::Zero(s.states(), m);
   s.B.topRows(n) = MinvBv;
-  s.B.bottomRows(n) = s.mass_inverse * (s.Bd - system.damping * MinvBv);
+  s.B.middleRows(n, n) = s.mass_inverse * (s.Bd - system.damping * MinvBv);
   return s;
 }
 
@@ -75,11 +88,11 @@ int element_index(const LinearSystem& system, const RideOutput& output) {
 }
 
 // r·q as a row on (s, w, ẇ) for r·q, r·q̇ or r·q̈ (see ride_state_space.hpp):
-//   q̇ = v + M⁻¹Bv w;   q̈ = −M⁻¹K q − M⁻¹C v + M⁻¹(Bd − C M⁻¹Bv) w + M⁻¹Bv ẇ.
+//   q̇ = v + M⁻¹Bv w;   q̈ = −M⁻¹K_qq q − M⁻¹K_qu u − M⁻¹C v + M⁻¹(Bd − C M⁻¹Bv) w + M⁻¹Bv ẇ.
 OutputRow motion_row(const LinearSystem& system, const RideStateSpace& model, const Eigen::RowVectorXd& r,
                      ResponseQuantity quantity) {
-  const int n = model.n;
-  OutputRow row{Eigen::RowVectorXd::Zero(2 * n), Eigen::RowVectorXd::Zero(model.B.cols()),
+  const int n = model.n, d = model.strokes;
+  OutputRow row{Eigen::RowVectorXd::Zero(model.states()), Eigen::RowVectorXd::Zero(model.B.cols()),
                 Eigen::RowVectorXd::Zero(model.B.cols()), Eigen::RowVectorXd()};
   const Eigen::RowVectorXd rMinv = r * model.mass_inverse;
   switch (quantity) {
@@ -87,16 +100,19 @@ OutputRow motion_row(const LinearSystem& system, const RideStateSpace& model, co
       row.Ls.head(n) = r;
       break;
     case ResponseQuantity::velocity:
-      row.Ls.tail(n) = r;
+      row.Ls.segment(n, n) = r;
       row.Lw = rMinv * model.Bv;
       break;
-    case ResponseQuantity::acceleration:
-      row.Ls.head(n) = -rMinv * system.stiffness;
-      row.Ls.tail(n) = -rMinv * system.damping;
+    case ResponseQuantity::acceleration: {
+      const Eigen::RowVectorXd elastic = -rMinv * model.position_stiffness;  // on (q, u)
+      row.Ls.head(n) = elastic.head(n);
+      row.Ls.tail(d) = elastic.tail(d);
+      row.Ls.segment(n, n) = -rMinv * system.damping;
       row.Lw = rMinv * (model.Bd - system.damping * model.mass_inverse * model.Bv);
       row.Ld = rMinv * model.Bv;
       row.La = r;
       break;
+    }
   }
   return row;
 }

@@ -442,12 +442,16 @@ std::vector<Component> track_components(const LinearSystem& system, const TrackI
   if (track.cross_level)
     out.push_back(component(system, TrackIrregularity::cross_level, *track.cross_level, contact_half_spacing, rolling_radius));
   if (out.empty()) throw std::invalid_argument("ride: the track has no irregularity component");
+  refuse_series_dampers_on_track(system, "ride");
+  return out;
+}
+
+void refuse_series_dampers_on_track(const LinearSystem& system, const char* analysis) {
   for (const SeriesDamperRow& row : system.series_dampers)
     if (input_of(system, row.element) >= 0)
-      throw std::invalid_argument("ride: element '" + system.vehicle.elements[row.element].name +
+      throw std::invalid_argument(std::string(analysis) + ": element '" + system.vehicle.elements[row.element].name +
                                   "' stands on the track with a series damper, whose track input the ride does "
                                   "not model yet");
-  return out;
 }
 
 std::vector<OutputMap> output_maps(const LinearSystem& system, const std::vector<RideOutput>& outputs,

@@ -33,6 +33,11 @@ struct Component {
 std::vector<Component> track_components(const LinearSystem& system, const TrackIrregularitySpectra& track,
                                         double contact_half_spacing, double rolling_radius);
 
+/// Throws std::invalid_argument("<analysis>: element '<name>' stands on the track with a series
+/// damper, …") for the first series damper on an element with a track input: the track would
+/// move one end of its spring, an input neither domain of the ride models yet.
+void refuse_series_dampers_on_track(const LinearSystem& system, const char* analysis);
+
 /// One output as a linear map of the DOF response X and the track displacements u_i:
 ///   y(ω) = (iω)^order · [a(ω)·X + Σ_terms t(ω)·u_input] + g·X,
 ///   a(ω) = a0 + iω·a1 − Σ_series k_s(ω)·stretch,  t(ω) = t0 + iω·t1 + (iω)²·t2,

@@ -27,7 +27,13 @@
 // massless DOFs that the coordinates above remove exactly. The w states have other units,
 // so the matrix is balanced by powers of two (Parlett–Reinsch, as LAPACK's dgebal) before the
 // solve: exact in floating point, a no-op on the already balanced mode blocks.
-#include "model/analysis_limits.hpp"
+//
+// Series dampers. Each becomes one more massless damped DOF, the stroke of its dashpot
+// (model/series_damper_strokes.hpp, which says why the stroke rather than the force), so it is
+// one more w above and nothing else changes: the undamped modes are the system's own (the
+// stroke follows the stretch statically, the entries of Φ on the strokes), the pencil and the
+// residual are those of the extended M, C, K. Its root, near −k/c, is a first-order mode named
+// "series damper relaxation (<element>)", as `railmodal stability` names it.
 #include "railmodal/damped_modal.hpp"
 
 #include <Eigen/Dense>
@@ -35,6 +41,8 @@
 #include <cmath>
 #include <limits>
 
+#include "model/analysis_limits.hpp"
+#include "model/series_damper_strokes.hpp"
 #include "railmodal/errors.hpp"
 #include "require_valid.hpp"
 #include "shortest_text.hpp"
@@ -165,16 +173,26 @@ MasslessDofs massless_dofs(const Eigen::MatrixXd& M, const Eigen::MatrixXd& C) {
   return massless;
 }
 
-// Φ from the undamped modes; G is 1 on each w's own DOF and the static response −K_uu⁻¹K_ud on
+// The undamped modes over the DOFs of `system`: `und`'s shapes (solved without the series
+// dampers, `original`), and below them each series damper's stroke, which follows its stretch.
+Eigen::MatrixXd undamped_shapes(const LinearSystem& original, const ModalResult& und) {
+  const int n = original.size(), nm = static_cast<int>(und.modes.size());
+  const Eigen::MatrixXd S = model::stroke_followers(original);
+  Eigen::MatrixXd Phi(n + S.rows(), nm);
+  for (int k = 0; k < nm; ++k) Phi.col(k).head(n) = und.modes[k].shape;
+  Phi.bottomRows(S.rows()).noalias() = S * Phi.topRows(n);
+  return Phi;
+}
+
+// Φ the undamped modes; G is 1 on each w's own DOF and the static response −K_uu⁻¹K_ud on
 // the massless undamped DOFs u, which must be restrained without the w.
-ModalCoordinates modal_coordinates(const LinearSystem& system, const ModalResult& und, const MasslessDofs& massless) {
-  const int n = system.size(), nm = static_cast<int>(und.modes.size());
+ModalCoordinates modal_coordinates(const LinearSystem& system, Eigen::MatrixXd Phi, const MasslessDofs& massless) {
+  const int n = system.size();
   const std::vector<int>& damped = massless.damped;
   const int nw = static_cast<int>(damped.size());
   ModalCoordinates q;
   q.damped = damped;
-  q.Phi.resize(n, nm);
-  for (int k = 0; k < nm; ++k) q.Phi.col(k) = und.modes[k].shape;
+  q.Phi = std::move(Phi);
   q.G = Eigen::MatrixXd::Zero(n, nw);
   for (int k = 0; k < nw; ++k) q.G(damped[k], k) = 1.0;
   if (nw > 0 && !massless.undamped.empty()) {
@@ -472,7 +490,8 @@ Eigen::VectorXcd normalised_shape(Eigen::VectorXcd phi, const Eigen::MatrixXd& M
 
 // What every damped mode is built from.
 struct ModeContext {
-  const LinearSystem& system;
+  const LinearSystem& original;  // as given: its series dampers are the strokes of `system`
+  const LinearSystem& system;    // the original with the strokes (the original without any)
   const Eigen::MatrixXd& C;
   const ModalResult& undamped;
   const ModalCoordinates& q;
@@ -482,11 +501,24 @@ struct ModeContext {
   double norm_M, norm_C, norm_K;
 };
 
+// A first-order mode's name: its massless damped DOF's, or for a series damper's stroke the
+// relaxation it is (the name `railmodal stability` gives it).
+std::string first_order_name(const ModeContext& c, int dof) {
+  const int damper = dof - c.original.size();
+  if (damper < 0) return c.system.dofs[dof].label + " first-order";
+  const int element = c.original.series_dampers[static_cast<size_t>(damper)].element;
+  const auto& elements = c.original.vehicle.elements;
+  return "series damper relaxation (" +
+         (element >= 0 && element < static_cast<int>(elements.size()) ? elements[static_cast<size_t>(element)].name
+                                                                       : c.system.dofs[dof].label) +
+         ")";
+}
+
 DampedMode damped_mode(const RootGroup& group, int slot, const ModeContext& c) {
   const int nm = c.q.modes();
   DampedMode mode;
   mode.undamped_mode = slot < nm ? slot + 1 : 0;
-  mode.name = slot < nm ? c.undamped.modes[slot].name : c.system.dofs[c.q.damped[slot - nm]].label + " first-order";
+  mode.name = slot < nm ? c.undamped.modes[slot].name : first_order_name(c, c.q.damped[slot - nm]);
   classify(mode, group, slot < nm && c.undamped.modes[slot].kind == ModeKind::rigid_body, c.tol, c.critical_gap);
   // Residual of each root with its own computed eigenvalue (a backward error: the mean
   // of a split critical pair is more accurate but its eigenvectors are not).
@@ -519,29 +551,32 @@ void order_modes(std::vector<DampedMode>& modes) {
 
 }  // namespace
 
-DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedModalOptions& options) {
+DampedModalResult solve_damped_modes(const LinearSystem& original, const DampedModalOptions& options) {
   require_valid(options, "DampedModalOptions: ");
-  model::refuse_series_dampers(system, "damped modes");
-  const int n = system.size();
-  Eigen::MatrixXd C = system.damping;
-  if (C.size() == 0) C = Eigen::MatrixXd::Zero(n, n);
-  if (C.rows() != n || C.cols() != n)
-    throw std::invalid_argument("the damping matrix is " + std::to_string(C.rows()) + " x " +
-                                std::to_string(C.cols()) + ", the system has " + std::to_string(n) +
+  const int n = original.size();
+  if (original.damping.size() != 0 && (original.damping.rows() != n || original.damping.cols() != n))
+    throw std::invalid_argument("the damping matrix is " + std::to_string(original.damping.rows()) + " x " +
+                                std::to_string(original.damping.cols()) + ", the system has " + std::to_string(n) +
                                 " degrees of freedom");
-  if (!C.allFinite()) throw NumericalError("the damping matrix contains NaN or infinity");
+  if (!original.damping.allFinite()) throw NumericalError("the damping matrix contains NaN or infinity");
 
   DampedModalResult result;
   StageClock clock(&result.summary);
-  result.undamped = solve_modes(system, options.undamped);  // checks M and K, condenses, names
+  // Undamped modes without the series dampers: they carry no static force (the file comment).
+  result.undamped = solve_modes(original, options.undamped);  // checks M and K, condenses, names
   clock.lap("undamped modes");
+  // Its notes are what the damped modes leave out or add: the series dampers are in here.
+  result.undamped.notes = model::damped_mode_notes(original);
+  LinearSystem system = model::with_series_damper_strokes(original);
+  if (system.damping.size() == 0) system.damping = Eigen::MatrixXd::Zero(n, n);
+  const Eigen::MatrixXd& C = system.damping;
   result.dofs = system.dofs;
   const ModalResult& und = result.undamped;
 
   const MasslessDofs massless = massless_dofs(system.mass, C);
   for (int i : massless.damped) result.first_order.push_back(system.dofs[i].label);
   for (int i : massless.undamped) result.condensed.push_back(system.dofs[i].label);
-  const ModalCoordinates q = modal_coordinates(system, und, massless);
+  const ModalCoordinates q = modal_coordinates(system, undamped_shapes(original, und), massless);
   const ReducedEquations eq = reduce_equations(system, C, und, q);
   const StateLayout layout = lay_out_state(und, eq.lambda, q.first_order());
   const StateEigensolution solution = solve_state_matrix(state_matrix(layout, eq));
@@ -553,8 +588,8 @@ DampedModalResult solve_damped_modes(const LinearSystem& system, const DampedMod
   assign_slots(roots, shares, und, q.first_order());
 
   const RootTolerances tolerances = root_tolerances(solution.values, options.undamped.zero_tolerance);
-  const ModeContext context{system, C, und, q, layout, tolerances, options.critical_gap, system.mass.norm(),
-                            C.norm(), system.stiffness.norm()};
+  const ModeContext context{original, system, C, und, q, layout, tolerances, options.critical_gap,
+                            system.mass.norm(), C.norm(), system.stiffness.norm()};
   for (int slot = 0; slot < q.modes() + q.first_order(); ++slot)
     for (const RootGroup& group : root_groups(roots, slot)) {
       result.modes.push_back(damped_mode(group, slot, context));

@@ -102,7 +102,8 @@ int run_damped(const ModesOptions& o, bool matrices, OutputFormat format, std::o
   try {
     result = solve_damped_modes(system);
   } catch (const std::invalid_argument& e) {
-    // The default options are valid: what is refused is the vehicle (a series damper).
+    // The default options are valid: what is refused is the vehicle (a series damper without a
+    // positive damping and stiffness, which the reader already refuses with its line).
     if (matrices) throw;
     throw InputError(o.file, 0, 0, e.what());
   }
