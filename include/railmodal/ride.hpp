@@ -266,7 +266,9 @@ bool has_grid_error_estimate(const RideResult& result);
 /// its band is outside the grid, cross-level on such wheelsets) are an IrregularityComponentError (track_spectrum.hpp)
 /// that says which. Where the system holds wheelsets' lateral motion the linear
 /// creep contact (contact_matrices) is assembled at each speed and alignment acts through it (docs/ride.md, "Lateral
-/// ride through the creep forces"); above the linear critical speed every output is `unbounded`. Throws
+/// ride through the creep forces"); above the linear critical speed every output the growing motion moves is
+/// `unbounded` (one it does not move, such as a vertical one decoupled from the lateral motions, keeps its number) and
+/// the notes name the motion and the linear critical speed. Throws
 /// railmodal::NumericalError naming the frequency where the
 /// dynamic stiffness is singular off an undamped mode. An undamped excited mode is an answer (`unbounded`), no throw.
 RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,

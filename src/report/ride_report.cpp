@@ -107,20 +107,42 @@ std::string mode_name(const RideResult& r, int mode) {
              : "mode " + mode_number(static_cast<size_t>(mode));
 }
 
-// "body bounce (1.02 Hz) 71 %; body pitch (1.31 Hz) 18 %": the largest shares of the variance
-// (semicolons: mode names have commas).
+// A share of an output's variance as a whole percentage, "39 %"; "" where it rounds to 0 %.
+std::string percent(double share) {
+  const std::string text = fixed(100.0 * share, 0);
+  return text == "0" ? std::string() : text + " %";
+}
+
+// "body pitch (1.29 Hz) 124 %; body bounce (1.07 Hz) 39 %; cross terms −63 %": the largest
+// shares of the variance, then the modes not named together and the cross terms, so that the
+// percentages add up to 100 % (semicolons: mode names have commas). Each mode's share is the
+// variance of its term alone; the cross terms Σ_{j≠k}∫Re(H_jH_k*)G df are negative where two
+// modes' terms partly cancel at the output, and then one mode's share exceeds 100 %. A
+// suspension force's direct track term alone comes first; what is left beside it is named so.
 std::string dominant_modes(const RideResult& r, const RideOutputAtSpeed& o) {
-  // The direct track term first, where there is one: its share beside the modes' says when they
-  // cancel (a mode's share above 100 %).
-  std::string text;
   const double variance = o.rms * o.rms;
-  if (o.direct_variance > 0.0 && variance > 0.0)
-    text = "direct track term " + fixed(100.0 * o.direct_variance / variance, 0) + " %";
-  for (size_t k = 0; k < o.modes.size() && k < kDominantModes; ++k) {
-    if (k > 0 && o.modes[k].share < kSmallestShownShare) break;
-    text += (text.empty() ? "" : "; ") + mode_name(r, o.modes[k].mode) + " " + fixed(100.0 * o.modes[k].share, 0) + " %";
+  if (!(variance > 0.0) || (o.modes.empty() && !(o.direct_variance > 0.0))) return "–";  // no shares given
+  std::vector<std::string> parts;
+  double rest = o.cross_term_variance;  // σ² − Σ_j var_j
+  if (o.direct_variance > 0.0) {
+    parts.push_back("direct track term " + fixed(100.0 * o.direct_variance / variance, 0) + " %");
+    rest -= o.direct_variance;
   }
-  return text.empty() ? "–" : text;
+  double others = 0.0;  // the modes not named
+  for (size_t k = 0; k < o.modes.size(); ++k) {
+    if (k < kDominantModes && (k == 0 || o.modes[k].share >= kSmallestShownShare))
+      parts.push_back(mode_name(r, o.modes[k].mode) + " " + fixed(100.0 * o.modes[k].share, 0) + " %");
+    else
+      others += o.modes[k].share;
+  }
+  if (const std::string p = percent(others); !p.empty()) parts.push_back("other modes " + p);
+  // Without modal shares (the creep contact) the rest is the vehicle's whole response with its
+  // cross term against the direct one.
+  const char* rest_name = o.modes.empty() ? "response and cross terms " : "cross terms ";
+  if (const std::string p = percent(rest / variance); !p.empty()) parts.push_back(rest_name + p);
+  std::string text;
+  for (const std::string& part : parts) text += (text.empty() ? "" : "; ") + part;
+  return text;
 }
 
 std::string input_name(const RideResult& r, size_t k) {
@@ -149,7 +171,7 @@ Table indices_table(const RideResult& r, const RideAtSpeed& at) {
     std::vector<std::string> row{r.outputs[i].name, unit_of(r.outputs[i])};
     if (o.unbounded) {
       row.insert(row.end(), {"unbounded", "–"});
-      if (every_index) row.insert(row.end(), {"–", "–", "an undamped mode"});
+      if (every_index) row.insert(row.end(), {"–", "–", "see the notes"});
     } else {
       row.insert(row.end(), {value_text(o.rms), optional_text(o.weighted_rms)});
       if (every_index)
@@ -264,9 +286,10 @@ constexpr const char* kEstimateNote =
     "P95 estimate: the 95th percentile of the 5 s weighted RMS values estimated from the spectrum, not measured. "
     "N_MV = 6·√(P95x² + P95y² + P95z²) (EN 12299) from those estimates. Wz: Sperling's index from the B-weighted "
     "RMS (filter form). Dominant modes: each mode's share is the variance of its term alone over the output's "
-    "variance; the cross terms between modes make up the rest and may be negative, so a share can exceed 100 % "
-    "(a suspension force, which also follows the track directly, shows this most: the share of its direct track "
-    "term alone comes first).";
+    "variance; the modes not named and the cross terms between the terms follow, so that the percentages add up "
+    "to 100 %. Cross terms are negative where two terms partly cancel at the output, and then one share exceeds "
+    "100 % (a suspension force, which also follows the track directly, shows this most: the share of its direct "
+    "track term alone comes first).";
 
 // The time-domain notes with those that differ only in the output they begin with ("floor at
 // mid-car, vertical: P95 over the 36 complete windows …") written once, naming how many.
@@ -777,6 +800,8 @@ void write_at_speed(JsonWriter& j, const RideResult& r, const RideAtSpeed& at) {
       continue;
     }
     if (every_index) {
+      // Σ modes' share + cross_term_share = 1: the cross terms' part of the variance beside the modes'.
+      j.member("cross_term_share", o.rms > 0.0 ? o.cross_term_variance / (o.rms * o.rms) : 0.0);
       j.member("cross_term_variance", o.cross_term_variance);
       j.member("direct_variance", o.direct_variance).key("modes").begin_array();
       for (const ModalContribution& m : o.modes)

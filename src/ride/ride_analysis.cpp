@@ -4,10 +4,12 @@
 #include <cmath>
 #include <exception>
 #include <complex>
+#include <limits>
 #include <map>
 #include <optional>
 #include <thread>
 
+#include "railmodal/hunting.hpp"
 #include "railmodal/modal.hpp"
 #include "railmodal/response.hpp"
 #include "railmodal/ride.hpp"
@@ -23,6 +25,7 @@
 #include "ride/ride_workspace.hpp"
 #include "ride/track_under_wheels.hpp"
 #include "shortest_text.hpp"
+#include "stability/branch_naming.hpp"
 #include "summary/stage_clock.hpp"
 
 namespace railmodal {
@@ -132,7 +135,48 @@ struct SpeedOutcome {
   std::vector<std::string> notes;
   double grid_error = 0.0;
   ride::FrictionLinearisation friction;
+  bool grows = false;  // above the linear critical speed (mark_growing)
 };
+
+// Above the linear critical speed a free motion grows: no stationary response exists for the
+// outputs it moves (their RMS is unbounded). An output it does not move, the round-off rule of
+// unbounded_outputs on the output's row at ω = |λ| (a vertical output of a vehicle whose
+// vertical motions are decoupled from the lateral ones in the linear model), keeps its number:
+// the growing motion adds nothing to it, and the rest of the response is the stable modes'.
+void mark_growing(const LinearSystem& system, const std::vector<ride::OutputMap>& maps, double speed,
+                  std::vector<bool>* unbounded, SpeedOutcome* s) {
+  const std::vector<ride::GrowingMotion> growing = ride::growing_motions(system);
+  if (growing.empty()) return;
+  s->grows = true;
+  std::string motions;
+  int moved = 0;
+  std::vector<bool> moves(maps.size(), false);
+  for (const ride::GrowingMotion& g : growing) {
+    const double omega = std::abs(g.root);
+    for (size_t o = 0; o < maps.size(); ++o) {
+      const Eigen::RowVectorXcd row = maps[o].row(omega);
+      const double scale = g.shape.cwiseAbs().maxCoeff() * row.cwiseAbs().sum();
+      moves[o] = moves[o] || std::abs((row * g.shape)(0)) > 1e-9 * scale;
+    }
+    const Eigen::VectorXcd weighted = system.mass.diagonal().cwiseSqrt().cast<Complex>().cwiseProduct(g.shape);
+    const bool oscillates = !stability::overdamped_root(g.root);
+    motions += (motions.empty() ? "'" : "; '") + stability::root_name(system, weighted, oscillates) + "' (" +
+               (oscillates ? shortest_text(g.root.imag() / kTwoPi, 3) + " Hz, " : std::string("real root, ")) +
+               "Re λ = +" + shortest_text(g.root.real(), 3) + " 1/s)";
+  }
+  for (size_t o = 0; o < maps.size(); ++o) {
+    moved += moves[o];
+    (*unbounded)[o] = (*unbounded)[o] || moves[o];
+  }
+  const int kept = static_cast<int>(maps.size()) - moved;
+  s->notes.push_back("at " + shortest_text(speed * 3.6, 6) + " km/h the vehicle on its wheelsets is above its linear "
+                     "critical speed: the free " + (growing.size() > 1 ? "motions " : "motion ") + motions +
+                     (growing.size() > 1 ? " grow" : " grows") + ", so the " + std::to_string(moved) +
+                     " outputs they move have no stationary response (unbounded)" +
+                     (kept > 0 ? "; the other " + std::to_string(kept) +
+                                     " do not move with them in the linear model and keep their numbers"
+                               : std::string()));
+}
 
 // ∫|D_c|²G_c df summed over the components: D_c(ω) = Σ_terms (iω)^q t(ω)·u_{c,i}·e^{−iωτ_i}, the
 // output's direct track terms with the inputs' delays (RideOutputAtSpeed::direct_variance).
@@ -302,12 +346,7 @@ SpeedOutcome solve_speed(const Problem& p, double speed, ride::SpeedWorkspace* k
                       p.options->keep_spectra, &kept->spectra, &kept->scratch);
   std::vector<std::string> driven;
   std::vector<bool> unbounded = unbounded_outputs(p, system, maps, speed, &driven);
-  if (p.contact && !ride::decays(ride::first_order_roots(system))) {
-    // Above the linear critical speed a free motion grows: no stationary response exists.
-    unbounded.assign(maps.size(), true);
-    s.notes.push_back("at " + shortest_text(speed * 3.6, 6) + " km/h the vehicle on its wheelsets is above its linear "
-                      "critical speed (a free motion grows): every output is unbounded");
-  }
+  if (p.contact) mark_growing(system, maps, speed, &unbounded, &s);
   s.at.speed = speed;
   std::vector<double> grid_error(maps.size(), 0.0);
   for (size_t o = 0; o < maps.size(); ++o) {
@@ -497,6 +536,32 @@ bool reaches_laterally(const Problem& p) {
   return false;
 }
 
+// Where the ride found a growing motion, the linear critical speed as `railmodal stability`
+// finds it (solve_hunting_stability from 10 km/h, or half the speed, to the lowest speed at which
+// a motion grows), so that the report says why the outputs the hunting moves have no number.
+std::string critical_speed_note(const LinearSystem& system, const RideOptions& options,
+                                const std::vector<SpeedOutcome>& speeds) {
+  double lowest = std::numeric_limits<double>::infinity();
+  for (size_t v = 0; v < speeds.size(); ++v)
+    if (speeds[v].grows) lowest = std::min(lowest, options.speeds[v]);
+  HuntingOptions hunting;
+  hunting.max_speed = lowest;
+  hunting.min_speed = std::min(hunting.min_speed, 0.5 * lowest);
+  hunting.speed_count = 100;  // the crossing is refined to relative_tolerance whatever the grid
+  hunting.threads = options.threads;
+  const HuntingResult r = solve_hunting_stability(system, hunting);
+  const std::string tail = ": above it a free motion grows and the outputs it moves have no stationary response; "
+                           "`railmodal stability` gives the root locus";
+  if (r.critical)
+    return "the linear critical speed of the vehicle on its wheelsets is " + shortest_text(r.critical->speed * 3.6, 4) +
+           " km/h ('" + r.critical->motion + "', " + shortest_text(r.critical->frequency_hz, 3) + " Hz)" + tail;
+  if (r.verdict == HuntingVerdict::unstable_at_lowest_speed)
+    return "the vehicle on its wheelsets is unstable already at " + shortest_text(hunting.min_speed * 3.6, 4) +
+           " km/h" + tail;
+  return "the vehicle on its wheelsets has a growing motion at " + shortest_text(lowest * 3.6, 6) +
+         " km/h that the root locus below it does not resolve" + tail;
+}
+
 }  // namespace
 
 RideResult solve_ride(const LinearSystem& system, const TrackIrregularitySpectra& track,
@@ -544,6 +609,8 @@ RideResult ride::solve_ride(const LinearSystem& system, const TrackIrregularityS
     for (const std::string& note : s.notes)
       if (std::find(result.notes.begin(), result.notes.end(), note) == result.notes.end()) result.notes.push_back(note);
   }
+  if (std::any_of(speeds.begin(), speeds.end(), [](const SpeedOutcome& s) { return s.grows; }))
+    result.notes.push_back(critical_speed_note(system, options, speeds));
   // With no bounded RMS at any speed (an all-unbounded ride) nothing was estimated: no check,
   // rather than one that reads 0.
   const bool bounded = std::any_of(result.speeds.begin(), result.speeds.end(), [](const RideAtSpeed& at) {

@@ -160,10 +160,13 @@ LinearSystem with_creep(const LinearSystem& system, const CreepContact& contact,
   return s;
 }
 
-Eigen::VectorXcd first_order_roots(const LinearSystem& system) {
+namespace {
+
+// The first-order form's matrix A, x = (q, q̇, F): M q̈ = −K q − C q̇ − Σ stretchᵀF,
+// Ḟ = k(stretch·q̇ − F/c).
+Eigen::MatrixXd first_order_matrix(const LinearSystem& system) {
   const int n = system.size();
   const int d = static_cast<int>(system.series_dampers.size());
-  // x = (q, q̇, F): M q̈ = −K q − C q̇ − Σ stretchᵀF, Ḟ = k(stretch·q̇ − F/c).
   const Eigen::LLT<Eigen::MatrixXd> mass(system.mass);
   Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * n + d, 2 * n + d);
   a.block(0, n, n, n).setIdentity();
@@ -175,16 +178,39 @@ Eigen::VectorXcd first_order_roots(const LinearSystem& system) {
     a.block(2 * n + k, n, 1, n) = s.stiffness * s.stretch;
     a(2 * n + k, 2 * n + k) = -s.stiffness / s.damping;
   }
-  return Eigen::EigenSolver<Eigen::MatrixXd>(a, false).eigenvalues();
+  return a;
+}
+
+// Round-off: the eigenvalues of a matrix of norm ‖A‖ are found within ~1e-16·‖A‖; an undamped
+// mode's roots (real part zero) land there, a growing one far above. 1e-9 of the largest root
+// leaves seven orders of margin above round-off; within it a root counts as not growing (the
+// undamped case is answered by the modes, solve_ride's unbounded outputs).
+bool grows(std::complex<double> root, double largest) { return root.real() > 1e-9 * largest; }
+
+}  // namespace
+
+Eigen::VectorXcd first_order_roots(const LinearSystem& system) {
+  return Eigen::EigenSolver<Eigen::MatrixXd>(first_order_matrix(system), false).eigenvalues();
 }
 
 bool decays(const Eigen::VectorXcd& roots) {
-  // Round-off: the eigenvalues of a matrix of norm ‖A‖ are found within ~1e-16·‖A‖; an undamped
-  // mode's roots (real part zero) land there, a growing one far above. 1e-9 of the largest root
-  // leaves seven orders of margin above round-off; within it a root counts as not growing (the
-  // undamped case is answered by the modes, solve_ride's unbounded outputs).
   const double largest = roots.cwiseAbs().maxCoeff();
-  return roots.real().maxCoeff() <= 1e-9 * largest;
+  return std::none_of(roots.begin(), roots.end(), [&](std::complex<double> r) { return grows(r, largest); });
+}
+
+std::vector<GrowingMotion> growing_motions(const LinearSystem& system) {
+  const Eigen::MatrixXd a = first_order_matrix(system);
+  const Eigen::VectorXcd roots = Eigen::EigenSolver<Eigen::MatrixXd>(a, false).eigenvalues();
+  if (decays(roots)) return {};  // the usual case: no eigenvectors needed
+  const Eigen::EigenSolver<Eigen::MatrixXd> solver(a, true);
+  const Eigen::VectorXcd& values = solver.eigenvalues();
+  const Eigen::MatrixXcd vectors = solver.eigenvectors();
+  const double largest = values.cwiseAbs().maxCoeff();
+  std::vector<GrowingMotion> out;
+  for (Eigen::Index k = 0; k < values.size(); ++k)
+    if (grows(values(k), largest) && values(k).imag() >= 0.0)  // a pair once, by its Im λ ≥ 0 root
+      out.push_back({values(k), vectors.col(k).head(system.size())});
+  return out;
 }
 
 }  // namespace railmodal::ride

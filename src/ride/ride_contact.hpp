@@ -4,6 +4,7 @@
 // measured from the rail (docs/ride.md, "Lateral ride through the creep forces").
 #pragma once
 
+#include <complex>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -78,7 +79,20 @@ RollLoad rail_roll_load(const CreepContact& contact, std::size_t i, double speed
 Eigen::VectorXcd first_order_roots(const LinearSystem& system);
 
 /// Whether the free motion with these roots decays: none with a real part above round-off.
-/// Above the linear critical speed it does not, and the stationary response is unbounded.
+/// Above the linear critical speed it does not, and the stationary response of what the growing
+/// motion moves is unbounded.
 bool decays(const Eigen::VectorXcd& roots);
+
+/// A free motion of `system`'s first-order form that grows (above the linear critical speed):
+/// its root λ (Re λ > 0; of a complex pair the one with Im λ ≥ 0) and its displacement shape, the
+/// q part of its eigenvector over system.dofs.
+struct GrowingMotion {
+  std::complex<double> root;
+  Eigen::VectorXcd shape;
+};
+
+/// Every growing motion of `system` (the roots decays() counts as growing); none below the
+/// linear critical speed. The eigenvectors are computed only when some root grows.
+std::vector<GrowingMotion> growing_motions(const LinearSystem& system);
 
 }  // namespace railmodal::ride

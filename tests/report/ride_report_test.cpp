@@ -303,6 +303,52 @@ TEST(RideReport, JsonModesFromOneVariancesWithUnitsAndUnboundedChecksNotPassed) 
   EXPECT_TRUE(has(written(r, OutputFormat::table), "track RMS over each band: ORE B176 low, vertical level 2.1 mm"));
 }
 
+// Audit 2026-11-27c, 3.3: "body pitch 124 %" read as an error. A mode's share is its own term's
+// variance over the output's; where two modes' terms partly cancel the cross terms are negative
+// and one share exceeds 100 %. Every format puts the modes not named and the cross terms beside
+// the named shares, so that they add up to 100 %: the text's percentages, JSON's shares and
+// cross_term_share.
+TEST(RideReport, ModalSharesAndCrossTermsAddUpToOneHundredPercent) {
+  RideResult r = hand_built();
+  r.modes = {{"body bounce", 1.1}, {"body pitch", 1.4}, {"bogies bounce", 7.5}, {"bogies pitch", 11.5}};
+  for (RideAtSpeed& at : r.speeds) {
+    RideOutputAtSpeed& a = at.outputs[0];
+    a.rms = 0.5;  // σ² = 0.25: pitch 0.31 (124 %), bounce 0.0975 (39 %), two small ones 0.005 (2 %)
+    a.modes = {{1, 0.31, 1.24}, {0, 0.0975, 0.39}, {2, 0.003, 0.012}, {3, 0.002, 0.008}};
+    a.cross_term_variance = 0.25 - (0.31 + 0.0975 + 0.003 + 0.002);  // −0.1625: −65 %
+  }
+  for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html}) {
+    const std::string t = written(r, f);
+    EXPECT_TRUE(has(t, "body pitch (1.40 Hz) 124 %; body bounce (1.10 Hz) 39 %; other modes 2 %; cross terms -65 %"))
+        << t;
+    EXPECT_TRUE(has(t, "add up to 100 %")) << t;  // the note says why a share can exceed 100 %
+  }
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  const auto& out = j["speeds"][0]["outputs"][0];
+  double sum = out["cross_term_share"].get<double>();
+  for (const auto& m : out["modes"]) sum += m["share"].get<double>();
+  EXPECT_NEAR(out["cross_term_share"].get<double>(), -0.65, 1e-12);  // round-off of the sums above
+  EXPECT_NEAR(sum, 1.0, 1e-12);
+}
+
+// A suspension force's direct track term comes first; what is left beside it and the modes is the
+// cross terms, so that the shares still add up to 100 %. An output without shares (round-off, or
+// rms_only) gets none: no "cross terms 100 %".
+TEST(RideReport, DirectTrackTermAndOutputsWithoutSharesKeepTheSum) {
+  RideResult r = hand_built();
+  RideOutputAtSpeed& f = r.speeds[1].outputs[1];
+  f.rms = 2.0;  // σ² = 4: direct 10 (250 %), bounce 2 (50 %), cross terms 4 − 12 = −8 (−200 %)
+  f.direct_variance = 10.0;
+  f.modes = {{0, 2.0, 0.5}};
+  f.cross_term_variance = 4.0 - 2.0;
+  RideOutputAtSpeed& a = r.speeds[0].outputs[0];
+  a.modes.clear();
+  a.cross_term_variance = a.rms * a.rms;
+  const std::string t = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(t, "direct track term 250 %; body bounce (1.10 Hz) 50 %; cross terms -200 %")) << t;
+  EXPECT_FALSE(has(t, "cross terms 100 %")) << t;
+}
+
 TEST(RideReport, MarkdownAndHtmlHaveTheTablesAndTheCharts) {
   const std::string md = written(hand_built(), OutputFormat::markdown);
   EXPECT_TRUE(has(md, "# Ride: hand-built coach")) << md;

@@ -140,6 +140,56 @@ TEST(RideLateral, AboveTheCriticalSpeedEveryOutputIsUnbounded) {
   bool noted = false;
   for (const std::string& n : r.notes) noted = noted || n.find("above its linear critical speed") != std::string::npos;
   EXPECT_TRUE(noted);
+  // And the report says where the hunting begins: the critical speed of the hand equations'
+  // Routh–Hurwitz test, to the note's four significant digits.
+  const std::string lead = "the linear critical speed of the vehicle on its wheelsets is ";
+  double said = 0.0;
+  for (const std::string& n : r.notes)
+    if (n.rfind(lead, 0) == 0) said = std::stod(n.substr(lead.size()));
+  EXPECT_NEAR(said / (vc * 3.6), 1.0, 5e-4);
+}
+
+// Audit 2026-11-27c, 1.6: above the critical speed only what the growing motion moves has no
+// stationary response. The coach's vertical motions are decoupled from its lateral ones in the
+// linear model, so its vertical floor accelerations keep their numbers, the same as those of its
+// vertical model alone (DofSet::vertical) on the same vertical level, while every lateral one is
+// unbounded.
+TEST(RideLateral, AboveTheCriticalSpeedDecoupledVerticalOutputsKeepTheirNumbers) {
+  const Vehicle coach = load_vehicle(test::data_file("manchester_benchmark_coach_wheelsets.toml"));
+  const LinearSystem all = assemble(coach, DofSet::all), vertical = assemble(coach, DofSet::vertical);
+  TrackIrregularitySpectra track = ore_alignment();
+  track.vertical_level =
+      TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::vertical_level, {2 * kPi / 100, 2 * kPi / 3});
+  RideOptions options;
+  options.speeds = {400 / 3.6};  // above its linear critical speed, 353 km/h (docs/stability.md)
+  const RideResult r = solve_ride(all, track, default_ride_outputs(all), options);
+  TrackIrregularitySpectra level;
+  level.vertical_level = track.vertical_level;
+  const RideResult alone = solve_ride(vertical, level, default_ride_outputs(vertical), options);
+  // The two grids differ (the full model's has the lateral modes' peaks too): each RMS is within
+  // its grid error estimate of the exact integral, so the two within the sum of both (and 1e-9
+  // for the estimates' own round-off).
+  const double tolerance = r.grid_error_estimate + alone.grid_error_estimate + 1e-9;
+  size_t vertical_outputs = 0;
+  for (size_t o = 0; o < r.outputs.size(); ++o) {
+    const RideOutputAtSpeed& at = r.speeds[0].outputs[o];
+    if (r.outputs[o].axis == RideAxis::lateral) {
+      EXPECT_TRUE(at.unbounded) << r.outputs[o].name;
+      continue;
+    }
+    ASSERT_FALSE(at.unbounded) << r.outputs[o].name;
+    const RideOutputAtSpeed& ref = alone.speeds[0].outputs[vertical_outputs];
+    ASSERT_EQ(alone.outputs[vertical_outputs].name, r.outputs[o].name);
+    EXPECT_NEAR(at.rms / ref.rms, 1.0, tolerance) << r.outputs[o].name;
+    EXPECT_NEAR(*at.weighted_rms / *ref.weighted_rms, 1.0, tolerance) << r.outputs[o].name;
+    ++vertical_outputs;
+  }
+  EXPECT_EQ(vertical_outputs, alone.outputs.size());
+  EXPECT_GT(r.grid_error_estimate, 0.0);  // estimated from the bounded outputs: there are some
+  bool said = false;  // the note names what grows and says the others keep their numbers
+  for (const std::string& n : r.notes)
+    said = said || (n.find("grows") != std::string::npos && n.find("keep their numbers") != std::string::npos);
+  EXPECT_TRUE(said);
 }
 
 // ---- Cross-level through the contact, and the lateral wheel–rail force ----------------------
