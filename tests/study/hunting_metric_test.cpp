@@ -208,7 +208,10 @@ TEST(HuntingMetric, TableFiguresOfACriterionShareTheirDecimalsAndTheCsvKeepsEver
       {"a", "353.0"}, {"b", "348.6"}, {"c", "345.0"}, {"d", "100.0"}, {"e", "0.004"}};
   size_t seen = 0;
   for (const auto& row : report::comparison_rows(c))
-    if (shown.count(row[1])) EXPECT_EQ(row[3], shown.at(row[1])) << row[1], ++seen;
+    if (shown.count(row[1])) {
+      EXPECT_EQ(row[3], shown.at(row[1])) << row[1];
+      ++seen;
+    }
   EXPECT_EQ(seen, kmh.size());
   std::ostringstream csv;
   write_comparison(csv, c, OutputFormat::csv);
