@@ -41,4 +41,12 @@ void write_ride(std::ostream& out, const RideResult& result, OutputFormat format
                 const Provenance& provenance, const RideSimulationResult* simulated = nullptr,
                 const RideFftChecks* checks = nullptr);
 
+/// Writes the spectra behind the RMS as CSV (`railmodal ride --spectra FILE`), for plotting in
+/// another tool: one row per speed and frequency of RideResult::frequencies, the columns
+/// "speed [km/h]", "frequency [Hz]", each track input's PSD ("<input> input psd [m²/Hz]", in
+/// RideResult::inputs order) and each output's ("<output> psd [(m/s²)²/Hz]", its unit squared
+/// per Hz), one-sided, numbers in full precision. A value the result does not hold (an unbounded
+/// output's, spectra not kept: RideOptions::keep_spectra) is a blank field.
+void write_ride_spectra(std::ostream& out, const RideResult& result);
+
 }  // namespace railmodal

@@ -129,10 +129,11 @@ void bind_gear_result(py::module_& m) {
       .def_readonly("max_surging_n", &GearResult::max_surging)
       .def_readonly("max_nosing_n_m", &GearResult::max_nosing)
       .def_property_readonly("wheels", &wheel_load_records,
-                             "records per wheel: axle, right, static_load_n, max/min_dynamic_load_n, alpha, alpha_89a, wheel_lift")
+                             "records per wheel: axle, right, static_load_n, max/min_dynamic_load_n (N), alpha and "
+                             "alpha_89a (overload coefficients, dimensionless), wheel_lift")
       .def("harmonics", &harmonic_records,
            "records: quantity (horizontal, vertical, guide per cylinder; wheel_load per wheel; surging; nosing), "
-           "index, order, cosine, sine, amplitude (N or N·m)")
+           "index, order, cosine, sine, amplitude (N; N·m for nosing)")
       .def_readonly("summary", &GearResult::summary);
 
   m.def(

@@ -132,7 +132,8 @@ py::list summary_stages(const AnalysisSummary& s) {
 
 void bind_summary(py::module_& m) {
   py::class_<AnalysisSummary>(m, "AnalysisSummary",
-                              "What an analysis did: method, checks (records) and stage times (records).")
+                              "What an analysis did: method, checks (records: name, value and limit in the unit the "
+                              "name says, passed) and stage times (records: stage, seconds, s).")
       .def_readonly("analysis", &AnalysisSummary::analysis)
       .def_readonly("method", &AnalysisSummary::method)
       .def_property_readonly("checks", &summary_checks)
@@ -200,7 +201,9 @@ void bind_modal_result(py::module_& m) {
         py::list out;
         for (const Mode& x : r.modes) out.append(mode_record(x));
         return out;
-      }, "one dict per mode (index, name, kind, frequency_hz, period_s, ...)")
+      }, "One dict per mode: index, name, kind, frequency_hz (Hz), period_s (s), omega_rad_s (rad/s), "
+         "eigenvalue (λ = ω², 1/s²), divergence_rate_per_s (1/s), repeated, residual (relative), "
+         "eigenvalue_error (1/s²), centre_body, centre_about, centre_position_m (m)")
       .def("__len__", [](const ModalResult& r) { return r.modes.size(); })
       .def("__getitem__", [](const ModalResult& r, py::ssize_t i) {
         const auto n = static_cast<py::ssize_t>(r.modes.size());
@@ -267,7 +270,9 @@ void bind_damped_result(py::module_& m) {
         py::list out;
         for (const DampedMode& x : r.modes) out.append(damped_record(x));
         return out;
-      })
+      }, "One dict per mode: index, name, kind, stable, damped_frequency_hz (Hz), damping_ratio (a fraction), "
+         "natural_frequency_hz (Hz), decay_rate_per_s (1/s), undamped_mode, eigenvalue (complex, 1/s), "
+         "residual (relative)")
       .def("__len__", [](const DampedModalResult& r) { return r.modes.size(); })
       .def("__repr__", [](const DampedModalResult& r) {
         return "DampedModalResult(" + std::to_string(r.modes.size()) + " modes, " + (r.stable ? "stable" : "unstable") + ")";

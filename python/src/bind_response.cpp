@@ -249,7 +249,8 @@ void bind_frequency_response(py::module_& m) {
              }
              return d;
            },
-           "frequency_hz and, per output, '<label> amplitude', '<label> phase_deg', '<label> unbounded'")
+           "frequency_hz (Hz) and, per output, '<label> amplitude' (the FRF's unit: m/N for a receptance, "
+           "(m/s)/N, (m/s²)/N; rad for a rotation), '<label> phase_deg' (degrees), '<label> unbounded'")
       .def("__repr__", [](const FrequencyResponse& r) {
         return "FrequencyResponse(" + std::to_string(r.frequencies_hz.size()) + " frequencies, " +
                std::to_string(r.outputs.size()) + " outputs, " + r.quantity + ")";
@@ -297,7 +298,11 @@ void bind_critical_speeds(py::module_& m) {
              py::list out;
              for (const CriticalSpeed& c : l.rows) out.append(critical_speed_record(c));
              return out;
-           })
+           },
+           "One dict per critical speed: speed_m_s (m/s), speed_km_h (km/h), source, source_kind, harmonic, mode, "
+           "mode_name, frequency_hz (Hz), output, unbounded, amplitude (the output's: m or rad), "
+           "growth_per_half_period and friction_decrement_per_half_period (m or rad per half period), "
+           "friction_stops, friction_threshold_scale (a factor on the source amplitude)")
       .def("output_records",
            [](const CriticalSpeedList& l) {
              py::list out;
@@ -315,7 +320,9 @@ void bind_critical_speeds(py::module_& m) {
                }
              return out;
            },
-           "one dict per critical speed and requested output (CriticalSpeed::outputs)")
+           "One dict per critical speed and requested output (CriticalSpeed::outputs): critical_speed (its index), "
+           "speed_m_s (m/s), output, quantity, unbounded, amplitude and growth_per_half_period (the quantity's unit: "
+           "m, m/s or m/s²; rad, rad/s or rad/s² for a rotation)")
       .def_property_readonly("speeds_m_s",
                              [](const CriticalSpeedList& l) {
                                std::vector<double> v;
@@ -339,7 +346,9 @@ void bind_critical_speeds(py::module_& m) {
       .def_property_readonly("phases_deg",
                              [](py::object self) { return vector_view(self.cast<const AmplitudeCurve&>().phases_deg, self); })
       .def_property_readonly("unbounded", [](const AmplitudeCurve& c) { return bool_array(c.unbounded); })
-      .def("as_dict", &curve_dict, "speed_m_s, amplitude, unbounded (and phase_deg): pandas.DataFrame(c.as_dict())")
+      .def("as_dict", &curve_dict,
+           "speed_m_s (m/s), amplitude (the quantity's unit: m, m/s or m/s²; rad... for a rotation), unbounded "
+           "(and phase_deg, degrees): pandas.DataFrame(c.as_dict())")
       .def("__repr__", [](const AmplitudeCurve& c) {
         return "AmplitudeCurve('" + c.output + "', " + to_string(c.quantity) + ", " + std::to_string(c.speeds.size()) + " speeds)";
       });

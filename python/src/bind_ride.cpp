@@ -253,9 +253,10 @@ void bind_ride_result(py::module_& m) {
                              },
                              "records of the undamped modes: name, frequency_hz")
       .def("records", &ride_records,
-           "One row per speed and output: speed_m_s, output, unit, unbounded, rms, weighted_rms, sperling_wz, "
-           "p95_estimate, cross_term_variance, direct_variance (unit², the direct track term alone); with "
-           "rms_only, sperling_wz, p95_estimate and the variances are None")
+           "One row per speed and output: speed_m_s (m/s), output, unit (the output's: m, m/s, m/s² or N), "
+           "unbounded, rms (unit), weighted_rms (m/s², EN 12299), sperling_wz (dimensionless), p95_estimate "
+           "(m/s²), cross_term_variance and direct_variance (unit², the direct track term alone); with rms_only, "
+           "sperling_wz, p95_estimate and the variances are None")
       .def(
           "comfort",
           [](const RideResult& r) {
@@ -263,7 +264,8 @@ void bind_ride_result(py::module_& m) {
             for (const RideAtSpeed& at : r.speeds) out.attr("extend")(comfort_records(at.speed, at.comfort, "nmv_estimate"));
             return out;
           },
-          "One row per speed and floor point: speed_m_s, body, x_m, y_m, z_m, nmv_estimate, missing_axes")
+          "One row per speed and floor point: speed_m_s (m/s), body, x_m, y_m, z_m (m, vehicle frame), "
+          "nmv_estimate (EN 12299 N_MV, dimensionless), missing_axes")
       .def(
           "contributions",
           [](const RideResult& r) {
@@ -276,7 +278,8 @@ void bind_ride_result(py::module_& m) {
                                       py::arg("variance") = c.variance, py::arg("share") = c.share));
             return out;
           },
-          "One row per speed, output and mode: each mode's share of the output's variance (largest first)")
+          "One row per speed, output and mode: speed_m_s (m/s), output, mode, mode_name, variance (the output's "
+          "unit²) and share (a fraction of the output's variance; largest first)")
       .def_readonly("rms_only", &RideResult::rms_only,
                              "True when solved with rms_only=True: records() has the RMS and weighted RMS only")
       .def_readonly("friction_treatment", &RideResult::friction_treatment)
@@ -508,9 +511,11 @@ void bind_ride_simulation(py::module_& m) {
             }
             return out;
           },
-          "One row per output: output, unit, rms, weighted_rms, sperling_wz, p95")
+          "One row per output: output, unit (the output's: m, m/s, m/s² or N), rms (unit), weighted_rms "
+          "(m/s², EN 12299), sperling_wz (dimensionless), p95 (m/s², of the 5 s windows)")
       .def("comfort", [](const RideSimulationResult& r) { return comfort_records(0.0, r.comfort, "nmv"); },
-           "One row per floor point: body, x_m, y_m, z_m, nmv, missing_axes (speed_m_s is 0: one run)")
+           "One row per floor point: body, x_m, y_m, z_m (m), nmv (EN 12299 N_MV, dimensionless), missing_axes "
+           "(speed_m_s is 0: one run)")
       .def_readonly("window_s", &RideSimulationResult::window)
       .def_readonly("notes", &RideSimulationResult::notes)
       .def_readonly("summary", &RideSimulationResult::summary);

@@ -125,7 +125,8 @@ void bind_spectrum(py::module_& m) {
             return out;
           },
           py::arg("threshold") = PeakOptions{}.threshold, py::arg("min_dip") = PeakOptions{}.min_dip,
-          "Spectral peaks (find_peaks) as records: frequency_hz, amplitude, bin, resolution_hz");
+          "Spectral peaks (find_peaks) as records: frequency_hz (Hz), amplitude (the signal's unit, a peak "
+          "amplitude), bin, resolution_hz (Hz)");
 
   const auto spectrum_options = [](const std::string& window, bool remove_mean, const std::string& padding,
                                    Eigen::Index padded_length) {
@@ -210,7 +211,9 @@ void bind_fft_check(py::module_& m) {
       .def_property_readonly("checks", [](const FftCheckResult& r) { return fft_check_records(r.checks); },
                              "records, one per mode")
       .def("records", [](const FftCheckResult& r) { return fft_check_records(r.checks); },
-           "The checks, one row per mode (the same as `checks`)")
+           "The checks, one row per mode (the same as `checks`): mode, mode_name, dof, modal_hz and peak_hz (Hz), "
+           "rel_error (relative), resolution_hz (Hz), within_resolution, modal_amplitude_ratio (dimensionless), "
+           "excited, tolerance (relative), outcome, needed_duration_s (s), why_not_applicable")
       .def_property_readonly("spectra", [](const FftCheckResult& r) { return spectra_by_dof(r.spectrum_dofs, r.spectra); },
                              "Spectrum by DOF label")
       .def_property_readonly("swings",

@@ -137,8 +137,8 @@ void bind_hunting(py::module_& m) {
                              "per branch: some continuity fell below the threshold")
       .def_property_readonly("verdict", [](const HuntingResult& r) { return std::string(to_string(r.verdict)); })
       .def_property_readonly("critical", [](const HuntingResult& r) { return critical_dict(r.critical); },
-                             "the linear critical speed as a dict (speed_m_s, branch, motion, frequency_hz, "
-                             "klingel_frequency_hz, evaluations), or None")
+                             "the linear critical speed as a dict (speed_m_s, m/s; branch, motion, frequency_hz and "
+                             "klingel_frequency_hz, Hz; evaluations, a count), or None")
       .def_property_readonly("unstable_intervals",
                              [](const HuntingResult& r) {
                                py::list out;
@@ -160,14 +160,17 @@ void bind_hunting(py::module_& m) {
       .def_readonly("below_threshold_at_lowest_speed", &HuntingResult::below_threshold_at_lowest_speed)
       .def_readonly("neutral_roots", &HuntingResult::neutral_roots)
       .def_property_readonly("conicity_curve", [](const HuntingResult& r) { return conicity_records(r); },
-                             "records, one per conicity asked: conicity, verdict, critical_speed_m_s, branch, "
-                             "motion, frequency_hz")
+                             "records, one per conicity asked: conicity (λ, dimensionless), verdict, "
+                             "critical_speed_m_s (m/s), branch, motion, frequency_hz (Hz)")
       .def_property_readonly("contacts", [](const HuntingResult& r) { return contact_records(r.contacts); },
-                             "records of the wheelsets' contact as used")
+                             "records of the wheelsets' contact as used: each key with its unit (axle_load_n, "
+                             "rolling_radius_m, f11_n, f23_n_m, f33_n_m2, ...); conicity, contact_angle_parameter and "
+                             "roll_parameter dimensionless")
       .def_readonly("summary", &HuntingResult::summary)
       .def("as_dict", [](const HuntingResult& r) { return locus_columns(r); },
-           "The locus as a long table, one row per speed and branch: speed_m_s, branch, eigenvalue_re, "
-           "eigenvalue_im, damping_ratio, frequency_hz, continuity (equal-length arrays)")
+           "The locus as a long table, one row per speed and branch: speed_m_s (m/s), branch, eigenvalue_re and "
+           "eigenvalue_im (1/s), damping_ratio (a fraction), frequency_hz (Hz), continuity (MAC, 0 to 1) "
+           "(equal-length arrays)")
       .def(
           "records",
           [](const HuntingResult& r) {
@@ -181,7 +184,8 @@ void bind_hunting(py::module_& m) {
                                     py::arg("frequency_hz") = b.frequency_hz[i], py::arg("continuity") = b.continuity[i]));
             return out;
           },
-          "The locus as records, one per speed and branch (the rows of as_dict())");
+          "The locus as records, one per speed and branch (the rows of as_dict(): speed_m_s in m/s, "
+          "eigenvalue_re and eigenvalue_im in 1/s, damping_ratio a fraction, frequency_hz in Hz)");
 
   m.def(
       "hunting_stability",

@@ -63,8 +63,9 @@ void bind_variant_results(py::module_& m) {
           [](const VariantResults& r) {
             return per_variant(r.results, [](const VariantResult& v, py::list& out) { out.append(variant_record(v)); });
           },
-          "One row per variant: index, name, parameters, ok, failure, mode_count, lowest_critical_speed_m_s, "
-          "metacentric_height_m, hunting_speed_m_s, max_nmv, dynamic_deflection_ratio")
+          "One row per variant: index, name, parameters, ok, failure, mode_count, lowest_critical_speed_m_s "
+          "(m/s), metacentric_height_m (m), hunting_speed_m_s (m/s), max_nmv (dimensionless), "
+          "dynamic_deflection_ratio (deflection / permissible, dimensionless)")
       .def(
           "modes",
           [](const VariantResults& r) {
@@ -75,7 +76,8 @@ void bind_variant_results(py::module_& m) {
                                     py::arg("period_s") = s.period_s, py::arg("divergence_rate_1_s") = s.divergence_rate));
             });
           },
-          "One row per variant and mode")
+          "One row per variant and mode: index, variant, name, kind, frequency_hz (Hz), period_s (s), "
+          "divergence_rate_1_s (1/s)")
       .def(
           "critical_speeds",
           [](const VariantResults& r) {
@@ -87,7 +89,8 @@ void bind_variant_results(py::module_& m) {
                                     py::arg("mode_name") = c.mode_name, py::arg("friction_stops") = c.friction_stops));
             });
           },
-          "One row per variant and critical speed, ascending")
+          "One row per variant and critical speed, ascending: index, variant, speed_m_s (m/s), source, "
+          "source_kind, harmonic, mode_name, friction_stops")
       .def(
           "peaks",
           [](const VariantResults& r) {
@@ -99,7 +102,9 @@ void bind_variant_results(py::module_& m) {
                                     py::arg("unbounded") = p.unbounded));
             });
           },
-          "One row per variant, source and output: the largest response over the scene's speeds")
+          "One row per variant, source and output, the largest response over the scene's speeds: index, variant, "
+          "source, output, quantity, amplitude (the quantity's unit: m, m/s or m/s²; rad... for a rotation), "
+          "speed_m_s (m/s), unbounded")
       .def(
           "ride",
           [](const VariantResults& r) {
@@ -110,7 +115,8 @@ void bind_variant_results(py::module_& m) {
                                     py::arg("max_wz") = optional_value(s.max_wz), py::arg("unbounded") = s.unbounded));
             });
           },
-          "One row per variant and ride output (scenes with a [ride])")
+          "One row per variant and ride output (scenes with a [ride]): index, variant, output, unit (the output's: "
+          "m, m/s, m/s² or N), max_rms (unit, the largest over the speeds), max_wz (dimensionless), unbounded")
       .def(
           "deflections",
           [](const VariantResults& r) {
@@ -183,7 +189,8 @@ void bind_comparison(py::module_& m) {
             return out;
           },
           "One row per variant in rank order: the variant's figures (VariantResults.records), rank, feasible, "
-          "violations, objective and each objective criterion by its metric")
+          "violations, objective (the ranking's value: the criterion's SI unit, or weights × SI values when "
+          "weighted) and each objective criterion by its metric, in the metric's SI unit (metric_unit(name))")
       .def_property_readonly("results",
                              [](const Comparison& c) {
                                VariantResults out;

@@ -234,6 +234,7 @@ struct CriterionColumn {
   double per_si;  // the display unit per SI unit
   bool peak;      // +∞ is "unbounded" (a peak), not "none" (no critical speed)
   std::string metric;
+  int decimals;  // the table's (study::table_decimals)
 };
 
 // The columns of a comparison's table and CSV, worked out once per study: each criterion; each
@@ -248,7 +249,8 @@ struct Columns {
 };
 
 CriterionColumn column_of(const std::string& metric) {
-  return {study::display_unit(metric).per_si, study::infinite_is_unbounded(metric), metric};
+  return {study::display_unit(metric).per_si, study::infinite_is_unbounded(metric), metric,
+          study::table_decimals(metric)};
 }
 
 Columns columns_of(const Ranking& ranking, const DeflectionRule& rule) {
@@ -352,14 +354,14 @@ std::string criterion_heading(const RankingCriterion& c) {
 // maximised [s]" (the unit last, as in every table heading); CSV keeps the metric's name
 // (criterion_heading).
 std::string criterion_title(const RankingCriterion& c) {
-  return study::title(c.metric) + (c.maximise ? ", maximised" : ", minimised") + study::unit_bracket(c.metric);
+  return study::title(c.metric) + (c.maximise ? ", maximised" : ", minimised") + study::table_unit_bracket(c.metric);
 }
 
-// The worst dynamic deflection against the permissible one, in words, to one decimal: "33.0 %
-// of permissible (within)", "130.2 % of permissible (exceeds)".
+// The worst dynamic deflection against the permissible one, in % of it (the heading says so) to
+// one decimal, and the verdict: "33.0 (within)", "130.2 (exceeds)".
 std::string deflection_verdict(double ratio) {
   if (std::isinf(ratio)) return "unbounded (exceeds)";
-  return number(100.0 * ratio, std::chars_format::fixed, 1) + " % of permissible" + (ratio <= 1.0 ? " (within)" : " (exceeds)");
+  return number(100.0 * ratio, std::chars_format::fixed, 1) + (ratio <= 1.0 ? " (within)" : " (exceeds)");
 }
 
 // The header: the table's names for people, the CSV's for programs (metric names, units in
@@ -371,12 +373,12 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
   const Columns columns = columns_of(c.ranking, c.deflection_rule);
   for (const CriterionColumn& k : columns.constrained) {
     const std::string unit = study::display_unit(k.metric).unit;
-    head.push_back(for_csv ? report::csv_heading(k.metric, unit) : study::heading(k.metric));
+    head.push_back(for_csv ? report::csv_heading(k.metric, unit) : study::title(k.metric) + study::table_unit_bracket(k.metric));
   }
   if (!for_csv) {
     if (columns.critical_speeds) head.push_back("lowest critical speed [km/h]");
     head.push_back("static deflection [mm]");
-    if (columns.deflections) head.push_back("largest dynamic deflection");
+    if (columns.deflections) head.push_back("largest dynamic deflection [% of permissible]");
     head.push_back("periods [s]");
     return head;
   }
@@ -394,7 +396,12 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
 std::string shown_value(const CriterionColumn& k, const std::optional<double>& x) {
   if (!x) return "-";
   if (std::isinf(*x) && *x > 0) return k.peak ? "unbounded" : "none";  // no critical speed in range
-  return number(*x * k.per_si, std::chars_format::general, 4);
+  const double shown = *x * k.per_si;
+  // Fixed decimals, so that a column's figures align at the point and differ by what matters;
+  // a figure too small to show two significant digits that way gets two (a peak of 0.004 m/s²
+  // is not "0.000").
+  if (shown != 0.0 && std::abs(shown) < std::pow(10.0, 1 - k.decimals)) return number(shown, std::chars_format::general, 2);
+  return number(shown, std::chars_format::fixed, k.decimals);
 }
 
 std::vector<std::string> table_row(const Columns& columns, const RankedVariant& v) {

@@ -542,9 +542,29 @@ report::Chart damping_chart(const HuntingResult& r) {
   return c;
 }
 
+// The vehicle's own equivalent conicities (its wheelsets', as used: the root locus and the
+// critical speed above are at them), each once, in increasing order.
+std::vector<double> own_conicities(const HuntingResult& r) {
+  std::vector<double> out;
+  for (const ResolvedContact& c : r.contacts) out.push_back(c.conicity);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// The wheelsets whose conicity is λ, for the legend when they differ ("wheelset1, wheelset2").
+std::string wheelsets_at(const HuntingResult& r, double conicity) {
+  std::string out;
+  for (const ResolvedContact& c : r.contacts)
+    if (c.conicity == conicity) out += (out.empty() ? "" : ", ") + c.body;
+  return out;
+}
+
 // Critical speed against conicity: the design curve, with the conicities stable over the whole
 // range at the top of the range and those unstable at its lowest speed at the bottom (bounds,
-// not values: each in a series of its own).
+// not values: each in a series of its own), and the vehicle's own conicity marked as the speed
+// charts mark speeds (a vertical line, labelled), so that a reader sees where on the curve the
+// vehicle stands.
 report::Chart conicity_chart(const HuntingResult& r) {
   report::Chart c;
   c.id = "conicity";
@@ -555,6 +575,8 @@ report::Chart conicity_chart(const HuntingResult& r) {
   c.y_max = highest_speed(r) * kKmh * 1.08;
   double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
   for (const ConicityPoint& p : r.conicity_curve) lo = std::min(lo, p.conicity), hi = std::max(hi, p.conicity);
+  const std::vector<double> own = own_conicities(r);
+  for (double l : own) lo = std::min(lo, l), hi = std::max(hi, l);  // the mark always inside the axis
   const double margin = hi > lo ? 0.05 * (hi - lo) : 0.05;
   c.x_min = std::max(0.0, lo - margin);
   c.x_max = hi + margin;
@@ -577,6 +599,10 @@ report::Chart conicity_chart(const HuntingResult& r) {
       unstable.x.push_back(p.conicity), unstable.y.push_back(lowest_speed(r) * kKmh);
   }
   c.lines.push_back({"range top", highest_speed(r) * kKmh, false, ""});
+  for (double l : own)
+    c.lines.push_back({"vehicle λ = " + significant(l, 4), l, true,
+                       own.size() == 1 ? "the vehicle's own equivalent conicity (the root locus above is at it)"
+                                       : "the equivalent conicity of " + wheelsets_at(r, l)});
   c.series.push_back(curve);
   c.series.push_back(points);
   if (!stable.x.empty()) c.series.push_back(stable);

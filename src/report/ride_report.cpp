@@ -734,6 +734,33 @@ void write_csv(std::ostream& out, const RideResult& r) {
   }
 }
 
+// The spectra behind the RMS (write_ride_spectra): one row per speed and frequency of the grid,
+// long rather than wide so that another tool plots an output against frequency by filtering on
+// the speed column; the inputs' PSDs first, then the outputs', each heading with its unit²/Hz.
+// A value not there (an unbounded output's, or a spectrum not kept) is a blank field.
+void write_spectra_csv(std::ostream& out, const RideResult& r) {
+  using report::csv_heading;
+  report::CsvWriter csv(out);
+  csv.field(csv_heading("speed", "km/h")).field(csv_heading("frequency", "Hz"));
+  const size_t inputs = r.speeds.empty() ? r.inputs.size() : r.speeds.front().input_psd.size();
+  for (size_t k = 0; k < inputs; ++k) csv.field(csv_heading(input_name(r, k) + " input psd", "m²/Hz"));
+  for (const RideOutput& o : r.outputs) csv.field(csv_heading(o.name + " psd", psd_unit(unit_of(o))));
+  csv.end_row();
+  const Eigen::Index n = r.frequencies.size();
+  for (const RideAtSpeed& at : r.speeds)
+    for (Eigen::Index b = 0; b < n; ++b) {
+      finite_field(csv, kmh_value(at.speed));
+      csv.field(r.frequencies[b]);
+      for (size_t k = 0; k < inputs; ++k)
+        k < at.input_psd.size() && at.input_psd[k].size() == n ? finite_field(csv, at.input_psd[k][b]) : void(csv.blank());
+      for (size_t i = 0; i < r.outputs.size(); ++i) {
+        const bool kept = i < at.outputs.size() && !at.outputs[i].unbounded && at.outputs[i].psd.size() == n;
+        kept ? finite_field(csv, at.outputs[i].psd[b]) : void(csv.blank());
+      }
+      csv.end_row();
+    }
+}
+
 // Every inner object's members in the alphabetical order nlohmann::json's std::map gave them
 // (the names' prefixes fix the order whatever the unit suffix); a number that is not finite is
 // null (JsonWriter).
@@ -910,5 +937,7 @@ void write_ride(std::ostream& out, const RideResult& result, OutputFormat format
       format, "write_ride", [&] { write_text(out, page); }, [&] { write_csv(out, result); },
       [&] { write_json(out, page); }, [&] { write_markdown(out, page); }, [&] { write_html(out, page); });
 }
+
+void write_ride_spectra(std::ostream& out, const RideResult& result) { write_spectra_csv(out, result); }
 
 }  // namespace railmodal

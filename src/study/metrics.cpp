@@ -283,6 +283,27 @@ std::string unit_bracket(const std::string& metric) {
 
 std::string heading(const std::string& metric) { return title(metric) + unit_bracket(metric); }
 
+std::string table_unit_bracket(const std::string& metric) {
+  const std::string bracket = unit_bracket(metric);
+  return bracket.empty() ? " [–]" : bracket;
+}
+
+int table_decimals(const std::string& name) {
+  const std::string_view metric = canonical(name);
+  if (is_vehicle_speed(metric)) return 1;                     // km/h, as the lowest critical speed column
+  if (starts_with(metric, "period:")) return 3;               // s, as the periods column
+  if (starts_with(metric, "dynamic_deflection_ratio")) return 3;
+  if (metric == "max_wz" || metric == "max_nmv") return 2;  // Wz's and N_MV's scales step by 0.5 and 1
+  const std::string_view unit = display_unit(name).unit;
+  std::string_view dof, quantity;
+  const bool response = rms_metric(metric) || split_peak(metric, &dof, &quantity);
+  if (unit == "mm") return response ? 2 : 1;  // a vibration's mm against a static deflection's tens
+  if (unit == "N") return 0;
+  if (unit == "m/s" || unit == "rad/s") return 4;
+  if (unit == "rad") return 5;
+  return 3;  // m/s², rad/s²
+}
+
 std::string shown(const std::string& metric, double si, int digits) {
   if (std::isinf(si) && si > 0) return infinite_is_unbounded(metric) ? "unbounded" : "none";
   const DisplayUnit u = display_unit(metric);

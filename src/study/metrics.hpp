@@ -39,6 +39,15 @@ std::string heading(const std::string& metric);
 /// The display unit as table headings write it, " [s]", or "" for a ratio.
 std::string unit_bracket(const std::string& metric);
 
+/// The decimals a table shows the metric with, in its display unit: one step a reader can
+/// act on, the same for every row so that a column's figures align at the point (km/h to 0.1,
+/// periods to 1 ms, ratios to 0.001, Wz and N_MV to 0.01, ...). CSV and JSON keep every digit.
+int table_decimals(const std::string& metric);
+
+/// The display unit as a table heading writes it, " [s]", or " [–]" for a ratio or an index
+/// (Wz, N_MV): every figure column says what it is in.
+std::string table_unit_bracket(const std::string& metric);
+
 /// A value with its display unit, "80 mm", "0.47", or "unbounded" / "none" for +∞, to
 /// `digits` significant digits (6 for programs, 4 for people).
 std::string shown(const std::string& metric, double si, int digits = 6);

@@ -138,6 +138,39 @@ TEST(HuntingReport, ConicityCurveGivesBoundsNotValuesOutsideTheRange) {
   EXPECT_TRUE(has(html, "Linear critical speed against equivalent conicity")) << html.substr(0, 400);
 }
 
+// The conicity chart of an HTML page: from its heading to the end of its SVG.
+std::string conicity_chart_of(const std::string& html) {
+  const size_t from = html.find("<h2>Critical speed against conicity</h2>");
+  if (from == std::string::npos) return "";
+  return html.substr(from, html.find("</svg>", from) - from);
+}
+
+// The vehicle's own conicity is marked on the design curve as the speed charts mark speeds: a
+// labelled vertical line, listed in the legend, inside the axis even when the curve's
+// conicities do not reach it (the label is drawn only for a line within the plot).
+TEST(HuntingReport, ConicityChartMarksTheVehiclesOwnConicity) {
+  HuntingResult r = test::conicity_result();  // its wheelset at λ = 0.2, inside the curve's 0.05–0.4
+  std::string chart = conicity_chart_of(written(r, OutputFormat::html));
+  ASSERT_FALSE(chart.empty());
+  EXPECT_TRUE(has(chart, ">vehicle λ = 0.2</text>")) << chart;
+  EXPECT_TRUE(has(chart, "the vehicle's own equivalent conicity")) << chart;
+  // Outside the curve's conicities: the axis widens to show it.
+  r.contacts = {test::hand_contact("wheelset1", 0.6)};
+  chart = conicity_chart_of(written(r, OutputFormat::html));
+  EXPECT_TRUE(has(chart, ">vehicle λ = 0.6</text>")) << chart;
+  // Wheelsets at different conicities: one line each, the legend naming the wheelsets.
+  r.contacts = {test::hand_contact("wheelset1", 0.15), test::hand_contact("wheelset2", 0.25),
+                test::hand_contact("wheelset3", 0.15)};
+  chart = conicity_chart_of(written(r, OutputFormat::html));
+  EXPECT_TRUE(has(chart, ">vehicle λ = 0.15</text>")) << chart;
+  EXPECT_TRUE(has(chart, ">vehicle λ = 0.25</text>")) << chart;
+  EXPECT_TRUE(has(chart, "the equivalent conicity of wheelset1, wheelset3")) << chart;
+  EXPECT_TRUE(has(chart, "the equivalent conicity of wheelset2")) << chart;
+  // Only the conicity chart carries the mark: the speed charts have no λ line.
+  const std::string html = written(test::conicity_result(), OutputFormat::html);
+  EXPECT_EQ(html.find("vehicle λ"), html.find("vehicle λ", html.find("<h2>Critical speed against conicity</h2>")));
+}
+
 TEST(HuntingReport, ZeroConicityWritesNoInfinity) {
   const HuntingResult r = test::zero_conicity_result();
   for (OutputFormat f :

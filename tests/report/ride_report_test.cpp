@@ -140,6 +140,54 @@ TEST(RideReport, CsvHasUnitsInItsHeadsAndOneRowPerSpeed) {
   EXPECT_EQ(fields(row2), fields(head));
 }
 
+// The fields of a CSV line (RFC 4180 quotes: a quoted comma is inside its field).
+std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) out.emplace_back();
+    else out.back() += c;
+  }
+  return out;
+}
+
+// --spectra: the PSDs behind the RMS, one row per speed and frequency, every number as the
+// result holds it (read back equal: the CSV is for programs), the unbounded output's blank.
+TEST(RideReport, SpectraCsvHasEveryPsdAgainstFrequencyWithItsUnit) {
+  RideResult r = hand_built();
+  for (RideAtSpeed& at : r.speeds) {  // values that differ bin by bin and speed by speed
+    at.input_psd[0] = Eigen::VectorXd::LinSpaced(5, 1e-6, 3e-7) * at.speed;
+    at.outputs[0].psd = Eigen::VectorXd::LinSpaced(5, 1e-3, 7e-2) / 3.0 * at.speed;
+    at.outputs[1].psd = Eigen::VectorXd::LinSpaced(5, 10.0, 1.0) * at.speed;
+  }
+  std::ostringstream out;
+  write_ride_spectra(out, r);
+  std::istringstream in(out.str());
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(csv_fields(line), (std::vector<std::string>{"speed [km/h]", "frequency [Hz]",
+                                                        "ORE B176 low, vertical level input psd [m²/Hz]",
+                                                        "floor over bogie 1, vertical psd [(m/s²)²/Hz]",
+                                                        "secondary spring force psd [N²/Hz]"}))
+      << line;
+  size_t rows = 0;
+  for (const RideAtSpeed& at : r.speeds)
+    for (Eigen::Index b = 0; b < r.frequencies.size(); ++b, ++rows) {
+      ASSERT_TRUE(std::getline(in, line));
+      const std::vector<std::string> f = csv_fields(line);
+      ASSERT_EQ(f.size(), 5u) << line;
+      EXPECT_NEAR(std::stod(f[0]), at.speed * 3.6, 1e-9) << line;  // km/h, to the written digits
+      EXPECT_EQ(std::stod(f[1]), r.frequencies[b]);
+      EXPECT_EQ(std::stod(f[2]), at.input_psd[0][b]);
+      EXPECT_EQ(std::stod(f[3]), at.outputs[0].psd[b]);
+      if (at.outputs[1].unbounded) EXPECT_EQ(f[4], "") << line;
+      else EXPECT_EQ(std::stod(f[4]), at.outputs[1].psd[b]);
+    }
+  EXPECT_EQ(rows, 10u);
+  EXPECT_FALSE(std::getline(in, line)) << line;
+}
+
 size_t occurrences(const std::string& text, const std::string& part) {
   size_t n = 0;
   for (size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;

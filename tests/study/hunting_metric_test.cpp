@@ -124,7 +124,7 @@ TEST(HuntingMetric, NanIsNoValueInEveryFormat) {
       EXPECT_EQ(row[criterion], "-");
       ++seen;
     } else if (row[1] == "a") {
-      EXPECT_EQ(row[criterion], "200");
+      EXPECT_EQ(row[criterion], "200.0");
       ++seen;
     }
   }
@@ -191,6 +191,31 @@ TEST(HuntingMetric, ShardsCarryItExactly) {
   std::ostringstream without;
   write_shard(without, s, {}, {hunting(0, "base", std::nullopt)});
   EXPECT_EQ(without.str().find("hunting_speed"), std::string::npos);
+}
+
+// The table's figures of a criterion have one number of decimals, the metric's (0.1 km/h): the
+// user audit of 2026-11-27 read "353", "348.6", "345" down one column. A figure too small for
+// them keeps two significant digits; the CSV keeps every digit of the same numbers.
+TEST(HuntingMetric, TableFiguresOfACriterionShareTheirDecimalsAndTheCsvKeepsEveryDigit) {
+  const std::vector<std::pair<const char*, double>> kmh{
+      {"a", 353.0}, {"b", 348.6123}, {"c", 345.04}, {"d", 99.96}, {"e", 0.004}};
+  Study s = hand_study({"a", "b", "c", "d", "e"});
+  s.ranking.objective.push_back({"hunting_speed", true, 1.0, {}});
+  std::vector<VariantResult> results;
+  for (const auto& [name, speed] : kmh) results.push_back(hunting(static_cast<int>(results.size()), name, speed / 3.6));
+  const Comparison c = rank_variants(s, results);
+  const std::map<std::string, std::string> shown{
+      {"a", "353.0"}, {"b", "348.6"}, {"c", "345.0"}, {"d", "100.0"}, {"e", "0.004"}};
+  size_t seen = 0;
+  for (const auto& row : report::comparison_rows(c))
+    if (shown.count(row[1])) {
+      EXPECT_EQ(row[3], shown.at(row[1])) << row[1];
+      ++seen;
+    }
+  EXPECT_EQ(seen, kmh.size());
+  std::ostringstream csv;
+  write_comparison(csv, c, OutputFormat::csv);
+  EXPECT_NE(csv.str().find(",348.612"), std::string::npos) << csv.str();  // the digits the table leaves out
 }
 
 }  // namespace

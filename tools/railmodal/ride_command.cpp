@@ -1,5 +1,5 @@
 // railmodal ride SCENE [--vehicle VEHICLE] [--speeds "100 km/h:200 km/h:20 km/h"] [--threads N] [--rms-only]
-//                      [--format table|csv|json|markdown|html] [-o OUT]
+//                      [--format table|csv|json|markdown|html] [-o OUT] [--spectra SPECTRA.csv]
 #include <iostream>
 #include <memory>
 
@@ -22,6 +22,7 @@ struct RideCommandOptions {
   bool rms_only = false;  // RideOptions::rms_only
   std::string format;  // "": from the output file's extension, else table
   std::string output = "-";
+  std::string spectra;  // also the input and output PSDs, as CSV, to this file ("": not asked)
 };
 
 // --speeds, read before any file (a usage error, exit 2); empty: not given.
@@ -133,6 +134,7 @@ int run(const RideCommandOptions& o) {
   try {
     OutputFiles files;
     std::ostream& out = files.open(o.output);
+    std::ostream* spectra = o.spectra.empty() ? nullptr : &files.open(o.spectra);
     Scene scene = load_scene(o.scene);
     if (!scene.irregularity) {
       std::cerr << o.scene << ": error: the scene has no [[source]] with kind = \"irregularity\": the ride is the "
@@ -148,6 +150,9 @@ int run(const RideCommandOptions& o) {
       return usage_error("ride", "--rms-only: " + o.scene + " runs the time domain ([ride.simulation]), whose " +
                                      "indices come from its simulated histories, not from the spectral solve the " +
                                      "option shortens: run it without --rms-only");
+    if (spectra && !has_spectra(*scene.irregularity))
+      return usage_error("ride", "--spectra: " + o.scene + " gives measured geometry alone, whose ride is its " +
+                                     "time-domain run: there are no spectra to write");
     const RideOptions options = ride_options(scene, speeds, o);
     const std::vector<std::string> inputs{o.scene, scene.vehicle_file,
                                           scene.ride ? scene.ride->geometry_file : std::string()};
@@ -185,6 +190,7 @@ int run(const RideCommandOptions& o) {
     write_ride(out, result, format, title, provenance_of(provenance_files),
                time_domain ? &time_domain->simulated : nullptr,
                time_domain && time_domain->checks ? &*time_domain->checks : nullptr);
+    if (spectra) write_ride_spectra(*spectra, result);
     files.commit();
     return ride_exit(o.scene, result);
   } catch (...) {
@@ -219,6 +225,10 @@ std::function<int()> add_ride_command(CLI::App& app) {
       ->check(CLI::IsMember(kRideFormats));
   cmd->add_option("-o,--output", options->output, "Output file (written whole or not at all); - for stdout")
       ->capture_default_str();
+  cmd->add_option("--spectra", options->spectra,
+                  "Also write the spectra behind the RMS to this file, always CSV: one row per speed and frequency, "
+                  "the track inputs' PSDs [m²/Hz] and each output's [unit²/Hz] against frequency [Hz], for plotting "
+                  "in another tool");
   add_quiet_flag(*cmd, nullptr);
   return [options, speeds] {
     options->speeds_given = speeds->count() > 0;
