@@ -233,7 +233,9 @@ py::dict hold_dict(const HeldCriticalSpeed& h) {
                           py::arg("start_amplitude_m") = s.start_amplitude, py::arg("end_amplitude_m") = s.end_amplitude,
                           py::arg("periods") = s.periods, py::arg("steps") = s.steps,
                           py::arg("undecided") = s.undecided, py::arg("rate_per_period") = s.rate_per_period,
-                          py::arg("rate_error") = s.rate_error));
+                          py::arg("rate_error") = s.rate_error,
+                          py::arg("rate_change_per_period") = s.rate_change_per_period,
+                          py::arg("rate_change_error") = s.rate_change_error));
   return py::dict(py::arg("lowest_surviving_m_s") = optional_value(h.lowest_surviving),
                   py::arg("highest_dying_m_s") = optional_value(h.highest_dying),
                   py::arg("doubled_hold_survives") = h.doubled_hold_survives, py::arg("holds") = holds,
