@@ -83,6 +83,10 @@ struct UnstableInterval {
   /// The branch whose ζ is below 0 there, by its name (HuntingBranch::name); a root real at
   /// every speed (no branch) by its group's name, "… (real root)" or a series damper's relaxation.
   std::string branch;
+  /// A root real at every speed, positive here: growth without oscillation (a divergence), not a
+  /// branch. It holds over the whole range or nowhere (λ = 0 needs a singular stiffness, which
+  /// does not depend on the speed), so its ends are the grid's.
+  bool divergence = false;
 };
 
 /// The linear critical speed: where the least-damped branch's ζ crosses 0 from stable below.
@@ -135,9 +139,9 @@ struct HuntingResult {
   HuntingVerdict verdict = HuntingVerdict::stable_throughout;
   std::optional<HuntingCriticalSpeed> critical;
   /// Every branch's unstable intervals, each end where that branch's ζ crosses 0 (refined), in
-  /// order of their lower ends (ties in the order of `branches`); the least-damped root's
-  /// intervals held by no branch (a real root's) too. The critical speed is the lowest end of
-  /// the least-damped root's, which is one of these.
+  /// order of their lower ends (ties in the order of `branches`); every divergence of a root real
+  /// at every speed too (UnstableInterval::divergence), each after the branches at its lower end.
+  /// The critical speed is the lowest end of the least-damped root's, which is one of these.
   std::vector<UnstableInterval> unstable_intervals;
   /// HuntingOptions::damping_threshold as asked (none: not asked), for the reports.
   std::optional<double> damping_threshold;

@@ -147,7 +147,8 @@ void bind_hunting(py::module_& m) {
                                                      py::arg("from_lowest_speed") = u.from_lowest_speed,
                                                      py::arg("to_highest_speed") = u.to_highest_speed,
                                                      py::arg("branch") = u.branch,
-                                                     py::arg("branch_number") = branch_number(r, u.branch)));
+                                                     py::arg("branch_number") = branch_number(r, u.branch),
+                                                     py::arg("divergence") = u.divergence));
                                return out;
                              },
                              "records, one per branch and interval, in order of their lower ends; branch_number "

@@ -140,13 +140,18 @@ std::string verdict_text(const HuntingResult& r) {
   return "";
 }
 
+// What is unstable over an interval: its branch by number and name, or a real root's divergence.
+std::string interval_cause(const HuntingResult& r, const UnstableInterval& u) {
+  return u.divergence ? "divergence, " + u.branch : cited_branch(r, u.branch);
+}
+
 // One unstable interval, its open ends said, its branch by number and name.
 std::string interval_text(const HuntingResult& r, const UnstableInterval& u) {
   const std::string from = u.from_lowest_speed ? "unstable at the lowest speed, " + kmh(u.from)
                                                : "from " + fixed(u.from * kKmh, 2) + " km/h";
   const std::string to =
       u.to_highest_speed ? "still unstable at the highest, " + kmh(u.to) : "to " + fixed(u.to * kKmh, 2) + " km/h";
-  return from + ", " + to + " (" + cited_branch(r, u.branch) + ")";
+  return from + ", " + to + " (" + interval_cause(r, u) + ")";
 }
 
 // The branches already at or below the threshold at the lowest speed, each with its ζ there:
@@ -224,7 +229,7 @@ Table intervals_table(const HuntingResult& r) {
     t.rows.push_back(
         {u.from_lowest_speed ? fixed(u.from * kKmh, 2) + " (unstable at the lowest speed)" : fixed(u.from * kKmh, 2),
          u.to_highest_speed ? fixed(u.to * kKmh, 2) + " (still unstable at the highest)" : fixed(u.to * kKmh, 2),
-         cited_branch(r, u.branch)});
+         interval_cause(r, u)});
   return t;
 }
 
@@ -764,7 +769,7 @@ void write_json(std::ostream& out, const Page& p) {
     for (const UnstableInterval& u : r.unstable_intervals) {
       j.begin_object().member("branch", u.branch);
       write_branch_number(j, r, u.branch);
-      j.member("from_kmh", u.from * kKmh)
+      j.member("divergence", u.divergence).member("from_kmh", u.from * kKmh)
           .member("from_lowest_speed", u.from_lowest_speed).member("from_m_s", u.from)
           .member("to_highest_speed", u.to_highest_speed).member("to_kmh", u.to * kKmh).member("to_m_s", u.to)
           .end_object();

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -253,12 +254,52 @@ std::vector<ScannedInterval> branch_intervals(const FirstOrderSystem& fos, const
   return unstable_intervals(speeds, b.damping_ratio, zeta_at, relative_tolerance, evaluations);
 }
 
+// The divergences: for each group of roots real at every speed (no branch), the runs of grid
+// speeds where one of them is positive (ζ < 0 and not rigid-body), named after the group. A real
+// root changes sign only through λ = 0, and λ = 0 is a root of the state matrix exactly when the
+// stiffness K is singular (A·x = 0 forces the velocities, then the series dampers' states, to 0,
+// leaving K·x = 0): K does not depend on the speed, so a divergence holds at every speed of the
+// range or at none, and its ends are the grid's. Every group is looked at, not only the least
+// damped root: with two divergent groups (ζ = −1 both) the least-damped search names only one.
+std::vector<UnstableInterval> divergences(const SolvedGrid& grid, const Branches& branches,
+                                          const std::vector<HuntingBranch>& all, const std::vector<double>& speeds) {
+  std::vector<std::string> groups;
+  for (const std::vector<std::string>& names : branches.name_of_root)
+    for (const std::string& name : names)
+      if (std::none_of(all.begin(), all.end(), [&](const HuntingBranch& b) { return b.name == name; }) &&
+          std::find(groups.begin(), groups.end(), name) == groups.end())
+        groups.push_back(name);
+  std::vector<UnstableInterval> out;
+  const size_t ns = speeds.size();
+  for (const std::string& group : groups) {
+    std::optional<size_t> first;
+    for (size_t s = 0; s <= ns; ++s) {
+      bool diverges = false;
+      if (s < ns) {
+        const Eigen::VectorXcd& values = grid.roots[s].values;
+        const double scale = root_scale(values);
+        for (Eigen::Index i = 0; i < values.size(); ++i) {
+          if (branches.name_of_root[s][static_cast<size_t>(i)] != group) continue;
+          const RootDamping d = root_damping(values(i), scale);
+          diverges = diverges || (!d.rigid && d.zeta < 0.0);
+        }
+      }
+      if (diverges && !first) first = s;
+      if (!diverges && first) {
+        out.push_back({speeds[*first], speeds[s - 1], *first == 0, s == ns, group, true});
+        first.reset();
+      }
+    }
+  }
+  return out;
+}
+
 // The verdict, the critical speed (the least-damped root's first crossing) and the unstable
 // intervals: each oscillatory branch's own (docs/stability.md: every unstable interval, its ends
 // where ζ of its branch crosses 0, so that a branch going unstable while another already is
-// still shows: the coach's second hunting branch, user audit 2026-11-27b, 1.3), and the
-// least-damped root's intervals held by no branch (a real root's), named after its group.
-// Returns the eigen-solves the refinements took.
+// still shows: the coach's second hunting branch, user audit 2026-11-27b, 1.3), and every
+// divergence of a real root (divergences), named after its group. Returns the eigen-solves the
+// refinements took.
 int stability_over_speed(const LinearSystem& system, const FirstOrderSystem& fos, const SolvedGrid& grid,
                          const Branches& branches, const std::vector<double>& zeta, double wavelength,
                          double bogie_wavelength, const HuntingOptions& options, HuntingResult* result) {
@@ -277,13 +318,12 @@ int stability_over_speed(const LinearSystem& system, const FirstOrderSystem& fos
   for (size_t k = 0; k < all.size(); ++k)
     for (const ScannedInterval& i : branch_intervals(fos, all[k], result->speeds, options.relative_tolerance, &evaluations))
       listed.push_back({named(i, all[k].name), k});
+  for (const UnstableInterval& i : divergences(grid, branches, all, result->speeds)) listed.push_back({i, all.size()});
   std::string critical_branch;
-  for (const ScannedInterval& i : own.intervals) {
-    const int at = least_damped(grid.roots[i.grid_index].values).root;
-    const std::string name = at >= 0 ? branches.name_of_root[i.grid_index][at] : std::string();
-    if (critical_branch.empty()) critical_branch = name;
-    const bool a_branch = std::any_of(all.begin(), all.end(), [&](const HuntingBranch& b) { return b.name == name; });
-    if (!a_branch) listed.push_back({named(i, name), all.size()});
+  if (!own.intervals.empty()) {
+    const size_t s = own.intervals.front().grid_index;
+    const int at = least_damped(grid.roots[s].values).root;
+    if (at >= 0) critical_branch = branches.name_of_root[s][static_cast<size_t>(at)];
   }
   std::stable_sort(listed.begin(), listed.end(), [](const Listed& a, const Listed& b) {
     return a.interval.from != b.interval.from ? a.interval.from < b.interval.from : a.branch < b.branch;
