@@ -105,11 +105,13 @@ struct HuntingCriticalSpeed {
   std::string motion;
   double frequency_hz = 0.0;   ///< the hunting frequency there
   double klingel_frequency_hz = 0.0;  ///< V/Λ of the wheelsets' kinematic wavelength Λ
-  /// V/Λ_b of a rigid bogie's kinematic wavelength Λ_b = 2π√((r0·l0/λ)(1 + a²f22/(l0²f11))),
-  /// a its half wheelbase (docs/stability.md, "The equations of motion"): the frequency a
-  /// bogie's hunting is compared with. The shortest Λ_b of the vehicle's bogies; 0 for a
-  /// vehicle without bogies (fewer than two bodies each carrying two or more wheelsets).
+  /// V/Λ_b of a rigid bogie's kinematic wavelength Λ_b = 2π√((r0·l0/λ)(1 + ā²f22/(l0²f11))),
+  /// ā² = Σ(x_i − x̄)²/N over its N axles (a², a the half wheelbase, for two; docs/stability.md,
+  /// "The equations of motion"): the frequency a bogie's hunting is compared with. That of
+  /// `bogie`, the body carrying two or more wheelsets (a bogie, or a two-axle wagon's body)
+  /// whose wheelsets move most in the unstable mode; 0 for a vehicle without one.
   double bogie_frequency_hz = 0.0;
+  std::string bogie;  ///< the body whose V/Λ_b bogie_frequency_hz is ("" when it is 0)
   int evaluations = 0;         ///< eigen-solves the refinement took
 };
 

@@ -27,6 +27,7 @@ py::object critical_dict(const std::optional<HuntingCriticalSpeed>& c) {
                   py::arg("frequency_hz") = c->frequency_hz, py::arg("klingel_frequency_hz") = c->klingel_frequency_hz,
                   py::arg("bogie_frequency_hz") =
                       c->bogie_frequency_hz > 0.0 ? py::object(py::float_(c->bogie_frequency_hz)) : py::none(),
+                  py::arg("bogie") = c->bogie_frequency_hz > 0.0 ? py::object(py::str(c->bogie)) : py::none(),
                   py::arg("evaluations") = c->evaluations);
 }
 
@@ -138,7 +139,7 @@ void bind_hunting(py::module_& m) {
       .def_property_readonly("verdict", [](const HuntingResult& r) { return std::string(to_string(r.verdict)); })
       .def_property_readonly("critical", [](const HuntingResult& r) { return critical_dict(r.critical); },
                              "the linear critical speed as a dict (speed_m_s, branch, motion, frequency_hz, "
-                             "klingel_frequency_hz, evaluations), or None")
+                             "klingel_frequency_hz, bogie_frequency_hz, bogie, evaluations), or None")
       .def_property_readonly("unstable_intervals",
                              [](const HuntingResult& r) {
                                py::list out;

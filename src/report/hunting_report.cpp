@@ -100,10 +100,13 @@ std::string cited_branch(const HuntingResult& r, const std::string& name) {
 }
 
 // The frequencies a hunting frequency is held against: Klingel's V/Λ of a free wheelset, and for
-// a vehicle on bogies the rigid bogie's V/Λ_b (HuntingCriticalSpeed::bogie_frequency_hz).
+// a vehicle on bogies the rigid bogie's V/Λ_b of the bogie that carries the hunting
+// (HuntingCriticalSpeed::bogie_frequency_hz, ::bogie).
 std::string kinematic_frequencies(const HuntingCriticalSpeed& c) {
   return "Klingel's V/Λ there: " + fixed(c.klingel_frequency_hz, 3) + " Hz" +
-         (c.bogie_frequency_hz > 0.0 ? "; a rigid bogie's V/Λ_b: " + fixed(c.bogie_frequency_hz, 3) + " Hz" : "");
+         (c.bogie_frequency_hz > 0.0
+              ? "; V/Λ_b of '" + c.bogie + "' as a rigid bogie: " + fixed(c.bogie_frequency_hz, 3) + " Hz"
+              : "");
 }
 
 // "#2 'name'", or 'name' when no branch has it: the branch in a sentence.
@@ -209,7 +212,7 @@ Table verdict_table(const HuntingResult& r) {
     t.rows.push_back({"hunting frequency", fixed(c.frequency_hz, 3) + " Hz"});
     t.rows.push_back({"Klingel's V/Λ at that speed", fixed(c.klingel_frequency_hz, 3) + " Hz"});
     if (c.bogie_frequency_hz > 0.0)
-      t.rows.push_back({"a rigid bogie's V/Λ_b at that speed", fixed(c.bogie_frequency_hz, 3) + " Hz"});
+      t.rows.push_back({"V/Λ_b of '" + c.bogie + "' as a rigid bogie", fixed(c.bogie_frequency_hz, 3) + " Hz"});
     t.rows.push_back({"eigen-solves of the refinement", std::to_string(c.evaluations)});
   }
   if (r.damping_threshold) {
@@ -710,8 +713,13 @@ void write_critical(JsonWriter& j, const std::optional<HuntingCriticalSpeed>& c,
     j.value(nullptr);
     return;
   }
-  j.begin_object().member("bogie_frequency_hz", c->bogie_frequency_hz > 0.0 ? std::optional<double>(c->bogie_frequency_hz)
-                                                                          : std::optional<double>());
+  const bool bogie = c->bogie_frequency_hz > 0.0;
+  j.begin_object().key("bogie");
+  if (bogie)
+    j.value(c->bogie);
+  else
+    j.value(nullptr);
+  j.member("bogie_frequency_hz", bogie ? std::optional<double>(c->bogie_frequency_hz) : std::optional<double>());
   j.member("branch", c->branch);
   if (tracked) write_branch_number(j, *tracked, c->branch);
   j.member("evaluations", c->evaluations);
