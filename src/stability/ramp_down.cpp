@@ -294,7 +294,11 @@ double sampling_error(double omega, double h) {
 RateVerdict rate_verdict(const HoldRate& r) {
   if (!std::isfinite(r.rate.bound)) return RateVerdict::undecided;
   // A change of the rate toward the threshold may yet carry it across; one away from it cannot.
-  const bool toward_threshold = (r.change > 0.0) == (r.rate.per_period < -kHoldRate);
+  // Nor can a falling rate of an amplitude resolved to grow: near its branch a cycle's amplitude
+  // follows one first-order law, dA/dt = f(A) (averaging over the cycle), so a growing amplitude
+  // approaches a cycle (its rate tends to 0) or grows on; it does not turn to decay.
+  const bool growing = r.rate.per_period - r.rate.bound > 0.0;
+  const bool toward_threshold = (r.change > 0.0) == (r.rate.per_period < -kHoldRate) && !growing;
   if (!std::isfinite(r.change_bound) || (std::abs(r.change) > r.change_bound && toward_threshold))
     return RateVerdict::undecided;
   if (r.rate.per_period - r.rate.bound >= -kHoldRate) return RateVerdict::survives;

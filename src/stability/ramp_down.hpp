@@ -61,7 +61,8 @@ enum class RateVerdict { survives, dies, undecided };
 /// What a completed hold's rate says against −1e-4 per period: survives when the rate less its
 /// bound is at or above it, dies when the rate plus its bound is below it; undecided otherwise, or
 /// when the rate is still changing toward the threshold (|change| > change_bound in its
-/// direction), or when either bound is infinite.
+/// direction; not a growing amplitude's falling rate, which tends to a cycle's 0), or when either
+/// bound is infinite.
 RateVerdict rate_verdict(const HoldRate& rate);
 
 /// Holds `speed` from `start` for `periods` periods (counted as half cycles of the wheelset

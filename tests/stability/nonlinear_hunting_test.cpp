@@ -371,7 +371,8 @@ TEST(NonlinearHunting, HoldRateBoundCoversASamplingErrorTheFitAbsorbs) {
 // verdict from the rate alone: dies), but it rises by 4.8e-4 from the first half of the span to
 // the second, more than their bounds (3.2e-4): still changing, toward the threshold, so undecided.
 // The collapse that speeds up (the mirror image, the rate falling) changes away from the
-// threshold and dies; a steady decay at −3e-4 a period does not change and dies.
+// threshold and dies (−3.1e-3 a period, falling by 2.5e-3); a steady decay at −3e-4 a period does
+// not change and dies.
 TEST(NonlinearHunting, HoldRateStillChangingTowardTheThresholdIsUndecided) {
   const double delta = stability::sampling_error(2.0 * 3.14159265358979, 0.01);
   const stability::HoldRate settling = stability::hold_rate(peaks_of([](double k) { return 0.2 * std::exp(-k / 60.0); }), delta);
@@ -388,6 +389,13 @@ TEST(NonlinearHunting, HoldRateStillChangingTowardTheThresholdIsUndecided) {
   EXPECT_NEAR(steady.rate.per_period, -3e-4, 1e-12);  // exact data: the fit to round-off
   EXPECT_LE(std::abs(steady.change), steady.change_bound);
   EXPECT_EQ(stability::rate_verdict(steady), stability::RateVerdict::dies);
+  // A growth that slows (approaching a cycle from below: 0.2·(1 − exp(−k/60))) falls toward the
+  // threshold but cannot cross it: it survives.
+  const stability::HoldRate approach =
+      stability::hold_rate(peaks_of([](double k) { return 0.2 * (1.0 - std::exp(-k / 60.0)); }), delta);
+  EXPECT_LT(approach.change, -approach.change_bound);
+  EXPECT_GT(approach.rate.per_period - approach.rate.bound, 0.0);
+  EXPECT_EQ(stability::rate_verdict(approach), stability::RateVerdict::survives);
   // Too few half cycles in the halves (9 peaks: a span of 4, halves of 2): undecided.
   EXPECT_EQ(stability::rate_verdict(stability::hold_rate(peaks_of([](double k) { return -0.01 * k; }, 9), delta)),
             stability::RateVerdict::undecided);
