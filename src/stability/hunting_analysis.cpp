@@ -291,7 +291,7 @@ std::vector<UnstableInterval> divergences(const SolvedGrid& grid, const Branches
   std::vector<UnstableInterval> out;
   const size_t ns = speeds.size();
   for (const std::string& group : groups) {
-    std::optional<size_t> first;
+    size_t first = ns;  // where the current run of divergent speeds began; ns: none open
     for (size_t s = 0; s <= ns; ++s) {
       bool diverges = false;
       if (s < ns) {
@@ -303,10 +303,10 @@ std::vector<UnstableInterval> divergences(const SolvedGrid& grid, const Branches
           diverges = diverges || (!d.rigid && d.zeta < 0.0);
         }
       }
-      if (diverges && !first) first = s;
-      if (!diverges && first) {
-        out.push_back({speeds[*first], speeds[s - 1], *first == 0, s == ns, group, true});
-        first.reset();
+      if (diverges && first == ns) first = s;
+      if (!diverges && first != ns) {
+        out.push_back({speeds[first], speeds[s - 1], first == 0, s == ns, group, true});
+        first = ns;
       }
     }
   }
