@@ -114,8 +114,9 @@ Study opened_study(const std::string& path, size_t max_variants, std::vector<std
 
 }  // namespace
 
-Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants) {
-  Study study = opened_study(path, max_variants);
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants,
+                 std::vector<std::string>* warnings) {
+  Study study = opened_study(path, max_variants, warnings);
   const detail::StudySource& source = *study.plan;
   std::map<std::string, Vehicle> plain_vehicles;  // files without changes, read once
   for (int i = 0; i < static_cast<int>(source.variants.size()); ++i) {
@@ -133,8 +134,9 @@ Study load_study(const std::string& path, const std::function<bool(int index)>& 
   return study;
 }
 
-Study load_study(const std::string& path, const std::function<bool(int index)>& read_only) {
-  return load_study(path, read_only, kMaxStudyVariants);
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only,
+                 std::vector<std::string>* warnings) {
+  return load_study(path, read_only, kMaxStudyVariants, warnings);
 }
 
 Study open_study(const std::string& path, std::vector<std::string>* warnings) {

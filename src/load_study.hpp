@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "railmodal/study.hpp"
 
@@ -13,7 +14,8 @@ namespace railmodal {
 
 /// railmodal::load_study, refusing a study of more than `max_variants` variants at the
 /// [[variant]] or [[sweep]] that goes over.
-Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants);
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants,
+                 std::vector<std::string>* warnings = nullptr);
 
 namespace detail {
 /// read_variant written into *variant, whose vehicle's storage is reused where it has the

@@ -83,6 +83,10 @@ struct UnstableInterval {
   /// The branch whose ζ is below 0 there, by its name (HuntingBranch::name); a root real at
   /// every speed (no branch) by its group's name, "… (real root)" or a series damper's relaxation.
   std::string branch;
+  /// A root real at every speed, positive here: growth without oscillation (a divergence), not a
+  /// branch. It holds over the whole range or nowhere (λ = 0 needs a singular stiffness, which
+  /// does not depend on the speed), so its ends are the grid's.
+  bool divergence = false;
 };
 
 /// The linear critical speed: where the least-damped branch's ζ crosses 0 from stable below.
@@ -101,11 +105,13 @@ struct HuntingCriticalSpeed {
   std::string motion;
   double frequency_hz = 0.0;   ///< the hunting frequency there
   double klingel_frequency_hz = 0.0;  ///< V/Λ of the wheelsets' kinematic wavelength Λ
-  /// V/Λ_b of a rigid bogie's kinematic wavelength Λ_b = 2π√((r0·l0/λ)(1 + a²f22/(l0²f11))),
-  /// a its half wheelbase (docs/stability.md, "The equations of motion"): the frequency a
-  /// bogie's hunting is compared with. The shortest Λ_b of the vehicle's bogies; 0 for a
-  /// vehicle without bogies (fewer than two bodies each carrying two or more wheelsets).
+  /// V/Λ_b of a rigid bogie's kinematic wavelength Λ_b = 2π√((r0·l0/λ)(1 + ā²f22/(l0²f11))),
+  /// ā² = Σ(x_i − x̄)²/N over its N axles (a², a the half wheelbase, for two; docs/stability.md,
+  /// "The equations of motion"): the frequency a bogie's hunting is compared with. That of
+  /// `bogie`, the body carrying two or more wheelsets (a bogie, or a two-axle wagon's body)
+  /// whose wheelsets move most in the unstable mode; 0 for a vehicle without one.
   double bogie_frequency_hz = 0.0;
+  std::string bogie;  ///< the body whose V/Λ_b bogie_frequency_hz is ("" when it is 0)
   int evaluations = 0;         ///< eigen-solves the refinement took
 };
 
@@ -135,9 +141,9 @@ struct HuntingResult {
   HuntingVerdict verdict = HuntingVerdict::stable_throughout;
   std::optional<HuntingCriticalSpeed> critical;
   /// Every branch's unstable intervals, each end where that branch's ζ crosses 0 (refined), in
-  /// order of their lower ends (ties in the order of `branches`); the least-damped root's
-  /// intervals held by no branch (a real root's) too. The critical speed is the lowest end of
-  /// the least-damped root's, which is one of these.
+  /// order of their lower ends (ties in the order of `branches`); every divergence of a root real
+  /// at every speed too (UnstableInterval::divergence), each after the branches at its lower end.
+  /// The critical speed is the lowest end of the least-damped root's, which is one of these.
   std::vector<UnstableInterval> unstable_intervals;
   /// HuntingOptions::damping_threshold as asked (none: not asked), for the reports.
   std::optional<double> damping_threshold;

@@ -143,20 +143,28 @@ struct SpeedHold {
   /// below half the start's amplitude and its amplitude's growth rate over the hold's second half
   /// is resolved at or above −1e-4 per period (rate_per_period − rate_error ≥ −1e-4: halving
   /// would take over 6900 periods). It dies when it fell below half the start, or the rate is
-  /// resolved below −1e-4. Neither: `undecided` (never counted as surviving).
+  /// resolved below −1e-4. Neither, or the rate still changing toward −1e-4 (rate_change_per_period
+  /// beyond rate_change_error, toward the threshold): `undecided` (never counted as surviving).
   bool survives = false;
   double start_amplitude = 0.0;  ///< m: the watched wheelset's amplitude in the start state
   double end_amplitude = 0.0;    ///< m: its last half cycle's amplitude
   int periods = 0;               ///< periods held (fewer when it died, or grew past the bound)
   int steps = 0;                 ///< accepted Runge–Kutta steps
   // Last, so that brace-initialised holds (the report tests') keep their meaning.
-  bool undecided = false;        ///< −1e-4 per period lies within rate_error of the rate
+  /// −1e-4 per period lies within rate_error of the rate, or the rate is still changing toward it
+  bool undecided = false;
   double rate_per_period = 0.0;  ///< 1/period: d ln(amplitude)/d(periods), fitted over the second half
-  /// 1/period: the most a wobble no larger than the largest residual can move the fitted rate
-  /// (the residuals are deterministic, not noise: no standard error). Not a bound on a drift the
-  /// fitted line absorbs (a settling still under way), which leaves no residual: that is why only
-  /// the hold's second half is fitted. Infinite when too few half cycles.
+  /// 1/period: the most the peaks' errors can move the fitted rate: a wobble no larger than the
+  /// largest residual, plus the peaks' sampling (a peak picked from steps of at most h is low by
+  /// up to δ = −ln cos(ωh/2) in ln A). Deterministic errors, not noise: no standard error. Not a
+  /// bound on a drift the fitted line absorbs (a settling still under way), which leaves no
+  /// residual: rate_change_per_period shows that. Infinite when too few half cycles.
   double rate_error = 0.0;
+  /// 1/period: the rate fitted over the second half of the fitted span less that over its first
+  /// half; beyond rate_change_error the rate is still changing (a settling not over).
+  double rate_change_per_period = 0.0;
+  /// 1/period: the sum of the two halves' bounds (as rate_error); infinite when too few half cycles.
+  double rate_change_error = 0.0;
 };
 
 /// The critical speed by holding the speed: the lowest speed at which a limit cycle started on the

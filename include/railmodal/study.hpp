@@ -148,7 +148,11 @@ inline bool in_shard(int index, int shard, int shards) { return index % shards =
 /// false): a shard reads its own share only, in its share of the time and memory (about 10 kB
 /// a read variant), and a bad override in another shard's variant is that shard's error.
 /// Names, sweeps and ranking are checked for the whole study either way.
-Study load_study(const std::string& path, const std::function<bool(int index)>& read_only = {});
+///
+/// `warnings`, when given, gets the warnings of the base vehicle file and of the scene as
+/// written, once (as open_study's).
+Study load_study(const std::string& path, const std::function<bool(int index)>& read_only = {},
+                 std::vector<std::string>* warnings = nullptr);
 
 /// Reads a study file and checks it as load_study does (names, sweeps, ranking, the vehicle
 /// files), but lists none of its variants: Study::variants stays empty and each variant is

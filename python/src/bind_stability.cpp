@@ -27,6 +27,7 @@ py::object critical_dict(const std::optional<HuntingCriticalSpeed>& c) {
                   py::arg("frequency_hz") = c->frequency_hz, py::arg("klingel_frequency_hz") = c->klingel_frequency_hz,
                   py::arg("bogie_frequency_hz") =
                       c->bogie_frequency_hz > 0.0 ? py::object(py::float_(c->bogie_frequency_hz)) : py::none(),
+                  py::arg("bogie") = c->bogie_frequency_hz > 0.0 ? py::object(py::str(c->bogie)) : py::none(),
                   py::arg("evaluations") = c->evaluations);
 }
 
@@ -137,8 +138,8 @@ void bind_hunting(py::module_& m) {
                              "per branch: some continuity fell below the threshold")
       .def_property_readonly("verdict", [](const HuntingResult& r) { return std::string(to_string(r.verdict)); })
       .def_property_readonly("critical", [](const HuntingResult& r) { return critical_dict(r.critical); },
-                             "the linear critical speed as a dict (speed_m_s, m/s; branch, motion, frequency_hz and "
-                             "klingel_frequency_hz, Hz; evaluations, a count), or None")
+                             "the linear critical speed as a dict (speed_m_s, m/s; branch, motion and bogie, names; "
+                             "frequency_hz, klingel_frequency_hz and bogie_frequency_hz, Hz; evaluations, a count), or None")
       .def_property_readonly("unstable_intervals",
                              [](const HuntingResult& r) {
                                py::list out;
@@ -147,7 +148,8 @@ void bind_hunting(py::module_& m) {
                                                      py::arg("from_lowest_speed") = u.from_lowest_speed,
                                                      py::arg("to_highest_speed") = u.to_highest_speed,
                                                      py::arg("branch") = u.branch,
-                                                     py::arg("branch_number") = branch_number(r, u.branch)));
+                                                     py::arg("branch_number") = branch_number(r, u.branch),
+                                                     py::arg("divergence") = u.divergence));
                                return out;
                              },
                              "records, one per branch and interval, in order of their lower ends; branch_number "
@@ -237,7 +239,9 @@ py::dict hold_dict(const HeldCriticalSpeed& h) {
                           py::arg("start_amplitude_m") = s.start_amplitude, py::arg("end_amplitude_m") = s.end_amplitude,
                           py::arg("periods") = s.periods, py::arg("steps") = s.steps,
                           py::arg("undecided") = s.undecided, py::arg("rate_per_period") = s.rate_per_period,
-                          py::arg("rate_error") = s.rate_error));
+                          py::arg("rate_error") = s.rate_error,
+                          py::arg("rate_change_per_period") = s.rate_change_per_period,
+                          py::arg("rate_change_error") = s.rate_change_error));
   return py::dict(py::arg("lowest_surviving_m_s") = optional_value(h.lowest_surviving),
                   py::arg("highest_dying_m_s") = optional_value(h.highest_dying),
                   py::arg("doubled_hold_survives") = h.doubled_hold_survives, py::arg("holds") = holds,

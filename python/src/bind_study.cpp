@@ -223,12 +223,19 @@ void bind_study_file(py::module_& m) {
       "load_study",
       [](const py::object& path, bool read_variants) {
         const std::string file = path_argument(path);
-        py::gil_scoped_release release;
-        if (read_variants) return std::make_shared<Study>(load_study(file));
-        return std::make_shared<Study>(load_study(file, [](int) { return false; }));
+        std::vector<std::string> warnings;
+        std::shared_ptr<Study> study;
+        {
+          py::gil_scoped_release release;
+          study = read_variants ? std::make_shared<Study>(load_study(file, {}, &warnings))
+                                : std::make_shared<Study>(load_study(file, [](int) { return false; }, &warnings));
+        }
+        warn_input(warnings);  // as load_vehicle's binding does: InputWarning, with the GIL held
+        return study;
       },
       py::arg("path"), py::kw_only(), py::arg("read_variants") = true,
-      "Reads a study file and every variant; InputError naming the study file, line, variant and key. "
+      "Reads a study file and every variant; InputError naming the study file, line, variant and key; "
+      "the base vehicle file's and the scene's warnings (as written, once) as InputWarning. "
       "read_variants=False names the variants without reading them: evaluate or compare them with "
       "read_in_workers=True, which reads each on the thread that evaluates it (a large study in little memory).");
   m.def(

@@ -296,9 +296,10 @@ void write_rule(JsonWriter& j, const BalanceStudy& study, const BalanceResult& b
   j.member("unbalanced_nosing_percent", b.percent_unbalanced_nosing).member("max_alpha", alpha);
   j.key("speed_at_alpha").begin_array();
   // JSON has no infinity: a speed that is never reached is null (JsonWriter).
-  for (double limit : kAlphaLimits)
-    j.begin_object().member("alpha", limit).member("speed_kmh", speed_at_alpha(alpha, b.speed, limit) * 3.6)
-        .end_object();
+  for (double limit : kAlphaLimits) {
+    const double speed = speed_at_alpha(alpha, b.speed, limit);
+    j.begin_object().member("alpha", limit).member("speed_kmh", speed * 3.6).member("speed_m_s", speed).end_object();
+  }
   j.end_array().key("surging_harmonics_n");
   write_harmonics(j, b.after.surging_harmonics);
   j.key("nosing_harmonics_n_m");

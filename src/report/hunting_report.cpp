@@ -100,10 +100,13 @@ std::string cited_branch(const HuntingResult& r, const std::string& name) {
 }
 
 // The frequencies a hunting frequency is held against: Klingel's V/Λ of a free wheelset, and for
-// a vehicle on bogies the rigid bogie's V/Λ_b (HuntingCriticalSpeed::bogie_frequency_hz).
+// a vehicle on bogies the rigid bogie's V/Λ_b of the bogie that carries the hunting
+// (HuntingCriticalSpeed::bogie_frequency_hz, ::bogie).
 std::string kinematic_frequencies(const HuntingCriticalSpeed& c) {
   return "Klingel's V/Λ there: " + fixed(c.klingel_frequency_hz, 3) + " Hz" +
-         (c.bogie_frequency_hz > 0.0 ? "; a rigid bogie's V/Λ_b: " + fixed(c.bogie_frequency_hz, 3) + " Hz" : "");
+         (c.bogie_frequency_hz > 0.0
+              ? "; V/Λ_b of '" + c.bogie + "' as a rigid bogie: " + fixed(c.bogie_frequency_hz, 3) + " Hz"
+              : "");
 }
 
 // "#2 'name'", or 'name' when no branch has it: the branch in a sentence.
@@ -140,13 +143,18 @@ std::string verdict_text(const HuntingResult& r) {
   return "";
 }
 
+// What is unstable over an interval: its branch by number and name, or a real root's divergence.
+std::string interval_cause(const HuntingResult& r, const UnstableInterval& u) {
+  return u.divergence ? "divergence, " + u.branch : cited_branch(r, u.branch);
+}
+
 // One unstable interval, its open ends said, its branch by number and name.
 std::string interval_text(const HuntingResult& r, const UnstableInterval& u) {
   const std::string from = u.from_lowest_speed ? "unstable at the lowest speed, " + kmh(u.from)
                                                : "from " + fixed(u.from * kKmh, 2) + " km/h";
   const std::string to =
       u.to_highest_speed ? "still unstable at the highest, " + kmh(u.to) : "to " + fixed(u.to * kKmh, 2) + " km/h";
-  return from + ", " + to + " (" + cited_branch(r, u.branch) + ")";
+  return from + ", " + to + " (" + interval_cause(r, u) + ")";
 }
 
 // The branches already at or below the threshold at the lowest speed, each with its ζ there:
@@ -204,7 +212,7 @@ Table verdict_table(const HuntingResult& r) {
     t.rows.push_back({"hunting frequency", fixed(c.frequency_hz, 3) + " Hz"});
     t.rows.push_back({"Klingel's V/Λ at that speed", fixed(c.klingel_frequency_hz, 3) + " Hz"});
     if (c.bogie_frequency_hz > 0.0)
-      t.rows.push_back({"a rigid bogie's V/Λ_b at that speed", fixed(c.bogie_frequency_hz, 3) + " Hz"});
+      t.rows.push_back({"V/Λ_b of '" + c.bogie + "' as a rigid bogie", fixed(c.bogie_frequency_hz, 3) + " Hz"});
     t.rows.push_back({"eigen-solves of the refinement", std::to_string(c.evaluations)});
   }
   if (r.damping_threshold) {
@@ -224,7 +232,7 @@ Table intervals_table(const HuntingResult& r) {
     t.rows.push_back(
         {u.from_lowest_speed ? fixed(u.from * kKmh, 2) + " (unstable at the lowest speed)" : fixed(u.from * kKmh, 2),
          u.to_highest_speed ? fixed(u.to * kKmh, 2) + " (still unstable at the highest)" : fixed(u.to * kKmh, 2),
-         cited_branch(r, u.branch)});
+         interval_cause(r, u)});
   return t;
 }
 
@@ -731,8 +739,13 @@ void write_critical(JsonWriter& j, const std::optional<HuntingCriticalSpeed>& c,
     j.value(nullptr);
     return;
   }
-  j.begin_object().member("bogie_frequency_hz", c->bogie_frequency_hz > 0.0 ? std::optional<double>(c->bogie_frequency_hz)
-                                                                          : std::optional<double>());
+  const bool bogie = c->bogie_frequency_hz > 0.0;
+  j.begin_object().key("bogie");
+  if (bogie)
+    j.value(c->bogie);
+  else
+    j.value(nullptr);
+  j.member("bogie_frequency_hz", bogie ? std::optional<double>(c->bogie_frequency_hz) : std::optional<double>());
   j.member("branch", c->branch);
   if (tracked) write_branch_number(j, *tracked, c->branch);
   j.member("evaluations", c->evaluations);
@@ -790,7 +803,7 @@ void write_json(std::ostream& out, const Page& p) {
     for (const UnstableInterval& u : r.unstable_intervals) {
       j.begin_object().member("branch", u.branch);
       write_branch_number(j, r, u.branch);
-      j.member("from_kmh", u.from * kKmh)
+      j.member("divergence", u.divergence).member("from_kmh", u.from * kKmh)
           .member("from_lowest_speed", u.from_lowest_speed).member("from_m_s", u.from)
           .member("to_highest_speed", u.to_highest_speed).member("to_kmh", u.to * kKmh).member("to_m_s", u.to)
           .end_object();

@@ -576,6 +576,7 @@ void write_json(std::ostream& out, const Page& p) {
   j.key("holds").begin_array();
   for (const SpeedHold& h : r.hold.holds)
     j.begin_object().member("end_amplitude_m", h.end_amplitude).member("periods", h.periods)
+        .member("rate_change_error", h.rate_change_error).member("rate_change_per_period", h.rate_change_per_period)
         .member("rate_error", h.rate_error).member("rate_per_period", h.rate_per_period)
         .member("speed_kmh", h.speed * kKmh).member("speed_m_s", h.speed).member("start_amplitude_m", h.start_amplitude)
         .member("steps", h.steps).member("survives", h.survives).member("undecided", h.undecided).end_object();

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 #include "model/scene_fit.hpp"
 #include "model/spring_stages.hpp"
@@ -378,10 +379,22 @@ NonlinearEffects scene_effects(const Scene& scene) {
   return effects;
 }
 
+namespace {
+
+// What a scene simulates of an element: without "viscous_dampers" named, not its vertical and
+// lateral viscous damping (the longitudinal dampers, series dampers and a body's bending damping
+// stay in C). One rule for scene_system, which builds it, and unsimulated_parts, which counts
+// what it leaves out: the warning cannot drift from the model.
+Element simulated_part(const Scene& scene, Element e) {
+  if (!names(scene, "viscous_dampers")) e.vertical_damping = e.lateral_damping = 0.0;
+  return e;
+}
+
+}  // namespace
+
 LinearSystem scene_system(const Scene& scene, const Vehicle& vehicle) {
   Vehicle v = vehicle;
-  if (!names(scene, "viscous_dampers"))
-    for (Element& e : v.elements) e.vertical_damping = e.lateral_damping = 0.0;  // not named: not built
+  for (Element& e : v.elements) e = simulated_part(scene, std::move(e));
   return assemble(v, scene.dofs);
 }
 
@@ -415,15 +428,18 @@ std::vector<std::string> unsimulated_parts(const Scene& scene, const Vehicle& ve
   // "effects = []" written in the file: the linear, undamped model chosen, not forgotten.
   if (!scene.simulation || (scene.simulation->effects.empty() && scene.name_places.count("simulation.effects")))
     return out;
-  // What scene_system leaves out without "viscous_dampers": the vertical and lateral dampers (the
-  // longitudinal ones, series dampers and a body's bending damping stay in C). A lateral scene's
-  // roll feels a vertical damper set off the centre line too.
-  int dampers = count_parts(vehicle, scene.dofs, [](const Element& e, bool vertical) {
-    return static_cast<int>((vertical ? e.vertical_damping : e.lateral_damping) > 0.0);
-  });
-  if (scene.dofs == DofSet::lateral)
-    for (const Element& e : vehicle.elements) dampers += e.vertical_damping > 0.0 && e.point.y() != 0.0;
-  if (dampers > 0 && !names(scene, "viscous_dampers"))
+  // The dampers scene_system leaves out (simulated_part), in the directions the scene moves: a
+  // lateral scene's roll feels a vertical damper set off the centre line too.
+  int dampers = 0;
+  for (const Element& e : vehicle.elements) {
+    const Element kept = simulated_part(scene, e);
+    const bool vertical = e.vertical_damping > 0.0 && kept.vertical_damping != e.vertical_damping;
+    const bool lateral = e.lateral_damping > 0.0 && kept.lateral_damping != e.lateral_damping;
+    if (scene.dofs != DofSet::lateral) dampers += vertical;
+    if (scene.dofs != DofSet::vertical) dampers += lateral;
+    if (scene.dofs == DofSet::lateral) dampers += vertical && e.point.y() != 0.0;
+  }
+  if (dampers > 0)
     out.push_back(std::to_string(dampers) + (dampers == 1 ? " viscous damper" : " viscous dampers") +
                   " in the vehicle " + (dampers == 1 ? "is" : "are") + " not simulated: " +
                   add_effect(scene, "viscous_dampers"));

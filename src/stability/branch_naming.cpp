@@ -103,7 +103,7 @@ std::string bogie_hunting_name(const LinearSystem& system, const Eigen::VectorXc
 
 }  // namespace
 
-std::vector<WheelsetBogie> wheelset_bogies(const Vehicle& vehicle) {
+std::vector<WheelsetBogie> wheelset_carriers(const Vehicle& vehicle) {
   const auto index_of = [&](const std::string& name) {
     for (size_t b = 0; b < vehicle.bodies.size(); ++b)
       if (vehicle.bodies[b].name == name) return static_cast<int>(b);
@@ -129,13 +129,18 @@ std::vector<WheelsetBogie> wheelset_bogies(const Vehicle& vehicle) {
     if (bogies[b].wheelsets.size() < 2) continue;
     WheelsetBogie g = bogies[b];
     g.body = static_cast<int>(b);
-    double low = vehicle.bodies[g.wheelsets.front()].centre_of_gravity.x(), high = low;
-    for (int w : g.wheelsets)
-      low = std::min(low, vehicle.bodies[w].centre_of_gravity.x()),
-      high = std::max(high, vehicle.bodies[w].centre_of_gravity.x());
-    g.half_wheelbase = 0.5 * (high - low);
+    const double count = static_cast<double>(g.wheelsets.size());
+    double mean = 0.0, square = 0.0;
+    for (int w : g.wheelsets) mean += vehicle.bodies[w].centre_of_gravity.x() / count;
+    for (int w : g.wheelsets) square += std::pow(vehicle.bodies[w].centre_of_gravity.x() - mean, 2) / count;
+    g.axle_spread = std::sqrt(square);
     out.push_back(g);
   }
+  return out;
+}
+
+std::vector<WheelsetBogie> wheelset_bogies(const Vehicle& vehicle) {
+  std::vector<WheelsetBogie> out = wheelset_carriers(vehicle);
   if (out.size() < 2) out.clear();
   return out;
 }

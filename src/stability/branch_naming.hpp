@@ -11,17 +11,24 @@
 
 namespace railmodal::stability {
 
-/// A bogie of a vehicle on wheelsets: a body that two or more wheelsets hang from (an element
-/// joins each of them to it).
+/// A body that two or more wheelsets hang from: each wheelset belongs to the body the first
+/// element joining it to a body that is not a wheelset joins it to (its primary suspension, in
+/// a vehicle file's order).
 struct WheelsetBogie {
   int body = -1;               ///< index into vehicle.bodies
   std::vector<int> wheelsets;  ///< their bodies, in the vehicle's order
-  double half_wheelbase = 0.0;  ///< a, m: half the spread of their axles' x (centres of gravity)
+  /// m: the root mean square of their axles' x (centres of gravity) about its mean,
+  /// √(Σ(x_i − x̄)²/N): a, half the wheelbase, for two axles; √(2/3)·a for three at −a, 0, a.
+  /// What a rigid bogie's kinematic wavelength needs (hunting_analysis.cpp).
+  double axle_spread = 0.0;
 };
 
-/// The bogies, in the order of the vehicle's bodies; empty unless two or more bodies each carry
-/// two or more wheelsets (a two-axle wagon's body, carrying its two, is not a bogie: it is the
-/// vehicle).
+/// Every body carrying two or more wheelsets, in the order of the vehicle's bodies: a bogie, or
+/// a two-axle (three-axle) wagon's body, to which a rigid bogie's kinematics apply alike.
+std::vector<WheelsetBogie> wheelset_carriers(const Vehicle& vehicle);
+
+/// The bogies, for the naming: wheelset_carriers, empty unless there are two or more (a two-axle
+/// wagon's body, carrying its two, is not a bogie: it is the vehicle).
 std::vector<WheelsetBogie> wheelset_bogies(const Vehicle& vehicle);
 
 /// A root that does not oscillate: real, or a pair whose Im λ is under 1 % of |λ| (ζ > 0.99995,

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,20 +54,36 @@ double shortest_wavelength(const ContactMatrices& contact) {
   return wavelength;
 }
 
-// The shortest kinematic wavelength of the vehicle's rigid bogies, Λ_b = Λ·√(1 + a²f22/(l0²f11))
-// (docs/stability.md, "The equations of motion": no net lateral creep force and no net yaw moment
-// on two wheelsets at x = ±a with a common yaw; Rocard's factor √(1 + (2a/s)²) when f11 = f22),
-// with the contact of each bogie's first wheelset; infinite without bogies.
-double shortest_bogie_wavelength(const LinearSystem& system, const ContactMatrices& contact) {
-  double wavelength = std::numeric_limits<double>::infinity();
-  for (const WheelsetBogie& g : wheelset_bogies(system.vehicle))
-    for (const ResolvedContact& c : contact.wheelsets) {
-      if (c.body != system.vehicle.bodies[g.wheelsets.front()].name) continue;
-      const double a = g.half_wheelbase, l0 = c.contact_half_spacing;
-      if (c.creep.f11 > 0.0 && l0 > 0.0)
-        wavelength = std::min(wavelength, c.klingel_wavelength * std::sqrt(1.0 + a * a * c.creep.f22 / (l0 * l0 * c.creep.f11)));
-    }
-  return wavelength;
+// The kinematic wavelength of a rigid bogie, Λ_b = Λ·√(1 + ā²f22/(l0²f11)) (docs/stability.md,
+// "The equations of motion": no net lateral creep force and no net yaw moment on its wheelsets
+// with a common yaw; Rocard's factor √(1 + (2a/s)²) when f11 = f22 and two axles at ±a: the
+// digest bogie-wagons-forced-and-hunting, §2.1, p. 217). With N axles at x_i the same balance
+// gives ā² = Σ(x_i − x̄)²/N (WheelsetBogie::axle_spread): a² for two, 2a²/3 for three at −a, 0,
+// a. The contact of the bogie's first wheelset; infinite when there is none.
+double bogie_wavelength(const LinearSystem& system, const ContactMatrices& contact, const WheelsetBogie& g) {
+  for (const ResolvedContact& c : contact.wheelsets) {
+    if (c.body != system.vehicle.bodies[g.wheelsets.front()].name) continue;
+    const double a = g.axle_spread, l0 = c.contact_half_spacing;
+    if (c.creep.f11 > 0.0 && l0 > 0.0)
+      return c.klingel_wavelength * std::sqrt(1.0 + a * a * c.creep.f22 / (l0 * l0 * c.creep.f11));
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+// The body carrying two or more wheelsets whose wheelsets move most in a root's shape (the sum
+// of |shape|² over their degrees of freedom, the shape mass-weighted as root_name takes it; the
+// first on a tie), or null when no body carries two.
+std::optional<WheelsetBogie> moving_bogie(const LinearSystem& system, const Eigen::VectorXcd& shape) {
+  std::optional<WheelsetBogie> out;
+  double most = -1.0;
+  for (const WheelsetBogie& g : wheelset_carriers(system.vehicle)) {
+    double energy = 0.0;
+    for (int i = 0; i < system.size(); ++i)
+      if (std::find(g.wheelsets.begin(), g.wheelsets.end(), system.dofs[i].body) != g.wheelsets.end())
+        energy += std::norm(shape(i));
+    if (energy > most) most = energy, out = g;
+  }
+  return out;
 }
 
 double klingel_frequency(double speed, double wavelength) {
@@ -102,7 +119,7 @@ Scan scan(const std::vector<double>& speeds, const std::vector<double>& zeta, co
 // The critical speed of a scan that has one: the first interval's lower end, with the
 // hunting frequency of the least-damped root there (one more eigen-solve).
 HuntingCriticalSpeed critical_speed(const LinearSystem& vehicle, const Scan& scan, const FirstOrderSystem& system,
-                                    double wavelength, double bogie_wavelength) {
+                                    const ContactMatrices& contact) {
   const ScannedInterval& first = scan.intervals.front();
   HuntingCriticalSpeed c;
   c.speed = first.from;
@@ -110,8 +127,12 @@ HuntingCriticalSpeed critical_speed(const LinearSystem& vehicle, const Scan& sca
   const LeastDamped at = least_damped(roots.values);
   c.frequency_hz = at.root >= 0 ? std::abs(roots.values(at.root).imag()) / kTwoPi : 0.0;
   c.motion = root_name(vehicle, roots.shapes.col(std::max(at.root, 0)));
-  c.klingel_frequency_hz = klingel_frequency(c.speed, wavelength);
-  c.bogie_frequency_hz = klingel_frequency(c.speed, bogie_wavelength);
+  c.klingel_frequency_hz = klingel_frequency(c.speed, shortest_wavelength(contact));
+  // V/Λ_b of the bogie that carries the hunting: whose wheelsets move most in the unstable mode.
+  if (const std::optional<WheelsetBogie> g = moving_bogie(vehicle, roots.shapes.col(std::max(at.root, 0)))) {
+    c.bogie_frequency_hz = klingel_frequency(c.speed, bogie_wavelength(vehicle, contact, *g));
+    if (c.bogie_frequency_hz > 0.0) c.bogie = vehicle.vehicle.bodies[static_cast<size_t>(g->body)].name;
+  }
   c.evaluations = first.from_evaluations + 1;
   return c;
 }
@@ -125,8 +146,7 @@ ConicityPoint conicity_point(const LinearSystem& system, double conicity, const 
   const Scan s = scan(speeds, zeta, fos, options.relative_tolerance);
   point.verdict = s.verdict;
   if (s.verdict == HuntingVerdict::critical_speed_in_range) {
-    point.critical =
-        critical_speed(system, s, fos, shortest_wavelength(contact), shortest_bogie_wavelength(system, contact));
+    point.critical = critical_speed(system, s, fos, contact);
     // Named where it goes unstable (no tracking over this conicity's grid).
     point.critical->branch = point.critical->motion;
   }
@@ -253,15 +273,55 @@ std::vector<ScannedInterval> branch_intervals(const FirstOrderSystem& fos, const
   return unstable_intervals(speeds, b.damping_ratio, zeta_at, relative_tolerance, evaluations);
 }
 
+// The divergences: for each group of roots real at every speed (no branch), the runs of grid
+// speeds where one of them is positive (ζ < 0 and not rigid-body), named after the group. A real
+// root changes sign only through λ = 0, and λ = 0 is a root of the state matrix exactly when the
+// stiffness K is singular (A·x = 0 forces the velocities, then the series dampers' states, to 0,
+// leaving K·x = 0): K does not depend on the speed, so a divergence holds at every speed of the
+// range or at none, and its ends are the grid's. Every group is looked at, not only the least
+// damped root: with two divergent groups (ζ = −1 both) the least-damped search names only one.
+std::vector<UnstableInterval> divergences(const SolvedGrid& grid, const Branches& branches,
+                                          const std::vector<HuntingBranch>& all, const std::vector<double>& speeds) {
+  std::vector<std::string> groups;
+  for (const std::vector<std::string>& names : branches.name_of_root)
+    for (const std::string& name : names)
+      if (std::none_of(all.begin(), all.end(), [&](const HuntingBranch& b) { return b.name == name; }) &&
+          std::find(groups.begin(), groups.end(), name) == groups.end())
+        groups.push_back(name);
+  std::vector<UnstableInterval> out;
+  const size_t ns = speeds.size();
+  for (const std::string& group : groups) {
+    size_t first = ns;  // where the current run of divergent speeds began; ns: none open
+    for (size_t s = 0; s <= ns; ++s) {
+      bool diverges = false;
+      if (s < ns) {
+        const Eigen::VectorXcd& values = grid.roots[s].values;
+        const double scale = root_scale(values);
+        for (Eigen::Index i = 0; i < values.size(); ++i) {
+          if (branches.name_of_root[s][static_cast<size_t>(i)] != group) continue;
+          const RootDamping d = root_damping(values(i), scale);
+          diverges = diverges || (!d.rigid && d.zeta < 0.0);
+        }
+      }
+      if (diverges && first == ns) first = s;
+      if (!diverges && first != ns) {
+        out.push_back({speeds[first], speeds[s - 1], first == 0, s == ns, group, true});
+        first = ns;
+      }
+    }
+  }
+  return out;
+}
+
 // The verdict, the critical speed (the least-damped root's first crossing) and the unstable
 // intervals: each oscillatory branch's own (docs/stability.md: every unstable interval, its ends
 // where ζ of its branch crosses 0, so that a branch going unstable while another already is
-// still shows: the coach's second hunting branch, user audit 2026-11-27b, 1.3), and the
-// least-damped root's intervals held by no branch (a real root's), named after its group.
-// Returns the eigen-solves the refinements took.
+// still shows: the coach's second hunting branch, user audit 2026-11-27b, 1.3), and every
+// divergence of a real root (divergences), named after its group. Returns the eigen-solves the
+// refinements took.
 int stability_over_speed(const LinearSystem& system, const FirstOrderSystem& fos, const SolvedGrid& grid,
-                         const Branches& branches, const std::vector<double>& zeta, double wavelength,
-                         double bogie_wavelength, const HuntingOptions& options, HuntingResult* result) {
+                         const Branches& branches, const std::vector<double>& zeta, const ContactMatrices& contact,
+                         const HuntingOptions& options, HuntingResult* result) {
   const Scan own = scan(result->speeds, zeta, fos, options.relative_tolerance);
   int evaluations = own.evaluations;
   result->verdict = own.verdict;
@@ -277,20 +337,19 @@ int stability_over_speed(const LinearSystem& system, const FirstOrderSystem& fos
   for (size_t k = 0; k < all.size(); ++k)
     for (const ScannedInterval& i : branch_intervals(fos, all[k], result->speeds, options.relative_tolerance, &evaluations))
       listed.push_back({named(i, all[k].name), k});
+  for (const UnstableInterval& i : divergences(grid, branches, all, result->speeds)) listed.push_back({i, all.size()});
   std::string critical_branch;
-  for (const ScannedInterval& i : own.intervals) {
-    const int at = least_damped(grid.roots[i.grid_index].values).root;
-    const std::string name = at >= 0 ? branches.name_of_root[i.grid_index][at] : std::string();
-    if (critical_branch.empty()) critical_branch = name;
-    const bool a_branch = std::any_of(all.begin(), all.end(), [&](const HuntingBranch& b) { return b.name == name; });
-    if (!a_branch) listed.push_back({named(i, name), all.size()});
+  if (!own.intervals.empty()) {
+    const size_t s = own.intervals.front().grid_index;
+    const int at = least_damped(grid.roots[s].values).root;
+    if (at >= 0) critical_branch = branches.name_of_root[s][static_cast<size_t>(at)];
   }
   std::stable_sort(listed.begin(), listed.end(), [](const Listed& a, const Listed& b) {
     return a.interval.from != b.interval.from ? a.interval.from < b.interval.from : a.branch < b.branch;
   });
   for (const Listed& l : listed) result->unstable_intervals.push_back(l.interval);
   if (result->verdict == HuntingVerdict::critical_speed_in_range) {
-    result->critical = critical_speed(system, own, fos, wavelength, bogie_wavelength);
+    result->critical = critical_speed(system, own, fos, contact);
     result->critical->branch = critical_branch;
     // The motion is named as branches are; where that is another branch's name, it would read as
     // that branch (user audit 2026-11-27b, 1.4: "body lateral/roll" on branch "body yaw/lateral
@@ -417,8 +476,7 @@ HuntingResult hunting_analysis(const LinearSystem& system, const ContactSource& 
 
   std::vector<double> zeta;
   for (const SpeedRoots& r : grid.roots) zeta.push_back(least_damped(r.values).zeta);
-  int evaluations = stability_over_speed(system, fos, grid, branches, zeta, wavelength,
-                                         shortest_bogie_wavelength(system, own), options, &result);
+  int evaluations = stability_over_speed(system, fos, grid, branches, zeta, own, options, &result);
   result.damping_threshold = options.damping_threshold;
   if (options.damping_threshold)
     evaluations += threshold_crossing(fos, *options.damping_threshold, options.relative_tolerance, &result);

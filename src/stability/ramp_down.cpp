@@ -175,6 +175,48 @@ void read_verdict(std::vector<LimitCyclePoint> peaks, double extinction, RampDow
   r->curve = std::move(peaks);
 }
 
+// The growth rate of the half-cycle amplitudes A_k over the second half of a hold, per period: the
+// least-squares slope of ln A_k against k (two half cycles a period; the last, unfinished half
+// cycle left out), and the most by which the peaks' errors can have moved it. The errors are not
+// noise but deterministic and correlated (the peaks' sampling, in a pattern that repeats with the
+// step's phase against the cycle; what is left of the settling), so no standard error describes
+// them. The bound is a worst case instead: the slope is linear in the data,
+// s = Σ d_k l_k / Σ d_k² (d_k = k − k̄), so an error e_k in l_k moves it by Σ d_k e_k / Σ d_k².
+//  - A wobble |w_k| ≤ R, R the largest |residual| after the fit, moves it by at most
+//    R·Σ|d_k| / Σd_k² (≈ 3R/n over n half cycles), whatever the wobble's pattern.
+//  - The sampling: near its peak y = A·cos(ω(t − t_p)), and the accepted steps are at most h
+//    apart (largest_step), so one sample lies within h/2 of t_p and the largest sampled |y| is
+//    at least A·cos(ωh/2): l_k = ln A_k + e_k with −δ ≤ e_k ≤ 0, δ = −ln cos(ωh/2) ≈ (ωh)²/8.
+//    A one-sided error moves the slope by at most δ·Σ_{d_k>0} d_k / Σd_k² = δ·Σ|d_k| / (2Σd_k²)
+//    (Σd_k = 0, so the positive d_k sum to half of Σ|d_k|). It is added whole, not seen in R: the
+//    part of the sampling pattern that correlates with k is absorbed into the slope.
+// R is measured after the fit, so a slow drift that correlates with k (a settling still under
+// way) is absorbed too and not bounded here: the rate over each half of the span, compared
+// (hold_rate's change), shows it.
+//
+// The slope of ln A_k over half cycles [begin, end) and its bound (above), with δ the sampling's
+// most in ln A. At least 4 half cycles; a slope of 0 with an infinite bound otherwise.
+Slope fitted_slope(const std::vector<LimitCyclePoint>& peaks, std::size_t begin, std::size_t end, double delta) {
+  Slope fit;
+  if (end < begin + 4) return fit;
+  const double n = static_cast<double>(end - begin);
+  double mean_k = 0.0, mean_l = 0.0;
+  for (std::size_t k = begin; k < end; ++k) mean_k += static_cast<double>(k), mean_l += std::log(peaks[k].amplitude);
+  mean_k /= n, mean_l /= n;
+  double skk = 0.0, skl = 0.0, sum_abs_dk = 0.0;
+  for (std::size_t k = begin; k < end; ++k) {
+    const double dk = static_cast<double>(k) - mean_k;
+    skk += dk * dk, skl += dk * (std::log(peaks[k].amplitude) - mean_l), sum_abs_dk += std::abs(dk);
+  }
+  const double slope = skl / skk;
+  double envelope = 0.0;
+  for (std::size_t k = begin; k < end; ++k)
+    envelope = std::max(envelope, std::abs(std::log(peaks[k].amplitude) - mean_l - slope * (static_cast<double>(k) - mean_k)));
+  fit.per_period = 2.0 * slope;
+  fit.bound = 2.0 * (envelope + 0.5 * delta) * sum_abs_dk / skk;
+  return fit;
+}
+
 }  // namespace
 
 RampDown ramp_down(const LateralEquations& e, const NonlinearHuntingOptions& o, double ramp_rate,
@@ -233,45 +275,35 @@ bool collapsing_at_end(const std::vector<LimitCyclePoint>& curve) {
   return n >= 3 && curve[n - 2].amplitude < (1.0 - kOnBranchDecay) * curve[n - 3].amplitude;
 }
 
-// The growth rate of the half-cycle amplitudes A_k over the second half of a hold, per period: the
-// least-squares slope of ln A_k against k (two half cycles a period; the last, unfinished half
-// cycle left out), and the most by which the residual's wobble can have moved it. The residuals
-// are not noise but deterministic and correlated (the peaks are sampled values, low by up to 5e-4
-// of themselves at kSamplesPerPeriod, in a pattern that repeats with the step's phase against
-// the cycle; what is left of the settling), so no standard error describes them. The bound is
-// the worst case over their envelope instead: the slope is linear in the data,
-// s = Σ d_k l_k / Σ d_k² (d_k = k − k̄), so a wobble w_k with |w_k| ≤ R, R the largest |residual|,
-// moves it by at most R·Σ|d_k| / Σd_k² (≈ 3R/n over n half cycles), whatever the wobble's
-// pattern. R is measured after the fit, so a part of the wobble that correlates with k (a slow
-// settling) is absorbed into the slope and not seen: the bound holds for the sampling pattern,
-// not for a settling, which is why only the second half is fitted (review of 2026-11-28).
-// Needs at least 4 half cycles; a rate of 0 with an infinite bound otherwise.
-struct HoldRate {
-  double per_period = 0.0;
-  double bound = std::numeric_limits<double>::infinity();
-};
+HoldRate hold_rate(const std::vector<LimitCyclePoint>& peaks, double delta) {
+  HoldRate r;
+  if (peaks.size() < 2) return r;
+  const std::size_t end = peaks.size() - 1, begin = std::max<std::size_t>(1, end / 2), middle = (begin + end) / 2;
+  r.rate = fitted_slope(peaks, begin, end, delta);
+  const Slope early = fitted_slope(peaks, begin, middle, delta), late = fitted_slope(peaks, middle, end, delta);
+  r.change = late.per_period - early.per_period;
+  r.change_bound = early.bound + late.bound;
+  return r;
+}
 
-HoldRate hold_rate(const std::vector<LimitCyclePoint>& peaks) {
-  HoldRate rate;
-  if (peaks.size() < 2) return rate;
-  const std::size_t end = peaks.size() - 1, begin = std::max<std::size_t>(1, end / 2);
-  const double n = static_cast<double>(end - begin);
-  if (n < 4.0) return rate;
-  double mean_k = 0.0, mean_l = 0.0;
-  for (std::size_t k = begin; k < end; ++k) mean_k += static_cast<double>(k), mean_l += std::log(peaks[k].amplitude);
-  mean_k /= n, mean_l /= n;
-  double skk = 0.0, skl = 0.0, sum_abs_dk = 0.0;
-  for (std::size_t k = begin; k < end; ++k) {
-    const double dk = static_cast<double>(k) - mean_k;
-    skk += dk * dk, skl += dk * (std::log(peaks[k].amplitude) - mean_l), sum_abs_dk += std::abs(dk);
-  }
-  const double slope = skl / skk;
-  double envelope = 0.0;
-  for (std::size_t k = begin; k < end; ++k)
-    envelope = std::max(envelope, std::abs(std::log(peaks[k].amplitude) - mean_l - slope * (static_cast<double>(k) - mean_k)));
-  rate.per_period = 2.0 * slope;
-  rate.bound = 2.0 * envelope * sum_abs_dk / skk;
-  return rate;
+double sampling_error(double omega, double h) {
+  const double c = std::cos(0.5 * omega * h);
+  return 0.5 * omega * h < 0.5 * kPi && c > 0.0 ? -std::log(c) : std::numeric_limits<double>::infinity();
+}
+
+RateVerdict rate_verdict(const HoldRate& r) {
+  if (!std::isfinite(r.rate.bound)) return RateVerdict::undecided;
+  // A change of the rate toward the threshold may yet carry it across; one away from it cannot.
+  // Nor can a falling rate of an amplitude resolved to grow: near its branch a cycle's amplitude
+  // follows one first-order law, dA/dt = f(A) (averaging over the cycle), so a growing amplitude
+  // approaches a cycle (its rate tends to 0) or grows on; it does not turn to decay.
+  const bool growing = r.rate.per_period - r.rate.bound > 0.0;
+  const bool toward_threshold = (r.change > 0.0) == (r.rate.per_period < -kHoldRate) && !growing;
+  if (!std::isfinite(r.change_bound) || (std::abs(r.change) > r.change_bound && toward_threshold))
+    return RateVerdict::undecided;
+  if (r.rate.per_period - r.rate.bound >= -kHoldRate) return RateVerdict::survives;
+  if (r.rate.per_period + r.rate.bound < -kHoldRate) return RateVerdict::dies;
+  return RateVerdict::undecided;
 }
 
 SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o, double speed,
@@ -284,10 +316,14 @@ SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o
   const double half = 0.5 * hold.start_amplitude;
   HalfCycles cycles;
   bool died = false;
-  const auto watch = [&](double, const Eigen::VectorXd& state) {
+  // The times of the first and the last zero crossing (a half cycle closing), for the cycle's ω.
+  double first_crossing = 0.0, last_crossing = 0.0;
+  const auto watch = [&](double t, const Eigen::VectorXd& state) {
     const double y = axle_lateral(w, state);
+    const std::size_t closed = cycles.peaks().size();
     cycles.add(y, speed, state);
     const auto& p = cycles.peaks();
+    if (p.size() > closed) (closed == 0 ? first_crossing : last_crossing) = t;
     // The first half cycle is the start's own; a later one below half of it: the cycle collapsed.
     if (p.size() > 1 && p.back().amplitude < half) died = true;
     if (std::abs(y) > o.amplitude_bound) return false;  // grows: it survives, and no more is needed
@@ -295,9 +331,8 @@ SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o
   };
   // The hunting period is at least the Klingel period of the wheelset (a bogie's is longer, by
   // up to about two): four times the Klingel time of the periods is more than enough time.
-  const double wavelength = std::max(klingel_wavelength(w), 1.0);
-  hold.steps = integrate(
-      e, [speed](double) { return speed; }, 4.0 * periods * wavelength / speed, largest_step(e, speed), x, watch);
+  const double wavelength = std::max(klingel_wavelength(w), 1.0), h_max = largest_step(e, speed);
+  hold.steps = integrate(e, [speed](double) { return speed; }, 4.0 * periods * wavelength / speed, h_max, x, watch);
   const auto& p = cycles.peaks();
   const bool grew = std::abs(axle_lateral(w, x)) > o.amplitude_bound;
   hold.periods = static_cast<int>(p.size()) / 2;
@@ -305,12 +340,21 @@ SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o
   // Near the fold the collapse is slow (the cycle lingers where the branch was) and so is the
   // approach to a cycle just above it: a hold that neither fell below half the start nor grew past
   // the bound is decided by its amplitude's growth rate over its second half (hold_rate), against
-  // −kHoldRate, only where the rate is resolved: its worst case over the residual's envelope
-  // clear of the threshold. A rate within that bound (or a hold too short to fit) is undecided,
-  // not surviving: the caller holds longer (the bound falls as 1/periods) or says so.
-  const HoldRate rate = hold_rate(p);
-  hold.rate_per_period = rate.per_period;
-  hold.rate_error = rate.bound;
+  // −kHoldRate, only where two estimates agree: the rate resolved (its worst case clear of the
+  // threshold), and no resolved change of the rate between the halves of that span toward the
+  // threshold (a settling still under way, which could carry it across; a change away from it, a
+  // collapse speeding up or a growth, cannot). Either failing, or a hold too short to fit, is
+  // undecided, not surviving: the caller holds longer (the bounds fall as 1/periods) or says so.
+  // The sampling's δ needs the cycle's ω: π per half cycle between the first and last crossings
+  // (every closed half cycle ended at a crossing).
+  const double omega = p.size() >= 2 && last_crossing > first_crossing
+                           ? kPi * static_cast<double>(p.size() - 1) / (last_crossing - first_crossing)
+                           : 0.0;
+  const HoldRate rate = hold_rate(p, omega > 0.0 ? sampling_error(omega, h_max) : std::numeric_limits<double>::infinity());
+  hold.rate_per_period = rate.rate.per_period;
+  hold.rate_error = rate.rate.bound;
+  hold.rate_change_per_period = rate.change;
+  hold.rate_change_error = rate.change_bound;
   const bool completed = static_cast<int>(p.size()) >= 2 * periods + 1;
   if (died) {
     hold.survives = false;
@@ -318,12 +362,10 @@ SpeedHold hold_speed(const LateralEquations& e, const NonlinearHuntingOptions& o
     hold.survives = true;
   } else if (!completed) {
     hold.undecided = true;  // stopped early without dying or growing: cannot happen but by the bound
-  } else if (rate.per_period - rate.bound >= -kHoldRate) {
-    hold.survives = true;
-  } else if (rate.per_period + rate.bound < -kHoldRate) {
-    hold.survives = false;
   } else {
-    hold.undecided = true;
+    const RateVerdict verdict = rate_verdict(rate);
+    hold.survives = verdict == RateVerdict::survives;
+    hold.undecided = verdict == RateVerdict::undecided;
   }
   return hold;
 }

@@ -114,3 +114,20 @@ def test_input_warnings_become_errors_under_a_filter():
         warnings.simplefilter("error", railmodal.InputWarning)
         with pytest.raises(railmodal.InputWarning):
             railmodal.load_vehicle("tests/cli/warnings/resort_car_hanger_bare_number.toml")
+
+
+def test_load_study_warns_the_base_files_warnings_once_as_compare_does():
+    # The study's base vehicle (a bare-number hanger) and scene (dampers effect without dampers)
+    # each draw one warning; its three variants read both, yet each is said once, in compare's
+    # words (compare's stderr holds exactly these two lines: tests/cli, warning_compare_once).
+    warned = "tests/cli/warnings/resort_car_hanger_study.toml"
+    _, _, stderr = cli("compare", warned)
+    for read_variants in (True, False):
+        with pytest.warns(railmodal.InputWarning) as caught:
+            railmodal.load_study(warned, read_variants=read_variants)
+        assert [str(w.message) for w in caught] == stderr.splitlines()
+        assert len(caught) == 2
+        assert caught[0].filename == __file__  # at the caller's line, not inside the package
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", railmodal.InputWarning)  # none: the same study written cleanly
+        railmodal.load_study("tests/cli/warnings/resort_car_study_no_warnings.toml")

@@ -212,7 +212,11 @@ def test_the_holds_give_their_growth_rates_as_the_json_does():
         # The JSON writes an infinite error (too few half cycles) as null.
         assert got["rate_error"] == (pytest.approx(want["rate_error"], rel=REL, abs=1e-300)
                                      if want["rate_error"] is not None else float("inf"))
-    assert set(pandas.DataFrame(holds).columns) >= {"rate_per_period", "rate_error", "undecided"}
+        assert got["rate_change_per_period"] == pytest.approx(want["rate_change_per_period"], rel=REL, abs=1e-300)
+        assert got["rate_change_error"] == (pytest.approx(want["rate_change_error"], rel=REL, abs=1e-300)
+                                            if want["rate_change_error"] is not None else float("inf"))
+    assert set(pandas.DataFrame(holds).columns) >= {"rate_per_period", "rate_error", "undecided",
+                                                    "rate_change_per_period", "rate_change_error"}
 
 
 def test_limit_cycles_scene_is_the_commands_continuation():

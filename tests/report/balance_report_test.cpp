@@ -1,5 +1,6 @@
 // The balance report's machine-readable outputs (issue 22 review): numbers at full precision,
 // keys and columns with units, harmonics with amplitude and phase; and the note on α.
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -49,6 +50,20 @@ TEST(BalanceReport, JsonCarriesEveryNumberExactlyWithUnitsAndPhases) {
   EXPECT_EQ(book.at("rule").get<std::string>(), "book");
   EXPECT_EQ(book.at("wheels").at(0).at("total_mass_kg").get<double>(), study.by_rule[2].wheels[0].total_mass);
   EXPECT_TRUE(book.contains("trade_off"));
+  // The speed at each α limit in m/s beside km/h (docs/input.md: m/s beside km/h), exactly
+  // speed_at_alpha's double; null both when never reached.
+  double alpha = 0.0;
+  for (const WheelBalance& w : study.by_rule[2].wheels) alpha = std::max(alpha, w.alpha);
+  ASSERT_FALSE(book.at("speed_at_alpha").empty());
+  for (const auto& at : book.at("speed_at_alpha")) {
+    const double speed = speed_at_alpha(alpha, study.by_rule[2].speed, at.at("alpha").get<double>());
+    if (std::isinf(speed)) {
+      EXPECT_TRUE(at.at("speed_m_s").is_null() && at.at("speed_kmh").is_null());
+      continue;
+    }
+    EXPECT_EQ(at.at("speed_m_s").get<double>(), speed);
+    EXPECT_EQ(at.at("speed_kmh").get<double>(), speed * 3.6);
+  }
 }
 
 TEST(BalanceReport, CsvIsOneTableOfNumbersAtFullPrecision) {

@@ -59,6 +59,25 @@ TEST(HuntingReport, StableThroughoutSaysSoAndInventsNoCriticalSpeed) {
   EXPECT_EQ(j["analysis"], "linear");
 }
 
+// A real root's interval is named a divergence, never cited as a branch (it has no row); a
+// bogie's V/Λ_b names the bogie (review of 2026-11-28).
+TEST(HuntingReport, DivergenceAndTheBogieOfVOverLambdaBAreNamed) {
+  HuntingResult r = test::two_interval_result();
+  UnstableInterval divergence{10.0 / 3.6, 500.0 / 3.6, true, true, "osc1.lateral (real root)", true};
+  r.unstable_intervals.insert(r.unstable_intervals.begin(), divergence);
+  r.critical->bogie_frequency_hz = 1.25;
+  r.critical->bogie = "bogie2";
+  const std::string table = written(r, OutputFormat::table);
+  EXPECT_TRUE(has(table, "(divergence, osc1.lateral (real root))")) << table;
+  EXPECT_TRUE(has(table, "V/Λ_b of 'bogie2' as a rigid bogie: 1.250 Hz")) << table;
+  EXPECT_TRUE(has(written(r, OutputFormat::markdown), "divergence, osc1.lateral (real root)"));
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  EXPECT_TRUE(j["unstable_intervals"][0]["divergence"].get<bool>());
+  EXPECT_FALSE(j["unstable_intervals"][1]["divergence"].get<bool>());
+  EXPECT_EQ(j["critical"]["bogie"], "bogie2");
+  EXPECT_EQ(j["critical"]["bogie_frequency_hz"].get<double>(), 1.25);
+}
+
 TEST(HuntingReport, EveryUnstableIntervalIsListedWithItsOpenEnd) {
   const HuntingResult r = test::two_interval_result();
   const std::string table = written(r, OutputFormat::table);

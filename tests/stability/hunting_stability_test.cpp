@@ -5,6 +5,7 @@
 // directly (stability::hunting_analysis), so these tests do not wait for contact_matrices().
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <stdexcept>
@@ -426,6 +427,36 @@ TEST(HuntingStability, PositiveRealRootIsDivergentAndNeverNaN) {
   EXPECT_TRUE(r.branches.empty());  // real roots are not oscillatory branches
   ASSERT_EQ(r.unstable_intervals.size(), 1u);
   EXPECT_EQ(r.unstable_intervals[0].branch, "osc1.lateral (real root)");
+  EXPECT_TRUE(r.unstable_intervals[0].divergence);
+}
+
+// Every divergence is listed, not only the least-damped root's (review of 2026-11-28): two
+// saddles (ζ = −1 both, so the least-damped search names only the first) beside a branch
+// unstable from 30 to 170 m/s. Each saddle diverges over the whole range (λ = 0 would need a
+// singular stiffness, and K does not change with the speed: the ends are the grid's), marked
+// as a divergence; the branch keeps its own refined interval and is no divergence.
+TEST(HuntingStability, EveryDivergenceIsListedBesideTheBranches) {
+  HandBuilt h = oscillators({{kTwoPi, 1.0, 0.0, 0.0}, unstable_between(30.0, 170.0), {2.0 * kTwoPi, 1.0, 0.0, 0.0}});
+  h.system.stiffness(0, 0) = -1.0;
+  h.system.stiffness(2, 2) = -4.0;
+  const HuntingResult r = hunting_analysis(h.system, h.source(), range(10.0, 200.0, 40));
+  ASSERT_EQ(r.unstable_intervals.size(), 3u);
+  std::vector<std::string> divergences;
+  for (const UnstableInterval& u : r.unstable_intervals) {
+    if (u.branch == "osc2.lateral") {
+      EXPECT_FALSE(u.divergence);
+      EXPECT_NEAR(u.from, 30.0, 1e-6 * 30.0);  // refined to 1e-8 relative (the default); 1e-6 is ample
+      EXPECT_NEAR(u.to, 170.0, 1e-6 * 170.0);
+      continue;
+    }
+    EXPECT_TRUE(u.divergence) << u.branch;
+    EXPECT_TRUE(u.from_lowest_speed && u.to_highest_speed) << u.branch;
+    EXPECT_EQ(u.from, 10.0);
+    EXPECT_EQ(u.to, 200.0);
+    divergences.push_back(u.branch.substr(0, u.branch.find(' ')));  // the group's name, without " (real root)"
+  }
+  std::sort(divergences.begin(), divergences.end());
+  EXPECT_EQ(divergences, (std::vector<std::string>{"osc1.lateral", "osc3.lateral"}));
 }
 
 TEST(HuntingStability, SameResultOnAnyNumberOfThreads) {

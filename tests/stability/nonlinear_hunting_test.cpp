@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "railmodal/railmodal.hpp"
@@ -322,6 +324,81 @@ TEST(NonlinearHunting, SlowDeathJustBelowTheFoldIsNotASurvival) {
   const SpeedHold brief = stability::hold_speed(e, o, speed, start, 0, 3);
   EXPECT_TRUE(brief.undecided);
   EXPECT_FALSE(brief.survives);
+}
+
+// Half-cycle peaks whose ln A is l(k), k = 0 … count − 1 (hold_rate fits k = 100 … 199 of 201).
+std::vector<LimitCyclePoint> peaks_of(const std::function<double(double)>& l, int count = 201) {
+  std::vector<LimitCyclePoint> peaks;
+  for (int k = 0; k < count; ++k) peaks.push_back({50.0, std::exp(l(k))});
+  return peaks;
+}
+
+// The sampling's δ (review of 2026-11-28): a cosine sampled at steps h, at every phase of the
+// samples against its peak, has its largest sample no lower than exp(−δ) of the peak, and at
+// the worst phase (the peak midway between two samples) exactly that: δ is the least bound.
+TEST(NonlinearHunting, SamplingErrorIsTheLargestSamplesWorstShortfall) {
+  const double omega = 2.0 * 3.14159265358979 * 2.4, h = 1.0 / (2.4 * 100.0);  // 100 samples a period
+  const double delta = stability::sampling_error(omega, h);
+  EXPECT_NEAR(delta, std::pow(omega * h, 2) / 8.0, 1e-3 * delta);  // its small-angle form, (ωh)²/8
+  double worst = 0.0;
+  for (int phase = 0; phase <= 100; ++phase) {  // the peak at t = 0, samples at (phase/100 + j)·h
+    double largest = 0.0;
+    for (int j = -3; j <= 3; ++j) largest = std::max(largest, std::cos(omega * (phase / 100.0 + j) * h));
+    EXPECT_GE(std::log(largest), -delta - 1e-15);  // 1e-15: the round-off of a log near 1
+    worst = std::max(worst, -std::log(largest));
+  }
+  EXPECT_NEAR(worst, delta, 1e-12);  // phase 50 puts the peak midway: δ itself, to round-off
+  EXPECT_TRUE(std::isinf(stability::sampling_error(omega, 4.0 * 3.14159265358979 / omega)));  // ωh = 2π: no bound
+}
+
+// A sampling error that grows steadily along the fit (−δ at its start to 0 at its end) is a
+// straight line in ln A: the fit absorbs it whole and leaves no residual, so a bound from the
+// residual alone is 0 while the slope is wrong by δ/(n − 1) a half cycle. The δ term of the bound
+// covers it, and is not loose by more than the 1.5 of δ·Σ|d|/(2Σd²) against δ/(n − 1).
+TEST(NonlinearHunting, HoldRateBoundCoversASamplingErrorTheFitAbsorbs) {
+  const double delta = stability::sampling_error(2.0 * 3.14159265358979, 0.01);  // ≈ 4.9e-4
+  const double true_rate = -2e-4;                                                 // per period
+  const auto l = [&](double k) { return 0.5 * true_rate * k - delta * (1.0 - std::clamp((k - 100.0) / 99.0, 0.0, 1.0)); };
+  const stability::HoldRate r = stability::hold_rate(peaks_of(l), delta);
+  const double error = std::abs(r.rate.per_period - true_rate);
+  EXPECT_NEAR(error, 2.0 * delta / 99.0, 1e-12);  // the shift the line makes, per period
+  EXPECT_LE(error, r.rate.bound);
+  EXPECT_GT(error, 0.6 * r.rate.bound);  // (2/99)/(2·2500/(2·83325)) = 0.673: the δ term, not a loose one
+}
+
+// Settling onto a cycle from above: ln A = 0.2·exp(−k/60), a decay that slows toward 0. Over the
+// hold's second half the fitted rate, −5.9e-4 ± 2.9e-4 a period, is resolved below −1e-4 (a
+// verdict from the rate alone: dies), but it rises by 4.8e-4 from the first half of the span to
+// the second, more than their bounds (3.2e-4): still changing, toward the threshold, so undecided.
+// The collapse that speeds up (the mirror image, the rate falling) changes away from the
+// threshold and dies (−3.1e-3 a period, falling by 2.5e-3); a steady decay at −3e-4 a period does
+// not change and dies.
+TEST(NonlinearHunting, HoldRateStillChangingTowardTheThresholdIsUndecided) {
+  const double delta = stability::sampling_error(2.0 * 3.14159265358979, 0.01);
+  const stability::HoldRate settling = stability::hold_rate(peaks_of([](double k) { return 0.2 * std::exp(-k / 60.0); }), delta);
+  EXPECT_LT(settling.rate.per_period + settling.rate.bound, -1e-4);  // the rate alone says: dies
+  EXPECT_GT(settling.change, settling.change_bound);                 // but it is still rising
+  EXPECT_EQ(stability::rate_verdict(settling), stability::RateVerdict::undecided);
+
+  const stability::HoldRate collapse =
+      stability::hold_rate(peaks_of([](double k) { return -0.2 * std::exp((k - 200.0) / 60.0); }), delta);
+  EXPECT_LT(collapse.change, -collapse.change_bound);  // resolved, falling: away from −1e-4
+  EXPECT_EQ(stability::rate_verdict(collapse), stability::RateVerdict::dies);
+
+  const stability::HoldRate steady = stability::hold_rate(peaks_of([](double k) { return -1.5e-4 * k; }), delta);
+  EXPECT_NEAR(steady.rate.per_period, -3e-4, 1e-12);  // exact data: the fit to round-off
+  EXPECT_LE(std::abs(steady.change), steady.change_bound);
+  EXPECT_EQ(stability::rate_verdict(steady), stability::RateVerdict::dies);
+  // A growth that slows (approaching a cycle from below: 0.2·(1 − exp(−k/60))) falls toward the
+  // threshold but cannot cross it: it survives.
+  const stability::HoldRate approach =
+      stability::hold_rate(peaks_of([](double k) { return 0.2 * (1.0 - std::exp(-k / 60.0)); }), delta);
+  EXPECT_LT(approach.change, -approach.change_bound);
+  EXPECT_GT(approach.rate.per_period - approach.rate.bound, 0.0);
+  EXPECT_EQ(stability::rate_verdict(approach), stability::RateVerdict::survives);
+  // Too few half cycles in the halves (9 peaks: a span of 4, halves of 2): undecided.
+  EXPECT_EQ(stability::rate_verdict(stability::hold_rate(peaks_of([](double k) { return -0.01 * k; }, 9), delta)),
+            stability::RateVerdict::undecided);
 }
 
 TEST(NonlinearHunting, HuntingOfTheSecondWheelsetIsSeen) {

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "stability/branch_naming.hpp"
 #include "test_support.hpp"
 #include "validation/hunting_test_support.hpp"
 
@@ -316,6 +318,7 @@ struct BogieData {
   double a = 1.25;        // m, half the wheelbase
   double primary = 1e10;  // N/m, each primary spring, longitudinal and lateral
   WheelsetData wheelset;
+  int axles = 2;          // at x = a and −a; three: a, 0 and −a
 };
 
 Vehicle rigid_bogie(const BogieData& bd) {
@@ -326,10 +329,10 @@ Vehicle rigid_bogie(const BogieData& bd) {
   frame.mass = 2000.0;
   frame.inertia = {1000.0, 1500.0, 2000.0};  // bounce, roll and pitch free, on the vertical springs
   v.bodies.push_back(frame);
-  for (int i = 0; i < 2; ++i) {
+  for (int i = 0; i < bd.axles; ++i) {
     WheelsetData w = bd.wheelset;
-    w.name = i == 0 ? "wheelset1" : "wheelset2";
-    w.x = i == 0 ? bd.a : -bd.a;
+    w.name = "wheelset" + std::to_string(i + 1);
+    w.x = bd.a - 2.0 * bd.a * i / (bd.axles - 1);
     add_wheelset(v, w);
     for (double y : {-1.0, 1.0})
       v.elements.push_back(spring(w.name + ".primary", "frame", w.name, {w.x, y, 0.0}, bd.primary, bd.primary, 1e6));
@@ -337,9 +340,12 @@ Vehicle rigid_bogie(const BogieData& bd) {
   return v;
 }
 
+// ā² = Σx_i²/N about the axles' centre: a² for two axles at ±a, 2a²/3 for three at a, 0, −a
+// (no net yaw moment: (N·f11·l0² + f22·Σx_i²)ψ̇ = −N·f11·l0·λ·V·y/r0, docs/stability.md).
 double bogie_kinematic_wavelength(const BogieData& bd) {
   const auto& w = bd.wheelset;
-  return 2 * kPi * std::sqrt(w.r0 * w.l0 / w.conicity * (1 + bd.a * bd.a * w.creep.f22 / (w.l0 * w.l0 * w.creep.f11)));
+  const double a2 = bd.axles == 3 ? 2.0 * bd.a * bd.a / 3.0 : bd.a * bd.a;
+  return 2 * kPi * std::sqrt(w.r0 * w.l0 / w.conicity * (1 + a2 * w.creep.f22 / (w.l0 * w.l0 * w.creep.f11)));
 }
 
 BogieData kinematic_bogie() {
@@ -371,6 +377,28 @@ TEST(HuntingValidation, RigidBogieLowSpeedWavelength) {
   EXPECT_LT(e10, 5e-6);
   // Not Klingel's single-wheelset wave: the bogie's is longer by the factor √(1 + a²f22/(l0²f11)).
   EXPECT_GT(expected / (2 * kPi * std::sqrt(bd.wheelset.r0 * bd.wheelset.l0 / bd.wheelset.conicity)), 1.5);
+}
+
+// A rigid three-axle truck (review of 2026-11-28): its low-speed wavelength has ā² = 2a²/3 where
+// two axles have a², the mean square of the axles' offsets (WheelsetBogie::axle_spread), not the
+// half wheelbase's square, which would make it over 5 % longer; the hunting result's V/Λ_b uses
+// that spread (wheelset_carriers, one body: a one-bogie vehicle gets its V/Λ_b too).
+TEST(HuntingValidation, RigidThreeAxleTruckLowSpeedWavelength) {
+  BogieData bd = kinematic_bogie();
+  bd.axles = 3;
+  const double v = 0.1;
+  const auto m = hunting_model(rigid_bogie(bd));
+  const double measured = 2 * kPi * v / slowest_oscillatory_root(m, v).imag();
+  // As for two axles at 1e10 N/m (RigidBogieLowSpeedWavelength: the springs' compliance, < 5e-6).
+  EXPECT_LT(std::abs(measured / bogie_kinematic_wavelength(bd) - 1), 5e-6);
+  BogieData half_wheelbase = bd;
+  half_wheelbase.axles = 2;  // the same a used as for two axles
+  EXPECT_GT(bogie_kinematic_wavelength(half_wheelbase) / measured - 1, 0.05);
+  const std::vector<stability::WheelsetBogie> carriers = stability::wheelset_carriers(rigid_bogie(bd));
+  ASSERT_EQ(carriers.size(), 1u);  // one body carrying three: no bogies for the naming, a carrier here
+  EXPECT_TRUE(stability::wheelset_bogies(rigid_bogie(bd)).empty());
+  EXPECT_EQ(carriers[0].wheelsets.size(), 3u);
+  EXPECT_NEAR(carriers[0].axle_spread, std::sqrt(2.0 / 3.0) * bd.a, 1e-15);  // round-off of a mean of squares
 }
 
 // The digest's case: s = 1.58 m (l0 = 0.79), r = 0.525 m, n = 1/20, base 2.5 m (a = 1.25),

@@ -70,6 +70,23 @@ std::vector<double> per_variant(const std::vector<StudyVariant>& variants, const
   return times;
 }
 
+// The thread time between two progress reports of `run` on one thread reading each variant in
+// its worker (the progress is reported on the evaluating thread, after each variant), s.
+std::vector<double> per_progress_report(const std::function<void(const EvaluationOptions&)>& run) {
+  std::vector<double> times;
+  EvaluationOptions options;
+  options.threads = 1;
+  options.read_in_workers = true;
+  double last = thread_seconds();
+  options.progress = [&](double) {
+    const double now = thread_seconds();
+    times.push_back(now - last);
+    last = now;
+  };
+  run(options);
+  return times;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -118,49 +135,23 @@ int main(int argc, char** argv) {
     results.push_back(evaluate_variant(v, i++, study.deflection_rule, hunting_options_of(study), ride_rms_only(study),
                                  variant_work_of(study.ranking, study.deflection_rule)));
   });
-  // The workers' path: per variant, the thread time between two progress reports (one
-  // thread: the progress is reported on the evaluating thread, after each variant).
-  std::vector<double> in_worker;
-  {
-    EvaluationOptions options;
-    options.threads = 1;
-    options.read_in_workers = true;
-    double last = thread_seconds();
-    options.progress = [&](double) {
-      const double now = thread_seconds();
-      in_worker.push_back(now - last);
-      last = now;
-    };
-    Study first_n = study;
-    first_n.variants.resize(n);
-    sink += evaluate_study(first_n, options).size();
-  }
+  // The workers' path: per variant, the thread time between two progress reports.
+  Study first_n = study;
+  first_n.variants.resize(n);
+  const std::vector<double> in_worker =
+      per_progress_report([&](const EvaluationOptions& options) { sink += evaluate_study(first_n, options).size(); });
   // What `railmodal compare --format csv` does per variant: read + evaluate in a worker, then
   // the sink (the ranking's key, the CSV row into the temporary file); a variant names only the
   // modes its ranking reads (no CSV column holds a mode name). The ranking and writing after
   // the last variant are not counted.
-  std::vector<double> in_compare;
-  {
-    EvaluationOptions options;
-    options.threads = 1;
-    options.read_in_workers = true;
-    double last = thread_seconds();
-    options.progress = [&](double) {
-      const double now = thread_seconds();
-      in_compare.push_back(now - last);
-      last = now;
-    };
-    Study first_n = study;
-    first_n.variants.resize(n);
+  const std::vector<double> in_compare = per_progress_report([&](const EvaluationOptions& options) {
     std::ostringstream csv;
     compare_study(csv, first_n, options, OutputFormat::csv);
     sink += static_cast<double>(csv.str().size());
-  }
+  });
   // Ranking needs every variant of the study: rank a study of the first n.
-  Study first = study;
-  first.variants.resize(n);
   const double rank_start = thread_seconds();
-  const Comparison ranked = rank_variants(first, results);
+  const Comparison ranked = rank_variants(first_n, results);
   const double rank_seconds = (thread_seconds() - rank_start) / n;
 
   const Spread e = spread_us(eigen), w = spread_us(sweep);
