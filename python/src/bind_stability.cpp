@@ -187,7 +187,8 @@ void bind_hunting(py::module_& m) {
             return out;
           },
           "The locus as records, one per speed and branch (the rows of as_dict(): speed_m_s in m/s, "
-          "eigenvalue_re and eigenvalue_im in 1/s, damping_ratio a fraction, frequency_hz in Hz)");
+          "eigenvalue_re and eigenvalue_im in 1/s, damping_ratio a fraction, frequency_hz in Hz, continuity "
+          "0 … 1: how closely the branch's eigenvector follows on from the previous speed's)");
 
   m.def(
       "hunting_stability",

@@ -129,7 +129,9 @@ void bind_variant_results(py::module_& m) {
                                     py::arg("unbounded") = d.unbounded, py::arg("kept") = d.kept()));
             });
           },
-          "One row per variant and permissible-deflection check")
+          "One row per variant and permissible-deflection check: index, variant, element, stage, basis (where the "
+          "limit comes from), permissible_m and deflection_m (m), speed_m_s (m/s), source, unbounded, kept (the "
+          "deflection within the permissible one)")
       .def(
           "static_deflections",
           [](const VariantResults& r) {

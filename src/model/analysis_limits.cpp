@@ -15,9 +15,9 @@ void refuse_series_dampers(const LinearSystem& system, const char* analysis) {
     const std::string name = row.element >= 0 && row.element < static_cast<int>(elements.size())
                                  ? elements[static_cast<size_t>(row.element)].name
                                  : std::to_string(row.element);
-    throw std::invalid_argument(std::string(analysis) + ": element '" + name + "' has a series damper, which " +
-                                analysis +
-                                " does not represent (the hunting stability, the damped modes and the linear ride do)");
+    throw std::invalid_argument(std::string(analysis) + ": element '" + name +
+                                "' has a series damper, which this analysis does not represent (the hunting "
+                                "stability, the damped modes and the linear ride do)");
   }
 }
 
@@ -39,8 +39,8 @@ std::vector<std::string> undamped_mode_notes(const LinearSystem& system) {
   std::vector<std::string> notes = wheelset_notes(system);
   if (has_series_dampers(system.vehicle))
     notes.push_back(
-        "series dampers: left out of these modes, since they carry no static force (`railmodal modes --damped` "
-        "and `railmodal stability` represent them)");
+        "series dampers: left out of these modes, since they carry no static force (`railmodal modes --damped`, "
+        "`railmodal stability` and `railmodal ride` represent them)");
   return notes;
 }
 

@@ -168,7 +168,8 @@ std::string compared_text(const FftCheckResult& r) {
                      "there"
                    : "");
   }
-  return "compared: the spectral peak of each excited mode with its LINEAR modal frequency, within " +
+  return std::string("compared: the spectral peak of each excited mode with its LINEAR ") +
+         (damped(r) ? "damped frequency (the dampers' viscous part)" : "modal frequency") + ", within " +
          percent(FftCheck::kNonlinearTolerance) +
          " (friction moves the lines by √(1 ± φ), ≤ 4.3 % for φ ≤ 0.085), where the record resolves " +
          percent(FftCheck::kNonlinearTolerance) + " of f (line width ≤ " + percent(FftCheck::kNonlinearTolerance) +

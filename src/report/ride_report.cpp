@@ -115,7 +115,7 @@ std::string percent(double share) {
 
 // "body pitch (1.29 Hz) 124 %; body bounce (1.07 Hz) 39 %; cross terms −63 %": the largest
 // shares of the variance, then the modes not named together and the cross terms, so that the
-// percentages add up to 100 % (semicolons: mode names have commas). Each mode's share is the
+// percentages add up to 100 % before each is rounded (semicolons: mode names have commas). Each mode's share is the
 // variance of its term alone; the cross terms Σ_{j≠k}∫Re(H_jH_k*)G df are negative where two
 // modes' terms partly cancel at the output, and then one mode's share exceeds 100 %. A
 // suspension force's direct track term alone comes first; what is left beside it is named so.
@@ -827,9 +827,13 @@ void write_at_speed(JsonWriter& j, const RideResult& r, const RideAtSpeed& at) {
       continue;
     }
     if (every_index) {
-      // Σ modes' share + cross_term_share = 1: the cross terms' part of the variance beside the modes'.
-      j.member("cross_term_share", o.rms > 0.0 ? o.cross_term_variance / (o.rms * o.rms) : 0.0);
+      // Σ modes' share + direct_share + cross_term_share = 1, the shares the text's percentages
+      // give (dominant_modes): cross_term_variance is σ² − Σ modes' variances, the direct track
+      // term included, so the cross terms' share is what is left of it without that term.
+      const double variance = o.rms * o.rms;
+      j.member("cross_term_share", variance > 0.0 ? (o.cross_term_variance - o.direct_variance) / variance : 0.0);
       j.member("cross_term_variance", o.cross_term_variance);
+      j.member("direct_share", variance > 0.0 ? o.direct_variance / variance : 0.0);
       j.member("direct_variance", o.direct_variance).key("modes").begin_array();
       for (const ModalContribution& m : o.modes)
         // 1-based, as the reports' tables number the modes

@@ -549,7 +549,16 @@ std::string critical_speed_note(const LinearSystem& system, const RideOptions& o
   hunting.min_speed = std::min(hunting.min_speed, 0.5 * lowest);
   hunting.speed_count = 100;  // the crossing is refined to relative_tolerance whatever the grid
   hunting.threads = options.threads;
-  const HuntingResult r = solve_hunting_stability(system, hunting);
+  // The note explains numbers already computed: a failure of the root locus (a numerical
+  // failure at some speed of its grid) must not cost the ride, so it is said instead.
+  HuntingResult r;
+  try {
+    r = solve_hunting_stability(system, hunting);
+  } catch (const std::exception& e) {
+    return "the vehicle on its wheelsets has a growing motion at " + shortest_text(lowest * 3.6, 6) +
+           " km/h; its linear critical speed could not be found (" + e.what() +
+           "): `railmodal stability` gives the root locus";
+  }
   const std::string tail = ": above it a free motion grows and the outputs it moves have no stationary response; "
                            "`railmodal stability` gives the root locus";
   if (r.critical)

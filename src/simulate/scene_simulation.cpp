@@ -325,14 +325,15 @@ std::string why_decayed(const FftCheck& check, const simulate::FreeMode& free, d
   const double steady = std::abs(shape_at_dof) * free.initial_amplitude;  // its line, were it not to decay
   const double line = steady * simulate::hann_decay_gain(free.decay_rate, record_s);
   if (line >= floor || steady < floor) return "";
+  // Only a free release is advised: a record short enough for the decay (a few 1/σ) has a
+  // resolution 1/T too coarse to tell the mode from the forcing's lines (review 2026-11-27).
   char text[520];
   std::snprintf(text, sizeof text,
                 "its free response (ζ = %.3f) falls as e^{−%.3g t}, to 1 %% of its start by %.3g s; in the Hann "
                 "spectrum of the %.3g s record its line would be %.1e of the largest (%s): a free release (no "
-                "[[source]], [[simulation.initial]] displacing the mode) or a run of about %.3g s (3/σ) checks it",
+                "[[source]], [[simulation.initial]] displacing the mode) checks it",
                 free.damping_ratio, free.decay_rate, std::log(100.0) / free.decay_rate, record_s, line / largest,
-                floor == sought ? "peaks are sought above 3 % of it" : "under a tenth of the spectrum at its frequency",
-                3.0 / free.decay_rate);
+                floor == sought ? "peaks are sought above 3 % of it" : "under a tenth of the spectrum at its frequency");
   return text;
 }
 

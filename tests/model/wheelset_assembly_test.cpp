@@ -278,8 +278,8 @@ void expect_series_damper_refused(const std::function<void()>& run, const std::s
     run();
     FAIL() << analysis << " ran";
   } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()), analysis + ": element 'yaw damper' has a series damper, which " + analysis +
-                                         " does not represent (the hunting stability, the damped modes and the "
+    EXPECT_EQ(std::string(e.what()), analysis + ": element 'yaw damper' has a series damper, which this analysis "
+                                         "does not represent (the hunting stability, the damped modes and the "
                                          "linear ride do)");
   }
 }

@@ -395,6 +395,14 @@ TEST(RideReport, DirectTrackTermAndOutputsWithoutSharesKeepTheSum) {
   const std::string t = written(r, OutputFormat::table);
   EXPECT_TRUE(has(t, "direct track term 250 %; body bounce (1.10 Hz) 50 %; cross terms -200 %")) << t;
   EXPECT_FALSE(has(t, "cross terms 100 %")) << t;
+  // JSON's shares are the text's: direct 2.5, cross terms −2, with the mode's 0.5 adding up to 1
+  // (the review of 2026-11-27: cross_term_share had held the direct term too).
+  const nlohmann::json j = nlohmann::json::parse(written(r, OutputFormat::json));
+  const auto& force = j["speeds"][1]["outputs"][1];
+  EXPECT_NEAR(force["direct_share"].get<double>(), 2.5, 1e-12);  // round-off of 10/4
+  EXPECT_NEAR(force["cross_term_share"].get<double>(), -2.0, 1e-12);
+  EXPECT_NEAR(force["direct_share"].get<double>() + force["cross_term_share"].get<double>() +
+                  force["modes"][0]["share"].get<double>(), 1.0, 1e-12);
 }
 
 TEST(RideReport, MarkdownAndHtmlHaveTheTablesAndTheCharts) {
