@@ -14,6 +14,7 @@
 #include "railmodal/ride.hpp"
 #include "railmodal/ride_simulation.hpp"
 #include "ride/ride_state_space.hpp"
+#include "ride/ride_test_systems.hpp"
 #include "series_damper_coach.hpp"
 #include "test_support.hpp"
 
@@ -87,25 +88,6 @@ struct BodyOnBogie {
   }
 };
 
-RideOutput series_body_output(ResponseQuantity quantity, RideAxis axis = RideAxis::vertical) {
-  RideOutput o;
-  o.name = std::string("body ") + to_string(quantity);
-  o.body = "body";
-  o.axis = axis;
-  o.quantity = quantity;
-  return o;
-}
-
-// A periodic sine of `cycles` wavelengths over `samples` samples of `step` m.
-TrackGeometry series_sine_track(double amplitude, int cycles, int samples, double step) {
-  TrackGeometry g;
-  g.step = step;
-  g.periodic = true;
-  g.vertical_level.resize(samples);
-  for (int n = 0; n < samples; ++n) g.vertical_level(n) = amplitude * std::cos(2 * kPi * cycles * n / samples);
-  return g;
-}
-
 // The series damper matters here: at 1 Hz ωc/k = 0.13, so the Maxwell stiffness differs from the
 // plain damper's iωc by 13 % (and the march would be 13 % off had it left the spring out).
 TEST(RideSeriesDamper, SteadyStateOverASineIsTheMaxwellResponse) {
@@ -113,11 +95,11 @@ TEST(RideSeriesDamper, SteadyStateOverASineIsTheMaxwellResponse) {
   const LinearSystem system = vehicle.system();
   ASSERT_EQ(system.series_dampers.size(), 1u);
   constexpr double kAmplitude = 0.002, kSpeed = 25.0;
-  const TrackGeometry track = series_sine_track(kAmplitude, 4, 1600, 1.0 / 16);  // λ = 25 m: 1 Hz at 25 m/s
+  const TrackGeometry track = sine_track(kAmplitude, 4, 1600, 1.0 / 16);  // λ = 25 m: 1 Hz at 25 m/s
   RideSimulationOptions o;
   o.speed = kSpeed;
   o.time_step = 1.0 / 16 / kSpeed;
-  const RideSimulationResult r = simulate_ride(system, track, {series_body_output(ResponseQuantity::displacement)}, o);
+  const RideSimulationResult r = simulate_ride(system, track, {body_point(ResponseQuantity::displacement)}, o);
   ASSERT_EQ(r.histories.size(), 1u);
   EXPECT_TRUE(r.summary.passed());
   std::complex<double> sum = 0.0;  // the 1 Hz line of one period (4 cycles: bin 4), as an amplitude
@@ -159,8 +141,8 @@ TEST(RideSeriesDamper, RealisationChecksHold) {
   RideSimulationOptions o;
   o.speed = kSpeed;
   o.time_step = s.step / kSpeed;
-  const std::vector<RideOutput> outputs{series_body_output(ResponseQuantity::displacement),
-                                        series_body_output(ResponseQuantity::acceleration)};
+  const std::vector<RideOutput> outputs{body_point(ResponseQuantity::displacement),
+                                        body_point(ResponseQuantity::acceleration)};
   const RideSimulationResult r = simulate_ride(system, geometry, outputs, o);
   const RideFftChecks checks = check_ride_realisation(system, track, geometry, r, o);
   ASSERT_TRUE(checks.exact_bin_error);
@@ -193,8 +175,8 @@ TEST(RideSeriesDamper, CoachWithYawDampersHasTheFrequencyDomainsTransferFunction
   const LinearSystem coach = assemble(coach_with_yaw_dampers(), DofSet::lateral);
   ASSERT_FALSE(coach.series_dampers.empty());
   const TrackIrregularitySpectra track = centred_ore(TrackIrregularity::alignment, 8192.0);
-  const std::vector<RideOutput> outputs{series_body_output(ResponseQuantity::displacement, RideAxis::lateral),
-                                        series_body_output(ResponseQuantity::acceleration, RideAxis::lateral)};
+  const std::vector<RideOutput> outputs{body_point(ResponseQuantity::displacement, RideAxis::lateral),
+                                        body_point(ResponseQuantity::acceleration, RideAxis::lateral)};
   constexpr double kSpeed = 40.0;
   RideOptions options;
   options.speeds = {kSpeed};
@@ -251,12 +233,12 @@ TEST(RideSeriesDamper, WhatStaysRefusedIsNamed) {
   const BodyOnBogie vehicle;
   LinearSystem on_track = vehicle.system();
   on_track.series_dampers[0].element = 0;  // "wheel 1", a track input
-  const TrackGeometry track = series_sine_track(0.001, 4, 1600, 1.0 / 16);
+  const TrackGeometry track = sine_track(0.001, 4, 1600, 1.0 / 16);
   RideSimulationOptions o;
   o.speed = 25.0;
   o.time_step = 1.0 / 16 / 25.0;
   try {
-    simulate_ride(on_track, track, {series_body_output(ResponseQuantity::displacement)}, o);
+    simulate_ride(on_track, track, {body_point(ResponseQuantity::displacement)}, o);
     FAIL() << "a series damper on the track was taken";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("ride simulation: element 'wheel 1' stands on the track with a series damper"),
@@ -265,7 +247,7 @@ TEST(RideSeriesDamper, WhatStaysRefusedIsNamed) {
   }
   o.effects.leaf_friction = true;
   try {
-    simulate_ride(vehicle.system(), track, {series_body_output(ResponseQuantity::displacement)}, o);
+    simulate_ride(vehicle.system(), track, {body_point(ResponseQuantity::displacement)}, o);
     FAIL() << "nonlinear effects with a series damper were taken";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("the ride with nonlinear effects: element 'body damper' has a series damper"),

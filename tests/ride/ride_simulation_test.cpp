@@ -18,24 +18,6 @@ namespace {
 constexpr double kMass = 10000.0, kStiffness = 4e5, kDamping = 8e3;  // 1 Hz bounce on two wheels, ζ ≈ 0.13
 const std::vector<double> kWheels{4.3, -4.3};                          // 8.6 m apart: not a whole number of steps
 
-RideOutput body_point(ResponseQuantity quantity) {
-  RideOutput o;
-  o.name = std::string("body ") + to_string(quantity);
-  o.body = "body";
-  o.quantity = quantity;
-  return o;
-}
-
-// A periodic sine of `cycles` wavelengths over `samples` samples of `step` m.
-TrackGeometry sine_track(double amplitude, int cycles, int samples, double step) {
-  TrackGeometry g;
-  g.step = step;
-  g.periodic = true;
-  g.vertical_level.resize(samples);
-  for (int n = 0; n < samples; ++n) g.vertical_level(n) = amplitude * std::cos(2 * kPi * cycles * n / samples);
-  return g;
-}
-
 // Linear interpolation of a sampled cosine of `per` samples a period keeps the fundamental
 // with the gain sinc²(1/per) (the triangle's transform): the input the vehicle sees.
 double interpolation_gain(double per) {

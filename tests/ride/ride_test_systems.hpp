@@ -2,10 +2,15 @@
 // and dampers, bounce only, so its frequency response is written down directly.
 #pragma once
 
+#include <cmath>
 #include <complex>
+#include <string>
 #include <vector>
 
 #include "railmodal/linear_system.hpp"
+#include "railmodal/ride.hpp"
+#include "railmodal/ride_simulation.hpp"
+#include "test_support.hpp"
 
 namespace railmodal::test {
 
@@ -48,6 +53,26 @@ inline std::complex<double> bouncing_mass_response(double mass, double k, double
   for (double x : wheel_x) sum += std::complex<double>(k, w * c) * std::polar(1.0, -w * (lead - x) / speed);
   const double n = static_cast<double>(wheel_x.size());
   return sum / std::complex<double>(n * k - w * w * mass, w * n * c);
+}
+
+/// The body's reference point as a ride output ("body displacement", …) along `axis`.
+inline RideOutput body_point(ResponseQuantity quantity, RideAxis axis = RideAxis::vertical) {
+  RideOutput o;
+  o.name = std::string("body ") + to_string(quantity);
+  o.body = "body";
+  o.axis = axis;
+  o.quantity = quantity;
+  return o;
+}
+
+/// A periodic sine of `cycles` wavelengths over `samples` samples of `step` m.
+inline TrackGeometry sine_track(double amplitude, int cycles, int samples, double step) {
+  TrackGeometry g;
+  g.step = step;
+  g.periodic = true;
+  g.vertical_level.resize(samples);
+  for (int n = 0; n < samples; ++n) g.vertical_level(n) = amplitude * std::cos(2 * kPi * cycles * n / samples);
+  return g;
 }
 
 }  // namespace railmodal::test
