@@ -10,10 +10,11 @@
 #include <functional>
 #include <vector>
 
+#include "test_support.hpp"
+
 namespace railmodal::test {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr TrackIrregularity kAll[] = {TrackIrregularity::vertical_level, TrackIrregularity::alignment,
                                       TrackIrregularity::cross_level};
 const WavenumberBand k3To70m{2 * kPi / 70, 2 * kPi / 3};

@@ -20,7 +20,6 @@
 namespace railmodal::test {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // One unit in the last place of π (2⁻⁵¹): the spacing of doubles in [2, 4), where atan2 of the
 // left half-plane lands. The kernel promises 2 of them.
 const double kUlpOfPi = std::ldexp(1.0, -51);

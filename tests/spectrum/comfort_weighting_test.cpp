@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
+#include "test_support.hpp"
+
 namespace railmodal::test {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Half a unit in the last of `digits` significant figures of `printed`: what rounding to the
 // printed figures allows.
