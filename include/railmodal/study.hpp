@@ -249,6 +249,9 @@ struct VariantResult {
   std::vector<RideSummary> ride;    ///< in the ride's output order
   /// The largest N_MV estimate over the floor points and speeds; none without comfort points.
   std::optional<double> max_nmv;
+  /// What max_nmv covers when its floor point has no lateral or no vertical output, as the ride
+  /// says it ("vertical only"; the missing axes taken as 0); "" when it is over both.
+  std::string max_nmv_partial;
   bool deflections_checked = false;  ///< the study names a deflection rule
   std::vector<DeflectionCheck> deflections;  ///< every element or stage the rule limits
   /// The checks (modes, critical speeds, deflections kept) and the stage times of the

@@ -92,12 +92,15 @@ py::list harmonic_records(const GearResult& r) {
   return out;
 }
 
+// The keys of `railmodal balance --format json`'s wheels (docs/input.md, "Names and units in
+// outputs"): the hammer blow max|ΔP| = α·П, the signed extremes of ΔP and the least load.
 py::list wheel_load_records(const GearResult& r) {
   py::list out;
   for (const GearWheelLoad& w : r.wheels)
     out.append(py::dict(py::arg("axle") = w.axle, py::arg("right") = w.right, py::arg("static_load_n") = w.static_load,
-                        py::arg("max_dynamic_load_n") = w.max_dynamic_load,
-                        py::arg("min_dynamic_load_n") = w.min_dynamic_load, py::arg("alpha") = w.alpha,
+                        py::arg("max_hammer_blow_n") = w.alpha * w.static_load,
+                        py::arg("max_dP_n") = w.max_dynamic_load, py::arg("min_dP_n") = w.min_dynamic_load,
+                        py::arg("least_load_n") = w.static_load + w.min_dynamic_load, py::arg("alpha") = w.alpha,
                         py::arg("alpha_89a") = w.alpha_89a, py::arg("wheel_lift") = w.wheel_lift));
   return out;
 }
@@ -129,8 +132,9 @@ void bind_gear_result(py::module_& m) {
       .def_readonly("max_surging_n", &GearResult::max_surging)
       .def_readonly("max_nosing_n_m", &GearResult::max_nosing)
       .def_property_readonly("wheels", &wheel_load_records,
-                             "records per wheel: axle, right, static_load_n, max/min_dynamic_load_n (N), alpha and "
-                             "alpha_89a (overload coefficients, dimensionless), wheel_lift")
+                             "records per wheel (axle-major, right then left): axle, right, static_load_n (N), "
+                             "max_hammer_blow_n (max |dP|, N), max_dP_n and min_dP_n (N, + pressing the rail), "
+                             "least_load_n (N), alpha and alpha_89a (overload coefficients, dimensionless), wheel_lift")
       .def("harmonics", &harmonic_records,
            "records: quantity (horizontal, vertical, guide per cylinder; wheel_load per wheel; surging; nosing), "
            "index, order, cosine, sine, amplitude (N; N·m for nosing)")
@@ -152,10 +156,16 @@ void bind_gear_result(py::module_& m) {
         "The speed at which an overload coefficient found at speed_m_s reaches `limit` (forces grow as V²).");
 }
 
+// A wheel as the reports name it, "coupled 1 R": its axle's name and the side.
+std::string wheel_name(const DrivingGear& gear, const WheelBalance& w) {
+  return gear.axles[static_cast<size_t>(w.axle)].name + (w.right ? " R" : " L");
+}
+
 py::list wheel_balance_records(const BalanceResult& r) {
   py::list out;
   for (const WheelBalance& w : r.wheels)
-    out.append(py::dict(py::arg("axle") = w.axle, py::arg("right") = w.right,
+    out.append(py::dict(py::arg("wheel") = wheel_name(r.balanced, w), py::arg("axle") = w.axle,
+                        py::arg("right") = w.right,
                         py::arg("rotating_mass_kg") = w.rotating_mass, py::arg("rotating_angle_rad") = w.rotating_angle,
                         py::arg("vertical_mass_kg") = w.vertical_mass, py::arg("vertical_angle_rad") = w.vertical_angle,
                         py::arg("overbalance_mass_kg") = w.overbalance_mass,
@@ -178,8 +188,10 @@ void bind_balance_result(py::module_& m) {
       .def_readonly("speed_m_s", &BalanceResult::speed)
       .def_property_readonly("rule", [](const BalanceResult& r) { return std::string(to_string(r.rule)); })
       .def("records", &wheel_balance_records,
-           "The counterweights, one row per wheel (axle-major, right then left): masses in kg on the axle's crank "
-           "radius, angles in rad ahead of the wheel's crank, the hammer blow and α after balancing")
+           "The counterweights, one row per wheel (axle-major, right then left): wheel (as the reports name it, "
+           "'coupled 1 R'), axle, right, rotating_mass_kg, vertical_mass_kg, overbalance_mass_kg, total_mass_kg on "
+           "the axle's crank radius, rotating_angle_rad, vertical_angle_rad, overbalance_angle_rad, total_angle_rad "
+           "ahead of the wheel's crank, max_hammer_blow_n (max |dP| after balancing, N), alpha and alpha_89a")
       .def_readonly("balanced", &BalanceResult::balanced, "the gear with its counterweights")
       .def_readonly("before", &BalanceResult::before)
       .def_readonly("after", &BalanceResult::after)
@@ -190,11 +202,12 @@ void bind_balance_result(py::module_& m) {
           [](const BalanceResult& r) {
             py::list out;
             for (const BalanceTradeOff& t : r.trade_off)
-              out.append(py::dict(py::arg("fraction") = t.fraction, py::arg("max_alpha") = t.max_alpha,
+              out.append(py::dict(py::arg("balanced_fraction") = t.fraction, py::arg("max_alpha") = t.max_alpha,
                                   py::arg("max_surging_n") = t.max_surging, py::arg("max_nosing_n_m") = t.max_nosing));
             return out;
           },
-          "α, surging and nosing against the fraction of reciprocating mass balanced (records)")
+          "Records: balanced_fraction (of the reciprocating masses, 0 … 1), max_alpha, max_surging_n (N), "
+          "max_nosing_n_m (N·m): α, surging and nosing against the fraction balanced")
       .def_readonly("summary", &BalanceResult::summary);
 
   py::class_<BalanceStudy>(m, "BalanceStudy", "The gear's forces and its balancing by each vertical rule ('railmodal balance')")

@@ -92,7 +92,7 @@ struct CriticalSpeedList {
 py::dict critical_speed_record(const CriticalSpeed& c) {
   py::dict r;
   r["speed_m_s"] = c.speed;
-  r["speed_km_h"] = 3.6 * c.speed;
+  r["speed_kmh"] = 3.6 * c.speed;
   r["source"] = c.source;
   r["source_kind"] = c.source_kind;
   r["harmonic"] = c.harmonic;
@@ -299,7 +299,7 @@ void bind_critical_speeds(py::module_& m) {
              for (const CriticalSpeed& c : l.rows) out.append(critical_speed_record(c));
              return out;
            },
-           "One dict per critical speed: speed_m_s (m/s), speed_km_h (km/h), source, source_kind, harmonic, mode, "
+           "One dict per critical speed: speed_m_s (m/s), speed_kmh (km/h), source, source_kind, harmonic, mode, "
            "mode_name, frequency_hz (Hz), output, unbounded, amplitude (the output's: m or rad), "
            "growth_per_half_period and friction_decrement_per_half_period (m or rad per half period), "
            "friction_stops, friction_threshold_scale (a factor on the source amplitude)")

@@ -41,7 +41,7 @@ py::dict variant_record(const VariantResult& r) {
                   py::arg("lowest_critical_speed_m_s") = metric_or_none(r, "lowest_critical_speed"),
                   py::arg("metacentric_height_m") = optional_value(r.metacentric_height),
                   py::arg("hunting_speed_m_s") = optional_value(r.hunting_speed),
-                  py::arg("max_nmv") = optional_value(r.max_nmv),
+                  py::arg("max_nmv") = optional_value(r.max_nmv), py::arg("max_nmv_partial") = r.max_nmv_partial,
                   py::arg("dynamic_deflection_ratio") =
                       r.deflections_checked ? metric_or_none(r, "dynamic_deflection_ratio") : py::none());
 }
@@ -64,7 +64,8 @@ void bind_variant_results(py::module_& m) {
             return per_variant(r.results, [](const VariantResult& v, py::list& out) { out.append(variant_record(v)); });
           },
           "One row per variant: index, name, parameters, ok, failure, mode_count, lowest_critical_speed_m_s "
-          "(m/s), metacentric_height_m (m), hunting_speed_m_s (m/s), max_nmv (dimensionless), "
+          "(m/s), metacentric_height_m (m), hunting_speed_m_s (m/s), max_nmv (dimensionless), max_nmv_partial (what a "
+          "partial max_nmv covers, 'vertical only'; '' when it is over the lateral and vertical axes), "
           "dynamic_deflection_ratio (deflection / permissible, dimensionless)")
       .def(
           "modes",

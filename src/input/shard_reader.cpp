@@ -57,6 +57,7 @@ VariantResult result_from_json(const json& j) {
       r.ride.push_back(summary);
     }
     if (!j.at("max_nmv").is_null()) r.max_nmv = j.at("max_nmv").get<double>();
+    if (j.contains("max_nmv_partial")) r.max_nmv_partial = j.at("max_nmv_partial").get<std::string>();
   }
   if (j.contains("dynamic_deflections")) {
     r.deflections_checked = true;

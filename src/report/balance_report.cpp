@@ -92,7 +92,7 @@ Section harmonics_table(const GearResult& r, const std::vector<std::string>& cyl
 Section counterweight_table(const BalanceStudy& study, const std::vector<std::string>& wheels) {
   Section s{"Counterweights by rule (kg on the crank radius, degrees ahead of the wheel's crank)",
             table_of({"rule", "wheel", "rotating [kg]", "at [deg]", "vertical [kg]", "at [deg]", "overbalance [kg]",
-                      "at [deg]", "total [kg]", "at [deg]", "max dP, hammer blow [kN]", "least load [kN]", "α", "α (89a)",
+                      "at [deg]", "total [kg]", "at [deg]", "max hammer blow [kN]", "least load [kN]", "α", "α (89a)",
                       "wheel lift"})};
   s.table.numeric[0] = s.table.numeric[1] = s.table.numeric[14] = false;
   for (const BalanceResult& b : study.by_rule) {
@@ -236,6 +236,17 @@ void write_states(JsonWriter& j, const GearResult& r, const std::vector<std::str
   j.end_array();
 }
 
+// A wheel's load over the revolution, the same members for the gear as given and after balancing
+// (user audit 2026-11-27c, F7: the hammer blow had two names): the hammer blow max|ΔP| = α·П,
+// the signed extremes of ΔP (+ pressing the rail), the least load П + min ΔP, α and ΔP's harmonics.
+void write_wheel_load(JsonWriter& j, const GearWheelLoad& x) {
+  j.member("max_hammer_blow_n", x.alpha * x.static_load);
+  j.member("max_dP_n", x.max_dynamic_load).member("min_dP_n", x.min_dynamic_load);
+  j.member("least_load_n", x.static_load + x.min_dynamic_load).member("alpha", x.alpha);
+  j.member("alpha_89a", x.alpha_89a).member("wheel_lift", x.wheel_lift).key("dP_harmonics_n");
+  write_harmonics(j, x.harmonics);
+}
+
 void write_gear(JsonWriter& j, const GearResult& r, const std::vector<std::string>& cylinders,
                 const std::vector<std::string>& wheels) {
   j.begin_object().key("states_every_15_deg");
@@ -258,10 +269,7 @@ void write_gear(JsonWriter& j, const GearResult& r, const std::vector<std::strin
   for (std::size_t w = 0; w < r.wheels.size(); ++w) {
     const GearWheelLoad& x = r.wheels[w];
     j.begin_object().member("wheel", wheels[w]).member("static_load_n", x.static_load);
-    j.member("max_dP_n", x.max_dynamic_load).member("min_dP_n", x.min_dynamic_load);
-    j.member("least_load_n", x.static_load + x.min_dynamic_load).member("alpha", x.alpha);
-    j.member("alpha_89a", x.alpha_89a).member("wheel_lift", x.wheel_lift).key("dP_harmonics_n");
-    write_harmonics(j, x.harmonics);
+    write_wheel_load(j, x);
     j.end_object();
   }
   j.end_array().member("max_surging_n", r.max_surging).member("max_nosing_n_m", r.max_nosing).end_object();
@@ -283,11 +291,7 @@ void write_rule(JsonWriter& j, const BalanceStudy& study, const BalanceResult& b
     j.member("vertical_mass_kg", x.vertical_mass).member("vertical_angle_deg", x.vertical_angle / kDegree);
     j.member("overbalance_mass_kg", x.overbalance_mass).member("overbalance_angle_deg", x.overbalance_angle / kDegree);
     j.member("total_mass_kg", x.total_mass).member("total_angle_deg", x.total_angle / kDegree);
-    j.member("max_hammer_blow_n", x.max_hammer_blow);
-    j.member("least_load_n", b.after.wheels[w].static_load + b.after.wheels[w].min_dynamic_load);
-    j.member("alpha", x.alpha).member("alpha_89a", x.alpha_89a).member("wheel_lift", x.alpha >= 1.0);
-    j.key("dP_harmonics_n");
-    write_harmonics(j, b.after.wheels[w].harmonics);
+    write_wheel_load(j, b.after.wheels[w]);
     j.end_object();
   }
   const double alpha = largest_alpha(b);
@@ -419,7 +423,7 @@ void write_csv(std::ostream& out, const BalanceStudy& study, const std::vector<s
       put("overbalance angle", "deg", x.overbalance_angle / kDegree);
       put("total mass", "kg", x.total_mass);
       put("total angle", "deg", x.total_angle / kDegree);
-      put("max dP", "N", x.max_hammer_blow);
+      put("max hammer blow", "N", x.max_hammer_blow);
       put("least load", "N", b.after.wheels[w].static_load + b.after.wheels[w].min_dynamic_load);
       put("alpha", "1", x.alpha);
       put("alpha (89a)", "1", x.alpha_89a);

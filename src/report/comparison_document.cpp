@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/critical_speed.hpp"
@@ -43,12 +44,25 @@ struct Writer {
   std::string bold(const std::string& s) const { return html ? "<b>" + html_escape(s) + "</b>" : "**" + s + "**"; }
 };
 
+// A metric's value as the table shows it (study::shown_as_tabled), or the word for none or ±∞.
 std::string metric_text(const std::string& metric, const std::optional<double>& x) {
   if (!x) return "–";
   if (std::isinf(*x)) return *x > 0 ? (study::infinite_is_unbounded(metric) ? "unbounded" : "none in range") : "−∞";
-  const study::DisplayUnit u = study::display_unit(metric);
-  const std::string unit = u.unit;
-  return significant(*x * u.per_si, 4) + (unit.empty() ? "" : " " + unit);
+  return study::shown_as_tabled(metric, *x);
+}
+
+// Two values of a metric set side by side, "0.567 s against 0.531 s": as the table shows them,
+// with more decimals where two values that differ would read the same (study::shown_apart).
+std::pair<std::string, std::string> metric_texts(const std::string& metric, const std::optional<double>& a,
+                                                 const std::optional<double>& b) {
+  if (a && b && std::isfinite(*a) && std::isfinite(*b)) return study::shown_apart(metric, *a, *b);
+  return {metric_text(metric, a), metric_text(metric, b)};
+}
+
+// " (vertical only)" after a partial N_MV (VariantResult::max_nmv_partial), as the table and the
+// ride write it; "" otherwise.
+std::string scope_of(const std::string& metric, const VariantResult& r) {
+  return metric == "max_nmv" && !r.max_nmv_partial.empty() ? " (" + r.max_nmv_partial + ")" : "";
 }
 
 // A criterion as docs/studies.md names its metric: "period of body bounce (maximised)".
@@ -71,11 +85,14 @@ std::string against_runner_up(const Comparison& c, const Writer& w, const Ranked
   while (k < objective.size() && k < winner.criteria.size() && k < runner.criteria.size() &&
          winner.criteria[k] == runner.criteria[k])
     ++k;
-  if (k < objective.size() && k < winner.criteria.size() && k < runner.criteria.size())
+  if (k < objective.size() && k < winner.criteria.size() && k < runner.criteria.size()) {
+    const std::string& metric = objective[k].metric;
+    const auto [ahead, behind] = metric_texts(metric, winner.criteria[k], runner.criteria[k]);
     return w.text(" It is ahead of the runner-up ") + w.bold(runner.result.name) +
-           w.text(" on " + goal(objective[k]) + ": " + metric_text(objective[k].metric, winner.criteria[k]) +
-                  " against " + metric_text(objective[k].metric, runner.criteria[k]) +
+           w.text(" on " + goal(objective[k]) + ": " + ahead + scope_of(metric, winner.result) + " against " + behind +
+                  scope_of(metric, runner.result) +
                   (k > 0 ? " (the criteria before it tie)." : "."));
+  }
   return w.text(" It ties with the runner-up ") + w.bold(runner.result.name) +
          w.text(" on every criterion and comes first in study order.");
 }
@@ -88,8 +105,10 @@ std::string against_base(const Comparison& c, const Writer& w, const RankedVaria
   for (size_t k = 0; k < objective.size(); ++k) {
     const auto& mine = k < winner.criteria.size() ? winner.criteria[k] : std::nullopt;
     const auto& theirs = k < base.criteria.size() ? base.criteria[k] : std::nullopt;
-    b += w.text(std::string(k ? ";" : "") + " " + study::title(objective[k].metric) + " " +
-                metric_text(objective[k].metric, mine) + " (base " + metric_text(objective[k].metric, theirs) + ")");
+    const std::string& metric = objective[k].metric;
+    const auto [its, base_value] = metric_texts(metric, mine, theirs);
+    b += w.text(std::string(k ? ";" : "") + " " + study::title(metric) + " " + its + scope_of(metric, winner.result) +
+                " (base " + base_value + scope_of(metric, base.result) + ")");
   }
   b += w.text(".");
   if (!base.result.ok()) b += w.text(" The base itself failed: " + base.result.failure + ".");
@@ -123,8 +142,9 @@ bool violates(const VariantResult& r, const RankingConstraint& k) {
 std::string constraint_sentence(const Writer& w, const RankingConstraint& k, size_t violating,
                                 const report::DocumentTally& tally) {
   std::string bound;
-  if (k.min) bound += " ≥ " + metric_text(k.metric, *k.min);
-  if (k.max) bound += std::string(k.min ? " and" : "") + " ≤ " + metric_text(k.metric, *k.max);
+  // The limits as the study gives them (study::shown's 6 significant digits), as the table's head.
+  if (k.min) bound += " ≥ " + study::shown(k.metric, *k.min);
+  if (k.max) bound += std::string(k.min ? " and" : "") + " ≤ " + study::shown(k.metric, *k.max);
   return w.text("Constraint " + study::title(k.metric) + bound + ": " + std::to_string(violating) + " of " +
                 std::to_string(tally.variants - tally.failed) + " evaluated variants violate it.");
 }
@@ -617,12 +637,11 @@ Table ride_table(const std::vector<DesignCurves>& sets, const std::string& metri
   for (const RideAtSpeed& at : first->ride->speeds) t.headers.push_back(significant(at.speed * kKmh, 6) + " km/h");
   t.numeric.assign(t.headers.size(), true);
   t.numeric.front() = false;
-  const study::DisplayUnit u = study::display_unit(metric);
   for (const DesignCurves& s : sets) {
     if (!s.ride) continue;
     std::vector<std::string> row{s.label};
     for (double v : ride_metric_at_speeds(*s.ride, metric))
-      row.push_back(std::isnan(v) ? "unbounded" : significant(v * u.per_si, 4) + (*u.unit ? std::string(" ") + u.unit : ""));
+      row.push_back(std::isnan(v) ? "unbounded" : study::shown_as_tabled(metric, v));
     t.rows.push_back(row);
   }
   return t;

@@ -161,6 +161,9 @@ void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* r
     ratio ? j.value(*ratio <= 1.0) : j.value(nullptr);
   }
   if (r.ride_evaluated) j.member("max_nmv", r.max_nmv);
+  // A partial N_MV says so beside its figure, as the ride's "partial" (absent when it is over
+  // the lateral and vertical axes); shards carry it, so that a merge labels what one run would.
+  if (!r.max_nmv_partial.empty()) j.member("max_nmv_partial", r.max_nmv_partial);
   j.member("metacentric_height_m", r.metacentric_height);
   write_modes(j, r);
   j.member("name", r.name);
@@ -211,13 +214,13 @@ void write_json(std::ostream& out, const Comparison& c) {
   j.end_object();
 }
 
-// A number in the table's cells, as report::fixed (std::chars_format::fixed) or
-// report::significant (general) writes it; "none" for +∞, "-inf" for −∞, and "-" for NaN, the
-// table's mark of a value not there (the CSV leaves it blank and JSON writes null).
-std::string number(double x, std::chars_format format, int precision) {
+// A number in the table's cells to `decimals`, as report::fixed writes it; "none" for +∞, "-inf"
+// for −∞, and "-" for NaN, the table's mark of a value not there (the CSV leaves it blank and
+// JSON writes null).
+std::string number(double x, int decimals) {
   if (std::isnan(x)) return "-";
   if (std::isinf(x)) return x > 0 ? "none" : "-inf";
-  return format == std::chars_format::fixed ? report::fixed(x, precision) : report::significant(x, precision);
+  return report::fixed(x, decimals);
 }
 
 // The shortest text that reads back as the same double (CSV is for programs), appended to `text`;
@@ -235,6 +238,7 @@ struct CriterionColumn {
   bool peak;      // +∞ is "unbounded" (a peak), not "none" (no critical speed)
   std::string metric;
   int decimals;  // the table's (study::table_decimals)
+  bool nmv;      // max_nmv: a partial one says what it covers, "0.76 (vertical only)", as the ride does
 };
 
 // The columns of a comparison's table and CSV, worked out once per study: each criterion; each
@@ -246,11 +250,12 @@ struct Columns {
   std::vector<CriterionColumn> criteria, constrained;
   bool critical_speeds = true;
   bool deflections = false;
+  bool nmv = false;  // a column shows max_nmv: the CSV says what a partial one covers (max_nmv_partial)
 };
 
 CriterionColumn column_of(const std::string& metric) {
   return {study::display_unit(metric).per_si, study::infinite_is_unbounded(metric), metric,
-          study::table_decimals(metric)};
+          study::table_decimals(metric), metric == "max_nmv"};
 }
 
 Columns columns_of(const Ranking& ranking, const DeflectionRule& rule) {
@@ -269,6 +274,7 @@ Columns columns_of(const Ranking& ranking, const DeflectionRule& rule) {
   };
   for (const auto& k : ranking.constraints)
     if (!shown(k.metric)) c.constrained.push_back(column_of(k.metric));
+  c.nmv = shown("max_nmv");
   return c;
 }
 
@@ -319,6 +325,10 @@ void append_csv_row(std::string* row, const Columns& columns, const RankedVarian
     if (ratio && std::isinf(*ratio)) *row += "unbounded";
     else if (ratio) append_exact(row, *ratio);
   }
+  if (columns.nmv) {
+    *row += ',';
+    report::append_csv_field(row, r.max_nmv_partial);
+  }
   *row += ',';
   size_t start = row->size();  // a list's items apart by a space, as the table has them
   for (const auto& m : r.modes)
@@ -361,7 +371,7 @@ std::string criterion_title(const RankingCriterion& c) {
 // one decimal, and the verdict: "33.0 (within)", "130.2 (exceeds)".
 std::string deflection_verdict(double ratio) {
   if (std::isinf(ratio)) return "unbounded (exceeds)";
-  return number(100.0 * ratio, std::chars_format::fixed, 1) + (ratio <= 1.0 ? " (within)" : " (exceeds)");
+  return number(100.0 * ratio, 1) + (ratio <= 1.0 ? " (within)" : " (exceeds)");
 }
 
 // The header: the table's names for people, the CSV's for programs (metric names, units in
@@ -385,6 +395,7 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
   if (columns.critical_speeds) head.push_back(report::csv_heading("lowest_critical_speed", "km/h"));
   head.push_back(report::csv_heading("static_deflection", "mm"));
   if (columns.deflections) head.push_back("dynamic_deflection_ratio");
+  if (columns.nmv) head.push_back("max_nmv_partial");
   head.push_back(report::csv_heading("periods", "s"));
   if (columns.critical_speeds) head.push_back(report::csv_heading("critical_speeds", "km/h"));
   for (const char* h : {"failure", "violations"}) head.push_back(h);
@@ -393,15 +404,16 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
 
 // A variant's row of comparison_rows (its rank is v.rank), the criteria's columns worked out
 // once per study.
-std::string shown_value(const CriterionColumn& k, const std::optional<double>& x) {
+std::string shown_value(const CriterionColumn& k, const std::optional<double>& x, const VariantResult& r) {
   if (!x) return "-";
   if (std::isinf(*x) && *x > 0) return k.peak ? "unbounded" : "none";  // no critical speed in range
-  const double shown = *x * k.per_si;
-  // Fixed decimals, so that a column's figures align at the point and differ by what matters;
-  // a figure too small to show two significant digits that way gets two (a peak of 0.004 m/s²
-  // is not "0.000").
-  if (shown != 0.0 && std::abs(shown) < std::pow(10.0, 1 - k.decimals)) return number(shown, std::chars_format::general, 2);
-  return number(shown, std::chars_format::fixed, k.decimals);
+  // Fixed decimals, so that a column's figures align at the point and differ by what matters
+  // (study::table_figure, the notes' rule too).
+  if (std::isnan(*x)) return "-";
+  if (std::isinf(*x)) return "-inf";
+  std::string text = study::table_figure(*x * k.per_si, k.decimals);
+  if (k.nmv && !r.max_nmv_partial.empty()) text += " (" + r.max_nmv_partial + ")";
+  return text;
 }
 
 std::vector<std::string> table_row(const Columns& columns, const RankedVariant& v) {
@@ -411,15 +423,15 @@ std::vector<std::string> table_row(const Columns& columns, const RankedVariant& 
   row.reserve(7 + criteria.size() + columns.constrained.size());  // every column below: one allocation for the row, not five
   row.insert(row.end(), {std::to_string(v.rank), r.name, status(v)});
   for (size_t k = 0; k < criteria.size(); ++k)
-    row.push_back(shown_value(criteria[k], v.criteria.size() > k ? v.criteria[k] : std::nullopt));
+    row.push_back(shown_value(criteria[k], v.criteria.size() > k ? v.criteria[k] : std::nullopt, r));
   for (const CriterionColumn& k : columns.constrained)
-    row.push_back(shown_value(k, r.ok() ? metric_value(r, k.metric) : std::nullopt));
+    row.push_back(shown_value(k, r.ok() ? metric_value(r, k.metric) : std::nullopt, r));
   if (columns.critical_speeds) {
     const auto lowest = lowest_critical_speed(r);
-    row.push_back(!lowest ? "-" : number(*lowest * kKmh, std::chars_format::fixed, 1));
+    row.push_back(!lowest ? "-" : number(*lowest * kKmh, 1));
   }
   const auto deflection = body_deflection(r);
-  row.push_back(!deflection ? "-" : number(*deflection * 1000.0, std::chars_format::fixed, 1));
+  row.push_back(!deflection ? "-" : number(*deflection * 1000.0, 1));
   if (columns.deflections) {
     const auto ratio = r.ok() ? metric_value(r, "dynamic_deflection_ratio") : std::nullopt;
     row.push_back(!ratio ? "-" : deflection_verdict(*ratio));
@@ -428,7 +440,7 @@ std::vector<std::string> table_row(const Columns& columns, const RankedVariant& 
   // Each item appended to the list as it is (a joined temporary per item was an allocation).
   for (double p : periods(r)) {
     if (!list.empty()) list += ' ';
-    list += number(p, std::chars_format::fixed, 3);
+    list += number(p, 3);
   }
   row.push_back(list);
   return row;

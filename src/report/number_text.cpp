@@ -21,6 +21,9 @@ char* write_zeros(char* p, int count) {
 }  // namespace
 
 char* write_number(char* first, double value, NumberStyle style) {
+  // −0 (a negated or rounded-away zero: a mode shape's zero component, a wheel load at a dead
+  // centre) is written as 0: equal in value, and "-0" in a file reads as a sign that means nothing.
+  if (value == 0.0) value = 0.0;
   if (style == NumberStyle::csv) return std::to_chars(first, first + kNumberTextMax, value).ptr;
   char* p = first;
   if (!std::isfinite(value)) {
@@ -30,7 +33,6 @@ char* write_number(char* first, double value, NumberStyle style) {
     return p + n;
   }
   if (value == 0.0) {
-    if (std::signbit(value)) *p++ = '-';
     *p++ = '0';
     *p++ = '.', *p++ = '0';  // a double stays a double for a reader that types numbers by their text
     return p;

@@ -19,7 +19,8 @@ enum class NumberStyle { csv, json };
 
 /// Writes `value` at `first` (room for kNumberTextMax characters) and returns the end. A
 /// non-finite value is written "inf", "-inf" or "nan" in both styles: JsonWriter writes null
-/// for it instead (as nlohmann::json did).
+/// for it instead (as nlohmann::json did). −0 is written as 0 ("0", "0.0"): it reads back as
+/// the same value, without a sign no output means.
 char* write_number(char* first, double value, NumberStyle style);
 
 /// `value` as write_number writes it, as a string.

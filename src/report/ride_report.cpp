@@ -21,6 +21,7 @@
 #include "report/report_page.hpp"
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
+#include "ride/nmv_scope.hpp"
 #include "shortest_text.hpp"
 
 namespace railmodal {
@@ -31,6 +32,7 @@ using report::JsonWriter;
 using report::significant;
 using report::Table;
 using report::write_text_table;
+using ride::nmv_scope;
 
 using report::kKmh;
 // Modes named per output: the largest shares, down to this one.
@@ -181,20 +183,6 @@ Table indices_table(const RideResult& r, const RideAtSpeed& at) {
     t.rows.push_back(std::move(row));
   }
   return t;
-}
-
-// What a partial N_MV covers, "vertical only", when a lateral or vertical axis of the point has no
-// output (taken as 0, the vertical-only coach reads 0.76 where all its axes give 0.99); "" when
-// both are there: the longitudinal axis, which no bundled scene outputs, is only named.
-std::string nmv_scope(const RideComfortAtPoint& c) {
-  const auto missing = [&c](RideAxis a) {
-    return std::find(c.missing_axes.begin(), c.missing_axes.end(), a) != c.missing_axes.end();
-  };
-  if (!missing(RideAxis::lateral) && !missing(RideAxis::vertical)) return "";
-  std::string present;
-  for (RideAxis a : {RideAxis::longitudinal, RideAxis::lateral, RideAxis::vertical})
-    if (!missing(a)) present += (present.empty() ? "" : " and ") + std::string(to_string(a));
-  return present + " only";
 }
 
 // The N_MV as people read it: "0.76 (vertical only)" for a partial one.

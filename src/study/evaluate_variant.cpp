@@ -19,6 +19,7 @@
 #include "response/curve_peaks.hpp"
 #include "response/golden_section.hpp"
 #include "response/modal_checks.hpp"
+#include "ride/nmv_scope.hpp"
 #include "solve/lateral_stability.hpp"
 #include "solve/modal_solver.hpp"
 #include "solve/mode_naming.hpp"
@@ -290,8 +291,10 @@ void ride_summary(const Vehicle& vehicle, const Scene& scene, bool rms_only, rid
     if (o.unbounded) o.max_rms = 0.0, o.max_wz.reset();
     r->ride.push_back(o);
   }
+  // The largest N_MV and what it covers: that of the floor point it is taken at (the first of equals).
   for (const RideAtSpeed& at : ride.speeds)
-    for (const RideComfortAtPoint& c : at.comfort) r->max_nmv = std::max(r->max_nmv.value_or(c.nmv_estimate), c.nmv_estimate);
+    for (const RideComfortAtPoint& c : at.comfort)
+      if (!r->max_nmv || c.nmv_estimate > *r->max_nmv) r->max_nmv = c.nmv_estimate, r->max_nmv_partial = ride::nmv_scope(c);
 }
 
 // A divergent mode makes the variant a failure naming it (the critical-speed study refuses such a

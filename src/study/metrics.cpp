@@ -2,6 +2,7 @@
 #include "study/metrics.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -312,9 +313,54 @@ std::string shown(const std::string& metric, double si, int digits) {
   return std::string(text) + (*u.unit ? std::string(" ") + u.unit : std::string());
 }
 
+std::string table_figure(double shown, int decimals) {
+  char text[400];  // %.<decimals>f below 1e9, %.<decimals>e above: well within for decimals ≤ 17
+  const bool small = shown != 0.0 && std::abs(shown) < std::pow(10.0, 1 - decimals);
+  const auto format = small ? std::chars_format::general
+                            : std::abs(shown) >= 1e9 ? std::chars_format::scientific : std::chars_format::fixed;
+  const char* end = std::to_chars(text, text + sizeof text, shown, format, small ? 2 : decimals).ptr;
+  const char* first = text;
+  // A negative figure that rounds to zero (and −0) is written without its sign.
+  if (*first == '-' && std::all_of(first + 1, end, [](char c) { return c == '0' || c == '.'; })) ++first;
+  return std::string(first, end);
+}
+
+namespace {
+
+// The value to `decimals` with its display unit, or the word for +∞.
+std::string tabled(const std::string& metric, double si, int decimals) {
+  if (std::isinf(si) && si > 0) return infinite_is_unbounded(metric) ? "unbounded" : "none";
+  const DisplayUnit u = display_unit(metric);
+  return table_figure(si * u.per_si, decimals) + (*u.unit ? std::string(" ") + u.unit : std::string());
+}
+
+// The decimals past the table's that shown_apart adds at most: a double has 17 significant digits.
+constexpr int kMoreDecimals = 17;
+
+}  // namespace
+
+std::string shown_as_tabled(const std::string& metric, double si) { return tabled(metric, si, table_decimals(metric)); }
+
+std::pair<std::string, std::string> shown_apart(const std::string& metric, double a_si, double b_si) {
+  int decimals = table_decimals(metric);
+  std::pair<std::string, std::string> texts{tabled(metric, a_si, decimals), tabled(metric, b_si, decimals)};
+  for (const int last = decimals + kMoreDecimals; a_si != b_si && texts.first == texts.second && decimals < last;) {
+    ++decimals;
+    texts = {tabled(metric, a_si, decimals), tabled(metric, b_si, decimals)};
+  }
+  return texts;
+}
+
 std::vector<std::string> violations(const VariantResult& r, const Ranking& ranking, bool for_people) {
   std::vector<std::string> out;
-  const int digits = for_people ? 4 : 6;
+  // A value against its limit: for programs both to 6 significant digits; for people the value
+  // as the table shows it (more decimals where it would read as the limit), the limit as given.
+  // A partial N_MV says what it covers, as the table does.
+  const auto against = [&](const std::string& metric, double value, double limit) {
+    if (!for_people) return shown(metric, value) + (value < limit ? " < " : " > ") + shown(metric, limit);
+    const std::string scope = metric == "max_nmv" && !r.max_nmv_partial.empty() ? " (" + r.max_nmv_partial + ")" : "";
+    return shown_apart(metric, value, limit).first + scope + (value < limit ? " < " : " > ") + shown(metric, limit);
+  };
   for (const RankingConstraint& c : ranking.constraints) {
     // The metric's name is copied only for a constraint the result breaks (rank_entry asks
     // every variant, and most keep every constraint).
@@ -325,9 +371,9 @@ std::vector<std::string> violations(const VariantResult& r, const Ranking& ranki
     else if (!value)
       out.push_back("no " + name());
     else if (c.min && *value < *c.min)
-      out.push_back(name() + " " + shown(c.metric, *value, digits) + " < " + shown(c.metric, *c.min, digits));
+      out.push_back(name() + " " + against(c.metric, *value, *c.min));
     else if (c.max && *value > *c.max)
-      out.push_back(name() + " " + shown(c.metric, *value, digits) + " > " + shown(c.metric, *c.max, digits));
+      out.push_back(name() + " " + against(c.metric, *value, *c.max));
   }
   return out;
 }

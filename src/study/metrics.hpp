@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "railmodal/study.hpp"
@@ -44,6 +45,22 @@ std::string unit_bracket(const std::string& metric);
 /// periods to 1 ms, ratios to 0.001, Wz and N_MV to 0.01, ...). CSV and JSON keep every digit.
 int table_decimals(const std::string& metric);
 
+/// A figure in its display unit as a table prints it: `decimals` after the point (those of
+/// table_decimals), or two significant digits for one too small to show two that way (a peak of
+/// 0.004 m/s² is not "0.000"); from 1e9 on in scientific notation; never "-0.0". NaN and ±∞ as
+/// std::to_chars writes them.
+std::string table_figure(double shown, int decimals);
+
+/// A value for people (the notes under a comparison's table, its document's sentences), as its
+/// table column shows it, with the display unit: "79.3 km/h", "0.76"; "unbounded" or "none" for
+/// +∞. One rule with the tables (user audit 2026-11-27c, F13: notes had 4 significant digits).
+std::string shown_as_tabled(const std::string& metric, double si);
+
+/// Two values of a metric for people (a variant against another, a value against its limit),
+/// each as shown_as_tabled shows it but to as many more decimals as it takes for two values that
+/// differ not to read the same ("89.97 km/h" against 90, not "90.0 km/h").
+std::pair<std::string, std::string> shown_apart(const std::string& metric, double a_si, double b_si);
+
 /// The display unit as a table heading writes it, " [s]", or " [–]" for a ratio or an index
 /// (Wz, N_MV): every figure column says what it is in.
 std::string table_unit_bracket(const std::string& metric);
@@ -54,8 +71,9 @@ std::string shown(const std::string& metric, double si, int digits = 6);
 
 /// How a result breaks the ranking's constraints, one text each (none when it keeps them).
 /// For programs (CSV, JSON) with the metric's name and 6 significant digits, "critical_speed:body
-/// bounce 79.3089 km/h < 90 km/h"; for people with its title and 4, "critical speed of body
-/// bounce 79.31 km/h < 90 km/h".
+/// bounce 79.3089 km/h < 90 km/h"; for people with its title, the value as the table shows it
+/// (shown_apart from the limit) and the limit as given (6 significant digits), "critical speed of
+/// body bounce 79.3 km/h < 90 km/h".
 std::vector<std::string> violations(const VariantResult& r, const Ranking& ranking, bool for_people);
 
 /// What a report calls the parameter `key` (as StudyParameter names it): the label the study

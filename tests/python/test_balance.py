@@ -94,7 +94,7 @@ def test_counterweights_equal_the_command_line(gear, report):
               [expected["unbalanced_surging_percent"], expected["unbalanced_nosing_percent"]])
     trade = pandas.DataFrame(study.by_rule["book"].trade_off())
     expected = pandas.DataFrame(report["by_rule"][2]["trade_off"])
-    close(trade["fraction"], expected["balanced_fraction"])
+    close(trade["balanced_fraction"], expected["balanced_fraction"])
     close(trade["max_alpha"], expected["max_alpha"])
     close(trade["max_surging_n"], expected["max_surging_n"])
     close(trade["max_nosing_n_m"], expected["max_nosing_n_m"])

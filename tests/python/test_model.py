@@ -144,6 +144,40 @@ def test_changing_an_item_of_a_vehicle_list_changes_the_vehicle():
     assert car.bodies[0].inertia[1] == 2.0 * reference.bodies[0].inertia[1]
 
 
+def body_bounce_hz(vehicle):
+    rows = railmodal.modes(railmodal.assemble(vehicle, "vertical")).records()
+    return next(r["frequency_hz"] for r in rows if r["name"] == "body bounce")
+
+
+def test_a_plain_loop_edits_the_springs_of_a_copy():
+    """docs/python.md's studies edit a copy's spring stages in a plain loop (user audit
+    2026-11-27c, F12): an element's stages are the vehicle's own, so the loop changes the result,
+    and the copy-modify-assign the guide showed before gives the same matrices: it is not needed."""
+    base = railmodal.load_vehicle(data("vehicles", "manchester_benchmark_coach.toml"))
+    plain = base.copy()
+    for e in plain.elements:
+        if e.name.endswith("cradle"):
+            for s in e.vertical_stages:
+                s.stiffness = 300e3
+    assigned = base.copy()
+    elements = assigned.elements
+    for e in elements:
+        if e.name.endswith("cradle"):
+            stages = e.vertical_stages
+            for s in stages:
+                s.stiffness = 300e3
+            e.vertical_stages = stages
+    assigned.elements = elements
+    # The audit's figures, printed to 4 decimals: 1.0739 Hz for the file's 430 kN/m air springs,
+    # 0.9188 Hz with 300 kN/m.
+    assert body_bounce_hz(base) == pytest.approx(1.0739, abs=5e-5)
+    assert body_bounce_hz(plain) == pytest.approx(0.9188, abs=5e-5)
+    np.testing.assert_array_equal(railmodal.assemble(plain).K, railmodal.assemble(assigned).K)
+    # The copy is a vehicle of its own: the base keeps its springs.
+    assert all(s.stiffness != 300e3 for e in base.elements if e.name.endswith("cradle") for s in e.vertical_stages)
+    assert any(e.name.endswith("cradle") for e in base.elements)
+
+
 def test_a_vehicle_list_changes_length_only_while_no_item_is_held():
     car = railmodal.load_vehicle(RESORT)
     n = len(car.elements)

@@ -64,7 +64,7 @@ def test_critical_speed_study_equals_the_clis():
     rows = study.critical_speeds.records()
     assert [r["mode_name"] for r in rows] == [c["mode_name"] for c in expected["critical_speeds"]]
     # One library computation written with round-trip digits.
-    np.testing.assert_allclose([r["speed_km_h"] for r in rows], [c["speed_kmh"] for c in expected["critical_speeds"]],
+    np.testing.assert_allclose([r["speed_kmh"] for r in rows], [c["speed_kmh"] for c in expected["critical_speeds"]],
                                rtol=1e-14)
     assert len(study.curves) == len(expected["curves"])
     # The JSON writes null where the curve is unbounded; the arrays hold 0 there and flag it.

@@ -103,7 +103,58 @@ TEST(BalanceReport, DynamicWheelLoadIsCalledTheHammerBlow) {
   for (OutputFormat f : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html}) {
     const std::string text = written(study, f);
     EXPECT_NE(text.find("dP on the rail: the hammer blow"), std::string::npos) << to_string(f);
-    EXPECT_NE(text.find("max dP, hammer blow [kN]"), std::string::npos) << to_string(f);
+    EXPECT_NE(text.find("max hammer blow [kN]"), std::string::npos) << to_string(f);
+  }
+}
+
+// One quantity, one key (user audit 2026-11-27c, F7): the gear's wheels and the balanced ones
+// carry the wheel load under the same keys, the hammer blow max|ΔP| = α·П among them (it was
+// max_dP_n in one and max_hammer_blow_n in the other, and max_dP_n is the signed maximum, which
+// for the Су's driving R wheel is 197.9 kN against a hammer blow of 204.7 kN).
+TEST(BalanceReport, TheWheelLoadHasOneSetOfKeys) {
+  const BalanceStudy study = su_study(0.3);
+  const auto j = nlohmann::json::parse(written(study, OutputFormat::json));
+  const char* load_keys[] = {"max_hammer_blow_n", "max_dP_n", "min_dP_n", "least_load_n", "alpha", "alpha_89a",
+                             "wheel_lift", "dP_harmonics_n"};
+  const auto check = [&](const nlohmann::json& wheel, const GearWheelLoad& x) {
+    for (const char* key : load_keys) EXPECT_TRUE(wheel.contains(key)) << key << " in " << wheel.at("wheel");
+    const double blow = wheel.at("max_hammer_blow_n").get<double>();
+    // max|ΔP| over the same sampled revolution as the extremes: the larger of the two, exactly
+    // (α·П and its quotient by П round once each: 2 ulp).
+    EXPECT_NEAR(blow, std::max(x.max_dynamic_load, -x.min_dynamic_load), 4e-16 * blow);
+    EXPECT_EQ(wheel.at("max_dP_n").get<double>(), x.max_dynamic_load);
+  };
+  for (size_t w = 0; w < study.gear.wheels.size(); ++w) check(j.at("gear").at("wheels").at(w), study.gear.wheels[w]);
+  for (size_t r = 0; r < study.by_rule.size(); ++r)
+    for (size_t w = 0; w < study.by_rule[r].wheels.size(); ++w) {
+      const auto& wheel = j.at("by_rule").at(r).at("wheels").at(w);
+      check(wheel, study.by_rule[r].after.wheels[w]);
+      EXPECT_EQ(wheel.at("max_hammer_blow_n").get<double>(), study.by_rule[r].wheels[w].max_hammer_blow);
+    }
+  // The driving wheel's signed maximum is not its hammer blow: the two keys say different things.
+  const auto& driving = j.at("gear").at("wheels").at(2);
+  EXPECT_LT(driving.at("max_dP_n").get<double>(), 0.99 * driving.at("max_hammer_blow_n").get<double>());
+  // The CSV's counterweight rows say the same word.
+  const std::string csv = written(study, OutputFormat::csv);
+  EXPECT_NE(csv.find(",max hammer blow,N,"), std::string::npos);
+  EXPECT_EQ(csv.find(",max dP,"), std::string::npos);
+}
+
+// No output of balance prints a negative zero (user audit 2026-11-27c, F7: the CSV's Y at the
+// dead centres read "-0"): the shared number writers write −0 as 0.
+TEST(BalanceReport, NoNegativeZero) {
+  for (double alpha : {0.0, 0.3}) {
+    const BalanceStudy study = su_study(alpha);
+    bool negative_zero_in_the_results = false;
+    for (const GearState& st : study.gear.states)
+      for (const RodForces& f : st.cylinders)
+        negative_zero_in_the_results = negative_zero_in_the_results || (f.vertical == 0.0 && std::signbit(f.vertical));
+    EXPECT_TRUE(negative_zero_in_the_results || alpha > 0) << "the case this test is for is gone";
+    for (OutputFormat f : {OutputFormat::table, OutputFormat::csv, OutputFormat::json, OutputFormat::markdown}) {
+      const std::string text = written(study, f);
+      for (const char* zero : {",-0\n", ",-0,", " -0.0\n", " -0.0,", "-0.00 ", "|-0 ", " -0 "})
+        EXPECT_EQ(text.find(zero), std::string::npos) << zero << " in " << to_string(f);
+    }
   }
 }
 

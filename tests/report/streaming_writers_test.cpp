@@ -49,12 +49,14 @@ TEST(NumberText, ReadsBackExactlyAndIsNoLongerThanNlohmann) {
 
 // The layout is nlohmann::json's: fixed from 1e-4 to below 1e15, otherwise d.ddde±XX.
 TEST(NumberText, LaysOutNumbersAsNlohmannDid) {
-  for (double x : {0.0, -0.0, 1.0, -2.0, 0.5, 123.25, 1e-4, 1.5e-4, 1e-5, 9.99e-5, 1e14, 123456789012345.0, 1e15,
+  for (double x : {0.0, 1.0, -2.0, 0.5, 123.25, 1e-4, 1.5e-4, 1e-5, 9.99e-5, 1e14, 123456789012345.0, 1e15,
                    1.5e15, 1e16, 2.5e-300, 1.7976931348623157e308, 4.9e-324, 0.1, 1.0 / 3.0, -1e-7, 3e22})
     EXPECT_EQ(number_text(x, NumberStyle::json), nlohmann::json(x).dump()) << x;
   // CSV: std::to_chars's choice, the shorter of fixed and scientific, as shortest_text's.
   EXPECT_EQ(number_text(2.0), "2");
-  EXPECT_EQ(number_text(-0.0), "-0");
+  // But for −0, which nlohmann wrote "-0.0": written as 0 (user audit 2026-11-27c, F7).
+  EXPECT_EQ(number_text(-0.0, NumberStyle::json), "0.0");
+  EXPECT_EQ(number_text(-0.0), "0");
   EXPECT_EQ(number_text(0.0001), "1e-04");
   EXPECT_EQ(number_text(0.001), "0.001");
   EXPECT_EQ(number_text(1e15), "1e+15");

@@ -2,6 +2,7 @@
 // rms_acceleration:<output>, read from results built by hand: their units, their values (+∞ for
 // an unbounded ride, none without a ride), their ranking and their round trip through a shard.
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "railmodal/railmodal.hpp"
@@ -114,6 +115,50 @@ TEST(RideMetric, ShardsCarryTheRide) {
   std::ostringstream without;
   write_shard(without, s, {}, {plain});
   EXPECT_EQ(without.str().find("\"ride\""), std::string::npos);
+}
+
+// A partial N_MV (a floor point without a lateral output: the two-axle wagon's ride reads
+// "vertical only") says so in compare as the ride says it: the table's and the document's cell
+// "… (vertical only)", JSON's and the shard's max_nmv_partial, the CSV's column of that name;
+// and a merge of shards labels what one run labels (user audit 2026-11-27c, the last stop's item 5).
+TEST(RideMetric, APartialNmvSaysWhatItCoversInEveryFormat) {
+  Study s = load_study(std::string(RAILMODAL_DATA_DIR) + "/studies/two_axle_wagon_ride_springs.toml");
+  s.ranking.objective = {{"max_nmv", false, 1.0, {}}};
+  s.ranking.constraints = {{"max_nmv", std::nullopt, 0.5, {}}};  // both violate it: the notes show it too
+  const std::vector<VariantResult> results = evaluate_study(s, {});
+  ASSERT_EQ(results.size(), 2u);
+  for (const VariantResult& r : results) {
+    ASSERT_TRUE(r.ok() && r.max_nmv) << r.failure;
+    EXPECT_EQ(r.max_nmv_partial, "vertical only") << r.name;  // as the ride of its scene (golden ride JSON)
+  }
+  const Comparison c = rank_variants(s, results);
+  std::ostringstream table, csv, json, md;
+  write_comparison(table, c, OutputFormat::table);
+  write_comparison(csv, c, OutputFormat::csv);
+  write_comparison(json, c, OutputFormat::json);
+  write_comparison_report(md, s, c, comparison_curves(s, c, kReportBest), OutputFormat::markdown);
+  // The criterion's cell, and the violation's note under the table.
+  const std::string cell = study::table_figure(*results[0].max_nmv, 2) + " (vertical only)";
+  EXPECT_NE(table.str().find(cell), std::string::npos) << table.str();
+  EXPECT_NE(table.str().find("(vertical only) > 0.5"), std::string::npos) << table.str();
+  EXPECT_NE(md.str().find(cell), std::string::npos) << md.str();
+  EXPECT_NE(csv.str().find(",max_nmv_partial,"), std::string::npos) << csv.str();
+  EXPECT_NE(csv.str().find(",vertical only,"), std::string::npos) << csv.str();
+  const auto j = nlohmann::json::parse(json.str());
+  for (const auto& v : j.at("variants")) EXPECT_EQ(v.at("max_nmv_partial"), "vertical only");
+  // Through a shard and back.
+  std::ostringstream shard;
+  write_shard(shard, s, {}, results);
+  const std::vector<VariantResult> back = read_shard(write_temp("partial_nmv_shard.json", shard.str()), s);
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[0].max_nmv_partial, "vertical only");
+  std::ostringstream merged;
+  write_comparison(merged, rank_variants(s, back), OutputFormat::table);
+  EXPECT_EQ(merged.str(), table.str());
+  // One over both axes writes no key and no label.
+  std::ostringstream full;
+  write_shard(full, s, {}, {ridden(0, "base", 0.31, 2.4, 1.9)});
+  EXPECT_EQ(full.str().find("max_nmv_partial"), std::string::npos);
 }
 
 // A study ranked by the RMS alone solves its ride with RideOptions::rms_only: the metric is the
