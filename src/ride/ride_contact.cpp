@@ -187,15 +187,17 @@ Eigen::MatrixXd first_order_matrix(const LinearSystem& system) {
 // undamped case is answered by the modes, solve_ride's unbounded outputs).
 bool grows(std::complex<double> root, double largest) { return root.real() > 1e-9 * largest; }
 
+// Whether the free motion with these roots decays: none grows. Above the linear critical speed
+// it does not, and the stationary response of what the growing motion moves is unbounded.
+bool decays(const Eigen::VectorXcd& roots) {
+  const double largest = roots.cwiseAbs().maxCoeff();
+  return std::none_of(roots.begin(), roots.end(), [&](std::complex<double> r) { return grows(r, largest); });
+}
+
 }  // namespace
 
 Eigen::VectorXcd first_order_roots(const LinearSystem& system) {
   return Eigen::EigenSolver<Eigen::MatrixXd>(first_order_matrix(system), false).eigenvalues();
-}
-
-bool decays(const Eigen::VectorXcd& roots) {
-  const double largest = roots.cwiseAbs().maxCoeff();
-  return std::none_of(roots.begin(), roots.end(), [&](std::complex<double> r) { return grows(r, largest); });
 }
 
 std::vector<GrowingMotion> growing_motions(const LinearSystem& system) {
