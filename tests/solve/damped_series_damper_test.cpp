@@ -96,8 +96,8 @@ TEST(DampedSeriesDamper, OneMassHasTheRootsOfItsCubic) {
   ASSERT_EQ(r.dofs.size(), 2u);
   EXPECT_EQ(r.dofs[1].label, "damper.bounce stroke");
   EXPECT_EQ(r.first_order, std::vector<std::string>{"damper.bounce stroke"});
-  ASSERT_EQ(r.undamped.notes.size(), 1u);
-  EXPECT_NE(r.undamped.notes[0].find("series dampers: in"), std::string::npos);
+  ASSERT_EQ(r.notes.size(), 1u);
+  EXPECT_NE(r.notes[0].find("series dampers: in"), std::string::npos);
   // The pair is the mass's bounce, the real root the damper's relaxation, reported as such: a
   // first-order mode, no frequency, its decay rate the cubic's real root (k/c = 50 /s for the
   // damper alone, the mass held; the mass moving with it changes that).
