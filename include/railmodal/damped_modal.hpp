@@ -102,9 +102,12 @@ struct DampedModalResult {
   /// frequencies as the undamped modes they come from, first-order modes last.
   /// DampedMode::undamped_mode names each one's undamped mode.
   std::vector<DampedMode> modes;
-  /// The undamped solve (C and the series dampers ignored) the damped modes are matched to; its
-  /// notes are the damped modes' (model::damped_mode_notes: a note that series dampers are in).
+  /// The undamped solve (C and the series dampers ignored) the damped modes are matched to, with
+  /// its own notes (what the undamped modes leave out: the series dampers among them).
   ModalResult undamped;
+  /// What these damped modes leave out or add, one sentence each: the wheel–rail contact of the
+  /// wheelsets (left out), the series dampers (in, each a first-order state); empty for neither.
+  std::vector<std::string> notes;
   /// Massless degrees of freedom without damping, condensed out statically.
   std::vector<std::string> condensed;
   /// Massless degrees of freedom with damping, the series dampers' strokes among them: each adds

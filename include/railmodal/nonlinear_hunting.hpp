@@ -144,7 +144,10 @@ struct SpeedHold {
   /// is resolved at or above −1e-4 per period (rate_per_period − rate_error ≥ −1e-4: halving
   /// would take over 6900 periods). It dies when it fell below half the start, or the rate is
   /// resolved below −1e-4. Neither, or the rate still changing toward −1e-4 (rate_change_per_period
-  /// beyond rate_change_error, toward the threshold): `undecided` (never counted as surviving).
+  /// beyond rate_change_error, toward the threshold): `undecided` (never counted as surviving);
+  /// except a growth resolved above zero (rate_per_period − rate_error > 0, rate_change_error
+  /// finite), which survives however its rate falls: a growing amplitude tends to a cycle (its
+  /// rate to 0) or grows on; it does not turn to decay.
   bool survives = false;
   double start_amplitude = 0.0;  ///< m: the watched wheelset's amplitude in the start state
   double end_amplitude = 0.0;    ///< m: its last half cycle's amplitude
@@ -152,6 +155,7 @@ struct SpeedHold {
   int steps = 0;                 ///< accepted Runge–Kutta steps
   // Last, so that brace-initialised holds (the report tests') keep their meaning.
   /// −1e-4 per period lies within rate_error of the rate, or the rate is still changing toward it
+  /// (not a growth resolved above zero: see `survives`)
   bool undecided = false;
   double rate_per_period = 0.0;  ///< 1/period: d ln(amplitude)/d(periods), fitted over the second half
   /// 1/period: the most the peaks' errors can move the fitted rate: a wobble no larger than the

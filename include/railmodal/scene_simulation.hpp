@@ -102,7 +102,8 @@ struct FftCheck {
   /// times the share of that DOF's motion the mode's coordinate can make (min(1,
   /// |φ_d|·max|η|/max|x_d|)), among the DOFs that move (√M_dd·max|x_d| above kExcitedRatio of
   /// the most moving one's): in a forced scene a DOF that the forcing drives through another
-  /// mode is not where this one shows.
+  /// mode is not where this one shows. A mode not excited: its most energetic DOF, and no
+  /// spectrum is taken for it (resolution_hz is the record's fs/N).
   std::string dof;
   double modal_hz = 0.0;              ///< undamped natural frequency
   /// The frequency the peak is compared with: where the mode's free response oscillates,

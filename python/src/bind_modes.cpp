@@ -263,6 +263,7 @@ void bind_damped_result(py::module_& m) {
       .def_property_readonly("undamped", [](py::object self) { return py::cast(self.cast<const DampedModalResult&>().undamped, py::return_value_policy::reference_internal, self); })
       .def_readonly("condensed", &DampedModalResult::condensed)
       .def_readonly("first_order", &DampedModalResult::first_order)
+      .def_readonly("notes", &DampedModalResult::notes, "what these damped modes leave out or add, a sentence each")
       .def_readonly("stable", &DampedModalResult::stable)
       .def_readonly("max_residual", &DampedModalResult::max_residual)
       .def_readonly("summary", &DampedModalResult::summary)

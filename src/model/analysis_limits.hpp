@@ -21,7 +21,7 @@ void refuse_series_dampers(const LinearSystem& system, const char* analysis);
 /// the wheel–rail contact of its wheelsets, its series dampers; empty for neither.
 std::vector<std::string> undamped_mode_notes(const LinearSystem& system);
 
-/// What the damped modes of the system leave out or add (DampedModalResult::undamped.notes, which
+/// What the damped modes of the system leave out or add (DampedModalResult::notes, which
 /// the damped reports print): the wheel–rail contact of its wheelsets, as undamped_mode_notes;
 /// its series dampers, which they include.
 std::vector<std::string> damped_mode_notes(const LinearSystem& system);

@@ -55,7 +55,7 @@ void write_table(std::ostream& out, const LinearSystem& system, const DampedModa
     out << ")";
   }
   out << "\n";
-  for (const auto& note : r.undamped.notes) out << "note: " << note << "\n";  // none for the book's wagons
+  for (const auto& note : r.notes) out << "note: " << note << "\n";  // none for the book's wagons
   out << "\n";
   out << std::left << std::setw(4) << "#" << std::setw(34) << "mode" << std::right << std::setw(10) << "f_d [Hz]"
       << std::setw(10) << "ζ" /* 2 bytes, 1 column */ << std::setw(10) << "f_n [Hz]" << std::setw(10) << "f_0 [Hz]" << "  " << std::left
@@ -81,7 +81,7 @@ void write_table(std::ostream& out, const LinearSystem& system, const DampedModa
 void write_csv(std::ostream& out, const DampedModalResult& r) {
   using report::csv_heading;
   report::CsvWriter csv(out);
-  for (const auto& note : r.undamped.notes) csv.line("# note: " + note);
+  for (const auto& note : r.notes) csv.line("# note: " + note);
   csv.field("index").field("name").field("kind").field("stable").field(csv_heading("damped_frequency", "Hz"));
   csv.field("damping_ratio").field(csv_heading("natural_frequency", "Hz")).field("undamped_mode");
   csv.field(csv_heading("undamped_frequency", "Hz")).field(csv_heading("decay_rate", "1/s"));
@@ -144,7 +144,7 @@ void write_json(std::ostream& out, const LinearSystem& system, const DampedModal
   j.key("modes").begin_array();
   for (const auto& m : r.modes) write_mode(j, r, m, order);
   j.end_array();
-  if (!r.undamped.notes.empty()) j.member("notes", r.undamped.notes);  // absent for the book's wagons
+  if (!r.notes.empty()) j.member("notes", r.notes);  // absent for the book's wagons
   j.member("stable", r.stable).member("vehicle", system.vehicle.name);
   j.end_object();
 }

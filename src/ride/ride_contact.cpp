@@ -2,7 +2,6 @@
 // the creep forces", derives the alignment's generalised force).
 #include "ride/ride_contact.hpp"
 
-#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <stdexcept>
@@ -10,6 +9,7 @@
 #include "model/element_stiffness.hpp"
 #include "model/point_motion.hpp"
 #include "model/wheelset_dofs.hpp"
+#include "stability/first_order_system.hpp"
 
 namespace railmodal::ride {
 
@@ -163,22 +163,15 @@ LinearSystem with_creep(const LinearSystem& system, const CreepContact& contact,
 namespace {
 
 // The first-order form's matrix A, x = (q, q̇, F): M q̈ = −K q − C q̇ − Σ stretchᵀF,
-// Ḟ = k(stretch·q̇ − F/c).
+// Ḟ = k(stretch·q̇ − F/c): the hunting analysis' (stability::FirstOrderSystem) with its contact
+// terms zero, since with_creep has put them into C and K already; with them zero the speed
+// enters nowhere (0/V and V·0), so any speed will do. Its eigenvalues are this file's former
+// copy's to the bit (the Manchester coach on wheelsets at 5–80 m/s, with and without yaw dampers).
 Eigen::MatrixXd first_order_matrix(const LinearSystem& system) {
   const int n = system.size();
-  const int d = static_cast<int>(system.series_dampers.size());
-  const Eigen::LLT<Eigen::MatrixXd> mass(system.mass);
-  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(2 * n + d, 2 * n + d);
-  a.block(0, n, n, n).setIdentity();
-  a.block(n, 0, n, n) = -mass.solve(system.stiffness);
-  a.block(n, n, n, n) = -mass.solve(system.damping);
-  for (int k = 0; k < d; ++k) {
-    const SeriesDamperRow& s = system.series_dampers[k];
-    a.block(n, 2 * n + k, n, 1) = -mass.solve(s.stretch.transpose());
-    a.block(2 * n + k, n, 1, n) = s.stiffness * s.stretch;
-    a(2 * n + k, 2 * n + k) = -s.stiffness / s.damping;
-  }
-  return a;
+  ContactMatrices none;
+  none.creep_damping = none.gyroscopic = none.stiffness = Eigen::MatrixXd::Zero(n, n);
+  return stability::FirstOrderSystem(system, none).state_matrix(1.0);
 }
 
 // Round-off: the eigenvalues of a matrix of norm ‖A‖ are found within ~1e-16·‖A‖; an undamped
@@ -187,15 +180,17 @@ Eigen::MatrixXd first_order_matrix(const LinearSystem& system) {
 // undamped case is answered by the modes, solve_ride's unbounded outputs).
 bool grows(std::complex<double> root, double largest) { return root.real() > 1e-9 * largest; }
 
+// Whether the free motion with these roots decays: none grows. Above the linear critical speed
+// it does not, and the stationary response of what the growing motion moves is unbounded.
+bool decays(const Eigen::VectorXcd& roots) {
+  const double largest = roots.cwiseAbs().maxCoeff();
+  return std::none_of(roots.begin(), roots.end(), [&](std::complex<double> r) { return grows(r, largest); });
+}
+
 }  // namespace
 
 Eigen::VectorXcd first_order_roots(const LinearSystem& system) {
   return Eigen::EigenSolver<Eigen::MatrixXd>(first_order_matrix(system), false).eigenvalues();
-}
-
-bool decays(const Eigen::VectorXcd& roots) {
-  const double largest = roots.cwiseAbs().maxCoeff();
-  return std::none_of(roots.begin(), roots.end(), [&](std::complex<double> r) { return grows(r, largest); });
 }
 
 std::vector<GrowingMotion> growing_motions(const LinearSystem& system) {

@@ -78,11 +78,6 @@ RollLoad rail_roll_load(const CreepContact& contact, std::size_t i, double speed
 /// forces F (with its contact terms when it is with_creep's), 1/s.
 Eigen::VectorXcd first_order_roots(const LinearSystem& system);
 
-/// Whether the free motion with these roots decays: none with a real part above round-off.
-/// Above the linear critical speed it does not, and the stationary response of what the growing
-/// motion moves is unbounded.
-bool decays(const Eigen::VectorXcd& roots);
-
 /// A free motion of `system`'s first-order form that grows (above the linear critical speed):
 /// its root λ (Re λ > 0; of a complex pair the one with Im λ ≥ 0) and its displacement shape, the
 /// q part of its eigenvector over system.dofs.
@@ -91,7 +86,7 @@ struct GrowingMotion {
   Eigen::VectorXcd shape;
 };
 
-/// Every growing motion of `system` (the roots decays() counts as growing); none below the
+/// Every growing motion of `system` (a root with a real part above round-off); none below the
 /// linear critical speed. The eigenvectors are computed only when some root grows.
 std::vector<GrowingMotion> growing_motions(const LinearSystem& system);
 

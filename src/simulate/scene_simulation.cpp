@@ -50,17 +50,22 @@ bool names(const Scene& scene, const char* effect) {
          std::find(scene.simulation->effects.begin(), scene.simulation->effects.end(), effect) != scene.simulation->effects.end();
 }
 
+// The DOF holding the largest share of the mode's kinetic energy: where the mode itself lives.
+int most_energetic_dof(const Mode& mode) {
+  int most_energetic = 0;
+  mode.kinetic_energy_share.maxCoeff(&most_energetic);
+  return most_energetic;
+}
+
 // The DOF on which a mode shows in the response: the largest product of the mode's kinetic
 // energy share and the DOF's own motion. Usually the mode's most energetic DOF; not when
 // repeated modes cancel there (two bogies pitching alike: a basis of the pair may put
 // "antiphase" mostly on the bogie that the release leaves at rest, whose record is round-off).
 int showing_dof(const Mode& mode, const Eigen::VectorXd& dof_energy) {
-  int best = 0, most_energetic = 0;
-  for (int d = 1; d < mode.kinetic_energy_share.size(); ++d) {
+  int best = 0;
+  for (int d = 1; d < mode.kinetic_energy_share.size(); ++d)
     if (mode.kinetic_energy_share(d) * dof_energy(d) > mode.kinetic_energy_share(best) * dof_energy(best)) best = d;
-    if (mode.kinetic_energy_share(d) > mode.kinetic_energy_share(most_energetic)) most_energetic = d;
-  }
-  return mode.kinetic_energy_share(best) * dof_energy(best) > 0.0 ? best : most_energetic;
+  return mode.kinetic_energy_share(best) * dof_energy(best) > 0.0 ? best : most_energetic_dof(mode);
 }
 
 // The DOF where a mode dominates the record (FftCheck::dof): the largest √M_dd·|φ_d| times
@@ -70,9 +75,13 @@ int showing_dof(const Mode& mode, const Eigen::VectorXd& dof_energy) {
 // may put a mode). Without the share, a DOF the forcing drives through another mode would win
 // on the mode's shape alone and show that mode's lines, not this one's. √M_dd puts m and rad on
 // one scale (the kinetic-energy scale of the mass-normalised shape). The most energetic DOF when
-// nothing moves.
-int dominant_dof(const Mode& mode, double modal_amplitude, const Eigen::VectorXd& mass_diagonal,
+// nothing moves, or when the mode is not excited: its coordinate then holds round-off, and the
+// score would pick whichever moving DOF its shape touches (the resort car's body pitch, left at
+// rest by a bounce release, on bogie2.bounce); showing_dof, weighted by the record's motion,
+// would too.
+int dominant_dof(const Mode& mode, bool excited, double modal_amplitude, const Eigen::VectorXd& mass_diagonal,
                  const Eigen::VectorXd& motion) {
+  if (!excited) return most_energetic_dof(mode);
   const Eigen::VectorXd scaled = mass_diagonal.cwiseMax(0.0).cwiseSqrt().cwiseProduct(motion);
   const double floor = FftCheck::kExcitedRatio * scaled.maxCoeff();
   int best = -1;
@@ -83,10 +92,7 @@ int dominant_dof(const Mode& mode, double modal_amplitude, const Eigen::VectorXd
     const double score = std::sqrt(mass_diagonal(d)) * std::abs(mode.shape(d)) * share;
     if (score > best_score) best = d, best_score = score;
   }
-  if (best >= 0) return best;
-  int most_energetic = 0;
-  mode.kinetic_energy_share.maxCoeff(&most_energetic);
-  return most_energetic;
+  return best >= 0 ? best : most_energetic_dof(mode);
 }
 
 // The analysis, the method and the counts of the checks (their stages are timed already).
@@ -143,12 +149,11 @@ ModalAmplitudes modal_amplitudes(const LinearSystem& system, const ModalResult& 
   return e;
 }
 
-// Sets the check's resolution from `spectrum` and, for an excited mode, its peak: the peak
-// nearest the modal frequency, when within 3 resolutions of it. Returns that peak's amplitude
-// (the DOF's unit, m or rad; 0 without a peak).
+// Sets an excited mode's check's resolution from `spectrum`, and its peak: the peak nearest the
+// modal frequency, when within 3 resolutions of it. Returns that peak's amplitude (the DOF's
+// unit, m or rad; 0 without a peak).
 double match_peak(const Spectrum& spectrum, FftCheck* check) {
   check->resolution_hz = spectrum.resolution;
-  if (!check->excited) return 0.0;
   const double f = check->damped_hz;
   const SpectralPeak* nearest = nullptr;
   const auto peaks = find_peaks(spectrum);
@@ -545,31 +550,37 @@ FftCheckResult fft_check(const Scene& scene, const Vehicle& vehicle, double memo
   for (size_t r = 0; r < out.modes.modes.size(); ++r) {
     const Mode& mode = out.modes.modes[r];
     if (mode.kind != ModeKind::oscillatory || mode.frequency_hz > fs / 4.0) continue;
-    const int dof = dominant_dof(mode, amplitudes.amplitude[r], mass_diagonal, motion);
-    const std::string label = system.dofs[dof].label;
-    auto at = std::find(out.spectrum_dofs.begin(), out.spectrum_dofs.end(), label);
-    if (at == out.spectrum_dofs.end()) {
-      out.spectrum_dofs.push_back(label);
-      out.spectra.push_back(analyzer.compute(out.history.displacement.col(dof), fs));
-      at = out.spectrum_dofs.end() - 1;
-    }
     FftCheck check;
     check.mode = mode.index;
     check.mode_name = mode.name;
-    check.dof = label;
     check.modal_hz = mode.frequency_hz;
     check.damped_hz = free[r].damped_hz;
     check.damping_ratio = free[r].damping_ratio;
     check.modal_amplitude_ratio = amplitudes.most > 0.0 ? amplitudes.amplitude[r] / amplitudes.most : 0.0;
     check.excited = check.modal_amplitude_ratio >= FftCheck::kExcitedRatio;
-    const Spectrum& spectrum = out.spectra[at - out.spectrum_dofs.begin()];
-    const double peak_amplitude = match_peak(spectrum, &check);
+    const int dof = dominant_dof(mode, check.excited, amplitudes.amplitude[r], mass_diagonal, motion);
+    check.dof = system.dofs[dof].label;
+    // A mode not excited needs no spectrum (no peak is sought): only the record's resolution fs/N,
+    // which every spectrum of it has. Its DOF, which may be at rest, adds no chart of round-off.
+    check.resolution_hz = fs / static_cast<double>(n);
+    double peak_amplitude = 0.0;
+    const Spectrum* spectrum = nullptr;
+    if (check.excited) {
+      auto at = std::find(out.spectrum_dofs.begin(), out.spectrum_dofs.end(), check.dof);
+      if (at == out.spectrum_dofs.end()) {
+        out.spectrum_dofs.push_back(check.dof);
+        out.spectra.push_back(analyzer.compute(out.history.displacement.col(dof), fs));
+        at = out.spectrum_dofs.end() - 1;
+      }
+      spectrum = &out.spectra[at - out.spectrum_dofs.begin()];
+      peak_amplitude = match_peak(*spectrum, &check);
+    }
     judge(out.nonlinear, record_s, &check);
     // Its free response gone, a linear scene's mode has no line to check; the free part of a
     // nonlinear or ramped scene is not the linear one (no steady state to take out).
     // A forcing line at the mode makes it not applicable first: no run could tell the two apart.
-    if (!out.nonlinear && !ramp && forcing_line_at_mode(scene, check).empty())
-      check.why_decayed = why_decayed(check, free[r], mode.shape(dof), spectrum, record_s);
+    if (spectrum && !out.nonlinear && !ramp && forcing_line_at_mode(scene, check).empty())
+      check.why_decayed = why_decayed(check, free[r], mode.shape(dof), *spectrum, record_s);
     if (!check.why_decayed.empty()) {
       check.outcome = FftCheck::Outcome::decayed;
       check.needed_duration_s = 0.0;

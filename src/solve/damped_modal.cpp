@@ -565,8 +565,7 @@ DampedModalResult solve_damped_modes(const LinearSystem& original, const DampedM
   // Undamped modes without the series dampers: they carry no static force (the file comment).
   result.undamped = solve_modes(original, options.undamped);  // checks M and K, condenses, names
   clock.lap("undamped modes");
-  // Its notes are what the damped modes leave out or add: the series dampers are in here.
-  result.undamped.notes = model::damped_mode_notes(original);
+  result.notes = model::damped_mode_notes(original);  // the series dampers are in here
   LinearSystem system = model::with_series_damper_strokes(original);
   if (system.damping.size() == 0) system.damping = Eigen::MatrixXd::Zero(n, n);
   const Eigen::MatrixXd& C = system.damping;

@@ -288,7 +288,13 @@ TEST(WheelsetAnalyses, SeriesDampersAreRefusedNotDropped) {
   const LinearSystem s = assemble(damped_pair(Motion::longitudinal), DofSet::all);
   const ModalResult modes = solve_modes(s);
   // the damped modes carry it (tests/solve/damped_modal_test.cpp, "SeriesDamper")
-  EXPECT_EQ(solve_damped_modes(s).undamped.notes.size(), 1u);
+  const DampedModalResult damped = solve_damped_modes(s);
+  ASSERT_EQ(damped.notes.size(), 1u);
+  EXPECT_NE(damped.notes[0].find("series dampers: in"), std::string::npos);
+  // Its undamped solve's notes mean what ModalResult::notes means: the dampers left out.
+  EXPECT_EQ(damped.undamped.notes, modes.notes);
+  ASSERT_EQ(modes.notes.size(), 1u);
+  EXPECT_NE(modes.notes[0].find("series dampers: left out"), std::string::npos);
   const Eigen::VectorXcd load = Eigen::VectorXcd::Ones(s.size());
   expect_series_damper_refused([&] { harmonic_response(s, modes, load, 1.0); }, "harmonic response");
   expect_series_damper_refused([&] { modal_harmonic_response(s, modes, load, 1.0, 2); }, "harmonic response");

@@ -6,7 +6,7 @@ import pandas
 import pytest
 
 import railmodal
-from railmodal_paths import cli_json, data
+from railmodal_paths import SOURCE, cli_json, data
 
 RESORT = data("vehicles", "resort_car.toml")
 COACH = data("vehicles", "manchester_benchmark_coach.toml")
@@ -100,6 +100,17 @@ def test_damped_modes_equal_the_clis():
     frame = pandas.DataFrame(result.records())
     assert frame.shape[0] == len(rows) and "damping_ratio" in frame
     assert result.undamped.frequencies_hz.shape == (len(result.undamped),)
+
+
+def test_damped_notes_are_the_damped_modes_own():
+    # A coach with yaw dampers: the damped modes carry the series dampers, the undamped solve
+    # leaves them out; each result says so in its own notes, as the CLI's JSON.
+    vehicle = str(SOURCE / "tests" / "corpus" / "vehicles" / "yaw_damped_coach.toml")
+    result = railmodal.damped_modes(railmodal.assemble(railmodal.load_vehicle(vehicle)))
+    assert result.notes == cli_json("modes", "--damped", vehicle)["notes"]
+    assert any(n.startswith("series dampers: in") for n in result.notes)
+    assert result.undamped.notes == cli_json("modes", vehicle)["notes"]
+    assert any(n.startswith("series dampers: left out") for n in result.undamped.notes)
 
 
 def test_damped_options_nest_the_undamped_ones():

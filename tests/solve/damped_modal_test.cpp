@@ -459,6 +459,53 @@ TEST(DampedModes, RandomNonProportionalModels) {
   }
 }
 
+// Damping that is not proportional couples the undamped modes, and the coupling moves their
+// frequencies either way. Two equal masses m on springs k, coupled by kc, with one damper c under
+// the first only: modes (1, 1)/√(2m) at ω₁² = k/m and (1, −1)/√(2m) at ω₂² = (k + 2kc)/m, modal
+// damping d_ij = φ_iᵀCφ_j = c/(2m) = d for every i, j. In modal coordinates
+// (λ² + λD + Ω²)u = 0; with u = e_i + O(d), row j ≠ i gives u_j ≈ −iω_i d_ji/(ω_j² − ω_i²), and
+// row i to second order: Im λ_i = ω_i − d_ii²/(8ω_i) + (ω_i/2)Σ_j d_ij²/(ω_j² − ω_i²), and
+// |λ_i| = ω_i(1 + ½Σ_j d_ij²/(ω_j² − ω_i²)). The first term is the proportional ζ²/2; the
+// coupling pulls the two frequencies together, so the lower mode's damped frequency here exceeds
+// its undamped one (4·ω₁² > ω₂² − ω₁²). The neglected terms are fourth order, of relative size
+// (d/ω₁)² = 2.5e-4 of the shift (d·ω₁/(ω₂² − ω₁²) is the same here); 2e-3 (8 times) allowed.
+// The roots themselves against Newton on det(λ²M + λC + K), to 1e-12 of ω.
+TEST(DampedModes, NonProportionalDampingRaisesTheLowerFrequency) {
+  const double m = 1000.0, k = 1e6, kc = 5e5, c = 1000.0;
+  Eigen::MatrixXd K(2, 2);
+  K << k + kc, -kc, -kc, k + kc;
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(2, 2);
+  C(0, 0) = c;
+  const DampedModalResult r = solve_damped_modes(points(m * Eigen::MatrixXd::Identity(2, 2), C, K));
+  ASSERT_EQ(r.modes.size(), 2u);
+  const double w1 = std::sqrt(k / m), w2 = std::sqrt((k + 2.0 * kc) / m), d = c / (2.0 * m);
+  const double w[2] = {w1, w2};
+  const auto det = [&](cd l) { return (m * l * l + c * l + k + kc) * (m * l * l + k + kc) - kc * kc; };
+  const auto det_slope = [&](cd l) {
+    return (2.0 * m * l + c) * (m * l * l + k + kc) + (m * l * l + c * l + k + kc) * (2.0 * m * l);
+  };
+  for (int i = 0; i < 2; ++i) {
+    const DampedMode& mode = r.modes[i];
+    ASSERT_EQ(mode.undamped_mode, i + 1);  // in ascending f_d, which keeps the undamped order here
+    EXPECT_NEAR(r.undamped.modes[i].omega_rad_s, w[i], 1e-12 * w[i]);
+    const double other = w[1 - i];
+    const double coupling = 0.5 * w[i] * d * d / (other * other - w[i] * w[i]);
+    const double shift = coupling - d * d / (8.0 * w[i]);  // Im λ − ω, rad/s
+    const double damped = 2.0 * kPi * *mode.damped_frequency_hz, natural = 2.0 * kPi * *mode.natural_frequency_hz;
+    EXPECT_NEAR(damped - w[i], shift, 2e-3 * std::abs(shift)) << i;
+    EXPECT_NEAR(natural - w[i], coupling, 2e-3 * std::abs(coupling)) << i;
+    cd root(0.0, w[i]);
+    for (int step = 0; step < 50; ++step) root -= det(root) / det_slope(root);
+    ASSERT_EQ(mode.eigenvalues.size(), 2u);
+    const cd upper = mode.eigenvalues[0].imag() > 0.0 ? mode.eigenvalues[0] : mode.eigenvalues[1];
+    EXPECT_NEAR(std::abs(upper - root), 0.0, 1e-12 * w[i]) << i;
+  }
+  // The lower mode oscillates above its undamped frequency (by 2.97e-3 rad/s, 4.7e-4 Hz), the
+  // upper below.
+  EXPECT_GT(*r.modes[0].damped_frequency_hz, r.undamped.modes[0].frequency_hz);
+  EXPECT_LT(*r.modes[1].damped_frequency_hz, r.undamped.modes[1].frequency_hz);
+}
+
 TEST(DampedModes, BadOptionsAndDampingOfTheWrongSize) {
   DampedModalOptions o;
   o.critical_gap = 0.0;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -398,7 +399,12 @@ TEST(HuntingValidation, RigidThreeAxleTruckLowSpeedWavelength) {
   ASSERT_EQ(carriers.size(), 1u);  // one body carrying three: no bogies for the naming, a carrier here
   EXPECT_TRUE(stability::wheelset_bogies(rigid_bogie(bd)).empty());
   EXPECT_EQ(carriers[0].wheelsets.size(), 3u);
-  EXPECT_NEAR(carriers[0].axle_spread, std::sqrt(2.0 / 3.0) * bd.a, 1e-15);  // round-off of a mean of squares
+  // Round-off only, in units u = ε/2 of relative rounding: the axles at a, 0, −a (exact) have
+  // mean exactly 0 (a/3 and −a/3 round alike), so the spread is √(2·fl(fl(a²)/3)), the doubling
+  // exact: pow within 1 ulp (2u) and /3 (u) give 3u, halved by √, which adds u: 2.5u. The
+  // reference √(2/3)·a: 2/3 (u, halved by √), √ (u), ×a (u): 2.5u. 5u together; 8u = 4ε allowed.
+  const double expected_spread = std::sqrt(2.0 / 3.0) * bd.a;
+  EXPECT_NEAR(carriers[0].axle_spread, expected_spread, 4.0 * std::numeric_limits<double>::epsilon() * expected_spread);
 }
 
 // The digest's case: s = 1.58 m (l0 = 0.79), r = 0.525 m, n = 1/20, base 2.5 m (a = 1.25),
