@@ -18,6 +18,17 @@ const Wheelset* wheelset_of(const Vehicle& vehicle, const std::string& body) {
   return nullptr;
 }
 
+int wheelset_carrier(const Vehicle& vehicle, const std::string& body) {
+  for (const Element& e : vehicle.elements) {
+    const std::string& other = e.lower == body ? e.upper : e.upper == body ? e.lower : std::string();
+    if (other.empty() || wheelset_of(vehicle, other) != nullptr) continue;
+    for (std::size_t b = 0; b < vehicle.bodies.size(); ++b)
+      if (vehicle.bodies[b].name == other) return static_cast<int>(b);
+    return -1;  // the first such element joins it to the track
+  }
+  return -1;
+}
+
 WheelsetDofs wheelset_dofs(const LinearSystem& system, const Wheelset& w) {
   const Vehicle& v = system.vehicle;
   WheelsetDofs d;

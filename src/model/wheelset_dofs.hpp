@@ -14,6 +14,12 @@ namespace railmodal::model {
 /// The wheelset standing on the body named `body`, or nullptr when that body is not a wheelset.
 const Wheelset* wheelset_of(const Vehicle& vehicle, const std::string& body);
 
+/// The index into vehicle.bodies of the body the wheelset on `body` hangs from: the other body of
+/// the first element (in the vehicle's order: its primary suspension) joining it to a body that
+/// is not a wheelset; -1 when none does (a wheelset held by the track alone). A bogie frame, or
+/// a two-axle wagon's body.
+int wheelset_carrier(const Vehicle& vehicle, const std::string& body);
+
 /// A wheelset's place in an assembled system.
 struct WheelsetDofs {
   int body = -1;       ///< index into vehicle.bodies

@@ -10,6 +10,7 @@
 
 #include "model/body_bending.hpp"
 #include "model/rigid_body.hpp"
+#include "model/wheelset_dofs.hpp"
 
 namespace railmodal::solve {
 namespace {
@@ -32,6 +33,22 @@ struct BodyEnergy {
   double amplitude(Motion m) const { return m == Motion::bending ? bending : motion(static_cast<int>(m)); }
 };
 
+// A body's rigid motion as the motion of its CG and its rotation, one entry per rigid Term
+// (lateral, vertical, longitudinal, roll, pitch, yaw): its energy terms are these squared.
+using CgMotion = Eigen::Matrix<double, kMotionsPerBody, 1>;
+
+// `map` is the body's point map of its CG (ModeNamer::BodyFacts).
+CgMotion cg_motion_of(const model::PointMap& map, const BodyVector& q) {
+  // The five motions before longitudinal as a 3 × 5 product (the same sums as before it
+  // existed), then the longitudinal one, +0 where it is held.
+  constexpr int kFive = kMotionsPerBody - 1;
+  const Eigen::Matrix<double, 3, kFive> five = map.leftCols<kFive>();
+  const Eigen::Vector3d cg = five * q.head<kFive>() + map.col(kFive) * q(kFive);
+  CgMotion s;
+  s << cg.y(), cg.z(), cg.x(), q(2), q(3), q(4);
+  return s;
+}
+
 // `map` is the body's point map of its CG, `bending_mass` its bending mode's modal mass (0
 // without one): ModeNamer::BodyFacts.
 BodyEnergy energy_of(const Body& body, const model::PointMap& map, double bending_mass, const BodyVector& q,
@@ -39,21 +56,54 @@ BodyEnergy energy_of(const Body& body, const model::PointMap& map, double bendin
   BodyEnergy e;
   e.motion = q;
   e.bending = bending;
-  // The five motions before longitudinal as a 3 × 5 product (the same sums as before it
-  // existed), then the longitudinal one, +0 where it is held.
-  constexpr int kFive = kMotionsPerBody - 1;
-  const Eigen::Matrix<double, 3, kFive> five = map.leftCols<kFive>();
-  const Eigen::Vector3d cg = five * q.head<kFive>() + map.col(kFive) * q(kFive);
-  const Eigen::Vector3d rotation(q(2), q(3), q(4));
-  e.term[kLongitudinal] = 0.5 * body.mass * cg.x() * cg.x();
-  e.term[kLateral] = 0.5 * body.mass * cg.y() * cg.y();
-  e.term[kVertical] = 0.5 * body.mass * cg.z() * cg.z();
-  e.term[kRoll] = 0.5 * body.inertia.x() * rotation.x() * rotation.x();
-  e.term[kPitch] = 0.5 * body.inertia.y() * rotation.y() * rotation.y();
-  e.term[kYaw] = 0.5 * body.inertia.z() * rotation.z() * rotation.z();
+  const CgMotion s = cg_motion_of(map, q);
+  const std::array<double, kMotionsPerBody> inertia{body.mass, body.mass, body.mass,
+                                                    body.inertia.x(), body.inertia.y(), body.inertia.z()};
+  for (int t = 0; t < kMotionsPerBody; ++t) e.term[t] = 0.5 * inertia[t] * s(t) * s(t);
   if (body.bending) e.term[kBending] = 0.5 * bending_mass * bending * bending;
   for (double t : e.term) e.total += t;
   return e;
+}
+
+// A wheelset's motions (its reference point's, in the order of Motion) per unit of each term of
+// its carrier's CG motion (CgMotion): its reference point moves as a point of the carrier,
+// u = v_cg + θ × d with d from the carrier's CG to the point (model::point_map's convention), and
+// turns with it. A motion the wheelset does not have (its bounce, roll and spin follow the
+// rails: `free`) is not carried: the primary suspension takes the carrier's motion there.
+model::BodyMatrix carried_per_term(const Body& carrier, const Body& carried, const std::array<bool, kMotionsPerBody>& free) {
+  const Eigen::Vector3d d = carried.reference_point - carrier.centre_of_gravity;
+  const int lateral = static_cast<int>(Motion::lateral), bounce = static_cast<int>(Motion::bounce),
+            roll = static_cast<int>(Motion::roll), pitch = static_cast<int>(Motion::pitch),
+            yaw = static_cast<int>(Motion::yaw), longitudinal = static_cast<int>(Motion::longitudinal);
+  model::BodyMatrix c = model::BodyMatrix::Zero();
+  // θ × d = (θy dz − θz dy, θz dx − θx dz, θx dy − θy dx)
+  c(lateral, kLateral) = 1.0, c(lateral, kYaw) = d.x(), c(lateral, kRoll) = -d.z();
+  c(bounce, kVertical) = 1.0, c(bounce, kRoll) = d.y(), c(bounce, kPitch) = -d.x();
+  c(longitudinal, kLongitudinal) = 1.0, c(longitudinal, kPitch) = d.z(), c(longitudinal, kYaw) = -d.y();
+  c(roll, kRoll) = 1.0, c(pitch, kPitch) = 1.0, c(yaw, kYaw) = 1.0;
+  for (int m = 0; m < kMotionsPerBody; ++m)
+    if (!free[m]) c.row(m).setZero();
+  return c;
+}
+
+// Credits the carrier with the kinetic energy ½ cᵀMc of the motion c = C s its rigid motion s
+// gives a wheelset (M the wheelset's mass matrix), shared among the carrier's terms in proportion
+// to what each alone gives it, ½ (C_j s_j)ᵀ M (C_j s_j): none negative, and the cross terms
+// (the carrier's lateral and yaw at one axle) go with the terms that make them.
+void credit_carried(const model::BodyMatrix& carried, const model::BodyMatrix& mass, const CgMotion& s,
+                    BodyEnergy* carrier) {
+  const BodyVector c = carried * s;
+  const double total = 0.5 * c.dot(mass * c);
+  std::array<double, kMotionsPerBody> alone{};
+  double sum = 0.0;
+  for (int t = 0; t < kMotionsPerBody; ++t) {
+    const BodyVector ct = carried.col(t) * s(t);
+    alone[t] = 0.5 * ct.dot(mass * ct);
+    sum += alone[t];
+  }
+  if (sum <= 0.0) return;
+  for (int t = 0; t < kMotionsPerBody; ++t) carrier->term[t] += total * alone[t] / sum;
+  carrier->total += total;
 }
 
 // Height of the line with no lateral motion (roll) or x of the point with no vertical
@@ -182,6 +232,13 @@ ModeNamer::ModeNamer(const LinearSystem& system) : system_(system) {
     f.free_roll = has_dof(system, bodies[b].name, "roll");
     f.cg_map = model::point_map(bodies[b], bodies[b].centre_of_gravity);
     if (bodies[b].bending) f.bending_mass = model::bending_mode(bodies[b]).modal_mass;
+    if (model::wheelset_of(system.vehicle, bodies[b].name) == nullptr) continue;
+    f.carrier = model::wheelset_carrier(system.vehicle, bodies[b].name);
+    if (f.carrier < 0) continue;
+    std::array<bool, kMotionsPerBody> free{};
+    for (int m = 0; m < kMotionsPerBody; ++m) free[m] = has_dof(system, bodies[b].name, to_string(static_cast<Motion>(m)));
+    f.carried = carried_per_term(bodies[f.carrier], bodies[b], free);
+    f.mass = model::body_mass(bodies[b]);
   }
   for (size_t b = 0; b < bodies.size(); ++b) {
     BodyFacts& f = bodies_[b];
@@ -212,11 +269,35 @@ void ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated, std::strin
       motion[dof.body](static_cast<int>(dof.motion)) = shape(static_cast<int>(i));
   }
 
-  int lead = 0;
+  // A wheelset is named for its motion relative to its carrier (bogie frame, or a two-axle
+  // wagon's body) only; what the carrier's rigid motion gives it, the carrier takes credit for
+  // (a bogie yawing with its wheelsets is "bogie yaw", however much they move laterally).
   for (size_t b = 0; b < bodies.size(); ++b) {
-    energy.push_back(energy_of(bodies[b], bodies_[b].cg_map, bodies_[b].bending_mass, motion[b], bending[b]));
-    if (energy[b].total > energy[lead].total) lead = static_cast<int>(b);
+    const BodyFacts& f = bodies_[b];
+    BodyVector own = motion[b];
+    if (f.carrier >= 0) own -= f.carried * cg_motion_of(bodies_[f.carrier].cg_map, motion[f.carrier]);
+    energy.push_back(energy_of(bodies[b], f.cg_map, f.bending_mass, own, bending[b]));
   }
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    const BodyFacts& f = bodies_[b];
+    if (f.carrier >= 0)
+      credit_carried(f.carried, f.mass, cg_motion_of(bodies_[f.carrier].cg_map, motion[f.carrier]), &energy[f.carrier]);
+  }
+  int lead = 0;
+  for (size_t b = 0; b < bodies.size(); ++b)
+    if (energy[b].total > energy[lead].total) lead = static_cast<int>(b);
+  // The carrier took the carried energy of all its wheelsets: their relative motion counts
+  // together against it too, or a bogie would name a mode in which both its wheelsets move
+  // laterally in the frame twice as far as the frame's yaw carries them (each wheelset's share
+  // alone is about the bogie's, and which leads would turn on round-off).
+  double relative = 0.0;
+  int wheelset = -1;
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    if (bodies_[b].carrier != lead) continue;
+    relative += energy[b].total;
+    if (wheelset < 0 || energy[b].total > energy[wheelset].total) wheelset = static_cast<int>(b);
+  }
+  if (wheelset >= 0 && relative > energy[lead].total) lead = wheelset;
   const BodyEnergy& e = energy[lead];
   const Body& body = bodies[lead];
   const BodyFacts& facts = bodies_[lead];

@@ -34,6 +34,17 @@ namespace railmodal::solve {
 ///  - "lateral" when the body is held in roll, or the roll share is round-off;
 ///  - otherwise "lower sway" / "upper sway" as the centre of oscillation lies below / above
 ///    the CG, however small either share (README, "Mode names").
+/// A wheelset carried by a body through its suspension (a bogie frame, a two-axle wagon's body:
+/// model::wheelset_carrier) is credited with its motion relative to that body only: its
+/// displacement less the one its reference point and its rotation would have as a point of the
+/// carrier (lateral = the carrier's lateral + yaw × x-offset − roll × height, yaw = the
+/// carrier's yaw; its bounce, roll and spin follow the rails and are not carried). The carrier
+/// takes the kinetic energy of the carried part, shared among its own terms in proportion to
+/// what each alone gives the wheelset, so that a bogie yawing with its wheelsets is "bogies yaw"
+/// however far they move laterally, and wheelsets yawing in a frame held still stay "wheelsets
+/// yaw". The cross term between the carried and the relative motion belongs to neither and
+/// counts for neither. Having taken all its wheelsets' carried energy, the carrier leads only if
+/// it also has more than their relative energies together; else its wheelset with the most does.
 /// Bodies named alike but for a trailing number (bogie1, bogie2): a repeated mode led by one of
 /// them names the subspace, "bogies pitch (repeated)"; a repeated mode has no centre of
 /// oscillation (its shape is an arbitrary member of the subspace); otherwise a twin with at least half the
@@ -53,6 +64,13 @@ class ModeNamer {
     bool free_longitudinal = false, free_lateral = false, free_roll = false;  ///< DOFs of the system
     model::PointMap cg_map;  ///< the CG's motion per unit motion of the reference point
     double bending_mass = 0.0;  ///< the bending mode's modal mass (a body with Body::bending)
+    /// A wheelset's carrier (model::wheelset_carrier: its bogie frame, or a two-axle wagon's
+    /// body), −1 for any other body and a wheelset held by the track alone.
+    int carrier = -1;
+    /// A carried wheelset's motions per unit of its carrier's CG motion and rotation (rows in the
+    /// order of Motion, columns lateral, vertical, longitudinal, roll, pitch, yaw; the motions it
+    /// does not have, 0), and its mass matrix at its reference point (model::body_mass).
+    model::BodyMatrix carried = model::BodyMatrix::Zero(), mass = model::BodyMatrix::Zero();
   };
 
  private:

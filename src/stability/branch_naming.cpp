@@ -112,17 +112,8 @@ std::vector<WheelsetBogie> wheelset_carriers(const Vehicle& vehicle) {
   std::vector<WheelsetBogie> bogies(vehicle.bodies.size());
   for (const Wheelset& w : vehicle.wheelsets) {
     const int ws = index_of(w.body);
-    if (ws < 0) continue;
-    // The body an element joins the wheelset to (its primary suspension), the first found.
-    int carrier = -1;
-    for (const Element& e : vehicle.elements) {
-      const std::string& other = e.lower == w.body ? e.upper : e.upper == w.body ? e.lower : std::string();
-      if (!other.empty() && model::wheelset_of(vehicle, other) == nullptr) {
-        carrier = index_of(other);
-        break;
-      }
-    }
-    if (carrier >= 0) bogies[carrier].wheelsets.push_back(ws);
+    const int carrier = model::wheelset_carrier(vehicle, w.body);
+    if (ws >= 0 && carrier >= 0) bogies[carrier].wheelsets.push_back(ws);
   }
   std::vector<WheelsetBogie> out;
   for (size_t b = 0; b < bogies.size(); ++b) {

@@ -154,6 +154,129 @@ TEST(ModeNames, RepeatedTwinModesHaveOneNameAndNoCentre) {
   EXPECT_EQ(repeated, 2);
 }
 
+// The Manchester coach on wheelsets: the two lowest oscillating modes (0.85 Hz) are each bogie
+// yawing on the secondary with its wheelsets carried rigidly: their yaw is the bogie's and their
+// lateral motion the bogie's yaw times the semi-wheelbase. They were named "wheelsets lateral,
+// antiphase" (user audit 2026-11-27b, item 3.5): the carried wheelsets, of more energy than the
+// frame, took the name. The carried motion is the bogie's: "bogies yaw", their phase that of the
+// bogies' yaw.
+TEST(ModeNames, WheelsetsCarriedByAYawingBogieNameTheBogie) {
+  const LinearSystem system =
+      assemble(load_vehicle(test::data_file("manchester_benchmark_coach_wheelsets.toml")), DofSet::all);
+  const ModalResult r = solve_modes(system);
+  const auto at = [&](const Mode& m, const std::string& dof) { return m.shape(system.index_of(dof)); };
+  const Vehicle& v = system.vehicle;
+  const auto x_of = [&](const std::string& name) {
+    for (const Body& b : v.bodies)
+      if (b.name == name) return b.reference_point.x();
+    ADD_FAILURE() << "no body " << name;
+    return 0.0;
+  };
+  std::vector<std::string> names;
+  for (int i : {2, 3}) {  // after the body's two rigid-body modes
+    const Mode& m = r.modes.at(i);
+    ASSERT_EQ(m.kind, ModeKind::oscillatory);
+    // The premise, from the shape: each wheelset is carried. Its yaw is its bogie's and its
+    // lateral motion the bogie's lateral motion plus yaw × lever, within 2 % of the wheelset's
+    // own (the primary springs deflect a little under the wheelsets' inertia: 0.9 % measured;
+    // the bogies' roll, 1e-3 of their yaw, moves the axle by less).
+    const std::vector<std::pair<std::string, std::string>> carried{
+        {"bogie1", "wheelset1"}, {"bogie1", "wheelset2"}, {"bogie2", "wheelset3"}, {"bogie2", "wheelset4"}};
+    for (const auto& [bogie, wheelset] : carried) {
+      const double yaw = at(m, bogie + ".yaw"), lever = x_of(wheelset) - x_of(bogie);
+      const double lateral = at(m, wheelset + ".lateral");
+      EXPECT_NEAR(at(m, wheelset + ".yaw"), yaw, 0.02 * std::abs(yaw)) << m.index << " " << wheelset;
+      EXPECT_NEAR(lateral, at(m, bogie + ".lateral") + yaw * lever, 0.02 * std::abs(lateral)) << m.index << " " << wheelset;
+      EXPECT_GT(std::abs(lateral), std::abs(at(m, bogie + ".lateral")));  // the wheelsets move most
+    }
+    const bool in_phase = at(m, "bogie1.yaw") * at(m, "bogie2.yaw") > 0.0;
+    EXPECT_EQ(m.name, in_phase ? "bogies yaw, in phase" : "bogies yaw, antiphase") << m.index;
+    names.push_back(m.name);
+  }
+  EXPECT_NE(names[0], names[1]);  // one of each phase
+}
+
+// A wheelset moving in a frame that does not move keeps the wheelset's name: the coach's bogie
+// frames held still (every motion), the wheelsets sway and yaw on the primary suspension alone.
+TEST(ModeNames, WheelsetsMovingInAFrameHeldStillNameTheWheelsets) {
+  Vehicle v = load_vehicle(test::data_file("manchester_benchmark_coach_wheelsets.toml"));
+  for (const char* bogie : {"bogie1", "bogie2"})
+    test::body_named(v, bogie)->held = {Motion::lateral, Motion::bounce, Motion::roll, Motion::pitch, Motion::yaw};
+  const LinearSystem system = assemble(v, DofSet::lateral);
+  ASSERT_LT(system.index_of("bogie1.yaw"), 0);
+  int lateral = 0, yaw = 0;
+  for (const Mode& m : solve_modes(system).modes) {
+    // Which motion leads, from the shape: the wheelsets' lateral or yaw kinetic energy.
+    double wheelset_lateral = 0.0, wheelset_yaw = 0.0;
+    for (int i = 0; i < system.size(); ++i) {
+      const Dof& d = system.dofs[i];
+      if (v.bodies[d.body].name.rfind("wheelset", 0) != 0) continue;
+      (d.motion == Motion::lateral ? wheelset_lateral : wheelset_yaw) += m.kinetic_energy_share(i);
+    }
+    if (wheelset_lateral + wheelset_yaw < 0.5) continue;  // the body's modes
+    const bool by_lateral = wheelset_lateral > wheelset_yaw;
+    EXPECT_EQ(m.name.rfind(by_lateral ? "wheelsets lateral" : "wheelsets yaw", 0), 0u) << m.index << " " << m.name;
+    ++(by_lateral ? lateral : yaw);
+  }
+  EXPECT_EQ(lateral, 4);  // four wheelsets, each with a lateral and a yaw motion
+  EXPECT_EQ(yaw, 4);
+}
+
+// In the coach's modes at 14.9 Hz the bogies yaw too, but the wheelsets move laterally against
+// what the yaw would carry them, twice as far relative to the frame: the primary lateral springs'
+// mode, named by the wheelsets' relative motion (each wheelset's relative energy alone is about
+// the bogie's with its carried share, so they count together against it).
+TEST(ModeNames, WheelsetsMovingAgainstTheirYawingFrameNameTheWheelsets) {
+  const LinearSystem system =
+      assemble(load_vehicle(test::data_file("manchester_benchmark_coach_wheelsets.toml")), DofSet::all);
+  int found = 0;
+  for (const Mode& m : solve_modes(system).modes) {
+    if (m.frequency_hz < 14.0 || m.frequency_hz > 16.0) continue;
+    const double yaw = m.shape(system.index_of("bogie1.yaw")), lateral = m.shape(system.index_of("wheelset1.lateral"));
+    if (std::abs(yaw) < 1e-3) continue;  // another bogie's mode
+    // The premise: wheelset1, 1.28 m ahead of bogie1's centre, moves against its carried motion.
+    EXPECT_LT(lateral * yaw, 0.0) << m.index;
+    EXPECT_EQ(m.name, "wheelsets lateral, antiphase") << m.index;
+    ++found;
+  }
+  EXPECT_EQ(found, 2);
+}
+
+// A two-axle wagon's body carries its wheelsets directly: its own modes keep the body's names and
+// the wheelsets' modes (they sway and yaw in the body's suspension) theirs, as before the carried
+// motion was credited to the carrier.
+TEST(ModeNames, TwoAxleWagonOnWheelsetsKeepsItsNames) {
+  const std::string wagon = R"([vehicle]
+name = "two-axle wagon on wheelsets"
+template = "two-axle"
+[body]
+mass = "20 t"
+inertia = { roll = "3e4 kg*m^2", pitch = "1.2e5 kg*m^2", yaw = "1.2e5 kg*m^2" }
+cg_height = "1 m"
+[suspension]
+wheelbase = "4 m"
+spring_spacing = "2 m"
+spring = { stiffness = "900 kN/m" }
+lateral = { stiffness = "2 MN/m" }
+longitudinal = { stiffness = "20 MN/m" }
+[wheelset]
+mass = "1.2 t"
+inertia = { roll = "700 kg*m^2", yaw = "700 kg*m^2" }
+spin_inertia = "80 kg*m^2"
+rolling_radius = "0.45 m"
+contact_half_spacing = "0.75 m"
+conicity = 0.2
+hertz = { rail_head_radius = "0.3 m" }
+)";
+  const ModalResult r = solve_modes(assemble(load_vehicle(test::write_temp("two_axle_ws.toml", wagon)), DofSet::all));
+  std::vector<std::string> names;
+  for (const Mode& m : r.modes)
+    if (m.kind == ModeKind::oscillatory) names.push_back(m.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"body pitch", "body lower sway", "body bounce", "wheelsets lateral, antiphase",
+                                             "wheelsets lateral, in phase", "wheelsets yaw, antiphase",
+                                             "wheelsets yaw, in phase"}));
+}
+
 // MAC of two shapes weighted by the unperturbed mass matrix.
 double mac(const Eigen::MatrixXd& M, const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   const double ab = a.dot(M * b);
