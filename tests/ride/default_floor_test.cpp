@@ -68,7 +68,7 @@ RideOutput floor_test_point(const std::string& name, const Eigen::Vector3d& p, R
   return o;
 }
 
-const RideOutput& named(const std::vector<RideOutput>& outputs, const std::string& name) {
+const RideOutput& floor_output_named(const std::vector<RideOutput>& outputs, const std::string& name) {
   const auto found = std::find_if(outputs.begin(), outputs.end(), [&](const RideOutput& o) { return o.name == name; });
   EXPECT_NE(found, outputs.end()) << name;
   return *found;
@@ -102,7 +102,7 @@ TEST(DefaultFloor, LateralAccelerationAtTheFloorIsTheReferencePointsPlusTheRolls
   const double floor = 1.7, reference = 0.5, h = floor - reference;
   const LinearSystem s = floor_test_body(floor, reference, 1.0);
   std::vector<RideOutput> outputs = default_ride_outputs(s);
-  const Eigen::Vector3d under(named(outputs, "floor at mid-car, lateral").point.x(), 0.0, reference);
+  const Eigen::Vector3d under(floor_output_named(outputs, "floor at mid-car, lateral").point.x(), 0.0, reference);
   outputs.push_back(floor_test_point("reference point, lateral", under, RideAxis::lateral));
   outputs.push_back(floor_test_point("z̈ on the centre line", under, RideAxis::vertical));
   outputs.push_back(floor_test_point("z̈ 1 m to the left", under + Eigen::Vector3d(0, 1, 0), RideAxis::vertical));
@@ -138,7 +138,7 @@ TEST(DefaultFloor, LateralAccelerationAtTheFloorIsTheReferencePointsPlusTheRolls
 TEST(DefaultFloor, RollAboutTheReferencePointGivesTheFloorHTimesTheRollAcceleration) {
   const double h = 1.3;
   const LinearSystem s = floor_test_body(h, 0.0, 0.0);
-  RideOutput floor = named(default_ride_outputs(s), "floor at mid-car, lateral");
+  RideOutput floor = floor_output_named(default_ride_outputs(s), "floor at mid-car, lateral");
   floor.frame = RideOutput::Frame::track;
   const Eigen::Vector3d centre(floor.point.x(), 0.0, 0.0);
   const std::vector<RideOutput> outputs{
