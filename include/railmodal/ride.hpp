@@ -115,9 +115,10 @@ std::string unit_of(const RideOutput& output);
 /// acceleration. The body's ends are those of its bending beam (Body::bending) when it has one;
 /// otherwise the vehicle does not give them, and the last two points lie 1 m inboard of the
 /// outermost elements on the body and are named so ("floor 1 m inboard of front support").
-/// Height: the body's reference point (for the templates the plane of the secondary springs,
-/// below a real floor): a lateral acceleration higher up is larger by the roll's share; name
-/// the points in the scene (`[[ride.output]]`) for a given floor height.
+/// Height: the body's floor, Body::floor_height. A body without one has the points at its
+/// reference point's height (for the templates the plane of its springs, below a real floor,
+/// where a lateral acceleration lacks the roll's share −h·φ̈), and solve_ride and simulate_ride
+/// then say so in their notes, once.
 std::vector<RideOutput> default_ride_outputs(const LinearSystem& system);
 
 struct RideOptions {

@@ -107,6 +107,10 @@ struct Body {
   /// The body's first vertical bending mode (a degree of freedom "<name>.bending"); none: the
   /// body is rigid, and nothing it takes part in changes.
   std::optional<BodyBending> bending;
+  /// z of the body's floor, m (vehicle frame: above the plane of the axles, not the rail): where
+  /// default_ride_outputs (ride.hpp) puts its floor points. None: the floor is not given, and
+  /// those points lie at the reference point's height, which the ride's notes then say.
+  std::optional<double> floor_height;
 };
 
 /// Load–deflection curve of one progressive spring (the Khanin conical spring, springs digest

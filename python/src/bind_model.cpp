@@ -151,6 +151,10 @@ void bind_model(py::module_& m) {
           "the motions held, a tuple (b.held.append would change a copy): assign a new list to change them")
       .def_readwrite("longitudinal_free", &Body::longitudinal_free)
       .def_property_readonly("has_bending", [](const Body& b) { return b.bending.has_value(); })
+      .def_readwrite("floor_height", &Body::floor_height,
+                     "m, z of the floor above the plane of the axles (not the rail), or None: where "
+                     "default_ride_outputs puts its floor points (None: at the reference point's height, "
+                     "and the ride's notes say so)")
       .def("__repr__", [](const Body& b) { return "Body('" + b.name + "', mass=" + number_text(b.mass) + " kg)"; });
 
   py::class_<Element>(m, "Element", "A suspension element between two bodies or a body and the track (SI).")

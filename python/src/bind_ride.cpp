@@ -156,7 +156,8 @@ void bind_ride_output(py::module_& m) {
       .def("__repr__", [](const RideOutput& o) { return "<railmodal.RideOutput '" + o.name + "'>"; });
 
   m.def("default_ride_outputs", &default_ride_outputs, py::arg("system"),
-        "The floor points a ride looks at when none are named (body over each bogie, mid-car, 1 m from each end)");
+        "The floor points a ride looks at when none are named (body over each bogie, mid-car, 1 m from each end), "
+        "at the body's floor_height (None: at its reference point, which the ride's notes then say)");
 }
 
 // One row per speed and output; an index an RMS-only result skipped (RideResult::rms_only) is None.

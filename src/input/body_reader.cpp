@@ -101,6 +101,15 @@ std::optional<BodyBending> read_bending(TableReader& parent) {
   return b;
 }
 
+std::optional<double> read_floor_height(TableReader& t) {
+  if (!t.has("floor_height")) return std::nullopt;
+  // A coordinate, so any sign is read (a low-floor car on small wheels may have its floor below
+  // the axles); a length beyond a body's scale is warned, as the templates' heights are.
+  const double z = t.quantity("floor_height", Quantity::length);
+  warn_implausible_length(t, "floor_height", z, kBodyLength);
+  return z;
+}
+
 void check_bending_reach(TableReader& body_table, const Body& body, const std::vector<Element>& elements) {
   if (!body.bending) return;
   const double centre = body.bending->centre.value_or(body.centre_of_gravity.x());

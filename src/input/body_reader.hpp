@@ -28,6 +28,11 @@ bool read_longitudinal_free(TableReader& t);
 /// (mode shape 1 at the beam's ends) (docs/input.md, "Car-body bending"). None when absent.
 std::optional<BodyBending> read_bending(TableReader& t);
 
+/// `floor_height`: z of the body's floor, a length above the plane of the axles (the vehicle
+/// frame's z, as `[draw_gear]`'s `height`; not above the bolster plane as the bogie template's
+/// body `cg_height`), where the ride's default floor points lie. None when absent.
+std::optional<double> read_floor_height(TableReader& t);
+
 /// Fails at the body's `bending.length` when an element attached to `body` acts beyond the
 /// ends of its bending beam (the beam is not there). Nothing when the body has no bending.
 void check_bending_reach(TableReader& body_table, const Body& body, const std::vector<Element>& elements);

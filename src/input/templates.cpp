@@ -281,6 +281,7 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
   const double offset = optional_wagon_dimension(b, "cg_offset").value_or(0.0);
   body.longitudinal_free = read_longitudinal_free(b);
   body.bending = read_bending(b);
+  body.floor_height = read_floor_height(b);
   b.finish();
   body.centre_of_gravity = {offset, 0.0, l};
   body.reference_point = {offset, 0.0, 0.0};  // O: in the axle plane below the CG (§2.2)
@@ -351,6 +352,7 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   const double l3 = wagon_dimension(bt, "bogie_spacing") / 2.0;
   body.longitudinal_free = read_longitudinal_free(bt);
   body.bending = read_bending(bt);
+  body.floor_height = read_floor_height(bt);
   bt.finish();
 
   const bool sprung_bogies = suspension != "single";

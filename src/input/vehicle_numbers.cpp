@@ -61,6 +61,7 @@ struct Walk {
       });
       number(g.damping_ratio);
     });
+    optional_number(b.floor_height);
   }
   void stages(std::vector<SpringStage>& list) {
     count(list.size());

@@ -91,6 +91,7 @@ void read_general(TableReader& root, Vehicle* v) {
     if (b.longitudinal_free && std::find(b.held.begin(), b.held.end(), Motion::longitudinal) != b.held.end())
       t.fail("free", "longitudinal motion cannot be both free and held");
     b.bending = read_bending(t);
+    b.floor_height = read_floor_height(t);
     t.finish();
     v->bodies.push_back(b);
   }

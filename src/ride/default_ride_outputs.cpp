@@ -3,7 +3,10 @@
 #include <cmath>
 #include <sstream>
 
+#include "ride/default_ride_outputs.hpp"
+
 #include "railmodal/ride.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
@@ -55,7 +58,9 @@ std::vector<RideOutput> default_ride_outputs(const LinearSystem& system) {
   if (v.bodies.empty()) return {};
   const int b = heaviest_body(v);
   const Body& body = v.bodies[b];
-  const double z = body.reference_point.z();
+  // The floor where the vehicle gives it; otherwise the reference point's height, which the
+  // ride's notes then state (default_floor_note).
+  const double z = body.floor_height.value_or(body.reference_point.z());
   const std::vector<double> supports = support_positions(v, body);
   double front = body.reference_point.x(), rear = front;
   for (const Element& e : v.elements)
@@ -100,5 +105,28 @@ std::vector<RideOutput> default_ride_outputs(const LinearSystem& system) {
     }
   return out;
 }
+
+namespace ride {
+
+std::optional<std::string> default_floor_note(const LinearSystem& system, const std::vector<RideOutput>& outputs) {
+  const Vehicle& v = system.vehicle;
+  if (v.bodies.empty() || outputs.empty()) return std::nullopt;
+  const Body& body = v.bodies[heaviest_body(v)];
+  if (body.floor_height) return std::nullopt;
+  const std::vector<RideOutput> defaults = default_ride_outputs(system);
+  const bool uses_default = std::any_of(outputs.begin(), outputs.end(), [&](const RideOutput& o) {
+    return std::any_of(defaults.begin(), defaults.end(), [&](const RideOutput& d) {
+      return o.kind == d.kind && o.name == d.name && o.body == d.body && o.point == d.point && o.axis == d.axis;
+    });
+  });
+  if (!uses_default) return std::nullopt;
+  return "floor height not given: the default floor points lie at z = " + shortest_text(body.reference_point.z(), 6) +
+         " m, the reference point of '" + body.name +
+         "' (for the templates the plane of its springs, below a real floor), where a lateral acceleration lacks the "
+         "roll's share at the floor's height; give `floor_height` (m above the plane of the axles) in the body's "
+         "table, or name the points in [[ride.output]]";
+}
+
+}  // namespace ride
 
 }  // namespace railmodal

@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <utility>
 #include <thread>
 
 #include "railmodal/hunting.hpp"
@@ -16,6 +17,7 @@
 #include "require_valid.hpp"
 #include "response/friction_damping.hpp"
 #include "response/modal_checks.hpp"
+#include "ride/default_ride_outputs.hpp"
 #include "ride/ride_contact.hpp"
 #include "ride/ride_friction.hpp"
 #include "ride/ride_grid.hpp"
@@ -671,6 +673,7 @@ RideResult ride::solve_ride(const LinearSystem& system, const TrackIrregularityS
                          "measured 5-s windows; that ν takes T long against the response's correlation time, so for a "
                          "narrow-band response the estimate reads high (+5.9 % for a 1 Hz mode at ζ = 0.05, +0.9 % at "
                          "ζ = 0.2; docs/ride.md)");
+  if (auto note = ride::default_floor_note(system, outputs)) result.notes.push_back(std::move(*note));
   for (const std::string& note : ride::frame_notes(system, outputs)) result.notes.push_back(note);
   return result;
 }

@@ -8,12 +8,14 @@
 #include <iomanip>
 #include <map>
 #include <optional>
+#include <utility>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
 
 #include "railmodal/ride_simulation.hpp"
 #include "require_valid.hpp"
+#include "ride/default_ride_outputs.hpp"
 #include "ride/window_indices.hpp"
 #include "ride/ride_friction_march.hpp"
 #include "ride/ride_march.hpp"
@@ -393,6 +395,7 @@ RideSimulationResult simulate_ride(const LinearSystem& system, const TrackGeomet
           : "exact state transition with a first-order hold on each wheel's linearly interpolated track (Van Loan), "
             "step = track step / (m·speed); EN 12299 Wb/Wd and Sperling B by the prewarped bilinear transform";
   result.summary.checks.push_back({"non-finite output samples", non_finite, 0.0, non_finite == 0.0});
+  if (auto note = ride::default_floor_note(system, outputs)) result.notes.push_back(std::move(*note));
   for (const std::string& note : ride::frame_notes(system, outputs)) result.notes.push_back(note);
   return result;
 }

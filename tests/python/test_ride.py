@@ -274,3 +274,26 @@ def test_spectrum_forms_and_the_fra_classes():
     np.testing.assert_allclose(s.density_per_cycle(n), 2 * np.pi * s.density(2 * np.pi * n), rtol=1e-15)
     # A better class is a smoother track.
     assert railmodal.TrackSpectrum.fra_class(6, "vertical-level").rms() < s.rms()
+
+
+def test_floor_height_places_the_default_points_and_its_absence_is_noted():
+    """Body.floor_height (m above the axle plane) is where default_ride_outputs puts the floor
+    points; without it they lie at the reference point (the coach's bolster plane, 0.3675 m) and
+    the ride's notes say so once (docs/input.md, "Floor height")."""
+    vehicle = railmodal.load_vehicle(data("vehicles", "manchester_benchmark_coach.toml"))
+    assert vehicle.bodies[0].floor_height is None  # the benchmark's paper gives none
+    assert "m, z of the floor above the plane of the axles" in type(vehicle.bodies[0]).floor_height.__doc__
+    system = railmodal.assemble(vehicle, "all")
+    low = railmodal.default_ride_outputs(system)
+    assert [o.point_m[2] for o in low] == [0.3675] * len(low)
+    spectra = {"cross_level": railmodal.TrackSpectrum.ore_b176("low", "cross_level", (2 * np.pi / 100, 2 * np.pi))}
+    notes = railmodal.ride(system, spectra, low[:2], speeds_m_s=[40.0]).notes
+    assert [n for n in notes if n.startswith("floor height not given")] == [
+        next(n for n in notes if n.startswith("floor height not given: the default floor points lie at z = 0.3675 m"))]
+    vehicle.bodies[0].floor_height = 0.84
+    raised = railmodal.assemble(vehicle, "all")
+    high = railmodal.default_ride_outputs(raised)
+    assert [o.point_m[2] for o in high] == [0.84] * len(high)
+    assert [o.name for o in high] == [o.name for o in low]
+    notes = railmodal.ride(raised, spectra, high[:2], speeds_m_s=[40.0]).notes
+    assert not [n for n in notes if n.startswith("floor height not given")]
