@@ -1004,7 +1004,10 @@ bool same_but_coefficients(const Vehicle& kept, const Vehicle& v) {
     if (x.name != y.name || !bitwise_equal(x.mass, y.mass) || !bitwise_equal(x.inertia, y.inertia) ||
         !bitwise_equal(x.centre_of_gravity, y.centre_of_gravity) ||
         !bitwise_equal(x.reference_point, y.reference_point) || x.held != y.held ||
-        x.longitudinal_free != y.longitudinal_free || !same_bending(x.bending, y.bending))
+        x.longitudinal_free != y.longitudinal_free || !same_bending(x.bending, y.bending) ||
+        // Not read by the assembly, but by the ride's default floor points, which a study's
+        // worker takes from the kept system's vehicle.
+        !bitwise_equal(x.floor_height, y.floor_height))
       return false;
   }
   for (size_t k = 0; k < v.elements.size(); ++k) {

@@ -258,6 +258,7 @@ void ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated, std::strin
   thread_local std::vector<BodyVector> motion;
   thread_local std::vector<double> bending;
   thread_local std::vector<BodyEnergy> energy;
+  thread_local std::vector<double> carried_share;  // α of each carried wheelset (below)
   motion.assign(bodies.size(), BodyVector::Zero());
   bending.assign(bodies.size(), 0.0);
   energy.clear();
@@ -271,17 +272,30 @@ void ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated, std::strin
 
   // A wheelset is named for its motion relative to its carrier (bogie frame, or a two-axle
   // wagon's body) only; what the carrier's rigid motion gives it, the carrier takes credit for
-  // (a bogie yawing with its wheelsets is "bogie yaw", however much they move laterally).
+  // (a bogie yawing with its wheelsets is "bogie yaw", however much they move laterally). The
+  // carried part is the share α c of the motion c the carrier would give it that the wheelset's
+  // motion u has, α = cᵀMu / cᵀMc (its M-orthogonal projection) kept within [0, 1]: the carried
+  // and relative energies then add up to the wheelset's own, or to less, never more. A wheelset
+  // moving against its frame (α < 0: the primary springs take both motions) keeps its whole
+  // energy and the frame none of it; without the bound its motion relative to the frame would
+  // count for more energy than the mode gives it.
+  carried_share.assign(bodies.size(), 0.0);
   for (size_t b = 0; b < bodies.size(); ++b) {
     const BodyFacts& f = bodies_[b];
     BodyVector own = motion[b];
-    if (f.carrier >= 0) own -= f.carried * cg_motion_of(bodies_[f.carrier].cg_map, motion[f.carrier]);
+    if (f.carrier >= 0) {
+      const BodyVector c = f.carried * cg_motion_of(bodies_[f.carrier].cg_map, motion[f.carrier]);
+      const double cc = c.dot(f.mass * c);
+      if (cc > 0.0) carried_share[b] = std::clamp(c.dot(f.mass * motion[b]) / cc, 0.0, 1.0);
+      own -= carried_share[b] * c;
+    }
     energy.push_back(energy_of(bodies[b], f.cg_map, f.bending_mass, own, bending[b]));
   }
   for (size_t b = 0; b < bodies.size(); ++b) {
     const BodyFacts& f = bodies_[b];
-    if (f.carrier >= 0)
-      credit_carried(f.carried, f.mass, cg_motion_of(bodies_[f.carrier].cg_map, motion[f.carrier]), &energy[f.carrier]);
+    if (f.carrier >= 0 && carried_share[b] > 0.0)
+      credit_carried(f.carried, f.mass, carried_share[b] * cg_motion_of(bodies_[f.carrier].cg_map, motion[f.carrier]),
+                     &energy[f.carrier]);
   }
   int lead = 0;
   for (size_t b = 0; b < bodies.size(); ++b)

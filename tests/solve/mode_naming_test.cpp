@@ -242,6 +242,27 @@ TEST(ModeNames, WheelsetsMovingAgainstTheirYawingFrameNameTheWheelsets) {
   EXPECT_EQ(found, 2);
 }
 
+// In the coach's modes at 16.36 Hz each bogie frame sways one way and its wheelsets the other
+// (the primary lateral springs take both): nothing of the wheelsets' motion is what the frame
+// would carry (the carried share α is kept at 0, not let go negative), so each keeps its own
+// energy and the frame, which moves with more, names the mode. Before the share was bounded, the
+// wheelsets' motion relative to the frame (the sum of both, 1.6e-2 against their own 7.4e-3)
+// counted for more energy than they had and named it "wheelsets lateral".
+TEST(ModeNames, AFrameSwayingAgainstItsWheelsetsKeepsTheFramesName) {
+  const LinearSystem system =
+      assemble(load_vehicle(test::data_file("manchester_benchmark_coach_wheelsets.toml")), DofSet::all);
+  const ModalResult r = solve_modes(system);
+  int seen = 0;
+  for (const Mode& m : r.modes) {
+    if (m.kind != ModeKind::oscillatory || std::abs(m.frequency_hz - 16.36) > 0.05) continue;
+    const double frame = m.shape(system.index_of("bogie1.lateral")), wheelset = m.shape(system.index_of("wheelset1.lateral"));
+    EXPECT_LT(frame * wheelset, 0.0) << m.index;  // the premise: against each other
+    EXPECT_EQ(m.name.rfind("bogies upper sway", 0), 0u) << m.index << ": " << m.name;
+    ++seen;
+  }
+  EXPECT_EQ(seen, 2);
+}
+
 // A two-axle wagon's body carries its wheelsets directly: its own modes keep the body's names and
 // the wheelsets' modes (they sway and yaw in the body's suspension) theirs, as before the carried
 // motion was credited to the carrier.
