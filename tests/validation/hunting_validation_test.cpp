@@ -509,7 +509,8 @@ TEST(HuntingValidation, SymmetricPairBranchesAreInPhaseOrAntiPhase) {
 // are hunting, which they name, their phase said per bogie (four wheelsets under two bogies).
 TEST(HuntingValidation, ARootThatDoesNotHuntIsNamedAsTheModesAre) {
   const LinearSystem system = assemble(load_vehicle(data_file("manchester_benchmark_coach_wheelsets.toml")), DofSet::all);
-  const Mode& yaw = solve_modes(system).modes.at(2);
+  const ModalResult modes = solve_modes(system);
+  const Mode& yaw = modes.modes.at(2);
   ASSERT_EQ(yaw.name, "bogies yaw, antiphase");
   const Eigen::VectorXd weighted = system.mass.diagonal().cwiseSqrt().cwiseProduct(yaw.shape);
   const Eigen::VectorXcd shape = weighted.cast<std::complex<double>>();
