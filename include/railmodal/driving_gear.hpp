@@ -196,6 +196,7 @@ struct GearState {
 struct GearWheelLoad {
   int axle = 0;
   bool right = true;
+  std::string wheel;  ///< as the reports name it: its axle's name and side, "coupled 1 R"
   double static_load = 0.0;        ///< П, N
   double max_dynamic_load = 0.0;   ///< max ΔP, N
   double min_dynamic_load = 0.0;   ///< min ΔP, N (the least wheel load is П + this)

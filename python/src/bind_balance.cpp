@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -97,7 +98,8 @@ py::list harmonic_records(const GearResult& r) {
 py::list wheel_load_records(const GearResult& r) {
   py::list out;
   for (const GearWheelLoad& w : r.wheels)
-    out.append(py::dict(py::arg("axle") = w.axle, py::arg("right") = w.right, py::arg("static_load_n") = w.static_load,
+    out.append(py::dict(py::arg("wheel") = w.wheel, py::arg("axle") = w.axle, py::arg("right") = w.right,
+                        py::arg("static_load_n") = w.static_load,
                         py::arg("max_hammer_blow_n") = w.alpha * w.static_load,
                         py::arg("max_dP_n") = w.max_dynamic_load, py::arg("min_dP_n") = w.min_dynamic_load,
                         py::arg("least_load_n") = w.static_load + w.min_dynamic_load, py::arg("alpha") = w.alpha,
@@ -132,7 +134,8 @@ void bind_gear_result(py::module_& m) {
       .def_readonly("max_surging_n", &GearResult::max_surging)
       .def_readonly("max_nosing_n_m", &GearResult::max_nosing)
       .def_property_readonly("wheels", &wheel_load_records,
-                             "records per wheel (axle-major, right then left): axle, right, static_load_n (N), "
+                             "records per wheel (axle-major, right then left): wheel (as the reports name it, "
+                             "'coupled 1 R'), axle, right, static_load_n (N), "
                              "max_hammer_blow_n (max |dP|, N), max_dP_n and min_dP_n (N, + pressing the rail), "
                              "least_load_n (N), alpha and alpha_89a (overload coefficients, dimensionless), wheel_lift")
       .def("harmonics", &harmonic_records,
@@ -156,15 +159,18 @@ void bind_gear_result(py::module_& m) {
         "The speed at which an overload coefficient found at speed_m_s reaches `limit` (forces grow as V²).");
 }
 
-// A wheel as the reports name it, "coupled 1 R": its axle's name and the side.
-std::string wheel_name(const DrivingGear& gear, const WheelBalance& w) {
-  return gear.axles[static_cast<size_t>(w.axle)].name + (w.right ? " R" : " L");
+// A wheel as the reports name it, "coupled 1 R": the name the gear's forces give the same wheel
+// (GearWheelLoad::wheel), so that the library names it in one place.
+const std::string& wheel_name(const GearResult& loads, const WheelBalance& w) {
+  for (const GearWheelLoad& load : loads.wheels)
+    if (load.axle == w.axle && load.right == w.right) return load.wheel;
+  throw std::logic_error("balance: no wheel load for axle " + std::to_string(w.axle));
 }
 
 py::list wheel_balance_records(const BalanceResult& r) {
   py::list out;
   for (const WheelBalance& w : r.wheels)
-    out.append(py::dict(py::arg("wheel") = wheel_name(r.balanced, w), py::arg("axle") = w.axle,
+    out.append(py::dict(py::arg("wheel") = wheel_name(r.after, w), py::arg("axle") = w.axle,
                         py::arg("right") = w.right,
                         py::arg("rotating_mass_kg") = w.rotating_mass, py::arg("rotating_angle_rad") = w.rotating_angle,
                         py::arg("vertical_mass_kg") = w.vertical_mass, py::arg("vertical_angle_rad") = w.vertical_angle,

@@ -89,11 +89,13 @@ struct CriticalSpeedList {
   AnalysisSummary summary;
 };
 
+// The keys of `railmodal critical-speed --format json`: a source by its number from 1
+// (`source_index`, as the JSON and the tables' "[1]" number it) and its kind (`source_kind`).
 py::dict critical_speed_record(const CriticalSpeed& c) {
   py::dict r;
   r["speed_m_s"] = c.speed;
   r["speed_kmh"] = 3.6 * c.speed;
-  r["source"] = c.source;
+  r["source_index"] = c.source + 1;
   r["source_kind"] = c.source_kind;
   r["harmonic"] = c.harmonic;
   r["mode"] = c.mode;
@@ -299,7 +301,8 @@ void bind_critical_speeds(py::module_& m) {
              for (const CriticalSpeed& c : l.rows) out.append(critical_speed_record(c));
              return out;
            },
-           "One dict per critical speed: speed_m_s (m/s), speed_kmh (km/h), source, source_kind, harmonic, mode, "
+           "One dict per critical speed: speed_m_s (m/s), speed_kmh (km/h), source_index (the scene's source, "
+           "from 1), source_kind, harmonic, mode, "
            "mode_name, frequency_hz (Hz), output, unbounded, amplitude (the output's: m or rad), "
            "growth_per_half_period and friction_decrement_per_half_period (m or rad per half period), "
            "friction_stops, friction_threshold_scale (a factor on the source amplitude)")
@@ -336,7 +339,8 @@ void bind_critical_speeds(py::module_& m) {
   py::class_<AmplitudeCurve>(m, "AmplitudeCurve",
                              "Amplitude of one output against speed; speeds_m_s, amplitudes and phases_deg are "
                              "read-only views (no copy).")
-      .def_readonly("source", &AmplitudeCurve::source)
+      .def_property_readonly("source_index", [](const AmplitudeCurve& c) { return c.source + 1; },
+                             "the source's number from 1, as the JSON's curves write it")
       .def_readonly("output", &AmplitudeCurve::output)
       .def_property_readonly("quantity", [](const AmplitudeCurve& c) { return std::string(to_string(c.quantity)); })
       .def_property_readonly("speeds_m_s",
@@ -382,16 +386,18 @@ void bind_critical_speeds(py::module_& m) {
       "amplitude_curves",
       [](const LinearSystem& system, const ModalResult& modes, std::shared_ptr<ExcitationSource> source,
          const py::iterable& outputs, const DoubleArray& speeds, int source_index, double friction_reference_amplitude) {
+        if (source_index < 1) throw py::value_error("source_index counts from 1, not " + std::to_string(source_index));
         const std::vector<OutputRequest> requests = output_requests(system, outputs);
         SpeedGrid grid(to_vector(speeds, "speeds"));
         py::gil_scoped_release release;
-        return amplitude_curves(system, modes, *source, source_index, requests, grid,
+        return amplitude_curves(system, modes, *source, source_index - 1, requests, grid,
                                 friction_reference_amplitude);
       },
       py::arg("system"), py::arg("modes"), py::arg("source"), py::arg("outputs"), py::arg("speeds"),
-      py::arg("source_index") = 0, py::arg("friction_reference_amplitude") = 0.0,
+      py::arg("source_index") = 1, py::arg("friction_reference_amplitude") = 0.0,
       "One AmplitudeCurve per output (a label, an index or a (label, quantity) pair) over the speeds (m/s, "
-      "a numpy array), computed in C++ in one call.");
+      "a numpy array), computed in C++ in one call; source_index (from 1) is the number the curves give "
+      "their source.");
 
   py::class_<CriticalSpeedStudy>(m, "CriticalSpeedStudy", "A scene's critical speeds, curves and peaks (railmodal critical-speed).")
       .def_readonly("scene", &CriticalSpeedStudy::scene)

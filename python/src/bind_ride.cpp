@@ -160,7 +160,9 @@ void bind_ride_output(py::module_& m) {
         "at the body's floor_height (None: at its reference point, which the ride's notes then say)");
 }
 
-// One row per speed and output; an index an RMS-only result skipped (RideResult::rms_only) is None.
+// One row per speed and output, under the keys of the ride JSON's outputs (the weighted RMS and
+// the P95 estimate with their unit, m/s²); an index an RMS-only result skipped
+// (RideResult::rms_only) is None.
 py::list ride_records(const RideResult& r) {
   py::list out;
   const bool every_index = !r.rms_only;
@@ -171,9 +173,9 @@ py::list ride_records(const RideResult& r) {
       out.append(py::dict(py::arg("speed_m_s") = at.speed, py::arg("output") = r.outputs[i].name,
                           py::arg("unit") = unit_of(r.outputs[i]), py::arg("unbounded") = o.unbounded,
                           py::arg("rms") = o.unbounded ? py::none() : py::object(py::float_(o.rms)),
-                          py::arg("weighted_rms") = optional_value(o.weighted_rms),
+                          py::arg("weighted_rms_m_s2") = optional_value(o.weighted_rms),
                           py::arg("sperling_wz") = optional_value(o.sperling_wz),
-                          py::arg("p95_estimate") = optional_value(o.p95_estimate),
+                          py::arg("p95_estimate_m_s2") = optional_value(o.p95_estimate),
                           py::arg("cross_term_variance") = computed(o.cross_term_variance),
                           py::arg("direct_variance") = computed(o.direct_variance)));
     }
@@ -255,9 +257,9 @@ void bind_ride_result(py::module_& m) {
                              "records of the undamped modes: name, frequency_hz")
       .def("records", &ride_records,
            "One row per speed and output: speed_m_s (m/s), output, unit (the output's: m, m/s, m/s² or N), "
-           "unbounded, rms (unit), weighted_rms (m/s², EN 12299), sperling_wz (dimensionless), p95_estimate "
-           "(m/s²), cross_term_variance and direct_variance (unit², the direct track term alone); with rms_only, "
-           "sperling_wz, p95_estimate and the variances are None")
+           "unbounded, rms (unit), weighted_rms_m_s2 (m/s², EN 12299), sperling_wz (dimensionless), "
+           "p95_estimate_m_s2 (m/s²), cross_term_variance and direct_variance (unit², the direct track term alone); "
+           "with rms_only, sperling_wz, p95_estimate_m_s2 and the variances are None")
       .def(
           "comfort",
           [](const RideResult& r) {
@@ -506,14 +508,15 @@ void bind_ride_simulation(py::module_& m) {
             for (size_t i = 0; i < r.outputs.size(); ++i) {
               const RideHistory& h = r.histories[i];
               out.append(py::dict(py::arg("output") = r.outputs[i].name, py::arg("unit") = unit_of(r.outputs[i]),
-                                  py::arg("rms") = h.rms, py::arg("weighted_rms") = optional_value(h.weighted_rms),
+                                  py::arg("rms") = h.rms, py::arg("weighted_rms_m_s2") = optional_value(h.weighted_rms),
                                   py::arg("sperling_wz") = optional_value(h.sperling_wz),
-                                  py::arg("p95") = optional_value(h.p95)));
+                                  py::arg("p95_m_s2") = optional_value(h.p95)));
             }
             return out;
           },
-          "One row per output: output, unit (the output's: m, m/s, m/s² or N), rms (unit), weighted_rms "
-          "(m/s², EN 12299), sperling_wz (dimensionless), p95 (m/s², of the 5 s windows)")
+          "One row per output, under the keys of the ride JSON's time_domain outputs: output, unit (the "
+          "output's: m, m/s, m/s² or N), rms (unit), weighted_rms_m_s2 (m/s², EN 12299), sperling_wz "
+          "(dimensionless), p95_m_s2 (m/s², of the 5 s windows)")
       .def("comfort", [](const RideSimulationResult& r) { return comfort_records(0.0, r.comfort, "nmv"); },
            "One row per floor point: body, x_m, y_m, z_m (m), nmv (EN 12299 N_MV, dimensionless), missing_axes "
            "(speed_m_s is 0: one run)")

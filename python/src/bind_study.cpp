@@ -85,26 +85,27 @@ void bind_variant_results(py::module_& m) {
             return per_variant(r.results, [](const VariantResult& v, py::list& out) {
               for (const VariantResult::CriticalSpeedSummary& c : v.critical_speeds)
                 out.append(py::dict(py::arg("index") = v.index, py::arg("variant") = v.name,
-                                    py::arg("speed_m_s") = c.speed, py::arg("source") = c.source,
+                                    py::arg("speed_m_s") = c.speed, py::arg("source_index") = c.source + 1,
                                     py::arg("source_kind") = c.source_kind, py::arg("harmonic") = c.harmonic,
                                     py::arg("mode_name") = c.mode_name, py::arg("friction_stops") = c.friction_stops));
             });
           },
-          "One row per variant and critical speed, ascending: index, variant, speed_m_s (m/s), source, "
+          "One row per variant and critical speed, ascending: index, variant, speed_m_s (m/s), source_index (the "
+          "scene's source, from 1, as compare's JSON), "
           "source_kind, harmonic, mode_name, friction_stops")
       .def(
           "peaks",
           [](const VariantResults& r) {
             return per_variant(r.results, [](const VariantResult& v, py::list& out) {
               for (const VariantResult::PeakSummary& p : v.peaks)
-                out.append(py::dict(py::arg("index") = v.index, py::arg("variant") = v.name, py::arg("source") = p.source,
+                out.append(py::dict(py::arg("index") = v.index, py::arg("variant") = v.name, py::arg("source_index") = p.source + 1,
                                     py::arg("output") = p.output, py::arg("quantity") = p.quantity,
                                     py::arg("amplitude") = p.amplitude, py::arg("speed_m_s") = p.speed,
                                     py::arg("unbounded") = p.unbounded));
             });
           },
           "One row per variant, source and output, the largest response over the scene's speeds: index, variant, "
-          "source, output, quantity, amplitude (the quantity's unit: m, m/s or m/s²; rad... for a rotation), "
+          "source_index, output, quantity, amplitude (the quantity's unit: m, m/s or m/s²; rad... for a rotation), "
           "speed_m_s (m/s), unbounded")
       .def(
           "ride",
@@ -126,12 +127,12 @@ void bind_variant_results(py::module_& m) {
                 out.append(py::dict(py::arg("index") = v.index, py::arg("variant") = v.name, py::arg("element") = d.element,
                                     py::arg("stage") = d.stage, py::arg("basis") = d.basis,
                                     py::arg("permissible_m") = d.permissible, py::arg("deflection_m") = d.deflection,
-                                    py::arg("speed_m_s") = d.speed, py::arg("source") = d.source,
+                                    py::arg("speed_m_s") = d.speed, py::arg("source_index") = d.source + 1,
                                     py::arg("unbounded") = d.unbounded, py::arg("kept") = d.kept()));
             });
           },
           "One row per variant and permissible-deflection check: index, variant, element, stage, basis (where the "
-          "limit comes from), permissible_m and deflection_m (m), speed_m_s (m/s), source, unbounded, kept (the "
+          "limit comes from), permissible_m and deflection_m (m), speed_m_s (m/s), source_index, unbounded, kept (the "
           "deflection within the permissible one)")
       .def(
           "static_deflections",

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "gear/harmonics.hpp"
+#include "gear/wheel_name.hpp"
 #include "gear/wheel_planes.hpp"
 #include "railmodal/driving_gear.hpp"
 #include "require_valid.hpp"
@@ -140,6 +141,7 @@ GearResult solve_driving_gear(const DrivingGear& gear, double speed, const GearO
     GearWheelLoad load;
     load.axle = static_cast<int>(w / 2);
     load.right = w % 2 == 0;
+    load.wheel = gear::wheel_name(axle.name, load.right);
     load.static_load = (load.right ? axle.right : axle.left).static_load;
     load.max_dynamic_load = *std::max_element(loads[w].begin(), loads[w].end());
     load.min_dynamic_load = *std::min_element(loads[w].begin(), loads[w].end());

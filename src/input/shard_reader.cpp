@@ -18,6 +18,10 @@ namespace {
 
 using nlohmann::json;
 
+// A source by its number in the scene, from 1 (`source_index`, as compare's JSON and
+// critical-speed's write it), as the index into the scene's sources that VariantResult keeps.
+int source_of(const json& item) { return item.at("source_index").get<int>() - 1; }
+
 VariantResult result_from_json(const json& j) {
   VariantResult r;
   r.index = j.at("index").get<int>();
@@ -33,12 +37,12 @@ VariantResult result_from_json(const json& j) {
   r.critical_speeds_evaluated = j.contains("critical_speeds");
   if (r.critical_speeds_evaluated)
     for (const auto& c : j.at("critical_speeds"))
-      r.critical_speeds.push_back({c.at("speed_m_s").get<double>(), c.at("source").get<int>(),
+      r.critical_speeds.push_back({c.at("speed_m_s").get<double>(), source_of(c),
                                    c.at("source_kind").get<std::string>(), c.at("harmonic").get<int>(),
                                    c.at("mode_name").get<std::string>(), c.at("friction_stops").get<bool>()});
   if (j.contains("peaks"))
     for (const auto& p : j.at("peaks"))
-      r.peaks.push_back({p.at("source").get<int>(), p.at("output").get<std::string>(), p.at("quantity").get<std::string>(),
+      r.peaks.push_back({source_of(p), p.at("output").get<std::string>(), p.at("quantity").get<std::string>(),
                          p.at("amplitude").get<double>(), p.at("speed_m_s").get<double>(), p.at("unbounded").get<bool>()});
   if (j.contains("hunting_speed_m_s")) {
     const json& h = j.at("hunting_speed_m_s");
@@ -69,7 +73,7 @@ VariantResult result_from_json(const json& j) {
       d.permissible = c.at("permissible_m").get<double>();
       d.deflection = c.at("deflection_m").get<double>();
       d.speed = c.at("speed_m_s").get<double>();
-      d.source = c.at("source").get<int>();
+      d.source = source_of(c);
       d.unbounded = c.at("unbounded").get<bool>();
       r.deflections.push_back(d);
     }

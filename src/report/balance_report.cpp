@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gear/wheel_name.hpp"
 #include "report/csv_writer.hpp"
 #include "report/document_table.hpp"
 #include "report/json_writer.hpp"
@@ -464,7 +465,7 @@ std::vector<std::string> alpha_notes(const BalanceStudy& study) {
     const WheelBalance& w = b.wheels[worst];
     notes.push_back(
         "The " + std::string(to_string(b.rule)) + " rule leaves α = " + report::fixed(w.alpha, 3) + " at wheel " +
-        study.axle_names[static_cast<std::size_t>(w.axle)] + (w.right ? " R" : " L") + ", above the allowed " +
+        gear::wheel_name(study.axle_names[static_cast<std::size_t>(w.axle)], w.right) + ", above the allowed " +
         report::fixed(allowed, 3) + ": --alpha sizes the overbalance of the coupled wheels so that their α is " +
         report::fixed(allowed, 3) + "; a driving wheel" +
         (study.options.overbalance_driving_axles ? "" : ", not overbalanced,") +
@@ -588,8 +589,8 @@ void write_html(std::ostream& out, const BalanceStudy& study, const std::vector<
 void write_balance(std::ostream& out, const BalanceStudy& study, OutputFormat format, const Provenance& inputs) {
   std::vector<std::string> wheels;
   for (const std::string& axle : study.axle_names) {
-    wheels.push_back(axle + " R");
-    wheels.push_back(axle + " L");
+    wheels.push_back(gear::wheel_name(axle, true));
+    wheels.push_back(gear::wheel_name(axle, false));
   }
   const std::vector<std::string>& cylinders = study.cylinder_names;
   const std::vector<Section> sections = sections_of(study, cylinders, wheels);

@@ -22,6 +22,7 @@
 #include "report/svg_chart.hpp"
 #include "report/text_format.hpp"
 #include "response/curve_peaks.hpp"
+#include "ride/nmv_scope.hpp"
 #include "study/metrics.hpp"
 
 namespace railmodal {
@@ -59,10 +60,13 @@ std::pair<std::string, std::string> metric_texts(const std::string& metric, cons
   return {metric_text(metric, a), metric_text(metric, b)};
 }
 
-// " (vertical only)" after a partial N_MV (VariantResult::max_nmv_partial), as the table and the
-// ride write it; "" otherwise.
+// " (vertical only)" after a partial N_MV (ride::nmv_scope), as the table and the ride write it;
+// "" after one over both axes.
+std::string scope_suffix(const std::string& scope) { return scope.empty() ? "" : " (" + scope + ")"; }
+
+// The same after the max_nmv of a variant (VariantResult::max_nmv_partial).
 std::string scope_of(const std::string& metric, const VariantResult& r) {
-  return metric == "max_nmv" && !r.max_nmv_partial.empty() ? " (" + r.max_nmv_partial + ")" : "";
+  return metric == "max_nmv" ? scope_suffix(r.max_nmv_partial) : "";
 }
 
 // A criterion as docs/studies.md names its metric: "period of body bounce (maximised)".
@@ -598,16 +602,26 @@ std::string ride_metric_at_speed_title(const std::string& metric) {
   return "RMS of " + study::ride_output_of(metric);
 }
 
-// The metric at each of the ride's speeds, SI, as study/metrics.cpp takes its largest: N_MV the
-// largest over the floor points, Wz over the outputs, an RMS of its output; NaN where unbounded
-// (an undamped mode the track excites) or absent.
-std::vector<double> ride_metric_at_speeds(const RideResult& ride, const std::string& metric) {
-  std::vector<double> out;
+// The ride metric at one speed, SI, and what an N_MV there covers (ride::nmv_scope: "vertical
+// only" when its floor point has no lateral or no vertical output; "" otherwise).
+struct RideMetricAtSpeed {
+  double value = NAN;
+  std::string scope;
+};
+
+// The metric at each of the ride's speeds, as study/metrics.cpp takes its largest: N_MV the
+// largest over the floor points (the first of equals, as VariantResult::max_nmv_partial), Wz over
+// the outputs, an RMS of its output; NaN where unbounded (an undamped mode the track excites) or
+// absent.
+std::vector<RideMetricAtSpeed> ride_metric_at_speeds(const RideResult& ride, const std::string& metric) {
+  std::vector<RideMetricAtSpeed> out;
   const std::string output = study::ride_output_of(metric);
   for (const RideAtSpeed& at : ride.speeds) {
     double v = NAN;
+    std::string scope;
     if (metric == "max_nmv") {
-      for (const RideComfortAtPoint& c : at.comfort) v = std::isnan(v) ? c.nmv_estimate : std::max(v, c.nmv_estimate);
+      for (const RideComfortAtPoint& c : at.comfort)
+        if (std::isnan(v) || c.nmv_estimate > v) v = c.nmv_estimate, scope = ride::nmv_scope(c);
     } else {
       bool unbounded = false;
       for (size_t i = 0; i < ride.outputs.size(); ++i) {
@@ -622,12 +636,14 @@ std::vector<double> ride_metric_at_speeds(const RideResult& ride, const std::str
       }
       if (unbounded) v = NAN;
     }
-    out.push_back(v);
+    out.push_back({v, scope});
   }
   return out;
 }
 
-// One row per design: the metric at each ride speed, in the metric's display unit.
+// One row per design: the metric at each ride speed, in the metric's display unit; a partial
+// N_MV says what it covers, "0.76 (vertical only)", as the ride's tables and compare's ranked
+// table write it.
 Table ride_table(const std::vector<DesignCurves>& sets, const std::string& metric) {
   Table t;
   t.headers = {"variant"};
@@ -640,8 +656,9 @@ Table ride_table(const std::vector<DesignCurves>& sets, const std::string& metri
   for (const DesignCurves& s : sets) {
     if (!s.ride) continue;
     std::vector<std::string> row{s.label};
-    for (double v : ride_metric_at_speeds(*s.ride, metric))
-      row.push_back(std::isnan(v) ? "unbounded" : study::shown_as_tabled(metric, v));
+    for (const RideMetricAtSpeed& at : ride_metric_at_speeds(*s.ride, metric))
+      row.push_back(std::isnan(at.value) ? "unbounded"
+                                         : study::shown_as_tabled(metric, at.value) + scope_suffix(at.scope));
     t.rows.push_back(row);
   }
   return t;
@@ -662,11 +679,11 @@ void write_ride_chart(std::ostream& out, const std::vector<DesignCurves>& sets, 
     series.label = s.label;
     series.dashed = s.base;
     series.colour = static_cast<int>(v);
-    const std::vector<double> values = ride_metric_at_speeds(*s.ride, metric);
+    const std::vector<RideMetricAtSpeed> values = ride_metric_at_speeds(*s.ride, metric);
     for (size_t i = 0; i < values.size(); ++i) {
       series.x.push_back(s.ride->speeds[i].speed * kKmh);
-      series.y.push_back(values[i] * u.per_si);
-      if (std::isnan(values[i])) series.unbounded_x.push_back(s.ride->speeds[i].speed * kKmh);
+      series.y.push_back(values[i].value * u.per_si);
+      if (std::isnan(values[i].value)) series.unbounded_x.push_back(s.ride->speeds[i].speed * kKmh);
     }
     chart.series.push_back(series);
   }

@@ -64,11 +64,13 @@ void write_modes(JsonWriter& j, const VariantResult& r) {
   j.end_array();
 }
 
+// A source is written by its number in the scene from 1 (`source_index`), as critical-speed's
+// JSON and the tables' "[1] rail_joints" number it; `source_kind` is its kind.
 void write_critical_speeds(JsonWriter& j, const VariantResult& r) {
   j.key("critical_speeds").begin_array();
   for (const auto& c : r.critical_speeds) {
     j.begin_object().member("friction_stops", c.friction_stops).member("harmonic", c.harmonic);
-    j.member("mode_name", c.mode_name).member("source", c.source).member("source_kind", c.source_kind);
+    j.member("mode_name", c.mode_name).member("source_index", c.source + 1).member("source_kind", c.source_kind);
     j.member("speed_kmh", c.speed * kKmh).member("speed_m_s", c.speed).end_object();
   }
   j.end_array();
@@ -78,7 +80,7 @@ void write_deflections(JsonWriter& j, const VariantResult& r) {
   j.key("dynamic_deflections").begin_array();
   for (const auto& c : r.deflections) {
     j.begin_object().member("basis", c.basis).member("deflection_m", c.deflection).member("element", c.element);
-    j.member("kept", c.kept()).member("permissible_m", c.permissible).member("source", c.source);
+    j.member("kept", c.kept()).member("permissible_m", c.permissible).member("source_index", c.source + 1);
     j.member("speed_kmh", c.speed * kKmh).member("speed_m_s", c.speed).member("stage", c.stage);
     j.member("unbounded", c.unbounded).end_object();
   }
@@ -89,7 +91,7 @@ void write_peaks(JsonWriter& j, const VariantResult& r) {
   j.key("peaks").begin_array();
   for (const auto& p : r.peaks) {
     j.begin_object().member("amplitude", p.amplitude).member("output", p.output).member("quantity", p.quantity);
-    j.member("source", p.source).member("speed_kmh", p.speed * kKmh).member("speed_m_s", p.speed);
+    j.member("source_index", p.source + 1).member("speed_kmh", p.speed * kKmh).member("speed_m_s", p.speed);
     j.member("unbounded", p.unbounded).end_object();
   }
   j.end_array();

@@ -516,7 +516,7 @@ void write_csv(std::ostream& out, const CriticalSpeedStudy& st) {
   using report::csv_heading;
   report::CsvWriter csv(out);
   for (const std::string& note : report_notes(st)) csv.line("# note: " + note);  // as `modes` writes them
-  csv.line(csv_heading("speed", "km/h") + ",source,source_index,harmonic,mode,mode_name," +
+  csv.line(csv_heading("speed", "km/h") + ",source_kind,source_index,harmonic,mode,mode_name," +
            csv_heading("frequency", "Hz") + ",output,output_unit," + csv_heading("amplitude", "output_unit") +
            ",unbounded," + csv_heading("growth_per_half_period", "output_unit") + "," +
            csv_heading("friction_decrement_per_half_period", "output_unit") +
@@ -557,7 +557,7 @@ void write_json_critical_speed(report::JsonWriter& j, const CriticalSpeed& r) {
     j.end_object();
   }
   j.end_array();
-  j.member("source", r.source_kind).member("source_index", r.source + 1);
+  j.member("source_index", r.source + 1).member("source_kind", r.source_kind);
   j.member("speed_kmh", r.speed * kKmh).member("speed_m_s", r.speed).member("unbounded", r.unbounded);
   j.end_object();
 }

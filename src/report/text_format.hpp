@@ -70,8 +70,9 @@ constexpr int kMaxPrecision = 40;
 
 /// `value` with `digits` (at most kMaxPrecision) significant digits, as printf's %.<digits>g
 /// writes it ("0.1235", "1.235e+05", "inf", "nan"): std::to_chars with a precision writes
-/// printf's text, without a stream or the locale.
+/// printf's text, without a stream or the locale. −0 is written "0", as every writer writes it.
 inline std::string significant(double value, int digits) {
+  if (value == 0.0) value = 0.0;  // −0 → 0
   char text[2 * kMaxPrecision];  // sign, digits, point, "e-308", or "0.000" before 40 digits
   return std::string(text, std::to_chars(text, text + sizeof text, value, std::chars_format::general, digits).ptr);
 }

@@ -11,7 +11,10 @@ outputs"). A new key spelt otherwise than its JSON twin fails here.
 import pytest
 
 import railmodal
-from railmodal_paths import cli_json, data
+from railmodal_paths import SOURCE, cli_json, data
+
+# The time-domain ride of test_ride.py: the coach on 1024 m of synthesised track (23 s).
+COACH_TIME_SHORT = str(SOURCE / "tests" / "python" / "scenes" / "coach_time_domain_short.toml")
 
 
 def keys(rows):
@@ -23,20 +26,24 @@ def keys(rows):
 
 # Keys only the Python records have, and why; anything else must be the JSON's own key.
 ONLY_IN_PYTHON = {
-    # `source` is the source's index in Python and in compare's JSON, and its kind in
-    # critical-speed's JSON (which writes the index, from 1, as `source_index`): see the report
-    # of 2026-11-27c's consistency pass; `source_kind` is compare's JSON key.
-    "critical speeds": {"source_kind"},
+    # A source is `source_index` (its number from 1) and `source_kind` everywhere: no key
+    # `source` holds an index in one place and a kind in another (2026-11-28).
+    "critical speeds": set(),
     # The centre of oscillation, a nested object in JSON, flattened into three columns.
     "modes": {"centre_about", "centre_body", "centre_position_m", "eigenvalue_error"},
     # One complex eigenvalue of the pair the JSON writes as `eigenvalues` ([re, im] pairs).
     "damped modes": {"eigenvalue"},
-    # A flat row names its output (`name` in the JSON's nested output); `weighted_rms` and
-    # `p95_estimate` are plain keys by docs/input.md ("Left as they were"), in m/s².
-    "ride records": {"output", "weighted_rms", "p95_estimate"},
+    # A flat row names its output (`name` in the JSON's nested output).
+    "ride records": {"output"},
+    "time-domain ride records": {"output"},
     # The floor point's `point_m` flattened into x_m, y_m, z_m; a flat row carries its speed.
     "ride comfort": {"x_m", "y_m", "z_m", "speed_m_s"},
-    # A wheel by its axle index and side beside (or, for the gear's forces, instead of) `wheel`.
+    "time-domain ride comfort": {"x_m", "y_m", "z_m", "speed_m_s"},
+    # A study's rows carry their variant (`index`, `variant`: its `name` in compare's JSON).
+    "study critical speeds": {"index", "variant"},
+    "study peaks": {"index", "variant"},
+    "study deflections": {"index", "variant"},
+    # A wheel by its axle index and side beside `wheel`.
     "gear wheels": {"axle", "right"},
     # Angles in radians (the package's SI), where the JSON writes degrees (`*_angle_deg`).
     "balance wheels": {"axle", "right", "rotating_angle_rad", "vertical_angle_rad", "overbalance_angle_rad",
@@ -73,6 +80,11 @@ def test_critical_speeds(critical):
     study, written = critical
     rows = study.critical_speeds.records()
     assert only_in_python(rows, written["critical_speeds"]) == ONLY_IN_PYTHON["critical speeds"]
+    # One meaning per name: the source's number from 1 and its kind, as the JSON has them.
+    for key in ("source_index", "source_kind"):
+        assert [r[key] for r in rows] == [c[key] for c in written["critical_speeds"]], key
+    assert "source" not in keys(written["critical_speeds"])
+    assert [c.source_index for c in study.curves] == [c["source_index"] for c in written["curves"]]
     # 3.6·V on both sides, the JSON's printed to round trip: equal to the last bit, 1e-15 for the order of the product.
     assert [r["speed_kmh"] for r in rows] == pytest.approx([c["speed_kmh"] for c in written["critical_speeds"]], rel=1e-15)
 
@@ -90,13 +102,43 @@ def test_ride(ride):
     result, written = ride
     outputs = [dict(o, speed_m_s=s["speed_m_s"]) for s in written["speeds"] for o in s["outputs"]]
     assert only_in_python(result.records(), outputs) == ONLY_IN_PYTHON["ride records"]
+    # The indices with their unit under the JSON's keys, the same values (rel 1e-12 as test_ride.py:
+    # the same library calls, the JSON printed to round trip).
+    for key in ("weighted_rms_m_s2", "p95_estimate_m_s2"):
+        assert [r[key] for r in result.records()] == pytest.approx([o[key] for o in outputs], rel=1e-12), key
     comfort = [c for s in written["speeds"] for c in s["comfort"]]
     assert only_in_python(result.comfort(), comfort) == ONLY_IN_PYTHON["ride comfort"]
+
+
+def test_time_domain_ride():
+    simulated, _ = railmodal.ride_scene_simulation(railmodal.load_scene(COACH_TIME_SHORT))
+    written = cli_json("ride", COACH_TIME_SHORT)["time_domain"]
+    assert only_in_python(simulated.records(), written["outputs"]) == ONLY_IN_PYTHON["time-domain ride records"]
+    for key in ("weighted_rms_m_s2", "p95_m_s2"):  # rel 1e-12 as test_ride.py
+        assert [r[key] for r in simulated.records()] == pytest.approx([o[key] for o in written["outputs"]], rel=1e-12), key
+    assert only_in_python(simulated.comfort(), written["comfort"]) == ONLY_IN_PYTHON["time-domain ride comfort"]
+
+
+def test_study():
+    study = data("studies", "resort_against_fette.toml")
+    results = railmodal.evaluate_study(railmodal.load_study(study))
+    written = {v["name"]: v for v in cli_json("compare", study, "-q")["variants"]}
+    for rows, key, name in ((results.critical_speeds(), "critical_speeds", "study critical speeds"),
+                            (results.peaks(), "peaks", "study peaks"),
+                            (results.deflections(), "dynamic_deflections", "study deflections")):
+        objects = [o for v in written.values() for o in v[key]]
+        assert only_in_python(rows, objects) == ONLY_IN_PYTHON[name]
+        # A source by its number from 1 in both (compare's JSON wrote its index from 0 as `source`).
+        for variant, theirs in written.items():
+            assert [r["source_index"] for r in rows if r["variant"] == variant] == \
+                [o["source_index"] for o in theirs[key]], (name, variant)
 
 
 def test_balance(balance):
     study, written = balance
     assert only_in_python(study.gear.wheels, written["gear"]["wheels"]) == ONLY_IN_PYTHON["gear wheels"]
+    # The gear's wheels named as the reports name them, "coupled 1 R", in the reports' order.
+    assert [w["wheel"] for w in study.gear.wheels] == [w["wheel"] for w in written["gear"]["wheels"]]
     for rule in written["by_rule"]:
         result = study.by_rule[rule["rule"]]
         assert only_in_python(result.records(), rule["wheels"]) == ONLY_IN_PYTHON["balance wheels"]

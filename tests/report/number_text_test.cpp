@@ -90,11 +90,9 @@ TEST(NumberText, CsvAndJsonReadBackAsTheSameDouble) {
       EXPECT_TRUE(same_double(std::strtod(text.c_str(), nullptr), x)) << text;
       EXPECT_LE(text.size(), static_cast<size_t>(kNumberTextMax)) << text;
     }
-    // The study files' and the comparison CSV's text is the CSV style's (but for −0, which
-    // shortest_text keeps for the study files' round trip).
-    if (x != 0.0) {
-      EXPECT_EQ(shortest_text(x), number_text(x, NumberStyle::csv));
-    }
+    // The study files', the comparison CSV's and the messages' text is the CSV style's, −0
+    // included ("0": 2026-11-28; it wrote "-0").
+    EXPECT_EQ(shortest_text(x), number_text(x, NumberStyle::csv));
     std::string appended = "a,";
     append_shortest_text(&appended, x);
     EXPECT_EQ(appended, "a," + shortest_text(x));
@@ -142,6 +140,23 @@ TEST(NumberText, NonFinite) {
   EXPECT_EQ(shortest_text(kNan), "nan");
 }
 
+// −0 (a negated or rounded-away zero) is written without its sign by every writer: equal in
+// value, and a sign on a zero means nothing to a reader (docs/input.md, "a zero").
+TEST(NumberText, NoWriterSignsAZero) {
+  EXPECT_EQ(shortest_text(-0.0), "0");
+  EXPECT_EQ(shortest_text(-0.0, 6), "0");
+  std::string appended = "x = ";
+  append_shortest_text(&appended, -0.0);
+  EXPECT_EQ(appended, "x = 0");
+  EXPECT_EQ(significant(-0.0, 4), "0");
+  EXPECT_EQ(fixed(-0.0, 2), "0.00");
+  EXPECT_EQ(number_text(-0.0, NumberStyle::csv), "0");
+  EXPECT_EQ(number_text(-0.0, NumberStyle::json), "0.0");
+  // A negative number that is not zero keeps its sign.
+  EXPECT_EQ(shortest_text(-1e-300), "-1e-300");
+  EXPECT_EQ(significant(-1e-300, 4), "-1e-300");
+}
+
 // report::fixed is printf's %.Nf below 1e9 and %.Ne from there on; round-off to zero drops the
 // sign ("0.00" for -0.001 and -0.0, never "-0.00").
 TEST(NumberText, FixedIsPrintfs) {
@@ -168,17 +183,17 @@ TEST(NumberText, FixedIsPrintfs) {
   EXPECT_EQ(fixed(-9.99e8, kMaxPrecision), printf_text("%.*f", kMaxPrecision, -9.99e8));
 }
 
-// report::significant is printf's %.Ng (and shortest_text(x, N) the same, for messages).
+// report::significant is printf's %.Ng (and shortest_text(x, N) the same, for messages), but
+// for −0, written as +0 (NoWriterSignsAZero).
 TEST(NumberText, SignificantIsPrintfs) {
   for (const double x : edge_values())
     for (int digits : {1, 2, 3, 4, 6, 10, 17}) {
-      const std::string expected = printf_text("%.*g", digits, x);
+      const std::string expected = printf_text("%.*g", digits, x == 0.0 ? 0.0 : x);
       EXPECT_EQ(significant(x, digits), expected) << x << " to " << digits;
       EXPECT_EQ(shortest_text(x, digits), expected) << x << " to " << digits;
     }
   EXPECT_EQ(significant(2.5, 1), "2");  // ties to even, as printf
   EXPECT_EQ(significant(0.125, 2), "0.12");
-  EXPECT_EQ(significant(-0.0, 4), "-0");
   EXPECT_EQ(significant(1e-308, 4), "1e-308");
   EXPECT_EQ(significant(std::numeric_limits<double>::denorm_min(), 4), "4.941e-324");
   EXPECT_EQ(significant(kInf, 4), "inf");

@@ -117,10 +117,25 @@ TEST(RideMetric, ShardsCarryTheRide) {
   EXPECT_EQ(without.str().find("\"ride\""), std::string::npos);
 }
 
+// The text of `document` from `heading` to the next `next` after it (or the end).
+std::string section(const std::string& document, const std::string& heading, const std::string& next) {
+  const size_t from = document.find(heading);
+  if (from == std::string::npos) return "";
+  const size_t to = document.find(next, from + heading.size());
+  return document.substr(from, to == std::string::npos ? std::string::npos : to - from);
+}
+
+size_t occurrences(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
 // A partial N_MV (a floor point without a lateral output: the two-axle wagon's ride reads
 // "vertical only") says so in compare as the ride says it: the table's and the document's cell
-// "… (vertical only)", JSON's and the shard's max_nmv_partial, the CSV's column of that name;
-// and a merge of shards labels what one run labels (user audit 2026-11-27c, the last stop's item 5).
+// "… (vertical only)", the document's per-speed ride table (Markdown and HTML), JSON's and the
+// shard's max_nmv_partial, the CSV's column of that name; and a merge of shards labels what one
+// run labels (user audit 2026-11-27c, the last stop's item 5; the per-speed table 2026-11-28).
 TEST(RideMetric, APartialNmvSaysWhatItCoversInEveryFormat) {
   Study s = load_study(std::string(RAILMODAL_DATA_DIR) + "/studies/two_axle_wagon_ride_springs.toml");
   s.ranking.objective = {{"max_nmv", false, 1.0, {}}};
@@ -132,16 +147,25 @@ TEST(RideMetric, APartialNmvSaysWhatItCoversInEveryFormat) {
     EXPECT_EQ(r.max_nmv_partial, "vertical only") << r.name;  // as the ride of its scene (golden ride JSON)
   }
   const Comparison c = rank_variants(s, results);
-  std::ostringstream table, csv, json, md;
+  std::ostringstream table, csv, json, md, html;
   write_comparison(table, c, OutputFormat::table);
   write_comparison(csv, c, OutputFormat::csv);
   write_comparison(json, c, OutputFormat::json);
-  write_comparison_report(md, s, c, comparison_curves(s, c, kReportBest), OutputFormat::markdown);
+  const ComparisonCurves curves = comparison_curves(s, c, kReportBest);
+  write_comparison_report(md, s, c, curves, OutputFormat::markdown);
+  write_comparison_report(html, s, c, curves, OutputFormat::html);
   // The criterion's cell, and the violation's note under the table.
   const std::string cell = study::table_figure(*results[0].max_nmv, 2) + " (vertical only)";
   EXPECT_NE(table.str().find(cell), std::string::npos) << table.str();
   EXPECT_NE(table.str().find("(vertical only) > 0.5"), std::string::npos) << table.str();
   EXPECT_NE(md.str().find(cell), std::string::npos) << md.str();
+  // The N_MV against speed: every cell of both variants at the ride's 4 speeds (40–100 km/h by
+  // 20) is of a floor point without lateral output, so each says so, as the ride's table does.
+  const std::string per_speed = "N_MV (estimate) at the worst floor point against speed";
+  const std::string md_table = section(md.str(), "## " + per_speed, "\n## ");
+  EXPECT_EQ(occurrences(md_table, " (vertical only) |"), 2u * 4u) << md_table;
+  const std::string html_table = section(html.str(), "<h2>" + per_speed, "<h2>");
+  EXPECT_EQ(occurrences(html_table, " (vertical only)</td>"), 2u * 4u) << html_table;
   EXPECT_NE(csv.str().find(",max_nmv_partial,"), std::string::npos) << csv.str();
   EXPECT_NE(csv.str().find(",vertical only,"), std::string::npos) << csv.str();
   const auto j = nlohmann::json::parse(json.str());

@@ -397,6 +397,14 @@ parameters = [{ key = "suspension.spring[0].static_deflection", from = "40 mm", 
   EXPECT_EQ(back[1].modes[1].period_s, part[1].modes[1].period_s);
   EXPECT_EQ(back[1].critical_speeds.front().speed, part[1].critical_speeds.front().speed);
   EXPECT_EQ(back[1].static_deflections, part[1].static_deflections);
+  // A source is its number from 1 in the file (`source_index`, as critical-speed writes it; no
+  // key `source`), its index from 0 in the results.
+  ASSERT_FALSE(part[1].peaks.empty());
+  EXPECT_EQ(back[1].critical_speeds.front().source, part[1].critical_speeds.front().source);
+  EXPECT_EQ(back[1].peaks.front().source, part[1].peaks.front().source);
+  EXPECT_EQ(part[1].peaks.front().source, 0);
+  EXPECT_NE(text.str().find("\"source_index\": 1,"), std::string::npos);
+  EXPECT_EQ(text.str().find("\"source\":"), std::string::npos);
 }
 
 // `railmodal compare` reads no variant in load_study: each is read by the thread that evaluates
