@@ -35,6 +35,7 @@ TEST(StudyNotes, AVehicleOnWheelsetsSaysItsPeriodsAreTheSuspensionsOnceInEveryFo
   EXPECT_NE(note.find("without the wheel–rail contact terms"), std::string::npos) << note;
   EvaluationOptions options;
   options.threads = 1;
+  options.read_in_workers = true;  // an opened study's variants are read by the workers
   for (OutputFormat format : {OutputFormat::table, OutputFormat::markdown, OutputFormat::html}) {
     std::ostringstream out;
     compare_study(out, study, options, format);
@@ -51,8 +52,10 @@ TEST(StudyNotes, AVehicleOnWheelsetsSaysItsPeriodsAreTheSuspensionsOnceInEveryFo
 TEST(StudyNotes, AVehicleWithoutWheelsetsHasNone) {
   const Study study = open_study(write_study(example3_wagon(), "[ranking]\nmin_lowest_critical_speed = \"30 km/h\"\n"));
   EXPECT_TRUE(study_notes(study).empty());
+  EvaluationOptions options;
+  options.read_in_workers = true;
   std::ostringstream json;
-  compare_study(json, study, EvaluationOptions{}, OutputFormat::json);
+  compare_study(json, study, options, OutputFormat::json);
   EXPECT_FALSE(nlohmann::json::parse(json.str()).contains("notes"));
 }
 
