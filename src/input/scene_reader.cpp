@@ -244,7 +244,7 @@ void read_scene_table(TableReader& root, const std::string& path, Scene& scene) 
   scene.name = t.optional_string("name").value_or(std::filesystem::path(path).stem().string());
   if (t.has("vehicle")) {
     scene.vehicle_file = t.existing_file("vehicle");
-    scene.name_places["scene.vehicle"] = t.place("vehicle");  // check_scene_fits may blame the vehicle
+    scene.name_places["scene.vehicle"] = t.place("vehicle");  // `hunting` blames it for a vehicle without wheelsets
   }
   const std::string dofs = t.optional_string("dofs").value_or("all");
   const auto set = dof_set_from_string(dofs);

@@ -1,5 +1,6 @@
 // The names a scene uses, checked against its assembled vehicle before any analysis: a DOF
-// or a body the vehicle lacks is the scene file's error, at the key that names it.
+// or a body the vehicle lacks is the scene file's error, at the key that names it; and the
+// series dampers an analysis of the scene cannot represent, the vehicle file's error.
 #include "railmodal/scene.hpp"
 
 #include <cmath>
@@ -96,6 +97,18 @@ void refuse_ride_only_scene(const Scene& scene, const std::string& analysis) {
               "track is 'railmodal ride " + scene.source + "'");
 }
 
+void refuse_scene_series_dampers(const Scene& scene, const LinearSystem& system, const char* analysis) {
+  try {
+    refuse_series_dampers(system, analysis);
+  } catch (const std::invalid_argument& e) {
+    // The file that holds the damper is the vehicle's as read (a --vehicle in place of the
+    // scene's key included), not the scene's key that named another; a vehicle built in code
+    // has none, and the scene that asked for the analysis is blamed.
+    const std::string& file = system.vehicle.source.empty() ? scene.source : system.vehicle.source;
+    throw InputError(file, 0, 0, e.what());
+  }
+}
+
 }  // namespace model
 
 void check_scene_fits(const Scene& scene, const LinearSystem& system) {
@@ -129,13 +142,8 @@ void check_scene_fits(const Scene& scene, const LinearSystem& system) {
   }
   if (scene.ride)
     for (size_t k = 0; k < scene.ride->outputs.size(); ++k) check_ride_output(scene, system, scene.ride->outputs[k], k);
-  // The scene's analyses (critical speeds, simulation) stand on M, C and K, which a series
-  // damper is not in: the scene's vehicle is refused where the scene names it.
-  try {
-    model::refuse_series_dampers(system, "critical speeds and simulation");
-  } catch (const std::invalid_argument& e) {
-    fail_at(scene, "scene.vehicle", "scene.vehicle", e.what());
-  }
+  // No refusal of series dampers here: the ride (both domains) and the hunting stability take
+  // them; the analyses that stand on M, C and K alone call model::refuse_scene_series_dampers.
 }
 
 }  // namespace railmodal

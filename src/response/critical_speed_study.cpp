@@ -105,6 +105,7 @@ std::vector<Peak> refine_peaks(const CriticalSpeedStudy& study, const Excitation
 void solve_stable_modes(const Scene& scene, solve::ModeNaming naming, CriticalSpeedStudy* study) {
   if (study->system.size() == 0) throw std::invalid_argument("no free degrees of freedom in the chosen set");
   check_scene_fits(scene, study->system);
+  model::refuse_scene_series_dampers(scene, study->system, "critical speeds");
   // Into the modes the study holds: a study's worker hands it the previous variant's, whose
   // storage serves again (evaluate_variant.cpp); a fresh study's are empty.
   solve::solve_modes_into(study->system, ModalOptions{}, &study->modes, naming);

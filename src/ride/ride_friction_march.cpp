@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "model/analysis_limits.hpp"
+#include "railmodal/errors.hpp"
 
 namespace railmodal::ride {
 
@@ -44,8 +45,15 @@ double SampledRideTrack::next_break(double t) const {
 FrictionMarch march_with_effects(const LinearSystem& system, const RideStateSpace& model,
                                  const TrackUnderWheels& track, const std::vector<OutputRow>& rows, long count,
                                  double step, double speed, const NonlinearEffects& effects) {
-  // The nonlinear simulation holds M, C and K only: no stroke states (s below is (q, v)).
-  model::refuse_series_dampers(system, "the ride with nonlinear effects");
+  // The nonlinear simulation holds M, C and K only: no stroke states (s below is (q, v)). A
+  // vehicle read from a file is refused at that file, which holds the damper (railmodal ride
+  // would otherwise place a library refusal in the scene, whose vehicle key --vehicle replaces).
+  try {
+    model::refuse_series_dampers(system, "the ride with nonlinear effects");
+  } catch (const std::invalid_argument& e) {
+    if (system.vehicle.source.empty()) throw;
+    throw InputError(system.vehicle.source, 0, 0, e.what());
+  }
   const SampledRideTrack sampled(track, speed, track.span());
   SimulationOptions options;
   options.speed = speed;

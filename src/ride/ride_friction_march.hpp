@@ -38,6 +38,8 @@ struct FrictionMarch {
 /// The vehicle with `effects` over the track from rest: samples every `step` s, `count` of
 /// them, of the outputs `rows` (with their La terms: an acceleration carries the nonlinear
 /// forces), at the nonlinear path's default tolerance (SimulationOptions::tolerance, 1e-10).
+/// A series damper is refused: InputError at the vehicle's file (Vehicle::source), or
+/// std::invalid_argument for a vehicle built in code.
 FrictionMarch march_with_effects(const LinearSystem& system, const RideStateSpace& model,
                                  const TrackUnderWheels& track, const std::vector<OutputRow>& rows, long count,
                                  double step, double speed, const NonlinearEffects& effects);

@@ -482,6 +482,7 @@ TimeHistory simulate_scene(const Scene& scene, const Vehicle& vehicle, const std
   const SimulationSpec& spec = *scene.simulation;
   const LinearSystem system = scene_system(scene, vehicle);
   check_scene_fits(scene, system);
+  model::refuse_scene_series_dampers(scene, system, "simulation");
   std::vector<const ExcitationSource*> sources;
   for (const auto& s : scene.sources) sources.push_back(s.get());
   SimulationOptions options;
