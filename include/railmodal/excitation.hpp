@@ -207,7 +207,7 @@ struct Hunting {
   double conicity = 0.0;                ///< n, tread taper (1/20 = 0.05)
   double rolling_circle_spacing = 0.0;  ///< s, m
   double rolling_radius = 0.0;          ///< r, m
-  double bogie_wheelbase = 0.0;         ///< a, m (rigid bogie)
+  double bogie_wheelbase = 0.0;         ///< the whole wheelbase 2a, m (rigid bogie; axles at ±a)
   double given_wavelength = 0.0;        ///< m (given)
   double amplitude = 0.0;               ///< y₀, m
   /// φ, rad, in [0, 2π): the leading wheelset's path is y₀ sin(2πs/λ + φ), s = V·t the

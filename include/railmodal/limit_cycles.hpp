@@ -92,11 +92,13 @@ struct LimitCycleBranch {
   double hopf_frequency = 0.0;  ///< Hz: the frequency of the orbit born there
   int watched_wheelset = 0;     ///< index into Vehicle::wheelsets: the wheelset largest in the Hopf mode
   std::vector<LimitCycleBranchPoint> points;  ///< from the Hopf point along the branch
-  /// The refined turning points of the speed, in branch order. The first of a subcritical branch
-  /// is the nonlinear critical speed: below it no limit cycle exists.
+  /// The refined turning points of the speed, in branch order: every turn, including wiggles of
+  /// the branch across which its stability does not change.
   std::vector<LimitCycleBranchPoint> folds;
-  /// The first fold of a subcritical branch, whose speed is the nonlinear critical speed (none
-  /// for a supercritical branch, or when the branch ended before turning).
+  /// The fold of a subcritical branch whose speed is the nonlinear critical speed: of the turns
+  /// where the unstable cycles meet stable ones (the largest Floquet |μ| crosses 1 across the
+  /// turn), the one at the lowest speed. None for a supercritical branch, when the branch ended
+  /// before such a turn, or when its only turns keep the stability on both sides.
   std::optional<LimitCycleBranchPoint> fold;
   ContinuationEnd end = ContinuationEnd::no_hopf_point;
   std::string failure;  ///< with newton_failed: where the corrector failed and how far it got

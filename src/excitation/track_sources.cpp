@@ -193,7 +193,7 @@ class HuntingSource final : public ExcitationSource {
     switch (p_.model) {
       case Hunting::Model::free_wheelset: out << "free wheelset (Klingel), conicity " << p_.conicity; break;
       case Hunting::Model::rigid_bogie:
-        out << "rigid bogie a = " << p_.bogie_wheelbase << " m (Rocard), conicity " << p_.conicity;
+        out << "rigid bogie, wheelbase " << p_.bogie_wheelbase << " m (Rocard), conicity " << p_.conicity;
         break;
       case Hunting::Model::given: out << "given wavelength"; break;
     }

@@ -127,6 +127,13 @@ std::string critical_text(const HuntingResult& r, const HuntingCriticalSpeed& c)
          ", hunting frequency " + fixed(c.frequency_hz, 3) + " Hz (" + kinematic_frequencies(c) + ")";
 }
 
+// Every wheelset at conicity 0: nothing couples lateral motion to yaw, so no speed makes it hunt
+// (user audit 2026-11-28, F1: the verdict then says so rather than "above the range").
+bool zero_conicity(const HuntingResult& r) {
+  return !r.contacts.empty() &&
+         std::all_of(r.contacts.begin(), r.contacts.end(), [](const ResolvedContact& c) { return c.conicity == 0.0; });
+}
+
 // The verdict in a sentence, with the critical speed or what stands in its place.
 std::string verdict_text(const HuntingResult& r) {
   switch (r.verdict) {
@@ -134,6 +141,11 @@ std::string verdict_text(const HuntingResult& r) {
       return r.critical ? "hunts above the linear critical speed " + critical_text(r, *r.critical) + "."
                         : "unstable within the range (no critical speed was refined).";
     case HuntingVerdict::stable_throughout:
+      if (zero_conicity(r))
+        return "neutrally stable at every speed from " + kmh(lowest_speed(r)) + " to " + kmh(highest_speed(r)) +
+               ": at zero conicity the wheelsets have no kinematic coupling, so there is no hunting and no critical "
+               "speed at any speed; the lateral and yaw motion nothing restrains neither grows nor decays (" +
+               std::to_string(r.neutral_roots) + " rigid-body roots, neutral).";
       return "stable at every speed from " + kmh(lowest_speed(r)) + " to " + kmh(highest_speed(r)) +
              ": no critical speed in the range (it is above " + kmh(highest_speed(r)) + ", if there is one).";
     case HuntingVerdict::unstable_at_lowest_speed:
@@ -277,8 +289,10 @@ Table conicity_table(const HuntingResult& r) {
                         fixed(p.critical->klingel_frequency_hz, 3)});
     else
       t.rows.push_back({significant(p.conicity, 4), to_string(p.verdict),
-                        p.verdict == HuntingVerdict::stable_throughout ? "above " + given_kmh(highest_speed(r))
-                                                                       : "below " + given_kmh(lowest_speed(r)),
+                        p.verdict == HuntingVerdict::stable_throughout
+                            ? (p.conicity == 0.0 ? std::string("none (λ = 0: no kinematic coupling)")
+                                                 : "above " + given_kmh(highest_speed(r)))
+                            : "below " + given_kmh(lowest_speed(r)),
                         "—", "—", "—"});
     if (bogies)
       t.rows.back().push_back(p.critical && p.critical->bogie_frequency_hz > 0.0
@@ -314,6 +328,21 @@ const char* const kContactsNote =
     "the distance between the contact points, Λ = 2π√(r0·l0/λ) Klingel's kinematic wavelength; Hertz a × b: the "
     "contact ellipse when the coefficients were computed (\"given\": written in the vehicle file).";
 
+// The rigid bogie's wavelength, said wherever V/Λ_b is printed (user audit 2026-11-28, F6: the
+// creep-ratio form differs by 3.5 % on the coach from Rocard's √(1 + (a/l0)²), which the
+// critical-speed command's rigid_bogie source uses).
+const char* const kBogieNote =
+    " Λ_b = Λ·√(1 + ā²f22/(l0²f11)): the kinematic wavelength of the bogie as a rigid frame (its wheelsets yawing "
+    "together with no net creep force and moment), ā² the mean square of its axles' distances from their centre "
+    "(a², a the half wheelbase, for two axles); Rocard's Λ·√(1 + (a/l0)²) when f11 = f22 (docs/stability.md).";
+
+std::string contacts_note(const HuntingResult& r) {
+  const auto bogie = [](const std::optional<HuntingCriticalSpeed>& c) { return c && c->bogie_frequency_hz > 0.0; };
+  const bool shown = bogie(r.critical) || std::any_of(r.conicity_curve.begin(), r.conicity_curve.end(),
+                                                       [&](const ConicityPoint& p) { return bogie(p.critical); });
+  return std::string(kContactsNote) + (shown ? kBogieNote : "");
+}
+
 // ---- table (text) ----
 
 void write_table(std::ostream& out, const Page& p) {
@@ -339,7 +368,7 @@ void write_table(std::ostream& out, const Page& p) {
   }
   out << "\ncontacts:\n";
   write_text_table(out, contacts_table(r));
-  out << wrapped(kContactsNote) << "\n\n" << wrapped(kLinearNote) << "\n";
+  out << wrapped(contacts_note(r)) << "\n\n" << wrapped(kLinearNote) << "\n";
   out << "\n" << wrapped("checks: " + report::checks_text(r.summary)) << "\n"
       << wrapped("method: " + report::method_text(r.summary)) << "\n";
   for (const std::string& f : report::failed_checks(r.summary)) out << wrapped("warning: check failed: " + f) << "\n";
@@ -372,7 +401,7 @@ void write_markdown(std::ostream& out, const Page& p) {
   }
   out << "## Contacts\n\n";
   write_markdown_table(out, contacts_table(r));
-  out << kContactsNote << "\n\n" << kLinearNote << "\n\n";
+  out << contacts_note(r) << "\n\n" << kLinearNote << "\n\n";
   out << "## Checks\n\n" << report::checks_text(r.summary) << ".\n\nMethod: " << report::method_text(r.summary)
       << ".\n\n";
   for (const std::string& f : report::failed_checks(r.summary)) out << "**Warning: check failed:** " << f << "\n\n";
@@ -673,7 +702,7 @@ void write_html(std::ostream& out, const Page& p) {
   }
   out << "<h2>Contacts</h2>\n";
   report::write_html_table(out, contacts_table(r));
-  out << "<p class=note>" << html_escape(kContactsNote) << "</p>\n<p class=note>" << html_escape(kLinearNote)
+  out << "<p class=note>" << html_escape(contacts_note(r)) << "</p>\n<p class=note>" << html_escape(kLinearNote)
       << "</p>\n";
   out << "<h2>Checks</h2>\n<p>" << html_escape(report::checks_text(r.summary))
       << ".</p>\n<p class=note>Method: " << html_escape(report::method_text(r.summary)) << ".</p>\n";

@@ -256,7 +256,9 @@ std::string branch_text(const LimitCycleBranch& b) {
              (b.fold ? "; it turns at the fold, " + speed_text(b.fold->speed) + " at " + mm(b.fold->amplitude) +
                            ", into the stable hunting cycle: below the fold no limit cycle exists (the nonlinear "
                            "critical speed)."
-                     : "; it ended before turning: no fold found.");
+                     : b.folds.empty() ? "; it ended before turning: no fold found."
+                                       : "; it turns, but with the same stability on both sides of every turn (no "
+                                         "exchange of stability): no fold into the stable cycle found.");
     case LimitCycleBranchKind::supercritical:
       return "supercritical: the branch leaves the Hopf point towards higher speeds with stable limit cycles; no "
              "fold below it: the nonlinear critical speed is the linear one.";

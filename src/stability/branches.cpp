@@ -188,9 +188,12 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
     group_of_path[q] = group_of_path[p];
     HuntingBranch b;
     int first_root = -1;
+    bool rigid = true;  // both roots rigid-body at every speed
     for (int s = 0; s < ns; ++s) {
       const int rp = paths.root[s][p], rq = paths.root[s][q];
       const cd lp = speeds[s].values(rp), lq = speeds[s].values(rq);
+      const double scale = root_scale(speeds[s].values);
+      rigid = rigid && root_damping(lp, scale).rigid && root_damping(lq, scale).rigid;
       int r;
       if (lp.imag() > 0.0 || lq.imag() > 0.0)
         r = lp.imag() >= lq.imag() ? rp : rq;
@@ -200,7 +203,7 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
       const cd value = speeds[s].values(r);
       const cd upper = value.imag() < 0.0 ? std::conj(value) : value;
       b.eigenvalues.push_back(upper);
-      b.damping_ratio.push_back(root_damping(upper, root_scale(speeds[s].values)).zeta);
+      b.damping_ratio.push_back(root_damping(upper, scale).zeta);
       b.frequency_hz.push_back(upper.imag() / kTwoPi);
       // Where the pair is real at either end of the step (overdamped: two real roots), there is
       // no oscillation to follow: the two roots meet and leave the real axis as a complex pair,
@@ -225,6 +228,15 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
     // (its plane's MAC near a meeting with another real root says nothing: the coach with a yaw
     // damper failed that check at every grid, user audit 2026-11-27b, 2.1). Its ζ still counts
     // in the least-damped search, which looks at every root.
+    // A pair of rigid-body roots at every speed (the split of a defective zero root by round-off:
+    // the coach at zero conicity, damping_search.cpp) neither oscillates nor decays: its Im λ and
+    // shapes are round-off, so it is no branch and no part of the continuity check either (the
+    // coach at λ = 0 failed that check with 0.53 on it, user audit 2026-11-28, F1).
+    if (rigid) {
+      group_names.push_back(root_name(system, speeds[0].shapes.col(first_root), false) + " (rigid-body, neutral)");
+      is_branch.push_back(false);
+      continue;
+    }
     if (std::all_of(b.eigenvalues.begin(), b.eigenvalues.end(), [](cd l) { return overdamped_root(l); })) {
       const std::string relaxation = relaxation_of(system, first);
       group_names.push_back(relaxation.empty() ? root_name(system, speeds[0].shapes.col(first_root), false, has_twin(first_root)) + " (real root)"

@@ -8,9 +8,10 @@ namespace railmodal::stability {
 
 /// ζ = −Re λ/|λ| of one root, the scale being root_scale() at that speed (the largest |λ| of the
 /// oscillatory roots: not of the creep roots that run off to −∞ as V → 0):
-///  - |λ| ≤ 1e-9·scale is a rigid-body root (a free motion nothing restrains: a wheelset at zero
+///  - |λ| ≤ 1e-7·scale is a rigid-body root (a free motion nothing restrains: a wheelset at zero
 ///    conicity without gravitational stiffness): neutral, ζ = 0, and left out of the
-///    least-damped search (it neither grows nor decays);
+///    least-damped search (it neither grows nor decays); 1e-7 and not ε-small because such a
+///    zero root can be defective, and round-off splits a double one by √ε (damping_search.cpp);
 ///  - |Re λ| ≤ 1e-11·scale is round-off of an undamped root: ζ = 0 exactly, so that round-off
 ///    never makes an undamped mode unstable (the eigenvalues of a balanced matrix carry errors
 ///    of order ε·scale; 1e-11 leaves five orders of headroom);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "stability/lateral_equations.hpp"
 #include "stability/orbit_continuation.hpp"
@@ -187,7 +188,20 @@ LimitCycleBranch continue_limit_cycles(const LinearSystem& system, const Nonline
   else
     b.kind = b.points[1].speed < *b.hopf_speed ? LimitCycleBranchKind::subcritical
                                                 : LimitCycleBranchKind::supercritical;
-  if (b.kind == LimitCycleBranchKind::subcritical && !b.folds.empty()) b.fold = b.folds.front();
+  // The nonlinear critical speed is the fold where the unstable cycles meet the stable ones, not
+  // the first turn of the speed: a subcritical branch may wiggle while still unstable on both sides
+  // (the Manchester coach's turns at 351.89 and 351.92 km/h, 60 km/h above its true fold).
+  if (b.kind == LimitCycleBranchKind::subcritical) {
+    std::vector<double> speeds;
+    std::vector<bool> stable;
+    for (const stability::Orbit& o : branch.orbits) {
+      speeds.push_back(o.parameter);
+      stable.push_back(o.stable);
+    }
+    if (const std::optional<std::size_t> m = stability::lowest_exchange_turn(speeds, stable))
+      for (std::size_t i = 0; i < branch.fold_orbits.size(); ++i)
+        if (branch.fold_orbits[i] == *m) b.fold = b.folds[i];
+  }
   // A figure, not a check: continue_from_hopf keeps only converged orbits, so every residual is
   // within newton_tolerance by construction and a bound on it could never fail (limit +∞:
   // reported, not bounded).

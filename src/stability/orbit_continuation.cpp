@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "shortest_text.hpp"
 
@@ -162,6 +163,19 @@ std::optional<HopfPoint> find_hopf(const VectorField& field, int n, double low, 
   return std::nullopt;
 }
 
+bool turns_at(const std::vector<double>& p, std::size_t m) {
+  if (m < 1 || m + 1 >= p.size()) return false;
+  return (p[m + 1] - p[m]) * (p[m] - p[m - 1]) < 0.0;
+}
+
+std::optional<std::size_t> lowest_exchange_turn(const std::vector<double>& p, const std::vector<bool>& stable) {
+  if (stable.size() != p.size()) throw std::invalid_argument("lowest_exchange_turn: one stability per orbit");
+  std::optional<std::size_t> lowest;
+  for (std::size_t m = 1; m + 1 < p.size(); ++m)
+    if (turns_at(p, m) && stable[m - 1] != stable[m + 1] && (!lowest || p[m] < p[*lowest])) lowest = m;
+  return lowest;
+}
+
 OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hopf, const ContinuationSettings& s) {
   OrbitBranch branch;
   // The linear orbit through the peak of the watched coordinate: phase·Re(v·e^{iθ}) = 0.
@@ -241,9 +255,11 @@ OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hop
     const std::size_t k = branch.orbits.size() - 1;
     const double turn = (branch.orbits[k].parameter - branch.orbits[k - 1].parameter) *
                         (branch.orbits[k - 1].parameter - branch.orbits[k - 2].parameter);
-    if (turn < 0.0)
+    if (turn < 0.0) {  // the condition of turns_at(·, k − 1), on the orbits as they come
       branch.folds.push_back(
           refine_fold(problem, branch.orbits[k - 2], branch.orbits[k - 1], branch.orbits[k], &branch.flows));
+      branch.fold_orbits.push_back(k - 1);
+    }
   }
   return branch;
 }

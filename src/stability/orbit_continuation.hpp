@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -39,6 +40,9 @@ enum class BranchEnd { amplitude_reached, parameter_range_left, point_limit, new
 struct OrbitBranch {
   std::vector<Orbit> orbits;  ///< in the order continued, from the Hopf point
   std::vector<Orbit> folds;   ///< refined turning points of the parameter, in branch order
+  /// For each fold, the index in `orbits` of the orbit at which the parameter turned (the extreme
+  /// one of the three the fold was refined between).
+  std::vector<std::size_t> fold_orbits;
   BranchEnd end = BranchEnd::point_limit;
   std::string failure;  ///< with newton_failed: where and how far it got
   long flows = 0;       ///< one-period integrations spent
@@ -50,6 +54,19 @@ struct OrbitBranch {
 /// min_step the branch ends with newton_failed (never a point that did not converge). A change of
 /// sign of the parameter's increment is a fold: refined by golden-section search for the extremum of p against
 /// amplitude·x0 with fixed-amplitude solves.
+/// Whether the parameter turns at orbit m of a branch: the increments into and out of it have opposite
+/// signs (m ≥ 1 and m + 1 < parameters.size(); false otherwise).
+bool turns_at(const std::vector<double>& parameters, std::size_t m);
+
+/// The turning point of the parameter at which a branch's stable and unstable orbits meet, at the
+/// lowest parameter: the index m of the extreme orbit of the lowest turn (turns_at) whose
+/// neighbours m − 1 and m + 1 differ in `stable` (largest Floquet |μ| below 1 on one side, above
+/// on the other: a multiplier crossed 1, which at a fold is the exchange of stability). A turn with
+/// the same stability on both sides is a wiggle of one branch (another multiplier passing 1 and
+/// back, or a step artefact), not where the cycles cease to exist; none when no turn exchanges
+/// stability. For a subcritical Hopf branch this fold's parameter is the nonlinear critical speed.
+std::optional<std::size_t> lowest_exchange_turn(const std::vector<double>& parameters, const std::vector<bool>& stable);
+
 OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hopf,
                                const ContinuationSettings& settings);
 

@@ -8,7 +8,9 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include "railmodal/railmodal.hpp"
 #include "stability/lateral_equations.hpp"
@@ -87,6 +89,50 @@ TEST(LimitCycleContinuation, SubcriticalNormalFormBranchAndFold) {
   // error is second order: far below 1e-8.
   EXPECT_NEAR(b.folds[0].parameter, -0.25, 1e-8);
   EXPECT_NEAR(b.folds[0].start_value, std::sqrt(0.5), 2e-4);
+  // The one turn exchanges stability (unstable small circles, stable large ones): it is the fold.
+  ASSERT_EQ(b.fold_orbits.size(), 1u);
+  std::vector<double> mu;
+  std::vector<bool> stable;
+  for (const stability::Orbit& o : b.orbits) {
+    mu.push_back(o.parameter);
+    stable.push_back(o.stable);
+  }
+  EXPECT_EQ(stability::lowest_exchange_turn(mu, stable), std::optional<std::size_t>(b.fold_orbits[0]));
+}
+
+// The head of the Manchester coach's branch (user audit 2026-11-28, F1b: speeds in km/h and the
+// largest Floquet |μ| as `hunting --continuation` printed them): a wiggle at 351.89/351.92 km/h
+// with unstable orbits on both sides, then the true turn at 291.257 km/h into the stable cycles.
+// The nonlinear critical speed is that turn, not the wiggle's first one.
+TEST(LimitCycleContinuation, FoldIsTheTurnWhereTheStabilityChangesNotAWiggle) {
+  const std::vector<double> speed{352.305, 351.893, 351.917, 351.920, 351.921, 351.909, 351.876, 351.816,
+                                  340.492, 310.768, 297.503, 294.309, 291.800, 291.276, 291.257, 291.563,
+                                  291.692, 300.985, 339.381, 341.894};
+  const std::vector<double> multiplier{1.00576, 1.00804, 1.00756, 1.0078,  1.00843, 1.00955, 1.01096,
+                                       1.01256, 1.12836, 1.53821, 1.78852, 1.34138, 1.08981, 1.0287,
+                                       1.01977, 0.825956, 0.826054, 0.831347, 0.996265, 1.02078};
+  std::vector<bool> stable;
+  for (const double m : multiplier) stable.push_back(m < 1.0);
+  // The speed turns three times: the wiggle's minimum and maximum, and the true fold.
+  std::vector<std::size_t> turns;
+  for (std::size_t m = 0; m < speed.size(); ++m)
+    if (stability::turns_at(speed, m)) turns.push_back(m);
+  EXPECT_EQ(turns, (std::vector<std::size_t>{1, 4, 14}));
+  const std::optional<std::size_t> fold = stability::lowest_exchange_turn(speed, stable);
+  ASSERT_TRUE(fold.has_value());
+  EXPECT_EQ(*fold, 14u);
+  EXPECT_EQ(speed[*fold], 291.257);
+  // (The stable cycles lose stability again at 341.89 km/h without a turn: not a fold either.)
+  // Without the turn into the stable cycles only the wiggle remains: no fold at all.
+  const std::vector<double> head(speed.begin(), speed.begin() + 9);
+  const std::vector<bool> head_stable(stable.begin(), stable.begin() + 9);
+  EXPECT_FALSE(stability::lowest_exchange_turn(head, head_stable).has_value());
+  // Two exchanging turns: the lower speed is the critical one, whatever their order on the branch.
+  // Here the speed turns at orbits 1, 2 and 3; the stability changes across 1 and 3, not 2.
+  const std::vector<double> twice{10.0, 8.0, 9.0, 6.0, 7.0};
+  const std::vector<bool> twice_stable{false, false, true, false, false};
+  EXPECT_EQ(stability::lowest_exchange_turn(twice, twice_stable), std::optional<std::size_t>(3));
+  EXPECT_THROW(stability::lowest_exchange_turn(twice, head_stable), std::invalid_argument);
 }
 
 // ṙ = r(μ − r²): supercritical; the orbits r = √μ are all stable, the branch goes up in μ and

@@ -176,5 +176,71 @@ TEST(HuntingManchesterCoach, BogieHuntingIsNamedByTheBogiesWithTheRigidBogieFreq
   }
 }
 
+Vehicle at_conicity(Vehicle v, double conicity) {
+  for (Wheelset& w : v.wheelsets) w.contact.conicity = conicity;
+  return v;
+}
+
+// Zero conicity: nothing couples lateral motion to yaw, no speed can make the vehicle hunt, and
+// the lateral and yaw motion of the whole vehicle is neutral (its zero root defective, split by
+// round-off into a pair of size √ε·scale: stability/damping_search.cpp). User audit 2026-11-28,
+// F1: that pair read as hunting from 12.58 km/h (the --conicity curve, exit 0) and as four unstable
+// intervals (in the file, exit 6). Now: stable throughout, no interval, no critical speed, the
+// pair among the rigid-body roots and out of the branches; and a tiny conicity, 0.001, whose
+// kinematic roots are physical (2πV/Λ ≈ 0.15 1/s at 10 km/h, 10⁴ times the band), still hunts,
+// with no interval below its critical speed.
+TEST(HuntingManchesterCoach, ZeroConicityIsNeutralAndATinyOneStillHunts) {
+  const Vehicle coach = load_vehicle(data_file("manchester_benchmark_coach_wheelsets.toml"));
+  HuntingOptions options;
+  options.threads = 1;
+  options.conicities = {0.0, 0.001};
+  const HuntingResult zero = solve_hunting_stability(assemble(at_conicity(coach, 0.0), DofSet::lateral), options);
+  EXPECT_EQ(zero.verdict, HuntingVerdict::stable_throughout);
+  EXPECT_FALSE(zero.critical);
+  EXPECT_TRUE(zero.unstable_intervals.empty());
+  EXPECT_GE(zero.neutral_roots, 2);  // the split pair, at least
+  // No branch of round-off: each moves by more than 1e-3 1/s somewhere (the pair is below 1e-5).
+  // The continuity check is not asserted: at λ = 0 the four wheelsets' modes are degenerate in
+  // pairs and some branches veer between them (measured: 0.47 the lowest MAC), which the check
+  // rightly reports.
+  for (const HuntingBranch& b : zero.branches)
+    EXPECT_TRUE(std::any_of(b.eigenvalues.begin(), b.eigenvalues.end(),
+                            [](std::complex<double> l) { return std::abs(l) > 1e-3; }))
+        << b.name;
+  ASSERT_EQ(zero.conicity_curve.size(), 2u);
+  EXPECT_EQ(zero.conicity_curve[0].verdict, HuntingVerdict::stable_throughout);
+  EXPECT_FALSE(zero.conicity_curve[0].critical);
+  ASSERT_TRUE(zero.conicity_curve[1].critical);
+  const HuntingResult tiny = solve_hunting_stability(assemble(at_conicity(coach, 0.001), DofSet::lateral), options);
+  ASSERT_TRUE(tiny.critical);
+  // The curve's point and the locus at that conicity are one computation on one grid.
+  EXPECT_EQ(tiny.critical->speed, zero.conicity_curve[1].critical->speed);
+  EXPECT_GT(tiny.critical->speed, 200.0 / 3.6);  // the audit's 317.9 km/h; nothing near the low end
+  ASSERT_FALSE(tiny.unstable_intervals.empty());
+  EXPECT_EQ(tiny.unstable_intervals.front().from, tiny.critical->speed);
+  EXPECT_TRUE(tiny.summary.passed());
+}
+
+// The single wheelset on its springs: at zero conicity its lateral and yaw are restrained by the
+// springs and damped by creep, so it is stable (no rigid-body root); at 0.001 no interval opens
+// below its critical speed, if it has one in the range.
+TEST(HuntingManchesterCoach, SingleWheelsetAtZeroAndTinyConicity) {
+  const Vehicle wheelset = load_vehicle(data_file("wheelset_on_springs.toml"));
+  HuntingOptions options;
+  options.threads = 1;
+  for (const double conicity : {0.0, 0.001}) {
+    const HuntingResult r = solve_hunting_stability(assemble(at_conicity(wheelset, conicity), DofSet::lateral), options);
+    EXPECT_NE(r.verdict, HuntingVerdict::unstable_at_lowest_speed) << conicity;
+    EXPECT_TRUE(r.summary.passed()) << conicity;
+    if (conicity == 0.0) {
+      EXPECT_EQ(r.verdict, HuntingVerdict::stable_throughout);
+      EXPECT_TRUE(r.unstable_intervals.empty());
+    } else if (r.critical) {
+      ASSERT_FALSE(r.unstable_intervals.empty());
+      EXPECT_EQ(r.unstable_intervals.front().from, r.critical->speed);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace railmodal::test
