@@ -90,7 +90,7 @@ struct ModalOptions {
   double max_residual = 1e-8;
   ModalSolver solver = ModalSolver::automatic;
   /// The N lowest modes, extended to the end of a cluster of equal eigenvalues (relative gap
-  /// 1e-4, Mode::repeated) so that a repeated frequency always comes with its whole subspace.
+  /// 1e-8) so that a repeated frequency always comes with its whole invariant subspace.
   /// 0: every mode (dense), kArpackDefaultModes (ARPACK).
   int mode_count = 0;
   ArpackOptions arpack;
@@ -150,7 +150,7 @@ struct Mode {
   Eigen::VectorXd shape;       ///< mass-normalised: φᵀMφ = 1, over LinearSystem::dofs
   Eigen::VectorXd kinetic_energy_share;  ///< per DOF, sums to 1 (φᵢ (Mφ)ᵢ)
   std::optional<CentreOfOscillation> centre;  ///< for pitch, roll and sway modes; none when repeated
-  /// Another mode has the same eigenvalue to 1e-4 (README, "Mode names"): only the subspace the
+  /// Another mode has the same eigenvalue (relative gap below 1e-8): only the subspace the
   /// two span is determined, not this shape on its own (symmetric bogies, for instance).
   bool repeated = false;
   double residual = 0.0;  ///< ‖Kφ − λMφ‖ / (‖K‖‖φ‖ + |λ|‖M‖‖φ‖)

@@ -70,16 +70,11 @@ void write_table(std::ostream& out, const std::string& title, const ModalResult&
   }
   out << "\n" << solver_line(r) << "\n";
   for (const auto& note : r.notes) out << "note: " << note << "\n";
-  // The mode column: 34 wide, wider where a name needs it ("wheelsets yaw, each bogie's pair in
-  // phase (repeated)" is 52), so that the numbers stay in their columns.
-  size_t mode_width = 34;
-  for (const auto& m : r.modes) mode_width = std::max(mode_width, marked(m).size() + 1);
-  const int name_width = static_cast<int>(mode_width);
-  out << std::left << std::setw(4) << "#" << std::setw(name_width) << "mode" << std::right << std::setw(11)
+  out << std::left << std::setw(4) << "#" << std::setw(34) << "mode" << std::right << std::setw(11)
       << "f [Hz]" << std::setw(11) << "T [s]" << std::setw(12) << "ω [rad/s]" << "  "
       << "centre of oscillation\n";
   for (const auto& m : r.modes) {
-    out << report::left_cell(std::to_string(m.index), 4) << report::left_cell(marked(m), mode_width) << std::right;
+    out << report::left_cell(std::to_string(m.index), 4) << report::left_cell(marked(m), 34) << std::right;
     if (m.kind == ModeKind::oscillatory) {
       out << report::right_cell(report::fixed(m.frequency_hz, 4), 11)
           << report::right_cell(report::fixed(m.period_s, 4), 11)

@@ -12,7 +12,6 @@
 #include "railmodal/excitation.hpp"
 #include "railmodal/linear_system.hpp"
 #include "railmodal/modal.hpp"
-#include "solve/eigenpairs.hpp"
 
 namespace railmodal::response {
 
@@ -63,16 +62,15 @@ inline bool moves(const Eigen::RowVectorXd& row, const Eigen::VectorXd& shape) {
   return std::abs(row.dot(shape)) > 1e-9 * shape.cwiseAbs().maxCoeff() * row.cwiseAbs().sum();
 }
 
-/// Oscillatory modes grouped by frequency: a repeated frequency (the clusters of Mode::repeated,
-/// solve::same_eigenvalue of each mode and the one before it) is one eigenspace, whose basis the
-/// solver chose arbitrarily. Modes come in ascending order, so each group is a run; the critical
-/// speeds name a group by its first mode. Written into `groups`, whose lists serve again (a
-/// study's worker finds them per variant).
+/// Oscillatory modes grouped by frequency: a repeated frequency (relative gap below 1e-8, as
+/// Mode::repeated) is one eigenspace, whose basis the solver chose arbitrarily. Modes come in
+/// ascending order, so each group is a run; the critical speeds name a group by its first mode.
+/// Written into `groups`, whose lists serve again (a study's worker finds them per variant).
 inline void eigenspaces_into(const ModalResult& modes, std::vector<std::vector<const Mode*>>* groups) {
   size_t count = 0;
   for (const Mode& m : modes.modes) {
     if (m.kind != ModeKind::oscillatory) continue;
-    if (count > 0 && solve::same_eigenvalue((*groups)[count - 1].back()->eigenvalue, m.eigenvalue, 0.0)) {
+    if (count > 0 && std::abs(m.eigenvalue - (*groups)[count - 1].front()->eigenvalue) <= 1e-8 * m.eigenvalue) {
       (*groups)[count - 1].push_back(&m);
       continue;
     }

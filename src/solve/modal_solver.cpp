@@ -80,7 +80,7 @@ namespace solve {
 
 bool same_eigenvalue(double a, double b, double zero) {
   if (std::abs(a) <= zero && std::abs(b) <= zero) return true;  // both rigid-body: λ = 0 twice
-  return std::abs(b - a) <= kRepeatedGap * std::max({std::abs(a), std::abs(b), zero});
+  return std::abs(b - a) <= 1e-8 * std::max({std::abs(a), std::abs(b), zero});
 }
 
 int cluster_end(const Eigen::VectorXd& values, int count, double zero) {

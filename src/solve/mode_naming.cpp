@@ -248,15 +248,6 @@ ModeNamer::ModeNamer(const LinearSystem& system) : system_(system) {
   }
 }
 
-model::BodyMatrix ModeNamer::carried_per_carrier_motion(int wheelset) const {
-  const BodyFacts& f = bodies_[wheelset];
-  model::BodyMatrix per_motion = model::BodyMatrix::Zero();
-  if (f.carrier < 0) return per_motion;
-  for (int m = 0; m < kMotionsPerBody; ++m)
-    per_motion.col(m) = f.carried * cg_motion_of(bodies_[f.carrier].cg_map, BodyVector::Unit(m));
-  return per_motion;
-}
-
 void ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated, std::string* name,
                          std::optional<CentreOfOscillation>* centre) const {
   const LinearSystem& system = system_;
@@ -267,7 +258,7 @@ void ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated, std::strin
   thread_local std::vector<BodyVector> motion;
   thread_local std::vector<double> bending;
   thread_local std::vector<BodyEnergy> energy;
-  thread_local std::vector<double> alpha;  // the carried share α of each carried wheelset (below)
+  thread_local std::vector<double> carried_share;  // α of each carried wheelset (below)
   motion.assign(bodies.size(), BodyVector::Zero());
   bending.assign(bodies.size(), 0.0);
   energy.clear();
@@ -288,21 +279,22 @@ void ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated, std::strin
   // moving against its frame (α < 0: the primary springs take both motions) keeps its whole
   // energy and the frame none of it; without the bound its motion relative to the frame would
   // count for more energy than the mode gives it.
-  alpha.assign(bodies.size(), 0.0);
+  carried_share.assign(bodies.size(), 0.0);
   for (size_t b = 0; b < bodies.size(); ++b) {
     const BodyFacts& f = bodies_[b];
     BodyVector own = motion[b];
     if (f.carrier >= 0) {
       const BodyVector c = f.carried * cg_motion_of(bodies_[f.carrier].cg_map, motion[f.carrier]);
-      alpha[b] = carried_share(f.mass, c, motion[b]);
-      own -= alpha[b] * c;
+      const double cc = c.dot(f.mass * c);
+      if (cc > 0.0) carried_share[b] = std::clamp(c.dot(f.mass * motion[b]) / cc, 0.0, 1.0);
+      own -= carried_share[b] * c;
     }
     energy.push_back(energy_of(bodies[b], f.cg_map, f.bending_mass, own, bending[b]));
   }
   for (size_t b = 0; b < bodies.size(); ++b) {
     const BodyFacts& f = bodies_[b];
-    if (f.carrier >= 0 && alpha[b] > 0.0)
-      credit_carried(f.carried, f.mass, alpha[b] * cg_motion_of(bodies_[f.carrier].cg_map, motion[f.carrier]),
+    if (f.carrier >= 0 && carried_share[b] > 0.0)
+      credit_carried(f.carried, f.mass, carried_share[b] * cg_motion_of(bodies_[f.carrier].cg_map, motion[f.carrier]),
                      &energy[f.carrier]);
   }
   int lead = 0;
@@ -330,29 +322,10 @@ void ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated, std::strin
 
   const std::string& family = facts.family;
   const bool has_twin = facts.has_twin;
-  // Twins hung from more than one carrier (four wheelsets under two bogies): their phase within
-  // and between the carriers, after ", " (carried_twins_phase); false when not so grouped.
-  const auto append_carried_phase = [&](bool of_subspace) {
-    thread_local std::vector<TwinMotion> twins;
-    twins.clear();
-    int lead_twin = -1;
-    for (size_t b = 0; b < bodies.size(); ++b) {
-      if (bodies_[b].family != family) continue;
-      if (static_cast<int>(b) == lead) lead_twin = static_cast<int>(twins.size());
-      twins.push_back({bodies_[b].carrier, bodies[b].reference_point.x(), energy[b].amplitude(leading.key),
-                       energy[b].total, static_cast<int>(b) == lead || energy[b].total >= 0.5 * e.total});
-    }
-    const std::string words = carried_twins_phase(twins, lead_twin, bodies, family, of_subspace);
-    if (words.empty()) return false;
-    name->append(", ").append(words);
-    return true;
-  };
   // A repeated mode of twin bodies is any combination of the twins' motions (the solver's
   // basis is arbitrary, its members unequal mixtures): only the shared subspace has a name.
   if (repeated && has_twin) {
-    name->assign(family).append("s ").append(leading.word);
-    append_carried_phase(true);
-    name->append(" (repeated)");
+    name->assign(family).append("s ").append(leading.word).append(" (repeated)");
     return;
   }
   // Twin bodies (bogie1/bogie2, wheelset1…wheelset4) sharing the energy: name the family and
@@ -366,8 +339,7 @@ void ModeNamer::describe(const Eigen::VectorXd& shape, bool repeated, std::strin
     in_phase = in_phase && e.amplitude(leading.key) * energy[b].amplitude(leading.key) >= 0.0;
   }
   if (shared) {
-    name->assign(family).append("s ").append(leading.word);
-    if (!append_carried_phase(false)) name->append(", ").append(in_phase ? "in phase" : "antiphase");
+    name->assign(family).append("s ").append(leading.word).append(", ").append(in_phase ? "in phase" : "antiphase");
     return;
   }
   name->reserve(body.name.size() + 1 + std::strlen(leading.word));  // one allocation at most, none in kept storage
@@ -379,93 +351,6 @@ std::string family_of(const std::string& name) {
   while (end > 0 && (std::isdigit(static_cast<unsigned char>(name[end - 1])) || name[end - 1] == '_'))
     --end;
   return name.substr(0, end);
-}
-
-std::string carried_twins_phase(const std::vector<TwinMotion>& twins, int lead, const std::vector<Body>& bodies,
-                                const std::string& family, bool repeated) {
-  const auto in_phase_with = [](std::complex<double> a, std::complex<double> b) { return std::real(a * std::conj(b)) >= 0.0; };
-  // Each carrier (in the vehicle's order) with its twins from the front, how many of them share
-  // the mode, and whether those move in phase with the one of them that moves most.
-  struct Carried {
-    int carrier = -1;
-    std::vector<int> twins;  // into `twins`
-    int sharing = 0;
-    bool in_phase = true;
-  };
-  std::vector<Carried> groups;
-  for (const TwinMotion& t : twins) {
-    if (t.carrier < 0) return "";
-    if (std::none_of(groups.begin(), groups.end(), [&](const Carried& g) { return g.carrier == t.carrier; }))
-      groups.push_back({t.carrier, {}, 0, true});
-  }
-  if (groups.size() < 2) return "";
-  std::sort(groups.begin(), groups.end(), [](const Carried& a, const Carried& b) { return a.carrier < b.carrier; });
-  int leading_group = 0;
-  bool same_size = true, within_agrees = true, any_pair_shares = false;
-  std::optional<bool> within;
-  for (size_t g = 0; g < groups.size(); ++g) {
-    Carried& c = groups[g];
-    for (size_t i = 0; i < twins.size(); ++i)
-      if (twins[i].carrier == c.carrier) c.twins.push_back(static_cast<int>(i));
-    std::stable_sort(c.twins.begin(), c.twins.end(), [&](int a, int b) { return twins[a].x > twins[b].x; });
-    int most = -1;
-    for (int i : c.twins) {
-      if (i == lead) leading_group = static_cast<int>(g);
-      if (!twins[i].shares) continue;
-      ++c.sharing;
-      if (most < 0 || twins[i].energy > twins[most].energy) most = i;
-    }
-    for (int i : c.twins)
-      if (twins[i].shares) c.in_phase = c.in_phase && in_phase_with(twins[i].amplitude, twins[most].amplitude);
-    same_size = same_size && c.twins.size() == groups[0].twins.size();
-    if (c.sharing < 2) continue;
-    any_pair_shares = true;
-    if (within && *within != c.in_phase) within_agrees = false;
-    within = c.in_phase;
-  }
-  if (!any_pair_shares) return "";
-  const auto phase = [](bool in_phase) { return in_phase ? "in phase" : "in antiphase"; };
-  const std::string noun = same_size && groups[0].twins.size() == 2 ? "pair" : family + "s";
-  // The carriers' own family ("bogie" of bogie1, bogie2), empty when they are not twins.
-  std::string carriers = family_of(bodies[groups[0].carrier].name);
-  for (const Carried& c : groups)
-    if (family_of(bodies[c.carrier].name) != carriers || bodies[c.carrier].name == carriers) carriers.clear();
-  int moving = 0;  // carriers whose twins share the mode
-  bool each_pair = true;  // and each of them with two or more
-  for (const Carried& c : groups) {
-    moving += c.sharing > 0 ? 1 : 0;
-    each_pair = each_pair && (c.sharing == 0 || c.sharing >= 2);
-  }
-
-  std::string words;
-  if (!carriers.empty() && within_agrees && each_pair && (repeated || moving > 1)) {
-    words.append("each ").append(carriers).append("'s ").append(noun).append(" ").append(phase(*within));
-  } else {  // carrier by carrier: they differ, are not twins, or only one moves in a mode of its own
-    for (const Carried& c : groups) {
-      if (c.sharing < 2) continue;
-      words.append(words.empty() ? "" : ", ").append(bodies[c.carrier].name).append("'s ").append(noun).append(" ");
-      words.append(phase(c.in_phase));
-    }
-  }
-  // Between the carriers: corresponding twins (from the front) compared, the leading carrier's
-  // against each other's whose twins share the mode.
-  if (repeated || moving < 2 || !same_size) return words;
-  bool between = true;
-  const Carried& first = groups[leading_group];
-  for (const Carried& c : groups) {
-    if (c.sharing == 0 || &c == &first) continue;
-    std::complex<double> sum = 0.0;
-    for (size_t k = 0; k < c.twins.size(); ++k) sum += twins[c.twins[k]].amplitude * std::conj(twins[first.twins[k]].amplitude);
-    between = between && sum.real() >= 0.0;
-  }
-  if (carriers.empty()) {
-    const char* join = ", ";
-    for (const Carried& c : groups)
-      if (c.sharing > 0) words.append(join).append(bodies[c.carrier].name), join = "+";
-  } else {
-    words.append(", ").append(carriers).append("s");
-  }
-  return words.append(" ").append(phase(between));
 }
 
 }  // namespace railmodal::solve

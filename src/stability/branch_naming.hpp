@@ -55,21 +55,9 @@ inline bool overdamped_root(std::complex<double> value) { return std::abs(value.
 ///    each other and within a factor 2 in amplitude): "bogie1+bogie2 hunting, in phase", each
 ///    bogie whose wheelsets move together with at least half the leading bogie's energy per
 ///    unit mass, so that no wheelset of a bogie is left out by a threshold on its own.
-/// A root that does not hunt is named from its energies with each carried wheelset's carried
-/// motion credited to its carrier (model::wheelset_carrier), as the undamped modes are
-/// (solve::ModeNamer, solve::carried_share): a bogie yawing with its wheelsets is the bogie's
-/// yaw, and a carrier leads only if it moves more per unit mass than its wheelsets together do
-/// relative to it. A hunting root is not: the carried wheelsets' lateral motion and yaw are the
-/// creep forces' oscillation itself, which names it by the wheelsets or their bogies. Twins under
-/// two or more carriers (four wheelsets under two bogies) are named with the undamped modes'
-/// words for their phase (solve::carried_twins_phase): "wheelset1+wheelset2+wheelset3+wheelset4
-/// yaw, each bogie's pair in antiphase, bogies in phase"; for a root with a `twin` (another
-/// root of its value, whose shapes only the pair's subspace determines) without the phase
-/// between the carriers.
 /// A system whose DOFs have no bodies (matrices read from files) is named after the label of
 /// the DOF with the most energy. A shape with no displacement (a series damper's own root,
 /// λ = −k/c, where nothing moves) is "series damper relaxation".
-std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weighted_shape, bool oscillatory = true,
-                      bool twin = false);
+std::string root_name(const LinearSystem& system, const Eigen::VectorXcd& weighted_shape, bool oscillatory = true);
 
 }  // namespace railmodal::stability

@@ -12,7 +12,6 @@
 
 #include "stability/branch_naming.hpp"
 #include "stability/damping_search.hpp"
-#include "stability/root_tracking.hpp"
 
 namespace railmodal::stability {
 
@@ -156,19 +155,6 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
 
   std::vector<double> grid(ns);
   for (int s = 0; s < ns; ++s) grid[s] = speeds[s].speed;
-  // Whether root r at the lowest speed has a twin there, another root of its value to kTwins
-  // (not its conjugate): then only the twins' subspace is determined, as for a repeated
-  // frequency of the undamped modes, and root_name says no more of its shape than that holds.
-  const auto has_twin = [&](int r) {
-    const Eigen::VectorXcd& values = speeds[0].values;
-    for (int j = 0; j < values.size(); ++j) {
-      const double scale = std::abs(values(j)) + std::abs(values(r));
-      if (j != r && values(j).imag() * values(r).imag() >= 0.0 && scale > 0.0 &&
-          std::abs(values(j) - values(r)) <= kTwins * scale)
-        return true;
-    }
-    return false;
-  };
   std::vector<int> group_of_path(np, -1);
   std::vector<std::string> group_names;
   std::vector<bool> is_branch;
@@ -180,7 +166,7 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
     if (q < 0) {  // a real root at every speed
       const int r = paths.root[0][p];
       const std::string relaxation = relaxation_of(system, speeds[0].values(r));
-      group_names.push_back(relaxation.empty() ? root_name(system, speeds[0].shapes.col(r), false, has_twin(r)) + " (real root)"
+      group_names.push_back(relaxation.empty() ? root_name(system, speeds[0].shapes.col(r), false) + " (real root)"
                                                : relaxation);
       is_branch.push_back(false);
       continue;
@@ -239,7 +225,7 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
     }
     if (std::all_of(b.eigenvalues.begin(), b.eigenvalues.end(), [](cd l) { return overdamped_root(l); })) {
       const std::string relaxation = relaxation_of(system, first);
-      group_names.push_back(relaxation.empty() ? root_name(system, speeds[0].shapes.col(first_root), false, has_twin(first_root)) + " (real root)"
+      group_names.push_back(relaxation.empty() ? root_name(system, speeds[0].shapes.col(first_root), false) + " (real root)"
                                                : relaxation);
       is_branch.push_back(false);
       continue;
@@ -249,7 +235,7 @@ Branches group_branches(const LinearSystem& system, const std::vector<SpeedRoots
     // hunting there: it does not oscillate.
     b.name = relaxation_of(system, first);
     if (b.name.empty())
-      b.name = root_name(system, speeds[0].shapes.col(first_root), !overdamped_root(first), has_twin(first_root));
+      b.name = root_name(system, speeds[0].shapes.col(first_root), !overdamped_root(first));
     if (kinematic(b, grid, klingel_wavelength)) b.name += " (kinematic)";
     group_names.push_back(b.name);
     is_branch.push_back(true);

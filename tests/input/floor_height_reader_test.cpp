@@ -5,18 +5,25 @@
 #include <fstream>
 #include <sstream>
 
-#include "input/good_wagon.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
 namespace {
 
-// The good wagon with a floor height on line 6, the line the tests replace.
-const std::string kWagon = [] {
-  std::string text = kGoodWagon;
-  const std::string weight = "weight = \"20000 kgf\"\n";
-  return text.insert(text.find(weight) + weight.size(), "floor_height = \"1250 mm\"\n");
-}();
+// Line 6 holds the key the tests replace.
+const std::string kWagon = R"([vehicle]
+name = "test wagon"
+template = "two-axle"
+[body]
+weight = "20000 kgf"
+floor_height = "1250 mm"
+cg_height = "100 cm"
+radius_of_gyration = { roll = "110 cm", pitch = "260 cm" }
+[suspension]
+wheelbase = "400 cm"
+spring_spacing = "200 cm"
+spring = { kind = "coil", stiffness = "1000 kgf/cm" }
+)";
 
 std::string file_text(const std::string& path) {
   std::ifstream in(path);

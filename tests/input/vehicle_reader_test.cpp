@@ -1,16 +1,28 @@
 // Bad vehicle files: every error names file, line, column and key.
 #include <gtest/gtest.h>
 
-#include "input/good_wagon.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
 namespace {
 
+const std::string kGood = R"([vehicle]
+name = "test wagon"
+template = "two-axle"
+[body]
+weight = "20000 kgf"
+cg_height = "100 cm"
+radius_of_gyration = { roll = "110 cm", pitch = "260 cm" }
+[suspension]
+wheelbase = "400 cm"
+spring_spacing = "200 cm"
+spring = { kind = "coil", stiffness = "1000 kgf/cm" }
+)";
+
 // Replaces the first occurrence of `from` in the good file and expects an InputError whose
 // text contains each of `parts` (e.g. "bad.toml:5:10", "key 'body.weight'").
 void expect_error(const std::string& from, const std::string& to, std::vector<std::string> parts) {
-  std::string text = kGoodWagon;
+  std::string text = kGood;
   const auto at = text.find(from);
   ASSERT_NE(at, std::string::npos) << from;
   text.replace(at, from.size(), to);
@@ -25,7 +37,7 @@ void expect_error(const std::string& from, const std::string& to, std::vector<st
 }
 
 TEST(VehicleReader, GoodFileLoads) {
-  const Vehicle v = load_vehicle(write_temp("good.toml", kGoodWagon));
+  const Vehicle v = load_vehicle(write_temp("good.toml", kGood));
   EXPECT_EQ(v.name, "test wagon");
   EXPECT_EQ(v.bodies.size(), 1u);
   EXPECT_EQ(v.elements.size(), 4u);
@@ -34,7 +46,7 @@ TEST(VehicleReader, GoodFileLoads) {
 // What the reader accepts but finds unusual comes back beside the vehicle, appended to what the
 // caller's list holds, and changes nothing the vehicle holds; without the list none are made.
 TEST(VehicleReader, WarningsComeBackBesideTheVehicle) {
-  std::string text = kGoodWagon;
+  std::string text = kGood;
   text.replace(text.find("wheelbase = \"400 cm\""), 20, "wheelbase = 400");  // 400 m, a bare number
   const std::string path = write_temp("warned.toml", text);
   std::vector<std::string> warnings{"the caller's own line"};
@@ -80,7 +92,7 @@ TEST(VehicleReader, UnknownKeySaysWhatItLikelyMeant) {
                 "'vertical_damping'?"});
   // Nothing near: no suggestion.
   try {
-    load_vehicle(write_temp("colour.toml", kGoodWagon + "colour = \"red\"\n"));
+    load_vehicle(write_temp("colour.toml", kGood + "colour = \"red\"\n"));
     FAIL() << "no error for colour";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()).find("did you mean"), std::string::npos) << e.what();
@@ -112,7 +124,7 @@ TEST(VehicleReader, AbsurdMagnitudes) {
   expect_error("template = \"two-axle\"\n[body]\nweight = \"20000 kgf\"",
                "template = \"two-axle\"\ngravity = 1e29\n[body]\nweight = 1e-20",
                {"key 'body.weight': divided by the gravity gives a mass: the value 1e-49 is below"});
-  std::string edges = kGoodWagon;
+  std::string edges = kGood;
   edges.replace(edges.find("\"20000 kgf\""), 11, "\"1e30 N\"");
   edges.replace(edges.find("\"1000 kgf/cm\""), 13, "1e-30");
   EXPECT_NO_THROW(load_vehicle(write_temp("edges.toml", edges)));
@@ -131,7 +143,7 @@ TEST(VehicleReader, InvalidUtf8NamesLineAndColumn) {
   expect_error("[body]", "[body] # Ma\xdf", {"bad.toml:4:12", "byte 0xdf is not UTF-8 text"});
   expect_error("test wagon", "test \xed\xa0\x80wagon", {"bad.toml:2:14", "byte 0xed is not UTF-8 text"});
   // Well-formed UTF-8 stays accepted: "Maße" and a 4-byte code point in strings and comments.
-  std::string text = kGoodWagon;
+  std::string text = kGood;
   text.replace(text.find("test wagon"), 10, "Ma\xc3\x9f" "e \xf0\x9f\x9a\x83");
   const Vehicle v = load_vehicle(write_temp("utf8.toml", "# \xc3\xa9t\xc3\xa9\n" + text));
   EXPECT_EQ(v.name, "Ma\xc3\x9f" "e \xf0\x9f\x9a\x83");
@@ -183,12 +195,12 @@ vertical = { stiffness = 1e5 }
 // digest Example 3: ψ = 0.3, 11 leaves of 13 mm, 2 full-length, 2l = 1040 mm → φ = 0.0818
 // (the book prints 0.075); the digest's 3 figures.
 TEST(VehicleReader, LeafFrictionDirectOrByMarie) {
-  const Vehicle direct = load_vehicle(write_temp("phi.toml", std::string(kGoodWagon).replace(
-      kGoodWagon.find("spring = { kind = \"coil\", stiffness = \"1000 kgf/cm\" }"), 54,
+  const Vehicle direct = load_vehicle(write_temp("phi.toml", std::string(kGood).replace(
+      kGood.find("spring = { kind = \"coil\", stiffness = \"1000 kgf/cm\" }"), 54,
       "spring = { kind = \"leaf\", stiffness = \"1000 kgf/cm\", relative_friction = 0.075 }")));
   EXPECT_EQ(direct.elements[0].vertical_stages[0].relative_friction, 0.075);
-  const Vehicle marie = load_vehicle(write_temp("psi.toml", std::string(kGoodWagon).replace(
-      kGoodWagon.find("spring = { kind = \"coil\", stiffness = \"1000 kgf/cm\" }"), 54,
+  const Vehicle marie = load_vehicle(write_temp("psi.toml", std::string(kGood).replace(
+      kGood.find("spring = { kind = \"coil\", stiffness = \"1000 kgf/cm\" }"), 54,
       "spring = { kind = \"leaf\", length = \"1040 mm\", leaf_width = \"76 mm\", leaf_thickness = \"13 mm\", "
       "leaves = 11, full_length_leaves = 2, modulus = \"2.2e6 kgf/cm^2\", leaf_friction = 0.3 }")));
   EXPECT_NEAR(marie.elements[0].vertical_stages[0].relative_friction, 0.0818, 5e-5);
@@ -263,7 +275,7 @@ const std::string kNested = R"(spring = [{ kind = "leaf", stiffness = "1000 kgf/
           { parallel = [{ kind = "coil", stiffness = "1420 kgf/cm" }, { kind = "coil", stiffness = "500 kgf/cm" }], count = 2 }])";
 
 std::string with_spring(const std::string& spring) {
-  std::string text = kGoodWagon;
+  std::string text = kGood;
   const std::string single = R"(spring = { kind = "coil", stiffness = "1000 kgf/cm" })";
   return text.replace(text.find(single), single.size(), spring);
 }
@@ -327,7 +339,7 @@ longitudinal_damping = "10 kN*s/m"
 [suspension])";
 
 TEST(VehicleReader, FreedLongitudinalMotionWithDrawGear) {
-  std::string text = kGoodWagon;
+  std::string text = kGood;
   text.replace(text.find("[suspension]"), 12, kDrawGear);
   const Vehicle v = load_vehicle(write_temp("draw_gear.toml", text));
   EXPECT_TRUE(v.bodies.at(0).longitudinal_free);
@@ -343,7 +355,7 @@ TEST(VehicleReader, FreedLongitudinalMotionWithDrawGear) {
 }
 
 TEST(VehicleReader, FreedLongitudinalMotionErrors) {
-  std::string text = kGoodWagon;
+  std::string text = kGood;
   text.replace(text.find("[suspension]"), 12, kDrawGear);
   auto error = [&](const std::string& from, const std::string& to, const std::vector<std::string>& parts) {
     std::string bad = text;

@@ -13,13 +13,48 @@
 
 #include "railmodal/railmodal.hpp"
 #include "railmodal/ride_simulation.hpp"
-#include "ride/ride_test_systems.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
 namespace {
 
 constexpr const char* kFloorNote = "floor height not given: the default floor points lie at z = ";
+
+SpringStage floor_test_coil(double k) {
+  SpringStage s;
+  s.kind = "coil";
+  s.stiffness = k;
+  return s;
+}
+
+// A car body on four springs at (±3, ±1, 0), vertical and lateral 5e5 N/m and 8e3 N·s/m each,
+// its reference point at z = `reference`, its CG at z = `cg`. With the CG above the springs the
+// lateral and roll motions are coupled (the lower sway), so the reference point moves sideways
+// as the body rolls; with cg = reference = 0 the body rolls about the springs' plane alone.
+LinearSystem floor_test_body(std::optional<double> floor_height, double reference, double cg) {
+  Vehicle v;
+  v.name = "car body";
+  Body b;
+  b.name = "body";
+  b.mass = 12000.0;
+  b.inertia = Eigen::Vector3d(2e4, 1e5, 1e5);
+  b.centre_of_gravity = Eigen::Vector3d(0.0, 0.0, cg);
+  b.reference_point = Eigen::Vector3d(0.0, 0.0, reference);
+  b.held = {Motion::longitudinal};
+  b.floor_height = floor_height;
+  v.bodies.push_back(b);
+  const double points[4][2] = {{3.0, 1.0}, {3.0, -1.0}, {-3.0, 1.0}, {-3.0, -1.0}};
+  for (int i = 0; i < 4; ++i) {
+    Element e;
+    e.name = "spring" + std::to_string(i + 1);
+    e.upper = "body";
+    e.point = Eigen::Vector3d(points[i][0], points[i][1], 0.0);
+    e.vertical_stages = e.lateral_stages = {floor_test_coil(5e5)};
+    e.vertical_damping = e.lateral_damping = 8e3;
+    v.elements.push_back(e);
+  }
+  return assemble(v, DofSet::all);
+}
 
 RideOutput floor_test_point(const std::string& name, const Eigen::Vector3d& p, RideAxis axis,
                             RideOutput::Frame frame = RideOutput::Frame::body) {
@@ -47,7 +82,7 @@ int notes_with(const std::vector<std::string>& notes, const std::string& text) {
 // The points lie at the floor where the body gives it, at the reference point where it does not.
 TEST(DefaultFloor, PointsLieAtTheFloorHeight) {
   for (const std::optional<double> floor : {std::optional<double>(1.7), std::optional<double>()}) {
-    const std::vector<RideOutput> outputs = default_ride_outputs(body_on_four_springs(floor, 0.5, 1.0));
+    const std::vector<RideOutput> outputs = default_ride_outputs(floor_test_body(floor, 0.5, 1.0));
     ASSERT_FALSE(outputs.empty());
     for (const RideOutput& o : outputs) EXPECT_EQ(o.point.z(), floor.value_or(0.5)) << o.name;
   }
@@ -65,7 +100,7 @@ TEST(DefaultFloor, PointsLieAtTheFloorHeight) {
 // check fails for points at the reference point's height, as before floor_height).
 TEST(DefaultFloor, LateralAccelerationAtTheFloorIsTheReferencePointsPlusTheRollsShare) {
   const double floor = 1.7, reference = 0.5, h = floor - reference;
-  const LinearSystem s = body_on_four_springs(floor, reference, 1.0);
+  const LinearSystem s = floor_test_body(floor, reference, 1.0);
   std::vector<RideOutput> outputs = default_ride_outputs(s);
   const Eigen::Vector3d under(floor_output_named(outputs, "floor at mid-car, lateral").point.x(), 0.0, reference);
   outputs.push_back(floor_test_point("reference point, lateral", under, RideAxis::lateral));
@@ -102,7 +137,7 @@ TEST(DefaultFloor, LateralAccelerationAtTheFloorIsTheReferencePointsPlusTheRolls
 // zero to round-off.
 TEST(DefaultFloor, RollAboutTheReferencePointGivesTheFloorHTimesTheRollAcceleration) {
   const double h = 1.3;
-  const LinearSystem s = body_on_four_springs(h, 0.0, 0.0);
+  const LinearSystem s = floor_test_body(h, 0.0, 0.0);
   RideOutput floor = floor_output_named(default_ride_outputs(s), "floor at mid-car, lateral");
   floor.frame = RideOutput::Frame::track;
   const Eigen::Vector3d centre(floor.point.x(), 0.0, 0.0);
@@ -134,7 +169,7 @@ TEST(DefaultFloor, TheNoteSaysOnceWhereThePointsAreWithoutAFloorHeight) {
   track.cross_level = TrackSpectrum::ore_b176(OreLevel::low, TrackIrregularity::cross_level, {0.06, 2.0});
   RideOptions options;
   options.speeds = {20.0, 30.0};
-  const LinearSystem without = body_on_four_springs(std::nullopt, 0.5, 1.0);
+  const LinearSystem without = floor_test_body(std::nullopt, 0.5, 1.0);
   const RideResult r = solve_ride(without, track, default_ride_outputs(without), options);
   ASSERT_EQ(notes_with(r.notes, kFloorNote), 1);
   EXPECT_EQ(notes_with(r.notes, std::string(kFloorNote) + "0.5 m, the reference point of 'body'"), 1);
@@ -147,7 +182,7 @@ TEST(DefaultFloor, TheNoteSaysOnceWhereThePointsAreWithoutAFloorHeight) {
   const std::vector<RideOutput> own{floor_test_point("seat", Eigen::Vector3d(0, 0, 0.5), RideAxis::lateral)};
   EXPECT_EQ(notes_with(solve_ride(without, track, own, options).notes, kFloorNote), 0);
   // The floor given: no note.
-  const LinearSystem with = body_on_four_springs(1.7, 0.5, 1.0);
+  const LinearSystem with = floor_test_body(1.7, 0.5, 1.0);
   EXPECT_EQ(notes_with(solve_ride(with, track, default_ride_outputs(with), options).notes, kFloorNote), 0);
   // The time domain says the same.
   TrackSynthesisOptions synthesis;

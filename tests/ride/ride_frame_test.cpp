@@ -10,7 +10,6 @@
 
 #include "railmodal/railmodal.hpp"
 #include "railmodal/ride_simulation.hpp"
-#include "ride/ride_test_systems.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
@@ -18,13 +17,39 @@ namespace {
 
 constexpr double kFrameTestGravity = 9.81;  // Vehicle::gravity's default, which the body frame uses
 
-// A body that rolls alone: body_on_four_springs with its centre of gravity at the springs'
-// height, so neither the lateral springs nor gravity couple roll to lateral motion. Cross-level
-// rolls the rails about the rail top, r0 below the springs' plane, and moves them sideways by
-// −θ(z + r0): zero with z = 0 and r0 = 0 (no wheelsets), so cross-level excites roll and nothing
-// else. Roll: 4k·1² = 2e6 N·m/rad on 2e4 kg·m², 1.59 Hz, ζ = 4c/(2√(K I)) = 0.08.
+SpringStage frame_test_coil(double k) {
+  SpringStage s;
+  s.kind = "coil";
+  s.stiffness = k;
+  return s;
+}
+
+// A body that rolls alone: four springs at (±3, ±1, 0), vertical and lateral 5e5 N/m and 8e3
+// N·s/m each, its centre of gravity at their height, so neither the lateral springs nor gravity
+// couple roll to lateral motion. Cross-level rolls the rails about the rail top, r0 below the
+// springs' plane, and moves them sideways by −θ(z + r0): zero with z = 0 and r0 = 0 (no wheelsets),
+// so cross-level excites roll and nothing else. Roll: 4k·1² = 2e6 N·m/rad on 2e4 kg·m², 1.59 Hz,
+// ζ = 4c/(2√(K I)) = 0.08.
 LinearSystem rolling_body(std::vector<Motion> held = {Motion::longitudinal}) {
-  return body_on_four_springs(std::nullopt, 0.0, 0.0, std::move(held));
+  Vehicle v;
+  v.name = "rolling body";
+  Body b;
+  b.name = "body";
+  b.mass = 12000.0;
+  b.inertia = Eigen::Vector3d(2e4, 1e5, 1e5);
+  b.held = held;
+  v.bodies.push_back(b);
+  const double points[4][2] = {{3.0, 1.0}, {3.0, -1.0}, {-3.0, 1.0}, {-3.0, -1.0}};
+  for (int i = 0; i < 4; ++i) {
+    Element e;
+    e.name = "spring" + std::to_string(i + 1);
+    e.upper = "body";
+    e.point = Eigen::Vector3d(points[i][0], points[i][1], 0.0);
+    e.vertical_stages = e.lateral_stages = {frame_test_coil(5e5)};
+    e.vertical_damping = e.lateral_damping = 8e3;
+    v.elements.push_back(e);
+  }
+  return assemble(v, DofSet::all);
 }
 
 RideOutput frame_test_point(const std::string& name, const Eigen::Vector3d& p, RideAxis axis, ResponseQuantity q,

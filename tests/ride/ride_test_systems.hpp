@@ -1,12 +1,10 @@
-// Small systems built by hand for the ride tests: a mass on its wheels' springs and dampers,
-// bounce only, so its frequency response is written down directly; a car body on four springs.
+// Small systems built by hand for the time-domain ride tests: a mass on its wheels' springs
+// and dampers, bounce only, so its frequency response is written down directly.
 #pragma once
 
 #include <cmath>
 #include <complex>
-#include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "railmodal/linear_system.hpp"
@@ -42,41 +40,6 @@ inline LinearSystem bouncing_mass(double mass, double k, double c, const std::ve
     s.track_inputs.push_back(input);
   }
   return s;
-}
-
-/// A car body of 12 t (roll, pitch, yaw inertia 2e4, 1e5, 1e5 kg·m²) on four springs at
-/// (±3, ±1, 0), vertical and lateral 5e5 N/m and 8e3 N·s/m each, with its motions `held` held:
-/// its reference point at z = `reference`, its centre of gravity at z = `cg`, its floor at
-/// `floor_height` (Body::floor_height; none: not given). With cg = reference = 0 neither the
-/// lateral springs nor gravity couple roll to lateral motion, and the body rolls about the
-/// springs' plane alone; with the CG above the springs lateral motion and roll are coupled.
-inline LinearSystem body_on_four_springs(std::optional<double> floor_height = std::nullopt, double reference = 0.0,
-                                         double cg = 0.0, std::vector<Motion> held = {Motion::longitudinal}) {
-  Vehicle v;
-  v.name = "car body on four springs";
-  Body b;
-  b.name = "body";
-  b.mass = 12000.0;
-  b.inertia = Eigen::Vector3d(2e4, 1e5, 1e5);
-  b.centre_of_gravity = Eigen::Vector3d(0.0, 0.0, cg);
-  b.reference_point = Eigen::Vector3d(0.0, 0.0, reference);
-  b.held = std::move(held);
-  b.floor_height = floor_height;
-  v.bodies.push_back(b);
-  SpringStage coil;
-  coil.kind = "coil";
-  coil.stiffness = 5e5;
-  const double points[4][2] = {{3.0, 1.0}, {3.0, -1.0}, {-3.0, 1.0}, {-3.0, -1.0}};
-  for (int i = 0; i < 4; ++i) {
-    Element e;
-    e.name = "spring" + std::to_string(i + 1);
-    e.upper = "body";
-    e.point = Eigen::Vector3d(points[i][0], points[i][1], 0.0);
-    e.vertical_stages = e.lateral_stages = {coil};
-    e.vertical_damping = e.lateral_damping = 8e3;
-    v.elements.push_back(e);
-  }
-  return assemble(v, DofSet::all);
 }
 
 /// Its displacement per unit track level at f Hz and speed V: Σ_i (k + iωc) e^{−iω lag_i/V} /

@@ -254,8 +254,8 @@ TEST(HardCases, ExactlyRepeatedFrequencies) {
 }
 
 // Nearly repeated (relative gap 1e-10): both eigenvalues to round-off; they are flagged as
-// repeated (gap below 1e-4, solve::kRepeatedGap), and their subspace is right to round-off
-// while single vectors within it are not determined to better than ~ε/gap.
+// repeated (gap below 1e-8), and their subspace is right to round-off while single vectors
+// within it are not determined to better than ~ε/gap.
 TEST(HardCases, NearlyRepeatedFrequencies) {
   const Eigen::MatrixXd M = Eigen::MatrixXd::Identity(3, 3);
   Eigen::MatrixXd K = Eigen::Vector3d(1.0, 1.0 + 1e-10, 4.0).asDiagonal();

@@ -10,7 +10,6 @@
 #include <regex>
 #include <sstream>
 
-#include "solve/mode_naming.hpp"
 #include "test_support.hpp"
 
 namespace railmodal {
@@ -226,112 +225,21 @@ TEST(ModeNames, WheelsetsMovingInAFrameHeldStillNameTheWheelsets) {
 // In the coach's modes at 14.9 Hz the bogies yaw too, but the wheelsets move laterally against
 // what the yaw would carry them, twice as far relative to the frame: the primary lateral springs'
 // mode, named by the wheelsets' relative motion (each wheelset's relative energy alone is about
-// the bogie's with its carried share, so they count together against it). Each bogie's two
-// wheelsets move against each other, and the two bogies' modes, which the car body couples by
-// 1.2e-7 of their eigenvalue, are one frequency (solve::kRepeatedGap): the name says so.
+// the bogie's with its carried share, so they count together against it).
 TEST(ModeNames, WheelsetsMovingAgainstTheirYawingFrameNameTheWheelsets) {
   const LinearSystem system =
       assemble(load_vehicle(test::data_file("manchester_benchmark_coach_wheelsets.toml")), DofSet::all);
-  const auto at = [&](const Mode& m, const char* dof) { return m.shape(system.index_of(dof)); };
   int found = 0;
   for (const Mode& m : solve_modes(system).modes) {
     if (m.frequency_hz < 14.0 || m.frequency_hz > 16.0) continue;
-    const double yaw = at(m, "bogie1.yaw"), lateral = at(m, "wheelset1.lateral");
+    const double yaw = m.shape(system.index_of("bogie1.yaw")), lateral = m.shape(system.index_of("wheelset1.lateral"));
     if (std::abs(yaw) < 1e-3) continue;  // another bogie's mode
-    // The premise: wheelset1, 1.28 m ahead of bogie1's centre, moves against its carried motion,
-    // and against wheelset2, as wheelset3 against wheelset4.
+    // The premise: wheelset1, 1.28 m ahead of bogie1's centre, moves against its carried motion.
     EXPECT_LT(lateral * yaw, 0.0) << m.index;
-    EXPECT_LT(lateral * at(m, "wheelset2.lateral"), 0.0) << m.index;
-    EXPECT_LT(at(m, "wheelset3.lateral") * at(m, "wheelset4.lateral"), 0.0) << m.index;
-    EXPECT_TRUE(m.repeated) << m.index;
-    EXPECT_EQ(m.name, "wheelsets lateral, each bogie's pair in antiphase (repeated)") << m.index;
+    EXPECT_EQ(m.name, "wheelsets lateral, antiphase") << m.index;
     ++found;
   }
   EXPECT_EQ(found, 2);
-}
-
-// Four wheelsets yawing in their frames (the coach at 37.7 and 50.6 Hz, each a repeated pair:
-// one bogie's wheelsets, or the other's, or any mixture): "antiphase" alone would not say whether
-// a bogie's two wheelsets yaw against each other or one bogie's pair against the other's. The
-// name says it of each bogie's pair, read from the shape; which bogie moves with which is left
-// open, as the subspace leaves it.
-TEST(ModeNames, FourWheelsetsAreNamedByThePhaseOfEachBogiesPair) {
-  const LinearSystem system =
-      assemble(load_vehicle(test::data_file("manchester_benchmark_coach_wheelsets.toml")), DofSet::all);
-  const auto at = [&](const Mode& m, const char* dof) { return m.shape(system.index_of(dof)); };
-  int in_phase = 0, antiphase = 0;
-  for (const Mode& m : solve_modes(system).modes) {
-    if (m.name.rfind("wheelsets yaw", 0) != 0) continue;
-    EXPECT_TRUE(m.repeated) << m.index;
-    // The premise, from the shape: the pair of the bogie that moves more (the other may be at
-    // rest in this member of the subspace) yaws together or against itself.
-    const bool front = std::abs(at(m, "wheelset1.yaw")) > std::abs(at(m, "wheelset3.yaw"));
-    const double product = front ? at(m, "wheelset1.yaw") * at(m, "wheelset2.yaw") : at(m, "wheelset3.yaw") * at(m, "wheelset4.yaw");
-    ASSERT_NE(product, 0.0) << m.index;
-    EXPECT_EQ(m.name, product > 0.0 ? "wheelsets yaw, each bogie's pair in phase (repeated)"
-                                    : "wheelsets yaw, each bogie's pair in antiphase (repeated)")
-        << m.index;
-    ++(product > 0.0 ? in_phase : antiphase);
-  }
-  EXPECT_EQ(in_phase, 2);
-  EXPECT_EQ(antiphase, 2);
-}
-
-// The phase words of twins under two carriers, from their coordinates (solve::carried_twins_phase):
-// within each carrier, and between them for a mode of its own, the corresponding twins (from the
-// front) compared. Four wheelsets at x = ±8.22, ±10.78 m under bogie1 (x > 0) and bogie2.
-TEST(ModeNames, TheTwinsPhaseWithinAndBetweenTheirCarriers) {
-  std::vector<Body> bodies(6);
-  for (int b = 0; b < 6; ++b) bodies[b].name = b < 2 ? "bogie" + std::to_string(b + 1) : "wheelset" + std::to_string(b - 1);
-  const std::vector<double> x{10.78, 8.22, -8.22, -10.78};
-  const auto twins = [&](std::vector<double> amplitude) {
-    std::vector<solve::TwinMotion> t;
-    for (int w = 0; w < 4; ++w) t.push_back({w < 2 ? 0 : 1, x[w], amplitude[w], amplitude[w] * amplitude[w], true});
-    return t;
-  };
-  const auto words = [&](std::vector<double> amplitude, bool repeated) {
-    return solve::carried_twins_phase(twins(amplitude), 0, bodies, "wheelset", repeated);
-  };
-  EXPECT_EQ(words({1, -1, 1, -1}, false), "each bogie's pair in antiphase, bogies in phase");
-  EXPECT_EQ(words({1, -1, -1, 1}, false), "each bogie's pair in antiphase, bogies in antiphase");
-  EXPECT_EQ(words({1, 1, -1, -1}, false), "each bogie's pair in phase, bogies in antiphase");
-  EXPECT_EQ(words({1, 1, 1, 1}, false), "each bogie's pair in phase, bogies in phase");
-  EXPECT_EQ(words({1, -1, -1, 1}, true), "each bogie's pair in antiphase");  // the subspace: no phase between
-  // Only bogie1's pair moves, in a mode of its own: named; the pairs differ: each named.
-  std::vector<solve::TwinMotion> t = twins({1, -1, 0, 0});
-  t[2].shares = t[3].shares = false;
-  EXPECT_EQ(solve::carried_twins_phase(t, 0, bodies, "wheelset", false), "bogie1's pair in antiphase");
-  EXPECT_EQ(words({1, -1, 1, 1}, false), "bogie1's pair in antiphase, bogie2's pair in phase, bogies in phase");
-  // Not grouped so: all under one carrier, or under none (the plain phase says all).
-  for (auto& w : t) w.carrier = 0;
-  EXPECT_EQ(solve::carried_twins_phase(t, 0, bodies, "wheelset", false), "");
-  for (auto& w : t) w.carrier = -1;
-  EXPECT_EQ(solve::carried_twins_phase(t, 0, bodies, "wheelset", false), "");
-}
-
-// Which frequencies are one (solve::kRepeatedGap, 1e-4 of λ): the coach on wheelsets' pairs of
-// each bogie on its own, which the car body hardly couples, are repeated (14.90 Hz: 1.2e-7 apart,
-// 16.36 Hz: 4.7e-5, 50.55 Hz: 1.6e-9); the bogies' bounce, which it couples (7.47 and 7.48 Hz,
-// 1.7e-3 apart), are two modes, in phase and in antiphase.
-TEST(ModeNames, NearlyEqualFrequenciesOfEachBogieOnItsOwnAreOne) {
-  const ModalResult r =
-      solve_modes(assemble(load_vehicle(test::data_file("manchester_benchmark_coach_wheelsets.toml")), DofSet::all));
-  int repeated = 0;
-  for (const Mode& m : r.modes) {
-    if (m.kind != ModeKind::oscillatory) continue;
-    for (double f : {14.8975, 16.358, 50.5537})
-      if (std::abs(m.frequency_hz - f) < 1e-3) {
-        EXPECT_TRUE(m.repeated) << m.index << " " << m.frequency_hz;
-        EXPECT_NE(m.name.find("(repeated)"), std::string::npos) << m.name;
-        EXPECT_FALSE(m.centre.has_value()) << m.name;
-        ++repeated;
-      }
-    if (std::abs(m.frequency_hz - 7.47) < 0.01) {
-      EXPECT_FALSE(m.repeated) << m.index << " " << m.frequency_hz;
-      EXPECT_EQ(m.name.rfind("bogies bounce, ", 0), 0u) << m.name;
-    }
-  }
-  EXPECT_EQ(repeated, 6);
 }
 
 // In the coach's modes at 16.36 Hz each bogie frame sways one way and its wheelsets the other

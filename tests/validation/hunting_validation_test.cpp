@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <complex>
 #include <limits>
 #include <string>
 #include <vector>
@@ -500,26 +499,6 @@ TEST(HuntingValidation, SymmetricPairBranchesAreInPhaseOrAntiPhase) {
       EXPECT_LT(std::abs(all(best) - l), 1e-9 * scale) << "V = " << speed << ", λ = " << l;
     }
   }
-}
-
-// A root that does not hunt is named as the undamped modes are (stability::root_name): the coach
-// on wheelsets' undamped mode of each bogie yawing with its wheelsets carried (0.85 Hz, `modes`'
-// "bogies yaw, antiphase"), given as a root's shape, names the bogies, although the wheelsets
-// move more per unit mass. Taken as an oscillating root, its wheelsets' lateral motion and yaw
-// are hunting, which they name, their phase said per bogie (four wheelsets under two bogies).
-TEST(HuntingValidation, ARootThatDoesNotHuntIsNamedAsTheModesAre) {
-  const LinearSystem system = assemble(load_vehicle(data_file("manchester_benchmark_coach_wheelsets.toml")), DofSet::all);
-  const ModalResult modes = solve_modes(system);
-  const Mode& yaw = modes.modes.at(2);
-  ASSERT_EQ(yaw.name, "bogies yaw, antiphase");
-  const Eigen::VectorXd weighted = system.mass.diagonal().cwiseSqrt().cwiseProduct(yaw.shape);
-  const Eigen::VectorXcd shape = weighted.cast<std::complex<double>>();
-  EXPECT_EQ(stability::root_name(system, shape, false), "bogie1+bogie2 yaw, antiphase");
-  EXPECT_EQ(stability::root_name(system, shape, true),
-            "wheelset1+wheelset2+wheelset3+wheelset4 hunting, each bogie's pair in antiphase, bogies in antiphase");
-  // A root with a twin of its value: the phase between the bogies is not the root's to say.
-  EXPECT_EQ(stability::root_name(system, shape, true, true),
-            "wheelset1+wheelset2+wheelset3+wheelset4 hunting, each bogie's pair in antiphase");
 }
 
 // ---------------------------------------------------------------------------------------------
