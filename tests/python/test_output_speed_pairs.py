@@ -14,7 +14,7 @@ import pytest
 from railmodal_paths import SOURCE
 
 # Speed differences and tolerances, not speeds the vehicle runs at: m/s alone (docs/input.md,
-# "Changes to outputs, 2026-11-28").
+# "Changes to outputs, 2026-11-27, afternoon").
 NOT_SPEEDS = {"tolerance_m_s", "hold_margin_m_s", "convergence_difference_m_s"}
 COMMANDS = ["compare", "hunting", "stability", "critical-speed", "ride"]
 
