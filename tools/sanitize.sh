@@ -5,12 +5,8 @@
 # FUZZ_MAX_LEN the largest input (default 20000 bytes).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash tools/install_dependencies.sh
-# clang and its runtime (libFuzzer, the sanitisers).
-for p in clang libclang-rt-14-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" ||
-    { export DEBIAN_FRONTEND=noninteractive; apt-get update -qq; apt-get install -y -qq --no-install-recommends clang libclang-rt-14-dev >/dev/null; break; }
-done
+# With clang and its runtime (libFuzzer, the sanitisers), in the same apt run.
+bash tools/install_dependencies.sh clang libclang-rt-14-dev
 jobs="$(nproc)"
 # Each stage's processor time (user and system, children included) and wall time, for the
 # figures in docs/architecture.md, "Build".

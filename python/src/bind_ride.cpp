@@ -22,7 +22,6 @@
 namespace railmodal::python {
 namespace {
 
-constexpr auto kView = py::return_value_policy::reference_internal;
 constexpr double kMissing = std::numeric_limits<double>::quiet_NaN();  // an absent value in an array
 
 TrackIrregularity irregularity_argument(const std::string& word) {

@@ -17,8 +17,6 @@
 namespace railmodal::python {
 namespace {
 
-constexpr auto kView = py::return_value_policy::reference_internal;
-
 // The scene's vehicle: `vehicle` when given (a file or a Vehicle), else the scene's own file, as
 // the command line's --vehicle wins over the scene's key.
 Vehicle scene_vehicle(const Scene& scene, const py::object& vehicle) {

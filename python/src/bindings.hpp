@@ -11,6 +11,10 @@
 
 namespace railmodal::python {
 
+/// The policy of a property returning a reference to an array its object holds: a NumPy view of
+/// it that keeps the object alive, not a copy (bind_simulation.cpp, bind_ride.cpp).
+inline constexpr auto kView = pybind11::return_value_policy::reference_internal;
+
 void bind_errors(pybind11::module_& m);      // InputError, NumericalError → Python exceptions; InputWarning
 void bind_model(pybind11::module_& m);       // vehicles (file, dict), assemble, Matrix Market
 void bind_modes(pybind11::module_& m);       // undamped and damped modes
