@@ -9,8 +9,10 @@
 #include "input/spring_reader.hpp"
 #include "input/table_reader.hpp"
 #include "input/templates.hpp"
+#include "model/assembly.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/input.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
@@ -67,6 +69,38 @@ void read_wheelsets(TableReader& root, std::vector<TableReader>& body_tables, Ve
   }
 }
 
+// A track element whose static load is a pull: its wheel would lift off the rail, which the
+// linear model cannot show (it holds the wheel down, with the spring in tension, and the modes
+// come out as if nothing were wrong). The loads are the assembly's (model::element_static_loads),
+// so the check and the model summary of `critical-speed` agree. The two-axle template refuses the
+// same vehicle by its geometry (a CG outside the wheelbase); the general form has no wheelbase,
+// so the statics decide. A vehicle the assembly refuses (no equilibrium) is left to it and its
+// message. Tolerance: the statics are solved to 1e-8 of the weights (assembly.cpp); a pull below
+// that is round-off of a load that is zero (an element exactly under a support line).
+void refuse_lifting_wheels(std::vector<TableReader>& element_tables, const Vehicle& v) {
+  if (std::none_of(v.elements.begin(), v.elements.end(),
+                   [](const Element& e) { return e.lower.empty() && !e.vertical_stages.empty(); }))
+    return;
+  std::vector<double> loads;
+  try {
+    loads = model::element_static_loads(v);
+  } catch (const std::exception&) {
+    return;
+  }
+  double weight = 0.0;
+  for (const Body& b : v.bodies) weight += b.mass * v.gravity;
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const Element& e = v.elements[k];
+    if (!e.lower.empty() || !(loads[k] < -1e-8 * weight)) continue;
+    element_tables[k].fail(
+        "point", "element '" + e.name + "' stands on the track and carries a static load of " +
+                     shortest_text(loads[k] / 1e3, 4) +
+                     " kN, a pull: its wheel lifts off the rail, which the linear model cannot represent. The "
+                     "centre of gravity lies outside the track elements' support; move the points or the "
+                     "centre of gravity (the static loads are in `critical-speed`'s model summary)");
+  }
+}
+
 void read_general(TableReader& root, Vehicle* v) {
   std::set<std::string> names;
   std::vector<TableReader> body_tables = root.tables("body");
@@ -97,7 +131,8 @@ void read_general(TableReader& root, Vehicle* v) {
   }
   read_wheelsets(root, body_tables, v);
   if (!root.has("element")) return;
-  for (auto& t : root.tables("element")) {
+  std::vector<TableReader> element_tables = root.tables("element");
+  for (auto& t : element_tables) {
     Element e;
     e.name = t.optional_string("name").value_or("element");
     e.upper = t.string("upper");
@@ -127,6 +162,7 @@ void read_general(TableReader& root, Vehicle* v) {
     v->elements.push_back(e);
   }
   for (size_t b = 0; b < v->bodies.size(); ++b) check_bending_reach(body_tables[b], v->bodies[b], v->elements);
+  refuse_lifting_wheels(element_tables, *v);
 }
 
 }  // namespace
