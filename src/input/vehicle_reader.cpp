@@ -21,6 +21,14 @@ namespace {
 
 Eigen::Vector3d to_vector(const std::array<double, 3>& p) { return {p[0], p[1], p[2]}; }
 
+// A point of the general form, warned where a coordinate is beyond a wagon's scale (a bare
+// "-4000" meant in mm is 4000 m: a pitch of 1153 Hz, the user audit of 2026-11-28b).
+std::array<double, 3> read_point(TableReader& t, const std::string& key) {
+  const std::array<double, 3> p = t.point(key);
+  warn_implausible_point(t, key, p);
+  return p;
+}
+
 // `[[wheelset]]`: a body on the rails. Its bounce, roll and pitch are held (they follow the
 // rails in the linear model) and its longitudinal motion stays held; its lateral and yaw
 // motions are what the contact acts on, so they must be free.
@@ -111,8 +119,8 @@ void read_general(TableReader& root, Vehicle* v) {
     if (!names.insert(b.name).second) t.fail("name", "a body named '" + b.name + "' already exists");
     b.mass = read_mass(t, v->gravity);
     b.inertia = read_inertia(t, b.mass);
-    b.centre_of_gravity = to_vector(t.point("centre_of_gravity"));
-    b.reference_point = t.has("reference_point") ? to_vector(t.point("reference_point")) : b.centre_of_gravity;
+    b.centre_of_gravity = to_vector(read_point(t, "centre_of_gravity"));
+    b.reference_point = t.has("reference_point") ? to_vector(read_point(t, "reference_point")) : b.centre_of_gravity;
     if (t.has("held"))
       for (const auto& word : t.strings("held")) {
         const auto m = motion_from_string(word);
@@ -141,7 +149,7 @@ void read_general(TableReader& root, Vehicle* v) {
     if (e.lower == "track") e.lower.clear();
     if (!e.lower.empty() && !names.count(e.lower)) t.fail("lower", "no body is named '" + e.lower + "' (or write \"track\")");
     if (e.lower == e.upper) t.fail("lower", "an element cannot connect a body to itself");
-    e.point = to_vector(t.point("point"));
+    e.point = to_vector(read_point(t, "point"));
     const auto load = t.optional_positive("load", Quantity::force);
     e.vertical_stages = read_spring_stages(t, "vertical", load);
     // Neither the friction criterion nor the simulation models two leaves with friction in series
