@@ -104,8 +104,9 @@ std::vector<std::string> damped_mode_notes(const LinearSystem& system) {
   // Friction is no viscous damping: a wagon damped by friction alone shows ζ = 0 here, which
   // without this note reads as an undamped wagon (the user audit of 2026-11-28b).
   if (const std::string friction = friction_text(system.vehicle); !friction.empty())
-    notes.push_back("friction: not in C, so ζ is that of the viscous dampers alone (0 without any); the " + friction +
-                    " acts in `critical-speed` (whether it stops a resonance), `simulate` and `ride` (docs/input.md, "
+    notes.push_back("friction: not in C, so ζ is that of the viscous dampers alone (0 without any); the vehicle's "
+                    "friction (" + friction +
+                    ") acts in `critical-speed` (whether it stops a resonance), `simulate` and `ride` (docs/input.md, "
                     "\"Friction dampers\")");
   return notes;
 }
