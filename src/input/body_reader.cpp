@@ -17,7 +17,11 @@ double read_mass(TableReader& t, double gravity) {
   }
   if (t.has("mass") == t.has("weight"))
     t.fail("mass", t.has("mass") ? "give mass or weight, not both" : "missing: give mass (\"34 t\") or weight (\"34000 kgf\")");
-  if (t.has("mass")) return t.positive("mass", Quantity::mass);
+  if (t.has("mass")) {
+    const double mass = t.positive("mass", Quantity::mass);
+    warn_implausible_mass(t, "mass", mass);  // a bare 42.2 meant in tonnes: 42.2 kg
+    return mass;
+  }
   const double mass = t.positive("weight", Quantity::force) / gravity;  // the book's m = P/g
   if (!within_magnitudes(mass)) t.fail("weight", "divided by the gravity gives a mass: " + magnitude_complaint(mass));
   return mass;

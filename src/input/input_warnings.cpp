@@ -58,26 +58,78 @@ void warn_at(TableReader& t, const std::string& key, const std::string& message)
   warn(t.file(), at.line, at.column, "key '" + t.key_path(key) + "': " + message);
 }
 
-void warn_implausible_length(TableReader& t, const std::string& key, double si, const LengthBand& band) {
-  if (!collected_warnings || si == 0.0 || (std::abs(si) >= band.low && std::abs(si) <= band.high)) return;
-  const WrittenLength w = written_length(t.raw(key));
-  // The unit that puts the written number inside the band, nearest its middle (in decades).
-  static const std::pair<const char*, double> kUnits[] = {{"mm", 1e-3}, {"cm", 1e-2}, {"m", 1.0}};
+namespace {
+
+// A unit a written number may have been meant in, and its SI factor.
+struct UnitScale {
+  const char* unit;
+  double factor;
+};
+constexpr UnitScale kLengthUnits[] = {{"mm", 1e-3}, {"cm", 1e-2}, {"m", 1.0}};
+constexpr UnitScale kMassUnits[] = {{"kg", 1.0}, {"t", 1e3}};
+
+// What warn_outside says of a value outside its band.
+struct Band {
+  double low;           // SI; a value inside [low, high] by magnitude is plausible
+  double high;
+  const char* what;     // "a wagon's dimension (...)"
+  std::string limits;   // "1 mm to 50 m"
+  const char* si_unit;  // what a bare number is read in: "m", "kg"
+};
+
+// "key 'k': [label ]read as 8000 m (a bare number is SI), far outside <what>; warned outside
+// <limits>: did you mean "8000 mm"?" for the value `written` read as `si`, the suggested unit the
+// one (of `units`) that puts the written number inside the band nearest its middle in decades.
+template <size_t N>
+void warn_outside(TableReader& t, const std::string& key, const std::string& label, const toml::value& written,
+                  const Band& band, const UnitScale (&units)[N]) {
+  const WrittenLength w = written_length(written);
   const double middle = std::log10(std::sqrt(band.low * band.high));
   std::string likely;
   double best = 1e300;
-  for (const auto& [unit, scale] : kUnits) {
-    const double value = std::abs(w.number) * scale;
-    if (unit == w.unit || (w.unit.empty() && scale == 1.0) || value < band.low || value > band.high) continue;
+  for (const UnitScale& u : units) {
+    const double value = std::abs(w.number) * u.factor;
+    if (u.unit == w.unit || (w.unit.empty() && u.factor == 1.0) || value < band.low || value > band.high) continue;
     const double distance = std::abs(std::log10(value) - middle);
-    if (distance < best) best = distance, likely = unit;
+    if (distance < best) best = distance, likely = u.unit;
   }
-  const std::string read_as = w.unit.empty() ? shortest_text(w.number) + " m (a bare number is SI)"
+  const std::string read_as = w.unit.empty() ? shortest_text(w.number) + " " + band.si_unit + " (a bare number is SI)"
                                              : shortest_text(w.number) + " " + w.unit;
-  std::string message = "read as " + read_as + ", far outside " + band.what + "; warned outside " +
-                        shortest_text(band.low * 1e3) + " mm to " + shortest_text(band.high) + " m";
+  std::string message = label + "read as " + read_as + ", far outside " + band.what + "; warned outside " + band.limits;
   if (!likely.empty()) message += ": did you mean \"" + shortest_text(w.number) + " " + likely + "\"?";
   warn_at(t, key, message);
+}
+
+}  // namespace
+
+void warn_implausible_length(TableReader& t, const std::string& key, double si, const LengthBand& band) {
+  if (!collected_warnings || si == 0.0 || (std::abs(si) >= band.low && std::abs(si) <= band.high)) return;
+  warn_outside(t, key, "", t.raw(key),
+               {band.low, band.high, band.what,
+                shortest_text(band.low * 1e3) + " mm to " + shortest_text(band.high) + " m", "m"},
+               kLengthUnits);
+}
+
+void warn_implausible_mass(TableReader& t, const std::string& key, double si) {
+  const MassBand& band = kBodyMass;
+  if (!collected_warnings || (si >= band.low && si <= band.high)) return;
+  warn_outside(t, key, "", t.raw(key),
+               {band.low, band.high, band.what,
+                shortest_text(band.low) + " kg to " + shortest_text(band.high / 1e3) + " t", "kg"},
+               kMassUnits);
+}
+
+void warn_implausible_point(TableReader& t, const std::string& key, const std::array<double, 3>& point) {
+  if (!collected_warnings) return;
+  static const char* const kAxes[] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    // A coordinate may be zero or small (a point on the centre line); only one beyond the
+    // wagon's scale is warned, y against half the widest body, x and z against its length.
+    const LengthBand& band = i == 1 ? kLateralOffset : kBodyLength;
+    if (std::abs(point[i]) <= band.high) continue;
+    warn_outside(t, key, std::string(kAxes[i]) + " ", t.raw(key).as_array()[static_cast<size_t>(i)],
+                 {band.low, band.high, band.what, "±" + shortest_text(band.high) + " m", "m"}, kLengthUnits);
+  }
 }
 
 }  // namespace railmodal::input

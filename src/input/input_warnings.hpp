@@ -3,6 +3,7 @@
 // inputs that cannot be meant; a warning changes no result and no output file.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -45,9 +46,36 @@ inline constexpr LengthBand kSpringLength{0.001, 5.0, "a spring's dimension (mil
 /// bodies are at most about 27 m long (bogie centres 2l3 = 13.8–19 m).
 inline constexpr LengthBand kBodyLength{0.001, 50.0, "a wagon's dimension (a body is at most about 27 m long)"};
 
+/// A lateral spacing (of springs, hangers or dampers across the track): the track gauge is
+/// 1.435 m (1.52–1.676 m on broad gauges) and the widest bodies about 3.5 m (the 1520 mm
+/// network's gauge T allows 3.75 m), so a spacing beyond 5 m is no lateral spacing (a "20 m" the
+/// user audit of 2026-11-28b met passed the wagon band).
+inline constexpr LengthBand kLateralSpacing{0.001, 5.0,
+                                            "a lateral spacing (the gauge is 1.435 m, the widest bodies about 3.5 m)"};
+/// A point's lateral coordinate y: half the lateral spacing's band.
+inline constexpr LengthBand kLateralOffset{0.001, 2.5, "a point's distance from the track's centre line "
+                                                       "(half the widest body, about 1.75 m)"};
+
+/// The band of a body's mass accepted without a warning, kg: from an axlebox or a bogie frame of
+/// the general form (about 100 kg to 3 t) to a loaded wagon (the bogie digest's up to 90 t) or a
+/// locomotive's body (about 130 t), with margin either way. A wagon body of 42 kg is a mass meant in
+/// tonnes (the user audit of 2026-11-28b: "mass = 42.2", a 54 Hz bounce).
+struct MassBand {
+  double low;
+  double high;
+  const char* what;
+};
+inline constexpr MassBand kBodyMass{50.0, 1.0e6, "a body's mass (an axlebox of about 100 kg to a locomotive's 130 t)"};
+
 /// Warns when the length `si` read at `key` of `t` is non-zero and outside `band`: the value as
 /// written, the unit it was read in, and the unit that puts it inside the band (a bare 734 for
 /// a hanger: "734 mm"?).
 void warn_implausible_length(TableReader& t, const std::string& key, double si, const LengthBand& band);
+/// The same for a body's mass read at `key` (kBodyMass; "did you mean \"42.2 t\"?").
+void warn_implausible_mass(TableReader& t, const std::string& key, double si);
+/// The same for each coordinate of the point read at `key`: x and z beyond kBodyLength's 50 m,
+/// y beyond kLateralOffset's 2.5 m ("x read as -4000 m … did you mean \"-4000 mm\"?"). A
+/// coordinate may be small or zero, so only the upper bound is warned.
+void warn_implausible_point(TableReader& t, const std::string& key, const std::array<double, 3>& point);
 
 }  // namespace railmodal::input

@@ -20,6 +20,13 @@ double wagon_dimension(TableReader& t, const std::string& key, bool positive = t
   return value;
 }
 
+// A spacing across the track (springs, hangers, dampers), warned beyond the widest body.
+double lateral_spacing(TableReader& t, const std::string& key) {
+  const double value = t.positive(key, Quantity::length);
+  warn_implausible_length(t, key, value, kLateralSpacing);
+  return value;
+}
+
 std::optional<double> optional_wagon_dimension(TableReader& t, const std::string& key) {
   if (!t.has(key)) return std::nullopt;
   return wagon_dimension(t, key, false);
@@ -148,7 +155,7 @@ struct Secondary {
 
 Secondary read_secondary(TableReader& sec) {
   Secondary s;
-  s.half_spacing = wagon_dimension(sec, "spacing") / 2.0;
+  s.half_spacing = lateral_spacing(sec, "spacing") / 2.0;
   if (sec.has("hanger")) s.hanger = read_hanger(sec);
   s.anti_roll_bar = sec.optional_positive("anti_roll_bar", Quantity::rotational_stiffness, true).value_or(0.0);
   if (sec.has("yaw_damper")) {
@@ -156,7 +163,7 @@ Secondary read_secondary(TableReader& sec) {
     YawDamper& d = s.yaw_damper.emplace();
     d.damping = t.positive("damping", Quantity::damping);
     d.series_stiffness = t.positive("series_stiffness", Quantity::stiffness);
-    d.half_spacing = wagon_dimension(t, "spacing") / 2.0;
+    d.half_spacing = lateral_spacing(t, "spacing") / 2.0;
     d.height = optional_wagon_dimension(t, "height");
     t.finish();
   }
@@ -300,7 +307,7 @@ void read_two_axle(TableReader& head, TableReader& root, Vehicle* v) {
                         key + " = { stiffness = \"3000 kN/m\" }");
       }
   const double a1 = wagon_dimension(s, "wheelbase") / 2.0;
-  const double b1 = wagon_dimension(s, "spring_spacing") / 2.0;
+  const double b1 = lateral_spacing(s, "spring_spacing") / 2.0;
   if (std::abs(offset) >= a1) root.fail("body", "cg_offset puts the CG outside the wheelbase");
   if (!body.longitudinal_free && s.has("longitudinal_damping"))
     s.fail("longitudinal_damping",
@@ -367,7 +374,7 @@ void read_bogie(TableReader& head, TableReader& root, Vehicle* v) {
   double b2 = 0.0;
   if (sprung_bogies) {
     pri.emplace(root.table("primary"));
-    b2 = wagon_dimension(*pri, "spacing") / 2.0;
+    b2 = lateral_spacing(*pri, "spacing") / 2.0;
   } else if (root.has("primary")) {
     root.fail("primary", "a single-suspension wagon has no primary springs (its bogie frames are unsprung)");
   }

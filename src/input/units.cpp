@@ -251,6 +251,14 @@ double parse_quantity(const std::string& text, Quantity expected) {
                                 example_of(expected) + ", got \"" + text + "\"");
   if (!std::isfinite(value))
     throw std::invalid_argument("the value \"" + text + "\" is not a finite number");
+  // "1,2 MN/m": a decimal comma (the user audit of 2026-11-28b), which the unit reader would
+  // report as the unit ',2 MN/m'. Said as what it most likely is, with the value rewritten.
+  if (*end == ',' && std::isdigit(static_cast<unsigned char>(end[1]))) {
+    std::string with_point(start);
+    with_point[static_cast<size_t>(end - start)] = '.';
+    throw std::invalid_argument("cannot read \"" + text + "\": a decimal comma? write a decimal point, \"" +
+                                with_point + "\"");
+  }
   const std::string unit_text(end);
   const auto factors = parse_unit_expression(unit_text);
   if (factors.empty()) return value;  // a bare number is SI

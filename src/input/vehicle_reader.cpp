@@ -9,8 +9,10 @@
 #include "input/spring_reader.hpp"
 #include "input/table_reader.hpp"
 #include "input/templates.hpp"
+#include "model/assembly.hpp"
 #include "railmodal/errors.hpp"
 #include "railmodal/input.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 
@@ -18,6 +20,14 @@ namespace input {
 namespace {
 
 Eigen::Vector3d to_vector(const std::array<double, 3>& p) { return {p[0], p[1], p[2]}; }
+
+// A point of the general form, warned where a coordinate is beyond a wagon's scale (a bare
+// "-4000" meant in mm is 4000 m: a pitch of 1153 Hz, the user audit of 2026-11-28b).
+std::array<double, 3> read_point(TableReader& t, const std::string& key) {
+  const std::array<double, 3> p = t.point(key);
+  warn_implausible_point(t, key, p);
+  return p;
+}
 
 // `[[wheelset]]`: a body on the rails. Its bounce, roll and pitch are held (they follow the
 // rails in the linear model) and its longitudinal motion stays held; its lateral and yaw
@@ -67,6 +77,38 @@ void read_wheelsets(TableReader& root, std::vector<TableReader>& body_tables, Ve
   }
 }
 
+// A track element whose static load is a pull: its wheel would lift off the rail, which the
+// linear model cannot show (it holds the wheel down, with the spring in tension, and the modes
+// come out as if nothing were wrong). The loads are the assembly's (model::element_static_loads),
+// so the check and the model summary of `critical-speed` agree. The two-axle template refuses the
+// same vehicle by its geometry (a CG outside the wheelbase); the general form has no wheelbase,
+// so the statics decide. A vehicle the assembly refuses (no equilibrium) is left to it and its
+// message. Tolerance: the statics are solved to 1e-8 of the weights (assembly.cpp); a pull below
+// that is round-off of a load that is zero (an element exactly under a support line).
+void refuse_lifting_wheels(std::vector<TableReader>& element_tables, const Vehicle& v) {
+  if (std::none_of(v.elements.begin(), v.elements.end(),
+                   [](const Element& e) { return e.lower.empty() && !e.vertical_stages.empty(); }))
+    return;
+  std::vector<double> loads;
+  try {
+    loads = model::element_static_loads(v);
+  } catch (const std::exception&) {
+    return;
+  }
+  double weight = 0.0;
+  for (const Body& b : v.bodies) weight += b.mass * v.gravity;
+  for (size_t k = 0; k < v.elements.size(); ++k) {
+    const Element& e = v.elements[k];
+    if (!e.lower.empty() || !(loads[k] < -1e-8 * weight)) continue;
+    element_tables[k].fail(
+        "point", "element '" + e.name + "' stands on the track and carries a static load of " +
+                     shortest_text(loads[k] / 1e3, 4) +
+                     " kN, a pull: its wheel lifts off the rail, which the linear model cannot represent. The "
+                     "centre of gravity lies outside the track elements' support; move the points or the "
+                     "centre of gravity (the static loads are in `critical-speed`'s model summary)");
+  }
+}
+
 void read_general(TableReader& root, Vehicle* v) {
   std::set<std::string> names;
   std::vector<TableReader> body_tables = root.tables("body");
@@ -77,8 +119,8 @@ void read_general(TableReader& root, Vehicle* v) {
     if (!names.insert(b.name).second) t.fail("name", "a body named '" + b.name + "' already exists");
     b.mass = read_mass(t, v->gravity);
     b.inertia = read_inertia(t, b.mass);
-    b.centre_of_gravity = to_vector(t.point("centre_of_gravity"));
-    b.reference_point = t.has("reference_point") ? to_vector(t.point("reference_point")) : b.centre_of_gravity;
+    b.centre_of_gravity = to_vector(read_point(t, "centre_of_gravity"));
+    b.reference_point = t.has("reference_point") ? to_vector(read_point(t, "reference_point")) : b.centre_of_gravity;
     if (t.has("held"))
       for (const auto& word : t.strings("held")) {
         const auto m = motion_from_string(word);
@@ -97,7 +139,8 @@ void read_general(TableReader& root, Vehicle* v) {
   }
   read_wheelsets(root, body_tables, v);
   if (!root.has("element")) return;
-  for (auto& t : root.tables("element")) {
+  std::vector<TableReader> element_tables = root.tables("element");
+  for (auto& t : element_tables) {
     Element e;
     e.name = t.optional_string("name").value_or("element");
     e.upper = t.string("upper");
@@ -106,7 +149,7 @@ void read_general(TableReader& root, Vehicle* v) {
     if (e.lower == "track") e.lower.clear();
     if (!e.lower.empty() && !names.count(e.lower)) t.fail("lower", "no body is named '" + e.lower + "' (or write \"track\")");
     if (e.lower == e.upper) t.fail("lower", "an element cannot connect a body to itself");
-    e.point = to_vector(t.point("point"));
+    e.point = to_vector(read_point(t, "point"));
     const auto load = t.optional_positive("load", Quantity::force);
     e.vertical_stages = read_spring_stages(t, "vertical", load);
     // Neither the friction criterion nor the simulation models two leaves with friction in series
@@ -127,6 +170,7 @@ void read_general(TableReader& root, Vehicle* v) {
     v->elements.push_back(e);
   }
   for (size_t b = 0; b < v->bodies.size(); ++b) check_bending_reach(body_tables[b], v->bodies[b], v->elements);
+  refuse_lifting_wheels(element_tables, *v);
 }
 
 }  // namespace

@@ -951,6 +951,10 @@ LinearSystem model::assemble_stiffness(const Vehicle& vehicle, DofSet set) {
   return stiffness_of(vehicle, assemble_full(vehicle, false), set);
 }
 
+std::vector<double> model::element_static_loads(const Vehicle& vehicle) {
+  return assemble_full(vehicle, false).loads;
+}
+
 model::SystemAndStiffness model::assemble_with_stiffness(const Vehicle& vehicle, DofSet set, DofSet stiffness_set) {
   const FullAssembly a = assemble_full(vehicle, true);
   return {system_of(vehicle, a, set), stiffness_of(vehicle, a, stiffness_set)};

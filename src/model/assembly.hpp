@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "railmodal/linear_system.hpp"
 
@@ -13,6 +14,12 @@ namespace railmodal::model {
 /// filled, each bit for bit as assemble gives it (the same sums in the same order); every
 /// other member empty. Throws as assemble does.
 LinearSystem assemble_stiffness(const Vehicle& vehicle, DofSet set);
+
+/// Each element's static vertical load under gravity, N, compression positive: the
+/// element_loads of assemble(vehicle, set) for any set (the statics are solved on every free
+/// coordinate), without the damping, track inputs and reduced matrices. Throws as assemble
+/// does. What the reader checks a general vehicle's wheels with (a track element in tension).
+std::vector<double> element_static_loads(const Vehicle& vehicle);
 
 /// assemble(vehicle, set) and assemble_stiffness(vehicle, stiffness_set), bit for bit, from one
 /// assembly of the full matrices (a study's variant: the vertical system it sweeps and the
