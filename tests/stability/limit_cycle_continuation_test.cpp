@@ -100,6 +100,27 @@ TEST(LimitCycleContinuation, SubcriticalNormalFormBranchAndFold) {
   EXPECT_EQ(stability::lowest_exchange_turn(mu, stable), std::optional<std::size_t>(b.fold_orbits[0]));
 }
 
+// The progress a long continuation reports (`hunting --continuation` shows it on a terminal):
+// once per orbit and once at the end, never going back, below 1 until the branch ends and 1
+// then. On the subcritical normal form the branch ends when its amplitude passes the limit: the
+// last orbit's estimate is then at its ceiling below 1 (0.99), above 0.9.
+TEST(LimitCycleContinuation, ProgressOncePerOrbitNeverBackOneAtTheEnd) {
+  const stability::OrbitProblem p = normal_form(2.0, [](double mu, double rho) { return mu + rho - rho * rho; });
+  const auto hopf = stability::find_hopf(p.field, 2, -1.0, 1.0);
+  ASSERT_TRUE(hopf.has_value());
+  stability::ContinuationSettings s = normal_form_settings(0.5);  // short of the fold: fewer orbits
+  std::vector<double> shown;
+  s.progress = [&shown](double fraction) { shown.push_back(fraction); };
+  const stability::OrbitBranch b = stability::continue_from_hopf(p, *hopf, s);
+  ASSERT_EQ(b.end, stability::BranchEnd::amplitude_reached);
+  ASSERT_EQ(shown.size(), b.orbits.size() + 1);
+  EXPECT_GT(shown.front(), 0.0);
+  for (std::size_t k = 1; k < shown.size(); ++k) EXPECT_GE(shown[k], shown[k - 1]) << "after orbit " << k;
+  EXPECT_LT(shown[shown.size() - 2], 1.0);
+  EXPECT_GT(shown[shown.size() - 2], 0.9);
+  EXPECT_EQ(shown.back(), 1.0);
+}
+
 // The head of the Manchester coach's branch (user audit 2026-11-28, F1b: speeds in km/h and the
 // largest Floquet |μ| as `hunting --continuation` printed them): a wiggle at 351.89/351.92 km/h
 // with unstable orbits on both sides, then the true turn at 291.257 km/h into the stable cycles.
