@@ -134,6 +134,8 @@ def test_study():
                             (results.deflections(), "dynamic_deflections", "study deflections")):
         objects = [o for v in written.values() for o in v[key]]
         assert only_in_python(rows, objects) == ONLY_IN_PYTHON[name]
+        if key == "modes":
+            continue
         # A source by its number from 1 in both (compare's JSON wrote its index from 0 as `source`).
         for variant, theirs in written.items():
             assert [r["source_index"] for r in rows if r["variant"] == variant] == \
