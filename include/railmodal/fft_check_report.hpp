@@ -27,11 +27,13 @@ namespace railmodal {
 ///   whether the peak lies within it, or why there is none), below a header that warns of each
 ///   part of the vehicle the scene's effects leave out (unsimulated_parts), and, for a nonlinear scene, the
 ///   half periods between the turning points and between passes through the static position.
-///   csv: one row per check: mode, mode_name, dof, modal [Hz], peak [Hz], rel_error,
+///   csv: one row per check: mode, mode_name, dof, undamped_frequency [Hz],
+///   damped_frequency [Hz] (the frequency checked), damping_ratio, peak_frequency [Hz], rel_error,
 ///   resolution [Hz], within_resolution, excited, modal_amplitude_ratio, tolerance, outcome
 ///   (passed, failed, not excited, not resolved, no line), checked, passed, and the whole
 ///   record's verdict (passed, FAILED, not checked) on every row (no peak: blank).
-///   json: {"scene", "checks": [{the csv's columns, keyed mode_name, modal_hz, peak_hz,
+///   json: {"scene", "checks": [{the csv's columns, keyed mode_name, undamped_frequency_hz,
+///   damped_frequency_hz, peak_frequency_hz,
 ///   resolution_hz, …; no peak: null}], "nonlinear", "compared", "checked" (false: nothing
 ///   could be checked), "checks_made", "checks_failed", "passed", "verdict" (as the csv's),
 ///   "verdict_text" (fft_check_verdict), "unsimulated_parts" (unsimulated_parts' sentences; [] when

@@ -18,6 +18,7 @@
 //   }
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +47,11 @@ struct LimitCycleOptions {
   double amplitude_unit = 1e-3;
   double speed_unit = 1.0;
   double max_step = 1.0;
+  /// Called with the fraction done (0…1) after each orbit of the branch, and 1 when it ends:
+  /// an estimate from the orbits against max_points and the amplitude against max_amplitude
+  /// (a branch that leaves the speed range ends sooner). From the calling thread; none: not
+  /// called. `railmodal hunting --continuation` shows it on a terminal.
+  std::function<void(double)> progress;
   bool is_valid(std::string* why) const;
 };
 

@@ -170,8 +170,8 @@ py::list fft_check_records(const std::vector<FftCheck>& checks) {
   py::list out;
   for (const FftCheck& c : checks)
     out.append(py::dict(py::arg("mode") = c.mode, py::arg("mode_name") = c.mode_name, py::arg("dof") = c.dof,
-                        py::arg("modal_hz") = c.modal_hz, py::arg("damped_hz") = c.damped_hz,
-                        py::arg("damping_ratio") = c.damping_ratio, py::arg("peak_hz") = optional_value(c.peak_hz),
+                        py::arg("undamped_frequency_hz") = c.modal_hz, py::arg("damped_frequency_hz") = c.damped_hz,
+                        py::arg("damping_ratio") = c.damping_ratio, py::arg("peak_frequency_hz") = optional_value(c.peak_hz),
                         py::arg("rel_error") = c.rel_error, py::arg("resolution_hz") = c.resolution_hz,
                         py::arg("within_resolution") = c.within_resolution,
                         py::arg("modal_amplitude_ratio") = c.modal_amplitude_ratio, py::arg("excited") = c.excited,
@@ -209,7 +209,8 @@ void bind_fft_check(py::module_& m) {
       .def_property_readonly("checks", [](const FftCheckResult& r) { return fft_check_records(r.checks); },
                              "records, one per mode")
       .def("records", [](const FftCheckResult& r) { return fft_check_records(r.checks); },
-           "The checks, one row per mode (the same as `checks`): mode, mode_name, dof, modal_hz and peak_hz (Hz), "
+           "The checks, one row per mode (the same as `checks`): mode, mode_name, dof, undamped_frequency_hz, "
+           "damped_frequency_hz (the frequency checked) and peak_frequency_hz (Hz), damping_ratio, "
            "rel_error (relative), resolution_hz (Hz), within_resolution, modal_amplitude_ratio (dimensionless), "
            "excited, tolerance (relative), outcome, needed_duration_s (s), why_not_applicable")
       .def_property_readonly("spectra", [](const FftCheckResult& r) { return spectra_by_dof(r.spectrum_dofs, r.spectra); },

@@ -324,7 +324,7 @@ void bind_nonlinear_hunting(py::module_& m) {
       py::arg("friction_coefficient") = NonlinearHuntingOptions{}.friction_coefficient,
       py::arg("wheel_load_n") = py::none(), py::arg("contact_angle_rad") = NonlinearHuntingOptions{}.contact_angle,
       py::arg("flange_clearance_m") = NonlinearHuntingOptions{}.flange_clearance,
-      py::arg("flange_stiffness_n_m") = NonlinearHuntingOptions{}.flange_stiffness,
+      py::arg("flange_stiffness_n_per_m") = NonlinearHuntingOptions{}.flange_stiffness,
       py::arg("start_speed_m_s") = NonlinearHuntingOptions{}.start_speed,
       py::arg("end_speed_m_s") = NonlinearHuntingOptions{}.end_speed,
       py::arg("ramp_rate_m_s2") = NonlinearHuntingOptions{}.ramp_rate,

@@ -74,11 +74,11 @@ void bind_variant_results(py::module_& m) {
               for (const VariantResult::ModeSummary& s : v.modes)
                 out.append(py::dict(py::arg("index") = v.index, py::arg("variant") = v.name, py::arg("name") = s.name,
                                     py::arg("kind") = s.kind, py::arg("frequency_hz") = s.frequency_hz,
-                                    py::arg("period_s") = s.period_s, py::arg("divergence_rate_1_s") = s.divergence_rate));
+                                    py::arg("period_s") = s.period_s, py::arg("divergence_rate_per_s") = s.divergence_rate));
             });
           },
           "One row per variant and mode: index, variant, name, kind, frequency_hz (Hz), period_s (s), "
-          "divergence_rate_1_s (1/s)")
+          "divergence_rate_per_s (1/s)")
       .def(
           "critical_speeds",
           [](const VariantResults& r) {

@@ -56,7 +56,7 @@ VariantResult result_from_json(const json& j) {
       summary.output = o.at("output").get<std::string>();
       summary.unit = o.at("unit").get<std::string>();
       summary.max_rms = o.at("max_rms").get<double>();
-      if (!o.at("max_sperling_wz").is_null()) summary.max_wz = o.at("max_sperling_wz").get<double>();
+      if (!o.at("max_wz").is_null()) summary.max_wz = o.at("max_wz").get<double>();
       summary.unbounded = o.at("unbounded").get<bool>();
       r.ride.push_back(summary);
     }
@@ -79,6 +79,17 @@ VariantResult result_from_json(const json& j) {
     }
   }
   return r;
+}
+
+// Whether a result's ride writes the largest Wz under its name before 2026-11-28,
+// `max_sperling_wz` (now `max_wz`, the metric's name). Such a shard is refused, as one with
+// `source` for `source_index` is, but with the renamed key named: a result is evaluated again
+// rather than read under two spellings.
+bool wrote_sperling_key(const json& result) {
+  if (!result.is_object() || !result.contains("ride") || !result.at("ride").is_array()) return false;
+  for (const json& o : result.at("ride"))
+    if (o.is_object() && o.contains("max_sperling_wz")) return true;
+  return false;
 }
 
 // A shard that records its study file's digest (write_shard's inputs, the study file first) is of
@@ -111,6 +122,11 @@ void parse_shard(std::istream& in, const std::string& file, const Study& study,
   const auto read_result = [&](const json& element) {
     deflections = deflections || (element.is_object() && element.contains("dynamic_deflections"));
     if (!field_error.empty()) return;
+    if (wrote_sperling_key(element)) {
+      field_error = "a shard from an older railmodal: its ride's 'max_sperling_wz' is now 'max_wz' (the study "
+                    "metric's name, since 2026-11-28): evaluate the shard again";
+      return;
+    }
     VariantResult r;
     try {
       r = result_from_json(element);

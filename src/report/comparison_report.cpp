@@ -100,7 +100,7 @@ void write_peaks(JsonWriter& j, const VariantResult& r) {
 void write_ride(JsonWriter& j, const VariantResult& r) {
   j.key("ride").begin_array();
   for (const auto& o : r.ride) {
-    j.begin_object().member("max_rms", o.max_rms).member("max_sperling_wz", o.max_wz).member("output", o.output);
+    j.begin_object().member("max_rms", o.max_rms).member("max_wz", o.max_wz).member("output", o.output);
     j.member("unbounded", o.unbounded).member("unit", o.unit).end_object();
   }
   j.end_array();

@@ -300,14 +300,17 @@ void swings_table(std::ostream& out, const FftCheckResult& r) {
 void write_json_check(report::JsonWriter& j, const FftCheck& c) {
   const std::optional<double> none;
   j.begin_object();
-  j.member("checked", c.checked()).member("damped_hz", c.damped_hz).member("damping_ratio", c.damping_ratio);
+  // The mode's frequencies under the names `modes --damped` gives them (damped_frequency_hz,
+  // undamped_frequency_hz), the spectral line's as a frequency too (peak_frequency_hz).
+  j.member("checked", c.checked()).member("damped_frequency_hz", c.damped_hz).member("damping_ratio", c.damping_ratio);
   j.member("dof", c.dof).member("excited", c.excited);
-  j.member("modal_amplitude_ratio", c.modal_amplitude_ratio).member("modal_hz", c.modal_hz);
+  j.member("modal_amplitude_ratio", c.modal_amplitude_ratio);
   j.member("mode", c.mode).member("mode_name", c.mode_name).member("outcome", to_string(c.outcome));
   j.member("passed", c.outcome == FftCheck::Outcome::passed);
-  j.member("peak_hz", c.peak_hz ? std::optional<double>(*c.peak_hz) : none);
+  j.member("peak_frequency_hz", c.peak_hz ? std::optional<double>(*c.peak_hz) : none);
   j.member("rel_error", c.peak_hz ? std::optional<double>(c.rel_error) : none);
   j.member("resolution_hz", c.resolution_hz).member("tolerance", c.tolerance);
+  j.member("undamped_frequency_hz", c.modal_hz);
   if (c.outcome == FftCheck::Outcome::decayed) j.member("why_decayed", c.why_decayed);
   if (c.outcome == FftCheck::Outcome::not_applicable) j.member("why_not_applicable", c.why_not_applicable);
   j.member("within_resolution", c.within_resolution);
@@ -353,8 +356,8 @@ void write_json(std::ostream& out, const FftCheckResult& r, const Scene& scene, 
 void write_csv(std::ostream& out, const FftCheckResult& r) {
   using report::csv_heading;
   using report::number_text;
-  out << "mode,mode_name,dof," << csv_heading("modal", "Hz") << "," << csv_heading("damped", "Hz")
-      << ",damping_ratio," << csv_heading("peak", "Hz") << ",rel_error,"
+  out << "mode,mode_name,dof," << csv_heading("undamped_frequency", "Hz") << "," << csv_heading("damped_frequency", "Hz")
+      << ",damping_ratio," << csv_heading("peak_frequency", "Hz") << ",rel_error,"
       << csv_heading("resolution", "Hz")
       << ",within_resolution,excited,modal_amplitude_ratio,tolerance,outcome,checked,passed,verdict\n";
   for (const auto& c : r.checks)

@@ -531,7 +531,7 @@ void write_options(JsonWriter& j, const NonlinearHuntingOptions& o) {
   j.member("extinction_amplitude_m", o.extinction_amplitude);
   j.key("flange_contact");
   if (has_effect(o, NonlinearEffect::flange_contact))
-    j.begin_object().member("clearance_m", o.flange_clearance).member("stiffness_n_m", o.flange_stiffness).end_object();
+    j.begin_object().member("clearance_m", o.flange_clearance).member("stiffness_n_per_m", o.flange_stiffness).end_object();
   else
     j.value(nullptr);
   j.member("hold_margin_m_s", o.hold_margin).member("hold_periods", o.hold_periods);

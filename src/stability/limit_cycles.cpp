@@ -172,6 +172,7 @@ LimitCycleBranch continue_limit_cycles(const LinearSystem& system, const Nonline
   settings.parameter_high = hunting.start_speed;
   settings.max_points = options.max_points;
   settings.max_step = options.max_step;
+  settings.progress = options.progress;
   const stability::OrbitBranch branch = stability::continue_from_hopf(problem, *hopf, settings);
   clock.lap("continuation");
   b.end = end_of(branch.end);

@@ -176,8 +176,24 @@ std::optional<std::size_t> lowest_exchange_turn(const std::vector<double>& p, co
   return lowest;
 }
 
-OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hopf, const ContinuationSettings& s) {
+double continuation_progress(const ContinuationSettings& settings, std::size_t orbits, double amplitude) {
+  const double by_points = static_cast<double>(orbits) / settings.max_points;
+  const double by_amplitude = std::abs(amplitude) / settings.max_amplitude;
+  return std::clamp(std::max(by_points, by_amplitude), 0.0, 0.99);
+}
+
+namespace {
+
+// continue_from_hopf up to its last progress call (1, once the branch ended at any of its returns).
+OrbitBranch follow_branch(const OrbitProblem& problem, const HopfPoint& hopf, const ContinuationSettings& s) {
   OrbitBranch branch;
+  double done = 0.0;  // the progress shown: the largest estimate yet, so that it never goes back
+  const auto one_more = [&](const Orbit& o) {
+    branch.orbits.push_back(o);
+    if (!s.progress) return;
+    done = std::max(done, continuation_progress(s, branch.orbits.size(), o.start_value));
+    s.progress(done);
+  };
   // The linear orbit through the peak of the watched coordinate: phase·Re(v·e^{iθ}) = 0.
   const double real_part = problem.phase.dot(hopf.vector.real());
   const double imaginary_part = problem.phase.dot(hopf.vector.imag());
@@ -206,7 +222,7 @@ OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hop
                        shortest_text(o.residual, 6) + ")";
       return branch;
     }
-    branch.orbits.push_back(o);
+    one_more(o);
     guess = o;
   }
   double step = s.initial_step;
@@ -251,7 +267,7 @@ OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hop
     }
     if (next.iterations <= kQuickNewton) step = std::min(1.5 * step, s.max_step);
     if (next.iterations >= kSlowNewton) step = std::max(0.7 * step, s.min_step);
-    branch.orbits.push_back(next);
+    one_more(next);
     const std::size_t k = branch.orbits.size() - 1;
     const double turn = (branch.orbits[k].parameter - branch.orbits[k - 1].parameter) *
                         (branch.orbits[k - 1].parameter - branch.orbits[k - 2].parameter);
@@ -261,6 +277,14 @@ OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hop
       branch.fold_orbits.push_back(k - 1);
     }
   }
+  return branch;
+}
+
+}  // namespace
+
+OrbitBranch continue_from_hopf(const OrbitProblem& problem, const HopfPoint& hopf, const ContinuationSettings& s) {
+  OrbitBranch branch = follow_branch(problem, hopf, s);
+  if (s.progress) s.progress(1.0);
   return branch;
 }
 

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,7 +34,16 @@ struct ContinuationSettings {
   int max_points = 200;
   /// Pseudo-arclength steps, in the norm of (amplitude/amplitude_scale, parameter/parameter_scale).
   double initial_step = 0.1, min_step = 1e-4, max_step = 1.0;
+  /// Called after each orbit with the fraction done (continuation_progress), 1 once the branch
+  /// ends however it ends; from the calling thread. None: not called.
+  std::function<void(double)> progress;
 };
+
+/// The fraction of a continuation done after `orbits` orbits, the last of amplitude·x0
+/// `amplitude`: the larger of the orbits against max_points and the amplitude against
+/// max_amplitude, the two limits one of which ends a branch that neither fails nor leaves the
+/// parameter range; below 1. An estimate, not a promise: a branch may end early at the range.
+double continuation_progress(const ContinuationSettings& settings, std::size_t orbits, double amplitude);
 
 enum class BranchEnd { amplitude_reached, parameter_range_left, point_limit, newton_failed };
 

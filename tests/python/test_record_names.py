@@ -43,12 +43,17 @@ ONLY_IN_PYTHON = {
     "study critical speeds": {"index", "variant"},
     "study peaks": {"index", "variant"},
     "study deflections": {"index", "variant"},
+    "study modes": {"index", "variant"},
+    "study ride": {"index", "variant"},
     # A wheel by its axle index and side beside `wheel`.
     "gear wheels": {"axle", "right"},
     # Angles in radians (the package's SI), where the JSON writes degrees (`*_angle_deg`).
     "balance wheels": {"axle", "right", "rotating_angle_rad", "vertical_angle_rad", "overbalance_angle_rad",
                        "total_angle_rad"},
     "trade-off": set(),
+    # The record length a check needs to resolve its line (the JSON says it in the outcome's
+    # words); the reasons, None where the outcome has none (the JSON writes them only where it has).
+    "fft-check": {"needed_duration_s", "why_decayed", "why_not_applicable"},
 }
 
 
@@ -123,15 +128,32 @@ def test_study():
     study = data("studies", "resort_against_fette.toml")
     results = railmodal.evaluate_study(railmodal.load_study(study))
     written = {v["name"]: v for v in cli_json("compare", study, "-q")["variants"]}
-    for rows, key, name in ((results.critical_speeds(), "critical_speeds", "study critical speeds"),
+    for rows, key, name in ((results.modes(), "modes", "study modes"),
+                            (results.critical_speeds(), "critical_speeds", "study critical speeds"),
                             (results.peaks(), "peaks", "study peaks"),
                             (results.deflections(), "dynamic_deflections", "study deflections")):
         objects = [o for v in written.values() for o in v[key]]
         assert only_in_python(rows, objects) == ONLY_IN_PYTHON[name]
+        if key == "modes":
+            continue
         # A source by its number from 1 in both (compare's JSON wrote its index from 0 as `source`).
         for variant, theirs in written.items():
             assert [r["source_index"] for r in rows if r["variant"] == variant] == \
                 [o["source_index"] for o in theirs[key]], (name, variant)
+
+
+def test_study_ride():
+    """The largest Wz of a variant's ride is `max_wz` (the study metric's name) in Python and in
+    compare's JSON alike; the JSON wrote `max_sperling_wz` before 2026-11-28."""
+    study = data("studies", "two_axle_wagon_ride_springs.toml")
+    results = railmodal.evaluate_study(railmodal.load_study(study))
+    written = cli_json("compare", study, "-q")["variants"]
+    objects = [o for v in written for o in v["ride"]]
+    assert only_in_python(results.ride(), objects) == ONLY_IN_PYTHON["study ride"]
+    by_variant = {(v["name"], o["output"]): o["max_wz"] for v in written for o in v["ride"]}
+    # One double each side, printed by the JSON to round trip; a force output has none (None, null).
+    assert {(r["variant"], r["output"]): r["max_wz"] for r in results.ride()} == by_variant
+    assert any(w is not None for w in by_variant.values())
 
 
 def test_balance(balance):
@@ -151,6 +173,21 @@ def test_balance(balance):
     for mine, theirs in zip(study.gear.wheels, written["gear"]["wheels"]):
         for key in ("max_hammer_blow_n", "max_dP_n", "min_dP_n", "least_load_n"):
             assert mine[key] == theirs[key], key  # one double, which the JSON prints to round trip
+
+
+def test_fft_check():
+    """A check's frequencies are named as `modes --damped` names them (undamped_frequency_hz,
+    damped_frequency_hz) and the line's as a frequency (peak_frequency_hz), in Python and JSON alike
+    (they were modal_hz, damped_hz and peak_hz before 2026-11-28)."""
+    scene = data("scenes", "resort_car_free_response.toml")
+    checks = railmodal.fft_check(railmodal.load_scene(scene)).checks
+    written = cli_json("fft-check", scene)["checks"]
+    assert only_in_python(checks, written) == ONLY_IN_PYTHON["fft-check"]
+    for key in ("undamped_frequency_hz", "damped_frequency_hz", "peak_frequency_hz"):
+        # rel 1e-12 as test_simulation.py: the same library run twice, the JSON printed to round trip.
+        assert [c[key] for c in checks] == pytest.approx([w[key] for w in written], rel=1e-12), key
+    damped = cli_json("modes", data("vehicles", "resort_car.toml"), "--damped")["modes"]
+    assert {"undamped_frequency_hz", "damped_frequency_hz"} <= keys(damped)
 
 
 def test_a_key_spelt_otherwise_is_caught():

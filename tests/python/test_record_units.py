@@ -16,7 +16,7 @@ from railmodal_paths import SOURCE, data
 
 # docs/input.md's suffixes, and the compound ones the package uses (kg·m², N·m²).
 SUFFIXES = ("_m", "_s", "_hz", "_deg", "_rad", "_kg", "_n", "_n_m", "_n_m2", "_kg_m2", "_m_s", "_m_s2",
-            "_rad_s", "_kmh", "_per_s", "_1_s")
+            "_rad_s", "_kmh", "_per_s")
 
 
 def documented_keys():

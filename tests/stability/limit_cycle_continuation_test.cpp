@@ -100,6 +100,27 @@ TEST(LimitCycleContinuation, SubcriticalNormalFormBranchAndFold) {
   EXPECT_EQ(stability::lowest_exchange_turn(mu, stable), std::optional<std::size_t>(b.fold_orbits[0]));
 }
 
+// The progress a long continuation reports (`hunting --continuation` shows it on a terminal):
+// once per orbit and once at the end, never going back, below 1 until the branch ends and 1
+// then. On the subcritical normal form the branch ends when its amplitude passes the limit: the
+// last orbit's estimate is then at its ceiling below 1 (0.99), above 0.9.
+TEST(LimitCycleContinuation, ProgressOncePerOrbitNeverBackOneAtTheEnd) {
+  const stability::OrbitProblem p = normal_form(2.0, [](double mu, double rho) { return mu + rho - rho * rho; });
+  const auto hopf = stability::find_hopf(p.field, 2, -1.0, 1.0);
+  ASSERT_TRUE(hopf.has_value());
+  stability::ContinuationSettings s = normal_form_settings(0.5);  // short of the fold: fewer orbits
+  std::vector<double> shown;
+  s.progress = [&shown](double fraction) { shown.push_back(fraction); };
+  const stability::OrbitBranch b = stability::continue_from_hopf(p, *hopf, s);
+  ASSERT_EQ(b.end, stability::BranchEnd::amplitude_reached);
+  ASSERT_EQ(shown.size(), b.orbits.size() + 1);
+  EXPECT_GT(shown.front(), 0.0);
+  for (std::size_t k = 1; k < shown.size(); ++k) EXPECT_GE(shown[k], shown[k - 1]) << "after orbit " << k;
+  EXPECT_LT(shown[shown.size() - 2], 1.0);
+  EXPECT_GT(shown[shown.size() - 2], 0.9);
+  EXPECT_EQ(shown.back(), 1.0);
+}
+
 // The head of the Manchester coach's branch (user audit 2026-11-28, F1b: speeds in km/h and the
 // largest Floquet |μ| as `hunting --continuation` printed them): a wiggle at 351.89/351.92 km/h
 // with unstable orbits on both sides, then the true turn at 291.257 km/h into the stable cycles.
@@ -248,6 +269,45 @@ TEST(LimitCycleContinuation, HuntingBranchLeavesTheLinearCriticalSpeed) {
   EXPECT_NEAR(at_zero, *b.hopf_speed, 2e-3);  // the quadratic term over 0.1 mm
   EXPECT_NEAR(1.0 / b.points[0].period, b.hopf_frequency, 1e-3 * b.hopf_frequency);
   EXPECT_FALSE(b.points[0].stable);
+}
+
+// Series (yaw) dampers are in the nonlinear analyses, not dropped: their forces are states of
+// the lateral equations (x = (q, q̇, F), checked term by term in nonlinear_hunting_test.cpp), which
+// the ramp-down and the continuation integrate. End to end on the bundled wheelset, with a damper
+// (c = kSeriesDamping in series with kSeriesStiffness) across each axlebox's longitudinal spring,
+// a yaw damper 1 m off the axle: the Hopf point of the nonlinear equations is the linear critical
+// speed of the first-order stability model with the dampers, which they move by more than 0.5 m/s,
+// and the ramp-down's held critical speed moves with them.
+TEST(LimitCycleContinuation, SeriesDampersAreInTheNonlinearEquations) {
+  constexpr double kSeriesDamping = 2e3, kSeriesStiffness = 5e6;  // N·s/m, N/m
+  const Scene scene = load_scene(RAILMODAL_DATA_DIR "/scenes/wheelset_on_springs_nonlinear_hunting.toml");
+  const NonlinearHuntingOptions& o = *scene.nonlinear_hunting;
+  Vehicle v = load_vehicle(scene.vehicle_file);
+  const LinearSystem plain = assemble(v, DofSet::lateral);
+  for (Element& e : v.elements) e.series_dampers.push_back({Motion::longitudinal, kSeriesDamping, kSeriesStiffness});
+  const LinearSystem damped = assemble(v, DofSet::lateral);
+  ASSERT_EQ(damped.series_dampers.size(), 2u);
+  const stability::LateralEquations e(damped, o);
+  ASSERT_EQ(e.size(), 2 * damped.size() + 2);
+  HuntingOptions h;
+  h.min_speed = o.end_speed;
+  h.max_speed = o.start_speed;
+  const HuntingResult with = solve_hunting_stability(damped, h), without = solve_hunting_stability(plain, h);
+  ASSERT_TRUE(with.critical.has_value() && without.critical.has_value());
+  RecordProperty("linear_critical_speed_with_dampers", std::to_string(with.critical->speed));
+  RecordProperty("linear_critical_speed_without", std::to_string(without.critical->speed));
+  // They move it by 0.63 m/s, thousands of times the Hopf point's agreement below (1e-4 m/s).
+  EXPECT_GT(std::abs(with.critical->speed - without.critical->speed), 0.5);
+  const auto field = [&e](double speed, const Eigen::VectorXd& x, Eigen::VectorXd* dx) { e.derivative(speed, x, dx); };
+  const auto hopf = stability::find_hopf(field, e.size(), o.end_speed, o.start_speed);
+  ASSERT_TRUE(hopf.has_value());
+  EXPECT_NEAR(hopf->parameter, with.critical->speed, 1e-4);  // as HuntingBranchLeavesTheLinearCriticalSpeed
+  const NonlinearHuntingResult held_with = solve_nonlinear_hunting(damped, o), held_without = solve_nonlinear_hunting(plain, o);
+  ASSERT_TRUE(held_with.critical_speed.has_value() && held_without.critical_speed.has_value());
+  RecordProperty("held_critical_speed_with_dampers", std::to_string(*held_with.critical_speed));
+  RecordProperty("held_critical_speed_without", std::to_string(*held_without.critical_speed));
+  // Apart by more than the two brackets' tolerance each.
+  EXPECT_GT(std::abs(*held_with.critical_speed - *held_without.critical_speed), 2.0 * o.tolerance);
 }
 
 // (b) The bundled scene is subcritical; its fold is the ramp-down's held critical speed, within

@@ -97,6 +97,12 @@ TEST(RideMetric, RanksTheSmoothestFirst) {
   EXPECT_NE(table.str().find("unbounded"), std::string::npos) << table.str();
 }
 
+size_t occurrences(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
 TEST(RideMetric, ShardsCarryTheRide) {
   const Study s = load_study(write_study(example3_wagon(), "[ranking]\nmax_lowest_critical_speed = \"900 km/h\"\n"));
   std::ostringstream shard;
@@ -110,6 +116,19 @@ TEST(RideMetric, ShardsCarryTheRide) {
   EXPECT_EQ(*back[0].ride[0].max_wz, 2.4);
   EXPECT_FALSE(back[0].ride[1].max_wz);
   EXPECT_EQ(*back[0].max_nmv, 1.9);
+  // The largest Wz under the study metric's name; a shard written before 2026-11-28 under
+  // `max_sperling_wz` is refused with both names, not read as missing a field.
+  std::string old = shard.str();
+  ASSERT_EQ(occurrences(old, "\"max_wz\":"), 2u) << old;
+  for (size_t at = old.find("\"max_wz\":"); at != std::string::npos; at = old.find("\"max_wz\":", at))
+    old.replace(at, 9, "\"max_sperling_wz\":");
+  try {
+    read_shard(write_temp("old_ride_shard.json", old), s);
+    ADD_FAILURE() << "a shard with max_sperling_wz was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.message().find("'max_sperling_wz' is now 'max_wz'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("old_ride_shard.json"), std::string::npos) << e.what();
+  }
   VariantResult plain;
   plain.name = "base";
   std::ostringstream without;
@@ -123,12 +142,6 @@ std::string section(const std::string& document, const std::string& heading, con
   if (from == std::string::npos) return "";
   const size_t to = document.find(next, from + heading.size());
   return document.substr(from, to == std::string::npos ? std::string::npos : to - from);
-}
-
-size_t occurrences(const std::string& text, const std::string& what) {
-  size_t n = 0;
-  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
-  return n;
 }
 
 // A partial N_MV (a floor point without a lateral output: the two-axle wagon's ride reads
