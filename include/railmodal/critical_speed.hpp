@@ -44,6 +44,14 @@ struct CriticalSpeedStudy {
   AnalysisSummary summary;
 };
 
+/// `grid` (m/s; sorted if it is not ascending) with the speed of every row put in its place,
+/// without repeats: the grid study_critical_speeds sweeps (its scene's step and every critical
+/// speed). An undamped resonance is then a point of the sweep, where amplitude_curves flags it
+/// unbounded; on a grid without it the resonance falls between two speeds and shows as a
+/// finite peak whose height depends on how near they fall (6.35 m on one grid, 9.96 m on one a
+/// point coarser: user audit 2026-11-28b, F7).
+std::vector<double> grid_with_critical_speeds(const std::vector<double>& grid, const std::vector<CriticalSpeed>& rows);
+
 /// Assembles the vehicle in the scene's DOF set, solves its modes, finds the critical speeds
 /// of the scene's sources in its speed range and the amplitude curves of its outputs (or, if
 /// it names none, of the most energetic DOF of each excited mode). The speed grid holds the

@@ -8,6 +8,7 @@ import math
 import os
 import re
 import tempfile
+import warnings
 
 from . import _railmodal
 
@@ -110,19 +111,40 @@ def vehicle_from_dict(vehicle):
                            "body": {"weight": "20 tf", ...}, ...})
 
     Read by the same reader as files (the same checks and unit conversions). Errors are
-    railmodal.InputError with file "<dict>", line and column None and the key path in .key.
+    railmodal.InputError with file "<dict>", line and column None and the key path in .key;
+    warnings are railmodal.InputWarning "<dict>: warning: key '<key path>': ...".
     """
     text, places = to_toml(vehicle)
     with tempfile.TemporaryDirectory(prefix="railmodal-") as folder:
         path = os.path.join(folder, "vehicle.toml")
         with open(path, "w", encoding="utf-8") as out:
             out.write(text)
-        try:
-            result = _railmodal.load_vehicle(path)
-        except _railmodal.InputError as error:
-            if error.file != path:
-                raise
-            key = error.key or places.get(error.line)
-            raise _input_error(error.message, key) from None
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            try:
+                result = _railmodal.load_vehicle(path)
+            except _railmodal.InputError as error:
+                if error.file != path:
+                    raise
+                key = error.key or places.get(error.line)
+                raise _input_error(error.message, key) from None
+    for warning in caught:
+        _warn_again(warning, path, places)
     result.source = ""
     return result
+
+
+def _warn_again(warning, path, places):
+    """Issues a warning of the reader again, from the caller's line: one about the written file
+    (deleted by now) names "<dict>" and the key path instead of the file, line and column, as its
+    errors do (user audit 2026-11-28b, F9 d)."""
+    text = str(warning.message)
+    place = re.match(re.escape(path) + r":(\d+):\d+: warning: (.*)$", text, re.S)
+    if place is None or not issubclass(warning.category, _railmodal.InputWarning):
+        warnings.warn_explicit(warning.message, warning.category, warning.filename, warning.lineno)
+        return
+    message = place.group(2)
+    key = places.get(int(place.group(1)))
+    if key is not None and "key '" not in message:
+        message = "key '%s': %s" % (key, message)
+    warnings.warn("<dict>: warning: " + message, _railmodal.InputWarning, stacklevel=3)

@@ -8,6 +8,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <memory>
@@ -119,6 +120,24 @@ py::dict curve_dict(const AmplitudeCurve& c) {
   if (!c.phases_deg.empty())
     d["phase_deg"] = py::array_t<double>(static_cast<py::ssize_t>(c.phases_deg.size()), c.phases_deg.data());
   return d;
+}
+
+// The speeds to sweep: as given, or (as railmodal critical-speed sweeps) with the source's
+// critical speeds between the lowest and the highest put in their places, so that an undamped
+// resonance is a point of the curve, flagged unbounded, and not a finite peak between two
+// speeds whose height depends on the grid (user audit 2026-11-28b, F7). Speeds the sweep would
+// refuse (not positive and finite) are left for amplitude_curves to refuse in its own words.
+std::vector<double> sweep_speeds(const LinearSystem& system, const ModalResult& modes, const ExcitationSource& source,
+                                 std::vector<double> given, double friction_reference_amplitude,
+                                 bool with_critical_speeds) {
+  if (!with_critical_speeds || given.empty()) return given;
+  CriticalSpeedOptions options;
+  options.min_speed = *std::min_element(given.begin(), given.end());
+  options.max_speed = *std::max_element(given.begin(), given.end());
+  options.friction_reference_amplitude = friction_reference_amplitude;
+  std::string why;
+  if (!options.is_valid(&why)) return given;
+  return grid_with_critical_speeds(given, find_critical_speeds(system, modes, {&source}, options));
 }
 
 std::vector<std::shared_ptr<ExcitationSource>> scene_sources(const Scene& s) {
@@ -385,19 +404,28 @@ void bind_critical_speeds(py::module_& m) {
   m.def(
       "amplitude_curves",
       [](const LinearSystem& system, const ModalResult& modes, std::shared_ptr<ExcitationSource> source,
-         const py::iterable& outputs, const DoubleArray& speeds, int source_index, double friction_reference_amplitude) {
+         const py::iterable& outputs, const DoubleArray& speeds, int source_index, double friction_reference_amplitude,
+         bool with_critical_speeds) {
         if (source_index < 1) throw py::value_error("source_index counts from 1, not " + std::to_string(source_index));
         const std::vector<OutputRequest> requests = output_requests(system, outputs);
-        SpeedGrid grid(to_vector(speeds, "speeds"));
+        std::vector<double> given = to_vector(speeds, "speeds");
         py::gil_scoped_release release;
+        const SpeedGrid grid(sweep_speeds(system, modes, *source, std::move(given), friction_reference_amplitude,
+                                          with_critical_speeds));
         return amplitude_curves(system, modes, *source, source_index - 1, requests, grid,
                                 friction_reference_amplitude);
       },
       py::arg("system"), py::arg("modes"), py::arg("source"), py::arg("outputs"), py::arg("speeds"),
-      py::arg("source_index") = 1, py::arg("friction_reference_amplitude") = 0.0,
-      "One AmplitudeCurve per output (a label, an index or a (label, quantity) pair) over the speeds (m/s, "
-      "a numpy array), computed in C++ in one call; source_index (from 1) is the number the curves give "
-      "their source.");
+      py::arg("source_index") = 1, py::arg("friction_reference_amplitude") = 0.0, py::kw_only(),
+      py::arg("with_critical_speeds") = true,
+      "One AmplitudeCurve per output (a label, an index or a (label, quantity) pair) against speed, computed in "
+      "C++ in one call; source_index (from 1) is the number the curves give their source. The speeds (m/s, a "
+      "numpy array) are swept as railmodal critical-speed sweeps its grid: sorted, with every critical speed of "
+      "the source between the lowest and the highest put in its place, so that an undamped resonance is a point "
+      "of the curve flagged in `unbounded` (amplitude 0 there); read the speeds from the curve's speeds_m_s, "
+      "which may be longer than the array given. with_critical_speeds=False sweeps the speeds exactly as "
+      "given: an undamped resonance between two of them then shows as a finite peak whose height depends on "
+      "the grid, and is not flagged.");
 
   py::class_<CriticalSpeedStudy>(m, "CriticalSpeedStudy", "A scene's critical speeds, curves and peaks (railmodal critical-speed).")
       .def_readonly("scene", &CriticalSpeedStudy::scene)

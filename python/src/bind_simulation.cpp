@@ -9,6 +9,7 @@
 
 #include "analysis_values.hpp"
 #include "bindings.hpp"
+#include "railmodal/fft_check_report.hpp"
 #include "railmodal/scene.hpp"
 #include "railmodal/scene_simulation.hpp"
 #include "railmodal/simulation.hpp"
@@ -232,7 +233,11 @@ void bind_fft_check(py::module_& m) {
       .def_readonly("checked", &FftCheckResult::checked)
       .def_readonly("failed", &FftCheckResult::failed)
       .def_readonly("passed", &FftCheckResult::passed)
-      .def_readonly("summary", &FftCheckResult::summary);
+      .def_property_readonly("verdict", &fft_check_verdict,
+                             "The verdict in words, as the command line and the JSON's verdict_text give it: "
+                             "'passed: …', 'FAILED: …' or 'NOT CHECKED: …' (not checked is not a pass)")
+      .def_readonly("summary", &FftCheckResult::summary)
+      .def("__repr__", [](const FftCheckResult& r) { return "FftCheckResult(" + fft_check_verdict(r) + ")"; });
 
   m.def(
       "fft_check",

@@ -8,6 +8,8 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "report/document_table.hpp"
 #include "report/json_writer.hpp"
@@ -275,13 +277,61 @@ void checks_table(std::ostream& out, const FftCheckResult& r) {
   out << "</table>\n";
 }
 
+// A swing driven steadily (a wagon at resonance whose leaf friction holds it at one amplitude)
+// turns at the same two displacements, the same half periods apart, for the whole record: 68
+// rows of 0.2946 s (user audit 2026-11-28b, F9 c). The tables show such a run once; the CSV and
+// JSON keep every turn. Row i repeats when its displacement and half period, as the tables print
+// them (6 and 4 decimals), are row i − 2's. A run of repeats, rows `first` to `last` (from 0),
+// is shown as one line and then its last row, which says where the record ends.
+struct RepeatedRows {
+  size_t first = 0, last = 0;
+};
+
+std::vector<RepeatedRows> repeated_rows(const Swings& w) {
+  const std::vector<double> halves = w.half_periods_between_turns();
+  const auto printed = [&](size_t i) { return fixed(w.turning_values[i], 6) + " " + fixed(halves[i - 1], 4); };
+  std::vector<RepeatedRows> runs;
+  for (size_t i = 3; i < w.turning_times.size(); ++i) {  // row 0 has no half period, so row 1 no row to repeat
+    if (printed(i) != printed(i - 2)) continue;
+    if (!runs.empty() && runs.back().last + 1 == i)
+      runs.back().last = i;
+    else
+      runs.push_back({i, i});
+  }
+  // A run hides all but its last row; under four hidden rows a line in their place would save
+  // little and show less (two rows of a decay that has just settled).
+  constexpr size_t kFewestHidden = 4;
+  runs.erase(std::remove_if(runs.begin(), runs.end(),
+                            [](const RepeatedRows& r) { return r.last - r.first < kFewestHidden; }),
+             runs.end());
+  return runs;
+}
+
+// The run that hides row i (all but a run's last row), or null.
+const RepeatedRows* hiding(const std::vector<RepeatedRows>& runs, size_t i) {
+  for (const RepeatedRows& r : runs)
+    if (i >= r.first && i < r.last) return &r;
+  return nullptr;
+}
+
+// "rows 5–67: as the two rows above them, repeated (a steady swing)", numbered from 1.
+std::string repeated_text(const RepeatedRows& r) {
+  return "rows " + std::to_string(r.first + 1) + "–" + std::to_string(r.last) +
+         ": as the two rows above them, repeated (a steady swing)";
+}
+
 void swings_table(std::ostream& out, const FftCheckResult& r) {
   const Swings& w = *r.swings;
   out << "<h2>Half periods (nonlinear scene)</h2>\n<p>Friction and kinks broaden the spectral lines; the half periods of <code>"
       << html_escape(w.dof) << "</code> are read between its turning points instead (linear: " << fixed(r.linear_half_period_s, 4)
       << " s).</p>\n<table><tr><th>#</th><th>turn at [s]</th><th>displacement</th><th>half period [s]</th></tr>\n";
   const auto halves = w.half_periods_between_turns();
+  const std::vector<RepeatedRows> runs = repeated_rows(w);
   for (size_t i = 0; i < w.turning_times.size(); ++i) {
+    if (const RepeatedRows* run = hiding(runs, i)) {
+      if (i == run->first) out << "<tr><td></td><td colspan=3>" << repeated_text(*run) << "</td></tr>\n";
+      continue;
+    }
     out << "<tr><td class=n>" << i + 1 << "</td><td class=n>" << fixed(w.turning_times[i], 4) << "</td><td class=n>"
         << fixed(w.turning_values[i], 6) << "</td><td class=n>" << (i > 0 ? fixed(halves[i - 1], 4) : "") << "</td></tr>\n";
   }
@@ -379,7 +429,12 @@ void swings_text(std::ostream& out, const FftCheckResult& r) {
       << std::setw(5) << "#" << std::setw(14) << "turn at [s]" << std::setw(16) << "displacement" << std::setw(18)
       << "half period [s]" << "\n";
   const auto halves = w.half_periods_between_turns();
+  const std::vector<RepeatedRows> runs = repeated_rows(w);
   for (size_t i = 0; i < w.turning_times.size(); ++i) {
+    if (const RepeatedRows* run = hiding(runs, i)) {
+      if (i == run->first) out << "      " << repeated_text(*run) << "\n";
+      continue;
+    }
     out << std::setw(5) << i + 1 << std::setw(14) << std::setprecision(4) << w.turning_times[i] << std::setw(16)
         << std::setprecision(6) << w.turning_values[i];
     if (i > 0) out << std::setw(18) << std::setprecision(4) << halves[i - 1];

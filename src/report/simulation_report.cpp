@@ -5,15 +5,30 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "report/json_writer.hpp"
 #include "report/number_text.hpp"
 #include "report/text_format.hpp"
 #include "report/unwritten_format.hpp"
+#include "shortest_text.hpp"
+#include "simulate/speed_profile.hpp"
 
 namespace railmodal {
 namespace {
+
+constexpr double kKmh = 3.6;  // km/h per m/s
+
+// The speed profile of a scene that ramps its speed ([simulation] final_speed), which the
+// histories write beside the samples (the speed is not otherwise in them: user audit
+// 2026-11-28b, F9 b); none at a constant speed, whose outputs stay as they were.
+std::optional<simulate::SpeedProfile> ramp(const Scene& scene) {
+  if (!scene.simulation || !(scene.simulation->final_speed > 0.0)) return std::nullopt;
+  const SimulationSpec& s = *scene.simulation;
+  return simulate::speed_profile(s.speed, s.final_speed, s.duration);
+}
 
 // A JSON array of numbers, compact, as number_text writes them (null for NaN and infinities, as
 // nlohmann::json wrote them), a bounded chunk of text at a time.
@@ -38,7 +53,7 @@ std::string json_string(const std::string& text) {
   return quoted;
 }
 
-// {"displacement", "events", "integration_steps", "scene", "time_s"}: the keys in the order a
+// {"displacement", "events", "integration_steps", "scene", "speed_m_s", "time_s"}: the keys in the order a
 // nlohmann::json object (a std::map) wrote them, so the text kept the layout its dump() gave.
 void write_history_json(std::ostream& out, const TimeHistory& h, const Scene& scene, const Vehicle& vehicle) {
   std::map<std::string, int> columns;  // by label, as the object orders its keys
@@ -59,16 +74,25 @@ void write_history_json(std::ostream& out, const TimeHistory& h, const Scene& sc
           << '}';
     out << "],\"integration_steps\":" << h.steps_taken;
   }
-  out << ",\"scene\":" << json_string(scene.name) << ",\"time_s\":";
+  out << ",\"scene\":" << json_string(scene.name);
+  if (const auto profile = ramp(scene)) {
+    out << ",\"speed_m_s\":";
+    write_numbers(out, h.time.unaryExpr([&](double t) { return profile->speed(t); }).eval());
+  }
+  out << ",\"time_s\":";
   write_numbers(out, h.time);
   out << "}\n";
 }
 
 // One CSV row of numbers, as number_text writes them (inf and nan as iostreams wrote them).
-void append_row(std::string& text, double first, const Eigen::Ref<const Eigen::MatrixXd>& values, Eigen::Index row,
-                const std::vector<int>& columns) {
+// A ramp's speed comes after the time, in km/h to 15 digits (the precision it has: 3.6·V(t) of
+// a speed given in km/h, without the round-off of the conversions: "150", not
+// "150.00000000000003").
+void append_row(std::string& text, double first, const std::optional<simulate::SpeedProfile>& profile,
+                const Eigen::Ref<const Eigen::MatrixXd>& values, Eigen::Index row, const std::vector<int>& columns) {
   char number[report::kNumberTextMax];
   text.append(number, report::write_number(number, first, report::NumberStyle::csv));
+  if (profile) text += ',' + shortest_text(kKmh * profile->speed(first), 15);
   for (int c : columns) {
     text += ',';
     text.append(number, report::write_number(number, values(row, c), report::NumberStyle::csv));
@@ -83,6 +107,7 @@ CsvHistoryWriter::CsvHistoryWriter(std::ostream& out, const Scene& scene) : out_
 void CsvHistoryWriter::begin(const std::vector<std::string>& labels, Eigen::Index) {
   columns_ = output_columns(labels, scene_);
   out_ << report::csv_heading("time", "s");
+  if (ramp(scene_)) out_ << "," << report::csv_heading("speed", "km/h");
   for (int c : columns_)
     out_ << "," << report::csv_field(report::csv_heading(labels[c], report::displacement_unit(labels[c])));
   out_ << "\n";
@@ -92,8 +117,9 @@ void CsvHistoryWriter::write(const Eigen::Ref<const Eigen::VectorXd>& time,
                              const Eigen::Ref<const Eigen::MatrixXd>& displacement,
                              const Eigen::Ref<const Eigen::MatrixXd>&) {
   std::string text;
+  const std::optional<simulate::SpeedProfile> profile = ramp(scene_);
   for (Eigen::Index i = 0; i < time.size(); ++i) {
-    append_row(text, time(i), displacement, i, columns_);
+    append_row(text, time(i), profile, displacement, i, columns_);
     if (text.size() > (1 << 16)) out_.write(text.data(), static_cast<std::streamsize>(text.size())), text.clear();
   }
   out_.write(text.data(), static_cast<std::streamsize>(text.size()));

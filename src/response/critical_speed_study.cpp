@@ -41,30 +41,6 @@ const std::vector<double>& scene_grid(const Scene& scene) {
   return grid;
 }
 
-// The sorted union of the scene's grid and the critical speeds, without repeats (the grid
-// comes out ascending: min(v₀ + i·Δv, v_max) never decreases). The few critical speeds are
-// sorted and each put in its place, the grid copied in runs between them: the same values as
-// merging the two and removing repeats.
-std::vector<double> speed_grid(const Scene& scene, const std::vector<CriticalSpeed>& rows) {
-  const std::vector<double>& grid = scene_grid(scene);
-  std::vector<double> critical;
-  critical.reserve(rows.size());
-  for (const auto& r : rows) critical.push_back(r.speed);
-  std::sort(critical.begin(), critical.end());
-  std::vector<double> speeds;
-  speeds.reserve(grid.size() + critical.size());
-  auto next = grid.begin();  // the first grid point not yet copied
-  for (const double v : critical) {
-    const auto at = std::lower_bound(next, grid.end(), v);
-    speeds.insert(speeds.end(), next, at);
-    next = at;
-    const bool on_grid = at != grid.end() && *at == v;
-    if (!on_grid && (speeds.empty() || speeds.back() != v)) speeds.push_back(v);  // else a repeat
-  }
-  speeds.insert(speeds.end(), next, grid.end());
-  return speeds;
-}
-
 constexpr double kPeakTolerance = 1e-6;  // relative, in speed: far below any grid a user would plot
 
 // The largest bounded amplitude of a curve (0 if none): a function of its own, so that the
@@ -203,6 +179,35 @@ void summarise(CriticalSpeedStudy* study, double sweep_seconds, double peak_seco
 
 }  // namespace
 
+// The few critical speeds are sorted and each put in its place, the grid copied in runs between
+// them: the same values as merging the two and removing repeats. A grid not ascending is sorted
+// first (a Python user's array); the study's comes ascending (min(v₀ + i·Δv, v_max) never
+// decreases) and is copied once.
+std::vector<double> grid_with_critical_speeds(const std::vector<double>& given, const std::vector<CriticalSpeed>& rows) {
+  std::vector<double> sorted;
+  if (!std::is_sorted(given.begin(), given.end())) {
+    sorted = given;
+    std::sort(sorted.begin(), sorted.end());
+  }
+  const std::vector<double>& grid = sorted.empty() ? given : sorted;
+  std::vector<double> critical;
+  critical.reserve(rows.size());
+  for (const auto& r : rows) critical.push_back(r.speed);
+  std::sort(critical.begin(), critical.end());
+  std::vector<double> speeds;
+  speeds.reserve(grid.size() + critical.size());
+  auto next = grid.begin();  // the first grid point not yet copied
+  for (const double v : critical) {
+    const auto at = std::lower_bound(next, grid.end(), v);
+    speeds.insert(speeds.end(), next, at);
+    next = at;
+    const bool on_grid = at != grid.end() && *at == v;
+    if (!on_grid && (speeds.empty() || speeds.back() != v)) speeds.push_back(v);  // else a repeat
+  }
+  speeds.insert(speeds.end(), next, grid.end());
+  return speeds;
+}
+
 CriticalSpeedStudy study_critical_speeds(const Scene& scene, const Vehicle& vehicle,
                                          const std::function<void(double)>& progress) {
   return response::study_critical_speeds_of(scene, [&] { return assemble(vehicle, scene.dofs); }, progress);
@@ -252,7 +257,8 @@ void response::study_critical_speeds_into(Scene given, const std::function<Linea
   clock.lap("critical speeds");
   for (OutputRequest& o : outputs) o.phase = detail.phases == CurvePhases::kept;  // the curves' (the rows kept theirs)
 
-  const SpeedGrid grid(speed_grid(scene, study.critical_speeds));  // the chunks' grids joined, shared by every curve
+  // The chunks' grids joined, shared by every curve: the scene's with every critical speed.
+  const SpeedGrid grid(grid_with_critical_speeds(scene_grid(scene), study.critical_speeds));
   const std::vector<double>& speeds = grid.values();
   check_curve_points(sources.size(), outputs.size(), speeds.size(), study.critical_speeds.size());
   const double total = static_cast<double>(sources.size() * speeds.size());

@@ -10,16 +10,9 @@
 
 #include "railmodal/excitation.hpp"
 #include "railmodal/simulation.hpp"
+#include "simulate/speed_profile.hpp"
 
 namespace railmodal::simulate {
-
-/// The run's speed: constant, or ramping linearly (V = V₀ + a·t, x = V₀t + a·t²/2).
-struct SpeedProfile {
-  double initial = 0.0;       ///< V₀, m/s
-  double acceleration = 0.0;  ///< a, m/s²
-  double speed(double t) const { return initial + acceleration * t; }
-  double distance(double t) const { return (initial + 0.5 * acceleration * t) * t; }
-};
 
 /// One harmonic of the track's vertical displacement under an element (up positive):
 /// u(t) = Re(amplitude · r · e^{i(κx(t) − lag)}), κ = ω/V the harmonic's wavenumber along the

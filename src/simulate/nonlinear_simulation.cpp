@@ -796,9 +796,8 @@ TimeHistory simulate_nonlinear(const LinearSystem& system, const std::vector<con
   AnalysisSummary summary;
   StageClock clock(&summary);
   const SimulationOptions used = with_resolvable_events(options, &summary);
-  simulate::SpeedProfile profile;
-  profile.initial = options.speed;
-  if (options.final_speed > 0.0) profile.acceleration = (options.final_speed - options.speed) / options.duration;
+  const simulate::SpeedProfile profile =
+      simulate::speed_profile(options.speed, options.final_speed, options.duration);
   SourceHarmonics excitation = source_harmonics(system, sources, options.speed, profile);
   Model model(system, std::move(excitation.harmonics),
               simulate::nonlinear_elements(system, excitation.loads, effects, excitation.load_sources, profile),

@@ -47,6 +47,33 @@ def test_input_error_from_a_dict_carries_the_key_path():
     assert str(e).startswith("<dict>: error: key 'body.mass': expected a mass")
 
 
+def test_warnings_from_a_dict_name_the_dict_and_the_key_as_its_errors_do(tmp_path):
+    # The dict is written to a temporary file and read by the file reader; its warnings named
+    # that file, deleted by then (user audit 2026-11-28b, F9 d). Now "<dict>" and the key path,
+    # with the words the same file's warning has after its place.
+    wagon = {"vehicle": {"name": "dict wagon", "template": "two-axle"},
+             "body": {"mass": "42.2 t", "cg_height": "1.0 m",
+                      "radius_of_gyration": {"roll": "1.2 m", "pitch": "4.04 m", "yaw": "4.04 m"}},
+             "suspension": {"wheelbase": 8000, "spring_spacing": "2.0 m",
+                            "spring": [{"kind": "leaf", "stiffness": "1.2 MN/m", "relative_friction": 0.1}]}}
+    with pytest.warns(railmodal.InputWarning) as caught:
+        railmodal.vehicle_from_dict(wagon)
+    texts = [str(w.message) for w in caught]
+    assert texts and texts[0].startswith("<dict>: warning: key 'suspension.wheelbase': read as 8000 m")
+    assert all(t.startswith("<dict>: warning: key '") and "vehicle.toml" not in t for t in texts)
+    assert caught[0].filename == __file__  # at the caller's line, not inside the package
+    written = tmp_path / "wagon.toml"
+    written.write_text(railmodal.vehicle_dict.to_toml(wagon)[0])
+    with pytest.warns(railmodal.InputWarning) as from_file:
+        railmodal.load_vehicle(str(written))
+    assert [t.split(": warning: ", 1)[1] for t in texts] == \
+        [str(w.message).split(": warning: ", 1)[1] for w in from_file]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", railmodal.InputWarning)
+        with pytest.raises(railmodal.InputWarning, match="^<dict>: warning: key 'suspension.wheelbase'"):
+            railmodal.vehicle_from_dict(wagon)
+
+
 def test_numerical_error_names_the_degree_of_freedom():
     # dof2 has neither mass nor stiffness: condensing it statically is impossible.
     system = railmodal.LinearSystem(np.diag([1.0, 0.0]), np.diag([4.0, 0.0]))

@@ -92,6 +92,37 @@ def test_find_critical_speeds_and_curves_on_a_numpy_speed_array():
     assert pandas.DataFrame(c.as_dict()).shape == (len(speeds), 4)
 
 
+def test_amplitude_curves_flag_an_undamped_resonance_whatever_the_grid():
+    # User audit 2026-11-28b, F7: over a grid that misses an undamped resonance the curve had a
+    # finite peak whose height depended on the grid (6.35 m on 2001 speeds, 9.96 m on 2000) and
+    # flagged nothing. The sweep now takes the grid as railmodal critical-speed does: the given
+    # speeds with the source's critical speeds in their places, each resonance a point flagged
+    # unbounded. Example 3's undamped wagon (friction only in the criterion) on 12.5 m rails.
+    system = railmodal.assemble(railmodal.load_vehicle(data("vehicles", "two_axle_freight_wagon.toml")), "vertical")
+    modes = railmodal.modes(system)
+    joints = railmodal.rail_joints(rail_length=12.5, dip_depth=0.005)
+    low, high = 50 / 3.6, 120 / 3.6
+    critical = railmodal.find_critical_speeds(system, modes, joints, low, high)
+    bounce = [r["speed_m_s"] for r in critical.records() if r["output"] == "body.bounce" and r["unbounded"]]
+    assert len(bounce) == 1  # V = 12.5 m × 2.0843 Hz = 93.8 km/h
+    flagged = {}
+    for n in (2001, 2000):
+        v = np.linspace(low, high, n)
+        assert not np.isin(critical.speeds_m_s, v).any()  # the resonances fall between grid speeds
+        c = railmodal.amplitude_curves(system, modes, joints, ["body.bounce"], v)[0]
+        np.testing.assert_array_equal(c.speeds_m_s, np.union1d(v, critical.speeds_m_s))
+        flagged[n] = c.speeds_m_s[c.unbounded]
+        assert set(bounce) <= set(flagged[n]) <= set(critical.speeds_m_s)  # at critical speeds, nowhere else
+        assert np.all(c.amplitudes[c.unbounded] == 0) and np.all(np.isfinite(c.amplitudes))
+        # As given, the grid is swept exactly, and the resonance between two speeds is not flagged.
+        given = railmodal.amplitude_curves(system, modes, joints, ["body.bounce"], v, with_critical_speeds=False)[0]
+        np.testing.assert_array_equal(given.speeds_m_s, v)
+        assert not given.unbounded.any()
+        # Away from the inserted speeds the two sweeps are the same computation.
+        np.testing.assert_array_equal(c.amplitudes[np.isin(c.speeds_m_s, v)], given.amplitudes)
+    np.testing.assert_array_equal(flagged[2001], flagged[2000])
+
+
 def test_a_source_made_in_python():
     system = railmodal.assemble(railmodal.load_vehicle(data("vehicles", "resort_car.toml")))
     modes = railmodal.modes(system)

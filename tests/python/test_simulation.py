@@ -102,6 +102,9 @@ def test_fft_check_equals_the_command_line():
     frame = pandas.DataFrame(result.records())
     assert frame.to_dict("records") == result.checks
     assert frame["excited"].all() and result.summary.passed
+    # The command line's verdict in words, and a repr that says it (user audit 2026-11-28b, F9 f).
+    assert result.verdict == expected["verdict_text"] and result.verdict.startswith("passed: ")
+    assert repr(result) == "FftCheckResult(" + result.verdict + ")"
     # Spectra of the DOFs the checks looked at (each mode's most energetic one).
     assert set(result.spectra) == {c["dof"] for c in result.checks} <= set(result.history.labels)
 
@@ -125,6 +128,7 @@ def test_fft_check_says_why_not_applicable_and_checks_the_half_periods():
     assert h["tolerance"] == pytest.approx(want["tolerance"], rel=REL)
     assert h["worst_rel_error"] == pytest.approx(want["worst_rel_error"], rel=REL)
     # A linear release is checked by its spectrum: no half-period check, nothing not applicable.
+    assert result.verdict == expected["verdict_text"]
     free = railmodal.fft_check(railmodal.load_scene(FREE))
     assert free.half_period_check is None
     assert all(c["why_not_applicable"] is None for c in free.checks)

@@ -129,6 +129,56 @@ TEST(SimulationReport, WritesTheNamedOutputsInTheHistorysOrder) {
   EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1 + spectra.spectra.front().amplitude.size());
 }
 
+// A speed ramp writes the speed at each sample (user audit 2026-11-28b, F9 b: the user rebuilt
+// V(t) by hand): km/h after the time in the CSV, m/s beside time_s in the JSON, V₀ + (V₁ − V₀)·t/T
+// from the given 50 to the given 100 km/h. A scene at one speed writes none (its goldens stay).
+TEST(SimulationReport, ARampWritesTheSpeedOfEachSample) {
+  const Scene scene = load_scene(write_temp("ramp.toml", "[scene]\nname = \"ramp\"\nvehicle = \"" +
+                                                             data_file("two_axle_freight_wagon.toml") + R"("
+dofs = "vertical"
+[simulation]
+speed = "50 km/h"
+final_speed = "100 km/h"
+duration = "2 s"
+time_step = "50 ms"
+outputs = ["body.bounce"]
+[[source]]
+kind = "rail_joints"
+rail_length = "10 m"
+dip_depth = "5 mm"
+)"));
+  const Vehicle vehicle = load_vehicle(scene.vehicle_file);
+  const TimeHistory h = simulate_scene(scene, vehicle);
+  std::ostringstream csv, json;
+  write_time_history(csv, h, scene, vehicle, OutputFormat::csv);
+  write_time_history(json, h, scene, vehicle, OutputFormat::json);
+  std::istringstream lines(csv.str());
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "time [s],speed [km/h],body.bounce [m]");
+  const nlohmann::json j = nlohmann::json::parse(json.str());
+  ASSERT_EQ(j.at("speed_m_s").size(), static_cast<size_t>(h.time.size()));
+  for (Eigen::Index i = 0; i < h.time.size(); ++i) {
+    ASSERT_TRUE(std::getline(lines, line));
+    const size_t first = line.find(','), second = line.find(',', first + 1);
+    const double kmh = std::stod(line.substr(first + 1, second - first - 1));
+    // Written to 15 significant digits of 3.6·V(t): within 1e-12 km/h of the ramp (below 100 km/h
+    // the 15th digit is 1e-13; the sample times carry a few ulps of their own).
+    EXPECT_NEAR(kmh, 50.0 + 25.0 * h.time(i), 1e-12) << line;
+    // The JSON's m/s is V(t) in full; the CSV's km/h rounded at the 15th digit (5e-15 relative).
+    EXPECT_NEAR(j.at("speed_m_s")[i].get<double>(), kmh / 3.6, 1e-13 * kmh) << i;
+  }
+  EXPECT_FALSE(std::getline(lines, line));
+
+  const Scene steady = released_wagon(R"(["body.bounce"])");
+  std::ostringstream steady_csv, steady_json;
+  const TimeHistory s = simulate_scene(steady, vehicle);
+  write_time_history(steady_csv, s, steady, vehicle, OutputFormat::csv);
+  write_time_history(steady_json, s, steady, vehicle, OutputFormat::json);
+  EXPECT_EQ(first_line(steady_csv.str()), "time [s],body.bounce [m]");
+  EXPECT_FALSE(nlohmann::json::parse(steady_json.str()).contains("speed_m_s"));
+}
+
 TEST(SimulationReport, WritesOnlyTheNamedOutputs) {
   const Scene scene = released_wagon(R"(["body.pitch"])");
   const Vehicle vehicle = load_vehicle(scene.vehicle_file);
