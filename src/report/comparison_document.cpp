@@ -608,6 +608,7 @@ Table peak_table(const std::vector<DesignCurves>& sets, const std::vector<CurveK
 std::string drawn_designs(const std::vector<DesignCurves>& sets) {
   const size_t best = static_cast<size_t>(std::count_if(sets.begin(), sets.end(), [](const DesignCurves& s) { return !s.base; }));
   const bool base = best < sets.size();
+  if (best == 0) return "the base alone";
   const std::string variants = best == 1 ? "the best variant" : "the best " + std::to_string(best) + " variants";
   return (base ? "the base and " : "") + variants + " by rank, feasible or not (an infeasible one marked so)";
 }
