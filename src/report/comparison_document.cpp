@@ -571,10 +571,20 @@ std::vector<CurveKey> curve_keys(const std::vector<DesignCurves>& sets) {
   return keys;
 }
 
-std::string curve_title(const CriticalSpeedStudy& st, const CurveKey& key) {
-  const ExcitationSource& source = *st.scene.sources.at(key.source);
-  return report::source_legend(key.source, source.kind(), source.wavelength()) + ": " + key.output + " " +
-         to_string(key.quantity);
+// A curve's title, its source named with its wavelength (report::source_legend) when the drawn
+// designs share it; a study that sweeps it (the rail length) says it is each variant's own.
+std::string curve_title(const std::vector<DesignCurves>& sets, const CurveKey& key) {
+  const ExcitationSource& source = *sets.front().study.scene.sources.at(key.source);
+  const bool shared = std::all_of(sets.begin(), sets.end(), [&](const DesignCurves& s) {
+    const auto& sources = s.study.scene.sources;
+    return static_cast<size_t>(key.source) < sources.size() &&
+           sources[key.source]->wavelength() == source.wavelength();
+  });
+  std::string kind = source.kind();
+  std::replace(kind.begin(), kind.end(), '_', ' ');
+  const std::string name = shared ? report::source_legend(key.source, source.kind(), source.wavelength())
+                                  : "[" + std::to_string(key.source + 1) + "] " + kind + ", Λ of each variant";
+  return name + ": " + key.output + " " + to_string(key.quantity);
 }
 
 // The largest response on the grid and at the refined peaks (response::largest_response, as a
@@ -591,7 +601,7 @@ std::string peak_text(const CriticalSpeedStudy& st, const CurveKey& key) {
 Table peak_table(const std::vector<DesignCurves>& sets, const std::vector<CurveKey>& keys) {
   Table t;
   t.headers = {"variant"};
-  for (const CurveKey& k : keys) t.headers.push_back(curve_title(sets.front().study, k) + ": peak");
+  for (const CurveKey& k : keys) t.headers.push_back(curve_title(sets, k) + ": peak");
   t.numeric.assign(t.headers.size(), true);
   t.numeric.front() = false;
   for (const DesignCurves& s : sets) {
@@ -636,7 +646,7 @@ void write_curve_charts(std::ostream& out, const std::vector<DesignCurves>& sets
     const report::Unit u = report::unit_of(first.system, keys[k].output, keys[k].quantity);
     report::Chart chart;
     chart.id = "curves-" + std::to_string(k + 1);
-    chart.title = curve_title(first, keys[k]);
+    chart.title = curve_title(sets, keys[k]);
     chart.x_label = "speed (km/h)";
     chart.y_label = std::string(to_string(keys[k].quantity)) + " amplitude (" + u.name + ")";
     chart.log_y = true;
