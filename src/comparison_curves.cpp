@@ -35,8 +35,11 @@ ComparisonCurves comparison_curves(const Study& study, const Comparison& compari
   for (const RankedVariant* v : best_designs(comparison, best)) wanted.push_back({v, false});
   for (const auto& [v, base] : wanted) {
     DesignCurves d;
-    d.label = base ? "base" : std::to_string(v->rank) + ". " + v->result.name;
+    // An infeasible design is drawn with its mark, base or not: the reader of a curve that looks
+    // best sees that a constraint rules it out (the ranked table says which).
+    d.label = (base ? "base" : std::to_string(v->rank) + ". " + v->result.name) + (v->feasible ? "" : " (infeasible)");
     d.base = base;
+    d.variant = v->result.index;
     try {
       const StudyVariant variant = read_variant(study, v->result.index);
       // A ride scene has no periodic source to sweep (evaluate_variant skips it too).

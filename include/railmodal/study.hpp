@@ -380,14 +380,15 @@ Comparison rank_variants(const Study& study, std::vector<VariantResult> results)
 /// The comparison's base design (the study's vehicle unmodified, when the study keeps it), or
 /// nullptr.
 const RankedVariant* comparison_base(const Comparison& comparison);
-/// The best `count` designs other than the base, in rank order: the feasible ones, or any
-/// evaluated ones when none is feasible.
+/// The best `count` evaluated designs other than the base, in rank order, feasible or not (the
+/// ranking puts the feasible first; a report marks the infeasible ones).
 std::vector<const RankedVariant*> best_designs(const Comparison& comparison, int count);
 
 /// A design's critical-speed study, as a comparison report draws it.
 struct DesignCurves {
-  std::string label;  ///< "base", "1. softer springs"
+  std::string label;  ///< "base", "1. softer springs", "2. soft springs (infeasible)"
   bool base = false;
+  int variant = -1;  ///< the design's VariantResult::index
   CriticalSpeedStudy study;  ///< empty when the study computes no critical speeds (variant_work_of)
   /// The design's ride at the scene's ride speeds (no spectra), when the study ranks a ride metric.
   std::optional<RideResult> ride;

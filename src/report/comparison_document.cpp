@@ -15,6 +15,7 @@
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
+#include "railmodal/response.hpp"
 #include "railmodal/study.hpp"
 #include "report/comparison_document.hpp"
 #include "report/comparison_rows.hpp"
@@ -24,6 +25,7 @@
 #include "response/curve_peaks.hpp"
 #include "ride/nmv_scope.hpp"
 #include "study/metrics.hpp"
+#include "study/ranking.hpp"
 
 namespace railmodal {
 namespace {
@@ -101,9 +103,26 @@ std::string against_runner_up(const Comparison& c, const Writer& w, const Ranked
          w.text(" on every criterion and comes first in study order.");
 }
 
+// Whether `a` ranks behind `b` on the objective alone (constraints aside), as rank_entry
+// (study/ranking.cpp) sorts: the weighted sum smaller first; else the first criterion where they
+// differ, a missing value the worst.
+bool behind_on_objective(const Ranking& ranking, const RankedVariant& a, const RankedVariant& b) {
+  if (ranking.weighted) return a.objective && b.objective && *a.objective > *b.objective;
+  const auto key = [](const std::optional<double>& x, bool maximise) -> double {
+    if (!x || std::isnan(*x)) return INFINITY;
+    return maximise ? -*x : *x;
+  };
+  for (size_t k = 0; k < ranking.objective.size() && k < a.criteria.size() && k < b.criteria.size(); ++k) {
+    const double x = key(a.criteria[k], ranking.objective[k].maximise);
+    const double y = key(b.criteria[k], ranking.objective[k].maximise);
+    if (x != y) return x > y;
+  }
+  return false;
+}
+
 // The winner's objective against the base design's, and why the base is not in front.
 std::string against_base(const Comparison& c, const Writer& w, const RankedVariant& winner,
-                         const RankedVariant& base) {
+                         const RankedVariant& base, size_t feasible) {
   const auto& objective = c.ranking.objective;
   std::string b = w.text("Against the base:");
   for (size_t k = 0; k < objective.size(); ++k) {
@@ -118,6 +137,14 @@ std::string against_base(const Comparison& c, const Writer& w, const RankedVaria
   if (!base.result.ok()) b += w.text(" The base itself failed: " + base.result.failure + ".");
   else if (!base.feasible && !base.violations.empty())
     b += w.text(" The base violates " + study::violations(base.result, c.ranking, true).front() + ".");
+  // A winner worse than the base on what the study optimises wins on the constraints alone: said,
+  // so that "period 0.456 s (base 0.589 s)" does not read as an improvement (user audit
+  // 2026-11-28b, F6).
+  if (base.result.ok() && !base.feasible && behind_on_objective(c.ranking, winner, base))
+    b += w.text(feasible == 1 ? " The winner is worse than the base on the objective: it wins only as the one "
+                                "feasible design."
+                              : " The winner is worse than the base on the objective: it wins because the base is "
+                                "infeasible.");
   return b;
 }
 
@@ -130,11 +157,17 @@ void add_winner(const Comparison& c, const Writer& w, const report::DocumentTall
                                                     " variants (" + std::to_string(tally.feasible) + " feasible).");
   const RankedVariant* runner = c.variants.size() > 1 && c.variants[1].feasible ? &c.variants[1] : nullptr;
   if (runner && !c.ranking.objective.empty()) s += against_runner_up(c, w, winner, *runner);
+  // An infeasible runner-up (not the base, which has its own sentence) is drawn below with its
+  // mark: what rules it out is said here.
+  if (c.variants.size() > 1 && !runner && c.variants[1].result.ok() && !study::is_base(c.variants[1].result) &&
+      !c.variants[1].violations.empty())
+    s += w.text(" The runner-up ") + w.bold(c.variants[1].result.name) +
+         w.text(" is infeasible: it violates " + study::violations(c.variants[1].result, c.ranking, true).front() + ".");
   out->push_back(s);
   if (base && &winner == base)
     out->push_back(w.text("The base design is best: no variant improves on it within the constraints."));
   else if (base && !c.ranking.objective.empty())
-    out->push_back(against_base(c, w, winner, *base));
+    out->push_back(against_base(c, w, winner, *base, tally.feasible));
 }
 
 // Whether an evaluated variant's value of the constraint's metric lies outside it.
@@ -153,8 +186,23 @@ std::string constraint_sentence(const Writer& w, const RankingConstraint& k, siz
                 std::to_string(tally.variants - tally.failed) + " evaluated variants violate it.");
 }
 
+// Where a largest value over the scene's speeds lies at an end of their range, the largest may
+// lie beyond it (user audit 2026-11-28b, F9a): said of a drawn design (its scene is in `curves`),
+// "" otherwise. The ends are the scene's own speeds; 1e-9 relative allows the round-off of a grid
+// built by steps, and is far below the 0.1 km/h a table shows.
+std::string range_end(const ComparisonCurves& curves, int variant, double speed) {
+  for (const DesignCurves& d : curves.designs) {
+    if (d.variant != variant || d.study.curves.empty()) continue;
+    const Scene& scene = d.study.scene;
+    const double tolerance = 1e-9 * scene.max_speed;
+    if (std::abs(speed - scene.max_speed) <= tolerance) return "the range's end: the largest may lie above it";
+    if (std::abs(speed - scene.min_speed) <= tolerance) return "the range's start: the largest may lie below it";
+  }
+  return "";
+}
+
 // Whether the winner keeps the book's permissible dynamic deflections, and how closely.
-std::string deflection_sentence(const VariantResult& r, const Writer& w) {
+std::string deflection_sentence(const VariantResult& r, const Writer& w, const ComparisonCurves& curves) {
   const VariantResult::DeflectionCheck* worst = nullptr;
   for (const auto& d : r.deflections)
     if (!worst || d.unbounded > worst->unbounded ||
@@ -165,13 +213,16 @@ std::string deflection_sentence(const VariantResult& r, const Writer& w) {
     return w.text("The winner exceeds the permissible dynamic deflection: a resonance that friction does not "
                   "stop stretches " + worst->element + " without limit at " +
                   fixed(worst->speed * kKmh, 1) + " km/h.");
+  const std::string end = range_end(curves, r.index, worst->speed);
   return w.text(std::string(worst->kept() ? "The winner keeps" : "The winner exceeds") +
                 " the permissible dynamic deflections: at worst " +
                 fixed(100.0 * worst->deflection / worst->permissible, 1) + " % of the limit (" + worst->element + ", " +
-                worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h.");
+                worst->basis + ") at " + fixed(worst->speed * kKmh, 1) + " km/h" +
+                (end.empty() ? "" : ", " + end) + ".");
 }
 
-std::vector<std::string> verdict(const Comparison& c, const Writer& w, const report::DocumentTally& tally) {
+std::vector<std::string> verdict(const Comparison& c, const Writer& w, const report::DocumentTally& tally,
+                                 const ComparisonCurves& curves) {
   std::vector<std::string> out;
   const size_t feasible = tally.feasible, failed = tally.failed;
   if (feasible == 0)
@@ -181,7 +232,7 @@ std::vector<std::string> verdict(const Comparison& c, const Writer& w, const rep
   for (size_t k = 0; k < c.ranking.constraints.size(); ++k)
     out.push_back(constraint_sentence(w, c.ranking.constraints[k], tally.violating.at(k), tally));
   if (c.deflection_rule.active() && feasible > 0 && c.variants.front().result.ok())
-    out.push_back(deflection_sentence(c.variants.front().result, w));
+    out.push_back(deflection_sentence(c.variants.front().result, w, curves));
   if (failed > 0 && tally.failed_index)
     out.push_back(w.text(std::to_string(failed) + " variant" + (failed > 1 ? "s" : "") +
                          " could not be evaluated (first: ") +
@@ -520,9 +571,20 @@ std::vector<CurveKey> curve_keys(const std::vector<DesignCurves>& sets) {
   return keys;
 }
 
-std::string curve_title(const CriticalSpeedStudy& st, const CurveKey& key) {
-  return "[" + std::to_string(key.source + 1) + "] " + st.scene.sources.at(key.source)->kind() + ": " + key.output + " " +
-         to_string(key.quantity);
+// A curve's title, its source named with its wavelength (report::source_legend) when the drawn
+// designs share it; a study that sweeps it (the rail length) says it is each variant's own.
+std::string curve_title(const std::vector<DesignCurves>& sets, const CurveKey& key) {
+  const ExcitationSource& source = *sets.front().study.scene.sources.at(key.source);
+  const bool shared = std::all_of(sets.begin(), sets.end(), [&](const DesignCurves& s) {
+    const auto& sources = s.study.scene.sources;
+    return static_cast<size_t>(key.source) < sources.size() &&
+           sources[key.source]->wavelength() == source.wavelength();
+  });
+  std::string kind = source.kind();
+  std::replace(kind.begin(), kind.end(), '_', ' ');
+  const std::string name = shared ? report::source_legend(key.source, source.kind(), source.wavelength())
+                                  : "[" + std::to_string(key.source + 1) + "] " + kind + ", Λ of each variant";
+  return name + ": " + key.output + " " + to_string(key.quantity);
 }
 
 // The largest response on the grid and at the refined peaks (response::largest_response, as a
@@ -539,7 +601,7 @@ std::string peak_text(const CriticalSpeedStudy& st, const CurveKey& key) {
 Table peak_table(const std::vector<DesignCurves>& sets, const std::vector<CurveKey>& keys) {
   Table t;
   t.headers = {"variant"};
-  for (const CurveKey& k : keys) t.headers.push_back(curve_title(sets.front().study, k) + ": peak");
+  for (const CurveKey& k : keys) t.headers.push_back(curve_title(sets, k) + ": peak");
   t.numeric.assign(t.headers.size(), true);
   t.numeric.front() = false;
   for (const DesignCurves& s : sets) {
@@ -550,13 +612,41 @@ Table peak_table(const std::vector<DesignCurves>& sets, const std::vector<CurveK
   return t;
 }
 
+// The designs the curves and their tables show, as many as there are: "the base and the best 2
+// variants by rank, feasible or not (an infeasible one marked so)". The text once said "the best
+// 3" where one was drawn (user audit 2026-11-28b, F5).
+std::string drawn_designs(const std::vector<DesignCurves>& sets) {
+  const size_t best = static_cast<size_t>(std::count_if(sets.begin(), sets.end(), [](const DesignCurves& s) { return !s.base; }));
+  const bool base = best < sets.size();
+  if (best == 0) return "the base alone";
+  const std::string variants = best == 1 ? "the best variant" : "the best " + std::to_string(best) + " variants";
+  return (base ? "the base and " : "") + variants + " by rank, feasible or not (an infeasible one marked so)";
+}
+
+// What the peaks and curves leave out of a design with leaf friction, as critical-speed's note
+// says it (friction_model_note there), "" when no design drawn has any: with Coulomb friction in
+// the resonance criterion only, "unbounded" beside "friction stops it" in the same report read as
+// a contradiction (user audit 2026-11-28b, F6).
+std::string friction_caption(const std::vector<DesignCurves>& sets) {
+  for (const DesignCurves& s : sets) {
+    if (s.study.curves.empty() || !has_leaf_friction(s.study.system)) continue;
+    if (const double x = s.study.scene.friction_reference_amplitude; x > 0.0)
+      return " Leaf friction: as the scene asks, an equivalent viscous damping for a spring stretch amplitude of " +
+             significant(x * 1e3, 4) + " mm, an approximation whose peaks depend on that choice.";
+    return " Leaf friction: Coulomb, in the resonance criterion only: these amplitudes are those of the "
+           "frictionless linear model, so a resonance reads unbounded here even where friction stops it (the "
+           "critical-speed report says which; the permissible deflections below take friction).";
+  }
+  return "";
+}
+
 void write_curve_charts(std::ostream& out, const std::vector<DesignCurves>& sets, const std::vector<CurveKey>& keys) {
   for (size_t k = 0; k < keys.size(); ++k) {
     const CriticalSpeedStudy& first = sets.front().study;
     const report::Unit u = report::unit_of(first.system, keys[k].output, keys[k].quantity);
     report::Chart chart;
     chart.id = "curves-" + std::to_string(k + 1);
-    chart.title = curve_title(first, keys[k]);
+    chart.title = curve_title(sets, keys[k]);
     chart.x_label = "speed (km/h)";
     chart.y_label = std::string(to_string(keys[k].quantity)) + " amplitude (" + u.name + ")";
     chart.log_y = true;
@@ -711,7 +801,7 @@ std::string rule_text(const DeflectionRule& rule) {
 
 // The checks of the base and the best variants: one row per limit (basis), for the element
 // that comes closest to it (or exceeds it most), with how many elements share that limit.
-Table deflection_table(const Comparison& c) {
+Table deflection_table(const Comparison& c, const ComparisonCurves& curves) {
   Table t;
   t.headers = {"variant", "limit", "permissible", "worst element", "its largest dynamic deflection", "at", "verdict"};
   t.numeric = {false, false, true, false, true, true, false};
@@ -722,7 +812,9 @@ Table deflection_table(const Comparison& c) {
   for (const RankedVariant* v : shown) {
     const VariantResult& r = v->result;
     if (!r.ok()) continue;
-    if (r.deflections.empty()) t.rows.push_back({r.name, "no spring the rule limits", "–", "–", "–", "–", "–"});
+    // An infeasible design says so, as its curves' legend does (comparison_curves).
+    const std::string name = r.name + (v->feasible ? "" : " (infeasible)");
+    if (r.deflections.empty()) t.rows.push_back({name, "no spring the rule limits", "–", "–", "–", "–", "–"});
     std::vector<std::string> bases;
     for (const auto& d : r.deflections)
       if (std::find(bases.begin(), bases.end(), d.basis) == bases.end()) bases.push_back(d.basis);
@@ -735,12 +827,14 @@ Table deflection_table(const Comparison& c) {
           if (!worst || ratio(d) > ratio(*worst)) worst = &d;
         }
       const std::string stage = worst->stage.empty() ? "" : " (" + worst->stage + " stage)";
-      t.rows.push_back({r.name, basis, fixed(worst->permissible * 1000.0, 1) + " mm",
+      const std::string end = worst->unbounded ? "" : range_end(curves, r.index, worst->speed);
+      t.rows.push_back({name, basis, fixed(worst->permissible * 1000.0, 1) + " mm",
                         worst->element + stage + (count > 1 ? ", worst of " + std::to_string(count) : ""),
                         worst->unbounded
                             ? "unbounded: a resonance friction does not stop"
                             : fixed(100.0 * worst->deflection / worst->permissible, 1) + " % of permissible",
-                        fixed(worst->speed * kKmh, 1) + " km/h, source " + std::to_string(worst->source + 1),
+                        fixed(worst->speed * kKmh, 1) + " km/h, source " + std::to_string(worst->source + 1) +
+                            (end.empty() ? "" : " (" + end + ")"),
                         worst->kept() ? "within the limit" : "exceeds the limit"});
     }
   }
@@ -775,7 +869,7 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c, 
   const Writer w{false};
   out << "# Design comparison: " << c.study << "\n\nStudy `" << study.source << "`, " << tally.variants
       << " variants. " << ranking_text(c) << "\n\n## Why the winner wins\n\n";
-  for (const std::string& s : verdict(c, w, tally)) out << "- " << s << "\n";
+  for (const std::string& s : verdict(c, w, tally, curves)) out << "- " << s << "\n";
   out << "\n## Ranked variants\n\n";
   report::write_markdown_table(out, ranked_table(c));
   if (const std::string note = table_note(tally); !note.empty()) out << note << "\n\n";
@@ -793,18 +887,18 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c, 
   const std::vector<DesignCurves>& sets = curves.designs;
   if (const std::vector<CurveKey> keys = curve_keys(sets); !keys.empty()) {
     out << "## Peak responses of the best variants\n\nThe largest amplitude of each output over the speed range, "
-           "for the base and the best " << kReportBest << " variants; the curves are in the HTML report.\n\n";
+           "for " << drawn_designs(sets) << "; the curves are in the HTML report." << friction_caption(sets) << "\n\n";
     report::write_markdown_table(out, peak_table(sets, keys));
   }
   if (const std::string metric = ranked_ride_metric(c.ranking); !metric.empty() && any_ride(sets)) {
     out << "## " << ride_metric_at_speed_title(metric) << " against speed\n\nAt each speed of the scene's ride, "
-           "for the base and the best " << kReportBest << " variants (" << study::title(metric)
+           "for " << drawn_designs(sets) << " (" << study::title(metric)
         << " is the largest over these speeds); the chart is in the HTML report.\n\n";
     report::write_markdown_table(out, ride_table(sets, metric));
   }
   if (c.deflection_rule.active()) {
     out << "## Permissible dynamic deflections\n\n" << rule_text(c.deflection_rule) << "\n\n";
-    report::write_markdown_table(out, deflection_table(c));
+    report::write_markdown_table(out, deflection_table(c, curves));
   }
   for (const std::string& n : curves.notes) out << n << "\n\n";
   out << "---\n\nWritten by " << report::provenance_line("compare", provenance) << "\n";
@@ -817,7 +911,7 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
   out << "<h1>Design comparison: " << html_escape(c.study) << "</h1>\n<p>Study <code>" << html_escape(study.source)
       << "</code>, " << tally.variants << " variants. " << html_escape(ranking_text(c)) << "</p>\n";
   out << "<h2>Why the winner wins</h2>\n<ul>\n";
-  for (const std::string& s : verdict(c, w, tally)) out << "<li>" << s << "</li>\n";
+  for (const std::string& s : verdict(c, w, tally, curves)) out << "<li>" << s << "</li>\n";
   out << "</ul>\n<h2>Ranked variants</h2>\n";
   report::write_html_table(out, ranked_table(c));
   if (const std::string note = table_note(tally); !note.empty()) out << "<p class=note>" << html_escape(note) << "</p>\n";
@@ -832,18 +926,18 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
   }
   const std::vector<DesignCurves>& sets = curves.designs;
   if (const std::vector<CurveKey> keys = curve_keys(sets); !keys.empty()) {
-    out << "<h2>Amplitude against speed: the best variants over the base</h2>\n<p class=note>The base dashed; the "
-           "best "
-        << kReportBest
-        << " variants by rank. Each curve sums its source's harmonics; logarithmic scale; gaps are undamped "
-           "resonances (unbounded).</p>\n";
+    out << "<h2>Amplitude against speed: the best variants over the base</h2>\n<p class=note>Drawn: "
+        << html_escape(drawn_designs(sets))
+        << ", the base dashed. Each curve sums its source's harmonics; logarithmic scale; gaps are undamped "
+           "resonances (unbounded)."
+        << html_escape(friction_caption(sets)) << "</p>\n";
     write_curve_charts(out, sets, keys);
     report::write_html_table(out, peak_table(sets, keys));
   }
   if (const std::string metric = ranked_ride_metric(c.ranking); !metric.empty() && any_ride(sets)) {
     out << "<h2>" << html_escape(ride_metric_at_speed_title(metric)) << " against speed: the best variants over the "
-           "base</h2>\n<p class=note>At each speed of the scene's ride; the base dashed, the best "
-        << kReportBest << " variants by rank. The ranked value (" << html_escape(study::title(metric))
+           "base</h2>\n<p class=note>At each speed of the scene's ride, for "
+        << html_escape(drawn_designs(sets)) << ", the base dashed. The ranked value (" << html_escape(study::title(metric))
         << ") is the largest over these speeds.</p>\n";
     write_ride_chart(out, sets, metric);
     report::write_html_table(out, ride_table(sets, metric));
@@ -851,7 +945,7 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
   if (c.deflection_rule.active()) {
     out << "<h2>Permissible dynamic deflections</h2>\n<p class=note>" << html_escape(rule_text(c.deflection_rule))
         << "</p>\n";
-    report::write_html_table(out, deflection_table(c));
+    report::write_html_table(out, deflection_table(c, curves));
   }
   for (const std::string& n : curves.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
   report::write_html_footer(out, "compare", provenance);

@@ -287,6 +287,13 @@ std::optional<double> lowest_critical_speed(const VariantResult& r) {
   return r.critical_speeds.empty() ? std::numeric_limits<double>::infinity() : r.critical_speeds.front().speed;
 }
 
+// The mode of the lowest critical speed, the one a constraint on it binds: a column of its own
+// could read as the bounce's where it is the pitch's (user audit 2026-11-28b, F8); "" for none.
+const std::string& lowest_critical_mode(const VariantResult& r) {
+  static const std::string none;
+  return r.ok() && !r.critical_speeds.empty() ? r.critical_speeds.front().mode_name : none;
+}
+
 std::optional<double> body_deflection(const VariantResult& r) {
   if (!r.ok()) return std::nullopt;
   for (const auto& [body, deflection] : r.static_deflections)
@@ -318,6 +325,8 @@ void append_csv_row(std::string* row, const Columns& columns, const RankedVarian
   if (columns.critical_speeds) {
     *row += ',';
     if (const auto lowest = lowest_critical_speed(r)) append_exact(row, *lowest * kKmh);
+    *row += ',';
+    report::append_csv_field(row, lowest_critical_mode(r));
   }
   *row += ',';
   if (const auto deflection = body_deflection(r)) append_exact(row, *deflection * 1000.0);
@@ -394,7 +403,9 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
     head.push_back("periods [s]");
     return head;
   }
-  if (columns.critical_speeds) head.push_back(report::csv_heading("lowest_critical_speed", "km/h"));
+  if (columns.critical_speeds)
+    for (const std::string& h : {report::csv_heading("lowest_critical_speed", "km/h"), std::string("lowest_critical_speed_mode")})
+      head.push_back(h);
   head.push_back(report::csv_heading("static_deflection", "mm"));
   if (columns.deflections) head.push_back("dynamic_deflection_ratio");
   if (columns.nmv) head.push_back("max_nmv_partial");
@@ -430,7 +441,8 @@ std::vector<std::string> table_row(const Columns& columns, const RankedVariant& 
     row.push_back(shown_value(k, r.ok() ? metric_value(r, k.metric) : std::nullopt, r));
   if (columns.critical_speeds) {
     const auto lowest = lowest_critical_speed(r);
-    row.push_back(!lowest ? "-" : number(*lowest * kKmh, 1));
+    const std::string& mode = lowest_critical_mode(r);
+    row.push_back(!lowest ? "-" : number(*lowest * kKmh, 1) + (mode.empty() ? "" : " (" + mode + ")"));
   }
   const auto deflection = body_deflection(r);
   row.push_back(!deflection ? "-" : number(*deflection * 1000.0, 1));

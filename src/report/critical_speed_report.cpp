@@ -38,6 +38,12 @@ std::string source_label(const CriticalSpeedStudy& study, int s) {
   return "[" + std::to_string(s + 1) + "] " + study.scene.sources[s]->kind();
 }
 
+// The same in a chart's legend, with its wavelength (report::source_legend): a chart stands
+// apart from the Sources table.
+std::string source_legend(const CriticalSpeedStudy& study, int s) {
+  return report::source_legend(s, study.scene.sources[s]->kind(), study.scene.sources[s]->wavelength());
+}
+
 // Round-off shown as what it is, in the Markdown and HTML reports (CSV and JSON keep every
 // value): an amplitude or growth of at most 1e-12 of the largest the report gives the same
 // output and quantity reads 0. A mode that does not move an output (by symmetry: the Su
@@ -364,7 +370,7 @@ void add_excitation_lines(const CriticalSpeedStudy& st, report::Chart* c) {
     const auto& src = *st.scene.sources[s];
     for (int k = 1; k <= src.harmonic_count(); ++k) {
       report::ChartSeries line;
-      line.label = k > 1 ? "" : source_label(st, static_cast<int>(s)) + (src.harmonic_count() == 1 ? "" : " (k = 1…" + std::to_string(src.harmonic_count()) + ")");
+      line.label = k > 1 ? "" : source_legend(st, static_cast<int>(s)) + (src.harmonic_count() == 1 ? "" : " (k = 1…" + std::to_string(src.harmonic_count()) + ")");
       line.dashed = k > 1;
       line.colour = static_cast<int>(s);  // every harmonic in its source's colour, as the legend shows
       for (double V : {st.scene.min_speed, st.scene.max_speed}) {
@@ -423,7 +429,7 @@ report::Chart amplitude_chart(const CriticalSpeedStudy& st, const std::string& l
   for (const auto& curve : st.curves) {
     if (curve.output != label || curve.quantity != quantity) continue;
     report::ChartSeries s;
-    s.label = source_label(st, curve.source);
+    s.label = source_legend(st, curve.source);
     for (size_t i = 0; i < curve.speeds.size(); ++i) {
       s.x.push_back(curve.speeds[i] * kKmh);
       s.y.push_back(curve.unbounded[i] ? NAN : curve.amplitudes[i] * u.scale);

@@ -91,6 +91,15 @@ inline std::string fixed(double value, int decimals) {
   return std::string(first, end);
 }
 
+/// A source as a chart's legend or title names it, with what tells two of a kind apart: its
+/// number in the scene from 1, its kind in words and its fundamental wavelength ("[1] rail
+/// joints, Λ = 18 m"), so that a reader of the chart need not look it up in the Sources table
+/// (user audit 2026-11-28b, F8). The tables keep "[1] rail_joints" beside that table.
+inline std::string source_legend(int index, std::string kind, double wavelength_m) {
+  std::replace(kind.begin(), kind.end(), '_', ' ');
+  return "[" + std::to_string(index + 1) + "] " + kind + ", Λ = " + significant(wavelength_m, 5) + " m";
+}
+
 /// A table cell: `text` right-aligned in `width` characters, or after one space when it is
 /// wider, so that a large number never runs into the column before it.
 inline std::string right_cell(const std::string& text, size_t width) {

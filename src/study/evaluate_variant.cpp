@@ -376,6 +376,7 @@ void name_what_is_read(const study::ModeNamesRead& read, CriticalSpeedStudy* stu
         return;
       }
   };
+  if (read.lowest_critical_speed && !study->critical_speeds.empty()) name_speed(&study->critical_speeds.front());
   bool every = false;  // a mode a metric names is missing: every name, for check_mode_names's list
   for (const std::string& x : read.periods) {  // metric_value: the first oscillatory mode named x
     bool found = false;

@@ -33,7 +33,8 @@ int evaluate_each(const Study& study, const EvaluationOptions& options,
 
 /// Which mode names a variant's result carries (issue 19, item 2: naming its modes cost a
 /// twentieth of a variant). `all`: every mode's and critical speed's, as evaluate_variant gives
-/// them. Otherwise only what the ranking's metrics read: for each mode named by a metric
+/// them. Otherwise the lowest critical speed's mode (the tables name it) and what the
+/// ranking's metrics read: for each mode named by a metric
 /// `period:X`, the modes in order up to the first oscillatory one named X; for each
 /// `critical_speed:X`, the critical speeds' modes in order up to the first named X; every name
 /// when a variant has no such mode (so that a metric naming a mode no variant has is refused
@@ -43,6 +44,9 @@ struct ModeNamesRead {
   bool all = true;
   std::vector<std::string> periods;          ///< X of the metrics period:X
   std::vector<std::string> critical_speeds;  ///< X of the metrics critical_speed:X
+  /// The lowest critical speed's mode, which the tables and CSV name beside it (user audit
+  /// 2026-11-28b, F8): one eigenspace named a variant.
+  bool lowest_critical_speed = true;
 };
 
 /// The names a ranking by `ranking` reads: ModeNamesRead without `all`.

@@ -164,15 +164,13 @@ const RankedVariant* comparison_base(const Comparison& comparison) {
   return nullptr;
 }
 
+// In rank order, feasible or not: a report that says it draws the best few by rank draws them,
+// an infeasible runner-up with its mark (the designer sees why it fails), not the winner alone
+// (user audit 2026-11-28b, F5).
 std::vector<const RankedVariant*> best_designs(const Comparison& comparison, int count) {
   std::vector<const RankedVariant*> best;
-  for (bool need_feasible : {true, false}) {
-    for (const RankedVariant& v : comparison.variants)
-      if (best.size() < static_cast<size_t>(count) && v.result.ok() && !study::is_base(v.result) &&
-          (v.feasible || !need_feasible) && std::find(best.begin(), best.end(), &v) == best.end())
-        best.push_back(&v);
-    if (!best.empty()) break;
-  }
+  for (const RankedVariant& v : comparison.variants)
+    if (best.size() < static_cast<size_t>(count) && v.result.ok() && !study::is_base(v.result)) best.push_back(&v);
   return best;
 }
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "railmodal/railmodal.hpp"
+#include "report/text_format.hpp"
 #include "test_support.hpp"
 
 namespace railmodal::test {
@@ -183,17 +184,204 @@ TEST(ComparisonReport, NoMetricKeyReachesThePagesOfTheBundledStudies) {
   }
 }
 
-TEST(ComparisonReport, PeakTableHasTheBaseAndTheBestFeasibleVariants) {
+TEST(ComparisonReport, PeakTableHasTheBaseAndTheBestVariantsByRank) {
   const TwoAxleStudy& s = two_axle();
   const auto rows = table_after(s.report(OutputFormat::markdown), "## Peak responses");
   ASSERT_EQ(rows.size(), 2u + 1u + static_cast<size_t>(kReportBest));
-  EXPECT_EQ(cells(rows[2]).at(0), "base");
+  const RankedVariant* base = comparison_base(s.comparison);
+  ASSERT_NE(base, nullptr);
+  EXPECT_EQ(cells(rows[2]).at(0), base->feasible ? "base" : "base (infeasible)");
   int shown = 0;
   for (const RankedVariant& v : s.comparison.variants) {
-    if (!v.feasible || shown == kReportBest) continue;
-    EXPECT_EQ(cells(rows[3 + shown]).at(0), std::to_string(v.rank) + ". " + v.result.name);
+    if (&v == base || shown == kReportBest) continue;
+    EXPECT_EQ(cells(rows[3 + shown]).at(0),
+              std::to_string(v.rank) + ". " + v.result.name + (v.feasible ? "" : " (infeasible)"));
     ++shown;
   }
+}
+
+// The audit's two-axle wagon (user audit 2026-11-28b: 42.2 t on 1.2 MN/m leaf springs with
+// φ = 0.1, rails of 18 and 25 m, speeds 20–200 km/h) and its study of three layouts: the stiff
+// leaf B is the one feasible design (pitch critical speed 136.3 km/h ≥ 120 km/h on 18 m rails),
+// the soft series layout C ranks second, infeasible (89.0 km/h), and the base third (105.4 km/h).
+struct AuditWagonStudy {
+  Study study;
+  Comparison comparison;
+  // `friction`: the leaf springs' relative friction φ, none when 0.
+  explicit AuditWagonStudy(double friction) {
+    const std::string leaf = R"(kind = "leaf", stiffness = "1.2 MN/m")" +
+                             (friction > 0.0 ? ", relative_friction = " + std::to_string(friction) : std::string());
+    write_temp("wagon.toml", R"([vehicle]
+name = "Two-axle wagon, laden, audit"
+template = "two-axle"
+[body]
+mass = "42.2 t"
+cg_height = "1.0 m"
+radius_of_gyration = { roll = "1.2 m", pitch = "4.04 m", yaw = "4.04 m" }
+[suspension]
+wheelbase = "8 m"
+spring_spacing = "2.0 m"
+spring = [{ )" + leaf + R"( }]
+)");
+    write_temp("scene.toml", R"([scene]
+name = "18 m and 25 m rails"
+vehicle = "wagon.toml"
+dofs = "vertical"
+[speed]
+min = "20 km/h"
+max = "200 km/h"
+step = "0.5 km/h"
+[[source]]
+kind = "rail_joints"
+rail_length = "18 m"
+joints = "opposite"
+dip_depth = "5 mm"
+[[source]]
+kind = "rail_joints"
+rail_length = "25 m"
+joints = "opposite"
+dip_depth = "5 mm"
+[[output]]
+dof = "body.bounce"
+[[output]]
+dof = "body.pitch"
+)");
+    study = load_study(write_temp("study.toml", R"([study]
+name = "three spring layouts"
+vehicle = "wagon.toml"
+scene = "scene.toml"
+base = true
+[[variant]]
+name = "B stiff leaf"
+overrides = { "suspension.spring[0].stiffness" = "2.0 MN/m" }
+[[variant]]
+name = "C leaf + coil in series"
+overrides = { "suspension.spring" = [{ )" + leaf + R"( }, { kind = "coil", stiffness = "3 MN/m" }] }
+[permissible_dynamic_deflection]
+rule = "lehner"
+service = "freight"
+[ranking]
+min_lowest_critical_speed = "120 km/h"
+max_dynamic_deflection_ratio = 1
+objective = [{ metric = "bounce_period", goal = "max" }]
+)"));
+    comparison = rank_variants(study, evaluate_study(study, {}));
+  }
+  std::string report(OutputFormat format) const {
+    std::ostringstream out;
+    write_comparison_report(out, study, comparison, comparison_curves(study, comparison, kReportBest), format);
+    return out.str();
+  }
+};
+
+// F5: the report draws what it says, the best variants by rank, an infeasible runner-up with
+// its mark and the reason it fails, not the feasible winner alone.
+TEST(ComparisonReport, InfeasibleRunnerUpIsDrawnAndMarked) {
+  const AuditWagonStudy s(0.1);
+  const auto& v = s.comparison.variants;
+  ASSERT_EQ(v.size(), 3u);
+  ASSERT_EQ(v[0].result.name, "B stiff leaf");
+  ASSERT_TRUE(v[0].feasible);
+  ASSERT_EQ(v[1].result.name, "C leaf + coil in series");
+  ASSERT_FALSE(v[1].feasible);
+  ASSERT_FALSE(v[2].feasible);  // the base
+  const std::string md = s.report(OutputFormat::markdown);
+  const auto peaks = table_after(md, "## Peak responses");
+  ASSERT_EQ(peaks.size(), 2u + 3u) << md;
+  EXPECT_EQ(cells(peaks[2]).at(0), "base (infeasible)");
+  EXPECT_EQ(cells(peaks[3]).at(0), "1. B stiff leaf");
+  EXPECT_EQ(cells(peaks[4]).at(0), "2. C leaf + coil in series (infeasible)");
+  EXPECT_NE(md.find("for the base and the best 2 variants by rank, feasible or not"), std::string::npos) << md;
+  const auto deflections = table_after(md, "## Permissible dynamic deflections");
+  ASSERT_EQ(deflections.size(), 2u + 4u) << md;  // the leaf springs' limit each, and C's coils'
+  EXPECT_EQ(cells(deflections[4]).at(0), "C leaf + coil in series (infeasible)");
+  EXPECT_EQ(cells(deflections[5]).at(0), "C leaf + coil in series (infeasible)");
+  EXPECT_NE(md.find("The runner-up **C leaf + coil in series** is infeasible: it violates lowest critical speed "),
+            std::string::npos)
+      << md;
+  const std::string html = s.report(OutputFormat::html);
+  EXPECT_NE(html.find("Drawn: the base and the best 2 variants by rank"), std::string::npos);
+  EXPECT_EQ(count(html, ">2. C leaf + coil in series (infeasible)</text>"), count(html, "clipPath id=\"plot-curves-"));
+}
+
+// F6: B wins only because it alone is feasible; its bounce period is shorter than the base's,
+// and the objective maximises it.
+TEST(ComparisonReport, AWinnerWorseThanTheBaseSaysItWinsOnTheConstraints) {
+  const AuditWagonStudy s(0.1);
+  const RankedVariant* base = comparison_base(s.comparison);
+  ASSERT_NE(base, nullptr);
+  ASSERT_TRUE(s.comparison.variants[0].criteria[0] && base->criteria[0]);
+  ASSERT_LT(*s.comparison.variants[0].criteria[0], *base->criteria[0]);  // 0.456 s against 0.589 s
+  const std::string md = s.report(OutputFormat::markdown);
+  EXPECT_NE(md.find("The winner is worse than the base on the objective: it wins only as the one feasible design."),
+            std::string::npos)
+      << md;
+  // The bundled study's winner beats its base: no such sentence there.
+  EXPECT_EQ(two_axle().report(OutputFormat::markdown).find("worse than the base"), std::string::npos);
+}
+
+// F6: the peaks are those of the frictionless linear model; the caption says so where a design
+// has leaf friction, and only there.
+TEST(ComparisonReport, PeakCaptionSaysTheAmplitudesAreFrictionless) {
+  const std::string caption = "Leaf friction: Coulomb, in the resonance criterion only: these amplitudes are those of "
+                              "the frictionless linear model";
+  const std::string md = AuditWagonStudy(0.1).report(OutputFormat::markdown);
+  EXPECT_NE(md.substr(md.find("## Peak responses")).find(caption), std::string::npos) << md;
+  EXPECT_NE(AuditWagonStudy(0.1).report(OutputFormat::html).find(caption), std::string::npos);
+  EXPECT_EQ(AuditWagonStudy(0.0).report(OutputFormat::markdown).find("Leaf friction"), std::string::npos);
+}
+
+// F9(a): a largest deflection found at the top speed of the scene may lie above it: said in the
+// verdict and the table, and not of one inside the range.
+TEST(ComparisonReport, AWorstDeflectionAtTheRangesEndSaysSo) {
+  const AuditWagonStudy s(0.1);
+  const auto worst_speed = [](const VariantResult& r) {
+    const VariantResult::DeflectionCheck* worst = nullptr;
+    for (const auto& d : r.deflections)
+      if (!worst || d.deflection / d.permissible > worst->deflection / worst->permissible) worst = &d;
+    return worst ? worst->speed * 3.6 : NAN;
+  };
+  // 1e-6 km/h: the grid's last speed is the scene's 200 km/h up to the round-off of its steps.
+  ASSERT_NEAR(worst_speed(s.comparison.variants[0].result), 200.0, 1e-6);  // B, the winner
+  const RankedVariant* base = comparison_base(s.comparison);
+  ASSERT_LT(worst_speed(base->result), 199.0);  // the base's is inside the range (155.5 km/h)
+  const std::string md = s.report(OutputFormat::markdown);
+  EXPECT_NE(md.find("at 200.0 km/h, the range's end: the largest may lie above it."), std::string::npos) << md;
+  const auto rows = table_after(md, "## Permissible dynamic deflections");
+  ASSERT_EQ(rows.size(), 2u + 4u) << md;  // the base, B, C's leaf and coil stages
+  EXPECT_EQ(cells(rows[2]).at(5).find("range's end"), std::string::npos) << rows[2];  // the base
+  EXPECT_NE(cells(rows[3]).at(5).find("(the range's end: the largest may lie above it)"), std::string::npos) << rows[3];
+}
+
+// F8: the lowest critical speed names its mode (B's binding one is the pitch on 18 m rails,
+// V = f·L, not the bounce), in the tables and in a CSV column of its own; chart titles and
+// legends say which rails a source is.
+TEST(ComparisonReport, LowestCriticalSpeedNamesItsModeAndSourcesTheirWavelength) {
+  const AuditWagonStudy s(0.1);
+  const VariantResult& b = s.comparison.variants[0].result;
+  ASSERT_FALSE(b.critical_speeds.empty());
+  EXPECT_EQ(b.critical_speeds.front().mode_name, "body pitch");
+  const std::string expected = report::fixed(b.critical_speeds.front().speed * 3.6, 1) + " (body pitch)";
+  const std::string md = s.report(OutputFormat::markdown);
+  const auto ranked = table_after(md, "## Ranked variants");
+  const auto head = cells(ranked.at(0));
+  const size_t column = std::find(head.begin(), head.end(), "lowest critical speed [km/h]") - head.begin();
+  ASSERT_LT(column, head.size()) << ranked.at(0);
+  EXPECT_EQ(cells(ranked.at(2)).at(column), expected);
+  std::ostringstream csv;
+  write_comparison(csv, s.comparison, OutputFormat::csv);
+  std::istringstream lines(csv.str());
+  std::string heading, first;
+  std::getline(lines, heading);
+  std::getline(lines, first);
+  EXPECT_NE(heading.find(",lowest_critical_speed [km/h],lowest_critical_speed_mode,static_deflection [mm],"),
+            std::string::npos)
+      << heading;
+  EXPECT_TRUE(std::regex_search(first, std::regex(R"(,136\.[0-9]+,body pitch,51\.)"))) << first;
+  const std::string html = s.report(OutputFormat::html);
+  EXPECT_NE(html.find("[1] rail joints, Λ = 18 m: body.bounce displacement"), std::string::npos);
+  EXPECT_NE(html.find("[2] rail joints, Λ = 25 m: body.pitch displacement"), std::string::npos);
+  EXPECT_EQ(html.find("rail_joints"), std::string::npos);
 }
 
 TEST(ComparisonReport, HtmlIsOnePageWithItsPlotsInline) {
@@ -211,7 +399,11 @@ TEST(ComparisonReport, HtmlIsOnePageWithItsPlotsInline) {
   EXPECT_GE(curves, 1u);
   EXPECT_EQ(count(html, "<svg"), 4u + curves);
   // Each curve chart has the base (dashed) and the best variants in its legend.
-  EXPECT_EQ(count(html, ">base</text>"), curves);
+  // An infeasible design is marked so (the base here: its bounce resonance on short rails lies
+  // below the 90 km/h the study asks).
+  const RankedVariant* base = comparison_base(s.comparison);
+  ASSERT_NE(base, nullptr);
+  EXPECT_EQ(count(html, base->feasible ? ">base</text>" : ">base (infeasible)</text>"), curves);
   for (int k = 0; k < kReportBest; ++k) {
     const RankedVariant& v = s.comparison.variants[k];
     ASSERT_TRUE(v.feasible);

@@ -315,8 +315,8 @@ std::vector<VariantResult> evaluated_each(const Study& study, bool names_written
 
 void expect_names_read(Study study);
 
-// A CSV or table of a ranking writes no mode name, so its variants name only the modes the
-// ranking reads: every metric has the value it has with every name, every name given is the
+// A CSV or table of a ranking writes one mode name, the lowest critical speed's, so its variants
+// name only that and the modes the ranking reads: every metric has the value it has with every name, every name given is the
 // one every-name evaluation gives, and the names not read are left out. A metric naming a mode
 // the variant lacks has every name given (a study whose variants all lack it is refused with
 // their names listed, study::check_mode_names).
@@ -355,6 +355,8 @@ void expect_names_read(Study study) {
         EXPECT_EQ(named[k].modes[m].period_s, all[k].modes[m].period_s);
       }
       ASSERT_EQ(named[k].critical_speeds.size(), all[k].critical_speeds.size());
+      if (!all[k].critical_speeds.empty())  // the tables' lowest critical speed names its mode
+        EXPECT_EQ(named[k].critical_speeds.front().mode_name, all[k].critical_speeds.front().mode_name) << metric;
       for (size_t c = 0; c < all[k].critical_speeds.size(); ++c) {
         const std::string& name = named[k].critical_speeds[c].mode_name;
         EXPECT_TRUE(name.empty() ? !missing : name == all[k].critical_speeds[c].mode_name) << metric << ", " << c;
