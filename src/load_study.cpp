@@ -16,6 +16,7 @@
 #include "railmodal/errors.hpp"
 #include "input/document_readers.hpp"
 #include "input/table_reader.hpp"
+#include "model/analysis_limits.hpp"
 #include "study/metrics.hpp"
 #include "study/offered_metrics.hpp"
 #include "study/planned_variants.hpp"
@@ -28,6 +29,7 @@ namespace detail {
 struct StudySource {
   input::StudyFile file;
   study::PlannedVariants variants;  // made from their index when asked for
+  std::vector<std::string> notes;   // study_notes
 };
 
 }  // namespace detail
@@ -72,6 +74,25 @@ void refuse_metrics_not_offered(const input::StudyFile& file) {
   study::check_offered_metrics(file.plan.ranking, file.path, offered);
 }
 
+// What compare says once of the study's periods (study_notes): the notes `railmodal modes` prints
+// of each vehicle file of the study as written, in the scene's DOF set, each once. A vehicle on
+// wheelsets has its suspension modes, without the wheel–rail contact (user audit 2026-11-28, F5:
+// compare gave the coach's body lower sway as 1.13 s, 1.72 s on track, without a word). A vehicle
+// file that does not read or assemble alone is left to the variants that read it.
+std::vector<std::string> notes_of(const input::StudyFile& file) {
+  std::vector<std::string> notes;
+  for (const auto& [path, document] : file.vehicle_documents) {
+    try {
+      for (const std::string& n : model::undamped_mode_notes(assemble(input::read_vehicle(document, path), file.base_scene.dofs))) {
+        const std::string note = "periods [s], as `railmodal modes` notes them: " + n;
+        if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(note);
+      }
+    } catch (const std::exception&) {
+    }
+  }
+  return notes;
+}
+
 // The warnings of the study's base vehicle file and its scene as written (not a variant's
 // overrides), appended to `warnings`: the input a user wrote, said once rather than by every
 // variant that reads it. A base file that does not read alone (its variants' overrides complete
@@ -108,7 +129,9 @@ Study opened_study(const std::string& path, size_t max_variants, std::vector<std
   study.source = path;
   study.ranking = file.plan.ranking;
   study.deflection_rule = file.plan.deflection_rule;
-  study.plan = std::make_shared<detail::StudySource>(detail::StudySource{std::move(file), std::move(planned)});
+  std::vector<std::string> notes = notes_of(file);
+  study.plan = std::make_shared<detail::StudySource>(
+      detail::StudySource{std::move(file), std::move(planned), std::move(notes)});
   return study;
 }
 
@@ -196,6 +219,10 @@ std::vector<std::string> study_files(const Study& study) {
   if (!study.plan->file.scene_file.empty()) files.push_back(study.plan->file.scene_file);  // a study may have none
   for (const auto& [file, document] : study.plan->file.vehicle_documents) files.push_back(file);
   return files;
+}
+
+std::vector<std::string> study_notes(const Study& study) {
+  return study.plan ? study.plan->notes : std::vector<std::string>();
 }
 
 }  // namespace railmodal

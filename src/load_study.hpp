@@ -17,6 +17,12 @@ namespace railmodal {
 Study load_study(const std::string& path, const std::function<bool(int index)>& read_only, size_t max_variants,
                  std::vector<std::string>* warnings = nullptr);
 
+/// What compare's outputs say once of a study's periods (table, JSON "notes", reports; the CSV
+/// has no place for them): the notes `railmodal modes` prints of each of its vehicle files as
+/// written, in the scene's DOF set, such as that a vehicle on wheelsets has its suspension modes,
+/// without the wheel–rail contact terms. None for a study not read from a file.
+std::vector<std::string> study_notes(const Study& study);
+
 namespace detail {
 /// read_variant written into *variant, whose vehicle's storage is reused where it has the
 /// sizes: a study's workers read each variant into the vehicle of the one before. The same

@@ -16,6 +16,7 @@
 #include "input/value_place.hpp"
 #include "railmodal/errors.hpp"
 #include "shortest_text.hpp"
+#include "study/metrics.hpp"
 
 namespace railmodal::input {
 namespace {
@@ -435,6 +436,51 @@ void refuse_metrics_needing_a_scene(const StudyFile& file) {
                      "sources, and [study] names no scene: add scene = \"...\"");
 }
 
+// Whether a variant sets a scene key under `source` (which may add a periodic source).
+bool overrides_sources(const study::StudyPlan& plan) {
+  const auto under = [](const std::string& key) { return key.rfind("source", 0) == 0; };
+  for (const study::VariantSpec& spec : plan.variants)
+    for (const study::Assignment& a : spec.assignments)
+      if (a.scene && under(a.key)) return true;
+  for (const study::Sweep& sweep : plan.sweeps)
+    for (const study::SweepParameter& p : sweep.parameters)
+      if (p.scene && under(p.key)) return true;
+  return false;
+}
+
+// A scene without a periodic source (a ride on random track alone) has no critical speeds,
+// peaks or dynamic deflections: a metric that reads them, or a deflection rule, would be missing
+// (or +∞, "none") in every variant and mark them all feasible (user audit 2026-11-28, F3: a
+// min_critical_speed meant as the hunting speed). Refused at its key, naming the hunting speed
+// where a critical speed was asked for. A study whose variants set scene keys under `source` is
+// left to its variants.
+void refuse_metrics_needing_a_source(const StudyFile& file) {
+  if (!file.base_scene.sources.empty() || overrides_sources(file.plan)) return;
+  const std::string scene = std::filesystem::path(file.scene_file).filename().string();
+  const std::string ridden = file.base_scene.irregularity ? " (its random track is ridden, not swept for resonances)" : "";
+  const auto check = [&](const std::string& metric, const MetricPlace& written) {
+    if (!study::metric_reads_critical_speeds(metric)) return;
+    const bool speed = metric == "lowest_critical_speed" || metric.rfind("critical_speed:", 0) == 0;
+    std::string why = "key '" + written.key + "': metric '" + metric + "' needs a periodic source ([[source]]: rail " +
+                      "joints, a wheel flat, ...), and the scene " + scene + " has none" + ridden + ", so no variant has " +
+                      (speed ? "critical speeds: these are resonances with a periodic input"
+                             : "its peaks or dynamic deflections");
+    if (speed) {
+      const std::string name = written.key.substr(written.key.rfind('.') + 1);
+      const bool shorthand = name.rfind("min_", 0) == 0 || name.rfind("max_", 0) == 0;
+      why += ". For the hunting (stability) critical speed, as `railmodal stability` computes it, use " +
+             (shorthand ? "'" + name.substr(0, 4) + "hunting_speed'" : std::string("metric 'hunting_speed'"));
+    }
+    throw InputError(file.path, written.place.line, written.place.column, why + " (docs/studies.md)");
+  };
+  for (const RankingConstraint& c : file.plan.ranking.constraints) check(c.metric, c.written);
+  for (const RankingCriterion& c : file.plan.ranking.objective) check(c.metric, c.written);
+  if (file.plan.deflection_rule.active())
+    throw InputError(file.path, file.rule_place.line, file.rule_place.column,
+                     "key 'permissible_dynamic_deflection': the dynamic deflections are those under the scene's "
+                     "periodic sources ([[source]]), and the scene " + scene + " has none");
+}
+
 }  // namespace
 
 StudyFile read_study_file(const std::string& path, size_t max_variants) {
@@ -470,6 +516,7 @@ StudyFile read_study_file(const std::string& path, size_t max_variants) {
   const bool ride_only = file.base_scene.ride && file.base_scene.irregularity && file.base_scene.sources.empty();
   if (!(file.base_scene.max_speed > 0.0) && !ride_only)
     throw InputError(file.scene_file, 0, 0, "the scene has no [speed] range: a study sweeps the speeds for critical speeds");
+  refuse_metrics_needing_a_source(file);
   return file;
 }
 
