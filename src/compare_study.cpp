@@ -7,7 +7,6 @@
 #include <string>
 
 #include "input/shard_reader.hpp"
-#include "load_study.hpp"
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/errors.hpp"
 #include "report/comparison_document.hpp"
@@ -87,7 +86,7 @@ void write_ranked(std::ostream& out, const Study& study, const StreamedRanking::
   }
   const StreamedRanking ranked(study, results, static_cast<size_t>(top),
                                report::streamed_row(study.ranking, study.deflection_rule, format));
-  report::write_streamed_comparison(out, head, ranked, format, study_notes(study));
+  report::write_streamed_comparison(out, head, ranked, format, study.notes);
 }
 
 }  // namespace

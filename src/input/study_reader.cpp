@@ -16,7 +16,6 @@
 #include "input/value_place.hpp"
 #include "railmodal/errors.hpp"
 #include "shortest_text.hpp"
-#include "study/metrics.hpp"
 
 namespace railmodal::input {
 namespace {
@@ -364,37 +363,55 @@ void read_variants(TableReader& root, const toml::value& document, size_t max_va
   }
 }
 
+// An InputError about a vehicle or scene document with the values one variant gives its keys
+// written into it (the reader's, or an analysis's of the variant read), sent back to the study:
+// "key 'a.b[2].c': why" to the assignment that wrote that key (or a table above it), whose
+// `reader_paths` (set_at_path's) are given in order; anything else to the variant's line, naming
+// the error's own file and line.
+InputError blamed_on_variant(const StudyFile& study, const study::VariantSpec& spec,
+                             const std::vector<const study::Assignment*>& assignments,
+                             const std::vector<std::string>& reader_paths, const InputError& e) {
+  const std::string& message = e.message();
+  if (message.rfind("key '", 0) == 0) {
+    const size_t end = message.find("': ", 5);
+    const std::string key = message.substr(5, end == std::string::npos ? 0 : end - 5);
+    for (size_t k = 0; k < assignments.size() && k < reader_paths.size(); ++k) {
+      const std::string& p = reader_paths[k];
+      if (key == p || key.rfind(p + ".", 0) == 0 || key.rfind(p + "[", 0) == 0)
+        return InputError(study.path, assignments[k]->place.line, assignments[k]->place.column,
+                          "variant '" + spec.name + "': key '" + assignments[k]->key + "': " + message.substr(end + 3));
+    }
+  }
+  return InputError(study.path, spec.place.line, spec.place.column, "variant '" + spec.name + "': " + e.what());
+}
+
+// Writes the values of `assignments` into `document`; returns their paths as the readers name
+// them (set_at_path). A value that cannot be written is the assignment's error.
+std::vector<std::string> write_assignments(toml::value* document, const std::vector<const study::Assignment*>& assignments,
+                                           const StudyFile& study, const study::VariantSpec& spec) {
+  std::vector<std::string> reader_paths;
+  reader_paths.reserve(assignments.size());
+  for (const study::Assignment* a : assignments) {
+    try {
+      reader_paths.push_back(set_at_path(*document, a->key, assignment_value(study, *a)));
+    } catch (const std::invalid_argument& e) {
+      throw InputError(study.path, a->place.line, a->place.column, "variant '" + spec.name + "': key '" + a->key + "': " + e.what());
+    }
+  }
+  return reader_paths;
+}
+
 // Reads a vehicle or scene document with the values one variant gives its keys written into it.
 template <class Result, class Reader>
 Result read_with_assignments(const toml::value& base, const std::string& file,
                              const std::vector<const study::Assignment*>& assignments, const StudyFile& study,
                              const study::VariantSpec& spec, Reader reader) {
   toml::value document = base;
-  std::vector<std::string> reader_paths;
-  for (const study::Assignment* a : assignments) {
-    try {
-      reader_paths.push_back(set_at_path(document, a->key, assignment_value(study, *a)));
-    } catch (const std::invalid_argument& e) {
-      throw InputError(study.path, a->place.line, a->place.column, "variant '" + spec.name + "': key '" + a->key + "': " + e.what());
-    }
-  }
+  const std::vector<std::string> reader_paths = write_assignments(&document, assignments, study, spec);
   try {
     return reader(document, file);
   } catch (const InputError& e) {
-    // "key 'a.b[2].c': why" from the reader: the assignment that wrote that key (or a table
-    // above it) is to blame.
-    const std::string& message = e.message();
-    if (message.rfind("key '", 0) == 0) {
-      const size_t end = message.find("': ", 5);
-      const std::string key = message.substr(5, end == std::string::npos ? 0 : end - 5);
-      for (size_t k = 0; k < assignments.size(); ++k) {
-        const std::string& p = reader_paths[k];
-        if (key == p || key.rfind(p + ".", 0) == 0 || key.rfind(p + "[", 0) == 0)
-          throw InputError(study.path, assignments[k]->place.line, assignments[k]->place.column,
-                           "variant '" + spec.name + "': key '" + assignments[k]->key + "': " + message.substr(end + 3));
-      }
-    }
-    throw InputError(study.path, spec.place.line, spec.place.column, "variant '" + spec.name + "': " + e.what());
+    throw blamed_on_variant(study, spec, assignments, reader_paths, e);
   }
 }
 
@@ -436,51 +453,6 @@ void refuse_metrics_needing_a_scene(const StudyFile& file) {
                      "sources, and [study] names no scene: add scene = \"...\"");
 }
 
-// Whether a variant sets a scene key under `source` (which may add a periodic source).
-bool overrides_sources(const study::StudyPlan& plan) {
-  const auto under = [](const std::string& key) { return key.rfind("source", 0) == 0; };
-  for (const study::VariantSpec& spec : plan.variants)
-    for (const study::Assignment& a : spec.assignments)
-      if (a.scene && under(a.key)) return true;
-  for (const study::Sweep& sweep : plan.sweeps)
-    for (const study::SweepParameter& p : sweep.parameters)
-      if (p.scene && under(p.key)) return true;
-  return false;
-}
-
-// A scene without a periodic source (a ride on random track alone) has no critical speeds,
-// peaks or dynamic deflections: a metric that reads them, or a deflection rule, would be missing
-// (or +∞, "none") in every variant and mark them all feasible (user audit 2026-11-28, F3: a
-// min_critical_speed meant as the hunting speed). Refused at its key, naming the hunting speed
-// where a critical speed was asked for. A study whose variants set scene keys under `source` is
-// left to its variants.
-void refuse_metrics_needing_a_source(const StudyFile& file) {
-  if (!file.base_scene.sources.empty() || overrides_sources(file.plan)) return;
-  const std::string scene = std::filesystem::path(file.scene_file).filename().string();
-  const std::string ridden = file.base_scene.irregularity ? " (its random track is ridden, not swept for resonances)" : "";
-  const auto check = [&](const std::string& metric, const MetricPlace& written) {
-    if (!study::metric_reads_critical_speeds(metric)) return;
-    const bool speed = metric == "lowest_critical_speed" || metric.rfind("critical_speed:", 0) == 0;
-    std::string why = "key '" + written.key + "': metric '" + metric + "' needs a periodic source ([[source]]: rail " +
-                      "joints, a wheel flat, ...), and the scene " + scene + " has none" + ridden + ", so no variant has " +
-                      (speed ? "critical speeds: these are resonances with a periodic input"
-                             : "its peaks or dynamic deflections");
-    if (speed) {
-      const std::string name = written.key.substr(written.key.rfind('.') + 1);
-      const bool shorthand = name.rfind("min_", 0) == 0 || name.rfind("max_", 0) == 0;
-      why += ". For the hunting (stability) critical speed, as `railmodal stability` computes it, use " +
-             (shorthand ? "'" + name.substr(0, 4) + "hunting_speed'" : std::string("metric 'hunting_speed'"));
-    }
-    throw InputError(file.path, written.place.line, written.place.column, why + " (docs/studies.md)");
-  };
-  for (const RankingConstraint& c : file.plan.ranking.constraints) check(c.metric, c.written);
-  for (const RankingCriterion& c : file.plan.ranking.objective) check(c.metric, c.written);
-  if (file.plan.deflection_rule.active())
-    throw InputError(file.path, file.rule_place.line, file.rule_place.column,
-                     "key 'permissible_dynamic_deflection': the dynamic deflections are those under the scene's "
-                     "periodic sources ([[source]]), and the scene " + scene + " has none");
-}
-
 }  // namespace
 
 StudyFile read_study_file(const std::string& path, size_t max_variants) {
@@ -516,7 +488,6 @@ StudyFile read_study_file(const std::string& path, size_t max_variants) {
   const bool ride_only = file.base_scene.ride && file.base_scene.irregularity && file.base_scene.sources.empty();
   if (!(file.base_scene.max_speed > 0.0) && !ride_only)
     throw InputError(file.scene_file, 0, 0, "the scene has no [speed] range: a study sweeps the speeds for critical speeds");
-  refuse_metrics_needing_a_source(file);
   return file;
 }
 
@@ -590,6 +561,25 @@ void read_variant_into(const StudyFile& file, const study::VariantSpec& spec, St
   variant->name = spec.name;  // copied into the variant's own storage (a worker's, reused)
   variant->parameters = spec.parameters;
   variant->read = true;
+}
+
+InputError variant_input_error(const StudyFile& file, const study::VariantSpec& spec, const InputError& e) {
+  // The assignments to the file the error names, and their paths as the readers name them.
+  const bool scene = !file.scene_file.empty() && e.file() == file.scene_file;
+  const bool vehicle = e.file() == spec.vehicle_file && file.vehicle_documents.count(spec.vehicle_file);
+  std::vector<const study::Assignment*> on_file;
+  for (const study::Assignment& a : spec.assignments)
+    if ((scene && a.scene) || (vehicle && !a.scene)) on_file.push_back(&a);
+  std::vector<std::string> reader_paths;
+  if (!on_file.empty()) {
+    toml::value document = scene ? file.scene_document : file.vehicle_documents.at(spec.vehicle_file);
+    try {
+      reader_paths = write_assignments(&document, on_file, file, spec);
+    } catch (const InputError&) {
+      reader_paths.clear();  // written when the variant was read: not expected; the variant's line is blamed
+    }
+  }
+  return blamed_on_variant(file, spec, on_file, reader_paths, e);
 }
 
 }  // namespace railmodal::input

@@ -12,7 +12,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include "load_study.hpp"
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/critical_speed.hpp"
 #include "railmodal/errors.hpp"
@@ -812,7 +811,7 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c, 
     report::write_markdown_table(out, deflection_table(c));
   }
   for (const std::string& n : curves.notes) out << n << "\n\n";
-  for (const std::string& n : study_notes(study)) out << n << "\n\n";  // the periods' notes, once
+  for (const std::string& n : study.notes) out << n << "\n\n";  // the periods' notes, once
   out << "---\n\nWritten by " << report::provenance_line("compare", provenance) << "\n";
 }
 
@@ -860,7 +859,7 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
     report::write_html_table(out, deflection_table(c));
   }
   for (const std::string& n : curves.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
-  for (const std::string& n : study_notes(study)) out << "<p class=note>" << html_escape(n) << "</p>\n";
+  for (const std::string& n : study.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
   report::write_html_footer(out, "compare", provenance);
 }
 

@@ -201,7 +201,7 @@ void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* r
 void write_json(std::ostream& out, const Comparison& c, const std::vector<std::string>& notes = {}) {
   JsonWriter j(out);
   j.begin_object();
-  if (!notes.empty()) j.member("notes", notes);  // the study's (study_notes), once; absent without
+  if (!notes.empty()) j.member("notes", notes);  // the study's (Study::notes), once; absent without
   if (c.deflection_rule.active()) {
     j.key("permissible_dynamic_deflection").begin_object();
     j.member("rule", to_string(c.deflection_rule.book)).member("service", to_string(c.deflection_rule.service));
@@ -547,7 +547,7 @@ std::string table_note(const Ranking& ranking, const RankedVariant& v) {
   return note;
 }
 
-// The study's notes (study_notes) after the table and its variants' notes, once.
+// The study's notes (Study::notes) after the table and its variants' notes, once.
 void write_study_notes(std::ostream& out, const std::vector<std::string>& notes) {
   if (notes.empty()) return;
   out << "\n";

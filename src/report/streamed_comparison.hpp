@@ -23,7 +23,7 @@ study::StreamedRanking::Render streamed_row(const Ranking& ranking, const Deflec
 /// Writes `head` (the study's name, source, ranking and rule; no variants) with the variants
 /// of `ranked` (rendered by streamed_row in `format`), as write_comparison writes a comparison
 /// that holds them; with a ranking of the best k, those k, under a head that counts them all.
-/// `notes` (study_notes) follow the table's notes, and are the JSON's "notes" (the CSV has none).
+/// `notes` (Study::notes) follow the table's notes, and are the JSON's "notes" (the CSV has none).
 void write_streamed_comparison(std::ostream& out, const Comparison& head, const study::StreamedRanking& ranked,
                                OutputFormat format, const std::vector<std::string>& notes = {});
 

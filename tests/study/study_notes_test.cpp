@@ -1,4 +1,4 @@
-// What `railmodal compare` says once of a study (study_notes): the periods of a vehicle on
+// What `railmodal compare` says once of a study (Study::notes): the periods of a vehicle on
 // wheelsets are its suspension modes, without the wheel–rail contact, as `railmodal modes` notes
 // it. The user audit of 2026-11-28 (F5) read a coach's body lower sway at 1.13 s in compare,
 // 1.72 s on track, with no word of it.
@@ -6,7 +6,6 @@
 #include <sstream>
 #include <string>
 
-#include "load_study.hpp"
 #include "railmodal/comparison_report.hpp"
 #include "railmodal/railmodal.hpp"
 #include "study/study_files.hpp"
@@ -29,7 +28,7 @@ TEST(StudyNotes, AVehicleOnWheelsetsSaysItsPeriodsAreTheSuspensionsOnceInEveryFo
                               "/vehicles/manchester_benchmark_coach_wheelsets.toml\"\n[ranking]\n"
                               "objective = [{ metric = \"static_deflection\", goal = \"min\" }]\n");
   const Study study = open_study(path);
-  const std::vector<std::string> notes = study_notes(study);
+  const std::vector<std::string> notes = study.notes;
   ASSERT_EQ(notes.size(), 1u);
   const std::string note = notes.front();
   EXPECT_NE(note.find("without the wheel–rail contact terms"), std::string::npos) << note;
@@ -51,7 +50,7 @@ TEST(StudyNotes, AVehicleOnWheelsetsSaysItsPeriodsAreTheSuspensionsOnceInEveryFo
 
 TEST(StudyNotes, AVehicleWithoutWheelsetsHasNone) {
   const Study study = open_study(write_study(example3_wagon(), "[ranking]\nmin_lowest_critical_speed = \"30 km/h\"\n"));
-  EXPECT_TRUE(study_notes(study).empty());
+  EXPECT_TRUE(study.notes.empty());
   EvaluationOptions options;
   options.read_in_workers = true;
   std::ostringstream json;
