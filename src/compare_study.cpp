@@ -86,7 +86,7 @@ void write_ranked(std::ostream& out, const Study& study, const StreamedRanking::
   }
   const StreamedRanking ranked(study, results, static_cast<size_t>(top),
                                report::streamed_row(study.ranking, study.deflection_rule, format));
-  report::write_streamed_comparison(out, head, ranked, format);
+  report::write_streamed_comparison(out, head, ranked, format, study.notes);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "input/table_reader.hpp"
 #include "study/metrics.hpp"
 #include "study/offered_metrics.hpp"
+#include "study/period_notes.hpp"
 #include "study/planned_variants.hpp"
 
 namespace railmodal {
@@ -49,27 +50,34 @@ bool overrides_under(const study::StudyPlan& plan, bool scene, std::initializer_
   return false;
 }
 
-// The ranking's ride and hunting metrics against what the study's vehicle files (read as
-// written, once each) and its scene give, when it names any: a metric no variant can have is
-// refused here rather than ranked as missing in every variant (study/offered_metrics.hpp).
-void refuse_metrics_not_offered(const input::StudyFile& file) {
-  if (!study::names_offered_metrics(file.plan.ranking)) return;
-  study::OfferedMetrics offered;
-  offered.scene_file = file.scene_file;
-  offered.scene = &file.base_scene;
+// The study's vehicle files read as written, once each; *complete false when one does not read
+// alone (the variant that reads it reports why).
+std::vector<Vehicle> vehicles_as_written(const input::StudyFile& file, bool* complete) {
   std::vector<Vehicle> vehicles;
   vehicles.reserve(file.vehicle_documents.size());
+  *complete = true;
   for (const auto& [path, document] : file.vehicle_documents) {
     try {
       vehicles.push_back(input::read_vehicle(document, path));
     } catch (const InputError&) {
-      offered.vehicles_complete = false;  // reported by the variant that reads it
+      *complete = false;
     }
   }
+  return vehicles;
+}
+
+// What the study's scene and vehicle files (read as written) offer its ranking
+// (study/offered_metrics.hpp), pointing into `file` and `vehicles`.
+study::OfferedMetrics offered_by(const input::StudyFile& file, const std::vector<Vehicle>& vehicles, bool complete) {
+  study::OfferedMetrics offered;
+  offered.scene_file = file.scene_file;
+  offered.scene = &file.base_scene;
   for (const Vehicle& v : vehicles) offered.vehicles.push_back(&v);
+  offered.vehicles_complete = complete;
   offered.vehicle_may_gain_wheelsets = overrides_under(file.plan, false, {"wheelset"});
   offered.scene_may_change_ride = overrides_under(file.plan, true, {"ride", "source"});
-  study::check_offered_metrics(file.plan.ranking, file.path, offered);
+  offered.scene_may_add_sources = overrides_under(file.plan, true, {"source"});
+  return offered;
 }
 
 // The warnings of the study's base vehicle file and its scene as written (not a variant's
@@ -95,19 +103,29 @@ void append_base_warnings(const input::StudyFile& file, std::vector<std::string>
 // The study file read and checked, its variants not listed (open_study).
 Study opened_study(const std::string& path, size_t max_variants, std::vector<std::string>* warnings = nullptr) {
   input::StudyFile file = input::read_study_file(path, max_variants);
+  // Metrics a scene without periodic sources cannot give, refused before the variants are
+  // listed, as the reader refuses those that need a scene.
+  study::check_periodic_source_metrics(file.plan.ranking, file.plan.deflection_rule, file.rule_place, file.path,
+                                       offered_by(file, {}, true));
   study::PlannedVariants planned(file.plan);
   if (const std::optional<size_t> repeated = planned.first_repeated_name()) {
     const study::VariantSpec spec = planned.at(*repeated);
     throw InputError(file.path, spec.place.line, spec.place.column, "variant '" + spec.name + "': another variant has this name");
   }
   input::check_variants(&file);
-  refuse_metrics_not_offered(file);
+  // The ranking's ride and hunting metrics against what the study's vehicles and scene give: a
+  // metric no variant can have is refused here rather than ranked as missing in every variant.
+  bool complete = true;
+  const std::vector<Vehicle> vehicles = vehicles_as_written(file, &complete);
+  const study::OfferedMetrics offered = offered_by(file, vehicles, complete);
+  study::check_offered_metrics(file.plan.ranking, file.path, offered);
   if (warnings) append_base_warnings(file, warnings);
   Study study;
   study.name = file.plan.name;
   study.source = path;
   study.ranking = file.plan.ranking;
   study.deflection_rule = file.plan.deflection_rule;
+  study.notes = study::period_notes(offered.vehicles, file.base_scene.dofs);
   study.plan = std::make_shared<detail::StudySource>(detail::StudySource{std::move(file), std::move(planned)});
   return study;
 }
@@ -179,6 +197,11 @@ void detail::read_variant_into(const Study& study, int index, StudyVariant* vari
   thread_local study::VariantSpec spec;
   study.plan->variants.at_into(static_cast<size_t>(index), &spec);
   input::read_variant_into(study.plan->file, spec, variant);
+}
+
+InputError detail::variant_input_error(const Study& study, int index, const InputError& e) {
+  if (!study.plan || index < 0 || static_cast<size_t>(index) >= study.plan->variants.size()) return e;
+  return input::variant_input_error(study.plan->file, study.plan->variants.at(static_cast<size_t>(index)), e);
 }
 
 std::string study::parameter_label(const Study& study, const std::string& key) {

@@ -27,15 +27,15 @@ namespace railmodal {
 /// (write_comparison_report); here they throw std::invalid_argument.
 void write_comparison(std::ostream& out, const Comparison& comparison, OutputFormat format);
 
-/// Evaluates the whole study (options.shards must be 1) and writes its ranking in table, csv or
-/// json: the bytes write_comparison(out, rank_variants(study, evaluate_study(study, options)),
-/// format) writes, whatever the thread count, holding in memory per variant only its ranking
-/// keys (tens of bytes): each variant's row waits in a temporary file until the ranking is
-/// known. With `top` > 0 only the best `top` variants are written (the table's head still
-/// counts them all), and only their rows are held. markdown and html write the bytes
-/// write_comparison_report writes of that comparison with comparison_curves(study, ...,
-/// kReportBest) and `provenance`, holding the best kReportRows variants and the base whole and
-/// each other's sweep point (its parameters, periods and ranked value) in the temporary file.
+/// Evaluates the whole study (options.shards must be 1) and writes its ranking in table, csv or json: the bytes
+/// write_comparison(out, rank_variants(study, evaluate_study(study, options)), format) writes, with the study's notes
+/// (its vehicle files' modes' notes, as `railmodal modes` prints them) after the table's and as the JSON's "notes",
+/// whatever the thread count, holding in memory per variant only its ranking keys (tens of bytes): each variant's
+/// row waits in a temporary file until the ranking is known. With `top` > 0 only the best `top` variants are
+/// written (the table's head still counts them all), and only their rows are held. markdown and html write the
+/// bytes write_comparison_report writes of that comparison with comparison_curves(study, ..., kReportBest) and
+/// `provenance`, holding the best kReportRows variants and the base whole and each other's sweep point (its
+/// parameters, periods and ranked value) in the temporary file.
 /// Throws as evaluate_study and rank_variants, std::system_error when the temporary file
 /// cannot be made or written (TMPDIR), and std::invalid_argument for a negative `top` or a
 /// `top` with markdown or html.

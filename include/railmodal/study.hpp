@@ -124,6 +124,12 @@ struct Study {
   /// Every analysis of each variant whatever the ranking reads (Python's evaluate_variants,
   /// which ranks nothing); false: only what the ranking reads (variant_work_of).
   bool every_analysis = false;
+  /// What compare's outputs say once of the study's periods (the table's and reports' notes,
+  /// the JSON's "notes"; the CSV has no place for them): the notes `railmodal modes` prints of
+  /// each vehicle file as written, in the scene's DOF set, such as that a vehicle on wheelsets
+  /// has its suspension modes, without the wheel–rail contact terms. Filled by load_study and
+  /// open_study.
+  std::vector<std::string> notes;
   std::shared_ptr<const detail::StudySource> plan;  ///< for read_variant; shared by copies
 };
 
@@ -289,7 +295,9 @@ bool metric_needs_scene(const std::string& metric);
 /// With `ride_rms_only` the ride (a scene with random track) is solved with RideOptions::rms_only:
 /// each output's max_rms bit for bit the same, no max_wz and no max_nmv (ride_rms_only(study)).
 /// Never throws for a bad design: an unstable or singular vehicle, or a wheelset contact out of
-/// range, is a result with its `failure`.
+/// range, is a result with its `failure`; so is, here, input an analysis refuses (a scene output
+/// that does not fit the vehicle, a series damper the critical speeds do not represent), naming
+/// its file, line and key. evaluate_study stops at it instead.
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule = {},
                                const std::optional<HuntingOptions>& hunting = std::nullopt,
                                bool ride_rms_only = false, const VariantWork& work = {});
@@ -325,8 +333,13 @@ struct EvaluationOptions {
 
 /// The variants of this shard, in index order; the same whatever the thread count. Each must
 /// have been read (load_study with this shard, or all) unless options.read_in_workers;
-/// std::invalid_argument otherwise, and for invalid options. `summary`, if given, receives the threads, the variants evaluated and
-/// failed, and the stage time.
+/// std::invalid_argument otherwise, and for invalid options. In a study read from a file, input
+/// an analysis refuses (a scene output that does not fit a variant's vehicle, a series damper the
+/// critical speeds do not represent) stops it, as a variant that cannot be read does: an
+/// InputError at the study file's line of the variant (or of its override that writes the key),
+/// naming the variant and the error's own file and key; the lowest-index one whatever the thread
+/// count. In a study built in code it is the variant's failure, as evaluate_variant makes it. `summary`, if
+/// given, receives the threads, the variants evaluated and failed, and the stage time.
 std::vector<VariantResult> evaluate_study(const Study& study, const EvaluationOptions& options,
                                           AnalysisSummary* summary = nullptr);
 

@@ -363,37 +363,55 @@ void read_variants(TableReader& root, const toml::value& document, size_t max_va
   }
 }
 
+// An InputError about a vehicle or scene document with the values one variant gives its keys
+// written into it (the reader's, or an analysis's of the variant read), sent back to the study:
+// "key 'a.b[2].c': why" to the assignment that wrote that key (or a table above it), whose
+// `reader_paths` (set_at_path's) are given in order; anything else to the variant's line, naming
+// the error's own file and line.
+InputError blamed_on_variant(const StudyFile& study, const study::VariantSpec& spec,
+                             const std::vector<const study::Assignment*>& assignments,
+                             const std::vector<std::string>& reader_paths, const InputError& e) {
+  const std::string& message = e.message();
+  if (message.rfind("key '", 0) == 0) {
+    const size_t end = message.find("': ", 5);
+    const std::string key = message.substr(5, end == std::string::npos ? 0 : end - 5);
+    for (size_t k = 0; k < assignments.size() && k < reader_paths.size(); ++k) {
+      const std::string& p = reader_paths[k];
+      if (key == p || key.rfind(p + ".", 0) == 0 || key.rfind(p + "[", 0) == 0)
+        return InputError(study.path, assignments[k]->place.line, assignments[k]->place.column,
+                          "variant '" + spec.name + "': key '" + assignments[k]->key + "': " + message.substr(end + 3));
+    }
+  }
+  return InputError(study.path, spec.place.line, spec.place.column, "variant '" + spec.name + "': " + e.what());
+}
+
+// Writes the values of `assignments` into `document`; returns their paths as the readers name
+// them (set_at_path). A value that cannot be written is the assignment's error.
+std::vector<std::string> write_assignments(toml::value* document, const std::vector<const study::Assignment*>& assignments,
+                                           const StudyFile& study, const study::VariantSpec& spec) {
+  std::vector<std::string> reader_paths;
+  reader_paths.reserve(assignments.size());
+  for (const study::Assignment* a : assignments) {
+    try {
+      reader_paths.push_back(set_at_path(*document, a->key, assignment_value(study, *a)));
+    } catch (const std::invalid_argument& e) {
+      throw InputError(study.path, a->place.line, a->place.column, "variant '" + spec.name + "': key '" + a->key + "': " + e.what());
+    }
+  }
+  return reader_paths;
+}
+
 // Reads a vehicle or scene document with the values one variant gives its keys written into it.
 template <class Result, class Reader>
 Result read_with_assignments(const toml::value& base, const std::string& file,
                              const std::vector<const study::Assignment*>& assignments, const StudyFile& study,
                              const study::VariantSpec& spec, Reader reader) {
   toml::value document = base;
-  std::vector<std::string> reader_paths;
-  for (const study::Assignment* a : assignments) {
-    try {
-      reader_paths.push_back(set_at_path(document, a->key, assignment_value(study, *a)));
-    } catch (const std::invalid_argument& e) {
-      throw InputError(study.path, a->place.line, a->place.column, "variant '" + spec.name + "': key '" + a->key + "': " + e.what());
-    }
-  }
+  const std::vector<std::string> reader_paths = write_assignments(&document, assignments, study, spec);
   try {
     return reader(document, file);
   } catch (const InputError& e) {
-    // "key 'a.b[2].c': why" from the reader: the assignment that wrote that key (or a table
-    // above it) is to blame.
-    const std::string& message = e.message();
-    if (message.rfind("key '", 0) == 0) {
-      const size_t end = message.find("': ", 5);
-      const std::string key = message.substr(5, end == std::string::npos ? 0 : end - 5);
-      for (size_t k = 0; k < assignments.size(); ++k) {
-        const std::string& p = reader_paths[k];
-        if (key == p || key.rfind(p + ".", 0) == 0 || key.rfind(p + "[", 0) == 0)
-          throw InputError(study.path, assignments[k]->place.line, assignments[k]->place.column,
-                           "variant '" + spec.name + "': key '" + assignments[k]->key + "': " + message.substr(end + 3));
-      }
-    }
-    throw InputError(study.path, spec.place.line, spec.place.column, "variant '" + spec.name + "': " + e.what());
+    throw blamed_on_variant(study, spec, assignments, reader_paths, e);
   }
 }
 
@@ -543,6 +561,25 @@ void read_variant_into(const StudyFile& file, const study::VariantSpec& spec, St
   variant->name = spec.name;  // copied into the variant's own storage (a worker's, reused)
   variant->parameters = spec.parameters;
   variant->read = true;
+}
+
+InputError variant_input_error(const StudyFile& file, const study::VariantSpec& spec, const InputError& e) {
+  // The assignments to the file the error names, and their paths as the readers name them.
+  const bool scene = !file.scene_file.empty() && e.file() == file.scene_file;
+  const bool vehicle = e.file() == spec.vehicle_file && file.vehicle_documents.count(spec.vehicle_file);
+  std::vector<const study::Assignment*> on_file;
+  for (const study::Assignment& a : spec.assignments)
+    if ((scene && a.scene) || (vehicle && !a.scene)) on_file.push_back(&a);
+  std::vector<std::string> reader_paths;
+  if (!on_file.empty()) {
+    toml::value document = scene ? file.scene_document : file.vehicle_documents.at(spec.vehicle_file);
+    try {
+      reader_paths = write_assignments(&document, on_file, file, spec);
+    } catch (const InputError&) {
+      reader_paths.clear();  // written when the variant was read: not expected; the variant's line is blamed
+    }
+  }
+  return blamed_on_variant(file, spec, on_file, reader_paths, e);
 }
 
 }  // namespace railmodal::input

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "input/variant_fast_path.hpp"
+#include "railmodal/errors.hpp"
 #include "railmodal/study.hpp"
 #include "study/study_plan.hpp"
 
@@ -53,6 +54,13 @@ StudyVariant read_variant(const StudyFile& file, const study::VariantSpec& spec,
 /// before), its name and parameters copied into the variant's own (reused as well). Where it
 /// throws, *variant is left valid but unspecified.
 void read_variant_into(const StudyFile& file, const study::VariantSpec& spec, StudyVariant* variant);
+
+/// An InputError raised by an analysis of a variant once read (a scene's output or source that
+/// does not fit its vehicle, a series damper the critical speeds refuse) sent back to the study,
+/// as the readers' errors are: to the assignment that writes the key it names in the file it
+/// names (the scene's or the variant's vehicle file), else to the variant's line, naming the
+/// variant and the error's own file, line and key.
+InputError variant_input_error(const StudyFile& file, const study::VariantSpec& spec, const InputError& e);
 
 /// A number written as the study writes it: "40 mm", 40 or 40.0 (a swept range's values, a
 /// sample's draws).

@@ -50,7 +50,11 @@ struct Writer {
 // A metric's value as the table shows it (study::shown_as_tabled), or the word for none or ±∞.
 std::string metric_text(const std::string& metric, const std::optional<double>& x) {
   if (!x) return "–";
-  if (std::isinf(*x)) return *x > 0 ? (study::infinite_is_unbounded(metric) ? "unbounded" : "none in range") : "−∞";
+  if (std::isinf(*x) && *x > 0) {
+    const std::string word = study::infinite_word(metric);
+    return word == "none" ? "none in range" : study::infinite_text(metric);  // "above 500 km/h"
+  }
+  if (std::isinf(*x)) return "−∞";
   return study::shown_as_tabled(metric, *x);
 }
 
@@ -901,6 +905,7 @@ void write_markdown(std::ostream& out, const Study& study, const Comparison& c, 
     report::write_markdown_table(out, deflection_table(c, curves));
   }
   for (const std::string& n : curves.notes) out << n << "\n\n";
+  for (const std::string& n : study.notes) out << n << "\n\n";  // the periods' notes, once
   out << "---\n\nWritten by " << report::provenance_line("compare", provenance) << "\n";
 }
 
@@ -948,6 +953,7 @@ void write_html(std::ostream& out, const Study& study, const Comparison& c, cons
     report::write_html_table(out, deflection_table(c, curves));
   }
   for (const std::string& n : curves.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
+  for (const std::string& n : study.notes) out << "<p class=note>" << html_escape(n) << "</p>\n";
   report::write_html_footer(out, "compare", provenance);
 }
 

@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "railmodal/comparison_report.hpp"
+#include "railmodal/hunting.hpp"
 #include "railmodal/study.hpp"
 #include "report/comparison_rows.hpp"
 #include "report/json_writer.hpp"
@@ -44,13 +45,16 @@ std::vector<double> critical_speeds(const VariantResult& r, double scale) {
   return out;
 }
 
-// A ranking value: a number; +∞ the word the tables print for it ("none": no critical speed in the
-// range, a design stable throughout; "unbounded": an undamped peak), as hunting_speed_m_s and
-// dynamic_deflection_ratio write it; null only for no value (a failed variant, a vehicle without
-// wheelsets for hunting_speed), so that the two never read alike.
-void ranking_value(JsonWriter& j, const std::optional<double>& x, bool peak) {
-  if (x && std::isinf(*x) && *x > 0)
-    j.value(peak ? "unbounded" : "none");
+// A ranking value of `metric`: a number; +∞ the word the tables print for it ("none": no critical
+// speed in the range; "unbounded": an undamped peak), as dynamic_deflection_ratio writes it; a
+// hunting speed stable over the whole scan the scan's top, a number as the speeds are (the
+// variant's hunting_speed_above_range says it is a bound); null only for no value (a failed
+// variant, a vehicle without wheelsets for hunting_speed), so that the two never read alike.
+void ranking_value(JsonWriter& j, const std::optional<double>& x, const std::string& metric) {
+  if (x && std::isinf(*x) && *x > 0 && canonical_metric(metric) == "hunting_speed")
+    j.value(HuntingOptions{}.max_speed);
+  else if (x && std::isinf(*x) && *x > 0)
+    j.value(study::infinite_word(metric));
   else
     j.value(x);  // null for none, and for NaN or −∞
 }
@@ -106,16 +110,16 @@ void write_ride(JsonWriter& j, const VariantResult& r) {
   j.end_array();
 }
 
-// Whether objective criterion k's +∞ is an unbounded peak (or "none", no critical speed).
-bool is_peak(const Comparison& c, size_t k) {
-  return k < c.ranking.objective.size() && study::infinite_is_unbounded(c.ranking.objective[k].metric);
+// Objective criterion k's metric ("" past the objective).
+std::string criterion_metric(const Comparison& c, size_t k) {
+  return k < c.ranking.objective.size() ? c.ranking.objective[k].metric : std::string();
 }
 
 // The objective is +∞ through its criteria: it takes the word of the first that is.
-bool objective_is_peak(const Comparison& c, const RankedVariant& v) {
+std::string objective_metric(const Comparison& c, const RankedVariant& v) {
   for (size_t k = 0; k < v.criteria.size(); ++k)
-    if (v.criteria[k] && std::isinf(*v.criteria[k])) return is_peak(c, k);
-  return false;
+    if (v.criteria[k] && std::isinf(*v.criteria[k])) return criterion_metric(c, k);
+  return "";
 }
 
 // What a comparison adds to a variant's results: its place in the ranking.
@@ -134,7 +138,7 @@ void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* r
   if (ranked) {
     const RankedVariant& v = ranked->variant;
     j.key("criteria").begin_array();
-    for (size_t k = 0; k < v.criteria.size(); ++k) ranking_value(j, v.criteria[k], is_peak(ranked->comparison, k));
+    for (size_t k = 0; k < v.criteria.size(); ++k) ranking_value(j, v.criteria[k], criterion_metric(ranked->comparison, k));
     j.end_array();
     if (r.critical_speeds_evaluated) {  // absent, not empty, when the study asked for none
       write_critical_speeds(j, r);
@@ -151,7 +155,14 @@ void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* r
   j.key("failure");
   r.ok() ? j.value(nullptr) : j.value(r.failure);
   if (ranked) j.member("feasible", ranked->variant.feasible);
-  if (r.hunting_speed) {  // +∞, stable over the whole range, is "none"
+  if (r.hunting_speed && ranked) {
+    // Stable over the whole scan: its top, a number, and the flag that it is a bound ("above
+    // 500" in the tables, as `railmodal stability` says it; user audit 2026-11-28, F4).
+    const bool above = std::isinf(*r.hunting_speed);
+    const double speed = above ? HuntingOptions{}.max_speed : *r.hunting_speed;
+    j.member("hunting_speed_above_range", above);
+    j.member("hunting_speed_kmh", speed * kKmh).member("hunting_speed_m_s", speed);
+  } else if (r.hunting_speed) {  // a shard: +∞ as "none", read back exactly (shard_reader)
     j.key("hunting_speed_kmh");
     std::isinf(*r.hunting_speed) ? j.value("none") : j.value(*r.hunting_speed * kKmh);
     j.key("hunting_speed_m_s");
@@ -171,7 +182,7 @@ void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* r
   j.member("name", r.name);
   if (ranked) {
     j.key("objective");
-    ranking_value(j, ranked->variant.objective, objective_is_peak(ranked->comparison, ranked->variant));
+    ranking_value(j, ranked->variant.objective, objective_metric(ranked->comparison, ranked->variant));
   }
   j.key("parameters").begin_array();
   for (const auto& [key, value] : r.parameters) j.begin_object().member("key", key).member("value", value).end_object();
@@ -187,9 +198,10 @@ void write_result(JsonWriter& j, const VariantResult& r, const RankingMembers* r
   j.end_object();
 }
 
-void write_json(std::ostream& out, const Comparison& c) {
+void write_json(std::ostream& out, const Comparison& c, const std::vector<std::string>& notes = {}) {
   JsonWriter j(out);
   j.begin_object();
+  if (!notes.empty()) j.member("notes", notes);  // the study's (Study::notes), once; absent without
   if (c.deflection_rule.active()) {
     j.key("permissible_dynamic_deflection").begin_object();
     j.member("rule", to_string(c.deflection_rule.book)).member("service", to_string(c.deflection_rule.service));
@@ -237,7 +249,7 @@ const char* status(const RankedVariant& v) { return !v.result.ok() ? "failed" : 
 // row (display_unit and infinite_is_unbounded look the metric up by its name).
 struct CriterionColumn {
   double per_si;  // the display unit per SI unit
-  bool peak;      // +∞ is "unbounded" (a peak), not "none" (no critical speed)
+  std::string infinite;  // what +∞ reads as: "unbounded" (a peak), "above 500" (hunting), "none"
   std::string metric;
   int decimals;  // the table's (study::table_decimals)
   bool nmv;      // max_nmv: a partial one says what it covers, "0.76 (vertical only)", as the ride does
@@ -256,7 +268,7 @@ struct Columns {
 };
 
 CriterionColumn column_of(const std::string& metric) {
-  return {study::display_unit(metric).per_si, study::infinite_is_unbounded(metric), metric,
+  return {study::display_unit(metric).per_si, study::infinite_word(metric), metric,
           study::table_decimals(metric), metric == "max_nmv"};
 }
 
@@ -314,12 +326,14 @@ void append_csv_row(std::string* row, const Columns& columns, const RankedVarian
   if (v.objective) append_exact(row, *v.objective);
   for (size_t k = 0; k < criteria.size(); ++k) {
     *row += ',';
-    if (v.criteria.size() > k && v.criteria[k]) append_exact(row, *v.criteria[k] * criteria[k].per_si);
+    const std::optional<double> x = v.criteria.size() > k ? v.criteria[k] : std::nullopt;
+    if (x && std::isinf(*x) && *x > 0) *row += criteria[k].infinite;  // as the constrained columns write it
+    else if (x) append_exact(row, *x * criteria[k].per_si);
   }
   for (const CriterionColumn& k : columns.constrained) {
     *row += ',';
     const auto x = r.ok() ? metric_value(r, k.metric) : std::nullopt;
-    if (x && std::isinf(*x) && *x > 0) *row += k.peak ? "unbounded" : "none";
+    if (x && std::isinf(*x) && *x > 0) *row += k.infinite;
     else if (x) append_exact(row, *x * k.per_si);
   }
   if (columns.critical_speeds) {
@@ -419,7 +433,7 @@ std::vector<std::string> comparison_head(const Comparison& c, bool for_csv) {
 // once per study.
 std::string shown_value(const CriterionColumn& k, const std::optional<double>& x, const VariantResult& r) {
   if (!x) return "-";
-  if (std::isinf(*x) && *x > 0) return k.peak ? "unbounded" : "none";  // no critical speed in range
+  if (std::isinf(*x) && *x > 0) return k.infinite;  // no critical speed in range, or above the hunting scan
   // Fixed decimals, so that a column's figures align at the point and differ by what matters
   // (study::table_figure, the notes' rule too).
   if (std::isnan(*x)) return "-";
@@ -545,6 +559,13 @@ std::string table_note(const Ranking& ranking, const RankedVariant& v) {
   return note;
 }
 
+// The study's notes (Study::notes) after the table and its variants' notes, once.
+void write_study_notes(std::ostream& out, const std::vector<std::string>& notes) {
+  if (notes.empty()) return;
+  out << "\n";
+  for (const std::string& n : notes) out << n << "\n";
+}
+
 void write_table(std::ostream& out, const Comparison& c) {
   size_t feasible = 0;
   for (const auto& v : c.variants) feasible += v.feasible;
@@ -633,9 +654,10 @@ std::string json_object(const Comparison& head, const RankedVariant& v) {
   return kept;
 }
 
-void write_streamed_json(std::ostream& out, const Comparison& head, const study::StreamedRanking& ranked) {
+void write_streamed_json(std::ostream& out, const Comparison& head, const study::StreamedRanking& ranked,
+                         const std::vector<std::string>& notes) {
   std::ostringstream document;
-  write_json(document, head);
+  write_json(document, head, notes);
   const std::string text = document.str();
   const std::string empty = "\"variants\": []";
   const size_t at = text.find(empty) + empty.size() - 1;  // before the closing bracket
@@ -685,7 +707,7 @@ study::StreamedRanking::Render report::streamed_row(const Ranking& ranking, cons
 }
 
 void report::write_streamed_comparison(std::ostream& out, const Comparison& head, const study::StreamedRanking& ranked,
-                                       OutputFormat format) {
+                                       OutputFormat format, const std::vector<std::string>& notes) {
   switch (format) {
     case OutputFormat::table: {
       write_table_head(out, head, ranked.size(), ranked.feasible());
@@ -700,6 +722,7 @@ void report::write_streamed_comparison(std::ostream& out, const Comparison& head
           visit(std::move(cells));
         });
       });
+      write_study_notes(out, notes);
       break;
     }
     case OutputFormat::csv:
@@ -707,7 +730,7 @@ void report::write_streamed_comparison(std::ostream& out, const Comparison& head
       out << "\n";
       ranked.each_text([&](size_t rank, std::string_view text) { out << rank << "," << text << "\n"; });
       break;
-    case OutputFormat::json: write_streamed_json(out, head, ranked); break;
+    case OutputFormat::json: write_streamed_json(out, head, ranked, notes); break;
     default:
       throw std::invalid_argument(report::unwritten_format("write_streamed_comparison", "table, csv or json", format));
   }

@@ -7,6 +7,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "railmodal/output_format.hpp"
 #include "railmodal/provenance.hpp"
@@ -22,8 +23,9 @@ study::StreamedRanking::Render streamed_row(const Ranking& ranking, const Deflec
 /// Writes `head` (the study's name, source, ranking and rule; no variants) with the variants
 /// of `ranked` (rendered by streamed_row in `format`), as write_comparison writes a comparison
 /// that holds them; with a ranking of the best k, those k, under a head that counts them all.
+/// `notes` (Study::notes) follow the table's notes, and are the JSON's "notes" (the CSV has none).
 void write_streamed_comparison(std::ostream& out, const Comparison& head, const study::StreamedRanking& ranked,
-                               OutputFormat format);
+                               OutputFormat format, const std::vector<std::string>& notes = {});
 
 /// A result's JSON object laid out as it stands in a shard's "results" array (write_shard),
 /// without the line break and indentation before it, for write_streamed_shard to insert.

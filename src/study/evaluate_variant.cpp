@@ -430,7 +430,9 @@ struct GiveBackRead {
 // being copied there (a copy of each a variant fewer: their names, lists and the scene's key
 // places are allocations), and what follows reads them there. With a `workspace` the worker's
 // VariantAssembly assembles it into the workspace's systems: the same matrices, bit for bit,
-// from the base it keeps.
+// from the base it keeps. Throws the InputError of an analysis that refuses the variant's input
+// (a scene output or source that does not fit its vehicle, a series damper), an error of the
+// input rather than a result of the design, unless settings.input_error_is_failure.
 VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned, int index,
                                const study::VariantSettings& settings, study::Workspace* workspace) {
   const DeflectionRule& rule = settings.rule;
@@ -524,7 +526,11 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
   } catch (const NumericalError& e) {
     if (r.failure.empty()) r.failure = std::string("numerical failure: ") + e.what();
   } catch (const InputError& e) {
-    r.failure = e.message();  // the scene's outputs do not fit this vehicle
+    // Input an analysis refuses (a scene output or source that does not fit this vehicle, a
+    // series damper): the study's error at the variant (study::evaluate_each), or the failure of
+    // a variant without a study file, naming the file, line and key the analysis names.
+    if (!settings.input_error_is_failure) throw;
+    r.failure = e.what();
   } catch (const std::invalid_argument& e) {
     r.failure = e.what();
   }
@@ -538,8 +544,10 @@ VariantResult evaluate_in_full(const StudyVariant& variant, StudyVariant* owned,
 VariantResult evaluate_variant(const StudyVariant& variant, int index, const DeflectionRule& rule,
                                const std::optional<HuntingOptions>& hunting, bool ride_rms_only,
                                const VariantWork& work) {
-  // Every mode named (ModeNamesRead's default), as the public result promises.
-  return evaluate_in_full(variant, nullptr, index, study::VariantSettings{rule, hunting, ride_rms_only, work, {}}, nullptr);
+  // Every mode named (ModeNamesRead's default), as the public result promises. One variant
+  // without its study: input an analysis refuses is its failure.
+  return evaluate_in_full(variant, nullptr, index, study::VariantSettings{rule, hunting, ride_rms_only, work, {}, true},
+                          nullptr);
 }
 
 VariantResult study::evaluate_in_workspace(const StudyVariant& variant, int index, const VariantSettings& settings,

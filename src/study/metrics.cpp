@@ -8,7 +8,9 @@
 #include <limits>
 #include <string_view>
 
+#include "railmodal/hunting.hpp"
 #include "railmodal/study.hpp"
+#include "shortest_text.hpp"
 
 namespace railmodal {
 namespace {
@@ -116,6 +118,8 @@ bool reads_critical_speeds(std::string_view metric) {
          starts_with(metric, "dynamic_deflection_ratio") || split_peak(metric, &dof, &quantity);
 }
 }  // namespace
+
+bool study::metric_reads_critical_speeds(const std::string& name) { return reads_critical_speeds(canonical(name)); }
 
 bool metric_needs_scene(const std::string& name) {
   const std::string_view metric = canonical(name);
@@ -257,6 +261,20 @@ bool infinite_is_unbounded(const std::string& metric) {
   return starts_with(m, "peak:") || starts_with(m, "dynamic_deflection") || is_ride_metric(m);
 }
 
+std::string hunting_scan_top_kmh() {
+  // The range a study's hunting speed is scanned over is HuntingOptions' default
+  // (hunting_options_of), so its top is the bound `railmodal stability` prints as "above 500".
+  return shortest_text(HuntingOptions{}.max_speed * 3.6, 6);
+}
+
+std::string infinite_word(const std::string& metric) {
+  if (infinite_is_unbounded(metric)) return "unbounded";
+  // Stable over the whole scan is not "no result" (user audit 2026-11-28, F4): the words and
+  // number `railmodal stability` prints.
+  if (canonical(metric) == "hunting_speed") return "above " + hunting_scan_top_kmh();
+  return "none";
+}
+
 std::string title(const std::string& metric) {
   const std::string m(canonical(metric));
   std::string_view dof, quantity;
@@ -306,11 +324,16 @@ int table_decimals(const std::string& name) {
 }
 
 std::string shown(const std::string& metric, double si, int digits) {
-  if (std::isinf(si) && si > 0) return infinite_is_unbounded(metric) ? "unbounded" : "none";
+  if (std::isinf(si) && si > 0) return infinite_text(metric);
   const DisplayUnit u = display_unit(metric);
   char text[64];
   std::snprintf(text, sizeof text, "%.*g", digits, si * u.per_si);
   return std::string(text) + (*u.unit ? std::string(" ") + u.unit : std::string());
+}
+
+std::string infinite_text(const std::string& metric) {
+  const std::string word = infinite_word(metric);
+  return canonical(metric) == "hunting_speed" ? word + " km/h" : word;
 }
 
 std::string table_figure(double shown, int decimals) {
@@ -329,7 +352,7 @@ namespace {
 
 // The value to `decimals` with its display unit, or the word for +∞.
 std::string tabled(const std::string& metric, double si, int decimals) {
-  if (std::isinf(si) && si > 0) return infinite_is_unbounded(metric) ? "unbounded" : "none";
+  if (std::isinf(si) && si > 0) return infinite_text(metric);
   const DisplayUnit u = display_unit(metric);
   return table_figure(si * u.per_si, decimals) + (*u.unit ? std::string(" ") + u.unit : std::string());
 }

@@ -31,6 +31,19 @@ DisplayUnit display_unit(const std::string& metric);
 /// than "none in range" (critical speeds).
 bool infinite_is_unbounded(const std::string& metric);
 
+/// What a table cell writes for +∞ of the metric: "unbounded" (infinite_is_unbounded), "above
+/// 500" for a hunting speed stable over the whole scan (its top in km/h, as `railmodal
+/// stability` prints it), "none" for no critical speed in range.
+std::string infinite_word(const std::string& metric);
+/// infinite_word with the display unit where it has a number: "above 500 km/h".
+std::string infinite_text(const std::string& metric);
+/// The top of the speeds a study's hunting speed is scanned over, in km/h as text ("500").
+std::string hunting_scan_top_kmh();
+
+/// Whether the metric reads the scene's critical-speed study (critical speeds, peaks, dynamic
+/// deflections): it needs a periodic source.
+bool metric_reads_critical_speeds(const std::string& metric);
+
 /// A metric as docs/studies.md describes it, for headings a user reads: "period of body
 /// bounce", "lowest critical speed", "largest dynamic deflection / permissible" (the metric's
 /// name, "period:body bounce", stays in CSV and JSON, where programs read it).

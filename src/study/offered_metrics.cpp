@@ -2,6 +2,7 @@
 #include "study/offered_metrics.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <set>
 
 #include "edit_distance.hpp"
@@ -51,14 +52,6 @@ std::string quoted_list(const std::vector<std::string>& names) {
 
 }  // namespace
 
-bool names_offered_metrics(const Ranking& ranking) {
-  const auto named = [](const std::string& metric) { return metric == "hunting_speed" || names_ride(metric); };
-  return std::any_of(ranking.objective.begin(), ranking.objective.end(),
-                     [&](const RankingCriterion& c) { return named(c.metric); }) ||
-         std::any_of(ranking.constraints.begin(), ranking.constraints.end(),
-                     [&](const RankingConstraint& c) { return named(c.metric); });
-}
-
 void check_offered_metrics(const Ranking& ranking, const std::string& study_file, const OfferedMetrics& offered) {
   if (!offered.vehicles_complete) return;
   const bool ride = offered.scene->ride && offered.scene->irregularity;
@@ -106,6 +99,41 @@ void check_offered_metrics(const Ranking& ranking, const std::string& study_file
   };
   for (const RankingConstraint& c : ranking.constraints) check(c.metric, c.written);
   for (const RankingCriterion& c : ranking.objective) check(c.metric, c.written);
+}
+
+// A scene without a periodic source (a ride on random track alone) has no critical speeds, peaks
+// or dynamic deflections: a metric that reads them, or a deflection rule, would be missing (or
+// +∞, "none") in every variant and mark them all feasible (user audit 2026-11-28, F3: a
+// min_critical_speed meant as the hunting speed). Where a critical speed was asked for, the
+// message names the hunting speed.
+void check_periodic_source_metrics(const Ranking& ranking, const DeflectionRule& rule, const Place& rule_place,
+                                   const std::string& study_file, const OfferedMetrics& offered) {
+  if (!offered.scene->sources.empty() || offered.scene_may_add_sources) return;
+  const std::string scene = std::filesystem::path(offered.scene_file).filename().string();
+  const std::string ridden =
+      offered.scene->irregularity ? " (its random track is ridden, not swept for resonances)" : "";
+  const auto check = [&](const std::string& metric, const MetricPlace& written) {
+    if (!metric_reads_critical_speeds(metric)) return;
+    const bool speed = metric == "lowest_critical_speed" || metric.rfind("critical_speed:", 0) == 0;
+    std::string why = "key '" + written.key + "': metric '" + metric +
+                      "' needs a periodic source ([[source]]: rail joints, a wheel flat, ...), and the scene " + scene +
+                      " has none" + ridden + ", so no variant has " +
+                      (speed ? "critical speeds: these are resonances with a periodic input"
+                             : "its peaks or dynamic deflections");
+    if (speed) {
+      const std::string name = written.key.substr(written.key.rfind('.') + 1);
+      const bool shorthand = name.rfind("min_", 0) == 0 || name.rfind("max_", 0) == 0;
+      why += ". For the hunting (stability) critical speed, as `railmodal stability` computes it, use " +
+             (shorthand ? "'" + name.substr(0, 4) + "hunting_speed'" : std::string("metric 'hunting_speed'"));
+    }
+    throw InputError(study_file, written.place.line, written.place.column, why + " (docs/studies.md)");
+  };
+  for (const RankingConstraint& c : ranking.constraints) check(c.metric, c.written);
+  for (const RankingCriterion& c : ranking.objective) check(c.metric, c.written);
+  if (rule.active())
+    throw InputError(study_file, rule_place.line, rule_place.column,
+                     "key 'permissible_dynamic_deflection': the dynamic deflections are those under the scene's "
+                     "periodic sources ([[source]]), and the scene " + scene + " has none");
 }
 
 }  // namespace railmodal::study

@@ -71,16 +71,19 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
   prepare(indices.size());
   const VariantSettings settings{study.deflection_rule, hunting_options_of(study), ride_rms_only(study),
                                  study.every_analysis ? VariantWork{} : variant_work_of(study.ranking, study.deflection_rule),
-                                 names_written ? ModeNamesRead{} : mode_names_ranked(study.ranking)};
+                                 names_written ? ModeNamesRead{} : mode_names_ranked(study.ranking),
+                                 // A study built in code has no file to send the error back to.
+                                 !study.plan};
   int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min(threads, static_cast<int>(indices.size())));
 
   std::atomic<size_t> next{0};
   std::mutex progress_mutex;
   size_t done = 0;
-  // The first variant that could not be read (read_in_workers): once one is found no thread
-  // takes another, and every index below the largest taken was taken and finished, so the
-  // lowest one recorded is the study's first bad variant whatever the thread count.
+  // The first variant that could not be read (read_in_workers) or whose input an analysis
+  // refused: once one is found no thread takes another, and every index below the largest taken
+  // was taken and finished, so the lowest one recorded is the study's first bad variant whatever
+  // the thread count.
   std::mutex error_mutex;
   std::atomic<bool> stop{false};
   size_t error_at = indices.size();
@@ -115,6 +118,13 @@ int study::evaluate_each(const Study& study, const EvaluationOptions& options,
         result = variant == &read
                      ? evaluate_owned_variant(std::move(read), index, settings, &workspace)
                      : evaluate_in_workspace(*variant, index, settings, &workspace);
+      } catch (const InputError& e) {
+        // The variant's input an analysis refuses (a scene output that does not fit its vehicle,
+        // a series damper): the study file's error at the variant's line, as a bad override is.
+        const std::lock_guard<std::mutex> lock(error_mutex);
+        if (k < error_at) error_at = k, error = std::make_exception_ptr(detail::variant_input_error(study, index, e));
+        stop = true;
+        continue;
       } catch (const std::exception& e) {  // evaluate_variant keeps design failures; this is a bug
         result = VariantResult{};
         result.index = index;

@@ -59,6 +59,11 @@ struct VariantSettings {
   bool ride_rms_only = false;
   VariantWork work;  ///< variant_work_of the study's ranking
   ModeNamesRead names;
+  /// Input an analysis refuses (a scene output that does not fit the vehicle, a series damper)
+  /// is the variant's failure, naming the file the analysis names (evaluate_variant, a study
+  /// built in code); false: its InputError is thrown, for evaluate_each to send back to the
+  /// study file's variant.
+  bool input_error_is_failure = false;
 };
 
 /// What a worker keeps from one variant to the next (issue 19, item 2): the assembly of the
@@ -79,7 +84,9 @@ struct Workspace {
 /// evaluate_variant for a variant the caller gives up (a worker's, read for this evaluation):
 /// its vehicle and scene are moved into the evaluation instead of copied, and it is assembled
 /// by the worker's `workspace`; the result is evaluate_variant's, bit for bit. `variant` keeps
-/// its name and parameters; its vehicle and scene are left valid but unspecified.
+/// its name and parameters; its vehicle and scene are left valid but unspecified. Throws the
+/// InputError of an analysis that refuses the variant's input (a scene output that does not fit
+/// its vehicle, a series damper) unless settings.input_error_is_failure.
 VariantResult evaluate_owned_variant(StudyVariant&& variant, int index, const VariantSettings& settings,
                                      Workspace* workspace);
 

@@ -49,8 +49,9 @@ set(may_include_edit_distance "")
 set(may_include_xoshiro256 "")
 set(may_include_version "")
 # Single headers of another stage a stage may include: plan types a reader fills; the study's
-# workers read each variant into kept storage (load_study.hpp's detail::read_variant_into, a
-# declaration only: the reader stays behind load_study.cpp).
+# workers read each variant into kept storage and send an analysis's input error back to the
+# variant's line (load_study.hpp's detail::read_variant_into and detail::variant_input_error,
+# declarations only: the reader stays behind load_study.cpp).
 set(may_include_headers_input "study/study_plan.hpp")
 set(may_include_headers_study "load_study.hpp")
 

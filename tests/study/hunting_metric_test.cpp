@@ -1,7 +1,8 @@
 // The study metric "hunting_speed" (issue 20): the linear hunting critical speed of a variant, so
 // that `railmodal compare` ranks designs by it. A design stable over the whole range is +∞
-// ("none"), one already unstable at the lowest speed 0: maximised, the first ranks best and the
-// second last. Evaluated only when the study names the metric.
+// ("above 500", as `railmodal stability` says it), one already unstable at the lowest speed 0:
+// maximised, the first ranks best and the second last. Evaluated only when the study names the
+// metric.
 #include <cmath>
 #include <limits>
 #include <map>
@@ -10,6 +11,7 @@
 
 #include "railmodal/railmodal.hpp"
 #include "report/comparison_rows.hpp"
+#include "study/metrics.hpp"
 #include "study/study_files.hpp"
 #include "test_support.hpp"
 
@@ -75,19 +77,46 @@ TEST(HuntingMetric, MaximisedRanksStableFirstAndUnstableAtTheLowestSpeedLast) {
   EXPECT_EQ(c.variants[3].violations[0], "hunting_speed 0 km/h < 150 km/h");
   ASSERT_EQ(c.variants[4].violations.size(), 1u);
   EXPECT_EQ(c.variants[4].violations[0], "no hunting_speed");
-  // People read the metric by its title, and +∞ as "none" (no hunting speed in the range), 0 as
-  // a speed below the range.
+  // People read the metric by its title, and +∞ as "above 500" (stable up to the scan's top, in
+  // the words of `railmodal stability`; it read "none", a missing result, until the user audit of
+  // 2026-11-28, F4), 0 as a speed below the range.
   std::ostringstream table;
   write_comparison(table, c, OutputFormat::table);
   EXPECT_NE(table.str().find("linear hunting speed, maximised [km/h]"), std::string::npos) << table.str();
   // The note shows the value as the column does (0.1 km/h), the limit as given.
   EXPECT_NE(table.str().find("linear hunting speed 0.0 km/h < 150 km/h"), std::string::npos) << table.str();
-  EXPECT_NE(table.str().find("none"), std::string::npos) << table.str();
+  EXPECT_EQ(table.str().find("none"), std::string::npos) << table.str();
+  const std::vector<std::vector<std::string>> rows = report::comparison_rows(c);
+  ASSERT_EQ(rows[1][1], "stable");
+  EXPECT_EQ(rows[1][3], "above 500");
+}
+
+// +∞ is at least the scan's top in every format: "above 500" in the CSV's criterion and
+// constrained columns, "above 500 km/h" in a violation's words (a max constraint it exceeds).
+TEST(HuntingMetric, StableThroughoutReadsAboveTheScansTopInEveryFormat) {
+  EXPECT_EQ(study::infinite_word("hunting_speed"), "above 500");
+  EXPECT_EQ(study::shown("hunting_speed", kInf), "above 500 km/h");
+  Study s = hand_study({"a", "stable"});
+  s.ranking.objective.push_back({"hunting_speed", true, 1.0, {}});
+  Comparison c = rank_variants(s, {hunting(0, "a", 200.0 / 3.6), hunting(1, "stable", kInf)});
+  std::ostringstream csv;
+  write_comparison(csv, c, OutputFormat::csv);
+  EXPECT_NE(csv.str().find("\n1,stable,yes,,above 500,"), std::string::npos) << csv.str();
+  // Constrained only (a ride study's hunting limit): its own column, and the note of a max.
+  Study constrained = hand_study({"a", "stable"});
+  constrained.ranking.constraints.push_back({"hunting_speed", std::nullopt, 400.0 / 3.6, {}});
+  c = rank_variants(constrained, {hunting(0, "a", 200.0 / 3.6), hunting(1, "stable", kInf)});
+  std::ostringstream table, constrained_csv;
+  write_comparison(table, c, OutputFormat::table);
+  EXPECT_NE(table.str().find("stable: linear hunting speed above 500 km/h > 400 km/h"), std::string::npos)
+      << table.str();
+  write_comparison(constrained_csv, c, OutputFormat::csv);
+  EXPECT_NE(constrained_csv.str().find(",above 500,"), std::string::npos) << constrained_csv.str();
 }
 
 // In JSON a design stable throughout (+∞) and one with no value (no wheelsets) read differently:
-// "none" (the word the tables print, as hunting_speed_m_s writes it) against null. Before, both
-// objectives were null.
+// the scan's top, a number, flagged by hunting_speed_above_range, against null. Before, both
+// objectives were null; until the user audit of 2026-11-28 (F4) +∞ was the string "none".
 TEST(HuntingMetric, JsonTellsStableThroughoutFromNoValue) {
   Study s = hand_study({"a", "stable", "no wheelsets"});
   s.ranking.objective.push_back({"hunting_speed", true, 1.0, {}});
@@ -98,9 +127,14 @@ TEST(HuntingMetric, JsonTellsStableThroughoutFromNoValue) {
   const nlohmann::json j = nlohmann::json::parse(out.str());
   std::map<std::string, nlohmann::json> by_name;
   for (const auto& v : j.at("variants")) by_name[v.at("name").get<std::string>()] = v;
-  EXPECT_EQ(by_name.at("stable").at("objective"), "none");
-  EXPECT_EQ(by_name.at("stable").at("criteria").at(0), "none");
-  EXPECT_EQ(by_name.at("stable").at("hunting_speed_m_s"), "none");
+  const double top = HuntingOptions{}.max_speed;  // 500 km/h, the scan `railmodal stability` makes
+  EXPECT_EQ(by_name.at("stable").at("objective").get<double>(), top);
+  EXPECT_EQ(by_name.at("stable").at("criteria").at(0).get<double>(), top);
+  EXPECT_EQ(by_name.at("stable").at("hunting_speed_m_s").get<double>(), top);
+  // km/h to the last bit or two of the m/s figure times 3.6
+  EXPECT_NEAR(by_name.at("stable").at("hunting_speed_kmh").get<double>(), 500.0, 1e-9);
+  EXPECT_TRUE(by_name.at("stable").at("hunting_speed_above_range").get<bool>());
+  EXPECT_FALSE(by_name.at("a").at("hunting_speed_above_range").get<bool>());
   EXPECT_TRUE(by_name.at("no wheelsets").at("objective").is_null());
   EXPECT_TRUE(by_name.at("no wheelsets").at("criteria").at(0).is_null());
   EXPECT_FALSE(by_name.at("no wheelsets").contains("hunting_speed_m_s"));

@@ -130,5 +130,66 @@ TEST(OfferedMetrics, AStudyThatChangesTheRideIsNotCheckedAgainstTheBaseScene) {
       "\"floor over the rear axle, vertical\" }\n")));
 }
 
+// A scene without a periodic source (random track alone) has no critical speeds, peaks or dynamic
+// deflections: a metric that reads them is refused at its key. A critical speed asked for there
+// is most likely the hunting speed (user audit 2026-11-28, F3: min_critical_speed = "300 km/h"
+// passed every variant, one of them hunting at 259 km/h), which the message names.
+TEST(OfferedMetrics, ACriticalSpeedNeedsAPeriodicSourceAndTheMessageNamesTheHuntingSpeed) {
+  const std::string scene = "manchester_coach_wheelsets_ore_alignment.toml";  // irregularity only
+  const InputError shorthand = study_error_at(
+      offered_study("manchester_benchmark_coach_wheelsets.toml", scene, "min_critical_speed = \"300 km/h\""),
+      "a critical speed without a periodic source");
+  EXPECT_EQ(shorthand.line(), 6);
+  EXPECT_NE(shorthand.message().find("key 'ranking.min_critical_speed': metric 'lowest_critical_speed' needs a "
+                                     "periodic source"),
+            std::string::npos)
+      << shorthand.what();
+  EXPECT_NE(shorthand.message().find("the scene " + scene + " has none"), std::string::npos) << shorthand.what();
+  EXPECT_NE(shorthand.message().find("use 'min_hunting_speed'"), std::string::npos) << shorthand.what();
+  const InputError objective = study_error_at(
+      offered_study("manchester_benchmark_coach_wheelsets.toml", scene,
+                    "objective = [{ metric = \"critical_speed:body lower sway\", goal = \"max\" }]"),
+      "a mode's critical speed without a periodic source");
+  EXPECT_EQ(objective.line(), 6);
+  EXPECT_NE(objective.message().find("key 'ranking.objective[0].metric'"), std::string::npos) << objective.what();
+  EXPECT_NE(objective.message().find("use metric 'hunting_speed'"), std::string::npos) << objective.what();
+  // The hunting speed itself loads.
+  EXPECT_NO_THROW(load_study(
+      offered_study("manchester_benchmark_coach_wheelsets.toml", scene, "min_hunting_speed = \"300 km/h\"")));
+}
+
+// Peaks and dynamic deflections are responses to the periodic sources too; the deflection rule
+// checks them. Neither names the hunting speed.
+TEST(OfferedMetrics, PeaksAndDeflectionsNeedAPeriodicSource) {
+  const std::string scene = "manchester_coach_ore_low.toml";
+  const InputError peak = study_error_at(
+      offered_study("manchester_benchmark_coach.toml", scene,
+                    "objective = [{ metric = \"peak:body.bounce:acceleration\", goal = \"min\" }]"),
+      "a peak without a periodic source");
+  EXPECT_EQ(peak.line(), 6);
+  EXPECT_NE(peak.message().find("so no variant has its peaks or dynamic deflections"), std::string::npos)
+      << peak.what();
+  EXPECT_EQ(peak.message().find("hunting"), std::string::npos) << peak.what();
+  const InputError rule = study_error_at(
+      offered_study("manchester_benchmark_coach.toml", scene,
+                    "objective = [{ metric = \"max_wz\", goal = \"min\" }]", "[permissible_dynamic_deflection]\nrule = \"lehner\"\n"),
+      "a deflection rule without a periodic source");
+  EXPECT_EQ(rule.line(), 7);  // the table's header, the first line after the ranking's
+  EXPECT_NE(rule.message().find("key 'permissible_dynamic_deflection': the dynamic deflections are those under the "
+                                "scene's periodic sources"),
+            std::string::npos)
+      << rule.what();
+  // On a scene with rail joints the same peak loads.
+  EXPECT_NO_THROW(load_study(write_study(example3_wagon(), "[ranking]\n\"max_peak:body.bounce:acceleration\" = 5\n")));
+}
+
+// A variant may add a periodic source through the scene's `source` keys: the study is then left
+// to its variants.
+TEST(OfferedMetrics, AStudyThatChangesTheSourcesIsNotCheckedForThem) {
+  EXPECT_NO_THROW(load_study(offered_study(
+      "two_axle_freight_wagon.toml", "two_axle_wagon_fra_class4.toml", "min_critical_speed = \"30 km/h\"",
+      "[[variant]]\nname = \"class 5\"\nscene_overrides = { \"source[0].vertical_level.class\" = 5 }\n")));
+}
+
 }  // namespace
 }  // namespace railmodal::test

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -482,6 +483,56 @@ TEST(Evaluation, ABadVariantReadInTheWorkersIsTheErrorLoadStudyGives) {
       EXPECT_EQ(std::string(e.what()), expected) << threads << " threads";
     }
   }
+}
+
+// The line of the study file at `path` that holds `text` (1-based; 0 if none).
+int line_of(const std::string& path, const std::string& text) {
+  std::ifstream in(path);
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n)
+    if (line.find(text) != std::string::npos) return n;
+  return 0;
+}
+
+// A variant's override the readers take but an analysis refuses (an output that is not a DOF of
+// the vehicle): the study's input error at that override, naming the variant and the key, as a
+// bad override is; its first such variant's whatever the thread count, read beforehand or by the
+// workers. Until 2026-11-28 the variant was "failed" with the scene's message alone, naming no
+// file. evaluate_variant, without the study, keeps it as the variant's failure, naming the scene.
+TEST(Evaluation, AnOverrideAnAnalysisRefusesIsTheStudysInputErrorAtIt) {
+  std::string body;
+  for (int i = 0; i < 8; ++i)  // variants 1-8; 4 and 7 name an output the wagon lacks
+    body += "\n[[variant]]\nname = \"v" + std::to_string(i + 1) + "\"\n" +
+            (i == 3 || i == 6 ? std::string("scene_overrides = { \"output[0].dof\" = \"body.sway\" }")
+                              : "overrides = { \"suspension.spring[0].static_deflection\" = \"" + std::to_string(40 + i) +
+                                    " mm\" }") +
+            "\n";
+  const std::string path = study_file(body);
+  const std::string scene = write_temp("scene.toml", std::string(kJointsScene) + "[[output]]\ndof = \"body.bounce\"\n");
+  const int line = line_of(path, "name = \"v4\"") + 1;  // its scene_overrides
+  ASSERT_GT(line, 1);
+  const std::string message = "variant 'v4': key 'output[0].dof': 'body.sway' is not a degree of freedom of this vehicle";
+  const Study loaded = load_study(path);
+  const Study unread = load_study(path, [](int) { return false; });
+  for (int threads : {1, 2, 4})
+    for (const Study* s : {&loaded, &unread}) {
+      EvaluationOptions options;
+      options.threads = threads;
+      options.read_in_workers = s == &unread;
+      try {
+        evaluate_study(*s, options);
+        ADD_FAILURE() << "no error on " << threads << " threads";
+      } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), path);
+        EXPECT_EQ(e.line(), line) << e.what();
+        EXPECT_EQ(e.message().rfind(message, 0), 0u) << e.what();
+      }
+    }
+  const VariantResult alone = evaluate_variant(read_variant(loaded, 4), 4);
+  EXPECT_FALSE(alone.ok());
+  EXPECT_EQ(alone.failure.rfind(scene + ":", 0), 0u) << alone.failure;
+  EXPECT_NE(alone.failure.find("key 'output[0].dof': 'body.sway' is not a degree of freedom"), std::string::npos)
+      << alone.failure;
 }
 
 // A shard records the digest of the study file it was evaluated from: merged against a study
