@@ -355,8 +355,9 @@ void expect_names_read(Study study) {
         EXPECT_EQ(named[k].modes[m].period_s, all[k].modes[m].period_s);
       }
       ASSERT_EQ(named[k].critical_speeds.size(), all[k].critical_speeds.size());
-      if (!all[k].critical_speeds.empty())  // the tables' lowest critical speed names its mode
+      if (!all[k].critical_speeds.empty()) {  // the tables' lowest critical speed names its mode
         EXPECT_EQ(named[k].critical_speeds.front().mode_name, all[k].critical_speeds.front().mode_name) << metric;
+      }
       for (size_t c = 0; c < all[k].critical_speeds.size(); ++c) {
         const std::string& name = named[k].critical_speeds[c].mode_name;
         EXPECT_TRUE(name.empty() ? !missing : name == all[k].critical_speeds[c].mode_name) << metric << ", " << c;
