@@ -19,8 +19,6 @@
 namespace railmodal {
 namespace {
 
-constexpr double kKmh = 3.6;  // km/h per m/s
-
 // The speed profile of a scene that ramps its speed ([simulation] final_speed), which the
 // histories write beside the samples (the speed is not otherwise in them: user audit
 // 2026-11-28b, F9 b); none at a constant speed, whose outputs stay as they were.
@@ -92,7 +90,7 @@ void append_row(std::string& text, double first, const std::optional<simulate::S
                 const Eigen::Ref<const Eigen::MatrixXd>& values, Eigen::Index row, const std::vector<int>& columns) {
   char number[report::kNumberTextMax];
   text.append(number, report::write_number(number, first, report::NumberStyle::csv));
-  if (profile) text += ',' + shortest_text(kKmh * profile->speed(first), 15);
+  if (profile) text += ',' + shortest_text(report::kKmh * profile->speed(first), 15);
   for (int c : columns) {
     text += ',';
     text.append(number, report::write_number(number, values(row, c), report::NumberStyle::csv));
